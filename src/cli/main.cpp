@@ -1,0 +1,183 @@
+// The `impact` command: argument parsing and nothing else.
+//
+// Exit status: 0 when everything holds, 1 when a check failed, 2 on bad input
+// (a derivation file that cannot be read, with file, line and what is wrong).
+#include "emit/cxx.h"
+#include "emit/infix.h"
+#include "emit/latex.h"
+#include "pipeline/library.h"
+#include "pipeline/regenerate.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace impact;
+
+constexpr int exit_failed_check = 1;
+constexpr int exit_bad_input = 2;
+
+struct options {
+    std::string derivations = "derivations";
+    std::string output = "output";
+    std::string name;
+    std::string file;
+};
+
+pipeline::library derive_one(const options& o)
+{
+    const auto sources = pipeline::read_directory(o.derivations);
+    return pipeline::derive_all(sources, pipeline::resolve_id(sources, o.name));
+}
+
+int run_regenerate(const options& o)
+{
+    const pipeline::regeneration r = pipeline::regenerate(o.derivations, o.output);
+    if (!r.all_hold) {
+        for (const std::string& failure : r.failures)
+            fmt::print(stderr, "impact: check failed: {}\n", failure);
+        fmt::print(stderr, "impact: {} left unchanged\n", o.output);
+        return exit_failed_check;
+    }
+    fmt::print("impact: wrote {} files to {}\n", r.files, o.output);
+    return 0;
+}
+
+void print_derivation(const engine::derivation& d)
+{
+    const emit::term_order order = emit::declaration_order(d);
+    auto text = [&](const GiNaC::ex& e) { return emit::ginac_syntax(e, order); };
+    auto relation = [&](const GiNaC::ex& r) { return text(r.lhs()) + " = " + text(r.rhs()); };
+
+    fmt::print("{}: {}{}\n  from {}\n", d.id(), d.source.title.value,
+               d.source.paper ? " (" + d.source.paper->value + ")" : "", d.source.file);
+    fmt::print("\ngiven\n");
+    for (const engine::equation& g : d.givens)
+        fmt::print("  {:<14} {}    [{}]\n", g.name, relation(g.relation), g.because);
+    fmt::print("\nsteps\n");
+    for (std::size_t i = 0; i < d.steps.size(); ++i) {
+        const engine::step_result& s = d.steps[i];
+        fmt::print("  {}. {}\n", i + 1, s.description);
+        for (const auto& [symbol, value] : s.values)
+            fmt::print("       {} = {}\n", text(symbol), text(value));
+        if (s.yields)
+            fmt::print("       {}: {}\n", s.yields->name, relation(s.yields->relation));
+        for (const GiNaC::ex& a : s.assumptions)
+            fmt::print("       assuming {} != {}\n", text(a.lhs()), text(a.rhs()));
+        for (const engine::check_result& c : s.checks)
+            fmt::print("       {}: {}\n", c.name, engine::to_string(c.outcome));
+    }
+    fmt::print("\nresults\n");
+    for (const engine::result& r : d.results)
+        fmt::print("  {} = {}{}\n", r.name, text(r.display), r.paper.empty() ? "" : "    [" + r.paper + "]");
+    fmt::print("\nchecks\n");
+    for (const engine::check_result& c : d.checks) {
+        fmt::print("  {:<18} {}: {}\n", engine::to_string(c.outcome), c.name, c.statement);
+        if (!c.outcome.holds())
+            fmt::print("  {:<18} residual: {}\n", "", text(c.outcome.residual));
+    }
+    if (!d.paper_checks.empty()) {
+        fmt::print("\nthe paper's printed forms\n");
+        for (const engine::paper_comparison& p : d.paper_checks)
+            fmt::print("  {:<8} {}: {}\n", p.paper, p.subject,
+                       p.agreement.what == engine::verdict::status::proven ? "agrees" : "DISAGREES");
+    }
+}
+
+int run_derive(const options& o)
+{
+    const pipeline::library lib = derive_one(o);
+    const engine::derivation& d = lib.derived.at(lib.order.back());
+    print_derivation(d);
+    return d.all_hold() ? 0 : exit_failed_check;
+}
+
+int run_latex(const options& o)
+{
+    const pipeline::library lib = derive_one(o);
+    const engine::derivation& d = lib.derived.at(lib.order.back());
+    const std::string fragment = emit::latex_fragment(d);
+    if (o.file.empty())
+        fmt::print("{}", fragment);
+    else
+        pipeline::write_files({{fs::path(o.file).filename().string(), fragment}}, fs::path(o.file).parent_path());
+    return d.all_hold() ? 0 : exit_failed_check;
+}
+
+int run_kernels(const options& o)
+{
+    const pipeline::library lib = pipeline::derive_all(pipeline::read_directory(o.derivations));
+    if (!lib.all_hold()) {
+        fmt::print(stderr, "impact: a check failed; no kernels written (run `impact regenerate` for details)\n");
+        return exit_failed_check;
+    }
+    const pipeline::file_set files = pipeline::generate_kernels(lib);
+    pipeline::write_files(files, o.output);
+    fmt::print("impact: wrote {} kernel headers to {}\n", files.size(), o.output);
+    return 0;
+}
+
+int run_list(const options& o)
+{
+    for (const spec::derivation& s : pipeline::read_directory(o.derivations))
+        fmt::print("{:<24} {:<10} {}\n", s.id.value, s.paper ? s.paper->value : "", s.title.value);
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"Impact: derives, proves and typesets the collisions of smooth spheres, and emits verified "
+                 "C++ kernels."};
+    app.require_subcommand(1);
+    options o;
+    auto add_derivations = [&](CLI::App* command) {
+        command->add_option("--derivations", o.derivations, "folder of derivation files")->capture_default_str();
+    };
+
+    CLI::App* regenerate = app.add_subcommand("regenerate", "derive everything and rewrite the output folder");
+    add_derivations(regenerate);
+    regenerate->add_option("--output", o.output, "output folder, replaced only when every check holds")
+        ->capture_default_str();
+
+    CLI::App* derive = app.add_subcommand("derive", "derive one derivation and print its results and checks");
+    add_derivations(derive);
+    derive->add_option("derivation", o.name, "id or file of the derivation")->required();
+
+    CLI::App* latex = app.add_subcommand("latex", "print (or write) the LaTeX fragment of one derivation");
+    add_derivations(latex);
+    latex->add_option("derivation", o.name, "id or file of the derivation")->required();
+    latex->add_option("-o,--output", o.file, "file to write instead of printing");
+
+    CLI::App* kernels = app.add_subcommand("kernels", "write the C++ kernel headers");
+    add_derivations(kernels);
+    kernels->add_option("--output", o.output, "folder to write kernels/impact/*.hpp into")->capture_default_str();
+
+    CLI::App* list = app.add_subcommand("list", "list the derivations");
+    add_derivations(list);
+
+    CLI11_PARSE(app, argc, argv);
+    try {
+        if (regenerate->parsed())
+            return run_regenerate(o);
+        if (derive->parsed())
+            return run_derive(o);
+        if (latex->parsed())
+            return run_latex(o);
+        if (kernels->parsed())
+            return run_kernels(o);
+        return run_list(o);
+    } catch (const impact::error& e) {
+        fmt::print(stderr, "{}\n", e.what());
+        return exit_bad_input;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "impact: error: {}\n", e.what());
+        return exit_bad_input;
+    }
+}

@@ -1,0 +1,224 @@
+#include "emit/infix.h"
+
+#include "engine/symbols.h"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+namespace impact::emit {
+
+GINAC_IMPLEMENT_PRINT_CONTEXT(print_infix, GiNaC::print_context)
+
+GINAC_IMPLEMENT_PRINT_CONTEXT(print_ginac_syntax, print_infix)
+
+print_infix::print_infix() : GiNaC::print_context(std::cout) {}
+print_infix::print_infix(std::ostream& os, const term_order& order, infix_style style)
+    : GiNaC::print_context(os), order(&order), style(style)
+{
+}
+
+print_ginac_syntax::print_ginac_syntax() : print_infix() {}
+print_ginac_syntax::print_ginac_syntax(std::ostream& os, const term_order& order)
+    : print_infix(os, order, {"*", "+", "-", "/", "", false, false})
+{
+}
+
+namespace {
+
+// Precedences of the text written: a parent asks for at least `level` and a child
+// with a lower precedence puts itself in parentheses.
+constexpr unsigned sum_level = 10;
+constexpr unsigned product_level = 20;
+constexpr unsigned atom_level = 30;
+
+struct parenthesise {
+    parenthesise(const print_infix& c, unsigned level, unsigned own) : c_(c), open_(own < level)
+    {
+        if (open_)
+            c_.s << '(';
+    }
+    ~parenthesise()
+    {
+        if (open_)
+            c_.s << ')';
+    }
+    const print_infix& c_;
+    bool open_;
+};
+
+void print_operand(const GiNaC::ex& e, const print_infix& c, unsigned level);
+
+void print_integer(const GiNaC::numeric& n, const print_infix& c)
+{
+    if (c.style.typed_numbers)
+        c.s << "Real(" << n << ')';
+    else
+        c.s << n;
+}
+
+void print_numeric(const GiNaC::numeric& n, const print_infix& c, unsigned level)
+{
+    if (!n.is_rational())
+        throw std::invalid_argument(fmt::format("cannot print the inexact number {} exactly",
+                                                engine::ginac_text(n)));
+    const bool negative = n.is_negative();
+    parenthesise p(c, level, negative || !n.is_integer() ? product_level : atom_level);
+    if (negative)
+        c.s << '-';
+    print_integer(GiNaC::abs(n.numer()), c);
+    if (!n.is_integer()) {
+        c.s << c.style.divide;
+        print_integer(n.denom(), c);
+    }
+}
+
+void print_symbol(const GiNaC::symbol& s, const print_infix& c, unsigned)
+{
+    c.s << s.get_name();
+}
+
+void print_add(const GiNaC::add& sum, const print_infix& c, unsigned level)
+{
+    parenthesise p(c, level, sum_level);
+    bool first = true;
+    for (const GiNaC::ex& term : c.order->terms(sum)) {
+        if (c.order->negative(term)) {
+            c.s << (first ? "-" : c.style.minus);
+            print_operand(-term, c, product_level);
+        } else {
+            if (!first)
+                c.s << c.style.plus;
+            print_operand(term, c, sum_level);
+        }
+        first = false;
+    }
+}
+
+void print_factors(const std::vector<GiNaC::ex>& factors, const print_infix& c)
+{
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+        if (i > 0)
+            c.s << c.style.times;
+        print_operand(factors[i], c, product_level);
+    }
+}
+
+// A product as numerator / denominator, with integer numbers of the coefficient
+// written in place: 2 * m * v_m / (M + m).
+void print_mul(const GiNaC::mul& product, const print_infix& c, unsigned level)
+{
+    const term_order::fraction f = c.order->split(product);
+    const bool negated = f.negated;
+    const std::vector<GiNaC::ex>& numerator = f.numerator;
+    const std::vector<GiNaC::ex>& denominator = f.denominator;
+    parenthesise p(c, level, product_level);
+    if (negated)
+        c.s << '-';
+    if (numerator.empty())
+        print_integer(1, c);
+    print_factors(numerator, c);
+    if (denominator.empty())
+        return;
+    c.s << c.style.divide;
+    if (denominator.size() == 1) {
+        print_operand(denominator.front(), c, atom_level);
+    } else {
+        c.s << '(';
+        print_factors(denominator, c);
+        c.s << ')';
+    }
+}
+
+void print_power(const GiNaC::power& power, const print_infix& c, unsigned level)
+{
+    const GiNaC::ex base = power.op(0);
+    const GiNaC::ex exponent = power.op(1);
+    if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
+        const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(exponent);
+        if (n.is_negative()) {
+            // x^-k = 1 / x^k
+            parenthesise p(c, level, product_level);
+            print_integer(1, c);
+            c.s << c.style.divide;
+            print_operand(GiNaC::pow(base, -n), c, atom_level);
+            return;
+        }
+        if (n.is_integer() && n <= 4 && c.style.powers_as_products) {
+            // Small integer powers as products: x * x * x.
+            parenthesise p(c, level, product_level);
+            for (int i = 0; i < n.to_int(); ++i) {
+                if (i > 0)
+                    c.s << c.style.times;
+                print_operand(base, c, atom_level);
+            }
+            return;
+        }
+        if (n == GiNaC::numeric(1, 2)) {
+            c.s << c.style.functions << "sqrt(";
+            print_operand(base, c, 0);
+            c.s << ')';
+            return;
+        }
+    }
+    if (c.style.powers_as_products) {
+        c.s << c.style.functions << "pow(";
+        print_operand(base, c, 0);
+        c.s << ", ";
+        print_operand(exponent, c, 0);
+        c.s << ')';
+        return;
+    }
+    parenthesise p(c, level, atom_level + 1);
+    print_operand(base, c, atom_level + 1);
+    c.s << '^';
+    print_operand(exponent, c, atom_level + 1);
+}
+
+// Functions are named in the style's way (std::acos), which GiNaC's function printing
+// cannot be told.
+void print_operand(const GiNaC::ex& e, const print_infix& c, unsigned level)
+{
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+        c.s << c.style.functions << GiNaC::ex_to<GiNaC::function>(e).get_name() << '(';
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            if (i > 0)
+                c.s << ", ";
+            print_operand(e.op(i), c, 0);
+        }
+        c.s << ')';
+        return;
+    }
+    e.print(c, level);
+}
+
+// The print functions are registered once, before the first use of the context.
+void register_print_functions()
+{
+    static const bool registered = [] {
+        GiNaC::set_print_func<GiNaC::numeric, print_infix>(print_numeric);
+        GiNaC::set_print_func<GiNaC::symbol, print_infix>(print_symbol);
+        GiNaC::set_print_func<GiNaC::add, print_infix>(print_add);
+        GiNaC::set_print_func<GiNaC::mul, print_infix>(print_mul);
+        GiNaC::set_print_func<GiNaC::power, print_infix>(print_power);
+        return true;
+    }();
+    (void)registered;
+}
+
+} // namespace
+
+void print_expression(const GiNaC::ex& e, const print_infix& c)
+{
+    register_print_functions();
+    print_operand(e, c, 0);
+}
+
+std::string ginac_syntax(const GiNaC::ex& e, const term_order& order)
+{
+    std::ostringstream out;
+    print_expression(e, print_ginac_syntax(out, order));
+    return out.str();
+}
+
+} // namespace impact::emit

@@ -1,0 +1,85 @@
+#include "emit/json.h"
+
+#include "emit/infix.h"
+
+#include <nlohmann/json.hpp>
+
+namespace impact::emit {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json check_json(const engine::check_result& c, const term_order& order)
+{
+    json j;
+    j["name"] = c.name;
+    j["status"] = engine::to_string(c.outcome);
+    j["claim"] = ginac_syntax(c.stated.lhs(), order) + " = " + ginac_syntax(c.stated.rhs(), order);
+    for (const auto& [symbol, value] : c.at)
+        j["at"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
+    j["method"] = c.outcome.method;
+    if (c.outcome.what == engine::verdict::status::sampled)
+        j["samples"] = c.outcome.samples;
+    if (!c.outcome.holds())
+        j["residual"] = ginac_syntax(c.outcome.residual, order);
+    return j;
+}
+
+json derivation_json(const engine::derivation& d)
+{
+    const term_order order = declaration_order(d);
+    json j;
+    j["id"] = d.id();
+    j["title"] = d.source.title.value;
+    j["file"] = d.source_name();
+    j["paper"] = d.source.paper ? d.source.paper->value : "";
+    j["results"] = json::object();
+    for (const engine::result& r : d.results)
+        j["results"][r.name] = ginac_syntax(r.value, order);
+    j["display"] = json::object();
+    for (const engine::result& r : d.results)
+        j["display"][r.name] = ginac_syntax(r.display, order);
+    j["checks"] = json::array();
+    for (const engine::check_result* c : d.all_checks())
+        j["checks"].push_back(check_json(*c, order));
+    j["paper_checks"] = json::array();
+    for (const engine::paper_comparison& p : d.paper_checks) {
+        json pj;
+        pj["paper"] = p.paper;
+        pj["subject"] = p.subject;
+        pj["agrees"] = p.agreement.what == engine::verdict::status::proven;
+        pj["status"] = engine::to_string(p.agreement);
+        pj["printed"] = p.printed_text;
+        pj["derived"] = ginac_syntax(p.derived, order);
+        if (!p.agreement.holds())
+            pj["residual"] = ginac_syntax(p.agreement.residual, order);
+        j["paper_checks"].push_back(pj);
+    }
+    j["kernels"] = json::array();
+    for (const engine::kernel& k : d.kernels) {
+        json kj;
+        kj["name"] = k.name;
+        kj["inputs"] = json::array();
+        for (const engine::quantity& q : k.inputs)
+            kj["inputs"].push_back(q.name);
+        kj["outputs"] = json::object();
+        for (const engine::kernel_output& o : k.outputs)
+            kj["outputs"][o.member] = ginac_syntax(o.value, order);
+        j["kernels"].push_back(kj);
+    }
+    return j;
+}
+
+} // namespace
+
+std::string derivations_json(const std::vector<const engine::derivation*>& derivations)
+{
+    json j;
+    j["generator"] = "Impact";
+    j["derivations"] = json::array();
+    for (const engine::derivation* d : derivations)
+        j["derivations"].push_back(derivation_json(*d));
+    return j.dump(2) + "\n";
+}
+
+} // namespace impact::emit

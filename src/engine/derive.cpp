@@ -1,0 +1,394 @@
+#include "engine/derive.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace impact::engine {
+namespace {
+
+std::string join(const std::vector<spec::text>& items)
+{
+    std::string out;
+    for (const spec::text& item : items)
+        out += (out.empty() ? "" : ", ") + item.value;
+    return out;
+}
+
+// The state of a derivation while its steps run.
+class deriver {
+public:
+    deriver(const spec::derivation& source, const library& done) : done_(done)
+    {
+        out_.source = source;
+    }
+
+    derivation run()
+    {
+        const spec::derivation& s = out_.source;
+        for (const spec::symbol& declaration : s.symbols)
+            out_.symbols.declare(declaration);
+        for (const spec::use& u : s.uses)
+            import(u);
+        for (const spec::given& g : s.givens)
+            add_given(g);
+        for (const spec::step& st : s.steps)
+            run_step(st);
+        for (const spec::result& r : s.results)
+            add_result(r);
+        for (const spec::check& c : s.checks)
+            out_.checks.push_back(run_check(c));
+        for (const spec::kernel& k : s.kernels)
+            out_.kernels.push_back(make_kernel(k));
+        return std::move(out_);
+    }
+
+private:
+    // Replaces every derived quantity by its value and every abbreviation by its definition.
+    GiNaC::ex resolve(const GiNaC::ex& e) const
+    {
+        GiNaC::ex now = e;
+        for (int depth = 0; depth < 8; ++depth) {
+            const GiNaC::ex next = now.subs(values_).subs(out_.symbols.abbreviations());
+            if (next.is_equal(now))
+                return now;
+            now = next;
+        }
+        return now;
+    }
+
+    GiNaC::ex symbol_of(const spec::text& name) const { return out_.symbols.at(name).symbol; }
+
+    // `[[use]]`: results of an earlier derivation, expressed in this one's symbols.
+    void import(const spec::use& u)
+    {
+        const auto found = done_.find(u.derivation.value);
+        if (found == done_.end())
+            throw error(u.derivation.where,
+                        fmt::format("uses derivation '{}', which does not exist", u.derivation.value));
+        const derivation& other = found->second;
+        for (const spec::binding& b : u.results) {
+            const result* r = other.find_result(b.expression.value);
+            if (!r)
+                throw error(b.expression.where, fmt::format("derivation '{}' has no result '{}'",
+                                                            u.derivation.value, b.expression.value));
+            // The other derivation's symbols become this one's, matched by name.
+            GiNaC::exmap rename;
+            for (const quantity& q : other.symbols.all())
+                if (r->value.has(q.symbol))
+                    rename[q.symbol] = out_.symbols.adopt(q).symbol;
+            const quantity* local = out_.symbols.find(b.name.value);
+            if (!local) {
+                quantity q = *other.symbols.find(r->name);
+                q.name = b.name.value;
+                q.where = b.name.where;
+                local = &out_.symbols.adopt(q);
+            }
+            values_[local->symbol] = r->value.subs(rename);
+        }
+    }
+
+    void add_given(const spec::given& g)
+    {
+        if (find_equation(g.name.value))
+            throw error(g.name.where, fmt::format("equation '{}' is defined twice", g.name.value));
+        equations_.push_back({g.name.value, out_.symbols.parse_equation(g.equation), g.because.value,
+                              g.paper ? g.paper->value : std::string(), g.equation.where});
+        out_.givens.push_back(equations_.back());
+    }
+
+    const equation* find_equation(const std::string& name) const
+    {
+        for (const equation& e : equations_)
+            if (e.name == name)
+                return &e;
+        return nullptr;
+    }
+
+    const equation& equation_at(const spec::text& name) const
+    {
+        if (const equation* e = find_equation(name.value))
+            return *e;
+        throw error(name.where, fmt::format("no equation named '{}' (neither given nor made by a step)", name.value));
+    }
+
+    void run_step(const spec::step& st)
+    {
+        step_result r;
+        r.what = st.what;
+        r.because = st.because.value;
+        r.where = st.where;
+        try {
+            switch (st.what) {
+            case spec::step::kind::solve: solve(st, r); break;
+            case spec::step::kind::define: define(st, r); break;
+            case spec::step::kind::quotient: quotient(st, r); break;
+            case spec::step::kind::rearrange: rearrange(st, r); break;
+            }
+        } catch (...) {
+            rethrow_at(st.where, fmt::format("step {} ({})", out_.steps.size() + 1, r.description));
+        }
+        out_.steps.push_back(std::move(r));
+    }
+
+    // Solves linear equations for unknowns with lsolve, then substitutes the solution
+    // back into every equation: the residuals must normalise to zero.
+    void solve(const spec::step& st, step_result& r)
+    {
+        r.description = fmt::format("solve {} for {}", join(st.equations), join(st.unknowns));
+        if (st.unknowns.size() > st.equations.size())
+            throw error(st.where, fmt::format("{} unknowns but only {} equations: the system is underdetermined",
+                                              st.unknowns.size(), st.equations.size()));
+        GiNaC::lst unknowns;
+        for (const spec::text& u : st.unknowns) {
+            const GiNaC::ex s = symbol_of(u);
+            if (values_.count(s))
+                throw error(u.where, fmt::format("'{}' is already derived by an earlier step", u.value));
+            unknowns.append(s);
+        }
+        GiNaC::lst system;
+        std::vector<const equation*> used;
+        for (const spec::text& name : st.equations) {
+            used.push_back(&equation_at(name));
+            system.append(resolve(used.back()->relation));
+        }
+        GiNaC::ex solution;
+        try {
+            solution = GiNaC::lsolve(system, unknowns);
+        } catch (const std::logic_error&) {
+            throw error(st.where, fmt::format("the system is not linear in {}", join(st.unknowns)));
+        }
+        if (solution.nops() == 0)
+            throw error(st.where, "the system is inconsistent: it has no solution");
+        for (const GiNaC::ex& s : solution) {
+            for (const GiNaC::ex& u : unknowns)
+                if (s.rhs().has(u))
+                    throw error(st.where, fmt::format("the system is singular: it does not determine {}",
+                                                      ginac_text(s.lhs())));
+        }
+        GiNaC::exmap solved;
+        for (const GiNaC::ex& s : solution) {
+            const GiNaC::ex value = GiNaC::factor(GiNaC::normal(s.rhs()));
+            solved[s.lhs()] = value;
+            r.values.emplace_back(s.lhs(), value);
+        }
+        for (const equation* e : used) {
+            const GiNaC::ex substituted = resolve(e->relation).subs(solved);
+            check_result c;
+            c.name = fmt::format("{} holds for the solution", e->name);
+            c.statement = e->name;
+            c.stated = e->relation;
+            c.because = "the solution substituted back into the equation it solves";
+            c.lhs = substituted.lhs();
+            c.rhs = substituted.rhs();
+            c.outcome = prove_equal(c.lhs, c.rhs, out_.symbols);
+            c.where = e->where;
+            r.checks.push_back(std::move(c));
+        }
+        for (const auto& [symbol, value] : solved)
+            values_[symbol] = value;
+    }
+
+    void define(const spec::step& st, step_result& r)
+    {
+        r.description = fmt::format("define {} = {}", st.name.value, st.expression.value);
+        const GiNaC::ex s = symbol_of(st.name);
+        if (values_.count(s))
+            throw error(st.name.where, fmt::format("'{}' is already derived by an earlier step", st.name.value));
+        const GiNaC::ex value = resolve(out_.symbols.parse(st.expression));
+        values_[s] = value;
+        r.values.emplace_back(s, value);
+    }
+
+    // Divides one equation by another side by side (Eq. 2's route); valid where the
+    // divisor is non-zero, which is recorded as the step's assumption.
+    void quotient(const spec::step& st, step_result& r)
+    {
+        r.description = fmt::format("divide {} by {}", st.equations[0].value, st.equations[1].value);
+        const equation& top = equation_at(st.equations[0]);
+        const equation& bottom = equation_at(st.equations[1]);
+        const GiNaC::ex a = resolve(top.relation);
+        const GiNaC::ex b = resolve(bottom.relation);
+        if (b.lhs().is_zero() || b.rhs().is_zero())
+            throw error(st.where, fmt::format("equation '{}' has a side that is zero: division by zero", bottom.name));
+        const GiNaC::ex lhs = GiNaC::factor(GiNaC::normal(a.lhs() / b.lhs()));
+        const GiNaC::ex rhs = GiNaC::factor(GiNaC::normal(a.rhs() / b.rhs()));
+        r.assumptions.push_back(b.lhs() != 0);
+        add_step_equation(st.name, lhs == rhs, r);
+    }
+
+    // States an equation in a new form, proven equivalent to its source.
+    void rearrange(const spec::step& st, step_result& r)
+    {
+        r.description = fmt::format("rearrange {} into {}", st.source.value, st.expression.value);
+        const equation& from = equation_at(st.source);
+        const GiNaC::ex into = out_.symbols.parse_equation(st.expression);
+        check_result c;
+        c.name = fmt::format("{} is equivalent to {}", st.name.value, from.name);
+        c.statement = st.expression.value;
+        c.stated = into;
+        c.because = "the rearranged equation differs from its source by a non-zero constant factor";
+        c.lhs = resolve(into);
+        c.rhs = resolve(from.relation);
+        c.outcome = prove_equivalent(c.lhs, c.rhs, out_.symbols);
+        c.where = st.expression.where;
+        r.checks.push_back(c);
+        add_step_equation(st.name, into, r);
+    }
+
+    void add_step_equation(const spec::text& name, const GiNaC::ex& relation, step_result& r)
+    {
+        if (find_equation(name.value))
+            throw error(name.where, fmt::format("equation '{}' is defined twice", name.value));
+        equation e{name.value, relation, r.description, "", name.where};
+        equations_.push_back(e);
+        r.yields = e;
+    }
+
+    void add_result(const spec::result& spec_result)
+    {
+        const quantity& q = out_.symbols.at(spec_result.name);
+        const auto value = values_.find(q.symbol);
+        if (value == values_.end())
+            throw error(spec_result.name.where,
+                        fmt::format("result '{}' is not derived by any step", spec_result.name.value));
+        result r;
+        r.name = q.name;
+        r.symbol = q.symbol;
+        r.value = value->second;
+        r.display = r.value;
+        r.paper = spec_result.paper ? spec_result.paper->value : std::string();
+        if (spec_result.display) {
+            r.display = out_.symbols.parse(*spec_result.display);
+            check_result c;
+            c.name = fmt::format("display form of {}", q.name);
+            c.statement = spec_result.display->value;
+            c.stated = r.symbol == r.display;
+            c.because = "the form typeset must equal the derived result";
+            c.lhs = r.display;
+            c.rhs = r.value;
+            c.outcome = prove_equal(resolve(r.display), r.value, out_.symbols);
+            c.where = spec_result.display->where;
+            out_.checks.push_back(std::move(c));
+        }
+        if (spec_result.printed) {
+            paper_comparison p;
+            p.subject = q.name;
+            p.paper = r.paper;
+            p.printed_text = spec_result.printed->value;
+            p.printed = out_.symbols.parse(*spec_result.printed);
+            p.derived = r.value;
+            p.agreement = prove_equal(resolve(p.printed), r.value, out_.symbols);
+            p.where = spec_result.printed->where;
+            out_.paper_checks.push_back(std::move(p));
+        }
+        out_.results.push_back(std::move(r));
+    }
+
+    check_result run_check(const spec::check& spec_check)
+    {
+        check_result c;
+        c.name = spec_check.name.value;
+        c.statement = spec_check.claim.value;
+        c.because = spec_check.because.value;
+        c.where = spec_check.claim.where;
+        c.stated = out_.symbols.parse_equation(spec_check.claim);
+        GiNaC::ex claim = resolve(c.stated);
+        GiNaC::exmap at;
+        for (const spec::binding& b : spec_check.at) {
+            const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
+            at[symbol] = out_.symbols.parse(b.expression);
+            c.at.emplace_back(symbol, at[symbol]);
+        }
+        if (!at.empty()) {
+            try {
+                claim = claim.subs(at);
+            } catch (...) {
+                rethrow_at(c.where, fmt::format("check '{}' at its special values", c.name));
+            }
+            std::vector<std::string> values;
+            for (const spec::binding& b : spec_check.at)
+                values.push_back(fmt::format("{} = {}", b.name.value, b.expression.value));
+            c.statement += fmt::format(" at {}", fmt::join(values, ", "));
+        }
+        c.lhs = claim.lhs();
+        c.rhs = claim.rhs();
+        c.outcome = prove_equal(c.lhs, c.rhs, out_.symbols);
+        return c;
+    }
+
+    kernel make_kernel(const spec::kernel& spec_kernel)
+    {
+        kernel k;
+        k.name = spec_kernel.name.value;
+        std::set<std::string> seen;
+        for (const spec::text& input : spec_kernel.inputs) {
+            if (!seen.insert(input.value).second)
+                throw error(input.where, fmt::format("kernel '{}' lists input '{}' twice", k.name, input.value));
+            k.inputs.push_back(out_.symbols.at(input));
+        }
+        for (const spec::binding& output : spec_kernel.outputs) {
+            // A result is emitted in its display form (proven equal to the derived value).
+            const result* named = out_.find_result(output.expression.value);
+            const GiNaC::ex value = resolve(named ? named->display : out_.symbols.parse(output.expression));
+            for (const quantity& q : out_.symbols.all()) {
+                if (!value.has(q.symbol))
+                    continue;
+                const bool is_input = std::any_of(k.inputs.begin(), k.inputs.end(),
+                                                  [&](const quantity& in) { return in.name == q.name; });
+                if (!is_input)
+                    throw error(output.expression.where,
+                                fmt::format("kernel '{}': output '{}' depends on '{}', which is not among its inputs",
+                                            k.name, output.name.value, q.name));
+            }
+            k.outputs.push_back({output.name.value, value});
+        }
+        return k;
+    }
+
+    const library& done_;
+    derivation out_;
+    std::vector<equation> equations_;
+    GiNaC::exmap values_;
+};
+
+} // namespace
+
+std::string derivation::source_name() const
+{
+    const auto slash = source.file.find_last_of('/');
+    return "derivations/" + (slash == std::string::npos ? source.file : source.file.substr(slash + 1));
+}
+
+const result* derivation::find_result(const std::string& name) const
+{
+    for (const result& r : results)
+        if (r.name == name)
+            return &r;
+    return nullptr;
+}
+
+std::vector<const check_result*> derivation::all_checks() const
+{
+    std::vector<const check_result*> all;
+    for (const step_result& s : steps)
+        for (const check_result& c : s.checks)
+            all.push_back(&c);
+    for (const check_result& c : checks)
+        all.push_back(&c);
+    return all;
+}
+
+bool derivation::all_hold() const
+{
+    const auto checks = all_checks();
+    return std::all_of(checks.begin(), checks.end(), [](const check_result* c) { return c->outcome.holds(); });
+}
+
+derivation derive(const spec::derivation& source, const library& done)
+{
+    return deriver(source, done).run();
+}
+
+} // namespace impact::engine

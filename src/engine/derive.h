@@ -1,0 +1,117 @@
+// Running a derivation: given equations → steps → checked results.
+//
+// The engine trusts no step. A solution is substituted back into the equations it
+// solves; a quotient of equations records the divisor it assumes non-zero; a
+// rearranged equation is proven equivalent to its source; a display form is proven
+// equal to the derived result; every check of the file is proven or reported with its
+// residual. The paper's printed forms are compared with the derived results, but a
+// disagreement there is a finding about the paper, not a failure of the derivation.
+#pragma once
+
+#include "engine/prove.h"
+#include "engine/symbols.h"
+#include "spec/derivation.h"
+
+#include <ginac/ginac.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impact::engine {
+
+/// A named equation: a given one, or one a step produced.
+struct equation {
+    std::string name;
+    GiNaC::ex relation;       ///< lhs == rhs
+    std::string because;
+    std::string paper;
+    source_location where;
+};
+
+/// One proven (or failed) statement.
+struct check_result {
+    std::string name;
+    std::string statement;    ///< the claim in words or as written in the file
+    GiNaC::ex stated;         ///< the claim as written (lhs == rhs), before substitution
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> at;  ///< special values it is checked at
+    std::string because;
+    GiNaC::ex lhs;            ///< both sides after substituting the results
+    GiNaC::ex rhs;
+    verdict outcome;
+    source_location where;
+};
+
+/// What one step did.
+struct step_result {
+    spec::step::kind what;
+    std::string description;  ///< e.g. "solve impulse_M, impulse_m, restitution for v_M_after, v_m_after, J"
+    std::string because;
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> values;  ///< symbol = value, for solve and define
+    std::optional<equation> yields;                        ///< the equation made, for quotient and rearrange
+    std::vector<GiNaC::ex> assumptions;                    ///< relations assumed, e.g. v_m - v_m_after != 0
+    std::vector<check_result> checks;
+    source_location where;
+};
+
+/// The paper's printed form of a result, compared with the derived one.
+struct paper_comparison {
+    std::string subject;      ///< the result it prints, e.g. "v_M_after"
+    std::string paper;        ///< e.g. "Eq. 8"
+    std::string printed_text; ///< as transcribed in the derivation file
+    GiNaC::ex printed;
+    GiNaC::ex derived;
+    verdict agreement;        ///< proven: the paper agrees; failed: a disagreement, with the residual
+    source_location where;
+};
+
+struct result {
+    std::string name;
+    GiNaC::ex symbol;
+    GiNaC::ex value;          ///< as derived, in the declared quantities
+    GiNaC::ex display;        ///< the form to typeset, proven equal to `value`
+    std::string paper;
+};
+
+struct kernel_output {
+    std::string member;       ///< the C++ struct member
+    GiNaC::ex value;
+};
+
+struct kernel {
+    std::string name;
+    std::vector<quantity> inputs;
+    std::vector<kernel_output> outputs;
+};
+
+/// A derivation once run: everything later stages need, with no way back to the file.
+struct derivation {
+    spec::derivation source;
+    symbol_table symbols;
+    std::vector<equation> givens;
+    std::vector<step_result> steps;
+    std::vector<result> results;
+    std::vector<check_result> checks;
+    std::vector<paper_comparison> paper_checks;
+    std::vector<kernel> kernels;
+
+    const std::string& id() const { return source.id.value; }
+    /// `derivations/<file name>`: how generated files name their source, whatever the
+    /// folder the file was read from.
+    std::string source_name() const;
+    const result* find_result(const std::string& name) const;
+    /// Every step check, display proof and check holds (proven or sampled).
+    bool all_hold() const;
+    /// Every check of the derivation, steps first, in order.
+    std::vector<const check_result*> all_checks() const;
+};
+
+/// Derivations already run, by id, for `[[use]]`.
+using library = std::map<std::string, derivation>;
+
+/// Runs one derivation. Bad input throws `impact::error`; a failed check does not throw
+/// but is recorded (see `derivation::all_hold`).
+derivation derive(const spec::derivation& source, const library& done);
+
+} // namespace impact::engine

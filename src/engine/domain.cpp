@@ -1,0 +1,124 @@
+#include "engine/domain.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <regex>
+
+namespace impact::engine {
+namespace {
+
+std::string format_bound(double value)
+{
+    return fmt::format("{}", value);
+}
+
+} // namespace
+
+bool domain::is_positive() const
+{
+    switch (what) {
+    case kind::positive: return true;
+    case kind::interval: return lower > 0 || (lower == 0 && lower_open);
+    default: return false;
+    }
+}
+
+bool domain::is_nonnegative() const
+{
+    switch (what) {
+    case kind::positive:
+    case kind::nonnegative: return true;
+    case kind::interval: return lower >= 0;
+    default: return false;
+    }
+}
+
+std::string domain::to_string() const
+{
+    switch (what) {
+    case kind::real: return "real";
+    case kind::positive: return "positive";
+    case kind::nonnegative: return "nonnegative";
+    case kind::interval: break;
+    }
+    return fmt::format("{}{}, {}{}", lower_open ? '(' : '[', format_bound(lower), format_bound(upper),
+                       upper_open ? ')' : ']');
+}
+
+std::string domain::to_latex() const
+{
+    switch (what) {
+    case kind::real: return "\\in \\mathbb{R}";
+    case kind::positive: return "> 0";
+    case kind::nonnegative: return "\\geq 0";
+    case kind::interval: break;
+    }
+    return fmt::format("\\in {}{}, {}{}", lower_open ? '(' : '[', format_bound(lower), format_bound(upper),
+                       upper_open ? ')' : ']');
+}
+
+double uniform_stream::next()
+{
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+double draw(const domain& range, uniform_stream& stream)
+{
+    const double u = stream.next();
+    switch (range.what) {
+    case domain::kind::real: return -10 + 20 * u;
+    case domain::kind::positive: return std::exp(std::log(20.0) * (2 * u - 1));
+    case domain::kind::nonnegative: return 20 * u;
+    case domain::kind::interval: break;
+    }
+    // Open bounds are never drawn: u < 1 keeps the upper one out; nudge off the lower one.
+    double value = range.lower + (range.upper - range.lower) * u;
+    if (range.lower_open && value == range.lower)
+        value = std::nextafter(value, range.upper);
+    return value;
+}
+
+domain parse_domain(const std::string& text, const source_location& where)
+{
+    domain d;
+    if (text == "real")
+        return d;
+    if (text == "positive") {
+        d.what = domain::kind::positive;
+        return d;
+    }
+    if (text == "nonnegative") {
+        d.what = domain::kind::nonnegative;
+        return d;
+    }
+    // An interval with numeric bounds: [0, 1], (0, 1], [-1/2, 3).
+    static const std::regex interval(
+        R"(^\s*([\[\(])\s*([-+]?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?)\s*,\s*([-+]?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?)\s*([\]\)])\s*$)");
+    std::smatch match;
+    if (!std::regex_match(text, match, interval))
+        throw error(where, fmt::format("domain '{}' is not understood; write real, positive, "
+                                       "nonnegative or an interval such as [0, 1]",
+                                       text));
+    auto bound = [](const std::string& s) {
+        const auto slash = s.find('/');
+        if (slash == std::string::npos)
+            return std::strtod(s.c_str(), nullptr);
+        return std::strtod(s.substr(0, slash).c_str(), nullptr) / std::strtod(s.substr(slash + 1).c_str(), nullptr);
+    };
+    d.what = domain::kind::interval;
+    d.lower_open = match[1] == "(";
+    d.lower = bound(match[2]);
+    d.upper = bound(match[3]);
+    d.upper_open = match[4] == ")";
+    if (!(d.lower < d.upper) || !std::isfinite(d.lower) || !std::isfinite(d.upper))
+        throw error(where, fmt::format("domain '{}' is an empty interval", text));
+    return d;
+}
+
+} // namespace impact::engine

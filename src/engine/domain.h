@@ -1,0 +1,52 @@
+// The domain of a symbol: where its values lie.
+//
+// Domains decide which GiNaC symbol class stands for a quantity (a positive mass is a
+// `possymbol`, so that sqrt(M^2) = M), where numeric checks and verification sample,
+// and which signs the engine may assume when it proves an inequality.
+#pragma once
+
+#include "spec/error.h"
+
+#include <cstdint>
+#include <string>
+
+namespace impact::engine {
+
+struct domain {
+    enum class kind { real, positive, nonnegative, interval };
+    kind what = kind::real;
+    double lower = 0;          ///< interval bounds (exact rationals in the file, e.g. [0, 1])
+    double upper = 0;
+    bool lower_open = false;   ///< `(0, 1]` excludes 0
+    bool upper_open = false;
+
+    /// True when every value of the domain is > 0 (or ≥ 0).
+    bool is_positive() const;
+    bool is_nonnegative() const;
+
+    /// The domain as written in a derivation file, e.g. `[0, 1]`.
+    std::string to_string() const;
+    /// The domain in LaTeX, e.g. `\in [0, 1]` or `> 0`.
+    std::string to_latex() const;
+};
+
+/// A deterministic stream of uniform numbers in [0, 1) (splitmix64), the same on every
+/// platform, so that sampled checks and verification runs are reproducible.
+class uniform_stream {
+public:
+    explicit uniform_stream(std::uint64_t seed) : state_(seed) {}
+    double next();
+
+private:
+    std::uint64_t state_;
+};
+
+/// A value drawn from a domain: intervals uniformly, positive quantities log-uniformly
+/// over [1/20, 20], real ones uniformly over [-10, 10].
+double draw(const domain& range, uniform_stream& stream);
+
+/// Parses `real`, `positive`, `nonnegative`, or an interval `[a, b]`, `(a, b]`, … with
+/// numeric bounds. Throws `impact::error` at `where` when the text is not understood.
+domain parse_domain(const std::string& text, const source_location& where);
+
+} // namespace impact::engine

@@ -1,0 +1,39 @@
+// Proving that two expressions are equal.
+//
+// An identity is `proven` only when the difference of its sides normalises to zero
+// with GiNaC (a rational-function identity, exact for every value where both sides are
+// defined). When normalisation leaves something GiNaC cannot decide, the identity is
+// tested at sampled points of the declared domains with 40-digit arithmetic and
+// reported as `sampled (N points)`, never as proven; if any point disagrees it is
+// `failed` with the residual.
+#pragma once
+
+#include "engine/symbols.h"
+
+#include <ginac/ginac.h>
+
+#include <string>
+
+namespace impact::engine {
+
+struct verdict {
+    enum class status { proven, sampled, failed };
+    status what = status::failed;
+    std::size_t samples = 0;     ///< points tested when not proven symbolically
+    GiNaC::ex residual;          ///< the normalised difference; zero when proven
+    std::string method;          ///< how the verdict was reached, in words
+
+    bool holds() const { return what != status::failed; }
+};
+
+/// `proven`, `sampled (N points)` or `failed`.
+std::string to_string(const verdict& v);
+
+/// Decides whether `lhs == rhs` for all values of the symbols' domains.
+verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols);
+
+/// Decides whether two equations are equivalent: their differences lhs − rhs are equal
+/// up to a non-zero constant factor.
+verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, const symbol_table& symbols);
+
+} // namespace impact::engine

@@ -1,0 +1,63 @@
+// The symbols of one derivation and the parsing of its expressions.
+//
+// Each declared name becomes one GiNaC symbol whose class follows its domain
+// (`possymbol` for positive quantities, `realsymbol` otherwise) and whose TeX name is
+// the LaTeX given in the file. Expressions are read with GiNaC's own parser in strict
+// mode, so an undeclared name is an error at the place it was written.
+#pragma once
+
+#include "engine/domain.h"
+#include "spec/derivation.h"
+
+#include <ginac/ginac.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impact::engine {
+
+/// A declared symbol with its domain; abbreviations carry their definition.
+struct quantity {
+    std::string name;
+    GiNaC::ex symbol;
+    domain range;
+    std::string latex;
+    std::string meaning;
+    std::optional<GiNaC::ex> definition;
+    source_location where;
+};
+
+class symbol_table {
+public:
+    /// Declares a symbol; a second declaration of the same name is an error.
+    const quantity& declare(const spec::symbol& declaration);
+    /// Declares a copy of a quantity from another derivation (for `[[use]]`).
+    const quantity& adopt(const quantity& other);
+
+    const quantity* find(const std::string& name) const;
+    const quantity& at(const spec::text& name) const;   ///< error when undeclared
+    const std::vector<quantity>& all() const { return quantities_; }
+
+    /// Parses an expression; errors name the place of `text`.
+    GiNaC::ex parse(const spec::text& text) const;
+    /// Parses `lhs = rhs` into a GiNaC relational.
+    GiNaC::ex parse_equation(const spec::text& text) const;
+
+    /// Substitutions that expand every abbreviation into declared quantities.
+    GiNaC::exmap abbreviations() const;
+    /// The domain of each symbol, keyed by the GiNaC symbol.
+    const domain* domain_of(const GiNaC::ex& symbol) const;
+
+private:
+    std::vector<quantity> quantities_;
+    GiNaC::symtab table_;
+};
+
+/// An expression in GiNaC's own syntax, as its parser reads it back.
+std::string ginac_text(const GiNaC::ex& e);
+
+/// A parse or arithmetic failure turned into an `impact::error` at `where`.
+[[noreturn]] void rethrow_at(const source_location& where, const std::string& what);
+
+} // namespace impact::engine

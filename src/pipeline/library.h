@@ -1,0 +1,36 @@
+// The derivation library: every file under derivations/, read, ordered and derived.
+//
+// Derivation files may use one another's results (`[[use]]`), so they are derived in
+// an order where each comes after the ones it uses; a missing derivation, a cycle or
+// two files with the same id is bad input.
+#pragma once
+
+#include "engine/derive.h"
+#include "spec/derivation.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace impact::pipeline {
+
+struct library {
+    engine::library derived;          ///< by id
+    std::vector<std::string> order;   ///< ids in the order they were derived
+
+    /// The derivations in derivation order.
+    std::vector<const engine::derivation*> in_order() const;
+    /// True when every check of every derivation holds.
+    bool all_hold() const;
+};
+
+/// Reads every `*.toml` in `directory` (sorted by file name). Throws `impact::error`.
+std::vector<spec::derivation> read_directory(const std::filesystem::path& directory);
+
+/// Derives `sources` in dependency order; with `only`, just that id and what it uses.
+library derive_all(const std::vector<spec::derivation>& sources, const std::string& only = "");
+
+/// The id of the derivation that `name` names: an id, or the path of one of the files.
+std::string resolve_id(const std::vector<spec::derivation>& sources, const std::string& name);
+
+} // namespace impact::pipeline

@@ -1,0 +1,112 @@
+// A derivation file read into plain data.
+//
+// This is the first stage of Impact: `derivations/*.toml` → these structs. Nothing
+// here knows GiNaC; expressions stay text, each with the place it was written so
+// that later stages can point at it when it is wrong. The file format is described
+// in README.md ("Derivation files").
+#pragma once
+
+#include "spec/error.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impact::spec {
+
+/// Text from the file together with where it was written.
+struct text {
+    std::string value;
+    source_location where;
+};
+
+/// `name = expression`, as used for kernel outputs and imported results.
+struct binding {
+    text name;
+    text expression;
+};
+
+/// A symbol of the derivation: a quantity with a domain, or an abbreviation.
+struct symbol {
+    text name;            ///< identifier used in expressions, e.g. `v_M_after`
+    text latex;           ///< how it is typeset, e.g. `v'_M`
+    text domain;          ///< `real`, `positive`, `nonnegative`, or an interval `[0, 1]`
+    text meaning;         ///< a few words for the reader
+    std::optional<text> definition; ///< set for abbreviations such as `m_eff = 1/m + 1/M`
+};
+
+/// A given equation with its justification in words.
+struct given {
+    text name;
+    text equation;        ///< `lhs = rhs`
+    text because;
+    std::optional<text> paper; ///< the paper's equation it is taken from, e.g. `Eq. 6`
+};
+
+/// One step of a derivation. Exactly one of the kinds is filled in.
+struct step {
+    enum class kind { solve, define, quotient, rearrange };
+    kind what = kind::solve;
+    source_location where;
+    text because;
+
+    std::vector<text> equations;   ///< solve, quotient: the equations it works on
+    std::vector<text> unknowns;    ///< solve: the unknowns it solves for
+    text name;                     ///< define, quotient, rearrange: what the step yields
+    text expression;               ///< define: the expression; rearrange: the equation's new form
+    text source;                   ///< rearrange: the equation brought to a new form
+};
+
+/// A named result with the form to display and what the paper prints.
+struct result {
+    text name;
+    std::optional<text> display;   ///< the form to typeset; must be proven equal to the result
+    std::optional<text> paper;     ///< e.g. `Eq. 8`
+    std::optional<text> printed;   ///< the paper's printed form, transcribed
+};
+
+/// An identity that must hold once the results are substituted.
+struct check {
+    text name;
+    text claim;                    ///< `lhs = rhs`
+    text because;
+    std::vector<binding> at;       ///< special values, e.g. `eps = 1`
+};
+
+/// A C++ kernel to emit: a function of `inputs` returning `outputs`.
+struct kernel {
+    text name;
+    std::vector<text> inputs;
+    std::vector<binding> outputs;  ///< struct member = result expression
+};
+
+/// Results taken from another derivation, renamed for use in this one.
+struct use {
+    text derivation;               ///< the id of the derivation used
+    std::vector<binding> results;  ///< local name = result name in that derivation
+};
+
+/// One derivation file.
+struct derivation {
+    std::string file;              ///< path as given, used in messages and banners
+    text id;
+    text title;
+    std::optional<text> paper;
+    text summary;
+    std::vector<use> uses;
+    std::vector<symbol> symbols;
+    std::vector<given> givens;
+    std::vector<step> steps;
+    std::vector<result> results;
+    std::vector<check> checks;
+    std::vector<kernel> kernels;
+};
+
+/// Reads and validates the structure of one derivation file. Throws `impact::error`.
+derivation read_derivation(const std::string& path);
+
+/// Reads a derivation from text; `file` names it in messages.
+derivation parse_derivation(const std::string& contents, const std::string& file);
+
+} // namespace impact::spec

@@ -1,0 +1,345 @@
+// Reads a derivation file (TOML, through toml++) into `spec::derivation`.
+//
+// Only the shape of the file is checked here: required fields, types, unknown keys.
+// Whether expressions parse and symbols are declared is the engine's business,
+// which reports it at the place recorded in each `spec::text`.
+#include "spec/derivation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#define TOML_EXCEPTIONS 1
+#include <toml++/toml.h>
+
+namespace impact::spec {
+namespace {
+
+// A derivation is a page of text; anything much larger is a mistake.
+constexpr std::size_t max_file_bytes = 1 << 20;
+
+source_location location_of(const std::string& file, const toml::source_region& region)
+{
+    return {file, static_cast<std::uint32_t>(region.begin.line),
+            static_cast<std::uint32_t>(region.begin.column)};
+}
+
+// Walks one TOML table, remembering which keys were read so that a misspelt key
+// is reported instead of silently ignored.
+class table_reader {
+public:
+    table_reader(const toml::table& table, std::string file, std::string context)
+        : table_(table), file_(std::move(file)), context_(std::move(context))
+    {
+    }
+
+    source_location where() const { return location_of(file_, table_.source()); }
+
+    bool has(std::string_view key) const { return table_.contains(key); }
+
+    text required_string(std::string_view key)
+    {
+        const toml::node* node = find(key);
+        if (!node)
+            throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
+        return as_text(*node, key);
+    }
+
+    std::optional<text> optional_string(std::string_view key)
+    {
+        const toml::node* node = find(key);
+        if (!node)
+            return std::nullopt;
+        return as_text(*node, key);
+    }
+
+    text string_or(std::string_view key, std::string fallback)
+    {
+        if (auto value = optional_string(key))
+            return *value;
+        return {std::move(fallback), where()};
+    }
+
+    std::vector<text> string_array(std::string_view key, bool required)
+    {
+        const toml::node* node = find(key);
+        if (!node) {
+            if (required)
+                throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
+            return {};
+        }
+        const toml::array* array = node->as_array();
+        if (!array)
+            throw error(location_of(file_, node->source()),
+                        fmt::format("'{}' in {} must be an array of strings", key, context_));
+        std::vector<text> values;
+        for (const toml::node& element : *array)
+            values.push_back(as_text(element, key));
+        return values;
+    }
+
+    // `name = expression` strings, e.g. kernel outputs `v_M = v_M_after`.
+    std::vector<binding> binding_array(std::string_view key, bool required)
+    {
+        std::vector<binding> bindings;
+        for (const text& entry : string_array(key, required))
+            bindings.push_back(split_binding(entry, key));
+        return bindings;
+    }
+
+    // A table of `name = "expression"` pairs, e.g. `at = { eps = "1" }`.
+    std::vector<binding> binding_table(std::string_view key)
+    {
+        const toml::node* node = find(key);
+        if (!node)
+            return {};
+        const toml::table* table = node->as_table();
+        if (!table)
+            throw error(location_of(file_, node->source()),
+                        fmt::format("'{}' in {} must be a table such as {{ eps = \"1\" }}", key, context_));
+        std::vector<binding> bindings;
+        for (const auto& [name, value] : *table) {
+            text expression = as_text(value, key);
+            bindings.push_back({{std::string(name.str()), location_of(file_, name.source())},
+                                std::move(expression)});
+        }
+        return bindings;
+    }
+
+    // An array of tables (`[[given]]` or `given = [{...}, ...]`).
+    std::vector<const toml::table*> table_array(std::string_view key)
+    {
+        const toml::node* node = find(key);
+        if (!node)
+            return {};
+        const toml::array* array = node->as_array();
+        if (!array)
+            throw error(location_of(file_, node->source()),
+                        fmt::format("'{}' must be an array of tables ([[{}]])", key, key));
+        std::vector<const toml::table*> tables;
+        for (const toml::node& element : *array) {
+            const toml::table* table = element.as_table();
+            if (!table)
+                throw error(location_of(file_, element.source()),
+                            fmt::format("each entry of '{}' must be a table", key));
+            tables.push_back(table);
+        }
+        return tables;
+    }
+
+    // Every key must have been read: an unknown key is most likely a typo.
+    void finish() const
+    {
+        for (const auto& [key, value] : table_) {
+            if (!read_.count(std::string(key.str())))
+                throw error(location_of(file_, key.source()),
+                            fmt::format("unknown field '{}' in {}", key.str(), context_));
+        }
+    }
+
+private:
+    const toml::node* find(std::string_view key)
+    {
+        read_.insert(std::string(key));
+        return table_.get(key);
+    }
+
+    text as_text(const toml::node& node, std::string_view key) const
+    {
+        const auto* value = node.as_string();
+        if (!value)
+            throw error(location_of(file_, node.source()),
+                        fmt::format("'{}' in {} must be a string", key, context_));
+        return {value->get(), location_of(file_, node.source())};
+    }
+
+    binding split_binding(const text& entry, std::string_view key) const
+    {
+        const auto equals = entry.value.find('=');
+        if (equals == std::string::npos)
+            throw error(entry.where, fmt::format("'{}' entry \"{}\" must read 'name = expression'",
+                                                 key, entry.value));
+        auto trim = [](std::string s) {
+            const auto first = s.find_first_not_of(" \t");
+            const auto last = s.find_last_not_of(" \t");
+            return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+        };
+        return {{trim(entry.value.substr(0, equals)), entry.where},
+                {trim(entry.value.substr(equals + 1)), entry.where}};
+    }
+
+    const toml::table& table_;
+    std::string file_;
+    std::string context_;
+    std::set<std::string> read_;
+};
+
+symbol read_symbol(table_reader& in)
+{
+    symbol s;
+    s.name = in.required_string("name");
+    s.latex = in.string_or("latex", s.name.value);
+    s.definition = in.optional_string("definition");
+    s.domain = in.string_or("domain", "real");
+    s.meaning = in.string_or("meaning", "");
+    in.finish();
+    return s;
+}
+
+given read_given(table_reader& in)
+{
+    given g;
+    g.name = in.required_string("name");
+    g.equation = in.required_string("equation");
+    g.because = in.required_string("because");
+    g.paper = in.optional_string("paper");
+    in.finish();
+    return g;
+}
+
+step read_step(table_reader& in)
+{
+    step s;
+    s.where = in.where();
+    s.because = in.string_or("because", "");
+    const int kinds = int(in.has("solve")) + int(in.has("define")) + int(in.has("quotient")) +
+                      int(in.has("rearrange"));
+    if (kinds != 1)
+        throw error(s.where, "a step must have exactly one of 'solve', 'define', 'quotient' or 'rearrange'");
+    if (in.has("solve")) {
+        s.what = step::kind::solve;
+        s.equations = in.string_array("solve", true);
+        s.unknowns = in.string_array("for", true);
+    } else if (in.has("define")) {
+        s.what = step::kind::define;
+        s.name = in.required_string("define");
+        s.expression = in.required_string("as");
+    } else if (in.has("quotient")) {
+        s.what = step::kind::quotient;
+        s.equations = in.string_array("quotient", true);
+        s.name = in.required_string("name");
+        if (s.equations.size() != 2)
+            throw error(s.where, "'quotient' takes two equations: the numerator and the denominator");
+    } else {
+        s.what = step::kind::rearrange;
+        s.source = in.required_string("rearrange");
+        s.expression = in.required_string("into");
+        s.name = in.required_string("name");
+    }
+    in.finish();
+    return s;
+}
+
+result read_result(table_reader& in)
+{
+    result r;
+    r.name = in.required_string("name");
+    r.display = in.optional_string("display");
+    r.paper = in.optional_string("paper");
+    r.printed = in.optional_string("printed");
+    in.finish();
+    return r;
+}
+
+check read_check(table_reader& in)
+{
+    check c;
+    c.name = in.required_string("name");
+    c.claim = in.required_string("claim");
+    c.because = in.string_or("because", "");
+    c.at = in.binding_table("at");
+    in.finish();
+    return c;
+}
+
+kernel read_kernel(table_reader& in)
+{
+    kernel k;
+    k.name = in.required_string("name");
+    k.inputs = in.string_array("inputs", true);
+    k.outputs = in.binding_array("outputs", true);
+    in.finish();
+    return k;
+}
+
+use read_use(table_reader& in)
+{
+    use u;
+    u.derivation = in.required_string("derivation");
+    u.results = in.binding_array("results", true);
+    in.finish();
+    return u;
+}
+
+// Reads every entry of an array of tables with `read`.
+template <class T, class Read>
+std::vector<T> read_all(table_reader& top, const std::string& file, std::string_view key, Read read)
+{
+    std::vector<T> items;
+    for (const toml::table* table : top.table_array(key)) {
+        table_reader in(*table, file, fmt::format("[[{}]]", key));
+        items.push_back(read(in));
+    }
+    return items;
+}
+
+} // namespace
+
+derivation parse_derivation(const std::string& contents, const std::string& file)
+{
+    if (contents.size() > max_file_bytes)
+        throw error({file, 0, 0}, fmt::format("file is {} bytes, larger than the limit of {} bytes",
+                                              contents.size(), max_file_bytes));
+    if (contents.find('\0') != std::string::npos)
+        throw error({file, 0, 0}, "file is binary (it contains NUL bytes), not a TOML derivation");
+    if (contents.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw error({file, 0, 0}, "file is empty");
+
+    toml::table table;
+    try {
+        table = toml::parse(contents, file);
+    } catch (const toml::parse_error& e) {
+        throw error(location_of(file, e.source()), fmt::format("invalid TOML: {}", e.description()));
+    }
+
+    table_reader top(table, file, "the derivation");
+    derivation d;
+    d.file = file;
+    d.id = top.required_string("id");
+    d.title = top.required_string("title");
+    d.paper = top.optional_string("paper");
+    d.summary = top.string_or("summary", "");
+    d.uses = read_all<use>(top, file, "use", read_use);
+    d.symbols = read_all<symbol>(top, file, "symbol", read_symbol);
+    d.givens = read_all<given>(top, file, "given", read_given);
+    d.steps = read_all<step>(top, file, "step", read_step);
+    d.results = read_all<result>(top, file, "result", read_result);
+    d.checks = read_all<check>(top, file, "check", read_check);
+    d.kernels = read_all<kernel>(top, file, "kernel", read_kernel);
+    top.finish();
+
+    if (d.results.empty())
+        throw error(top.where(), "the derivation declares no [[result]]");
+    return d;
+}
+
+derivation read_derivation(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw error({path, 0, 0}, "cannot open the file");
+    in.seekg(0, std::ios::end);
+    const auto size = static_cast<std::size_t>(in.tellg());
+    if (size > max_file_bytes)
+        throw error({path, 0, 0}, fmt::format("file is {} bytes, larger than the limit of {} bytes",
+                                              size, max_file_bytes));
+    in.seekg(0);
+    std::ostringstream contents;
+    contents << in.rdbuf();
+    return parse_derivation(contents.str(), path);
+}
+
+} // namespace impact::spec
