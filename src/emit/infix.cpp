@@ -169,10 +169,10 @@ void print_power(const GiNaC::power& power, const print_infix& c, unsigned level
         c.s << ')';
         return;
     }
-    parenthesise p(c, level, atom_level + 1);
+    parenthesise p(c, level, atom_level);
     print_operand(base, c, atom_level + 1);
     c.s << '^';
-    print_operand(exponent, c, atom_level + 1);
+    print_operand(exponent, c, atom_level);
 }
 
 // Functions are named in the style's way (std::acos), which GiNaC's function printing

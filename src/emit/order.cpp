@@ -82,9 +82,12 @@ std::string term_order::key(const GiNaC::ex& e) const
 
 std::vector<GiNaC::ex> term_order::terms(const GiNaC::ex& sum) const
 {
+    // A positive constant leads (1 - eps^2), a negative one trails (eps^2 - 1).
     std::vector<std::pair<std::string, GiNaC::ex>> keyed;
-    for (std::size_t i = 0; i < sum.nops(); ++i)
-        keyed.emplace_back(key(sum.op(i)), sum.op(i));
+    for (std::size_t i = 0; i < sum.nops(); ++i) {
+        const GiNaC::ex& term = sum.op(i);
+        keyed.emplace_back(is_negative_number(term) ? "~" : key(term), term);
+    }
     std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<GiNaC::ex> ordered;
     for (auto& [k, term] : keyed)

@@ -135,9 +135,17 @@ GiNaC::ex symbol_table::parse_equation(const spec::text& text) const
     if (equals == std::string::npos || text.value.find('=', equals + 1) != std::string::npos ||
         (equals > 0 && std::string("<>!").find(text.value[equals - 1]) != std::string::npos))
         throw error(text.where, fmt::format("equation \"{}\" must read 'lhs = rhs' with a single '='", text.value));
-    const spec::text lhs{text.value.substr(0, equals), text.where};
-    const spec::text rhs{text.value.substr(equals + 1), text.where};
-    return parse(lhs) == parse(rhs);
+    // Each side is trimmed and located in the file: one column past the opening quote.
+    auto side = [&](std::size_t begin, std::size_t end) {
+        const std::string raw = text.value.substr(begin, end - begin);
+        const auto first = raw.find_first_not_of(" \t");
+        const auto last = raw.find_last_not_of(" \t");
+        spec::text part{first == std::string::npos ? std::string() : raw.substr(first, last - first + 1), text.where};
+        if (part.where.column > 0)
+            part.where.column += static_cast<std::uint32_t>(1 + begin + (first == std::string::npos ? 0 : first));
+        return part;
+    };
+    return parse(side(0, equals)) == parse(side(equals + 1, text.value.size()));
 }
 
 GiNaC::exmap symbol_table::abbreviations() const

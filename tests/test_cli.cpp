@@ -1,0 +1,189 @@
+// The `impact` command end to end: output/ reproduced, exit codes, and bad input
+// reported with file and line while output/ stays as it was.
+#define BOOST_TEST_MODULE test_cli
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path source_dir = IMPACT_SOURCE_DIR;
+
+struct run_result {
+    int status = -1;
+    std::string output;  // stdout and stderr together
+};
+
+run_result run(const std::string& arguments)
+{
+    const std::string command = std::string(IMPACT_BINARY) + " " + arguments + " 2>&1";
+    run_result r;
+    FILE* pipe = popen(command.c_str(), "r");
+    BOOST_REQUIRE(pipe);
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), buffer.size(), pipe))
+        r.output += buffer.data();
+    const int status = pclose(pipe);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+// Every file under `root`, by relative path, with its bytes.
+std::map<std::string, std::string> snapshot(const fs::path& root)
+{
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file())
+            continue;
+        std::ifstream in(entry.path(), std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        files[fs::relative(entry.path(), root).generic_string()] = bytes.str();
+    }
+    return files;
+}
+
+// A scratch folder with a copy of derivations/ and an output/ holding a marker file.
+struct scratch {
+    fs::path root;
+    scratch()
+    {
+        root = fs::temp_directory_path() /
+               ("impact-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
+        fs::remove_all(root);
+        fs::create_directories(root / "output");
+        fs::copy(source_dir / "derivations", root / "derivations");
+        std::ofstream(root / "output" / "marker.txt") << "the previous output\n";
+    }
+    ~scratch() { fs::remove_all(root); }
+    static int& counter()
+    {
+        static int n = 0;
+        return n;
+    }
+    void write(const std::string& name, const std::string& text) const
+    {
+        std::ofstream(root / "derivations" / name) << text;
+    }
+    run_result regenerate() const
+    {
+        return run("regenerate --derivations " + (root / "derivations").string() + " --output " +
+                   (root / "output").string());
+    }
+};
+
+const std::string valid_prefix = "id = \"bad\"\ntitle = \"a bad derivation\"\n"
+                                 "[[symbol]]\nname = \"x\"\n"
+                                 "[[symbol]]\nname = \"y\"\n";
+
+void expect_refused(const std::string& text, const std::string& where, const std::string& what)
+{
+    const scratch s;
+    s.write("zz_bad.toml", text);
+    const auto before = snapshot(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.output.find("zz_bad.toml:" + where) != std::string::npos, r.output);
+    BOOST_TEST(r.output.find(": error: ") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find(what) != std::string::npos, r.output);
+    BOOST_TEST((snapshot(s.root / "output") == before));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(regeneration_reproduces_the_committed_output_byte_for_byte)
+{
+    const scratch s;
+    fs::remove_all(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST_REQUIRE(r.status == 0, r.output);
+    const auto fresh = snapshot(s.root / "output");
+    const auto committed = snapshot(source_dir / "output");
+    for (const auto& [name, bytes] : committed) {
+        const auto found = fresh.find(name);
+        BOOST_TEST((found != fresh.end()), "output/" + name + " is no longer generated");
+        if (found != fresh.end())
+            BOOST_TEST((found->second == bytes), "output/" + name + " differs from a fresh regeneration");
+    }
+    for (const auto& [name, bytes] : fresh)
+        BOOST_TEST(committed.count(name) == 1u, "output/" + name + " is generated but not committed");
+}
+
+BOOST_AUTO_TEST_CASE(regenerating_twice_gives_identical_files)
+{
+    const scratch s;
+    BOOST_TEST_REQUIRE(s.regenerate().status == 0);
+    const auto first = snapshot(s.root / "output");
+    BOOST_TEST_REQUIRE(s.regenerate().status == 0);
+    BOOST_TEST((snapshot(s.root / "output") == first));
+    BOOST_TEST(first.count("marker.txt") == 0u);  // the old output was replaced, not merged into
+}
+
+BOOST_AUTO_TEST_CASE(invalid_toml_names_file_and_line_and_leaves_output_untouched)
+{
+    expect_refused(valid_prefix + "[[given]\nname = \"g\"\n", "7:", "invalid TOML");
+}
+
+BOOST_AUTO_TEST_CASE(an_undeclared_symbol_names_file_and_line_and_leaves_output_untouched)
+{
+    expect_refused(valid_prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*w\"\nbecause = \"b\"\n"
+                                  "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n",
+                   "9:", "undeclared symbol 'w'");
+}
+
+BOOST_AUTO_TEST_CASE(an_expression_that_does_not_parse_names_file_and_line_and_leaves_output_untouched)
+{
+    expect_refused(valid_prefix + "[[given]]\nname = \"g\"\nequation = \"y = (2*x\"\nbecause = \"b\"\n"
+                                  "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n",
+                   "9:", "does not parse");
+}
+
+BOOST_AUTO_TEST_CASE(a_failed_check_exits_one_and_leaves_output_untouched)
+{
+    const scratch s;
+    s.write("zz_bad.toml", valid_prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                                          "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"
+                                          "[[check]]\nname = \"wrong\"\nclaim = \"y = 3*x\"\n");
+    const auto before = snapshot(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST(r.status == 1);
+    BOOST_TEST(r.output.find("check failed: bad: wrong") != std::string::npos, r.output);
+    BOOST_TEST((snapshot(s.root / "output") == before));
+}
+
+BOOST_AUTO_TEST_CASE(derive_prints_eq8_results_and_proven_checks)
+{
+    const run_result r = run("derive inelastic_line --derivations " + (source_dir / "derivations").string());
+    BOOST_TEST(r.status == 0, r.output);
+    BOOST_TEST(r.output.find("v_M_after = (M*v_M+m*v_m-m*eps*(v_M-v_m))/(M+m)") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("J = M*m*(1+eps)*(v_M-v_m)/(M+m)") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("proven             momentum_conserved") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("proven             restitution_law_holds") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("proven             elastic_limit_M") != std::string::npos, r.output);
+}
+
+BOOST_AUTO_TEST_CASE(every_subcommand_has_help)
+{
+    for (const char* command : {"", "regenerate ", "derive ", "latex ", "kernels ", "list "}) {
+        const run_result r = run(std::string(command) + "--help");
+        BOOST_TEST(r.status == 0, command);
+        BOOST_TEST((r.output.find("--derivations") != std::string::npos || std::string(command).empty()), command);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(an_unknown_derivation_is_an_error)
+{
+    const run_result r = run("derive no_such_thing --derivations " + (source_dir / "derivations").string());
+    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.output.find("no derivation with id or file 'no_such_thing'") != std::string::npos, r.output);
+}

@@ -1,0 +1,299 @@
+// The engine: derivations run, every step checked, and bad derivations refused.
+#define BOOST_TEST_MODULE test_engine
+#include <boost/test/unit_test.hpp>
+
+#include "engine/derive.h"
+#include "pipeline/library.h"
+
+#include <string>
+
+namespace {
+
+using namespace impact;
+
+// A derivation over x > 0, real y and z, eps in [0, 1], with `body` appended.
+std::string derivation_text(const std::string& body, const std::string& id = "t")
+{
+    return "id = \"" + id + "\"\ntitle = \"test\"\n"
+           "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+           "[[symbol]]\nname = \"y\"\n"
+           "[[symbol]]\nname = \"z\"\n"
+           "[[symbol]]\nname = \"eps\"\ndomain = \"[0, 1]\"\n" +
+           body;
+}
+constexpr unsigned header_lines = 12;  // lines before `body` in derivation_text
+
+engine::derivation derive_text(const std::string& text, const engine::library& done = {})
+{
+    return engine::derive(spec::parse_derivation(text, "test.toml"), done);
+}
+
+impact::error error_for(const std::string& text)
+{
+    try {
+        derive_text(text);
+    } catch (const impact::error& e) {
+        return e;
+    }
+    BOOST_FAIL("no error for:\n" + text);
+    throw;
+}
+
+bool mentions(const impact::error& e, const std::string& words)
+{
+    return e.message().find(words) != std::string::npos;
+}
+
+const engine::check_result& check_named(const engine::derivation& d, const std::string& name)
+{
+    for (const engine::check_result* c : d.all_checks())
+        if (c->name == name)
+            return *c;
+    BOOST_FAIL("no check " + name);
+    throw;
+}
+
+// The symbols of a derivation by name, to type closed forms against.
+GiNaC::ex sym(const engine::derivation& d, const std::string& name)
+{
+    return d.symbols.find(name)->symbol;
+}
+
+bool equal(const GiNaC::ex& a, const GiNaC::ex& b)
+{
+    return GiNaC::normal(a - b).is_zero();
+}
+
+const std::string solve_y = "[[given]]\nname = \"g\"\nequation = \"y = 3*x\"\nbecause = \"given\"\n"
+                            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n";
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(eq8)
+
+const pipeline::library& eq8_library()
+{
+    static const pipeline::library lib =
+        pipeline::derive_all(pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"), "inelastic_line");
+    return lib;
+}
+
+BOOST_AUTO_TEST_CASE(final_velocities_and_impulse_match_the_closed_forms)
+{
+    const engine::derivation& d = eq8_library().derived.at("inelastic_line");
+    const GiNaC::ex M = sym(d, "M"), m = sym(d, "m"), vM = sym(d, "v_M"), vm = sym(d, "v_m"), eps = sym(d, "eps");
+    // Eq. 8, typed in: the paper's forms, which are right here.
+    BOOST_TEST(equal(d.find_result("v_M_after")->value, (M * vM + m * vm + eps * m * (vm - vM)) / (M + m)));
+    BOOST_TEST(equal(d.find_result("v_m_after")->value, (m * vm + M * vM + eps * M * (vM - vm)) / (M + m)));
+    // J = (1 + eps) (v_M - v_m) / (1/m + 1/M): the reduced mass times the closing speed.
+    BOOST_TEST(equal(d.find_result("J")->value, (1 + eps) * (vM - vm) / (1 / m + 1 / M)));
+}
+
+BOOST_AUTO_TEST_CASE(momentum_restitution_and_elastic_limit_are_proven)
+{
+    const engine::derivation& d = eq8_library().derived.at("inelastic_line");
+    for (const char* name : {"momentum_conserved", "restitution_law_holds", "elastic_limit_M", "elastic_limit_m",
+                             "impulse_M holds for the solution", "display form of J"})
+        BOOST_TEST(engine::to_string(check_named(d, name).outcome) == "proven", name);
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(the_paper_s_printed_eq8_agrees)
+{
+    const engine::derivation& d = eq8_library().derived.at("inelastic_line");
+    BOOST_TEST(d.paper_checks.size() == 3u);
+    for (const engine::paper_comparison& p : d.paper_checks)
+        BOOST_TEST(engine::to_string(p.agreement) == "proven", p.subject);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(steps)
+
+BOOST_AUTO_TEST_CASE(a_quotient_of_equations_gives_conservation_of_relative_velocity)
+{
+    // Eq. 2's route on the elastic collision: energy difference / momentum difference.
+    const std::string text = "id = \"q\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"M\"\ndomain = \"positive\"\n[[symbol]]\nname = \"m\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"u\"\n[[symbol]]\nname = \"v\"\n[[symbol]]\nname = \"up\"\n[[symbol]]\nname = \"vp\"\n"
+        "[[given]]\nname = \"p\"\nequation = \"m*(v - vp) = M*(up - u)\"\nbecause = \"momentum\"\n"
+        "[[given]]\nname = \"E\"\nequation = \"m*(v^2 - vp^2) = M*(up^2 - u^2)\"\nbecause = \"energy\"\n"
+        "[[step]]\nquotient = [\"E\", \"p\"]\nname = \"relative\"\n"
+        "[[step]]\nrearrange = \"relative\"\ninto = \"v - u = -(vp - up)\"\nname = \"relative2\"\n"
+        "[[step]]\nsolve = [\"p\", \"relative2\"]\nfor = [\"up\", \"vp\"]\n"
+        "[[result]]\nname = \"up\"\n";
+    const engine::derivation d = derive_text(text);
+    const GiNaC::ex M = sym(d, "M"), m = sym(d, "m"), u = sym(d, "u"), v = sym(d, "v");
+    BOOST_TEST(equal(d.find_result("up")->value, ((M - m) * u + 2 * m * v) / (M + m)));  // Eq. 3
+    BOOST_TEST(d.steps.at(0).assumptions.size() == 1u);  // the divisor m (v - vp) is assumed non-zero
+    BOOST_TEST(engine::to_string(check_named(d, "relative2 is equivalent to relative").outcome) == "proven");
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_define_step_substitutes_earlier_results)
+{
+    const engine::derivation d = derive_text(derivation_text(
+        solve_y + "[[step]]\ndefine = \"z\"\nas = \"y^2 - x\"\n[[result]]\nname = \"z\"\ndisplay = \"x*(9*x - 1)\"\n"));
+    const GiNaC::ex x = sym(d, "x");
+    BOOST_TEST(equal(d.find_result("z")->value, 9 * x * x - x));
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_display_form_that_is_not_the_result_fails_with_its_residual)
+{
+    const engine::derivation d =
+        derive_text(derivation_text(solve_y + "[[result]]\nname = \"y\"\ndisplay = \"2*x\"\n"));
+    const engine::check_result& c = check_named(d, "display form of y");
+    BOOST_TEST(engine::to_string(c.outcome) == "failed");
+    BOOST_TEST(equal(c.outcome.residual, -sym(d, "x")));  // 2x - 3x
+    BOOST_TEST(!d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_false_check_fails_and_a_true_one_at_a_special_value_is_proven)
+{
+    const engine::derivation d = derive_text(derivation_text(
+        solve_y + "[[result]]\nname = \"y\"\n"
+                  "[[check]]\nname = \"wrong\"\nclaim = \"y = 2*x\"\n"
+                  "[[check]]\nname = \"at_two\"\nclaim = \"y = 6\"\nat = { x = \"2\" }\n"));
+    BOOST_TEST(engine::to_string(check_named(d, "wrong").outcome) == "failed");
+    BOOST_TEST(engine::to_string(check_named(d, "at_two").outcome) == "proven");
+}
+
+BOOST_AUTO_TEST_CASE(an_identity_gi_nac_cannot_normalise_is_sampled_never_proven)
+{
+    // sqrt(z^2) = |z| holds for real z, but normal() cannot show it.
+    const engine::derivation d = derive_text(derivation_text(
+        solve_y + "[[result]]\nname = \"y\"\n"
+                  "[[check]]\nname = \"abs\"\nclaim = \"sqrt(z^2) = abs(z)\"\n"
+                  "[[check]]\nname = \"not_z\"\nclaim = \"sqrt(z^2) = z\"\n"
+                  "[[check]]\nname = \"positive_x\"\nclaim = \"sqrt(x^2) = x\"\n"));
+    BOOST_TEST(engine::to_string(check_named(d, "abs").outcome) == "sampled (200 points)");
+    BOOST_TEST(engine::to_string(check_named(d, "not_z").outcome) == "failed");       // z < 0 disproves it
+    BOOST_TEST(engine::to_string(check_named(d, "positive_x").outcome) == "proven");  // x > 0 is declared
+}
+
+BOOST_AUTO_TEST_CASE(a_derivation_uses_the_results_of_another)
+{
+    engine::library done;
+    done.emplace("base", derive_text(derivation_text(solve_y + "[[result]]\nname = \"y\"\n", "base")));
+    const engine::derivation d = derive_text(
+        derivation_text("[[use]]\nderivation = \"base\"\nresults = [\"y3 = y\"]\n"
+                        "[[step]]\ndefine = \"z\"\nas = \"y3 + 1\"\n[[result]]\nname = \"z\"\n"),
+        done);
+    BOOST_TEST(equal(d.find_result("z")->value, 3 * sym(d, "x") + 1));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(bad_input)
+
+BOOST_AUTO_TEST_CASE(an_undeclared_symbol_is_named_with_its_line)
+{
+    const impact::error e = error_for(derivation_text(
+        "[[given]]\nname = \"g\"\nequation = \"y = 3*w\"\nbecause = \"given\"\n[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(mentions(e, "undeclared symbol 'w'"));
+    BOOST_TEST(e.where().line == header_lines + 3);
+}
+
+BOOST_AUTO_TEST_CASE(an_expression_that_does_not_parse_is_shown)
+{
+    const impact::error e = error_for(derivation_text(
+        "[[given]]\nname = \"g\"\nequation = \"y = 3*/x\"\nbecause = \"given\"\n[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(mentions(e, "does not parse"));
+    BOOST_TEST(mentions(e, "3*/x"));
+    BOOST_TEST(e.where().line == header_lines + 3);
+}
+
+BOOST_AUTO_TEST_CASE(an_equation_needs_exactly_one_equals_sign)
+{
+    const impact::error e = error_for(derivation_text(
+        "[[given]]\nname = \"g\"\nequation = \"y == 3*x\"\nbecause = \"given\"\n[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(mentions(e, "single '='"));
+}
+
+BOOST_AUTO_TEST_CASE(a_symbol_declared_twice_is_refused)
+{
+    const impact::error e = error_for(derivation_text("[[symbol]]\nname = \"y\"\n[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(mentions(e, "declared twice"));
+    BOOST_TEST(e.where().line == header_lines + 2);
+}
+
+BOOST_AUTO_TEST_CASE(a_domain_that_is_not_understood_is_refused)
+{
+    const impact::error e =
+        error_for(derivation_text("[[symbol]]\nname = \"w\"\ndomain = \"sometimes\"\n[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(mentions(e, "domain 'sometimes' is not understood"));
+    BOOST_TEST(e.where().line == header_lines + 3);
+}
+
+BOOST_AUTO_TEST_CASE(singular_inconsistent_underdetermined_and_nonlinear_systems_are_refused)
+{
+    const std::string two = "[[given]]\nname = \"a\"\nequation = \"y + z = x\"\nbecause = \"a\"\n"
+                            "[[given]]\nname = \"b\"\nequation = \"2*y + 2*z = EXPR\"\nbecause = \"b\"\n";
+    auto with = [&](const std::string& rhs, const std::string& step) {
+        std::string t = two;
+        t.replace(t.find("EXPR"), 4, rhs);
+        return derivation_text(t + step + "[[result]]\nname = \"y\"\n");
+    };
+    const std::string solve_both = "[[step]]\nsolve = [\"a\", \"b\"]\nfor = [\"y\", \"z\"]\n";
+    BOOST_TEST(mentions(error_for(with("2*x", solve_both)), "singular"));
+    BOOST_TEST(mentions(error_for(with("3*x", solve_both)), "inconsistent"));
+    BOOST_TEST(mentions(error_for(with("2*x", "[[step]]\nsolve = [\"a\"]\nfor = [\"y\", \"z\"]\n")),
+                        "2 unknowns but only 1 equations"));
+    BOOST_TEST(mentions(error_for(derivation_text("[[given]]\nname = \"a\"\nequation = \"y^2 = x\"\nbecause = \"a\"\n"
+                                                  "[[step]]\nsolve = [\"a\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n")),
+                        "not linear"));
+}
+
+BOOST_AUTO_TEST_CASE(a_step_that_divides_by_zero_is_refused)
+{
+    const impact::error e = error_for(derivation_text(
+        "[[step]]\ndefine = \"y\"\nas = \"x/(z - z)\"\n[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(mentions(e, "division by zero"));
+    BOOST_TEST(e.where().line == header_lines + 3);  // the `as` expression
+}
+
+BOOST_AUTO_TEST_CASE(a_result_no_step_derives_is_refused)
+{
+    BOOST_TEST(mentions(error_for(derivation_text("[[result]]\nname = \"y\"\n")), "not derived by any step"));
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_must_take_every_symbol_its_outputs_use)
+{
+    const impact::error e = error_for(derivation_text(
+        "[[step]]\ndefine = \"y\"\nas = \"x + z\"\n[[result]]\nname = \"y\"\n"
+        "[[kernel]]\nname = \"k\"\ninputs = [\"x\"]\noutputs = [\"y = y\"]\n"));
+    BOOST_TEST(mentions(e, "depends on 'z', which is not among its inputs"));
+}
+
+BOOST_AUTO_TEST_CASE(using_a_derivation_that_does_not_exist_is_refused)
+{
+    const impact::error e = error_for(derivation_text(
+        "[[use]]\nderivation = \"nowhere\"\nresults = [\"w = y\"]\n" + solve_y + "[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(mentions(e, "'nowhere', which does not exist"));
+}
+
+BOOST_AUTO_TEST_CASE(a_cycle_of_uses_and_a_repeated_id_are_refused)
+{
+    auto uses = [&](const std::string& id, const std::string& other) {
+        return spec::parse_derivation(
+            derivation_text("[[use]]\nderivation = \"" + other + "\"\nresults = [\"w = y\"]\n" + solve_y +
+                                "[[result]]\nname = \"y\"\n",
+                            id),
+            id + ".toml");
+    };
+    try {
+        pipeline::derive_all({uses("a", "b"), uses("b", "a")});
+        BOOST_FAIL("a cycle was accepted");
+    } catch (const impact::error& e) {
+        BOOST_TEST(mentions(e, "a cycle"));
+    }
+    try {
+        pipeline::derive_all({uses("a", "b"), uses("a", "c")});
+        BOOST_FAIL("a repeated id was accepted");
+    } catch (const impact::error& e) {
+        BOOST_TEST(mentions(e, "id 'a' is also used by a.toml"));
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
