@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what Impact needs from Debian's packages; does nothing when all are there.
+set -euo pipefail
+
+packages=(
+  g++ cmake make pkg-config
+  libginac-dev libcln-dev          # symbolic and arbitrary-precision arithmetic
+  libboost-test-dev                # tests
+  libfmt-dev                       # formatting
+  libtomlplusplus-dev              # derivation files
+  libcli11-dev                     # the command line
+  nlohmann-json3-dev               # derivations.json
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "scripts/setup.sh: installing ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
