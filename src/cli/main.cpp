@@ -3,7 +3,7 @@
 // Exit status: 0 when everything holds, 1 when a check failed, 2 on bad input
 // (a derivation file that cannot be read, with file, line and what is wrong).
 #include "emit/cxx.h"
-#include "emit/infix.h"
+#include "engine/infix.h"
 #include "emit/latex.h"
 #include "pipeline/library.h"
 #include "pipeline/regenerate.h"
@@ -50,8 +50,8 @@ int run_regenerate(const options& o)
 
 void print_derivation(const engine::derivation& d)
 {
-    const emit::term_order order = emit::declaration_order(d);
-    auto text = [&](const GiNaC::ex& e) { return emit::ginac_syntax(e, order); };
+    const engine::term_order order = engine::declaration_order(d.symbols);
+    auto text = [&](const GiNaC::ex& e) { return engine::ginac_syntax(e, order); };
     auto relation = [&](const GiNaC::ex& r) { return text(r.lhs()) + " = " + text(r.rhs()); };
 
     fmt::print("{}: {}{}\n  from {}\n", d.id(), d.source.title.value,

@@ -45,7 +45,7 @@ std::string kernel_header(const engine::derivation& d)
     out += fmt::format("// {}{}.\n", d.source.title.value,
                        d.source.paper ? fmt::format(" ({} of the paper)", d.source.paper->value) : "");
     out += "#pragma once\n\n#include <cmath>\n\nnamespace impact {\n";
-    const term_order order = declaration_order(d);
+    const term_order order = engine::declaration_order(d.symbols);
     for (const engine::kernel& k : d.kernels) {
         out += fmt::format("\n/// What {} returns.\ntemplate <class Real>\nstruct {}_result {{\n", k.name, k.name);
         for (const engine::kernel_output& o : k.outputs)

@@ -6,7 +6,7 @@
 // functions with `std::`.
 #pragma once
 
-#include "emit/infix.h"
+#include "engine/infix.h"
 #include "engine/derive.h"
 
 #include <ginac/ginac.h>
@@ -14,6 +14,9 @@
 #include <string>
 
 namespace impact::emit {
+
+using engine::print_infix;
+using engine::term_order;
 
 /// The C++ print context: `std::` functions, `Real(2)` literals, x * x for x^2.
 class print_cxx : public print_infix {

@@ -1,11 +1,15 @@
 #include "emit/json.h"
 
-#include "emit/infix.h"
+#include "engine/infix.h"
+#include "engine/order.h"
 
 #include <nlohmann/json.hpp>
 
 namespace impact::emit {
 namespace {
+
+using engine::ginac_syntax;
+using engine::term_order;
 
 using json = nlohmann::ordered_json;
 
@@ -27,7 +31,7 @@ json check_json(const engine::check_result& c, const term_order& order)
 
 json derivation_json(const engine::derivation& d)
 {
-    const term_order order = declaration_order(d);
+    const term_order order = engine::declaration_order(d.symbols);
     json j;
     j["id"] = d.id();
     j["title"] = d.source.title.value;

@@ -72,13 +72,15 @@ void print_add(const GiNaC::add& sum, const print_tex& c, unsigned level)
     }
 }
 
+void print_power_term(const term_order::power_term& p, const print_tex& c, unsigned level);
+
 // Factors side by side; two numbers in a row need a \cdot between them.
-void print_factors(const std::vector<GiNaC::ex>& factors, const print_tex& c, unsigned level)
+void print_factors(const std::vector<term_order::power_term>& factors, const print_tex& c, unsigned level)
 {
     for (std::size_t i = 0; i < factors.size(); ++i) {
         if (i > 0)
-            c.s << (GiNaC::is_a<GiNaC::numeric>(factors[i]) ? " \\cdot " : " ");
-        print_operand(factors[i], c, factors.size() == 1 ? level : product_level);
+            c.s << (GiNaC::is_a<GiNaC::numeric>(factors[i].base) ? " \\cdot " : " ");
+        print_power_term(factors[i], c, factors.size() == 1 ? level : product_level);
     }
 }
 
@@ -101,15 +103,20 @@ void print_mul(const GiNaC::mul& product, const print_tex& c, unsigned level)
     c.s << '}';
 }
 
-void print_power(const GiNaC::power& power, const print_tex& c, unsigned level)
+// base^exponent, the base never rebuilt into a GiNaC power (see engine/order.h).
+void print_power_term(const term_order::power_term& p, const print_tex& c, unsigned level)
 {
-    const GiNaC::ex base = power.op(0);
-    const GiNaC::ex exponent = power.op(1);
+    const GiNaC::ex& base = p.base;
+    const GiNaC::ex& exponent = p.exponent;
+    if (exponent.is_equal(1)) {
+        print_operand(base, c, level);
+        return;
+    }
     if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
         const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(exponent);
         if (n.is_negative()) {
             c.s << "\\frac{1}{";
-            print_operand(GiNaC::pow(base, -n), c, 0);
+            print_power_term({base, -n}, c, 0);
             c.s << '}';
             return;
         }
@@ -126,7 +133,17 @@ void print_power(const GiNaC::power& power, const print_tex& c, unsigned level)
     c.s << "}^{";
     print_operand(exponent, c, 0);
     c.s << '}';
-    (void)level;
+}
+
+void print_power(const GiNaC::power& power, const print_tex& c, unsigned level)
+{
+    // (v_m - v_M)^2, never (-v_M + v_m)^2: a sum in the base leads with a positive term.
+    bool negated = false;
+    const term_order::power_term p = c.order->oriented(power, negated);
+    parenthesise paren(c, level, negated ? product_level : atom_level + 1);
+    if (negated)
+        c.s << '-';
+    print_power_term(p, c, negated ? atom_level : level);
 }
 
 void print_operand(const GiNaC::ex& e, const print_tex& c, unsigned level)
@@ -222,7 +239,7 @@ std::string latex_fragment_name(const engine::derivation& d)
 
 std::string latex_fragment(const engine::derivation& d)
 {
-    const term_order order = declaration_order(d);
+    const term_order order = engine::declaration_order(d.symbols);
     auto math = [&](const GiNaC::ex& e) { return latex(e, order); };
     auto relation = [&](const GiNaC::ex& r) { return math(r.lhs()) + " &= " + math(r.rhs()); };
 

@@ -5,7 +5,7 @@
 // operands in `term_order` so that the text is the same on every run.
 #pragma once
 
-#include "emit/order.h"
+#include "engine/order.h"
 #include "engine/derive.h"
 
 #include <ginac/ginac.h>
@@ -13,6 +13,8 @@
 #include <string>
 
 namespace impact::emit {
+
+using engine::term_order;
 
 class print_tex : public GiNaC::print_context {
     GINAC_DECLARE_PRINT_CONTEXT(print_tex, GiNaC::print_context)

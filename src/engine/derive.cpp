@@ -8,6 +8,13 @@
 namespace impact::engine {
 namespace {
 
+// A derived value in its simplest rational form: numerator and denominator factored.
+GiNaC::ex simplified(const GiNaC::ex& e)
+{
+    const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
+    return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+}
+
 std::string join(const std::vector<spec::text>& items)
 {
     std::string out;
@@ -165,11 +172,11 @@ private:
             for (const GiNaC::ex& u : unknowns)
                 if (s.rhs().has(u))
                     throw error(st.where, fmt::format("the system is singular: it does not determine {}",
-                                                      ginac_text(s.lhs())));
+                                                      out_.symbols.text(s.lhs())));
         }
         GiNaC::exmap solved;
         for (const GiNaC::ex& s : solution) {
-            const GiNaC::ex value = GiNaC::factor(GiNaC::normal(s.rhs()));
+            const GiNaC::ex value = simplified(s.rhs());
             solved[s.lhs()] = value;
             r.values.emplace_back(s.lhs(), value);
         }
@@ -196,7 +203,7 @@ private:
         const GiNaC::ex s = symbol_of(st.name);
         if (values_.count(s))
             throw error(st.name.where, fmt::format("'{}' is already derived by an earlier step", st.name.value));
-        const GiNaC::ex value = resolve(out_.symbols.parse(st.expression));
+        const GiNaC::ex value = simplified(resolve(out_.symbols.parse(st.expression)));
         values_[s] = value;
         r.values.emplace_back(s, value);
     }

@@ -1,5 +1,8 @@
 #include "engine/symbols.h"
 
+#include "engine/infix.h"
+#include "engine/order.h"
+
 #include <fmt/format.h>
 
 #include <cctype>
@@ -146,6 +149,11 @@ GiNaC::ex symbol_table::parse_equation(const spec::text& text) const
         return part;
     };
     return parse(side(0, equals)) == parse(side(equals + 1, text.value.size()));
+}
+
+std::string symbol_table::text(const GiNaC::ex& e) const
+{
+    return ginac_syntax(e, declaration_order(*this));
 }
 
 GiNaC::exmap symbol_table::abbreviations() const

@@ -44,6 +44,10 @@ public:
     /// Parses `lhs = rhs` into a GiNaC relational.
     GiNaC::ex parse_equation(const spec::text& text) const;
 
+    /// An expression in GiNaC's syntax, its operands in declaration order: the same text
+    /// on every run (GiNaC's own order changes from run to run).
+    std::string text(const GiNaC::ex& e) const;
+
     /// Substitutions that expand every abbreviation into declared quantities.
     GiNaC::exmap abbreviations() const;
     /// The domain of each symbol, keyed by the GiNaC symbol.

@@ -1,4 +1,4 @@
-#include "emit/infix.h"
+#include "engine/infix.h"
 
 #include "engine/symbols.h"
 
@@ -6,7 +6,7 @@
 
 #include <sstream>
 
-namespace impact::emit {
+namespace impact::engine {
 
 GINAC_IMPLEMENT_PRINT_CONTEXT(print_infix, GiNaC::print_context)
 
@@ -61,7 +61,7 @@ void print_numeric(const GiNaC::numeric& n, const print_infix& c, unsigned level
 {
     if (!n.is_rational())
         throw std::invalid_argument(fmt::format("cannot print the inexact number {} exactly",
-                                                engine::ginac_text(n)));
+                                                ginac_text(n)));
     const bool negative = n.is_negative();
     parenthesise p(c, level, negative || !n.is_integer() ? product_level : atom_level);
     if (negative)
@@ -95,12 +95,14 @@ void print_add(const GiNaC::add& sum, const print_infix& c, unsigned level)
     }
 }
 
-void print_factors(const std::vector<GiNaC::ex>& factors, const print_infix& c)
+void print_power_term(const term_order::power_term& p, const print_infix& c, unsigned level);
+
+void print_factors(const std::vector<term_order::power_term>& factors, const print_infix& c)
 {
     for (std::size_t i = 0; i < factors.size(); ++i) {
         if (i > 0)
             c.s << c.style.times;
-        print_operand(factors[i], c, product_level);
+        print_power_term(factors[i], c, product_level);
     }
 }
 
@@ -109,31 +111,33 @@ void print_factors(const std::vector<GiNaC::ex>& factors, const print_infix& c)
 void print_mul(const GiNaC::mul& product, const print_infix& c, unsigned level)
 {
     const term_order::fraction f = c.order->split(product);
-    const bool negated = f.negated;
-    const std::vector<GiNaC::ex>& numerator = f.numerator;
-    const std::vector<GiNaC::ex>& denominator = f.denominator;
     parenthesise p(c, level, product_level);
-    if (negated)
+    if (f.negated)
         c.s << '-';
-    if (numerator.empty())
+    if (f.numerator.empty())
         print_integer(1, c);
-    print_factors(numerator, c);
-    if (denominator.empty())
+    print_factors(f.numerator, c);
+    if (f.denominator.empty())
         return;
     c.s << c.style.divide;
-    if (denominator.size() == 1) {
-        print_operand(denominator.front(), c, atom_level);
+    if (f.denominator.size() == 1) {
+        print_power_term(f.denominator.front(), c, atom_level);
     } else {
         c.s << '(';
-        print_factors(denominator, c);
+        print_factors(f.denominator, c);
         c.s << ')';
     }
 }
 
-void print_power(const GiNaC::power& power, const print_infix& c, unsigned level)
+// base^exponent, the base never rebuilt into a GiNaC power (see engine/order.h).
+void print_power_term(const term_order::power_term& p, const print_infix& c, unsigned level)
 {
-    const GiNaC::ex base = power.op(0);
-    const GiNaC::ex exponent = power.op(1);
+    const GiNaC::ex& base = p.base;
+    const GiNaC::ex& exponent = p.exponent;
+    if (exponent.is_equal(1)) {
+        print_operand(base, c, level);
+        return;
+    }
     if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
         const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(exponent);
         if (n.is_negative()) {
@@ -141,7 +145,7 @@ void print_power(const GiNaC::power& power, const print_infix& c, unsigned level
             parenthesise p(c, level, product_level);
             print_integer(1, c);
             c.s << c.style.divide;
-            print_operand(GiNaC::pow(base, -n), c, atom_level);
+            print_power_term({base, -n}, c, atom_level);
             return;
         }
         if (n.is_integer() && n <= 4 && c.style.powers_as_products) {
@@ -169,10 +173,21 @@ void print_power(const GiNaC::power& power, const print_infix& c, unsigned level
         c.s << ')';
         return;
     }
-    parenthesise p(c, level, atom_level);
+    parenthesise paren(c, level, atom_level);
     print_operand(base, c, atom_level + 1);
     c.s << '^';
     print_operand(exponent, c, atom_level);
+}
+
+void print_power(const GiNaC::power& power, const print_infix& c, unsigned level)
+{
+    // (v_m - v_M)^2, never (-v_M + v_m)^2: a sum in the base leads with a positive term.
+    bool negated = false;
+    const term_order::power_term p = c.order->oriented(power, negated);
+    parenthesise paren(c, level, negated ? product_level : atom_level + 1);
+    if (negated)
+        c.s << '-';
+    print_power_term(p, c, negated ? atom_level : level);
 }
 
 // Functions are named in the style's way (std::acos), which GiNaC's function printing
@@ -221,4 +236,4 @@ std::string ginac_syntax(const GiNaC::ex& e, const term_order& order)
     return out.str();
 }
 
-} // namespace impact::emit
+} // namespace impact::engine

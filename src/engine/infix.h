@@ -8,13 +8,13 @@
 // `print_cxx` (C++ source for kernels, in emit/cxx.h).
 #pragma once
 
-#include "emit/order.h"
+#include "engine/order.h"
 
 #include <ginac/ginac.h>
 
 #include <string>
 
-namespace impact::emit {
+namespace impact::engine {
 
 /// How an infix printer spells operators, numbers and functions.
 struct infix_style {
@@ -48,4 +48,4 @@ void print_expression(const GiNaC::ex& e, const print_infix& c);
 /// An expression in GiNaC's syntax, deterministic from run to run.
 std::string ginac_syntax(const GiNaC::ex& e, const term_order& order);
 
-} // namespace impact::emit
+} // namespace impact::engine

@@ -1,0 +1,95 @@
+#include "engine/limit.h"
+
+#include <fmt/format.h>
+
+namespace impact::engine {
+namespace {
+
+// By substitution, when the denominator at the point is proven non-zero.
+std::optional<limit_result> by_substitution(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
+                                            const assumptions& given)
+{
+    GiNaC::ex at;
+    try {
+        at = GiNaC::normal(simplify_radicals(GiNaC::normal(e).subs(symbol == point), given));
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    const GiNaC::ex denominator = at.numer_denom().op(1);
+    const sign_proof nonzero = prove_sign(denominator, given);
+    if (nonzero.sign.zero || at.has(symbol))
+        return std::nullopt;
+    limit_result r;
+    r.value = at;
+    r.method = fmt::format("by substitution: continuous there, its denominator {} being {}", given.text(denominator),
+                           nonzero.sign.describe());
+    return r;
+}
+
+// The leading term of the series in (symbol - point).
+std::optional<limit_result> by_series(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
+                                      const assumptions& given)
+{
+    try {
+        const GiNaC::ex s = GiNaC::series(simplify_radicals(e, given), symbol == point, 3);
+        const GiNaC::pseries& p = GiNaC::ex_to<GiNaC::pseries>(s);
+        {
+            const int order = p.ldegree(symbol);
+            const GiNaC::ex coefficient = GiNaC::normal(p.coeff(symbol, order));
+            limit_result r;
+            if (order > 0) {
+                r.value = 0;
+            } else if (order == 0) {
+                r.value = coefficient;
+            } else {
+                const sign_proof sign = prove_sign(coefficient, given);
+                if (!sign.sign.is_known() || sign.sign.zero)
+                    return std::nullopt;
+                r.value = sign.sign.positive ? 1 : -1;
+                r.infinite = true;
+            }
+            r.method = fmt::format("leading term of the series in {} - {}: {}*({} - {})^{}", given.text(symbol),
+                                   given.text(point), given.text(coefficient), given.text(symbol), given.text(point),
+                                   order);
+            return r;
+        }
+    } catch (const std::exception&) {
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+std::optional<limit_result> limit(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
+                                  bool to_infinity, const assumptions& given)
+{
+    if (!to_infinity) {
+        if (auto r = by_substitution(e, symbol, point, given))
+            return r;
+        return by_series(e, symbol, point, given);
+    }
+    // s → ∞: s = 1/t with t → 0⁺.
+    const GiNaC::possymbol t("t");
+    assumptions with_t = given;
+    with_t.domains[t] = domain{domain::kind::positive};
+    const GiNaC::ex in_t = simplify_radicals(GiNaC::normal(e.subs(symbol == 1 / t)), with_t);
+    std::optional<limit_result> r = by_substitution(in_t, t, 0, with_t);
+    if (!r)
+        r = by_series(in_t, t, 0, with_t);
+    if (!r)
+        return r;
+    // Report the leading term in 1/s, which is what a reader checks by eye.
+    try {
+        const GiNaC::ex s = GiNaC::series(in_t, t == 0, 3);
+        const GiNaC::pseries& p = GiNaC::ex_to<GiNaC::pseries>(s);
+        const int order = p.ldegree(t);
+        const GiNaC::ex leading = GiNaC::normal(p.coeff(t, order) * GiNaC::pow(symbol, -order));
+        r->method = fmt::format("substituting {} = 1/t and letting t -> 0+: the leading term in 1/{} is {}",
+                                given.text(symbol), given.text(symbol), given.text(leading));
+    } catch (const std::exception&) {
+        r->method = fmt::format("substituting {} = 1/t and letting t -> 0+, {}", given.text(symbol), r->method);
+    }
+    return r;
+}
+
+} // namespace impact::engine

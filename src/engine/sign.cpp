@@ -1,0 +1,325 @@
+#include "engine/sign.h"
+
+#include "engine/infix.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <optional>
+#include <sstream>
+
+namespace impact::engine {
+namespace {
+
+sign_set times(const sign_set& a, const sign_set& b)
+{
+    sign_set r;
+    r.zero = a.zero || b.zero;
+    r.positive = (a.positive && b.positive) || (a.negative && b.negative);
+    r.negative = (a.positive && b.negative) || (a.negative && b.positive);
+    return r;
+}
+
+sign_set plus(const sign_set& a, const sign_set& b)
+{
+    sign_set r;
+    r.positive = a.positive || b.positive;
+    r.negative = a.negative || b.negative;
+    r.zero = (a.zero && b.zero) || (a.positive && b.negative) || (a.negative && b.positive);
+    return r;
+}
+
+// 1/x: the same signs, never zero (a denominator is non-zero wherever it is defined).
+sign_set reciprocal(const sign_set& a)
+{
+    return {a.negative, false, a.positive};
+}
+
+sign_set of_domain(const domain& d)
+{
+    switch (d.what) {
+    case domain::kind::real: return sign_set::any();
+    case domain::kind::positive: return {false, false, true};
+    case domain::kind::nonnegative: return {false, true, true};
+    case domain::kind::interval: break;
+    }
+    sign_set r;
+    r.negative = d.lower < 0;
+    r.positive = d.upper > 0;
+    r.zero = (d.lower < 0 || (d.lower == 0 && !d.lower_open)) && (d.upper > 0 || (d.upper == 0 && !d.upper_open));
+    return r;
+}
+
+class sign_prover {
+public:
+    explicit sign_prover(const assumptions& given) : given_(given), domains_(given.domains) {}
+
+    std::string text(const GiNaC::ex& e) const { return given_.text(e); }
+
+    // The sign of e and why, in a few words.
+    std::pair<sign_set, std::string> sign(const GiNaC::ex& e, int depth = 0) const
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+            if (!n.is_real())
+                return {sign_set::any(), "not a real number"};
+            return {sign_set::exactly(n.is_zero() ? 0 : n.is_positive() ? 1 : -1), "a number"};
+        }
+        if (GiNaC::is_a<GiNaC::symbol>(e)) {
+            const auto found = domains_.find(e);
+            if (found == domains_.end())
+                return {sign_set::any(), "no declared domain"};
+            return {of_domain(found->second), fmt::format("{} in {}", text(e), found->second.to_string())};
+        }
+        if (GiNaC::is_a<GiNaC::mul>(e)) {
+            sign_set r = sign_set::exactly(1);
+            for (std::size_t i = 0; i < e.nops(); ++i)
+                r = times(r, sign(e.op(i), depth).first);
+            return {r, "a product of factors of known sign"};
+        }
+        if (GiNaC::is_a<GiNaC::power>(e))
+            return power_sign(e, depth);
+        if (GiNaC::is_a<GiNaC::add>(e))
+            return sum_sign(e, depth);
+        if (GiNaC::is_a<GiNaC::function>(e)) {
+            const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+            if (name == "abs")
+                return {{false, true, true}, "an absolute value"};
+            if (name == "acos")
+                return {{false, true, true}, "an arccosine, in [0, pi]"};
+        }
+        return {sign_set::any(), "not determined"};
+    }
+
+private:
+    std::pair<sign_set, std::string> power_sign(const GiNaC::ex& e, int depth) const
+    {
+        const GiNaC::ex base = e.op(0);
+        const GiNaC::ex exponent = e.op(1);
+        if (!GiNaC::is_a<GiNaC::numeric>(exponent))
+            return {sign_set::any(), "a power with a symbolic exponent"};
+        const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(exponent);
+        const sign_set b = sign(base, depth).first;
+        sign_set r;
+        std::string why;
+        if (n.is_even()) {
+            r = {false, b.zero, b.negative || b.positive};
+            why = "an even power";
+        } else if (n.is_integer()) {
+            r = b;
+            why = "an odd power";
+        } else if (n.is_rational() && n.denom().is_even()) {
+            // A real root: x^(p/2q) >= 0.
+            r = {false, b.zero, b.positive || b.negative};
+            why = "a square root";
+        } else {
+            return {sign_set::any(), "a fractional power"};
+        }
+        if (n.is_negative())
+            r = reciprocal(r);
+        return {r, why};
+    }
+
+    std::pair<sign_set, std::string> sum_sign(const GiNaC::ex& e, int depth) const
+    {
+        sign_set r = sign_set::exactly(0);
+        std::vector<sign_set> terms;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            terms.push_back(sign(e.op(i), depth).first);
+            r = plus(r, terms.back());
+        }
+        if (r.is_known())
+            return {r, "a sum of terms of one sign"};
+
+        if (auto linear = linear_in_bounded_symbol(e))
+            return *linear;
+
+        // A - B with A, B >= 0 has the sign of A^2 - B^2.
+        if (depth < 3) {
+            GiNaC::ex a = 0, b = 0;
+            for (std::size_t i = 0; i < e.nops(); ++i) {
+                if (!terms[i].negative)
+                    a += e.op(i);
+                else if (!terms[i].positive)
+                    b -= e.op(i);
+                else
+                    return {r, "a sum of terms of unknown sign"};
+            }
+            const GiNaC::ex difference = GiNaC::normal(GiNaC::expand(a * a - b * b));
+            const auto [squares, why] = sign(factored(difference), depth + 1);
+            if (squares.is_known()) {
+                sign_set s;
+                s.positive = squares.positive;
+                s.negative = squares.negative;
+                s.zero = squares.zero;
+                return {s, fmt::format("A - B with A, B >= 0 and A^2 - B^2 = {} {}", text(factored(difference)),
+                                       squares.describe())};
+            }
+        }
+        return {r, "a sum of terms of unknown sign"};
+    }
+
+    // A polynomial of degree one in a single symbol with an interval domain takes its
+    // extremes at the ends of the interval.
+    std::optional<std::pair<sign_set, std::string>> linear_in_bounded_symbol(const GiNaC::ex& e) const
+    {
+        GiNaC::ex only;
+        int count = 0;
+        for (const auto& [symbol, range] : domains_) {
+            if (e.has(symbol)) {
+                only = symbol;
+                ++count;
+            }
+        }
+        if (count != 1)
+            return std::nullopt;
+        const domain& d = domains_.at(only);
+        if (d.what != domain::kind::interval || !e.is_polynomial(only) || e.degree(only) != 1)
+            return std::nullopt;
+        // The values fill the interval between the values at the two ends; an end that
+        // the domain excludes is approached but not attained.
+        const GiNaC::ex low = e.subs(only == GiNaC::numeric(d.lower)).evalf();
+        const GiNaC::ex high = e.subs(only == GiNaC::numeric(d.upper)).evalf();
+        const double lo = GiNaC::ex_to<GiNaC::numeric>(low).to_double();
+        const double hi = GiNaC::ex_to<GiNaC::numeric>(high).to_double();
+        const double least = std::min(lo, hi), most = std::max(lo, hi);
+        const bool least_open = lo <= hi ? d.lower_open : d.upper_open;
+        const bool most_open = lo <= hi ? d.upper_open : d.lower_open;
+        sign_set r;
+        r.negative = least < 0;
+        r.positive = most > 0;
+        r.zero = (least < 0 && most > 0) || (least == 0 && !least_open) || (most == 0 && !most_open);
+        return std::make_pair(r, fmt::format("linear in {} in {}: {} and {} at the ends", text(only),
+                                             d.to_string(), text(low), text(high)));
+    }
+
+    static GiNaC::ex factored(const GiNaC::ex& e)
+    {
+        const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
+        return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+    }
+
+    const assumptions& given_;
+    const domain_map& domains_;
+};
+
+} // namespace
+
+sign_set sign_set::exactly(int sign)
+{
+    return {sign < 0, sign == 0, sign > 0};
+}
+
+std::string sign_set::describe() const
+{
+    if (!negative && !zero && positive)
+        return "> 0";
+    if (!negative && zero && positive)
+        return ">= 0";
+    if (!negative && zero && !positive)
+        return "= 0";
+    if (negative && zero && !positive)
+        return "<= 0";
+    if (negative && !zero && !positive)
+        return "< 0";
+    if (!negative && !zero && !positive)
+        return "undefined";
+    return "of unknown sign";
+}
+
+std::string assumptions::text(const GiNaC::ex& e) const
+{
+    return ginac_syntax(e, order);
+}
+
+assumptions declared_assumptions(const symbol_table& symbols)
+{
+    assumptions given{{}, declaration_order(symbols)};
+    for (const quantity& q : symbols.all())
+        if (!q.definition)
+            given.domains[q.symbol] = q.range;
+    return given;
+}
+
+sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
+{
+    const sign_prover prover(given);
+    sign_proof proof;
+    // The factored form, factor by factor: the proof a reader can follow.
+    const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
+    std::vector<std::pair<GiNaC::ex, bool>> factors;  // factor, in the denominator
+    for (int part = 0; part < 2; ++part) {
+        const GiNaC::ex f = GiNaC::factor(nd.op(part));
+        if (GiNaC::is_a<GiNaC::mul>(f)) {
+            for (std::size_t i = 0; i < f.nops(); ++i)
+                factors.emplace_back(f.op(i), part == 1);
+        } else if (!(part == 1 && f.is_equal(1))) {
+            factors.emplace_back(f, part == 1);
+        }
+    }
+    proof.sign = sign_set::exactly(1);
+    for (const auto& [factor, below] : factors) {
+        const auto [s, why] = prover.sign(factor);
+        const sign_set used = below ? reciprocal(s) : s;
+        proof.sign = times(proof.sign, used);
+        proof.steps.push_back(fmt::format("{}{} {} ({})", below ? "1/" : "", given.text(factor), s.describe(), why));
+    }
+    if (!proof.sign.is_known()) {
+        // The whole expression may still have a provable sign where its factors do not.
+        const auto [s, why] = prover.sign(e);
+        if (s.is_known()) {
+            proof.sign = s;
+            proof.steps = {fmt::format("{} {} ({})", given.text(e), s.describe(), why)};
+        }
+    }
+    return proof;
+}
+
+GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
+{
+    struct inner : GiNaC::map_function {
+        const assumptions& given;
+        explicit inner(const assumptions& g) : given(g) {}
+        GiNaC::ex operator()(const GiNaC::ex& part) override { return simplify_radicals(part, given); }
+    } recurse(given);
+    const GiNaC::ex mapped = e.map(recurse);
+    if (!GiNaC::is_a<GiNaC::power>(mapped) || !GiNaC::is_a<GiNaC::numeric>(mapped.op(1)))
+        return mapped;
+    const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(mapped.op(1));
+    if (n != GiNaC::numeric(1, 2) && n != GiNaC::numeric(-1, 2))
+        return mapped;
+    // sqrt(f^2 g) = |f| sqrt(g), and |f| = ±f where the sign of f is proven.
+    const sign_prover prover(given);
+    const GiNaC::ex nd = GiNaC::normal(mapped.op(0)).numer_denom();
+    GiNaC::exvector parts;
+    for (int part = 0; part < 2; ++part) {
+        const GiNaC::ex f = GiNaC::factor(nd.op(part));
+        const int direction = part == 0 ? 1 : -1;
+        if (GiNaC::is_a<GiNaC::mul>(f)) {
+            for (const GiNaC::ex& g : f)
+                parts.push_back(GiNaC::pow(g, direction));
+        } else {
+            parts.push_back(GiNaC::pow(f, direction));
+        }
+    }
+    GiNaC::ex outside = 1, inside = 1;
+    for (const GiNaC::ex& f : parts) {
+        if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::even)) {
+            const sign_set s = prover.sign(f.op(0)).first;
+            if (!s.negative) {
+                outside *= GiNaC::pow(f.op(0), f.op(1) / 2);
+                continue;
+            }
+            if (!s.positive) {
+                outside *= GiNaC::pow(-f.op(0), f.op(1) / 2);
+                continue;
+            }
+        }
+        inside *= f;
+    }
+    if (outside.is_equal(1))
+        return mapped;
+    return n.is_positive() ? outside * GiNaC::sqrt(inside) : 1 / (outside * GiNaC::sqrt(inside));
+}
+
+} // namespace impact::engine
