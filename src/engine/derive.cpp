@@ -8,11 +8,12 @@
 namespace impact::engine {
 namespace {
 
-// A derived value in its simplest rational form: numerator and denominator factored.
-GiNaC::ex simplified(const GiNaC::ex& e)
+// A derived value in its simplest form: numerator and denominator factored, radicals
+// of squares taken out by sign, radicals of quotients split (see simplify_radicals).
+GiNaC::ex simplified(const GiNaC::ex& e, const assumptions& given)
 {
-    const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
-    return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+    const GiNaC::ex nd = GiNaC::normal(simplify_radicals(e, given)).numer_denom();
+    return simplify_radicals(factor_polynomial(nd.op(0)) / factor_polynomial(nd.op(1)), given);
 }
 
 std::string join(const std::vector<spec::text>& items)
@@ -176,7 +177,7 @@ private:
         }
         GiNaC::exmap solved;
         for (const GiNaC::ex& s : solution) {
-            const GiNaC::ex value = simplified(s.rhs());
+            const GiNaC::ex value = simplified(s.rhs(), declared_assumptions(out_.symbols));
             solved[s.lhs()] = value;
             r.values.emplace_back(s.lhs(), value);
         }
@@ -203,7 +204,8 @@ private:
         const GiNaC::ex s = symbol_of(st.name);
         if (values_.count(s))
             throw error(st.name.where, fmt::format("'{}' is already derived by an earlier step", st.name.value));
-        const GiNaC::ex value = simplified(resolve(out_.symbols.parse(st.expression)));
+        // Radicals of squares come out by the declared signs: sqrt(u^2) = u for u >= 0.
+        const GiNaC::ex value = simplified(resolve(out_.symbols.parse(st.expression)), declared_assumptions(out_.symbols));
         values_[s] = value;
         r.values.emplace_back(s, value);
     }
@@ -219,8 +221,8 @@ private:
         const GiNaC::ex b = resolve(bottom.relation);
         if (b.lhs().is_zero() || b.rhs().is_zero())
             throw error(st.where, fmt::format("equation '{}' has a side that is zero: division by zero", bottom.name));
-        const GiNaC::ex lhs = GiNaC::factor(GiNaC::normal(a.lhs() / b.lhs()));
-        const GiNaC::ex rhs = GiNaC::factor(GiNaC::normal(a.rhs() / b.rhs()));
+        const GiNaC::ex lhs = simplified(a.lhs() / b.lhs(), declared_assumptions(out_.symbols));
+        const GiNaC::ex rhs = simplified(a.rhs() / b.rhs(), declared_assumptions(out_.symbols));
         r.assumptions.push_back(b.lhs() != 0);
         add_step_equation(st.name, lhs == rhs, r);
     }
@@ -300,8 +302,11 @@ private:
         c.statement = spec_check.claim.value;
         c.because = spec_check.because.value;
         c.where = spec_check.claim.where;
-        c.stated = out_.symbols.parse_equation(spec_check.claim);
-        GiNaC::ex claim = resolve(c.stated);
+        const claim_sides sides = out_.symbols.parse_claim(spec_check.claim);
+        c.op = sides.op;
+        c.stated = sides.lhs == sides.rhs;
+        GiNaC::ex lhs = resolve(sides.lhs), rhs = resolve(sides.rhs);
+
         GiNaC::exmap at;
         for (const spec::binding& b : spec_check.at) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
@@ -310,7 +315,8 @@ private:
         }
         if (!at.empty()) {
             try {
-                claim = claim.subs(at);
+                lhs = lhs.subs(at);
+                rhs = rhs.subs(at);
             } catch (...) {
                 rethrow_at(c.where, fmt::format("check '{}' at its special values", c.name));
             }
@@ -319,10 +325,72 @@ private:
                 values.push_back(fmt::format("{} = {}", b.name.value, b.expression.value));
             c.statement += fmt::format(" at {}", fmt::join(values, ", "));
         }
-        c.lhs = claim.lhs();
-        c.rhs = claim.rhs();
-        c.outcome = prove_equal(c.lhs, c.rhs, out_.symbols);
+
+        assumptions given = declared_assumptions(out_.symbols);
+        for (const spec::binding& b : spec_check.assuming) {
+            const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
+            given.domains[symbol] = parse_domain(b.expression.value, b.expression.where);
+            c.assuming.emplace_back(symbol, given.domains[symbol].to_string());
+        }
+
+        c.lhs = lhs;
+        c.rhs = rhs;
+        if (spec_check.limit) {
+            c.limit = parse_limit(*spec_check.limit);
+            if (c.op != relation::equal)
+                throw error(spec_check.limit->where, "a limit check claims an equality: lim lhs = rhs");
+            c.outcome = check_limit(lhs, rhs, *c.limit, given);
+            c.statement += fmt::format(" in the limit {}", spec_check.limit->value);
+        } else if (c.op == relation::equal) {
+            c.outcome = prove_equal(lhs, rhs, out_.symbols);
+        } else {
+            c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, given);
+        }
         return c;
+    }
+
+    // `symbol -> point`, the point an expression or `infinity`.
+    check_result::limit_point parse_limit(const spec::text& text) const
+    {
+        const auto arrow = text.value.find("->");
+        if (arrow == std::string::npos)
+            throw error(text.where, fmt::format("limit \"{}\" must read 'symbol -> point'", text.value));
+        auto trim = [](std::string s) {
+            const auto first = s.find_first_not_of(" \t");
+            const auto last = s.find_last_not_of(" \t");
+            return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+        };
+        check_result::limit_point p;
+        p.symbol = out_.symbols.at({trim(text.value.substr(0, arrow)), text.where}).symbol;
+        const std::string point = trim(text.value.substr(arrow + 2));
+        if (point == "infinity" || point == "oo")
+            p.to_infinity = true;
+        else
+            p.point = out_.symbols.parse({point, text.where});
+        return p;
+    }
+
+    verdict check_limit(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const check_result::limit_point& p,
+                        const assumptions& given) const
+    {
+        const GiNaC::exmap abbreviations = out_.symbols.abbreviations();
+        const auto found = limit(lhs.subs(abbreviations), p.symbol, p.point, p.to_infinity, given);
+        verdict v;
+        if (!found) {
+            v.what = verdict::status::failed;
+            v.residual = lhs;
+            v.method = "no method established the limit (substitution, series, leading term)";
+            return v;
+        }
+        if (found->infinite) {
+            v.what = verdict::status::failed;
+            v.residual = found->value;
+            v.method = fmt::format("the expression grows without bound ({})", found->method);
+            return v;
+        }
+        v = prove_equal(found->value, rhs, out_.symbols);
+        v.method = fmt::format("limit {} ({}); {}", given.text(found->value), found->method, v.method);
+        return v;
     }
 
     kernel make_kernel(const spec::kernel& spec_kernel)

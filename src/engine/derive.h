@@ -8,6 +8,7 @@
 // disagreement there is a finding about the paper, not a failure of the derivation.
 #pragma once
 
+#include "engine/limit.h"
 #include "engine/prove.h"
 #include "engine/symbols.h"
 #include "spec/derivation.h"
@@ -36,6 +37,14 @@ struct check_result {
     std::string statement;    ///< the claim in words or as written in the file
     GiNaC::ex stated;         ///< the claim as written (lhs == rhs), before substitution
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> at;  ///< special values it is checked at
+    relation op = relation::equal;                     ///< the relation `stated` claims
+    struct limit_point {
+        GiNaC::ex symbol;
+        GiNaC::ex point;
+        bool to_infinity = false;
+    };
+    std::optional<limit_point> limit;                  ///< the claim is about lim lhs
+    std::vector<std::pair<GiNaC::ex, std::string>> assuming;  ///< narrowed domains
     std::string because;
     GiNaC::ex lhs;            ///< both sides after substituting the results
     GiNaC::ex rhs;

@@ -6,6 +6,7 @@
 #include <cln/rational.h>
 
 #include <cmath>
+#include <functional>
 
 namespace impact::engine {
 namespace {
@@ -21,8 +22,11 @@ GiNaC::numeric exact(double value)
 
 // Evaluates `lhs - rhs` at points of the declared domains. Returns the failing
 // residual's value as a verdict, or a `sampled` verdict when every point agrees.
-verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& residual,
-               const symbol_table& symbols)
+// Evaluates both sides at points of the declared domains and tests `holds` on them.
+// Returns `failed` at the first point where it does not hold, else `sampled`.
+verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& residual, const symbol_table& symbols,
+               const std::function<bool(const GiNaC::numeric&, const GiNaC::numeric&)>& holds,
+               const std::string& claim)
 {
     GiNaC::lst free;
     for (const quantity& q : symbols.all())
@@ -42,16 +46,16 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
         try {
             const GiNaC::ex a = GiNaC::evalf(lhs.subs(point));
             const GiNaC::ex b = GiNaC::evalf(rhs.subs(point));
-            if (!GiNaC::is_a<GiNaC::numeric>(a) || !GiNaC::is_a<GiNaC::numeric>(b))
+            if (!GiNaC::is_a<GiNaC::numeric>(a) || !GiNaC::is_a<GiNaC::numeric>(b) ||
+                !GiNaC::ex_to<GiNaC::numeric>(a).is_real() || !GiNaC::ex_to<GiNaC::numeric>(b).is_real())
                 continue;
-            const double scale = std::max({1.0, std::abs(GiNaC::ex_to<GiNaC::numeric>(a).to_double()),
-                                           std::abs(GiNaC::ex_to<GiNaC::numeric>(b).to_double())});
-            const GiNaC::numeric gap = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(a - b));
-            if (gap.to_double() > 1e-30 * scale) {
+            if (!holds(GiNaC::ex_to<GiNaC::numeric>(a), GiNaC::ex_to<GiNaC::numeric>(b))) {
                 GiNaC::Digits = saved_digits;
                 v.what = verdict::status::failed;
                 v.samples = tested + 1;
-                v.method = fmt::format("differs at a sampled point by {:.3g}", gap.to_double());
+                v.method = fmt::format("does not hold at a sampled point: {} {} vs {:.6g}",
+                                       GiNaC::ex_to<GiNaC::numeric>(a).to_double(), claim,
+                                       GiNaC::ex_to<GiNaC::numeric>(b).to_double());
                 return v;
             }
             ++tested;
@@ -62,11 +66,16 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
     GiNaC::Digits = saved_digits;
     v.what = tested > 0 ? verdict::status::sampled : verdict::status::failed;
     v.samples = tested;
-    v.method = tested > 0 ? fmt::format("GiNaC could not normalise the difference to zero; it vanishes "
-                                        "at {} sampled points ({} digits)",
-                                        tested, sample_digits)
+    v.method = tested > 0 ? fmt::format("not proven symbolically; holds at {} sampled points ({} digits)", tested,
+                                        sample_digits)
                           : "no sampled point could be evaluated";
     return v;
+}
+
+bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b)
+{
+    const double scale = std::max({1.0, std::abs(a.to_double()), std::abs(b.to_double())});
+    return GiNaC::abs(a - b).to_double() <= 1e-30 * scale;
 }
 
 } // namespace
@@ -84,8 +93,10 @@ std::string to_string(const verdict& v)
 verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols)
 {
     const GiNaC::exmap abbreviations = symbols.abbreviations();
-    const GiNaC::ex a = lhs.subs(abbreviations).subs(abbreviations);
-    const GiNaC::ex b = rhs.subs(abbreviations).subs(abbreviations);
+    const assumptions given = declared_assumptions(symbols);
+    // Radicals in one canonical form first: normal() cannot see that sqrt(1/x) = 1/sqrt(x).
+    const GiNaC::ex a = simplify_radicals(lhs.subs(abbreviations).subs(abbreviations), given);
+    const GiNaC::ex b = simplify_radicals(rhs.subs(abbreviations).subs(abbreviations), given);
     const GiNaC::ex residual = GiNaC::normal(GiNaC::expand(a - b));
     if (residual.is_zero()) {
         verdict v;
@@ -109,7 +120,41 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
         v.method = "difference normalises to a non-zero rational function";
         return v;
     }
-    return sample(a, b, residual, symbols);
+    return sample(a, b, residual, symbols, nearly_equal, "=");
+}
+
+verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const symbol_table& symbols,
+                         const assumptions& given)
+{
+    const GiNaC::exmap abbreviations = symbols.abbreviations();
+    const GiNaC::ex a = lhs.subs(abbreviations).subs(abbreviations);
+    const GiNaC::ex b = rhs.subs(abbreviations).subs(abbreviations);
+    // lhs <= rhs  <=>  rhs - lhs >= 0; strict relations need > 0.
+    const bool upper = op == relation::less_equal || op == relation::less;
+    const bool strict = op == relation::less || op == relation::greater;
+    const GiNaC::ex difference = upper ? b - a : a - b;
+    const sign_proof proof = prove_sign(difference, given);
+    verdict v;
+    v.residual = GiNaC::normal(difference);
+    v.proof = proof.steps;
+    if (!proof.sign.negative && !(strict && proof.sign.zero)) {
+        v.what = verdict::status::proven;
+        v.method = fmt::format("the sign of each factor of {} follows from the domains", given.text(v.residual));
+        return v;
+    }
+    auto holds = [&](const GiNaC::numeric& x, const GiNaC::numeric& y) {
+        switch (op) {
+        case relation::less_equal: return x <= y;
+        case relation::less: return x < y;
+        case relation::greater_equal: return x >= y;
+        case relation::greater: return x > y;
+        case relation::equal: break;
+        }
+        return nearly_equal(x, y);
+    };
+    verdict sampled = sample(a, b, v.residual, symbols, holds, to_string(op));
+    sampled.proof = proof.steps;
+    return sampled;
 }
 
 verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, const symbol_table& symbols)

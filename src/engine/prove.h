@@ -8,6 +8,7 @@
 // `failed` with the residual.
 #pragma once
 
+#include "engine/sign.h"
 #include "engine/symbols.h"
 
 #include <ginac/ginac.h>
@@ -22,6 +23,7 @@ struct verdict {
     std::size_t samples = 0;     ///< points tested when not proven symbolically
     GiNaC::ex residual;          ///< the normalised difference; zero when proven
     std::string method;          ///< how the verdict was reached, in words
+    std::vector<std::string> proof; ///< for inequalities: the sign of each factor
 
     bool holds() const { return what != status::failed; }
 };
@@ -31,6 +33,11 @@ std::string to_string(const verdict& v);
 
 /// Decides whether `lhs == rhs` for all values of the symbols' domains.
 verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols);
+
+/// Decides `lhs op rhs` for an inequality: proven from the signs of the factors of
+/// the difference under `given` (prove_sign), else sampled, else failed.
+verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const symbol_table& symbols,
+                         const assumptions& given);
 
 /// Decides whether two equations are equivalent: their differences lhs − rhs are equal
 /// up to a non-zero constant factor.

@@ -2,6 +2,8 @@
 
 #include "engine/infix.h"
 
+#include <cln/rational.h>
+#include <cln/real.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +12,12 @@
 
 namespace impact::engine {
 namespace {
+
+// The exact rational value of a bound written in a derivation file.
+GiNaC::numeric exact(double value)
+{
+    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
+}
 
 sign_set times(const sign_set& a, const sign_set& b)
 {
@@ -134,16 +142,31 @@ private:
         if (auto linear = linear_in_bounded_symbol(e))
             return *linear;
 
-        // A - B with A, B >= 0 has the sign of A^2 - B^2.
+        // A - B with A, B >= 0 has the sign of A^2 - B^2. The terms with radicals form
+        // one side and the rest the other (each factored to find its sign), or else the
+        // terms are grouped by their own signs.
         if (depth < 3) {
             GiNaC::ex a = 0, b = 0;
-            for (std::size_t i = 0; i < e.nops(); ++i) {
-                if (!terms[i].negative)
-                    a += e.op(i);
-                else if (!terms[i].positive)
-                    b -= e.op(i);
-                else
-                    return {r, "a sum of terms of unknown sign"};
+            GiNaC::ex radicals = 0, rest = 0;
+            for (std::size_t i = 0; i < e.nops(); ++i)
+                (has_radical(e.op(i)) ? radicals : rest) += e.op(i);
+            const sign_set of_radicals = sign(factored(radicals), depth + 1).first;
+            const sign_set of_rest = sign(factored(rest), depth + 1).first;
+            if (!radicals.is_zero() && !rest.is_zero() && !of_radicals.negative && !of_rest.positive) {
+                a = radicals;
+                b = -rest;
+            } else if (!radicals.is_zero() && !rest.is_zero() && !of_radicals.positive && !of_rest.negative) {
+                a = rest;
+                b = -radicals;
+            } else {
+                for (std::size_t i = 0; i < e.nops(); ++i) {
+                    if (!terms[i].negative)
+                        a += e.op(i);
+                    else if (!terms[i].positive)
+                        b -= e.op(i);
+                    else
+                        return {r, "a sum of terms of unknown sign"};
+                }
             }
             const GiNaC::ex difference = GiNaC::normal(GiNaC::expand(a * a - b * b));
             const auto [squares, why] = sign(factored(difference), depth + 1);
@@ -178,8 +201,10 @@ private:
             return std::nullopt;
         // The values fill the interval between the values at the two ends; an end that
         // the domain excludes is approached but not attained.
-        const GiNaC::ex low = e.subs(only == GiNaC::numeric(d.lower)).evalf();
-        const GiNaC::ex high = e.subs(only == GiNaC::numeric(d.upper)).evalf();
+        const GiNaC::ex low = e.subs(only == exact(d.lower));
+        const GiNaC::ex high = e.subs(only == exact(d.upper));
+        if (!GiNaC::is_a<GiNaC::numeric>(low) || !GiNaC::is_a<GiNaC::numeric>(high))
+            return std::nullopt;
         const double lo = GiNaC::ex_to<GiNaC::numeric>(low).to_double();
         const double hi = GiNaC::ex_to<GiNaC::numeric>(high).to_double();
         const double least = std::min(lo, hi), most = std::max(lo, hi);
@@ -196,7 +221,7 @@ private:
     static GiNaC::ex factored(const GiNaC::ex& e)
     {
         const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
-        return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+        return factor_polynomial(nd.op(0)) / factor_polynomial(nd.op(1));
     }
 
     const assumptions& given_;
@@ -204,6 +229,21 @@ private:
 };
 
 } // namespace
+
+bool has_radical(const GiNaC::ex& e)
+{
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::power>(*it) && !it->op(1).info(GiNaC::info_flags::integer))
+            return true;
+    return false;
+}
+
+// factor() on a polynomial; an expression with radicals is left as it is, since
+// factoring under a root may pull out -1 and leave I behind.
+GiNaC::ex factor_polynomial(const GiNaC::ex& e)
+{
+    return has_radical(e) ? e : GiNaC::factor(e);
+}
 
 sign_set sign_set::exactly(int sign)
 {
@@ -249,7 +289,7 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
     const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
     std::vector<std::pair<GiNaC::ex, bool>> factors;  // factor, in the denominator
     for (int part = 0; part < 2; ++part) {
-        const GiNaC::ex f = GiNaC::factor(nd.op(part));
+        const GiNaC::ex f = factor_polynomial(nd.op(part));
         if (GiNaC::is_a<GiNaC::mul>(f)) {
             for (std::size_t i = 0; i < f.nops(); ++i)
                 factors.emplace_back(f.op(i), part == 1);
@@ -262,7 +302,7 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
         const auto [s, why] = prover.sign(factor);
         const sign_set used = below ? reciprocal(s) : s;
         proof.sign = times(proof.sign, used);
-        proof.steps.push_back(fmt::format("{}{} {} ({})", below ? "1/" : "", given.text(factor), s.describe(), why));
+        proof.steps.push_back(fmt::format("{}{} {} ({})", below ? "1/" : "", given.text(factor), used.describe(), why));
     }
     if (!proof.sign.is_known()) {
         // The whole expression may still have a provable sign where its factors do not.
@@ -293,7 +333,7 @@ GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
     const GiNaC::ex nd = GiNaC::normal(mapped.op(0)).numer_denom();
     GiNaC::exvector parts;
     for (int part = 0; part < 2; ++part) {
-        const GiNaC::ex f = GiNaC::factor(nd.op(part));
+        const GiNaC::ex f = factor_polynomial(nd.op(part));
         const int direction = part == 0 ? 1 : -1;
         if (GiNaC::is_a<GiNaC::mul>(f)) {
             for (const GiNaC::ex& g : f)
@@ -302,6 +342,27 @@ GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
             parts.push_back(GiNaC::pow(f, direction));
         }
     }
+    // A negative number among the factors is paired with a sum, whose sign it takes:
+    // sqrt(-1/(t^2 - 4)) is sqrt(1/(4 - t^2)), never I*sqrt(1/(t^2 - 4)).
+    GiNaC::numeric number = 1;
+    for (GiNaC::ex& f : parts) {
+        if (GiNaC::is_a<GiNaC::numeric>(f)) {
+            number *= GiNaC::ex_to<GiNaC::numeric>(f);
+            f = 1;
+        }
+    }
+    if (number.is_negative()) {
+        for (GiNaC::ex& f : parts) {
+            const bool odd_sum = GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::add>(f.op(0)) &&
+                                 f.op(1).info(GiNaC::info_flags::odd);
+            if (odd_sum || GiNaC::is_a<GiNaC::add>(f)) {
+                f = odd_sum ? GiNaC::pow(term_order::negated_sum(f.op(0)), f.op(1)) : term_order::negated_sum(f);
+                number = -number;
+                break;
+            }
+        }
+    }
+    parts.push_back(number);
     GiNaC::ex outside = 1, inside = 1;
     for (const GiNaC::ex& f : parts) {
         if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::even)) {
@@ -317,9 +378,20 @@ GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
         }
         inside *= f;
     }
-    if (outside.is_equal(1))
+    // sqrt(N/D) = sqrt(N)/sqrt(D) where D > 0: one form for every radical of a quotient,
+    // whichever GiNaC's normal() happened to return.
+    const GiNaC::ex inside_nd = GiNaC::normal(inside).numer_denom();
+    GiNaC::ex root = GiNaC::sqrt(inside);
+    if (!inside_nd.op(1).is_equal(1)) {
+        const sign_set below = prover.sign(factor_polynomial(inside_nd.op(1))).first;
+        if (!below.negative && !below.zero)
+            root = GiNaC::sqrt(inside_nd.op(0)) / GiNaC::sqrt(inside_nd.op(1));
+        else if (outside.is_equal(1))
+            return mapped;
+    } else if (outside.is_equal(1)) {
         return mapped;
-    return n.is_positive() ? outside * GiNaC::sqrt(inside) : 1 / (outside * GiNaC::sqrt(inside));
+    }
+    return n.is_positive() ? outside * root : 1 / (outside * root);
 }
 
 } // namespace impact::engine

@@ -52,6 +52,13 @@ struct sign_proof {
 /// The sign of `e` as far as it follows from `domains`.
 sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given);
 
+/// True when `e` contains a power with a non-integer exponent.
+bool has_radical(const GiNaC::ex& e);
+
+/// GiNaC's factor() for an expression without radicals; one with radicals is returned
+/// as it is (factoring under a root may pull out -1 and leave I behind).
+GiNaC::ex factor_polynomial(const GiNaC::ex& e);
+
 /// `sqrt(x^2 y)` → `x sqrt(y)` wherever the sign of x is proven: radicals of squares
 /// taken out under the domains.
 GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given);

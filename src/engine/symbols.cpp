@@ -156,6 +156,37 @@ std::string symbol_table::text(const GiNaC::ex& e) const
     return ginac_syntax(e, declaration_order(*this));
 }
 
+std::string to_string(relation r)
+{
+    switch (r) {
+    case relation::equal: return "=";
+    case relation::less_equal: return "<=";
+    case relation::less: return "<";
+    case relation::greater_equal: return ">=";
+    case relation::greater: return ">";
+    }
+    return "?";
+}
+
+claim_sides symbol_table::parse_claim(const spec::text& text) const
+{
+    static const std::pair<const char*, relation> operators[] = {
+        {"<=", relation::less_equal}, {">=", relation::greater_equal}, {"<", relation::less}, {">", relation::greater}};
+    for (const auto& [spelling, op] : operators) {
+        const auto at = text.value.find(spelling);
+        if (at == std::string::npos)
+            continue;
+        const std::string width(std::string(spelling).size(), ' ');
+        // Read as an equation with the operator written as '=' (same columns).
+        spec::text as_equation = text;
+        as_equation.value.replace(at, width.size(), width.size() == 2 ? " =" : "=");
+        const GiNaC::ex sides = parse_equation(as_equation);
+        return {op, sides.lhs(), sides.rhs()};
+    }
+    const GiNaC::ex sides = parse_equation(text);
+    return {relation::equal, sides.lhs(), sides.rhs()};
+}
+
 GiNaC::exmap symbol_table::abbreviations() const
 {
     GiNaC::exmap map;

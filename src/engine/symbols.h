@@ -28,6 +28,17 @@ struct quantity {
     source_location where;
 };
 
+/// The relation a claim states between its sides.
+enum class relation { equal, less_equal, less, greater_equal, greater };
+std::string to_string(relation r);
+
+/// `lhs op rhs` as parsed from a claim.
+struct claim_sides {
+    relation op = relation::equal;
+    GiNaC::ex lhs;
+    GiNaC::ex rhs;
+};
+
 class symbol_table {
 public:
     /// Declares a symbol; a second declaration of the same name is an error.
@@ -47,6 +58,9 @@ public:
     /// An expression in GiNaC's syntax, its operands in declaration order: the same text
     /// on every run (GiNaC's own order changes from run to run).
     std::string text(const GiNaC::ex& e) const;
+
+    /// Parses `lhs = rhs`, `lhs <= rhs`, `lhs < rhs`, `lhs >= rhs` or `lhs > rhs`.
+    claim_sides parse_claim(const spec::text& text) const;
 
     /// Substitutions that expand every abbreviation into declared quantities.
     GiNaC::exmap abbreviations() const;

@@ -66,12 +66,15 @@ struct result {
     std::optional<text> printed;   ///< the paper's printed form, transcribed
 };
 
-/// An identity that must hold once the results are substituted.
+/// A claim that must hold once the results are substituted: an identity, an
+/// inequality, or a limit.
 struct check {
     text name;
-    text claim;                    ///< `lhs = rhs`
+    text claim;                    ///< `lhs = rhs`, or `lhs <= rhs` (also <, >=, >)
     text because;
     std::vector<binding> at;       ///< special values, e.g. `eps = 1`
+    std::optional<text> limit;     ///< `v_perp -> 0` or `v_perp -> infinity`: the claim is about lim lhs
+    std::vector<binding> assuming; ///< narrower domains for this check, e.g. `eps = "[0, 1)"`
 };
 
 /// A C++ kernel to emit: a function of `inputs` returning `outputs`.

@@ -251,6 +251,8 @@ check read_check(table_reader& in)
     c.claim = in.required_string("claim");
     c.because = in.string_or("because", "");
     c.at = in.binding_table("at");
+    c.limit = in.optional_string("limit");
+    c.assuming = in.binding_table("assuming");
     in.finish();
     return c;
 }
