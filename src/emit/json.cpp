@@ -18,7 +18,15 @@ json check_json(const engine::check_result& c, const term_order& order)
     json j;
     j["name"] = c.name;
     j["status"] = engine::to_string(c.outcome);
-    j["claim"] = ginac_syntax(c.stated.lhs(), order) + " = " + ginac_syntax(c.stated.rhs(), order);
+    j["claim"] = ginac_syntax(c.stated.lhs(), order) + " " + engine::to_string(c.op) + " " +
+                 ginac_syntax(c.stated.rhs(), order);
+    if (c.limit)
+        j["limit"] = ginac_syntax(c.limit->symbol, order) + " -> " +
+                     (c.limit->to_infinity ? std::string("infinity") : ginac_syntax(c.limit->point, order));
+    for (const auto& [symbol, range] : c.assuming)
+        j["assuming"][ginac_syntax(symbol, order)] = range;
+    if (!c.outcome.proof.empty())
+        j["proof"] = c.outcome.proof;
     for (const auto& [symbol, value] : c.at)
         j["at"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
     j["method"] = c.outcome.method;

@@ -205,6 +205,28 @@ std::string status_text(const engine::verdict& v)
 
 } // namespace
 
+std::string latex_relation(engine::relation op)
+{
+    switch (op) {
+    case engine::relation::equal: return "=";
+    case engine::relation::less_equal: return "\\leq";
+    case engine::relation::less: return "<";
+    case engine::relation::greater_equal: return "\\geq";
+    case engine::relation::greater: return ">";
+    }
+    return "=";
+}
+
+std::string claim_math(const engine::check_result& c, const term_order& order)
+{
+    std::string lhs = latex(c.stated.lhs(), order);
+    if (c.limit) {
+        const std::string point = c.limit->to_infinity ? "\\infty" : latex(c.limit->point, order);
+        lhs = fmt::format("\\lim_{{{} \\to {}}} {}", latex(c.limit->symbol, order), point, lhs);
+    }
+    return fmt::format("{} {} {}", lhs, latex_relation(c.op), latex(c.stated.rhs(), order));
+}
+
 std::string latex(const GiNaC::ex& e, const term_order& order)
 {
     register_print_functions();
@@ -313,9 +335,12 @@ std::string latex_fragment(const engine::derivation& d)
 
     out += "\n\\paragraph{Checks.}\n\\begin{itemize}\n";
     for (const engine::check_result& c : d.checks) {
-        out += fmt::format("\\item {}: ${} = {}$", latex_text(c.name), math(c.stated.lhs()), math(c.stated.rhs()));
+        out += fmt::format("\\item {}: ${}$", latex_text(c.name), claim_math(c, order));
         for (std::size_t i = 0; i < c.at.size(); ++i)
             out += fmt::format("{}${} = {}$", i == 0 ? " at " : ", ", math(c.at[i].first), math(c.at[i].second));
+        for (std::size_t i = 0; i < c.assuming.size(); ++i)
+            out += fmt::format("{}${} \\in {}$", i == 0 ? " for " : ", ", math(c.assuming[i].first),
+                               c.assuming[i].second);
         out += " --- " + status_text(c.outcome);
         if (!c.because.empty())
             out += " (" + latex_text(c.because) + ")";

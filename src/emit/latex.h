@@ -26,6 +26,9 @@ public:
 /// An expression as LaTeX math (without the surrounding `$`).
 std::string latex(const GiNaC::ex& e, const term_order& order);
 
+/// A check's claim as LaTeX math: `\lim_{v_\perp \to \infty} \cos\theta = 0`, `\Delta E_K \leq 0`.
+std::string claim_math(const engine::check_result& c, const term_order& order);
+
 /// Plain text escaped for LaTeX.
 std::string latex_text(const std::string& text);
 

@@ -302,7 +302,8 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
         const auto [s, why] = prover.sign(factor);
         const sign_set used = below ? reciprocal(s) : s;
         proof.sign = times(proof.sign, used);
-        proof.steps.push_back(fmt::format("{}{} {} ({})", below ? "1/" : "", given.text(factor), used.describe(), why));
+        proof.steps.push_back(below ? fmt::format("1/({}) {} ({})", given.text(factor), used.describe(), why)
+                                    : fmt::format("{} {} ({})", given.text(factor), used.describe(), why));
     }
     if (!proof.sign.is_known()) {
         // The whole expression may still have a provable sign where its factors do not.
