@@ -82,10 +82,15 @@ void print_derivation(const engine::derivation& d)
             fmt::print("  {:<18} residual: {}\n", "", text(c.outcome.residual));
     }
     if (!d.paper_checks.empty()) {
-        fmt::print("\nthe paper's printed forms\n");
-        for (const engine::paper_comparison& p : d.paper_checks)
-            fmt::print("  {:<8} {}: {}\n", p.paper, p.subject,
-                       p.agreement.what == engine::verdict::status::proven ? "agrees" : "DISAGREES");
+        fmt::print("\nthe paper, held to account\n");
+        for (const engine::paper_comparison& p : d.paper_checks) {
+            fmt::print("  {}: {} ({}): {}\n", p.paper, p.subject, engine::to_string(p.agreement),
+                       p.agrees() ? "agrees" : "DISAGREES");
+            if (!p.agrees())
+                fmt::print("      printed: {}\n      derived: {}\n", p.printed_text, text(p.derived));
+            for (const std::string& change : p.reconciliations)
+                fmt::print("      reconciled by: {}\n", change);
+        }
     }
 }
 

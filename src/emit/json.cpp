@@ -56,15 +56,21 @@ json derivation_json(const engine::derivation& d)
         j["checks"].push_back(check_json(*c, order));
     j["paper_checks"] = json::array();
     for (const engine::paper_comparison& p : d.paper_checks) {
+        static const char* const kinds[] = {"printed result", "printed equation", "claim"};
         json pj;
         pj["paper"] = p.paper;
+        pj["kind"] = kinds[static_cast<int>(p.what)];
         pj["subject"] = p.subject;
-        pj["agrees"] = p.agreement.what == engine::verdict::status::proven;
+        pj["agrees"] = p.agrees();
         pj["status"] = engine::to_string(p.agreement);
         pj["printed"] = p.printed_text;
-        pj["derived"] = ginac_syntax(p.derived, order);
-        if (!p.agreement.holds())
-            pj["residual"] = ginac_syntax(p.agreement.residual, order);
+        pj["derived"] = p.derived.info(GiNaC::info_flags::relation)
+                            ? ginac_syntax(p.derived.lhs(), order) + " = " + ginac_syntax(p.derived.rhs(), order)
+                            : ginac_syntax(p.derived, order);
+        if (!p.agrees()) {
+            pj["method"] = p.agreement.method;
+            pj["smallest_change"] = p.reconciliations;
+        }
         j["paper_checks"].push_back(pj);
     }
     j["kernels"] = json::array();

@@ -1,5 +1,7 @@
 #include "engine/derive.h"
 
+#include "engine/reconcile.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -47,6 +49,8 @@ public:
             add_result(r);
         for (const spec::check& c : s.checks)
             out_.checks.push_back(run_check(c));
+        for (const spec::claim& c : s.claims)
+            out_.paper_checks.push_back(hold_to_account(c));
         for (const spec::kernel& k : s.kernels)
             out_.kernels.push_back(make_kernel(k));
         return std::move(out_);
@@ -64,6 +68,11 @@ private:
             now = next;
         }
         return now;
+    }
+
+    engine::resolver resolver() const
+    {
+        return [this](const GiNaC::ex& e) { return resolve(e); };
     }
 
     GiNaC::ex symbol_of(const spec::text& name) const { return out_.symbols.at(name).symbol; }
@@ -104,6 +113,21 @@ private:
         equations_.push_back({g.name.value, out_.symbols.parse_equation(g.equation), g.because.value,
                               g.paper ? g.paper->value : std::string(), g.equation.where});
         out_.givens.push_back(equations_.back());
+        if (g.printed) {
+            // The paper's printing of a given equation must be equivalent to it.
+            paper_comparison p;
+            p.what = paper_comparison::kind::given;
+            p.subject = g.name.value;
+            p.paper = g.paper ? g.paper->value : std::string();
+            p.printed_text = g.printed->value;
+            p.printed = out_.symbols.parse_equation(*g.printed);
+            p.derived = equations_.back().relation;
+            p.agreement = prove_equivalent(p.printed, p.derived, out_.symbols);
+            if (!p.agrees())
+                p.reconciliations = reconcile_equation(p.printed, p.derived, out_.symbols, resolver());
+            p.where = g.printed->where;
+            out_.paper_checks.push_back(std::move(p));
+        }
     }
 
     const equation* find_equation(const std::string& name) const
@@ -289,6 +313,8 @@ private:
             p.printed = out_.symbols.parse(*spec_result.printed);
             p.derived = r.value;
             p.agreement = prove_equal(resolve(p.printed), r.value, out_.symbols);
+            if (!p.agrees())
+                p.reconciliations = reconcile_expression(p.printed, r.value, out_.symbols, resolver());
             p.where = spec_result.printed->where;
             out_.paper_checks.push_back(std::move(p));
         }
@@ -339,14 +365,75 @@ private:
             c.limit = parse_limit(*spec_check.limit);
             if (c.op != relation::equal)
                 throw error(spec_check.limit->where, "a limit check claims an equality: lim lhs = rhs");
-            c.outcome = check_limit(lhs, rhs, *c.limit, given);
+            c.outcome = check_limit(lhs, rhs, *c.limit, given, c.value);
             c.statement += fmt::format(" in the limit {}", spec_check.limit->value);
         } else if (c.op == relation::equal) {
             c.outcome = prove_equal(lhs, rhs, out_.symbols);
+            c.value = lhs;
         } else {
             c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, given);
         }
         return c;
+    }
+
+    // A claim of the paper's text, tested as a check. When it fails, the same claim is
+    // tried at the other notable points of its limit or special value (the ends of the
+    // domain, 0 and infinity): a claim made for the wrong regime is reported as such.
+    paper_comparison hold_to_account(const spec::claim& claim)
+    {
+        paper_comparison p;
+        p.what = paper_comparison::kind::claim;
+        p.subject = claim.test.name.value;
+        p.paper = claim.paper.value;
+        p.printed_text = claim.quote.value;
+        p.where = claim.test.claim.where;
+        check_result c = run_check(claim.test);
+        p.printed = c.stated;
+        p.derived = c.value ? *c.value : c.lhs;
+        p.agreement = c.outcome;
+        if (!p.agrees() && c.value && (claim.test.limit || !claim.test.at.empty()))
+            p.reconciliations = other_regimes(claim.test, c);
+        else if (!p.agrees() && c.op == relation::equal)
+            p.reconciliations = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver());
+        p.test = std::move(c);
+        return p;
+    }
+
+    std::vector<std::string> other_regimes(const spec::check& original, const check_result& failed)
+    {
+        std::vector<std::string> found;
+        const spec::text* point = nullptr;
+        std::string symbol_name;
+        if (original.limit) {
+            point = &*original.limit;
+            symbol_name = original.limit->value.substr(0, original.limit->value.find("->"));
+            symbol_name.erase(symbol_name.find_last_not_of(" \t") + 1);
+        } else if (original.at.size() == 1) {
+            point = &original.at.front().expression;
+            symbol_name = original.at.front().name.value;
+        }
+        if (point) {
+            const quantity& q = out_.symbols.at({symbol_name, point->where});
+            std::vector<std::string> candidates = {"0", "infinity"};
+            if (q.range.what == domain::kind::interval)
+                candidates = {fmt::format("{}", q.range.lower), fmt::format("{}", q.range.upper)};
+            for (const std::string& other : candidates) {
+                spec::check moved = original;
+                moved.at.clear();
+                moved.limit = spec::text{symbol_name + " -> " + other, point->where};
+                if (moved.limit->value == (original.limit ? original.limit->value : "") ||
+                    (!original.limit && other == original.at.front().expression.value))
+                    continue;
+                try {
+                    if (run_check(moved).outcome.what == verdict::status::proven)
+                        found.push_back(fmt::format("it holds for {} -> {} instead", symbol_name, other));
+                } catch (const error&) {
+                }
+            }
+        }
+        found.push_back(fmt::format("the derived value is {}, not {}", out_.symbols.text(*failed.value),
+                                    out_.symbols.text(failed.rhs)));
+        return found;
     }
 
     // `symbol -> point`, the point an expression or `infinity`.
@@ -371,7 +458,7 @@ private:
     }
 
     verdict check_limit(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const check_result::limit_point& p,
-                        const assumptions& given) const
+                        const assumptions& given, std::optional<GiNaC::ex>& value) const
     {
         const GiNaC::exmap abbreviations = out_.symbols.abbreviations();
         const auto found = limit(lhs.subs(abbreviations), p.symbol, p.point, p.to_infinity, given);
@@ -388,6 +475,7 @@ private:
             v.method = fmt::format("the expression grows without bound ({})", found->method);
             return v;
         }
+        value = found->value;
         v = prove_equal(found->value, rhs, out_.symbols);
         v.method = fmt::format("limit {} ({}); {}", given.text(found->value), found->method, v.method);
         return v;

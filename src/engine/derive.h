@@ -45,6 +45,7 @@ struct check_result {
     };
     std::optional<limit_point> limit;                  ///< the claim is about lim lhs
     std::vector<std::pair<GiNaC::ex, std::string>> assuming;  ///< narrowed domains
+    std::optional<GiNaC::ex> value;                    ///< what lhs comes to (at its point, or its limit)
     std::string because;
     GiNaC::ex lhs;            ///< both sides after substituting the results
     GiNaC::ex rhs;
@@ -64,15 +65,21 @@ struct step_result {
     source_location where;
 };
 
-/// The paper's printed form of a result, compared with the derived one.
+/// Something the paper prints or claims, compared with what is derived.
 struct paper_comparison {
-    std::string subject;      ///< the result it prints, e.g. "v_M_after"
+    enum class kind { result, given, claim };
+    kind what = kind::result;
+    std::string subject;      ///< the result or equation it prints, or the claim's name
     std::string paper;        ///< e.g. "Eq. 8"
-    std::string printed_text; ///< as transcribed in the derivation file
-    GiNaC::ex printed;
-    GiNaC::ex derived;
-    verdict agreement;        ///< proven: the paper agrees; failed: a disagreement, with the residual
+    std::string printed_text; ///< as transcribed in the derivation file (for a claim: the paper's words)
+    GiNaC::ex printed;        ///< the printed expression or equation (for a claim: what it states)
+    GiNaC::ex derived;        ///< the derived expression or equation (for a claim: its derived value)
+    verdict agreement;        ///< proven: the paper agrees; otherwise a disagreement, with the residual
+    std::vector<std::string> reconciliations; ///< the smallest edits that make the printed form right
+    std::optional<check_result> test;         ///< for a claim: the check it was turned into
     source_location where;
+
+    bool agrees() const { return agreement.what == verdict::status::proven; }
 };
 
 struct result {

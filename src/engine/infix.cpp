@@ -207,10 +207,18 @@ void print_operand(const GiNaC::ex& e, const print_infix& c, unsigned level)
     e.print(c, level);
 }
 
+void print_relational(const GiNaC::relational& r, const print_infix& c, unsigned)
+{
+    print_operand(r.lhs(), c, 0);
+    c.s << (r.info(GiNaC::info_flags::relation_equal) ? " = " : " != ");
+    print_operand(r.rhs(), c, 0);
+}
+
 // The print functions are registered once, before the first use of the context.
 void register_print_functions()
 {
     static const bool registered = [] {
+        GiNaC::set_print_func<GiNaC::relational, print_infix>(print_relational);
         GiNaC::set_print_func<GiNaC::numeric, print_infix>(print_numeric);
         GiNaC::set_print_func<GiNaC::symbol, print_infix>(print_symbol);
         GiNaC::set_print_func<GiNaC::add, print_infix>(print_add);

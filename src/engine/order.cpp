@@ -65,6 +65,16 @@ bool term_order::before(const GiNaC::ex& a, const GiNaC::ex& b) const
 
 std::string term_order::key(const GiNaC::ex& e) const
 {
+    const auto known = keys_.find(e);
+    if (known != keys_.end())
+        return known->second;
+    std::string k = compute_key(e);
+    keys_.emplace(e, k);
+    return k;
+}
+
+std::string term_order::compute_key(const GiNaC::ex& e) const
+{
     // Numbers sort first ('a'), then symbols by rank ('b'), then compound expressions
     // by the keys of their parts ('c'); a power follows its base. Keys are taken of
     // oriented factors, so that -(x - y) and (y - x) get the same key however GiNaC

@@ -16,6 +16,7 @@
 
 #include <ginac/ginac.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -72,7 +73,11 @@ public:
     bool before(const GiNaC::ex& a, const GiNaC::ex& b) const;
 
 private:
+    std::string compute_key(const GiNaC::ex& e) const;
+
     std::vector<GiNaC::ex> symbols_;
+    // Keys are asked for again and again while printing nested expressions.
+    mutable std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> keys_;
 };
 
 /// The order of a derivation's declared symbols.

@@ -67,6 +67,17 @@ public:
     // The sign of e and why, in a few words.
     std::pair<sign_set, std::string> sign(const GiNaC::ex& e, int depth = 0) const
     {
+        const auto known = given_.signs->find(e);
+        if (known != given_.signs->end())
+            return known->second;
+        auto decided = decide(e, depth);
+        given_.signs->emplace(e, decided);
+        return decided;
+    }
+
+private:
+    std::pair<sign_set, std::string> decide(const GiNaC::ex& e, int depth) const
+    {
         if (GiNaC::is_a<GiNaC::numeric>(e)) {
             const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
             if (!n.is_real())
@@ -99,7 +110,6 @@ public:
         return {sign_set::any(), "not determined"};
     }
 
-private:
     std::pair<sign_set, std::string> power_sign(const GiNaC::ex& e, int depth) const
     {
         const GiNaC::ex base = e.op(0);
@@ -141,6 +151,7 @@ private:
 
         if (auto linear = linear_in_bounded_symbol(e))
             return *linear;
+        const bool radical = has_radical(e);
 
         // A - B with A, B >= 0 has the sign of A^2 - B^2. The terms with radicals form
         // one side and the rest the other (each factored to find its sign), or else the
@@ -150,8 +161,8 @@ private:
             GiNaC::ex radicals = 0, rest = 0;
             for (std::size_t i = 0; i < e.nops(); ++i)
                 (has_radical(e.op(i)) ? radicals : rest) += e.op(i);
-            const sign_set of_radicals = sign(factored(radicals), depth + 1).first;
-            const sign_set of_rest = sign(factored(rest), depth + 1).first;
+            const sign_set of_radicals = radical ? sign(factored(radicals), depth + 1).first : sign_set::any();
+            const sign_set of_rest = radical ? sign(factored(rest), depth + 1).first : sign_set::any();
             if (!radicals.is_zero() && !rest.is_zero() && !of_radicals.negative && !of_rest.positive) {
                 a = radicals;
                 b = -rest;
@@ -297,6 +308,12 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
             factors.emplace_back(f, part == 1);
         }
     }
+    // Listed in print order, numerator first: the proof reads the same on every run.
+    std::sort(factors.begin(), factors.end(), [&](const auto& a, const auto& b) {
+        if (a.second != b.second)
+            return b.second;
+        return given.order.before(a.first, b.first);
+    });
     proof.sign = sign_set::exactly(1);
     for (const auto& [factor, below] : factors) {
         const auto [s, why] = prover.sign(factor);

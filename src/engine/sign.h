@@ -14,6 +14,7 @@
 #include <ginac/ginac.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct assumptions {
     domain_map domains;
     term_order order;
     std::string text(const GiNaC::ex& e) const;
+
+    /// Signs already decided under these domains, with their reasons.
+    using sign_cache = std::map<GiNaC::ex, std::pair<sign_set, std::string>, GiNaC::ex_is_less>;
+    std::shared_ptr<sign_cache> signs = std::make_shared<sign_cache>();
 };
 
 /// The declared domains of a derivation's symbols.

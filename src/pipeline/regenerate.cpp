@@ -1,6 +1,7 @@
 #include "pipeline/regenerate.h"
 
 #include "emit/cxx.h"
+#include "emit/errata.h"
 #include "emit/json.h"
 #include "emit/latex.h"
 
@@ -29,6 +30,7 @@ file_set generate(const library& lib)
 {
     file_set files = generate_kernels(lib);
     files["derivations.json"] = emit::derivations_json(lib.in_order());
+    files["errata.md"] = emit::errata_markdown(lib.in_order());
     for (const engine::derivation* d : lib.in_order())
         files["latex/" + emit::latex_fragment_name(*d)] = emit::latex_fragment(*d);
     return files;

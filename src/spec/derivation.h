@@ -42,6 +42,7 @@ struct given {
     text equation;        ///< `lhs = rhs`
     text because;
     std::optional<text> paper; ///< the paper's equation it is taken from, e.g. `Eq. 6`
+    std::optional<text> printed; ///< the equation as the paper prints it, compared for equivalence
 };
 
 /// One step of a derivation. Exactly one of the kinds is filled in.
@@ -77,6 +78,14 @@ struct check {
     std::vector<binding> assuming; ///< narrower domains for this check, e.g. `eps = "[0, 1)"`
 };
 
+/// Something the paper's text claims, in checkable form: held to account like a
+/// printed equation (a disagreement is a finding about the paper, not a failure).
+struct claim {
+    text paper;                    ///< where the paper says it, e.g. `Sec. III C`
+    text quote;                    ///< the paper's words
+    check test;                    ///< what the words claim, as a check (name, claim, at, limit, assuming)
+};
+
 /// A C++ kernel to emit: a function of `inputs` returning `outputs`.
 struct kernel {
     text name;
@@ -103,6 +112,7 @@ struct derivation {
     std::vector<step> steps;
     std::vector<result> results;
     std::vector<check> checks;
+    std::vector<claim> claims;
     std::vector<kernel> kernels;
 };
 

@@ -196,6 +196,7 @@ given read_given(table_reader& in)
     g.equation = in.required_string("equation");
     g.because = in.required_string("because");
     g.paper = in.optional_string("paper");
+    g.printed = in.optional_string("printed");
     in.finish();
     return g;
 }
@@ -244,7 +245,8 @@ result read_result(table_reader& in)
     return r;
 }
 
-check read_check(table_reader& in)
+// The fields a check and a claim share.
+check read_check_fields(table_reader& in)
 {
     check c;
     c.name = in.required_string("name");
@@ -253,6 +255,22 @@ check read_check(table_reader& in)
     c.at = in.binding_table("at");
     c.limit = in.optional_string("limit");
     c.assuming = in.binding_table("assuming");
+    return c;
+}
+
+check read_check(table_reader& in)
+{
+    check c = read_check_fields(in);
+    in.finish();
+    return c;
+}
+
+claim read_claim(table_reader& in)
+{
+    claim c;
+    c.test = read_check_fields(in);
+    c.paper = in.required_string("paper");
+    c.quote = in.required_string("quote");
     in.finish();
     return c;
 }
@@ -320,6 +338,7 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     d.steps = read_all<step>(top, file, "step", read_step);
     d.results = read_all<result>(top, file, "result", read_result);
     d.checks = read_all<check>(top, file, "check", read_check);
+    d.claims = read_all<claim>(top, file, "claim", read_claim);
     d.kernels = read_all<kernel>(top, file, "kernel", read_kernel);
     top.finish();
 

@@ -1,0 +1,265 @@
+#include "engine/reconcile.h"
+
+#include "engine/order.h"
+#include "engine/prove.h"
+
+#include <fmt/format.h>
+
+#include <cln/rational.h>
+#include <cln/real.h>
+
+#include <algorithm>
+#include <functional>
+#include <set>
+
+namespace impact::engine {
+namespace {
+
+// A node of an expression, with the way down to it and the term of a sum it sits in.
+struct site {
+    std::vector<std::size_t> path;
+    GiNaC::ex node;
+    GiNaC::ex term;          ///< the enclosing term of a sum (or the whole expression)
+    bool is_term = false;    ///< the node itself is a term of a sum
+};
+
+void collect_sites(const GiNaC::ex& e, std::vector<std::size_t>& path, const GiNaC::ex& term, bool is_term,
+                   std::vector<site>& out)
+{
+    out.push_back({path, e, term, is_term});
+    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e))
+        return;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        path.push_back(i);
+        const bool child_is_term = GiNaC::is_a<GiNaC::add>(e);
+        collect_sites(e.op(i), path, child_is_term ? e.op(i) : term, child_is_term, out);
+        path.pop_back();
+    }
+}
+
+// `e` with the node at `path` replaced, rebuilt from its operands.
+GiNaC::ex replace_at(const GiNaC::ex& e, const std::vector<std::size_t>& path, std::size_t depth,
+                     const GiNaC::ex& replacement)
+{
+    if (depth == path.size())
+        return replacement;
+    const std::size_t i = path[depth];
+    const GiNaC::ex child = replace_at(e.op(i), path, depth + 1, replacement);
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+        GiNaC::exvector operands(e.begin(), e.end());
+        operands[i] = child;
+        return GiNaC::is_a<GiNaC::add>(e) ? GiNaC::ex(GiNaC::add(operands)) : GiNaC::ex(GiNaC::mul(operands));
+    }
+    if (GiNaC::is_a<GiNaC::power>(e))
+        return i == 0 ? GiNaC::pow(child, e.op(1)) : GiNaC::pow(e.op(0), child);
+    if (GiNaC::is_a<GiNaC::relational>(e))
+        return i == 0 ? (child == e.rhs()) : (e.lhs() == child);
+    GiNaC::ex copy = e;
+    copy.let_op(i) = child;
+    return copy;
+}
+
+struct candidate {
+    int priority;            ///< smaller is a smaller change
+    std::string change;
+    GiNaC::ex edited;
+};
+
+// `symbol` primed: the declared `<name>_after`, if any.
+const quantity* primed(const quantity& q, const symbol_table& symbols)
+{
+    return symbols.find(q.name + "_after");
+}
+
+const quantity* declared(const GiNaC::ex& symbol, const symbol_table& symbols)
+{
+    for (const quantity& q : symbols.all())
+        if (q.symbol.is_equal(symbol))
+            return &q;
+    return nullptr;
+}
+
+// Every single edit of `e`; `side` prefixes the descriptions ("on the left, ").
+void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<std::string>& wanted,
+                  const symbol_table& symbols, const std::function<void(candidate)>& emit)
+{
+    std::vector<site> sites;
+    std::vector<std::size_t> path;
+    collect_sites(e, path, e, false, sites);
+
+    emit({1, side + "the sign of the whole expression", -e});
+    emit({4, side + "a factor 2 too many", e / 2});
+    emit({4, side + "a factor 2 missing", e * 2});
+    emit({4, side + "the reciprocal of the printed form", 1 / e});
+    const term_order order = declaration_order(symbols);
+    // A term named by its magnitude: GiNaC may store it as -1/m or as 1/m in -(...).
+    auto magnitude = [&](const GiNaC::ex& term) { return symbols.text(order.negative(term) ? -term : term); };
+    std::set<std::string> present;
+    for (const site& s : sites) {
+        if (s.is_term && !s.path.empty()) {
+            emit({2, fmt::format("{}the sign of the term {}", side, magnitude(s.node)),
+                  replace_at(e, s.path, 0, -s.node)});
+        }
+        if (!GiNaC::is_a<GiNaC::symbol>(s.node))
+            continue;
+        const quantity* from = declared(s.node, symbols);
+        if (!from)
+            continue;
+        present.insert(from->name);
+        emit({3, fmt::format("{}a spurious {} in {}", side, from->name, magnitude(s.term)),
+              replace_at(e, s.path, 0, 1)});
+        for (const quantity& to : symbols.all()) {
+            if (to.name == from->name || !wanted.count(to.name))
+                continue;
+            const quantity* prime = primed(*from, symbols);
+            const bool adds_prime = prime && prime->name == to.name;
+            emit({adds_prime ? 2 : 3,
+                  fmt::format("{}{} {} for {} in {}", side, adds_prime ? "a missing prime:" : "write", to.name,
+                              from->name, magnitude(s.term)),
+                  replace_at(e, s.path, 0, to.symbol)});
+        }
+    }
+    // Two symbols swapped throughout.
+    for (auto a = present.begin(); a != present.end(); ++a) {
+        for (auto b = std::next(a); b != present.end(); ++b) {
+            const GiNaC::ex sa = symbols.find(*a)->symbol, sb = symbols.find(*b)->symbol;
+            emit({3, fmt::format("{}{} and {} swapped", side, *a, *b),
+                  e.subs(GiNaC::lst{sa, sb}, GiNaC::lst{sb, sa}, GiNaC::subs_options::no_pattern)});
+        }
+    }
+    // Every symbol of the expression that has a primed version, primed.
+    GiNaC::exmap prime_all;
+    for (const std::string& name : present)
+        if (const quantity* prime = primed(*symbols.find(name), symbols))
+            prime_all[symbols.find(name)->symbol] = prime->symbol;
+    if (!prime_all.empty())
+        emit({1, side + "the primes missing", e.subs(prime_all, GiNaC::subs_options::no_pattern)});
+}
+
+GiNaC::numeric exact(double value)
+{
+    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
+}
+
+// Two points of the declared domains, to screen candidates before proving them.
+std::vector<GiNaC::exmap> screening_points(const symbol_table& symbols)
+{
+    std::vector<GiNaC::exmap> points(2);
+    uniform_stream stream(0x5eed5eedULL);
+    for (GiNaC::exmap& point : points)
+        for (const quantity& q : symbols.all())
+            if (!q.definition)
+                point[q.symbol] = exact(draw(q.range, stream));
+    return points;
+}
+
+std::optional<GiNaC::numeric> value_at(const GiNaC::ex& e, const GiNaC::exmap& point)
+{
+    try {
+        GiNaC::ex v = e.subs(point, GiNaC::subs_options::no_pattern);
+        if (!GiNaC::is_a<GiNaC::numeric>(v))
+            v = GiNaC::evalf(v);
+        if (GiNaC::is_a<GiNaC::numeric>(v))
+            return GiNaC::ex_to<GiNaC::numeric>(v);
+    } catch (const std::exception&) {
+    }
+    return std::nullopt;
+}
+
+bool close(const GiNaC::numeric& a, const GiNaC::numeric& b)
+{
+    const double scale = std::max({1e-300, std::abs(a.to_double()), std::abs(b.to_double())});
+    return GiNaC::abs(a - b).to_double() <= 1e-12 * scale;
+}
+
+std::set<std::string> names_in(const GiNaC::ex& e, const symbol_table& symbols)
+{
+    std::set<std::string> names;
+    for (const quantity& q : symbols.all())
+        if (e.has(q.symbol))
+            names.insert(q.name);
+    return names;
+}
+
+template <class Screen, class Confirm>
+std::vector<std::string> search(const std::vector<candidate>& all, Screen screen, Confirm confirm)
+{
+    std::vector<candidate> sorted = all;
+    std::sort(sorted.begin(), sorted.end(), [](const candidate& a, const candidate& b) {
+        return a.priority != b.priority ? a.priority < b.priority : a.change < b.change;
+    });
+    std::vector<std::string> found;
+    int best = 0;
+    for (const candidate& c : sorted) {
+        if (best && c.priority > best)
+            break;  // only the smallest kind of change that works
+        if (std::find(found.begin(), found.end(), c.change) != found.end())
+            continue;
+        if (screen(c.edited) && confirm(c.edited)) {
+            found.push_back(c.change);
+            best = c.priority;
+        }
+    }
+    return found;
+}
+
+} // namespace
+
+std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
+                                              const symbol_table& symbols, const resolver& resolve)
+{
+    const auto points = screening_points(symbols);
+    std::set<std::string> wanted = names_in(derived, symbols);
+    for (const std::string& n : names_in(printed, symbols))
+        wanted.insert(n);
+    std::vector<candidate> all;
+    single_edits(printed, "", wanted, symbols, [&](candidate c) { all.push_back(std::move(c)); });
+    auto screen = [&](const GiNaC::ex& edited) {
+        for (const GiNaC::exmap& point : points) {
+            const auto a = value_at(resolve(edited), point);
+            const auto b = value_at(derived, point);
+            if (!a || !b || !close(*a, *b))
+                return false;
+        }
+        return true;
+    };
+    auto confirm = [&](const GiNaC::ex& edited) {
+        return prove_equal(resolve(edited), derived, symbols).what == verdict::status::proven;
+    };
+    return search(all, screen, confirm);
+}
+
+std::vector<std::string> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
+                                            const symbol_table& symbols, const resolver& resolve)
+{
+    const auto points = screening_points(symbols);
+    std::set<std::string> wanted = names_in(derived.lhs() - derived.rhs(), symbols);
+    for (const std::string& n : names_in(printed.lhs() - printed.rhs(), symbols))
+        wanted.insert(n);
+    std::vector<candidate> all;
+    single_edits(printed.lhs(), "on the left, ", wanted, symbols,
+                 [&](candidate c) { all.push_back({c.priority, c.change, c.edited == printed.rhs()}); });
+    single_edits(printed.rhs(), "on the right, ", wanted, symbols,
+                 [&](candidate c) { all.push_back({c.priority, c.change, printed.lhs() == c.edited}); });
+    const GiNaC::ex target = resolve(derived.lhs() - derived.rhs());
+    auto screen = [&](const GiNaC::ex& edited) {
+        std::optional<GiNaC::numeric> ratio;
+        for (const GiNaC::exmap& point : points) {
+            const auto a = value_at(resolve(edited.lhs() - edited.rhs()), point);
+            const auto b = value_at(target, point);
+            if (!a || !b || b->is_zero())
+                return false;
+            const GiNaC::numeric r = *a / *b;
+            if (r.is_zero() || (ratio && !close(*ratio, r)))
+                return false;
+            ratio = r;
+        }
+        return true;
+    };
+    auto confirm = [&](const GiNaC::ex& edited) {
+        return prove_equivalent(resolve(edited), resolve(derived), symbols).what == verdict::status::proven;
+    };
+    return search(all, screen, confirm);
+}
+
+} // namespace impact::engine

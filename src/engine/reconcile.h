@@ -1,0 +1,37 @@
+// The smallest change that reconciles a printed equation with the derived one.
+//
+// When the paper prints something other than what Impact derives, the reader wants to
+// know the misprint, not only that there is one. Impact tries every single edit of
+// the printed form — the sign of the whole or of one term, one symbol written for
+// another (a swapped M and m, a missing prime), two symbols swapped throughout, the
+// primes missing from one side of an equation, a factor of 2, the reciprocal — and
+// reports each edit
+// after which the printed form is proven equal to (or, for an equation, equivalent to)
+// the derived one. Candidates are screened at exact rational points and confirmed with
+// normal(); the list is sorted, so the report is the same on every run.
+#pragma once
+
+#include "engine/symbols.h"
+
+#include <ginac/ginac.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace impact::engine {
+
+/// Turns an edited printed form into declared quantities (derived values and
+/// abbreviations substituted) before it is compared.
+using resolver = std::function<GiNaC::ex(const GiNaC::ex&)>;
+
+/// Single edits of `printed` (an expression) that make it equal to `derived`.
+std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
+                                              const symbol_table& symbols, const resolver& resolve);
+
+/// Single edits of the equation `printed` (a relational) that make it equivalent to
+/// `derived` (equal up to a non-zero constant factor between lhs − rhs of the two).
+std::vector<std::string> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
+                                            const symbol_table& symbols, const resolver& resolve);
+
+} // namespace impact::engine
