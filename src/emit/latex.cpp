@@ -347,6 +347,31 @@ std::string latex_fragment(const engine::derivation& d)
         out += "\n";
     }
     out += "\\end{itemize}\n";
+
+    if (!d.paper_checks.empty()) {
+        out += "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
+        for (const engine::paper_comparison& p : d.paper_checks) {
+            out += fmt::format("\\item {}, \\texttt{{{}}}: ", latex_text(p.paper), latex_text(p.subject));
+            if (p.what == engine::paper_comparison::kind::claim)
+                out += fmt::format("``{}'' --- ", latex_text(p.printed_text));
+            else if (p.printed.info(GiNaC::info_flags::relation))
+                out += fmt::format("printed ${} = {}$ --- ", math(p.printed.lhs()), math(p.printed.rhs()));
+            else
+                out += fmt::format("printed ${}$ --- ", math(p.printed));
+            if (p.agrees()) {
+                out += "agrees.\n";
+                continue;
+            }
+            out += "\\textbf{disagrees}: derived ";
+            out += p.derived.info(GiNaC::info_flags::relation)
+                       ? fmt::format("${} = {}$", math(p.derived.lhs()), math(p.derived.rhs()))
+                       : fmt::format("${}$", math(p.derived));
+            if (!p.reconciliations.empty())
+                out += fmt::format("; reconciled by {}", latex_text(fmt::format("{}", fmt::join(p.reconciliations, "; "))));
+            out += ".\n";
+        }
+        out += "\\end{itemize}\n";
+    }
     return out;
 }
 

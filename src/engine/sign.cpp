@@ -253,7 +253,17 @@ bool has_radical(const GiNaC::ex& e)
 // factoring under a root may pull out -1 and leave I behind.
 GiNaC::ex factor_polynomial(const GiNaC::ex& e)
 {
-    return has_radical(e) ? e : GiNaC::factor(e);
+    if (has_radical(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e))
+        return e;
+    // factor() is the engine's most expensive call and meets the same polynomials again
+    // and again (in sign proofs, in radicals, in each step's simplification).
+    static std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> factored;
+    const auto known = factored.find(e);
+    if (known != factored.end())
+        return known->second;
+    const GiNaC::ex f = GiNaC::factor(e);
+    factored.emplace(e, f);
+    return f;
 }
 
 sign_set sign_set::exactly(int sign)
@@ -285,7 +295,11 @@ std::string assumptions::text(const GiNaC::ex& e) const
 
 assumptions declared_assumptions(const symbol_table& symbols)
 {
-    assumptions given{{}, declaration_order(symbols)};
+    // Under the declared domains the sign of an expression never changes, and GiNaC's
+    // symbols are never reused (each has its own serial number), so one cache serves
+    // every derivation of a run. Narrowed domains (a check's `assuming`) need their own.
+    static const auto declared_signs = std::make_shared<assumptions::sign_cache>();
+    assumptions given{{}, declaration_order(symbols), declared_signs};
     for (const quantity& q : symbols.all())
         if (!q.definition)
             given.domains[q.symbol] = q.range;
@@ -335,6 +349,8 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
 
 GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
 {
+    if (!has_radical(e))
+        return e;
     struct inner : GiNaC::map_function {
         const assumptions& given;
         explicit inner(const assumptions& g) : given(g) {}
