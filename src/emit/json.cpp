@@ -23,6 +23,8 @@ json check_json(const engine::check_result& c, const term_order& order)
     if (c.limit)
         j["limit"] = ginac_syntax(c.limit->symbol, order) + " -> " +
                      (c.limit->to_infinity ? std::string("infinity") : ginac_syntax(c.limit->point, order));
+    for (const auto& [symbol, value] : c.left_at)
+        j["left_at"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
     for (const auto& [symbol, range] : c.assuming)
         j["assuming"][ginac_syntax(symbol, order)] = range;
     if (!c.outcome.proof.empty())

@@ -341,6 +341,9 @@ std::string latex_fragment(const engine::derivation& d)
         for (std::size_t i = 0; i < c.assuming.size(); ++i)
             out += fmt::format("{}${} \\in {}$", i == 0 ? " for " : ", ", math(c.assuming[i].first),
                                c.assuming[i].second);
+        for (std::size_t i = 0; i < c.left_at.size(); ++i)
+            out += fmt::format("{}${} \\to {}$", i == 0 ? ", the left side taken at " : ", ",
+                               math(c.left_at[i].first), math(c.left_at[i].second));
         out += " --- " + status_text(c.outcome);
         if (!c.because.empty())
             out += " (" + latex_text(c.because) + ")";

@@ -333,6 +333,17 @@ private:
         c.stated = sides.lhs == sides.rhs;
         GiNaC::ex lhs = resolve(sides.lhs), rhs = resolve(sides.rhs);
 
+        // Symmetries compare a result at changed inputs with the result itself:
+        // `left_at` substitutes (all at once) into the left side only.
+        GiNaC::exmap left_at;
+        for (const spec::binding& b : spec_check.left_at) {
+            const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
+            left_at[symbol] = out_.symbols.parse(b.expression);
+            c.left_at.emplace_back(symbol, left_at[symbol]);
+        }
+        if (!left_at.empty())
+            lhs = lhs.subs(left_at, GiNaC::subs_options::no_pattern);
+
         GiNaC::exmap at;
         for (const spec::binding& b : spec_check.at) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;

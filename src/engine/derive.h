@@ -37,6 +37,7 @@ struct check_result {
     std::string statement;    ///< the claim in words or as written in the file
     GiNaC::ex stated;         ///< the claim as written (lhs == rhs), before substitution
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> at;  ///< special values it is checked at
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> left_at;  ///< inputs changed on the left only
     relation op = relation::equal;                     ///< the relation `stated` claims
     struct limit_point {
         GiNaC::ex symbol;

@@ -74,6 +74,7 @@ struct check {
     text claim;                    ///< `lhs = rhs`, or `lhs <= rhs` (also <, >=, >)
     text because;
     std::vector<binding> at;       ///< special values, e.g. `eps = 1`
+    std::vector<binding> left_at;  ///< inputs changed on the left side only, e.g. `v_M = v_M + w`
     std::optional<text> limit;     ///< `v_perp -> 0` or `v_perp -> infinity`: the claim is about lim lhs
     std::vector<binding> assuming; ///< narrower domains for this check, e.g. `eps = "[0, 1)"`
 };

@@ -253,6 +253,7 @@ check read_check_fields(table_reader& in)
     c.claim = in.required_string("claim");
     c.because = in.string_or("because", "");
     c.at = in.binding_table("at");
+    c.left_at = in.binding_table("left_at");
     c.limit = in.optional_string("limit");
     c.assuming = in.binding_table("assuming");
     return c;
