@@ -10,6 +10,13 @@ packages=(
   libtomlplusplus-dev              # derivation files
   libcli11-dev                     # the command line
   nlohmann-json3-dev               # derivations.json
+  clang libclang-rt-14-dev         # the fuzzer (libFuzzer) and sanitized builds in CI
+  libbenchmark-dev                 # the kernels' benchmark (built on demand)
+  texlive-latex-recommended        # pdflatex, amsmath: output/report.pdf and its test
+  texlive-latex-extra              # longtable, booktabs and the rest of the report's packages
+  texlive-pictures                 # pgfplots (Figs. 2 and 3)
+  latexmk                          # building a report by hand
+  poppler-utils                    # pdftoppm, pdffonts: looking at the report's pages
 )
 
 missing=()

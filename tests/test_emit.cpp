@@ -4,7 +4,6 @@
 
 #include "emit/cxx.h"
 #include "engine/infix.h"
-#include "emit/latex.h"
 
 using namespace impact;
 
@@ -51,33 +50,6 @@ BOOST_AUTO_TEST_CASE(numbers_are_literals_of_the_kernel_type)
 
 BOOST_AUTO_TEST_SUITE_END()
 
-BOOST_FIXTURE_TEST_SUITE(latex, eq8_symbols)
-
-BOOST_AUTO_TEST_CASE(quotients_are_fractions_and_symbols_use_their_latex_names)
-{
-    BOOST_TEST(emit::latex((M * vM + m * vm + eps * m * (vm - vM)) / (M + m), order) ==
-               "\\frac{M v_{M} + m v_{m} - m \\epsilon \\left(v_{M} - v_{m}\\right)}{M + m}");
-    BOOST_TEST(emit::latex(vM - vMp / M, order) == "v_{M} - \\frac{v'_{M}}{M}");
-}
-
-BOOST_AUTO_TEST_CASE(a_primed_symbol_squared_is_braced)
-{
-    BOOST_TEST(emit::latex(M * GiNaC::pow(vMp, 2), order) == "M {v'_{M}}^{2}");
-}
-
-BOOST_AUTO_TEST_CASE(roots_halves_and_functions)
-{
-    BOOST_TEST(emit::latex(GiNaC::sqrt(M), order) == "\\sqrt{M}");
-    BOOST_TEST(emit::latex(GiNaC::numeric(1, 2) * M * vM * vM, order) == "\\frac{M {v_{M}}^{2}}{2}");
-    BOOST_TEST(emit::latex(GiNaC::acos(eps), order) == "\\arccos\\left(\\epsilon\\right)");
-}
-
-BOOST_AUTO_TEST_CASE(text_is_escaped)
-{
-    BOOST_TEST(emit::latex_text("v_M & 50% #1") == "v\\_M \\& 50\\% \\#1");
-}
-
-BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_CASE(order_does_not_depend_on_how_gi_nac_stored_the_expression)
 {

@@ -16,7 +16,10 @@
 #include "verify/accuracy.h"
 
 #include <algorithm>
+#include <cfenv>
+#include <cstring>
 #include <iostream>
+#include <limits>
 #include <string>
 
 namespace {
@@ -124,4 +127,287 @@ BOOST_AUTO_TEST_CASE(perfectly_inelastic_collision_moves_on_at_the_centre_of_mas
     const auto out = impact::collide_line(3.0f, 1.0f, 1.0f, -3.0f, 0.0f);
     BOOST_TEST(out.v_M == 0.0f);  // (3 * 1 + 1 * -3) / 4
     BOOST_TEST(out.v_m == 0.0f);
+}
+
+// ---------------------------------------------------------------------------------
+// The lab-frame kernels and the scalar kernels of the public API, against closed forms
+// typed here (the impulse along the line of centres), and their physical properties.
+
+namespace {
+
+using GiNaC::numeric;
+
+numeric ex_of(double x)
+{
+    return verify::exact(x);
+}
+
+// A seeded stream of collisions in D dimensions that approach each other, drawn over
+// wide ranges (masses 1e-6..1e6, velocities and positions 1e-2..1e2 in magnitude).
+template <std::size_t D>
+struct collision {
+    double M, m, eps;
+    std::array<double, D> C_M, C_m, v_M, v_m;
+};
+
+template <std::size_t D>
+collision<D> draw_collision(engine::uniform_stream& s)
+{
+    auto decades = [&](double lo, double hi) { return std::pow(10.0, lo + (hi - lo) * s.next()); };
+    auto signed_value = [&] { return (s.next() < 0.5 ? -1 : 1) * decades(-2, 2); };
+    collision<D> c;
+    c.M = decades(-6, 6);
+    c.m = decades(-6, 6);
+    c.eps = s.next();
+    double closing = 0;
+    for (std::size_t i = 0; i < D; ++i) {
+        c.C_M[i] = signed_value();
+        c.C_m[i] = signed_value();
+        c.v_M[i] = signed_value();
+        c.v_m[i] = signed_value();
+        closing += (c.v_M[i] - c.v_m[i]) * (c.C_M[i] - c.C_m[i]);
+    }
+    if (closing > 0)
+        for (std::size_t i = 0; i < D; ++i) {
+            c.v_M[i] = -c.v_M[i];
+            c.v_m[i] = -c.v_m[i];
+        }
+    return c;
+}
+
+// v'_M = v_M - (1 + eps) m/(M + m) ((v_M - v_m).r / r.r) r, and v'_m with +M: the
+// impulse along the line of centres r = C_M - C_m, exactly.
+template <std::size_t D>
+std::pair<std::array<numeric, D>, std::array<numeric, D>> exact_collision(const collision<D>& c)
+{
+    numeric dot = 0, rr = 0;
+    std::array<numeric, D> r;
+    for (std::size_t i = 0; i < D; ++i) {
+        r[i] = ex_of(c.C_M[i]) - ex_of(c.C_m[i]);
+        dot += (ex_of(c.v_M[i]) - ex_of(c.v_m[i])) * r[i];
+        rr += r[i] * r[i];
+    }
+    const numeric k = (1 + ex_of(c.eps)) * dot / ((ex_of(c.M) + ex_of(c.m)) * rr);
+    std::array<numeric, D> a, b;
+    for (std::size_t i = 0; i < D; ++i) {
+        a[i] = ex_of(c.v_M[i]) - k * ex_of(c.m) * r[i];
+        b[i] = ex_of(c.v_m[i]) + k * ex_of(c.M) * r[i];
+    }
+    return {a, b};
+}
+
+template <std::size_t D>
+void check_collide_accuracy()
+{
+    engine::uniform_stream s(D * 7919);
+    double worst = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const collision<D> c = draw_collision<D>(s);
+        const auto out = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps);
+        BOOST_REQUIRE(out.status == impact::status::ok);
+        const auto [a, b] = exact_collision(c);
+        numeric scale = 0;
+        for (std::size_t i = 0; i < D; ++i)
+            scale = std::max({scale, GiNaC::abs(ex_of(c.v_M[i])), GiNaC::abs(ex_of(c.v_m[i])), GiNaC::abs(a[i]),
+                              GiNaC::abs(b[i])});
+        for (std::size_t i = 0; i < D; ++i) {
+            worst = std::max(worst, verify::ulps(out.v_M[i], a[i], scale));
+            worst = std::max(worst, verify::ulps(out.v_m[i], b[i], scale));
+        }
+    }
+    std::cout << "collide<double> in " << D << "D over 3000 collisions: worst error " << worst
+              << " ulps of the largest velocity\n";
+    BOOST_TEST(worst <= 4.0);
+}
+
+template <std::size_t D>
+void check_momentum_and_symmetry()
+{
+    engine::uniform_stream s(D * 104729);
+    double worst_momentum = 0, worst_swap = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const collision<D> c = draw_collision<D>(s);
+        const auto out = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps);
+        // The same collision with the spheres named the other way round.
+        const auto swapped = impact::collide(c.m, c.M, c.C_m, c.C_M, c.v_m, c.v_M, c.eps);
+        BOOST_REQUIRE(swapped.status == impact::status::ok);
+        double speed = 0;
+        for (std::size_t i = 0; i < D; ++i)
+            speed = std::max({speed, std::abs(c.v_M[i]), std::abs(c.v_m[i]), std::abs(out.v_M[i]), std::abs(out.v_m[i])});
+        for (std::size_t i = 0; i < D; ++i) {
+            // Momentum before and after, exactly: the difference in ulps of (M + m) times the speed.
+            const numeric before = ex_of(c.M) * ex_of(c.v_M[i]) + ex_of(c.m) * ex_of(c.v_m[i]);
+            const numeric after = ex_of(c.M) * ex_of(out.v_M[i]) + ex_of(c.m) * ex_of(out.v_m[i]);
+            const numeric momentum_scale = (ex_of(c.M) + ex_of(c.m)) * ex_of(speed);
+            worst_momentum = std::max(worst_momentum, verify::ulps(after, before, momentum_scale, 53));
+            worst_swap = std::max(worst_swap, verify::ulps(swapped.v_m[i], ex_of(out.v_M[i]), ex_of(speed), 53));
+            worst_swap = std::max(worst_swap, verify::ulps(swapped.v_M[i], ex_of(out.v_m[i]), ex_of(speed), 53));
+        }
+    }
+    std::cout << "collide<double> in " << D << "D: momentum conserved to " << worst_momentum
+              << " ulps of (M + m) times the largest velocity; swapping the spheres agrees to " << worst_swap
+              << " ulps\n";
+    BOOST_TEST(worst_momentum <= 8.0);
+    BOOST_TEST(worst_swap <= 8.0);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(collide_in_2d_is_within_4_ulps_of_the_exact_impulse_along_the_line_of_centres)
+{
+    check_collide_accuracy<2>();
+}
+
+BOOST_AUTO_TEST_CASE(collide_in_3d_is_within_4_ulps_of_the_exact_impulse_along_the_line_of_centres)
+{
+    check_collide_accuracy<3>();
+}
+
+BOOST_AUTO_TEST_CASE(collide_conserves_momentum_and_does_not_care_which_sphere_is_named_first_2d)
+{
+    check_momentum_and_symmetry<2>();
+}
+
+BOOST_AUTO_TEST_CASE(collide_conserves_momentum_and_does_not_care_which_sphere_is_named_first_3d)
+{
+    check_momentum_and_symmetry<3>();
+}
+
+BOOST_AUTO_TEST_CASE(energy_loss_is_the_energy_the_output_velocities_lost)
+{
+    engine::uniform_stream s(31337);
+    double worst = 0, worst_exact = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const double M = std::pow(10.0, -3 + 6 * s.next()), m = std::pow(10.0, -3 + 6 * s.next());
+        const double v_M = 20 * s.next() - 10, v_m = 20 * s.next() - 10, eps = s.next();
+        const double dE = impact::energy_loss(M, m, v_M, v_m, eps);
+        BOOST_REQUIRE(dE <= 0);
+        // Against the closed form -(1 - eps^2) M m (v_M - v_m)^2 / (2 (M + m)), exactly.
+        const numeric d = ex_of(v_M) - ex_of(v_m);
+        const numeric exact = -(1 - ex_of(eps) * ex_of(eps)) * ex_of(M) * ex_of(m) * d * d / (2 * (ex_of(M) + ex_of(m)));
+        worst_exact = std::max(worst_exact, verify::ulps(dE, exact, exact));
+        // Against E' - E of collide_line's outputs, in ulps of the kinetic energy E.
+        const auto out = impact::collide_line(M, m, v_M, v_m, eps);
+        auto energy = [&](double a, double b) {
+            return (ex_of(M) * ex_of(a) * ex_of(a) + ex_of(m) * ex_of(b) * ex_of(b)) / 2;
+        };
+        const numeric E = energy(v_M, v_m);
+        worst = std::max(worst, verify::ulps(ex_of(dE), energy(out.v_M, out.v_m) - E, E, 53));
+    }
+    std::cout << "energy_loss<double>: " << worst_exact << " ulps of the exact loss at worst; agrees with E' - E "
+              << "of collide_line's outputs to " << worst << " ulps of E\n";
+    BOOST_TEST(worst_exact <= 4.0);
+    BOOST_TEST(worst <= 16.0);
+}
+
+BOOST_AUTO_TEST_CASE(scatter_angle_is_within_4_ulps_of_the_arccosine_of_eq14)
+{
+    engine::uniform_stream s(2718);
+    double worst = 0;
+    const auto saved = GiNaC::Digits;
+    GiNaC::Digits = 60;
+    for (int n = 0; n < 2000; ++n) {
+        // Head-on (v_perp tiny) to grazing (v_perp large), eps anywhere in [0, 1).
+        const double v_par = std::pow(10.0, -2 + 4 * s.next()), v_perp = std::pow(10.0, -14 + 16 * s.next());
+        const double eps = s.next() * 0.999;
+        const double theta = impact::scatter_angle(v_par, v_perp, eps);
+        const numeric a = (1 - ex_of(eps)) * ex_of(v_par);
+        const numeric cos_theta = a / GiNaC::sqrt(a * a + 4 * ex_of(v_perp) * ex_of(v_perp));
+        const numeric exact = GiNaC::acos(cos_theta);
+        worst = std::max(worst, verify::ulps(theta, exact, exact));
+    }
+    GiNaC::Digits = saved;
+    std::cout << "scatter_angle<double>: worst error " << worst << " ulps of theta\n";
+    BOOST_TEST(worst <= 4.0);
+    BOOST_TEST(impact::scatter_angle(1.0, 0.5, 1.0) == std::acos(0.0));  // elastic: a right angle
+}
+
+BOOST_AUTO_TEST_CASE(the_batch_kernel_gives_the_scalar_results_bit_for_bit)
+{
+    constexpr std::size_t n = 512;
+    engine::uniform_stream s(99);
+    std::vector<double> M(n), m(n), eps(n);
+    std::array<std::vector<double>, 3> C_M, C_m, v_M, v_m, v_M0, v_m0;
+    for (auto* a : {&C_M, &C_m, &v_M, &v_m})
+        for (auto& component : *a)
+            component.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const collision<3> c = draw_collision<3>(s);
+        M[i] = c.M;
+        m[i] = i % 7 == 0 ? -1.0 : c.m;          // some invalid masses
+        eps[i] = c.eps;
+        for (std::size_t d = 0; d < 3; ++d) {
+            C_M[d][i] = c.C_M[d];
+            C_m[d][i] = c.C_m[d];
+            v_M[d][i] = i % 5 == 0 ? -c.v_M[d] : c.v_M[d];  // some separating pairs
+            v_m[d][i] = i % 5 == 0 ? -c.v_m[d] : c.v_m[d];
+        }
+    }
+    v_M0 = v_M;
+    v_m0 = v_m;
+    std::vector<impact::status> status(n);
+    impact::collide_batch_data<double, 3> data{n,
+                                               M.data(),
+                                               m.data(),
+                                               {C_M[0].data(), C_M[1].data(), C_M[2].data()},
+                                               {C_m[0].data(), C_m[1].data(), C_m[2].data()},
+                                               {v_M[0].data(), v_M[1].data(), v_M[2].data()},
+                                               {v_m[0].data(), v_m[1].data(), v_m[2].data()},
+                                               eps.data(),
+                                               status.data()};
+    impact::collide_batch(data);
+    std::size_t resolved = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto r = impact::collide(M[i], m[i], {C_M[0][i], C_M[1][i], C_M[2][i]}, {C_m[0][i], C_m[1][i], C_m[2][i]},
+                                       {v_M0[0][i], v_M0[1][i], v_M0[2][i]}, {v_m0[0][i], v_m0[1][i], v_m0[2][i]},
+                                       eps[i]);
+        BOOST_TEST((r.status == status[i]));
+        resolved += r.status == impact::status::ok ? 1 : 0;
+        for (std::size_t d = 0; d < 3; ++d) {
+            BOOST_TEST(std::memcmp(&r.v_M[d], &v_M[d][i], sizeof(double)) == 0);
+            BOOST_TEST(std::memcmp(&r.v_m[d], &v_m[d][i], sizeof(double)) == 0);
+        }
+    }
+    BOOST_TEST(resolved > n / 2);  // most pairs collide: the comparison covers the arithmetic
+}
+
+BOOST_AUTO_TEST_CASE(inputs_that_allow_no_collision_leave_the_velocities_unchanged_with_a_status)
+{
+    using impact::status;
+    const std::array<double, 2> C_M{1, 0}, C_m{0, 0}, v_M{-1, 0.5}, v_m{1, -0.25};
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    struct bad {
+        double M, m, eps;
+        std::array<double, 2> C_M, C_m, v_M, v_m;
+        status expected;
+    };
+    const bad cases[] = {
+        {2, 1, 0.5, C_m, C_m, v_M, v_m, status::coincident_centres},       // no line of action
+        {0, 1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
+        {2, -1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
+        {nan, 1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
+        {2, inf, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
+        {2, 1, 1.5, C_M, C_m, v_M, v_m, status::invalid_restitution},
+        {2, 1, -0.1, C_M, C_m, v_M, v_m, status::invalid_restitution},
+        {2, 1, nan, C_M, C_m, v_M, v_m, status::invalid_restitution},
+        {2, 1, 0.5, C_M, C_m, {inf, 0}, v_m, status::non_finite},
+        {2, 1, 0.5, {nan, 0}, C_m, v_M, v_m, status::non_finite},
+        {2, 1, 0.5, C_M, C_m, {1, 0.5}, v_m, status::separating},           // M moves away from m
+        {2, 1, 0.5, C_M, C_m, {1, 0}, {1, 0}, status::separating},          // no relative motion
+    };
+    for (const bad& b : cases) {
+        std::feclearexcept(FE_ALL_EXCEPT);
+        const auto out = impact::collide(b.M, b.m, b.C_M, b.C_m, b.v_M, b.v_m, b.eps);
+        BOOST_TEST(std::fetestexcept(FE_DIVBYZERO) == 0);  // nothing divides by zero, even silently
+        BOOST_TEST((out.status == b.expected));
+        for (std::size_t d = 0; d < 2; ++d) {
+            BOOST_TEST(std::memcmp(&out.v_M[d], &b.v_M[d], sizeof(double)) == 0);
+            BOOST_TEST(std::memcmp(&out.v_m[d], &b.v_m[d], sizeof(double)) == 0);
+        }
+    }
+    // And a head-on hit of equal masses with eps = 1 exchanges the velocities.
+    const auto out = impact::collide(1.0, 1.0, C_M, C_m, std::array<double, 2>{-1, 0}, std::array<double, 2>{1, 0}, 1.0);
+    BOOST_TEST((out.status == status::ok));
+    BOOST_TEST(out.v_M[0] == 1.0);
+    BOOST_TEST(out.v_m[0] == -1.0);
 }

@@ -7,6 +7,8 @@
 #include "emit/latex.h"
 #include "pipeline/library.h"
 #include "pipeline/regenerate.h"
+#include "simulate/command.h"
+#include "simulate/regeneration.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -27,6 +29,7 @@ struct options {
     std::string output = "output";
     std::string name;
     std::string file;
+    bool timings = false;
 };
 
 pipeline::library derive_one(const options& o)
@@ -37,14 +40,17 @@ pipeline::library derive_one(const options& o)
 
 int run_regenerate(const options& o)
 {
-    const pipeline::regeneration r = pipeline::regenerate(o.derivations, o.output);
+    const pipeline::regeneration r = pipeline::regenerate(o.derivations, o.output, simulate::figures_and_report);
     if (!r.all_hold) {
         for (const std::string& failure : r.failures)
-            fmt::print(stderr, "impact: check failed: {}\n", failure);
+            fmt::print(stderr, "{}\n", failure);
         fmt::print(stderr, "impact: {} left unchanged\n", o.output);
         return exit_failed_check;
     }
     fmt::print("impact: wrote {} files to {}\n", r.files, o.output);
+    if (o.timings)
+        for (const auto& [stage, seconds] : r.stages)
+            fmt::print("impact: {:8.3f} s  {}\n", seconds, stage);
     return 0;
 }
 
@@ -118,7 +124,9 @@ int run_kernels(const options& o)
 {
     const pipeline::library lib = pipeline::derive_all(pipeline::read_directory(o.derivations));
     if (!lib.all_hold()) {
-        fmt::print(stderr, "impact: a check failed; no kernels written (run `impact regenerate` for details)\n");
+        for (const std::string& failure : pipeline::failed_checks(lib))
+            fmt::print(stderr, "{}\n", failure);
+        fmt::print(stderr, "impact: no kernels written\n");
         return exit_failed_check;
     }
     const pipeline::file_set files = pipeline::generate_kernels(lib);
@@ -148,6 +156,7 @@ int main(int argc, char** argv)
 
     CLI::App* regenerate = app.add_subcommand("regenerate", "derive everything and rewrite the output folder");
     add_derivations(regenerate);
+    regenerate->add_flag("--timings", o.timings, "print the wall time of each stage");
     regenerate->add_option("--output", o.output, "output folder, replaced only when every check holds")
         ->capture_default_str();
 
@@ -164,6 +173,23 @@ int main(int argc, char** argv)
     add_derivations(kernels);
     kernels->add_option("--output", o.output, "folder to write kernels/impact/*.hpp into")->capture_default_str();
 
+    simulate::command_options sim;
+    CLI::App* simulation = app.add_subcommand(
+        "simulate", "move two spheres until they touch, collide them with the generated kernel, write trajectories");
+    simulation->add_option("scenario", sim.file, "scenario file (TOML); without one, Fig. 2's billiard shot");
+    simulation->add_option("--output", sim.output, "folder for <name>.dat and <name>.tex")->capture_default_str();
+    simulation->add_option("--name", sim.name, "scenario name (names the files)");
+    simulation->add_option("--eps", sim.eps, "Newton's coefficient of restitution, in [0, 1]");
+    simulation->add_option("--duration", sim.duration, "time simulated");
+    simulation->add_option("--mass-M", sim.mass_M, "mass of M");
+    simulation->add_option("--mass-m", sim.mass_m, "mass of m");
+    simulation->add_option("--radius-M", sim.radius_M, "radius of M");
+    simulation->add_option("--radius-m", sim.radius_m, "radius of m");
+    simulation->add_option("--position-M", sim.position_M, "centre of M at t = 0, as x,y");
+    simulation->add_option("--position-m", sim.position_m, "centre of m at t = 0, as x,y");
+    simulation->add_option("--velocity-M", sim.velocity_M, "velocity of M, as x,y");
+    simulation->add_option("--velocity-m", sim.velocity_m, "velocity of m, as x,y");
+
     CLI::App* list = app.add_subcommand("list", "list the derivations");
     add_derivations(list);
 
@@ -175,6 +201,8 @@ int main(int argc, char** argv)
             return run_derive(o);
         if (latex->parsed())
             return run_latex(o);
+        if (simulation->parsed())
+            return simulate::simulate_command(sim);
         if (kernels->parsed())
             return run_kernels(o);
         return run_list(o);
@@ -182,7 +210,7 @@ int main(int argc, char** argv)
         fmt::print(stderr, "{}\n", e.what());
         return exit_bad_input;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "impact: error: {}\n", e.what());
+        fmt::print(stderr, "impact: error: {}\n", single_line(e.what()));
         return exit_bad_input;
     }
 }

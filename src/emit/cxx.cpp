@@ -1,7 +1,12 @@
 #include "emit/cxx.h"
 
+#include "engine/infix.h"
+
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace impact::emit {
@@ -14,9 +19,16 @@ print_cxx::print_cxx(std::ostream& os, const term_order& order)
 {
 }
 
+std::string cxx(const GiNaC::ex& e, const term_order& order)
+{
+    std::ostringstream out;
+    engine::print_expression(e, print_cxx(out, order));
+    return out.str();
+}
+
 namespace {
 
-std::string describe_input(const engine::quantity& q)
+std::string describe(const engine::quantity& q)
 {
     std::string text = q.name;
     if (!q.meaning.empty())
@@ -24,45 +36,266 @@ std::string describe_input(const engine::quantity& q)
     return text + " (" + q.range.to_string() + ")";
 }
 
-} // namespace
-
-std::string cxx(const GiNaC::ex& e, const term_order& order)
+bool is_output(const engine::kernel& k, const std::string& name)
 {
-    std::ostringstream out;
-    print_expression(e, print_cxx(out, order));
-    return out.str();
+    for (const engine::kernel_output& o : k.outputs)
+        if (o.member == name)
+            return true;
+    return false;
 }
+
+// A kernel returning one scalar returns it directly; otherwise a struct.
+bool returns_scalar(const engine::kernel& k)
+{
+    return k.outputs.size() == 1 && !k.outputs.front().is_array && k.guards.empty();
+}
+
+std::size_t dimension(const engine::kernel& k)
+{
+    for (const engine::kernel_parameter& p : k.parameters)
+        if (p.is_array)
+            return p.components.size();
+    return 0;
+}
+
+std::string result_type(const engine::kernel& k)
+{
+    if (returns_scalar(k))
+        return "Real";
+    const std::size_t n = dimension(k);
+    return n ? fmt::format("{}_result<Real, {}>", k.name, n) : fmt::format("{}_result<Real>", k.name);
+}
+
+std::string parameter_type(const engine::kernel_parameter& p)
+{
+    return p.is_array ? fmt::format("const std::array<Real, {}>&", p.components.size()) : "Real";
+}
+
+// The test a guard makes: true when the inputs are NOT acceptable. NaN fails every
+// comparison, so each test is written as the negation of what must hold.
+std::string domain_failure(const engine::quantity& q, const std::string& value)
+{
+    switch (q.range.what) {
+    case engine::domain::kind::positive: return fmt::format("!({} > Real(0)) || !std::isfinite({})", value, value);
+    case engine::domain::kind::nonnegative: return fmt::format("!({} >= Real(0)) || !std::isfinite({})", value, value);
+    case engine::domain::kind::interval:
+        return fmt::format("!({} {} Real({}) && {} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower,
+                           value, q.range.upper_open ? "<" : "<=", q.range.upper);
+    case engine::domain::kind::real: break;
+    }
+    return fmt::format("!std::isfinite({})", value);
+}
+
+std::string members_initialiser(const engine::kernel& k)
+{
+    // Outputs named after an input start as that input: a collision not resolved leaves
+    // the velocities unchanged.
+    std::vector<std::string> values;
+    for (const engine::kernel_output& o : k.outputs) {
+        const engine::kernel_parameter* same = nullptr;
+        for (const engine::kernel_parameter& p : k.parameters)
+            if (p.name == o.member)
+                same = &p;
+        values.push_back(same ? same->name : (o.is_array ? "{}" : "Real(0)"));
+    }
+    if (!k.guards.empty())
+        values.push_back("status::ok");
+    return fmt::format("{{{}}}", fmt::join(values, ", "));
+}
+
+void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan)
+{
+    const engine::kernel& k = *plan.kernel;
+    const std::size_t n = dimension(k);
+
+    if (!returns_scalar(k) && n == 0) {
+        out += fmt::format("\n/// What {} returns.\ntemplate <class Real>\nstruct {}_result {{\n", k.name, k.name);
+        for (const engine::kernel_output& o : k.outputs)
+            out += fmt::format("    Real {};\n", o.member);
+        if (!k.guards.empty())
+            out += "    impact::status status;\n";
+        out += "};\n";
+    }
+
+    // Documentation: inputs, and how each output is computed and how accurate it is.
+    std::vector<std::string> names;
+    for (const engine::kernel_parameter& p : k.parameters)
+        names.push_back(p.name);
+    out += fmt::format("\n/// {}({}): {}{}.\n", k.name, fmt::join(names, ", "), d.source.title.value,
+                       d.source.paper ? ", " + d.source.paper->value : "");
+    for (const engine::kernel_parameter& p : k.parameters)
+        for (const engine::quantity& q : p.components)
+            out += fmt::format("///   {}{}\n", p.is_array ? p.name + ": " : "", describe(q));
+    for (const component_plan& cp : plan.components) {
+        const candidate_result& c = cp.candidates[cp.chosen];
+        out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
+                           cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
+    }
+    if (!k.guards.empty())
+        out += "/// When the inputs allow no collision, `status` says why and the velocities are unchanged.\n";
+
+    std::vector<std::string> parameters;
+    for (const engine::kernel_parameter& p : k.parameters)
+        parameters.push_back(parameter_type(p) + " " + p.name);
+    out += fmt::format("template <class Real>\ninline {} {}({}) noexcept\n{{\n", result_type(k), k.name,
+                       fmt::join(parameters, ", "));
+
+    // Components of array parameters by name.
+    std::vector<std::string> component_names;
+    for (const engine::kernel_parameter& p : k.parameters) {
+        for (std::size_t c = 0; c < p.components.size(); ++c) {
+            component_names.push_back(p.components[c].name);
+            if (p.is_array)
+                out += fmt::format("    const Real {} = {}[{}];\n", p.components[c].name, p.name, c);
+            else if (p.components[c].name != p.name)
+                out += fmt::format("    const Real {} = {};\n", p.components[c].name, p.name);
+        }
+    }
+    const cxx_code code = program_cxx(plan.code, component_names);
+
+    if (!returns_scalar(k))
+        out += fmt::format("    {} out{};\n", result_type(k), members_initialiser(k));
+
+    // Guards on the inputs' domains, then the statements their conditions need, then
+    // the conditions.
+    for (const engine::kernel_guard& g : k.guards) {
+        if (g.condition)
+            continue;
+        std::vector<std::string> failures;
+        for (const std::string& name : g.parameters)
+            for (const engine::kernel_parameter& p : k.parameters)
+                if (p.name == name)
+                    for (const engine::quantity& q : p.components)
+                        failures.push_back(domain_failure(q, q.name));
+        out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
+                           fmt::join(failures, " || "), g.status);
+    }
+    const int last_guard_value = plan.guard_values ? plan.code.outputs[plan.guard_values - 1] : -1;
+    std::size_t s = 0;
+    for (; s < code.statements.size() && code.statement_values[s] <= last_guard_value; ++s)
+        out += "    " + code.statements[s] + "\n";
+    std::size_t condition = 0;
+    for (const engine::kernel_guard& g : k.guards) {
+        if (!g.condition)
+            continue;
+        out += fmt::format("    if (!({} {} Real(0))) {{\n        out.status = status::{};\n        return out;\n    }}\n",
+                           code.outputs[condition++], g.op == engine::relation::less ? "<" : ">", g.status);
+    }
+    for (; s < code.statements.size(); ++s)
+        out += "    " + code.statements[s] + "\n";
+
+    if (returns_scalar(k)) {
+        out += fmt::format("    return {};\n}}\n", code.outputs[plan.guard_values]);
+    } else {
+        std::size_t i = plan.guard_values;
+        for (const engine::kernel_output& o : k.outputs) {
+            if (!o.is_array) {
+                out += fmt::format("    out.{} = {};\n", o.member, code.outputs[i++]);
+                continue;
+            }
+            std::vector<std::string> components;
+            for (std::size_t c = 0; c < o.values.size(); ++c)
+                components.push_back(code.outputs[i++]);
+            out += fmt::format("    out.{} = {{{}}};\n", o.member, fmt::join(components, ", "));
+        }
+        out += "    return out;\n}\n";
+    }
+
+    if (k.batch) {
+        // The batch kernel calls the scalar one element by element: the same results, bit
+        // for bit, over structure-of-arrays data updated in place.
+        out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays; outputs named after\n"
+                           "/// inputs are updated in place, and `status` (if not null) receives each status.\n",
+                           k.name);
+        out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n"
+                           "    for (std::size_t i = 0; i < data.count; ++i) {{\n",
+                           k.name, n);
+        std::vector<std::string> arguments;
+        for (const engine::kernel_parameter& p : k.parameters) {
+            if (!p.is_array) {
+                arguments.push_back(fmt::format("data.{}[i]", p.name));
+                continue;
+            }
+            std::vector<std::string> items;
+            for (std::size_t c = 0; c < p.components.size(); ++c)
+                items.push_back(fmt::format("data.{}[{}][i]", p.name, c));
+            arguments.push_back(fmt::format("std::array<Real, {}>{{{}}}", n, fmt::join(items, ", ")));
+        }
+        out += fmt::format("        const auto r = {}({});\n", k.name, fmt::join(arguments, ", "));
+        for (const engine::kernel_output& o : k.outputs) {
+            if (o.is_array)
+                for (std::size_t c = 0; c < o.values.size(); ++c)
+                    out += fmt::format("        data.{0}[{1}][i] = r.{0}[{1}];\n", o.member, c);
+            else
+                out += fmt::format("        data.{0}[i] = r.{0};\n", o.member);
+        }
+        if (!k.guards.empty())
+            out += "        if (data.status)\n            data.status[i] = r.status;\n";
+        out += "    }\n}\n";
+    }
+}
+
+} // namespace
 
 std::string kernel_header_name(const engine::derivation& d)
 {
     return d.id() + ".hpp";
 }
 
-std::string kernel_header(const engine::derivation& d)
+std::string kernel_header(const engine::derivation& d, const std::vector<const kernel_plan*>& plans)
 {
-    std::string out;
-    out += fmt::format("// Generated by Impact from {}; do not edit.\n", d.source_name());
+    std::string out = fmt::format("// Generated by Impact from {}; do not edit.\n", d.source_name());
     out += fmt::format("// {}{}.\n", d.source.title.value,
                        d.source.paper ? fmt::format(" ({} of the paper)", d.source.paper->value) : "");
-    out += "#pragma once\n\n#include <cmath>\n\nnamespace impact {\n";
-    const term_order order = engine::declaration_order(d.symbols);
-    for (const engine::kernel& k : d.kernels) {
-        out += fmt::format("\n/// What {} returns.\ntemplate <class Real>\nstruct {}_result {{\n", k.name, k.name);
+    out += "#pragma once\n\n#include \"common.hpp\"\n\nnamespace impact {\n";
+    for (const kernel_plan* plan : plans)
+        print_kernel(out, d, *plan);
+    out += "\n} // namespace impact\n";
+    return out;
+}
+
+std::string common_header(const std::vector<const kernel_plan*>& plans)
+{
+    std::string out = "// Generated by Impact from derivations/; do not edit.\n"
+                      "// What Impact's kernels share.\n#pragma once\n\n"
+                      "#include <array>\n#include <cmath>\n#include <cstddef>\n\nnamespace impact {\n";
+    std::vector<std::string> statuses{"ok"};
+    for (const kernel_plan* plan : plans)
+        for (const engine::kernel_guard& g : plan->kernel->guards)
+            if (std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
+                statuses.push_back(g.status);
+    out += fmt::format("\n/// Why a kernel resolved no collision; `ok` when it did.\nenum class status {{ {} }};\n",
+                       fmt::join(statuses, ", "));
+
+    // Array kernels are emitted in several dimensions; their structures are templates
+    // on the dimension, written once.
+    std::set<std::string> written;
+    for (const kernel_plan* plan : plans) {
+        const engine::kernel& k = *plan->kernel;
+        if (dimension(k) == 0 || !written.insert(k.name).second)
+            continue;
+        out += fmt::format("\n/// What {} returns in N dimensions.\ntemplate <class Real, std::size_t N>\nstruct {}_result {{\n",
+                           k.name, k.name);
         for (const engine::kernel_output& o : k.outputs)
-            out += fmt::format("    Real {};\n", o.member);
-        out += "};\n\n";
-        out += fmt::format("/// {} from {}:\n", k.name, d.id());
-        for (const engine::quantity& q : k.inputs)
-            out += fmt::format("///   {}\n", describe_input(q));
-        std::vector<std::string> parameters;
-        for (const engine::quantity& q : k.inputs)
-            parameters.push_back("Real " + q.name);
-        out += fmt::format("template <class Real>\ninline {}_result<Real> {}({}) noexcept\n{{\n", k.name, k.name,
-                           fmt::join(parameters, ", "));
-        out += fmt::format("    {}_result<Real> out;\n", k.name);
-        for (const engine::kernel_output& o : k.outputs)
-            out += fmt::format("    out.{} = {};\n", o.member, cxx(o.value, order));
-        out += "    return out;\n}\n";
+            out += fmt::format("    {} {};\n", o.is_array ? "std::array<Real, N>" : "Real", o.member);
+        if (!k.guards.empty())
+            out += "    impact::status status;\n";
+        out += "};\n";
+        if (!k.batch)
+            continue;
+        out += fmt::format("\n/// Structure-of-arrays data for {}_batch: one array per scalar, N per vector.\n"
+                           "template <class Real, std::size_t N>\nstruct {}_batch_data {{\n    std::size_t count;\n",
+                           k.name, k.name);
+        for (const engine::kernel_parameter& p : k.parameters) {
+            const std::string pointer = is_output(k, p.name) ? "Real*" : "const Real*";
+            if (p.is_array)
+                out += fmt::format("    std::array<{}, N> {};\n", pointer, p.name);
+            else
+                out += fmt::format("    {} {};\n", pointer, p.name);
+        }
+        if (!k.guards.empty())
+            out += "    impact::status* status;\n";
+        out += "};\n";
     }
     out += "\n} // namespace impact\n";
     return out;
@@ -71,7 +304,7 @@ std::string kernel_header(const engine::derivation& d)
 std::string umbrella_header(const std::vector<const engine::derivation*>& with_kernels)
 {
     std::string out = "// Generated by Impact from derivations/; do not edit.\n"
-                      "// Every kernel Impact emits, in one include.\n#pragma once\n\n";
+                      "// Every kernel Impact emits, in one include.\n#pragma once\n\n#include \"common.hpp\"\n";
     for (const engine::derivation* d : with_kernels)
         out += fmt::format("#include \"{}\"\n", kernel_header_name(*d));
     return out;

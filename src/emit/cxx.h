@@ -1,24 +1,27 @@
-// C++ emitter: GiNaC expressions → C++17 source, and derivations → kernel headers.
+// C++ emitter: kernel plans → header-only C++17 kernels.
 //
-// The printer is a GiNaC print context of Impact's own (`print_cxx`): it writes
-// `std::sqrt` rather than `pow(x,1.0/2.0)`, small integer powers as products,
-// numbers as literals of the kernel's floating-point type `Real`, and qualifies
-// functions with `std::`.
+// Each derivation with kernels gets `impact/<id>.hpp`; `impact/common.hpp` holds what
+// kernels share (the status enum, the result and batch structures of array kernels
+// emitted in several dimensions), and `impact/impact.hpp` includes everything. The
+// arithmetic is the kernel plan's program, printed statement by statement
+// (emit/program.h), so the code is exactly what was measured.
 #pragma once
 
-#include "engine/infix.h"
+#include "emit/kernel_plan.h"
 #include "engine/derive.h"
-
-#include <ginac/ginac.h>
+#include "engine/infix.h"
 
 #include <string>
+#include <vector>
 
 namespace impact::emit {
 
 using engine::print_infix;
 using engine::term_order;
 
-/// The C++ print context: `std::` functions, `Real(2)` literals, x * x for x^2.
+/// The C++ print context, for a single expression: `std::` functions, `Real(2)`
+/// literals, x * x for x^2. Kernel bodies are printed from programs instead (program.h).
+/// (GiNaC finds a context's parent by the name given here: it must be unqualified.)
 class print_cxx : public print_infix {
     GINAC_DECLARE_PRINT_CONTEXT(print_cxx, print_infix)
 public:
@@ -28,11 +31,14 @@ public:
 /// An expression as C++ source, its numbers of type `Real`.
 std::string cxx(const GiNaC::ex& e, const term_order& order);
 
-/// The header-only kernel file for one derivation (`output/kernels/impact/<id>.hpp`).
-std::string kernel_header(const engine::derivation& d);
+/// The header of one derivation's kernels; `plans` are those kernels' plans, in order.
+std::string kernel_header(const engine::derivation& d, const std::vector<const kernel_plan*>& plans);
 
 /// The file name of a derivation's kernel header.
 std::string kernel_header_name(const engine::derivation& d);
+
+/// `impact/common.hpp`: the status enum and the structures array kernels share.
+std::string common_header(const std::vector<const kernel_plan*>& plans);
 
 /// The umbrella header `impact/impact.hpp` including every kernel header.
 std::string umbrella_header(const std::vector<const engine::derivation*>& with_kernels);

@@ -80,11 +80,11 @@ json derivation_json(const engine::derivation& d)
         json kj;
         kj["name"] = k.name;
         kj["inputs"] = json::array();
-        for (const engine::quantity& q : k.inputs)
-            kj["inputs"].push_back(q.name);
+        for (const engine::kernel_parameter& p : k.parameters)
+            kj["inputs"].push_back(p.name);
         kj["outputs"] = json::object();
         for (const engine::kernel_output& o : k.outputs)
-            kj["outputs"][o.member] = ginac_syntax(o.value, order);
+            kj["outputs"][o.member] = ginac_syntax(o.values.front(), order);
         j["kernels"].push_back(kj);
     }
     return j;

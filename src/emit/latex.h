@@ -1,16 +1,24 @@
 // LaTeX emitter: GiNaC expressions → LaTeX math, derivations → LaTeX fragments.
 //
-// `print_tex` is a GiNaC print context of Impact's own: symbols are written with the
-// LaTeX names their derivation file gives, quotients as \frac, square roots as \sqrt,
-// operands in `term_order` so that the text is the same on every run.
+// `print_tex` is a GiNaC print context of Impact's own. It writes what a textbook
+// writes: symbols with the LaTeX names their derivation file gives (primes, ∥ and ⊥
+// subscripts, Greek letters), v'^2_{M,∥} rather than a double superscript, quotients as
+// \frac, square roots as \sqrt, a sum inside a product written with its first term
+// positive ((1 - ε), never (-1 + ε)), and parentheses only where precedence needs them
+// (\left( \right) only around something tall). An expression read from the derivation
+// file (a display form, a given equation, a claim) is printed the way its author wrote
+// it, terms and factors in the written order (`written_form`); everything else in
+// `term_order`, so that the text is the same on every run.
 #pragma once
 
-#include "engine/order.h"
+#include "emit/written_form.h"
 #include "engine/derive.h"
+#include "engine/order.h"
 
 #include <ginac/ginac.h>
 
 #include <string>
+#include <vector>
 
 namespace impact::emit {
 
@@ -19,23 +27,46 @@ using engine::term_order;
 class print_tex : public GiNaC::print_context {
     GINAC_DECLARE_PRINT_CONTEXT(print_tex, GiNaC::print_context)
 public:
-    print_tex(std::ostream& os, const term_order& order);
+    print_tex(std::ostream& os, const term_order& order, const written_form* written = nullptr);
     const term_order* order = nullptr;
+    const written_form* written = nullptr;  ///< how the expression was written, if it was
 };
 
-/// An expression as LaTeX math (without the surrounding `$`).
-std::string latex(const GiNaC::ex& e, const term_order& order);
+/// An expression as LaTeX math (without the surrounding `$`); with `written`, in the
+/// order and orientation the text it was read from gives.
+std::string latex(const GiNaC::ex& e, const term_order& order, const written_form* written = nullptr);
+
+/// The same expression broken into lines for a displayed equation, none (where it can
+/// be helped) wider than `width` (in points, see `latex_width`): a
+/// long sum breaks before a + or -, a long product around its widest sum, which is
+/// then set in \Bigl( \Bigr). One line when it fits.
+std::vector<std::string> latex_lines(const GiNaC::ex& e, const term_order& order, const written_form* written,
+                                     double width);
+
+/// The approximate printed width of LaTeX math in display style, in points of Computer
+/// Modern at 10 pt: fractions count their wider part, scripts 0.7 of theirs.
+double latex_width(const std::string& math);
 
 /// A check's claim as LaTeX math: `\lim_{v_\perp \to \infty} \cos\theta = 0`, `\Delta E_K \leq 0`.
-std::string claim_math(const engine::check_result& c, const term_order& order);
+std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written = nullptr);
 
 /// Plain text escaped for LaTeX.
 std::string latex_text(const std::string& text);
 
-/// The LaTeX fragment of one derivation: givens, steps, results, checks.
+/// The LaTeX fragment of one derivation, typeset as a derivation: its quantities, the
+/// given equations with their justifications, each step and what it yields, the results
+/// numbered as in the paper, the checks with their status and how each was
+/// established, and the paper's printed forms compared. Needs amsmath and amssymb only.
 std::string latex_fragment(const engine::derivation& d);
 
 /// The file name of a derivation's fragment (`<id>.tex`).
 std::string latex_fragment_name(const engine::derivation& d);
+
+/// The label of a derivation's fragment, for \ref (`impact:<id>`).
+std::string latex_label(const engine::derivation& d);
+
+/// A line per paper comparison of `derivations` as rows of a LaTeX table (the errata
+/// table of the report): where, item, verdict, printed, derived, smallest change.
+std::string latex_errata_rows(const std::vector<const engine::derivation*>& derivations);
 
 } // namespace impact::emit

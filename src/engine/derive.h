@@ -91,15 +91,50 @@ struct result {
     std::string paper;
 };
 
+/// A parameter of a kernel: a scalar, or an array of components (`C_M = [C_Mx, C_My]`).
+struct kernel_parameter {
+    std::string name;
+    std::vector<quantity> components;
+    bool is_array = false;
+};
+
+/// One algebraically equal way of computing an output, all proven equal to the result.
+struct form {
+    std::string label;        ///< "display", "derived", "paper", "expanded", or the form as written
+    GiNaC::ex value;
+};
+
 struct kernel_output {
     std::string member;       ///< the C++ struct member
-    GiNaC::ex value;
+    bool is_array = false;
+    std::vector<GiNaC::ex> values;              ///< each component, in the kernel's inputs
+    std::vector<std::vector<form>> candidates;  ///< each component's candidate forms
+    /// How its error is scaled: relative to its own exact value, or to the largest
+    /// velocity of the collision times `scale_factor`.
+    enum class scale { relative, velocity } error = scale::relative;
+    GiNaC::ex scale_factor = 1;
+};
+
+/// A condition the inputs must meet; when one does not, the kernel returns its status.
+struct kernel_guard {
+    std::string status;
+    std::vector<std::string> parameters;   ///< checked against their domains (and finiteness)
+    std::optional<GiNaC::ex> condition;    ///< or: lhs < 0, lhs > 0 (relation in `op`)
+    relation op = relation::less;
 };
 
 struct kernel {
     std::string name;
-    std::vector<quantity> inputs;
+    std::vector<kernel_parameter> parameters;
     std::vector<kernel_output> outputs;
+    std::vector<kernel_guard> guards;
+    std::vector<GiNaC::ex> velocities;     ///< the velocity components among the inputs
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> lets;  ///< symbol = value in the inputs, computed once
+    bool batch = false;
+
+    /// Every input symbol, parameters' components in order.
+    std::vector<GiNaC::ex> input_symbols() const;
+    const quantity* find_input(const std::string& name) const;
 };
 
 /// A derivation once run: everything later stages need, with no way back to the file.

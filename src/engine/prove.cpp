@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <optional>
 
 namespace impact::engine {
 namespace {
@@ -72,6 +74,120 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
     return v;
 }
 
+// e = numerator / denominator, the denominator kept as a product of powers of its
+// factors so that a sum takes the least common multiple of its terms' denominators
+// (factor by factor) and no gcd is ever computed: gcds are the costly part of normal().
+// Radicals and functions are kept whole, as normal() keeps them.
+struct over_denominator {
+    GiNaC::ex numerator;
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> denominator;
+};
+
+over_denominator over_common_denominator(const GiNaC::ex& e)
+{
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+        const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+        if (!n.is_rational() || n.is_integer())
+            return {e, {}};
+        return {n.numer(), {{n.denom(), 1}}};
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        over_denominator r{1, {}};
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            over_denominator f = over_common_denominator(e.op(i));
+            r.numerator *= f.numerator;
+            for (const auto& [base, k] : f.denominator)
+                r.denominator[base] += k;
+        }
+        return r;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::integer)) {
+        const int k = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int();
+        over_denominator base = over_common_denominator(e.op(0));
+        if (k >= 0) {
+            for (auto& [b, j] : base.denominator)
+                j *= k;
+            return {GiNaC::pow(base.numerator, k), base.denominator};
+        }
+        // (n / d)^-k = d^k / n^k
+        GiNaC::ex top = 1;
+        for (const auto& [b, j] : base.denominator)
+            top *= GiNaC::pow(b, -k * j);
+        return {top, {{base.numerator, -k}}};
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::rational) &&
+        GiNaC::ex_to<GiNaC::numeric>(e.op(1)).denom() == 2 && !e.op(1).is_equal(GiNaC::numeric(1, 2))) {
+        // x^(p/2) = x^((p-1)/2) sqrt(x): the root kept whole, the rest an integer power,
+        // so that x^(-3/2) meets sqrt(x)/x^2.
+        const GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).numer();
+        over_denominator whole = over_common_denominator(GiNaC::pow(e.op(0), (p - 1) / 2));
+        whole.numerator *= GiNaC::sqrt(e.op(0));
+        return whole;
+    }
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        std::vector<over_denominator> terms;
+        std::map<GiNaC::ex, int, GiNaC::ex_is_less> lcm;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            terms.push_back(over_common_denominator(e.op(i)));
+            for (const auto& [base, k] : terms.back().denominator)
+                lcm[base] = std::max(lcm[base], k);
+        }
+        GiNaC::ex top = 0;
+        for (const over_denominator& t : terms) {
+            GiNaC::ex scaled = t.numerator;
+            for (const auto& [base, k] : lcm) {
+                const auto own = t.denominator.find(base);
+                const int missing = k - (own == t.denominator.end() ? 0 : own->second);
+                if (missing > 0)
+                    scaled *= GiNaC::pow(base, missing);
+            }
+            top += scaled;
+        }
+        return {top, lcm};
+    }
+    return {e, {}};
+}
+
+// cos of acos(u), atan(u) or atan2(y, x), as an algebraic expression.
+std::optional<GiNaC::ex> cosine_of(const GiNaC::ex& angle)
+{
+    if (!GiNaC::is_a<GiNaC::function>(angle))
+        return std::nullopt;
+    const std::string name = GiNaC::ex_to<GiNaC::function>(angle).get_name();
+    if (name == "acos")
+        return angle.op(0);
+    if (name == "atan")
+        return 1 / GiNaC::sqrt(1 + GiNaC::pow(angle.op(0), 2));
+    if (name == "atan2")
+        return angle.op(1) / GiNaC::sqrt(GiNaC::pow(angle.op(0), 2) + GiNaC::pow(angle.op(1), 2));
+    return std::nullopt;
+}
+
+// acos lies in [0, pi]; atan2(y, x) does when y >= 0; atan(u) does when u >= 0.
+bool within_zero_and_pi(const GiNaC::ex& angle, const assumptions& given)
+{
+    const std::string name = GiNaC::ex_to<GiNaC::function>(angle).get_name();
+    if (name == "acos")
+        return true;
+    return !prove_sign(angle.op(0), given).sign.negative;
+}
+
+bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b);
+
+// Two angles in [0, pi], where cos is one-to-one, are equal when their cosines are.
+std::optional<verdict> prove_equal_angles(const GiNaC::ex& a, const GiNaC::ex& b, const symbol_table& symbols,
+                                          const assumptions& given)
+{
+    const auto ca = cosine_of(a), cb = cosine_of(b);
+    if (!ca || !cb || !within_zero_and_pi(a, given) || !within_zero_and_pi(b, given))
+        return std::nullopt;
+    verdict v = prove_equal(*ca, *cb, symbols);
+    if (v.what != verdict::status::proven)
+        return std::nullopt;
+    v.method = "both angles lie in [0, pi], where cos is one-to-one, and their cosines are proven equal";
+    return v;
+}
+
 bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b)
 {
     const double scale = std::max({1.0, std::abs(a.to_double()), std::abs(b.to_double())});
@@ -97,7 +213,23 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
     // Radicals in one canonical form first: normal() cannot see that sqrt(1/x) = 1/sqrt(x).
     const GiNaC::ex a = simplify_radicals(lhs.subs(abbreviations).subs(abbreviations), given);
     const GiNaC::ex b = simplify_radicals(rhs.subs(abbreviations).subs(abbreviations), given);
-    const GiNaC::ex residual = GiNaC::normal(GiNaC::expand(a - b));
+    // Fast path: over the product of all denominators (no gcd), the numerator expands
+    // to zero exactly when the difference is zero as a rational function.
+    if (GiNaC::expand(over_common_denominator(a - b).numerator).is_zero()) {
+        verdict v;
+        v.what = verdict::status::proven;
+        v.residual = 0;
+        v.method = "difference normalises to zero";
+        return v;
+    }
+    // normal() brings the difference over one denominator; its numerator may still hold
+    // unexpanded products that cancel, so it is expanded once more before giving up.
+    GiNaC::ex residual = GiNaC::normal(a - b);
+    if (!residual.is_zero()) {
+        const GiNaC::ex nd = residual.numer_denom();
+        const GiNaC::ex top = GiNaC::expand(nd.op(0));
+        residual = top.is_zero() ? GiNaC::ex(0) : GiNaC::normal(top / nd.op(1));
+    }
     if (residual.is_zero()) {
         verdict v;
         v.what = verdict::status::proven;
@@ -120,6 +252,8 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
         v.method = "difference normalises to a non-zero rational function";
         return v;
     }
+    if (auto angles = prove_equal_angles(a, b, symbols, given))
+        return *angles;
     return sample(a, b, residual, symbols, nearly_equal, "=");
 }
 

@@ -126,6 +126,9 @@ GiNaC::ex symbol_table::parse(const spec::text& text) const
     try {
         GiNaC::parser reader(table_, /*strict=*/true);
         return reader(text.value);
+    } catch (const GiNaC::pole_error&) {
+        // GiNaC evaluates as it reads: x/(z - z) fails while parsing, though it parses.
+        throw error(text.where, fmt::format("expression \"{}\": division by zero", text.value));
     } catch (...) {
         rethrow_at(text.where, fmt::format("expression \"{}\" does not parse", text.value));
     }

@@ -4,77 +4,249 @@
 #include "emit/errata.h"
 #include "emit/json.h"
 #include "emit/latex.h"
+#include "verify/report.h"
 
 #include <fmt/format.h>
 
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <fstream>
+#include <string_view>
 
 namespace impact::pipeline {
 namespace fs = std::filesystem;
 
-file_set generate_kernels(const library& lib)
+namespace {
+
+// Records the wall time between laps, when asked to.
+class stopwatch {
+public:
+    explicit stopwatch(stage_times* times) : times_(times), start_(std::chrono::steady_clock::now()) {}
+    void lap(const std::string& stage)
+    {
+        const auto now = std::chrono::steady_clock::now();
+        if (times_)
+            times_->emplace_back(stage, std::chrono::duration<double>(now - start_).count());
+        start_ = now;
+    }
+
+private:
+    stage_times* times_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+// Every kernel's plan (its forms chosen by measurement), derivation by derivation.
+std::vector<emit::kernel_plan> plan_kernels(const library& lib)
+{
+    std::vector<emit::kernel_plan> plans;
+    for (const engine::derivation* d : lib.in_order()) {
+        const engine::term_order order = engine::declaration_order(d->symbols);
+        for (const engine::kernel& k : d->kernels)
+            plans.push_back(emit::plan_kernel(k, order));
+    }
+    return plans;
+}
+
+file_set kernel_files(const library& lib, const std::vector<emit::kernel_plan>& plans)
 {
     file_set files;
     std::vector<const engine::derivation*> with_kernels;
+    std::vector<const emit::kernel_plan*> all;
+    std::size_t next = 0;
     for (const engine::derivation* d : lib.in_order()) {
         if (d->kernels.empty())
             continue;
         with_kernels.push_back(d);
-        files["kernels/impact/" + emit::kernel_header_name(*d)] = emit::kernel_header(*d);
+        std::vector<const emit::kernel_plan*> own;
+        for (std::size_t i = 0; i < d->kernels.size(); ++i)
+            own.push_back(&plans[next++]);
+        all.insert(all.end(), own.begin(), own.end());
+        files["kernels/impact/" + emit::kernel_header_name(*d)] = emit::kernel_header(*d, own);
     }
+    files["kernels/impact/common.hpp"] = emit::common_header(all);
     files["kernels/impact/impact.hpp"] = emit::umbrella_header(with_kernels);
     return files;
 }
 
-file_set generate(const library& lib)
+} // namespace
+
+file_set generate_kernels(const library& lib)
 {
-    file_set files = generate_kernels(lib);
+    return kernel_files(lib, plan_kernels(lib));
+}
+
+file_set generate(const library& lib, stage_times* stages)
+{
+    stopwatch clock(stages);
+    file_set files;
+    // A derivation whose results the printers cannot write (the imaginary unit, a constant
+    // such as Pi) is reported at its file, before the files that gather every derivation.
+    for (const engine::derivation* d : lib.in_order()) {
+        try {
+            emit::derivations_json({d});
+            files["latex/" + emit::latex_fragment_name(*d)] = emit::latex_fragment(*d);
+        } catch (const error&) {
+            throw;
+        } catch (const std::exception& e) {
+            throw error({d->source.file, 0, 0}, fmt::format("cannot print what derivation '{}' derives: {}",
+                                                            d->id(), e.what()));
+        }
+    }
     files["derivations.json"] = emit::derivations_json(lib.in_order());
     files["errata.md"] = emit::errata_markdown(lib.in_order());
-    for (const engine::derivation* d : lib.in_order())
-        files["latex/" + emit::latex_fragment_name(*d)] = emit::latex_fragment(*d);
+    clock.lap("LaTeX fragments, derivations.json, errata.md");
+    const std::vector<emit::kernel_plan> plans = plan_kernels(lib);
+    clock.lap("kernel forms chosen by measurement (numeric)");
+    for (auto& [path, contents] : kernel_files(lib, plans))
+        files[path] = std::move(contents);
+    clock.lap("kernel sources");
+    std::vector<const emit::kernel_plan*> all;
+    for (const emit::kernel_plan& p : plans)
+        all.push_back(&p);
+    files["verification.md"] = verify::verification_markdown(all);
+    clock.lap("verification report (numeric)");
     return files;
 }
 
-void write_files(const file_set& files, const fs::path& directory)
+namespace {
+
+// Filesystem failures become errors naming the path, printed on one line like bad input.
+template <class Action>
+void on_disk(const fs::path& path, const std::string& what, Action action)
 {
-    for (const auto& [relative, contents] : files) {
-        const fs::path path = directory / relative;
-        fs::create_directories(path.parent_path());
-        std::ofstream out(path, std::ios::binary);
-        out << contents;
-        if (!out.good())
-            throw error({path.string(), 0, 0}, "cannot write the file");
+    try {
+        action();
+    } catch (const fs::filesystem_error& e) {
+        throw error({path.string(), 0, 0}, fmt::format("cannot {}: {}", what, e.code().message()));
     }
 }
 
-regeneration regenerate(const fs::path& derivations, const fs::path& output)
+void write_file(const fs::path& path, const std::string& contents)
 {
-    const library lib = derive_all(read_directory(derivations));
-    regeneration result;
+    on_disk(path.parent_path(), "create the folder", [&] { fs::create_directories(path.parent_path()); });
+    std::ofstream out(path, std::ios::binary);
+    out << contents;
+    out.close();
+    if (!out)
+        throw error({path.string(), 0, 0}, "cannot write the file");
+}
+
+// Test hook, for tests/test_bad_input.cpp only: IMPACT_TEST_INTERRUPT=writing (half the
+// files written) or =swapping (the old output moved aside, the new one not yet in place)
+// kills the process there, as a crash or a power cut would, so that the tests can show
+// that the previous output survives and that the next run puts things right.
+void interrupt_if_asked(std::string_view point)
+{
+    const char* asked = std::getenv("IMPACT_TEST_INTERRUPT");
+    if (asked && point == asked)
+        std::raise(SIGKILL);
+}
+
+// `out/`, `./out` and `out` all name the folder `out`, absolutely.
+fs::path normalised(const fs::path& folder)
+{
+    fs::path path = fs::absolute(folder).lexically_normal();
+    return path.has_filename() ? path : path.parent_path();
+}
+
+// The folder to replace, refused when replacing it would lose what is not Impact's:
+// the derivations, the current folder or one of its parents.
+fs::path output_folder(const fs::path& derivations, const fs::path& output)
+{
+    const fs::path target = normalised(output);
+    const auto inside = [](const fs::path& path, const fs::path& folder) {
+        const fs::path relative = path.lexically_relative(folder);
+        return !relative.empty() && *relative.begin() != "..";
+    };
+    const fs::path sources = fs::absolute(derivations).lexically_normal();
+    if (target == target.root_path() || target.filename() == ".." || inside(sources, target) ||
+        inside(fs::current_path(), target))
+        throw error({output.string(), 0, 0},
+                    "refusing to replace this folder: it holds the derivations or the current folder");
+    return target;
+}
+
+} // namespace
+
+void write_files(const file_set& files, const fs::path& directory)
+{
+    for (const auto& [relative, contents] : files)
+        write_file(directory / relative, contents);
+}
+
+std::vector<std::string> failed_checks(const library& lib)
+{
+    std::vector<std::string> failures;
     for (const engine::derivation* d : lib.in_order())
         for (const engine::check_result* c : d->all_checks())
             if (!c->outcome.holds())
-                result.failures.push_back(fmt::format("{}: {}", d->id(), c->name));
+                failures.push_back(single_line(fmt::format("{}: error: check failed: {}: {}: residual {}",
+                                                           to_string(c->where), d->id(), c->name,
+                                                           d->symbols.text(c->outcome.residual))));
+    return failures;
+}
+
+void recover_interrupted(const fs::path& output)
+{
+    const fs::path target = normalised(output);
+    const fs::path fresh = target.string() + ".impact-new";
+    const fs::path old = target.string() + ".impact-old";
+    // Stopped between the two renames: the previous output is `.impact-old`; put it back.
+    if (!fs::exists(target) && fs::is_directory(old))
+        on_disk(old, "restore the previous output", [&] { fs::rename(old, target); });
+    // Stopped while writing (a partial `.impact-new`) or before tidying up (`.impact-old`).
+    on_disk(fresh, "remove what an interrupted run left", [&] { fs::remove_all(fresh); });
+    on_disk(old, "remove what an interrupted run left", [&] { fs::remove_all(old); });
+}
+
+regeneration regenerate(const fs::path& derivations, const fs::path& output, const more_files& more)
+{
+    const fs::path target = output_folder(derivations, output);
+    recover_interrupted(target);
+
+    regeneration result;
+    stopwatch clock(&result.stages);
+    const library lib = derive_all(read_directory(derivations));
+    clock.lap("derivations with their checks");
+    result.failures = failed_checks(lib);
     result.all_hold = result.failures.empty();
     if (!result.all_hold)
         return result;
 
-    const file_set files = generate(lib);
+    file_set files = generate(lib, &result.stages);
+    clock.lap("");
+    result.stages.pop_back();
+    if (more)
+        for (auto& [path, contents] : more(lib, files))
+            files[path] = std::move(contents);
+    clock.lap("figures and report");
     result.files = files.size();
 
-    // Write beside the output folder, then swap: the old output survives any failure
-    // before the swap.
-    const fs::path target = fs::absolute(output).lexically_normal();
-    const fs::path fresh = target.parent_path() / (target.filename().string() + ".impact-new");
-    const fs::path old = target.parent_path() / (target.filename().string() + ".impact-old");
-    fs::remove_all(fresh);
-    fs::remove_all(old);
-    write_files(files, fresh);
-    if (fs::exists(target))
-        fs::rename(target, old);
-    fs::rename(fresh, target);
-    fs::remove_all(old);
+    // Write beside the output folder, then swap: until the second rename the previous
+    // output is whole, as `output` or as `.impact-old` (which the next run puts back).
+    const fs::path fresh = target.string() + ".impact-new";
+    const fs::path old = target.string() + ".impact-old";
+    try {
+        std::size_t written = 0;
+        for (const auto& [relative, contents] : files) {
+            write_file(fresh / relative, contents);
+            if (++written == files.size() / 2)
+                interrupt_if_asked("writing");
+        }
+        if (fs::exists(target))
+            on_disk(target, "move the previous output aside", [&] { fs::rename(target, old); });
+        interrupt_if_asked("swapping");
+        on_disk(target, "move the new output in place", [&] { fs::rename(fresh, target); });
+    } catch (...) {
+        std::error_code ignored;
+        if (!fs::exists(target) && fs::exists(old))
+            fs::rename(old, target, ignored);
+        fs::remove_all(fresh, ignored);
+        throw;
+    }
+    std::error_code ignored;
+    fs::remove_all(old, ignored);   // a leftover is removed by the next run
     return result;
 }
 

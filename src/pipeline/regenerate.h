@@ -2,22 +2,28 @@
 //
 // `regenerate` replaces the output folder only after every derivation has been
 // derived with all its checks holding and every file has been written to a fresh
-// folder beside it; a failure leaves the previous output as it was.
+// folder beside it (`<output>.impact-new`); a failure leaves the previous output as it
+// was, and a run that was killed is put right by the next one.
 #pragma once
 
 #include "pipeline/library.h"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 
 namespace impact::pipeline {
 
+/// Wall time of each stage of a regeneration, in seconds, in the order they ran.
+using stage_times = std::vector<std::pair<std::string, double>>;
+
+
 /// Every generated file, by path relative to the output folder.
 using file_set = std::map<std::string, std::string>;
 
 /// The files for a derived library: derivations.json, latex/<id>.tex, kernels/impact/*.hpp.
-file_set generate(const library& lib);
+file_set generate(const library& lib, stage_times* stages = nullptr);
 
 /// Only the kernel headers (kernels/impact/*.hpp), for building against them.
 file_set generate_kernels(const library& lib);
@@ -25,14 +31,31 @@ file_set generate_kernels(const library& lib);
 /// Writes `files` into `directory` (created if needed).
 void write_files(const file_set& files, const std::filesystem::path& directory);
 
+/// One line for each check that failed: `file:line:column: error: check failed: id: name: residual r`.
+std::vector<std::string> failed_checks(const library& lib);
+
 struct regeneration {
     bool all_hold = false;            ///< false: some check failed and nothing was replaced
     std::size_t files = 0;
-    std::vector<std::string> failures; ///< "id: check" for each failed check
+    std::vector<std::string> failures; ///< as `failed_checks` gives them
+    stage_times stages;
 };
 
+/// Puts right what an interrupted regeneration of `output` left: restores the previous
+/// output from `<output>.impact-old` when `output` is missing, and removes the leftover
+/// `<output>.impact-new` and `<output>.impact-old`.
+void recover_interrupted(const std::filesystem::path& output);
+
+/// Files made by code outside the pipeline from the derived library and the files
+/// `generate` made: the figures and the compiled report (src/simulate/regeneration.h),
+/// which run the generated kernels. Bad input or a report that fails throws.
+using more_files = std::function<file_set(const library& lib, const file_set& generated)>;
+
 /// Derives everything in `derivations` and, when every check holds, replaces `output`
-/// with the generated files. Bad input throws `impact::error` before anything is written.
-regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output);
+/// with the generated files (and those `more` makes). Bad input throws `impact::error`
+/// before anything is written; an output folder that holds the derivations or the
+/// current folder is refused.
+regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
+                        const more_files& more = {});
 
 } // namespace impact::pipeline

@@ -90,8 +90,15 @@ struct claim {
 /// A C++ kernel to emit: a function of `inputs` returning `outputs`.
 struct kernel {
     text name;
-    std::vector<text> inputs;
-    std::vector<binding> outputs;  ///< struct member = result expression
+    std::vector<binding> inputs;   ///< `M` (name = itself), or an array `C_M = [C_Mx, C_My]`
+    std::vector<binding> outputs;  ///< struct member = result expression, or `v_M = [v_Mx_after, v_My_after]`
+    std::vector<text> velocities;  ///< inputs whose largest magnitude scales velocity errors
+    std::vector<binding> error;    ///< output = `relative` (default), `velocity` or `velocity*<expr>`
+    std::vector<binding> forms;    ///< further candidate forms of an output: `J = <expr>` (proven equal)
+    std::vector<binding> guards;   ///< status = inputs to check against their domains, or a condition
+    std::vector<binding> substitute; ///< symbols of the results written in the inputs: `r_x = C_Mx - C_mx`
+    std::vector<binding> let;      ///< values computed once in the kernel, usable in forms: `k = ...`
+    bool batch = false;            ///< also emit `<name>_batch` over structure-of-arrays data
 };
 
 /// Results taken from another derivation, renamed for use in this one.

@@ -21,7 +21,10 @@ struct source_location {
 /// Formats a location as `file:line:column` (omitting the parts that are unknown).
 std::string to_string(const source_location& where);
 
-/// Bad input, with the place it was found.
+/// `text` on one line: each run of white space holding a line break becomes one space.
+std::string single_line(const std::string& text);
+
+/// Bad input, with the place it was found. The message is kept to one line.
 class error : public std::runtime_error {
 public:
     error(source_location where, const std::string& what);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -20,11 +21,46 @@ namespace {
 
 // A derivation is a page of text; anything much larger is a mistake.
 constexpr std::size_t max_file_bytes = 1 << 20;
+// Ids become file names.
+constexpr std::size_t max_id_length = 64;
 
 source_location location_of(const std::string& file, const toml::source_region& region)
 {
     return {file, static_cast<std::uint32_t>(region.begin.line),
             static_cast<std::uint32_t>(region.begin.column)};
+}
+
+// TOML is text: a NUL or another control character (tab and line breaks aside) means
+// the file is something else, reported at the first such byte.
+void refuse_binary(const std::string& contents, const std::string& file)
+{
+    const auto control = std::find_if(contents.begin(), contents.end(), [](char c) {
+        const auto byte = static_cast<unsigned char>(c);
+        return (byte < 0x20 && c != '\t' && c != '\n' && c != '\r') || byte == 0x7f;
+    });
+    if (control == contents.end())
+        return;
+    const auto offset = static_cast<std::size_t>(control - contents.begin());
+    const auto line_start = offset == 0 ? std::string::npos : contents.rfind('\n', offset - 1);
+    const auto line = 1 + std::count(contents.begin(), control, '\n');
+    const auto column = line_start == std::string::npos ? offset + 1 : offset - line_start;
+    throw error({file, static_cast<std::uint32_t>(line), static_cast<std::uint32_t>(column)},
+                fmt::format("file is binary (byte 0x{:02x}), not a TOML derivation",
+                            static_cast<unsigned char>(*control)));
+}
+
+// An id names output files (latex/<id>.tex, kernels/impact/<id>.hpp): a path such as
+// "../x" must not write outside the output folder.
+void check_id(const text& id)
+{
+    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    if (id.value.empty() || !std::isalpha(static_cast<unsigned char>(id.value[0])) ||
+        !std::all_of(id.value.begin(), id.value.end(), word))
+        throw error(id.where, fmt::format("id '{}' must be a name of letters, digits and _, starting with a letter",
+                                          id.value));
+    if (id.value.size() > max_id_length)
+        throw error(id.where, fmt::format("id '{}...' is longer than {} characters", id.value.substr(0, 16),
+                                          max_id_length));
 }
 
 // Walks one TOML table, remembering which keys were read so that a misspelt key
@@ -128,6 +164,18 @@ public:
             tables.push_back(table);
         }
         return tables;
+    }
+
+    binding split(const text& entry, std::string_view key) const { return split_binding(entry, key); }
+
+    std::optional<bool> optional_bool(std::string_view key)
+    {
+        const toml::node* node = find(key);
+        if (!node)
+            return std::nullopt;
+        if (const auto* value = node->as_boolean())
+            return value->get();
+        throw error(location_of(file_, node->source()), fmt::format("'{}' in {} must be true or false", key, context_));
     }
 
     // Every key must have been read: an unknown key is most likely a typo.
@@ -280,8 +328,21 @@ kernel read_kernel(table_reader& in)
 {
     kernel k;
     k.name = in.required_string("name");
-    k.inputs = in.string_array("inputs", true);
+    // An input is a name, or an array `C_M = [C_Mx, C_My]`.
+    for (const text& input : in.string_array("inputs", true)) {
+        if (input.value.find('=') == std::string::npos)
+            k.inputs.push_back({input, input});
+        else
+            k.inputs.push_back(in.split(input, "inputs"));
+    }
     k.outputs = in.binding_array("outputs", true);
+    k.velocities = in.string_array("velocities", false);
+    k.error = in.binding_array("error", false);
+    k.forms = in.binding_array("forms", false);
+    k.guards = in.binding_array("guards", false);
+    k.substitute = in.binding_array("substitute", false);
+    k.let = in.binding_array("let", false);
+    k.batch = in.optional_bool("batch").value_or(false);
     in.finish();
     return k;
 }
@@ -314,10 +375,9 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     if (contents.size() > max_file_bytes)
         throw error({file, 0, 0}, fmt::format("file is {} bytes, larger than the limit of {} bytes",
                                               contents.size(), max_file_bytes));
-    if (contents.find('\0') != std::string::npos)
-        throw error({file, 0, 0}, "file is binary (it contains NUL bytes), not a TOML derivation");
     if (contents.find_first_not_of(" \t\r\n") == std::string::npos)
         throw error({file, 0, 0}, "file is empty");
+    refuse_binary(contents, file);
 
     toml::table table;
     try {
@@ -330,6 +390,7 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     derivation d;
     d.file = file;
     d.id = top.required_string("id");
+    check_id(d.id);
     d.title = top.required_string("title");
     d.paper = top.optional_string("paper");
     d.summary = top.string_or("summary", "");

@@ -2,4 +2,9 @@
 // Every kernel Impact emits, in one include.
 #pragma once
 
+#include "common.hpp"
 #include "inelastic_line.hpp"
+#include "energy_loss.hpp"
+#include "inelastic_plane.hpp"
+#include "scatter_angle.hpp"
+#include "inelastic_space.hpp"

@@ -2,7 +2,7 @@
 // Inelastic collision along the line of action (Eq. 8 of the paper).
 #pragma once
 
-#include <cmath>
+#include "common.hpp"
 
 namespace impact {
 
@@ -14,19 +14,57 @@ struct collide_line_result {
     Real J;
 };
 
-/// collide_line from inelastic_line:
+/// collide_line(M, m, v_M, v_m, eps): Inelastic collision along the line of action, Eq. 8.
 ///   M: mass of sphere M (positive)
 ///   m: mass of sphere m (positive)
 ///   v_M: velocity of M along the line of action before the collision (real)
 ///   v_m: velocity of m along the line of action before the collision (real)
 ///   eps: Newton's coefficient of restitution ([0, 1])
+/// v_M is computed in the form "display, fma": at most 2.37 ulps in double on 4200 samples.
+/// v_m is computed in the form "display, fma": at most 2.40 ulps in double on 4200 samples.
+/// J is computed in the form "display, compensated": at most 1.98 ulps in double on 4200 samples.
 template <class Real>
 inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
-    collide_line_result<Real> out;
-    out.v_M = (M * v_M + m * v_m - m * eps * (v_M - v_m)) / (M + m);
-    out.v_m = (M * v_M + M * eps * (v_M - v_m) + m * v_m) / (M + m);
-    out.J = M * m * (Real(1) + eps) * (v_M - v_m) / (M + m);
+    collide_line_result<Real> out{v_M, v_m, Real(0)};
+    const Real t0 = M * v_M;
+    const Real t1 = eps * (v_M - v_m);
+    const Real t2 = M + m;
+    const Real t3 = M * m;
+    const Real t4 = std::fma(M, m, -t3);
+    const Real t5 = t3 + t4;
+    const Real t6 = Real(1) + eps;
+    const Real t7 = t6 - Real(1);
+    const Real t8 = Real(1) - (t6 - t7) + (eps - t7);
+    const Real t9 = t6 + t8;
+    const Real t10 = t5 * t9;
+    const Real t11 = std::fma(t4 - (t5 - t3), t9, std::fma(t5, t8 - (t9 - t6), std::fma(t5, t9, -t10)));
+    const Real t12 = t10 + t11;
+    const Real t13 = -v_m;
+    const Real t14 = v_M + t13;
+    const Real t15 = t14 - v_M;
+    const Real t16 = v_M - (t14 - t15) + (t13 - t15);
+    const Real t17 = t14 + t16;
+    const Real t18 = t12 * t17;
+    const Real t19 = std::fma(t11 - (t12 - t10), t17, std::fma(t12, t16 - (t17 - t14), std::fma(t12, t17, -t18)));
+    const Real t20 = t18 + t19;
+    const Real t21 = t2 - M;
+    const Real t22 = M - (t2 - t21) + (m - t21);
+    const Real t23 = t2 + t22;
+    const Real t24 = t20 / t23;
+    const Real t25 = t24 * t23;
+    const Real t26 = std::fma(t24, t22 - (t23 - t2), std::fma(t24, t23, -t25));
+    const Real t27 = t25 + t26;
+    const Real t28 = -t27;
+    const Real t29 = t20 + t28;
+    const Real t30 = t29 - t20;
+    const Real t31 = t20 - (t29 - t30) + (t28 - t30) + (t19 - (t20 - t18) + -(t26 - (t27 - t25)));
+    const Real t32 = t29 + t31;
+    const Real t33 = t32 / t23;
+    const Real t34 = t24 + t33;
+    out.v_M = std::fma(-m, t1, std::fma(m, v_m, t0)) / t2;
+    out.v_m = std::fma(m, v_m, std::fma(M, t1, t0)) / t2;
+    out.J = t34;
     return out;
 }
 

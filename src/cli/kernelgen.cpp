@@ -1,0 +1,34 @@
+// Writes the kernel headers into the build tree, before `impact` is built.
+//
+// `impact` itself is compiled against the generated kernels (its figures and
+// `impact simulate` run them), so the build cannot use it to generate them: this
+// small program does what `impact kernels` does, with the same pipeline functions.
+//
+//     impact_kernelgen <derivations folder> <output folder>
+#include "pipeline/library.h"
+#include "pipeline/regenerate.h"
+
+#include <fmt/format.h>
+
+#include <exception>
+
+int main(int argc, char** argv)
+{
+    if (argc != 3) {
+        fmt::print(stderr, "usage: impact_kernelgen <derivations folder> <output folder>\n");
+        return 2;
+    }
+    try {
+        const impact::pipeline::library lib =
+            impact::pipeline::derive_all(impact::pipeline::read_directory(argv[1]));
+        if (!lib.all_hold()) {
+            fmt::print(stderr, "impact_kernelgen: a check failed; no kernels written (run `impact regenerate`)\n");
+            return 1;
+        }
+        impact::pipeline::write_files(impact::pipeline::generate_kernels(lib), argv[2]);
+        return 0;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "{}\n", e.what());
+        return 2;
+    }
+}

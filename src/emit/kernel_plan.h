@@ -1,0 +1,57 @@
+// Choosing how a kernel computes each output.
+//
+// Every output has algebraically equal forms (the display form, the derived value, the
+// paper's form, forms given in the derivation file, expanded, factored), each of which
+// may also be compiled with fused multiply-adds. Each candidate is compiled and measured
+// in double against CLN on samples from the hard regions; the most accurate (smallest
+// maximum error, then smallest mean) is emitted, and the choice and the measurements
+// are kept for the verification report.
+#pragma once
+
+#include "emit/program.h"
+#include "engine/derive.h"
+#include "verify/measure.h"
+#include "verify/sampling.h"
+
+#include <string>
+#include <vector>
+
+namespace impact::emit {
+
+struct candidate_result {
+    std::string label;          ///< e.g. "display", "expanded, fma"
+    GiNaC::ex value;
+    bool fma = false;
+    bool compensated = false;
+    bool compensated_lets = false;
+    verify::accuracy double_accuracy;
+};
+
+struct component_plan {
+    std::string name;           ///< `v_M` or `v_M[0]`
+    std::vector<candidate_result> candidates;
+    std::size_t chosen = 0;     ///< index into candidates
+    std::size_t heavier = 0;    ///< forms left out for a square root or division more than needed
+    std::size_t pruned = 0;     ///< candidates left out after the first sixth of the samples
+};
+
+struct kernel_plan {
+    const engine::kernel* kernel = nullptr;
+    std::vector<component_plan> components;      ///< in verify::components(kernel) order
+    program code;               ///< guards' values first, then every output component
+    std::size_t guard_values = 0;                ///< how many of code.outputs are guard conditions
+    std::vector<verify::sample> samples;
+    verify::reference double_reference;
+    verify::reference float_reference;
+};
+
+/// Samples used to choose forms and to report accuracy.
+constexpr std::size_t kernel_samples = 4200;
+
+/// The accuracy every output should reach in double, in ulps of its scale.
+constexpr double target_ulps = 4;
+
+/// Measures every candidate form of every output and compiles the chosen ones.
+kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order);
+
+} // namespace impact::emit

@@ -1,0 +1,129 @@
+#include "emit/pdf.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace impact::emit {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_file(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+// The auxiliary files whose change means another run is needed.
+std::string auxiliary_state(const fs::path& folder)
+{
+    std::string state;
+    for (const char* extension : {".aux", ".toc", ".lof", ".lot", ".out"})
+        for (const auto& entry : fs::directory_iterator(folder))
+            if (entry.path().extension() == extension)
+                state += entry.path().filename().string() + "\n" + read_file(entry.path());
+    return state;
+}
+
+// A scratch folder removed when done with.
+struct scratch_folder {
+    fs::path path;
+    scratch_folder()
+    {
+        std::string pattern = (fs::temp_directory_path() / "impact-latex-XXXXXX").string();
+        if (!::mkdtemp(pattern.data()))
+            throw std::runtime_error("cannot create a scratch folder for LaTeX");
+        path = pattern;
+    }
+    ~scratch_folder()
+    {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+};
+
+} // namespace
+
+bool have_pdflatex()
+{
+    return std::system("pdflatex --version > /dev/null 2>&1") == 0;
+}
+
+std::vector<std::string> latex_log_problems(const std::string& log)
+{
+    std::vector<std::string> problems;
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line)) {
+        const bool error = line.rfind("! ", 0) == 0;
+        const bool undefined = line.find("LaTeX Warning:") != std::string::npos &&
+                               (line.find("undefined") != std::string::npos ||
+                                line.find("multiply defined") != std::string::npos ||
+                                line.find("Label(s) may have changed") != std::string::npos);
+        const bool missing = line.rfind("Missing character", 0) == 0;
+        if (error || undefined || missing)
+            problems.push_back(line);
+    }
+    return problems;
+}
+
+std::vector<std::string> latex_overfull_boxes(const std::string& log, double tolerance_pt)
+{
+    std::vector<std::string> found;
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line)) {
+        const auto at = line.find("Overfull \\hbox (");
+        if (at == std::string::npos)
+            continue;
+        const double points = std::strtod(line.c_str() + at + 16, nullptr);
+        if (points > tolerance_pt)
+            found.push_back(line);
+    }
+    return found;
+}
+
+pdf_build compile_latex(const std::map<std::string, std::string>& files, const std::string& main)
+{
+    const scratch_folder scratch;
+    for (const auto& [relative, contents] : files) {
+        const fs::path path = scratch.path / relative;
+        fs::create_directories(path.parent_path());
+        std::ofstream(path, std::ios::binary) << contents;
+    }
+    const fs::path stem = fs::path(main).stem();
+    // Fixed dates (SOURCE_DATE_EPOCH), unwrapped log lines, no shell escape.
+    const std::string command =
+        fmt::format("cd '{}' && SOURCE_DATE_EPOCH=0 FORCE_SOURCE_DATE=1 max_print_line=10000 "
+                    "pdflatex -interaction=nonstopmode -halt-on-error -no-shell-escape '{}' > /dev/null 2>&1",
+                    scratch.path.string(), main);
+    pdf_build build;
+    std::string before = auxiliary_state(scratch.path);
+    for (build.runs = 1; build.runs <= 5; ++build.runs) {
+        const int status = std::system(command.c_str());
+        build.log = read_file(scratch.path / (stem.string() + ".log"));
+        if (status != 0) {
+            build.problems = latex_log_problems(build.log);
+            if (build.problems.empty())
+                build.problems.push_back(fmt::format("pdflatex failed (status {})", status));
+            return build;
+        }
+        const std::string after = auxiliary_state(scratch.path);
+        if (after == before)
+            break;
+        before = after;
+    }
+    build.problems = latex_log_problems(build.log);
+    build.pdf = read_file(scratch.path / (stem.string() + ".pdf"));
+    build.ok = build.problems.empty() && !build.pdf.empty();
+    return build;
+}
+
+} // namespace impact::emit

@@ -1,0 +1,37 @@
+// Compiling LaTeX into PDF with pdflatex from TeX Live (scripts/setup.sh installs it).
+//
+// The files are written into a scratch folder, pdflatex runs there until the
+// cross-references settle, and the log is searched for what a reader would call
+// broken: LaTeX errors, undefined references or citations, and labels still changing.
+// pdflatex runs with SOURCE_DATE_EPOCH and FORCE_SOURCE_DATE set, so that together with
+// the report's \pdfinfoomitdate and \pdftrailerid{} the PDF is the same bytes every time.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace impact::emit {
+
+struct pdf_build {
+    bool ok = false;                   ///< a PDF was made and the log shows no problem
+    std::string pdf;                   ///< the PDF's bytes
+    std::string log;                   ///< the last run's log
+    std::vector<std::string> problems; ///< errors, undefined references, ... (one line each)
+    int runs = 0;
+};
+
+/// Writes `files` (path relative to the scratch folder → contents) and compiles `main`.
+pdf_build compile_latex(const std::map<std::string, std::string>& files, const std::string& main);
+
+/// What is wrong according to a pdflatex log: `! ...` errors, undefined references and
+/// citations, and requests to rerun. Empty when nothing is.
+std::vector<std::string> latex_log_problems(const std::string& log);
+
+/// Overfull boxes in a log wider than `tolerance_pt`, one line each.
+std::vector<std::string> latex_overfull_boxes(const std::string& log, double tolerance_pt);
+
+/// True when pdflatex can be run.
+bool have_pdflatex();
+
+} // namespace impact::emit

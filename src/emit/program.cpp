@@ -1,0 +1,473 @@
+#include "emit/program.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <sstream>
+
+namespace impact::emit {
+namespace {
+
+class compiler {
+public:
+    compiler(program& p, const engine::term_order& order, compile_options options, const let_values& lets)
+        : p_(p), order_(order), options_(options)
+    {
+        for (const auto& [symbol, value] : lets)
+            lets_.emplace(symbol, value);
+        for (std::size_t i = 0; i < p.inputs.size(); ++i) {
+            instruction in;
+            in.op = opcode::input;
+            in.input = static_cast<int>(i);
+            inputs_[p.inputs[i]] = emit(in);
+        }
+    }
+
+    void set_options(compile_options options) { options_ = options; }
+
+    // The output of an expression under the current options.
+    int output(const GiNaC::ex& e)
+    {
+        if (!options_.compensated)
+            return value(e);
+        const pair p = compensated(e);
+        return p.hi;
+    }
+
+    int value(const GiNaC::ex& e)
+    {
+        // Each distinct subexpression is computed once under each set of options (shared
+        // across options it would be computed differently from what was measured).
+        auto& known = known_[options_key()];
+        const auto found = known.find(e);
+        if (found != known.end())
+            return found->second;
+        const int v = compute(e);
+        known_[options_key()].emplace(e, v);
+        return v;
+    }
+
+    int options_key() const
+    {
+        return (options_.fma ? 1 : 0) | (options_.compensated ? 2 : 0) | (options_.compensated_lets ? 4 : 0);
+    }
+
+private:
+    // Compensated arithmetic: a value carried as hi + lo (lo < -1 means lo = 0), with
+    // the error-free transformations TwoSum and TwoProduct (through std::fma), so that
+    // an expression comes out within about one rounding of its exact value.
+    struct pair {
+        int hi;
+        int lo = -1;
+    };
+
+    int add_lo(int a, int b) { return a < 0 ? b : b < 0 ? a : op(opcode::add, a, b); }
+
+    // s + e with |e| small next to s: renormalised.
+    pair fast_two_sum(int s, int e)
+    {
+        if (e < 0)
+            return {s, -1};
+        const int h = op(opcode::add, s, e);
+        const int l = op(opcode::sub, e, op(opcode::sub, h, s));
+        return {h, l};
+    }
+
+    pair dd_add(pair a, pair b)
+    {
+        const int s = op(opcode::add, a.hi, b.hi);
+        const int bb = op(opcode::sub, s, a.hi);
+        const int e = op(opcode::add, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::sub, b.hi, bb));
+        return fast_two_sum(s, add_lo(e, add_lo(a.lo, b.lo)));
+    }
+
+    pair dd_neg(pair a) { return {op(opcode::neg, a.hi), a.lo < 0 ? -1 : op(opcode::neg, a.lo)}; }
+
+    pair dd_mul(pair a, pair b)
+    {
+        const int p = op(opcode::mul, a.hi, b.hi);
+        int e = op(opcode::fma, a.hi, b.hi, op(opcode::neg, p));
+        if (b.lo >= 0)
+            e = op(opcode::fma, a.hi, b.lo, e);
+        if (a.lo >= 0)
+            e = op(opcode::fma, a.lo, b.hi, e);
+        return fast_two_sum(p, e);
+    }
+
+    pair dd_div(pair a, pair b)
+    {
+        const int q1 = op(opcode::div, a.hi, b.hi);
+        const pair r = dd_add(a, dd_neg(dd_mul({q1, -1}, b)));
+        const int q2 = op(opcode::div, r.hi, b.hi);
+        return fast_two_sum(q1, q2);
+    }
+
+    pair dd_sqrt(pair a)
+    {
+        const int h = op(opcode::sqrt, a.hi);
+        int r = op(opcode::fma, op(opcode::neg, h), h, a.hi);
+        if (a.lo >= 0)
+            r = op(opcode::add, r, a.lo);
+        return fast_two_sum(h, op(opcode::div, r, op(opcode::add, h, h)));
+    }
+
+    pair dd_constant(const GiNaC::numeric& n)
+    {
+        if (n.is_integer() && GiNaC::abs(n) < GiNaC::numeric(1L << 52))
+            return {constant(n), -1};
+        // p/q = hi + lo with lo = (p - hi q) / q, the remainder exact through fma.
+        const int p = constant(n.numer()), q = constant(n.denom());
+        const int hi = op(opcode::div, p, q);
+        return {hi, op(opcode::div, op(opcode::fma, op(opcode::neg, hi), q, p), q)};
+    }
+
+    pair compensated(const GiNaC::ex& e)
+    {
+        auto& known = known_pairs_[options_key()];
+        const auto found = known.find(e);
+        if (found != known.end())
+            return found->second;
+        const pair v = compute_pair(e);
+        known_pairs_[options_key()].emplace(e, v);
+        return v;
+    }
+
+    pair compute_pair(const GiNaC::ex& e)
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
+            return n.is_negative() ? dd_neg(dd_constant(-n)) : dd_constant(n);
+        }
+        if (GiNaC::is_a<GiNaC::symbol>(e)) {
+            if (const auto let = lets_.find(e); let != lets_.end())
+                return compensated(let->second);
+            return {value(e), -1};
+        }
+        if (GiNaC::is_a<GiNaC::add>(e)) {
+            pair acc{-1, -1};
+            for (const GiNaC::ex& term : order_.terms(e)) {
+                const bool negative = order_.negative(term);
+                const pair v = compensated(negative ? -term : term);
+                acc = acc.hi < 0 ? (negative ? dd_neg(v) : v) : dd_add(acc, negative ? dd_neg(v) : v);
+            }
+            return acc;
+        }
+        if (GiNaC::is_a<GiNaC::mul>(e)) {
+            const engine::term_order::fraction f = order_.split(e);
+            pair top{-1, -1}, bottom{-1, -1};
+            for (const auto& t : f.numerator)
+                top = top.hi < 0 ? compensated_factor(t) : dd_mul(top, compensated_factor(t));
+            if (top.hi < 0)
+                top = {constant(1), -1};
+            for (const auto& t : f.denominator)
+                bottom = bottom.hi < 0 ? compensated_factor(t) : dd_mul(bottom, compensated_factor(t));
+            const pair v = bottom.hi < 0 ? top : dd_div(top, bottom);
+            return f.negated ? dd_neg(v) : v;
+        }
+        if (GiNaC::is_a<GiNaC::power>(e)) {
+            bool negated = false;
+            const pair v = compensated_factor(order_.oriented(e, negated));
+            return negated ? dd_neg(v) : v;
+        }
+        // Functions: evaluated on the leading part.
+        return {value(e), -1};
+    }
+
+    pair compensated_factor(const engine::term_order::power_term& t)
+    {
+        if (t.exponent.is_equal(1))
+            return compensated(t.base);
+        if (GiNaC::is_a<GiNaC::numeric>(t.exponent)) {
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(t.exponent);
+            if (n.is_negative())
+                return dd_div({constant(1), -1}, compensated_factor({t.base, -n}));
+            if (n.is_integer() && n <= 4) {
+                const pair x = compensated(t.base);
+                pair r = x;
+                for (int i = 1; i < n.to_int(); ++i)
+                    r = dd_mul(r, x);
+                return r;
+            }
+            if (n == GiNaC::numeric(1, 2))
+                return dd_sqrt(compensated(t.base));
+        }
+        return {power(t), -1};
+    }
+
+    int emit(instruction in)
+    {
+        p_.code.push_back(std::move(in));
+        return static_cast<int>(p_.code.size()) - 1;
+    }
+
+    int op(opcode code, int a, int b = -1, int c = -1)
+    {
+        instruction in;
+        in.op = code;
+        in.a = a;
+        in.b = b;
+        in.c = c;
+        // The same operation on the same operands is the same value.
+        const auto key = std::make_tuple(static_cast<int>(code), a, b, c);
+        const auto found = ops_.find(key);
+        if (found != ops_.end())
+            return found->second;
+        const int v = emit(in);
+        ops_.emplace(key, v);
+        return v;
+    }
+
+    int constant(const GiNaC::numeric& n)
+    {
+        if (!n.is_rational())
+            throw std::invalid_argument("a kernel constant must be rational");
+        const auto found = constants_.find(n);
+        if (found != constants_.end())
+            return found->second;
+        instruction in;
+        in.op = opcode::constant;
+        in.value = n;
+        const int v = emit(in);
+        constants_.emplace(n, v);
+        return v;
+    }
+
+    int call(const std::string& function, std::vector<int> arguments)
+    {
+        instruction in;
+        in.op = opcode::call;
+        in.function = function;
+        in.a = arguments.size() > 0 ? arguments[0] : -1;
+        in.b = arguments.size() > 1 ? arguments[1] : -1;
+        return emit(in);
+    }
+
+    int compute(const GiNaC::ex& e)
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
+            return n.is_negative() ? op(opcode::neg, constant(-n)) : constant(n);
+        }
+        if (const auto let = lets_.find(e); let != lets_.end())
+            return options_.compensated_lets ? compensated(let->second).hi : value(let->second);
+        if (const auto input = inputs_.find(e); input != inputs_.end())
+            return input->second;
+        if (GiNaC::is_a<GiNaC::symbol>(e))
+            throw std::invalid_argument(fmt::format("the kernel has no input '{}'",
+                                                    GiNaC::ex_to<GiNaC::symbol>(e).get_name()));
+        if (GiNaC::is_a<GiNaC::add>(e))
+            return sum(e);
+        if (GiNaC::is_a<GiNaC::mul>(e))
+            return product(e);
+        if (GiNaC::is_a<GiNaC::power>(e)) {
+            bool negated = false;
+            const engine::term_order::power_term t = order_.oriented(e, negated);
+            const int v = power(t);
+            return negated ? op(opcode::neg, v) : v;
+        }
+        if (GiNaC::is_a<GiNaC::function>(e)) {
+            std::vector<int> arguments;
+            for (std::size_t i = 0; i < e.nops(); ++i)
+                arguments.push_back(value(e.op(i)));
+            return call(GiNaC::ex_to<GiNaC::function>(e).get_name(), arguments);
+        }
+        throw std::invalid_argument("a kernel cannot compute " + order_symbolless(e));
+    }
+
+    static std::string order_symbolless(const GiNaC::ex& e)
+    {
+        std::ostringstream out;
+        out << e;
+        return out.str();
+    }
+
+    // A sum left to right in print order; a product term may be fused: acc + a*b.
+    int sum(const GiNaC::ex& e)
+    {
+        int acc = -1;
+        for (const GiNaC::ex& term : order_.terms(e)) {
+            const bool negative = order_.negative(term);
+            const GiNaC::ex magnitude = negative ? -term : term;
+            if (acc >= 0 && options_.fma && GiNaC::is_a<GiNaC::mul>(magnitude)) {
+                const engine::term_order::fraction f = order_.split(magnitude);
+                if (f.denominator.empty() && f.numerator.size() >= 2 && !f.negated) {
+                    // acc ± x*y = fma(±x, y, acc), the rest of the product folded into y.
+                    int x = factor(f.numerator[0]);
+                    int y = factor(f.numerator[1]);
+                    for (std::size_t i = 2; i < f.numerator.size(); ++i)
+                        y = op(opcode::mul, y, factor(f.numerator[i]));
+                    acc = op(opcode::fma, negative ? op(opcode::neg, x) : x, y, acc);
+                    continue;
+                }
+            }
+            const int v = value(magnitude);
+            if (acc < 0)
+                acc = negative ? op(opcode::neg, v) : v;
+            else
+                acc = op(negative ? opcode::sub : opcode::add, acc, v);
+        }
+        return acc;
+    }
+
+    // numerator / denominator: one division for the whole product.
+    int product(const GiNaC::ex& e)
+    {
+        const engine::term_order::fraction f = order_.split(e);
+        int top = -1;
+        for (const auto& t : f.numerator)
+            top = top < 0 ? factor(t) : op(opcode::mul, top, factor(t));
+        if (top < 0)
+            top = constant(1);
+        int bottom = -1;
+        for (const auto& t : f.denominator)
+            bottom = bottom < 0 ? factor(t) : op(opcode::mul, bottom, factor(t));
+        int v = bottom < 0 ? top : op(opcode::div, top, bottom);
+        return f.negated ? op(opcode::neg, v) : v;
+    }
+
+    int factor(const engine::term_order::power_term& t)
+    {
+        if (t.exponent.is_equal(1))
+            return value(t.base);
+        return power(t);
+    }
+
+    int power(const engine::term_order::power_term& t)
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(t.exponent)) {
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(t.exponent);
+            if (n.is_negative())
+                return op(opcode::div, constant(1), power({t.base, -n}));
+            if (n.is_integer() && n <= 4) {
+                // x^2 = x*x, x^3 = x*x*x, x^4 = (x*x)*(x*x)
+                const int x = value(t.base);
+                if (n == 1)
+                    return x;
+                const int square = op(opcode::mul, x, x);
+                if (n == 2)
+                    return square;
+                if (n == 3)
+                    return op(opcode::mul, square, x);
+                return op(opcode::mul, square, square);
+            }
+            if (n == GiNaC::numeric(1, 2))
+                return op(opcode::sqrt, value(t.base));
+        }
+        return call("pow", {value(t.base), value(t.exponent)});
+    }
+
+    program& p_;
+    const engine::term_order& order_;
+    compile_options options_;
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> inputs_;
+    std::map<int, std::map<GiNaC::ex, int, GiNaC::ex_is_less>> known_;
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> lets_;
+    std::map<int, std::map<GiNaC::ex, pair, GiNaC::ex_is_less>> known_pairs_;
+    std::map<GiNaC::numeric, int, std::less<>> constants_;
+    std::map<std::tuple<int, int, int, int>, int> ops_;
+};
+
+std::string literal(const GiNaC::numeric& n)
+{
+    std::ostringstream out;
+    if (n.is_integer())
+        out << "Real(" << n << ')';
+    else
+        out << "Real(" << n.numer() << ") / Real(" << n.denom() << ')';
+    return out.str();
+}
+
+} // namespace
+
+program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+                const engine::term_order& order, compile_options options, const let_values& lets)
+{
+    program p;
+    p.inputs = inputs;
+    compiler c(p, order, options, lets);
+    for (const GiNaC::ex& e : outputs)
+        p.outputs.push_back(c.output(e));
+    return p;
+}
+
+program compile(const std::vector<std::pair<GiNaC::ex, compile_options>>& outputs,
+                const std::vector<GiNaC::ex>& inputs, const engine::term_order& order, const let_values& lets)
+{
+    program p;
+    p.inputs = inputs;
+    compiler c(p, order, {}, lets);
+    for (const auto& [e, options] : outputs) {
+        c.set_options(options);
+        p.outputs.push_back(c.output(e));
+    }
+    return p;
+}
+
+std::size_t count(const program& p, opcode op)
+{
+    std::size_t n = 0;
+    for (const instruction& in : p.code)
+        n += in.op == op ? 1 : 0;
+    return n;
+}
+
+cxx_code program_cxx(const program& p, const std::vector<std::string>& names)
+{
+    // A value used more than once gets a name; one used once is written in place, with
+    // the parentheses that keep the program's tree (C++ evaluates a - b + c as (a - b) + c,
+    // so every operation is the one the interpreter measured).
+    std::vector<int> uses(p.code.size(), 0);
+    for (const instruction& in : p.code)
+        for (int operand : {in.a, in.b, in.c})
+            if (operand >= 0)
+                ++uses[operand];
+    for (int o : p.outputs)
+        ++uses[o];
+
+    constexpr int sum = 1, product = 2, unary = 3, atom = 4;
+    std::vector<std::string> text(p.code.size());
+    std::vector<int> precedence(p.code.size(), atom);
+    auto operand = [&](int v, int needed) {
+        return precedence[v] >= needed ? text[v] : "(" + text[v] + ")";
+    };
+    cxx_code code;
+    int next_name = 0;
+    for (std::size_t i = 0; i < p.code.size(); ++i) {
+        const instruction& in = p.code[i];
+        std::string expression;
+        int own = atom;
+        switch (in.op) {
+        case opcode::input: expression = names.at(in.input); break;
+        case opcode::constant:
+            expression = literal(in.value);
+            own = in.value.is_integer() ? atom : product;
+            break;
+        case opcode::add: expression = operand(in.a, sum) + " + " + operand(in.b, product); own = sum; break;
+        case opcode::sub: expression = operand(in.a, sum) + " - " + operand(in.b, product); own = sum; break;
+        case opcode::mul: expression = operand(in.a, product) + " * " + operand(in.b, unary); own = product; break;
+        case opcode::div: expression = operand(in.a, product) + " / " + operand(in.b, unary); own = product; break;
+        case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
+        case opcode::sqrt: expression = "std::sqrt(" + text[in.a] + ")"; break;
+        case opcode::fma: expression = "std::fma(" + text[in.a] + ", " + text[in.b] + ", " + text[in.c] + ")"; break;
+        case opcode::call:
+            expression = "std::" + in.function + "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";
+            break;
+        }
+        const bool named = uses[i] > 1 && in.op != opcode::input && in.op != opcode::constant;
+        if (!named) {
+            text[i] = expression;
+            precedence[i] = own;
+            continue;
+        }
+        const std::string name = fmt::format("t{}", next_name++);
+        code.statements.push_back(fmt::format("const Real {} = {};", name, expression));
+        code.statement_values.push_back(static_cast<int>(i));
+        text[i] = name;
+        precedence[i] = atom;
+    }
+    for (int o : p.outputs)
+        code.outputs.push_back(text[o]);
+    return code;
+}
+
+} // namespace impact::emit

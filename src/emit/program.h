@@ -1,0 +1,110 @@
+// Straight-line programs: the arithmetic a kernel performs, operation by operation.
+//
+// A kernel's outputs are compiled into one program of single operations (add, mul,
+// div, sqrt, fma, ...), each common subexpression computed once, in the fixed order of
+// `term_order`. The same program is printed as C++ (the kernel's body) and run by an
+// interpreter in float, double or long double (to measure its accuracy against CLN):
+// what is measured is exactly what is emitted, operation for operation.
+#pragma once
+
+#include "engine/order.h"
+
+#include <ginac/ginac.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace impact::emit {
+
+enum class opcode { input, constant, add, sub, mul, div, neg, sqrt, fma, call };
+
+struct instruction {
+    opcode op = opcode::constant;
+    int a = -1, b = -1, c = -1;   ///< operands: indices of earlier instructions
+    int input = -1;               ///< for `input`: the index among the program's inputs
+    GiNaC::numeric value;         ///< for `constant`: an exact rational
+    std::string function;         ///< for `call`: acos, atan2, pow, ...
+};
+
+struct program {
+    std::vector<GiNaC::ex> inputs;      ///< the input symbols, in parameter order
+    std::vector<instruction> code;      ///< instruction i computes value i
+    std::vector<int> outputs;           ///< the value of each output
+};
+
+struct compile_options {
+    bool fma = false;          ///< fuse a*b + c into std::fma(a, b, c)
+    bool compensated = false;  ///< evaluate in double-double (error-free transformations)
+    bool compensated_lets = false;  ///< only the `let` values in double-double
+};
+
+/// Values a program computes once, where first needed: symbol = expression in the inputs.
+using let_values = std::vector<std::pair<GiNaC::ex, GiNaC::ex>>;
+
+/// Compiles `outputs` (expressions in `inputs`) into one program.
+program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+                const engine::term_order& order, compile_options options = {}, const let_values& lets = {});
+
+/// The same, with options chosen output by output.
+program compile(const std::vector<std::pair<GiNaC::ex, compile_options>>& outputs,
+                const std::vector<GiNaC::ex>& inputs, const engine::term_order& order,
+                const let_values& lets = {});
+
+/// The number of operations of each kind, e.g. to show that one division is used.
+std::size_t count(const program& p, opcode op);
+
+/// The body of a kernel: one `const Real tN = ...;` line per instruction that is not an
+/// input (inputs are referred to by `names`), and the C++ expression of each output.
+struct cxx_code {
+    std::vector<std::string> statements;
+    std::vector<int> statement_values;   ///< the value each statement computes
+    std::vector<std::string> outputs;
+};
+cxx_code program_cxx(const program& p, const std::vector<std::string>& names);
+
+/// Runs `p` in the floating-point type `Real`, exactly as the printed C++ does.
+template <class Real>
+std::vector<Real> run(const program& p, const std::vector<Real>& inputs)
+{
+    std::vector<Real> v(p.code.size());
+    for (std::size_t i = 0; i < p.code.size(); ++i) {
+        const instruction& in = p.code[i];
+        switch (in.op) {
+        case opcode::input: v[i] = inputs[in.input]; break;
+        case opcode::constant:
+            v[i] = in.value.is_integer() ? static_cast<Real>(in.value.to_double())
+                                         : static_cast<Real>(in.value.numer().to_double()) /
+                                               static_cast<Real>(in.value.denom().to_double());
+            break;
+        case opcode::add: v[i] = v[in.a] + v[in.b]; break;
+        case opcode::sub: v[i] = v[in.a] - v[in.b]; break;
+        case opcode::mul: v[i] = v[in.a] * v[in.b]; break;
+        case opcode::div: v[i] = v[in.a] / v[in.b]; break;
+        case opcode::neg: v[i] = -v[in.a]; break;
+        case opcode::sqrt: v[i] = std::sqrt(v[in.a]); break;
+        case opcode::fma: v[i] = std::fma(v[in.a], v[in.b], v[in.c]); break;
+        case opcode::call:
+            if (in.function == "acos")
+                v[i] = std::acos(v[in.a]);
+            else if (in.function == "atan")
+                v[i] = std::atan(v[in.a]);
+            else if (in.function == "atan2")
+                v[i] = std::atan2(v[in.a], v[in.b]);
+            else if (in.function == "pow")
+                v[i] = std::pow(v[in.a], v[in.b]);
+            else if (in.function == "abs")
+                v[i] = std::abs(v[in.a]);
+            else
+                throw std::invalid_argument("no interpreter for std::" + in.function);
+            break;
+        }
+    }
+    std::vector<Real> out;
+    for (int o : p.outputs)
+        out.push_back(v[o]);
+    return out;
+}
+
+} // namespace impact::emit

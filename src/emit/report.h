@@ -1,0 +1,22 @@
+// The standalone report, `output/report.tex`: every derivation's fragment, the errata
+// table (the paper held to account) and the figures, in one LaTeX document.
+#pragma once
+
+#include "engine/derive.h"
+
+#include <string>
+#include <vector>
+
+namespace impact::emit {
+
+/// The report's LaTeX source. It \input's `latex/<id>.tex` for each derivation (in the
+/// order given) and each of `figures` (paths relative to the output folder, without
+/// `.tex`), and typesets the errata table from the derivations' paper comparisons. The
+/// PDF it makes is the same bytes on every run (no dates, no trailer id).
+std::string report_tex(const std::vector<const engine::derivation*>& derivations,
+                       const std::vector<std::string>& figures);
+
+/// The preamble the report and the test documents share (packages, PDF determinism).
+std::string report_preamble();
+
+} // namespace impact::emit

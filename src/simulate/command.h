@@ -1,0 +1,30 @@
+// `impact simulate`: a scenario from a file and/or options, simulated, written out.
+#pragma once
+
+#include "simulate/scenario.h"
+
+#include <optional>
+#include <string>
+
+namespace impact::simulate {
+
+/// What the command line gives; options override the scenario file's values, and
+/// without a file the defaults are Fig. 2's billiard shot (eps = 1).
+struct command_options {
+    std::string file;                        ///< a scenario file, optional
+    std::string output = ".";                ///< folder for <name>.dat and <name>.tex
+    std::optional<std::string> name;
+    std::optional<double> eps, duration;
+    std::optional<double> mass_M, mass_m, radius_M, radius_m;
+    std::optional<std::string> position_M, position_m, velocity_M, velocity_m;  ///< "x,y"
+};
+
+/// The scenario the options describe. Throws `impact::error` on bad input.
+scenario scenario_from(const command_options& o);
+
+/// Runs the scenario, writes `<output>/<name>.dat` (trajectories) and `<name>.tex` (a
+/// pgfplots figure reading that table), prints a summary. Returns the exit status (0;
+/// spheres that never touch are a result, not an error).
+int simulate_command(const command_options& o);
+
+} // namespace impact::simulate

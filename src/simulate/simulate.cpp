@@ -1,0 +1,173 @@
+#include "simulate/simulate.h"
+
+// The generated kernels (build/generated/kernels, the same text as output/kernels/):
+// the simulation runs the code the accuracy tests verify.
+#include "impact/impact.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace impact::simulate {
+namespace {
+
+vec2 at_time(const sphere& s, double t)
+{
+    return {s.position[0] + s.velocity[0] * t, s.position[1] + s.velocity[1] * t};
+}
+
+vec2 moved(const vec2& from, const vec2& velocity, double t)
+{
+    return {from[0] + velocity[0] * t, from[1] + velocity[1] * t};
+}
+
+} // namespace
+
+std::string fixed(double value, int digits)
+{
+    std::string text = fmt::format("{:.{}f}", value, digits);
+    // -0.0000 and 0.0000 are the same number; write it one way.
+    if (text.find_first_not_of("-0.") == std::string::npos && text[0] == '-')
+        text.erase(0, 1);
+    return text;
+}
+
+std::optional<double> time_of_contact(const scenario& s)
+{
+    // |d + w t|^2 = (R_M + R_m)^2 with d = C_M - C_m, w = v_M - v_m:
+    // a t^2 + b t + c = 0, a = |w|^2, b = 2 d·w, c = |d|^2 - (R_M + R_m)^2 (c >= 0: apart).
+    const double dx = s.M.position[0] - s.m.position[0], dy = s.M.position[1] - s.m.position[1];
+    const double wx = s.M.velocity[0] - s.m.velocity[0], wy = s.M.velocity[1] - s.m.velocity[1];
+    const double reach = s.M.radius + s.m.radius;
+    const double a = wx * wx + wy * wy;
+    const double b = 2 * (dx * wx + dy * wy);
+    const double c = (dx * dx + dy * dy) - reach * reach;
+    if (c <= 0)
+        return 0.0;
+    if (a == 0 || b >= 0)
+        return std::nullopt;   // not approaching
+    const double discriminant = b * b - 4 * a * c;
+    if (discriminant < 0)
+        return std::nullopt;   // they pass each other by
+    // The smaller root, written without cancellation: q = (-b + sqrt(D))/2 > 0, t = c/q.
+    const double q = (-b + std::sqrt(discriminant)) / 2;
+    return c / q;
+}
+
+contact resolve(const scenario& s, const vec2& C_M, const vec2& C_m, const vec2& v_M, const vec2& v_m)
+{
+    // Eq. 9 in the lab frame: the generated kernel turns the velocities into the collision
+    // frame, applies Eq. 8 along the line of action, keeps the perpendicular components
+    // and turns them back.
+    const auto out = impact::collide<double>(s.M.mass, s.m.mass, C_M, C_m, v_M, v_m, s.eps);
+    if (out.status != impact::status::ok)
+        throw std::logic_error("the generated kernel refused a collision of touching, approaching spheres");
+    contact hit;
+    hit.C_M = C_M;
+    hit.C_m = C_m;
+    hit.v_M_before = v_M;
+    hit.v_m_before = v_m;
+    hit.v_M_after = out.v_M;
+    hit.v_m_after = out.v_m;
+    // The impulse along the line of action from M's change of momentum: v'_M = v_M - J/M (Eq. 6).
+    const double rx = C_M[0] - C_m[0], ry = C_M[1] - C_m[1];
+    const double r = std::hypot(rx, ry);
+    hit.J = s.M.mass * ((v_M[0] - out.v_M[0]) * rx + (v_M[1] - out.v_M[1]) * ry) / r;
+    return hit;
+}
+
+trajectory run(const scenario& s)
+{
+    validate(s);
+    trajectory path;
+    const std::optional<double> touch = time_of_contact(s);
+    path.duration = s.duration ? *s.duration : (touch && *touch > 0 ? 2 * *touch : 10.0);
+    if (touch && *touch <= path.duration) {
+        contact hit = resolve(s, at_time(s.M, *touch), at_time(s.m, *touch), s.M.velocity, s.m.velocity);
+        hit.t = *touch;
+        path.hit = hit;
+    } else if (touch) {
+        path.later_contact = touch;
+    }
+
+    auto positions = [&](double t) -> sample {
+        if (!path.hit || t <= path.hit->t)
+            return {t, at_time(s.M, t), at_time(s.m, t)};
+        const double after = t - path.hit->t;
+        return {t, moved(path.hit->C_M, path.hit->v_M_after, after), moved(path.hit->C_m, path.hit->v_m_after, after)};
+    };
+    for (int i = 0; i < s.samples; ++i) {
+        const double t = path.duration * i / (s.samples - 1);
+        if (path.hit && path.samples.size() > 0 && path.samples.back().t < path.hit->t && t > path.hit->t)
+            path.samples.push_back(positions(path.hit->t));
+        path.samples.push_back(positions(t));
+    }
+    return path;
+}
+
+std::string table(const scenario& s, const trajectory& path)
+{
+    std::string out = fmt::format("# Trajectories of scenario '{}': centres of M and m; eps = {}.\n", s.name,
+                                  fixed(s.eps));
+    out += "t x_M y_M x_m y_m\n";
+    for (const sample& p : path.samples)
+        out += fmt::format("{} {} {} {} {}\n", fixed(p.t), fixed(p.C_M[0]), fixed(p.C_M[1]), fixed(p.C_m[0]),
+                           fixed(p.C_m[1]));
+    return out;
+}
+
+namespace {
+
+std::string circle(const vec2& centre, double radius, const std::string& style)
+{
+    return fmt::format("  \\addplot[{}, domain=0:360, samples=73, variable=\\t] ({{{} + {}*cos(\\t)}}, "
+                       "{{{} + {}*sin(\\t)}});\n",
+                       style, fixed(centre[0]), fixed(radius), fixed(centre[1]), fixed(radius));
+}
+
+} // namespace
+
+std::string figure(const scenario& s, const trajectory& path, const std::string& data)
+{
+    std::string out = fmt::format("% Generated by Impact (impact simulate) for scenario '{}'; do not edit.\n"
+                                  "% Needs \\usepackage{{pgfplots}}.\n",
+                                  s.name);
+    out += "\\begin{tikzpicture}\n\\begin{axis}[axis equal image, width=0.8\\linewidth, xlabel={$x$}, "
+           "ylabel={$y$}, legend pos=outer north east, legend cell align=left]\n";
+    out += fmt::format("  \\addplot[blue!70!black, thick, -stealth] table[x=x_M, y=y_M] {{{}}};\n", data);
+    out += "  \\addlegendentry{$M$}\n";
+    out += fmt::format("  \\addplot[red!70!black, thick, -stealth] table[x=x_m, y=y_m] {{{}}};\n", data);
+    out += "  \\addlegendentry{$m$}\n";
+    out += circle(s.M.position, s.M.radius, "blue!70!black, densely dotted, forget plot");
+    out += circle(s.m.position, s.m.radius, "red!70!black, densely dotted, forget plot");
+    if (path.hit) {
+        out += circle(path.hit->C_M, s.M.radius, "blue!70!black, forget plot");
+        out += circle(path.hit->C_m, s.m.radius, "red!70!black, forget plot");
+    }
+    out += "\\end{axis}\n\\end{tikzpicture}\n";
+    return out;
+}
+
+std::string summary(const scenario& s, const trajectory& path)
+{
+    auto v = [](const vec2& x) { return fmt::format("({}, {})", fixed(x[0]), fixed(x[1])); };
+    std::string out = fmt::format("scenario {}: M = {}, m = {}, eps = {}, simulated for t in [0, {}]\n", s.name,
+                                  fixed(s.M.mass), fixed(s.m.mass), fixed(s.eps), fixed(path.duration));
+    if (!path.hit) {
+        if (path.later_contact)
+            out += fmt::format("the spheres do not touch before t = {} (they would at t = {})\n",
+                               fixed(path.duration), fixed(*path.later_contact));
+        else
+            out += "the spheres never touch\n";
+        return out;
+    }
+    const contact& c = *path.hit;
+    out += fmt::format("contact at t = {}: C_M = {}, C_m = {}\n", fixed(c.t), v(c.C_M), v(c.C_m));
+    out += fmt::format("  v_M {} -> {}\n  v_m {} -> {}\n  impulse along the line of action J = {}\n",
+                       v(c.v_M_before), v(c.v_M_after), v(c.v_m_before), v(c.v_m_after), fixed(c.J));
+    return out;
+}
+
+} // namespace impact::simulate

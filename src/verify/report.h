@@ -1,0 +1,18 @@
+// The verification report: the accuracy of every emitted kernel, measured.
+//
+// For each kernel, output and floating-point type: the number of samples, the mean
+// and maximum error in ulps against CLN, the worst regime, and the form that was
+// chosen, with every candidate's maximum error in double beside it.
+#pragma once
+
+#include "emit/kernel_plan.h"
+
+#include <string>
+#include <vector>
+
+namespace impact::verify {
+
+/// `output/verification.md`.
+std::string verification_markdown(const std::vector<const emit::kernel_plan*>& plans);
+
+} // namespace impact::verify

@@ -1,0 +1,27 @@
+// Inputs for measuring a kernel's accuracy, drawn where collisions are hard to compute.
+//
+// Uniform draws miss the inputs that break naive formulas, so each sample is drawn in
+// one of several regimes: ordinary values; masses up to 10^±12 apart; ε within 10^-12
+// of 0 or of 1; nearly grazing contacts (the relative velocity almost perpendicular to
+// the line of centres); nearly head-on hits (one positive input tiny next to another);
+// nearly equal velocities. Every sample is a collision that happens: a pair drawn
+// separating has its velocities reversed. The draws are seeded, so a run is repeatable.
+#pragma once
+
+#include "engine/derive.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace impact::verify {
+
+struct sample {
+    std::string regime;          ///< which hard region it was drawn from
+    std::vector<double> inputs;  ///< one value per input symbol of the kernel, in order
+};
+
+/// `count` samples for `k`, from the seed.
+std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std::uint64_t seed);
+
+} // namespace impact::verify

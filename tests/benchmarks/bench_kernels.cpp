@@ -1,0 +1,299 @@
+// Speed of the generated collision kernels, side by side in one run with a hand-written
+// batch loop of the same arithmetic and a memory-bandwidth probe (a triad).
+//
+// A benchmark, never a test: it reports collisions per second in cache (4 096 pairs)
+// and out of cache (4 194 304 pairs), and at the end the ratios the kernels are held
+// to: batch / hand-written, and bytes per second of the batch out of cache / triad.
+// Every pass starts from the same approaching pairs (velocities are reset, untimed),
+// since a resolved pair separates and would take the kernel's early exit next time.
+#include "impact/impact.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr std::size_t in_cache = 4096;
+constexpr std::size_t out_of_cache = 4194304;
+
+template <std::size_t D>
+struct pairs {
+    std::size_t count = 0;
+    std::vector<double> M, m, eps;
+    std::array<std::vector<double>, D> C_M, C_m, v_M, v_m, v_M0, v_m0;
+    std::vector<impact::status> status;
+
+    explicit pairs(std::size_t n) : count(n), M(n), m(n), eps(n), status(n)
+    {
+        std::mt19937_64 random(2026);
+        std::uniform_real_distribution<double> unit(0.0, 1.0), coordinate(-10.0, 10.0);
+        for (auto* vectors : {&C_M, &C_m, &v_M, &v_m})
+            for (auto& v : *vectors)
+                v.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            M[i] = 0.1 + 10 * unit(random);
+            m[i] = 0.1 + 10 * unit(random);
+            eps[i] = unit(random);
+            double closing = 0;
+            for (std::size_t d = 0; d < D; ++d) {
+                C_M[d][i] = coordinate(random);
+                C_m[d][i] = coordinate(random);
+                v_M[d][i] = coordinate(random);
+                v_m[d][i] = coordinate(random);
+                closing += (v_M[d][i] - v_m[d][i]) * (C_M[d][i] - C_m[d][i]);
+            }
+            if (closing > 0)  // every pair approaches: each one is a real collision
+                for (std::size_t d = 0; d < D; ++d) {
+                    v_M[d][i] = -v_M[d][i];
+                    v_m[d][i] = -v_m[d][i];
+                }
+        }
+        v_M0 = v_M;
+        v_m0 = v_m;
+    }
+
+    void reset()
+    {
+        v_M = v_M0;
+        v_m = v_m0;
+    }
+
+    impact::collide_batch_data<double, D> data()
+    {
+        impact::collide_batch_data<double, D> d{};
+        d.count = count;
+        d.M = M.data();
+        d.m = m.data();
+        d.eps = eps.data();
+        d.status = status.data();
+        for (std::size_t k = 0; k < D; ++k) {
+            d.C_M[k] = C_M[k].data();
+            d.C_m[k] = C_m[k].data();
+            d.v_M[k] = v_M[k].data();
+            d.v_m[k] = v_m[k].data();
+        }
+        return d;
+    }
+
+    // Bytes a collision moves: every input read once, the velocities and status written.
+    static constexpr double bytes_per_pair = (3 + 4 * D) * sizeof(double) + 2 * D * sizeof(double) + sizeof(impact::status);
+};
+
+// ---- The hand-written loop: the same arithmetic, written by hand -----------------
+
+struct dd {
+    double hi, lo;
+};
+
+inline dd two_sum(double a, double b)
+{
+    const double s = a + b, bb = s - a;
+    return {s, (a - (s - bb)) + (b - bb)};
+}
+
+inline dd normalise(double s, double e)
+{
+    const double h = s + e;
+    return {h, e - (h - s)};
+}
+
+inline dd add(dd a, dd b)
+{
+    const dd s = two_sum(a.hi, b.hi);
+    return normalise(s.hi, s.lo + (a.lo + b.lo));
+}
+
+inline dd mul(dd a, dd b)
+{
+    const double p = a.hi * b.hi;
+    return normalise(p, std::fma(a.lo, b.hi, std::fma(a.hi, b.lo, std::fma(a.hi, b.hi, -p))));
+}
+
+inline double div(dd a, dd b)
+{
+    const double q1 = a.hi / b.hi;
+    const dd r = add(a, {-mul({q1, 0}, b).hi, -mul({q1, 0}, b).lo});
+    return q1 + r.hi / b.hi;
+}
+
+template <std::size_t D>
+void hand_written(pairs<D>& p)
+{
+    for (std::size_t i = 0; i < p.count; ++i) {
+        const double M = p.M[i], m = p.m[i], eps = p.eps[i];
+        if (!(M > 0) || !std::isfinite(M) || !(m > 0) || !std::isfinite(m)) {
+            p.status[i] = impact::status::invalid_mass;
+            continue;
+        }
+        if (!(eps >= 0 && eps <= 1)) {
+            p.status[i] = impact::status::invalid_restitution;
+            continue;
+        }
+        bool finite = true;
+        for (std::size_t d = 0; d < D; ++d)
+            finite = finite && std::isfinite(p.C_M[d][i]) && std::isfinite(p.C_m[d][i]) &&
+                     std::isfinite(p.v_M[d][i]) && std::isfinite(p.v_m[d][i]);
+        if (!finite) {
+            p.status[i] = impact::status::non_finite;
+            continue;
+        }
+        std::array<double, D> r;
+        double rr = 0, closing = 0;
+        for (std::size_t d = 0; d < D; ++d) {
+            r[d] = p.C_M[d][i] - p.C_m[d][i];
+            rr += r[d] * r[d];
+            closing += r[d] * (p.v_M[d][i] - p.v_m[d][i]);
+        }
+        if (!(rr > 0)) {
+            p.status[i] = impact::status::coincident_centres;
+            continue;
+        }
+        if (!(closing < 0)) {
+            p.status[i] = impact::status::separating;
+            continue;
+        }
+        // k = (1 + eps) (dv . r) / ((M + m) r . r), in double-double, then the updates.
+        dd dot{0, 0}, r2{0, 0};
+        for (std::size_t d = 0; d < D; ++d) {
+            const dd rd = two_sum(p.C_M[d][i], -p.C_m[d][i]);
+            const dd vd = two_sum(p.v_M[d][i], -p.v_m[d][i]);
+            dot = d == 0 ? mul(rd, vd) : add(dot, mul(rd, vd));
+            r2 = d == 0 ? mul(rd, rd) : add(r2, mul(rd, rd));
+        }
+        const double k = div(mul(two_sum(1, eps), dot), mul(two_sum(M, m), r2));
+        for (std::size_t d = 0; d < D; ++d) {
+            p.v_M[d][i] -= k * m * r[d];
+            p.v_m[d][i] += k * M * r[d];
+        }
+        p.status[i] = impact::status::ok;
+    }
+}
+
+// ---- Benchmarks -------------------------------------------------------------------
+
+template <std::size_t D>
+pairs<D>& shared_pairs(std::size_t n)
+{
+    static std::map<std::size_t, pairs<D>> all;
+    auto found = all.find(n);
+    if (found == all.end())
+        found = all.emplace(n, pairs<D>(n)).first;
+    return found->second;
+}
+
+template <std::size_t D, class Body>
+void run(benchmark::State& state, Body body)
+{
+    pairs<D>& p = shared_pairs<D>(static_cast<std::size_t>(state.range(0)));
+    for (auto _ : state) {
+        state.PauseTiming();
+        p.reset();
+        state.ResumeTiming();
+        body(p);
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * p.count));
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * p.count * pairs<D>::bytes_per_pair));
+}
+
+template <std::size_t D>
+void generated_batch(benchmark::State& state)
+{
+    run<D>(state, [](pairs<D>& p) { impact::collide_batch(p.data()); });
+}
+
+template <std::size_t D>
+void generated_scalar(benchmark::State& state)
+{
+    run<D>(state, [](pairs<D>& p) {
+        for (std::size_t i = 0; i < p.count; ++i) {
+            std::array<double, D> C_M, C_m, v_M, v_m;
+            for (std::size_t d = 0; d < D; ++d) {
+                C_M[d] = p.C_M[d][i];
+                C_m[d] = p.C_m[d][i];
+                v_M[d] = p.v_M[d][i];
+                v_m[d] = p.v_m[d][i];
+            }
+            const auto r = impact::collide(p.M[i], p.m[i], C_M, C_m, v_M, v_m, p.eps[i]);
+            for (std::size_t d = 0; d < D; ++d) {
+                p.v_M[d][i] = r.v_M[d];
+                p.v_m[d][i] = r.v_m[d];
+            }
+            p.status[i] = r.status;
+        }
+    });
+}
+
+template <std::size_t D>
+void hand_written_batch(benchmark::State& state)
+{
+    run<D>(state, [](pairs<D>& p) { hand_written(p); });
+}
+
+// a = b + s c: the bandwidth a loop over this much memory can reach.
+void triad(benchmark::State& state)
+{
+    const std::size_t n = static_cast<std::size_t>(state.range(0));
+    std::vector<double> a(n), b(n, 1.0), c(n, 2.0);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < n; ++i)
+            a[i] = b[i] + 3.0 * c[i];
+        benchmark::DoNotOptimize(a.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * n * 3 * sizeof(double)));
+}
+
+// Collects results to print the ratios at the end.
+class ratio_reporter : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override
+    {
+        for (const Run& run : runs) {
+            items[run.benchmark_name()] = run.counters.count("items_per_second") ? run.counters.at("items_per_second").value : 0;
+            bytes[run.benchmark_name()] = run.counters.count("bytes_per_second") ? run.counters.at("bytes_per_second").value : 0;
+        }
+        ConsoleReporter::ReportRuns(runs);
+    }
+    std::map<std::string, double> items, bytes;
+};
+
+} // namespace
+
+BENCHMARK(generated_scalar<2>)->Arg(in_cache)->Arg(out_of_cache)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(generated_batch<2>)->Arg(in_cache)->Arg(out_of_cache)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(hand_written_batch<2>)->Arg(in_cache)->Arg(out_of_cache)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(generated_scalar<3>)->Arg(in_cache)->Arg(out_of_cache)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(generated_batch<3>)->Arg(in_cache)->Arg(out_of_cache)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(hand_written_batch<3>)->Arg(in_cache)->Arg(out_of_cache)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(triad)->Arg(in_cache * 5)->Arg(out_of_cache * 5)->UseRealTime()->Unit(benchmark::kMicrosecond);
+
+int main(int argc, char** argv)
+{
+    benchmark::Initialize(&argc, argv);
+    ratio_reporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    for (int d : {2, 3}) {
+        for (std::size_t n : {in_cache, out_of_cache}) {
+            const std::string suffix = "<" + std::to_string(d) + ">/" + std::to_string(n) + "/real_time";
+            const double batch = reporter.items["generated_batch" + suffix];
+            const double hand = reporter.items["hand_written_batch" + suffix];
+            if (batch > 0 && hand > 0)
+                std::printf("%dD, %zu pairs: generated batch / hand-written = %.3f\n", d, n, batch / hand);
+        }
+        const std::string out = "<" + std::to_string(d) + ">/" + std::to_string(out_of_cache) + "/real_time";
+        const double bytes = reporter.bytes["generated_batch" + out];
+        const double probe = reporter.bytes["triad/" + std::to_string(out_of_cache * 5) + "/real_time"];
+        if (bytes > 0 && probe > 0)
+            std::printf("%dD out of cache: generated batch moves %.2f GB/s, the triad %.2f GB/s: %.0f%%\n", d,
+                        bytes / 1e9, probe / 1e9, 100 * bytes / probe);
+    }
+    return 0;
+}

@@ -1,0 +1,22 @@
+# Installs Impact from BUILD into a scratch prefix, then configures, builds and runs the
+# consumer project against it: what a user of the kernels does.
+set(prefix ${WORK}/prefix)
+file(REMOVE_RECURSE ${WORK})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix} RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "cmake --install failed")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${WORK}/build -DCMAKE_PREFIX_PATH=${prefix}
+                RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "the consumer project does not configure against the installed package")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK}/build RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "the consumer project does not build")
+endif()
+execute_process(COMMAND ${WORK}/build/consumer RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "the consumer's physics checks fail")
+endif()
+message(STATUS "the consumer project built against the installed impact::kernels and ran")

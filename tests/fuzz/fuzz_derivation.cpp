@@ -1,0 +1,58 @@
+// libFuzzer target over the derivation-file reader and the expression parser: the bytes
+// are read as a derivation file (spec::parse_derivation) and derived (engine::derive, which
+// parses every expression with GiNaC), with the results of derivations/ available to
+// [[use]].
+//
+// Bad input must end in an `impact::error` printed on one line at the file: anything else
+// (a crash, a sanitizer report, another exception, a message on two lines) is a finding.
+// Built with -fsanitize=fuzzer by tests/fuzz/CMakeLists.txt; test_fuzz_regressions
+// replays tests/fuzz/regressions/ through the same function in every build.
+#include "engine/derive.h"
+#include "pipeline/library.h"
+#include "spec/derivation.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+// The derivations of derivations/, derived once, for fuzzed files that use them. If
+// derivations/ is being edited into a bad state, fuzzing goes on without them.
+const impact::engine::library& used()
+{
+    static const impact::engine::library library = [] {
+        try {
+            return impact::pipeline::derive_all(impact::pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"))
+                .derived;
+        } catch (const impact::error& e) {
+            std::fprintf(stderr, "fuzz_derivation: fuzzing without derivations/ (%s)\n", e.what());
+            return impact::engine::library{};
+        }
+    }();
+    return library;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+    used();
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    const std::string contents(reinterpret_cast<const char*>(data), size);
+    try {
+        impact::engine::derive(impact::spec::parse_derivation(contents, "fuzz.toml"), used());
+    } catch (const impact::error& e) {
+        const std::string line = e.what();
+        if (line.find_first_of("\r\n") != std::string::npos || line.rfind("fuzz.toml", 0) != 0) {
+            std::fprintf(stderr, "fuzz_derivation: an error not on one line at the file: %s\n", line.c_str());
+            std::abort();
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,20 @@
+# AddressSanitizer and UndefinedBehaviorSanitizer for every target (IMPACT_SANITIZE, and
+# IMPACT_FUZZ, which implies it), included by the top-level CMakeLists.txt before any
+# target is made. Any report fails the program that made it: UBSan does not recover, and
+# LeakSanitizer fails a program that leaks at exit. GiNaC and CLN are not instrumented.
+if(NOT (IMPACT_SANITIZE OR IMPACT_FUZZ))
+  return()
+endif()
+
+add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+add_link_options(-fsanitize=address,undefined)
+
+# tests/sanitizer.supp is compiled into every program of the build (tests, the build's own
+# generators, the fuzzer), so that no one has to remember an environment variable.
+set(IMPACT_SUPPRESSIONS ${CMAKE_CURRENT_LIST_DIR}/sanitizer.supp)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${IMPACT_SUPPRESSIONS})
+file(READ ${IMPACT_SUPPRESSIONS} IMPACT_LSAN_SUPPRESSIONS)
+configure_file(${CMAKE_CURRENT_LIST_DIR}/sanitizer_defaults.cpp.in
+               ${CMAKE_CURRENT_BINARY_DIR}/sanitizer_defaults.cpp @ONLY)
+add_library(impact_sanitizer_defaults OBJECT ${CMAKE_CURRENT_BINARY_DIR}/sanitizer_defaults.cpp)
+link_libraries(impact_sanitizer_defaults)

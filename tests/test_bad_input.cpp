@@ -1,0 +1,422 @@
+// Bad input end to end, through the `impact` binary: every kind of bad derivation file
+// gives one line `file:line:column: error: what`, a non-zero exit and an output folder
+// left exactly as it was; a regeneration that fails part-way, or is killed, loses nothing.
+//
+// Each test runs in a scratch folder of its own with small derivation files written here,
+// so that the expected messages (the ones README.md lists) do not depend on derivations/.
+#define BOOST_TEST_MODULE test_bad_input
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct run_result {
+    bool exited = false;   // false when the process was killed
+    int status = -1;
+    std::string output;    // stdout and stderr together
+};
+
+// Every file under `root`, by relative path, with its bytes.
+std::map<std::string, std::string> snapshot(const fs::path& root)
+{
+    std::map<std::string, std::string> files;
+    if (!fs::exists(root))
+        return files;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file())
+            continue;
+        std::ifstream in(entry.path(), std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        files[fs::relative(entry.path(), root).generic_string()] = bytes.str();
+    }
+    return files;
+}
+
+std::vector<std::string> lines_of(const std::string& text)
+{
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    return lines;
+}
+
+// A scratch folder holding derivations/ and an output/ from an earlier run; `impact`
+// runs inside it, so that messages name `derivations/<file>` as a user would see them.
+struct scratch {
+    fs::path root;
+
+    scratch()
+    {
+        static int counter = 0;
+        root = fs::temp_directory_path() /
+               ("impact-bad-input-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+        fs::remove_all(root);
+        fs::create_directories(root / "derivations");
+        fs::create_directories(root / "output");
+        std::ofstream(root / "output" / "marker.txt") << "the previous output\n";
+    }
+    ~scratch() { fs::remove_all(root); }
+
+    void write(const std::string& relative, const std::string& bytes) const
+    {
+        std::ofstream(root / relative, std::ios::binary) << bytes;
+    }
+
+    run_result impact(const std::string& arguments, const std::string& environment = "") const
+    {
+        // `exec`: a killed `impact` is seen as killed, not as a shell exiting with 137.
+        const std::string command = "cd '" + root.string() + "' && " + environment + " exec " + IMPACT_BINARY +
+                                    " " + arguments + " 2>&1";
+        run_result r;
+        FILE* pipe = popen(command.c_str(), "r");
+        BOOST_REQUIRE(pipe);
+        std::array<char, 4096> buffer{};
+        while (std::fgets(buffer.data(), buffer.size(), pipe))
+            r.output += buffer.data();
+        const int status = pclose(pipe);
+        r.exited = WIFEXITED(status);
+        r.status = r.exited ? WEXITSTATUS(status) : -1;
+        return r;
+    }
+
+    run_result regenerate(const std::string& environment = "") const
+    {
+        return impact("regenerate --derivations derivations --output output", environment);
+    }
+
+    bool has(const std::string& relative) const { return fs::exists(root / relative); }
+};
+
+// Nine lines: x > 0, real y and z. Line numbers in the expected messages count from here.
+const std::string prefix = "id = \"bad\"\n"
+                           "title = \"a bad derivation\"\n"
+                           "[[symbol]]\n"
+                           "name = \"x\"\n"
+                           "domain = \"positive\"\n"
+                           "[[symbol]]\n"
+                           "name = \"y\"\n"
+                           "[[symbol]]\n"
+                           "name = \"z\"\n";
+
+// Two equations in y and z (lines 10 to 17); the right side of the second is `rhs`.
+std::string two_equations(const std::string& rhs)
+{
+    return "[[given]]\nname = \"a\"\nequation = \"y + z = x\"\nbecause = \"a\"\n"
+           "[[given]]\nname = \"b\"\nequation = \"2*y + 2*z = " + rhs + "\"\nbecause = \"b\"\n";
+}
+
+// A derivation that holds: y = 2*x, with a kernel.
+std::string good(const std::string& id, const std::string& uses = "")
+{
+    std::string text = "id = \"" + id + "\"\ntitle = \"a good derivation\"\n";
+    if (!uses.empty())
+        text += "[[use]]\nderivation = \"" + uses + "\"\nresults = [\"w = y\"]\n";
+    text += "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n[[symbol]]\nname = \"y\"\n"
+            "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"given\"\n"
+            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n"
+            "[[result]]\nname = \"y\"\ndisplay = \"2*x\"\n"
+            "[[kernel]]\nname = \"" + id + "_y\"\ninputs = [\"x\"]\noutputs = [\"y = y\"]\n";
+    return text;
+}
+
+// Writes `files`, regenerates, and expects exit 2 with exactly `message` (one line) and
+// output/ as it was.
+void expect_refused(const std::map<std::string, std::string>& files, const std::string& message)
+{
+    const scratch s;
+    for (const auto& [name, bytes] : files)
+        s.write("derivations/" + name, bytes);
+    const auto before = snapshot(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST(r.status == 2, r.output);
+    BOOST_TEST(lines_of(r.output) == std::vector<std::string>{message}, boost::test_tools::per_element());
+    BOOST_TEST((snapshot(s.root / "output") == before), "output/ changed");
+    BOOST_TEST(!s.has("output.impact-new"));
+    BOOST_TEST(!s.has("output.impact-old"));
+}
+
+void expect_refused(const std::string& text, const std::string& message)
+{
+    expect_refused({{"bad.toml", text}}, message);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(bad_derivation_files)
+
+BOOST_AUTO_TEST_CASE(invalid_toml)
+{
+    expect_refused(prefix + "[[given]\nname = \"g\"\n",
+                   "derivations/bad.toml:10:9: error: invalid TOML: Error while parsing table header: "
+                   "expected ']', saw '\\n'");
+}
+
+BOOST_AUTO_TEST_CASE(a_missing_required_field)
+{
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nbecause = \"b\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:10:1: error: [[given]] is missing the required field 'equation'");
+}
+
+BOOST_AUTO_TEST_CASE(an_undeclared_symbol)
+{
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*w\"\nbecause = \"b\"\n"
+                            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:17: error: expression \"2*w\" does not parse: "
+                   "undeclared symbol 'w' (declare it in a [[symbol]] table)");
+}
+
+BOOST_AUTO_TEST_CASE(an_expression_that_does_not_parse)
+{
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = (2*x\"\nbecause = \"b\"\n"
+                            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:17: error: expression \"(2*x\" does not parse: expected ')', got: EOF");
+}
+
+BOOST_AUTO_TEST_CASE(a_symbol_declared_twice)
+{
+    expect_refused(prefix + "[[symbol]]\nname = \"y\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:11:8: error: symbol 'y' is declared twice (first at line 7)");
+}
+
+BOOST_AUTO_TEST_CASE(a_domain_that_is_not_understood)
+{
+    expect_refused(prefix + "[[symbol]]\nname = \"w\"\ndomain = \"sometimes\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:10: error: domain 'sometimes' is not understood; write real, "
+                   "positive, nonnegative or an interval such as [0, 1]");
+}
+
+BOOST_AUTO_TEST_CASE(a_singular_system)
+{
+    expect_refused(prefix + two_equations("2*x") + "[[step]]\nsolve = [\"a\", \"b\"]\nfor = [\"y\", \"z\"]\n"
+                                                   "[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:18:1: error: the system is singular: it does not determine y");
+}
+
+BOOST_AUTO_TEST_CASE(an_inconsistent_system)
+{
+    expect_refused(prefix + two_equations("3*x") + "[[step]]\nsolve = [\"a\", \"b\"]\nfor = [\"y\", \"z\"]\n"
+                                                   "[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:18:1: error: the system is inconsistent: it has no solution");
+}
+
+BOOST_AUTO_TEST_CASE(more_unknowns_than_equations)
+{
+    expect_refused(prefix + two_equations("2*x") + "[[step]]\nsolve = [\"a\"]\nfor = [\"y\", \"z\"]\n"
+                                                   "[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:18:1: error: 2 unknowns but only 1 equations: the system is "
+                   "underdetermined");
+}
+
+BOOST_AUTO_TEST_CASE(a_display_form_not_equal_to_the_result_is_reported_with_its_residual)
+{
+    // Not bad input but a failed check: exit 1, one line at the display form, residual 3*x - 2*x.
+    const scratch s;
+    s.write("derivations/bad.toml", prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                                             "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n"
+                                             "[[result]]\nname = \"y\"\ndisplay = \"3*x\"\n");
+    const auto before = snapshot(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST(r.status == 1, r.output);
+    BOOST_TEST(lines_of(r.output) ==
+                   (std::vector<std::string>{
+                       "derivations/bad.toml:19:11: error: check failed: bad: display form of y: residual x",
+                       "impact: output left unchanged"}),
+               boost::test_tools::per_element());
+    BOOST_TEST((snapshot(s.root / "output") == before));
+}
+
+BOOST_AUTO_TEST_CASE(a_step_that_divides_by_zero)
+{
+    expect_refused(prefix + "[[step]]\ndefine = \"y\"\nas = \"x/(z - z)\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:6: error: expression \"x/(z - z)\": division by zero");
+    expect_refused(prefix + "[[given]]\nname = \"a\"\nequation = \"y = x\"\nbecause = \"a\"\n"
+                            "[[given]]\nname = \"b\"\nequation = \"z = 0\"\nbecause = \"b\"\n"
+                            "[[step]]\nquotient = [\"a\", \"b\"]\nname = \"c\"\n"
+                            "[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:18:1: error: equation 'b' has a side that is zero: division by zero");
+}
+
+BOOST_AUTO_TEST_CASE(using_a_derivation_that_does_not_exist)
+{
+    expect_refused(prefix + "[[use]]\nderivation = \"nowhere\"\nresults = [\"z = y\"]\n"
+                            "[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:11:14: error: uses derivation 'nowhere', which does not exist");
+}
+
+BOOST_AUTO_TEST_CASE(a_derivation_that_uses_itself_directly_or_through_a_cycle)
+{
+    const std::string body = "[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n";
+    expect_refused(prefix + "[[use]]\nderivation = \"bad\"\nresults = [\"z = y\"]\n" + body,
+                   "derivations/bad.toml:11:14: error: derivation 'bad' uses 'bad', which uses it in turn "
+                   "(a cycle)");
+    std::string other = prefix;
+    other.replace(other.find("\"bad\""), 5, "\"other\"");
+    expect_refused({{"a.toml", prefix + "[[use]]\nderivation = \"other\"\nresults = [\"z = y\"]\n" + body},
+                    {"b.toml", other + "[[use]]\nderivation = \"bad\"\nresults = [\"z = y\"]\n" + body}},
+                   "derivations/b.toml:11:14: error: derivation 'other' uses 'bad', which uses it in turn "
+                   "(a cycle)");
+}
+
+BOOST_AUTO_TEST_CASE(two_derivations_with_the_same_id)
+{
+    const std::string text = prefix + "[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n";
+    expect_refused({{"a.toml", text}, {"b.toml", text}},
+                   "derivations/b.toml:1:6: error: derivation id 'bad' is also used by derivations/a.toml");
+}
+
+BOOST_AUTO_TEST_CASE(an_id_that_is_not_a_name)
+{
+    // It names output files: "../x" would write outside output/.
+    std::string text = prefix + "[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n";
+    text.replace(text.find("\"bad\""), 5, "\"../escaped\"");
+    expect_refused(text, "derivations/bad.toml:1:6: error: id '../escaped' must be a name of letters, digits "
+                         "and _, starting with a letter");
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_whose_inputs_do_not_cover_its_outputs)
+{
+    expect_refused(prefix + "[[step]]\ndefine = \"y\"\nas = \"x + z\"\n[[result]]\nname = \"y\"\n"
+                            "[[kernel]]\nname = \"k\"\ninputs = [\"x\"]\noutputs = [\"y = y\"]\n",
+                   "derivations/bad.toml:18:12: error: kernel 'k': output 'y' depends on 'z', which is not "
+                   "among its inputs");
+}
+
+BOOST_AUTO_TEST_CASE(a_result_the_printers_cannot_write)
+{
+    // sqrt(-1) derives, but no printer writes the imaginary unit: refused at the file.
+    const scratch s;
+    s.write("derivations/bad.toml", prefix + "[[step]]\ndefine = \"y\"\nas = \"x*sqrt(-1)\"\n[[result]]\nname = \"y\"\n");
+    const auto before = snapshot(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST(r.status == 2, r.output);
+    const auto lines = lines_of(r.output);
+    BOOST_TEST_REQUIRE(lines.size() == 1u, r.output);
+    BOOST_TEST(lines[0].rfind("derivations/bad.toml: error: cannot print what derivation 'bad' derives: ", 0) == 0u,
+               lines[0]);
+    BOOST_TEST((snapshot(s.root / "output") == before));
+}
+
+BOOST_AUTO_TEST_CASE(an_empty_file)
+{
+    expect_refused("", "derivations/bad.toml: error: file is empty");
+    expect_refused("  \n\n", "derivations/bad.toml: error: file is empty");
+}
+
+BOOST_AUTO_TEST_CASE(a_binary_file)
+{
+    // The start of an ELF executable, and a NUL on line 2 after a valid first line.
+    expect_refused(std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10),
+                   "derivations/bad.toml:1:1: error: file is binary (byte 0x7f), not a TOML derivation");
+    expect_refused(std::string("id = \"bad\"\ntitle\0 = \"t\"\n", 24),
+                   "derivations/bad.toml:2:6: error: file is binary (byte 0x00), not a TOML derivation");
+    expect_refused("id = \"bad\"\ntitle = \"\xff\xfe\"\n",
+                   "derivations/bad.toml:2:9: error: invalid TOML: Encountered invalid utf-8 sequence");
+}
+
+BOOST_AUTO_TEST_CASE(a_file_larger_than_a_megabyte)
+{
+    expect_refused(prefix + std::string(2000000, '#'),
+                   "derivations/bad.toml: error: file is 2000124 bytes, larger than the limit of 1048576 bytes");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(nothing_lost)
+
+BOOST_AUTO_TEST_CASE(a_derivation_failing_late_in_a_regeneration_leaves_the_previous_output_intact)
+{
+    scratch s;
+    s.write("derivations/a.toml", good("first"));
+    s.write("derivations/b.toml", good("second", "first"));
+    BOOST_TEST_REQUIRE(s.regenerate().status == 0);
+    const auto before = snapshot(s.root / "output");
+    BOOST_TEST_REQUIRE(before.count("kernels/impact/second.hpp") == 1u);
+
+    // Derived last (it uses both others), after they have been derived: a singular system.
+    s.write("derivations/c.toml", good("third", "second") + "[[symbol]]\nname = \"z\"\n"
+                                  "[[given]]\nname = \"h\"\nequation = \"2*z = 2*z\"\nbecause = \"b\"\n"
+                                  "[[step]]\nsolve = [\"h\"]\nfor = [\"z\"]\n");
+    const run_result bad = s.regenerate();
+    BOOST_TEST(bad.status == 2, bad.output);
+    BOOST_TEST(bad.output.find("derivations/c.toml:") == 0u, bad.output);
+    BOOST_TEST((snapshot(s.root / "output") == before));
+
+    // The same with a check that fails there: exit 1, nothing replaced.
+    s.write("derivations/c.toml", good("third", "second") + "[[check]]\nname = \"wrong\"\nclaim = \"w = 3*x\"\n");
+    const run_result failed = s.regenerate();
+    BOOST_TEST(failed.status == 1, failed.output);
+    BOOST_TEST(failed.output.find("derivations/c.toml:27:9: error: check failed: third: wrong: residual -x") == 0u,
+               failed.output);
+    BOOST_TEST((snapshot(s.root / "output") == before));
+    BOOST_TEST(!s.has("output.impact-new"));
+    BOOST_TEST(!s.has("output.impact-old"));
+}
+
+BOOST_AUTO_TEST_CASE(a_run_killed_while_writing_leaves_the_output_intact_and_the_next_run_tidies_up)
+{
+    scratch s;
+    s.write("derivations/a.toml", good("first"));
+    const auto before = snapshot(s.root / "output");
+    const run_result killed = s.regenerate("IMPACT_TEST_INTERRUPT=writing");
+    BOOST_TEST(!killed.exited);
+    BOOST_TEST((snapshot(s.root / "output") == before));
+    BOOST_TEST_REQUIRE(s.has("output.impact-new"));   // the half-written output it left
+
+    const run_result next = s.regenerate();
+    BOOST_TEST(next.status == 0, next.output);
+    BOOST_TEST(!s.has("output.impact-new"));
+    BOOST_TEST(s.has("output/kernels/impact/first.hpp"));
+    BOOST_TEST(!s.has("output/marker.txt"));
+}
+
+BOOST_AUTO_TEST_CASE(a_run_killed_between_the_renames_is_restored_by_the_next_run_even_a_failing_one)
+{
+    scratch s;
+    s.write("derivations/a.toml", good("first"));
+    const auto before = snapshot(s.root / "output");
+    const run_result killed = s.regenerate("IMPACT_TEST_INTERRUPT=swapping");
+    BOOST_TEST(!killed.exited);
+    BOOST_TEST_REQUIRE(!s.has("output"));              // moved aside ...
+    BOOST_TEST_REQUIRE(s.has("output.impact-old"));    // ... here, when the process died
+
+    s.write("derivations/b.toml", "");
+    const run_result next = s.regenerate();
+    BOOST_TEST(next.status == 2, next.output);
+    BOOST_TEST((snapshot(s.root / "output") == before));
+    BOOST_TEST(!s.has("output.impact-old"));
+    BOOST_TEST(!s.has("output.impact-new"));
+}
+
+BOOST_AUTO_TEST_CASE(an_output_folder_holding_the_derivations_is_refused)
+{
+    scratch s;
+    s.write("derivations/a.toml", good("first"));
+    const auto before = snapshot(s.root);
+    for (const char* output : {".", "./", ".."}) {
+        const run_result r = s.impact(std::string("regenerate --derivations derivations --output ") + output);
+        BOOST_TEST(r.status == 2, r.output);
+        BOOST_TEST(lines_of(r.output) ==
+                       std::vector<std::string>{std::string(output) +
+                                                ": error: refusing to replace this folder: it holds the "
+                                                "derivations or the current folder"},
+                   boost::test_tools::per_element());
+    }
+    BOOST_TEST((snapshot(s.root) == before));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,229 @@
+// The LaTeX printer: results written as a textbook writes them, exact strings.
+//
+// Every expected string below is typed from how the paper (or a textbook) sets the
+// formula, not read back from the printer.
+#define BOOST_TEST_MODULE test_latex
+#include <boost/test/unit_test.hpp>
+
+#include "emit/latex.h"
+#include "emit/written_form.h"
+#include "pipeline/library.h"
+#include "spec/derivation.h"
+
+#include <string>
+
+using namespace impact;
+
+namespace {
+
+// The symbols of Eq. 8 with the paper's names, ranked as Eq. 8's file declares them.
+struct eq8_symbols {
+    GiNaC::possymbol M{"M", "M"}, m{"m", "m"};
+    GiNaC::realsymbol vM{"v_M", "v_{M,\\parallel}"}, vm{"v_m", "v_{m,\\parallel}"}, eps{"eps", "\\epsilon"};
+    GiNaC::realsymbol vMp{"v_M_after", "v'_{M,\\parallel}"}, vmp{"v_m_after", "v'_{m,\\parallel}"};
+    GiNaC::realsymbol J{"J", "J"}, m_eff{"m_eff", "m_{\\mathrm{eff}}"};
+    GiNaC::possymbol vpar{"v_1par", "v_{1,\\parallel}"}, vperp{"v_1perp", "v_{1,\\perp}"};
+    GiNaC::realsymbol cos_theta{"cos_theta", "\\cos\\theta"};
+    engine::term_order order{{M, m, vM, vm, eps, vMp, vmp, J, m_eff, vpar, vperp, cos_theta}};
+
+    GiNaC::ex parse(const std::string& text) const
+    {
+        GiNaC::symtab table;
+        for (const GiNaC::ex& s : GiNaC::lst{M, m, vM, vm, eps, vMp, vmp, J, m_eff, vpar, vperp, cos_theta})
+            table[GiNaC::ex_to<GiNaC::symbol>(s).get_name()] = s;
+        GiNaC::parser reader(table, true);
+        return reader(text);
+    }
+
+    // The expression as its text gives it, printed as written.
+    std::string as_written(const std::string& text) const
+    {
+        const emit::written_form w = emit::written_form::read(text, [this](const std::string& t) { return parse(t); });
+        return emit::latex(parse(text), order, &w);
+    }
+};
+
+const engine::derivation& derived(const std::string& id)
+{
+    static const pipeline::library lib = pipeline::derive_all(pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+    return lib.derived.at(id);
+}
+
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
+
+} // namespace
+
+BOOST_FIXTURE_TEST_SUITE(display_forms, eq8_symbols)
+
+BOOST_AUTO_TEST_CASE(eq8_is_printed_in_the_order_its_display_form_gives)
+{
+    // Eq. 8 as the paper prints it: ε m (v_m − v_M), not m ε (v_M − v_m) with a minus.
+    BOOST_TEST(as_written("(M*v_M + m*v_m + eps*m*(v_m - v_M))/(M + m)") ==
+               "\\frac{M v_{M,\\parallel} + m v_{m,\\parallel} + \\epsilon m (v_{m,\\parallel} - v_{M,\\parallel})}"
+               "{M + m}");
+    BOOST_TEST(as_written("(1 + eps)*M*m*(v_M - v_m)/(M + m)") ==
+               "\\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m}");
+}
+
+BOOST_AUTO_TEST_CASE(a_sign_gi_nac_moves_into_a_sum_comes_back_out)
+{
+    // GiNaC stores -(1 - eps^2)*x as (-1 + eps^2)*x; the text says -(1 - ε²).
+    BOOST_TEST(as_written("-(1 - eps^2)*M*m*(v_m - v_M)^2/(2*(M + m))") ==
+               "-\\frac{(1 - \\epsilon^{2}) M m (v_{m,\\parallel} - v_{M,\\parallel})^{2}}{2 (M + m)}");
+    BOOST_TEST(as_written("-(v_M - v_m)") == "-(v_{M,\\parallel} - v_{m,\\parallel})");
+}
+
+BOOST_AUTO_TEST_CASE(a_written_half_stays_a_half_in_front)
+{
+    // Appendix A: ½ m v'²_m + ½ M v'²_M, with the primes sharing the superscript.
+    BOOST_TEST(as_written("1/2*m*v_m_after^2 + 1/2*M*v_M_after^2") ==
+               "\\frac{1}{2} m v'^{2}_{m,\\parallel} + \\frac{1}{2} M v'^{2}_{M,\\parallel}");
+    // Written as a quotient it is a quotient, and 1/(2m) is not ½ · 1/m.
+    BOOST_TEST(as_written("m*v_m_after^2/2") == "\\frac{m v'^{2}_{m,\\parallel}}{2}");
+    BOOST_TEST(as_written("(v_m - v_M)*J + (1/(2*m) + 1/(2*M))*J^2") ==
+               "(v_{m,\\parallel} - v_{M,\\parallel}) J + \\left(\\frac{1}{2 m} + \\frac{1}{2 M}\\right) J^{2}");
+}
+
+BOOST_AUTO_TEST_CASE(a_power_written_as_a_power_is_not_turned_into_a_fraction)
+{
+    // The paper's Eq. 8 for J: -m_eff^{-1}(1 + ε)(v_m − v_M).
+    BOOST_TEST(as_written("-m_eff^(-1)*(1 + eps)*(v_m - v_M)") ==
+               "-m^{-1}_{\\mathrm{eff}} (1 + \\epsilon) (v_{m,\\parallel} - v_{M,\\parallel})");
+}
+
+BOOST_AUTO_TEST_CASE(eq14_roots_and_subscripts)
+{
+    BOOST_TEST(as_written("(1 - eps)*v_1par/sqrt((1 - eps)^2*v_1par^2 + 4*v_1perp^2)") ==
+               "\\frac{(1 - \\epsilon) v_{1,\\parallel}}{\\sqrt{(1 - \\epsilon)^{2} v^{2}_{1,\\parallel} + "
+               "4 v^{2}_{1,\\perp}}}");
+}
+
+BOOST_AUTO_TEST_CASE(tall_contents_get_sized_parentheses_and_flat_ones_plain)
+{
+    BOOST_TEST(as_written("(1/M + 1/m)*J") == "\\left(\\frac{1}{M} + \\frac{1}{m}\\right) J");
+    BOOST_TEST(as_written("(M + m)*J") == "(M + m) J");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_FIXTURE_TEST_SUITE(without_a_written_form, eq8_symbols)
+
+BOOST_AUTO_TEST_CASE(no_minus_one_plus_epsilon_artefacts)
+{
+    // A sum inside a product leads with a positive constant: (1 − ε), never (−1 + ε).
+    BOOST_TEST(emit::latex((eps - 1) * M, order) == "-M (1 - \\epsilon)");
+    BOOST_TEST(emit::latex(GiNaC::pow(eps - 1, 2), order) == "(1 - \\epsilon)^{2}");
+    BOOST_TEST(emit::latex(eps - 1, order) == "\\epsilon - 1");
+}
+
+BOOST_AUTO_TEST_CASE(no_one_half_times_artefacts)
+{
+    BOOST_TEST(emit::latex(GiNaC::numeric(1, 2) * M * vM * vM, order) == "\\frac{M v^{2}_{M,\\parallel}}{2}");
+    BOOST_TEST(emit::latex(GiNaC::numeric(-1, 2) * M * (1 - eps * eps), order) == "-\\frac{M (1 - \\epsilon^{2})}{2}");
+}
+
+BOOST_AUTO_TEST_CASE(primes_greek_letters_and_functions)
+{
+    BOOST_TEST(emit::latex(GiNaC::pow(vMp, 2), order) == "v'^{2}_{M,\\parallel}");
+    BOOST_TEST(emit::latex(GiNaC::pow(cos_theta, 2), order) == "\\cos^{2}\\theta");
+    BOOST_TEST(emit::latex(GiNaC::acos(cos_theta), order) == "\\arccos(\\cos\\theta)");
+    BOOST_TEST(emit::latex(GiNaC::acos(vperp / vpar), order) == "\\arccos\\left(\\frac{v_{1,\\perp}}{v_{1,\\parallel}}\\right)");
+    BOOST_TEST(emit::latex(GiNaC::pow(m_eff, -1), order) == "\\frac{1}{m_{\\mathrm{eff}}}");
+}
+
+BOOST_AUTO_TEST_CASE(no_parentheses_where_precedence_does_not_need_them)
+{
+    BOOST_TEST(emit::latex(vM - J / M, order) == "v_{M,\\parallel} - \\frac{J}{M}");
+    BOOST_TEST(emit::latex(M * vM + m * vm, order) == "M v_{M,\\parallel} + m v_{m,\\parallel}");
+    BOOST_TEST(emit::latex(-J, order) == "-J");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_FIXTURE_TEST_SUITE(line_breaking, eq8_symbols)
+
+BOOST_AUTO_TEST_CASE(a_short_expression_stays_on_one_line)
+{
+    const auto lines = emit::latex_lines(M * vM + m * vm, order, nullptr, 300);
+    BOOST_TEST(lines.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_long_sum_breaks_before_a_term_and_every_line_fits)
+{
+    GiNaC::ex sum = 0;
+    for (const GiNaC::ex& a : GiNaC::lst{M, m, J})
+        for (const GiNaC::ex& b : GiNaC::lst{vM, vm, vMp, vmp})
+            sum += a * b;
+    const auto lines = emit::latex_lines(sum, order, nullptr, 150);
+    BOOST_TEST(lines.size() > 1u);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        BOOST_TEST(emit::latex_width(lines[i]) <= 150.0, lines[i]);
+        if (i > 0)
+            BOOST_TEST((lines[i].rfind("+ ", 0) == 0 || lines[i].rfind("- ", 0) == 0), lines[i]);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_long_product_breaks_inside_its_widest_sum_in_big_parentheses)
+{
+    GiNaC::ex sum = 0;
+    for (const GiNaC::ex& a : GiNaC::lst{M, m, J})
+        for (const GiNaC::ex& b : GiNaC::lst{vM, vm, vMp})
+            sum += a * b;
+    const auto lines = emit::latex_lines(eps * sum / (M + m), order, nullptr, 150);
+    BOOST_TEST_REQUIRE(lines.size() > 1u);
+    BOOST_TEST(lines.front().rfind("\\frac{\\epsilon}{M + m} \\Bigl(", 0) == 0, lines.front());
+    BOOST_TEST(lines.back().substr(lines.back().size() - 6) == "\\Bigr)");
+}
+
+BOOST_AUTO_TEST_CASE(widths_count_the_wider_part_of_a_fraction)
+{
+    BOOST_TEST(emit::latex_width("\\frac{a}{b}") < emit::latex_width("ab"));
+    BOOST_TEST(emit::latex_width("\\frac{abcdef}{b}") > emit::latex_width("abcde"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(fragments)
+
+BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
+{
+    const std::string tex = emit::latex_fragment(derived("inelastic_line"));
+    // Givens with their justifications, numbered and labelled for the steps.
+    BOOST_TEST(contains(tex, "The impulse J changes the momentum of M by -J (Eq.~6):\n\\begin{align}"));
+    BOOST_TEST(contains(tex, "\\tag{G1}\\label{impact:inelastic_line:impulse_M}"));
+    // The step refers to the equations it solves.
+    BOOST_TEST(contains(tex, "Solving \\eqref{impact:inelastic_line:impulse_M}, "
+                             "\\eqref{impact:inelastic_line:impulse_m} and "
+                             "\\eqref{impact:inelastic_line:restitution} for"));
+    // The results in their display forms, numbered 8a-8c.
+    BOOST_TEST(contains(tex, "v'_{M,\\parallel} &= \\frac{M v_{M,\\parallel} + m v_{m,\\parallel} + \\epsilon m "
+                             "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag{8a}"));
+    BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag{8c}"));
+    // Checks with status; the paper's Eq. 7 found wanting.
+    BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
+                             "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));
+    BOOST_TEST(contains(tex, "Eq.~7, \\texttt{restitution}: printed $v_{M,\\parallel} - v_{m,\\parallel} = "
+                             "-\\epsilon (v_{M,\\parallel} - v_{m,\\parallel})$ --- \\textbf{disagrees}"));
+}
+
+BOOST_AUTO_TEST_CASE(limits_and_inequalities_say_how_they_were_established)
+{
+    const std::string tex = emit::latex_fragment(derived("scatter_angle"));
+    BOOST_TEST(contains(tex, "$\\lim_{\\epsilon \\to 1} \\cos\\theta = 0$."));
+    BOOST_TEST(contains(tex, "The limit is established by substitution"));
+    BOOST_TEST(contains(tex, "$\\lim_{v_{1,\\perp} \\to \\infty} \\cos\\theta = 0$."));
+    BOOST_TEST(contains(tex, "by substituting $v_{1,\\perp}$ $= 1/t$ and letting $t \\to 0^+$"));
+    BOOST_TEST(contains(tex, "$\\cos\\theta \\geq 0$."));
+    BOOST_TEST(contains(tex, "From the signs of its factors: "));
+}
+
+BOOST_AUTO_TEST_CASE(fragments_are_the_same_on_every_run)
+{
+    const engine::derivation& d = derived("energy_loss_impulse");
+    BOOST_TEST(emit::latex_fragment(d) == emit::latex_fragment(d));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,315 @@
+// Simulation and figures through the generated kernels, checked against physics laws
+// and closed forms typed here: contact times, exchanged velocities, right angles,
+// conserved momentum, the energy lost (Eq. 11), and Eq. 14 as an arctangent.
+#define BOOST_TEST_MODULE test_simulate
+#include <boost/test/unit_test.hpp>
+
+#include "simulate/command.h"
+#include "simulate/figures.h"
+#include "simulate/simulate.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace impact;
+using namespace impact::simulate;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+scenario head_on(double eps, double mass_M = 1, double mass_m = 1)
+{
+    scenario s;
+    s.name = "head_on";
+    s.eps = eps;
+    s.M = {mass_M, 0.5, {0, 0}, {0, 0}};
+    s.m = {mass_m, 0.5, {-3, 0}, {1, 0}};
+    return s;
+}
+
+double dot(const vec2& a, const vec2& b)
+{
+    return a[0] * b[0] + a[1] * b[1];
+}
+
+struct run_result {
+    int status = -1;
+    std::string output;
+};
+
+run_result run_impact(const std::string& arguments)
+{
+    const std::string command = std::string(IMPACT_BINARY) + " " + arguments + " 2>&1";
+    run_result r;
+    FILE* pipe = popen(command.c_str(), "r");
+    BOOST_REQUIRE(pipe);
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), buffer.size(), pipe))
+        r.output += buffer.data();
+    const int status = pclose(pipe);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+struct scratch {
+    fs::path root = fs::temp_directory_path() / ("impact-simulate-" + std::to_string(::getpid()));
+    scratch() { fs::create_directories(root); }
+    ~scratch() { fs::remove_all(root); }
+    std::string write(const std::string& name, const std::string& text) const
+    {
+        std::ofstream(root / name) << text;
+        return (root / name).string();
+    }
+};
+
+// The numbers of one row of a figure table whose first column is `x`.
+std::vector<double> row_at(const std::string& table, const std::string& x)
+{
+    std::istringstream lines(table);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.rfind(x + " ", 0) != 0)
+            continue;
+        std::istringstream fields(line);
+        std::vector<double> values;
+        double v;
+        while (fields >> v)
+            values.push_back(v);
+        return values;
+    }
+    return {};
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(physics)
+
+BOOST_AUTO_TEST_CASE(head_on_spheres_touch_when_the_gap_closes)
+{
+    // Centres 3 apart, radii 0.5 each, closing at speed 1: contact at t = 2.
+    const auto t = time_of_contact(head_on(1));
+    BOOST_TEST_REQUIRE(t.has_value());
+    BOOST_TEST(*t == 2.0, boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(equal_masses_elastic_head_on_exchange_velocities)
+{
+    const trajectory path = run(head_on(1));
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    BOOST_TEST(path.hit->v_M_after[0] == 1.0, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(std::abs(path.hit->v_m_after[0]) < 1e-14);
+    BOOST_TEST(std::abs(path.hit->v_M_after[1]) < 1e-14);
+}
+
+BOOST_AUTO_TEST_CASE(perfectly_inelastic_head_on_spheres_move_on_together)
+{
+    const trajectory path = run(head_on(0));
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    BOOST_TEST(path.hit->v_M_after[0] == 0.5, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(path.hit->v_m_after[0] == 0.5, boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(an_elastic_off_centre_billiard_shot_scatters_at_a_right_angle)
+{
+    scenario s = head_on(1);
+    s.m.position = {-3, 0.5};   // off-centre by one radius
+    const trajectory path = run(s);
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    const contact& c = *path.hit;
+    BOOST_TEST(std::abs(dot(c.v_M_after, c.v_m_after)) < 1e-14);
+    // The object ball leaves along the line of centres at contact.
+    const vec2 line{c.C_M[0] - c.C_m[0], c.C_M[1] - c.C_m[1]};
+    BOOST_TEST(std::abs(line[0] * c.v_M_after[1] - line[1] * c.v_M_after[0]) < 1e-14);
+    // The cue ball keeps its velocity across the line: (1, 0) · (1/2, √3/2) = 1/2 along that direction.
+    BOOST_TEST(std::hypot(c.v_m_after[0], c.v_m_after[1]) == 0.5, boost::test_tools::tolerance(1e-13));
+}
+
+BOOST_AUTO_TEST_CASE(momentum_is_conserved_and_energy_lost_as_eq11_says)
+{
+    scenario s = head_on(0.4, 3.0, 1.25);
+    s.m.position = {-4, 0.3};
+    s.M.velocity = {-0.2, 0.1};
+    s.m.velocity = {1.1, -0.05};
+    const trajectory path = run(s);
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    const contact& c = *path.hit;
+    for (int k = 0; k < 2; ++k)
+        BOOST_TEST(s.M.mass * c.v_M_after[k] + s.m.mass * c.v_m_after[k] ==
+                       s.M.mass * c.v_M_before[k] + s.m.mass * c.v_m_before[k],
+                   boost::test_tools::tolerance(1e-13));
+    // Eq. 11: ΔE = -(1 - ε²)/2 · M m/(M + m) · (relative velocity along the line)².
+    const vec2 line{c.C_M[0] - c.C_m[0], c.C_M[1] - c.C_m[1]};
+    const double n = std::hypot(line[0], line[1]);
+    const double relative = ((c.v_M_before[0] - c.v_m_before[0]) * line[0] +
+                             (c.v_M_before[1] - c.v_m_before[1]) * line[1]) / n;
+    const double expected = -(1 - 0.4 * 0.4) / 2 * (3.0 * 1.25 / 4.25) * relative * relative;
+    auto energy = [&](const vec2& vM, const vec2& vm) { return 0.5 * s.M.mass * dot(vM, vM) + 0.5 * s.m.mass * dot(vm, vm); };
+    BOOST_TEST(energy(c.v_M_after, c.v_m_after) - energy(c.v_M_before, c.v_m_before) == expected,
+               boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(spheres_that_pass_each_other_never_touch)
+{
+    scenario s = head_on(1);
+    s.m.position = {-3, 1.5};   // the paths are 1.5 apart, the radii add up to 1
+    const trajectory path = run(s);
+    BOOST_TEST(!path.hit.has_value());
+    BOOST_TEST(!path.later_contact.has_value());
+    BOOST_TEST(summary(s, path).find("the spheres never touch") != std::string::npos);
+    // Moving apart: never either.
+    s = head_on(1);
+    s.m.velocity = {-1, 0};
+    BOOST_TEST(!time_of_contact(s).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(a_contact_after_the_simulated_time_is_reported_as_such)
+{
+    scenario s = head_on(1);
+    s.duration = 1.0;
+    const trajectory path = run(s);
+    BOOST_TEST(!path.hit.has_value());
+    BOOST_TEST_REQUIRE(path.later_contact.has_value());
+    BOOST_TEST(summary(s, path).find("do not touch before t = 1.0000 (they would at t = 2.0000)") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_trajectory_table_has_the_contact_as_a_row)
+{
+    scenario s = head_on(1);
+    s.duration = 2.5;
+    s.samples = 2;   // t = 0 and 2.5: the contact at t = 2 is added between them
+    const std::string text = table(s, run(s));
+    BOOST_TEST(text.find("t x_M y_M x_m y_m\n") != std::string::npos);
+    BOOST_TEST(text.find("\n2.0000 0.0000 0.0000 -1.0000 0.0000\n") != std::string::npos, text);
+    BOOST_TEST(text.find("\n2.5000 0.5000 0.0000 -1.0000 0.0000\n") != std::string::npos, text);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(scenarios)
+
+BOOST_AUTO_TEST_CASE(a_scenario_file_is_read)
+{
+    const scenario s = parse_scenario("name = \"x\"\neps = 0.5\nduration = 4\n"
+                                      "[M]\nmass = 2\nradius = 0.25\nposition = [1, 2]\nvelocity = [0, -1]\n"
+                                      "[m]\nmass = 1.5\nradius = 0.5\nposition = [-2, 2]\nvelocity = [1, 0]\n",
+                                      "x.toml");
+    BOOST_TEST(s.name == "x");
+    BOOST_TEST(s.eps == 0.5);
+    BOOST_TEST(*s.duration == 4.0);
+    BOOST_TEST(s.M.mass == 2.0);
+    BOOST_TEST(s.M.position[1] == 2.0);
+    BOOST_TEST(s.m.velocity[0] == 1.0);
+}
+
+BOOST_AUTO_TEST_CASE(bad_scenarios_are_refused_with_their_place)
+{
+    const std::string spheres = "[M]\nmass = 1\nradius = 0.5\nposition = [0, 0]\nvelocity = [0, 0]\n"
+                                "[m]\nmass = 1\nradius = 0.5\nposition = [-3, 0]\nvelocity = [1, 0]\n";
+    auto refused = [](const std::string& text, const std::string& what) {
+        try {
+            parse_scenario(text, "bad.toml");
+        } catch (const impact::error& e) {
+            BOOST_TEST(std::string(e.what()).find(what) != std::string::npos, e.what());
+            return;
+        }
+        BOOST_ERROR("accepted: " + text);
+    };
+    refused("eps = 1.5\n" + spheres, "eps = 1.5 is outside [0, 1]");
+    refused("eps = 1\nspeed = 3\n" + spheres, "bad.toml:2:");
+    refused("eps = 1\n" + spheres.substr(0, spheres.find("[m]")), "needs a table [m]");
+    refused("eps = \"one\"\n" + spheres, "'eps' in the scenario must be a number");
+    std::string overlapping = spheres;
+    overlapping.replace(overlapping.find("[-3, 0]"), 7, "[-0.5, 0]");
+    refused("eps = 1\n" + overlapping, "the spheres overlap at the start");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(figures)
+
+BOOST_AUTO_TEST_CASE(fig3_follows_eq14_as_an_arctangent)
+{
+    const auto files = figure_files();
+    const std::string& by_perp = files.at("figures/scatter_angle_vs_v_perp.dat");
+    // Columns eps = 0, 1/3, 2/3, 0.9, 1; θ = atan(2 v⊥ / ((1 - ε) v∥)), v∥ = 1.
+    const std::vector<double> row = row_at(by_perp, "0.500");
+    BOOST_TEST_REQUIRE(row.size() == 6u);
+    const double eps[] = {0, 1.0 / 3, 2.0 / 3, 0.9};
+    for (int j = 0; j < 4; ++j)
+        BOOST_TEST(row[j + 1] == std::atan(2 * 0.5 / (1 - eps[j])) * 180 / pi, boost::test_tools::tolerance(1e-5));
+    BOOST_TEST(row[5] == 90.0);   // elastic: a right angle
+    const std::string& by_eps = files.at("figures/scatter_angle_vs_eps.dat");
+    const std::vector<double> at_zero = row_at(by_eps, "0.00");
+    BOOST_TEST_REQUIRE(at_zero.size() == 6u);
+    BOOST_TEST(at_zero[1] == std::atan(0.2) * 180 / pi, boost::test_tools::tolerance(1e-5));
+}
+
+BOOST_AUTO_TEST_CASE(fig2_draws_three_billiard_shots_to_scale)
+{
+    const auto files = figure_files();
+    for (const char* name : {"figures/billiard_eps_1.dat", "figures/billiard_eps_2_3.dat",
+                             "figures/billiard_eps_1_3.dat", "figures/billiard.tex"})
+        BOOST_TEST(files.count(name) == 1u, name);
+    const std::string& tex = files.at("figures/billiard.tex");
+    BOOST_TEST(tex.find("axis equal image") != std::string::npos);
+    BOOST_TEST(tex.find("title={$\\epsilon = 2/3$}") != std::string::npos);
+    // The elastic shot: after contact the object ball leaves along the line of centres,
+    // at 30 degrees below the x axis (an off-centre hit by one radius).
+    const std::vector<double> last = row_at(files.at("figures/billiard_eps_1.dat"), "5.0000");
+    BOOST_TEST_REQUIRE(last.size() == 5u);
+    BOOST_TEST(std::atan2(last[2], last[1]) * 180 / pi == -30.0, boost::test_tools::tolerance(1e-3));
+}
+
+BOOST_AUTO_TEST_CASE(figures_are_the_same_bytes_every_time)
+{
+    BOOST_TEST((figure_files() == figure_files()));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(command)
+
+BOOST_AUTO_TEST_CASE(simulate_writes_a_table_and_a_figure)
+{
+    const scratch s;
+    const std::string file = s.write("shot.toml", "name = \"shot\"\neps = 0.5\n"
+                                                  "[M]\nmass = 1\nradius = 0.5\nposition = [0, 0]\nvelocity = [0, 0]\n"
+                                                  "[m]\nmass = 1\nradius = 0.5\nposition = [-3, 0]\nvelocity = [1, 0]\n");
+    const run_result r = run_impact("simulate " + file + " --output " + s.root.string());
+    BOOST_TEST(r.status == 0, r.output);
+    BOOST_TEST(r.output.find("contact at t = 2.0000") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("v_m (1.0000, 0.0000) -> (0.2500, 0.0000)") != std::string::npos, r.output);
+    BOOST_TEST(fs::exists(s.root / "shot.dat"));
+    std::ifstream in(s.root / "shot.tex");
+    std::ostringstream tex;
+    tex << in.rdbuf();
+    BOOST_TEST(tex.str().find("table[x=x_M, y=y_M] {shot.dat}") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(simulate_says_when_the_spheres_never_touch)
+{
+    const scratch s;
+    const run_result r = run_impact("simulate --position-m=-3,2 --output " + s.root.string());
+    BOOST_TEST(r.status == 0, r.output);
+    BOOST_TEST(r.output.find("the spheres never touch") != std::string::npos, r.output);
+}
+
+BOOST_AUTO_TEST_CASE(simulate_refuses_bad_options)
+{
+    const run_result r = run_impact("simulate --eps 2 --output /tmp");
+    BOOST_TEST(r.status == 2, r.output);
+    BOOST_TEST(r.output.find("eps = 2 is outside [0, 1]") != std::string::npos, r.output);
+    const run_result p = run_impact("simulate --velocity-m 1 --output /tmp");
+    BOOST_TEST(p.status == 2, p.output);
+    BOOST_TEST(p.output.find("'1' must be two numbers x,y") != std::string::npos, p.output);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
