@@ -187,6 +187,13 @@ BOOST_AUTO_TEST_CASE(an_expression_that_does_not_parse)
                    "derivations/bad.toml:12:17: error: expression \"(2*x\" does not parse: expected ')', got: EOF");
 }
 
+BOOST_AUTO_TEST_CASE(an_expression_over_two_lines_is_still_reported_on_one)
+{
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"\"\"y =\n(2*x\"\"\"\nbecause = \"b\"\n"
+                            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:16: error: expression \" (2*x\" does not parse: expected ')', got: EOF");
+}
+
 BOOST_AUTO_TEST_CASE(a_symbol_declared_twice)
 {
     expect_refused(prefix + "[[symbol]]\nname = \"y\"\n[[result]]\nname = \"y\"\n",
@@ -249,6 +256,31 @@ BOOST_AUTO_TEST_CASE(a_step_that_divides_by_zero)
                             "[[step]]\nquotient = [\"a\", \"b\"]\nname = \"c\"\n"
                             "[[result]]\nname = \"y\"\n",
                    "derivations/bad.toml:18:1: error: equation 'b' has a side that is zero: division by zero");
+}
+
+BOOST_AUTO_TEST_CASE(a_number_too_large_to_compute)
+{
+    // GiNaC would compute 2^(10^9) while reading it, for minutes and gigabytes.
+    expect_refused(prefix + "[[step]]\ndefine = \"y\"\nas = \"x*2^(10^9)\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:6: error: expression \"x*2^(10^9)\" computes a number of more than "
+                   "30 000 digits");
+    expect_refused(prefix + "[[step]]\ndefine = \"y\"\nas = \"(x + 1)^100000\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:6: error: expression \"(x + 1)^100000\" raises to a power above 1000");
+    expect_refused(prefix + "[[step]]\ndefine = \"y\"\nas = \"x*factorial(10^7)\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:6: error: expression \"x*factorial(10^7)\" takes factorial of a number "
+                   "above 1000");
+}
+
+BOOST_AUTO_TEST_CASE(an_expression_nested_too_deep)
+{
+    // GiNaC's parser would overflow the stack: a crash, not an error.
+    const std::string deep = std::string(10000, '(') + "x" + std::string(10000, ')');
+    expect_refused(prefix + "[[step]]\ndefine = \"y\"\nas = \"" + deep + "\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:6: error: expression \"((((((((((((((((((((...\" nests brackets or signs "
+                   "more than 200 deep");
+    expect_refused(prefix + "[[step]]\ndefine = \"y\"\nas = \"" + std::string(10000, '-') + "x\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:6: error: expression \"--------------------...\" nests brackets or signs "
+                   "more than 200 deep");
 }
 
 BOOST_AUTO_TEST_CASE(using_a_derivation_that_does_not_exist)

@@ -16,7 +16,7 @@ GiNaC::ex simplified(const GiNaC::ex& e, const assumptions& given)
 {
     // factor() is by far the engine's most expensive call; a long numerator is left
     // expanded (a derivation states the form it wants typeset as its display form).
-    constexpr std::size_t longest_factored = 6;
+    constexpr std::size_t longest_factored = 4;
     const GiNaC::ex nd = GiNaC::normal(simplify_radicals(e, given)).numer_denom();
     auto factored = [&](const GiNaC::ex& p) { return p.nops() > longest_factored ? p : factor_polynomial(p); };
     return simplify_radicals(factored(nd.op(0)) / factored(nd.op(1)), given);
@@ -64,14 +64,28 @@ private:
     // Replaces every derived quantity by its value and every abbreviation by its definition.
     GiNaC::ex resolve(const GiNaC::ex& e) const
     {
+        // The same expressions are resolved again and again (checks, claims, forms): kept
+        // until a step derives a new value.
+        const auto known = resolved_.find(e);
+        if (known != resolved_.end())
+            return known->second;
+        const GiNaC::exmap abbreviations = out_.symbols.abbreviations();
         GiNaC::ex now = e;
         for (int depth = 0; depth < 8; ++depth) {
-            const GiNaC::ex next = now.subs(values_).subs(out_.symbols.abbreviations());
+            const GiNaC::ex next = now.subs(values_, GiNaC::subs_options::no_pattern)
+                                       .subs(abbreviations, GiNaC::subs_options::no_pattern);
             if (next.is_equal(now))
-                return now;
+                break;
             now = next;
         }
+        resolved_.emplace(e, now);
         return now;
+    }
+
+    void set_value(const GiNaC::ex& symbol, const GiNaC::ex& value)
+    {
+        values_[symbol] = value;
+        resolved_.clear();
     }
 
     engine::resolver resolver() const
@@ -106,7 +120,7 @@ private:
                 q.where = b.name.where;
                 local = &out_.symbols.adopt(q);
             }
-            values_[local->symbol] = r->value.subs(rename);
+            set_value(local->symbol, r->value.subs(rename));
         }
     }
 
@@ -223,7 +237,7 @@ private:
             r.checks.push_back(std::move(c));
         }
         for (const auto& [symbol, value] : solved)
-            values_[symbol] = value;
+            set_value(symbol, value);
     }
 
     void define(const spec::step& st, step_result& r)
@@ -234,7 +248,7 @@ private:
             throw error(st.name.where, fmt::format("'{}' is already derived by an earlier step", st.name.value));
         // Radicals of squares come out by the declared signs: sqrt(u^2) = u for u >= 0.
         const GiNaC::ex value = simplified(resolve(out_.symbols.parse(st.expression)), declared_assumptions(out_.symbols));
-        values_[s] = value;
+        set_value(s, value);
         r.values.emplace_back(s, value);
     }
 
@@ -697,6 +711,7 @@ private:
     GiNaC::exmap kernel_substitutions_;
     std::vector<equation> equations_;
     GiNaC::exmap values_;
+    mutable std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> resolved_;
 };
 
 } // namespace

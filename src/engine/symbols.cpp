@@ -5,7 +5,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
 #include <sstream>
 
 namespace impact::engine {
@@ -40,6 +45,168 @@ std::string clean_parser_message(std::string message)
     }
     return message;
 }
+
+// GiNaC's parser recurses once per bracket and per sign in front of an operand: an
+// expression nested thousands deep would overflow the stack, so it is refused first.
+void refuse_deep_nesting(const source_location& where, const std::string& text)
+{
+    constexpr int max_depth = 200;
+    int brackets = 0;
+    int signs = 0;
+    for (const char c : text) {
+        if (c == '(' || c == '[' || c == '{')
+            ++brackets;
+        else if (c == ')' || c == ']' || c == '}')
+            brackets = std::max(0, brackets - 1);
+        if (c == '+' || c == '-')
+            ++signs;
+        else if (c != ' ' && c != '\t' && c != '(')
+            signs = 0;
+        if (brackets + signs > max_depth)
+            throw error(where, fmt::format("expression \"{}...\" nests brackets or signs more than {} deep",
+                                           text.substr(0, 20), max_depth));
+    }
+}
+
+// GiNaC computes with numbers as it reads them: 2^(10^9) or factorial(10^7) would take
+// the machine's time and memory before any check ran. So an expression is first read
+// with each number replaced by a placeholder symbol, where nothing is computed, and the
+// size of what reading it for real would compute is bounded (the bounds are far beyond
+// any physics: powers up to the 1000th, numbers up to some 30 000 digits).
+class number_bounds {
+public:
+    static constexpr double max_bits = 1e5;
+    static constexpr double max_exponent = 1000;
+
+    number_bounds(const GiNaC::symtab& declared, const std::string& text) : table_(declared)
+    {
+        for (std::size_t i = 0; i < text.size();) {
+            const auto c = static_cast<unsigned char>(text[i]);
+            std::size_t end = i + 1;
+            if (std::isalpha(c) || c == '_') {
+                while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))
+                    ++end;
+            } else if (std::isdigit(c)) {
+                const auto digits = [&] {
+                    while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])))
+                        ++end;
+                };
+                digits();
+                if (end + 1 < text.size() && text[end] == '.' && std::isdigit(static_cast<unsigned char>(text[end + 1]))) {
+                    ++end;
+                    digits();
+                }
+                const GiNaC::symbol placeholder("impact_number_" + std::to_string(literals_.size()) + "_");
+                table_[placeholder.get_name()] = placeholder;
+                literals_.emplace(placeholder, text.substr(i, end - i));
+                shape_ += " " + placeholder.get_name() + " ";
+                i = end;
+                continue;
+            }
+            shape_ += text.substr(i, end - i);
+            i = end;
+        }
+    }
+
+    // Throws `error` at `where` when the expression would compute too large a number.
+    void check(const source_location& where, const std::string& text) const
+    {
+        GiNaC::ex shape;
+        try {
+            shape = GiNaC::parser(table_, /*strict=*/true)(shape_);
+        } catch (...) {
+            return;  // reading it for real reports what is wrong
+        }
+        size(shape, where, text);
+    }
+
+private:
+    // Bits of the exact number a subexpression of numbers only comes to; nullopt when it
+    // holds a declared quantity (then nothing is computed until a substitution).
+    std::optional<double> size(const GiNaC::ex& e, const source_location& where, const std::string& text) const
+    {
+        if (GiNaC::is_a<GiNaC::symbol>(e)) {
+            const auto literal = literals_.find(e);
+            if (literal == literals_.end())
+                return std::nullopt;
+            const std::string& digits = literal->second;
+            if (digits.find('.') != std::string::npos)
+                return 64.0;  // a float: its size does not grow
+            return digits.size() <= 15 ? std::log2(std::max(1.0, std::stod(digits))) : 3.33 * digits.size();
+        }
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
+            return n.is_rational() ? double(n.numer().int_length() + n.denom().int_length()) : 64.0;
+        }
+        if (GiNaC::is_a<GiNaC::constant>(e))
+            return 64.0;
+        if (GiNaC::is_a<GiNaC::power>(e)) {
+            const auto base = size(e.op(0), where, text);
+            const auto exponent = size(e.op(1), where, text);
+            if (!exponent)
+                return std::nullopt;
+            const double power = *exponent > 64 ? HUGE_VAL : std::abs(value(e.op(1)));
+            if (!base && power > max_exponent)
+                throw error(where, fmt::format("expression \"{}\" raises to a power above {}", text, max_exponent));
+            if (!base)
+                return std::nullopt;
+            return bounded(*base * std::max(1.0, power), where, text);
+        }
+        if (GiNaC::is_a<GiNaC::function>(e)) {
+            // Integer functions GiNaC evaluates exactly: factorial(n) has about n log2(n) bits.
+            static const std::set<std::string> exact = {"factorial", "binomial", "tgamma", "lgamma", "zeta",
+                                                        "psi", "beta", "doublefactorial", "bernoulli"};
+            bool pure = true;
+            for (const GiNaC::ex& argument : e) {
+                const auto bits = size(argument, where, text);
+                pure = pure && bits;
+                if (bits && exact.count(GiNaC::ex_to<GiNaC::function>(e).get_name()) &&
+                    (*bits > 64 || std::abs(value(argument)) > max_exponent))
+                    throw error(where, fmt::format("expression \"{}\" takes {} of a number above {}", text,
+                                                   GiNaC::ex_to<GiNaC::function>(e).get_name(), max_exponent));
+            }
+            return pure ? std::optional<double>(64.0) : std::nullopt;
+        }
+        // Sums and products: the sizes add up (a sum of n terms gains log2(n) bits more).
+        double bits = std::log2(double(e.nops()) + 1);
+        bool pure = GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e);
+        for (const GiNaC::ex& operand : e) {
+            const auto operand_bits = size(operand, where, text);
+            pure = pure && operand_bits;
+            bits += operand_bits.value_or(0);
+        }
+        bounded(bits, where, text);
+        return pure ? std::optional<double>(bits) : std::nullopt;
+    }
+
+    double bounded(double bits, const source_location& where, const std::string& text) const
+    {
+        if (bits > max_bits)
+            throw error(where, fmt::format("expression \"{}\" computes a number of more than 30 000 digits", text));
+        return bits;
+    }
+
+    // The value of a small subexpression of numbers only.
+    double value(const GiNaC::ex& e) const
+    {
+        try {
+            GiNaC::exmap numbers;
+            for (const auto& [placeholder, literal] : literals_)
+                if (e.has(placeholder))
+                    numbers[placeholder] = GiNaC::numeric(literal.c_str());
+            const GiNaC::ex v = GiNaC::evalf(e.subs(numbers));
+            if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+                return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+        } catch (const std::exception&) {
+            // 1/0 and the like: reading it for real reports it
+        }
+        return 0;
+    }
+
+    GiNaC::symtab table_;
+    std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> literals_;
+    std::string shape_;
+};
 
 } // namespace
 
@@ -123,6 +290,8 @@ GiNaC::ex symbol_table::parse(const spec::text& text) const
 {
     if (text.value.find_first_not_of(" \t\r\n") == std::string::npos)
         throw error(text.where, "empty expression");
+    refuse_deep_nesting(text.where, text.value);
+    number_bounds(table_, text.value).check(text.where, text.value);
     try {
         GiNaC::parser reader(table_, /*strict=*/true);
         return reader(text.value);

@@ -12,7 +12,7 @@ namespace impact {
 ///   v_M: velocity of M along the line of action before the collision (real)
 ///   v_m: velocity of m along the line of action before the collision (real)
 ///   eps: Newton's coefficient of restitution ([0, 1])
-/// dE is computed in the form "derived, compensated": at most 0.50 ulps in double on 4200 samples.
+/// dE is computed in the form "-(1 - eps)*(1 + eps)*M*m*(v_M - v_m)^2/(2*(M + m)), compensated": at most 0.50 ulps in double on 4200 samples.
 template <class Real>
 inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
