@@ -71,6 +71,8 @@ public:
         if (known != given_.signs->end())
             return known->second;
         auto decided = decide(e, depth);
+        if (given_.signs->size() >= 4096)  // bounded, as the factor cache
+            given_.signs->clear();
         given_.signs->emplace(e, decided);
         return decided;
     }
@@ -262,6 +264,8 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e)
     if (known != factored.end())
         return known->second;
     const GiNaC::ex f = GiNaC::factor(e);
+    if (factored.size() >= 4096)  // bounded: a long run (the fuzzer) meets ever new polynomials
+        factored.clear();
     factored.emplace(e, f);
     return f;
 }
