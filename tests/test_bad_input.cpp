@@ -7,6 +7,8 @@
 #define BOOST_TEST_MODULE test_bad_input
 #include <boost/test/unit_test.hpp>
 
+#include "support.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,37 +25,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct run_result {
-    bool exited = false;   // false when the process was killed
-    int status = -1;
-    std::string output;    // stdout and stderr together
-};
-
-// Every file under `root`, by relative path, with its bytes.
-std::map<std::string, std::string> snapshot(const fs::path& root)
-{
-    std::map<std::string, std::string> files;
-    if (!fs::exists(root))
-        return files;
-    for (const auto& entry : fs::recursive_directory_iterator(root)) {
-        if (!entry.is_regular_file())
-            continue;
-        std::ifstream in(entry.path(), std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        files[fs::relative(entry.path(), root).generic_string()] = bytes.str();
-    }
-    return files;
-}
-
-std::vector<std::string> lines_of(const std::string& text)
-{
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
-    return lines;
-}
+using impact::testing::lines_of;
+using impact::testing::run_result;
+using impact::testing::snapshot;
 
 // A scratch folder holding derivations/ and an output/ from an earlier run; `impact`
 // runs inside it, so that messages name `derivations/<file>` as a user would see them.
@@ -80,18 +54,8 @@ struct scratch {
     run_result impact(const std::string& arguments, const std::string& environment = "") const
     {
         // `exec`: a killed `impact` is seen as killed, not as a shell exiting with 137.
-        const std::string command = "cd '" + root.string() + "' && " + environment + " exec " + IMPACT_BINARY +
-                                    " " + arguments + " 2>&1";
-        run_result r;
-        FILE* pipe = popen(command.c_str(), "r");
-        BOOST_REQUIRE(pipe);
-        std::array<char, 4096> buffer{};
-        while (std::fgets(buffer.data(), buffer.size(), pipe))
-            r.output += buffer.data();
-        const int status = pclose(pipe);
-        r.exited = WIFEXITED(status);
-        r.status = r.exited ? WEXITSTATUS(status) : -1;
-        return r;
+        return impact::testing::run_command("cd '" + root.string() + "' && " + environment + " exec " +
+                                            IMPACT_BINARY + " " + arguments);
     }
 
     run_result regenerate(const std::string& environment = "") const

@@ -3,6 +3,8 @@
 #define BOOST_TEST_MODULE test_cli
 #include <boost/test/unit_test.hpp>
 
+#include "support.h"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -17,41 +19,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path source_dir = IMPACT_SOURCE_DIR;
-
-struct run_result {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
+using impact::testing::run_result;
+using impact::testing::snapshot;
 
 run_result run(const std::string& arguments)
 {
-    const std::string command = std::string(IMPACT_BINARY) + " " + arguments + " 2>&1";
-    run_result r;
-    FILE* pipe = popen(command.c_str(), "r");
-    BOOST_REQUIRE(pipe);
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe))
-        r.output += buffer.data();
-    const int status = pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return impact::testing::run_impact(arguments);
 }
 
-// Every file under `root`, by relative path, with its bytes.
-std::map<std::string, std::string> snapshot(const fs::path& root)
-{
-    std::map<std::string, std::string> files;
-    for (const auto& entry : fs::recursive_directory_iterator(root)) {
-        if (!entry.is_regular_file())
-            continue;
-        std::ifstream in(entry.path(), std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        files[fs::relative(entry.path(), root).generic_string()] = bytes.str();
-    }
-    return files;
-}
+const fs::path source_dir = IMPACT_SOURCE_DIR;
 
 // A scratch folder with a copy of derivations/ and an output/ holding a marker file.
 struct scratch {

@@ -4,6 +4,8 @@
 #define BOOST_TEST_MODULE test_simulate
 #include <boost/test/unit_test.hpp>
 
+#include "support.h"
+
 #include "simulate/command.h"
 #include "simulate/figures.h"
 #include "simulate/simulate.h"
@@ -23,6 +25,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using impact::testing::run_impact;
+using impact::testing::run_result;
+
 constexpr double pi = 3.14159265358979323846;
 
 scenario head_on(double eps, double mass_M = 1, double mass_m = 1)
@@ -38,25 +43,6 @@ scenario head_on(double eps, double mass_M = 1, double mass_m = 1)
 double dot(const vec2& a, const vec2& b)
 {
     return a[0] * b[0] + a[1] * b[1];
-}
-
-struct run_result {
-    int status = -1;
-    std::string output;
-};
-
-run_result run_impact(const std::string& arguments)
-{
-    const std::string command = std::string(IMPACT_BINARY) + " " + arguments + " 2>&1";
-    run_result r;
-    FILE* pipe = popen(command.c_str(), "r");
-    BOOST_REQUIRE(pipe);
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe))
-        r.output += buffer.data();
-    const int status = pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
 }
 
 struct scratch {

@@ -1,0 +1,73 @@
+// What the end-to-end tests share: running a command and reading back a folder.
+#pragma once
+
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace impact::testing {
+
+struct run_result {
+    bool exited = false;   ///< false when the process was killed
+    int status = -1;       ///< its exit status when it exited
+    std::string output;    ///< stdout and stderr together
+};
+
+/// Runs a shell command, capturing what it prints.
+inline run_result run_command(const std::string& command)
+{
+    run_result r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    BOOST_REQUIRE(pipe);
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), buffer.size(), pipe))
+        r.output += buffer.data();
+    const int status = pclose(pipe);
+    r.exited = WIFEXITED(status);
+    r.status = r.exited ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+/// Runs the `impact` binary under test with `arguments`.
+inline run_result run_impact(const std::string& arguments)
+{
+    return run_command(std::string(IMPACT_BINARY) + " " + arguments);
+}
+
+/// Every file under `root` (none if it does not exist), by relative path, with its bytes.
+inline std::map<std::string, std::string> snapshot(const std::filesystem::path& root)
+{
+    std::map<std::string, std::string> files;
+    if (!std::filesystem::exists(root))
+        return files;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file())
+            continue;
+        std::ifstream in(entry.path(), std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        files[std::filesystem::relative(entry.path(), root).generic_string()] = bytes.str();
+    }
+    return files;
+}
+
+/// The lines of `text`.
+inline std::vector<std::string> lines_of(const std::string& text)
+{
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    return lines;
+}
+
+} // namespace impact::testing
