@@ -83,8 +83,15 @@ json derivation_json(const engine::derivation& d)
         for (const engine::kernel_parameter& p : k.parameters)
             kj["inputs"].push_back(p.name);
         kj["outputs"] = json::object();
-        for (const engine::kernel_output& o : k.outputs)
-            kj["outputs"][o.member] = ginac_syntax(o.values.front(), order);
+        for (const engine::kernel_output& o : k.outputs) {
+            if (!o.is_array) {
+                kj["outputs"][o.member] = ginac_syntax(o.values.front(), order);
+                continue;
+            }
+            kj["outputs"][o.member] = json::array();
+            for (const GiNaC::ex& component : o.values)
+                kj["outputs"][o.member].push_back(ginac_syntax(component, order));
+        }
         j["kernels"].push_back(kj);
     }
     return j;
