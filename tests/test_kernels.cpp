@@ -371,17 +371,20 @@ BOOST_AUTO_TEST_CASE(the_batch_kernel_gives_the_scalar_results_bit_for_bit)
     BOOST_TEST(resolved > n / 2);  // most pairs collide: the comparison covers the arithmetic
 }
 
-BOOST_AUTO_TEST_CASE(inputs_that_allow_no_collision_leave_the_velocities_unchanged_with_a_status)
+// Inputs that allow no collision, each with the status the kernels must give, and a
+// collision that is resolved (status ok), in 2D.
+struct bad_pair {
+    double M, m, eps;
+    std::array<double, 2> C_M, C_m, v_M, v_m;
+    impact::status expected;
+};
+
+std::vector<bad_pair> bad_pairs()
 {
     using impact::status;
     const std::array<double, 2> C_M{1, 0}, C_m{0, 0}, v_M{-1, 0.5}, v_m{1, -0.25};
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
-    struct bad {
-        double M, m, eps;
-        std::array<double, 2> C_M, C_m, v_M, v_m;
-        status expected;
-    };
-    const bad cases[] = {
+    return {
         {2, 1, 0.5, C_m, C_m, v_M, v_m, status::coincident_centres},       // no line of action
         {0, 1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
         {2, -1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
@@ -394,8 +397,15 @@ BOOST_AUTO_TEST_CASE(inputs_that_allow_no_collision_leave_the_velocities_unchang
         {2, 1, 0.5, {nan, 0}, C_m, v_M, v_m, status::non_finite},
         {2, 1, 0.5, C_M, C_m, {1, 0.5}, v_m, status::separating},           // M moves away from m
         {2, 1, 0.5, C_M, C_m, {1, 0}, {1, 0}, status::separating},          // no relative motion
+        {0, 1, 2, C_m, C_m, {inf, 0}, v_m, status::invalid_mass},           // the first guard that fails
     };
-    for (const bad& b : cases) {
+}
+
+BOOST_AUTO_TEST_CASE(inputs_that_allow_no_collision_leave_the_velocities_unchanged_with_a_status)
+{
+    using impact::status;
+    const std::vector<bad_pair> cases = bad_pairs();
+    for (const bad_pair& b : cases) {
         std::feclearexcept(FE_ALL_EXCEPT);
         const auto out = impact::collide(b.M, b.m, b.C_M, b.C_m, b.v_M, b.v_m, b.eps);
         BOOST_TEST(std::fetestexcept(FE_DIVBYZERO) == 0);  // nothing divides by zero, even silently
@@ -406,8 +416,72 @@ BOOST_AUTO_TEST_CASE(inputs_that_allow_no_collision_leave_the_velocities_unchang
         }
     }
     // And a head-on hit of equal masses with eps = 1 exchanges the velocities.
-    const auto out = impact::collide(1.0, 1.0, C_M, C_m, std::array<double, 2>{-1, 0}, std::array<double, 2>{1, 0}, 1.0);
+    const auto out = impact::collide(1.0, 1.0, std::array<double, 2>{1, 0}, std::array<double, 2>{0, 0},
+                                     std::array<double, 2>{-1, 0}, std::array<double, 2>{1, 0}, 1.0);
     BOOST_TEST((out.status == status::ok));
     BOOST_TEST(out.v_M[0] == 1.0);
     BOOST_TEST(out.v_m[0] == -1.0);
+}
+
+// The batch loop decides every status without branches and computes every pair: each bad
+// pair, between resolved ones so that one vector of the loop holds several statuses, must
+// get the scalar kernel's status and keep its velocities, with nothing divided by zero.
+template <class Real>
+void check_batch_statuses(bool with_status)
+{
+    using impact::status;
+    std::vector<bad_pair> pairs;
+    for (const bad_pair& b : bad_pairs()) {
+        pairs.push_back(b);
+        pairs.push_back({3, 2, 0.75, {0.5, 1}, {0, -0.5}, {-1, -2}, {0.25, 1}, status::ok});
+    }
+    const std::size_t n = pairs.size();
+    std::vector<Real> M(n), m(n), eps(n);
+    std::array<std::vector<Real>, 2> C_M, C_m, v_M, v_m;
+    for (auto* a : {&C_M, &C_m, &v_M, &v_m})
+        for (auto& component : *a)
+            component.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        M[i] = static_cast<Real>(pairs[i].M);
+        m[i] = static_cast<Real>(pairs[i].m);
+        eps[i] = static_cast<Real>(pairs[i].eps);
+        for (std::size_t d = 0; d < 2; ++d) {
+            C_M[d][i] = static_cast<Real>(pairs[i].C_M[d]);
+            C_m[d][i] = static_cast<Real>(pairs[i].C_m[d]);
+            v_M[d][i] = static_cast<Real>(pairs[i].v_M[d]);
+            v_m[d][i] = static_cast<Real>(pairs[i].v_m[d]);
+        }
+    }
+    const auto v_M0 = v_M, v_m0 = v_m;
+    std::vector<status> statuses(n, status::ok);
+    impact::collide_batch_data<Real, 2> data{n,           M.data(),     m.data(),
+                                             {C_M[0].data(), C_M[1].data()}, {C_m[0].data(), C_m[1].data()},
+                                             {v_M[0].data(), v_M[1].data()}, {v_m[0].data(), v_m[1].data()},
+                                             eps.data(),  with_status ? statuses.data() : nullptr};
+    std::feclearexcept(FE_ALL_EXCEPT);
+    impact::collide_batch(data);
+    BOOST_TEST(std::fetestexcept(FE_DIVBYZERO) == 0);  // a pair not resolved divides by 1
+    for (std::size_t i = 0; i < n; ++i) {
+        using pair = std::array<Real, 2>;
+        const auto r = impact::collide(M[i], m[i], pair{C_M[0][i], C_M[1][i]}, pair{C_m[0][i], C_m[1][i]},
+                                       pair{v_M0[0][i], v_M0[1][i]}, pair{v_m0[0][i], v_m0[1][i]}, eps[i]);
+        BOOST_TEST((r.status == pairs[i].expected));
+        if (with_status)
+            BOOST_TEST((statuses[i] == pairs[i].expected));
+        for (std::size_t d = 0; d < 2; ++d) {
+            BOOST_TEST(std::memcmp(&r.v_M[d], &v_M[d][i], sizeof(Real)) == 0);
+            BOOST_TEST(std::memcmp(&r.v_m[d], &v_m[d][i], sizeof(Real)) == 0);
+            if (pairs[i].expected != status::ok) {
+                BOOST_TEST(std::memcmp(&v_M0[d][i], &v_M[d][i], sizeof(Real)) == 0);
+                BOOST_TEST(std::memcmp(&v_m0[d][i], &v_m[d][i], sizeof(Real)) == 0);
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_batch_kernel_gives_each_pair_the_scalar_status_and_divides_nothing_by_zero)
+{
+    check_batch_statuses<double>(true);
+    check_batch_statuses<double>(false);
+    check_batch_statuses<float>(true);
 }

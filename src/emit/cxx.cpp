@@ -8,6 +8,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <string_view>
 
 namespace impact::emit {
 
@@ -71,19 +73,34 @@ std::string parameter_type(const engine::kernel_parameter& p)
     return p.is_array ? fmt::format("const std::array<Real, {}>&", p.components.size()) : "Real";
 }
 
-// The test a guard makes: true when the inputs are NOT acceptable. NaN fails every
-// comparison, so each test is written as the negation of what must hold.
-std::string domain_failure(const engine::quantity& q, const std::string& value)
+// The tests a guard makes of one quantity, each true when the value is NOT acceptable.
+// NaN fails every comparison, so each test is the negation of what must hold.
+std::vector<std::string> domain_failures(const engine::quantity& q, const std::string& value)
 {
     switch (q.range.what) {
-    case engine::domain::kind::positive: return fmt::format("!({} > Real(0)) || !std::isfinite({})", value, value);
-    case engine::domain::kind::nonnegative: return fmt::format("!({} >= Real(0)) || !std::isfinite({})", value, value);
+    case engine::domain::kind::positive:
+        return {fmt::format("!({} > Real(0))", value), fmt::format("!std::isfinite({})", value)};
+    case engine::domain::kind::nonnegative:
+        return {fmt::format("!({} >= Real(0))", value), fmt::format("!std::isfinite({})", value)};
     case engine::domain::kind::interval:
-        return fmt::format("!({} {} Real({}) && {} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower,
-                           value, q.range.upper_open ? "<" : "<=", q.range.upper);
+        return {fmt::format("!({} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower),
+                fmt::format("!({} {} Real({}))", value, q.range.upper_open ? "<" : "<=", q.range.upper)};
     case engine::domain::kind::real: break;
     }
-    return fmt::format("!std::isfinite({})", value);
+    return {fmt::format("!std::isfinite({})", value)};
+}
+
+// The tests of a guard on the domains of its parameters.
+std::vector<std::string> guard_failures(const engine::kernel& k, const engine::kernel_guard& g, const std::string& suffix)
+{
+    std::vector<std::string> failures;
+    for (const std::string& name : g.parameters)
+        for (const engine::kernel_parameter& p : k.parameters)
+            if (p.name == name)
+                for (const engine::quantity& q : p.components)
+                    for (std::string& test : domain_failures(q, q.name + suffix))
+                        failures.push_back(std::move(test));
+    return failures;
 }
 
 std::string members_initialiser(const engine::kernel& k)
@@ -101,6 +118,138 @@ std::string members_initialiser(const engine::kernel& k)
     if (!k.guards.empty())
         values.push_back("status::ok");
     return fmt::format("{{{}}}", fmt::join(values, ", "));
+}
+
+// The values the outputs [first, last) of `p` need, directly or through others.
+std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t last)
+{
+    std::vector<bool> needed(p.code.size(), false);
+    for (std::size_t o = first; o < last; ++o)
+        needed[p.outputs[o]] = true;
+    for (std::size_t i = p.code.size(); i-- > 0;)
+        if (needed[i])
+            for (int operand : {p.code[i].a, p.code[i].b, p.code[i].c})
+                if (operand >= 0)
+                    needed[operand] = true;
+    return needed;
+}
+
+// One scalar input of a batch kernel: a component, its array in the batch data, and
+// whether the batch writes it.
+struct lane_input {
+    std::string name;
+    std::string field;
+    bool written = false;
+};
+
+std::vector<lane_input> lane_inputs(const engine::kernel& k)
+{
+    std::vector<lane_input> inputs;
+    for (const engine::kernel_parameter& p : k.parameters)
+        for (std::size_t c = 0; c < p.components.size(); ++c)
+            inputs.push_back({p.components[c].name,
+                              p.is_array ? fmt::format("data.{}[{}]", p.name, c) : "data." + p.name,
+                              is_output(k, p.name)});
+    return inputs;
+}
+
+// The batch kernel: a loop without branches, so that compilers vectorise it. Each pair's
+// status is decided as the scalar kernel decides it (the guards in reverse order, so that
+// the first failing one wins); every pair is computed, one not resolved dividing by 1 (no
+// division by zero), and its results are discarded. A resolved pair runs the scalar
+// kernel's operations on the same values: the same results, bit for bit.
+void print_batch(std::string& out, const kernel_plan& plan)
+{
+    const engine::kernel& k = *plan.kernel;
+    const std::size_t n = dimension(k);
+    const std::vector<lane_input> inputs = lane_inputs(k);
+    const std::string loop = fmt::format("{}_batch_{}d", k.name, n);
+
+    std::vector<std::string> pointers, element_names, plain_names, arguments;
+    for (const lane_input& in : inputs) {
+        pointers.push_back(fmt::format("{}Real* IMPACT_RESTRICT {}_", in.written ? "" : "const ", in.name));
+        element_names.push_back(in.name + "_[i]");
+        plain_names.push_back(in.name);
+        arguments.push_back(in.field);
+    }
+    const bool with_status = !k.guards.empty();
+    if (with_status)
+        pointers.push_back("impact::status* IMPACT_RESTRICT status_");
+
+    out += fmt::format("\nnamespace detail {{\n\n/// The loop of {}_batch in {}D, without branches.\n", k.name, n);
+    out += fmt::format("template <class Real{}>\ninline void {}(std::size_t count, {}) noexcept\n{{\n"
+                       "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
+                       with_status ? ", bool with_status" : "", loop, fmt::join(pointers, ", "));
+
+    // The status, from the guards on the values as given.
+    const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
+    const std::vector<bool> for_outputs = needed_by(plan.code, plan.guard_values, plan.code.outputs.size());
+    if (with_status) {
+        const cxx_code given = program_cxx(plan.code, element_names);
+        out += "        // The status, as the scalar kernel decides it: the first guard that fails.\n"
+               "        impact::status outcome = status::ok;\n        {\n";
+        for (std::size_t s = 0; s < given.statements.size(); ++s)
+            if (for_guards[given.statement_values[s]])
+                out += "            " + given.statements[s] + "\n";
+        std::size_t condition = plan.guard_values;
+        bool declared = false;
+        for (auto g = k.guards.rbegin(); g != k.guards.rend(); ++g) {
+            // `fails |= test`, not `||`: no branch, so that the loop vectorises.
+            const std::vector<std::string> failures =
+                g->condition ? std::vector<std::string>{fmt::format("!({} {} Real(0))", given.outputs[--condition],
+                                                                    g->op == engine::relation::less ? "<" : ">")}
+                             : guard_failures(k, *g, "_[i]");
+            for (std::size_t f = 0; f < failures.size(); ++f)
+                out += fmt::format("            {} {};\n", f == 0 ? (declared ? "fails =" : "bool fails =") : "fails |=",
+                                   failures[f]);
+            declared = true;
+            out += fmt::format("            outcome = fails ? status::{} : outcome;\n", g->status);
+        }
+        out += "        }\n        const bool resolved = outcome == status::ok;\n";
+    }
+
+    // The arithmetic, every lane computed; a lane not resolved divides by 1.
+    if (with_status)
+        out += "        // Every pair is computed; one not resolved divides by 1, and its results are discarded.\n";
+    for (const lane_input& in : inputs)
+        out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
+    const cxx_code code = program_cxx(plan.code, plain_names, with_status ? "resolved" : "");
+    for (std::size_t s = 0; s < code.statements.size(); ++s)
+        if (for_outputs[code.statement_values[s]])
+            out += "        " + code.statements[s] + "\n";
+    std::size_t value = plan.guard_values;
+    for (const engine::kernel_output& o : k.outputs) {
+        for (std::size_t c = 0; c < o.values.size(); ++c, ++value) {
+            const engine::kernel_parameter* same = nullptr;
+            for (const engine::kernel_parameter& p : k.parameters)
+                if (p.name == o.member)
+                    same = &p;
+            if (!same)
+                throw std::logic_error("a batch kernel writes only outputs named after inputs");
+            const std::string target = same->components.at(c).name + "_[i]";
+            out += with_status ? fmt::format("        {0} = resolved ? {1} : {0};\n", target, code.outputs[value])
+                               : fmt::format("        {} = {};\n", target, code.outputs[value]);
+        }
+    }
+    if (with_status)
+        out += "        if constexpr (with_status)\n            status_[i] = outcome;\n";
+    out += "    }\n}\n\n} // namespace detail\n";
+
+    // The public entry point.
+    out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays: outputs named after\n"
+                       "/// inputs are updated in place.{1}\n"
+                       "/// The loop has no branches, so that compilers vectorise it; each result is bit for\n"
+                       "/// bit the scalar {0}'s. The arrays written must not overlap any other array.\n",
+                       k.name, with_status ? " `status` (if not null) receives each status." : "");
+    out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n",
+                       k.name, n);
+    if (with_status)
+        out += fmt::format("    if (data.status)\n        detail::{0}<Real, true>(data.count, {1}, data.status);\n"
+                           "    else\n        detail::{0}<Real, false>(data.count, {1}, nullptr);\n",
+                           loop, fmt::join(arguments, ", "));
+    else
+        out += fmt::format("    detail::{}<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
+    out += "}\n";
 }
 
 void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan)
@@ -161,14 +310,8 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     for (const engine::kernel_guard& g : k.guards) {
         if (g.condition)
             continue;
-        std::vector<std::string> failures;
-        for (const std::string& name : g.parameters)
-            for (const engine::kernel_parameter& p : k.parameters)
-                if (p.name == name)
-                    for (const engine::quantity& q : p.components)
-                        failures.push_back(domain_failure(q, q.name));
         out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
-                           fmt::join(failures, " || "), g.status);
+                           fmt::join(guard_failures(k, g, ""), " || "), g.status);
     }
     const int last_guard_value = plan.guard_values ? plan.code.outputs[plan.guard_values - 1] : -1;
     std::size_t s = 0;
@@ -201,38 +344,8 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         out += "    return out;\n}\n";
     }
 
-    if (k.batch) {
-        // The batch kernel calls the scalar one element by element: the same results, bit
-        // for bit, over structure-of-arrays data updated in place.
-        out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays; outputs named after\n"
-                           "/// inputs are updated in place, and `status` (if not null) receives each status.\n",
-                           k.name);
-        out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n"
-                           "    for (std::size_t i = 0; i < data.count; ++i) {{\n",
-                           k.name, n);
-        std::vector<std::string> arguments;
-        for (const engine::kernel_parameter& p : k.parameters) {
-            if (!p.is_array) {
-                arguments.push_back(fmt::format("data.{}[i]", p.name));
-                continue;
-            }
-            std::vector<std::string> items;
-            for (std::size_t c = 0; c < p.components.size(); ++c)
-                items.push_back(fmt::format("data.{}[{}][i]", p.name, c));
-            arguments.push_back(fmt::format("std::array<Real, {}>{{{}}}", n, fmt::join(items, ", ")));
-        }
-        out += fmt::format("        const auto r = {}({});\n", k.name, fmt::join(arguments, ", "));
-        for (const engine::kernel_output& o : k.outputs) {
-            if (o.is_array)
-                for (std::size_t c = 0; c < o.values.size(); ++c)
-                    out += fmt::format("        data.{0}[{1}][i] = r.{0}[{1}];\n", o.member, c);
-            else
-                out += fmt::format("        data.{0}[i] = r.{0};\n", o.member);
-        }
-        if (!k.guards.empty())
-            out += "        if (data.status)\n            data.status[i] = r.status;\n";
-        out += "    }\n}\n";
-    }
+    if (k.batch)
+        print_batch(out, plan);
 }
 
 } // namespace
@@ -258,7 +371,15 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
 {
     std::string out = "// Generated by Impact from derivations/; do not edit.\n"
                       "// What Impact's kernels share.\n#pragma once\n\n"
-                      "#include <array>\n#include <cmath>\n#include <cstddef>\n\nnamespace impact {\n";
+                      "#include <array>\n#include <cmath>\n#include <cstddef>\n\n"
+                      "// The arrays a batch kernel writes overlap no other array (`restrict`), and its\n"
+                      "// iterations are independent: compilers may vectorise its loop.\n"
+                      "#if defined(__GNUC__) || defined(__clang__) || defined(_MSC_VER)\n"
+                      "#define IMPACT_RESTRICT __restrict\n#else\n#define IMPACT_RESTRICT\n#endif\n"
+                      "#if defined(__clang__)\n#define IMPACT_INDEPENDENT_ITERATIONS _Pragma(\"clang loop vectorize(assume_safety)\")\n"
+                      "#elif defined(__GNUC__)\n#define IMPACT_INDEPENDENT_ITERATIONS _Pragma(\"GCC ivdep\")\n"
+                      "#else\n#define IMPACT_INDEPENDENT_ITERATIONS\n#endif\n\n"
+                      "namespace impact {\n";
     std::vector<std::string> statuses{"ok"};
     for (const kernel_plan* plan : plans)
         for (const engine::kernel_guard& g : plan->kernel->guards)
@@ -284,6 +405,7 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
         if (!k.batch)
             continue;
         out += fmt::format("\n/// Structure-of-arrays data for {}_batch: one array per scalar, N per vector.\n"
+                           "/// The arrays written (velocities, status) must not overlap any other.\n"
                            "template <class Real, std::size_t N>\nstruct {}_batch_data {{\n    std::size_t count;\n",
                            k.name, k.name);
         for (const engine::kernel_parameter& p : k.parameters) {

@@ -78,7 +78,22 @@ private:
         const int s = op(opcode::add, a.hi, b.hi);
         const int bb = op(opcode::sub, s, a.hi);
         const int e = op(opcode::add, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::sub, b.hi, bb));
+        // TwoSum of two doubles is already normalised: s = fl(s + e).
+        if (a.lo < 0 && b.lo < 0)
+            return {s, e};
         return fast_two_sum(s, add_lo(e, add_lo(a.lo, b.lo)));
+    }
+
+    // a - b, as dd_add(a, -b) computes it but without the negations (the same values).
+    pair dd_sub(pair a, pair b)
+    {
+        const int s = op(opcode::sub, a.hi, b.hi);
+        const int bb = op(opcode::sub, s, a.hi);
+        const int e = op(opcode::sub, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::add, b.hi, bb));
+        if (a.lo < 0 && b.lo < 0)
+            return {s, e};
+        const int lo = b.lo < 0 ? a.lo : a.lo < 0 ? op(opcode::neg, b.lo) : op(opcode::sub, a.lo, b.lo);
+        return fast_two_sum(s, add_lo(e, lo));
     }
 
     pair dd_neg(pair a) { return {op(opcode::neg, a.hi), a.lo < 0 ? -1 : op(opcode::neg, a.lo)}; }
@@ -94,11 +109,14 @@ private:
         return fast_two_sum(p, e);
     }
 
+    // One division: q1 = a/b through the reciprocal, then the remainder a - q1 b (exact
+    // to double-double) times the reciprocal corrects it; q1 + q2 is a/b to about 2^-100.
     pair dd_div(pair a, pair b)
     {
-        const int q1 = op(opcode::div, a.hi, b.hi);
+        const int reciprocal = op(opcode::div, constant(1), b.hi);
+        const int q1 = op(opcode::mul, a.hi, reciprocal);
         const pair r = dd_add(a, dd_neg(dd_mul({q1, -1}, b)));
-        const int q2 = op(opcode::div, r.hi, b.hi);
+        const int q2 = op(opcode::mul, r.hi, reciprocal);
         return fast_two_sum(q1, q2);
     }
 
@@ -148,7 +166,7 @@ private:
             for (const GiNaC::ex& term : order_.terms(e)) {
                 const bool negative = order_.negative(term);
                 const pair v = compensated(negative ? -term : term);
-                acc = acc.hi < 0 ? (negative ? dd_neg(v) : v) : dd_add(acc, negative ? dd_neg(v) : v);
+                acc = acc.hi < 0 ? (negative ? dd_neg(v) : v) : negative ? dd_sub(acc, v) : dd_add(acc, v);
             }
             return acc;
         }
@@ -411,7 +429,7 @@ std::size_t count(const program& p, opcode op)
     return n;
 }
 
-cxx_code program_cxx(const program& p, const std::vector<std::string>& names)
+cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& divide_if)
 {
     // A value used more than once gets a name; one used once is written in place, with
     // the parentheses that keep the program's tree (C++ evaluates a - b + c as (a - b) + c,
@@ -445,7 +463,11 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names)
         case opcode::add: expression = operand(in.a, sum) + " + " + operand(in.b, product); own = sum; break;
         case opcode::sub: expression = operand(in.a, sum) + " - " + operand(in.b, product); own = sum; break;
         case opcode::mul: expression = operand(in.a, product) + " * " + operand(in.b, unary); own = product; break;
-        case opcode::div: expression = operand(in.a, product) + " / " + operand(in.b, unary); own = product; break;
+        case opcode::div:
+            expression = operand(in.a, product) + " / " +
+                         (divide_if.empty() ? operand(in.b, unary) : "(" + divide_if + " ? " + text[in.b] + " : Real(1))");
+            own = product;
+            break;
         case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
         case opcode::sqrt: expression = "std::sqrt(" + text[in.a] + ")"; break;
         case opcode::fma: expression = "std::fma(" + text[in.a] + ", " + text[in.b] + ", " + text[in.c] + ")"; break;

@@ -6,6 +6,21 @@
 #include <cmath>
 #include <cstddef>
 
+// The arrays a batch kernel writes overlap no other array (`restrict`), and its
+// iterations are independent: compilers may vectorise its loop.
+#if defined(__GNUC__) || defined(__clang__) || defined(_MSC_VER)
+#define IMPACT_RESTRICT __restrict
+#else
+#define IMPACT_RESTRICT
+#endif
+#if defined(__clang__)
+#define IMPACT_INDEPENDENT_ITERATIONS _Pragma("clang loop vectorize(assume_safety)")
+#elif defined(__GNUC__)
+#define IMPACT_INDEPENDENT_ITERATIONS _Pragma("GCC ivdep")
+#else
+#define IMPACT_INDEPENDENT_ITERATIONS
+#endif
+
 namespace impact {
 
 /// Why a kernel resolved no collision; `ok` when it did.
@@ -20,6 +35,7 @@ struct collide_result {
 };
 
 /// Structure-of-arrays data for collide_batch: one array per scalar, N per vector.
+/// The arrays written (velocities, status) must not overlap any other.
 template <class Real, std::size_t N>
 struct collide_batch_data {
     std::size_t count;

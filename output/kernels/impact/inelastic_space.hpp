@@ -49,7 +49,7 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
         out.status = status::invalid_mass;
         return out;
     }
-    if (!(eps >= Real(0) && eps <= Real(1))) {
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
         out.status = status::invalid_restitution;
         return out;
     }
@@ -58,131 +58,254 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
         return out;
     }
     const Real t0 = C_Mx - C_mx;
-    const Real t1 = C_My - C_my;
-    const Real t2 = C_Mz - C_mz;
-    if (!(t0 * t0 + t1 * t1 + t2 * t2 > Real(0))) {
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = C_Mz - C_mz;
+    const Real t5 = t4 * t4;
+    const Real t6 = v_Mx - v_mx;
+    const Real t7 = t0 * t6;
+    const Real t8 = v_My - v_my;
+    const Real t9 = t2 * t8;
+    const Real t10 = v_Mz - v_mz;
+    const Real t11 = t4 * t10;
+    if (!(t1 + t3 + t5 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(t0 * (v_Mx - v_mx) + t1 * (v_My - v_my) + t2 * (v_Mz - v_mz) < Real(0))) {
+    if (!(t7 + t9 + t11 < Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t3 = Real(1) + eps;
-    const Real t4 = t3 - Real(1);
-    const Real t5 = Real(1) - (t3 - t4) + (eps - t4);
-    const Real t6 = t3 + t5;
-    const Real t7 = -C_mx;
-    const Real t8 = C_Mx + t7;
-    const Real t9 = t8 - C_Mx;
-    const Real t10 = C_Mx - (t8 - t9) + (t7 - t9);
-    const Real t11 = t8 + t10;
-    const Real t12 = t10 - (t11 - t8);
-    const Real t13 = -v_mx;
-    const Real t14 = v_Mx + t13;
-    const Real t15 = t14 - v_Mx;
-    const Real t16 = v_Mx - (t14 - t15) + (t13 - t15);
-    const Real t17 = t14 + t16;
-    const Real t18 = t11 * t17;
-    const Real t19 = std::fma(t12, t17, std::fma(t11, t16 - (t17 - t14), std::fma(t11, t17, -t18)));
-    const Real t20 = t18 + t19;
-    const Real t21 = -C_my;
-    const Real t22 = C_My + t21;
-    const Real t23 = t22 - C_My;
-    const Real t24 = C_My - (t22 - t23) + (t21 - t23);
-    const Real t25 = t22 + t24;
-    const Real t26 = t24 - (t25 - t22);
-    const Real t27 = -v_my;
-    const Real t28 = v_My + t27;
-    const Real t29 = t28 - v_My;
-    const Real t30 = v_My - (t28 - t29) + (t27 - t29);
-    const Real t31 = t28 + t30;
-    const Real t32 = t25 * t31;
-    const Real t33 = std::fma(t26, t31, std::fma(t25, t30 - (t31 - t28), std::fma(t25, t31, -t32)));
-    const Real t34 = t32 + t33;
-    const Real t35 = t20 + t34;
-    const Real t36 = t35 - t20;
-    const Real t37 = t20 - (t35 - t36) + (t34 - t36) + (t19 - (t20 - t18) + (t33 - (t34 - t32)));
-    const Real t38 = t35 + t37;
-    const Real t39 = -C_mz;
-    const Real t40 = C_Mz + t39;
-    const Real t41 = t40 - C_Mz;
-    const Real t42 = C_Mz - (t40 - t41) + (t39 - t41);
-    const Real t43 = t40 + t42;
-    const Real t44 = t42 - (t43 - t40);
-    const Real t45 = -v_mz;
-    const Real t46 = v_Mz + t45;
-    const Real t47 = t46 - v_Mz;
-    const Real t48 = v_Mz - (t46 - t47) + (t45 - t47);
+    const Real t12 = Real(1) + eps;
+    const Real t13 = t12 - Real(1);
+    const Real t14 = t0 - C_Mx;
+    const Real t15 = C_Mx - (t0 - t14) - (C_mx + t14);
+    const Real t16 = t6 - v_Mx;
+    const Real t17 = std::fma(t15, t6, std::fma(t0, v_Mx - (t6 - t16) - (v_mx + t16), std::fma(t0, t6, -t7)));
+    const Real t18 = t7 + t17;
+    const Real t19 = t2 - C_My;
+    const Real t20 = C_My - (t2 - t19) - (C_my + t19);
+    const Real t21 = t8 - v_My;
+    const Real t22 = std::fma(t20, t8, std::fma(t2, v_My - (t8 - t21) - (v_my + t21), std::fma(t2, t8, -t9)));
+    const Real t23 = t9 + t22;
+    const Real t24 = t18 + t23;
+    const Real t25 = t24 - t18;
+    const Real t26 = t18 - (t24 - t25) + (t23 - t25) + (t17 - (t18 - t7) + (t22 - (t23 - t9)));
+    const Real t27 = t24 + t26;
+    const Real t28 = t4 - C_Mz;
+    const Real t29 = C_Mz - (t4 - t28) - (C_mz + t28);
+    const Real t30 = t10 - v_Mz;
+    const Real t31 = std::fma(t29, t10, std::fma(t4, v_Mz - (t10 - t30) - (v_mz + t30), std::fma(t4, t10, -t11)));
+    const Real t32 = t11 + t31;
+    const Real t33 = t27 + t32;
+    const Real t34 = t33 - t27;
+    const Real t35 = t27 - (t33 - t34) + (t32 - t34) + (t26 - (t27 - t24) + (t31 - (t32 - t11)));
+    const Real t36 = t33 + t35;
+    const Real t37 = t12 * t36;
+    const Real t38 = std::fma(Real(1) - (t12 - t13) + (eps - t13), t36, std::fma(t12, t35 - (t36 - t33), std::fma(t12, t36, -t37)));
+    const Real t39 = t37 + t38;
+    const Real t40 = M + m;
+    const Real t41 = t40 - M;
+    const Real t42 = std::fma(t15, t0, std::fma(t0, t15, std::fma(t0, t0, -t1)));
+    const Real t43 = t1 + t42;
+    const Real t44 = std::fma(t20, t2, std::fma(t2, t20, std::fma(t2, t2, -t3)));
+    const Real t45 = t3 + t44;
+    const Real t46 = t43 + t45;
+    const Real t47 = t46 - t43;
+    const Real t48 = t43 - (t46 - t47) + (t45 - t47) + (t42 - (t43 - t1) + (t44 - (t45 - t3)));
     const Real t49 = t46 + t48;
-    const Real t50 = t43 * t49;
-    const Real t51 = std::fma(t44, t49, std::fma(t43, t48 - (t49 - t46), std::fma(t43, t49, -t50)));
-    const Real t52 = t50 + t51;
-    const Real t53 = t38 + t52;
-    const Real t54 = t53 - t38;
-    const Real t55 = t38 - (t53 - t54) + (t52 - t54) + (t37 - (t38 - t35) + (t51 - (t52 - t50)));
-    const Real t56 = t53 + t55;
-    const Real t57 = t6 * t56;
-    const Real t58 = std::fma(t5 - (t6 - t3), t56, std::fma(t6, t55 - (t56 - t53), std::fma(t6, t56, -t57)));
-    const Real t59 = t57 + t58;
-    const Real t60 = M + m;
-    const Real t61 = t60 - M;
-    const Real t62 = M - (t60 - t61) + (m - t61);
-    const Real t63 = t60 + t62;
-    const Real t64 = t11 * t11;
-    const Real t65 = std::fma(t12, t11, std::fma(t11, t12, std::fma(t11, t11, -t64)));
-    const Real t66 = t64 + t65;
-    const Real t67 = t25 * t25;
-    const Real t68 = std::fma(t26, t25, std::fma(t25, t26, std::fma(t25, t25, -t67)));
-    const Real t69 = t67 + t68;
-    const Real t70 = t66 + t69;
-    const Real t71 = t70 - t66;
-    const Real t72 = t66 - (t70 - t71) + (t69 - t71) + (t65 - (t66 - t64) + (t68 - (t69 - t67)));
-    const Real t73 = t70 + t72;
-    const Real t74 = t43 * t43;
-    const Real t75 = std::fma(t44, t43, std::fma(t43, t44, std::fma(t43, t43, -t74)));
-    const Real t76 = t74 + t75;
-    const Real t77 = t73 + t76;
-    const Real t78 = t77 - t73;
-    const Real t79 = t73 - (t77 - t78) + (t76 - t78) + (t72 - (t73 - t70) + (t75 - (t76 - t74)));
-    const Real t80 = t77 + t79;
-    const Real t81 = t63 * t80;
-    const Real t82 = std::fma(t62 - (t63 - t60), t80, std::fma(t63, t79 - (t80 - t77), std::fma(t63, t80, -t81)));
-    const Real t83 = t81 + t82;
-    const Real t84 = t59 / t83;
-    const Real t85 = t84 * t83;
-    const Real t86 = std::fma(t84, t82 - (t83 - t81), std::fma(t84, t83, -t85));
-    const Real t87 = t85 + t86;
-    const Real t88 = -t87;
-    const Real t89 = t59 + t88;
-    const Real t90 = t89 - t59;
-    const Real t91 = t59 - (t89 - t90) + (t88 - t90) + (t58 - (t59 - t57) + -(t86 - (t87 - t85)));
-    const Real t92 = t89 + t91;
-    const Real t93 = t92 / t83;
-    const Real t94 = t84 + t93;
-    const Real t95 = t94 * m;
-    const Real t96 = t94 * M;
-    out.v_M = {-(t95 * t0) + v_Mx, -(t95 * t1) + v_My, -(t95 * t2) + v_Mz};
-    out.v_m = {t96 * t0 + v_mx, t96 * t1 + v_my, t96 * t2 + v_mz};
+    const Real t50 = std::fma(t29, t4, std::fma(t4, t29, std::fma(t4, t4, -t5)));
+    const Real t51 = t5 + t50;
+    const Real t52 = t49 + t51;
+    const Real t53 = t52 - t49;
+    const Real t54 = t49 - (t52 - t53) + (t51 - t53) + (t48 - (t49 - t46) + (t50 - (t51 - t5)));
+    const Real t55 = t52 + t54;
+    const Real t56 = t40 * t55;
+    const Real t57 = std::fma(M - (t40 - t41) + (m - t41), t55, std::fma(t40, t54 - (t55 - t52), std::fma(t40, t55, -t56)));
+    const Real t58 = t56 + t57;
+    const Real t59 = Real(1) / t58;
+    const Real t60 = t39 * t59;
+    const Real t61 = t60 * t58;
+    const Real t62 = std::fma(t60, t57 - (t58 - t56), std::fma(t60, t58, -t61));
+    const Real t63 = t61 + t62;
+    const Real t64 = -t63;
+    const Real t65 = t39 + t64;
+    const Real t66 = t65 - t39;
+    const Real t67 = t39 - (t65 - t66) + (t64 - t66) + (t38 - (t39 - t37) + -(t62 - (t63 - t61)));
+    const Real t68 = t65 + t67;
+    const Real t69 = t68 * t59;
+    const Real t70 = t60 + t69;
+    const Real t71 = t70 * m;
+    const Real t72 = t70 * M;
+    out.v_M = {-(t71 * t0) + v_Mx, -(t71 * t2) + v_My, -(t71 * t4) + v_Mz};
+    out.v_m = {t72 * t0 + v_mx, t72 * t2 + v_my, t72 * t4 + v_mz};
     return out;
 }
 
-/// collide over `count` collisions stored as structure of arrays; outputs named after
-/// inputs are updated in place, and `status` (if not null) receives each status.
+namespace detail {
+
+/// The loop of collide_batch in 3D, without branches.
+template <class Real, bool with_status>
+inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < count; ++i) {
+        // The status, as the scalar kernel decides it: the first guard that fails.
+        impact::status outcome = status::ok;
+        {
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t1 = t0 * t0;
+            const Real t2 = C_My_[i] - C_my_[i];
+            const Real t3 = t2 * t2;
+            const Real t4 = C_Mz_[i] - C_mz_[i];
+            const Real t5 = t4 * t4;
+            const Real t6 = v_Mx_[i] - v_mx_[i];
+            const Real t7 = t0 * t6;
+            const Real t8 = v_My_[i] - v_my_[i];
+            const Real t9 = t2 * t8;
+            const Real t10 = v_Mz_[i] - v_mz_[i];
+            const Real t11 = t4 * t10;
+            bool fails = !(t7 + t9 + t11 < Real(0));
+            outcome = fails ? status::separating : outcome;
+            fails = !(t1 + t3 + t5 > Real(0));
+            outcome = fails ? status::coincident_centres : outcome;
+            fails = !std::isfinite(C_Mx_[i]);
+            fails |= !std::isfinite(C_My_[i]);
+            fails |= !std::isfinite(C_Mz_[i]);
+            fails |= !std::isfinite(C_mx_[i]);
+            fails |= !std::isfinite(C_my_[i]);
+            fails |= !std::isfinite(C_mz_[i]);
+            fails |= !std::isfinite(v_Mx_[i]);
+            fails |= !std::isfinite(v_My_[i]);
+            fails |= !std::isfinite(v_Mz_[i]);
+            fails |= !std::isfinite(v_mx_[i]);
+            fails |= !std::isfinite(v_my_[i]);
+            fails |= !std::isfinite(v_mz_[i]);
+            outcome = fails ? status::non_finite : outcome;
+            fails = !(eps_[i] >= Real(0));
+            fails |= !(eps_[i] <= Real(1));
+            outcome = fails ? status::invalid_restitution : outcome;
+            fails = !(M_[i] > Real(0));
+            fails |= !std::isfinite(M_[i]);
+            fails |= !(m_[i] > Real(0));
+            fails |= !std::isfinite(m_[i]);
+            outcome = fails ? status::invalid_mass : outcome;
+        }
+        const bool resolved = outcome == status::ok;
+        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_Mz = C_Mz_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real C_mz = C_mz_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_Mz = v_Mz_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real v_mz = v_mz_[i];
+        const Real eps = eps_[i];
+        const Real t0 = C_Mx - C_mx;
+        const Real t1 = t0 * t0;
+        const Real t2 = C_My - C_my;
+        const Real t3 = t2 * t2;
+        const Real t4 = C_Mz - C_mz;
+        const Real t5 = t4 * t4;
+        const Real t6 = v_Mx - v_mx;
+        const Real t7 = t0 * t6;
+        const Real t8 = v_My - v_my;
+        const Real t9 = t2 * t8;
+        const Real t10 = v_Mz - v_mz;
+        const Real t11 = t4 * t10;
+        const Real t12 = Real(1) + eps;
+        const Real t13 = t12 - Real(1);
+        const Real t14 = t0 - C_Mx;
+        const Real t15 = C_Mx - (t0 - t14) - (C_mx + t14);
+        const Real t16 = t6 - v_Mx;
+        const Real t17 = std::fma(t15, t6, std::fma(t0, v_Mx - (t6 - t16) - (v_mx + t16), std::fma(t0, t6, -t7)));
+        const Real t18 = t7 + t17;
+        const Real t19 = t2 - C_My;
+        const Real t20 = C_My - (t2 - t19) - (C_my + t19);
+        const Real t21 = t8 - v_My;
+        const Real t22 = std::fma(t20, t8, std::fma(t2, v_My - (t8 - t21) - (v_my + t21), std::fma(t2, t8, -t9)));
+        const Real t23 = t9 + t22;
+        const Real t24 = t18 + t23;
+        const Real t25 = t24 - t18;
+        const Real t26 = t18 - (t24 - t25) + (t23 - t25) + (t17 - (t18 - t7) + (t22 - (t23 - t9)));
+        const Real t27 = t24 + t26;
+        const Real t28 = t4 - C_Mz;
+        const Real t29 = C_Mz - (t4 - t28) - (C_mz + t28);
+        const Real t30 = t10 - v_Mz;
+        const Real t31 = std::fma(t29, t10, std::fma(t4, v_Mz - (t10 - t30) - (v_mz + t30), std::fma(t4, t10, -t11)));
+        const Real t32 = t11 + t31;
+        const Real t33 = t27 + t32;
+        const Real t34 = t33 - t27;
+        const Real t35 = t27 - (t33 - t34) + (t32 - t34) + (t26 - (t27 - t24) + (t31 - (t32 - t11)));
+        const Real t36 = t33 + t35;
+        const Real t37 = t12 * t36;
+        const Real t38 = std::fma(Real(1) - (t12 - t13) + (eps - t13), t36, std::fma(t12, t35 - (t36 - t33), std::fma(t12, t36, -t37)));
+        const Real t39 = t37 + t38;
+        const Real t40 = M + m;
+        const Real t41 = t40 - M;
+        const Real t42 = std::fma(t15, t0, std::fma(t0, t15, std::fma(t0, t0, -t1)));
+        const Real t43 = t1 + t42;
+        const Real t44 = std::fma(t20, t2, std::fma(t2, t20, std::fma(t2, t2, -t3)));
+        const Real t45 = t3 + t44;
+        const Real t46 = t43 + t45;
+        const Real t47 = t46 - t43;
+        const Real t48 = t43 - (t46 - t47) + (t45 - t47) + (t42 - (t43 - t1) + (t44 - (t45 - t3)));
+        const Real t49 = t46 + t48;
+        const Real t50 = std::fma(t29, t4, std::fma(t4, t29, std::fma(t4, t4, -t5)));
+        const Real t51 = t5 + t50;
+        const Real t52 = t49 + t51;
+        const Real t53 = t52 - t49;
+        const Real t54 = t49 - (t52 - t53) + (t51 - t53) + (t48 - (t49 - t46) + (t50 - (t51 - t5)));
+        const Real t55 = t52 + t54;
+        const Real t56 = t40 * t55;
+        const Real t57 = std::fma(M - (t40 - t41) + (m - t41), t55, std::fma(t40, t54 - (t55 - t52), std::fma(t40, t55, -t56)));
+        const Real t58 = t56 + t57;
+        const Real t59 = Real(1) / (resolved ? t58 : Real(1));
+        const Real t60 = t39 * t59;
+        const Real t61 = t60 * t58;
+        const Real t62 = std::fma(t60, t57 - (t58 - t56), std::fma(t60, t58, -t61));
+        const Real t63 = t61 + t62;
+        const Real t64 = -t63;
+        const Real t65 = t39 + t64;
+        const Real t66 = t65 - t39;
+        const Real t67 = t39 - (t65 - t66) + (t64 - t66) + (t38 - (t39 - t37) + -(t62 - (t63 - t61)));
+        const Real t68 = t65 + t67;
+        const Real t69 = t68 * t59;
+        const Real t70 = t60 + t69;
+        const Real t71 = t70 * m;
+        const Real t72 = t70 * M;
+        v_Mx_[i] = resolved ? -(t71 * t0) + v_Mx : v_Mx_[i];
+        v_My_[i] = resolved ? -(t71 * t2) + v_My : v_My_[i];
+        v_Mz_[i] = resolved ? -(t71 * t4) + v_Mz : v_Mz_[i];
+        v_mx_[i] = resolved ? t72 * t0 + v_mx : v_mx_[i];
+        v_my_[i] = resolved ? t72 * t2 + v_my : v_my_[i];
+        v_mz_[i] = resolved ? t72 * t4 + v_mz : v_mz_[i];
+        if constexpr (with_status)
+            status_[i] = outcome;
+    }
+}
+
+} // namespace detail
+
+/// collide over `count` collisions stored as structure of arrays: outputs named after
+/// inputs are updated in place. `status` (if not null) receives each status.
+/// The loop has no branches, so that compilers vectorise it; each result is bit for
+/// bit the scalar collide's. The arrays written must not overlap any other array.
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 3>& data) noexcept
 {
-    for (std::size_t i = 0; i < data.count; ++i) {
-        const auto r = collide(data.M[i], data.m[i], std::array<Real, 3>{data.C_M[0][i], data.C_M[1][i], data.C_M[2][i]}, std::array<Real, 3>{data.C_m[0][i], data.C_m[1][i], data.C_m[2][i]}, std::array<Real, 3>{data.v_M[0][i], data.v_M[1][i], data.v_M[2][i]}, std::array<Real, 3>{data.v_m[0][i], data.v_m[1][i], data.v_m[2][i]}, data.eps[i]);
-        data.v_M[0][i] = r.v_M[0];
-        data.v_M[1][i] = r.v_M[1];
-        data.v_M[2][i] = r.v_M[2];
-        data.v_m[0][i] = r.v_m[0];
-        data.v_m[1][i] = r.v_m[1];
-        data.v_m[2][i] = r.v_m[2];
-        if (data.status)
-            data.status[i] = r.status;
-    }
+    if (data.status)
+        detail::collide_batch_3d<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
+    else
+        detail::collide_batch_3d<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
 }
 
 } // namespace impact
