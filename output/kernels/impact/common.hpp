@@ -13,9 +13,7 @@
 #else
 #define IMPACT_RESTRICT
 #endif
-#if defined(__clang__)
-#define IMPACT_INDEPENDENT_ITERATIONS _Pragma("clang loop vectorize(assume_safety)")
-#elif defined(__GNUC__)
+#if defined(__GNUC__) && !defined(__clang__)  // Clang needs no more than `restrict`
 #define IMPACT_INDEPENDENT_ITERATIONS _Pragma("GCC ivdep")
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
