@@ -288,13 +288,18 @@ const quantity& symbol_table::at(const spec::text& name) const
 
 GiNaC::ex symbol_table::parse(const spec::text& text) const
 {
+    const auto known = parsed_.find(text.value);
+    if (known != parsed_.end())
+        return known->second;
     if (text.value.find_first_not_of(" \t\r\n") == std::string::npos)
         throw error(text.where, "empty expression");
     refuse_deep_nesting(text.where, text.value);
     number_bounds(table_, text.value).check(text.where, text.value);
     try {
         GiNaC::parser reader(table_, /*strict=*/true);
-        return reader(text.value);
+        const GiNaC::ex e = reader(text.value);
+        parsed_.emplace(text.value, e);
+        return e;
     } catch (const GiNaC::pole_error&) {
         // GiNaC evaluates as it reads: x/(z - z) fails while parsing, though it parses.
         throw error(text.where, fmt::format("expression \"{}\": division by zero", text.value));

@@ -11,6 +11,7 @@
 
 #include <ginac/ginac.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +71,10 @@ public:
 private:
     std::vector<quantity> quantities_;
     GiNaC::symtab table_;
+    // Texts already read: the same pieces are read again and again (a symbol, `M + m`),
+    // most of all by the LaTeX printer's written forms. Only a text that reads is kept,
+    // and declaring more symbols never changes what it reads as.
+    mutable std::map<std::string, GiNaC::ex> parsed_;
 };
 
 /// An expression in GiNaC's own syntax, as its parser reads it back.
