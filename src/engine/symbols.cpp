@@ -254,6 +254,7 @@ const quantity& symbol_table::declare(const spec::symbol& declaration)
         q.definition = parse(*declaration.definition);
     table_[name] = q.symbol;
     quantities_.push_back(std::move(q));
+    order_.reset();
     return quantities_.back();
 }
 
@@ -268,6 +269,7 @@ const quantity& symbol_table::adopt(const quantity& other)
         q.symbol = GiNaC::realsymbol(q.name, q.latex);
     table_[q.name] = q.symbol;
     quantities_.push_back(std::move(q));
+    order_.reset();
     return quantities_.back();
 }
 
@@ -330,7 +332,18 @@ GiNaC::ex symbol_table::parse_equation(const spec::text& text) const
 
 std::string symbol_table::text(const GiNaC::ex& e) const
 {
-    return ginac_syntax(e, declaration_order(*this));
+    return ginac_syntax(e, order());
+}
+
+const term_order& symbol_table::order() const
+{
+    if (!order_) {
+        std::vector<GiNaC::ex> ranked;
+        for (const quantity& q : quantities_)
+            ranked.push_back(q.symbol);
+        order_ = std::make_shared<const term_order>(std::move(ranked));
+    }
+    return *order_;
 }
 
 std::string to_string(relation r)

@@ -12,11 +12,14 @@
 #include <ginac/ginac.h>
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace impact::engine {
+
+class term_order;
 
 /// A declared symbol with its domain; abbreviations carry their definition.
 struct quantity {
@@ -68,6 +71,10 @@ public:
     /// The domain of each symbol, keyed by the GiNaC symbol.
     const domain* domain_of(const GiNaC::ex& symbol) const;
 
+    /// The symbols' declaration order (see `declaration_order`), made once for the
+    /// declarations so far; its copies share what it has worked out.
+    const term_order& order() const;
+
 private:
     std::vector<quantity> quantities_;
     GiNaC::symtab table_;
@@ -75,6 +82,7 @@ private:
     // most of all by the LaTeX printer's written forms. Only a text that reads is kept,
     // and declaring more symbols never changes what it reads as.
     mutable std::map<std::string, GiNaC::ex> parsed_;
+    mutable std::shared_ptr<const term_order> order_;   // reset by each declaration
 };
 
 /// An expression in GiNaC's own syntax, as its parser reads it back.
