@@ -83,6 +83,7 @@ private:
     // and declaring more symbols never changes what it reads as.
     mutable std::map<std::string, GiNaC::ex> parsed_;
     mutable std::shared_ptr<const term_order> order_;   // reset by each declaration
+    mutable std::shared_ptr<GiNaC::parser> reader_;      // reset by each declaration
 };
 
 /// An expression in GiNaC's own syntax, as its parser reads it back.
