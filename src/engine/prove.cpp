@@ -1,5 +1,7 @@
 #include "engine/prove.h"
 
+#include "engine/polynomial.h"
+
 #include <fmt/format.h>
 
 #include <cln/real.h>
@@ -214,8 +216,12 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
     const GiNaC::ex a = simplify_radicals(lhs.subs(abbreviations).subs(abbreviations), given);
     const GiNaC::ex b = simplify_radicals(rhs.subs(abbreviations).subs(abbreviations), given);
     // Fast path: over the product of all denominators (no gcd), the numerator expands
-    // to zero exactly when the difference is zero as a rational function.
-    if (GiNaC::expand(over_common_denominator(a - b).numerator).is_zero()) {
+    // to zero exactly when the difference is zero as a rational function. It is expanded
+    // as a polynomial first (engine/polynomial.h); GiNaC is asked only when radicals or
+    // functions in it might still cancel.
+    const expansion numerator = expand_numerator(a - b);
+    if (numerator == expansion::zero ||
+        (numerator == expansion::undecided && GiNaC::expand(over_common_denominator(a - b).numerator).is_zero())) {
         verdict v;
         v.what = verdict::status::proven;
         v.residual = 0;
