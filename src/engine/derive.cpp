@@ -678,8 +678,13 @@ private:
     void require_inputs(const kernel& k, const GiNaC::ex& value, const std::string& member,
                         const source_location& where) const
     {
+        // The symbols in `value`, gathered in one walk of it (not one walk a quantity).
+        std::set<GiNaC::ex, GiNaC::ex_is_less> present;
+        for (GiNaC::const_preorder_iterator it = value.preorder_begin(); it != value.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it))
+                present.insert(*it);
         for (const quantity& q : out_.symbols.all()) {
-            if (!value.has(q.symbol) || k.find_input(q.name))
+            if (!present.count(q.symbol) || k.find_input(q.name))
                 continue;
             throw error(where, fmt::format("kernel '{}': output '{}' depends on '{}', which is not among its inputs",
                                            k.name, member, q.name));
