@@ -383,7 +383,7 @@ private:
 
         assumptions given = declared_assumptions(out_.symbols);
         if (!spec_check.assuming.empty())
-            given.signs = std::make_shared<assumptions::sign_cache>();
+            given.known = std::make_shared<assumptions::worked_out>();
         for (const spec::binding& b : spec_check.assuming) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
             given.domains[symbol] = parse_domain(b.expression.value, b.expression.where);
