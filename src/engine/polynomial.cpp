@@ -2,11 +2,12 @@
 
 #include <cln/rational.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
-#include <unordered_map>
 #include <utility>
+#include <vector>
 
 namespace impact::engine {
 namespace {
@@ -18,17 +19,12 @@ constexpr std::size_t max_variables = 32;
 using monomial = std::array<std::uint64_t, max_variables / 8>;
 constexpr std::uint64_t high_bits = 0x8080808080808080ULL;
 
-struct monomial_hash {
-    std::size_t operator()(const monomial& m) const
-    {
-        std::uint64_t h = 0;
-        for (const std::uint64_t word : m)
-            h = (h ^ word) * 0x100000001b3ULL + (h >> 29);
-        return static_cast<std::size_t>(h);
-    }
+// A polynomial: its terms sorted by monomial, no two alike, none zero.
+struct term {
+    monomial exponents;
+    cln::cl_RA coefficient;
 };
-
-using polynomial = std::unordered_map<monomial, cln::cl_RA, monomial_hash>;
+using polynomial = std::vector<term>;
 
 // More variables, or a higher power, than a monomial holds.
 struct too_large {};
@@ -37,35 +33,42 @@ polynomial constant(const cln::cl_RA& c)
 {
     polynomial p;
     if (!cln::zerop(c))
-        p.emplace(monomial{}, c);
+        p.push_back({monomial{}, c});
     return p;
 }
 
-void drop_zeros(polynomial& p)
+// Terms in any order, alike ones possibly repeated, made a polynomial.
+polynomial collected(polynomial terms)
 {
-    for (auto it = p.begin(); it != p.end();)
-        it = cln::zerop(it->second) ? p.erase(it) : std::next(it);
+    std::sort(terms.begin(), terms.end(),
+              [](const term& a, const term& b) { return a.exponents < b.exponents; });
+    polynomial p;
+    for (term& t : terms) {
+        if (!p.empty() && p.back().exponents == t.exponents)
+            p.back().coefficient = p.back().coefficient + t.coefficient;
+        else
+            p.push_back(std::move(t));
+    }
+    p.erase(std::remove_if(p.begin(), p.end(), [](const term& t) { return cln::zerop(t.coefficient); }), p.end());
+    return p;
 }
 
 polynomial times(const polynomial& a, const polynomial& b)
 {
     polynomial product;
     product.reserve(a.size() * b.size());
-    for (const auto& [ma, ca] : a) {
-        for (const auto& [mb, cb] : b) {
+    for (const term& ta : a) {
+        for (const term& tb : b) {
             monomial m;
             for (std::size_t i = 0; i < m.size(); ++i) {
-                m[i] = ma[i] + mb[i];
+                m[i] = ta.exponents[i] + tb.exponents[i];
                 if (m[i] & high_bits)
                     throw too_large{};
             }
-            const auto [at, inserted] = product.try_emplace(m, ca * cb);
-            if (!inserted)
-                at->second = at->second + ca * cb;
+            product.push_back({m, ta.coefficient * tb.coefficient});
         }
     }
-    drop_zeros(product);
-    return product;
+    return collected(std::move(product));
 }
 
 polynomial power(const polynomial& p, int k)
@@ -79,15 +82,6 @@ polynomial power(const polynomial& p, int k)
             square = times(square, square);
     }
     return result;
-}
-
-void add_to(polynomial& sum, const polynomial& p)
-{
-    for (const auto& [m, c] : p) {
-        const auto [at, inserted] = sum.try_emplace(m, c);
-        if (!inserted)
-            at->second = at->second + c;
-    }
 }
 
 // Denominators as powers of factors; a factor is named by the expression whose
@@ -167,10 +161,9 @@ public:
                     if (missing > 0)
                         scaled = times(scaled, power(numerator_of(base), missing));
                 }
-                add_to(top, scaled);
+                top.insert(top.end(), scaled.begin(), scaled.end());
             }
-            drop_zeros(top);
-            return {std::move(top), std::move(lcm)};
+            return {collected(std::move(top)), std::move(lcm)};
         }
         // A radical, a function, a constant: a variable of its own.
         return {variable(e, true), {}};
@@ -194,9 +187,7 @@ private:
             throw too_large{};
         monomial m{};
         m[at->second / 8] = std::uint64_t(1) << (8 * (at->second % 8));
-        polynomial p;
-        p.emplace(m, 1);
-        return p;
+        return {{m, 1}};
     }
 
     std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> variables_;
