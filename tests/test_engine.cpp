@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "engine/derive.h"
+#include "engine/polynomial.h"
 #include "pipeline/library.h"
 
 #include <string>
@@ -198,6 +199,23 @@ BOOST_AUTO_TEST_CASE(an_identity_gi_nac_cannot_normalise_is_sampled_never_proven
     BOOST_TEST(engine::to_string(check_named(d, "abs").outcome) == "sampled (200 points)");
     BOOST_TEST(engine::to_string(check_named(d, "not_z").outcome) == "failed");       // z < 0 disproves it
     BOOST_TEST(engine::to_string(check_named(d, "positive_x").outcome) == "proven");  // x > 0 is declared
+}
+
+BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_function_is_zero)
+{
+    const GiNaC::realsymbol a("a"), b("b");
+    using engine::expansion;
+    using engine::expand_numerator;
+    // (a + b)^2 = a^2 + 2ab + b^2, and 1/(a + b) + 1/(a - b) = 2a/(a^2 - b^2) over three
+    // different denominators.
+    BOOST_TEST((expand_numerator(GiNaC::pow(a + b, 2) - a * a - 2 * a * b - b * b) == expansion::zero));
+    BOOST_TEST((expand_numerator(1 / (a + b) + 1 / (a - b) - 2 * a / (a * a - b * b)) == expansion::zero));
+    BOOST_TEST((expand_numerator(a / b - b / a) == expansion::nonzero));
+    BOOST_TEST((expand_numerator(GiNaC::pow(a + b, 3) - GiNaC::pow(a - b, 3)) == expansion::nonzero));
+    // A radical stands as a variable of its own: it cancels, or nothing is decided.
+    const GiNaC::ex root = GiNaC::sqrt(a * a + b * b);
+    BOOST_TEST((expand_numerator(root * (a - b) - root * a + root * b) == expansion::zero));
+    BOOST_TEST((expand_numerator(GiNaC::sqrt(a) * GiNaC::sqrt(b) - GiNaC::sqrt(a * b)) == expansion::undecided));
 }
 
 BOOST_AUTO_TEST_CASE(a_derivation_uses_the_results_of_another)

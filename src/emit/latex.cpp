@@ -134,7 +134,6 @@ struct placed {
     power_term factor;
     int index = INT_MAX;     // the position in the written product
     std::string key;         // term_order's key, for what the text does not place
-    std::string tie;
 };
 
 struct product_parts {
@@ -203,17 +202,16 @@ product_parts split(const GiNaC::ex& product, const print_tex& c)
     } else {
         if (numer != 1) {
             const int at = take([&](const written_form::factor& f) { return is_number(f) && !f.divides; });
-            parts.numerator.push_back({{numer, 1}, at == INT_MAX ? -1 : at, "", ""});
+            parts.numerator.push_back({{numer, 1}, at == INT_MAX ? -1 : at, ""});
         }
         if (denom != 1) {
             const int at = take([&](const written_form::factor& f) { return is_number(f) && f.divides; });
-            parts.denominator.push_back({{denom, 1}, at == INT_MAX ? -1 : at, "", ""});
+            parts.denominator.push_back({{denom, 1}, at == INT_MAX ? -1 : at, ""});
         }
     }
 
     for (const power_term& item : items) {
-        placed p{item, INT_MAX, c.order->key(item),
-                 engine::ginac_syntax(item.base, *c.order) + "^" + engine::ginac_syntax(item.exponent, *c.order)};
+        placed p{item, INT_MAX, c.order->key(item)};
         const bool inverse = GiNaC::is_a<GiNaC::numeric>(item.exponent) &&
                              GiNaC::ex_to<GiNaC::numeric>(item.exponent).is_negative();
         if (written) {
@@ -240,12 +238,16 @@ product_parts split(const GiNaC::ex& product, const print_tex& c)
             parts.numerator.push_back(p);
         }
     }
-    auto in_order = [](const placed& a, const placed& b) {
+    // Ties of the key are broken by the full text of base^exponent, printed only then.
+    auto tie = [&](const placed& p) {
+        return c.order->text(p.factor.base) + "^" + c.order->text(p.factor.exponent);
+    };
+    auto in_order = [&](const placed& a, const placed& b) {
         if (a.index != b.index)
             return a.index < b.index;
         if (a.key != b.key)
             return a.key < b.key;
-        return a.tie < b.tie;
+        return tie(a) < tie(b);
     };
     std::sort(parts.numerator.begin(), parts.numerator.end(), in_order);
     std::sort(parts.denominator.begin(), parts.denominator.end(), in_order);

@@ -383,7 +383,7 @@ private:
 
         assumptions given = declared_assumptions(out_.symbols);
         if (!spec_check.assuming.empty())
-            given.signs = std::make_shared<assumptions::sign_cache>();
+            given.known = std::make_shared<assumptions::worked_out>();
         for (const spec::binding& b : spec_check.assuming) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
             given.domains[symbol] = parse_domain(b.expression.value, b.expression.where);
@@ -678,8 +678,13 @@ private:
     void require_inputs(const kernel& k, const GiNaC::ex& value, const std::string& member,
                         const source_location& where) const
     {
+        // The symbols in `value`, gathered in one walk of it (not one walk a quantity).
+        std::set<GiNaC::ex, GiNaC::ex_is_less> present;
+        for (GiNaC::const_preorder_iterator it = value.preorder_begin(); it != value.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it))
+                present.insert(*it);
         for (const quantity& q : out_.symbols.all()) {
-            if (!value.has(q.symbol) || k.find_input(q.name))
+            if (!present.count(q.symbol) || k.find_input(q.name))
                 continue;
             throw error(where, fmt::format("kernel '{}': output '{}' depends on '{}', which is not among its inputs",
                                            k.name, member, q.name));

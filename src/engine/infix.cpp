@@ -239,9 +239,7 @@ void print_expression(const GiNaC::ex& e, const print_infix& c)
 
 std::string ginac_syntax(const GiNaC::ex& e, const term_order& order)
 {
-    std::ostringstream out;
-    print_expression(e, print_ginac_syntax(out, order));
-    return out.str();
+    return order.text(e);
 }
 
 } // namespace impact::engine

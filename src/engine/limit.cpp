@@ -68,8 +68,9 @@ std::optional<limit_result> limit(const GiNaC::ex& e, const GiNaC::ex& symbol, c
             return r;
         return by_series(e, symbol, point, given);
     }
-    // s → ∞: s = 1/t with t → 0⁺.
-    const GiNaC::possymbol t("t");
+    // s → ∞: s = 1/t with t → 0⁺. One t for every limit, positive in each: the factors
+    // and signs worked out for one limit in t serve the next.
+    static const GiNaC::possymbol t("t");
     assumptions with_t = given;
     with_t.domains[t] = domain{domain::kind::positive};
     const GiNaC::ex in_t = simplify_radicals(GiNaC::normal(e.subs(symbol == 1 / t)), with_t);

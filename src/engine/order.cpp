@@ -57,20 +57,30 @@ std::string term_order::key(const power_term& p) const
 
 bool term_order::before(const GiNaC::ex& a, const GiNaC::ex& b) const
 {
-    const std::string ka = key(a), kb = key(b);
+    const std::string& ka = key(a);
+    const std::string& kb = key(b);
     if (ka != kb)
         return ka < kb;
-    return ginac_syntax(a, *this) < ginac_syntax(b, *this);
+    return text(a) < text(b);
 }
 
-std::string term_order::key(const GiNaC::ex& e) const
+const std::string& term_order::key(const GiNaC::ex& e) const
 {
-    const auto known = keys_.find(e);
-    if (known != keys_.end())
+    const auto known = memo_->keys.find(e);
+    if (known != memo_->keys.end())
         return known->second;
     std::string k = compute_key(e);
-    keys_.emplace(e, k);
-    return k;
+    return memo_->keys.emplace(e, std::move(k)).first->second;
+}
+
+const std::string& term_order::text(const GiNaC::ex& e) const
+{
+    const auto known = memo_->texts.find(e);
+    if (known != memo_->texts.end())
+        return known->second;
+    std::ostringstream out;
+    print_expression(e, print_ginac_syntax(out, *this));
+    return memo_->texts.emplace(e, out.str()).first->second;
 }
 
 std::string term_order::compute_key(const GiNaC::ex& e) const
@@ -116,14 +126,26 @@ std::string term_order::compute_key(const GiNaC::ex& e) const
 
 std::vector<GiNaC::ex> term_order::terms(const GiNaC::ex& sum) const
 {
-    // A positive constant leads (1 - eps^2), a negative one trails (eps^2 - 1).
-    std::vector<GiNaC::ex> ordered(sum.begin(), sum.end());
-    auto rank = [&](const GiNaC::ex& term) { return is_negative_number(term) ? 1 : 0; };
-    std::sort(ordered.begin(), ordered.end(), [&](const GiNaC::ex& a, const GiNaC::ex& b) {
-        if (rank(a) != rank(b))
-            return rank(a) < rank(b);
-        return before(a, b);
+    // A positive constant leads (1 - eps^2), a negative one trails (eps^2 - 1); the
+    // rest in the order of `before` (each key looked up once).
+    struct ranked {
+        int rank;
+        const std::string* key;
+        GiNaC::ex term;
+    };
+    std::vector<ranked> items;
+    for (const GiNaC::ex& term : sum)
+        items.push_back({is_negative_number(term) ? 1 : 0, &key(term), term});
+    std::sort(items.begin(), items.end(), [&](const ranked& a, const ranked& b) {
+        if (a.rank != b.rank)
+            return a.rank < b.rank;
+        if (*a.key != *b.key)
+            return *a.key < *b.key;
+        return text(a.term) < text(b.term);
     });
+    std::vector<GiNaC::ex> ordered;
+    for (const ranked& item : items)
+        ordered.push_back(item.term);
     return ordered;
 }
 
@@ -168,11 +190,14 @@ bool term_order::negative(const GiNaC::ex& term) const
 {
     if (GiNaC::is_a<GiNaC::numeric>(term))
         return GiNaC::ex_to<GiNaC::numeric>(term).is_negative();
+    // The signs `factors` moves out, without ordering the factors.
     bool negated = false;
-    if (GiNaC::is_a<GiNaC::mul>(term))
-        factors(term, negated);
-    else if (GiNaC::is_a<GiNaC::power>(term))
+    if (GiNaC::is_a<GiNaC::mul>(term)) {
+        for (std::size_t i = 0; i < term.nops(); ++i)
+            oriented(term.op(i), negated);
+    } else if (GiNaC::is_a<GiNaC::power>(term)) {
         oriented(term, negated);
+    }
     return negated;
 }
 
@@ -182,13 +207,27 @@ std::vector<term_order::power_term> term_order::factors(const GiNaC::ex& product
     std::vector<power_term> items;
     for (std::size_t i = 0; i < product.nops(); ++i)
         items.push_back(oriented(product.op(i), negated));
-    std::sort(items.begin(), items.end(), [this](const power_term& a, const power_term& b) {
-        const std::string ka = key(a), kb = key(b);
-        if (ka != kb)
-            return ka < kb;
-        return ginac_syntax(a.base, *this) + "^" + ginac_syntax(a.exponent, *this) <
-               ginac_syntax(b.base, *this) + "^" + ginac_syntax(b.exponent, *this);
+    return sorted(std::move(items));
+}
+
+// Factors by key, ties broken by the full text of base^exponent.
+std::vector<term_order::power_term> term_order::sorted(std::vector<power_term> items) const
+{
+    struct keyed {
+        std::string key;
+        power_term factor;
+    };
+    std::vector<keyed> all;
+    for (power_term& item : items)
+        all.push_back({key(item), std::move(item)});
+    auto full_text = [this](const power_term& p) { return text(p.base) + "^" + text(p.exponent); };
+    std::sort(all.begin(), all.end(), [&](const keyed& a, const keyed& b) {
+        if (a.key != b.key)
+            return a.key < b.key;
+        return full_text(a.factor) < full_text(b.factor);
     });
+    for (std::size_t i = 0; i < all.size(); ++i)
+        items[i] = std::move(all[i].factor);
     return items;
 }
 
@@ -216,10 +255,7 @@ term_order::fraction term_order::split(const GiNaC::ex& product) const
 
 term_order declaration_order(const symbol_table& symbols)
 {
-    std::vector<GiNaC::ex> ranked;
-    for (const quantity& q : symbols.all())
-        ranked.push_back(q.symbol);
-    return term_order(std::move(ranked));
+    return symbols.order();
 }
 
 } // namespace impact::engine

@@ -17,6 +17,7 @@
 #include <ginac/ginac.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,18 +67,27 @@ public:
     bool leads_negative(const GiNaC::ex& sum) const;
 
     /// The sort key of an expression: a string that compares in print order.
-    std::string key(const GiNaC::ex& e) const;
+    const std::string& key(const GiNaC::ex& e) const;
     std::string key(const power_term& p) const;
+
+    /// The expression in GiNaC's syntax (as `ginac_syntax` prints it), kept once made.
+    const std::string& text(const GiNaC::ex& e) const;
 
     /// a before b: by key, ties broken by the full text.
     bool before(const GiNaC::ex& a, const GiNaC::ex& b) const;
 
 private:
     std::string compute_key(const GiNaC::ex& e) const;
+    std::vector<power_term> sorted(std::vector<power_term> items) const;
 
     std::vector<GiNaC::ex> symbols_;
-    // Keys are asked for again and again while printing nested expressions.
-    mutable std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> keys_;
+    // Keys and texts are asked for again and again while printing nested expressions,
+    // and the emitters print the same expressions again: copies of an order share them.
+    struct memo {
+        std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> keys;
+        std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> texts;
+    };
+    std::shared_ptr<memo> memo_ = std::make_shared<memo>();
 };
 
 /// The order of a derivation's declared symbols.

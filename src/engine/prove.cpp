@@ -1,5 +1,7 @@
 #include "engine/prove.h"
 
+#include "engine/polynomial.h"
+
 #include <fmt/format.h>
 
 #include <cln/real.h>
@@ -15,6 +17,16 @@ namespace {
 
 constexpr std::size_t sample_points = 200;
 constexpr int sample_digits = 40;
+
+// `e` with its abbreviations replaced by their definitions, and those in the definitions
+// in turn; an expression with none (or a derivation without any) is not walked again.
+GiNaC::ex spelled_out(const GiNaC::ex& e, const GiNaC::exmap& abbreviations)
+{
+    if (abbreviations.empty())
+        return e;
+    const GiNaC::ex once = e.subs(abbreviations);
+    return once.is_equal(e) ? once : once.subs(abbreviations);
+}
 
 // The exact rational value of a double, so that sampled points carry no rounding.
 GiNaC::numeric exact(double value)
@@ -211,11 +223,15 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
     const GiNaC::exmap abbreviations = symbols.abbreviations();
     const assumptions given = declared_assumptions(symbols);
     // Radicals in one canonical form first: normal() cannot see that sqrt(1/x) = 1/sqrt(x).
-    const GiNaC::ex a = simplify_radicals(lhs.subs(abbreviations).subs(abbreviations), given);
-    const GiNaC::ex b = simplify_radicals(rhs.subs(abbreviations).subs(abbreviations), given);
+    const GiNaC::ex a = simplify_radicals(spelled_out(lhs, abbreviations), given);
+    const GiNaC::ex b = simplify_radicals(spelled_out(rhs, abbreviations), given);
     // Fast path: over the product of all denominators (no gcd), the numerator expands
-    // to zero exactly when the difference is zero as a rational function.
-    if (GiNaC::expand(over_common_denominator(a - b).numerator).is_zero()) {
+    // to zero exactly when the difference is zero as a rational function. It is expanded
+    // as a polynomial first (engine/polynomial.h); GiNaC is asked only when radicals or
+    // functions in it might still cancel.
+    const expansion numerator = expand_numerator(a - b);
+    if (numerator == expansion::zero ||
+        (numerator == expansion::undecided && GiNaC::expand(over_common_denominator(a - b).numerator).is_zero())) {
         verdict v;
         v.what = verdict::status::proven;
         v.residual = 0;
@@ -261,8 +277,8 @@ verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs
                          const assumptions& given)
 {
     const GiNaC::exmap abbreviations = symbols.abbreviations();
-    const GiNaC::ex a = lhs.subs(abbreviations).subs(abbreviations);
-    const GiNaC::ex b = rhs.subs(abbreviations).subs(abbreviations);
+    const GiNaC::ex a = spelled_out(lhs, abbreviations);
+    const GiNaC::ex b = spelled_out(rhs, abbreviations);
     // lhs <= rhs  <=>  rhs - lhs >= 0; strict relations need > 0.
     const bool upper = op == relation::less_equal || op == relation::less;
     const bool strict = op == relation::less || op == relation::greater;

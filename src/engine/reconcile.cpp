@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 
 namespace impact::engine {
@@ -216,10 +217,13 @@ std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const Gi
         wanted.insert(n);
     std::vector<candidate> all;
     single_edits(printed, "", wanted, symbols, [&](candidate c) { all.push_back(std::move(c)); });
+    std::vector<std::optional<GiNaC::numeric>> target;
+    for (const GiNaC::exmap& point : points)
+        target.push_back(value_at(derived, point));
     auto screen = [&](const GiNaC::ex& edited) {
-        for (const GiNaC::exmap& point : points) {
-            const auto a = value_at(resolve(edited), point);
-            const auto b = value_at(derived, point);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const auto a = value_at(resolve(edited), points[i]);
+            const auto& b = target[i];
             if (!a || !b || !close(*a, *b))
                 return false;
         }

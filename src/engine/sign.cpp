@@ -67,13 +67,14 @@ public:
     // The sign of e and why, in a few words.
     std::pair<sign_set, std::string> sign(const GiNaC::ex& e, int depth = 0) const
     {
-        const auto known = given_.signs->find(e);
-        if (known != given_.signs->end())
+        auto& signs = given_.known->signs;
+        const auto known = signs.find(e);
+        if (known != signs.end())
             return known->second;
         auto decided = decide(e, depth);
-        if (given_.signs->size() >= 4096)  // bounded, as the factor cache
-            given_.signs->clear();
-        given_.signs->emplace(e, decided);
+        if (signs.size() >= 4096)  // bounded, as the factor cache
+            signs.clear();
+        signs.emplace(e, decided);
         return decided;
     }
 
@@ -300,10 +301,11 @@ std::string assumptions::text(const GiNaC::ex& e) const
 assumptions declared_assumptions(const symbol_table& symbols)
 {
     // Under the declared domains the sign of an expression never changes, and GiNaC's
-    // symbols are never reused (each has its own serial number), so one cache serves
-    // every derivation of a run. Narrowed domains (a check's `assuming`) need their own.
-    static const auto declared_signs = std::make_shared<assumptions::sign_cache>();
-    assumptions given{{}, declaration_order(symbols), declared_signs};
+    // symbols are never reused (each has its own serial number), so what is worked out
+    // serves every derivation of a run. Narrowed domains (a check's `assuming`) need
+    // their own.
+    static const auto declared = std::make_shared<assumptions::worked_out>();
+    assumptions given{{}, declaration_order(symbols), declared};
     for (const quantity& q : symbols.all())
         if (!q.definition)
             given.domains[q.symbol] = q.range;
@@ -351,10 +353,11 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
     return proof;
 }
 
-GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
+namespace {
+
+// simplify_radicals, for an expression with radicals.
+GiNaC::ex take_out_radicals(const GiNaC::ex& e, const assumptions& given)
 {
-    if (!has_radical(e))
-        return e;
     struct inner : GiNaC::map_function {
         const assumptions& given;
         explicit inner(const assumptions& g) : given(g) {}
@@ -430,6 +433,25 @@ GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
         return mapped;
     }
     return n.is_positive() ? outside * root : 1 / (outside * root);
+}
+
+} // namespace
+
+GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
+{
+    if (!has_radical(e))
+        return e;
+    // The same radicals meet again in every proof of a derivation: kept, bounded as the
+    // sign cache.
+    auto& radicals = given.known->radicals;
+    const auto known = radicals.find(e);
+    if (known != radicals.end())
+        return known->second;
+    const GiNaC::ex simplified = take_out_radicals(e, given);
+    if (radicals.size() >= 4096)
+        radicals.clear();
+    radicals.emplace(e, simplified);
+    return simplified;
 }
 
 } // namespace impact::engine

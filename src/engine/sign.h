@@ -41,9 +41,13 @@ struct assumptions {
     term_order order;
     std::string text(const GiNaC::ex& e) const;
 
-    /// Signs already decided under these domains, with their reasons.
-    using sign_cache = std::map<GiNaC::ex, std::pair<sign_set, std::string>, GiNaC::ex_is_less>;
-    std::shared_ptr<sign_cache> signs = std::make_shared<sign_cache>();
+    /// What is already worked out under these domains: signs with their reasons, and
+    /// radicals simplified. Domains narrowed (a check's `assuming`) need one of their own.
+    struct worked_out {
+        std::map<GiNaC::ex, std::pair<sign_set, std::string>, GiNaC::ex_is_less> signs;
+        std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> radicals;
+    };
+    std::shared_ptr<worked_out> known = std::make_shared<worked_out>();
 };
 
 /// The declared domains of a derivation's symbols.

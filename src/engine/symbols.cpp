@@ -78,7 +78,7 @@ public:
     static constexpr double max_bits = 1e5;
     static constexpr double max_exponent = 1000;
 
-    number_bounds(const GiNaC::symtab& declared, const std::string& text) : table_(declared)
+    number_bounds(const GiNaC::symtab& declared, const std::string& text) : declared_(declared)
     {
         for (std::size_t i = 0; i < text.size();) {
             const auto c = static_cast<unsigned char>(text[i]);
@@ -97,7 +97,7 @@ public:
                     digits();
                 }
                 const GiNaC::symbol placeholder("impact_number_" + std::to_string(literals_.size()) + "_");
-                table_[placeholder.get_name()] = placeholder;
+                placeholders_.push_back(placeholder);
                 literals_.emplace(placeholder, text.substr(i, end - i));
                 shape_ += " " + placeholder.get_name() + " ";
                 i = end;
@@ -108,15 +108,28 @@ public:
         }
     }
 
+    /// True when the text writes no number: its shape is then the text itself.
+    bool literal_free() const { return literals_.empty(); }
+
     // Throws `error` at `where` when the expression would compute too large a number.
     void check(const source_location& where, const std::string& text) const
     {
+        GiNaC::symtab table = declared_;
+        for (const GiNaC::symbol& placeholder : placeholders_)
+            table[placeholder.get_name()] = placeholder;
         GiNaC::ex shape;
         try {
-            shape = GiNaC::parser(table_, /*strict=*/true)(shape_);
+            shape = GiNaC::parser(table, /*strict=*/true)(shape_);
         } catch (...) {
             return;  // reading it for real reports what is wrong
         }
+        size(shape, where, text);
+    }
+
+    // The same for a text without numbers, already read (its shape): a constant such as
+    // Pi may still be raised too high.
+    void check_read(const GiNaC::ex& shape, const source_location& where, const std::string& text) const
+    {
         size(shape, where, text);
     }
 
@@ -203,7 +216,8 @@ private:
         return 0;
     }
 
-    GiNaC::symtab table_;
+    const GiNaC::symtab& declared_;
+    std::vector<GiNaC::symbol> placeholders_;
     std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> literals_;
     std::string shape_;
 };
@@ -254,6 +268,8 @@ const quantity& symbol_table::declare(const spec::symbol& declaration)
         q.definition = parse(*declaration.definition);
     table_[name] = q.symbol;
     quantities_.push_back(std::move(q));
+    order_.reset();
+    reader_.reset();
     return quantities_.back();
 }
 
@@ -268,6 +284,8 @@ const quantity& symbol_table::adopt(const quantity& other)
         q.symbol = GiNaC::realsymbol(q.name, q.latex);
     table_[q.name] = q.symbol;
     quantities_.push_back(std::move(q));
+    order_.reset();
+    reader_.reset();
     return quantities_.back();
 }
 
@@ -288,13 +306,23 @@ const quantity& symbol_table::at(const spec::text& name) const
 
 GiNaC::ex symbol_table::parse(const spec::text& text) const
 {
+    const auto known = parsed_.find(text.value);
+    if (known != parsed_.end())
+        return known->second;
     if (text.value.find_first_not_of(" \t\r\n") == std::string::npos)
         throw error(text.where, "empty expression");
     refuse_deep_nesting(text.where, text.value);
-    number_bounds(table_, text.value).check(text.where, text.value);
+    const number_bounds bounds(table_, text.value);
+    if (!bounds.literal_free())
+        bounds.check(text.where, text.value);
     try {
-        GiNaC::parser reader(table_, /*strict=*/true);
-        return reader(text.value);
+        if (!reader_)
+            reader_ = std::make_shared<GiNaC::parser>(table_, /*strict=*/true);
+        const GiNaC::ex e = (*reader_)(text.value);
+        if (bounds.literal_free())
+            bounds.check_read(e, text.where, text.value);
+        parsed_.emplace(text.value, e);
+        return e;
     } catch (const GiNaC::pole_error&) {
         // GiNaC evaluates as it reads: x/(z - z) fails while parsing, though it parses.
         throw error(text.where, fmt::format("expression \"{}\": division by zero", text.value));
@@ -325,7 +353,18 @@ GiNaC::ex symbol_table::parse_equation(const spec::text& text) const
 
 std::string symbol_table::text(const GiNaC::ex& e) const
 {
-    return ginac_syntax(e, declaration_order(*this));
+    return ginac_syntax(e, order());
+}
+
+const term_order& symbol_table::order() const
+{
+    if (!order_) {
+        std::vector<GiNaC::ex> ranked;
+        for (const quantity& q : quantities_)
+            ranked.push_back(q.symbol);
+        order_ = std::make_shared<const term_order>(std::move(ranked));
+    }
+    return *order_;
 }
 
 std::string to_string(relation r)

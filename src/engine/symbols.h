@@ -11,11 +11,15 @@
 
 #include <ginac/ginac.h>
 
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace impact::engine {
+
+class term_order;
 
 /// A declared symbol with its domain; abbreviations carry their definition.
 struct quantity {
@@ -67,9 +71,19 @@ public:
     /// The domain of each symbol, keyed by the GiNaC symbol.
     const domain* domain_of(const GiNaC::ex& symbol) const;
 
+    /// The symbols' declaration order (see `declaration_order`), made once for the
+    /// declarations so far; its copies share what it has worked out.
+    const term_order& order() const;
+
 private:
     std::vector<quantity> quantities_;
     GiNaC::symtab table_;
+    // Texts already read: the same pieces are read again and again (a symbol, `M + m`),
+    // most of all by the LaTeX printer's written forms. Only a text that reads is kept,
+    // and declaring more symbols never changes what it reads as.
+    mutable std::map<std::string, GiNaC::ex> parsed_;
+    mutable std::shared_ptr<const term_order> order_;   // reset by each declaration
+    mutable std::shared_ptr<GiNaC::parser> reader_;      // reset by each declaration
 };
 
 /// An expression in GiNaC's own syntax, as its parser reads it back.

@@ -1,0 +1,213 @@
+#include "engine/polynomial.h"
+
+#include <cln/rational.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace impact::engine {
+namespace {
+
+// The exponents of up to 32 variables, one byte each. An exponent stays below 128, so
+// that the bytes of a product's monomial (the sums of two such) never carry into each
+// other, and a high bit set says that an exponent has grown too large.
+constexpr std::size_t max_variables = 32;
+using monomial = std::array<std::uint64_t, max_variables / 8>;
+constexpr std::uint64_t high_bits = 0x8080808080808080ULL;
+
+// A polynomial: its terms sorted by monomial, no two alike, none zero.
+struct term {
+    monomial exponents;
+    cln::cl_RA coefficient;
+};
+using polynomial = std::vector<term>;
+
+// More variables, or a higher power, than a monomial holds.
+struct too_large {};
+
+polynomial constant(const cln::cl_RA& c)
+{
+    polynomial p;
+    if (!cln::zerop(c))
+        p.push_back({monomial{}, c});
+    return p;
+}
+
+// Terms in any order, alike ones possibly repeated, made a polynomial.
+polynomial collected(polynomial terms)
+{
+    std::sort(terms.begin(), terms.end(),
+              [](const term& a, const term& b) { return a.exponents < b.exponents; });
+    polynomial p;
+    for (term& t : terms) {
+        if (!p.empty() && p.back().exponents == t.exponents)
+            p.back().coefficient = p.back().coefficient + t.coefficient;
+        else
+            p.push_back(std::move(t));
+    }
+    p.erase(std::remove_if(p.begin(), p.end(), [](const term& t) { return cln::zerop(t.coefficient); }), p.end());
+    return p;
+}
+
+polynomial times(const polynomial& a, const polynomial& b)
+{
+    polynomial product;
+    product.reserve(a.size() * b.size());
+    for (const term& ta : a) {
+        for (const term& tb : b) {
+            monomial m;
+            for (std::size_t i = 0; i < m.size(); ++i) {
+                m[i] = ta.exponents[i] + tb.exponents[i];
+                if (m[i] & high_bits)
+                    throw too_large{};
+            }
+            product.push_back({m, ta.coefficient * tb.coefficient});
+        }
+    }
+    return collected(std::move(product));
+}
+
+polynomial power(const polynomial& p, int k)
+{
+    polynomial result = constant(1);
+    polynomial square = p;
+    for (; k > 0; k >>= 1) {
+        if (k & 1)
+            result = times(result, square);
+        if (k > 1)
+            square = times(square, square);
+    }
+    return result;
+}
+
+// Denominators as powers of factors; a factor is named by the expression whose
+// numerator it is (a number by itself), so that equal factors meet in one entry.
+using denominators = std::map<GiNaC::ex, int, GiNaC::ex_is_less>;
+
+struct fraction {
+    polynomial numerator;
+    denominators denominator;
+};
+
+// over_common_denominator of prove.cpp, with the numerator expanded as it is built.
+class expander {
+public:
+    bool met_opaque() const { return opaque_; }
+
+    fraction read(const GiNaC::ex& e)
+    {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+            if (!n.is_rational())
+                return {variable(e, true), {}};
+            const cln::cl_RA value = cln::the<cln::cl_RA>(n.to_cl_N());
+            if (n.is_integer())
+                return {constant(value), {}};
+            return {constant(cln::numerator(value)), {{n.denom(), 1}}};
+        }
+        if (GiNaC::is_a<GiNaC::symbol>(e))
+            return {variable(e, false), {}};
+        if (GiNaC::is_a<GiNaC::mul>(e)) {
+            fraction r{constant(1), {}};
+            for (std::size_t i = 0; i < e.nops(); ++i) {
+                fraction f = read(e.op(i));
+                r.numerator = times(r.numerator, f.numerator);
+                for (const auto& [base, k] : f.denominator)
+                    r.denominator[base] += k;
+            }
+            return r;
+        }
+        if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::integer)) {
+            const int k = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int();
+            fraction base = read(e.op(0));
+            if (k >= 0) {
+                for (auto& [b, j] : base.denominator)
+                    j *= k;
+                return {power(base.numerator, k), base.denominator};
+            }
+            // (n / d)^-k = d^k / n^k
+            polynomial top = constant(1);
+            for (const auto& [b, j] : base.denominator)
+                top = times(top, power(numerator_of(b), -k * j));
+            numerators_.emplace(e.op(0), std::move(base.numerator));
+            return {std::move(top), {{e.op(0), -k}}};
+        }
+        if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::rational) &&
+            GiNaC::ex_to<GiNaC::numeric>(e.op(1)).denom() == 2 && !e.op(1).is_equal(GiNaC::numeric(1, 2))) {
+            // x^(p/2) = x^((p-1)/2) sqrt(x), as over_common_denominator takes it.
+            const GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).numer();
+            fraction whole = read(GiNaC::pow(e.op(0), (p - 1) / 2));
+            whole.numerator = times(whole.numerator, variable(GiNaC::sqrt(e.op(0)), true));
+            return whole;
+        }
+        if (GiNaC::is_a<GiNaC::add>(e)) {
+            std::vector<fraction> terms;
+            denominators lcm;
+            for (std::size_t i = 0; i < e.nops(); ++i) {
+                terms.push_back(read(e.op(i)));
+                for (const auto& [base, k] : terms.back().denominator)
+                    lcm[base] = std::max(lcm[base], k);
+            }
+            polynomial top;
+            for (const fraction& t : terms) {
+                polynomial scaled = t.numerator;
+                for (const auto& [base, k] : lcm) {
+                    const auto own = t.denominator.find(base);
+                    const int missing = k - (own == t.denominator.end() ? 0 : own->second);
+                    if (missing > 0)
+                        scaled = times(scaled, power(numerator_of(base), missing));
+                }
+                top.insert(top.end(), scaled.begin(), scaled.end());
+            }
+            return {collected(std::move(top)), std::move(lcm)};
+        }
+        // A radical, a function, a constant: a variable of its own.
+        return {variable(e, true), {}};
+    }
+
+private:
+    // The polynomial a factor of a denominator stands for.
+    const polynomial& numerator_of(const GiNaC::ex& factor)
+    {
+        auto known = numerators_.find(factor);
+        if (known == numerators_.end())
+            known = numerators_.emplace(factor, read(factor).numerator).first;
+        return known->second;
+    }
+
+    polynomial variable(const GiNaC::ex& e, bool opaque)
+    {
+        opaque_ = opaque_ || opaque;
+        const auto [at, added] = variables_.emplace(e, variables_.size());
+        if (at->second >= max_variables)
+            throw too_large{};
+        monomial m{};
+        m[at->second / 8] = std::uint64_t(1) << (8 * (at->second % 8));
+        return {{m, 1}};
+    }
+
+    std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> variables_;
+    std::map<GiNaC::ex, polynomial, GiNaC::ex_is_less> numerators_;
+    bool opaque_ = false;
+};
+
+} // namespace
+
+expansion expand_numerator(const GiNaC::ex& e)
+{
+    try {
+        expander x;
+        const fraction f = x.read(e);
+        if (f.numerator.empty())
+            return expansion::zero;
+        return x.met_opaque() ? expansion::undecided : expansion::nonzero;
+    } catch (const too_large&) {
+        return expansion::undecided;
+    }
+}
+
+} // namespace impact::engine

@@ -1,0 +1,30 @@
+// Deciding whether a rational function is zero, by expanding its numerator fast.
+//
+// `prove_equal` brings the difference of two sides over the product of their
+// denominators (no gcd) and asks whether the numerator expands to zero. GiNaC's
+// expand() builds every intermediate product as an expression and evaluates it; here
+// the numerator is expanded as a sparse polynomial with rational coefficients, each
+// monomial a packed vector of exponents. What is not a sum, product, rational number,
+// symbol or integer power (a radical, a function) stands as a variable of its own: a
+// numerator that expands to zero so is zero whatever those parts are, which proves the
+// function zero. A non-zero numerator settles the matter only when no such part occurs;
+// otherwise GiNaC, which knows that sqrt(x)^2 = x, has to be asked.
+#pragma once
+
+#include <ginac/ginac.h>
+
+namespace impact::engine {
+
+/// What the numerator of a rational function expands to.
+enum class expansion {
+    zero,       ///< zero: the function is zero wherever it is defined
+    nonzero,    ///< a non-zero polynomial in its symbols: the function is not zero
+    undecided,  ///< a non-zero polynomial in which radicals or functions stand as variables
+                ///< (they may yet cancel), or one too large to expand here
+};
+
+/// Expands the numerator of `e` over the product of its denominators, factor by factor
+/// (the least common multiple of a sum's denominators, no gcd).
+expansion expand_numerator(const GiNaC::ex& e);
+
+} // namespace impact::engine
