@@ -16,21 +16,6 @@ bool is_negative_number(const GiNaC::ex& e)
     return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_negative();
 }
 
-// The numeric coefficient of a term of a sum (1 when there is none).
-GiNaC::numeric coefficient_of(const GiNaC::ex& term)
-{
-    if (GiNaC::is_a<GiNaC::numeric>(term))
-        return GiNaC::ex_to<GiNaC::numeric>(term);
-    if (GiNaC::is_a<GiNaC::mul>(term)) {
-        GiNaC::numeric c = 1;
-        for (std::size_t i = 0; i < term.nops(); ++i)
-            if (GiNaC::is_a<GiNaC::numeric>(term.op(i)))
-                c *= GiNaC::ex_to<GiNaC::numeric>(term.op(i));
-        return c;
-    }
-    return 1;
-}
-
 std::string number_text(const GiNaC::numeric& n)
 {
     std::ostringstream out;
