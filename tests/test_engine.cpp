@@ -216,6 +216,19 @@ BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_funct
     const GiNaC::ex root = GiNaC::sqrt(a * a + b * b);
     BOOST_TEST((expand_numerator(root * (a - b) - root * a + root * b) == expansion::zero));
     BOOST_TEST((expand_numerator(GiNaC::sqrt(a) * GiNaC::sqrt(b) - GiNaC::sqrt(a * b)) == expansion::undecided));
+    // The inverse of a sum with a denominator of its own: 1/(a + 1/b) = b/(a b + 1).
+    BOOST_TEST((expand_numerator(1 / (a + 1 / b) - b / (a * b + 1)) == expansion::zero));
+    BOOST_TEST((expand_numerator(1 / (a + 1 / b) - a / (a * b + 1)) == expansion::nonzero));
+    // A half-integer power is a power of its base times its square root.
+    BOOST_TEST((expand_numerator(GiNaC::pow(a + b, GiNaC::numeric(3, 2)) - a * GiNaC::sqrt(a + b) -
+                                 b * GiNaC::sqrt(a + b)) == expansion::zero));
+    // Rational coefficients: (a + b)^2 / 3 against its expansion, which GiNaC spreads over the terms.
+    BOOST_TEST((expand_numerator(GiNaC::numeric(1, 3) * GiNaC::pow(a + b, 2) - (a * a + 2 * a * b + b * b) / 3) ==
+                expansion::zero));
+    BOOST_TEST((expand_numerator(GiNaC::numeric(1, 3) * GiNaC::pow(a + b, 2) - (a * a + b * b) / 3) ==
+                expansion::nonzero));
+    // A power above what a monomial holds is left to GiNaC.
+    BOOST_TEST((expand_numerator(GiNaC::pow(a + 1, 130) - GiNaC::pow(a - 1, 130)) == expansion::undecided));
 }
 
 BOOST_AUTO_TEST_CASE(a_derivation_uses_the_results_of_another)

@@ -156,8 +156,9 @@ std::vector<lane_input> lane_inputs(const engine::kernel& k)
 // The batch kernel: a loop without branches, so that compilers vectorise it. Each pair's
 // status is decided as the scalar kernel decides it (the guards in reverse order, so that
 // the first failing one wins); every pair is computed, one not resolved dividing by 1 (no
-// division by zero), and its results are discarded. A resolved pair runs the scalar
-// kernel's operations on the same values: the same results, bit for bit.
+// division by zero) and its results discarded. A resolved pair runs the scalar kernel's
+// operations on the same values: the same results, bit for bit, under the same
+// floating-point contraction.
 void print_batch(std::string& out, const kernel_plan& plan)
 {
     const engine::kernel& k = *plan.kernel;
@@ -176,7 +177,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
     if (with_status)
         pointers.push_back("impact::status* IMPACT_RESTRICT status_");
 
-    out += fmt::format("\nnamespace detail {{\n\n/// The loop of {}_batch in {}D, without branches.\n", k.name, n);
+    out += fmt::format("\nnamespace detail {{\n\n// The loop of {}_batch in {}D, without branches.\n", k.name, n);
     out += fmt::format("template <class Real{}>\ninline void {}(std::size_t count, {}) noexcept\n{{\n"
                        "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
                        with_status ? ", bool with_status" : "", loop, fmt::join(pointers, ", "));
@@ -185,25 +186,36 @@ void print_batch(std::string& out, const kernel_plan& plan)
     const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
     const std::vector<bool> for_outputs = needed_by(plan.code, plan.guard_values, plan.code.outputs.size());
     if (with_status) {
-        const cxx_code given = program_cxx(plan.code, element_names);
+        // The scalar kernel tests the inputs' domains first, then the conditions computed
+        // from them; a lane whose inputs are refused divides by 1 in those computations.
+        std::vector<const engine::kernel_guard*> domains, conditions;
+        for (const engine::kernel_guard& g : k.guards)
+            (g.condition ? conditions : domains).push_back(&g);
         out += "        // The status, as the scalar kernel decides it: the first guard that fails.\n"
                "        impact::status outcome = status::ok;\n        {\n";
-        for (std::size_t s = 0; s < given.statements.size(); ++s)
-            if (for_guards[given.statement_values[s]])
-                out += "            " + given.statements[s] + "\n";
-        std::size_t condition = plan.guard_values;
+        // `fails |= test`, not `||`: no branch, so that the loop vectorises.
         bool declared = false;
-        for (auto g = k.guards.rbegin(); g != k.guards.rend(); ++g) {
-            // `fails |= test`, not `||`: no branch, so that the loop vectorises.
-            const std::vector<std::string> failures =
-                g->condition ? std::vector<std::string>{fmt::format("!({} {} Real(0))", given.outputs[--condition],
-                                                                    g->op == engine::relation::less ? "<" : ">")}
-                             : guard_failures(k, *g, "_[i]");
+        auto fail_with = [&](const std::vector<std::string>& failures, const std::string& status, bool admitted) {
             for (std::size_t f = 0; f < failures.size(); ++f)
                 out += fmt::format("            {} {};\n", f == 0 ? (declared ? "fails =" : "bool fails =") : "fails |=",
                                    failures[f]);
+            if (admitted)
+                out += "            fails &= admitted;\n";
+            out += fmt::format("            outcome = fails ? status::{} : outcome;\n", status);
             declared = true;
-            out += fmt::format("            outcome = fails ? status::{} : outcome;\n", g->status);
+        };
+        for (auto g = domains.rbegin(); g != domains.rend(); ++g)
+            fail_with(guard_failures(k, **g, "_[i]"), (*g)->status, false);
+        if (!conditions.empty()) {
+            out += "            const bool admitted = outcome == status::ok;\n";
+            const cxx_code given = program_cxx(plan.code, element_names, "admitted");
+            for (std::size_t s = 0; s < given.statements.size(); ++s)
+                if (for_guards[given.statement_values[s]])
+                    out += "            " + given.statements[s] + "\n";
+            for (std::size_t c = conditions.size(); c-- > 0;)
+                fail_with({fmt::format("!({} {} Real(0))", given.outputs[c],
+                                       conditions[c]->op == engine::relation::less ? "<" : ">")},
+                          conditions[c]->status, true);
         }
         out += "        }\n        const bool resolved = outcome == status::ok;\n";
     }
@@ -239,7 +251,8 @@ void print_batch(std::string& out, const kernel_plan& plan)
     out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays: outputs named after\n"
                        "/// inputs are updated in place.{1}\n"
                        "/// The loop has no branches, so that compilers vectorise it; each result is bit for\n"
-                       "/// bit the scalar {0}'s. The arrays written must not overlap any other array.\n",
+                       "/// bit the scalar {0}'s (compiled alike, e.g. -ffp-contract=off). The arrays written\n"
+                       "/// must not overlap any other array.\n",
                        k.name, with_status ? " `status` (if not null) receives each status." : "");
     out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n",
                        k.name, n);

@@ -109,14 +109,13 @@ private:
         return fast_two_sum(p, e);
     }
 
-    // One division: q1 = a/b through the reciprocal, then the remainder a - q1 b (exact
-    // to double-double) times the reciprocal corrects it; q1 + q2 is a/b to about 2^-100.
+    // q1 = a/b, corrected by the remainder a - q1 b (exact to double-double) over b. Two
+    // divisions, not one through 1/b: a reciprocal overflows where the quotient need not.
     pair dd_div(pair a, pair b)
     {
-        const int reciprocal = op(opcode::div, constant(1), b.hi);
-        const int q1 = op(opcode::mul, a.hi, reciprocal);
+        const int q1 = op(opcode::div, a.hi, b.hi);
         const pair r = dd_add(a, dd_neg(dd_mul({q1, -1}, b)));
-        const int q2 = op(opcode::mul, r.hi, reciprocal);
+        const int q2 = op(opcode::div, r.hi, b.hi);
         return fast_two_sum(q1, q2);
     }
 
@@ -429,7 +428,7 @@ std::size_t count(const program& p, opcode op)
     return n;
 }
 
-cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& divide_if)
+cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if)
 {
     // A value used more than once gets a name; one used once is written in place, with
     // the parentheses that keep the program's tree (C++ evaluates a - b + c as (a - b) + c,
@@ -465,11 +464,15 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
         case opcode::mul: expression = operand(in.a, product) + " * " + operand(in.b, unary); own = product; break;
         case opcode::div:
             expression = operand(in.a, product) + " / " +
-                         (divide_if.empty() ? operand(in.b, unary) : "(" + divide_if + " ? " + text[in.b] + " : Real(1))");
+                         (kept_if.empty() || p.code[in.b].op == opcode::constant
+                              ? operand(in.b, unary)
+                              : "(" + kept_if + " ? " + text[in.b] + " : Real(1))");
             own = product;
             break;
         case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
-        case opcode::sqrt: expression = "std::sqrt(" + text[in.a] + ")"; break;
+        case opcode::sqrt:
+            expression = "std::sqrt(" + (kept_if.empty() ? text[in.a] : kept_if + " ? " + text[in.a] + " : Real(0)") + ")";
+            break;
         case opcode::fma: expression = "std::fma(" + text[in.a] + ", " + text[in.b] + ", " + text[in.c] + ")"; break;
         case opcode::call:
             expression = "std::" + in.function + "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";

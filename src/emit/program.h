@@ -57,14 +57,16 @@ std::size_t count(const program& p, opcode op);
 
 /// The body of a kernel: one `const Real tN = ...;` line per instruction that is not an
 /// input (inputs are referred to by `names`), and the C++ expression of each output.
-/// With `divide_if`, every divisor d is written `(divide_if ? d : Real(1))`: a batch loop
-/// computes every lane, and a lane it discards divides by 1.
+/// With `kept_if`, every divisor d that is not a constant is written `(kept_if ? d : Real(1))`
+/// and every square root's argument x `(kept_if ? x : Real(0))`: a batch loop computes every
+/// lane, and one whose results it discards neither divides by zero nor takes a root of a
+/// negative number.
 struct cxx_code {
     std::vector<std::string> statements;
     std::vector<int> statement_values;   ///< the value each statement computes
     std::vector<std::string> outputs;
 };
-cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& divide_if = {});
+cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if = {});
 
 /// Runs `p` in the floating-point type `Real`, exactly as the printed C++ does.
 template <class Real>

@@ -137,13 +137,13 @@ inline dd mul(dd a, dd b)
     return normalise(p, std::fma(a.lo, b.hi, std::fma(a.hi, b.lo, std::fma(a.hi, b.hi, -p))));
 }
 
-// a / b with one division: q1 through the reciprocal, corrected by the remainder.
+// a / b: q1 corrected by the remainder.
 inline double div(dd a, dd b)
 {
-    const double reciprocal = 1 / b.hi, q1 = a.hi * reciprocal;
+    const double q1 = a.hi / b.hi;
     const dd q1b = mul({q1, 0}, b);
     const dd r = add(a, {-q1b.hi, -q1b.lo});
-    return q1 + r.hi * reciprocal;
+    return q1 + r.hi / b.hi;
 }
 
 // Written as one would by hand for speed: no branches (each status decided by masks, the
@@ -165,7 +165,7 @@ void hand_written(pairs<D>& p)
     }
     impact::status* __restrict status = p.status.data();
     const std::size_t count = p.count;
-#pragma GCC ivdep
+    IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
         bool finite = true;
         std::array<double, D> r;

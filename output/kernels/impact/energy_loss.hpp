@@ -43,19 +43,18 @@ inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
     const Real t24 = Real(2) * t22;
     const Real t25 = std::fma(Real(2), M - (t22 - t23) + (m - t23), std::fma(Real(2), t22, -t24));
     const Real t26 = t24 + t25;
-    const Real t27 = Real(1) / t26;
-    const Real t28 = t21 * t27;
-    const Real t29 = t28 * t26;
-    const Real t30 = std::fma(t28, t25 - (t26 - t24), std::fma(t28, t26, -t29));
-    const Real t31 = t29 + t30;
-    const Real t32 = -t31;
-    const Real t33 = t21 + t32;
-    const Real t34 = t33 - t21;
-    const Real t35 = t21 - (t33 - t34) + (t32 - t34) + (t20 - (t21 - t19) + -(t30 - (t31 - t29)));
-    const Real t36 = t33 + t35;
-    const Real t37 = t36 * t27;
-    const Real t38 = t28 + t37;
-    return -t38;
+    const Real t27 = t21 / t26;
+    const Real t28 = t27 * t26;
+    const Real t29 = std::fma(t27, t25 - (t26 - t24), std::fma(t27, t26, -t28));
+    const Real t30 = t28 + t29;
+    const Real t31 = -t30;
+    const Real t32 = t21 + t31;
+    const Real t33 = t32 - t21;
+    const Real t34 = t21 - (t32 - t33) + (t31 - t33) + (t20 - (t21 - t19) + -(t29 - (t30 - t28)));
+    const Real t35 = t32 + t34;
+    const Real t36 = t35 / t26;
+    const Real t37 = t27 + t36;
+    return -t37;
 }
 
 } // namespace impact

@@ -44,21 +44,20 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
     const Real t14 = std::fma(t10 - (t11 - t9), t1, std::fma(t11, v_M - (t1 - t12) - (v_m + t12), std::fma(t11, t1, -t13)));
     const Real t15 = t13 + t14;
     const Real t16 = t3 - M;
-    const Real t17 = Real(1) / t3;
-    const Real t18 = t15 * t17;
-    const Real t19 = t18 * t3;
-    const Real t20 = std::fma(t18, M - (t3 - t16) + (m - t16), std::fma(t18, t3, -t19));
-    const Real t21 = t19 + t20;
-    const Real t22 = -t21;
-    const Real t23 = t15 + t22;
-    const Real t24 = t23 - t15;
-    const Real t25 = t15 - (t23 - t24) + (t22 - t24) + (t14 - (t15 - t13) + -(t20 - (t21 - t19)));
-    const Real t26 = t23 + t25;
-    const Real t27 = t26 * t17;
-    const Real t28 = t18 + t27;
+    const Real t17 = t15 / t3;
+    const Real t18 = t17 * t3;
+    const Real t19 = std::fma(t17, M - (t3 - t16) + (m - t16), std::fma(t17, t3, -t18));
+    const Real t20 = t18 + t19;
+    const Real t21 = -t20;
+    const Real t22 = t15 + t21;
+    const Real t23 = t22 - t15;
+    const Real t24 = t15 - (t22 - t23) + (t21 - t23) + (t14 - (t15 - t13) + -(t19 - (t20 - t18)));
+    const Real t25 = t22 + t24;
+    const Real t26 = t25 / t3;
+    const Real t27 = t17 + t26;
     out.v_M = std::fma(-m, t2, std::fma(m, v_m, t0)) / t3;
     out.v_m = std::fma(m, v_m, std::fma(M, t2, t0)) / t3;
-    out.J = t28;
+    out.J = t27;
     return out;
 }
 

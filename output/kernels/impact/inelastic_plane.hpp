@@ -95,28 +95,27 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
     const Real t37 = t27 * t36;
     const Real t38 = std::fma(M - (t27 - t28) + (m - t28), t36, std::fma(t27, t35 - (t36 - t33), std::fma(t27, t36, -t37)));
     const Real t39 = t37 + t38;
-    const Real t40 = Real(1) / t39;
-    const Real t41 = t26 * t40;
-    const Real t42 = t41 * t39;
-    const Real t43 = std::fma(t41, t38 - (t39 - t37), std::fma(t41, t39, -t42));
-    const Real t44 = t42 + t43;
-    const Real t45 = -t44;
-    const Real t46 = t26 + t45;
-    const Real t47 = t46 - t26;
-    const Real t48 = t26 - (t46 - t47) + (t45 - t47) + (t25 - (t26 - t24) + -(t43 - (t44 - t42)));
-    const Real t49 = t46 + t48;
-    const Real t50 = t49 * t40;
-    const Real t51 = t41 + t50;
-    const Real t52 = t51 * m;
-    const Real t53 = t51 * M;
-    out.v_M = {-(t52 * t0) + v_Mx, -(t52 * t2) + v_My};
-    out.v_m = {t53 * t0 + v_mx, t53 * t2 + v_my};
+    const Real t40 = t26 / t39;
+    const Real t41 = t40 * t39;
+    const Real t42 = std::fma(t40, t38 - (t39 - t37), std::fma(t40, t39, -t41));
+    const Real t43 = t41 + t42;
+    const Real t44 = -t43;
+    const Real t45 = t26 + t44;
+    const Real t46 = t45 - t26;
+    const Real t47 = t26 - (t45 - t46) + (t44 - t46) + (t25 - (t26 - t24) + -(t42 - (t43 - t41)));
+    const Real t48 = t45 + t47;
+    const Real t49 = t48 / t39;
+    const Real t50 = t40 + t49;
+    const Real t51 = t50 * m;
+    const Real t52 = t50 * M;
+    out.v_M = {-(t51 * t0) + v_Mx, -(t51 * t2) + v_My};
+    out.v_m = {t52 * t0 + v_mx, t52 * t2 + v_my};
     return out;
 }
 
 namespace detail {
 
-/// The loop of collide_batch in 2D, without branches.
+// The loop of collide_batch in 2D, without branches.
 template <class Real, bool with_status>
 inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
@@ -125,19 +124,7 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         // The status, as the scalar kernel decides it: the first guard that fails.
         impact::status outcome = status::ok;
         {
-            const Real t0 = C_Mx_[i] - C_mx_[i];
-            const Real t1 = t0 * t0;
-            const Real t2 = C_My_[i] - C_my_[i];
-            const Real t3 = t2 * t2;
-            const Real t4 = v_Mx_[i] - v_mx_[i];
-            const Real t5 = t0 * t4;
-            const Real t6 = v_My_[i] - v_my_[i];
-            const Real t7 = t2 * t6;
-            bool fails = !(t5 + t7 < Real(0));
-            outcome = fails ? status::separating : outcome;
-            fails = !(t1 + t3 > Real(0));
-            outcome = fails ? status::coincident_centres : outcome;
-            fails = !std::isfinite(C_Mx_[i]);
+            bool fails = !std::isfinite(C_Mx_[i]);
             fails |= !std::isfinite(C_My_[i]);
             fails |= !std::isfinite(C_mx_[i]);
             fails |= !std::isfinite(C_my_[i]);
@@ -154,6 +141,21 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
             fails |= !(m_[i] > Real(0));
             fails |= !std::isfinite(m_[i]);
             outcome = fails ? status::invalid_mass : outcome;
+            const bool admitted = outcome == status::ok;
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t1 = t0 * t0;
+            const Real t2 = C_My_[i] - C_my_[i];
+            const Real t3 = t2 * t2;
+            const Real t4 = v_Mx_[i] - v_mx_[i];
+            const Real t5 = t0 * t4;
+            const Real t6 = v_My_[i] - v_my_[i];
+            const Real t7 = t2 * t6;
+            fails = !(t5 + t7 < Real(0));
+            fails &= admitted;
+            outcome = fails ? status::separating : outcome;
+            fails = !(t1 + t3 > Real(0));
+            fails &= admitted;
+            outcome = fails ? status::coincident_centres : outcome;
         }
         const bool resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
@@ -208,24 +210,23 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         const Real t37 = t27 * t36;
         const Real t38 = std::fma(M - (t27 - t28) + (m - t28), t36, std::fma(t27, t35 - (t36 - t33), std::fma(t27, t36, -t37)));
         const Real t39 = t37 + t38;
-        const Real t40 = Real(1) / (resolved ? t39 : Real(1));
-        const Real t41 = t26 * t40;
-        const Real t42 = t41 * t39;
-        const Real t43 = std::fma(t41, t38 - (t39 - t37), std::fma(t41, t39, -t42));
-        const Real t44 = t42 + t43;
-        const Real t45 = -t44;
-        const Real t46 = t26 + t45;
-        const Real t47 = t46 - t26;
-        const Real t48 = t26 - (t46 - t47) + (t45 - t47) + (t25 - (t26 - t24) + -(t43 - (t44 - t42)));
-        const Real t49 = t46 + t48;
-        const Real t50 = t49 * t40;
-        const Real t51 = t41 + t50;
-        const Real t52 = t51 * m;
-        const Real t53 = t51 * M;
-        v_Mx_[i] = resolved ? -(t52 * t0) + v_Mx : v_Mx_[i];
-        v_My_[i] = resolved ? -(t52 * t2) + v_My : v_My_[i];
-        v_mx_[i] = resolved ? t53 * t0 + v_mx : v_mx_[i];
-        v_my_[i] = resolved ? t53 * t2 + v_my : v_my_[i];
+        const Real t40 = t26 / (resolved ? t39 : Real(1));
+        const Real t41 = t40 * t39;
+        const Real t42 = std::fma(t40, t38 - (t39 - t37), std::fma(t40, t39, -t41));
+        const Real t43 = t41 + t42;
+        const Real t44 = -t43;
+        const Real t45 = t26 + t44;
+        const Real t46 = t45 - t26;
+        const Real t47 = t26 - (t45 - t46) + (t44 - t46) + (t25 - (t26 - t24) + -(t42 - (t43 - t41)));
+        const Real t48 = t45 + t47;
+        const Real t49 = t48 / (resolved ? t39 : Real(1));
+        const Real t50 = t40 + t49;
+        const Real t51 = t50 * m;
+        const Real t52 = t50 * M;
+        v_Mx_[i] = resolved ? -(t51 * t0) + v_Mx : v_Mx_[i];
+        v_My_[i] = resolved ? -(t51 * t2) + v_My : v_My_[i];
+        v_mx_[i] = resolved ? t52 * t0 + v_mx : v_mx_[i];
+        v_my_[i] = resolved ? t52 * t2 + v_my : v_my_[i];
         if constexpr (with_status)
             status_[i] = outcome;
     }
@@ -236,7 +237,8 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
 /// collide over `count` collisions stored as structure of arrays: outputs named after
 /// inputs are updated in place. `status` (if not null) receives each status.
 /// The loop has no branches, so that compilers vectorise it; each result is bit for
-/// bit the scalar collide's. The arrays written must not overlap any other array.
+/// bit the scalar collide's (compiled alike, e.g. -ffp-contract=off). The arrays written
+/// must not overlap any other array.
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 2>& data) noexcept
 {

@@ -124,28 +124,27 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
     const Real t56 = t40 * t55;
     const Real t57 = std::fma(M - (t40 - t41) + (m - t41), t55, std::fma(t40, t54 - (t55 - t52), std::fma(t40, t55, -t56)));
     const Real t58 = t56 + t57;
-    const Real t59 = Real(1) / t58;
-    const Real t60 = t39 * t59;
-    const Real t61 = t60 * t58;
-    const Real t62 = std::fma(t60, t57 - (t58 - t56), std::fma(t60, t58, -t61));
-    const Real t63 = t61 + t62;
-    const Real t64 = -t63;
-    const Real t65 = t39 + t64;
-    const Real t66 = t65 - t39;
-    const Real t67 = t39 - (t65 - t66) + (t64 - t66) + (t38 - (t39 - t37) + -(t62 - (t63 - t61)));
-    const Real t68 = t65 + t67;
-    const Real t69 = t68 * t59;
-    const Real t70 = t60 + t69;
-    const Real t71 = t70 * m;
-    const Real t72 = t70 * M;
-    out.v_M = {-(t71 * t0) + v_Mx, -(t71 * t2) + v_My, -(t71 * t4) + v_Mz};
-    out.v_m = {t72 * t0 + v_mx, t72 * t2 + v_my, t72 * t4 + v_mz};
+    const Real t59 = t39 / t58;
+    const Real t60 = t59 * t58;
+    const Real t61 = std::fma(t59, t57 - (t58 - t56), std::fma(t59, t58, -t60));
+    const Real t62 = t60 + t61;
+    const Real t63 = -t62;
+    const Real t64 = t39 + t63;
+    const Real t65 = t64 - t39;
+    const Real t66 = t39 - (t64 - t65) + (t63 - t65) + (t38 - (t39 - t37) + -(t61 - (t62 - t60)));
+    const Real t67 = t64 + t66;
+    const Real t68 = t67 / t58;
+    const Real t69 = t59 + t68;
+    const Real t70 = t69 * m;
+    const Real t71 = t69 * M;
+    out.v_M = {-(t70 * t0) + v_Mx, -(t70 * t2) + v_My, -(t70 * t4) + v_Mz};
+    out.v_m = {t71 * t0 + v_mx, t71 * t2 + v_my, t71 * t4 + v_mz};
     return out;
 }
 
 namespace detail {
 
-/// The loop of collide_batch in 3D, without branches.
+// The loop of collide_batch in 3D, without branches.
 template <class Real, bool with_status>
 inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
@@ -154,23 +153,7 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         // The status, as the scalar kernel decides it: the first guard that fails.
         impact::status outcome = status::ok;
         {
-            const Real t0 = C_Mx_[i] - C_mx_[i];
-            const Real t1 = t0 * t0;
-            const Real t2 = C_My_[i] - C_my_[i];
-            const Real t3 = t2 * t2;
-            const Real t4 = C_Mz_[i] - C_mz_[i];
-            const Real t5 = t4 * t4;
-            const Real t6 = v_Mx_[i] - v_mx_[i];
-            const Real t7 = t0 * t6;
-            const Real t8 = v_My_[i] - v_my_[i];
-            const Real t9 = t2 * t8;
-            const Real t10 = v_Mz_[i] - v_mz_[i];
-            const Real t11 = t4 * t10;
-            bool fails = !(t7 + t9 + t11 < Real(0));
-            outcome = fails ? status::separating : outcome;
-            fails = !(t1 + t3 + t5 > Real(0));
-            outcome = fails ? status::coincident_centres : outcome;
-            fails = !std::isfinite(C_Mx_[i]);
+            bool fails = !std::isfinite(C_Mx_[i]);
             fails |= !std::isfinite(C_My_[i]);
             fails |= !std::isfinite(C_Mz_[i]);
             fails |= !std::isfinite(C_mx_[i]);
@@ -191,6 +174,25 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
             fails |= !(m_[i] > Real(0));
             fails |= !std::isfinite(m_[i]);
             outcome = fails ? status::invalid_mass : outcome;
+            const bool admitted = outcome == status::ok;
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t1 = t0 * t0;
+            const Real t2 = C_My_[i] - C_my_[i];
+            const Real t3 = t2 * t2;
+            const Real t4 = C_Mz_[i] - C_mz_[i];
+            const Real t5 = t4 * t4;
+            const Real t6 = v_Mx_[i] - v_mx_[i];
+            const Real t7 = t0 * t6;
+            const Real t8 = v_My_[i] - v_my_[i];
+            const Real t9 = t2 * t8;
+            const Real t10 = v_Mz_[i] - v_mz_[i];
+            const Real t11 = t4 * t10;
+            fails = !(t7 + t9 + t11 < Real(0));
+            fails &= admitted;
+            outcome = fails ? status::separating : outcome;
+            fails = !(t1 + t3 + t5 > Real(0));
+            fails &= admitted;
+            outcome = fails ? status::coincident_centres : outcome;
         }
         const bool resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
@@ -268,26 +270,25 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         const Real t56 = t40 * t55;
         const Real t57 = std::fma(M - (t40 - t41) + (m - t41), t55, std::fma(t40, t54 - (t55 - t52), std::fma(t40, t55, -t56)));
         const Real t58 = t56 + t57;
-        const Real t59 = Real(1) / (resolved ? t58 : Real(1));
-        const Real t60 = t39 * t59;
-        const Real t61 = t60 * t58;
-        const Real t62 = std::fma(t60, t57 - (t58 - t56), std::fma(t60, t58, -t61));
-        const Real t63 = t61 + t62;
-        const Real t64 = -t63;
-        const Real t65 = t39 + t64;
-        const Real t66 = t65 - t39;
-        const Real t67 = t39 - (t65 - t66) + (t64 - t66) + (t38 - (t39 - t37) + -(t62 - (t63 - t61)));
-        const Real t68 = t65 + t67;
-        const Real t69 = t68 * t59;
-        const Real t70 = t60 + t69;
-        const Real t71 = t70 * m;
-        const Real t72 = t70 * M;
-        v_Mx_[i] = resolved ? -(t71 * t0) + v_Mx : v_Mx_[i];
-        v_My_[i] = resolved ? -(t71 * t2) + v_My : v_My_[i];
-        v_Mz_[i] = resolved ? -(t71 * t4) + v_Mz : v_Mz_[i];
-        v_mx_[i] = resolved ? t72 * t0 + v_mx : v_mx_[i];
-        v_my_[i] = resolved ? t72 * t2 + v_my : v_my_[i];
-        v_mz_[i] = resolved ? t72 * t4 + v_mz : v_mz_[i];
+        const Real t59 = t39 / (resolved ? t58 : Real(1));
+        const Real t60 = t59 * t58;
+        const Real t61 = std::fma(t59, t57 - (t58 - t56), std::fma(t59, t58, -t60));
+        const Real t62 = t60 + t61;
+        const Real t63 = -t62;
+        const Real t64 = t39 + t63;
+        const Real t65 = t64 - t39;
+        const Real t66 = t39 - (t64 - t65) + (t63 - t65) + (t38 - (t39 - t37) + -(t61 - (t62 - t60)));
+        const Real t67 = t64 + t66;
+        const Real t68 = t67 / (resolved ? t58 : Real(1));
+        const Real t69 = t59 + t68;
+        const Real t70 = t69 * m;
+        const Real t71 = t69 * M;
+        v_Mx_[i] = resolved ? -(t70 * t0) + v_Mx : v_Mx_[i];
+        v_My_[i] = resolved ? -(t70 * t2) + v_My : v_My_[i];
+        v_Mz_[i] = resolved ? -(t70 * t4) + v_Mz : v_Mz_[i];
+        v_mx_[i] = resolved ? t71 * t0 + v_mx : v_mx_[i];
+        v_my_[i] = resolved ? t71 * t2 + v_my : v_my_[i];
+        v_mz_[i] = resolved ? t71 * t4 + v_mz : v_mz_[i];
         if constexpr (with_status)
             status_[i] = outcome;
     }
@@ -298,7 +299,8 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
 /// collide over `count` collisions stored as structure of arrays: outputs named after
 /// inputs are updated in place. `status` (if not null) receives each status.
 /// The loop has no branches, so that compilers vectorise it; each result is bit for
-/// bit the scalar collide's. The arrays written must not overlap any other array.
+/// bit the scalar collide's (compiled alike, e.g. -ffp-contract=off). The arrays written
+/// must not overlap any other array.
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 3>& data) noexcept
 {
