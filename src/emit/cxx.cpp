@@ -195,19 +195,20 @@ void print_batch(std::string& out, const kernel_plan& plan)
                "        impact::status outcome = status::ok;\n        {\n";
         // `fails |= test`, not `||`: no branch, so that the loop vectorises.
         bool declared = false;
-        auto fail_with = [&](const std::vector<std::string>& failures, const std::string& status, bool admitted) {
+        auto fail_with = [&](const std::vector<std::string>& failures, const std::string& status, const char* into) {
             for (std::size_t f = 0; f < failures.size(); ++f)
                 out += fmt::format("            {} {};\n", f == 0 ? (declared ? "fails =" : "bool fails =") : "fails |=",
                                    failures[f]);
-            if (admitted)
-                out += "            fails &= admitted;\n";
-            out += fmt::format("            outcome = fails ? status::{} : outcome;\n", status);
+            out += fmt::format("            {0} = fails ? status::{1} : {0};\n", into, status);
             declared = true;
         };
         for (auto g = domains.rbegin(); g != domains.rend(); ++g)
-            fail_with(guard_failures(k, **g, "_[i]"), (*g)->status, false);
+            fail_with(guard_failures(k, **g, "_[i]"), (*g)->status, "outcome");
         if (!conditions.empty()) {
-            out += "            const bool admitted = outcome == status::ok;\n";
+            // A separate status for the conditions, taken where the domains admit the
+            // inputs (GCC vectorises this, not `fails &= admitted`).
+            out += "            const bool admitted = outcome == status::ok;\n"
+                   "            impact::status condition = status::ok;\n";
             const cxx_code given = program_cxx(plan.code, element_names, "admitted");
             for (std::size_t s = 0; s < given.statements.size(); ++s)
                 if (for_guards[given.statement_values[s]])
@@ -215,7 +216,8 @@ void print_batch(std::string& out, const kernel_plan& plan)
             for (std::size_t c = conditions.size(); c-- > 0;)
                 fail_with({fmt::format("!({} {} Real(0))", given.outputs[c],
                                        conditions[c]->op == engine::relation::less ? "<" : ">")},
-                          conditions[c]->status, true);
+                          conditions[c]->status, "condition");
+            out += "            outcome = admitted ? condition : outcome;\n";
         }
         out += "        }\n        const bool resolved = outcome == status::ok;\n";
     }

@@ -175,6 +175,7 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
             fails |= !std::isfinite(m_[i]);
             outcome = fails ? status::invalid_mass : outcome;
             const bool admitted = outcome == status::ok;
+            impact::status condition = status::ok;
             const Real t0 = C_Mx_[i] - C_mx_[i];
             const Real t1 = t0 * t0;
             const Real t2 = C_My_[i] - C_my_[i];
@@ -188,11 +189,10 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
             const Real t10 = v_Mz_[i] - v_mz_[i];
             const Real t11 = t4 * t10;
             fails = !(t7 + t9 + t11 < Real(0));
-            fails &= admitted;
-            outcome = fails ? status::separating : outcome;
+            condition = fails ? status::separating : condition;
             fails = !(t1 + t3 + t5 > Real(0));
-            fails &= admitted;
-            outcome = fails ? status::coincident_centres : outcome;
+            condition = fails ? status::coincident_centres : condition;
+            outcome = admitted ? condition : outcome;
         }
         const bool resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.

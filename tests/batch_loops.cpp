@@ -1,0 +1,6 @@
+// The batch kernels instantiated in double, for tests/vectorised.cmake to compile and read
+// the compiler's report of which loops it vectorised.
+#include "impact/impact.hpp"
+
+template void impact::collide_batch<double>(const impact::collide_batch_data<double, 2>&);
+template void impact::collide_batch<double>(const impact::collide_batch_data<double, 3>&);
