@@ -95,11 +95,10 @@ std::vector<std::string> guard_failures(const engine::kernel& k, const engine::k
 {
     std::vector<std::string> failures;
     for (const std::string& name : g.parameters)
-        for (const engine::kernel_parameter& p : k.parameters)
-            if (p.name == name)
-                for (const engine::quantity& q : p.components)
-                    for (std::string& test : domain_failures(q, q.name + suffix))
-                        failures.push_back(std::move(test));
+        if (const engine::kernel_parameter* p = k.find_parameter(name))
+            for (const engine::quantity& q : p->components)
+                for (std::string& test : domain_failures(q, q.name + suffix))
+                    failures.push_back(std::move(test));
     return failures;
 }
 
@@ -109,10 +108,7 @@ std::string members_initialiser(const engine::kernel& k)
     // the velocities unchanged.
     std::vector<std::string> values;
     for (const engine::kernel_output& o : k.outputs) {
-        const engine::kernel_parameter* same = nullptr;
-        for (const engine::kernel_parameter& p : k.parameters)
-            if (p.name == o.member)
-                same = &p;
+        const engine::kernel_parameter* same = k.find_parameter(o.member);
         values.push_back(same ? same->name : (o.is_array ? "{}" : "Real(0)"));
     }
     if (!k.guards.empty())
@@ -234,10 +230,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
     std::size_t value = plan.guard_values;
     for (const engine::kernel_output& o : k.outputs) {
         for (std::size_t c = 0; c < o.values.size(); ++c, ++value) {
-            const engine::kernel_parameter* same = nullptr;
-            for (const engine::kernel_parameter& p : k.parameters)
-                if (p.name == o.member)
-                    same = &p;
+            const engine::kernel_parameter* same = k.find_parameter(o.member);
             if (!same)
                 throw std::logic_error("a batch kernel writes only outputs named after inputs");
             const std::string target = same->components.at(c).name + "_[i]";

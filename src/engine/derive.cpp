@@ -585,9 +585,8 @@ private:
 
     const kernel_parameter* find_parameter(const kernel& k, const spec::text& name) const
     {
-        for (const kernel_parameter& p : k.parameters)
-            if (p.name == name.value)
-                return &p;
+        if (const kernel_parameter* p = k.find_parameter(name.value))
+            return p;
         throw error(name.where, fmt::format("kernel '{}' has no input '{}'", k.name, name.value));
     }
 
@@ -742,6 +741,14 @@ const quantity* kernel::find_input(const std::string& name) const
         for (const quantity& q : p.components)
             if (q.name == name)
                 return &q;
+    return nullptr;
+}
+
+const kernel_parameter* kernel::find_parameter(const std::string& name) const
+{
+    for (const kernel_parameter& p : parameters)
+        if (p.name == name)
+            return &p;
     return nullptr;
 }
 

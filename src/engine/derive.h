@@ -135,6 +135,8 @@ struct kernel {
     /// Every input symbol, parameters' components in order.
     std::vector<GiNaC::ex> input_symbols() const;
     const quantity* find_input(const std::string& name) const;
+    /// The parameter called `name` (an array such as `C_M`, or a scalar), or null.
+    const kernel_parameter* find_parameter(const std::string& name) const;
 };
 
 /// A derivation once run: everything later stages need, with no way back to the file.
