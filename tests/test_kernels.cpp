@@ -393,8 +393,11 @@ std::vector<bad_pair> bad_pairs()
         {2, 1, 1.5, C_M, C_m, v_M, v_m, status::invalid_restitution},
         {2, 1, -0.1, C_M, C_m, v_M, v_m, status::invalid_restitution},
         {2, 1, nan, C_M, C_m, v_M, v_m, status::invalid_restitution},
+        {inf, 1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
         {2, 1, 0.5, C_M, C_m, {inf, 0}, v_m, status::non_finite},
         {2, 1, 0.5, {nan, 0}, C_m, v_M, v_m, status::non_finite},
+        {2, 1, 0.5, C_M, {0, nan}, v_M, v_m, status::non_finite},
+        {2, 1, 0.5, C_M, C_m, v_M, {1, -inf}, status::non_finite},
         {2, 1, 0.5, C_M, C_m, {1, 0.5}, v_m, status::separating},           // M moves away from m
         {2, 1, 0.5, C_M, C_m, {1, 0}, {1, 0}, status::separating},          // no relative motion
         {0, 1, 2, C_m, C_m, {inf, 0}, v_m, status::invalid_mass},           // the first guard that fails

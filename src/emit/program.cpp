@@ -30,8 +30,7 @@ public:
     {
         if (!options_.compensated)
             return value(e);
-        const pair p = compensated(e);
-        return p.hi;
+        return rounded(compensated(e));
     }
 
     int value(const GiNaC::ex& e)
@@ -53,9 +52,12 @@ public:
     }
 
 private:
-    // Compensated arithmetic: a value carried as hi + lo (lo < -1 means lo = 0), with
-    // the error-free transformations TwoSum and TwoProduct (through std::fma), so that
-    // an expression comes out within about one rounding of its exact value.
+    // Compensated arithmetic: a value carried as hi + lo (lo < 0 means lo = 0), with the
+    // error-free transformations TwoSum and TwoProduct (through std::fma), so that an
+    // expression comes out within about one rounding of its exact value. The pairs are
+    // not renormalised between operations (|lo| stays within a few ulps of hi, which is
+    // all the next operation needs): a value is rounded to one double, hi + lo, only where
+    // it leaves the compensated arithmetic.
     struct pair {
         int hi;
         int lo = -1;
@@ -63,25 +65,14 @@ private:
 
     int add_lo(int a, int b) { return a < 0 ? b : b < 0 ? a : op(opcode::add, a, b); }
 
-    // s + e with |e| small next to s: renormalised.
-    pair fast_two_sum(int s, int e)
-    {
-        if (e < 0)
-            return {s, -1};
-        const int h = op(opcode::add, s, e);
-        const int l = op(opcode::sub, e, op(opcode::sub, h, s));
-        return {h, l};
-    }
+    int rounded(pair a) { return add_lo(a.hi, a.lo); }
 
     pair dd_add(pair a, pair b)
     {
         const int s = op(opcode::add, a.hi, b.hi);
         const int bb = op(opcode::sub, s, a.hi);
         const int e = op(opcode::add, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::sub, b.hi, bb));
-        // TwoSum of two doubles is already normalised: s = fl(s + e).
-        if (a.lo < 0 && b.lo < 0)
-            return {s, e};
-        return fast_two_sum(s, add_lo(e, add_lo(a.lo, b.lo)));
+        return {s, add_lo(e, add_lo(a.lo, b.lo))};
     }
 
     // a - b, as dd_add(a, -b) computes it but without the negations (the same values).
@@ -90,10 +81,8 @@ private:
         const int s = op(opcode::sub, a.hi, b.hi);
         const int bb = op(opcode::sub, s, a.hi);
         const int e = op(opcode::sub, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::add, b.hi, bb));
-        if (a.lo < 0 && b.lo < 0)
-            return {s, e};
         const int lo = b.lo < 0 ? a.lo : a.lo < 0 ? op(opcode::neg, b.lo) : op(opcode::sub, a.lo, b.lo);
-        return fast_two_sum(s, add_lo(e, lo));
+        return {s, add_lo(e, lo)};
     }
 
     pair dd_neg(pair a) { return {op(opcode::neg, a.hi), a.lo < 0 ? -1 : op(opcode::neg, a.lo)}; }
@@ -106,26 +95,27 @@ private:
             e = op(opcode::fma, a.hi, b.lo, e);
         if (a.lo >= 0)
             e = op(opcode::fma, a.lo, b.hi, e);
-        return fast_two_sum(p, e);
+        return {p, e};
     }
 
-    // q1 = a/b, corrected by the remainder a - q1 b (exact to double-double) over b. Two
-    // divisions, not one through 1/b: a reciprocal overflows where the quotient need not.
+    // q1 = a/b, corrected by the remainder a - q1 b over b. The remainder's leading part
+    // a.hi - q1 b.hi is exact through fma (q1 being a.hi/b.hi rounded). Two divisions, not
+    // one through 1/b: a reciprocal overflows where the quotient need not.
     pair dd_div(pair a, pair b)
     {
         const int q1 = op(opcode::div, a.hi, b.hi);
-        const pair r = dd_add(a, dd_neg(dd_mul({q1, -1}, b)));
-        const int q2 = op(opcode::div, r.hi, b.hi);
-        return fast_two_sum(q1, q2);
+        const int minus_q1 = op(opcode::neg, q1);
+        int r = add_lo(op(opcode::fma, minus_q1, b.hi, a.hi), a.lo);
+        if (b.lo >= 0)
+            r = op(opcode::fma, minus_q1, b.lo, r);
+        return {q1, op(opcode::div, r, b.hi)};
     }
 
     pair dd_sqrt(pair a)
     {
         const int h = op(opcode::sqrt, a.hi);
-        int r = op(opcode::fma, op(opcode::neg, h), h, a.hi);
-        if (a.lo >= 0)
-            r = op(opcode::add, r, a.lo);
-        return fast_two_sum(h, op(opcode::div, r, op(opcode::add, h, h)));
+        const int r = add_lo(op(opcode::fma, op(opcode::neg, h), h, a.hi), a.lo);
+        return {h, op(opcode::div, r, op(opcode::add, h, h))};
     }
 
     pair dd_constant(const GiNaC::numeric& n)
@@ -266,7 +256,7 @@ private:
             return n.is_negative() ? op(opcode::neg, constant(-n)) : constant(n);
         }
         if (const auto let = lets_.find(e); let != lets_.end())
-            return options_.compensated_lets ? compensated(let->second).hi : value(let->second);
+            return options_.compensated_lets ? rounded(compensated(let->second)) : value(let->second);
         if (const auto input = inputs_.find(e); input != inputs_.end())
             return input->second;
         if (GiNaC::is_a<GiNaC::symbol>(e))

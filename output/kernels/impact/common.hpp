@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 // The arrays a batch kernel writes overlap no other array (`restrict`), and its
 // iterations are independent: compilers may vectorise its loop.
@@ -22,7 +23,10 @@
 namespace impact {
 
 /// Why a kernel resolved no collision; `ok` when it did.
-enum class status { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating };
+/// As wide as a double, so that a vectorised batch loop over doubles keeps one
+/// width in every lane: with a narrower status, compilers pack two vectors of
+/// doubles per vector of statuses, and the loop runs short of registers.
+enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating };
 
 /// What collide returns in N dimensions.
 template <class Real, std::size_t N>

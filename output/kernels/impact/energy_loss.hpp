@@ -17,44 +17,22 @@ template <class Real>
 inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
     const Real t0 = M * m;
-    const Real t1 = std::fma(M, m, -t0);
-    const Real t2 = t0 + t1;
-    const Real t3 = Real(1) + eps;
-    const Real t4 = t3 - Real(1);
-    const Real t5 = t2 * t3;
-    const Real t6 = std::fma(t1 - (t2 - t0), t3, std::fma(t2, Real(1) - (t3 - t4) + (eps - t4), std::fma(t2, t3, -t5)));
-    const Real t7 = t5 + t6;
-    const Real t8 = Real(1) - eps;
-    const Real t9 = t8 - Real(1);
-    const Real t10 = t7 * t8;
-    const Real t11 = std::fma(t6 - (t7 - t5), t8, std::fma(t7, Real(1) - (t8 - t9) - (eps + t9), std::fma(t7, t8, -t10)));
-    const Real t12 = t10 + t11;
-    const Real t13 = v_M - v_m;
-    const Real t14 = t13 - v_M;
-    const Real t15 = v_M - (t13 - t14) - (v_m + t14);
-    const Real t16 = t13 * t13;
-    const Real t17 = std::fma(t15, t13, std::fma(t13, t15, std::fma(t13, t13, -t16)));
-    const Real t18 = t16 + t17;
-    const Real t19 = t12 * t18;
-    const Real t20 = std::fma(t11 - (t12 - t10), t18, std::fma(t12, t17 - (t18 - t16), std::fma(t12, t18, -t19)));
-    const Real t21 = t19 + t20;
-    const Real t22 = M + m;
-    const Real t23 = t22 - M;
-    const Real t24 = Real(2) * t22;
-    const Real t25 = std::fma(Real(2), M - (t22 - t23) + (m - t23), std::fma(Real(2), t22, -t24));
-    const Real t26 = t24 + t25;
-    const Real t27 = t21 / t26;
-    const Real t28 = t27 * t26;
-    const Real t29 = std::fma(t27, t25 - (t26 - t24), std::fma(t27, t26, -t28));
-    const Real t30 = t28 + t29;
-    const Real t31 = -t30;
-    const Real t32 = t21 + t31;
-    const Real t33 = t32 - t21;
-    const Real t34 = t21 - (t32 - t33) + (t31 - t33) + (t20 - (t21 - t19) + -(t29 - (t30 - t28)));
-    const Real t35 = t32 + t34;
-    const Real t36 = t35 / t26;
-    const Real t37 = t27 + t36;
-    return -t37;
+    const Real t1 = Real(1) + eps;
+    const Real t2 = t1 - Real(1);
+    const Real t3 = t0 * t1;
+    const Real t4 = Real(1) - eps;
+    const Real t5 = t4 - Real(1);
+    const Real t6 = t3 * t4;
+    const Real t7 = v_M - v_m;
+    const Real t8 = t7 - v_M;
+    const Real t9 = v_M - (t7 - t8) - (v_m + t8);
+    const Real t10 = t7 * t7;
+    const Real t11 = t6 * t10;
+    const Real t12 = M + m;
+    const Real t13 = t12 - M;
+    const Real t14 = Real(2) * t12;
+    const Real t15 = -(t11 / t14);
+    return t15 + -(std::fma(t15, std::fma(Real(2), M - (t12 - t13) + (m - t13), std::fma(Real(2), t12, -t14)), std::fma(t15, t14, t11) + std::fma(std::fma(std::fma(std::fma(M, m, -t0), t1, std::fma(t0, Real(1) - (t1 - t2) + (eps - t2), std::fma(t0, t1, -t3))), t4, std::fma(t3, Real(1) - (t4 - t5) - (eps + t5), std::fma(t3, t4, -t6))), t10, std::fma(t6, std::fma(t9, t7, std::fma(t7, t9, std::fma(t7, t7, -t10))), std::fma(t6, t10, -t11)))) / t14);
 }
 
 } // namespace impact
