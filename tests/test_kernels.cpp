@@ -345,30 +345,40 @@ BOOST_AUTO_TEST_CASE(the_batch_kernel_gives_the_scalar_results_bit_for_bit)
     }
     v_M0 = v_M;
     v_m0 = v_m;
-    std::vector<impact::status> status(n);
-    impact::collide_batch_data<double, 3> data{n,
-                                               M.data(),
-                                               m.data(),
-                                               {C_M[0].data(), C_M[1].data(), C_M[2].data()},
-                                               {C_m[0].data(), C_m[1].data(), C_m[2].data()},
-                                               {v_M[0].data(), v_M[1].data(), v_M[2].data()},
-                                               {v_m[0].data(), v_m[1].data(), v_m[2].data()},
-                                               eps.data(),
-                                               status.data()};
-    impact::collide_batch(data);
-    std::size_t resolved = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto r = impact::collide(M[i], m[i], {C_M[0][i], C_M[1][i], C_M[2][i]}, {C_m[0][i], C_m[1][i], C_m[2][i]},
-                                       {v_M0[0][i], v_M0[1][i], v_M0[2][i]}, {v_m0[0][i], v_m0[1][i], v_m0[2][i]},
-                                       eps[i]);
-        BOOST_TEST((r.status == status[i]));
-        resolved += r.status == impact::status::ok ? 1 : 0;
-        for (std::size_t d = 0; d < 3; ++d) {
-            BOOST_TEST(std::memcmp(&r.v_M[d], &v_M[d][i], sizeof(double)) == 0);
-            BOOST_TEST(std::memcmp(&r.v_m[d], &v_m[d][i], sizeof(double)) == 0);
+    // Counts around the batch's blocks of 8 pairs and its reading 64 pairs ahead; the pairs
+    // past the count are left alone.
+    for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{8}, std::size_t{9},
+                                    std::size_t{64}, std::size_t{65}, std::size_t{73}, n}) {
+        v_M = v_M0;
+        v_m = v_m0;
+        std::vector<impact::status> status(n, impact::status::separating);
+        impact::collide_batch_data<double, 3> data{count,
+                                                   M.data(),
+                                                   m.data(),
+                                                   {C_M[0].data(), C_M[1].data(), C_M[2].data()},
+                                                   {C_m[0].data(), C_m[1].data(), C_m[2].data()},
+                                                   {v_M[0].data(), v_M[1].data(), v_M[2].data()},
+                                                   {v_m[0].data(), v_m[1].data(), v_m[2].data()},
+                                                   eps.data(),
+                                                   status.data()};
+        impact::collide_batch(data);
+        std::size_t resolved = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            auto r = impact::collide(M[i], m[i], {C_M[0][i], C_M[1][i], C_M[2][i]}, {C_m[0][i], C_m[1][i], C_m[2][i]},
+                                     {v_M0[0][i], v_M0[1][i], v_M0[2][i]}, {v_m0[0][i], v_m0[1][i], v_m0[2][i]},
+                                     eps[i]);
+            if (i >= count)  // not in the batch: untouched
+                r = {{v_M0[0][i], v_M0[1][i], v_M0[2][i]}, {v_m0[0][i], v_m0[1][i], v_m0[2][i]}, impact::status::separating};
+            BOOST_TEST((r.status == status[i]), "pair " << i << " of a batch of " << count);
+            resolved += r.status == impact::status::ok ? 1 : 0;
+            for (std::size_t d = 0; d < 3; ++d) {
+                BOOST_TEST(std::memcmp(&r.v_M[d], &v_M[d][i], sizeof(double)) == 0);
+                BOOST_TEST(std::memcmp(&r.v_m[d], &v_m[d][i], sizeof(double)) == 0);
+            }
         }
+        if (count == n)
+            BOOST_TEST(resolved > n / 2);  // most pairs collide: the comparison covers the arithmetic
     }
-    BOOST_TEST(resolved > n / 2);  // most pairs collide: the comparison covers the arithmetic
 }
 
 // Inputs that allow no collision, each with the status the kernels must give, and a

@@ -171,6 +171,34 @@ std::vector<lane_input> lane_inputs(const engine::kernel& k)
     return inputs;
 }
 
+// The batch loop run over blocks of 8 pairs (a cache line of doubles), each array's
+// data asked for 64 pairs ahead: out of cache, the hardware's prefetching alone leaves
+// the loop waiting for memory (in 3D, 21 arrays streamed at once, a quarter slower).
+void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status)
+{
+    std::vector<std::string> pointers, ahead, from_block;
+    for (const lane_input& in : inputs) {
+        pointers.push_back(fmt::format("{}Real* IMPACT_RESTRICT {}_", in.written ? "" : "const ", in.name));
+        ahead.push_back(fmt::format("            IMPACT_PREFETCH({}_ + b + ahead, {});\n", in.name, in.written ? 1 : 0));
+        from_block.push_back(fmt::format("{}_ + b", in.name));
+    }
+    if (with_status) {
+        pointers.push_back("impact::status* IMPACT_RESTRICT status_");
+        ahead.push_back("            if constexpr (with_status)\n"
+                        "                IMPACT_PREFETCH(status_ + b + ahead, 1);\n");
+        from_block.push_back("with_status ? status_ + b : status_");
+    }
+    const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+    out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
+                       "// processor's own prefetching, following so many arrays, falls behind.\n"
+                       "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
+                       "    constexpr std::size_t block = 8, ahead = 64;\n    std::size_t b = 0;\n"
+                       "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
+                       "        {4}(block, {5});\n    }}\n    {4}(count - b, {5});\n}}\n",
+                       loop, with_status ? ", bool with_status" : "", fmt::join(pointers, ", "),
+                       fmt::join(ahead, ""), call, fmt::join(from_block, ", "));
+}
+
 // The batch kernel: a loop without branches, so that compilers vectorise it. Each pair's
 // status is decided as the scalar kernel decides it (the guards in reverse order, so that
 // the first failing one wins); every pair is computed, one not resolved dividing by 1 (no
@@ -264,7 +292,9 @@ void print_batch(std::string& out, const kernel_plan& plan)
     }
     if (with_status)
         out += "        if constexpr (with_status)\n            status_[i] = outcome;\n";
-    out += "    }\n}\n\n} // namespace detail\n";
+    out += "    }\n}\n";
+    print_blocks(out, loop, inputs, with_status);
+    out += "\n} // namespace detail\n";
 
     // The public entry point.
     out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays: outputs named after\n"
@@ -276,11 +306,11 @@ void print_batch(std::string& out, const kernel_plan& plan)
     out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n",
                        k.name, n);
     if (with_status)
-        out += fmt::format("    if (data.status)\n        detail::{0}<Real, true>(data.count, {1}, data.status);\n"
-                           "    else\n        detail::{0}<Real, false>(data.count, {1}, nullptr);\n",
+        out += fmt::format("    if (data.status)\n        detail::{0}_ahead<Real, true>(data.count, {1}, data.status);\n"
+                           "    else\n        detail::{0}_ahead<Real, false>(data.count, {1}, nullptr);\n",
                            loop, fmt::join(arguments, ", "));
     else
-        out += fmt::format("    detail::{}<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
+        out += fmt::format("    detail::{}_ahead<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
     out += "}\n";
 }
 
@@ -410,7 +440,12 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
                       "#define IMPACT_RESTRICT __restrict\n#else\n#define IMPACT_RESTRICT\n#endif\n"
                       "#if defined(__GNUC__) && !defined(__clang__)  // Clang needs no more than `restrict`\n"
                       "#define IMPACT_INDEPENDENT_ITERATIONS _Pragma(\"GCC ivdep\")\n"
-                      "#else\n#define IMPACT_INDEPENDENT_ITERATIONS\n#endif\n\n"
+                      "#else\n#define IMPACT_INDEPENDENT_ITERATIONS\n#endif\n"
+                      "// Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop\n"
+                      "// streams so many arrays at once that the processor's own prefetching falls behind.\n"
+                      "#if defined(__GNUC__) || defined(__clang__)\n"
+                      "#define IMPACT_PREFETCH(p, write) __builtin_prefetch((p), (write))\n"
+                      "#else\n#define IMPACT_PREFETCH(p, write) ((void)0)\n#endif\n\n"
                       "namespace impact {\n";
     std::vector<std::string> statuses{"ok"};
     for (const kernel_plan* plan : plans)

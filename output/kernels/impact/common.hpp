@@ -19,6 +19,13 @@
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
 #endif
+// Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop
+// streams so many arrays at once that the processor's own prefetching falls behind.
+#if defined(__GNUC__) || defined(__clang__)
+#define IMPACT_PREFETCH(p, write) __builtin_prefetch((p), (write))
+#else
+#define IMPACT_PREFETCH(p, write) ((void)0)
+#endif
 
 namespace impact {
 

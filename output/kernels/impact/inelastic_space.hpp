@@ -223,6 +223,38 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
     }
 }
 
+// collide_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// processor's own prefetching, following so many arrays, falls behind.
+template <class Real, bool with_status>
+inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64;
+    std::size_t b = 0;
+    for (; b + block <= count; b += block) {
+        if (b + ahead < count) {
+            IMPACT_PREFETCH(M_ + b + ahead, 0);
+            IMPACT_PREFETCH(m_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_My_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_Mz_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_my_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_mz_ + b + ahead, 0);
+            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_Mz_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
+            IMPACT_PREFETCH(eps_ + b + ahead, 0);
+            if constexpr (with_status)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+    }
+    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+}
+
 } // namespace detail
 
 /// collide over `count` collisions stored as structure of arrays: outputs named after
@@ -234,9 +266,9 @@ template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 3>& data) noexcept
 {
     if (data.status)
-        detail::collide_batch_3d<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
+        detail::collide_batch_3d_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
     else
-        detail::collide_batch_3d<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
+        detail::collide_batch_3d_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
 }
 
 } // namespace impact
