@@ -173,7 +173,7 @@ std::vector<lane_input> lane_inputs(const engine::kernel& k)
 
 // The batch loop run over blocks of 8 pairs (a cache line of doubles), each array's
 // data asked for 64 pairs ahead: out of cache, the hardware's prefetching alone leaves
-// the loop waiting for memory (in 3D, 21 arrays streamed at once, a quarter slower).
+// the loop waiting for memory (in 3D, 16 arrays streamed at once, a quarter slower).
 void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status)
 {
     std::vector<std::string> pointers, ahead, from_block;

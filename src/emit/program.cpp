@@ -54,10 +54,10 @@ public:
 private:
     // Compensated arithmetic: a value carried as hi + lo (lo < 0 means lo = 0), with the
     // error-free transformations TwoSum and TwoProduct (through std::fma), so that an
-    // expression comes out within about one rounding of its exact value. The pairs are
-    // not renormalised between operations (|lo| stays within a few ulps of hi, which is
-    // all the next operation needs): a value is rounded to one double, hi + lo, only where
-    // it leaves the compensated arithmetic.
+    // expression comes out within about one rounding of its exact value. A sum is
+    // renormalised (it may cancel, leaving lo as large as hi); a product or quotient is
+    // not (its lo is within an ulp of hi, all the next operation needs). A value is rounded
+    // to one double, hi + lo, only where it leaves the compensated arithmetic.
     struct pair {
         int hi;
         int lo = -1;
@@ -67,12 +67,22 @@ private:
 
     int rounded(pair a) { return add_lo(a.hi, a.lo); }
 
+    // s + e with |e| small next to s: renormalised.
+    pair fast_two_sum(int s, int e)
+    {
+        const int h = op(opcode::add, s, e);
+        return {h, op(opcode::sub, e, op(opcode::sub, h, s))};
+    }
+
     pair dd_add(pair a, pair b)
     {
         const int s = op(opcode::add, a.hi, b.hi);
         const int bb = op(opcode::sub, s, a.hi);
         const int e = op(opcode::add, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::sub, b.hi, bb));
-        return {s, add_lo(e, add_lo(a.lo, b.lo))};
+        // TwoSum of two doubles is already normalised: s = fl(s + e).
+        if (a.lo < 0 && b.lo < 0)
+            return {s, e};
+        return fast_two_sum(s, add_lo(e, add_lo(a.lo, b.lo)));
     }
 
     // a - b, as dd_add(a, -b) computes it but without the negations (the same values).
@@ -81,8 +91,10 @@ private:
         const int s = op(opcode::sub, a.hi, b.hi);
         const int bb = op(opcode::sub, s, a.hi);
         const int e = op(opcode::sub, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::add, b.hi, bb));
+        if (a.lo < 0 && b.lo < 0)
+            return {s, e};
         const int lo = b.lo < 0 ? a.lo : a.lo < 0 ? op(opcode::neg, b.lo) : op(opcode::sub, a.lo, b.lo);
-        return {s, add_lo(e, lo)};
+        return fast_two_sum(s, add_lo(e, lo));
     }
 
     pair dd_neg(pair a) { return {op(opcode::neg, a.hi), a.lo < 0 ? -1 : op(opcode::neg, a.lo)}; }
