@@ -117,7 +117,7 @@ struct dd {
 };
 
 // Double-double as Impact's compensated arithmetic does it: TwoSum and TwoProduct
-// (through fma), pairs not renormalised between operations.
+// (through fma), a sum renormalised (it may cancel), a product not.
 inline dd two_sum(double a, double b)
 {
     const double s = a + b, bb = s - a;
@@ -127,7 +127,8 @@ inline dd two_sum(double a, double b)
 inline dd add(dd a, dd b)
 {
     const dd s = two_sum(a.hi, b.hi);
-    return {s.hi, s.lo + (a.lo + b.lo)};
+    const double e = s.lo + (a.lo + b.lo), h = s.hi + e;
+    return {h, e - (h - s.hi)};
 }
 
 inline dd mul(dd a, dd b)
