@@ -73,54 +73,71 @@ std::string parameter_type(const engine::kernel_parameter& p)
     return p.is_array ? fmt::format("const std::array<Real, {}>&", p.components.size()) : "Real";
 }
 
-// The tests a guard makes of one quantity, each true when the value is NOT acceptable.
-// NaN fails every comparison, so each test is the negation of what must hold.
-std::vector<std::string> domain_failures(const engine::quantity& q, const std::string& value)
+// One test a guard makes of a value: a comparison, written as the test that fails (NaN
+// fails every comparison, so each is the negation of what must hold), or that the value
+// is finite.
+struct domain_test {
+    std::string failure;  ///< e.g. "!(M > Real(0))"; empty for a finiteness test
+    std::string finite;   ///< the value that must be finite
+};
+
+std::vector<domain_test> domain_tests(const engine::quantity& q, const std::string& value)
 {
     switch (q.range.what) {
     case engine::domain::kind::positive:
-        return {fmt::format("!({} > Real(0))", value), fmt::format("!std::isfinite({})", value)};
+        return {{fmt::format("!({} > Real(0))", value), {}}, {{}, value}};
     case engine::domain::kind::nonnegative:
-        return {fmt::format("!({} >= Real(0))", value), fmt::format("!std::isfinite({})", value)};
+        return {{fmt::format("!({} >= Real(0))", value), {}}, {{}, value}};
     case engine::domain::kind::interval:
-        return {fmt::format("!({} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower),
-                fmt::format("!({} {} Real({}))", value, q.range.upper_open ? "<" : "<=", q.range.upper)};
+        return {{fmt::format("!({} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower), {}},
+                {fmt::format("!({} {} Real({}))", value, q.range.upper_open ? "<" : "<=", q.range.upper), {}}};
     case engine::domain::kind::real: break;
     }
-    return {fmt::format("!std::isfinite({})", value)};
+    return {{{}, value}};
 }
 
-// The tests `!std::isfinite(x)` of a batch loop's guard made one: x * 0 is 0 for a finite
-// x and NaN for an infinite or NaN one, so a sum of such products is 0 exactly when every
-// x is finite. Fused, a value costs one operation, where std::isfinite costs two and a
-// merge of the results (the guards were a third of the loop's instructions).
-std::vector<std::string> one_finiteness_test(const std::vector<std::string>& failures)
+// The tests of a guard on the domains of its parameters, in order.
+std::vector<domain_test> guard_tests(const engine::kernel& k, const engine::kernel_guard& g, const std::string& suffix)
 {
-    const std::string prefix = "!std::isfinite(";
-    std::vector<std::string> others, values;
-    for (const std::string& f : failures)
-        if (f.compare(0, prefix.size(), prefix) == 0)
-            values.push_back(f.substr(prefix.size(), f.size() - prefix.size() - 1));
-        else
-            others.push_back(f);
-    if (values.size() < 2)
-        return failures;
-    std::string sum = values.back() + " * Real(0)";
-    for (std::size_t v = values.size() - 1; v-- > 0;)
-        sum = fmt::format("std::fma({}, Real(0), {})", values[v], sum);
-    others.push_back(fmt::format("!({} == Real(0))", sum));
-    return others;
-}
-
-// The tests of a guard on the domains of its parameters.
-std::vector<std::string> guard_failures(const engine::kernel& k, const engine::kernel_guard& g, const std::string& suffix)
-{
-    std::vector<std::string> failures;
+    std::vector<domain_test> tests;
     for (const std::string& name : g.parameters)
         if (const engine::kernel_parameter* p = k.find_parameter(name))
             for (const engine::quantity& q : p->components)
-                for (std::string& test : domain_failures(q, q.name + suffix))
-                    failures.push_back(std::move(test));
+                for (domain_test& t : domain_tests(q, q.name + suffix))
+                    tests.push_back(std::move(t));
+    return tests;
+}
+
+// The scalar kernel's form of the tests: a finite value tested with std::isfinite.
+std::vector<std::string> scalar_failures(const std::vector<domain_test>& tests)
+{
+    std::vector<std::string> failures;
+    for (const domain_test& t : tests)
+        failures.push_back(t.finite.empty() ? t.failure : fmt::format("!std::isfinite({})", t.finite));
+    return failures;
+}
+
+// The batch loop's form: the comparisons, then one test for every value that must be
+// finite. x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so a sum of such
+// products is 0 exactly when every x is finite. Fused, a value costs one operation, where
+// std::isfinite costs two and a merge of the results (the guards were a third of the
+// loop's instructions).
+std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)
+{
+    std::vector<std::string> failures, finite;
+    for (const domain_test& t : tests)
+        if (t.finite.empty())
+            failures.push_back(t.failure);
+        else
+            finite.push_back(t.finite);
+    if (finite.size() == 1)
+        failures.push_back(fmt::format("!std::isfinite({})", finite.front()));
+    if (finite.size() < 2)
+        return failures;
+    std::string sum = finite.back() + " * Real(0)";
+    for (std::size_t v = finite.size() - 1; v-- > 0;)
+        sum = fmt::format("std::fma({}, Real(0), {})", finite[v], sum);
+    failures.push_back(fmt::format("!({} == Real(0))", sum));
     return failures;
 }
 
@@ -171,19 +188,29 @@ std::vector<lane_input> lane_inputs(const engine::kernel& k)
     return inputs;
 }
 
+// The parameters of a batch loop: a pointer per scalar input (`restrict`), and the
+// status array.
+std::string loop_parameters(const std::vector<lane_input>& inputs, bool with_status)
+{
+    std::vector<std::string> pointers;
+    for (const lane_input& in : inputs)
+        pointers.push_back(fmt::format("{}Real* IMPACT_RESTRICT {}_", in.written ? "" : "const ", in.name));
+    if (with_status)
+        pointers.push_back("impact::status* IMPACT_RESTRICT status_");
+    return fmt::format("{}", fmt::join(pointers, ", "));
+}
+
 // The batch loop run over blocks of 8 pairs (a cache line of doubles), each array's
 // data asked for 64 pairs ahead: out of cache, the hardware's prefetching alone leaves
 // the loop waiting for memory (in 3D, 16 arrays streamed at once, a quarter slower).
 void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status)
 {
-    std::vector<std::string> pointers, ahead, from_block;
+    std::vector<std::string> ahead, from_block;
     for (const lane_input& in : inputs) {
-        pointers.push_back(fmt::format("{}Real* IMPACT_RESTRICT {}_", in.written ? "" : "const ", in.name));
         ahead.push_back(fmt::format("            IMPACT_PREFETCH({}_ + b + ahead, {});\n", in.name, in.written ? 1 : 0));
         from_block.push_back(fmt::format("{}_ + b", in.name));
     }
     if (with_status) {
-        pointers.push_back("impact::status* IMPACT_RESTRICT status_");
         ahead.push_back("            if constexpr (with_status)\n"
                         "                IMPACT_PREFETCH(status_ + b + ahead, 1);\n");
         from_block.push_back("with_status ? status_ + b : status_");
@@ -195,7 +222,7 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
                        "    constexpr std::size_t block = 8, ahead = 64;\n    std::size_t b = 0;\n"
                        "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
                        "        {4}(block, {5});\n    }}\n    {4}(count - b, {5});\n}}\n",
-                       loop, with_status ? ", bool with_status" : "", fmt::join(pointers, ", "),
+                       loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
                        fmt::join(ahead, ""), call, fmt::join(from_block, ", "));
 }
 
@@ -212,21 +239,18 @@ void print_batch(std::string& out, const kernel_plan& plan)
     const std::vector<lane_input> inputs = lane_inputs(k);
     const std::string loop = fmt::format("{}_batch_{}d", k.name, n);
 
-    std::vector<std::string> pointers, element_names, plain_names, arguments;
+    std::vector<std::string> element_names, plain_names, arguments;
     for (const lane_input& in : inputs) {
-        pointers.push_back(fmt::format("{}Real* IMPACT_RESTRICT {}_", in.written ? "" : "const ", in.name));
         element_names.push_back(in.name + "_[i]");
         plain_names.push_back(in.name);
         arguments.push_back(in.field);
     }
     const bool with_status = !k.guards.empty();
-    if (with_status)
-        pointers.push_back("impact::status* IMPACT_RESTRICT status_");
 
     out += fmt::format("\nnamespace detail {{\n\n// The loop of {}_batch in {}D, without branches.\n", k.name, n);
     out += fmt::format("template <class Real{}>\ninline void {}(std::size_t count, {}) noexcept\n{{\n"
                        "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
-                       with_status ? ", bool with_status" : "", loop, fmt::join(pointers, ", "));
+                       with_status ? ", bool with_status" : "", loop, loop_parameters(inputs, with_status));
 
     // The status, from the guards on the values as given.
     const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
@@ -242,8 +266,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
                "        impact::status outcome = status::ok;\n        {\n";
         // `fails |= test`, not `||`: no branch, so that the loop vectorises.
         bool declared = false;
-        auto fail_with = [&](std::vector<std::string> failures, const std::string& status, const char* into) {
-            failures = one_finiteness_test(failures);
+        auto fail_with = [&](const std::vector<std::string>& failures, const std::string& status, const char* into) {
             for (std::size_t f = 0; f < failures.size(); ++f)
                 out += fmt::format("            {} {};\n", f == 0 ? (declared ? "fails =" : "bool fails =") : "fails |=",
                                    failures[f]);
@@ -251,7 +274,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
             declared = true;
         };
         for (auto g = domains.rbegin(); g != domains.rend(); ++g)
-            fail_with(guard_failures(k, **g, "_[i]"), (*g)->status, "outcome");
+            fail_with(batch_failures(guard_tests(k, **g, "_[i]")), (*g)->status, "outcome");
         if (!conditions.empty()) {
             // A separate status for the conditions, taken where the domains admit the
             // inputs (GCC vectorises this, not `fails &= admitted`).
@@ -373,7 +396,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         if (g.condition)
             continue;
         out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
-                           fmt::join(guard_failures(k, g, ""), " || "), g.status);
+                           fmt::join(scalar_failures(guard_tests(k, g, "")), " || "), g.status);
     }
     const int last_guard_value = plan.guard_values ? plan.code.outputs[plan.guard_values - 1] : -1;
     std::size_t s = 0;

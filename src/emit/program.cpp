@@ -74,15 +74,16 @@ private:
         return {h, op(opcode::sub, e, op(opcode::sub, h, s))};
     }
 
+    // The TwoSum s + e of the leading parts, with the sum of the operands' lo parts `lo`:
+    // renormalised, unless there is no lo (TwoSum of two doubles is normalised: s = fl(s + e)).
+    pair sum_with_lo(int s, int e, int lo) { return lo < 0 ? pair{s, e} : fast_two_sum(s, add_lo(e, lo)); }
+
     pair dd_add(pair a, pair b)
     {
         const int s = op(opcode::add, a.hi, b.hi);
         const int bb = op(opcode::sub, s, a.hi);
         const int e = op(opcode::add, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::sub, b.hi, bb));
-        // TwoSum of two doubles is already normalised: s = fl(s + e).
-        if (a.lo < 0 && b.lo < 0)
-            return {s, e};
-        return fast_two_sum(s, add_lo(e, add_lo(a.lo, b.lo)));
+        return sum_with_lo(s, e, add_lo(a.lo, b.lo));
     }
 
     // a - b, as dd_add(a, -b) computes it but without the negations (the same values).
@@ -91,10 +92,7 @@ private:
         const int s = op(opcode::sub, a.hi, b.hi);
         const int bb = op(opcode::sub, s, a.hi);
         const int e = op(opcode::sub, op(opcode::sub, a.hi, op(opcode::sub, s, bb)), op(opcode::add, b.hi, bb));
-        if (a.lo < 0 && b.lo < 0)
-            return {s, e};
-        const int lo = b.lo < 0 ? a.lo : a.lo < 0 ? op(opcode::neg, b.lo) : op(opcode::sub, a.lo, b.lo);
-        return fast_two_sum(s, add_lo(e, lo));
+        return sum_with_lo(s, e, b.lo < 0 ? a.lo : a.lo < 0 ? op(opcode::neg, b.lo) : op(opcode::sub, a.lo, b.lo));
     }
 
     pair dd_neg(pair a) { return {op(opcode::neg, a.hi), a.lo < 0 ? -1 : op(opcode::neg, a.lo)}; }
