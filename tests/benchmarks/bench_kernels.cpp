@@ -9,6 +9,11 @@
 // Out of cache, the reset's writes are then pushed out to memory, untimed too: left in
 // the cache, they would be written back during the kernel's pass and counted against
 // it, while the triad it is compared with has no such writes to carry.
+// Out of cache, the batch loops and the triad run twice: on arrays of ordinary 4 KiB
+// pages and on arrays of 2 MiB pages (madvise MADV_HUGEPAGE, as programs that stream
+// large arrays allocate them). A 3D batch streams 16 arrays at once; on 4 KiB pages it
+// crosses 16 pages every 512 pairs, and the misses of the address translation, not the
+// memory's bandwidth, bound it.
 #include "impact/impact.hpp"
 
 #include <benchmark/benchmark.h>
@@ -20,29 +25,60 @@
 #include <new>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#include <sys/mman.h>
 
 namespace {
 
 constexpr std::size_t in_cache = 4096;
 constexpr std::size_t out_of_cache = 4194304;
 
+// The size of the pages an array is on, in KiB (the benchmarks' second argument).
+constexpr std::size_t small_pages = 4, huge_pages = 2048;
+
 // Arrays aligned to 64 bytes, as data for SIMD loops are: std::vector's own 16-byte
 // alignment splits every 512-bit load across two cache lines, which halves the bandwidth
-// a loop over many arrays reaches.
+// a loop over many arrays reaches. An array of `huge` pages is aligned to 2 MiB and asks
+// the kernel for 2 MiB pages.
+// Bytes held now by arrays that asked for 2 MiB pages.
+std::size_t huge_bytes_asked = 0;
+
 template <class T>
 struct aligned {
     using value_type = T;
-    static constexpr std::align_val_t alignment{64};
+    static constexpr std::size_t line = 64, huge_page = std::size_t{2} << 20;
+    bool huge = false;
+    // An array assigned another takes its pages along.
+    using propagate_on_container_copy_assignment = std::true_type;
+    using propagate_on_container_move_assignment = std::true_type;
+    using propagate_on_container_swap = std::true_type;
     aligned() = default;
+    explicit aligned(bool on_huge_pages) noexcept : huge(on_huge_pages) {}
     template <class U>
-    aligned(const aligned<U>&) noexcept {}
-    T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
-    void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, alignment); }
+    aligned(const aligned<U>& other) noexcept : huge(other.huge) {}
+    std::size_t alignment() const { return huge ? huge_page : line; }
+    T* allocate(std::size_t n)
+    {
+        const std::size_t bytes = (n * sizeof(T) + alignment() - 1) / alignment() * alignment();
+        void* p = ::operator new(bytes, std::align_val_t{alignment()});
+        if (huge) {
+            madvise(p, bytes, MADV_HUGEPAGE);  // advice: the system may decline (see huge_pages_granted)
+            huge_bytes_asked += bytes;
+        }
+        return static_cast<T*>(p);
+    }
+    void deallocate(T* p, std::size_t n) noexcept
+    {
+        if (huge)
+            huge_bytes_asked -= (n * sizeof(T) + alignment() - 1) / alignment() * alignment();
+        ::operator delete(p, std::align_val_t{alignment()});
+    }
     template <class U>
-    bool operator==(const aligned<U>&) const noexcept { return true; }
+    bool operator==(const aligned<U>& other) const noexcept { return huge == other.huge; }
     template <class U>
-    bool operator!=(const aligned<U>&) const noexcept { return false; }
+    bool operator!=(const aligned<U>& other) const noexcept { return huge != other.huge; }
 };
 template <class T>
 using array_of = std::vector<T, aligned<T>>;
@@ -54,13 +90,15 @@ struct pairs {
     std::array<array_of<double>, D> C_M, C_m, v_M, v_m, v_M0, v_m0;
     array_of<impact::status> status;
 
-    explicit pairs(std::size_t n) : count(n), M(n), m(n), eps(n), status(n)
+    pairs(std::size_t n, bool huge)
+        : count(n), M(n, aligned<double>(huge)), m(n, aligned<double>(huge)), eps(n, aligned<double>(huge)),
+          status(n, aligned<impact::status>(huge))
     {
         std::mt19937_64 random(2026);
         std::uniform_real_distribution<double> unit(0.0, 1.0), coordinate(-10.0, 10.0);
-        for (auto* vectors : {&C_M, &C_m, &v_M, &v_m})
+        for (auto* vectors : {&C_M, &C_m, &v_M, &v_m, &v_M0, &v_m0})
             for (auto& v : *vectors)
-                v.resize(n);
+                v = array_of<double>(n, aligned<double>(huge));
         for (std::size_t i = 0; i < n; ++i) {
             M[i] = 0.1 + 10 * unit(random);
             m[i] = 0.1 + 10 * unit(random);
@@ -232,13 +270,18 @@ void hand_written(pairs<D>& p)
 // ---- Benchmarks -------------------------------------------------------------------
 
 template <std::size_t D>
-pairs<D>& shared_pairs(std::size_t n)
+pairs<D>& shared_pairs(std::size_t n, bool huge)
 {
-    static std::map<std::size_t, pairs<D>> all;
-    auto found = all.find(n);
+    static std::map<std::pair<std::size_t, bool>, pairs<D>> all;
+    auto found = all.find({n, huge});
     if (found == all.end())
-        found = all.emplace(n, pairs<D>(n)).first;
+        found = all.emplace(std::make_pair(n, huge), pairs<D>(n, huge)).first;
     return found->second;
+}
+
+bool on_huge_pages(const benchmark::State& state)
+{
+    return static_cast<std::size_t>(state.range(1)) == huge_pages;
 }
 
 // Reads twice as many bytes as the largest caches hold (32 MiB here), so that nothing
@@ -255,7 +298,7 @@ void flush_caches()
 template <std::size_t D, class Body>
 void run(benchmark::State& state, Body body)
 {
-    pairs<D>& p = shared_pairs<D>(static_cast<std::size_t>(state.range(0)));
+    pairs<D>& p = shared_pairs<D>(static_cast<std::size_t>(state.range(0)), on_huge_pages(state));
     for (auto _ : state) {
         state.PauseTiming();
         p.reset();
@@ -307,7 +350,8 @@ void hand_written_batch(benchmark::State& state)
 void triad(benchmark::State& state)
 {
     const std::size_t n = static_cast<std::size_t>(state.range(0));
-    array_of<double> a(n), b(n, 1.0), c(n, 2.0);
+    const aligned<double> pages(on_huge_pages(state));
+    array_of<double> a(n, pages), b(n, 1.0, pages), c(n, 2.0, pages);
     for (auto _ : state) {
         for (std::size_t i = 0; i < n; ++i)
             a[i] = b[i] + 3.0 * c[i];
@@ -326,7 +370,7 @@ public:
         for (const Run& run : runs) {
             if (run.run_type != Run::RT_Aggregate || run.aggregate_name != "median")
                 continue;
-            std::string name = run.run_name.str();  // e.g. triad/20480/repeats:7/real_time
+            std::string name = run.run_name.str();  // e.g. triad/n:20480/page_KiB:4/repeats:7/real_time
             if (const auto at = name.find("/repeats:"); at != std::string::npos)
                 name.erase(at, name.find('/', at + 1) - at);
             items[name] = run.counters.count("items_per_second") ? run.counters.at("items_per_second").value : 0;
@@ -341,12 +385,14 @@ public:
 
 // Each benchmark repeated, the repetitions of all interleaved in random order (see
 // main), so that a change in the machine's load falls on every one alike; the ratios are
-// taken between medians.
+// taken between medians. Arguments: pairs (or triad elements), page size in KiB.
 // The triad runs over 5 times as many elements: as many bytes as 2D pairs carry, roughly.
 #define IMPACT_BENCHMARK(f, elements_per_pair)                                                                \
     BENCHMARK(f)                                                                                              \
-        ->Arg(in_cache * elements_per_pair)                                                                   \
-        ->Arg(out_of_cache * elements_per_pair)                                                               \
+        ->ArgNames({"n", "page_KiB"})                                                                        \
+        ->Args({in_cache * elements_per_pair, small_pages})                                                   \
+        ->Args({out_of_cache * elements_per_pair, small_pages})                                               \
+        ->Args({out_of_cache * elements_per_pair, huge_pages})                                                \
         ->UseRealTime()                                                                                       \
         ->Repetitions(7)                                                                                      \
         ->ReportAggregatesOnly(true)                                                                          \
@@ -360,6 +406,26 @@ IMPACT_BENCHMARK(generated_batch<3>, 1);
 IMPACT_BENCHMARK(hand_written_batch<3>, 1);
 IMPACT_BENCHMARK(triad, 5);
 
+namespace {
+
+// How much of this process's memory is on 2 MiB pages, in MiB (Linux; -1 if unknown):
+// MADV_HUGEPAGE is advice, which the system may decline.
+long huge_pages_granted()
+{
+    std::FILE* f = std::fopen("/proc/self/smaps_rollup", "r");
+    if (!f)
+        return -1;
+    long kib = -1;
+    char line[256];
+    while (std::fgets(line, sizeof line, f))
+        if (std::sscanf(line, "AnonHugePages: %ld kB", &kib) == 1)
+            break;
+    std::fclose(f);
+    return kib < 0 ? -1 : kib / 1024;
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
     std::vector<char*> arguments{argv[0], const_cast<char*>("--benchmark_enable_random_interleaving=true")};
@@ -368,20 +434,31 @@ int main(int argc, char** argv)
     benchmark::Initialize(&count, arguments.data());
     ratio_reporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
+    const auto key = [](const std::string& f, std::size_t n, std::size_t pages) {
+        return f + "/n:" + std::to_string(n) + "/page_KiB:" + std::to_string(pages) + "/real_time";
+    };
+    const std::pair<std::size_t, std::size_t> regimes[] = {
+        {in_cache, small_pages}, {out_of_cache, small_pages}, {out_of_cache, huge_pages}};
     for (int d : {2, 3}) {
-        for (std::size_t n : {in_cache, out_of_cache}) {
-            const std::string suffix = "<" + std::to_string(d) + ">/" + std::to_string(n) + "/real_time";
-            const double batch = reporter.items["generated_batch" + suffix];
-            const double hand = reporter.items["hand_written_batch" + suffix];
+        const std::string D = "<" + std::to_string(d) + ">";
+        for (const auto& [n, pages] : regimes) {
+            const double batch = reporter.items[key("generated_batch" + D, n, pages)];
+            const double hand = reporter.items[key("hand_written_batch" + D, n, pages)];
             if (batch > 0 && hand > 0)
-                std::printf("%dD, %zu pairs: generated batch / hand-written = %.3f\n", d, n, batch / hand);
+                std::printf("%dD, %zu pairs, %zu KiB pages: generated batch / hand-written = %.3f\n", d, n, pages,
+                            batch / hand);
         }
-        const std::string out = "<" + std::to_string(d) + ">/" + std::to_string(out_of_cache) + "/real_time";
-        const double bytes = reporter.bytes["generated_batch" + out];
-        const double probe = reporter.bytes["triad/" + std::to_string(out_of_cache * 5) + "/real_time"];
-        if (bytes > 0 && probe > 0)
-            std::printf("%dD out of cache: generated batch moves %.2f GB/s, the triad %.2f GB/s: %.0f%%\n", d,
-                        bytes / 1e9, probe / 1e9, 100 * bytes / probe);
+        for (std::size_t pages : {small_pages, huge_pages}) {
+            const double bytes = reporter.bytes[key("generated_batch" + D, out_of_cache, pages)];
+            const double probe = reporter.bytes[key("triad", out_of_cache * 5, pages)];
+            if (bytes > 0 && probe > 0)
+                std::printf("%dD out of cache, %zu KiB pages: generated batch moves %.2f GB/s, the triad %.2f GB/s: "
+                            "%.0f%%\n",
+                            d, pages, bytes / 1e9, probe / 1e9, 100 * bytes / probe);
+        }
     }
+    std::printf("arrays on 2 MiB pages at the end: %ld MiB of the %zu MiB asked for (the system may grant fewer; "
+                "the %zu KiB-page figures hold for as many as it granted)\n",
+                huge_pages_granted(), huge_bytes_asked >> 20, huge_pages);
     return 0;
 }
