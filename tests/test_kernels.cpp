@@ -298,6 +298,49 @@ BOOST_AUTO_TEST_CASE(collide_keeps_the_impulse_of_a_nearly_grazing_contact_to_a_
     BOOST_TEST(worst <= 4.0);
 }
 
+namespace {
+
+// The velocities after a collision depend on the masses only through their ratio and on
+// the centres only through the direction of the line joining them: scaling every mass by
+// 2^a and every position by 2^b, both exact in floating point, must give the same
+// velocities bit for bit, however large or small the scales, while every value the
+// kernel computes stays in the range of doubles.
+template <std::size_t D>
+void check_scale_invariance()
+{
+    engine::uniform_stream s(D * 31337);
+    const std::pair<int, int> scales[] = {{300, 100}, {-300, -100}, {500, -200}, {-500, 200}, {-900, 30}};
+    int compared = 0;
+    for (int n = 0; n < 500; ++n) {
+        const collision<D> c = draw_collision<D>(s);
+        const auto out = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps);
+        BOOST_REQUIRE(out.status == impact::status::ok);
+        for (const auto& [a, b] : scales) {
+            std::array<double, D> C_M, C_m;
+            for (std::size_t i = 0; i < D; ++i) {
+                C_M[i] = std::ldexp(c.C_M[i], b);
+                C_m[i] = std::ldexp(c.C_m[i], b);
+            }
+            const auto scaled = impact::collide(std::ldexp(c.M, a), std::ldexp(c.m, a), C_M, C_m, c.v_M, c.v_m, c.eps);
+            BOOST_REQUIRE(scaled.status == impact::status::ok);
+            for (std::size_t i = 0; i < D; ++i) {
+                BOOST_TEST(std::memcmp(&scaled.v_M[i], &out.v_M[i], sizeof(double)) == 0);
+                BOOST_TEST(std::memcmp(&scaled.v_m[i], &out.v_m[i], sizeof(double)) == 0);
+            }
+            ++compared;
+        }
+    }
+    BOOST_TEST(compared == 2500);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(collide_gives_the_same_velocities_at_every_scale_of_mass_and_length)
+{
+    check_scale_invariance<2>();
+    check_scale_invariance<3>();
+}
+
 BOOST_AUTO_TEST_CASE(collide_conserves_momentum_and_does_not_care_which_sphere_is_named_first_2d)
 {
     check_momentum_and_symmetry<2>();
@@ -449,10 +492,37 @@ std::vector<bad_pair> bad_pairs()
     };
 }
 
+// Finite inputs whose collision leaves the range of the floating-point type Real: the
+// kernels must refuse them (status out_of_range, velocities unchanged) rather than return
+// infinities or NaNs as a resolved collision, or divide by zero. Every value is exact in
+// Real (and so in double).
+template <class Real>
+std::vector<bad_pair> out_of_range_pairs()
+{
+    using impact::status;
+    using limits = std::numeric_limits<Real>;
+    const double max = limits::max(), e = limits::min_exponent;
+    const std::array<double, 2> C_m{0, 0}, v_M{-1, 0.5}, v_m{1, -0.25};
+    // Masses and a distance so small that (M + m)|r|^2 underflows (to a subnormal in
+    // double, to 0 in float).
+    const double tiny_mass = std::ldexp(1.0, static_cast<int>(e / 2) - 20);
+    const double tiny_distance = std::ldexp(1.0, static_cast<int>(e / 4) - 10);
+    return {
+        {2, 1, 0.5, {static_cast<double>(4 * std::sqrt(limits::max())), 0}, C_m, v_M, v_m, status::out_of_range},  // |r|^2 overflows
+        {2, 1, 0.5, {0.75 * max, 0}, {-0.75 * max, 0}, v_M, v_m, status::out_of_range},  // C_M - C_m overflows
+        {tiny_mass, tiny_mass, 0.5, {tiny_distance, 0}, C_m, v_M, v_m, status::out_of_range},
+        // Head-on, eps = 1, a light sphere hit by one 2^20 times heavier: it would leave
+        // at about 1.25 times the largest Real.
+        {1, 1 << 20, 1, {1, 0}, C_m, {-max / 4, 0}, {max / 2, 0}, status::out_of_range},
+    };
+}
+
 BOOST_AUTO_TEST_CASE(inputs_that_allow_no_collision_leave_the_velocities_unchanged_with_a_status)
 {
     using impact::status;
-    const std::vector<bad_pair> cases = bad_pairs();
+    std::vector<bad_pair> cases = bad_pairs();
+    for (const bad_pair& b : out_of_range_pairs<double>())
+        cases.push_back(b);
     for (const bad_pair& b : cases) {
         std::feclearexcept(FE_ALL_EXCEPT);
         const auto out = impact::collide(b.M, b.m, b.C_M, b.C_m, b.v_M, b.v_m, b.eps);
@@ -471,15 +541,51 @@ BOOST_AUTO_TEST_CASE(inputs_that_allow_no_collision_leave_the_velocities_unchang
     BOOST_TEST(out.v_m[0] == -1.0);
 }
 
+namespace {
+
+// The out-of-range pairs in the plane z = 0 of space, or in 2D, in the type Real.
+template <class Real, std::size_t D>
+void check_out_of_range(const bad_pair& b)
+{
+    std::array<Real, D> C_M{}, C_m{}, v_M{}, v_m{};
+    for (std::size_t d = 0; d < 2; ++d) {
+        C_M[d] = static_cast<Real>(b.C_M[d]);
+        C_m[d] = static_cast<Real>(b.C_m[d]);
+        v_M[d] = static_cast<Real>(b.v_M[d]);
+        v_m[d] = static_cast<Real>(b.v_m[d]);
+    }
+    std::feclearexcept(FE_ALL_EXCEPT);
+    const auto out = impact::collide(static_cast<Real>(b.M), static_cast<Real>(b.m), C_M, C_m, v_M, v_m,
+                                     static_cast<Real>(b.eps));
+    BOOST_TEST(std::fetestexcept(FE_DIVBYZERO) == 0);
+    BOOST_TEST((out.status == impact::status::out_of_range));
+    BOOST_TEST(std::memcmp(out.v_M.data(), v_M.data(), sizeof v_M) == 0);
+    BOOST_TEST(std::memcmp(out.v_m.data(), v_m.data(), sizeof v_m) == 0);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(collisions_that_leave_the_floating_point_range_are_refused_with_a_status)
+{
+    for (const bad_pair& b : out_of_range_pairs<double>()) {
+        check_out_of_range<double, 2>(b);
+        check_out_of_range<double, 3>(b);
+    }
+    for (const bad_pair& b : out_of_range_pairs<float>()) {
+        check_out_of_range<float, 2>(b);
+        check_out_of_range<float, 3>(b);
+    }
+}
+
 // The batch loop decides every status without branches and computes every pair: each bad
 // pair, between resolved ones so that one vector of the loop holds several statuses, must
 // get the scalar kernel's status and keep its velocities, with nothing divided by zero.
 template <class Real>
-void check_batch_statuses(bool with_status)
+void check_batch_statuses(bool with_status, const std::vector<bad_pair>& cases)
 {
     using impact::status;
     std::vector<bad_pair> pairs;
-    for (const bad_pair& b : bad_pairs()) {
+    for (const bad_pair& b : cases) {
         pairs.push_back(b);
         pairs.push_back({3, 2, 0.75, {0.5, 1}, {0, -0.5}, {-1, -2}, {0.25, 1}, status::ok});
     }
@@ -529,7 +635,12 @@ void check_batch_statuses(bool with_status)
 
 BOOST_AUTO_TEST_CASE(the_batch_kernel_gives_each_pair_the_scalar_status_and_divides_nothing_by_zero)
 {
-    check_batch_statuses<double>(true);
-    check_batch_statuses<double>(false);
-    check_batch_statuses<float>(true);
+    std::vector<bad_pair> in_double = bad_pairs(), in_float = bad_pairs();
+    for (const bad_pair& b : out_of_range_pairs<double>())
+        in_double.push_back(b);
+    for (const bad_pair& b : out_of_range_pairs<float>())
+        in_float.push_back(b);
+    check_batch_statuses<double>(true, in_double);
+    check_batch_statuses<double>(false, in_double);
+    check_batch_statuses<float>(true, in_float);
 }

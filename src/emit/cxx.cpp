@@ -122,6 +122,16 @@ std::vector<std::string> scalar_failures(const std::vector<domain_test>& tests)
 // products is 0 exactly when every x is finite. Fused, a value costs one operation, where
 // std::isfinite costs two and a merge of the results (the guards were a third of the
 // loop's instructions).
+std::string all_finite(const std::vector<std::string>& values)
+{
+    if (values.size() == 1)
+        return fmt::format("std::isfinite({})", values.front());
+    std::string sum = values.back() + " * Real(0)";
+    for (std::size_t v = values.size() - 1; v-- > 0;)
+        sum = fmt::format("std::fma({}, Real(0), {})", values[v], sum);
+    return fmt::format("({} == Real(0))", sum);
+}
+
 std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)
 {
     std::vector<std::string> failures, finite;
@@ -130,14 +140,24 @@ std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)
             failures.push_back(t.failure);
         else
             finite.push_back(t.finite);
-    if (finite.size() == 1)
-        failures.push_back(fmt::format("!std::isfinite({})", finite.front()));
-    if (finite.size() < 2)
-        return failures;
-    std::string sum = finite.back() + " * Real(0)";
-    for (std::size_t v = finite.size() - 1; v-- > 0;)
-        sum = fmt::format("std::fma({}, Real(0), {})", finite[v], sum);
-    failures.push_back(fmt::format("!({} == Real(0))", sum));
+    if (!finite.empty())
+        failures.push_back("!" + all_finite(finite));
+    return failures;
+}
+
+// A kernel with a status resolves a collision only inside the floating-point range: every
+// divisor at least detail::smallest_divisor (its rounding errors still normal numbers, so
+// that compensated arithmetic keeps its precision) and finite, every result finite.
+// Otherwise the status is `out_of_range` and the velocities are unchanged.
+constexpr const char* out_of_range = "out_of_range";
+
+std::vector<std::string> divisor_failures(const cxx_code& code)
+{
+    std::vector<std::string> failures;
+    for (const std::string& d : code.divisors) {
+        failures.push_back(fmt::format("!(std::fabs({}) >= detail::smallest_divisor<Real>)", d));
+        failures.push_back(fmt::format("!(std::fabs({}) <= std::numeric_limits<Real>::max())", d));
+    }
     return failures;
 }
 
@@ -298,23 +318,50 @@ void print_batch(std::string& out, const kernel_plan& plan)
         out += "        // Every pair is computed; one not resolved divides by 1, and its results are discarded.\n";
     for (const lane_input& in : inputs)
         out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
-    const cxx_code code = program_cxx(plan.code, plain_names, with_status ? "resolved" : "");
-    for (std::size_t s = 0; s < code.statements.size(); ++s)
+    const cxx_code code = program_cxx(plan.code, plain_names, with_status ? "usable" : "");
+    // A resolved pair is divided only by divisors in range (`usable`), and its results are
+    // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
+    // GCC if-converts; with `&`, it leaves the loop's conditional stores unvectorised.)
+    const auto declare_usable = [&] {
+        std::vector<std::string> in_range{"resolved"};
+        for (const std::string& failure : divisor_failures(code))
+            in_range.push_back(failure.substr(1));  // the test that holds: drop the `!`
+        out += fmt::format("        const bool usable = {};\n", fmt::join(in_range, " && "));
+    };
+    if (with_status && code.divisors_known == 0)
+        declare_usable();
+    for (std::size_t s = 0; s < code.statements.size(); ++s) {
         if (for_outputs[code.statement_values[s]])
             out += "        " + code.statements[s] + "\n";
+        if (with_status && s + 1 == code.divisors_known)
+            declare_usable();
+    }
+    std::vector<std::pair<std::string, std::string>> writes;  // target, value
     std::size_t value = plan.guard_values;
     for (const engine::kernel_output& o : k.outputs) {
         for (std::size_t c = 0; c < o.values.size(); ++c, ++value) {
             const engine::kernel_parameter* same = k.find_parameter(o.member);
             if (!same)
                 throw std::logic_error("a batch kernel writes only outputs named after inputs");
-            const std::string target = same->components.at(c).name + "_[i]";
-            out += with_status ? fmt::format("        {0} = resolved ? {1} : {0};\n", target, code.outputs[value])
-                               : fmt::format("        {} = {};\n", target, code.outputs[value]);
+            writes.emplace_back(same->components.at(c).name, code.outputs[value]);
         }
     }
-    if (with_status)
-        out += "        if constexpr (with_status)\n            status_[i] = outcome;\n";
+    if (with_status) {
+        std::vector<std::string> results;
+        for (const auto& [target, result] : writes) {
+            out += fmt::format("        const Real {}_out = {};\n", target, result);
+            results.push_back(target + "_out");
+        }
+        out += fmt::format("        const bool written = usable && {};\n", all_finite(results));
+        for (const auto& [target, result] : writes)
+            out += fmt::format("        {0}_[i] = written ? {0}_out : {0}_[i];\n", target);
+        out += fmt::format("        if constexpr (with_status)\n"
+                           "            status_[i] = resolved && !written ? status::{} : outcome;\n",
+                           out_of_range);
+    } else {
+        for (const auto& [target, result] : writes)
+            out += fmt::format("        {}_[i] = {};\n", target, result);
+    }
     out += "    }\n}\n";
     print_blocks(out, loop, inputs, with_status);
     out += "\n} // namespace detail\n";
@@ -366,7 +413,10 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
                            cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
     }
     if (!k.guards.empty())
-        out += "/// When the inputs allow no collision, `status` says why and the velocities are unchanged.\n";
+        out += fmt::format("/// When the inputs allow no collision, `status` says why and the velocities are unchanged;\n"
+                           "/// `{}` when the collision's values leave the type's range (a divisor below\n"
+                           "/// detail::smallest_divisor or infinite, a result not finite).\n",
+                           out_of_range);
 
     std::vector<std::string> parameters;
     for (const engine::kernel_parameter& p : k.parameters)
@@ -409,21 +459,42 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         out += fmt::format("    if (!({} {} Real(0))) {{\n        out.status = status::{};\n        return out;\n    }}\n",
                            code.outputs[condition++], g.op == engine::relation::less ? "<" : ">", g.status);
     }
-    for (; s < code.statements.size(); ++s)
+    const bool with_status = !k.guards.empty();
+    const auto refuse_if = [&](const std::vector<std::string>& failures) {
+        if (with_status && !failures.empty())
+            out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
+                               fmt::join(failures, " || "), out_of_range);
+    };
+    if (s >= code.divisors_known)
+        refuse_if(divisor_failures(code));
+    for (; s < code.statements.size(); ++s) {
         out += "    " + code.statements[s] + "\n";
+        if (s + 1 == code.divisors_known)
+            refuse_if(divisor_failures(code));
+    }
+    std::vector<std::string> results(code.outputs.begin() + static_cast<long>(plan.guard_values), code.outputs.end());
+    if (with_status) {
+        std::vector<std::string> failures;
+        for (std::size_t r = 0; r < results.size(); ++r) {
+            out += fmt::format("    const Real result{} = {};\n", r, results[r]);
+            results[r] = fmt::format("result{}", r);
+            failures.push_back(fmt::format("!std::isfinite({})", results[r]));
+        }
+        refuse_if(failures);
+    }
 
     if (returns_scalar(k)) {
-        out += fmt::format("    return {};\n}}\n", code.outputs[plan.guard_values]);
+        out += fmt::format("    return {};\n}}\n", results.front());
     } else {
-        std::size_t i = plan.guard_values;
+        std::size_t i = 0;
         for (const engine::kernel_output& o : k.outputs) {
             if (!o.is_array) {
-                out += fmt::format("    out.{} = {};\n", o.member, code.outputs[i++]);
+                out += fmt::format("    out.{} = {};\n", o.member, results[i++]);
                 continue;
             }
             std::vector<std::string> components;
             for (std::size_t c = 0; c < o.values.size(); ++c)
-                components.push_back(code.outputs[i++]);
+                components.push_back(results[i++]);
             out += fmt::format("    out.{} = {{{}}};\n", o.member, fmt::join(components, ", "));
         }
         out += "    return out;\n}\n";
@@ -456,7 +527,7 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
 {
     std::string out = "// Generated by Impact from derivations/; do not edit.\n"
                       "// What Impact's kernels share.\n#pragma once\n\n"
-                      "#include <array>\n#include <cmath>\n#include <cstddef>\n#include <cstdint>\n\n"
+                      "#include <array>\n#include <cmath>\n#include <cstddef>\n#include <cstdint>\n#include <limits>\n\n"
                       "// The arrays a batch kernel writes overlap no other array (`restrict`), and its\n"
                       "// iterations are independent: compilers may vectorise its loop.\n"
                       "#if defined(__GNUC__) || defined(__clang__) || defined(_MSC_VER)\n"
@@ -475,12 +546,23 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
         for (const engine::kernel_guard& g : plan->kernel->guards)
             if (std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
                 statuses.push_back(g.status);
+    if (statuses.size() > 1)
+        statuses.push_back(out_of_range);
     out += fmt::format("\n/// Why a kernel resolved no collision; `ok` when it did.\n"
                        "/// As wide as a double, so that a vectorised batch loop over doubles keeps one\n"
                        "/// width in every lane: with a narrower status, compilers pack two vectors of\n"
                        "/// doubles per vector of statuses, and the loop runs short of registers.\n"
                        "enum class status : std::int64_t {{ {} }};\n",
                        fmt::join(statuses, ", "));
+    if (statuses.size() > 1)
+        out += fmt::format("\nnamespace detail {{\n\n"
+                           "/// The smallest divisor a kernel divides by: below it, the divisor's rounding errors\n"
+                           "/// are no longer normal numbers and compensated arithmetic loses its precision. A\n"
+                           "/// smaller divisor, or a result that is not finite, gives status::{}.\n"
+                           "template <class Real>\nconstexpr Real smallest_divisor =\n"
+                           "    std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();\n\n"
+                           "}} // namespace detail\n",
+                           out_of_range);
 
     // Array kernels are emitted in several dimensions; their structures are templates
     // on the dimension, written once.

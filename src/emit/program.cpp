@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -440,6 +441,16 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                 ++uses[operand];
     for (int o : p.outputs)
         ++uses[o];
+    // Divisors are named; the divisions come after the last of them.
+    int last_divisor = -1;
+    for (const instruction& in : p.code)
+        if (in.op == opcode::div && p.code[in.b].op != opcode::constant) {
+            uses[in.b] += 2;
+            last_divisor = std::max(last_divisor, in.b);
+        }
+    for (std::size_t i = 0; i < p.code.size(); ++i)
+        if (p.code[i].op == opcode::div && static_cast<int>(i) < last_divisor)
+            throw std::logic_error("a division comes before the last divisor of the program is computed");
 
     constexpr int sum = 1, product = 2, unary = 3, atom = 4;
     std::vector<std::string> text(p.code.size());
@@ -492,6 +503,15 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     }
     for (int o : p.outputs)
         code.outputs.push_back(text[o]);
+    for (std::size_t i = 0; i < p.code.size(); ++i) {
+        const instruction& in = p.code[i];
+        if (in.op == opcode::div && p.code[in.b].op != opcode::constant &&
+            std::find(code.divisors.begin(), code.divisors.end(), text[in.b]) == code.divisors.end())
+            code.divisors.push_back(text[in.b]);
+    }
+    while (code.divisors_known < code.statements.size() &&
+           code.statement_values[code.divisors_known] <= last_divisor)
+        ++code.divisors_known;
     return code;
 }
 

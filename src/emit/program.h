@@ -61,10 +61,15 @@ std::size_t count(const program& p, opcode op);
 /// and every square root's argument x `(kept_if ? x : Real(0))`: a batch loop computes every
 /// lane, and one whose results it discards neither divides by zero nor takes a root of a
 /// negative number.
+/// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
+/// its range before dividing: all are computed by the first `divisors_known` statements,
+/// and no division is made before them.
 struct cxx_code {
     std::vector<std::string> statements;
     std::vector<int> statement_values;   ///< the value each statement computes
     std::vector<std::string> outputs;
+    std::vector<std::string> divisors;
+    std::size_t divisors_known = 0;
 };
 cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if = {});
 

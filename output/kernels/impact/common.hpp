@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 // The arrays a batch kernel writes overlap no other array (`restrict`), and its
 // iterations are independent: compilers may vectorise its loop.
@@ -33,7 +34,18 @@ namespace impact {
 /// As wide as a double, so that a vectorised batch loop over doubles keeps one
 /// width in every lane: with a narrower status, compilers pack two vectors of
 /// doubles per vector of statuses, and the loop runs short of registers.
-enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating };
+enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range };
+
+namespace detail {
+
+/// The smallest divisor a kernel divides by: below it, the divisor's rounding errors
+/// are no longer normal numbers and compensated arithmetic loses its precision. A
+/// smaller divisor, or a result that is not finite, gives status::out_of_range.
+template <class Real>
+constexpr Real smallest_divisor =
+    std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();
+
+} // namespace detail
 
 /// What collide returns in N dimensions.
 template <class Real, std::size_t N>

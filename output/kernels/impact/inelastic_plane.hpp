@@ -22,7 +22,9 @@ namespace impact {
 /// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 2.63 ulps in double on 4200 samples.
 /// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 3.50 ulps in double on 4200 samples.
 /// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 2.73 ulps in double on 4200 samples.
-/// When the inputs allow no collision, `status` says why and the velocities are unchanged.
+/// When the inputs allow no collision, `status` says why and the velocities are unchanged;
+/// `out_of_range` when the collision's values leave the type's range (a divisor below
+/// detail::smallest_divisor or infinite, a result not finite).
 template <class Real>
 inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps) noexcept
 {
@@ -83,13 +85,25 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
     const Real t25 = t1 - (t4 - t24) + (t3 - t24) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t16, t2, std::fma(t2, t16, std::fma(t2, t2, -t3))));
     const Real t26 = t4 + t25;
     const Real t27 = t22 * t26;
+    if (!(std::fabs(t27) >= detail::smallest_divisor<Real>) || !(std::fabs(t27) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
     const Real t28 = t21 / t27;
     const Real t29 = -t28;
     const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / t27;
     const Real t31 = t30 * m;
     const Real t32 = t30 * M;
-    out.v_M = {-(t31 * t0) + v_Mx, -(t31 * t2) + v_My};
-    out.v_m = {t32 * t0 + v_mx, t32 * t2 + v_my};
+    const Real result0 = -(t31 * t0) + v_Mx;
+    const Real result1 = -(t31 * t2) + v_My;
+    const Real result2 = t32 * t0 + v_mx;
+    const Real result3 = t32 * t2 + v_my;
+    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
     return out;
 }
 
@@ -173,17 +187,23 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         const Real t25 = t1 - (t4 - t24) + (t3 - t24) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t16, t2, std::fma(t2, t16, std::fma(t2, t2, -t3))));
         const Real t26 = t4 + t25;
         const Real t27 = t22 * t26;
-        const Real t28 = t21 / (resolved ? t27 : Real(1));
+        const bool usable = resolved && (std::fabs(t27) >= detail::smallest_divisor<Real>) && (std::fabs(t27) <= std::numeric_limits<Real>::max());
+        const Real t28 = t21 / (usable ? t27 : Real(1));
         const Real t29 = -t28;
-        const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / (resolved ? t27 : Real(1));
+        const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / (usable ? t27 : Real(1));
         const Real t31 = t30 * m;
         const Real t32 = t30 * M;
-        v_Mx_[i] = resolved ? -(t31 * t0) + v_Mx : v_Mx_[i];
-        v_My_[i] = resolved ? -(t31 * t2) + v_My : v_My_[i];
-        v_mx_[i] = resolved ? t32 * t0 + v_mx : v_mx_[i];
-        v_my_[i] = resolved ? t32 * t2 + v_my : v_my_[i];
+        const Real v_Mx_out = -(t31 * t0) + v_Mx;
+        const Real v_My_out = -(t31 * t2) + v_My;
+        const Real v_mx_out = t32 * t0 + v_mx;
+        const Real v_my_out = t32 * t2 + v_my;
+        const bool written = usable && (std::fma(v_Mx_out, Real(0), std::fma(v_My_out, Real(0), std::fma(v_mx_out, Real(0), v_my_out * Real(0)))) == Real(0));
+        v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
+        v_My_[i] = written ? v_My_out : v_My_[i];
+        v_mx_[i] = written ? v_mx_out : v_mx_[i];
+        v_my_[i] = written ? v_my_out : v_my_[i];
         if constexpr (with_status)
-            status_[i] = outcome;
+            status_[i] = resolved && !written ? status::out_of_range : outcome;
     }
 }
 
