@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <new>
 #include <random>
@@ -238,15 +239,26 @@ void hand_written(pairs<D>& p)
             dot = add(dot, mul(rd, two_sum(v_M[d][i], -v_m[d][i])));
             r2 = add(r2, mul(rd, rd));
         }
+        // Refused out of range, as the kernels are: a divisor too small (or infinite) to
+        // divide by in compensated arithmetic, or a result not finite.
         dd denominator = mul(two_sum(M[i], m[i]), r2);
-        denominator.hi = ok ? denominator.hi : 1.0;
+        const bool usable = ok && std::fabs(denominator.hi) >= std::numeric_limits<double>::min() / 0x1p-52 &&
+                            std::fabs(denominator.hi) <= std::numeric_limits<double>::max();
+        denominator.hi = usable ? denominator.hi : 1.0;
         const double k = div(mul(two_sum(1, eps[i]), dot), denominator);
+        std::array<double, D> after_M, after_m;
+        double results = 0;
         for (std::size_t d = 0; d < D; ++d) {
-            const double after_M = v_M[d][i] - k * m[i] * r[d], after_m = v_m[d][i] + k * M[i] * r[d];
-            v_M[d][i] = ok ? after_M : v_M[d][i];
-            v_m[d][i] = ok ? after_m : v_m[d][i];
+            after_M[d] = v_M[d][i] - k * m[i] * r[d];
+            after_m[d] = v_m[d][i] + k * M[i] * r[d];
+            results = std::fma(after_M[d], 0.0, std::fma(after_m[d], 0.0, results));
         }
-        status[i] = s;
+        const bool written = usable && results == 0;
+        for (std::size_t d = 0; d < D; ++d) {
+            v_M[d][i] = written ? after_M[d] : v_M[d][i];
+            v_m[d][i] = written ? after_m[d] : v_m[d][i];
+        }
+        status[i] = ok && !written ? impact::status::out_of_range : s;
     }
     };
     std::size_t b = 0;
