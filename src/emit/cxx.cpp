@@ -153,6 +153,8 @@ constexpr const char* out_of_range = "out_of_range";
 
 std::vector<std::string> divisor_failures(const cxx_code& code)
 {
+    if (code.divides_early)
+        throw std::logic_error("a kernel with a status divides before all its divisors are known");
     std::vector<std::string> failures;
     for (const std::string& d : code.divisors) {
         failures.push_back(fmt::format("!(std::fabs({}) >= detail::smallest_divisor<Real>)", d));
@@ -465,12 +467,16 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
             out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
                                fmt::join(failures, " || "), out_of_range);
     };
+    const auto refuse_divisors_out_of_range = [&] {
+        if (with_status)
+            refuse_if(divisor_failures(code));
+    };
     if (s >= code.divisors_known)
-        refuse_if(divisor_failures(code));
+        refuse_divisors_out_of_range();
     for (; s < code.statements.size(); ++s) {
         out += "    " + code.statements[s] + "\n";
         if (s + 1 == code.divisors_known)
-            refuse_if(divisor_failures(code));
+            refuse_divisors_out_of_range();
     }
     std::vector<std::string> results(code.outputs.begin() + static_cast<long>(plan.guard_values), code.outputs.end());
     if (with_status) {

@@ -448,9 +448,6 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             uses[in.b] += 2;
             last_divisor = std::max(last_divisor, in.b);
         }
-    for (std::size_t i = 0; i < p.code.size(); ++i)
-        if (p.code[i].op == opcode::div && static_cast<int>(i) < last_divisor)
-            throw std::logic_error("a division comes before the last divisor of the program is computed");
 
     constexpr int sum = 1, product = 2, unary = 3, atom = 4;
     std::vector<std::string> text(p.code.size());
@@ -509,6 +506,9 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             std::find(code.divisors.begin(), code.divisors.end(), text[in.b]) == code.divisors.end())
             code.divisors.push_back(text[in.b]);
     }
+    for (std::size_t i = 0; i < p.code.size(); ++i)
+        if (p.code[i].op == opcode::div && static_cast<int>(i) < last_divisor)
+            code.divides_early = true;
     while (code.divisors_known < code.statements.size() &&
            code.statement_values[code.divisors_known] <= last_divisor)
         ++code.divisors_known;

@@ -62,14 +62,15 @@ std::size_t count(const program& p, opcode op);
 /// lane, and one whose results it discards neither divides by zero nor takes a root of a
 /// negative number.
 /// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
-/// its range before dividing: all are computed by the first `divisors_known` statements,
-/// and no division is made before them.
+/// their range before dividing: all are computed by the first `divisors_known` statements,
+/// and no division is made before them unless `divides_early`.
 struct cxx_code {
     std::vector<std::string> statements;
     std::vector<int> statement_values;   ///< the value each statement computes
     std::vector<std::string> outputs;
     std::vector<std::string> divisors;
     std::size_t divisors_known = 0;
+    bool divides_early = false;
 };
 cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if = {});
 
