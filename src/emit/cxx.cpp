@@ -151,16 +151,31 @@ std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)
 // Otherwise the status is `out_of_range` and the velocities are unchanged.
 constexpr const char* out_of_range = "out_of_range";
 
-std::vector<std::string> divisor_failures(const cxx_code& code)
+// What must hold of every divisor, as tests; the scalar kernel refuses a pair where one
+// fails, the batch loop divides by 1 instead.
+std::vector<std::string> divisors_in_range(const cxx_code& code)
 {
     if (code.divides_early)
         throw std::logic_error("a kernel with a status divides before all its divisors are known");
-    std::vector<std::string> failures;
+    std::vector<std::string> tests;
     for (const std::string& d : code.divisors) {
-        failures.push_back(fmt::format("!(std::fabs({}) >= detail::smallest_divisor<Real>)", d));
-        failures.push_back(fmt::format("!(std::fabs({}) <= std::numeric_limits<Real>::max())", d));
+        tests.push_back(fmt::format("(std::fabs({}) >= detail::smallest_divisor<Real>)", d));
+        tests.push_back(fmt::format("(std::fabs({}) <= std::numeric_limits<Real>::max())", d));
     }
-    return failures;
+    return tests;
+}
+
+// A guard's condition (the value compared with 0), written as the test that fails.
+std::string condition_failure(const std::string& value, const engine::kernel_guard& g)
+{
+    return fmt::format("!({} {} Real(0))", value, g.op == engine::relation::less ? "<" : ">");
+}
+
+// The scalar kernel's early return: `status` when any of `failures` holds.
+void print_refusal(std::string& out, const std::vector<std::string>& failures, const std::string& status)
+{
+    out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
+                       fmt::join(failures, " || "), status);
 }
 
 std::string members_initialiser(const engine::kernel& k)
@@ -307,9 +322,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
                 if (for_guards[given.statement_values[s]])
                     out += "            " + given.statements[s] + "\n";
             for (std::size_t c = conditions.size(); c-- > 0;)
-                fail_with({fmt::format("!({} {} Real(0))", given.outputs[c],
-                                       conditions[c]->op == engine::relation::less ? "<" : ">")},
-                          conditions[c]->status, "condition");
+                fail_with({condition_failure(given.outputs[c], *conditions[c])}, conditions[c]->status, "condition");
             out += "            outcome = admitted ? condition : outcome;\n";
         }
         out += "        }\n        const bool resolved = outcome == status::ok;\n";
@@ -326,8 +339,8 @@ void print_batch(std::string& out, const kernel_plan& plan)
     // GCC if-converts; with `&`, it leaves the loop's conditional stores unvectorised.)
     const auto declare_usable = [&] {
         std::vector<std::string> in_range{"resolved"};
-        for (const std::string& failure : divisor_failures(code))
-            in_range.push_back(failure.substr(1));  // the test that holds: drop the `!`
+        for (const std::string& test : divisors_in_range(code))
+            in_range.push_back(test);
         out += fmt::format("        const bool usable = {};\n", fmt::join(in_range, " && "));
     };
     if (with_status && code.divisors_known == 0)
@@ -447,8 +460,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     for (const engine::kernel_guard& g : k.guards) {
         if (g.condition)
             continue;
-        out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
-                           fmt::join(scalar_failures(guard_tests(k, g, "")), " || "), g.status);
+        print_refusal(out, scalar_failures(guard_tests(k, g, "")), g.status);
     }
     const int last_guard_value = plan.guard_values ? plan.code.outputs[plan.guard_values - 1] : -1;
     std::size_t s = 0;
@@ -458,18 +470,15 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     for (const engine::kernel_guard& g : k.guards) {
         if (!g.condition)
             continue;
-        out += fmt::format("    if (!({} {} Real(0))) {{\n        out.status = status::{};\n        return out;\n    }}\n",
-                           code.outputs[condition++], g.op == engine::relation::less ? "<" : ">", g.status);
+        print_refusal(out, {condition_failure(code.outputs[condition++], g)}, g.status);
     }
     const bool with_status = !k.guards.empty();
-    const auto refuse_if = [&](const std::vector<std::string>& failures) {
-        if (with_status && !failures.empty())
-            out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
-                               fmt::join(failures, " || "), out_of_range);
-    };
     const auto refuse_divisors_out_of_range = [&] {
-        if (with_status)
-            refuse_if(divisor_failures(code));
+        std::vector<std::string> failures;
+        for (const std::string& test : with_status ? divisors_in_range(code) : std::vector<std::string>{})
+            failures.push_back("!" + test);
+        if (!failures.empty())
+            print_refusal(out, failures, out_of_range);
     };
     if (s >= code.divisors_known)
         refuse_divisors_out_of_range();
@@ -486,7 +495,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
             results[r] = fmt::format("result{}", r);
             failures.push_back(fmt::format("!std::isfinite({})", results[r]));
         }
-        refuse_if(failures);
+        print_refusal(out, failures, out_of_range);
     }
 
     if (returns_scalar(k)) {

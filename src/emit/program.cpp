@@ -441,13 +441,20 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                 ++uses[operand];
     for (int o : p.outputs)
         ++uses[o];
-    // Divisors are named; the divisions come after the last of them.
-    int last_divisor = -1;
-    for (const instruction& in : p.code)
-        if (in.op == opcode::div && p.code[in.b].op != opcode::constant) {
-            uses[in.b] += 2;
-            last_divisor = std::max(last_divisor, in.b);
-        }
+    // Divisors that are not constants are named, so that a kernel can test them.
+    std::vector<int> divisors;
+    int first_division = -1;
+    for (std::size_t i = 0; i < p.code.size(); ++i) {
+        const instruction& in = p.code[i];
+        if (in.op != opcode::div || p.code[in.b].op == opcode::constant)
+            continue;
+        uses[in.b] += 2;
+        if (std::find(divisors.begin(), divisors.end(), in.b) == divisors.end())
+            divisors.push_back(in.b);
+        if (first_division < 0)
+            first_division = static_cast<int>(i);
+    }
+    const int last_divisor = divisors.empty() ? -1 : *std::max_element(divisors.begin(), divisors.end());
 
     constexpr int sum = 1, product = 2, unary = 3, atom = 4;
     std::vector<std::string> text(p.code.size());
@@ -500,15 +507,9 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     }
     for (int o : p.outputs)
         code.outputs.push_back(text[o]);
-    for (std::size_t i = 0; i < p.code.size(); ++i) {
-        const instruction& in = p.code[i];
-        if (in.op == opcode::div && p.code[in.b].op != opcode::constant &&
-            std::find(code.divisors.begin(), code.divisors.end(), text[in.b]) == code.divisors.end())
-            code.divisors.push_back(text[in.b]);
-    }
-    for (std::size_t i = 0; i < p.code.size(); ++i)
-        if (p.code[i].op == opcode::div && static_cast<int>(i) < last_divisor)
-            code.divides_early = true;
+    for (int d : divisors)
+        code.divisors.push_back(text[d]);
+    code.divides_early = first_division >= 0 && first_division < last_divisor;
     while (code.divisors_known < code.statements.size() &&
            code.statement_values[code.divisors_known] <= last_divisor)
         ++code.divisors_known;
