@@ -121,15 +121,25 @@ std::vector<std::string> scalar_failures(const std::vector<domain_test>& tests)
 // finite. x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so a sum of such
 // products is 0 exactly when every x is finite. Fused, a value costs one operation, where
 // std::isfinite costs two and a merge of the results (the guards were a third of the
-// loop's instructions).
+// loop's instructions). The sum is a balanced tree, not a chain: the test gates the loop's
+// division and its stores, and a chain of 12 dependent operations delayed both (3D batch,
+// in cache: 166 → 172 M pairs/s with both tests as trees).
 std::string all_finite(const std::vector<std::string>& values)
 {
     if (values.size() == 1)
         return fmt::format("std::isfinite({})", values.front());
-    std::string sum = values.back() + " * Real(0)";
-    for (std::size_t v = values.size() - 1; v-- > 0;)
-        sum = fmt::format("std::fma({}, Real(0), {})", values[v], sum);
-    return fmt::format("({} == Real(0))", sum);
+    std::vector<std::string> terms;  // x * 0 + y * 0 for the values two by two
+    for (std::size_t v = 0; v < values.size(); v += 2)
+        terms.push_back(v + 1 < values.size()
+                            ? fmt::format("std::fma({}, Real(0), {} * Real(0))", values[v], values[v + 1])
+                            : values[v] + " * Real(0)");
+    while (terms.size() > 1) {
+        std::vector<std::string> sums;
+        for (std::size_t t = 0; t < terms.size(); t += 2)
+            sums.push_back(t + 1 < terms.size() ? fmt::format("({} + {})", terms[t], terms[t + 1]) : terms[t]);
+        terms = std::move(sums);
+    }
+    return fmt::format("({} == Real(0))", terms.front());
 }
 
 std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)

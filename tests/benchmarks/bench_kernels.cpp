@@ -1,31 +1,45 @@
 // Speed of the generated collision kernels, side by side in one run with a hand-written
 // batch loop of the same arithmetic and a memory-bandwidth probe (a triad).
 //
-// A benchmark, never a test: it reports collisions per second in cache (4 096 pairs)
-// and out of cache (4 194 304 pairs), and at the end the ratios the kernels are held
-// to: batch / hand-written, and bytes per second of the batch out of cache / triad.
+// A benchmark, never a test: it reports collisions per second of the scalar and batch
+// kernels, in cache (4 096 pairs) and out of cache (4 194 304 pairs), and the ratios the
+// kernels are held to: batch / hand-written, and bytes per second of the batch out of
+// cache / triad. The loops are timed side by side: each iteration of a benchmark makes one
+// pass of every loop (scalar, batch, hand-written, triad) over data of the same layout, in
+// an order that turns from one iteration to the next, and each repetition reports its own
+// ratios. The memory's bandwidth on a shared machine drifts by a third within minutes;
+// loops timed a pass apart see the same machine, loops timed seconds apart do not.
 // Every pass starts from the same approaching pairs (velocities are reset, untimed),
 // since a resolved pair separates and would take the kernel's early exit next time.
-// Out of cache, the reset's writes are then pushed out to memory, untimed too: left in
-// the cache, they would be written back during the kernel's pass and counted against
-// it, while the triad it is compared with has no such writes to carry.
-// Out of cache, the batch loops and the triad run twice: on arrays of ordinary 4 KiB
-// pages and on arrays of 2 MiB pages (madvise MADV_HUGEPAGE, as programs that stream
-// large arrays allocate them). A 3D batch streams 16 arrays at once; on 4 KiB pages it
-// crosses 16 pages every 512 pairs, and the misses of the address translation, not the
-// memory's bandwidth, bound it.
+// Out of cache, the caches are flushed before each pass, untimed too: the reset's writes,
+// left in them, would be written back during the next pass and counted against it.
+//
+// Out of cache, the data are laid out three ways:
+// - 4 KiB pages, every array at the same offset within its page, as arrays allocated one
+//   by one are (a large allocation starts at a page boundary plus a fixed header). The 16
+//   arrays of a 3D batch then fall on the same cache sets, pair for pair, and the loops
+//   lose about a fifth of their speed, the hand-written one as much as the generated one;
+// - 4 KiB pages, array k starting 256 k bytes (modulo 4 KiB) past a page boundary, as the
+//   README recommends for large batches;
+// - the same on 2 MiB pages (madvise MADV_HUGEPAGE): fewer misses of address translation.
+// The triad's three arrays are laid out alike.
+
 #include "impact/impact.hpp"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <map>
 #include <new>
 #include <random>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -39,50 +53,72 @@ constexpr std::size_t out_of_cache = 4194304;
 // The size of the pages an array is on, in KiB (the benchmarks' second argument).
 constexpr std::size_t small_pages = 4, huge_pages = 2048;
 
-// Arrays aligned to 64 bytes, as data for SIMD loops are: std::vector's own 16-byte
-// alignment splits every 512-bit load across two cache lines, which halves the bandwidth
-// a loop over many arrays reaches. An array of `huge` pages is aligned to 2 MiB and asks
-// the kernel for 2 MiB pages.
+// Where the arrays of a batch start within their pages (the benchmarks' third argument).
+enum layout : std::int64_t { same_offset, staggered };
+
 // Bytes held now by arrays that asked for 2 MiB pages.
 std::size_t huge_bytes_asked = 0;
 
+// Arrays aligned to 64 bytes, as data for SIMD loops are (with std::vector's own 16,
+// every 512-bit load straddles two cache lines), and `offset` bytes past the start of a
+// page: of a 4 KiB page, or, for `huge` arrays, of a 2 MiB page, for which the allocator
+// asks the kernel (madvise, which it may decline: see huge_pages_granted).
 template <class T>
 struct aligned {
     using value_type = T;
-    static constexpr std::size_t line = 64, huge_page = std::size_t{2} << 20;
+    static constexpr std::size_t small_page = 4096, huge_page = std::size_t{2} << 20;
     bool huge = false;
+    std::size_t offset = 0;
     // An array assigned another takes its pages along.
     using propagate_on_container_copy_assignment = std::true_type;
     using propagate_on_container_move_assignment = std::true_type;
     using propagate_on_container_swap = std::true_type;
     aligned() = default;
-    explicit aligned(bool on_huge_pages) noexcept : huge(on_huge_pages) {}
+    aligned(bool on_huge_pages, std::size_t offset_in_page) noexcept : huge(on_huge_pages), offset(offset_in_page) {}
     template <class U>
-    aligned(const aligned<U>& other) noexcept : huge(other.huge) {}
-    std::size_t alignment() const { return huge ? huge_page : line; }
+    aligned(const aligned<U>& other) noexcept : huge(other.huge), offset(other.offset) {}
+    std::size_t page() const { return huge ? huge_page : small_page; }
+    std::size_t bytes(std::size_t n) const { return (offset + n * sizeof(T) + page() - 1) / page() * page(); }
     T* allocate(std::size_t n)
     {
-        const std::size_t bytes = (n * sizeof(T) + alignment() - 1) / alignment() * alignment();
-        void* p = ::operator new(bytes, std::align_val_t{alignment()});
+        char* start = static_cast<char*>(::operator new(bytes(n), std::align_val_t{page()}));
         if (huge) {
-            madvise(p, bytes, MADV_HUGEPAGE);  // advice: the system may decline (see huge_pages_granted)
-            huge_bytes_asked += bytes;
+            madvise(start, bytes(n), MADV_HUGEPAGE);
+            huge_bytes_asked += bytes(n);
         }
-        return static_cast<T*>(p);
+        return reinterpret_cast<T*>(start + offset);
     }
     void deallocate(T* p, std::size_t n) noexcept
     {
         if (huge)
-            huge_bytes_asked -= (n * sizeof(T) + alignment() - 1) / alignment() * alignment();
-        ::operator delete(p, std::align_val_t{alignment()});
+            huge_bytes_asked -= bytes(n);
+        ::operator delete(reinterpret_cast<char*>(p) - offset, std::align_val_t{page()});
     }
     template <class U>
-    bool operator==(const aligned<U>& other) const noexcept { return huge == other.huge; }
+    bool operator==(const aligned<U>& other) const noexcept { return huge == other.huge && offset == other.offset; }
     template <class U>
-    bool operator!=(const aligned<U>& other) const noexcept { return huge != other.huge; }
+    bool operator!=(const aligned<U>& other) const noexcept { return !(*this == other); }
 };
 template <class T>
 using array_of = std::vector<T, aligned<T>>;
+
+// Allocators for the arrays of one batch, in turn: the k-th array starts 64 bytes past a
+// page boundary (same_offset, as a large allocation's header puts it), or 64 + 256 k bytes
+// modulo 4 KiB (staggered).
+class arrays_laid_out {
+public:
+    arrays_laid_out(bool huge, layout how) : huge_(huge), how_(how) {}
+    aligned<double> next()
+    {
+        const std::size_t k = count_++;
+        return aligned<double>(huge_, how_ == staggered ? (64 + 256 * k) % 4096 : 64);
+    }
+
+private:
+    bool huge_;
+    layout how_;
+    std::size_t count_ = 0;
+};
 
 template <std::size_t D>
 struct pairs {
@@ -91,15 +127,20 @@ struct pairs {
     std::array<array_of<double>, D> C_M, C_m, v_M, v_m, v_M0, v_m0;
     array_of<impact::status> status;
 
-    pairs(std::size_t n, bool huge)
-        : count(n), M(n, aligned<double>(huge)), m(n, aligned<double>(huge)), eps(n, aligned<double>(huge)),
-          status(n, aligned<impact::status>(huge))
+    pairs(std::size_t n, bool huge, layout how) : count(n)
     {
+        arrays_laid_out arrays(huge, how);
+        for (array_of<double>* a : {&M, &m, &eps})
+            *a = array_of<double>(n, arrays.next());
+        for (auto* vectors : {&C_M, &C_m, &v_M, &v_m})
+            for (auto& v : *vectors)
+                v = array_of<double>(n, arrays.next());
+        status = array_of<impact::status>(n, aligned<impact::status>(arrays.next()));
+        for (auto* vectors : {&v_M0, &v_m0})  // read by the untimed reset only
+            for (auto& v : *vectors)
+                v = array_of<double>(n, arrays.next());
         std::mt19937_64 random(2026);
         std::uniform_real_distribution<double> unit(0.0, 1.0), coordinate(-10.0, 10.0);
-        for (auto* vectors : {&C_M, &C_m, &v_M, &v_m, &v_M0, &v_m0})
-            for (auto& v : *vectors)
-                v = array_of<double>(n, aligned<double>(huge));
         for (std::size_t i = 0; i < n; ++i) {
             M[i] = 0.1 + 10 * unit(random);
             m[i] = 0.1 + 10 * unit(random);
@@ -118,14 +159,19 @@ struct pairs {
                     v_m[d][i] = -v_m[d][i];
                 }
         }
-        v_M0 = v_M;
-        v_m0 = v_m;
+        for (std::size_t d = 0; d < D; ++d) {
+            std::copy(v_M[d].begin(), v_M[d].end(), v_M0[d].begin());
+            std::copy(v_m[d].begin(), v_m[d].end(), v_m0[d].begin());
+        }
     }
 
+    // Copied, not assigned: an assignment would move v_M onto v_M0's allocator, i.e. its place.
     void reset()
     {
-        v_M = v_M0;
-        v_m = v_m0;
+        for (std::size_t d = 0; d < D; ++d) {
+            std::copy(v_M0[d].begin(), v_M0[d].end(), v_M[d].begin());
+            std::copy(v_m0[d].begin(), v_m0[d].end(), v_m[d].begin());
+        }
     }
 
     impact::collide_batch_data<double, D> data()
@@ -147,6 +193,29 @@ struct pairs {
 
     // Bytes a collision moves: every input read once, the velocities and status written.
     static constexpr double bytes_per_pair = (3 + 4 * D) * sizeof(double) + 2 * D * sizeof(double) + sizeof(impact::status);
+};
+
+// The memory-bandwidth probe's arrays: a = b + s c, laid out as a batch's arrays are.
+struct triad_arrays {
+    array_of<double> a, b, c;
+    triad_arrays(std::size_t n, bool huge, layout how)
+    {
+        arrays_laid_out arrays(huge, how);
+        a = array_of<double>(n, 0.0, arrays.next());
+        b = array_of<double>(n, 1.0, arrays.next());
+        c = array_of<double>(n, 2.0, arrays.next());
+    }
+    void run()
+    {
+        double* __restrict out = a.data();
+        const double* __restrict x = b.data();
+        const double* __restrict y = c.data();
+        for (std::size_t i = 0, n = a.size(); i < n; ++i)
+            out[i] = x[i] + 3.0 * y[i];
+        benchmark::DoNotOptimize(out);
+        benchmark::ClobberMemory();
+    }
+    static constexpr double bytes_per_element = 3 * sizeof(double);
 };
 
 // ---- The hand-written loop: the same arithmetic, written by hand -----------------
@@ -188,7 +257,7 @@ inline double div(dd a, dd b)
 // denominator of a pair not resolved replaced by 1), arrays that do not overlap, so that
 // the compiler vectorises the loop as it does the generated one.
 template <std::size_t D>
-void hand_written(pairs<D>& p)
+[[gnu::noinline]] void hand_written(pairs<D>& p)
 {
     const double* __restrict M = p.M.data();
     const double* __restrict m = p.m.data();
@@ -281,19 +350,17 @@ void hand_written(pairs<D>& p)
 
 // ---- Benchmarks -------------------------------------------------------------------
 
-template <std::size_t D>
-pairs<D>& shared_pairs(std::size_t n, bool huge)
+// Data shared by the repetitions of a benchmark, made once (4 million pairs take a while).
+template <class Data>
+Data& shared(std::size_t n, bool huge, layout how)
 {
-    static std::map<std::pair<std::size_t, bool>, pairs<D>> all;
-    auto found = all.find({n, huge});
+    static std::map<std::tuple<std::size_t, bool, layout>, Data> all;
+    auto found = all.find({n, huge, how});
     if (found == all.end())
-        found = all.emplace(std::make_pair(n, huge), pairs<D>(n, huge)).first;
+        found = all.emplace(std::piecewise_construct, std::forward_as_tuple(n, huge, how),
+                            std::forward_as_tuple(n, huge, how))
+                    .first;
     return found->second;
-}
-
-bool on_huge_pages(const benchmark::State& state)
-{
-    return static_cast<std::size_t>(state.range(1)) == huge_pages;
 }
 
 // Reads twice as many bytes as the largest caches hold (32 MiB here), so that nothing
@@ -307,116 +374,117 @@ void flush_caches()
     benchmark::DoNotOptimize(sum);
 }
 
-template <std::size_t D, class Body>
-void run(benchmark::State& state, Body body)
+// Each loop a function of its own, none inlined into the harness: the compiler allocates
+// registers for each alone, as it would in a program calling it.
+template <std::size_t D>
+[[gnu::noinline]] void generated_batch(pairs<D>& p)
 {
-    pairs<D>& p = shared_pairs<D>(static_cast<std::size_t>(state.range(0)), on_huge_pages(state));
-    for (auto _ : state) {
-        state.PauseTiming();
-        p.reset();
-        if (p.count > in_cache)
-            flush_caches();
-        state.ResumeTiming();
-        body(p);
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * p.count));
-    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * p.count * pairs<D>::bytes_per_pair));
+    impact::collide_batch(p.data());
+    benchmark::ClobberMemory();
 }
 
 template <std::size_t D>
-void generated_batch(benchmark::State& state)
+[[gnu::noinline]] void generated_scalar(pairs<D>& p)
 {
-    run<D>(state, [](pairs<D>& p) { impact::collide_batch(p.data()); });
-}
-
-template <std::size_t D>
-void generated_scalar(benchmark::State& state)
-{
-    run<D>(state, [](pairs<D>& p) {
-        for (std::size_t i = 0; i < p.count; ++i) {
-            std::array<double, D> C_M, C_m, v_M, v_m;
-            for (std::size_t d = 0; d < D; ++d) {
-                C_M[d] = p.C_M[d][i];
-                C_m[d] = p.C_m[d][i];
-                v_M[d] = p.v_M[d][i];
-                v_m[d] = p.v_m[d][i];
-            }
-            const auto r = impact::collide(p.M[i], p.m[i], C_M, C_m, v_M, v_m, p.eps[i]);
-            for (std::size_t d = 0; d < D; ++d) {
-                p.v_M[d][i] = r.v_M[d];
-                p.v_m[d][i] = r.v_m[d];
-            }
-            p.status[i] = r.status;
+    for (std::size_t i = 0; i < p.count; ++i) {
+        std::array<double, D> C_M, C_m, v_M, v_m;
+        for (std::size_t d = 0; d < D; ++d) {
+            C_M[d] = p.C_M[d][i];
+            C_m[d] = p.C_m[d][i];
+            v_M[d] = p.v_M[d][i];
+            v_m[d] = p.v_m[d][i];
         }
-    });
+        const auto r = impact::collide(p.M[i], p.m[i], C_M, C_m, v_M, v_m, p.eps[i]);
+        for (std::size_t d = 0; d < D; ++d) {
+            p.v_M[d][i] = r.v_M[d];
+            p.v_m[d][i] = r.v_m[d];
+        }
+        p.status[i] = r.status;
+    }
+    benchmark::ClobberMemory();
 }
 
+// The loops timed side by side, and the figures each benchmark reports (medians of its
+// repetitions): pairs per second (millions) of the three collision loops, the triad's bytes
+// per second (GB), and the two ratios the batch kernel is held to.
+enum loop { scalar_loop, batch_loop, hand_written_loop, triad_loop, loops };
+const char* const pairs_per_second[] = {"scalar_M/s", "batch_M/s", "hand_M/s"};
+const char* const triad_bandwidth = "triad_GB/s";
+const char* const batch_per_hand_written = "batch/hand";
+const char* const batch_per_triad = "batch/triad";
+
+// Arguments: pairs (the triad runs over 5 times as many elements, about as many bytes as 2D
+// pairs carry), page size in KiB, layout.
 template <std::size_t D>
-void hand_written_batch(benchmark::State& state)
-{
-    run<D>(state, [](pairs<D>& p) { hand_written(p); });
-}
-
-// a = b + s c: the bandwidth a loop over this much memory can reach.
-void triad(benchmark::State& state)
+void side_by_side(benchmark::State& state)
 {
     const std::size_t n = static_cast<std::size_t>(state.range(0));
-    const aligned<double> pages(on_huge_pages(state));
-    array_of<double> a(n, pages), b(n, 1.0, pages), c(n, 2.0, pages);
+    const bool huge = static_cast<std::size_t>(state.range(1)) == huge_pages;
+    const layout how = static_cast<layout>(state.range(2));
+    pairs<D>& p = shared<pairs<D>>(n, huge, how);
+    triad_arrays& probe = shared<triad_arrays>(5 * n, huge, how);
+    std::array<double, loops> seconds{};
+    std::size_t first = 0;
     for (auto _ : state) {
-        for (std::size_t i = 0; i < n; ++i)
-            a[i] = b[i] + 3.0 * c[i];
-        benchmark::DoNotOptimize(a.data());
-        benchmark::ClobberMemory();
+        double pass = 0;
+        for (std::size_t j = 0; j < loops; ++j) {
+            const loop which = static_cast<loop>((first + j) % loops);
+            p.reset();
+            if (n > in_cache)
+                flush_caches();
+            const auto start = std::chrono::steady_clock::now();
+            switch (which) {
+            case scalar_loop: generated_scalar(p); break;
+            case batch_loop: generated_batch(p); break;
+            case hand_written_loop: hand_written(p); break;
+            default: probe.run(); break;
+            }
+            const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            seconds[which] += elapsed;
+            pass += elapsed;
+        }
+        first = (first + 1) % loops;  // each loop in turn runs first, after the flush of another's data
+        state.SetIterationTime(pass);
     }
-    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * n * 3 * sizeof(double)));
+    const double passes = static_cast<double>(state.iterations());
+    for (loop which : {scalar_loop, batch_loop, hand_written_loop})
+        state.counters[pairs_per_second[which]] = passes * n / seconds[which] / 1e6;
+    const double triad_bytes = passes * probe.a.size() * triad_arrays::bytes_per_element / seconds[triad_loop];
+    state.counters[triad_bandwidth] = triad_bytes / 1e9;
+    state.counters[batch_per_hand_written] = seconds[hand_written_loop] / seconds[batch_loop];
+    state.counters[batch_per_triad] = passes * n * pairs<D>::bytes_per_pair / seconds[batch_loop] / triad_bytes;
 }
 
-// Collects results to print the ratios at the end.
+// Collects the medians of the repetitions, to print the figures together at the end.
 class ratio_reporter : public benchmark::ConsoleReporter {
 public:
-    // The median of the repetitions of each benchmark.
     void ReportRuns(const std::vector<Run>& runs) override
     {
-        for (const Run& run : runs) {
-            if (run.run_type != Run::RT_Aggregate || run.aggregate_name != "median")
-                continue;
-            std::string name = run.run_name.str();  // e.g. triad/n:20480/page_KiB:4/repeats:7/real_time
-            if (const auto at = name.find("/repeats:"); at != std::string::npos)
-                name.erase(at, name.find('/', at + 1) - at);
-            items[name] = run.counters.count("items_per_second") ? run.counters.at("items_per_second").value : 0;
-            bytes[name] = run.counters.count("bytes_per_second") ? run.counters.at("bytes_per_second").value : 0;
-        }
+        for (const Run& run : runs)
+            if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median")
+                for (const auto& [name, counter] : run.counters)
+                    medians[run.run_name.function_name + "/" + run.run_name.args][name] = counter.value;
         ConsoleReporter::ReportRuns(runs);
     }
-    std::map<std::string, double> items, bytes;
+    std::map<std::string, std::map<std::string, double>> medians;  // by benchmark and argument
 };
 
 } // namespace
 
-// Each benchmark repeated, the repetitions of all interleaved in random order (see
-// main), so that a change in the machine's load falls on every one alike; the ratios are
-// taken between medians. Arguments: pairs (or triad elements), page size in KiB.
-// The triad runs over 5 times as many elements: as many bytes as 2D pairs carry, roughly.
-#define IMPACT_BENCHMARK(f, elements_per_pair)                                                                \
-    BENCHMARK(f)                                                                                              \
-        ->ArgNames({"n", "page_KiB"})                                                                        \
-        ->Args({in_cache * elements_per_pair, small_pages})                                                   \
-        ->Args({out_of_cache * elements_per_pair, small_pages})                                               \
-        ->Args({out_of_cache * elements_per_pair, huge_pages})                                                \
-        ->UseRealTime()                                                                                       \
-        ->Repetitions(7)                                                                                      \
-        ->ReportAggregatesOnly(true)                                                                          \
-        ->Unit(benchmark::kMicrosecond)
+#define IMPACT_SIDE_BY_SIDE(D)                                                                               \
+    BENCHMARK(side_by_side<D>)                                                                              \
+        ->ArgNames({"pairs", "page_KiB", "staggered"})                                                      \
+        ->Args({in_cache, small_pages, staggered})                                                          \
+        ->Args({out_of_cache, small_pages, same_offset})                                                    \
+        ->Args({out_of_cache, small_pages, staggered})                                                      \
+        ->Args({out_of_cache, huge_pages, staggered})                                                       \
+        ->UseManualTime()                                                                                   \
+        ->Repetitions(7)                                                                                    \
+        ->ReportAggregatesOnly(true)                                                                        \
+        ->Unit(benchmark::kMillisecond)
 
-IMPACT_BENCHMARK(generated_scalar<2>, 1);
-IMPACT_BENCHMARK(generated_batch<2>, 1);
-IMPACT_BENCHMARK(hand_written_batch<2>, 1);
-IMPACT_BENCHMARK(generated_scalar<3>, 1);
-IMPACT_BENCHMARK(generated_batch<3>, 1);
-IMPACT_BENCHMARK(hand_written_batch<3>, 1);
-IMPACT_BENCHMARK(triad, 5);
+IMPACT_SIDE_BY_SIDE(2);
+IMPACT_SIDE_BY_SIDE(3);
 
 namespace {
 
@@ -440,37 +508,38 @@ long huge_pages_granted()
 
 int main(int argc, char** argv)
 {
+    // The repetitions of all benchmarks interleaved in random order, so that a change in the
+    // machine's load falls on every regime alike.
     std::vector<char*> arguments{argv[0], const_cast<char*>("--benchmark_enable_random_interleaving=true")};
     arguments.insert(arguments.end(), argv + 1, argv + argc);  // the caller's flags come later and win
     int count = static_cast<int>(arguments.size());
     benchmark::Initialize(&count, arguments.data());
     ratio_reporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
-    const auto key = [](const std::string& f, std::size_t n, std::size_t pages) {
-        return f + "/n:" + std::to_string(n) + "/page_KiB:" + std::to_string(pages) + "/real_time";
-    };
-    const std::pair<std::size_t, std::size_t> regimes[] = {
-        {in_cache, small_pages}, {out_of_cache, small_pages}, {out_of_cache, huge_pages}};
-    for (int d : {2, 3}) {
-        const std::string D = "<" + std::to_string(d) + ">";
-        for (const auto& [n, pages] : regimes) {
-            const double batch = reporter.items[key("generated_batch" + D, n, pages)];
-            const double hand = reporter.items[key("hand_written_batch" + D, n, pages)];
-            if (batch > 0 && hand > 0)
-                std::printf("%dD, %zu pairs, %zu KiB pages: generated batch / hand-written = %.3f\n", d, n, pages,
-                            batch / hand);
+
+    std::printf("\nMedians of 7 repetitions; targets: batch / hand-written >= 0.95, and out of cache the batch's "
+                "bytes/s >= 80%% of the triad's.\n");
+    std::printf("%-3s %-12s %-9s %-12s %9s %9s %9s %10s %10s %11s\n", "", "pairs", "pages", "layout", "scalar M/s",
+                "batch M/s", "hand M/s", "triad GB/s", "batch/hand", "batch/triad");
+    for (int d : {2, 3})
+        for (const auto& [pairs, pages, how] : {std::tuple{in_cache, small_pages, staggered},
+                                                std::tuple{out_of_cache, small_pages, same_offset},
+                                                std::tuple{out_of_cache, small_pages, staggered},
+                                                std::tuple{out_of_cache, huge_pages, staggered}}) {
+            const std::string name = "side_by_side<" + std::to_string(d) + ">/pairs:" + std::to_string(pairs) +
+                                     "/page_KiB:" + std::to_string(pages) + "/staggered:" + std::to_string(how);
+            const auto found = reporter.medians.find(name);
+            if (found == reporter.medians.end())
+                continue;
+            auto figure = [&](const char* counter) { return found->second[counter]; };
+            std::printf("%-3s %-12zu %-9s %-12s %9.1f %9.1f %9.1f %10.2f %10.3f %10.0f%%\n",
+                        (std::to_string(d) + "D").c_str(), pairs, pages == huge_pages ? "2 MiB" : "4 KiB",
+                        how == staggered ? "staggered" : "same offset", figure(pairs_per_second[scalar_loop]),
+                        figure(pairs_per_second[batch_loop]), figure(pairs_per_second[hand_written_loop]),
+                        figure(triad_bandwidth), figure(batch_per_hand_written), 100 * figure(batch_per_triad));
         }
-        for (std::size_t pages : {small_pages, huge_pages}) {
-            const double bytes = reporter.bytes[key("generated_batch" + D, out_of_cache, pages)];
-            const double probe = reporter.bytes[key("triad", out_of_cache * 5, pages)];
-            if (bytes > 0 && probe > 0)
-                std::printf("%dD out of cache, %zu KiB pages: generated batch moves %.2f GB/s, the triad %.2f GB/s: "
-                            "%.0f%%\n",
-                            d, pages, bytes / 1e9, probe / 1e9, 100 * bytes / probe);
-        }
-    }
     std::printf("arrays on 2 MiB pages at the end: %ld MiB of the %zu MiB asked for (the system may grant fewer; "
-                "the %zu KiB-page figures hold for as many as it granted)\n",
-                huge_pages_granted(), huge_bytes_asked >> 20, huge_pages);
+                "the 2 MiB-page figures hold for as many as it granted)\n",
+                huge_pages_granted(), huge_bytes_asked >> 20);
     return 0;
 }

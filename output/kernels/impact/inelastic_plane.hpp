@@ -119,7 +119,7 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            bool fails = !(std::fma(C_Mx_[i], Real(0), std::fma(C_My_[i], Real(0), std::fma(C_mx_[i], Real(0), std::fma(C_my_[i], Real(0), std::fma(v_Mx_[i], Real(0), std::fma(v_My_[i], Real(0), std::fma(v_mx_[i], Real(0), v_my_[i] * Real(0)))))))) == Real(0));
+            bool fails = !(((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_mx_[i], Real(0), C_my_[i] * Real(0))) + (std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)) + std::fma(v_mx_[i], Real(0), v_my_[i] * Real(0)))) == Real(0));
             outcome = fails ? status::non_finite : outcome;
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
@@ -197,7 +197,7 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         const Real v_My_out = -(t31 * t2) + v_My;
         const Real v_mx_out = t32 * t0 + v_mx;
         const Real v_my_out = t32 * t2 + v_my;
-        const bool written = usable && (std::fma(v_Mx_out, Real(0), std::fma(v_My_out, Real(0), std::fma(v_mx_out, Real(0), v_my_out * Real(0)))) == Real(0));
+        const bool written = usable && ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_mx_[i] = written ? v_mx_out : v_mx_[i];

@@ -146,7 +146,7 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            bool fails = !(std::fma(C_Mx_[i], Real(0), std::fma(C_My_[i], Real(0), std::fma(C_Mz_[i], Real(0), std::fma(C_mx_[i], Real(0), std::fma(C_my_[i], Real(0), std::fma(C_mz_[i], Real(0), std::fma(v_Mx_[i], Real(0), std::fma(v_My_[i], Real(0), std::fma(v_Mz_[i], Real(0), std::fma(v_mx_[i], Real(0), std::fma(v_my_[i], Real(0), v_mz_[i] * Real(0)))))))))))) == Real(0));
+            bool fails = !((((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_Mz_[i], Real(0), C_mx_[i] * Real(0))) + (std::fma(C_my_[i], Real(0), C_mz_[i] * Real(0)) + std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)))) + (std::fma(v_Mz_[i], Real(0), v_mx_[i] * Real(0)) + std::fma(v_my_[i], Real(0), v_mz_[i] * Real(0)))) == Real(0));
             outcome = fails ? status::non_finite : outcome;
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
@@ -249,7 +249,7 @@ inline void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         const Real v_mx_out = t47 * t0 + v_mx;
         const Real v_my_out = t47 * t2 + v_my;
         const Real v_mz_out = t47 * t5 + v_mz;
-        const bool written = usable && (std::fma(v_Mx_out, Real(0), std::fma(v_My_out, Real(0), std::fma(v_Mz_out, Real(0), std::fma(v_mx_out, Real(0), std::fma(v_my_out, Real(0), v_mz_out * Real(0)))))) == Real(0));
+        const bool written = usable && (((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_Mz_out, Real(0), v_mx_out * Real(0))) + std::fma(v_my_out, Real(0), v_mz_out * Real(0))) == Real(0));
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_Mz_[i] = written ? v_Mz_out : v_Mz_[i];
