@@ -469,15 +469,28 @@ public:
     std::map<std::string, std::map<std::string, double>> medians;  // by benchmark and argument
 };
 
+// The regimes every benchmark runs in: pairs, page size in KiB, layout.
+struct regime {
+    std::size_t pairs, page_KiB;
+    layout how;
+};
+constexpr regime regimes[] = {{in_cache, small_pages, staggered},
+                              {out_of_cache, small_pages, same_offset},
+                              {out_of_cache, small_pages, staggered},
+                              {out_of_cache, huge_pages, staggered}};
+
+void in_every_regime(benchmark::internal::Benchmark* b)
+{
+    b->ArgNames({"pairs", "page_KiB", "staggered"});
+    for (const regime& r : regimes)
+        b->Args({static_cast<std::int64_t>(r.pairs), static_cast<std::int64_t>(r.page_KiB), r.how});
+}
+
 } // namespace
 
 #define IMPACT_SIDE_BY_SIDE(D)                                                                               \
     BENCHMARK(side_by_side<D>)                                                                              \
-        ->ArgNames({"pairs", "page_KiB", "staggered"})                                                      \
-        ->Args({in_cache, small_pages, staggered})                                                          \
-        ->Args({out_of_cache, small_pages, same_offset})                                                    \
-        ->Args({out_of_cache, small_pages, staggered})                                                      \
-        ->Args({out_of_cache, huge_pages, staggered})                                                       \
+        ->Apply(in_every_regime)                                                                            \
         ->UseManualTime()                                                                                   \
         ->Repetitions(7)                                                                                    \
         ->ReportAggregatesOnly(true)                                                                        \
@@ -522,10 +535,7 @@ int main(int argc, char** argv)
     std::printf("%-3s %-12s %-9s %-12s %9s %9s %9s %10s %10s %11s\n", "", "pairs", "pages", "layout", "scalar M/s",
                 "batch M/s", "hand M/s", "triad GB/s", "batch/hand", "batch/triad");
     for (int d : {2, 3})
-        for (const auto& [pairs, pages, how] : {std::tuple{in_cache, small_pages, staggered},
-                                                std::tuple{out_of_cache, small_pages, same_offset},
-                                                std::tuple{out_of_cache, small_pages, staggered},
-                                                std::tuple{out_of_cache, huge_pages, staggered}}) {
+        for (const auto& [pairs, pages, how] : regimes) {
             const std::string name = "side_by_side<" + std::to_string(d) + ">/pairs:" + std::to_string(pairs) +
                                      "/page_KiB:" + std::to_string(pages) + "/staggered:" + std::to_string(how);
             const auto found = reporter.medians.find(name);
