@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "emit/cxx.h"
+#include "emit/program.h"
 #include "engine/infix.h"
 
 using namespace impact;
@@ -60,3 +61,91 @@ BOOST_AUTO_TEST_CASE(order_does_not_depend_on_how_gi_nac_stored_the_expression)
     BOOST_TEST(engine::ginac_syntax((a - b) * c + a * b, order) == "a*b+c*(a-b)");
     BOOST_TEST(engine::ginac_syntax(GiNaC::pow(a, 2) / (b + c), order) == "a^2/(b+c)");
 }
+
+
+// Straight-line programs written instruction by instruction, to test their ordering for
+// registers against what a hand count of the live values gives.
+namespace {
+
+struct program_builder {
+    emit::program p;
+
+    explicit program_builder(std::size_t inputs)
+    {
+        for (std::size_t i = 0; i < inputs; ++i) {
+            p.inputs.push_back(GiNaC::symbol());
+            emit::instruction in;
+            in.op = emit::opcode::input;
+            in.input = static_cast<int>(i);
+            p.code.push_back(in);
+        }
+    }
+
+    int operator()(emit::opcode op, int a, int b)
+    {
+        emit::instruction in;
+        in.op = op;
+        in.a = a;
+        in.b = b;
+        p.code.push_back(in);
+        return static_cast<int>(p.code.size()) - 1;
+    }
+};
+
+// The operations in order: + for an addition, * for a multiplication, / for a division.
+std::string operations(const emit::program& p)
+{
+    std::string ops;
+    for (const emit::instruction& in : p.code)
+        if (in.op == emit::opcode::add || in.op == emit::opcode::mul || in.op == emit::opcode::div)
+            ops += in.op == emit::opcode::add ? '+' : in.op == emit::opcode::mul ? '*' : '/';
+    return ops;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(programs)
+
+BOOST_AUTO_TEST_CASE(ordered_for_registers_finishes_with_values_before_reading_more)
+{
+    // (a + b) (a b) + (c + d) (c d), every sum first as compiled: a, b, c, d, a + b and
+    // c + d are live at once (6). Ordered, a and b are done with before c and d are read:
+    // at most c, d, c + d and the first product (4).
+    using emit::opcode;
+    program_builder in(4);
+    const int a = 0, b = 1, c = 2, d = 3;
+    const int s1 = in(opcode::add, a, b), s2 = in(opcode::add, c, d);
+    const int p1 = in(opcode::mul, a, b), p2 = in(opcode::mul, c, d);
+    in.p.outputs.push_back(in(opcode::add, in(opcode::mul, s1, p1), in(opcode::mul, s2, p2)));
+    BOOST_TEST(emit::most_live(in.p) == 6u);
+
+    const emit::program ordered = emit::ordered_for_registers(in.p);
+    BOOST_TEST(emit::most_live(ordered) == 4u);
+    BOOST_TEST(operations(in.p) == "++****+");
+    BOOST_TEST(operations(ordered) == "+**+**+");  // a + b, a b, their product, then c and d
+    for (std::size_t i = 0; i < ordered.code.size(); ++i)
+        for (int operand : {ordered.code[i].a, ordered.code[i].b, ordered.code[i].c})
+            BOOST_TEST(operand < static_cast<int>(i));
+    const std::vector<double> values{1.5, -2.25, 3.125, 0.75};  // (-0.75)(-3.375) + 3.875 * 2.34375
+    BOOST_TEST(emit::run<double>(ordered, values).front() == 0.75 * 3.375 + 3.875 * 2.34375);
+    BOOST_TEST(emit::run<double>(ordered, values) == emit::run<double>(in.p, values));
+}
+
+BOOST_AUTO_TEST_CASE(ordered_for_registers_divides_only_once_every_divisor_is_known)
+{
+    // b / (b + c) + d / (e + f): once b + c is known, b / (b + c) needs no new input and
+    // would come next, before e + f; it waits for that divisor, so that a batch loop can
+    // test every divisor's range before its first division.
+    using emit::opcode;
+    program_builder in(5);
+    const int b = 0, c = 1, d = 2, e = 3, f = 4;
+    const int bc = in(opcode::add, b, c), ef = in(opcode::add, e, f);
+    in.p.outputs.push_back(in(opcode::add, in(opcode::div, b, bc), in(opcode::div, d, ef)));
+    BOOST_TEST(!emit::program_cxx(in.p, {"b", "c", "d", "e", "f"}).divides_early);
+
+    const emit::program ordered = emit::ordered_for_registers(in.p);
+    BOOST_TEST(operations(ordered) == "++//+");  // not "+/+/+"
+    BOOST_TEST(!emit::program_cxx(ordered, {"b", "c", "d", "e", "f"}).divides_early);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

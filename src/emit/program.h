@@ -55,6 +55,19 @@ program compile(const std::vector<std::pair<GiNaC::ex, compile_options>>& output
 /// The number of operations of each kind, e.g. to show that one division is used.
 std::size_t count(const program& p, opcode op);
 
+/// The most values live at once when p runs in its order: a value from where it is
+/// computed (an input from where it is first read) to its last use.
+std::size_t most_live(const program& p);
+
+/// The same program (the same operations on the same operands, the same outputs), its
+/// instructions in an order that keeps fewer values live at once: every step continues
+/// the oldest unfinished work (the ready instruction whose oldest operand was computed or
+/// first read earliest), and reads an input not yet read only when nothing else is
+/// ready, for the first such instruction of the original order. A division or square
+/// root waits until every divisor is computed (see `cxx_code::divisors_known`); where
+/// no order allows that, the program is returned as it is.
+program ordered_for_registers(const program& p);
+
 /// The body of a kernel: one `const Real tN = ...;` line per instruction that is not an
 /// input (inputs are referred to by `names`), and the C++ expression of each output.
 /// With `kept_if`, every divisor d that is not a constant is written `(kept_if ? d : Real(1))`
