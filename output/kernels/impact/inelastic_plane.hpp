@@ -197,10 +197,7 @@ inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, 
         const Real v_My_out = -(t31 * t2) + v_My;
         const Real v_mx_out = t32 * t0 + v_mx;
         const Real v_my_out = t32 * t2 + v_my;
-        const Real finite0 = std::fma(v_Mx_out, Real(0), v_My_out * Real(0));
-        const Real finite1 = std::fma(v_mx_out, Real(0), v_my_out * Real(0));
-        const Real finite2 = finite0 + finite1;
-        const bool written = usable && (finite2 == Real(0));
+        const bool written = usable && ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_mx_[i] = written ? v_mx_out : v_mx_[i];
