@@ -212,20 +212,6 @@ std::string members_initialiser(const engine::kernel& k)
     return fmt::format("{{{}}}", fmt::join(values, ", "));
 }
 
-// The values the outputs [first, last) of `p` need, directly or through others.
-std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t last)
-{
-    std::vector<bool> needed(p.code.size(), false);
-    for (std::size_t o = first; o < last; ++o)
-        needed[p.outputs[o]] = true;
-    for (std::size_t i = p.code.size(); i-- > 0;)
-        if (needed[i])
-            for (int operand : {p.code[i].a, p.code[i].b, p.code[i].c})
-                if (operand >= 0)
-                    needed[operand] = true;
-    return needed;
-}
-
 // One scalar input of a batch kernel: a component, its array in the batch data, and
 // whether the batch writes it.
 struct lane_input {
@@ -287,8 +273,8 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
 // and the loop also holds constants (0, 1, a divisor's bounds) and statuses. A program
 // that holds more in the order it was compiled in is printed in an order for registers
 // (ordered_for_registers): the compiler loads a value it cannot keep in a register again
-// from its array, and spills others. The 3D collide holds 31 values at once as compiled,
-// 23 ordered; ordered, its batch ran at 1.08 of the hand-written loop in cache, where it
+// from its array, and spills others. The 3D collide holds 29 values at once as compiled,
+// 21 ordered; ordered, its batch ran at 1.08 of the hand-written loop in cache, where it
 // had run at 1.00 side by side. The 2D collide (21) keeps its order: ordered, it lost 8 %
 // in cache, where the order compiled in, one operation across every coordinate, then the
 // next, gives the processor more independent work side by side.
@@ -363,9 +349,12 @@ void print_batch(std::string& out, const kernel_plan& plan)
         out += "        // Every pair is computed; one not resolved divides by 1, and its results are discarded.\n";
     for (const lane_input& in : inputs)
         out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
-    const bool for_registers = most_live(plan.code) > batch_registers;
-    const program arithmetic = for_registers ? ordered_for_registers(plan.code) : plan.code;
-    const std::vector<bool> for_outputs = needed_by(arithmetic, plan.guard_values, arithmetic.outputs.size());
+    program outputs_only = plan.code;  // the guards' values are computed above
+    outputs_only.outputs.erase(outputs_only.outputs.begin(),
+                               outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
+    const bool for_registers = most_live(outputs_only) > batch_registers;
+    const program arithmetic = for_registers ? ordered_for_registers(outputs_only) : outputs_only;
+    const std::vector<bool> for_outputs = needed_by(arithmetic, 0, arithmetic.outputs.size());
     const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "");
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
     // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
@@ -385,7 +374,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
             declare_usable();
     }
     std::vector<std::pair<std::string, std::string>> writes;  // target, value
-    std::size_t value = plan.guard_values;
+    std::size_t value = 0;
     for (const engine::kernel_output& o : k.outputs) {
         for (std::size_t c = 0; c < o.values.size(); ++c, ++value) {
             const engine::kernel_parameter* same = k.find_parameter(o.member);

@@ -453,11 +453,27 @@ bool divides(const program& p, const instruction& in)
 
 } // namespace
 
+std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t last)
+{
+    std::vector<bool> needed(p.code.size(), false);
+    for (std::size_t o = first; o < last; ++o)
+        needed[p.outputs[o]] = true;
+    for (std::size_t i = p.code.size(); i-- > 0;)
+        if (needed[i])
+            for (int operand : {p.code[i].a, p.code[i].b, p.code[i].c})
+                if (operand >= 0)
+                    needed[operand] = true;
+    return needed;
+}
+
 std::size_t most_live(const program& p)
 {
     const std::size_t n = p.code.size();
+    const std::vector<bool> needed = needed_by(p, 0, p.outputs.size());
     std::vector<std::size_t> first(n, n), last(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
+        if (!needed[i])
+            continue;
         if (!is_leaf(p.code[i]))
             first[i] = std::min(first[i], i);
         for (int operand : operands(p.code[i]))

@@ -55,8 +55,11 @@ program compile(const std::vector<std::pair<GiNaC::ex, compile_options>>& output
 /// The number of operations of each kind, e.g. to show that one division is used.
 std::size_t count(const program& p, opcode op);
 
-/// The most values live at once when p runs in its order: a value from where it is
-/// computed (an input from where it is first read) to its last use.
+/// The values the outputs [first, last) of `p` need, directly or through others.
+std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t last);
+
+/// The most values live at once when p runs in its order: a value its outputs need, from
+/// where it is computed (an input from where it is first read) to its last use.
 std::size_t most_live(const program& p);
 
 /// The same program (the same operations on the same operands, the same outputs), its
@@ -64,7 +67,8 @@ std::size_t most_live(const program& p);
 /// the oldest unfinished work (the ready instruction whose oldest operand was computed or
 /// first read earliest), and reads an input not yet read only when nothing else is
 /// ready, for the first such instruction of the original order. A division or square
-/// root waits until every divisor is computed (see `cxx_code::divisors_known`); where
+/// root waits until every divisor that does not need it is computed (see
+/// `cxx_code::divisors_known`); where the divisions need each other's divisors, so that
 /// no order allows that, the program is returned as it is.
 program ordered_for_registers(const program& p);
 
