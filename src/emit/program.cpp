@@ -446,6 +446,7 @@ std::vector<int> operands(const instruction& in)
     return of;
 }
 
+// A division by a value that is not a constant: one whose divisor a kernel names and tests.
 bool divides(const program& p, const instruction& in)
 {
     return in.op == opcode::div && p.code[in.b].op != opcode::constant;
@@ -460,9 +461,8 @@ std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t las
         needed[p.outputs[o]] = true;
     for (std::size_t i = p.code.size(); i-- > 0;)
         if (needed[i])
-            for (int operand : {p.code[i].a, p.code[i].b, p.code[i].c})
-                if (operand >= 0)
-                    needed[operand] = true;
+            for (int operand : operands(p.code[i]))
+                needed[operand] = true;
     return needed;
 }
 
@@ -588,9 +588,8 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     // so every operation is the one the interpreter measured).
     std::vector<int> uses(p.code.size(), 0);
     for (const instruction& in : p.code)
-        for (int operand : {in.a, in.b, in.c})
-            if (operand >= 0)
-                ++uses[operand];
+        for (int operand : operands(in))
+            ++uses[operand];
     for (int o : p.outputs)
         ++uses[o];
     // Divisors that are not constants are named, so that a kernel can test them.
@@ -598,7 +597,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     int first_division = -1;
     for (std::size_t i = 0; i < p.code.size(); ++i) {
         const instruction& in = p.code[i];
-        if (in.op != opcode::div || p.code[in.b].op == opcode::constant)
+        if (!divides(p, in))
             continue;
         uses[in.b] += 2;
         if (std::find(divisors.begin(), divisors.end(), in.b) == divisors.end())
@@ -631,7 +630,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
         case opcode::mul: expression = operand(in.a, product) + " * " + operand(in.b, unary); own = product; break;
         case opcode::div:
             expression = operand(in.a, product) + " / " +
-                         (kept_if.empty() || p.code[in.b].op == opcode::constant
+                         (kept_if.empty() || !divides(p, in)
                               ? operand(in.b, unary)
                               : "(" + kept_if + " ? " + text[in.b] + " : Real(1))");
             own = product;
@@ -645,7 +644,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             expression = "std::" + in.function + "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";
             break;
         }
-        const bool named = uses[i] > 1 && in.op != opcode::input && in.op != opcode::constant;
+        const bool named = uses[i] > 1 && !is_leaf(in);
         if (!named) {
             text[i] = expression;
             precedence[i] = own;
