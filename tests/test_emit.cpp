@@ -81,25 +81,43 @@ struct program_builder {
         }
     }
 
-    int operator()(emit::opcode op, int a, int b)
+    int operator()(emit::opcode op, int a, int b = -1, int c = -1)
     {
         emit::instruction in;
         in.op = op;
         in.a = a;
         in.b = b;
+        in.c = c;
         p.code.push_back(in);
         return static_cast<int>(p.code.size()) - 1;
     }
 };
 
-// The operations in order: + for an addition, * for a multiplication, / for a division.
+// The operations in order: + for an addition, * for a multiplication, / for a division,
+// r for a square root, f for a fused multiply-add.
 std::string operations(const emit::program& p)
 {
     std::string ops;
     for (const emit::instruction& in : p.code)
-        if (in.op == emit::opcode::add || in.op == emit::opcode::mul || in.op == emit::opcode::div)
-            ops += in.op == emit::opcode::add ? '+' : in.op == emit::opcode::mul ? '*' : '/';
+        switch (in.op) {
+        case emit::opcode::add: ops += '+'; break;
+        case emit::opcode::mul: ops += '*'; break;
+        case emit::opcode::div: ops += '/'; break;
+        case emit::opcode::sqrt: ops += 'r'; break;
+        case emit::opcode::fma: ops += 'f'; break;
+        default: break;
+        }
     return ops;
+}
+
+// Every operand of every instruction comes before it.
+bool operands_first(const emit::program& p)
+{
+    for (std::size_t i = 0; i < p.code.size(); ++i)
+        for (int operand : {p.code[i].a, p.code[i].b, p.code[i].c})
+            if (operand >= static_cast<int>(i))
+                return false;
+    return true;
 }
 
 } // namespace
@@ -127,9 +145,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_finishes_with_values_before_reading_m
     BOOST_TEST(emit::most_live(ordered) == 4u);
     BOOST_TEST(operations(in.p) == "++****+");
     BOOST_TEST(operations(ordered) == "+**+**+");  // a + b, a b, their product, then c and d
-    for (std::size_t i = 0; i < ordered.code.size(); ++i)
-        for (int operand : {ordered.code[i].a, ordered.code[i].b, ordered.code[i].c})
-            BOOST_TEST(operand < static_cast<int>(i));
+    BOOST_TEST(operands_first(ordered));
     const std::vector<double> values{1.5, -2.25, 3.125, 0.75};  // (-0.75)(-3.375) + 3.875 * 2.34375
     BOOST_TEST(emit::run<double>(ordered, values).front() == 0.75 * 3.375 + 3.875 * 2.34375);
 
@@ -160,6 +176,73 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_divides_only_once_every_divisor_is_kn
     const emit::program ordered = emit::ordered_for_registers(in.p);
     BOOST_TEST(operations(ordered) == "++//+");  // not "+/+/+"
     BOOST_TEST(!emit::program_cxx(ordered, {"b", "c", "d", "e", "f"}).divides_early);
+}
+
+BOOST_AUTO_TEST_CASE(ordered_for_registers_takes_a_square_root_once_every_divisor_is_known)
+{
+    // sqrt(a + b) + c / (d + e): the root would follow a + b at once; it waits for d + e,
+    // since a batch loop decides from the divisors which lanes' roots it takes.
+    using emit::opcode;
+    program_builder in(5);
+    const int a = 0, b = 1, c = 2, d = 3, e = 4;
+    const int ab = in(opcode::add, a, b);
+    const int root = in(opcode::sqrt, ab);
+    const int de = in(opcode::add, d, e);
+    const int q = in(opcode::div, c, de);
+    in.p.outputs.push_back(in(opcode::add, root, q));
+    BOOST_TEST(operations(in.p) == "+r+/+");
+
+    const emit::program ordered = emit::ordered_for_registers(in.p);
+    BOOST_TEST(operations(ordered) == "++r/+");
+    BOOST_TEST(operands_first(ordered));
+    const std::vector<double> values{1.5, 0.75, 3.0, 0.5, 1.0};  // sqrt(2.25) + 3 / 1.5
+    BOOST_TEST(emit::run<double>(ordered, values).front() == 3.5);
+}
+
+BOOST_AUTO_TEST_CASE(ordered_for_registers_waits_for_an_fma_s_addend)
+{
+    // a b + fma(a, b, c d): once a b is computed, the fma's factors are known and old, but
+    // its addend c d is not: c and d are read and multiplied first.
+    using emit::opcode;
+    program_builder in(4);
+    const int a = 0, b = 1, c = 2, d = 3;
+    const int ab = in(opcode::mul, a, b);
+    const int cd = in(opcode::mul, c, d);
+    const int f = in(opcode::fma, a, b, cd);
+    in.p.outputs.push_back(in(opcode::add, ab, f));
+
+    const emit::program ordered = emit::ordered_for_registers(in.p);
+    BOOST_TEST(operations(ordered) == "**f+");
+    BOOST_TEST(operands_first(ordered));
+    const std::vector<double> values{1.5, 2.0, 0.5, 0.25};  // 3 + (3 + 0.125)
+    BOOST_TEST(emit::run<double>(ordered, values).front() == 6.125);
+}
+
+BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
+{
+    // p = a / b and q = c / d; then e / (p + a) and g / (q + c). Unconstrained, p + a would
+    // follow p (it reads nothing new; q does). But the division p comes after every divisor
+    // that does not need it, q + c among them, which needs q; and q after p + a, which
+    // needs p. No order satisfies both: the program is kept as it is.
+    using emit::opcode;
+    program_builder in(6);
+    const int a = 0, b = 1, c = 2, d = 3, e = 4, g = 5;
+    const int p = in(opcode::div, a, b);
+    const int q = in(opcode::div, c, d);
+    const int pa = in(opcode::add, p, a);
+    const int qc = in(opcode::add, q, c);
+    const int r = in(opcode::div, e, pa);
+    const int s = in(opcode::div, g, qc);
+    in.p.outputs.push_back(in(opcode::add, r, s));
+
+    const emit::program kept = emit::ordered_for_registers(in.p);
+    BOOST_TEST(operations(kept) == "//++//+");
+    BOOST_TEST(kept.code.size() == in.p.code.size());
+    for (std::size_t i = 0; i < kept.code.size(); ++i) {
+        BOOST_TEST(kept.code[i].a == in.p.code[i].a);
+        BOOST_TEST(kept.code[i].b == in.p.code[i].b);
+    }
+    BOOST_TEST(kept.outputs == in.p.outputs);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
