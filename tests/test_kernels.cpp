@@ -644,3 +644,123 @@ BOOST_AUTO_TEST_CASE(the_batch_kernel_gives_each_pair_the_scalar_status_and_divi
     check_batch_statuses<double>(false, in_double);
     check_batch_statuses<float>(true, in_float);
 }
+
+// The arrays of a batch in one allocation, as collide_batch_arrays lays them out: every
+// array where the documentation puts it, 64 + 256 k bytes past a page boundary (modulo
+// 4 KiB) for the k-th (M, m, C_M, C_m, v_M, v_m by axis, eps, status), none overlapping.
+template <class Real, std::size_t N>
+void check_batch_arrays_layout(std::size_t count)
+{
+    impact::collide_batch_arrays<Real, N> arrays(count);
+    BOOST_TEST(arrays.count() == count);
+    std::vector<std::pair<const unsigned char*, std::size_t>> in_order;  // start, bytes
+    auto add = [&](const auto* array) { in_order.emplace_back(reinterpret_cast<const unsigned char*>(array), count * sizeof(*array)); };
+    add(arrays.M());
+    add(arrays.m());
+    for (std::size_t axis = 0; axis < N; ++axis)
+        add(arrays.C_M(axis));
+    for (std::size_t axis = 0; axis < N; ++axis)
+        add(arrays.C_m(axis));
+    for (std::size_t axis = 0; axis < N; ++axis)
+        add(arrays.v_M(axis));
+    for (std::size_t axis = 0; axis < N; ++axis)
+        add(arrays.v_m(axis));
+    add(arrays.eps());
+    add(arrays.status());
+    BOOST_TEST(in_order.size() == 4 * N + 4);
+    for (std::size_t k = 0; k < in_order.size(); ++k) {
+        const auto address = reinterpret_cast<std::uintptr_t>(in_order[k].first);
+        BOOST_TEST(address % 64 == 0u);
+        BOOST_TEST(address % 4096 == (64 + 256 * k) % 4096, "array " << k << " of " << count << " pairs");
+        if (k > 0)
+            BOOST_TEST(in_order[k - 1].first + in_order[k - 1].second <= in_order[k].first);
+    }
+
+    // Every value written stays as written (no array overlaps another), and data() names
+    // the same arrays.
+    for (std::size_t i = 0; i < count; ++i) {
+        arrays.M()[i] = static_cast<Real>(i);
+        arrays.v_m(N - 1)[i] = -static_cast<Real>(i);
+        arrays.eps()[i] = Real(0.5);
+        arrays.status()[i] = impact::status::separating;
+    }
+    const impact::collide_batch_data<Real, N> data = arrays.data();
+    BOOST_TEST(data.count == count);
+    BOOST_TEST(data.M == arrays.M());
+    BOOST_TEST(data.C_m[0] == arrays.C_m(0));
+    BOOST_TEST(data.v_m[N - 1] == arrays.v_m(N - 1));
+    BOOST_TEST(data.eps == arrays.eps());
+    BOOST_TEST(data.status == arrays.status());
+    for (std::size_t i = 0; i < count; ++i) {
+        BOOST_TEST(data.M[i] == static_cast<Real>(i));
+        BOOST_TEST(data.v_m[N - 1][i] == -static_cast<Real>(i));
+        BOOST_TEST(data.eps[i] == Real(0.5));
+        BOOST_TEST((data.status[i] == impact::status::separating));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(batch_arrays_start_where_the_documentation_says_and_overlap_nothing)
+{
+    // Counts around one page of doubles (512) and of floats (1024), and none.
+    for (std::size_t count : {0, 1, 511, 512, 513, 1024, 5000}) {
+        check_batch_arrays_layout<double, 2>(count);
+        check_batch_arrays_layout<double, 3>(count);
+        check_batch_arrays_layout<float, 3>(count);
+        check_batch_arrays_layout<long double, 2>(count);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_batch_in_its_own_arrays_gives_the_scalar_results_bit_for_bit)
+{
+    constexpr std::size_t n = 100;
+    engine::uniform_stream s(7);
+    impact::collide_batch_arrays<double, 3> batch(n);
+    std::vector<collision<3>> drawn;
+    for (std::size_t i = 0; i < n; ++i) {
+        drawn.push_back(draw_collision<3>(s));
+        const collision<3>& c = drawn.back();
+        batch.M()[i] = c.M;
+        batch.m()[i] = c.m;
+        batch.eps()[i] = c.eps;
+        for (std::size_t d = 0; d < 3; ++d) {
+            batch.C_M(d)[i] = c.C_M[d];
+            batch.C_m(d)[i] = c.C_m[d];
+            batch.v_M(d)[i] = c.v_M[d];
+            batch.v_m(d)[i] = c.v_m[d];
+        }
+    }
+    impact::collide_batch(batch.data());
+    std::size_t resolved = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const collision<3>& c = drawn[i];
+        const auto r = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps);
+        BOOST_TEST((batch.status()[i] == r.status));
+        resolved += r.status == impact::status::ok ? 1 : 0;
+        for (std::size_t d = 0; d < 3; ++d) {
+            BOOST_TEST(std::memcmp(&r.v_M[d], &batch.v_M(d)[i], sizeof(double)) == 0);
+            BOOST_TEST(std::memcmp(&r.v_m[d], &batch.v_m(d)[i], sizeof(double)) == 0);
+        }
+    }
+    BOOST_TEST(resolved > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(batch_arrays_move_and_refuse_a_count_no_allocation_can_hold)
+{
+    impact::collide_batch_arrays<double, 2> first(10);
+    first.M()[9] = 4.5;
+    const double* where = first.M();
+    impact::collide_batch_arrays<double, 2> second(std::move(first));
+    BOOST_TEST(second.count() == 10u);
+    BOOST_TEST(second.M() == where);
+    BOOST_TEST(second.M()[9] == 4.5);
+    BOOST_TEST(first.count() == 0u);  // NOLINT: the object moved from is left empty
+    impact::collide_batch_arrays<double, 2> third(3);
+    third = std::move(second);
+    BOOST_TEST(third.count() == 10u);
+    BOOST_TEST(third.M()[9] == 4.5);
+
+    const std::size_t too_many = std::numeric_limits<std::size_t>::max() / sizeof(double);
+    BOOST_CHECK_THROW((impact::collide_batch_arrays<double, 3>(too_many)), std::bad_array_new_length);
+    BOOST_CHECK_THROW((impact::collide_batch_arrays<double, 3>(std::numeric_limits<std::size_t>::max())),
+                      std::bad_array_new_length);
+}

@@ -486,13 +486,16 @@ void in_every_regime(benchmark::internal::Benchmark* b)
         b->Args({static_cast<std::int64_t>(r.pairs), static_cast<std::int64_t>(r.page_KiB), r.how});
 }
 
+// Repetitions of each benchmark, whose medians are reported.
+constexpr int repetitions = 7;
+
 } // namespace
 
 #define IMPACT_SIDE_BY_SIDE(D)                                                                               \
     BENCHMARK(side_by_side<D>)                                                                              \
         ->Apply(in_every_regime)                                                                            \
         ->UseManualTime()                                                                                   \
-        ->Repetitions(7)                                                                                    \
+        ->Repetitions(repetitions)                                                                          \
         ->ReportAggregatesOnly(true)                                                                        \
         ->Unit(benchmark::kMillisecond)
 
@@ -530,8 +533,9 @@ int main(int argc, char** argv)
     ratio_reporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
-    std::printf("\nMedians of 7 repetitions; targets: batch / hand-written >= 0.95, and out of cache the batch's "
-                "bytes/s >= 80%% of the triad's.\n");
+    std::printf("\nMedians of %d repetitions; targets: batch / hand-written >= 0.95, and out of cache the batch's "
+                "bytes/s >= 80%% of the triad's.\n",
+                repetitions);
     std::printf("%-3s %-12s %-9s %-12s %9s %9s %9s %10s %10s %11s\n", "", "pairs", "pages", "layout", "scalar M/s",
                 "batch M/s", "hand M/s", "triad GB/s", "batch/hand", "batch/triad");
     for (int d : {2, 3})

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 
 namespace {
@@ -41,5 +42,33 @@ int main()
     const std::array<double, 3> D_M{0, 0, 2}, D_m{0, 0, 0}, w_M{0, 0, 1}, w_m{0, 0, 0};
     const auto space = impact::collide(1.0, 1.0, D_M, D_m, w_M, w_m, 1.0);
     expect(space.status == impact::status::separating && space.v_M == w_M, "a separating 3D pair is left alone");
+
+    // A batch in its own arrays gives each pair the scalar kernel's result: the 2D pair above
+    // lifted to 3D, and the separating 3D pair.
+    const std::array<double, 3> E_M{1, 1, 0}, E_m{0, 0, 0}, u_M{-1, -0.5, 0}, u_m{0.5, 0, 0};
+    const auto lifted = impact::collide(3.0, 1.0, E_M, E_m, u_M, u_m, 0.5);
+    impact::collide_batch_arrays<double, 3> batch(2);
+    batch.M()[0] = 3.0;
+    batch.m()[0] = 1.0;
+    batch.eps()[0] = 0.5;
+    batch.M()[1] = batch.m()[1] = batch.eps()[1] = 1.0;
+    for (std::size_t d = 0; d < 3; ++d) {
+        batch.C_M(d)[0] = E_M[d];
+        batch.C_m(d)[0] = E_m[d];
+        batch.v_M(d)[0] = u_M[d];
+        batch.v_m(d)[0] = u_m[d];
+        batch.C_M(d)[1] = D_M[d];
+        batch.C_m(d)[1] = D_m[d];
+        batch.v_M(d)[1] = w_M[d];
+        batch.v_m(d)[1] = w_m[d];
+    }
+    impact::collide_batch(batch.data());
+    expect(batch.status()[0] == impact::status::ok && batch.status()[1] == impact::status::separating,
+           "the statuses of a batch");
+    for (std::size_t d = 0; d < 3; ++d) {
+        expect(batch.v_M(d)[0] == lifted.v_M[d] && batch.v_m(d)[0] == lifted.v_m[d], "a batch's velocities");
+        expect(batch.v_M(d)[1] == w_M[d] && batch.v_m(d)[1] == w_m[d], "a separating pair in a batch is left alone");
+        expect(std::abs(lifted.v_M[d] - (d < 2 ? plane.v_M[d] : 0.0)) < 1e-14, "a 2D collision lifted to 3D");
+    }
     return failures == 0 ? 0 : 1;
 }
