@@ -201,21 +201,25 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_takes_a_square_root_once_every_diviso
 
 BOOST_AUTO_TEST_CASE(ordered_for_registers_waits_for_an_fma_s_addend)
 {
-    // a b + fma(a, b, c d): once a b is computed, the fma's factors are known and old, but
-    // its addend c d is not: c and d are read and multiplied first.
+    // a b, c d, e + g, fma(a, b, c d), a b + fma, + (e + g): once c d is known the fma reads
+    // nothing new and comes before e + g; until then it waits, its factors known and old,
+    // for its addend.
     using emit::opcode;
-    program_builder in(4);
-    const int a = 0, b = 1, c = 2, d = 3;
+    program_builder in(6);
+    const int a = 0, b = 1, c = 2, d = 3, e = 4, g = 5;
     const int ab = in(opcode::mul, a, b);
     const int cd = in(opcode::mul, c, d);
+    const int eg = in(opcode::add, e, g);
     const int f = in(opcode::fma, a, b, cd);
-    in.p.outputs.push_back(in(opcode::add, ab, f));
+    const int sum = in(opcode::add, ab, f);
+    in.p.outputs.push_back(in(opcode::add, sum, eg));
+    BOOST_TEST(operations(in.p) == "**+f++");
 
     const emit::program ordered = emit::ordered_for_registers(in.p);
-    BOOST_TEST(operations(ordered) == "**f+");
+    BOOST_TEST(operations(ordered) == "**f+++");
     BOOST_TEST(operands_first(ordered));
-    const std::vector<double> values{1.5, 2.0, 0.5, 0.25};  // 3 + (3 + 0.125)
-    BOOST_TEST(emit::run<double>(ordered, values).front() == 6.125);
+    const std::vector<double> values{1.5, 2.0, 0.5, 0.25, 1.0, 0.5};  // 3 + (3 + 0.125) + 1.5
+    BOOST_TEST(emit::run<double>(ordered, values).front() == 7.625);
 }
 
 BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)

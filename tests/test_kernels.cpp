@@ -17,10 +17,13 @@
 
 #include <algorithm>
 #include <cfenv>
+#include <cstdint>
 #include <cstring>
 #include <iostream>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -753,14 +756,20 @@ BOOST_AUTO_TEST_CASE(batch_arrays_move_and_refuse_a_count_no_allocation_can_hold
     BOOST_TEST(second.count() == 10u);
     BOOST_TEST(second.M() == where);
     BOOST_TEST(second.M()[9] == 4.5);
-    BOOST_TEST(first.count() == 0u);  // NOLINT: the object moved from is left empty
+    BOOST_TEST(first.count() == 0u);  // NOLINT: the object moved from holds no arrays
+    BOOST_TEST(first.M() == nullptr);
+    BOOST_TEST(first.data().v_M[1] == nullptr);
     impact::collide_batch_arrays<double, 2> third(3);
     third = std::move(second);
     BOOST_TEST(third.count() == 10u);
     BOOST_TEST(third.M()[9] == 4.5);
 
-    const std::size_t too_many = std::numeric_limits<std::size_t>::max() / sizeof(double);
-    BOOST_CHECK_THROW((impact::collide_batch_arrays<double, 3>(too_many)), std::bad_array_new_length);
+    // One pair more than the address space holds, at 16 doubles a pair (3D: M, m, eps, 12
+    // coordinates and a status) or 12 (2D); 15 floats and a status of 8 bytes.
+    const std::size_t bytes = std::numeric_limits<std::size_t>::max();
+    BOOST_CHECK_THROW((impact::collide_batch_arrays<double, 3>(bytes / (16 * 8) + 1)), std::bad_array_new_length);
+    BOOST_CHECK_THROW((impact::collide_batch_arrays<double, 2>(bytes / (12 * 8) + 1)), std::bad_array_new_length);
+    BOOST_CHECK_THROW((impact::collide_batch_arrays<float, 3>(bytes / (15 * 4 + 8) + 1)), std::bad_array_new_length);
     BOOST_CHECK_THROW((impact::collide_batch_arrays<double, 3>(std::numeric_limits<std::size_t>::max())),
                       std::bad_array_new_length);
 }

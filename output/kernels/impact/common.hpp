@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <type_traits>
 #include <utility>
 
 // The arrays a batch kernel writes overlap no other array (`restrict`), and its
@@ -83,14 +84,16 @@ struct collide_batch_data {
 template <class Real, std::size_t N>
 class collide_batch_arrays {
 public:
+    static_assert(std::is_floating_point_v<Real>, "collide_batch_arrays holds floating-point values");
+
     explicit collide_batch_arrays(std::size_t count) : count_(count)
     {
-        // At most `most` bytes an array, so that first + arrays * stride_ does not wrap around.
-        constexpr std::size_t most = (std::numeric_limits<std::size_t>::max() - first) / arrays - page - apart;
-        if (count > most / widest)
+        // Each array padded to whole pages plus `apart`; the bytes in all must not wrap around.
+        constexpr std::size_t most = (std::numeric_limits<std::size_t>::max() - first - reals * (page + apart)) / per_pair;
+        if (count > most)
             throw std::bad_array_new_length();
-        stride_ = (count * widest + page - 1) / page * page + apart;
-        block_ = static_cast<unsigned char*>(::operator new(first + arrays * stride_, std::align_val_t{page}));
+        stride_ = (count * sizeof(Real) + page - 1) / page * page + apart;
+        block_ = static_cast<unsigned char*>(::operator new(first + reals * stride_ + count * sizeof(impact::status), std::align_val_t{page}));
         for (std::size_t a = 0; a < reals; ++a)
             std::uninitialized_default_construct_n(at<Real>(a), count);
         std::uninitialized_default_construct_n(at<impact::status>(reals), count);
@@ -148,11 +151,14 @@ public:
     }
 
 private:
-    static constexpr std::size_t arrays = 4 + 4 * N, reals = 3 + 4 * N;  // all arrays; those of Real
+    static constexpr std::size_t reals = 3 + 4 * N;  // the arrays of Real, then the statuses
     static constexpr std::size_t page = 4096, apart = 256, first = 64;
-    static constexpr std::size_t widest = sizeof(Real) > sizeof(impact::status) ? sizeof(Real) : sizeof(impact::status);
+    static constexpr std::size_t per_pair = reals * sizeof(Real) + sizeof(impact::status);  // bytes
     template <class T>
-    T* at(std::size_t a) const noexcept { return reinterpret_cast<T*>(block_ + first + a * stride_); }
+    T* at(std::size_t a) const noexcept
+    {
+        return block_ ? reinterpret_cast<T*>(block_ + first + a * stride_) : nullptr;
+    }
     void swap(collide_batch_arrays& other) noexcept
     {
         std::swap(count_, other.count_);
