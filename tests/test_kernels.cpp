@@ -773,3 +773,68 @@ BOOST_AUTO_TEST_CASE(batch_arrays_move_and_refuse_a_count_no_allocation_can_hold
     BOOST_CHECK_THROW((impact::collide_batch_arrays<double, 3>(std::numeric_limits<std::size_t>::max())),
                       std::bad_array_new_length);
 }
+
+BOOST_AUTO_TEST_CASE(arrays_crowd_one_page_offset_when_more_than_half_start_within_256_bytes)
+{
+    // Starts given as addresses: page p, offset o within it.
+    auto at = [](std::uintptr_t page, std::uintptr_t offset) { return reinterpret_cast<const void*>(page * 4096 + offset); };
+    std::array<const void*, 9> starts{};
+    for (std::size_t k = 0; k < 9; ++k)
+        starts[k] = at(100 + 7 * k, 16);  // one by one, each past an allocator's 16-byte header
+    BOOST_TEST(impact::detail::crowded(starts));
+    for (std::size_t k = 0; k < 9; ++k)
+        starts[k] = at(100 + 7 * k, 64 + 256 * k);  // staggered
+    BOOST_TEST(!impact::detail::crowded(starts));
+    for (std::size_t k = 0; k < 4; ++k)
+        starts[k] = at(100 + 7 * k, 4000 + 20 * k);  // 4 of 9 within 256 bytes, across a page's end
+    BOOST_TEST(!impact::detail::crowded(starts));
+    starts[4] = at(3, 4090 + 150);  // a fifth: more than half
+    BOOST_TEST(impact::detail::crowded(starts));
+    starts[4] = at(3, 4000 + 256);  // 256 bytes past the first: not within
+    BOOST_TEST(!impact::detail::crowded(starts));
+}
+
+BOOST_AUTO_TEST_CASE(a_batch_whose_arrays_share_a_page_offset_gives_the_scalar_results_bit_for_bit)
+{
+    // Every array at the same offset within its pages: the batch reads them skewed. Counts
+    // around its blocks of 8 pairs, its reading 64 pairs ahead and its leads of up to 18
+    // blocks (144 pairs).
+    constexpr std::size_t most = 1000, stride = 1024;  // pairs at most; array k starts 8 KiB after array k - 1
+    engine::uniform_stream s(2026);
+    std::vector<collision<3>> drawn;
+    for (std::size_t i = 0; i < most; ++i)
+        drawn.push_back(draw_collision<3>(s));
+    for (std::size_t count : {0, 1, 7, 8, 9, 16, 17, 63, 64, 65, 72, 143, 144, 145, 151, 152, 153, 160, 300, 1000}) {
+        std::vector<double> storage(15 * stride);
+        auto array = [&](std::size_t k) { return storage.data() + k * stride; };
+        std::vector<impact::status> status(count + 1, impact::status::separating);
+        for (std::size_t i = 0; i < count; ++i) {
+            const collision<3>& c = drawn[i];
+            array(0)[i] = c.M;
+            array(1)[i] = i % 11 == 3 ? 0.0 : c.m;  // some invalid masses
+            array(14)[i] = c.eps;
+            for (std::size_t d = 0; d < 3; ++d) {
+                array(2 + d)[i] = c.C_M[d];
+                array(5 + d)[i] = c.C_m[d];
+                array(8 + d)[i] = c.v_M[d];
+                array(11 + d)[i] = c.v_m[d];
+            }
+        }
+        impact::collide_batch_data<double, 3> data{count, array(0), array(1), {array(2), array(3), array(4)},
+                                                   {array(5), array(6), array(7)}, {array(8), array(9), array(10)},
+                                                   {array(11), array(12), array(13)}, array(14), status.data()};
+        BOOST_TEST(impact::detail::crowded(std::array<const void*, 9>{data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2],
+                                                                       data.C_m[0], data.C_m[1], data.C_m[2], data.eps}));
+        impact::collide_batch(data);
+        for (std::size_t i = 0; i < count; ++i) {
+            const collision<3>& c = drawn[i];
+            const auto r = impact::collide(c.M, i % 11 == 3 ? 0.0 : c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps);
+            BOOST_TEST((status[i] == r.status), "pair " << i << " of " << count);
+            for (std::size_t d = 0; d < 3; ++d) {
+                BOOST_TEST(std::memcmp(&r.v_M[d], &data.v_M[d][i], sizeof(double)) == 0);
+                BOOST_TEST(std::memcmp(&r.v_m[d], &data.v_m[d][i], sizeof(double)) == 0);
+            }
+        }
+        BOOST_TEST((status[count] == impact::status::separating));  // past the count: untouched
+    }
+}

@@ -31,6 +31,14 @@
 #else
 #define IMPACT_PREFETCH(p, write) ((void)0)
 #endif
+// A function inlined wherever it is called, whatever the compiler's estimate of the cost.
+#if defined(__GNUC__) || defined(__clang__)
+#define IMPACT_ALWAYS_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define IMPACT_ALWAYS_INLINE __forceinline
+#else
+#define IMPACT_ALWAYS_INLINE inline
+#endif
 
 namespace impact {
 
@@ -48,6 +56,27 @@ namespace detail {
 template <class Real>
 constexpr Real smallest_divisor =
     std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();
+
+} // namespace detail
+
+namespace detail {
+
+/// Whether more than half of a batch's read-only arrays start within 256 bytes of one
+/// another, modulo 4 KiB, as arrays allocated one by one do (each a page boundary plus
+/// the allocator's header): their pairs i then fall on the same cache sets.
+template <std::size_t K>
+inline bool crowded(const std::array<const void*, K>& starts) noexcept
+{
+    std::size_t most = 0;
+    for (const void* a : starts) {
+        std::size_t near = 0;
+        for (const void* b : starts)
+            if ((reinterpret_cast<std::uintptr_t>(b) - reinterpret_cast<std::uintptr_t>(a)) % 4096 < 256)
+                ++near;
+        most = near > most ? near : most;
+    }
+    return 2 * most > K;
+}
 
 } // namespace detail
 

@@ -109,9 +109,10 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
 
 namespace detail {
 
-// The loop of collide_batch in 2D, without branches.
+// The loop of collide_batch in 2D, without branches; inlined where it is called, so that a
+// block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-inline void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
