@@ -519,20 +519,20 @@ void print_batch(std::string& out, const kernel_plan& plan)
                        k.name, with_status ? " `status` (if not null) receives each status." : "");
     out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n",
                        k.name, n);
-    std::vector<std::string> read_starts;
-    for (const lane_input& in : read_only(inputs))
-        read_starts.push_back(in.field);
     if (skews(inputs.size() + (with_status ? 1 : 0))) {
-    const std::string skewed =
-        with_status ? fmt::format("            if (data.status)\n                detail::{0}_skewed<Real, true>(data.count, {1}, data.status);\n"
-                                  "            else\n                detail::{0}_skewed<Real, false>(data.count, {1}, nullptr);\n",
-                                  loop, fmt::join(arguments, ", "))
-                    : fmt::format("            detail::{}_skewed<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
-    out += fmt::format("    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the\n"
-                       "    // distances are a double's; other types keep the plain loop).\n"
-                       "    if constexpr (sizeof(Real) == sizeof(double))\n"
-                       "        if (detail::crowded(std::array<const void*, {0}>{{{1}}})) {{\n{2}            return;\n        }}\n",
-                       read_starts.size(), fmt::join(read_starts, ", "), skewed);
+        std::vector<std::string> read_starts;
+        for (const lane_input& in : read_only(inputs))
+            read_starts.push_back(in.field);
+        const std::string skewed =
+            with_status ? fmt::format("            if (data.status)\n                detail::{0}_skewed<Real, true>(data.count, {1}, data.status);\n"
+                                      "            else\n                detail::{0}_skewed<Real, false>(data.count, {1}, nullptr);\n",
+                                      loop, fmt::join(arguments, ", "))
+                        : fmt::format("            detail::{}_skewed<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
+        out += fmt::format("    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the\n"
+                           "    // distances are a double's; other types keep the plain loop).\n"
+                           "    if constexpr (sizeof(Real) == sizeof(double))\n"
+                           "        if (detail::crowded(std::array<const void*, {0}>{{{1}}})) {{\n{2}            return;\n        }}\n",
+                           read_starts.size(), fmt::join(read_starts, ", "), skewed);
     }
     if (with_status)
         out += fmt::format("    if (data.status)\n        detail::{0}_ahead<Real, true>(data.count, {1}, data.status);\n"
