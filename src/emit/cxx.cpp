@@ -244,17 +244,56 @@ std::string loop_parameters(const std::vector<lane_input>& inputs, bool with_sta
     return fmt::format("{}", fmt::join(pointers, ", "));
 }
 
+// A line of a block loop asking for an array's data 64 pairs past block b.
+std::string prefetch_ahead(const lane_input& in)
+{
+    return fmt::format("            IMPACT_PREFETCH({}_ + b + ahead, {});\n", in.name, in.written ? 1 : 0);
+}
+
+// The arguments a block loop passes to the loop for the block at b: each array from b.
+std::vector<std::string> block_arguments(const std::vector<lane_input>& inputs, bool with_status)
+{
+    std::vector<std::string> from_block;
+    for (const lane_input& in : inputs)
+        from_block.push_back(fmt::format("{}_ + b", in.name));
+    if (with_status)
+        from_block.push_back("with_status ? status_ + b : status_");
+    return from_block;
+}
+
+constexpr const char* status_ahead = "            if constexpr (with_status)\n"
+                                     "                IMPACT_PREFETCH(status_ + b + ahead, 1);\n";
+
 // The batch loop run over blocks of 8 pairs (a cache line of doubles), each array's
 // data asked for 64 pairs ahead: out of cache, the hardware's prefetching alone leaves
 // the loop waiting for memory (in 3D, 16 arrays streamed at once, a quarter slower).
-// Whether a batch loop that streams `arrays` arrays gets a skewed variant, for arrays that
-// crowd one page offset. Measured out of cache, every array at one offset, against the
-// plain block loop: the 3D collide (16 arrays) 1.00 -> 1.03-1.08 of the hand-written loop,
-// 89-93 % -> 89-99 % of the triad's bandwidth; the 2D collide (12 arrays) 0.99-1.00 -> 0.95.
-constexpr std::size_t skewed_from = 16;
-bool skews(std::size_t arrays)
+void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status)
 {
-    return arrays >= skewed_from;
+    std::vector<std::string> ahead;
+    for (const lane_input& in : inputs)
+        ahead.push_back(prefetch_ahead(in));
+    if (with_status)
+        ahead.push_back(status_ahead);
+    const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+    out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
+                       "// processor's own prefetching, following so many arrays, falls behind.\n"
+                       "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
+                       "    constexpr std::size_t block = 8, ahead = 64;\n    std::size_t b = 0;\n"
+                       "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
+                       "        {4}(block, {5});\n    }}\n    {4}(count - b, {5});\n}}\n",
+                       loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
+                       fmt::join(ahead, ""), call, fmt::join(block_arguments(inputs, with_status), ", "));
+}
+
+// Whether a batch kernel gets a skewed block loop too, for arrays that crowd one page
+// offset: one that streams 16 arrays or more. Measured out of cache, every array at one
+// offset, against the plain block loop: the 3D collide (16 arrays) 1.00 -> 1.03-1.08 of
+// the hand-written loop, 89-93 % -> 89-99 % of the triad's bandwidth; the 2D collide
+// (12 arrays) 0.99-1.00 -> 0.95.
+bool skews(const engine::kernel& k)
+{
+    constexpr std::size_t skewed_from = 16;
+    return k.batch && lane_inputs(k).size() + (k.guards.empty() ? 0 : 1) >= skewed_from;
 }
 
 // The read-only arrays of a batch: the ones a skewed loop reads ahead.
@@ -273,35 +312,21 @@ std::vector<lane_input> read_only(const std::vector<lane_input>& inputs)
 void print_skewed_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs,
                          bool with_status)
 {
-    const std::vector<lane_input> read = read_only(inputs);
-    std::size_t ring = 1;
-    while (ring <= 2 * read.size())  // more blocks than the farthest lead
-        ring *= 2;
-    std::vector<std::string> ahead, starts, from_block;
-    std::size_t k = 0;
-    for (const lane_input& in : inputs) {
-        if (in.written) {
-            ahead.push_back(fmt::format("            IMPACT_PREFETCH({}_ + b + ahead, 1);\n", in.name));
-            from_block.push_back(fmt::format("{}_ + b", in.name));
+    std::vector<std::string> ahead, starts, from_block = block_arguments(inputs, with_status);
+    const std::vector<std::string> at_end = from_block;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        if (inputs[i].written) {
+            ahead.push_back(prefetch_ahead(inputs[i]));
             continue;
         }
-        ahead.push_back(fmt::format("            if (b + ahead + block * lead({0}) < count)\n"
-                                    "                IMPACT_PREFETCH({1}_ + b + ahead + block * lead({0}), 0);\n",
-                                    k, in.name));
-        starts.push_back(in.name + "_");
-        from_block.push_back(fmt::format("stage[{}][r]", k));
-        ++k;
+        from_block[i] = fmt::format("stage[{}][r]", starts.size());
+        starts.push_back(inputs[i].name + "_");
     }
-    if (with_status) {
-        ahead.push_back("            if constexpr (with_status)\n"
-                        "                IMPACT_PREFETCH(status_ + b + ahead, 1);\n");
-        from_block.push_back("with_status ? status_ + b : status_");
-    }
-    std::vector<std::string> at_end;
-    for (const lane_input& in : inputs)
-        at_end.push_back(fmt::format("{}_ + b", in.name));
     if (with_status)
-        at_end.push_back("with_status ? status_ + b : status_");
+        ahead.push_back(status_ahead);
+    std::size_t ring = 1;
+    while (ring <= 2 * starts.size())  // more blocks than the farthest lead
+        ring *= 2;
     const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
     out += fmt::format(
         "\n// {0} over blocks of 8 pairs for arrays that start at one offset within their pages:\n"
@@ -323,7 +348,11 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "            read(k, j);\n"
         "    std::size_t b = 0;\n"
         "    for (std::size_t j = 0; j < blocks; ++j, b += block) {{\n"
-        "        if (b + ahead < count) {{\n{6}        }}\n"
+        "        if (b + ahead < count) {{\n"
+        "            for (std::size_t k = 0; k < read_only; ++k)\n"
+        "                if (b + ahead + block * lead(k) < count)\n"
+        "                    IMPACT_PREFETCH(from[k] + b + ahead + block * lead(k), 0);\n"
+        "{6}        }}\n"
         "        for (std::size_t k = 0; k < read_only; ++k)\n"
         "            if (j + lead(k) < blocks)\n"
         "                read(k, j + lead(k));\n"
@@ -331,33 +360,8 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "        {7}(block, {8});\n"
         "    }}\n"
         "    {7}(count - b, {9});\n}}\n",
-        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, read.size(),
+        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, starts.size(),
         fmt::join(starts, ", "), fmt::join(ahead, ""), call, fmt::join(from_block, ", "), fmt::join(at_end, ", "));
-}
-
-void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status)
-{
-    std::vector<std::string> ahead, from_block;
-    for (const lane_input& in : inputs) {
-        ahead.push_back(fmt::format("            IMPACT_PREFETCH({}_ + b + ahead, {});\n", in.name, in.written ? 1 : 0));
-        from_block.push_back(fmt::format("{}_ + b", in.name));
-    }
-    if (with_status) {
-        ahead.push_back("            if constexpr (with_status)\n"
-                        "                IMPACT_PREFETCH(status_ + b + ahead, 1);\n");
-        from_block.push_back("with_status ? status_ + b : status_");
-    }
-    const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
-    out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
-                       "// processor's own prefetching, following so many arrays, falls behind.\n"
-                       "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
-                       "    constexpr std::size_t block = 8, ahead = 64;\n    std::size_t b = 0;\n"
-                       "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
-                       "        {4}(block, {5});\n    }}\n    {4}(count - b, {5});\n}}\n",
-                       loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
-                       fmt::join(ahead, ""), call, fmt::join(from_block, ", "));
-    if (skews(inputs.size() + (with_status ? 1 : 0)))
-        print_skewed_blocks(out, loop, inputs, with_status);
 }
 
 // The values a batch loop's arithmetic can hold at once: AVX-512 has 32 vector registers,
@@ -508,6 +512,8 @@ void print_batch(std::string& out, const kernel_plan& plan)
     }
     out += "    }\n}\n";
     print_blocks(out, loop, inputs, with_status);
+    if (skews(k))
+        print_skewed_blocks(out, loop, inputs, with_status);
     out += "\n} // namespace detail\n";
 
     // The public entry point.
@@ -519,7 +525,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
                        k.name, with_status ? " `status` (if not null) receives each status." : "");
     out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n",
                        k.name, n);
-    if (skews(inputs.size() + (with_status ? 1 : 0))) {
+    if (skews(k)) {
         std::vector<std::string> read_starts;
         for (const lane_input& in : read_only(inputs))
             read_starts.push_back(in.field);
@@ -827,10 +833,7 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
                            "}} // namespace detail\n",
                            out_of_range);
 
-    if (std::any_of(plans.begin(), plans.end(), [](const kernel_plan* plan) {
-            const engine::kernel& k = *plan->kernel;
-            return k.batch && skews(lane_inputs(k).size() + (k.guards.empty() ? 0 : 1));
-        }))
+    if (std::any_of(plans.begin(), plans.end(), [](const kernel_plan* plan) { return skews(*plan->kernel); }))
         out += "\nnamespace detail {\n\n"
                "/// Whether more than half of a batch's read-only arrays start within 256 bytes of one\n"
                "/// another, modulo 4 KiB, as arrays allocated one by one do (each a page boundary plus\n"

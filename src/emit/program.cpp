@@ -452,6 +452,16 @@ bool divides(const program& p, const instruction& in)
     return in.op == opcode::div && p.code[in.b].op != opcode::constant;
 }
 
+// The values p divides by that are not constants, each once, in the order of their divisions.
+std::vector<int> divisors(const program& p)
+{
+    std::vector<int> found;
+    for (const instruction& in : p.code)
+        if (divides(p, in) && std::find(found.begin(), found.end(), in.b) == found.end())
+            found.push_back(in.b);
+    return found;
+}
+
 } // namespace
 
 std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t last)
@@ -503,10 +513,7 @@ program ordered_for_registers(const program& p)
 {
     const std::size_t n = p.code.size();
     // What each division or square root waits for: the divisors that do not need it.
-    std::vector<int> divisors;
-    for (const instruction& in : p.code)
-        if (divides(p, in))
-            divisors.push_back(in.b);
+    const std::vector<int> divided_by = divisors(p);
     std::vector<std::vector<int>> waits(n);
     for (std::size_t d = 0; d < n; ++d) {
         if (!divides(p, p.code[d]) && p.code[d].op != opcode::sqrt)
@@ -516,7 +523,7 @@ program ordered_for_registers(const program& p)
         for (std::size_t i = d + 1; i < n; ++i)
             for (int operand : operands(p.code[i]))
                 needs_d[i] = needs_d[i] || needs_d[operand];
-        for (int divisor : divisors)
+        for (int divisor : divided_by)
             if (!needs_d[divisor])
                 waits[d].push_back(divisor);
     }
@@ -593,19 +600,12 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     for (int o : p.outputs)
         ++uses[o];
     // Divisors that are not constants are named, so that a kernel can test them.
-    std::vector<int> divisors;
-    int first_division = -1;
-    for (std::size_t i = 0; i < p.code.size(); ++i) {
-        const instruction& in = p.code[i];
-        if (!divides(p, in))
-            continue;
-        uses[in.b] += 2;
-        if (std::find(divisors.begin(), divisors.end(), in.b) == divisors.end())
-            divisors.push_back(in.b);
-        if (first_division < 0)
-            first_division = static_cast<int>(i);
-    }
-    const int last_divisor = divisors.empty() ? -1 : *std::max_element(divisors.begin(), divisors.end());
+    const std::vector<int> divided_by = divisors(p);
+    for (int d : divided_by)
+        uses[d] += 2;
+    const auto first = std::find_if(p.code.begin(), p.code.end(), [&](const instruction& in) { return divides(p, in); });
+    const int first_division = first == p.code.end() ? -1 : static_cast<int>(first - p.code.begin());
+    const int last_divisor = divided_by.empty() ? -1 : *std::max_element(divided_by.begin(), divided_by.end());
 
     constexpr int sum = 1, product = 2, unary = 3, atom = 4;
     std::vector<std::string> text(p.code.size());
@@ -658,7 +658,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     }
     for (int o : p.outputs)
         code.outputs.push_back(text[o]);
-    for (int d : divisors)
+    for (int d : divided_by)
         code.divisors.push_back(text[d]);
     code.divides_early = first_division >= 0 && first_division < last_divisor;
     while (code.divisors_known < code.statements.size() &&
