@@ -321,15 +321,30 @@ inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRI
     std::size_t b = 0;
     for (std::size_t j = 0; j < blocks; ++j, b += block) {
         if (b + ahead < count) {
-            for (std::size_t k = 0; k < read_only; ++k)
-                if (b + ahead + block * lead(k) < count)
-                    IMPACT_PREFETCH(from[k] + b + ahead + block * lead(k), 0);
+            if (b + ahead + block * lead(0) < count)
+                IMPACT_PREFETCH(M_ + b + ahead + block * lead(0), 0);
+            if (b + ahead + block * lead(1) < count)
+                IMPACT_PREFETCH(m_ + b + ahead + block * lead(1), 0);
+            if (b + ahead + block * lead(2) < count)
+                IMPACT_PREFETCH(C_Mx_ + b + ahead + block * lead(2), 0);
+            if (b + ahead + block * lead(3) < count)
+                IMPACT_PREFETCH(C_My_ + b + ahead + block * lead(3), 0);
+            if (b + ahead + block * lead(4) < count)
+                IMPACT_PREFETCH(C_Mz_ + b + ahead + block * lead(4), 0);
+            if (b + ahead + block * lead(5) < count)
+                IMPACT_PREFETCH(C_mx_ + b + ahead + block * lead(5), 0);
+            if (b + ahead + block * lead(6) < count)
+                IMPACT_PREFETCH(C_my_ + b + ahead + block * lead(6), 0);
+            if (b + ahead + block * lead(7) < count)
+                IMPACT_PREFETCH(C_mz_ + b + ahead + block * lead(7), 0);
             IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
             IMPACT_PREFETCH(v_My_ + b + ahead, 1);
             IMPACT_PREFETCH(v_Mz_ + b + ahead, 1);
             IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
             IMPACT_PREFETCH(v_my_ + b + ahead, 1);
             IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
+            if (b + ahead + block * lead(8) < count)
+                IMPACT_PREFETCH(eps_ + b + ahead + block * lead(8), 0);
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
