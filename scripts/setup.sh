@@ -17,6 +17,7 @@ packages=(
   texlive-pictures                 # pgfplots (Figs. 2 and 3)
   latexmk                          # building a report by hand
   poppler-utils                    # pdftoppm, pdffonts: looking at the report's pages
+  locales                          # de_DE.UTF-8: the tests regenerate under a locale other than C
 )
 
 missing=()
@@ -26,15 +27,19 @@ for package in "${packages[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
-fi
-
-echo "scripts/setup.sh: installing ${missing[*]}"
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then
   sudo="sudo"
 fi
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -ne 0 ]; then
+  echo "scripts/setup.sh: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The German locale the tests run under (output must not depend on the locale).
+if ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
+  echo "scripts/setup.sh: generating the locale de_DE.UTF-8"
+  $sudo localedef -i de_DE -f UTF-8 de_DE.UTF-8
+fi

@@ -60,6 +60,40 @@ inline std::map<std::string, std::string> snapshot(const std::filesystem::path& 
     return files;
 }
 
+/// Everything under `root`, without following links: each file's bytes, each link as
+/// "-> target", each folder as "folder"; so that a test sees any change a command made.
+inline std::map<std::string, std::string> everything_under(const std::filesystem::path& root)
+{
+    namespace fs = std::filesystem;
+    std::map<std::string, std::string> found;
+    std::error_code ignored;
+    if (!fs::exists(fs::symlink_status(root, ignored)))
+        return found;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        const std::string relative = fs::relative(entry.path(), root).generic_string();
+        if (entry.is_symlink())
+            found[relative] = "-> " + fs::read_symlink(entry.path()).string();
+        else if (entry.is_directory())
+            found[relative] = "folder";
+        else {
+            std::ifstream in(entry.path(), std::ios::binary);
+            std::ostringstream bytes;
+            bytes << in.rdbuf();
+            found[relative] = bytes.str();
+        }
+    }
+    return found;
+}
+
+/// Makes `folder` look like an earlier Impact's output: `previous.txt`, listed in the
+/// marker Impact keeps there (its format as README.md gives it).
+inline void previous_output(const std::filesystem::path& folder)
+{
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "previous.txt") << "the previous output\n";
+    std::ofstream(folder / ".impact-output") << "# Written by Impact.\nprevious.txt\n";
+}
+
 /// The lines of `text`.
 inline std::vector<std::string> lines_of(const std::string& text)
 {

@@ -41,8 +41,7 @@ struct scratch {
                ("impact-bad-input-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
         fs::remove_all(root);
         fs::create_directories(root / "derivations");
-        fs::create_directories(root / "output");
-        std::ofstream(root / "output" / "marker.txt") << "the previous output\n";
+        impact::testing::previous_output(root / "output");
     }
     ~scratch() { fs::remove_all(root); }
 
@@ -377,7 +376,7 @@ BOOST_AUTO_TEST_CASE(a_run_killed_while_writing_leaves_the_output_intact_and_the
     BOOST_TEST(next.status == 0, next.output);
     BOOST_TEST(!s.has("output.impact-new"));
     BOOST_TEST(s.has("output/kernels/impact/first.hpp"));
-    BOOST_TEST(!s.has("output/marker.txt"));
+    BOOST_TEST(!s.has("output/previous.txt"));
 }
 
 BOOST_AUTO_TEST_CASE(a_run_killed_between_the_renames_is_restored_by_the_next_run_even_a_failing_one)

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <clocale>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -37,9 +38,8 @@ struct scratch {
         root = fs::temp_directory_path() /
                ("impact-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
         fs::remove_all(root);
-        fs::create_directories(root / "output");
+        impact::testing::previous_output(root / "output");
         fs::copy(source_dir / "derivations", root / "derivations");
-        std::ofstream(root / "output" / "marker.txt") << "the previous output\n";
     }
     ~scratch() { fs::remove_all(root); }
     static int& counter()
@@ -95,6 +95,25 @@ BOOST_AUTO_TEST_CASE(regeneration_reproduces_the_committed_output_byte_for_byte)
         BOOST_TEST(committed.count(name) == 1u, "output/" + name + " is generated but not committed");
 }
 
+BOOST_AUTO_TEST_CASE(regeneration_is_the_same_under_another_locale_time_zone_and_working_folder)
+{
+    // A German locale writes 0,5 for 0.5 and sorts differently; a time zone 13:45 ahead of UTC
+    // (a POSIX rule, needing no time-zone database) moves any date printed; the run starts
+    // two folders down, with relative paths.
+    BOOST_TEST_REQUIRE(std::setlocale(LC_ALL, "de_DE.UTF-8") != nullptr,
+                       "the locale de_DE.UTF-8 is not installed (scripts/setup.sh generates it)");
+    std::setlocale(LC_ALL, "C");
+    const scratch s;
+    fs::remove_all(s.root / "output");
+    fs::create_directories(s.root / "elsewhere" / "deeper");
+    const run_result r = impact::testing::run_command(
+        "cd '" + (s.root / "elsewhere" / "deeper").string() + "' && LC_ALL=de_DE.UTF-8 LANG=de_DE.UTF-8 "
+        "TZ=XYZ-13:45 " + IMPACT_BINARY + " regenerate --derivations ../../derivations --output ../../output");
+    BOOST_TEST_REQUIRE(r.status == 0, r.output);
+    BOOST_TEST((snapshot(s.root / "output") == snapshot(source_dir / "output")),
+               "output/ differs from the committed output under LC_ALL=de_DE.UTF-8 and TZ=XYZ-13:45");
+}
+
 BOOST_AUTO_TEST_CASE(regenerating_twice_gives_identical_files)
 {
     const scratch s;
@@ -102,7 +121,7 @@ BOOST_AUTO_TEST_CASE(regenerating_twice_gives_identical_files)
     const auto first = snapshot(s.root / "output");
     BOOST_TEST_REQUIRE(s.regenerate().status == 0);
     BOOST_TEST((snapshot(s.root / "output") == first));
-    BOOST_TEST(first.count("marker.txt") == 0u);  // the old output was replaced, not merged into
+    BOOST_TEST(first.count("previous.txt") == 0u);  // the old output was replaced, not merged into
 }
 
 BOOST_AUTO_TEST_CASE(invalid_toml_names_file_and_line_and_leaves_output_untouched)

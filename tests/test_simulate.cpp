@@ -269,12 +269,12 @@ BOOST_AUTO_TEST_CASE(simulate_writes_a_table_and_a_figure)
     const std::string file = s.write("shot.toml", "name = \"shot\"\neps = 0.5\n"
                                                   "[M]\nmass = 1\nradius = 0.5\nposition = [0, 0]\nvelocity = [0, 0]\n"
                                                   "[m]\nmass = 1\nradius = 0.5\nposition = [-3, 0]\nvelocity = [1, 0]\n");
-    const run_result r = run_impact("simulate " + file + " --output " + s.root.string());
+    const run_result r = run_impact("simulate " + file + " --output " + (s.root / "out").string());
     BOOST_TEST(r.status == 0, r.output);
     BOOST_TEST(r.output.find("contact at t = 2.0000") != std::string::npos, r.output);
     BOOST_TEST(r.output.find("v_m (1.0000, 0.0000) -> (0.2500, 0.0000)") != std::string::npos, r.output);
-    BOOST_TEST(fs::exists(s.root / "shot.dat"));
-    std::ifstream in(s.root / "shot.tex");
+    BOOST_TEST(fs::exists(s.root / "out" / "shot.dat"));
+    std::ifstream in(s.root / "out" / "shot.tex");
     std::ostringstream tex;
     tex << in.rdbuf();
     BOOST_TEST(tex.str().find("table[x=x_M, y=y_M] {shot.dat}") != std::string::npos);
@@ -283,7 +283,7 @@ BOOST_AUTO_TEST_CASE(simulate_writes_a_table_and_a_figure)
 BOOST_AUTO_TEST_CASE(simulate_says_when_the_spheres_never_touch)
 {
     const scratch s;
-    const run_result r = run_impact("simulate --position-m=-3,2 --output " + s.root.string());
+    const run_result r = run_impact("simulate --position-m=-3,2 --output " + (s.root / "out").string());
     BOOST_TEST(r.status == 0, r.output);
     BOOST_TEST(r.output.find("the spheres never touch") != std::string::npos, r.output);
 }

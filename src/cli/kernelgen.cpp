@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <filesystem>
 
 int main(int argc, char** argv)
 {
@@ -25,7 +26,10 @@ int main(int argc, char** argv)
             fmt::print(stderr, "impact_kernelgen: a check failed; no kernels written (run `impact regenerate`)\n");
             return 1;
         }
-        impact::pipeline::write_files(impact::pipeline::generate_kernels(lib), argv[2]);
+        // The build tree's folder of generated kernels is the build's own: forced, since a
+        // build folder made before Impact marked its output holds unmarked headers.
+        impact::pipeline::replace_folder(std::filesystem::absolute(argv[2]).lexically_normal(),
+                                         impact::pipeline::generate_kernels(lib), /*force=*/true);
         return 0;
     } catch (const std::exception& e) {
         fmt::print(stderr, "{}\n", e.what());

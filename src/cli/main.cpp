@@ -13,7 +13,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 namespace {
@@ -30,7 +33,18 @@ struct options {
     std::string name;
     std::string file;
     bool timings = false;
+    bool force = false;
 };
+
+// What a write kept of the user's, and what it moved out of the way.
+void print_kept(const pipeline::write_report& report, const fs::path& folder)
+{
+    if (!report.kept.empty())
+        fmt::print("impact: kept {} {} Impact did not write in {}: {}\n", report.kept.size(),
+                   report.kept.size() == 1 ? "path" : "paths", folder.string(), fmt::join(report.kept, ", "));
+    for (const std::string& moved : report.moved_aside)
+        fmt::print("impact: moved aside, in {}: {}\n", folder.string(), moved);
+}
 
 pipeline::library derive_one(const options& o)
 {
@@ -40,13 +54,15 @@ pipeline::library derive_one(const options& o)
 
 int run_regenerate(const options& o)
 {
-    const pipeline::regeneration r = pipeline::regenerate(o.derivations, o.output, simulate::figures_and_report);
+    const pipeline::regeneration r =
+        pipeline::regenerate(o.derivations, o.output, simulate::figures_and_report, o.force);
     if (!r.all_hold) {
         for (const std::string& failure : r.failures)
             fmt::print(stderr, "{}\n", failure);
         fmt::print(stderr, "impact: {} left unchanged\n", o.output);
         return exit_failed_check;
     }
+    print_kept(r.written, o.output);
     fmt::print("impact: wrote {} files to {}\n", r.files, o.output);
     if (o.timings)
         for (const auto& [stage, seconds] : r.stages)
@@ -110,18 +126,29 @@ int run_derive(const options& o)
 
 int run_latex(const options& o)
 {
+    const fs::path file = o.file;
+    fs::path folder;
+    if (!file.empty()) {
+        if (!file.has_filename())
+            throw error({o.file, 0, 0}, "give a file to write, not a folder");
+        folder = pipeline::checked_folder(file.parent_path().empty() ? "." : file.parent_path(), o.derivations,
+                                          pipeline::writing::beside);
+        pipeline::check_writable(folder, {{file.filename().string(), ""}}, o.force);
+    }
     const pipeline::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
     const std::string fragment = emit::latex_fragment(d);
-    if (o.file.empty())
+    if (file.empty())
         fmt::print("{}", fragment);
     else
-        pipeline::write_files({{fs::path(o.file).filename().string(), fragment}}, fs::path(o.file).parent_path());
+        print_kept(pipeline::add_to_folder(folder, {{file.filename().string(), fragment}}, o.force), folder);
     return d.all_hold() ? 0 : exit_failed_check;
 }
 
 int run_kernels(const options& o)
 {
+    const fs::path folder = pipeline::checked_folder(o.output, o.derivations, pipeline::writing::beside);
+    pipeline::check_writable(folder, {}, o.force);
     const pipeline::library lib = pipeline::derive_all(pipeline::read_directory(o.derivations));
     if (!lib.all_hold()) {
         for (const std::string& failure : pipeline::failed_checks(lib))
@@ -130,7 +157,7 @@ int run_kernels(const options& o)
         return exit_failed_check;
     }
     const pipeline::file_set files = pipeline::generate_kernels(lib);
-    pipeline::write_files(files, o.output);
+    print_kept(pipeline::add_to_folder(folder, files, o.force), folder);
     fmt::print("impact: wrote {} kernel headers to {}\n", files.size(), o.output);
     return 0;
 }
@@ -157,6 +184,9 @@ int main(int argc, char** argv)
     CLI::App* regenerate = app.add_subcommand("regenerate", "derive everything and rewrite the output folder");
     add_derivations(regenerate);
     regenerate->add_flag("--timings", o.timings, "print the wall time of each stage");
+    const char* force_help = "write into a folder Impact does not own, keeping its files (those in the way "
+                             "are renamed <name>.orig)";
+    regenerate->add_flag("--force", o.force, force_help);
     regenerate->add_option("--output", o.output, "output folder, replaced only when every check holds")
         ->capture_default_str();
 
@@ -168,16 +198,19 @@ int main(int argc, char** argv)
     add_derivations(latex);
     latex->add_option("derivation", o.name, "id or file of the derivation")->required();
     latex->add_option("-o,--output", o.file, "file to write instead of printing");
+    latex->add_flag("--force", o.force, force_help);
 
     CLI::App* kernels = app.add_subcommand("kernels", "write the C++ kernel headers");
     add_derivations(kernels);
     kernels->add_option("--output", o.output, "folder to write kernels/impact/*.hpp into")->capture_default_str();
+    kernels->add_flag("--force", o.force, force_help);
 
     simulate::command_options sim;
     CLI::App* simulation = app.add_subcommand(
         "simulate", "move two spheres until they touch, collide them with the generated kernel, write trajectories");
     simulation->add_option("scenario", sim.file, "scenario file (TOML); without one, Fig. 2's billiard shot");
     simulation->add_option("--output", sim.output, "folder for <name>.dat and <name>.tex")->capture_default_str();
+    simulation->add_flag("--force", sim.force, force_help);
     simulation->add_option("--name", sim.name, "scenario name (names the files)");
     simulation->add_option("--eps", sim.eps, "Newton's coefficient of restitution, in [0, 1]");
     simulation->add_option("--duration", sim.duration, "time simulated");
@@ -194,18 +227,23 @@ int main(int argc, char** argv)
     add_derivations(list);
 
     CLI11_PARSE(app, argc, argv);
+    // A file-size limit reached (`ulimit -f`) fails the write, reported like a full disk,
+    // rather than killing the process.
+    std::signal(SIGXFSZ, SIG_IGN);
+    int status = 0;
     try {
         if (regenerate->parsed())
-            return run_regenerate(o);
-        if (derive->parsed())
-            return run_derive(o);
-        if (latex->parsed())
-            return run_latex(o);
-        if (simulation->parsed())
-            return simulate::simulate_command(sim);
-        if (kernels->parsed())
-            return run_kernels(o);
-        return run_list(o);
+            status = run_regenerate(o);
+        else if (derive->parsed())
+            status = run_derive(o);
+        else if (latex->parsed())
+            status = run_latex(o);
+        else if (simulation->parsed())
+            status = simulate::simulate_command(sim);
+        else if (kernels->parsed())
+            status = run_kernels(o);
+        else
+            status = run_list(o);
     } catch (const impact::error& e) {
         fmt::print(stderr, "{}\n", e.what());
         return exit_bad_input;
@@ -213,4 +251,12 @@ int main(int argc, char** argv)
         fmt::print(stderr, "impact: error: {}\n", single_line(e.what()));
         return exit_bad_input;
     }
+    // What was printed must have arrived: a full disk or a closed pipe is an error.
+    errno = 0;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        fmt::print(stderr, "impact: error: cannot write to standard output: {}\n",
+                   errno ? std::strerror(errno) : "write error");
+        return exit_bad_input;
+    }
+    return status;
 }

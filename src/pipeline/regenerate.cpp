@@ -11,7 +11,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
-#include <fstream>
 #include <string_view>
 
 namespace impact::pipeline {
@@ -111,69 +110,18 @@ file_set generate(const library& lib, stage_times* stages)
 
 namespace {
 
-// Filesystem failures become errors naming the path, printed on one line like bad input.
-template <class Action>
-void on_disk(const fs::path& path, const std::string& what, Action action)
-{
-    try {
-        action();
-    } catch (const fs::filesystem_error& e) {
-        throw error({path.string(), 0, 0}, fmt::format("cannot {}: {}", what, e.code().message()));
-    }
-}
-
-void write_file(const fs::path& path, const std::string& contents)
-{
-    on_disk(path.parent_path(), "create the folder", [&] { fs::create_directories(path.parent_path()); });
-    std::ofstream out(path, std::ios::binary);
-    out << contents;
-    out.close();
-    if (!out)
-        throw error({path.string(), 0, 0}, "cannot write the file");
-}
-
 // Test hook, for tests/test_bad_input.cpp only: IMPACT_TEST_INTERRUPT=writing (half the
 // files written) or =swapping (the old output moved aside, the new one not yet in place)
 // kills the process there, as a crash or a power cut would, so that the tests can show
 // that the previous output survives and that the next run puts things right.
-void interrupt_if_asked(std::string_view point)
+void interrupt_if_asked(const char* point)
 {
     const char* asked = std::getenv("IMPACT_TEST_INTERRUPT");
-    if (asked && point == asked)
+    if (asked && std::string_view(point) == asked)
         std::raise(SIGKILL);
 }
 
-// `out/`, `./out` and `out` all name the folder `out`, absolutely.
-fs::path normalised(const fs::path& folder)
-{
-    fs::path path = fs::absolute(folder).lexically_normal();
-    return path.has_filename() ? path : path.parent_path();
-}
-
-// The folder to replace, refused when replacing it would lose what is not Impact's:
-// the derivations, the current folder or one of its parents.
-fs::path output_folder(const fs::path& derivations, const fs::path& output)
-{
-    const fs::path target = normalised(output);
-    const auto inside = [](const fs::path& path, const fs::path& folder) {
-        const fs::path relative = path.lexically_relative(folder);
-        return !relative.empty() && *relative.begin() != "..";
-    };
-    const fs::path sources = fs::absolute(derivations).lexically_normal();
-    if (target == target.root_path() || target.filename() == ".." || inside(sources, target) ||
-        inside(fs::current_path(), target))
-        throw error({output.string(), 0, 0},
-                    "refusing to replace this folder: it holds the derivations or the current folder");
-    return target;
-}
-
 } // namespace
-
-void write_files(const file_set& files, const fs::path& directory)
-{
-    for (const auto& [relative, contents] : files)
-        write_file(directory / relative, contents);
-}
 
 std::vector<std::string> failed_checks(const library& lib)
 {
@@ -187,23 +135,12 @@ std::vector<std::string> failed_checks(const library& lib)
     return failures;
 }
 
-void recover_interrupted(const fs::path& output)
+regeneration regenerate(const fs::path& derivations, const fs::path& output, const more_files& more, bool force)
 {
-    const fs::path target = normalised(output);
-    const fs::path fresh = target.string() + ".impact-new";
-    const fs::path old = target.string() + ".impact-old";
-    // Stopped between the two renames: the previous output is `.impact-old`; put it back.
-    if (!fs::exists(target) && fs::is_directory(old))
-        on_disk(old, "restore the previous output", [&] { fs::rename(old, target); });
-    // Stopped while writing (a partial `.impact-new`) or before tidying up (`.impact-old`).
-    on_disk(fresh, "remove what an interrupted run left", [&] { fs::remove_all(fresh); });
-    on_disk(old, "remove what an interrupted run left", [&] { fs::remove_all(old); });
-}
-
-regeneration regenerate(const fs::path& derivations, const fs::path& output, const more_files& more)
-{
-    const fs::path target = output_folder(derivations, output);
+    // The output folder is checked before anything is derived, so that a refusal comes at once.
+    const fs::path target = checked_folder(output, derivations);
     recover_interrupted(target);
+    check_writable(target, {}, force);
 
     regeneration result;
     stopwatch clock(&result.stages);
@@ -222,31 +159,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
             files[path] = std::move(contents);
     clock.lap("figures and report");
     result.files = files.size();
-
-    // Write beside the output folder, then swap: until the second rename the previous
-    // output is whole, as `output` or as `.impact-old` (which the next run puts back).
-    const fs::path fresh = target.string() + ".impact-new";
-    const fs::path old = target.string() + ".impact-old";
-    try {
-        std::size_t written = 0;
-        for (const auto& [relative, contents] : files) {
-            write_file(fresh / relative, contents);
-            if (++written == files.size() / 2)
-                interrupt_if_asked("writing");
-        }
-        if (fs::exists(target))
-            on_disk(target, "move the previous output aside", [&] { fs::rename(target, old); });
-        interrupt_if_asked("swapping");
-        on_disk(target, "move the new output in place", [&] { fs::rename(fresh, target); });
-    } catch (...) {
-        std::error_code ignored;
-        if (!fs::exists(target) && fs::exists(old))
-            fs::rename(old, target, ignored);
-        fs::remove_all(fresh, ignored);
-        throw;
-    }
-    std::error_code ignored;
-    fs::remove_all(old, ignored);   // a leftover is removed by the next run
+    result.written = replace_folder(target, files, force, interrupt_if_asked);
     return result;
 }
 

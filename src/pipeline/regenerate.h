@@ -7,6 +7,7 @@
 #pragma once
 
 #include "pipeline/library.h"
+#include "pipeline/output_folder.h"
 
 #include <filesystem>
 #include <functional>
@@ -18,18 +19,11 @@ namespace impact::pipeline {
 /// Wall time of each stage of a regeneration, in seconds, in the order they ran.
 using stage_times = std::vector<std::pair<std::string, double>>;
 
-
-/// Every generated file, by path relative to the output folder.
-using file_set = std::map<std::string, std::string>;
-
 /// The files for a derived library: derivations.json, latex/<id>.tex, kernels/impact/*.hpp.
 file_set generate(const library& lib, stage_times* stages = nullptr);
 
 /// Only the kernel headers (kernels/impact/*.hpp), for building against them.
 file_set generate_kernels(const library& lib);
-
-/// Writes `files` into `directory` (created if needed).
-void write_files(const file_set& files, const std::filesystem::path& directory);
 
 /// One line for each check that failed: `file:line:column: error: check failed: id: name: residual r`.
 std::vector<std::string> failed_checks(const library& lib);
@@ -39,23 +33,20 @@ struct regeneration {
     std::size_t files = 0;
     std::vector<std::string> failures; ///< as `failed_checks` gives them
     stage_times stages;
+    write_report written;             ///< the user's files kept beside the output, or moved aside
 };
-
-/// Puts right what an interrupted regeneration of `output` left: restores the previous
-/// output from `<output>.impact-old` when `output` is missing, and removes the leftover
-/// `<output>.impact-new` and `<output>.impact-old`.
-void recover_interrupted(const std::filesystem::path& output);
 
 /// Files made by code outside the pipeline from the derived library and the files
 /// `generate` made: the figures and the compiled report (src/simulate/regeneration.h),
 /// which run the generated kernels. Bad input or a report that fails throws.
 using more_files = std::function<file_set(const library& lib, const file_set& generated)>;
 
-/// Derives everything in `derivations` and, when every check holds, replaces `output`
-/// with the generated files (and those `more` makes). Bad input throws `impact::error`
-/// before anything is written; an output folder that holds the derivations or the
-/// current folder is refused.
+/// Derives everything in `derivations` and, when every check holds, replaces what Impact
+/// wrote in `output` with the generated files (and those `more` makes), keeping every other
+/// file there (src/pipeline/output_folder.h). Bad input throws `impact::error` before
+/// anything is written, and so does an output folder Impact may not write into (a folder
+/// Impact does not own is written into only with `force`).
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
-                        const more_files& more = {});
+                        const more_files& more = {}, bool force = false);
 
 } // namespace impact::pipeline

@@ -1,5 +1,6 @@
 #include "simulate/command.h"
 
+#include "pipeline/output_folder.h"
 #include "simulate/simulate.h"
 
 #include <fmt/format.h>
@@ -7,7 +8,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 namespace impact::simulate {
 namespace {
@@ -43,16 +43,6 @@ scenario default_scenario()
     s.eps = 1;
     s.where = {"the command line", 0, 0};
     return s;
-}
-
-void write(const std::filesystem::path& path, const std::string& contents)
-{
-    std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-    std::ofstream out(path, std::ios::binary);
-    out << contents;
-    out.close();
-    if (!out)
-        throw error({path.string(), 0, 0}, "cannot write the file");
 }
 
 } // namespace
@@ -95,12 +85,17 @@ scenario scenario_from(const command_options& o)
 int simulate_command(const command_options& o)
 {
     const scenario s = scenario_from(o);
+    const std::filesystem::path folder = pipeline::checked_folder(o.output, "derivations", pipeline::writing::beside);
+    const std::string dat = s.name + ".dat", tex = s.name + ".tex";
+    pipeline::check_writable(folder, {{dat, ""}, {tex, ""}}, o.force);
     const trajectory path = run(s);
-    const std::filesystem::path folder = o.output;
-    write(folder / (s.name + ".dat"), table(s, path));
-    write(folder / (s.name + ".tex"), figure(s, path, s.name + ".dat"));
+    const pipeline::write_report written =
+        pipeline::add_to_folder(folder, {{dat, table(s, path)}, {tex, figure(s, path, dat)}}, o.force);
     fmt::print("{}", summary(s, path));
-    fmt::print("wrote {} and {}\n", (folder / (s.name + ".dat")).string(), (folder / (s.name + ".tex")).string());
+    for (const std::string& moved : written.moved_aside)
+        fmt::print("moved aside, in {}: {}\n", o.output, moved);
+    const std::filesystem::path given = o.output;
+    fmt::print("wrote {} and {}\n", (given / dat).string(), (given / tex).string());
     return 0;
 }
 

@@ -12,7 +12,8 @@ namespace impact::simulate {
 /// without a file the defaults are Fig. 2's billiard shot (eps = 1).
 struct command_options {
     std::string file;                        ///< a scenario file, optional
-    std::string output = ".";                ///< folder for <name>.dat and <name>.tex
+    std::string output = "simulations";      ///< folder for <name>.dat and <name>.tex
+    bool force = false;                      ///< write into a folder Impact does not own
     std::optional<std::string> name;
     std::optional<double> eps, duration;
     std::optional<double> mass_M, mass_m, radius_M, radius_m;
