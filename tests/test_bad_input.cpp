@@ -1,6 +1,7 @@
 // Bad input end to end, through the `impact` binary: every kind of bad derivation file
 // gives one line `file:line:column: error: what`, a non-zero exit and an output folder
-// left exactly as it was; a regeneration that fails part-way, or is killed, loses nothing.
+// left exactly as it was; a regeneration that fails part-way loses nothing (one killed
+// part-way: tests/test_output_safety.cpp).
 //
 // Each test runs in a scratch folder of its own with small derivation files written here,
 // so that the expected messages (the ones README.md lists) do not depend on derivations/.
@@ -360,41 +361,6 @@ BOOST_AUTO_TEST_CASE(a_derivation_failing_late_in_a_regeneration_leaves_the_prev
     BOOST_TEST((snapshot(s.root / "output") == before));
     BOOST_TEST(!s.has("output.impact-new"));
     BOOST_TEST(!s.has("output.impact-old"));
-}
-
-BOOST_AUTO_TEST_CASE(a_run_killed_while_writing_leaves_the_output_intact_and_the_next_run_tidies_up)
-{
-    scratch s;
-    s.write("derivations/a.toml", good("first"));
-    const auto before = snapshot(s.root / "output");
-    const run_result killed = s.regenerate("IMPACT_TEST_INTERRUPT=writing");
-    BOOST_TEST(!killed.exited);
-    BOOST_TEST((snapshot(s.root / "output") == before));
-    BOOST_TEST_REQUIRE(s.has("output.impact-new"));   // the half-written output it left
-
-    const run_result next = s.regenerate();
-    BOOST_TEST(next.status == 0, next.output);
-    BOOST_TEST(!s.has("output.impact-new"));
-    BOOST_TEST(s.has("output/kernels/impact/first.hpp"));
-    BOOST_TEST(!s.has("output/previous.txt"));
-}
-
-BOOST_AUTO_TEST_CASE(a_run_killed_between_the_renames_is_restored_by_the_next_run_even_a_failing_one)
-{
-    scratch s;
-    s.write("derivations/a.toml", good("first"));
-    const auto before = snapshot(s.root / "output");
-    const run_result killed = s.regenerate("IMPACT_TEST_INTERRUPT=swapping");
-    BOOST_TEST(!killed.exited);
-    BOOST_TEST_REQUIRE(!s.has("output"));              // moved aside ...
-    BOOST_TEST_REQUIRE(s.has("output.impact-old"));    // ... here, when the process died
-
-    s.write("derivations/b.toml", "");
-    const run_result next = s.regenerate();
-    BOOST_TEST(next.status == 2, next.output);
-    BOOST_TEST((snapshot(s.root / "output") == before));
-    BOOST_TEST(!s.has("output.impact-old"));
-    BOOST_TEST(!s.has("output.impact-new"));
 }
 
 BOOST_AUTO_TEST_CASE(an_output_folder_holding_the_derivations_is_refused)

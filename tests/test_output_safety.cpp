@@ -11,7 +11,13 @@
 
 #include "support.h"
 
+#include "pipeline/output_folder.h"
+
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
+#include <cstring>
 
 #include <filesystem>
 #include <fstream>
@@ -108,6 +114,33 @@ void expect_refused(const project& p, const std::string& arguments, const std::s
 bool can_mount()
 {
     return impact::testing::run_command("unshare -rm sh -c 'mount -t tmpfs -o size=64k tmpfs /tmp' 2>&1").status == 0;
+}
+
+// Where `killed_at` kills the process, through `replace_folder`'s seam for faults.
+const char* kill_point = "";
+void kill_here(const char* point)
+{
+    if (std::strcmp(point, kill_point) == 0)
+        std::raise(SIGKILL);
+}
+
+// Replaces `folder` with `files` (forced) in a child process that is killed with SIGKILL at
+// `point`, as a crash or a power cut would stop it; true when it was killed there.
+bool killed_at(const char* point, const fs::path& folder, const impact::pipeline::file_set& files)
+{
+    const pid_t child = fork();
+    BOOST_TEST_REQUIRE(child >= 0);
+    if (child == 0) {
+        kill_point = point;
+        try {
+            impact::pipeline::replace_folder(folder, files, /*force=*/true, kill_here);
+        } catch (...) {
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
 }
 
 } // namespace
@@ -269,6 +302,53 @@ BOOST_AUTO_TEST_CASE(a_leftover_beside_the_output_that_is_not_impacts_is_refused
     expect_refused(p, "regenerate",
                    "output.impact-new: error: in the way: Impact uses this name while it replaces output, and this "
                    "is not what it left there; move it away");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(runs_killed_part_way)
+
+// A user's folder forced into, and the run killed while writing the new folder beside it:
+// the folder is as it was, and the next run tidies up what was left.
+BOOST_AUTO_TEST_CASE(a_run_killed_while_writing_leaves_the_folder_as_it_was_and_the_next_run_tidies_up)
+{
+    project p;
+    users_folder(p, "output");
+    const auto before = everything_under(p.root / "output");
+    const impact::pipeline::file_set files = {{"a.txt", "a\n"}, {"b.txt", "b\n"}, {"c/d.txt", "d\n"}};
+    BOOST_TEST_REQUIRE(killed_at("writing", p.root / "output", files));
+    BOOST_TEST((everything_under(p.root / "output") == before));
+    BOOST_TEST_REQUIRE(p.has("output.impact-new"));   // the half-written folder it left
+
+    const run_result next = p.impact("regenerate --force");
+    BOOST_TEST(next.status == 0, next.output);
+    BOOST_TEST(!p.has("output.impact-new"));
+    BOOST_TEST(p.has("output/kernels/impact/first.hpp"));
+    const auto after = everything_under(p.root / "output");
+    for (const auto& [path, bytes] : before)
+        BOOST_TEST((after.at(path) == bytes), path);
+}
+
+// Killed between the two renames: the previous folder is only `output.impact-old`. The next
+// run puts it back, even one that then fails on bad input; every user's file is there.
+BOOST_AUTO_TEST_CASE(a_run_killed_between_the_renames_is_restored_by_the_next_run_even_a_failing_one)
+{
+    project p;
+    users_folder(p, "output");
+    const auto before = everything_under(p.root / "output");
+    BOOST_TEST_REQUIRE(killed_at("swapping", p.root / "output", {{"a.txt", "a\n"}}));
+    BOOST_TEST_REQUIRE(!p.has("output"));              // moved aside ...
+    BOOST_TEST_REQUIRE(p.has("output.impact-old"));    // ... here, when the process died
+
+    p.write("derivations/b.toml", "");
+    const run_result next = p.impact("regenerate");
+    BOOST_TEST(next.status == 2, next.output);
+    BOOST_TEST(next.output.find("derivations/b.toml: error: file is empty") == 0u, next.output);
+    auto after = everything_under(p.root / "output");
+    after.erase(".impact-output");   // the forced run marked the folder as it moved it aside
+    BOOST_TEST((after == before));
+    BOOST_TEST(!p.has("output.impact-old"));
+    BOOST_TEST(!p.has("output.impact-new"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

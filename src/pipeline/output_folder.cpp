@@ -398,7 +398,7 @@ void check_writable(const fs::path& folder, const file_set& files, bool force)
 }
 
 write_report replace_folder(const fs::path& folder, const file_set& files, bool force,
-                            void (*interrupt)(const char* point))
+                            void (*stop_at)(const char* point))
 {
     recover_interrupted(folder);
     check_writable(folder, files, force);
@@ -416,8 +416,8 @@ write_report replace_folder(const fs::path& folder, const file_set& files, bool 
         for (const auto& [relative, contents] : files) {
             create_folders((fresh / relative).parent_path());
             write_new_file(fresh / relative, contents);
-            if (++written == files.size() / 2 && interrupt)
-                interrupt("writing");
+            if (++written == files.size() / 2 && stop_at)
+                stop_at("writing");
         }
         for (const std::string& file : o.users_files) {
             const std::string to = moved_to(file, asides);
@@ -445,8 +445,8 @@ write_report replace_folder(const fs::path& folder, const file_set& files, bool 
                 write_new_file(folder / marker_name, marker_text({}));
             on_disk(folder, "move the previous output aside", [&] { fs::rename(folder, old); });
         }
-        if (interrupt)
-            interrupt("swapping");
+        if (stop_at)
+            stop_at("swapping");
         on_disk(folder, "move the new output in place", [&] { fs::rename(fresh, folder); });
     } catch (...) {
         std::error_code ignored;

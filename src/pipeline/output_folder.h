@@ -56,9 +56,14 @@ void check_writable(const std::filesystem::path& folder, const file_set& files, 
 /// Replaces what Impact wrote in `folder` by `files`, keeping every other file. The new
 /// folder is written whole beside it (`<folder>.impact-new`) and swapped in with two renames,
 /// so that the previous output stays whole until it is replaced; a run killed part-way is
-/// put right by `recover_interrupted`. `interrupt` is called with "writing" and "swapping".
+/// put right by `recover_interrupted`.
+///
+/// `stop_at`, for tests only (the `impact` command passes none), is a seam for faults: it
+/// is called with "writing" once half the files are written, and with "swapping" once the
+/// previous folder is moved aside and before the new one is moved in, so that a test can
+/// kill the process at each point and show that nothing is lost.
 write_report replace_folder(const std::filesystem::path& folder, const file_set& files, bool force,
-                            void (*interrupt)(const char* point) = nullptr);
+                            void (*stop_at)(const char* point) = nullptr);
 
 /// Writes `files` into `folder` beside what is there, replacing only files of the same
 /// paths that Impact wrote; each file is written beside its place and renamed over it.

@@ -9,9 +9,6 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <csignal>
-#include <cstdlib>
-#include <string_view>
 
 namespace impact::pipeline {
 namespace fs = std::filesystem;
@@ -108,21 +105,6 @@ file_set generate(const library& lib, stage_times* stages)
     return files;
 }
 
-namespace {
-
-// Test hook, for tests/test_bad_input.cpp only: IMPACT_TEST_INTERRUPT=writing (half the
-// files written) or =swapping (the old output moved aside, the new one not yet in place)
-// kills the process there, as a crash or a power cut would, so that the tests can show
-// that the previous output survives and that the next run puts things right.
-void interrupt_if_asked(const char* point)
-{
-    const char* asked = std::getenv("IMPACT_TEST_INTERRUPT");
-    if (asked && std::string_view(point) == asked)
-        std::raise(SIGKILL);
-}
-
-} // namespace
-
 std::vector<std::string> failed_checks(const library& lib)
 {
     std::vector<std::string> failures;
@@ -159,7 +141,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
             files[path] = std::move(contents);
     clock.lap("figures and report");
     result.files = files.size();
-    result.written = replace_folder(target, files, force, interrupt_if_asked);
+    result.written = replace_folder(target, files, force);
     return result;
 }
 
