@@ -9,7 +9,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "engine/derive.h"
-#include "pipeline/library.h"
+#include "engine/library.h"
 
 #include <array>
 #include <set>
@@ -23,10 +23,10 @@ using GiNaC::ex;
 using GiNaC::numeric;
 
 // Every derivation under derivations/, derived once.
-const pipeline::library& library()
+const engine::library& library()
 {
-    static const pipeline::library lib =
-        pipeline::derive_all(pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+    static const engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
     return lib;
 }
 

@@ -3,7 +3,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include "emit/cxx.h"
-#include "emit/program.h"
+#include "compile/program.h"
+#include "emit/program_cxx.h"
 #include "engine/infix.h"
 
 using namespace impact;
@@ -68,22 +69,22 @@ BOOST_AUTO_TEST_CASE(order_does_not_depend_on_how_gi_nac_stored_the_expression)
 namespace {
 
 struct program_builder {
-    emit::program p;
+    compile::program p;
 
     explicit program_builder(std::size_t inputs)
     {
         for (std::size_t i = 0; i < inputs; ++i) {
             p.inputs.push_back(GiNaC::symbol());
-            emit::instruction in;
-            in.op = emit::opcode::input;
+            compile::instruction in;
+            in.op = compile::opcode::input;
             in.input = static_cast<int>(i);
             p.code.push_back(in);
         }
     }
 
-    int operator()(emit::opcode op, int a, int b = -1, int c = -1)
+    int operator()(compile::opcode op, int a, int b = -1, int c = -1)
     {
-        emit::instruction in;
+        compile::instruction in;
         in.op = op;
         in.a = a;
         in.b = b;
@@ -95,23 +96,23 @@ struct program_builder {
 
 // The operations in order: + for an addition, * for a multiplication, / for a division,
 // r for a square root, f for a fused multiply-add.
-std::string operations(const emit::program& p)
+std::string operations(const compile::program& p)
 {
     std::string ops;
-    for (const emit::instruction& in : p.code)
+    for (const compile::instruction& in : p.code)
         switch (in.op) {
-        case emit::opcode::add: ops += '+'; break;
-        case emit::opcode::mul: ops += '*'; break;
-        case emit::opcode::div: ops += '/'; break;
-        case emit::opcode::sqrt: ops += 'r'; break;
-        case emit::opcode::fma: ops += 'f'; break;
+        case compile::opcode::add: ops += '+'; break;
+        case compile::opcode::mul: ops += '*'; break;
+        case compile::opcode::div: ops += '/'; break;
+        case compile::opcode::sqrt: ops += 'r'; break;
+        case compile::opcode::fma: ops += 'f'; break;
         default: break;
         }
     return ops;
 }
 
 // Every operand of every instruction comes before it.
-bool operands_first(const emit::program& p)
+bool operands_first(const compile::program& p)
 {
     for (std::size_t i = 0; i < p.code.size(); ++i)
         for (int operand : {p.code[i].a, p.code[i].b, p.code[i].c})
@@ -129,7 +130,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_finishes_with_values_before_reading_m
     // (a + b) (a b) + (c + d) (c d), every sum first as compiled: a, b, c, d, a + b and
     // c + d are live at once (6). Ordered, a and b are done with before c and d are read:
     // at most c, d, c + d and the first product (4).
-    using emit::opcode;
+    using compile::opcode;
     program_builder in(4);
     const int a = 0, b = 1, c = 2, d = 3;
     const int s1 = in(opcode::add, a, b);
@@ -139,20 +140,20 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_finishes_with_values_before_reading_m
     const int q1 = in(opcode::mul, s1, p1);
     const int q2 = in(opcode::mul, s2, p2);
     in.p.outputs.push_back(in(opcode::add, q1, q2));
-    BOOST_TEST(emit::most_live(in.p) == 6u);
+    BOOST_TEST(compile::most_live(in.p) == 6u);
 
-    const emit::program ordered = emit::ordered_for_registers(in.p);
-    BOOST_TEST(emit::most_live(ordered) == 4u);
+    const compile::program ordered = compile::ordered_for_registers(in.p);
+    BOOST_TEST(compile::most_live(ordered) == 4u);
     BOOST_TEST(operations(in.p) == "++****+");
     BOOST_TEST(operations(ordered) == "+**+**+");  // a + b, a b, their product, then c and d
     BOOST_TEST(operands_first(ordered));
     const std::vector<double> values{1.5, -2.25, 3.125, 0.75};  // (-0.75)(-3.375) + 3.875 * 2.34375
-    BOOST_TEST(emit::run<double>(ordered, values).front() == 0.75 * 3.375 + 3.875 * 2.34375);
+    BOOST_TEST(compile::run<double>(ordered, values).front() == 0.75 * 3.375 + 3.875 * 2.34375);
 
     // A second output, computed early (c + d): each output is still the value it names.
     in.p.outputs.push_back(s2);
-    BOOST_TEST(emit::most_live(in.p) == 6u);
-    const std::vector<double> both = emit::run<double>(emit::ordered_for_registers(in.p), values);
+    BOOST_TEST(compile::most_live(in.p) == 6u);
+    const std::vector<double> both = compile::run<double>(compile::ordered_for_registers(in.p), values);
     BOOST_TEST(both.size() == 2u);
     BOOST_TEST(both[0] == 0.75 * 3.375 + 3.875 * 2.34375);
     BOOST_TEST(both[1] == 3.875);
@@ -163,7 +164,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_divides_only_once_every_divisor_is_kn
     // b / (b + c) + d / (e + f): once b + c is known, b / (b + c) needs no new input and
     // would come next, before e + f; it waits for that divisor, so that a batch loop can
     // test every divisor's range before its first division.
-    using emit::opcode;
+    using compile::opcode;
     program_builder in(5);
     const int b = 0, c = 1, d = 2, e = 3, f = 4;
     const int bc = in(opcode::add, b, c);
@@ -173,7 +174,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_divides_only_once_every_divisor_is_kn
     in.p.outputs.push_back(in(opcode::add, q1, q2));
     BOOST_TEST(!emit::program_cxx(in.p, {"b", "c", "d", "e", "f"}).divides_early);
 
-    const emit::program ordered = emit::ordered_for_registers(in.p);
+    const compile::program ordered = compile::ordered_for_registers(in.p);
     BOOST_TEST(operations(ordered) == "++//+");  // not "+/+/+"
     BOOST_TEST(!emit::program_cxx(ordered, {"b", "c", "d", "e", "f"}).divides_early);
 }
@@ -182,7 +183,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_takes_a_square_root_once_every_diviso
 {
     // sqrt(a + b) + c / (d + e): the root would follow a + b at once; it waits for d + e,
     // since a batch loop decides from the divisors which lanes' roots it takes.
-    using emit::opcode;
+    using compile::opcode;
     program_builder in(5);
     const int a = 0, b = 1, c = 2, d = 3, e = 4;
     const int ab = in(opcode::add, a, b);
@@ -192,11 +193,11 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_takes_a_square_root_once_every_diviso
     in.p.outputs.push_back(in(opcode::add, root, q));
     BOOST_TEST(operations(in.p) == "+r+/+");
 
-    const emit::program ordered = emit::ordered_for_registers(in.p);
+    const compile::program ordered = compile::ordered_for_registers(in.p);
     BOOST_TEST(operations(ordered) == "++r/+");
     BOOST_TEST(operands_first(ordered));
     const std::vector<double> values{1.5, 0.75, 3.0, 0.5, 1.0};  // sqrt(2.25) + 3 / 1.5
-    BOOST_TEST(emit::run<double>(ordered, values).front() == 3.5);
+    BOOST_TEST(compile::run<double>(ordered, values).front() == 3.5);
 }
 
 BOOST_AUTO_TEST_CASE(ordered_for_registers_waits_for_an_fma_s_addend)
@@ -204,7 +205,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_waits_for_an_fma_s_addend)
     // a b, c d, e + g, fma(a, b, c d), a b + fma, + (e + g): once c d is known the fma reads
     // nothing new and comes before e + g; until then it waits, its factors known and old,
     // for its addend.
-    using emit::opcode;
+    using compile::opcode;
     program_builder in(6);
     const int a = 0, b = 1, c = 2, d = 3, e = 4, g = 5;
     const int ab = in(opcode::mul, a, b);
@@ -215,11 +216,11 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_waits_for_an_fma_s_addend)
     in.p.outputs.push_back(in(opcode::add, sum, eg));
     BOOST_TEST(operations(in.p) == "**+f++");
 
-    const emit::program ordered = emit::ordered_for_registers(in.p);
+    const compile::program ordered = compile::ordered_for_registers(in.p);
     BOOST_TEST(operations(ordered) == "**f+++");
     BOOST_TEST(operands_first(ordered));
     const std::vector<double> values{1.5, 2.0, 0.5, 0.25, 1.0, 0.5};  // 3 + (3 + 0.125) + 1.5
-    BOOST_TEST(emit::run<double>(ordered, values).front() == 7.625);
+    BOOST_TEST(compile::run<double>(ordered, values).front() == 7.625);
 }
 
 BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
@@ -228,7 +229,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
     // follow p (it reads nothing new; q does). But the division p comes after every divisor
     // that does not need it, q + c among them, which needs q; and q after p + a, which
     // needs p. No order satisfies both: the program is kept as it is.
-    using emit::opcode;
+    using compile::opcode;
     program_builder in(6);
     const int a = 0, b = 1, c = 2, d = 3, e = 4, g = 5;
     const int p = in(opcode::div, a, b);
@@ -239,7 +240,7 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
     const int s = in(opcode::div, g, qc);
     in.p.outputs.push_back(in(opcode::add, r, s));
 
-    const emit::program kept = emit::ordered_for_registers(in.p);
+    const compile::program kept = compile::ordered_for_registers(in.p);
     BOOST_TEST(operations(kept) == "//++//+");
     BOOST_TEST(kept.code.size() == in.p.code.size());
     for (std::size_t i = 0; i < kept.code.size(); ++i) {

@@ -4,7 +4,7 @@
 
 #include "engine/derive.h"
 #include "engine/polynomial.h"
-#include "pipeline/library.h"
+#include "engine/library.h"
 
 #include <string>
 
@@ -24,7 +24,7 @@ std::string derivation_text(const std::string& body, const std::string& id = "t"
 }
 constexpr unsigned header_lines = 12;  // lines before `body` in derivation_text
 
-engine::derivation derive_text(const std::string& text, const engine::library& done = {})
+engine::derivation derive_text(const std::string& text, const engine::derived_by_id& done = {})
 {
     return engine::derive(spec::parse_derivation(text, "test.toml"), done);
 }
@@ -72,10 +72,10 @@ const std::string solve_y = "[[given]]\nname = \"g\"\nequation = \"y = 3*x\"\nbe
 
 BOOST_AUTO_TEST_SUITE(eq8)
 
-const pipeline::library& eq8_library()
+const engine::library& eq8_library()
 {
-    static const pipeline::library lib =
-        pipeline::derive_all(pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"), "inelastic_line");
+    static const engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"), "inelastic_line");
     return lib;
 }
 
@@ -233,7 +233,7 @@ BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_funct
 
 BOOST_AUTO_TEST_CASE(a_derivation_uses_the_results_of_another)
 {
-    engine::library done;
+    engine::derived_by_id done;
     done.emplace("base", derive_text(derivation_text(solve_y + "[[result]]\nname = \"y\"\n", "base")));
     const engine::derivation d = derive_text(
         derivation_text("[[use]]\nderivation = \"base\"\nresults = [\"y3 = y\"]\n"
@@ -409,13 +409,13 @@ BOOST_AUTO_TEST_CASE(a_cycle_of_uses_and_a_repeated_id_are_refused)
             id + ".toml");
     };
     try {
-        pipeline::derive_all({uses("a", "b"), uses("b", "a")});
+        engine::derive_all({uses("a", "b"), uses("b", "a")});
         BOOST_FAIL("a cycle was accepted");
     } catch (const impact::error& e) {
         BOOST_TEST(mentions(e, "a cycle"));
     }
     try {
-        pipeline::derive_all({uses("a", "b"), uses("a", "c")});
+        engine::derive_all({uses("a", "b"), uses("a", "c")});
         BOOST_FAIL("a repeated id was accepted");
     } catch (const impact::error& e) {
         BOOST_TEST(mentions(e, "id 'a' is also used by a.toml"));

@@ -12,7 +12,7 @@
 #include "impact/impact.hpp"
 
 #include "engine/domain.h"
-#include "pipeline/library.h"
+#include "engine/library.h"
 #include "verify/accuracy.h"
 
 #include <algorithm>
@@ -31,8 +31,8 @@ using namespace impact;
 
 const engine::derivation& eq8()
 {
-    static const pipeline::library lib =
-        pipeline::derive_all(pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"), "inelastic_line");
+    static const engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"), "inelastic_line");
     return lib.derived.at("inelastic_line");
 }
 

@@ -7,7 +7,7 @@
 
 #include "emit/latex.h"
 #include "emit/written_form.h"
-#include "pipeline/library.h"
+#include "engine/library.h"
 #include "spec/derivation.h"
 
 #include <string>
@@ -45,7 +45,7 @@ struct eq8_symbols {
 
 const engine::derivation& derived(const std::string& id)
 {
-    static const pipeline::library lib = pipeline::derive_all(pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+    static const engine::library lib = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
     return lib.derived.at(id);
 }
 

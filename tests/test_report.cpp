@@ -4,11 +4,11 @@
 #define BOOST_TEST_MODULE test_report
 #include <boost/test/unit_test.hpp>
 
-#include "emit/pdf.h"
-#include "emit/report.h"
-#include "pipeline/library.h"
+#include "report/pdf.h"
+#include "report/report_tex.h"
+#include "engine/library.h"
 #include "pipeline/regenerate.h"
-#include "simulate/regeneration.h"
+#include "report/report.h"
 
 #include <string>
 
@@ -17,13 +17,13 @@ using namespace impact;
 namespace {
 
 struct generated {
-    pipeline::library lib;
+    engine::library lib;
     pipeline::file_set files;
     generated()
     {
-        lib = pipeline::derive_all(pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+        lib = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
         files = pipeline::generate(lib);
-        for (auto& [path, contents] : simulate::figures_and_report(lib, files))
+        for (auto& [path, contents] : report::figures_and_report(lib, files))
             files[path] = contents;
     }
 };
@@ -54,15 +54,15 @@ std::map<std::string, std::string> minimal_document(const std::string& path, con
 
 BOOST_AUTO_TEST_CASE(the_report_compiles_without_errors_undefined_references_or_overfull_lines)
 {
-    BOOST_TEST_REQUIRE(emit::have_pdflatex(), "pdflatex is missing: run scripts/setup.sh");
+    BOOST_TEST_REQUIRE(report::have_pdflatex(), "pdflatex is missing: run scripts/setup.sh");
     std::map<std::string, std::string> sources;
     for (const auto& [path, contents] : output().files)
         if (path.rfind("latex/", 0) == 0 || path.rfind("figures/", 0) == 0 || path == "report.tex")
             sources[path] = contents;
-    const emit::pdf_build pdf = emit::compile_latex(sources, "report.tex");
+    const report::pdf_build pdf = report::compile_latex(sources, "report.tex");
     BOOST_TEST(pdf.ok, joined(pdf.problems));
     BOOST_TEST(pdf.pdf.rfind("%PDF-", 0) == 0u);
-    const auto overfull = emit::latex_overfull_boxes(pdf.log, 2.0);
+    const auto overfull = report::latex_overfull_boxes(pdf.log, 2.0);
     BOOST_TEST(overfull.empty(), joined(overfull));
     // Every font embedded as a Type 1 outline: no bitmap (.pk) font made on the fly.
     BOOST_TEST(pdf.log.find("pk>") == std::string::npos, "a bitmap font is embedded");
@@ -72,10 +72,10 @@ BOOST_AUTO_TEST_CASE(the_report_compiles_without_errors_undefined_references_or_
 
 BOOST_AUTO_TEST_CASE(every_fragment_compiles_alone_in_a_minimal_document)
 {
-    BOOST_TEST_REQUIRE(emit::have_pdflatex());
+    BOOST_TEST_REQUIRE(report::have_pdflatex());
     for (const engine::derivation* d : output().lib.in_order()) {
         const std::string path = "latex/" + d->id() + ".tex";
-        const emit::pdf_build pdf = emit::compile_latex(minimal_document(path, output().files.at(path)), "main.tex");
+        const report::pdf_build pdf = report::compile_latex(minimal_document(path, output().files.at(path)), "main.tex");
         BOOST_TEST(pdf.ok, path + ":\n" + joined(pdf.problems));
     }
 }
@@ -94,26 +94,26 @@ BOOST_AUTO_TEST_CASE(the_report_includes_every_derivation_the_errata_and_both_fi
 
 BOOST_AUTO_TEST_CASE(a_latex_error_or_an_undefined_reference_is_caught)
 {
-    BOOST_TEST_REQUIRE(emit::have_pdflatex());
-    const emit::pdf_build undefined =
-        emit::compile_latex(minimal_document("x.tex", "See \\eqref{nowhere}.\n"), "main.tex");
+    BOOST_TEST_REQUIRE(report::have_pdflatex());
+    const report::pdf_build undefined =
+        report::compile_latex(minimal_document("x.tex", "See \\eqref{nowhere}.\n"), "main.tex");
     BOOST_TEST(!undefined.ok);
     BOOST_TEST(joined(undefined.problems).find("Reference `nowhere' on page 1 undefined") != std::string::npos,
                joined(undefined.problems));
-    const emit::pdf_build broken = emit::compile_latex(minimal_document("x.tex", "$\\frac{1}{$\n"), "main.tex");
+    const report::pdf_build broken = report::compile_latex(minimal_document("x.tex", "$\\frac{1}{$\n"), "main.tex");
     BOOST_TEST(!broken.ok);
     BOOST_TEST(!broken.problems.empty());
 }
 
 BOOST_AUTO_TEST_CASE(the_same_document_gives_the_same_pdf_bytes)
 {
-    BOOST_TEST_REQUIRE(emit::have_pdflatex());
+    BOOST_TEST_REQUIRE(report::have_pdflatex());
     const std::map<std::string, std::string> doc = {
-        {"main.tex", "\\documentclass{article}\n" + emit::report_preamble() +
+        {"main.tex", "\\documentclass{article}\n" + report::report_preamble() +
                          "\\begin{document}\n\\section{A}\\label{a} See \\ref{a}: $\\frac{1}{2} m v'^{2}_{m}$.\n"
                          "\\end{document}\n"}};
-    const emit::pdf_build first = emit::compile_latex(doc, "main.tex");
-    const emit::pdf_build second = emit::compile_latex(doc, "main.tex");
+    const report::pdf_build first = report::compile_latex(doc, "main.tex");
+    const report::pdf_build second = report::compile_latex(doc, "main.tex");
     BOOST_TEST_REQUIRE(first.ok, joined(first.problems));
     BOOST_TEST((first.pdf == second.pdf));
 }

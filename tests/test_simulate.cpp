@@ -7,7 +7,7 @@
 #include "support.h"
 
 #include "simulate/command.h"
-#include "simulate/figures.h"
+#include "report/figures.h"
 #include "simulate/simulate.h"
 
 #include <sys/wait.h>
@@ -223,7 +223,7 @@ BOOST_AUTO_TEST_SUITE(figures)
 
 BOOST_AUTO_TEST_CASE(fig3_follows_eq14_as_an_arctangent)
 {
-    const auto files = figure_files();
+    const auto files = report::figure_files();
     const std::string& by_perp = files.at("figures/scatter_angle_vs_v_perp.dat");
     // Columns eps = 0, 1/3, 2/3, 0.9, 1; θ = atan(2 v⊥ / ((1 - ε) v∥)), v∥ = 1.
     const std::vector<double> row = row_at(by_perp, "0.500");
@@ -240,7 +240,7 @@ BOOST_AUTO_TEST_CASE(fig3_follows_eq14_as_an_arctangent)
 
 BOOST_AUTO_TEST_CASE(fig2_draws_three_billiard_shots_to_scale)
 {
-    const auto files = figure_files();
+    const auto files = report::figure_files();
     for (const char* name : {"figures/billiard_eps_1.dat", "figures/billiard_eps_2_3.dat",
                              "figures/billiard_eps_1_3.dat", "figures/billiard.tex"})
         BOOST_TEST(files.count(name) == 1u, name);
@@ -256,7 +256,7 @@ BOOST_AUTO_TEST_CASE(fig2_draws_three_billiard_shots_to_scale)
 
 BOOST_AUTO_TEST_CASE(figures_are_the_same_bytes_every_time)
 {
-    BOOST_TEST((figure_files() == figure_files()));
+    BOOST_TEST((report::figure_files() == report::figure_files()));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

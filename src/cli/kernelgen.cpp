@@ -5,8 +5,10 @@
 // small program does what `impact kernels` does, with the same pipeline functions.
 //
 //     impact_kernelgen <derivations folder> <output folder>
-#include "pipeline/library.h"
-#include "pipeline/regenerate.h"
+#include "emit/cxx.h"
+#include "engine/library.h"
+#include "pipeline/output_folder.h"
+#include "verify/choice.h"
 
 #include <fmt/format.h>
 
@@ -20,8 +22,8 @@ int main(int argc, char** argv)
         return 2;
     }
     try {
-        const impact::pipeline::library lib =
-            impact::pipeline::derive_all(impact::pipeline::read_directory(argv[1]));
+        const impact::engine::library lib =
+            impact::engine::derive_all(impact::engine::read_directory(argv[1]));
         if (!lib.all_hold()) {
             fmt::print(stderr, "impact_kernelgen: a check failed; no kernels written (run `impact regenerate`)\n");
             return 1;
@@ -29,7 +31,7 @@ int main(int argc, char** argv)
         // The build tree's folder of generated kernels is the build's own: forced, since a
         // build folder made before Impact marked its output holds unmarked headers.
         impact::pipeline::replace_folder(std::filesystem::absolute(argv[2]).lexically_normal(),
-                                         impact::pipeline::generate_kernels(lib), /*force=*/true);
+                                         impact::emit::kernel_files(lib, impact::verify::plan_kernels(lib)), /*force=*/true);
         return 0;
     } catch (const std::exception& e) {
         fmt::print(stderr, "{}\n", e.what());

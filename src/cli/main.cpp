@@ -5,10 +5,10 @@
 #include "emit/cxx.h"
 #include "engine/infix.h"
 #include "emit/latex.h"
-#include "pipeline/library.h"
+#include "engine/library.h"
 #include "pipeline/regenerate.h"
 #include "simulate/command.h"
-#include "simulate/regeneration.h"
+#include "simulate/simulate.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -46,16 +46,16 @@ void print_kept(const pipeline::write_report& report, const fs::path& folder)
         fmt::print("impact: moved aside, in {}: {}\n", folder.string(), moved);
 }
 
-pipeline::library derive_one(const options& o)
+engine::library derive_one(const options& o)
 {
-    const auto sources = pipeline::read_directory(o.derivations);
-    return pipeline::derive_all(sources, pipeline::resolve_id(sources, o.name));
+    const auto sources = engine::read_directory(o.derivations);
+    return engine::derive_all(sources, engine::resolve_id(sources, o.name));
 }
 
 int run_regenerate(const options& o)
 {
     const pipeline::regeneration r =
-        pipeline::regenerate(o.derivations, o.output, simulate::figures_and_report, o.force);
+        pipeline::regenerate(o.derivations, o.output, o.force);
     if (!r.all_hold) {
         for (const std::string& failure : r.failures)
             fmt::print(stderr, "{}\n", failure);
@@ -118,7 +118,7 @@ void print_derivation(const engine::derivation& d)
 
 int run_derive(const options& o)
 {
-    const pipeline::library lib = derive_one(o);
+    const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
     print_derivation(d);
     return d.all_hold() ? 0 : exit_failed_check;
@@ -135,7 +135,7 @@ int run_latex(const options& o)
                                           pipeline::writing::beside);
         pipeline::check_writable(folder, {{file.filename().string(), ""}}, o.force);
     }
-    const pipeline::library lib = derive_one(o);
+    const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
     const std::string fragment = emit::latex_fragment(d);
     if (file.empty())
@@ -149,7 +149,7 @@ int run_kernels(const options& o)
 {
     const fs::path folder = pipeline::checked_folder(o.output, o.derivations, pipeline::writing::beside);
     pipeline::check_writable(folder, {}, o.force);
-    const pipeline::library lib = pipeline::derive_all(pipeline::read_directory(o.derivations));
+    const engine::library lib = engine::derive_all(engine::read_directory(o.derivations));
     if (!lib.all_hold()) {
         for (const std::string& failure : pipeline::failed_checks(lib))
             fmt::print(stderr, "{}\n", failure);
@@ -162,9 +162,29 @@ int run_kernels(const options& o)
     return 0;
 }
 
+// Runs the scenario, writes `<output>/<name>.dat` (trajectories) and `<name>.tex` (a
+// pgfplots figure reading that table), prints a summary; spheres that never touch are a
+// result, not an error.
+int run_simulate(const simulate::command_options& o)
+{
+    const simulate::scenario s = simulate::scenario_from(o);
+    const fs::path folder = pipeline::checked_folder(o.output, "derivations", pipeline::writing::beside);
+    const std::string dat = s.name + ".dat", tex = s.name + ".tex";
+    pipeline::check_writable(folder, {{dat, ""}, {tex, ""}}, o.force);
+    const simulate::trajectory path = simulate::run(s);
+    const pipeline::write_report written = pipeline::add_to_folder(
+        folder, {{dat, simulate::table(s, path)}, {tex, simulate::figure(s, path, dat)}}, o.force);
+    fmt::print("{}", simulate::summary(s, path));
+    for (const std::string& moved : written.moved_aside)
+        fmt::print("moved aside, in {}: {}\n", o.output, moved);
+    const fs::path given = o.output;
+    fmt::print("wrote {} and {}\n", (given / dat).string(), (given / tex).string());
+    return 0;
+}
+
 int run_list(const options& o)
 {
-    for (const spec::derivation& s : pipeline::read_directory(o.derivations))
+    for (const spec::derivation& s : engine::read_directory(o.derivations))
         fmt::print("{:<24} {:<10} {}\n", s.id.value, s.paper ? s.paper->value : "", s.title.value);
     return 0;
 }
@@ -239,7 +259,7 @@ int main(int argc, char** argv)
         else if (latex->parsed())
             status = run_latex(o);
         else if (simulation->parsed())
-            status = simulate::simulate_command(sim);
+            status = run_simulate(sim);
         else if (kernels->parsed())
             status = run_kernels(o);
         else

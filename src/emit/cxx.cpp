@@ -1,5 +1,7 @@
 #include "emit/cxx.h"
 
+#include "emit/program_cxx.h"
+
 #include "engine/infix.h"
 
 #include <fmt/format.h>
@@ -447,12 +449,12 @@ void print_batch(std::string& out, const kernel_plan& plan)
         out += "        // Every pair is computed; one not resolved divides by 1, and its results are discarded.\n";
     for (const lane_input& in : inputs)
         out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
-    program outputs_only = plan.code;  // the guards' values are computed above
+    compile::program outputs_only = plan.code;  // the guards' values are computed above
     outputs_only.outputs.erase(outputs_only.outputs.begin(),
                                outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
-    const bool for_registers = most_live(outputs_only) > batch_registers;
-    const program arithmetic = for_registers ? ordered_for_registers(outputs_only) : outputs_only;
-    const std::vector<bool> for_outputs = needed_by(arithmetic, 0, arithmetic.outputs.size());
+    const bool for_registers = compile::most_live(outputs_only) > batch_registers;
+    const compile::program arithmetic = for_registers ? compile::ordered_for_registers(outputs_only) : outputs_only;
+    const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
     const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "");
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
     // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
@@ -574,8 +576,8 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     for (const engine::kernel_parameter& p : k.parameters)
         for (const engine::quantity& q : p.components)
             out += fmt::format("///   {}{}\n", p.is_array ? p.name + ": " : "", describe(q));
-    for (const component_plan& cp : plan.components) {
-        const candidate_result& c = cp.candidates[cp.chosen];
+    for (const verify::component_plan& cp : plan.components) {
+        const verify::candidate_result& c = cp.candidates[cp.chosen];
         out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
                            cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
     }
@@ -896,6 +898,28 @@ std::string umbrella_header(const std::vector<const engine::derivation*>& with_k
     for (const engine::derivation* d : with_kernels)
         out += fmt::format("#include \"{}\"\n", kernel_header_name(*d));
     return out;
+}
+
+std::map<std::string, std::string> kernel_files(const engine::library& lib,
+                                                const std::vector<verify::kernel_plan>& plans)
+{
+    std::map<std::string, std::string> files;
+    std::vector<const engine::derivation*> with_kernels;
+    std::vector<const verify::kernel_plan*> all;
+    std::size_t next = 0;
+    for (const engine::derivation* d : lib.in_order()) {
+        if (d->kernels.empty())
+            continue;
+        with_kernels.push_back(d);
+        std::vector<const verify::kernel_plan*> own;
+        for (std::size_t i = 0; i < d->kernels.size(); ++i)
+            own.push_back(&plans[next++]);
+        all.insert(all.end(), own.begin(), own.end());
+        files["kernels/impact/" + kernel_header_name(*d)] = kernel_header(*d, own);
+    }
+    files["kernels/impact/common.hpp"] = common_header(all);
+    files["kernels/impact/impact.hpp"] = umbrella_header(with_kernels);
+    return files;
 }
 
 } // namespace impact::emit

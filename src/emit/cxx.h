@@ -4,13 +4,15 @@
 // kernels share (the status enum, the result and batch structures of array kernels
 // emitted in several dimensions), and `impact/impact.hpp` includes everything. The
 // arithmetic is the kernel plan's program, printed statement by statement
-// (emit/program.h), so the code is exactly what was measured.
+// (compile/program.h, printed by emit/program_cxx.h), so the code is exactly what was measured.
 #pragma once
 
-#include "emit/kernel_plan.h"
+#include "verify/choice.h"
 #include "engine/derive.h"
+#include "engine/library.h"
 #include "engine/infix.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,7 @@ namespace impact::emit {
 
 using engine::print_infix;
 using engine::term_order;
+using verify::kernel_plan;
 
 /// The C++ print context, for a single expression: `std::` functions, `Real(2)`
 /// literals, x * x for x^2. Kernel bodies are printed from programs instead (program.h).
@@ -42,5 +45,10 @@ std::string common_header(const std::vector<const kernel_plan*>& plans);
 
 /// The umbrella header `impact/impact.hpp` including every kernel header.
 std::string umbrella_header(const std::vector<const engine::derivation*>& with_kernels);
+
+/// Every kernel header (`kernels/impact/<name>.hpp`, common.hpp, impact.hpp) for `lib`,
+/// whose kernels' plans are `plans`, in the library's order.
+std::map<std::string, std::string> kernel_files(const engine::library& lib,
+                                                const std::vector<verify::kernel_plan>& plans);
 
 } // namespace impact::emit

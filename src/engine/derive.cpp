@@ -33,7 +33,7 @@ std::string join(const std::vector<spec::text>& items)
 // The state of a derivation while its steps run.
 class deriver {
 public:
-    deriver(const spec::derivation& source, const library& done) : done_(done)
+    deriver(const spec::derivation& source, const derived_by_id& done) : done_(done)
     {
         out_.source = source;
     }
@@ -710,7 +710,7 @@ private:
         return guard;
     }
 
-    const library& done_;
+    const derived_by_id& done_;
     derivation out_;
     GiNaC::exmap kernel_substitutions_;
     std::vector<equation> equations_;
@@ -777,7 +777,7 @@ bool derivation::all_hold() const
     return std::all_of(checks.begin(), checks.end(), [](const check_result* c) { return c->outcome.holds(); });
 }
 
-derivation derive(const spec::derivation& source, const library& done)
+derivation derive(const spec::derivation& source, const derived_by_id& done)
 {
     return deriver(source, done).run();
 }

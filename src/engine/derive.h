@@ -162,10 +162,10 @@ struct derivation {
 };
 
 /// Derivations already run, by id, for `[[use]]`.
-using library = std::map<std::string, derivation>;
+using derived_by_id = std::map<std::string, derivation>;
 
 /// Runs one derivation. Bad input throws `impact::error`; a failed check does not throw
 /// but is recorded (see `derivation::all_hold`).
-derivation derive(const spec::derivation& source, const library& done);
+derivation derive(const spec::derivation& source, const derived_by_id& done);
 
 } // namespace impact::engine

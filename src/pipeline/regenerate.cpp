@@ -4,7 +4,9 @@
 #include "emit/errata.h"
 #include "emit/json.h"
 #include "emit/latex.h"
-#include "verify/report.h"
+#include "emit/verification.h"
+#include "report/report.h"
+#include "verify/choice.h"
 
 #include <fmt/format.h>
 
@@ -32,44 +34,11 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
-// Every kernel's plan (its forms chosen by measurement), derivation by derivation.
-std::vector<emit::kernel_plan> plan_kernels(const library& lib)
-{
-    std::vector<emit::kernel_plan> plans;
-    for (const engine::derivation* d : lib.in_order()) {
-        const engine::term_order order = engine::declaration_order(d->symbols);
-        for (const engine::kernel& k : d->kernels)
-            plans.push_back(emit::plan_kernel(k, order));
-    }
-    return plans;
-}
-
-file_set kernel_files(const library& lib, const std::vector<emit::kernel_plan>& plans)
-{
-    file_set files;
-    std::vector<const engine::derivation*> with_kernels;
-    std::vector<const emit::kernel_plan*> all;
-    std::size_t next = 0;
-    for (const engine::derivation* d : lib.in_order()) {
-        if (d->kernels.empty())
-            continue;
-        with_kernels.push_back(d);
-        std::vector<const emit::kernel_plan*> own;
-        for (std::size_t i = 0; i < d->kernels.size(); ++i)
-            own.push_back(&plans[next++]);
-        all.insert(all.end(), own.begin(), own.end());
-        files["kernels/impact/" + emit::kernel_header_name(*d)] = emit::kernel_header(*d, own);
-    }
-    files["kernels/impact/common.hpp"] = emit::common_header(all);
-    files["kernels/impact/impact.hpp"] = emit::umbrella_header(with_kernels);
-    return files;
-}
-
 } // namespace
 
 file_set generate_kernels(const library& lib)
 {
-    return kernel_files(lib, plan_kernels(lib));
+    return emit::kernel_files(lib, verify::plan_kernels(lib));
 }
 
 file_set generate(const library& lib, stage_times* stages)
@@ -92,15 +61,15 @@ file_set generate(const library& lib, stage_times* stages)
     files["derivations.json"] = emit::derivations_json(lib.in_order());
     files["errata.md"] = emit::errata_markdown(lib.in_order());
     clock.lap("LaTeX fragments, derivations.json, errata.md");
-    const std::vector<emit::kernel_plan> plans = plan_kernels(lib);
+    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(lib);
     clock.lap("kernel forms chosen by measurement (numeric)");
-    for (auto& [path, contents] : kernel_files(lib, plans))
+    for (auto& [path, contents] : emit::kernel_files(lib, plans))
         files[path] = std::move(contents);
     clock.lap("kernel sources");
-    std::vector<const emit::kernel_plan*> all;
-    for (const emit::kernel_plan& p : plans)
+    std::vector<const verify::kernel_plan*> all;
+    for (const verify::kernel_plan& p : plans)
         all.push_back(&p);
-    files["verification.md"] = verify::verification_markdown(all);
+    files["verification.md"] = emit::verification_markdown(all);
     clock.lap("verification report (numeric)");
     return files;
 }
@@ -117,7 +86,7 @@ std::vector<std::string> failed_checks(const library& lib)
     return failures;
 }
 
-regeneration regenerate(const fs::path& derivations, const fs::path& output, const more_files& more, bool force)
+regeneration regenerate(const fs::path& derivations, const fs::path& output, bool force)
 {
     // The output folder is checked before anything is derived, so that a refusal comes at once.
     const fs::path target = checked_folder(output, derivations);
@@ -126,7 +95,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
 
     regeneration result;
     stopwatch clock(&result.stages);
-    const library lib = derive_all(read_directory(derivations));
+    const library lib = engine::derive_all(engine::read_directory(derivations));
     clock.lap("derivations with their checks");
     result.failures = failed_checks(lib);
     result.all_hold = result.failures.empty();
@@ -136,9 +105,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     file_set files = generate(lib, &result.stages);
     clock.lap("");
     result.stages.pop_back();
-    if (more)
-        for (auto& [path, contents] : more(lib, files))
-            files[path] = std::move(contents);
+    for (auto& [path, contents] : report::figures_and_report(lib, files))
+        files[path] = std::move(contents);
     clock.lap("figures and report");
     result.files = files.size();
     result.written = replace_folder(target, files, force);

@@ -1,4 +1,4 @@
-// Writing what Impact generates: derivations.json, LaTeX fragments, kernel headers.
+// Regeneration: every stage in order, from the derivation files to output/.
 //
 // `regenerate` replaces the output folder only after every derivation has been
 // derived with all its checks holding and every file has been written to a fresh
@@ -6,15 +6,16 @@
 // was, and a run that was killed is put right by the next one.
 #pragma once
 
-#include "pipeline/library.h"
+#include "engine/library.h"
 #include "pipeline/output_folder.h"
 
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <string>
 
 namespace impact::pipeline {
+
+using engine::library;
 
 /// Wall time of each stage of a regeneration, in seconds, in the order they ran.
 using stage_times = std::vector<std::pair<std::string, double>>;
@@ -36,17 +37,12 @@ struct regeneration {
     write_report written;             ///< the user's files kept beside the output, or moved aside
 };
 
-/// Files made by code outside the pipeline from the derived library and the files
-/// `generate` made: the figures and the compiled report (src/simulate/regeneration.h),
-/// which run the generated kernels. Bad input or a report that fails throws.
-using more_files = std::function<file_set(const library& lib, const file_set& generated)>;
-
 /// Derives everything in `derivations` and, when every check holds, replaces what Impact
-/// wrote in `output` with the generated files (and those `more` makes), keeping every other
+/// wrote in `output` with the generated files, the figures and the report, keeping every other
 /// file there (src/pipeline/output_folder.h). Bad input throws `impact::error` before
 /// anything is written, and so does an output folder Impact may not write into (a folder
 /// Impact does not own is written into only with `force`).
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
-                        const more_files& more = {}, bool force = false);
+                        bool force = false);
 
 } // namespace impact::pipeline

@@ -1,6 +1,5 @@
 #include "simulate/command.h"
 
-#include "pipeline/output_folder.h"
 #include "simulate/simulate.h"
 
 #include <fmt/format.h>
@@ -80,23 +79,6 @@ scenario scenario_from(const command_options& o)
         throw error(s.where, "the scenario name is empty");
     validate(s);
     return s;
-}
-
-int simulate_command(const command_options& o)
-{
-    const scenario s = scenario_from(o);
-    const std::filesystem::path folder = pipeline::checked_folder(o.output, "derivations", pipeline::writing::beside);
-    const std::string dat = s.name + ".dat", tex = s.name + ".tex";
-    pipeline::check_writable(folder, {{dat, ""}, {tex, ""}}, o.force);
-    const trajectory path = run(s);
-    const pipeline::write_report written =
-        pipeline::add_to_folder(folder, {{dat, table(s, path)}, {tex, figure(s, path, dat)}}, o.force);
-    fmt::print("{}", summary(s, path));
-    for (const std::string& moved : written.moved_aside)
-        fmt::print("moved aside, in {}: {}\n", o.output, moved);
-    const std::filesystem::path given = o.output;
-    fmt::print("wrote {} and {}\n", (given / dat).string(), (given / tex).string());
-    return 0;
 }
 
 } // namespace impact::simulate

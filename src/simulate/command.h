@@ -1,4 +1,4 @@
-// `impact simulate`: a scenario from a file and/or options, simulated, written out.
+// `impact simulate`: a scenario from a file and/or options (src/cli/main.cpp runs it and writes it out).
 #pragma once
 
 #include "simulate/scenario.h"
@@ -22,10 +22,5 @@ struct command_options {
 
 /// The scenario the options describe. Throws `impact::error` on bad input.
 scenario scenario_from(const command_options& o);
-
-/// Runs the scenario, writes `<output>/<name>.dat` (trajectories) and `<name>.tex` (a
-/// pgfplots figure reading that table), prints a summary. Returns the exit status (0;
-/// spheres that never touch are a result, not an error).
-int simulate_command(const command_options& o);
 
 } // namespace impact::simulate

@@ -11,22 +11,22 @@ namespace {
 constexpr int reference_digits = 60;
 
 // The program run in CLN: exact rationals, 60 digits after a root or a function.
-std::vector<GiNaC::numeric> run_exact(const emit::program& p, const std::vector<GiNaC::numeric>& inputs)
+std::vector<GiNaC::numeric> run_exact(const compile::program& p, const std::vector<GiNaC::numeric>& inputs)
 {
     std::vector<GiNaC::numeric> v(p.code.size());
     for (std::size_t i = 0; i < p.code.size(); ++i) {
-        const emit::instruction& in = p.code[i];
+        const compile::instruction& in = p.code[i];
         switch (in.op) {
-        case emit::opcode::input: v[i] = inputs[in.input]; break;
-        case emit::opcode::constant: v[i] = in.value; break;
-        case emit::opcode::add: v[i] = v[in.a] + v[in.b]; break;
-        case emit::opcode::sub: v[i] = v[in.a] - v[in.b]; break;
-        case emit::opcode::mul: v[i] = v[in.a] * v[in.b]; break;
-        case emit::opcode::div: v[i] = v[in.a] / v[in.b]; break;
-        case emit::opcode::neg: v[i] = -v[in.a]; break;
-        case emit::opcode::fma: v[i] = v[in.a] * v[in.b] + v[in.c]; break;
-        case emit::opcode::sqrt: v[i] = GiNaC::sqrt(v[in.a]); break;
-        case emit::opcode::call:
+        case compile::opcode::input: v[i] = inputs[in.input]; break;
+        case compile::opcode::constant: v[i] = in.value; break;
+        case compile::opcode::add: v[i] = v[in.a] + v[in.b]; break;
+        case compile::opcode::sub: v[i] = v[in.a] - v[in.b]; break;
+        case compile::opcode::mul: v[i] = v[in.a] * v[in.b]; break;
+        case compile::opcode::div: v[i] = v[in.a] / v[in.b]; break;
+        case compile::opcode::neg: v[i] = -v[in.a]; break;
+        case compile::opcode::fma: v[i] = v[in.a] * v[in.b] + v[in.c]; break;
+        case compile::opcode::sqrt: v[i] = GiNaC::sqrt(v[in.a]); break;
+        case compile::opcode::call:
             if (in.function == "acos")
                 v[i] = GiNaC::acos(v[in.a]);
             else if (in.function == "atan")
@@ -85,9 +85,9 @@ reference compute_reference(const engine::kernel& k, const std::vector<sample>& 
     const auto all = components(k);
     for (const auto& [o, c] : all) {
         GiNaC::ex shortest = k.outputs[o].values[c];
-        std::size_t length = emit::compile({shortest}, inputs, order, {}, k.lets).code.size();
+        std::size_t length = compile::compile_program({shortest}, inputs, order, {}, k.lets).code.size();
         for (const engine::form& f : k.outputs[o].candidates[c]) {
-            const std::size_t n = emit::compile({f.value}, inputs, order, {}, k.lets).code.size();
+            const std::size_t n = compile::compile_program({f.value}, inputs, order, {}, k.lets).code.size();
             if (n < length) {
                 shortest = f.value;
                 length = n;
@@ -97,7 +97,7 @@ reference compute_reference(const engine::kernel& k, const std::vector<sample>& 
     }
     for (const engine::kernel_output& o : k.outputs)
         expressions.push_back(o.scale_factor);
-    const emit::program exact_program = emit::compile(expressions, inputs, order, {}, k.lets);
+    const compile::program exact_program = compile::compile_program(expressions, inputs, order, {}, k.lets);
 
     std::vector<std::size_t> velocity_slots;
     for (std::size_t i = 0; i < inputs.size(); ++i)
@@ -156,7 +156,7 @@ reference prefix(const reference& ref, std::size_t count)
 }
 
 template <class Real>
-std::vector<accuracy> measure(const emit::program& p, const std::vector<std::size_t>& which,
+std::vector<accuracy> measure(const compile::program& p, const std::vector<std::size_t>& which,
                               const std::vector<sample>& samples, const reference& ref)
 {
     std::vector<accuracy> result(which.size());
@@ -165,7 +165,7 @@ std::vector<accuracy> measure(const emit::program& p, const std::vector<std::siz
         std::vector<Real> x;
         for (double value : samples[n].inputs)
             x.push_back(static_cast<Real>(value));
-        const std::vector<Real> y = emit::run<Real>(p, x);
+        const std::vector<Real> y = compile::run<Real>(p, x);
         for (std::size_t i = 0; i < which.size(); ++i) {
             const double_double& want = ref.outputs[n][which[i]];
             const double scale = ref.scales[n][which[i]];
@@ -194,11 +194,11 @@ std::vector<accuracy> measure(const emit::program& p, const std::vector<std::siz
     return result;
 }
 
-template std::vector<accuracy> measure<float>(const emit::program&, const std::vector<std::size_t>&,
+template std::vector<accuracy> measure<float>(const compile::program&, const std::vector<std::size_t>&,
                                               const std::vector<sample>&, const reference&);
-template std::vector<accuracy> measure<double>(const emit::program&, const std::vector<std::size_t>&,
+template std::vector<accuracy> measure<double>(const compile::program&, const std::vector<std::size_t>&,
                                                const std::vector<sample>&, const reference&);
-template std::vector<accuracy> measure<long double>(const emit::program&, const std::vector<std::size_t>&,
+template std::vector<accuracy> measure<long double>(const compile::program&, const std::vector<std::size_t>&,
                                                     const std::vector<sample>&, const reference&);
 
 } // namespace impact::verify

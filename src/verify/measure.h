@@ -9,7 +9,7 @@
 // mass).
 #pragma once
 
-#include "emit/program.h"
+#include "compile/program.h"
 #include "engine/derive.h"
 #include "verify/sampling.h"
 
@@ -54,7 +54,7 @@ struct accuracy {
 /// Runs `p` (whose outputs are the kernel's components listed in `which`) in `Real` on
 /// every sample and measures each of its outputs against `ref`.
 template <class Real>
-std::vector<accuracy> measure(const emit::program& p, const std::vector<std::size_t>& which,
+std::vector<accuracy> measure(const compile::program& p, const std::vector<std::size_t>& which,
                               const std::vector<sample>& samples, const reference& ref);
 
 } // namespace impact::verify

@@ -8,7 +8,7 @@
 // Built with -fsanitize=fuzzer by tests/fuzz/CMakeLists.txt; test_fuzz_regressions
 // replays tests/fuzz/regressions/ through the same function in every build.
 #include "engine/derive.h"
-#include "pipeline/library.h"
+#include "engine/library.h"
 #include "spec/derivation.h"
 
 #include <cstdint>
@@ -20,15 +20,15 @@ namespace {
 
 // The derivations of derivations/, derived once, for fuzzed files that use them. If
 // derivations/ is being edited into a bad state, fuzzing goes on without them.
-const impact::engine::library& used()
+const impact::engine::derived_by_id& used()
 {
-    static const impact::engine::library library = [] {
+    static const impact::engine::derived_by_id library = [] {
         try {
-            return impact::pipeline::derive_all(impact::pipeline::read_directory(IMPACT_SOURCE_DIR "/derivations"))
+            return impact::engine::derive_all(impact::engine::read_directory(IMPACT_SOURCE_DIR "/derivations"))
                 .derived;
         } catch (const impact::error& e) {
             std::fprintf(stderr, "fuzz_derivation: fuzzing without derivations/ (%s)\n", e.what());
-            return impact::engine::library{};
+            return impact::engine::derived_by_id{};
         }
     }();
     return library;

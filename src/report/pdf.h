@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace impact::emit {
+namespace impact::report {
 
 struct pdf_build {
     bool ok = false;                   ///< a PDF was made and the log shows no problem
@@ -34,4 +34,4 @@ std::vector<std::string> latex_overfull_boxes(const std::string& log, double tol
 /// True when pdflatex can be run.
 bool have_pdflatex();
 
-} // namespace impact::emit
+} // namespace impact::report

@@ -2,9 +2,9 @@
 //
 // A kernel's outputs are compiled into one program of single operations (add, mul,
 // div, sqrt, fma, ...), each common subexpression computed once, in the fixed order of
-// `term_order`. The same program is printed as C++ (the kernel's body) and run by an
-// interpreter in float, double or long double (to measure its accuracy against CLN):
-// what is measured is exactly what is emitted, operation for operation.
+// `term_order`. The same program is printed as C++ (the kernel's body, emit/program_cxx.h)
+// and run by an interpreter in float, double or long double (to measure its accuracy
+// against CLN): what is measured is exactly what is emitted, operation for operation.
 #pragma once
 
 #include "engine/order.h"
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace impact::emit {
+namespace impact::compile {
 
 enum class opcode { input, constant, add, sub, mul, div, neg, sqrt, fma, call };
 
@@ -44,11 +44,11 @@ struct compile_options {
 using let_values = std::vector<std::pair<GiNaC::ex, GiNaC::ex>>;
 
 /// Compiles `outputs` (expressions in `inputs`) into one program.
-program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+program compile_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
                 const engine::term_order& order, compile_options options = {}, const let_values& lets = {});
 
 /// The same, with options chosen output by output.
-program compile(const std::vector<std::pair<GiNaC::ex, compile_options>>& outputs,
+program compile_program(const std::vector<std::pair<GiNaC::ex, compile_options>>& outputs,
                 const std::vector<GiNaC::ex>& inputs, const engine::term_order& order,
                 const let_values& lets = {});
 
@@ -72,24 +72,17 @@ std::size_t most_live(const program& p);
 /// no order allows that, the program is returned as it is.
 program ordered_for_registers(const program& p);
 
-/// The body of a kernel: one `const Real tN = ...;` line per instruction that is not an
-/// input (inputs are referred to by `names`), and the C++ expression of each output.
-/// With `kept_if`, every divisor d that is not a constant is written `(kept_if ? d : Real(1))`
-/// and every square root's argument x `(kept_if ? x : Real(0))`: a batch loop computes every
-/// lane, and one whose results it discards neither divides by zero nor takes a root of a
-/// negative number.
-/// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
-/// their range before dividing: all are computed by the first `divisors_known` statements,
-/// and no division is made before them unless `divides_early`.
-struct cxx_code {
-    std::vector<std::string> statements;
-    std::vector<int> statement_values;   ///< the value each statement computes
-    std::vector<std::string> outputs;
-    std::vector<std::string> divisors;
-    std::size_t divisors_known = 0;
-    bool divides_early = false;
-};
-cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if = {});
+/// Whether `in` is an input or a constant (nothing computed).
+bool is_leaf(const instruction& in);
+
+/// The values `in` reads.
+std::vector<int> operands(const instruction& in);
+
+/// Whether `in` divides by a value that is not a constant (one a kernel names and tests).
+bool divides(const program& p, const instruction& in);
+
+/// The values `p` divides by that are not constants, each once, in the order of their divisions.
+std::vector<int> divisors(const program& p);
 
 /// Runs `p` in the floating-point type `Real`, exactly as the printed C++ does.
 template <class Real>
@@ -134,4 +127,4 @@ std::vector<Real> run(const program& p, const std::vector<Real>& inputs)
     return out;
 }
 
-} // namespace impact::emit
+} // namespace impact::compile

@@ -1,4 +1,4 @@
-#include "emit/pdf.h"
+#include "report/pdf.h"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace impact::emit {
+namespace impact::report {
 namespace fs = std::filesystem;
 
 namespace {
@@ -126,4 +126,4 @@ pdf_build compile_latex(const std::map<std::string, std::string>& files, const s
     return build;
 }
 
-} // namespace impact::emit
+} // namespace impact::report

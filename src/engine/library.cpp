@@ -1,4 +1,4 @@
-#include "pipeline/library.h"
+#include "engine/library.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <map>
 #include <set>
 
-namespace impact::pipeline {
+namespace impact::engine {
 
 std::vector<const engine::derivation*> library::in_order() const
 {
@@ -94,4 +94,4 @@ std::string resolve_id(const std::vector<spec::derivation>& sources, const std::
     throw error({}, fmt::format("no derivation with id or file '{}'", name));
 }
 
-} // namespace impact::pipeline
+} // namespace impact::engine

@@ -1,10 +1,10 @@
-#include "emit/report.h"
+#include "report/report_tex.h"
 
 #include "emit/latex.h"
 
 #include <fmt/format.h>
 
-namespace impact::emit {
+namespace impact::report {
 
 std::string report_preamble()
 {
@@ -69,7 +69,7 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
            ">{\\raggedright\\arraybackslash}p{2.8cm}@{}}\n"
            "\\toprule\nWhere & Item (derivation) & Verdict & Printed & Derived & Smallest change \\\\\n"
            "\\midrule\n\\endhead\n\\bottomrule\n\\endfoot\n";
-    out += latex_errata_rows(derivations);
+    out += emit::latex_errata_rows(derivations);
     out += "\\end{longtable}}\n";
 
     out += "\n\\section{Figures}\\label{sec:figures}\n"
@@ -83,4 +83,4 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
     return out;
 }
 
-} // namespace impact::emit
+} // namespace impact::report

@@ -1,4 +1,4 @@
-#include "emit/program.h"
+#include "compile/program.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <map>
 #include <sstream>
 
-namespace impact::emit {
+namespace impact::compile {
 namespace {
 
 class compiler {
@@ -386,19 +386,9 @@ private:
     std::map<std::tuple<int, int, int, int>, int> ops_;
 };
 
-std::string literal(const GiNaC::numeric& n)
-{
-    std::ostringstream out;
-    if (n.is_integer())
-        out << "Real(" << n << ')';
-    else
-        out << "Real(" << n.numer() << ") / Real(" << n.denom() << ')';
-    return out.str();
-}
-
 } // namespace
 
-program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+program compile_program(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
                 const engine::term_order& order, compile_options options, const let_values& lets)
 {
     program p;
@@ -409,7 +399,7 @@ program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::
     return p;
 }
 
-program compile(const std::vector<std::pair<GiNaC::ex, compile_options>>& outputs,
+program compile_program(const std::vector<std::pair<GiNaC::ex, compile_options>>& outputs,
                 const std::vector<GiNaC::ex>& inputs, const engine::term_order& order, const let_values& lets)
 {
     program p;
@@ -429,8 +419,6 @@ std::size_t count(const program& p, opcode op)
         n += in.op == op ? 1 : 0;
     return n;
 }
-
-namespace {
 
 bool is_leaf(const instruction& in)
 {
@@ -461,8 +449,6 @@ std::vector<int> divisors(const program& p)
             found.push_back(in.b);
     return found;
 }
-
-} // namespace
 
 std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t last)
 {
@@ -588,83 +574,4 @@ program ordered_for_registers(const program& p)
     return q;
 }
 
-cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if)
-{
-    // A value used more than once gets a name; one used once is written in place, with
-    // the parentheses that keep the program's tree (C++ evaluates a - b + c as (a - b) + c,
-    // so every operation is the one the interpreter measured).
-    std::vector<int> uses(p.code.size(), 0);
-    for (const instruction& in : p.code)
-        for (int operand : operands(in))
-            ++uses[operand];
-    for (int o : p.outputs)
-        ++uses[o];
-    // Divisors that are not constants are named, so that a kernel can test them.
-    const std::vector<int> divided_by = divisors(p);
-    for (int d : divided_by)
-        uses[d] += 2;
-    const auto first = std::find_if(p.code.begin(), p.code.end(), [&](const instruction& in) { return divides(p, in); });
-    const int first_division = first == p.code.end() ? -1 : static_cast<int>(first - p.code.begin());
-    const int last_divisor = divided_by.empty() ? -1 : *std::max_element(divided_by.begin(), divided_by.end());
-
-    constexpr int sum = 1, product = 2, unary = 3, atom = 4;
-    std::vector<std::string> text(p.code.size());
-    std::vector<int> precedence(p.code.size(), atom);
-    auto operand = [&](int v, int needed) {
-        return precedence[v] >= needed ? text[v] : "(" + text[v] + ")";
-    };
-    cxx_code code;
-    int next_name = 0;
-    for (std::size_t i = 0; i < p.code.size(); ++i) {
-        const instruction& in = p.code[i];
-        std::string expression;
-        int own = atom;
-        switch (in.op) {
-        case opcode::input: expression = names.at(in.input); break;
-        case opcode::constant:
-            expression = literal(in.value);
-            own = in.value.is_integer() ? atom : product;
-            break;
-        case opcode::add: expression = operand(in.a, sum) + " + " + operand(in.b, product); own = sum; break;
-        case opcode::sub: expression = operand(in.a, sum) + " - " + operand(in.b, product); own = sum; break;
-        case opcode::mul: expression = operand(in.a, product) + " * " + operand(in.b, unary); own = product; break;
-        case opcode::div:
-            expression = operand(in.a, product) + " / " +
-                         (kept_if.empty() || !divides(p, in)
-                              ? operand(in.b, unary)
-                              : "(" + kept_if + " ? " + text[in.b] + " : Real(1))");
-            own = product;
-            break;
-        case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
-        case opcode::sqrt:
-            expression = "std::sqrt(" + (kept_if.empty() ? text[in.a] : kept_if + " ? " + text[in.a] + " : Real(0)") + ")";
-            break;
-        case opcode::fma: expression = "std::fma(" + text[in.a] + ", " + text[in.b] + ", " + text[in.c] + ")"; break;
-        case opcode::call:
-            expression = "std::" + in.function + "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";
-            break;
-        }
-        const bool named = uses[i] > 1 && !is_leaf(in);
-        if (!named) {
-            text[i] = expression;
-            precedence[i] = own;
-            continue;
-        }
-        const std::string name = fmt::format("t{}", next_name++);
-        code.statements.push_back(fmt::format("const Real {} = {};", name, expression));
-        code.statement_values.push_back(static_cast<int>(i));
-        text[i] = name;
-        precedence[i] = atom;
-    }
-    for (int o : p.outputs)
-        code.outputs.push_back(text[o]);
-    for (int d : divided_by)
-        code.divisors.push_back(text[d]);
-    code.divides_early = first_division >= 0 && first_division < last_divisor;
-    while (code.divisors_known < code.statements.size() &&
-           code.statement_values[code.divisors_known] <= last_divisor)
-        ++code.divisors_known;
-    return code;
-}
-
-} // namespace impact::emit
+} // namespace impact::compile

@@ -1,21 +1,24 @@
-#include "simulate/regeneration.h"
+#include "report/report.h"
 
-#include "emit/pdf.h"
-#include "emit/report.h"
-#include "simulate/figures.h"
+#include "report/pdf.h"
+#include "report/report_tex.h"
+#include "report/figures.h"
+
+#include "spec/error.h"
 
 #include <fmt/format.h>
 
-namespace impact::simulate {
+namespace impact::report {
 
-pipeline::file_set figures_and_report(const pipeline::library& lib, const pipeline::file_set& generated)
+std::map<std::string, std::string> figures_and_report(const engine::library& lib,
+                                                      const std::map<std::string, std::string>& generated)
 {
-    pipeline::file_set files;
+    std::map<std::string, std::string> files;
     for (auto& [path, contents] : figure_files())
         files[path] = contents;
-    files["report.tex"] = emit::report_tex(lib.in_order(), {"figures/billiard", "figures/scatter_angle"});
+    files["report.tex"] = report::report_tex(lib.in_order(), {"figures/billiard", "figures/scatter_angle"});
 
-    if (!emit::have_pdflatex())
+    if (!report::have_pdflatex())
         throw error({"report.tex", 0, 0}, "pdflatex is not installed; run scripts/setup.sh to install TeX Live");
     std::map<std::string, std::string> sources;
     for (const auto& [path, contents] : generated)
@@ -23,7 +26,7 @@ pipeline::file_set figures_and_report(const pipeline::library& lib, const pipeli
             sources[path] = contents;
     for (const auto& [path, contents] : files)
         sources[path] = contents;
-    const emit::pdf_build pdf = emit::compile_latex(sources, "report.tex");
+    const report::pdf_build pdf = report::compile_latex(sources, "report.tex");
     if (!pdf.ok)
         throw error({"report.tex", 0, 0},
                     fmt::format("the report does not compile cleanly: {}",
@@ -32,4 +35,4 @@ pipeline::file_set figures_and_report(const pipeline::library& lib, const pipeli
     return files;
 }
 
-} // namespace impact::simulate
+} // namespace impact::report

@@ -1,4 +1,4 @@
-#include "simulate/figures.h"
+#include "report/figures.h"
 
 #include "simulate/simulate.h"
 
@@ -11,8 +11,14 @@
 #include <cmath>
 #include <vector>
 
-namespace impact::simulate {
+namespace impact::report {
 namespace {
+
+using simulate::fixed;
+using simulate::sample;
+using simulate::scenario;
+using simulate::trajectory;
+using simulate::vec2;
 
 constexpr double pi = 3.14159265358979323846;
 
@@ -186,4 +192,4 @@ std::map<std::string, std::string> figure_files()
     return files;
 }
 
-} // namespace impact::simulate
+} // namespace impact::report

@@ -11,11 +11,11 @@
 #include <map>
 #include <string>
 
-namespace impact::simulate {
+namespace impact::report {
 
 /// Every figure file, by path relative to the output folder: `figures/*.dat` and the
 /// pgfplots figures `figures/billiard.tex` and `figures/scatter_angle.tex`, each a
 /// complete figure environment with caption and label (fig:billiard, fig:scatter-angle).
 std::map<std::string, std::string> figure_files();
 
-} // namespace impact::simulate
+} // namespace impact::report

@@ -1,4 +1,4 @@
-#include "emit/kernel_plan.h"
+#include "verify/choice.h"
 
 #include "engine/sign.h"
 
@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace impact::emit {
+namespace impact::verify {
 namespace {
 
 // A seed from the kernel's name, so that each kernel has its own repeatable samples.
@@ -66,7 +66,7 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
         component_plan cp;
         cp.name = o.is_array ? fmt::format("{}[{}]", o.member, all[i].second) : o.member;
         auto measured = [&](candidate_result r, const std::vector<verify::sample>& on, const verify::reference& ref) {
-            const program p = compile({r.value}, inputs, order,
+            const compile::program p = compile::compile_program({r.value}, inputs, order,
                                       {r.fma, r.compensated, r.compensated_lets}, k.lets);
             r.double_accuracy = verify::measure<double>(p, {i}, on, ref).front();
             return r;
@@ -93,8 +93,8 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
         }
         std::vector<std::pair<std::size_t, std::size_t>> cost;
         for (const engine::form& f : forms) {
-            const program p = compile({f.value}, inputs, order, {}, k.lets);
-            cost.emplace_back(count(p, opcode::sqrt), count(p, opcode::div));
+            const compile::program p = compile::compile_program({f.value}, inputs, order, {}, k.lets);
+            cost.emplace_back(count(p, compile::opcode::sqrt), count(p, compile::opcode::div));
         }
         const auto leanest = *std::min_element(cost.begin(), cost.end());
         std::vector<candidate_result> plain;
@@ -104,8 +104,8 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
                 continue;
             }
             for (bool fused : {false, true}) {
-                const program p = compile({forms[f].value}, inputs, order, {fused}, k.lets);
-                if (fused && count(p, opcode::fma) == 0)
+                const compile::program p = compile::compile_program({forms[f].value}, inputs, order, {fused}, k.lets);
+                if (fused && count(p, compile::opcode::fma) == 0)
                     continue;  // nothing to fuse: the same program as without
                 candidate_result r;
                 r.label = fused ? forms[f].label + ", fma" : forms[f].label;
@@ -181,7 +181,7 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
                     continue;
                 r.label += ", compensated let";
                 r.compensated_lets = true;
-                const program p = compile({r.value}, inputs, order, {r.fma, false, true}, k.lets);
+                const compile::program p = compile::compile_program({r.value}, inputs, order, {r.fma, false, true}, k.lets);
                 r.double_accuracy = verify::measure<double>(p, {i}, plan.samples, plan.double_reference).front();
                 cp.candidates.push_back(std::move(r));
             }
@@ -196,17 +196,41 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
 
     // One program: the guards' conditions first (checked before anything is computed
     // from them), then the chosen form of every component, sharing what they can.
-    std::vector<std::pair<GiNaC::ex, compile_options>> outputs;
+    std::vector<std::pair<GiNaC::ex, compile::compile_options>> outputs;
     for (const engine::kernel_guard& g : k.guards)
         if (g.condition)
-            outputs.emplace_back(*g.condition, compile_options{});
+            outputs.emplace_back(*g.condition, compile::compile_options{});
     plan.guard_values = outputs.size();
     for (const component_plan& cp : plan.components) {
         const candidate_result& chosen = cp.candidates[cp.chosen];
-        outputs.emplace_back(chosen.value, compile_options{chosen.fma, chosen.compensated, chosen.compensated_lets});
+        outputs.emplace_back(chosen.value, compile::compile_options{chosen.fma, chosen.compensated, chosen.compensated_lets});
     }
-    plan.code = compile(outputs, inputs, order, k.lets);
+    plan.code = compile::compile_program(outputs, inputs, order, k.lets);
+
+    // The program as emitted, its outputs all at once, in each type.
+    compile::program outputs_only = plan.code;
+    outputs_only.outputs.erase(outputs_only.outputs.begin(),
+                               outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
+    std::vector<std::size_t> which(plan.components.size());
+    for (std::size_t i = 0; i < which.size(); ++i)
+        which[i] = i;
+    const auto in_float = measure<float>(outputs_only, which, plan.samples, plan.float_reference);
+    const auto in_double = measure<double>(outputs_only, which, plan.samples, plan.double_reference);
+    const auto in_long = measure<long double>(outputs_only, which, plan.samples, plan.double_reference);
+    for (std::size_t i = 0; i < which.size(); ++i)
+        plan.emitted.push_back({in_float[i], in_double[i], in_long[i]});
     return plan;
 }
 
-} // namespace impact::emit
+std::vector<kernel_plan> plan_kernels(const engine::library& lib)
+{
+    std::vector<kernel_plan> plans;
+    for (const engine::derivation* d : lib.in_order()) {
+        const engine::term_order order = engine::declaration_order(d->symbols);
+        for (const engine::kernel& k : d->kernels)
+            plans.push_back(plan_kernel(k, order));
+    }
+    return plans;
+}
+
+} // namespace impact::verify

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace impact::emit {
+namespace impact::report {
 
 /// The report's LaTeX source. It \input's `latex/<id>.tex` for each derivation (in the
 /// order given) and each of `figures` (paths relative to the output folder, without
@@ -19,4 +19,4 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
 /// The preamble the report and the test documents share (packages, PDF determinism).
 std::string report_preamble();
 
-} // namespace impact::emit
+} // namespace impact::report

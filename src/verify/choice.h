@@ -8,15 +8,16 @@
 // are kept for the verification report.
 #pragma once
 
-#include "emit/program.h"
+#include "compile/program.h"
 #include "engine/derive.h"
+#include "engine/library.h"
 #include "verify/measure.h"
 #include "verify/sampling.h"
 
 #include <string>
 #include <vector>
 
-namespace impact::emit {
+namespace impact::verify {
 
 struct candidate_result {
     std::string label;          ///< e.g. "display", "expanded, fma"
@@ -35,14 +36,22 @@ struct component_plan {
     std::size_t pruned = 0;     ///< candidates left out after the first sixth of the samples
 };
 
+/// The emitted program's accuracy for one output component, in each floating-point type.
+struct emitted_accuracy {
+    accuracy in_float;
+    accuracy in_double;
+    accuracy in_long_double;
+};
+
 struct kernel_plan {
     const engine::kernel* kernel = nullptr;
     std::vector<component_plan> components;      ///< in verify::components(kernel) order
-    program code;               ///< guards' values first, then every output component
+    compile::program code;               ///< guards' values first, then every output component
     std::size_t guard_values = 0;                ///< how many of code.outputs are guard conditions
     std::vector<verify::sample> samples;
     verify::reference double_reference;
     verify::reference float_reference;
+    std::vector<emitted_accuracy> emitted;       ///< per component: `code` as emitted, measured
 };
 
 /// Samples used to choose forms and to report accuracy.
@@ -51,7 +60,11 @@ constexpr std::size_t kernel_samples = 4200;
 /// The accuracy every output should reach in double, in ulps of its scale.
 constexpr double target_ulps = 4;
 
-/// Measures every candidate form of every output and compiles the chosen ones.
+/// Measures every candidate form of every output, compiles the chosen ones into one
+/// program and measures it, all outputs at once, in float, double and long double.
 kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order);
 
-} // namespace impact::emit
+/// Every kernel's plan, derivation by derivation in the library's order.
+std::vector<kernel_plan> plan_kernels(const engine::library& lib);
+
+} // namespace impact::verify

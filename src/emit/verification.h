@@ -5,14 +5,14 @@
 // chosen, with every candidate's maximum error in double beside it.
 #pragma once
 
-#include "emit/kernel_plan.h"
+#include "verify/choice.h"
 
 #include <string>
 #include <vector>
 
-namespace impact::verify {
+namespace impact::emit {
 
 /// `output/verification.md`.
-std::string verification_markdown(const std::vector<const emit::kernel_plan*>& plans);
+std::string verification_markdown(const std::vector<const verify::kernel_plan*>& plans);
 
-} // namespace impact::verify
+} // namespace impact::emit

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-namespace impact::pipeline {
+namespace impact::engine {
 
 struct library {
-    engine::library derived;          ///< by id
+    derived_by_id derived;            ///< by id
     std::vector<std::string> order;   ///< ids in the order they were derived
 
     /// The derivations in derivation order.
@@ -33,4 +33,4 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
 /// The id of the derivation that `name` names: an id, or the path of one of the files.
 std::string resolve_id(const std::vector<spec::derivation>& sources, const std::string& name);
 
-} // namespace impact::pipeline
+} // namespace impact::engine

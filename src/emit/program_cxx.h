@@ -1,0 +1,34 @@
+// A straight-line program printed as C++: the body of a generated kernel.
+//
+// Each operation of the program (src/compile/program.h) is printed as the operation the
+// interpreter measured, with the parentheses that keep the program's tree, so that what
+// is emitted is exactly what was measured.
+#pragma once
+
+#include "compile/program.h"
+
+#include <string>
+#include <vector>
+
+namespace impact::emit {
+
+/// The body of a kernel: one `const Real tN = ...;` line per instruction that is not an
+/// input (inputs are referred to by `names`), and the C++ expression of each output.
+/// With `kept_if`, every divisor d that is not a constant is written `(kept_if ? d : Real(1))`
+/// and every square root's argument x `(kept_if ? x : Real(0))`: a batch loop computes every
+/// lane, and one whose results it discards neither divides by zero nor takes a root of a
+/// negative number.
+/// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
+/// their range before dividing: all are computed by the first `divisors_known` statements,
+/// and no division is made before them unless `divides_early`.
+struct cxx_code {
+    std::vector<std::string> statements;
+    std::vector<int> statement_values;   ///< the value each statement computes
+    std::vector<std::string> outputs;
+    std::vector<std::string> divisors;
+    std::size_t divisors_known = 0;
+    bool divides_early = false;
+};
+cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {});
+
+} // namespace impact::emit
