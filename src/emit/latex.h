@@ -43,6 +43,10 @@ std::string latex(const GiNaC::ex& e, const term_order& order, const written_for
 std::vector<std::string> latex_lines(const GiNaC::ex& e, const term_order& order, const written_form* written,
                                      double width);
 
+/// The same, the first line no wider than `first_width` and the others than `other_width`.
+std::vector<std::string> latex_lines(const GiNaC::ex& e, const term_order& order, const written_form* written,
+                                     double first_width, double other_width);
+
 /// The approximate printed width of LaTeX math in display style, in points of Computer
 /// Modern at 10 pt: fractions count their wider part, scripts 0.7 of theirs.
 double latex_width(const std::string& math);
