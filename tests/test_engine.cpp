@@ -2,6 +2,8 @@
 #define BOOST_TEST_MODULE test_engine
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+
 #include "engine/derive.h"
 #include "engine/polynomial.h"
 #include "engine/library.h"
@@ -267,6 +269,14 @@ BOOST_AUTO_TEST_CASE(an_inequality_is_proven_from_the_signs_of_its_factors_or_re
     const engine::check_result& c = check_named(d, "never_positive");
     BOOST_TEST(engine::to_string(c.outcome) == "proven");
     BOOST_TEST(c.outcome.proof.size() >= 3u);  // one line per factor
+    // Each step is data: a factor, its sign and why; x's sign comes from its declared domain.
+    const GiNaC::ex x = d.symbols.find("x")->symbol;
+    const auto of_x = std::find_if(c.outcome.proof.begin(), c.outcome.proof.end(),
+                                   [&](const engine::sign_step& step) { return step.factor.is_equal(x); });
+    BOOST_TEST_REQUIRE((of_x != c.outcome.proof.end()));
+    BOOST_TEST(of_x->sign.describe() == "> 0");
+    BOOST_TEST((of_x->why.declared && of_x->why.declared->is_equal(x)));
+    BOOST_TEST(of_x->why.domain == "positive");
     // y = 0 at eps = 1 or z = 0, so y < 0 is not proven; sampling cannot refute it either.
     BOOST_TEST(engine::to_string(check_named(d, "strictly").outcome) != "proven");
     BOOST_TEST(engine::to_string(check_named(d, "with_z").outcome) == "failed");  // z of either sign
@@ -279,10 +289,23 @@ BOOST_AUTO_TEST_CASE(limits_by_substitution_and_at_infinity_by_the_leading_term)
         "[[check]]\nname = \"at_zero\"\nclaim = \"y = 0\"\nlimit = \"x -> 0\"\n"
         "[[check]]\nname = \"at_infinity\"\nclaim = \"y = 1\"\nlimit = \"x -> infinity\"\n"
         "[[check]]\nname = \"wrong\"\nclaim = \"y = 2\"\nlimit = \"x -> infinity\"\n"));
-    BOOST_TEST(engine::to_string(check_named(d, "at_zero").outcome) == "proven");
+    const GiNaC::ex x = d.symbols.find("x")->symbol;
+    const engine::check_result& at_zero = check_named(d, "at_zero");
+    BOOST_TEST(engine::to_string(at_zero.outcome) == "proven");
+    // How each limit was found is data: x/sqrt(x^2 + 4) is continuous at 0 (its value 0 = 0/1);
+    // at infinity its leading term in 1/x is 1.
+    BOOST_TEST_REQUIRE(at_zero.limit_by.has_value());
+    BOOST_TEST((at_zero.limit_by->how == engine::limit_method::kind::substitution));
+    BOOST_TEST(at_zero.limit_by->denominator.is_equal(1));
+    BOOST_TEST(at_zero.limit_by->denominator_sign.describe() == "> 0");
     const engine::check_result& c = check_named(d, "at_infinity");
     BOOST_TEST(engine::to_string(c.outcome) == "proven");
     BOOST_TEST(c.outcome.method.find("leading term in 1/x") != std::string::npos, c.outcome.method);
+    BOOST_TEST_REQUIRE(c.limit_by.has_value());
+    BOOST_TEST(c.limit_by->at_infinity);
+    BOOST_TEST(c.limit_by->inverted.is_equal(x));
+    BOOST_TEST_REQUIRE(c.limit_by->leading_in_inverse.has_value());
+    BOOST_TEST(c.limit_by->leading_in_inverse->is_equal(1));
     BOOST_TEST(engine::to_string(check_named(d, "wrong").outcome) == "failed");
 }
 

@@ -27,8 +27,8 @@ json check_json(const engine::check_result& c, const term_order& order)
         j["left_at"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
     for (const auto& [symbol, range] : c.assuming)
         j["assuming"][ginac_syntax(symbol, order)] = range;
-    if (!c.outcome.proof.empty())
-        j["proof"] = c.outcome.proof;
+    for (const engine::sign_step& step : c.outcome.proof)
+        j["proof"].push_back(step.words);
     for (const auto& [symbol, value] : c.at)
         j["at"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
     j["method"] = c.outcome.method;

@@ -419,16 +419,12 @@ private:
     std::string how(const engine::check_result& c) const
     {
         std::string out;
-        if (c.limit && c.outcome.method.rfind("limit ", 0) == 0) {
-            const std::string& m = c.outcome.method;
-            const auto open = m.find(" ("), close = m.rfind("); ");
-            if (open != std::string::npos && close != std::string::npos && close > open)
-                out += " The limit is established " + limit_method(m.substr(open + 2, close - open - 2)) + ".";
-        }
+        if (c.limit_by)
+            out += " The limit is established " + limit_text(*c.limit_by) + ".";
         if (!c.outcome.proof.empty()) {
             std::vector<std::string> signs;
-            for (const std::string& step : c.outcome.proof)
-                signs.push_back(sign_step(step));
+            for (const engine::sign_step& step : c.outcome.proof)
+                signs.push_back(sign_text(step));
             out += " From the signs of its factors: " + listing(signs) + ".";
         }
         if (c.outcome.what == engine::verdict::status::sampled)
@@ -439,68 +435,42 @@ private:
         return out;
     }
 
-    // An expression in GiNaC's syntax as math, or as text when it does not parse.
-    std::string math_or_text(const std::string& text) const
+    // A sign as a relation to zero in LaTeX, or nothing when it is not one.
+    static const char* relation_to_zero(const engine::sign_set& sign)
     {
-        try {
-            return "$" + math(d_.symbols.parse({text, {}})) + "$";
-        } catch (const std::exception&) {
-            return latex_text(text);
-        }
-    }
-
-    // "x-1 <= 0 (linear in x ...)" → "$x - 1 \leq 0$ (linear in x ...)"
-    std::string sign_step(const std::string& step) const
-    {
-        const auto paren = step.find(" (");
-        const std::string claim = step.substr(0, paren);
-        std::string why = paren == std::string::npos ? "" : step.substr(paren + 2, step.size() - paren - 3);
-        // "M in positive" → "declared positive"
-        const auto in = why.find(" in ");
-        if (in != std::string::npos && d_.symbols.find(why.substr(0, in)))
-            why = "declared " + why.substr(in + 4);
         static const std::pair<const char*, const char*> relations[] = {
-            {" >= ", "\\geq"}, {" <= ", "\\leq"}, {" > ", ">"}, {" < ", "<"}};
-        for (const auto& [spelling, tex] : relations) {
-            const auto at = claim.find(spelling);
-            if (at == std::string::npos)
-                continue;
-            std::string lhs = math_or_text(claim.substr(0, at));
-            const std::string rhs = claim.substr(at + std::string(spelling).size());
-            if (lhs.front() == '$')
-                return fmt::format("${} {} {}$ ({})", lhs.substr(1, lhs.size() - 2), tex, latex_text(rhs),
-                                   latex_text(why));
-        }
-        return latex_text(step);
+            {">= 0", "\\geq"}, {"<= 0", "\\leq"}, {"> 0", ">"}, {"< 0", "<"}};
+        for (const auto& [described, tex] : relations)
+            if (sign.describe() == described)
+                return tex;
+        return nullptr;
     }
 
-    std::string limit_method(const std::string& method) const
+    // "$x - 1 \leq 0$ (linear in x ...)", "$M > 0$ (declared positive)"
+    std::string sign_text(const engine::sign_step& step) const
     {
-        // "by substitution: continuous there, its denominator D being > 0"
-        const std::string substitution = "by substitution: continuous there, its denominator ";
-        if (method.rfind(substitution, 0) == 0) {
-            const std::string rest = method.substr(substitution.size());
-            const auto being = rest.find(" being ");
-            std::string sign = being == std::string::npos ? "" : rest.substr(being + 7);
-            if (sign == ">= 0" || sign == "> 0" || sign == "< 0" || sign == "<= 0" || sign == "!= 0") {
-                static const std::map<std::string, std::string> tex = {
-                    {">= 0", "\\geq 0"}, {"> 0", "> 0"}, {"< 0", "< 0"}, {"<= 0", "\\leq 0"}, {"!= 0", "\\neq 0"}};
-                return fmt::format("by substitution (continuous there: its denominator {} is ${}$)",
-                                   math_or_text(rest.substr(0, being)), tex.at(sign));
-            }
+        const char* relation = relation_to_zero(step.sign);
+        if (!relation)
+            return latex_text(step.words);
+        const std::string why = step.why.declared ? "declared " + step.why.domain : step.why.words;
+        return fmt::format("${} {} 0$ ({})", math(step.factor), relation, latex_text(why));
+    }
+
+    std::string limit_text(const engine::limit_method& how) const
+    {
+        using kind = engine::limit_method::kind;
+        if (!how.at_infinity && how.how == kind::substitution) {
+            static const std::map<std::string, std::string> tex = {
+                {">= 0", "\\geq 0"}, {"> 0", "> 0"}, {"< 0", "< 0"}, {"<= 0", "\\leq 0"}, {"!= 0", "\\neq 0"}};
+            const auto sign = tex.find(how.denominator_sign.describe());
+            if (sign != tex.end())
+                return fmt::format("by substitution (continuous there: its denominator ${}$ is ${}$)",
+                                   math(how.denominator), sign->second);
         }
-        // "substituting s = 1/t and letting t -> 0+: the leading term in 1/s is E"
-        const std::string leading = ": the leading term in 1/";
-        if (method.rfind("substituting ", 0) == 0 && method.find(leading) != std::string::npos) {
-            const auto eq = method.find(" = 1/t");
-            const auto is = method.find(" is ", method.find(leading));
-            if (eq != std::string::npos && is != std::string::npos) {
-                const std::string s = math_or_text(method.substr(13, eq - 13));
-                return fmt::format("by substituting {} $= 1/t$ and letting $t \\to 0^+$: the leading term is {}", s,
-                                   math_or_text(method.substr(is + 4)));
-            }
-        }
-        return latex_text(method);
+        if (how.at_infinity && how.leading_in_inverse)
+            return fmt::format("by substituting ${}$ $= 1/t$ and letting $t \\to 0^+$: the leading term is ${}$",
+                               math(how.inverted), math(*how.leading_in_inverse));
+        return latex_text(how.words);
     }
 
     // Math set inline when it is short and flat, displayed (and broken) otherwise.
@@ -532,8 +502,8 @@ private:
         std::string out = "\n\\paragraph{Checks.}\n\\begin{itemize}\n";
         for (const engine::check_result& c : d_.checks) {
             // A display form is the result typeset above: say so, do not print it again.
-            if (c.name.rfind("display form of ", 0) == 0) {
-                const std::string name = c.name.substr(16);
+            if (!c.display_of.empty()) {
+                const std::string& name = c.display_of;
                 const engine::quantity* q = d_.symbols.find(name);
                 const engine::result* r = d_.find_result(name);
                 // Only a numbered result has a number to refer to.

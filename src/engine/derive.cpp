@@ -314,6 +314,7 @@ private:
             r.display = out_.symbols.parse(*spec_result.display);
             check_result c;
             c.name = fmt::format("display form of {}", q.name);
+            c.display_of = q.name;
             c.statement = spec_result.display->value;
             c.stated = r.symbol == r.display;
             c.because = "the form typeset must equal the derived result";
@@ -396,7 +397,7 @@ private:
             c.limit = parse_limit(*spec_check.limit);
             if (c.op != relation::equal)
                 throw error(spec_check.limit->where, "a limit check claims an equality: lim lhs = rhs");
-            c.outcome = check_limit(lhs, rhs, *c.limit, given, c.value);
+            c.outcome = check_limit(lhs, rhs, *c.limit, given, c.value, c.limit_by);
             c.statement += fmt::format(" in the limit {}", spec_check.limit->value);
         } else if (c.op == relation::equal) {
             c.outcome = prove_equal(lhs, rhs, out_.symbols);
@@ -489,7 +490,8 @@ private:
     }
 
     verdict check_limit(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const check_result::limit_point& p,
-                        const assumptions& given, std::optional<GiNaC::ex>& value) const
+                        const assumptions& given, std::optional<GiNaC::ex>& value,
+                        std::optional<limit_method>& how) const
     {
         const GiNaC::exmap abbreviations = out_.symbols.abbreviations();
         const auto found = limit(lhs.subs(abbreviations), p.symbol, p.point, p.to_infinity, given);
@@ -507,6 +509,7 @@ private:
             return v;
         }
         value = found->value;
+        how = found->how;
         v = prove_equal(found->value, rhs, out_.symbols);
         v.method = fmt::format("limit {} ({}); {}", given.text(found->value), found->method, v.method);
         return v;

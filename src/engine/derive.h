@@ -47,6 +47,8 @@ struct check_result {
     std::optional<limit_point> limit;                  ///< the claim is about lim lhs
     std::vector<std::pair<GiNaC::ex, std::string>> assuming;  ///< narrowed domains
     std::optional<GiNaC::ex> value;                    ///< what lhs comes to (at its point, or its limit)
+    std::optional<limit_method> limit_by;              ///< how the limit was established, when it was
+    std::string display_of;   ///< for the check of a result's display form: the result's name
     std::string because;
     GiNaC::ex lhs;            ///< both sides after substituting the results
     GiNaC::ex rhs;

@@ -21,6 +21,11 @@ std::optional<limit_result> by_substitution(const GiNaC::ex& e, const GiNaC::ex&
         return std::nullopt;
     limit_result r;
     r.value = at;
+    r.how.how = limit_method::kind::substitution;
+    r.how.symbol = symbol;
+    r.how.point = point;
+    r.how.denominator = denominator;
+    r.how.denominator_sign = nonzero.sign;
     r.method = fmt::format("by substitution: continuous there, its denominator {} being {}", given.text(denominator),
                            nonzero.sign.describe());
     return r;
@@ -48,6 +53,11 @@ std::optional<limit_result> by_series(const GiNaC::ex& e, const GiNaC::ex& symbo
                 r.value = sign.sign.positive ? 1 : -1;
                 r.infinite = true;
             }
+            r.how.how = limit_method::kind::series;
+            r.how.symbol = symbol;
+            r.how.point = point;
+            r.how.coefficient = coefficient;
+            r.how.order = order;
             r.method = fmt::format("leading term of the series in {} - {}: {}*({} - {})^{}", given.text(symbol),
                                    given.text(point), given.text(coefficient), given.text(symbol), given.text(point),
                                    order);
@@ -60,8 +70,10 @@ std::optional<limit_result> by_series(const GiNaC::ex& e, const GiNaC::ex& symbo
 
 } // namespace
 
-std::optional<limit_result> limit(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
-                                  bool to_infinity, const assumptions& given)
+namespace {
+
+std::optional<limit_result> find_limit(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
+                                       bool to_infinity, const assumptions& given)
 {
     if (!to_infinity) {
         if (auto r = by_substitution(e, symbol, point, given))
@@ -79,17 +91,31 @@ std::optional<limit_result> limit(const GiNaC::ex& e, const GiNaC::ex& symbol, c
         r = by_series(in_t, t, 0, with_t);
     if (!r)
         return r;
+    r->how.at_infinity = true;
+    r->how.inverted = symbol;
     // Report the leading term in 1/s, which is what a reader checks by eye.
     try {
         const GiNaC::ex s = GiNaC::series(in_t, t == 0, 3);
         const GiNaC::pseries& p = GiNaC::ex_to<GiNaC::pseries>(s);
         const int order = p.ldegree(t);
         const GiNaC::ex leading = GiNaC::normal(p.coeff(t, order) * GiNaC::pow(symbol, -order));
+        r->how.leading_in_inverse = leading;
         r->method = fmt::format("substituting {} = 1/t and letting t -> 0+: the leading term in 1/{} is {}",
                                 given.text(symbol), given.text(symbol), given.text(leading));
     } catch (const std::exception&) {
         r->method = fmt::format("substituting {} = 1/t and letting t -> 0+, {}", given.text(symbol), r->method);
     }
+    return r;
+}
+
+} // namespace
+
+std::optional<limit_result> limit(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
+                                  bool to_infinity, const assumptions& given)
+{
+    std::optional<limit_result> r = find_limit(e, symbol, point, to_infinity, given);
+    if (r)
+        r->how.words = r->method;
     return r;
 }
 

@@ -17,10 +17,27 @@
 
 namespace impact::engine {
 
+/// How a limit s → a (or s → ∞) was established, as data a printer can set.
+struct limit_method {
+    enum class kind { substitution, series };
+    kind how = kind::substitution;
+    GiNaC::ex symbol;            ///< s, or t for s → ∞ (s = 1/t, t → 0⁺)
+    GiNaC::ex point;             ///< a, or 0 for s → ∞
+    GiNaC::ex denominator;       ///< substitution: the denominator at the point ...
+    sign_set denominator_sign;   ///< ... proven non-zero
+    GiNaC::ex coefficient;       ///< series: the leading term coefficient*(s - a)^order
+    int order = 0;
+    bool at_infinity = false;    ///< s → ∞, by s = 1/t
+    GiNaC::ex inverted;          ///< s of s = 1/t
+    std::optional<GiNaC::ex> leading_in_inverse;   ///< the leading term in 1/s, when found
+    std::string words;           ///< all of it in words (for a printer that sets no more)
+};
+
 struct limit_result {
     GiNaC::ex value;        ///< the limit, or ±1 for ±∞ when `infinite`
     bool infinite = false;  ///< true when the expression grows without bound
-    std::string method;     ///< how it was established, in words
+    limit_method how;
+    std::string method;     ///< `how` in words (`how.words`), for derivations.json and the terminal
 };
 
 /// The limit of `e` as `symbol` → `point`; `to_infinity` for s → +∞. Nothing when

@@ -23,7 +23,7 @@ struct verdict {
     std::size_t samples = 0;     ///< points tested when not proven symbolically
     GiNaC::ex residual;          ///< the normalised difference; zero when proven
     std::string method;          ///< how the verdict was reached, in words
-    std::vector<std::string> proof; ///< for inequalities: the sign of each factor
+    std::vector<sign_step> proof; ///< for inequalities: the sign of each factor
 
     bool holds() const { return what != status::failed; }
 };

@@ -65,7 +65,7 @@ public:
     std::string text(const GiNaC::ex& e) const { return given_.text(e); }
 
     // The sign of e and why, in a few words.
-    std::pair<sign_set, std::string> sign(const GiNaC::ex& e, int depth = 0) const
+    std::pair<sign_set, sign_reason> sign(const GiNaC::ex& e, int depth = 0) const
     {
         auto& signs = given_.known->signs;
         const auto known = signs.find(e);
@@ -79,7 +79,7 @@ public:
     }
 
 private:
-    std::pair<sign_set, std::string> decide(const GiNaC::ex& e, int depth) const
+    std::pair<sign_set, sign_reason> decide(const GiNaC::ex& e, int depth) const
     {
         if (GiNaC::is_a<GiNaC::numeric>(e)) {
             const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
@@ -91,7 +91,10 @@ private:
             const auto found = domains_.find(e);
             if (found == domains_.end())
                 return {sign_set::any(), "no declared domain"};
-            return {of_domain(found->second), fmt::format("{} in {}", text(e), found->second.to_string())};
+            sign_reason why(fmt::format("{} in {}", text(e), found->second.to_string()));
+            why.declared = e;
+            why.domain = found->second.to_string();
+            return {of_domain(found->second), why};
         }
         if (GiNaC::is_a<GiNaC::mul>(e)) {
             sign_set r = sign_set::exactly(1);
@@ -113,7 +116,7 @@ private:
         return {sign_set::any(), "not determined"};
     }
 
-    std::pair<sign_set, std::string> power_sign(const GiNaC::ex& e, int depth) const
+    std::pair<sign_set, sign_reason> power_sign(const GiNaC::ex& e, int depth) const
     {
         const GiNaC::ex base = e.op(0);
         const GiNaC::ex exponent = e.op(1);
@@ -122,7 +125,7 @@ private:
         const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(exponent);
         const sign_set b = sign(base, depth).first;
         sign_set r;
-        std::string why;
+        sign_reason why;
         if (n.is_even()) {
             r = {false, b.zero, b.negative || b.positive};
             why = "an even power";
@@ -141,7 +144,7 @@ private:
         return {r, why};
     }
 
-    std::pair<sign_set, std::string> sum_sign(const GiNaC::ex& e, int depth) const
+    std::pair<sign_set, sign_reason> sum_sign(const GiNaC::ex& e, int depth) const
     {
         sign_set r = sign_set::exactly(0);
         std::vector<sign_set> terms;
@@ -198,7 +201,7 @@ private:
 
     // A polynomial of degree one in a single symbol with an interval domain takes its
     // extremes at the ends of the interval.
-    std::optional<std::pair<sign_set, std::string>> linear_in_bounded_symbol(const GiNaC::ex& e) const
+    std::optional<std::pair<sign_set, sign_reason>> linear_in_bounded_symbol(const GiNaC::ex& e) const
     {
         GiNaC::ex only;
         int count = 0;
@@ -339,15 +342,16 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
         const auto [s, why] = prover.sign(factor);
         const sign_set used = below ? reciprocal(s) : s;
         proof.sign = times(proof.sign, used);
-        proof.steps.push_back(below ? fmt::format("1/({}) {} ({})", given.text(factor), used.describe(), why)
-                                    : fmt::format("{} {} ({})", given.text(factor), used.describe(), why));
+        proof.steps.push_back({below ? 1 / factor : factor, used, why,
+                               below ? fmt::format("1/({}) {} ({})", given.text(factor), used.describe(), why.words)
+                                     : fmt::format("{} {} ({})", given.text(factor), used.describe(), why.words)});
     }
     if (!proof.sign.is_known()) {
         // The whole expression may still have a provable sign where its factors do not.
         const auto [s, why] = prover.sign(e);
         if (s.is_known()) {
             proof.sign = s;
-            proof.steps = {fmt::format("{} {} ({})", given.text(e), s.describe(), why)};
+            proof.steps = {{e, s, why, fmt::format("{} {} ({})", given.text(e), s.describe(), why.words)}};
         }
     }
     return proof;

@@ -15,6 +15,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,19 @@ struct sign_set {
 /// Domains by GiNaC symbol; a check may narrow the declared ones (e.g. ε ∈ [0, 1)).
 using domain_map = std::map<GiNaC::ex, domain, GiNaC::ex_is_less>;
 
+/// Why an expression has its sign. `words` says it ("an even power", "M in positive");
+/// where the sign comes from a symbol's declared domain, `declared` names the symbol and
+/// `domain` the domain, so that a printer can say so in its own way.
+struct sign_reason {
+    sign_reason() = default;
+    sign_reason(std::string text) : words(std::move(text)) {}   // NOLINT: a reason is its words
+    sign_reason(const char* text) : words(text) {}             // NOLINT
+
+    std::string words;
+    std::optional<GiNaC::ex> declared;
+    std::string domain;
+};
+
 /// What a proof may assume: the domains, and the order in which its text is written.
 struct assumptions {
     domain_map domains;
@@ -44,7 +58,7 @@ struct assumptions {
     /// What is already worked out under these domains: signs with their reasons, and
     /// radicals simplified. Domains narrowed (a check's `assuming`) need one of their own.
     struct worked_out {
-        std::map<GiNaC::ex, std::pair<sign_set, std::string>, GiNaC::ex_is_less> signs;
+        std::map<GiNaC::ex, std::pair<sign_set, sign_reason>, GiNaC::ex_is_less> signs;
         std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> radicals;
     };
     std::shared_ptr<worked_out> known = std::make_shared<worked_out>();
@@ -53,9 +67,18 @@ struct assumptions {
 /// The declared domains of a derivation's symbols.
 assumptions declared_assumptions(const symbol_table& symbols);
 
+/// One step of a sign proof: `factor` (a factor of the expression, or 1/factor for one
+/// of its denominator) has the sign `sign`, because `why`.
+struct sign_step {
+    GiNaC::ex factor;
+    sign_set sign;
+    sign_reason why;
+    std::string words;   ///< the step in one line: "1+eps > 0 (a sum of terms of one sign)"
+};
+
 struct sign_proof {
     sign_set sign;
-    std::vector<std::string> steps;   ///< one line per factor: "1 + eps > 0 (eps in [0, 1])"
+    std::vector<sign_step> steps;   ///< one per factor
 };
 
 /// The sign of `e` as far as it follows from `domains`.
