@@ -292,6 +292,16 @@ BOOST_AUTO_TEST_CASE(a_kernel_whose_inputs_do_not_cover_its_outputs)
                    "among its inputs");
 }
 
+BOOST_AUTO_TEST_CASE(two_derivations_whose_kernels_would_share_a_header)
+{
+    // good() names its kernel <id>_y; b's is renamed a_y, as a's is.
+    std::string second = good("b");
+    second.replace(second.find("name = \"b_y\""), 12, "name = \"a_y\"");
+    expect_refused({{"a.toml", good("a")}, {"b.toml", second}},
+                   "derivations/b.toml: error: the kernels of derivation 'b' would be written to "
+                   "kernels/impact/a_y.hpp, as those of 'a' are; give its kernel another name");
+}
+
 BOOST_AUTO_TEST_CASE(a_result_the_printers_cannot_write)
 {
     // sqrt(-1) derives, but no printer writes the imaginary unit: refused at the file.
@@ -341,7 +351,7 @@ BOOST_AUTO_TEST_CASE(a_derivation_failing_late_in_a_regeneration_leaves_the_prev
     s.write("derivations/b.toml", good("second", "first"));
     BOOST_TEST_REQUIRE(s.regenerate().status == 0);
     const auto before = snapshot(s.root / "output");
-    BOOST_TEST_REQUIRE(before.count("kernels/impact/second.hpp") == 1u);
+    BOOST_TEST_REQUIRE(before.count("kernels/impact/second_y.hpp") == 1u);
 
     // Derived last (it uses both others), after they have been derived: a singular system.
     s.write("derivations/c.toml", good("third", "second") + "[[symbol]]\nname = \"z\"\n"

@@ -187,10 +187,10 @@ BOOST_AUTO_TEST_CASE(forced_every_file_impact_did_not_write_is_kept_and_one_in_t
             BOOST_TEST((after[path] == bytes), path + " was not kept as it was");
     BOOST_TEST(after["errata.md.orig"] == "my own list of errata\n");
     BOOST_TEST(after["errata.md"].find("my own") == std::string::npos);
-    BOOST_TEST(p.has("docs/kernels/impact/first.hpp"));
+    BOOST_TEST(p.has("docs/kernels/impact/first_y.hpp"));
     // The marker lists Impact's files, and none of the user's.
     const std::string marker = after[".impact-output"];
-    BOOST_TEST(marker.find("\nkernels/impact/first.hpp\n") != std::string::npos, marker);
+    BOOST_TEST(marker.find("\nkernels/impact/first_y.hpp\n") != std::string::npos, marker);
     for (const char* users_file : {"thesis.tex", "errata.md.orig", "notes/ideas.md", "link.tex"})
         BOOST_TEST(marker.find(std::string("\n") + users_file + "\n") == std::string::npos, marker);
 
@@ -203,8 +203,8 @@ BOOST_AUTO_TEST_CASE(forced_every_file_impact_did_not_write_is_kept_and_one_in_t
         if (path != "errata.md")
             BOOST_TEST((after[path] == bytes), path + " was not kept as it was");
     BOOST_TEST(after["errata.md.orig"] == "my own list of errata\n");
-    BOOST_TEST(!p.has("docs/kernels/impact/first.hpp"));   // Impact's own, no longer written
-    BOOST_TEST(p.has("docs/kernels/impact/renamed.hpp"));
+    BOOST_TEST(!p.has("docs/kernels/impact/first_y.hpp"));   // Impact's own, no longer written
+    BOOST_TEST(p.has("docs/kernels/impact/renamed_y.hpp"));
 }
 
 BOOST_AUTO_TEST_CASE(forced_files_holding_what_impact_writes_are_taken_over_not_moved_aside)
@@ -214,18 +214,18 @@ BOOST_AUTO_TEST_CASE(forced_files_holding_what_impact_writes_are_taken_over_not_
     BOOST_TEST_REQUIRE(p.impact("kernels --output marked").status == 0);
     fs::create_directories(p.root / "unmarked");
     fs::copy(p.root / "marked" / "kernels", p.root / "unmarked" / "kernels", fs::copy_options::recursive);
-    p.write("unmarked/kernels/impact/first.hpp", "// a user's edit\n");
+    p.write("unmarked/kernels/impact/first_y.hpp", "// a user's edit\n");
     const run_result r = p.impact("kernels --output unmarked --force");
     BOOST_TEST_REQUIRE(r.status == 0, r.output);
     BOOST_TEST(lines_of(r.output) ==
-                   (std::vector<std::string>{"impact: moved aside, in unmarked: kernels/impact/first.hpp -> "
-                                             "kernels/impact/first.hpp.orig",
+                   (std::vector<std::string>{"impact: moved aside, in unmarked: kernels/impact/first_y.hpp -> "
+                                             "kernels/impact/first_y.hpp.orig",
                                              "impact: wrote 3 kernel headers to unmarked"}),
                boost::test_tools::per_element());
     BOOST_TEST((everything_under(p.root / "unmarked/kernels") ==
                 [&] {
                     auto expected = everything_under(p.root / "marked/kernels");
-                    expected["impact/first.hpp.orig"] = "// a user's edit\n";
+                    expected["impact/first_y.hpp.orig"] = "// a user's edit\n";
                     return expected;
                 }()));
 }
@@ -282,7 +282,7 @@ BOOST_AUTO_TEST_CASE(latex_kernels_and_simulate_replace_only_their_own_files)
     // Kernels and simulations go beside them, and take nothing away.
     BOOST_TEST(p.impact("kernels --output paper").status == 0);
     BOOST_TEST(p.impact("simulate --output paper").status == 0);
-    BOOST_TEST(p.has("paper/kernels/impact/first.hpp"));
+    BOOST_TEST(p.has("paper/kernels/impact/first_y.hpp"));
     BOOST_TEST(p.has("paper/billiard.dat"));
     const auto after = everything_under(p.root / "paper");
     for (const auto& [path, bytes] : before)
@@ -323,7 +323,7 @@ BOOST_AUTO_TEST_CASE(a_run_killed_while_writing_leaves_the_folder_as_it_was_and_
     const run_result next = p.impact("regenerate --force");
     BOOST_TEST(next.status == 0, next.output);
     BOOST_TEST(!p.has("output.impact-new"));
-    BOOST_TEST(p.has("output/kernels/impact/first.hpp"));
+    BOOST_TEST(p.has("output/kernels/impact/first_y.hpp"));
     const auto after = everything_under(p.root / "output");
     for (const auto& [path, bytes] : before)
         BOOST_TEST((after.at(path) == bytes), path);

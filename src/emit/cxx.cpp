@@ -677,7 +677,13 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
 
 std::string kernel_header_name(const engine::derivation& d)
 {
-    return d.id() + ".hpp";
+    if (d.kernels.size() != 1)
+        return d.id() + ".hpp";
+    const engine::kernel& k = d.kernels.front();
+    for (const engine::kernel_parameter& p : k.parameters)
+        if (p.is_array)
+            return fmt::format("{}_{}d.hpp", k.name, p.components.size());
+    return k.name + ".hpp";
 }
 
 std::string kernel_header(const engine::derivation& d, const std::vector<const kernel_plan*>& plans)
@@ -904,6 +910,7 @@ std::map<std::string, std::string> kernel_files(const engine::library& lib,
                                                 const std::vector<verify::kernel_plan>& plans)
 {
     std::map<std::string, std::string> files;
+    std::map<std::string, std::string> written_by;   // header → the derivation it is for
     std::vector<const engine::derivation*> with_kernels;
     std::vector<const verify::kernel_plan*> all;
     std::size_t next = 0;
@@ -915,7 +922,14 @@ std::map<std::string, std::string> kernel_files(const engine::library& lib,
         for (std::size_t i = 0; i < d->kernels.size(); ++i)
             own.push_back(&plans[next++]);
         all.insert(all.end(), own.begin(), own.end());
-        files["kernels/impact/" + kernel_header_name(*d)] = kernel_header(*d, own);
+        const std::string header = "kernels/impact/" + kernel_header_name(*d);
+        if (const auto taken = written_by.find(header); taken != written_by.end())
+            throw error({d->source.file, 0, 0},
+                        fmt::format("the kernels of derivation '{}' would be written to {}, as those of '{}' are; "
+                                    "give its kernel another name",
+                                    d->id(), header, taken->second));
+        written_by[header] = d->id();
+        files[header] = kernel_header(*d, own);
     }
     files["kernels/impact/common.hpp"] = common_header(all);
     files["kernels/impact/impact.hpp"] = umbrella_header(with_kernels);

@@ -1,6 +1,10 @@
 // C++ emitter: kernel plans → header-only C++17 kernels.
 //
-// Each derivation with kernels gets `impact/<id>.hpp`; `impact/common.hpp` holds what
+// Each derivation with kernels gets a header named after the function it defines
+// (`impact/collide_line.hpp`; `impact/collide_2d.hpp` and `collide_3d.hpp` for the overloads
+// of `collide` on arrays of 2 and 3 components; `impact/<id>.hpp` when it defines several
+// kernels), whose banner names the derivation file and the paper's equation;
+// `impact/common.hpp` holds what
 // kernels share (the status enum, the result and batch structures of array kernels
 // emitted in several dimensions), and `impact/impact.hpp` includes everything. The
 // arithmetic is the kernel plan's program, printed statement by statement
@@ -37,7 +41,8 @@ std::string cxx(const GiNaC::ex& e, const term_order& order);
 /// The header of one derivation's kernels; `plans` are those kernels' plans, in order.
 std::string kernel_header(const engine::derivation& d, const std::vector<const kernel_plan*>& plans);
 
-/// The file name of a derivation's kernel header.
+/// The file name of a derivation's kernel header: its kernel's name, with `_<N>d` when the
+/// kernel takes arrays of N components; the derivation's id when it has several kernels.
 std::string kernel_header_name(const engine::derivation& d);
 
 /// `impact/common.hpp`: the status enum and the structures array kernels share.

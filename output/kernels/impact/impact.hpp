@@ -3,8 +3,8 @@
 #pragma once
 
 #include "common.hpp"
-#include "inelastic_line.hpp"
+#include "collide_line.hpp"
 #include "energy_loss.hpp"
-#include "inelastic_plane.hpp"
+#include "collide_2d.hpp"
 #include "scatter_angle.hpp"
-#include "inelastic_space.hpp"
+#include "collide_3d.hpp"
