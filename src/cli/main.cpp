@@ -2,10 +2,10 @@
 //
 // Exit status: 0 when everything holds, 1 when a check failed, 2 on bad input
 // (a derivation file that cannot be read, with file, line and what is wrong).
-#include "emit/cxx.h"
-#include "engine/infix.h"
 #include "emit/latex.h"
+#include "emit/terminal.h"
 #include "engine/library.h"
+#include "pipeline/output_folder.h"
 #include "pipeline/regenerate.h"
 #include "simulate/command.h"
 #include "simulate/simulate.h"
@@ -17,7 +17,8 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <iostream>
+#include <filesystem>
+#include <string>
 
 namespace {
 
@@ -70,57 +71,11 @@ int run_regenerate(const options& o)
     return 0;
 }
 
-void print_derivation(const engine::derivation& d)
-{
-    const engine::term_order order = engine::declaration_order(d.symbols);
-    auto text = [&](const GiNaC::ex& e) { return engine::ginac_syntax(e, order); };
-    auto relation = [&](const GiNaC::ex& r) { return text(r.lhs()) + " = " + text(r.rhs()); };
-
-    fmt::print("{}: {}{}\n  from {}\n", d.id(), d.source.title.value,
-               d.source.paper ? " (" + d.source.paper->value + ")" : "", d.source.file);
-    fmt::print("\ngiven\n");
-    for (const engine::equation& g : d.givens)
-        fmt::print("  {:<14} {}    [{}]\n", g.name, relation(g.relation), g.because);
-    fmt::print("\nsteps\n");
-    for (std::size_t i = 0; i < d.steps.size(); ++i) {
-        const engine::step_result& s = d.steps[i];
-        fmt::print("  {}. {}\n", i + 1, s.description);
-        for (const auto& [symbol, value] : s.values)
-            fmt::print("       {} = {}\n", text(symbol), text(value));
-        if (s.yields)
-            fmt::print("       {}: {}\n", s.yields->name, relation(s.yields->relation));
-        for (const GiNaC::ex& a : s.assumptions)
-            fmt::print("       assuming {} != {}\n", text(a.lhs()), text(a.rhs()));
-        for (const engine::check_result& c : s.checks)
-            fmt::print("       {}: {}\n", c.name, engine::to_string(c.outcome));
-    }
-    fmt::print("\nresults\n");
-    for (const engine::result& r : d.results)
-        fmt::print("  {} = {}{}\n", r.name, text(r.display), r.paper.empty() ? "" : "    [" + r.paper + "]");
-    fmt::print("\nchecks\n");
-    for (const engine::check_result& c : d.checks) {
-        fmt::print("  {:<18} {}: {}\n", engine::to_string(c.outcome), c.name, c.statement);
-        if (!c.outcome.holds())
-            fmt::print("  {:<18} residual: {}\n", "", text(c.outcome.residual));
-    }
-    if (!d.paper_checks.empty()) {
-        fmt::print("\nthe paper, held to account\n");
-        for (const engine::paper_comparison& p : d.paper_checks) {
-            fmt::print("  {}: {} ({}): {}\n", p.paper, p.subject, engine::to_string(p.agreement),
-                       p.agrees() ? "agrees" : "DISAGREES");
-            if (!p.agrees())
-                fmt::print("      printed: {}\n      derived: {}\n", p.printed_text, text(p.derived));
-            for (const std::string& change : p.reconciliations)
-                fmt::print("      reconciled by: {}\n", change);
-        }
-    }
-}
-
 int run_derive(const options& o)
 {
     const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
-    print_derivation(d);
+    fmt::print("{}", emit::terminal_text(d));
     return d.all_hold() ? 0 : exit_failed_check;
 }
 

@@ -1,0 +1,57 @@
+#include "emit/terminal.h"
+
+#include "engine/infix.h"
+
+#include <fmt/format.h>
+
+namespace impact::emit {
+
+std::string terminal_text(const engine::derivation& d)
+{
+    std::string out;
+    const engine::term_order order = engine::declaration_order(d.symbols);
+    auto text = [&](const GiNaC::ex& e) { return engine::ginac_syntax(e, order); };
+    auto relation = [&](const GiNaC::ex& r) { return text(r.lhs()) + " = " + text(r.rhs()); };
+
+    out += fmt::format("{}: {}{}\n  from {}\n", d.id(), d.source.title.value,
+                       d.source.paper ? " (" + d.source.paper->value + ")" : "", d.source.file);
+    out += "\ngiven\n";
+    for (const engine::equation& g : d.givens)
+        out += fmt::format("  {:<14} {}    [{}]\n", g.name, relation(g.relation), g.because);
+    out += "\nsteps\n";
+    for (std::size_t i = 0; i < d.steps.size(); ++i) {
+        const engine::step_result& s = d.steps[i];
+        out += fmt::format("  {}. {}\n", i + 1, s.description);
+        for (const auto& [symbol, value] : s.values)
+            out += fmt::format("       {} = {}\n", text(symbol), text(value));
+        if (s.yields)
+            out += fmt::format("       {}: {}\n", s.yields->name, relation(s.yields->relation));
+        for (const GiNaC::ex& a : s.assumptions)
+            out += fmt::format("       assuming {} != {}\n", text(a.lhs()), text(a.rhs()));
+        for (const engine::check_result& c : s.checks)
+            out += fmt::format("       {}: {}\n", c.name, engine::to_string(c.outcome));
+    }
+    out += "\nresults\n";
+    for (const engine::result& r : d.results)
+        out += fmt::format("  {} = {}{}\n", r.name, text(r.display), r.paper.empty() ? "" : "    [" + r.paper + "]");
+    out += "\nchecks\n";
+    for (const engine::check_result& c : d.checks) {
+        out += fmt::format("  {:<18} {}: {}\n", engine::to_string(c.outcome), c.name, c.statement);
+        if (!c.outcome.holds())
+            out += fmt::format("  {:<18} residual: {}\n", "", text(c.outcome.residual));
+    }
+    if (!d.paper_checks.empty()) {
+        out += "\nthe paper, held to account\n";
+        for (const engine::paper_comparison& p : d.paper_checks) {
+            out += fmt::format("  {}: {} ({}): {}\n", p.paper, p.subject, engine::to_string(p.agreement),
+                               p.agrees() ? "agrees" : "DISAGREES");
+            if (!p.agrees())
+                out += fmt::format("      printed: {}\n      derived: {}\n", p.printed_text, text(p.derived));
+            for (const std::string& change : p.reconciliations)
+                out += fmt::format("      reconciled by: {}\n", change);
+        }
+    }
+    return out;
+}
+
+} // namespace impact::emit
