@@ -317,6 +317,62 @@ BOOST_AUTO_TEST_CASE(a_result_the_printers_cannot_write)
     BOOST_TEST((snapshot(s.root / "output") == before));
 }
 
+// y = 2*x derived (lines 10 to 18 after the prefix); what a case adds starts at line 19.
+const std::string derived = prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                                     "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n";
+
+BOOST_AUTO_TEST_CASE(a_field_misspelt_or_of_the_wrong_type)
+{
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y > 0\"\nbecuase = \"x > 0\"\n",
+                   "derivations/bad.toml:22:1: error: unknown field 'becuase' in [[check]]");
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = 3\n",
+                   "derivations/bad.toml:21:9: error: 'claim' in [[check]] must be a string");
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y > 0\"\nat = \"x = 1\"\n",
+                   "derivations/bad.toml:22:6: error: 'at' in [[check]] must be a table such as { eps = \"1\" }");
+    expect_refused(derived + "[[kernel]]\nname = \"k\"\ninputs = \"x\"\noutputs = [\"y = y\"]\n",
+                   "derivations/bad.toml:21:10: error: 'inputs' in [[kernel]] must be an array of strings");
+}
+
+BOOST_AUTO_TEST_CASE(two_entries_of_one_kind_with_one_name)
+{
+    expect_refused(derived + "[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:20:8: error: result 'y' is declared twice (first at line 18)");
+    // A check and a claim share verification.md, where the name tells them apart.
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y > 0\"\n"
+                             "[[claim]]\nname = \"c\"\nclaim = \"y = 2*x\"\npaper = \"Eq. 1\"\nquote = \"y = 2x\"\n",
+                   "derivations/bad.toml:23:8: error: check or claim 'c' is declared twice (first at line 20)");
+    // Two kernels of one name would be one C++ function defined twice.
+    expect_refused(derived + "[[kernel]]\nname = \"k\"\ninputs = [\"x\"]\noutputs = [\"y = y\"]\n"
+                             "[[kernel]]\nname = \"k\"\ninputs = [\"x\"]\noutputs = [\"y = y\"]\n",
+                   "derivations/bad.toml:24:8: error: kernel 'k' is declared twice (first at line 20)");
+}
+
+BOOST_AUTO_TEST_CASE(a_definition_outside_its_symbols_domain)
+{
+    // x > 0, so -x < 0: a positive w cannot be -x.
+    expect_refused(derived + "[[symbol]]\nname = \"w\"\ndomain = \"positive\"\ndefinition = \"-x\"\n",
+                   "derivations/bad.toml:22:14: error: 'w' is declared positive but its definition -x is < 0 "
+                   "under the declared domains; correct the domain or the definition");
+    expect_refused(derived + "[[symbol]]\nname = \"w\"\ndomain = \"[0, 1]\"\ndefinition = \"3/2\"\n",
+                   "derivations/bad.toml:22:14: error: 'w' is declared [0, 1] but its definition 3/2 is 1.5, "
+                   "outside it");
+}
+
+BOOST_AUTO_TEST_CASE(a_special_value_limit_or_assumption_outside_the_declared_domain)
+{
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y = -2\"\nat = { x = \"-1\" }\n",
+                   "derivations/bad.toml:22:12: error: x = -1 is outside the domain of x (positive): a special "
+                   "value must be one x can take, or an end of its domain");
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y = -2\"\nlimit = \"x -> -1\"\n",
+                   "derivations/bad.toml:22:9: error: x -> -1 approaches a point outside the domain of x (positive)");
+    expect_refused(derived + "[[symbol]]\nname = \"e\"\ndomain = \"[0, 1]\"\n"
+                             "[[check]]\nname = \"c\"\nclaim = \"y = 2*x\"\nlimit = \"e -> infinity\"\n",
+                   "derivations/bad.toml:25:9: error: e -> infinity leaves the domain of e ([0, 1])");
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y > 0\"\nassuming = { x = \"[-2, -1]\" }\n",
+                   "derivations/bad.toml:22:18: error: assuming x in [-2, -1] reaches outside its declared domain "
+                   "positive: an assumption may only narrow a domain");
+}
+
 BOOST_AUTO_TEST_CASE(an_empty_file)
 {
     expect_refused("", "derivations/bad.toml: error: file is empty");

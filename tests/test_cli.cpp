@@ -176,9 +176,35 @@ BOOST_AUTO_TEST_CASE(every_subcommand_has_help)
     }
 }
 
+BOOST_AUTO_TEST_CASE(a_derivation_file_is_derived_from_any_folder)
+{
+    // Run from the root folder, where there is no derivations/: the file's own folder
+    // holds the derivations it uses (Eq. 11 uses Eq. 8's results).
+    const fs::path file = source_dir / "derivations" / "eq11_energy_loss.toml";
+    const run_result r = impact::testing::run_command("cd / && exec " + std::string(IMPACT_BINARY) + " derive " +
+                                                      file.string() + " 2>&1");
+    BOOST_TEST(r.status == 0, r.output);
+    BOOST_TEST(r.output.rfind("energy_loss: ", 0) == 0, r.output);
+    const run_result missing = impact::testing::run_command("cd / && exec " + std::string(IMPACT_BINARY) +
+                                                            " derive energy_loss 2>&1");
+    BOOST_TEST(missing.status == 2);
+    BOOST_TEST(missing.output == "derivations: error: no such folder of derivation files; give one with "
+                                 "--derivations (or, to derive one file, its path)\n");
+}
+
+BOOST_AUTO_TEST_CASE(a_folder_without_derivation_files_is_an_error)
+{
+    const fs::path empty = fs::temp_directory_path() / ("impact-empty-" + std::to_string(::getpid()));
+    fs::create_directories(empty);
+    const run_result r = run("list --derivations " + empty.string());
+    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.output == empty.string() + ": error: holds no derivation files (*.toml)\n");
+    fs::remove_all(empty);
+}
+
 BOOST_AUTO_TEST_CASE(an_unknown_derivation_is_an_error)
 {
     const run_result r = run("derive no_such_thing --derivations " + (source_dir / "derivations").string());
     BOOST_TEST(r.status == 2);
-    BOOST_TEST(r.output.find("no derivation with id or file 'no_such_thing'") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("no_such_thing: error: no derivation has this id or file (impact list shows the ids)") != std::string::npos, r.output);
 }

@@ -208,7 +208,24 @@ BOOST_AUTO_TEST_CASE(bad_scenarios_are_refused_with_their_place)
         }
         BOOST_ERROR("accepted: " + text);
     };
-    refused("eps = 1.5\n" + spheres, "eps = 1.5 is outside [0, 1]");
+    refused("eps = 1.5\n" + spheres, "bad.toml:1:7: error: eps is 1.5, outside [0, 1]");
+    refused("eps = nan\n" + spheres, "bad.toml:1:7: error: eps is nan, not a finite number");
+    refused("eps = 1\nduration = -inf\n" + spheres, "bad.toml:2:12: error: the duration is -inf, not a finite number");
+    refused("eps = 1\nduration = 1e300\n" + spheres,
+            "bad.toml:2:12: error: the duration is 1e+300, beyond what the simulation computes with: a number "
+            "other than 0 must lie between 1e-100 and 1e+100 in magnitude");
+    refused("eps = 1\nsamples = 1e9\n" + spheres,
+            "bad.toml:2:11: error: samples = 1000000000 must be a whole number from 2 to 10000");
+    refused("eps = 1\nsamples = 2.5\n" + spheres, "samples = 2.5 must be a whole number");
+    std::string heavy = spheres;
+    heavy.replace(heavy.find("mass = 1"), 8, "mass = 1e-300");
+    refused("eps = 1\n" + heavy, "bad.toml:3:8: error: the mass of M is 1e-300, beyond what the simulation");
+    std::string far = spheres;
+    far.replace(far.find("[-3, 0]"), 7, "[-3e10, 0]");
+    refused("eps = 1\n" + far, "bad.toml:1:1: error: the spheres start 6e+10 radii apart (of the smaller sphere), "
+                                "more than the 1e+10 within which double precision places their contact");
+    refused("eps = 1\nduration = 1e11\n" + spheres,
+            "bad.toml:1:1: error: m travels 2e+11 radii (of the smaller sphere) in the duration 1e+11");
     refused("eps = 1\nspeed = 3\n" + spheres, "bad.toml:2:");
     refused("eps = 1\n" + spheres.substr(0, spheres.find("[m]")), "needs a table [m]");
     refused("eps = \"one\"\n" + spheres, "'eps' in the scenario must be a number");
@@ -290,12 +307,36 @@ BOOST_AUTO_TEST_CASE(simulate_says_when_the_spheres_never_touch)
 
 BOOST_AUTO_TEST_CASE(simulate_refuses_bad_options)
 {
-    const run_result r = run_impact("simulate --eps 2 --output /tmp");
-    BOOST_TEST(r.status == 2, r.output);
-    BOOST_TEST(r.output.find("eps = 2 is outside [0, 1]") != std::string::npos, r.output);
-    const run_result p = run_impact("simulate --velocity-m 1 --output /tmp");
-    BOOST_TEST(p.status == 2, p.output);
-    BOOST_TEST(p.output.find("'1' must be two numbers x,y") != std::string::npos, p.output);
+    // Each option's mistake: exit 2, one line naming the option, nothing written.
+    const scratch s;
+    const std::string out = (s.root / "out").string();
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"--eps 2", "--eps: error: eps is 2, outside [0, 1]"},
+        {"--eps -1e-16", "--eps: error: eps is -1e-16, outside [0, 1]"},
+        {"--velocity-m 1", "--velocity-m: error: '1' must be two numbers x,y"},
+        {"--velocity-m 1e300,0", "--velocity-m: error: the velocity of m is 1e+300, beyond what the simulation"},
+        {"--position-M 0,nan", "--position-M: error: the position of M is nan, not a finite number"},
+        {"--duration 1e300", "--duration: error: the duration is 1e+300, beyond what the simulation computes with"},
+        {"--duration 0", "--duration: error: the duration is 0, not positive"},
+        {"--duration inf", "--duration: error: the duration is inf, not a finite number"},
+        {"--mass-M -1", "--mass-M: error: the mass of M is -1, not positive"},
+        {"--mass-m 1e-300", "--mass-m: error: the mass of m is 1e-300, beyond what the simulation computes with"},
+        {"--radius-M 0", "--radius-M: error: the radius of M is 0, not positive"},
+        {"--radius-m 1e101", "--radius-m: error: the radius of m is 1e+101, beyond"},
+        {"--duration 1e12", "the command line: error: m travels 2e+12 radii (of the smaller sphere)"},
+        {"--name ../x", "the command line: error: scenario name '../x' must be letters, digits, - and _"},
+        // Mistakes the option parser finds are one line too, with exit status 2.
+        {"--eps abc", "impact: error: Could not convert: --eps = abc (impact --help lists the commands"},
+        {"--eps", "impact: error: --eps: 1 required FLOAT missing"},
+        {"--bogus 3", "impact: error: The following argument was not expected: --bogus"},
+    };
+    for (const auto& [options, message] : cases) {
+        const run_result r = run_impact("simulate --output " + out + " " + options);
+        BOOST_TEST(r.status == 2, options << ": " << r.output);
+        BOOST_TEST(r.output.rfind(message, 0) == 0, options << ": " << r.output);
+        BOOST_TEST(r.output.find('\n') == r.output.size() - 1, options << ": not one line: " << r.output);
+        BOOST_TEST(!fs::exists(out), options << ": wrote " << out);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

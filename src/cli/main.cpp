@@ -29,7 +29,7 @@ constexpr int exit_failed_check = 1;
 constexpr int exit_bad_input = 2;
 
 struct options {
-    std::string derivations = "derivations";
+    std::string derivations;   ///< empty: derivations/, or the folder of the file given
     std::string output = "output";
     std::string name;
     std::string file;
@@ -153,7 +153,8 @@ int main(int argc, char** argv)
     app.require_subcommand(1);
     options o;
     auto add_derivations = [&](CLI::App* command) {
-        command->add_option("--derivations", o.derivations, "folder of derivation files")->capture_default_str();
+        command->add_option("--derivations", o.derivations,
+                            "folder of derivation files (default: derivations, or the folder of the file given)");
     };
 
     CLI::App* regenerate = app.add_subcommand("regenerate", "derive everything and rewrite the output folder");
@@ -201,7 +202,25 @@ int main(int argc, char** argv)
     CLI::App* list = app.add_subcommand("list", "list the derivations");
     add_derivations(list);
 
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help and --version are answers, printed as CLI11 prints them; a mistake is
+        // one line, like every other error of Impact's, and exit status 2.
+        if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success))
+            return app.exit(e);
+        fmt::print(stderr, "impact: error: {} (impact --help lists the commands, impact <command> --help "
+                           "their options)\n",
+                   single_line(e.what()));
+        return exit_bad_input;
+    }
+    // `impact derive path/to/file.toml` reads the folder the file is in, where the
+    // derivations it uses are, so that it works from any folder.
+    if (o.derivations.empty())
+        o.derivations = fs::is_regular_file(o.name) ? fs::path(o.name).parent_path().lexically_normal().string()
+                                                    : std::string("derivations");
+    if (o.derivations.empty())
+        o.derivations = ".";
     // A file-size limit reached (`ulimit -f`) fails the write, reported like a full disk,
     // rather than killing the process.
     std::signal(SIGXFSZ, SIG_IGN);

@@ -1,5 +1,7 @@
 #include "engine/derive.h"
 
+#include "engine/declarations.h"
+
 #include "engine/reconcile.h"
 
 #include <fmt/format.h>
@@ -43,6 +45,7 @@ public:
         const spec::derivation& s = out_.source;
         for (const spec::symbol& declaration : s.symbols)
             out_.symbols.declare(declaration);
+        check_definitions(out_.symbols, s);
         for (const spec::use& u : s.uses)
             import(u);
         for (const spec::given& g : s.givens)
@@ -365,9 +368,10 @@ private:
 
         GiNaC::exmap at;
         for (const spec::binding& b : spec_check.at) {
-            const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
-            at[symbol] = out_.symbols.parse(b.expression);
-            c.at.emplace_back(symbol, at[symbol]);
+            const quantity& q = out_.symbols.at(b.name);
+            at[q.symbol] = out_.symbols.parse(b.expression);
+            check_special_value(q, at[q.symbol], b.expression.where);
+            c.at.emplace_back(q.symbol, at[q.symbol]);
         }
         if (!at.empty()) {
             try {
@@ -386,9 +390,9 @@ private:
         if (!spec_check.assuming.empty())
             given.known = std::make_shared<assumptions::worked_out>();
         for (const spec::binding& b : spec_check.assuming) {
-            const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
-            given.domains[symbol] = parse_domain(b.expression.value, b.expression.where);
-            c.assuming.emplace_back(symbol, given.domains[symbol].to_string());
+            const quantity& q = out_.symbols.at(b.name);
+            given.domains[q.symbol] = narrowed_domain(q, b.expression);
+            c.assuming.emplace_back(q.symbol, given.domains[q.symbol].to_string());
         }
 
         c.lhs = lhs;
@@ -480,12 +484,14 @@ private:
             return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
         };
         check_result::limit_point p;
-        p.symbol = out_.symbols.at({trim(text.value.substr(0, arrow)), text.where}).symbol;
+        const quantity& q = out_.symbols.at({trim(text.value.substr(0, arrow)), text.where});
+        p.symbol = q.symbol;
         const std::string point = trim(text.value.substr(arrow + 2));
         if (point == "infinity" || point == "oo")
             p.to_infinity = true;
         else
             p.point = out_.symbols.parse({point, text.where});
+        check_limit_point(q, p.point, p.to_infinity, text.where);
         return p;
     }
 

@@ -35,6 +35,55 @@ bool domain::is_nonnegative() const
     }
 }
 
+bool domain::contains(double x) const
+{
+    switch (what) {
+    case kind::real: return std::isfinite(x);
+    case kind::positive: return x > 0 && std::isfinite(x);
+    case kind::nonnegative: return x >= 0 && std::isfinite(x);
+    case kind::interval: break;
+    }
+    return (lower_open ? x > lower : x >= lower) && (upper_open ? x < upper : x <= upper);
+}
+
+bool domain::closure_contains(double x) const
+{
+    switch (what) {
+    case kind::real: return std::isfinite(x);
+    case kind::positive:
+    case kind::nonnegative: return x >= 0 && std::isfinite(x);
+    case kind::interval: break;
+    }
+    return x >= lower && x <= upper;
+}
+
+bool domain::within(const domain& outer) const
+{
+    // This domain's ends, as the lowest and highest values it takes (open or not).
+    double low = -INFINITY, high = INFINITY;
+    bool low_open = true, high_open = true;
+    switch (what) {
+    case kind::real: break;
+    case kind::positive: low = 0; break;
+    case kind::nonnegative: low = 0, low_open = false; break;
+    case kind::interval: low = lower, high = upper, low_open = lower_open, high_open = upper_open; break;
+    }
+    double outer_low = -INFINITY, outer_high = INFINITY;
+    bool outer_low_open = true, outer_high_open = true;
+    switch (outer.what) {
+    case kind::real: break;
+    case kind::positive: outer_low = 0; break;
+    case kind::nonnegative: outer_low = 0, outer_low_open = false; break;
+    case kind::interval:
+        outer_low = outer.lower, outer_high = outer.upper;
+        outer_low_open = outer.lower_open, outer_high_open = outer.upper_open;
+        break;
+    }
+    const bool low_inside = low > outer_low || (low == outer_low && (low_open || !outer_low_open));
+    const bool high_inside = high < outer_high || (high == outer_high && (high_open || !outer_high_open));
+    return low_inside && high_inside;
+}
+
 std::string domain::to_string() const
 {
     switch (what) {

@@ -24,6 +24,16 @@ struct domain {
     bool is_positive() const;
     bool is_nonnegative() const;
 
+    /// True when `x` lies in the domain, or on its closure (an open end included:
+    /// a special value or a limit may sit where the quantity itself never is).
+    bool contains(double x) const;
+    bool closure_contains(double x) const;
+    /// True when the domain reaches +infinity (a limit s -> infinity makes sense).
+    bool unbounded_above() const { return what != kind::interval; }
+    /// True when every value of this domain lies in `outer` (an assumption narrows a
+    /// declared domain and must stay inside it).
+    bool within(const domain& outer) const;
+
     /// The domain as written in a derivation file, e.g. `[0, 1]`.
     std::string to_string() const;
     /// The domain in LaTeX, e.g. `\in [0, 1]` or `> 0`.

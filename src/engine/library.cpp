@@ -24,13 +24,18 @@ bool library::all_hold() const
 
 std::vector<spec::derivation> read_directory(const std::filesystem::path& directory)
 {
+    if (!std::filesystem::exists(directory))
+        throw error({directory.string(), 0, 0}, "no such folder of derivation files; give one with --derivations "
+                                                "(or, to derive one file, its path)");
     if (!std::filesystem::is_directory(directory))
-        throw error({directory.string(), 0, 0}, "not a directory of derivation files");
+        throw error({directory.string(), 0, 0}, "not a folder of derivation files");
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(directory))
         if (entry.is_regular_file() && entry.path().extension() == ".toml")
             files.push_back(entry.path());
     std::sort(files.begin(), files.end());
+    if (files.empty())
+        throw error({directory.string(), 0, 0}, "holds no derivation files (*.toml)");
     std::vector<spec::derivation> sources;
     for (const auto& file : files)
         sources.push_back(spec::read_derivation(file.generic_string()));
@@ -91,7 +96,7 @@ std::string resolve_id(const std::vector<spec::derivation>& sources, const std::
         if (std::filesystem::equivalent(s.file, name, ignored))
             return s.id.value;
     }
-    throw error({}, fmt::format("no derivation with id or file '{}'", name));
+    throw error({name, 0, 0}, "no derivation has this id or file (impact list shows the ids)");
 }
 
 } // namespace impact::engine

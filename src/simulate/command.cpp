@@ -49,34 +49,44 @@ scenario default_scenario()
 scenario scenario_from(const command_options& o)
 {
     scenario s = o.file.empty() ? default_scenario() : read_scenario(o.file);
+    // Each number is checked as given, so that the message names its option.
+    auto take = [](const std::optional<double>& given, double& into, number_kind kind, const char* option,
+                   const char* what) {
+        if (!given)
+            return;
+        check_number(*given, kind, {option, 0, 0}, what);
+        into = *given;
+    };
+    auto take_pair = [](const std::optional<std::string>& given, vec2& into, const char* option, const char* what) {
+        if (!given)
+            return;
+        into = parse_pair(*given, option);
+        for (double x : into)
+            check_number(x, number_kind::coordinate, {fmt::format("--{}", option), 0, 0}, what);
+    };
     if (o.name)
         s.name = *o.name;
-    if (o.eps)
-        s.eps = *o.eps;
-    if (o.duration)
+    take(o.eps, s.eps, number_kind::restitution, "--eps", "eps");
+    if (o.duration) {
+        check_number(*o.duration, number_kind::positive, {"--duration", 0, 0}, "the duration");
         s.duration = *o.duration;
-    if (o.mass_M)
-        s.M.mass = *o.mass_M;
-    if (o.mass_m)
-        s.m.mass = *o.mass_m;
-    if (o.radius_M)
-        s.M.radius = *o.radius_M;
-    if (o.radius_m)
-        s.m.radius = *o.radius_m;
-    if (o.position_M)
-        s.M.position = parse_pair(*o.position_M, "position-M");
-    if (o.position_m)
-        s.m.position = parse_pair(*o.position_m, "position-m");
-    if (o.velocity_M)
-        s.M.velocity = parse_pair(*o.velocity_M, "velocity-M");
-    if (o.velocity_m)
-        s.m.velocity = parse_pair(*o.velocity_m, "velocity-m");
+    }
+    take(o.mass_M, s.M.mass, number_kind::positive, "--mass-M", "the mass of M");
+    take(o.mass_m, s.m.mass, number_kind::positive, "--mass-m", "the mass of m");
+    take(o.radius_M, s.M.radius, number_kind::positive, "--radius-M", "the radius of M");
+    take(o.radius_m, s.m.radius, number_kind::positive, "--radius-m", "the radius of m");
+    take_pair(o.position_M, s.M.position, "position-M", "the position of M");
+    take_pair(o.position_m, s.m.position, "position-m", "the position of m");
+    take_pair(o.velocity_M, s.M.velocity, "velocity-M", "the velocity of M");
+    take_pair(o.velocity_m, s.m.velocity, "velocity-m", "the velocity of m");
     // A name becomes a file name.
     for (char c : s.name)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
             throw error(s.where, fmt::format("scenario name '{}' must be letters, digits, - and _", s.name));
     if (s.name.empty())
         throw error(s.where, "the scenario name is empty");
+    if (s.name.size() > 64)
+        throw error(s.where, fmt::format("scenario name '{}...' is longer than 64 characters", s.name.substr(0, 16)));
     validate(s);
     return s;
 }

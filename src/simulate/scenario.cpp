@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -110,16 +111,22 @@ sphere read_sphere(const toml::table& table, const std::string& file, const std:
     table_reader in(table, file, "[" + name + "]");
     sphere s;
     s.mass = in.required_number("mass");
+    check_number(s.mass, number_kind::positive, in.where("mass"), "the mass of " + name);
     s.radius = in.required_number("radius");
+    check_number(s.radius, number_kind::positive, in.where("radius"), "the radius of " + name);
     s.position = in.pair("position");
     s.velocity = in.pair("velocity");
+    for (int i = 0; i < 2; ++i) {
+        check_number(s.position[i], number_kind::coordinate, in.where("position"), "the position of " + name);
+        check_number(s.velocity[i], number_kind::coordinate, in.where("velocity"), "the velocity of " + name);
+    }
     in.finish();
     return s;
 }
 
-bool finite(const vec2& v)
+double length(const vec2& v)
 {
-    return std::isfinite(v[0]) && std::isfinite(v[1]);
+    return std::hypot(v[0], v[1]);
 }
 
 } // namespace
@@ -138,9 +145,12 @@ scenario parse_scenario(const std::string& text, const std::string& file)
     if (const auto name = in.string("name"))
         s.name = *name;
     s.eps = in.required_number("eps");
+    check_number(s.eps, number_kind::restitution, in.where("eps"), "eps");
     s.duration = in.number("duration");
+    if (s.duration)
+        check_number(*s.duration, number_kind::positive, in.where("duration"), "the duration");
     if (const auto samples = in.number("samples"))
-        s.samples = static_cast<int>(*samples);
+        s.samples = checked_samples(*samples, in.where("samples"));
     s.M = read_sphere(in.table("M"), file, "M");
     s.m = read_sphere(in.table("m"), file, "m");
     in.finish();
@@ -158,26 +168,73 @@ scenario read_scenario(const std::string& path)
     return parse_scenario(text.str(), path);
 }
 
+void check_number(double value, number_kind kind, const source_location& where, const std::string& what)
+{
+    auto refuse = [&](const std::string& why) { throw error(where, fmt::format("{} is {}, {}", what, value, why)); };
+    if (!std::isfinite(value))
+        refuse("not a finite number");
+    switch (kind) {
+    case number_kind::restitution:
+        if (!(value >= 0 && value <= 1))
+            refuse("outside [0, 1] (0 is perfectly inelastic, 1 perfectly elastic)");
+        return;
+    case number_kind::positive:
+        if (!(value > 0))
+            refuse("not positive");
+        break;
+    case number_kind::coordinate:
+        if (value == 0)
+            return;
+        break;
+    }
+    if (std::fabs(value) > limits::largest || std::fabs(value) < limits::smallest)
+        refuse(fmt::format("beyond what the simulation computes with: a number other than 0 must lie between "
+                           "{:g} and {:g} in magnitude, so that its squares and products stay in double precision; "
+                           "choose units in which it does",
+                           limits::smallest, limits::largest));
+}
+
+int checked_samples(double value, const source_location& where)
+{
+    if (!(value >= limits::fewest_samples && value <= limits::most_samples) || value != std::floor(value))
+        throw error(where, fmt::format("samples = {} must be a whole number from {} to {} (a trajectory of more "
+                                       "points: pdflatex reads every point of its figure into memory, and takes about 20 s for 10000)",
+                                       value, limits::fewest_samples, limits::most_samples));
+    return static_cast<int>(value);
+}
+
 void validate(const scenario& s)
 {
     auto bad = [&](const std::string& what) { throw error(s.where, what); };
     for (const auto& [name, sp] : {std::pair<const char*, const sphere&>{"M", s.M}, {"m", s.m}}) {
-        if (!(sp.mass > 0) || !std::isfinite(sp.mass))
-            bad(fmt::format("the mass of {} must be a positive number", name));
-        if (!(sp.radius > 0) || !std::isfinite(sp.radius))
-            bad(fmt::format("the radius of {} must be a positive number", name));
-        if (!finite(sp.position) || !finite(sp.velocity))
-            bad(fmt::format("the position and velocity of {} must be finite numbers", name));
+        check_number(sp.mass, number_kind::positive, s.where, fmt::format("the mass of {}", name));
+        check_number(sp.radius, number_kind::positive, s.where, fmt::format("the radius of {}", name));
+        for (int i = 0; i < 2; ++i) {
+            check_number(sp.position[i], number_kind::coordinate, s.where, fmt::format("the position of {}", name));
+            check_number(sp.velocity[i], number_kind::coordinate, s.where, fmt::format("the velocity of {}", name));
+        }
     }
-    if (!(s.eps >= 0 && s.eps <= 1))
-        bad(fmt::format("eps = {} is outside [0, 1]", s.eps));
-    if (s.duration && !(*s.duration > 0 && std::isfinite(*s.duration)))
-        bad("the duration must be a positive number");
-    if (s.samples < 2 || s.samples > 100000)
-        bad("samples must be between 2 and 100000");
-    const double dx = s.M.position[0] - s.m.position[0], dy = s.M.position[1] - s.m.position[1];
-    if (std::hypot(dx, dy) < s.M.radius + s.m.radius)
+    check_number(s.eps, number_kind::restitution, s.where, "eps");
+    if (s.duration)
+        check_number(*s.duration, number_kind::positive, s.where, "the duration");
+    checked_samples(s.samples, s.where);
+    const vec2 apart{s.M.position[0] - s.m.position[0], s.M.position[1] - s.m.position[1]};
+    if (length(apart) < s.M.radius + s.m.radius)
         bad("the spheres overlap at the start");
+    // Double precision resolves a position to about 1e-16 of its size: the contact is
+    // placed within 1e-6 of a radius only while the scene spans at most 1e10 radii.
+    const double radius = std::min(s.M.radius, s.m.radius);
+    if (length(apart) / radius > limits::span_in_radii)
+        bad(fmt::format("the spheres start {:g} radii apart (of the smaller sphere), more than the {:g} within "
+                        "which double precision places their contact; bring them closer or make them larger",
+                        length(apart) / radius, limits::span_in_radii));
+    if (s.duration)
+        for (const auto& [name, sp] : {std::pair<const char*, const sphere&>{"M", s.M}, {"m", s.m}})
+            if (length(sp.velocity) * *s.duration / radius > limits::span_in_radii)
+                bad(fmt::format("{} travels {:g} radii (of the smaller sphere) in the duration {:g}, more than the "
+                                "{:g} within which double precision places the spheres; shorten the duration",
+                                name, length(sp.velocity) * *s.duration / radius, *s.duration,
+                                limits::span_in_radii));
 }
 
 } // namespace impact::simulate

@@ -27,6 +27,10 @@ vec2 moved(const vec2& from, const vec2& velocity, double t)
 
 std::string fixed(double value, int digits)
 {
+    // A scene in units where its numbers are very large or very small keeps its
+    // significant digits in scientific notation (which pgfplots reads too).
+    if (std::fabs(value) >= 1e6)
+        return fmt::format("{:.{}e}", value, digits);
     std::string text = fmt::format("{:.{}f}", value, digits);
     // -0.0000 and 0.0000 are the same number; write it one way.
     if (text.find_first_not_of("-0.") == std::string::npos && text[0] == '-')
@@ -107,8 +111,23 @@ trajectory run(const scenario& s)
     return path;
 }
 
+namespace {
+
+// Decimals that keep a scene's smallest radius and mass to four significant digits or
+// better: 4 for the paper's billiard balls (radius 0.5, mass 1), more for a scene in
+// units where they are small.
+int decimals(const scenario& s)
+{
+    const double smallest = std::min({s.M.radius, s.m.radius, s.M.mass, s.m.mass});
+    return 4 + std::max(0, static_cast<int>(std::ceil(-std::log10(smallest))) - 1);
+}
+
+} // namespace
+
 std::string table(const scenario& s, const trajectory& path)
 {
+    const int digits = decimals(s);
+    auto fixed = [digits](double x) { return simulate::fixed(x, digits); };
     std::string out = fmt::format("# Trajectories of scenario '{}': centres of M and m; eps = {}.\n", s.name,
                                   fixed(s.eps));
     out += "t x_M y_M x_m y_m\n";
@@ -120,8 +139,9 @@ std::string table(const scenario& s, const trajectory& path)
 
 namespace {
 
-std::string circle(const vec2& centre, double radius, const std::string& style)
+std::string circle(const vec2& centre, double radius, const std::string& style, int digits)
 {
+    auto fixed = [digits](double x) { return simulate::fixed(x, digits); };
     return fmt::format("  \\addplot[{}, domain=0:360, samples=73, variable=\\t] ({{{} + {}*cos(\\t)}}, "
                        "{{{} + {}*sin(\\t)}});\n",
                        style, fixed(centre[0]), fixed(radius), fixed(centre[1]), fixed(radius));
@@ -140,11 +160,11 @@ std::string figure(const scenario& s, const trajectory& path, const std::string&
     out += "  \\addlegendentry{$M$}\n";
     out += fmt::format("  \\addplot[red!70!black, thick, -stealth] table[x=x_m, y=y_m] {{{}}};\n", data);
     out += "  \\addlegendentry{$m$}\n";
-    out += circle(s.M.position, s.M.radius, "blue!70!black, densely dotted, forget plot");
-    out += circle(s.m.position, s.m.radius, "red!70!black, densely dotted, forget plot");
+    out += circle(s.M.position, s.M.radius, "blue!70!black, densely dotted, forget plot", decimals(s));
+    out += circle(s.m.position, s.m.radius, "red!70!black, densely dotted, forget plot", decimals(s));
     if (path.hit) {
-        out += circle(path.hit->C_M, s.M.radius, "blue!70!black, forget plot");
-        out += circle(path.hit->C_m, s.m.radius, "red!70!black, forget plot");
+        out += circle(path.hit->C_M, s.M.radius, "blue!70!black, forget plot", decimals(s));
+        out += circle(path.hit->C_m, s.m.radius, "red!70!black, forget plot", decimals(s));
     }
     out += "\\end{axis}\n\\end{tikzpicture}\n";
     return out;
@@ -152,7 +172,9 @@ std::string figure(const scenario& s, const trajectory& path, const std::string&
 
 std::string summary(const scenario& s, const trajectory& path)
 {
-    auto v = [](const vec2& x) { return fmt::format("({}, {})", fixed(x[0]), fixed(x[1])); };
+    const int digits = decimals(s);
+    auto fixed = [digits](double x) { return simulate::fixed(x, digits); };
+    auto v = [&](const vec2& x) { return fmt::format("({}, {})", fixed(x[0]), fixed(x[1])); };
     std::string out = fmt::format("scenario {}: M = {}, m = {}, eps = {}, simulated for t in [0, {}]\n", s.name,
                                   fixed(s.M.mass), fixed(s.m.mass), fixed(s.eps), fixed(path.duration));
     if (!path.hit) {

@@ -356,6 +356,34 @@ use read_use(table_reader& in)
     return u;
 }
 
+// A name identifies its entry in the output (a line of verification.md, a kernel's
+// function): two entries of one kind with one name would be confused, or not compile.
+void refuse_twice(const std::vector<const text*>& names, std::string_view what)
+{
+    for (std::size_t i = 0; i < names.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (names[i]->value == names[j]->value)
+                throw error(names[i]->where, fmt::format("{} '{}' is declared twice (first at line {})", what,
+                                                         names[i]->value, names[j]->where.line));
+}
+
+void check_names(const derivation& d)
+{
+    std::vector<const text*> results, checks, kernels;
+    for (const result& r : d.results)
+        results.push_back(&r.name);
+    // Checks and claims share verification.md, where the name tells them apart.
+    for (const check& c : d.checks)
+        checks.push_back(&c.name);
+    for (const claim& c : d.claims)
+        checks.push_back(&c.test.name);
+    for (const kernel& k : d.kernels)
+        kernels.push_back(&k.name);
+    refuse_twice(results, "result");
+    refuse_twice(checks, "check or claim");
+    refuse_twice(kernels, "kernel");
+}
+
 // Reads every entry of an array of tables with `read`.
 template <class T, class Read>
 std::vector<T> read_all(table_reader& top, const std::string& file, std::string_view key, Read read)
@@ -403,6 +431,7 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     d.claims = read_all<claim>(top, file, "claim", read_claim);
     d.kernels = read_all<kernel>(top, file, "kernel", read_kernel);
     top.finish();
+    check_names(d);
 
     if (d.results.empty())
         throw error(top.where(), "the derivation declares no [[result]]");

@@ -1,0 +1,32 @@
+// What a derivation file declares must agree with itself: a definition takes values its
+// symbol's domain allows, a special value (`at`) or a limit point lies where its symbol
+// can be, and an assumption (`assuming`) narrows a domain rather than leaving it.
+//
+// Each disagreement is a mistake in the file, reported as an error at the place it is
+// written, before any check is run on a premise that cannot hold.
+#pragma once
+
+#include "engine/domain.h"
+#include "engine/symbols.h"
+#include "spec/derivation.h"
+
+#include <ginac/ginac.h>
+
+namespace impact::engine {
+
+/// Every `[[symbol]]` with both a `definition` and a domain other than `real`: the
+/// definition's sign, proven from the other symbols' domains, must not contradict it
+/// (a positive `w` defined as `-x` with `x` positive is refused).
+void check_definitions(const symbol_table& symbols, const spec::derivation& source);
+
+/// `at = { x = "value" }`: a numeric value must lie in the closure of x's domain.
+void check_special_value(const quantity& q, const GiNaC::ex& value, const source_location& where);
+
+/// `limit = "x -> point"`: a numeric point must lie in the closure of x's domain, and
+/// `infinity` needs a domain unbounded above.
+void check_limit_point(const quantity& q, const GiNaC::ex& point, bool to_infinity, const source_location& where);
+
+/// `assuming = { x = "domain" }`: the domain, which must lie inside x's declared one.
+domain narrowed_domain(const quantity& q, const spec::text& written);
+
+} // namespace impact::engine
