@@ -167,7 +167,10 @@ struct derivation {
 using derived_by_id = std::map<std::string, derivation>;
 
 /// Runs one derivation. Bad input throws `impact::error`; a failed check does not throw
-/// but is recorded (see `derivation::all_hold`).
+/// but is recorded (see `derivation::all_hold`). What its proofs work out is kept in
+/// `run`, for the derivations run after it with the same cache.
+derivation derive(const spec::derivation& source, const derived_by_id& done, proof_cache& run);
+/// Runs one derivation with a cache of its own, gone when it returns.
 derivation derive(const spec::derivation& source, const derived_by_id& done);
 
 } // namespace impact::engine
