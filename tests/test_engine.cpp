@@ -399,6 +399,39 @@ BOOST_AUTO_TEST_CASE(a_derivation_run_after_another_in_one_cache_reaches_the_ver
 
 BOOST_AUTO_TEST_SUITE_END()
 
+BOOST_AUTO_TEST_SUITE(written_forms)
+
+BOOST_AUTO_TEST_CASE(every_expression_read_from_the_file_carries_how_it_was_written)
+{
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"w\"\ndefinition = \"(1 - eps)*x\"\n"
+        "[[given]]\nname = \"g\"\nequation = \"y = (1 - eps)*x\"\nbecause = \"given\"\nprinted = \"y = x*(1 - eps)\"\n"
+        "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n"
+        "[[step]]\ndefine = \"z\"\nas = \"(1 - eps)*y\"\n"
+        "[[result]]\nname = \"z\"\ndisplay = \"(1 - eps)^2*x\"\n"
+        "[[check]]\nname = \"c\"\nclaim = \"z <= (1 - eps)*x\"\n"));
+    const GiNaC::ex eps = sym(d, "eps"), y = sym(d, "y");
+    // The sum 1 - eps is written that way round wherever the file writes it, and the
+    // product (1 - eps)*x with (1 - eps) first.
+    const GiNaC::ex one_less_eps = 1 - eps;
+    BOOST_TEST((d.symbols.find("w")->written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.givens.at(0).written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.paper_checks.at(0).written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.results.at(0).written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.checks.back().written.as_written(one_less_eps) == std::optional<bool>(true)));
+    const engine::step_result& define = d.steps.at(1);
+    BOOST_TEST_REQUIRE(define.as_written.has_value());
+    BOOST_TEST(equal(*define.as_written, (1 - eps) * y));   // before y's value is substituted
+    const auto* product = define.written.best_product({{one_less_eps, 1}, {y, 1}});
+    BOOST_TEST_REQUIRE(product);
+    BOOST_TEST_REQUIRE(product->factors.size() == 2u);
+    BOOST_TEST(product->factors[0].base.is_equal(one_less_eps));
+    BOOST_TEST(product->factors[1].base.is_equal(y));
+    BOOST_TEST(d.steps.at(0).written.empty());   // a solve step writes no expression
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
 BOOST_AUTO_TEST_SUITE(bad_input)
 
 BOOST_AUTO_TEST_CASE(an_undeclared_symbol_is_named_with_its_line)

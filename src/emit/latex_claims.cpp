@@ -96,14 +96,6 @@ std::string breakable(const std::string& text)
 
 namespace detail {
 
-const spec::check* fragment_writer::spec_check(const std::string& name) const
-{
-    for (const spec::check& c : d_.source.checks)
-        if (c.name.value == name)
-            return &c;
-    return nullptr;
-}
-
 // How a check was established, in words and math: the sign of each factor for an
 // inequality, the method of a limit, the sample size when not proven.
 std::string fragment_writer::how(const engine::check_result& c) const
@@ -187,9 +179,7 @@ std::string fragment_writer::checks() const
                                status_text(c.outcome), q ? math(q->symbol) : latex_text(name), where);
             continue;
         }
-        written_form w;
-        if (const spec::check* source = spec_check(c.name))
-            w = written(source->claim.value);
+        const written_form& w = c.written;
         out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), latex_text(words(c.name)));
         const std::string inline_math = claim_math(c, order_, &w);
         const bool shown = wants_display(inline_math);
@@ -253,7 +243,7 @@ std::string fragment_writer::paper() const
         if (p.what == engine::paper_comparison::kind::claim) {
             out += fmt::format("``{}''", breakable(latex_text(p.printed_text)));
         } else {
-            const written_form w = written(p.printed_text);
+            const written_form& w = p.written;
             out += "printed " + form(p.printed, &w);
             after_display = displayed(p.printed, &w);
         }
@@ -294,7 +284,7 @@ std::string fragment_writer::errata_rows() const
         if (p.what == engine::paper_comparison::kind::claim) {
             printed = "``" + breakable(latex_text(p.printed_text)) + "''";
         } else {
-            const written_form w = written(p.printed_text);
+            const written_form& w = p.written;
             printed = cell(p.printed, &w, 122);
         }
         std::string change = "---";

@@ -97,11 +97,6 @@ std::string fragment_writer::write()
     return out;
 }
 
-written_form fragment_writer::written(const std::string& text) const
-{
-    return written_form::read(text, [this](const std::string& piece) { return d_.symbols.parse({piece, {}}); });
-}
-
 std::string fragment_writer::math(const GiNaC::ex& e, const written_form* w) const
 {
     return latex(e, order_, w);
@@ -146,35 +141,18 @@ std::string fragment_writer::ref(const std::string& equation) const
     return fmt::format("\\eqref{{{}:{}}}", latex_label(d_), equation);
 }
 
-const spec::result* fragment_writer::spec_result(const std::string& name) const
-{
-    for (const spec::result& r : d_.source.results)
-        if (r.name.value == name)
-            return &r;
-    return nullptr;
-}
-
 std::string fragment_writer::quantities() const
 {
     std::string out = "\n\\paragraph{Quantities.}\n\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
     for (const engine::quantity& q : d_.symbols.all()) {
         if (q.definition) {
-            const written_form w = written(definition_text(q));
-            out += fmt::format("\\item ${} = {}$", math(q.symbol), math(*q.definition, &w));
+            out += fmt::format("\\item ${} = {}$", math(q.symbol), math(*q.definition, &q.written));
         } else {
             out += fmt::format("\\item ${} {}$", math(q.symbol), q.range.to_latex());
         }
         out += q.meaning.empty() ? "\n" : ": " + latex_text(q.meaning) + "\n";
     }
     return out + "\\end{itemize}\n";
-}
-
-std::string fragment_writer::definition_text(const engine::quantity& q) const
-{
-    for (const spec::symbol& s : d_.source.symbols)
-        if (s.name.value == q.name && s.definition)
-            return s.definition->value;
-    return "";
 }
 
 std::string fragment_writer::givens() const
@@ -184,18 +162,13 @@ std::string fragment_writer::givens() const
     std::string out = "\n\\paragraph{Given.}\n";
     for (std::size_t i = 0; i < d_.givens.size(); ++i) {
         const engine::equation& g = d_.givens[i];
-        const spec::given* source = nullptr;
-        for (const spec::given& s : d_.source.givens)
-            if (s.name.value == g.name)
-                source = &s;
-        const written_form w = source ? written(source->equation.value) : written_form();
         const std::string why = capitalised(latex_text(g.because)) +
                                 (g.paper.empty() ? "" : " (" + paper_text(g.paper) + ")") + ":";
         if (i == 0)
             out += why + "\n\\begin{align}\n";
         else
             out += fmt::format("\\intertext{{{}}}\n", why);
-        out += rows(math(g.relation.lhs(), &w), g.relation.rhs(), &w,
+        out += rows(math(g.relation.lhs(), &g.written), g.relation.rhs(), &g.written,
                     fmt::format("\\tag{{{}}}\\label{{{}:{}}}", tags_.at(g.name), latex_label(d_), g.name));
         out += i + 1 < d_.givens.size() ? " \\\\\n" : "\n";
     }
@@ -222,7 +195,7 @@ std::string fragment_writer::steps() const
         out += "\\item ";
         switch (s.what) {
         case spec::step::kind::solve: out += solve_step(s, source, because); break;
-        case spec::step::kind::define: out += define_step(s, source, because); break;
+        case spec::step::kind::define: out += define_step(s, because); break;
         case spec::step::kind::quotient: out += quotient_step(s, source, because); break;
         case spec::step::kind::rearrange: out += rearrange_step(s, source, because); break;
         }
@@ -256,22 +229,14 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
     return out;
 }
 
-std::string fragment_writer::define_step(const engine::step_result& s, const spec::step* source,
-                                         const std::string& because) const
+std::string fragment_writer::define_step(const engine::step_result& s, const std::string& because) const
 {
     std::string out;
     for (const auto& [symbol, value] : s.values) {
         out += fmt::format("Defining ${}${}:\n\\begin{{align*}}\n", math(symbol), because);
         // The definition as written, then what it comes to when that differs.
-        std::optional<GiNaC::ex> as_written;
-        written_form w;
-        if (source) {
-            w = written(source->expression.value);
-            try {
-                as_written = d_.symbols.parse(source->expression);
-            } catch (const std::exception&) {
-            }
-        }
+        const std::optional<GiNaC::ex>& as_written = s.as_written;
+        const written_form& w = s.written;
         if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value))
             out += rows(math(symbol), *as_written, &w, "") + " \\\\\n" +
                    rows("", value, nullptr, "", "=", latex_width(math(symbol))) + "\n";
@@ -290,7 +255,8 @@ std::string fragment_writer::yields(const engine::step_result& s) const
         return "";
     const std::string tag =
         fmt::format("\\tag{{{}}}\\label{{{}:{}}}", tags_.at(s.yields->name), latex_label(d_), s.yields->name);
-    return "\\begin{align}\n" + rows(math(s.yields->relation.lhs()), s.yields->relation.rhs(), nullptr, tag) +
+    const written_form& w = s.yields->written;   // a rearranged form as the file writes it
+    return "\\begin{align}\n" + rows(math(s.yields->relation.lhs(), &w), s.yields->relation.rhs(), &w, tag) +
            "\n\\end{align}\n";
 }
 
@@ -315,15 +281,7 @@ std::string fragment_writer::rearrange_step(const engine::step_result& s, const 
                                             const std::string& because) const
 {
     std::string out = fmt::format("Rearranging {}{} gives\n", source ? ref(source->source.value) : "", because);
-    if (s.yields && source) {
-        const written_form w = written(source->expression.value);
-        const std::string tag =
-            fmt::format("\\tag{{{}}}\\label{{{}:{}}}", tags_.at(s.yields->name), latex_label(d_), s.yields->name);
-        out += "\\begin{align}\n" + rows(math(s.yields->relation.lhs(), &w), s.yields->relation.rhs(), &w, tag) +
-               "\n\\end{align}\n";
-    } else {
-        out += yields(s);
-    }
+    out += yields(s);
     for (const engine::check_result& c : s.checks)
         out += fmt::format("Equivalent to {}: {}.\n", ref(source ? source->source.value : ""),
                            status_text(c.outcome));
@@ -351,11 +309,10 @@ std::string fragment_writer::results() const
                 t += static_cast<char>('a' + next_letter[r.paper]++);
             tag = fmt::format("\\tag{{{}}}", latex_text(t));
         }
-        const spec::result* source = spec_result(r.name);
-        const written_form w = source && source->display ? written(source->display->value) : written_form();
         if (!r.paper.empty())
             tag += fmt::format("\\label{{{}:result:{}}}", latex_label(d_), r.name);
-        out += rows(math(r.symbol), r.display, &w, tag, "=", widest) + (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
+        out += rows(math(r.symbol), r.display, &r.written, tag, "=", widest) +
+               (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
     }
     return out + "\\end{align}\n";
 }

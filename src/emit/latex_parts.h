@@ -79,20 +79,17 @@ public:
 
 private:
     // latex_fragment.cpp: the printing shared by every part, and the derivation itself.
-    written_form written(const std::string& text) const;
     std::string math(const GiNaC::ex& e, const written_form* w = nullptr) const;
     std::string relation_math(const GiNaC::ex& r, const written_form* w = nullptr) const;
     std::string rows(const std::string& lhs, const GiNaC::ex& rhs, const written_form* w, const std::string& tag,
                      const char* relation = "=", double align_at = -1) const;
     std::string ref(const std::string& equation) const;
-    const spec::result* spec_result(const std::string& name) const;
     std::string quantities() const;
-    std::string definition_text(const engine::quantity& q) const;
     std::string givens() const;
     std::string step_checks(const engine::step_result& s) const;
     std::string steps() const;
     std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
-    std::string define_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
+    std::string define_step(const engine::step_result& s, const std::string& because) const;
     std::string yields(const engine::step_result& s) const;
     std::string quotient_step(const engine::step_result& s, const spec::step* source,
                               const std::string& because) const;
@@ -101,7 +98,6 @@ private:
     std::string results() const;
 
     // latex_claims.cpp: the checks and the paper held to account.
-    const spec::check* spec_check(const std::string& name) const;
     std::string how(const engine::check_result& c) const;
     std::string sign_text(const engine::sign_step& step) const;
     std::string limit_text(const engine::limit_method& how) const;

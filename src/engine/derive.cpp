@@ -97,6 +97,13 @@ private:
 
     GiNaC::ex symbol_of(const spec::text& name) const { return out_.symbols.at(name).symbol; }
 
+    // How `text` is written, read here once for the printers, which never read the file.
+    written_form written(const spec::text& text) const
+    {
+        return written_form::read(text.value,
+                                  [this](const std::string& piece) { return out_.symbols.parse({piece, {}}); });
+    }
+
     // `[[use]]`: results of an earlier derivation, expressed in this one's symbols.
     void import(const spec::use& u)
     {
@@ -131,7 +138,7 @@ private:
         if (find_equation(g.name.value))
             throw error(g.name.where, fmt::format("equation '{}' is defined twice", g.name.value));
         equations_.push_back({g.name.value, out_.symbols.parse_equation(g.equation), g.because.value,
-                              g.paper ? g.paper->value : std::string(), g.equation.where});
+                              g.paper ? g.paper->value : std::string(), g.equation.where, written(g.equation)});
         out_.givens.push_back(equations_.back());
         if (g.printed) {
             // The paper's printing of a given equation must be equivalent to it.
@@ -141,6 +148,7 @@ private:
             p.paper = g.paper ? g.paper->value : std::string();
             p.printed_text = g.printed->value;
             p.printed = out_.symbols.parse_equation(*g.printed);
+            p.written = written(*g.printed);
             p.derived = equations_.back().relation;
             p.agreement = prove_equivalent(p.printed, p.derived, out_.symbols, run_);
             if (!p.agrees())
@@ -249,7 +257,9 @@ private:
         if (values_.count(s))
             throw error(st.name.where, fmt::format("'{}' is already derived by an earlier step", st.name.value));
         // Radicals of squares come out by the declared signs: sqrt(u^2) = u for u >= 0.
-        const GiNaC::ex value = simplified(resolve(out_.symbols.parse(st.expression)), declared_assumptions(out_.symbols, run_));
+        r.as_written = out_.symbols.parse(st.expression);
+        r.written = written(st.expression);
+        const GiNaC::ex value = simplified(resolve(*r.as_written), declared_assumptions(out_.symbols, run_));
         set_value(s, value);
         r.values.emplace_back(s, value);
     }
@@ -287,14 +297,15 @@ private:
         c.outcome = prove_equivalent(c.lhs, c.rhs, out_.symbols, run_);
         c.where = st.expression.where;
         r.checks.push_back(c);
-        add_step_equation(st.name, into, r);
+        add_step_equation(st.name, into, r, written(st.expression));
     }
 
-    void add_step_equation(const spec::text& name, const GiNaC::ex& relation, step_result& r)
+    void add_step_equation(const spec::text& name, const GiNaC::ex& relation, step_result& r,
+                           written_form as_written = {})
     {
         if (find_equation(name.value))
             throw error(name.where, fmt::format("equation '{}' is defined twice", name.value));
-        equation e{name.value, relation, r.description, "", name.where};
+        equation e{name.value, relation, r.description, "", name.where, std::move(as_written)};
         equations_.push_back(e);
         r.yields = e;
     }
@@ -314,6 +325,7 @@ private:
         r.paper = spec_result.paper ? spec_result.paper->value : std::string();
         if (spec_result.display) {
             r.display = out_.symbols.parse(*spec_result.display);
+            r.written = written(*spec_result.display);
             check_result c;
             c.name = fmt::format("display form of {}", q.name);
             c.display_of = q.name;
@@ -332,6 +344,7 @@ private:
             p.paper = r.paper;
             p.printed_text = spec_result.printed->value;
             p.printed = out_.symbols.parse(*spec_result.printed);
+            p.written = written(*spec_result.printed);
             p.derived = r.value;
             p.agreement = prove_equal(resolve(p.printed), r.value, out_.symbols, run_);
             if (!p.agrees())
@@ -350,6 +363,7 @@ private:
         c.because = spec_check.because.value;
         c.where = spec_check.claim.where;
         const claim_sides sides = out_.symbols.parse_claim(spec_check.claim);
+        c.written = written(spec_check.claim);
         c.op = sides.op;
         c.stated = sides.lhs == sides.rhs;
         GiNaC::ex lhs = resolve(sides.lhs), rhs = resolve(sides.rhs);
