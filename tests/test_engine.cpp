@@ -334,6 +334,104 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
 
 BOOST_AUTO_TEST_SUITE_END()
 
+BOOST_AUTO_TEST_SUITE(proof_cache)
+
+// An inequality proven from its factors' signs and one refuted: both fill a cache.
+const std::string signs_of_factors = derivation_text(
+    "[[step]]\ndefine = \"y\"\nas = \"-(1 - eps^2)*x*z^2\"\n[[result]]\nname = \"y\"\n"
+    "[[check]]\nname = \"never_positive\"\nclaim = \"y <= 0\"\n"
+    "[[check]]\nname = \"with_z\"\nclaim = \"y*z <= 0\"\n"
+    "[[check]]\nname = \"at_infinity\"\nclaim = \"x/sqrt(x^2 + 4) = 1\"\nlimit = \"x -> infinity\"\n");
+
+engine::derivation derive_with(const std::string& text, engine::proof_cache& run)
+{
+    return engine::derive(spec::parse_derivation(text, "test.toml"), {}, run);
+}
+
+BOOST_AUTO_TEST_CASE(a_cache_is_empty_when_made_and_holds_what_its_run_worked_out)
+{
+    engine::proof_cache run;
+    BOOST_TEST(run.empty());
+    const engine::derivation d = derive_with(signs_of_factors, run);
+    BOOST_TEST(!run.empty());
+    BOOST_TEST(!run.factored.empty());          // -(1 - eps^2)*x*z^2 factored
+    // x > 0 was read from its declared domain, and kept with its reason.
+    const auto x = run.declared->signs.find(sym(d, "x"));
+    BOOST_TEST_REQUIRE((x != run.declared->signs.end()));
+    BOOST_TEST(x->second.first.describe() == "> 0");
+}
+
+BOOST_AUTO_TEST_CASE(two_runs_with_caches_of_their_own_share_nothing_and_reach_the_same_verdicts)
+{
+    engine::proof_cache first;
+    const engine::derivation one = derive_with(signs_of_factors, first);
+    const std::size_t factored = first.factored.size();
+    const std::size_t signs = first.declared->signs.size();
+
+    engine::proof_cache second;
+    const engine::derivation other = derive_with(signs_of_factors, second);
+    // The second run found nothing in its cache and left the first one's alone.
+    BOOST_TEST(!second.empty());
+    BOOST_TEST(first.factored.size() == factored);
+    BOOST_TEST(first.declared->signs.size() == signs);
+    // Nothing of the first run's symbols is in the second run's cache.
+    BOOST_TEST(second.declared->signs.count(sym(one, "x")) == 0u);
+    BOOST_TEST(second.declared->signs.count(sym(other, "x")) == 1u);
+
+    for (const engine::derivation* d : {&one, &other}) {
+        BOOST_TEST(engine::to_string(check_named(*d, "never_positive").outcome) == "proven");
+        BOOST_TEST(engine::to_string(check_named(*d, "with_z").outcome) == "failed");  // z of either sign
+        BOOST_TEST(engine::to_string(check_named(*d, "at_infinity").outcome) == "proven");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_derivation_run_after_another_in_one_cache_reaches_the_verdicts_it_reaches_alone)
+{
+    engine::proof_cache shared;
+    derive_with(derivation_text("[[step]]\ndefine = \"y\"\nas = \"(1 - eps)*x\"\n[[result]]\nname = \"y\"\n"
+                                "[[check]]\nname = \"nonnegative\"\nclaim = \"y >= 0\"\n"),
+                shared);
+    const engine::derivation after = derive_with(signs_of_factors, shared);
+    BOOST_TEST(engine::to_string(check_named(after, "never_positive").outcome) == "proven");
+    BOOST_TEST(engine::to_string(check_named(after, "with_z").outcome) == "failed");
+    BOOST_TEST(engine::to_string(check_named(after, "at_infinity").outcome) == "proven");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(written_forms)
+
+BOOST_AUTO_TEST_CASE(every_expression_read_from_the_file_carries_how_it_was_written)
+{
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"w\"\ndefinition = \"(1 - eps)*x\"\n"
+        "[[given]]\nname = \"g\"\nequation = \"y = (1 - eps)*x\"\nbecause = \"given\"\nprinted = \"y = x*(1 - eps)\"\n"
+        "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n"
+        "[[step]]\ndefine = \"z\"\nas = \"(1 - eps)*y\"\n"
+        "[[result]]\nname = \"z\"\ndisplay = \"(1 - eps)^2*x\"\n"
+        "[[check]]\nname = \"c\"\nclaim = \"z <= (1 - eps)*x\"\n"));
+    const GiNaC::ex eps = sym(d, "eps"), y = sym(d, "y");
+    // The sum 1 - eps is written that way round wherever the file writes it, and the
+    // product (1 - eps)*x with (1 - eps) first.
+    const GiNaC::ex one_less_eps = 1 - eps;
+    BOOST_TEST((d.symbols.find("w")->written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.givens.at(0).written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.paper_checks.at(0).written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.results.at(0).written.as_written(one_less_eps) == std::optional<bool>(true)));
+    BOOST_TEST((d.checks.back().written.as_written(one_less_eps) == std::optional<bool>(true)));
+    const engine::step_result& define = d.steps.at(1);
+    BOOST_TEST_REQUIRE(define.as_written.has_value());
+    BOOST_TEST(equal(*define.as_written, (1 - eps) * y));   // before y's value is substituted
+    const auto* product = define.written.best_product({{one_less_eps, 1}, {y, 1}});
+    BOOST_TEST_REQUIRE(product);
+    BOOST_TEST_REQUIRE(product->factors.size() == 2u);
+    BOOST_TEST(product->factors[0].base.is_equal(one_less_eps));
+    BOOST_TEST(product->factors[1].base.is_equal(y));
+    BOOST_TEST(d.steps.at(0).written.empty());   // a solve step writes no expression
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
 BOOST_AUTO_TEST_SUITE(bad_input)
 
 BOOST_AUTO_TEST_CASE(an_undeclared_symbol_is_named_with_its_line)

@@ -6,7 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "emit/latex.h"
-#include "emit/written_form.h"
+#include "engine/written_form.h"
 #include "engine/library.h"
 #include "spec/derivation.h"
 
@@ -38,7 +38,8 @@ struct eq8_symbols {
     // The expression as its text gives it, printed as written.
     std::string as_written(const std::string& text) const
     {
-        const emit::written_form w = emit::written_form::read(text, [this](const std::string& t) { return parse(t); });
+        const engine::written_form w =
+            engine::written_form::read(text, [this](const std::string& t) { return parse(t); });
         return emit::latex(parse(text), order, &w);
     }
 };
@@ -218,6 +219,31 @@ BOOST_AUTO_TEST_CASE(limits_and_inequalities_say_how_they_were_established)
     BOOST_TEST(contains(tex, "by substituting $v_{1,\\perp}$ $= 1/t$ and letting $t \\to 0^+$"));
     BOOST_TEST(contains(tex, "$\\cos\\theta \\geq 0$."));
     BOOST_TEST(contains(tex, "From the signs of its factors: "));
+}
+
+BOOST_AUTO_TEST_CASE(a_fragment_prints_the_written_forms_it_is_handed_and_never_reads_the_file)
+{
+    const std::string text = "id = \"w\"\ntitle = \"w\"\n"
+                             "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+                             "[[symbol]]\nname = \"eps\"\nlatex = \"\\\\epsilon\"\ndomain = \"[0, 1]\"\n"
+                             "[[symbol]]\nname = \"y\"\n"
+                             "[[step]]\ndefine = \"y\"\nas = \"(1 - eps)*x\"\n"
+                             "[[result]]\nname = \"y\"\ndisplay = \"(1 - eps)*x\"\n";
+    engine::derivation d = engine::derive(spec::parse_derivation(text, "w.toml"), {});
+    // The engine read how the display form is written: (1 - eps), not -(eps - 1), first.
+    BOOST_TEST_REQUIRE(!d.results.at(0).written.empty());
+    const std::string tex = emit::latex_fragment(d);
+    BOOST_TEST(contains(tex, "y &= (1 - \\epsilon) x \\notag"), tex);
+
+    // The file's text changed after the derivation: the fragment is what it was.
+    d.source.results.at(0).display->value = "x*(1 - eps)";
+    d.source.steps.at(0).expression.value = "x*(1 - eps)";
+    BOOST_TEST(emit::latex_fragment(d) == tex);
+
+    // The written form the engine hands over changed: the fragment follows it.
+    d.results.at(0).written = engine::written_form::read(
+        "x*(1 - eps)", [&](const std::string& piece) { return d.symbols.parse({piece, {}}); });
+    BOOST_TEST(contains(emit::latex_fragment(d), "y &= x (1 - \\epsilon) \\notag"));
 }
 
 BOOST_AUTO_TEST_CASE(fragments_are_the_same_on_every_run)

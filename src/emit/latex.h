@@ -11,9 +11,9 @@
 // `term_order`, so that the text is the same on every run.
 #pragma once
 
-#include "emit/written_form.h"
 #include "engine/derive.h"
 #include "engine/order.h"
+#include "engine/written_form.h"
 
 #include <ginac/ginac.h>
 
@@ -23,6 +23,7 @@
 namespace impact::emit {
 
 using engine::term_order;
+using engine::written_form;
 
 class print_tex : public GiNaC::print_context {
     GINAC_DECLARE_PRINT_CONTEXT(print_tex, GiNaC::print_context)

@@ -1,6 +1,8 @@
 // How the LaTeX printer (latex.cpp) sees sums and products, shared with the line breaker
 // (latex_lines.cpp), which breaks a displayed equation where the printer would write a
-// term or a factor. Internal to emit.
+// term or a factor; and the writer of a derivation's fragment, whose quantities, givens,
+// steps and results (latex_fragment.cpp) and checks and paper comparisons
+// (latex_claims.cpp) are written apart. Internal to emit.
 #pragma once
 
 #include "emit/latex.h"
@@ -8,6 +10,7 @@
 #include <ginac/ginac.h>
 
 #include <climits>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,5 +55,67 @@ void print_parts(const product_parts& f, const print_tex& c, unsigned level);
 /// Each term of a sum with the sign it is written with: "-" for the first term when
 /// negative, "+ " or "- " before the others.
 std::vector<std::pair<std::string, GiNaC::ex>> signed_terms(const GiNaC::ex& sum, const print_tex& c);
+
+/// "Eq. 8" → "Eq.~8" in running text.
+std::string paper_text(const std::string& paper);
+
+/// A verdict in bold (proven, FAILED) or italics (sampled, with its sample size).
+std::string status_text(const engine::verdict& v);
+
+std::string capitalised(std::string text);
+
+/// Joins items as "a, b and c".
+std::string listing(const std::vector<std::string>& items);
+
+/// Everything the fragment of one derivation needs while it is written.
+class fragment_writer {
+public:
+    explicit fragment_writer(const engine::derivation& d);
+
+    /// The whole fragment.
+    std::string write();
+    /// The paper comparisons as rows of the report's errata table.
+    std::string errata_rows() const;
+
+private:
+    // latex_fragment.cpp: the printing shared by every part, and the derivation itself.
+    std::string math(const GiNaC::ex& e, const written_form* w = nullptr) const;
+    std::string relation_math(const GiNaC::ex& r, const written_form* w = nullptr) const;
+    std::string rows(const std::string& lhs, const GiNaC::ex& rhs, const written_form* w, const std::string& tag,
+                     const char* relation = "=", double align_at = -1) const;
+    std::string ref(const std::string& equation) const;
+    std::string quantities() const;
+    std::string givens() const;
+    std::string step_checks(const engine::step_result& s) const;
+    std::string steps() const;
+    std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
+    std::string define_step(const engine::step_result& s, const std::string& because) const;
+    std::string yields(const engine::step_result& s) const;
+    std::string quotient_step(const engine::step_result& s, const spec::step* source,
+                              const std::string& because) const;
+    std::string rearrange_step(const engine::step_result& s, const spec::step* source,
+                               const std::string& because) const;
+    std::string results() const;
+
+    // latex_claims.cpp: the checks and the paper held to account.
+    std::string how(const engine::check_result& c) const;
+    std::string sign_text(const engine::sign_step& step) const;
+    std::string limit_text(const engine::limit_method& how) const;
+    std::string display(const std::string& lhs, const char* relation, const GiNaC::ex& rhs,
+                        const written_form* w) const;
+    std::string claim_lhs(const engine::check_result& c, const written_form* w) const;
+    std::string checks() const;
+    bool displayed(const GiNaC::ex& e, const written_form* w) const;
+    std::string form(const GiNaC::ex& e, const written_form* w) const;
+    std::string paper() const;
+
+    // The text width of the report (A4, 2 cm margins: 482 pt) less a list's indent: steps
+    // and checks are items of a list.
+    static constexpr double content_width = 450;
+
+    const engine::derivation& d_;
+    const term_order order_;
+    std::map<std::string, std::string> tags_;
+};
 
 } // namespace impact::emit::detail

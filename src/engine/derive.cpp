@@ -20,7 +20,9 @@ GiNaC::ex simplified(const GiNaC::ex& e, const assumptions& given)
     // expanded (a derivation states the form it wants typeset as its display form).
     constexpr std::size_t longest_factored = 4;
     const GiNaC::ex nd = GiNaC::normal(simplify_radicals(e, given)).numer_denom();
-    auto factored = [&](const GiNaC::ex& p) { return p.nops() > longest_factored ? p : factor_polynomial(p); };
+    auto factored = [&](const GiNaC::ex& p) {
+        return p.nops() > longest_factored ? p : factor_polynomial(p, *given.run);
+    };
     return simplify_radicals(factored(nd.op(0)) / factored(nd.op(1)), given);
 }
 
@@ -35,7 +37,7 @@ std::string join(const std::vector<spec::text>& items)
 // The state of a derivation while its steps run.
 class deriver {
 public:
-    deriver(const spec::derivation& source, const derived_by_id& done) : done_(done)
+    deriver(const spec::derivation& source, const derived_by_id& done, proof_cache& run) : done_(done), run_(run)
     {
         out_.source = source;
     }
@@ -98,6 +100,13 @@ private:
 
     GiNaC::ex symbol_of(const spec::text& name) const { return out_.symbols.at(name).symbol; }
 
+    // How `text` is written, read here once for the printers, which never read the file.
+    written_form written(const spec::text& text) const
+    {
+        return written_form::read(text.value,
+                                  [this](const std::string& piece) { return out_.symbols.parse({piece, {}}); });
+    }
+
     // `[[use]]`: results of an earlier derivation, expressed in this one's symbols.
     void import(const spec::use& u)
     {
@@ -132,7 +141,7 @@ private:
         if (find_equation(g.name.value))
             throw error(g.name.where, fmt::format("equation '{}' is defined twice", g.name.value));
         equations_.push_back({g.name.value, out_.symbols.parse_equation(g.equation), g.because.value,
-                              g.paper ? g.paper->value : std::string(), g.equation.where});
+                              g.paper ? g.paper->value : std::string(), g.equation.where, written(g.equation)});
         out_.givens.push_back(equations_.back());
         if (g.printed) {
             // The paper's printing of a given equation must be equivalent to it.
@@ -142,10 +151,11 @@ private:
             p.paper = g.paper ? g.paper->value : std::string();
             p.printed_text = g.printed->value;
             p.printed = out_.symbols.parse_equation(*g.printed);
+            p.written = written(*g.printed);
             p.derived = equations_.back().relation;
-            p.agreement = prove_equivalent(p.printed, p.derived, out_.symbols);
+            p.agreement = prove_equivalent(p.printed, p.derived, out_.symbols, run_);
             if (!p.agrees())
-                p.reconciliations = reconcile_equation(p.printed, p.derived, out_.symbols, resolver());
+                p.reconciliations = reconcile_equation(p.printed, p.derived, out_.symbols, resolver(), run_);
             p.where = g.printed->where;
             out_.paper_checks.push_back(std::move(p));
         }
@@ -222,7 +232,7 @@ private:
         }
         GiNaC::exmap solved;
         for (const GiNaC::ex& s : solution) {
-            const GiNaC::ex value = simplified(s.rhs(), declared_assumptions(out_.symbols));
+            const GiNaC::ex value = simplified(s.rhs(), declared_assumptions(out_.symbols, run_));
             solved[s.lhs()] = value;
             r.values.emplace_back(s.lhs(), value);
         }
@@ -235,7 +245,7 @@ private:
             c.because = "the solution substituted back into the equation it solves";
             c.lhs = substituted.lhs();
             c.rhs = substituted.rhs();
-            c.outcome = prove_equal(c.lhs, c.rhs, out_.symbols);
+            c.outcome = prove_equal(c.lhs, c.rhs, out_.symbols, run_);
             c.where = e->where;
             r.checks.push_back(std::move(c));
         }
@@ -250,7 +260,9 @@ private:
         if (values_.count(s))
             throw error(st.name.where, fmt::format("'{}' is already derived by an earlier step", st.name.value));
         // Radicals of squares come out by the declared signs: sqrt(u^2) = u for u >= 0.
-        const GiNaC::ex value = simplified(resolve(out_.symbols.parse(st.expression)), declared_assumptions(out_.symbols));
+        r.as_written = out_.symbols.parse(st.expression);
+        r.written = written(st.expression);
+        const GiNaC::ex value = simplified(resolve(*r.as_written), declared_assumptions(out_.symbols, run_));
         set_value(s, value);
         r.values.emplace_back(s, value);
     }
@@ -266,8 +278,8 @@ private:
         const GiNaC::ex b = resolve(bottom.relation);
         if (b.lhs().is_zero() || b.rhs().is_zero())
             throw error(st.where, fmt::format("equation '{}' has a side that is zero: division by zero", bottom.name));
-        const GiNaC::ex lhs = simplified(a.lhs() / b.lhs(), declared_assumptions(out_.symbols));
-        const GiNaC::ex rhs = simplified(a.rhs() / b.rhs(), declared_assumptions(out_.symbols));
+        const GiNaC::ex lhs = simplified(a.lhs() / b.lhs(), declared_assumptions(out_.symbols, run_));
+        const GiNaC::ex rhs = simplified(a.rhs() / b.rhs(), declared_assumptions(out_.symbols, run_));
         r.assumptions.push_back(b.lhs() != 0);
         add_step_equation(st.name, lhs == rhs, r);
     }
@@ -285,17 +297,18 @@ private:
         c.because = "the rearranged equation differs from its source by a non-zero constant factor";
         c.lhs = resolve(into);
         c.rhs = resolve(from.relation);
-        c.outcome = prove_equivalent(c.lhs, c.rhs, out_.symbols);
+        c.outcome = prove_equivalent(c.lhs, c.rhs, out_.symbols, run_);
         c.where = st.expression.where;
         r.checks.push_back(c);
-        add_step_equation(st.name, into, r);
+        add_step_equation(st.name, into, r, written(st.expression));
     }
 
-    void add_step_equation(const spec::text& name, const GiNaC::ex& relation, step_result& r)
+    void add_step_equation(const spec::text& name, const GiNaC::ex& relation, step_result& r,
+                           written_form as_written = {})
     {
         if (find_equation(name.value))
             throw error(name.where, fmt::format("equation '{}' is defined twice", name.value));
-        equation e{name.value, relation, r.description, "", name.where};
+        equation e{name.value, relation, r.description, "", name.where, std::move(as_written)};
         equations_.push_back(e);
         r.yields = e;
     }
@@ -315,6 +328,7 @@ private:
         r.paper = spec_result.paper ? spec_result.paper->value : std::string();
         if (spec_result.display) {
             r.display = out_.symbols.parse(*spec_result.display);
+            r.written = written(*spec_result.display);
             check_result c;
             c.name = fmt::format("display form of {}", q.name);
             c.display_of = q.name;
@@ -323,7 +337,7 @@ private:
             c.because = "the form typeset must equal the derived result";
             c.lhs = r.display;
             c.rhs = r.value;
-            c.outcome = prove_equal(resolve(r.display), r.value, out_.symbols);
+            c.outcome = prove_equal(resolve(r.display), r.value, out_.symbols, run_);
             c.where = spec_result.display->where;
             out_.checks.push_back(std::move(c));
         }
@@ -333,10 +347,11 @@ private:
             p.paper = r.paper;
             p.printed_text = spec_result.printed->value;
             p.printed = out_.symbols.parse(*spec_result.printed);
+            p.written = written(*spec_result.printed);
             p.derived = r.value;
-            p.agreement = prove_equal(resolve(p.printed), r.value, out_.symbols);
+            p.agreement = prove_equal(resolve(p.printed), r.value, out_.symbols, run_);
             if (!p.agrees())
-                p.reconciliations = reconcile_expression(p.printed, r.value, out_.symbols, resolver());
+                p.reconciliations = reconcile_expression(p.printed, r.value, out_.symbols, resolver(), run_);
             p.where = spec_result.printed->where;
             out_.paper_checks.push_back(std::move(p));
         }
@@ -351,6 +366,7 @@ private:
         c.because = spec_check.because.value;
         c.where = spec_check.claim.where;
         const claim_sides sides = out_.symbols.parse_claim(spec_check.claim);
+        c.written = written(spec_check.claim);
         c.op = sides.op;
         c.stated = sides.lhs == sides.rhs;
         GiNaC::ex lhs = resolve(sides.lhs), rhs = resolve(sides.rhs);
@@ -386,9 +402,9 @@ private:
             c.statement += fmt::format(" at {}", fmt::join(values, ", "));
         }
 
-        assumptions given = declared_assumptions(out_.symbols);
+        assumptions given = declared_assumptions(out_.symbols, run_);
         if (!spec_check.assuming.empty())
-            given.known = std::make_shared<assumptions::worked_out>();
+            given.known = std::make_shared<worked_out>();
         for (const spec::binding& b : spec_check.assuming) {
             const quantity& q = out_.symbols.at(b.name);
             given.domains[q.symbol] = narrowed_domain(q, b.expression);
@@ -404,7 +420,7 @@ private:
             c.outcome = check_limit(lhs, rhs, *c.limit, given, c.value, c.limit_by);
             c.statement += fmt::format(" in the limit {}", spec_check.limit->value);
         } else if (c.op == relation::equal) {
-            c.outcome = prove_equal(lhs, rhs, out_.symbols);
+            c.outcome = prove_equal(lhs, rhs, out_.symbols, run_);
             c.value = lhs;
         } else {
             c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, given);
@@ -430,7 +446,7 @@ private:
         if (!p.agrees() && c.value && (claim.test.limit || !claim.test.at.empty()))
             p.reconciliations = other_regimes(claim.test, c);
         else if (!p.agrees() && c.op == relation::equal)
-            p.reconciliations = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver());
+            p.reconciliations = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
         p.test = std::move(c);
         return p;
     }
@@ -516,7 +532,7 @@ private:
         }
         value = found->value;
         how = found->how;
-        v = prove_equal(found->value, rhs, out_.symbols);
+        v = prove_equal(found->value, rhs, out_.symbols, run_);
         v.method = fmt::format("limit {} ({}); {}", given.text(found->value), found->method, v.method);
         return v;
     }
@@ -671,7 +687,7 @@ private:
                 // A form may use the kernel's `let` values; it is proven with them substituted.
                 const GiNaC::ex alternative = in_kernel(out_.symbols.parse(e));
                 const verdict v = prove_equal(alternative.subs(lets, GiNaC::subs_options::no_pattern), value,
-                                              out_.symbols);
+                                              out_.symbols, run_);
                 if (v.what != verdict::status::proven)
                     throw error(e.where, fmt::format("form \"{}\" of '{}' is not proven equal to it (residual {})",
                                                      e.value, o.member, out_.symbols.text(v.residual)));
@@ -720,6 +736,7 @@ private:
     }
 
     const derived_by_id& done_;
+    proof_cache& run_;
     derivation out_;
     GiNaC::exmap kernel_substitutions_;
     std::vector<equation> equations_;
@@ -786,9 +803,15 @@ bool derivation::all_hold() const
     return std::all_of(checks.begin(), checks.end(), [](const check_result* c) { return c->outcome.holds(); });
 }
 
+derivation derive(const spec::derivation& source, const derived_by_id& done, proof_cache& run)
+{
+    return deriver(source, done, run).run();
+}
+
 derivation derive(const spec::derivation& source, const derived_by_id& done)
 {
-    return deriver(source, done).run();
+    proof_cache own;
+    return derive(source, done, own);
 }
 
 } // namespace impact::engine

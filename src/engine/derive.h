@@ -11,6 +11,7 @@
 #include "engine/limit.h"
 #include "engine/prove.h"
 #include "engine/symbols.h"
+#include "engine/written_form.h"
 #include "spec/derivation.h"
 
 #include <ginac/ginac.h>
@@ -29,6 +30,7 @@ struct equation {
     std::string because;
     std::string paper;
     source_location where;
+    written_form written;     ///< how the file writes it (a given, a rearranged form)
 };
 
 /// One proven (or failed) statement.
@@ -54,6 +56,7 @@ struct check_result {
     GiNaC::ex rhs;
     verdict outcome;
     source_location where;
+    written_form written;     ///< how the file writes the claim
 };
 
 /// What one step did.
@@ -66,6 +69,8 @@ struct step_result {
     std::vector<GiNaC::ex> assumptions;                    ///< relations assumed, e.g. v_m - v_m_after != 0
     std::vector<check_result> checks;
     source_location where;
+    std::optional<GiNaC::ex> as_written;  ///< define: the value as the file writes it, before substitution
+    written_form written;                 ///< ... and how it writes it
 };
 
 /// Something the paper prints or claims, compared with what is derived.
@@ -81,6 +86,7 @@ struct paper_comparison {
     std::vector<std::string> reconciliations; ///< the smallest edits that make the printed form right
     std::optional<check_result> test;         ///< for a claim: the check it was turned into
     source_location where;
+    written_form written;     ///< how the file transcribes the printed form (not for a claim)
 
     bool agrees() const { return agreement.what == verdict::status::proven; }
 };
@@ -91,6 +97,7 @@ struct result {
     GiNaC::ex value;          ///< as derived, in the declared quantities
     GiNaC::ex display;        ///< the form to typeset, proven equal to `value`
     std::string paper;
+    written_form written;     ///< how the file writes the display form
 };
 
 /// A parameter of a kernel: a scalar, or an array of components (`C_M = [C_Mx, C_My]`).
@@ -167,7 +174,10 @@ struct derivation {
 using derived_by_id = std::map<std::string, derivation>;
 
 /// Runs one derivation. Bad input throws `impact::error`; a failed check does not throw
-/// but is recorded (see `derivation::all_hold`).
+/// but is recorded (see `derivation::all_hold`). What its proofs work out is kept in
+/// `run`, for the derivations run after it with the same cache.
+derivation derive(const spec::derivation& source, const derived_by_id& done, proof_cache& run);
+/// Runs one derivation with a cache of its own, gone when it returns.
 derivation derive(const spec::derivation& source, const derived_by_id& done);
 
 } // namespace impact::engine

@@ -54,6 +54,8 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
     // Depth-first over [[use]]: each derivation after those it uses; a derivation met
     // again while still on the path is a cycle.
     library lib;
+    // One cache for the run: a derivation meets again the polynomials of those it uses.
+    proof_cache run;
     std::set<std::string> on_path;
     std::function<void(const spec::derivation&)> visit = [&](const spec::derivation& s) {
         if (lib.derived.count(s.id.value))
@@ -71,7 +73,7 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
             visit(*used->second);
         }
         on_path.erase(s.id.value);
-        lib.derived.emplace(s.id.value, engine::derive(s, lib.derived));
+        lib.derived.emplace(s.id.value, engine::derive(s, lib.derived, run));
         lib.order.push_back(s.id.value);
     };
 

@@ -80,9 +80,10 @@ std::optional<limit_result> find_limit(const GiNaC::ex& e, const GiNaC::ex& symb
             return r;
         return by_series(e, symbol, point, given);
     }
-    // s → ∞: s = 1/t with t → 0⁺. One t for every limit, positive in each: the factors
-    // and signs worked out for one limit in t serve the next.
-    static const GiNaC::possymbol t("t");
+    // s → ∞: s = 1/t with t → 0⁺, a t of this limit's own: a t shared by every limit
+    // would be newer than the symbols of the first derivation and older than those of
+    // the next, so that GiNaC's order of terms would depend on what ran before.
+    const GiNaC::possymbol t("t");
     assumptions with_t = given;
     with_t.domains[t] = domain{domain::kind::positive};
     const GiNaC::ex in_t = simplify_radicals(GiNaC::normal(e.subs(symbol == 1 / t)), with_t);

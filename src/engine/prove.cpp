@@ -193,7 +193,7 @@ std::optional<verdict> prove_equal_angles(const GiNaC::ex& a, const GiNaC::ex& b
     const auto ca = cosine_of(a), cb = cosine_of(b);
     if (!ca || !cb || !within_zero_and_pi(a, given) || !within_zero_and_pi(b, given))
         return std::nullopt;
-    verdict v = prove_equal(*ca, *cb, symbols);
+    verdict v = prove_equal(*ca, *cb, symbols, *given.run);
     if (v.what != verdict::status::proven)
         return std::nullopt;
     v.method = "both angles lie in [0, pi], where cos is one-to-one, and their cosines are proven equal";
@@ -218,10 +218,10 @@ std::string to_string(const verdict& v)
     return "failed";
 }
 
-verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols)
+verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run)
 {
     const GiNaC::exmap abbreviations = symbols.abbreviations();
-    const assumptions given = declared_assumptions(symbols);
+    const assumptions given = declared_assumptions(symbols, run);
     // Radicals in one canonical form first: normal() cannot see that sqrt(1/x) = 1/sqrt(x).
     const GiNaC::ex a = simplify_radicals(spelled_out(lhs, abbreviations), given);
     const GiNaC::ex b = simplify_radicals(spelled_out(rhs, abbreviations), given);
@@ -307,7 +307,8 @@ verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs
     return sampled;
 }
 
-verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, const symbol_table& symbols)
+verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, const symbol_table& symbols,
+                         proof_cache& run)
 {
     const GiNaC::ex d1 = equation.lhs() - equation.rhs();
     const GiNaC::ex d2 = other.lhs() - other.rhs();
@@ -319,7 +320,7 @@ verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, cons
         v.method = "the two equations differ by a constant factor";
         return v;
     }
-    verdict v = prove_equal(d1, d2, symbols);
+    verdict v = prove_equal(d1, d2, symbols, run);
     if (v.what == verdict::status::proven)
         v.method = "the two equations have the same difference of sides";
     return v;

@@ -31,8 +31,9 @@ struct verdict {
 /// `proven`, `sampled (N points)` or `failed`.
 std::string to_string(const verdict& v);
 
-/// Decides whether `lhs == rhs` for all values of the symbols' domains.
-verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols);
+/// Decides whether `lhs == rhs` for all values of the symbols' domains; `run` keeps what
+/// the proof works out for the proofs after it.
+verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run);
 
 /// Decides `lhs op rhs` for an inequality: proven from the signs of the factors of
 /// the difference under `given` (prove_sign), else sampled, else failed.
@@ -41,6 +42,7 @@ verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs
 
 /// Decides whether two equations are equivalent: their differences lhs − rhs are equal
 /// up to a non-zero constant factor.
-verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, const symbol_table& symbols);
+verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, const symbol_table& symbols,
+                         proof_cache& run);
 
 } // namespace impact::engine

@@ -209,7 +209,8 @@ std::vector<std::string> search(std::vector<candidate> all, Screen screen, Confi
 } // namespace
 
 std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
-                                              const symbol_table& symbols, const resolver& resolve)
+                                              const symbol_table& symbols, const resolver& resolve,
+                                              proof_cache& run)
 {
     const auto points = screening_points(symbols);
     std::set<std::string> wanted = names_in(derived, symbols);
@@ -230,13 +231,14 @@ std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const Gi
         return true;
     };
     auto confirm = [&](const GiNaC::ex& edited) {
-        return prove_equal(resolve(edited), derived, symbols).what == verdict::status::proven;
+        return prove_equal(resolve(edited), derived, symbols, run).what == verdict::status::proven;
     };
     return search(all, screen, confirm);
 }
 
 std::vector<std::string> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
-                                            const symbol_table& symbols, const resolver& resolve)
+                                            const symbol_table& symbols, const resolver& resolve,
+                                            proof_cache& run)
 {
     const auto points = screening_points(symbols);
     std::set<std::string> wanted = names_in(derived.lhs() - derived.rhs(), symbols);
@@ -263,7 +265,7 @@ std::vector<std::string> reconcile_equation(const GiNaC::ex& printed, const GiNa
         return true;
     };
     auto confirm = [&](const GiNaC::ex& edited) {
-        return prove_equivalent(resolve(edited), resolve(derived), symbols).what == verdict::status::proven;
+        return prove_equivalent(resolve(edited), resolve(derived), symbols, run).what == verdict::status::proven;
     };
     return search(all, screen, confirm);
 }

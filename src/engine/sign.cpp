@@ -58,6 +58,12 @@ sign_set of_domain(const domain& d)
     return r;
 }
 
+// factor_polynomial, with the run's factors where the assumptions come with a run.
+GiNaC::ex factored_in(const GiNaC::ex& e, const assumptions& given)
+{
+    return given.run ? factor_polynomial(e, *given.run) : factor_polynomial(e);
+}
+
 class sign_prover {
 public:
     explicit sign_prover(const assumptions& given) : given_(given), domains_(given.domains) {}
@@ -235,10 +241,10 @@ private:
                                              d.to_string(), text(low), text(high)));
     }
 
-    static GiNaC::ex factored(const GiNaC::ex& e)
+    GiNaC::ex factored(const GiNaC::ex& e) const
     {
         const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
-        return factor_polynomial(nd.op(0)) / factor_polynomial(nd.op(1));
+        return factored_in(nd.op(0), given_) / factored_in(nd.op(1), given_);
     }
 
     const assumptions& given_;
@@ -261,9 +267,16 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e)
 {
     if (has_radical(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e))
         return e;
+    return GiNaC::factor(e);
+}
+
+GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
+{
+    if (has_radical(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e))
+        return e;
     // factor() is the engine's most expensive call and meets the same polynomials again
     // and again (in sign proofs, in radicals, in each step's simplification).
-    static std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> factored;
+    auto& factored = run.factored;
     const auto known = factored.find(e);
     if (known != factored.end())
         return known->second;
@@ -272,6 +285,11 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e)
         factored.clear();
     factored.emplace(e, f);
     return f;
+}
+
+bool proof_cache::empty() const
+{
+    return factored.empty() && declared->signs.empty() && declared->radicals.empty();
 }
 
 sign_set sign_set::exactly(int sign)
@@ -301,14 +319,13 @@ std::string assumptions::text(const GiNaC::ex& e) const
     return ginac_syntax(e, order);
 }
 
-assumptions declared_assumptions(const symbol_table& symbols)
+assumptions declared_assumptions(const symbol_table& symbols, proof_cache& run)
 {
     // Under the declared domains the sign of an expression never changes, and GiNaC's
     // symbols are never reused (each has its own serial number), so what is worked out
-    // serves every derivation of a run. Narrowed domains (a check's `assuming`) need
+    // serves every derivation of the run. Narrowed domains (a check's `assuming`) need
     // their own.
-    static const auto declared = std::make_shared<assumptions::worked_out>();
-    assumptions given{{}, declaration_order(symbols), declared};
+    assumptions given{{}, declaration_order(symbols), run.declared, &run};
     for (const quantity& q : symbols.all())
         if (!q.definition)
             given.domains[q.symbol] = q.range;
@@ -323,7 +340,7 @@ sign_proof prove_sign(const GiNaC::ex& e, const assumptions& given)
     const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
     std::vector<std::pair<GiNaC::ex, bool>> factors;  // factor, in the denominator
     for (int part = 0; part < 2; ++part) {
-        const GiNaC::ex f = factor_polynomial(nd.op(part));
+        const GiNaC::ex f = factored_in(nd.op(part), given);
         if (GiNaC::is_a<GiNaC::mul>(f)) {
             for (std::size_t i = 0; i < f.nops(); ++i)
                 factors.emplace_back(f.op(i), part == 1);
@@ -378,7 +395,7 @@ GiNaC::ex take_out_radicals(const GiNaC::ex& e, const assumptions& given)
     const GiNaC::ex nd = GiNaC::normal(mapped.op(0)).numer_denom();
     GiNaC::exvector parts;
     for (int part = 0; part < 2; ++part) {
-        const GiNaC::ex f = factor_polynomial(nd.op(part));
+        const GiNaC::ex f = factored_in(nd.op(part), given);
         const int direction = part == 0 ? 1 : -1;
         if (GiNaC::is_a<GiNaC::mul>(f)) {
             for (const GiNaC::ex& g : f)
@@ -428,7 +445,7 @@ GiNaC::ex take_out_radicals(const GiNaC::ex& e, const assumptions& given)
     const GiNaC::ex inside_nd = GiNaC::normal(inside).numer_denom();
     GiNaC::ex root = GiNaC::sqrt(inside);
     if (!inside_nd.op(1).is_equal(1)) {
-        const sign_set below = prover.sign(factor_polynomial(inside_nd.op(1))).first;
+        const sign_set below = prover.sign(factored_in(inside_nd.op(1), given)).first;
         if (!below.negative && !below.zero)
             root = GiNaC::sqrt(inside_nd.op(0)) / GiNaC::sqrt(inside_nd.op(1));
         else if (outside.is_equal(1))

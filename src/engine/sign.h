@@ -49,23 +49,40 @@ struct sign_reason {
     std::string domain;
 };
 
+/// What is worked out under one set of domains: signs with their reasons, and radicals
+/// simplified.
+struct worked_out {
+    std::map<GiNaC::ex, std::pair<sign_set, sign_reason>, GiNaC::ex_is_less> signs;
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> radicals;
+};
+
+/// What the proofs of one run have worked out, so that it is not worked out twice:
+/// polynomials factored (true under any domains), and signs and radicals under the
+/// declared domains. Whoever runs the proofs owns it (`derive_all` one for a run of the
+/// library, `derive` one for a derivation) and it dies with them: two runs share nothing.
+struct proof_cache {
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> factored;
+    std::shared_ptr<worked_out> declared = std::make_shared<worked_out>();
+
+    /// Nothing worked out yet.
+    bool empty() const;
+};
+
 /// What a proof may assume: the domains, and the order in which its text is written.
 struct assumptions {
     domain_map domains;
     term_order order;
     std::string text(const GiNaC::ex& e) const;
 
-    /// What is already worked out under these domains: signs with their reasons, and
-    /// radicals simplified. Domains narrowed (a check's `assuming`) need one of their own.
-    struct worked_out {
-        std::map<GiNaC::ex, std::pair<sign_set, sign_reason>, GiNaC::ex_is_less> signs;
-        std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> radicals;
-    };
+    /// What is already worked out under these domains: the run's, for the declared ones;
+    /// domains narrowed (a check's `assuming`) need one of their own.
     std::shared_ptr<worked_out> known = std::make_shared<worked_out>();
+    /// The run's polynomials factored; none, and each is factored again.
+    proof_cache* run = nullptr;
 };
 
-/// The declared domains of a derivation's symbols.
-assumptions declared_assumptions(const symbol_table& symbols);
+/// The declared domains of a derivation's symbols, with what `run` has worked out under them.
+assumptions declared_assumptions(const symbol_table& symbols, proof_cache& run);
 
 /// One step of a sign proof: `factor` (a factor of the expression, or 1/factor for one
 /// of its denominator) has the sign `sign`, because `why`.
@@ -90,6 +107,8 @@ bool has_radical(const GiNaC::ex& e);
 /// GiNaC's factor() for an expression without radicals; one with radicals is returned
 /// as it is (factoring under a root may pull out -1 and leave I behind).
 GiNaC::ex factor_polynomial(const GiNaC::ex& e);
+/// factor_polynomial, each polynomial factored once in `run`.
+GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run);
 
 /// `sqrt(x^2 y)` → `x sqrt(y)` wherever the sign of x is proven: radicals of squares
 /// taken out under the domains.

@@ -264,8 +264,11 @@ const quantity& symbol_table::declare(const spec::symbol& declaration)
         q.symbol = GiNaC::possymbol(name, q.latex);
     else
         q.symbol = GiNaC::realsymbol(name, q.latex);
-    if (declaration.definition)
+    if (declaration.definition) {
         q.definition = parse(*declaration.definition);
+        q.written = written_form::read(declaration.definition->value,
+                                       [this](const std::string& piece) { return parse({piece, {}}); });
+    }
     table_[name] = q.symbol;
     quantities_.push_back(std::move(q));
     order_.reset();

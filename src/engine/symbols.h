@@ -7,6 +7,7 @@
 #pragma once
 
 #include "engine/domain.h"
+#include "engine/written_form.h"
 #include "spec/derivation.h"
 
 #include <ginac/ginac.h>
@@ -29,6 +30,7 @@ struct quantity {
     std::string latex;
     std::string meaning;
     std::optional<GiNaC::ex> definition;
+    written_form written;   ///< how the definition was written, for the printers
     source_location where;
 };
 

@@ -1,5 +1,9 @@
 // How an expression was written in its derivation file.
 //
+// Read once, by the engine, where the expression itself is read (an abbreviation's
+// definition, a given equation, a step, a display form, a check's claim, the paper's
+// printed form), and carried beside it for the printers, which never read the text.
+//
 // GiNaC keeps neither the order of terms and factors nor the way round a sum was
 // written: it sorts operands by hash and may move a sign into a sum, storing
 // -(1 - eps^2)*x as (-1 + eps^2)*x. A display form is chosen by a physicist for how it
@@ -17,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace impact::emit {
+namespace impact::engine {
 
 class written_form {
 public:
@@ -82,4 +86,4 @@ private:
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> powers_;
 };
 
-} // namespace impact::emit
+} // namespace impact::engine

@@ -1,10 +1,10 @@
-#include "emit/written_form.h"
+#include "engine/written_form.h"
 
 #include <cctype>
 #include <memory>
 #include <stdexcept>
 
-namespace impact::emit {
+namespace impact::engine {
 namespace {
 
 // The text split into tokens, each with the place it starts and ends.
@@ -433,4 +433,4 @@ const written_form::product* written_form::best_product(const std::vector<std::p
     return best;
 }
 
-} // namespace impact::emit
+} // namespace impact::engine

@@ -1,0 +1,323 @@
+// The checks of a derivation's LaTeX fragment, with how each was established, and the
+// paper's printed forms held to account, in the fragment and as rows of the errata table.
+#include "emit/latex.h"
+#include "emit/latex_parts.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+namespace impact::emit {
+namespace {
+
+const char* latex_relation(engine::relation op)
+{
+    switch (op) {
+    case engine::relation::equal: return "=";
+    case engine::relation::less_equal: return "\\leq";
+    case engine::relation::less: return "<";
+    case engine::relation::greater_equal: return "\\geq";
+    case engine::relation::greater: return ">";
+    }
+    return "=";
+}
+
+// True when a \frac has another \frac inside its arguments (too tall to set inline).
+bool nested_fraction(const std::string& math)
+{
+    for (std::size_t at = math.find("\\frac"); at != std::string::npos; at = math.find("\\frac", at + 1)) {
+        // The extent of the two argument groups.
+        std::size_t i = at + 5;
+        for (int group = 0; group < 2 && i < math.size(); ++group) {
+            int depth = 0;
+            const std::size_t begin = i;
+            for (; i < math.size(); ++i) {
+                depth += math[i] == '{' ? 1 : math[i] == '}' ? -1 : 0;
+                if (depth == 0)
+                    break;
+            }
+            if (math.substr(begin + 1, i - begin).find("\\frac") != std::string::npos)
+                return true;
+            ++i;
+        }
+    }
+    return false;
+}
+
+// momentum_conserved → "momentum conserved"
+std::string words(const std::string& name)
+{
+    std::string out = name;
+    std::replace(out.begin(), out.end(), '_', ' ');
+    return out;
+}
+
+std::string sentence_end(const std::string& text)
+{
+    if (text.empty())
+        return text;
+    const char last = text.back();
+    return (last == '.' || last == '?' || last == '!') ? text : text + ".";
+}
+
+// A sign as a relation to zero in LaTeX, or nothing when it is not one.
+const char* relation_to_zero(const engine::sign_set& sign)
+{
+    static const std::pair<const char*, const char*> relations[] = {
+        {">= 0", "\\geq"}, {"<= 0", "\\leq"}, {"> 0", ">"}, {"< 0", "<"}};
+    for (const auto& [described, tex] : relations)
+        if (sign.describe() == described)
+            return tex;
+    return nullptr;
+}
+
+// Math set inline when it is short and flat, displayed (and broken) otherwise.
+bool wants_display(const std::string& math)
+{
+    return latex_width(math) > 230 || nested_fraction(math);
+}
+
+// Long names and GiNaC expressions in text may break after _ * + / , and =.
+std::string breakable(const std::string& text)
+{
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        out += text[i];
+        const bool after = text[i] == '*' || text[i] == '+' || text[i] == '/' || text[i] == ',' ||
+                           text[i] == '=' || (text[i] == '_' && i > 0 && text[i - 1] == '\\');
+        if (after)
+            out += "\\allowbreak{}";
+    }
+    return out;
+}
+
+} // namespace
+
+namespace detail {
+
+// How a check was established, in words and math: the sign of each factor for an
+// inequality, the method of a limit, the sample size when not proven.
+std::string fragment_writer::how(const engine::check_result& c) const
+{
+    std::string out;
+    if (c.limit_by)
+        out += " The limit is established " + limit_text(*c.limit_by) + ".";
+    if (!c.outcome.proof.empty()) {
+        std::vector<std::string> signs;
+        for (const engine::sign_step& step : c.outcome.proof)
+            signs.push_back(sign_text(step));
+        out += " From the signs of its factors: " + listing(signs) + ".";
+    }
+    if (c.outcome.what == engine::verdict::status::sampled)
+        out += fmt::format(" GiNaC cannot decide it; it holds at {} sampled points of the domains (40 digits).",
+                           c.outcome.samples);
+    if (c.outcome.what == engine::verdict::status::failed)
+        out += " Residual: $" + math(c.outcome.residual) + "$.";
+    return out;
+}
+
+// "$x - 1 \leq 0$ (linear in x ...)", "$M > 0$ (declared positive)"
+std::string fragment_writer::sign_text(const engine::sign_step& step) const
+{
+    const char* relation = relation_to_zero(step.sign);
+    if (!relation)
+        return latex_text(step.words);
+    const std::string why = step.why.declared ? "declared " + step.why.domain : step.why.words;
+    return fmt::format("${} {} 0$ ({})", math(step.factor), relation, latex_text(why));
+}
+
+std::string fragment_writer::limit_text(const engine::limit_method& how) const
+{
+    using kind = engine::limit_method::kind;
+    if (!how.at_infinity && how.how == kind::substitution) {
+        static const std::map<std::string, std::string> tex = {
+            {">= 0", "\\geq 0"}, {"> 0", "> 0"}, {"< 0", "< 0"}, {"<= 0", "\\leq 0"}, {"!= 0", "\\neq 0"}};
+        const auto sign = tex.find(how.denominator_sign.describe());
+        if (sign != tex.end())
+            return fmt::format("by substitution (continuous there: its denominator ${}$ is ${}$)",
+                               math(how.denominator), sign->second);
+    }
+    if (how.at_infinity && how.leading_in_inverse)
+        return fmt::format("by substituting ${}$ $= 1/t$ and letting $t \\to 0^+$: the leading term is ${}$",
+                           math(how.inverted), math(*how.leading_in_inverse));
+    return latex_text(how.words);
+}
+
+std::string fragment_writer::display(const std::string& lhs, const char* relation, const GiNaC::ex& rhs,
+                                     const written_form* w) const
+{
+    return "\n\\begin{align*}\n" + rows(lhs, rhs, w, "", relation) + "\n\\end{align*}\n";
+}
+
+std::string fragment_writer::claim_lhs(const engine::check_result& c, const written_form* w) const
+{
+    std::string lhs = math(c.stated.lhs(), w);
+    if (c.limit) {
+        const std::string point = c.limit->to_infinity ? "\\infty" : math(c.limit->point);
+        lhs = fmt::format("\\lim_{{{} \\to {}}} {}", math(c.limit->symbol), point, lhs);
+    }
+    return lhs;
+}
+
+std::string fragment_writer::checks() const
+{
+    if (d_.checks.empty())
+        return "";
+    std::string out = "\n\\paragraph{Checks.}\n\\begin{itemize}\n";
+    for (const engine::check_result& c : d_.checks) {
+        // A display form is the result typeset above: say so, do not print it again.
+        if (!c.display_of.empty()) {
+            const std::string& name = c.display_of;
+            const engine::quantity* q = d_.symbols.find(name);
+            const engine::result* r = d_.find_result(name);
+            // Only a numbered result has a number to refer to.
+            const std::string where = r && !r->paper.empty()
+                                          ? fmt::format(", \\eqref{{{}:result:{}}},", latex_label(d_), name)
+                                          : "";
+            out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result.\n",
+                               status_text(c.outcome), q ? math(q->symbol) : latex_text(name), where);
+            continue;
+        }
+        const written_form& w = c.written;
+        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), latex_text(words(c.name)));
+        const std::string inline_math = claim_math(c, order_, &w);
+        const bool shown = wants_display(inline_math);
+        out += shown ? display(claim_lhs(c, &w), latex_relation(c.op), c.stated.rhs(), &w)
+                     : "$" + inline_math + "$";
+        std::vector<std::string> conditions;
+        std::vector<std::string> at;
+        for (const auto& [symbol, value] : c.at)
+            at.push_back(fmt::format("${} = {}$", math(symbol), math(value)));
+        if (!at.empty())
+            conditions.push_back("at " + listing(at));
+        std::vector<std::string> assuming;
+        for (const auto& [symbol, range] : c.assuming)
+            assuming.push_back(fmt::format("${} \\in {}$", math(symbol), range));
+        if (!assuming.empty())
+            conditions.push_back("for " + listing(assuming));
+        std::vector<std::string> left;
+        for (const auto& [symbol, value] : c.left_at)
+            left.push_back(fmt::format("${} \\to {}$", math(symbol), math(value)));
+        if (!left.empty())
+            conditions.push_back("the left side taken at " + listing(left));
+        // After a displayed claim the text starts a new sentence.
+        if (!conditions.empty())
+            out += shown ? capitalised(listing(conditions)) + "."
+                         : (c.left_at.empty() || !c.at.empty() ? " " : ", ") + listing(conditions) + ".";
+        else if (!shown)
+            out += ".";
+        if (!c.because.empty())
+            out += (shown && conditions.empty() ? "" : " ") + sentence_end(capitalised(latex_text(c.because)));
+        out += how(c) + "\n";
+    }
+    return out + "\\end{itemize}\n";
+}
+
+// A printed or derived form: inline when short, else displayed and broken.
+bool fragment_writer::displayed(const GiNaC::ex& e, const written_form* w) const
+{
+    return wants_display(e.info(GiNaC::info_flags::relation) ? relation_math(e, w) : math(e, w));
+}
+
+std::string fragment_writer::form(const GiNaC::ex& e, const written_form* w) const
+{
+    if (!displayed(e, w))
+        return "$" + (e.info(GiNaC::info_flags::relation) ? relation_math(e, w) : math(e, w)) + "$";
+    if (e.info(GiNaC::info_flags::relation))
+        return display(math(e.lhs(), w), "=", e.rhs(), w);
+    return display("", "", e, w);
+}
+
+// Each of the paper's items: what it prints or says, the verdict, and for a
+// disagreement what is derived and the smallest change that reconciles the two.
+// Text after a displayed formula starts a new sentence.
+std::string fragment_writer::paper() const
+{
+    if (d_.paper_checks.empty())
+        return "";
+    std::string out = "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
+    for (const engine::paper_comparison& p : d_.paper_checks) {
+        out += fmt::format("\\item {}, \\texttt{{{}}}: ", paper_text(p.paper), breakable(latex_text(p.subject)));
+        bool after_display = false;
+        if (p.what == engine::paper_comparison::kind::claim) {
+            out += fmt::format("``{}''", breakable(latex_text(p.printed_text)));
+        } else {
+            const written_form& w = p.written;
+            out += "printed " + form(p.printed, &w);
+            after_display = displayed(p.printed, &w);
+        }
+        if (p.agrees()) {
+            out += after_display ? "It agrees.\n" : " --- agrees.\n";
+            continue;
+        }
+        out += after_display ? "It \\textbf{disagrees}: derived " : " --- \\textbf{disagrees}: derived ";
+        out += form(p.derived, nullptr);
+        after_display = displayed(p.derived, nullptr);
+        if (!p.reconciliations.empty()) {
+            const std::string change =
+                breakable(latex_text(fmt::format("{}", fmt::join(p.reconciliations, "; "))));
+            out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
+        }
+        out += after_display && p.reconciliations.empty() ? "\n" : ".\n";
+    }
+    return out + "\\end{itemize}\n";
+}
+
+// The paper comparisons as rows of the report's errata table.
+std::string fragment_writer::errata_rows() const
+{
+    // Math wider than its column (printed 4.3 cm, derived 3.5 cm) is left to the
+    // derivation's section: a fraction cannot be broken across lines of a table cell.
+    // Set in 8 pt, inline math is about 0.75 of its displayed width (measured).
+    auto cell = [&](const GiNaC::ex& e, const written_form* w, double column_pt) {
+        const std::string m = e.info(GiNaC::info_flags::relation) ? relation_math(e, w) : math(e, w);
+        // Inline math breaks after + - = at its outer level, never inside \frac or \sqrt.
+        const bool unbreakable = m.find("\\frac") != std::string::npos || m.find("\\sqrt") != std::string::npos;
+        if ((unbreakable && 0.75 * latex_width(m) > column_pt - 4) || nested_fraction(m))
+            return fmt::format("\\emph{{too long for the table, see Section~\\ref{{{}}}}}", latex_label(d_));
+        return "$" + m + "$";
+    };
+    std::string out;
+    for (const engine::paper_comparison& p : d_.paper_checks) {
+        std::string printed;
+        if (p.what == engine::paper_comparison::kind::claim) {
+            printed = "``" + breakable(latex_text(p.printed_text)) + "''";
+        } else {
+            const written_form& w = p.written;
+            printed = cell(p.printed, &w, 122);
+        }
+        std::string change = "---";
+        if (!p.agrees())
+            change = p.reconciliations.empty()
+                         ? "no single change; see the derived form"
+                         : breakable(latex_text(fmt::format("{}", fmt::join(p.reconciliations, "; "))));
+        out += fmt::format("{} & {} (\\ref{{{}}}) & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
+                           breakable(latex_text(p.subject)), latex_label(d_),
+                           p.agrees() ? "agrees" : "\\textbf{disagrees}", printed,
+                           p.agrees() ? "" : cell(p.derived, nullptr, 99), change);
+    }
+    return out;
+}
+
+} // namespace detail
+
+std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written)
+{
+    std::string lhs = latex(c.stated.lhs(), order, written);
+    if (c.limit) {
+        const std::string point = c.limit->to_infinity ? "\\infty" : latex(c.limit->point, order);
+        lhs = fmt::format("\\lim_{{{} \\to {}}} {}", latex(c.limit->symbol, order), point, lhs);
+    }
+    return fmt::format("{} {} {}", lhs, latex_relation(c.op), latex(c.stated.rhs(), order, written));
+}
+
+std::string latex_errata_rows(const std::vector<const engine::derivation*>& derivations)
+{
+    std::string out;
+    for (const engine::derivation* d : derivations)
+        out += detail::fragment_writer(*d).errata_rows();
+    return out;
+}
+
+} // namespace impact::emit
