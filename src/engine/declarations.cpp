@@ -1,7 +1,5 @@
 #include "engine/declarations.h"
 
-#include "engine/sign.h"
-
 #include <fmt/format.h>
 
 #include <optional>
@@ -34,9 +32,9 @@ bool sign_allowed(const domain& range, const sign_set& proven)
 
 } // namespace
 
-void check_definitions(const symbol_table& symbols, const spec::derivation& source)
+void check_definitions(const symbol_table& symbols, const spec::derivation& source, proof_cache& run)
 {
-    const assumptions declared = declared_assumptions(symbols);
+    const assumptions declared = declared_assumptions(symbols, run);
     for (const spec::symbol& declaration : source.symbols) {
         if (!declaration.definition)
             continue;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "engine/domain.h"
+#include "engine/sign.h"
 #include "engine/symbols.h"
 #include "spec/derivation.h"
 
@@ -17,7 +18,7 @@ namespace impact::engine {
 /// Every `[[symbol]]` with both a `definition` and a domain other than `real`: the
 /// definition's sign, proven from the other symbols' domains, must not contradict it
 /// (a positive `w` defined as `-x` with `x` positive is refused).
-void check_definitions(const symbol_table& symbols, const spec::derivation& source);
+void check_definitions(const symbol_table& symbols, const spec::derivation& source, proof_cache& run);
 
 /// `at = { x = "value" }`: a numeric value must lie in the closure of x's domain.
 void check_special_value(const quantity& q, const GiNaC::ex& value, const source_location& where);

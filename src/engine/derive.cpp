@@ -47,7 +47,7 @@ public:
         const spec::derivation& s = out_.source;
         for (const spec::symbol& declaration : s.symbols)
             out_.symbols.declare(declaration);
-        check_definitions(out_.symbols, s);
+        check_definitions(out_.symbols, s, run_);
         for (const spec::use& u : s.uses)
             import(u);
         for (const spec::given& g : s.givens)
