@@ -1,0 +1,229 @@
+#include "engine/kernel_build.h"
+
+#include "engine/prove.h"
+
+#include <fmt/format.h>
+
+#include <set>
+
+namespace impact::engine {
+namespace {
+
+class kernel_builder {
+public:
+    kernel_builder(const derivation& d, const resolver& resolve, proof_cache& run)
+        : d_(d), resolve_(resolve), run_(run)
+    {
+    }
+
+    kernel build(const spec::kernel& spec_kernel)
+    {
+        kernel k;
+        k.name = spec_kernel.name.value;
+        k.batch = spec_kernel.batch;
+        std::set<std::string> seen;
+        auto add_input = [&](const spec::text& name) {
+            if (!seen.insert(name.value).second)
+                throw error(name.where, fmt::format("kernel '{}' lists input '{}' twice", k.name, name.value));
+            return d_.symbols.at(name);
+        };
+        for (const spec::binding& input : spec_kernel.inputs) {
+            kernel_parameter p;
+            p.name = input.name.value;
+            if (input.expression.value == input.name.value) {
+                p.components.push_back(add_input(input.name));
+            } else if (input.expression.value.find('[') == std::string::npos) {
+                // A scalar under another name: `v_par = v_1par`.
+                p.components.push_back(add_input(input.expression));
+            } else {
+                p.is_array = true;
+                for (const spec::text& component : split_list(input.expression))
+                    p.components.push_back(add_input(component));
+            }
+            k.parameters.push_back(std::move(p));
+        }
+        for (const spec::binding& b : spec_kernel.substitute)
+            substitutions_[d_.symbols.at(b.name).symbol] = d_.symbols.parse(b.expression);
+        for (const spec::binding& b : spec_kernel.let) {
+            const GiNaC::ex symbol = d_.symbols.at(b.name).symbol;
+            const GiNaC::ex value = in_kernel(d_.symbols.parse(b.expression));
+            require_inputs(k, value, b.name.value, b.expression.where);
+            k.lets.emplace_back(symbol, value);
+        }
+        for (const spec::text& v : spec_kernel.velocities) {
+            const kernel_parameter* p = find_parameter(k, v);
+            for (const quantity& q : p->components)
+                k.velocities.push_back(q.symbol);
+        }
+        for (const spec::binding& output : spec_kernel.outputs)
+            k.outputs.push_back(make_output(k, output, spec_kernel));
+        for (const spec::binding& e : spec_kernel.error) {
+            kernel_output* o = find_output(k, e.name);
+            const std::string& how = e.expression.value;
+            if (how == "relative") {
+                o->error = kernel_output::scale::relative;
+            } else if (how.rfind("velocity", 0) == 0) {
+                o->error = kernel_output::scale::velocity;
+                const auto star = how.find('*');
+                o->scale_factor = star == std::string::npos
+                                      ? GiNaC::ex(1)
+                                      : in_kernel(d_.symbols.parse({how.substr(star + 1), e.expression.where}));
+            } else {
+                throw error(e.expression.where, fmt::format("error scale '{}' must be relative, velocity or "
+                                                            "velocity*<expression>",
+                                                            how));
+            }
+        }
+        for (const spec::binding& g : spec_kernel.guards)
+            k.guards.push_back(make_guard(k, g));
+        return k;
+    }
+
+private:
+    // An expression of the derivation written in the kernel's inputs.
+    GiNaC::ex in_kernel(const GiNaC::ex& e) const
+    {
+        return resolve_(e).subs(substitutions_, GiNaC::subs_options::no_pattern);
+    }
+
+    const kernel_parameter* find_parameter(const kernel& k, const spec::text& name) const
+    {
+        if (const kernel_parameter* p = k.find_parameter(name.value))
+            return p;
+        throw error(name.where, fmt::format("kernel '{}' has no input '{}'", k.name, name.value));
+    }
+
+    kernel_output* find_output(kernel& k, const spec::text& name) const
+    {
+        for (kernel_output& o : k.outputs)
+            if (o.member == name.value)
+                return &o;
+        throw error(name.where, fmt::format("kernel '{}' has no output '{}'", k.name, name.value));
+    }
+
+    // `[a, b, c]` → a, b, c
+    static std::vector<spec::text> split_list(const spec::text& list)
+    {
+        std::string inner = list.value;
+        const auto open = inner.find('['), close = inner.rfind(']');
+        if (open == std::string::npos || close == std::string::npos || close < open)
+            throw error(list.where, fmt::format("\"{}\" must be a list such as [x, y]", list.value));
+        inner = inner.substr(open + 1, close - open - 1);
+        std::vector<spec::text> items;
+        std::size_t start = 0;
+        while (start <= inner.size()) {
+            const auto comma = inner.find(',', start);
+            std::string item = inner.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            const auto first = item.find_first_not_of(" \t");
+            const auto last = item.find_last_not_of(" \t");
+            if (first == std::string::npos)
+                throw error(list.where, fmt::format("empty entry in \"{}\"", list.value));
+            items.push_back({item.substr(first, last - first + 1), list.where});
+            if (comma == std::string::npos)
+                break;
+            start = comma + 1;
+        }
+        return items;
+    }
+
+    // An output's value and its candidate forms, each proven equal to the value and
+    // each written in the kernel's inputs only.
+    kernel_output make_output(const kernel& k, const spec::binding& output, const spec::kernel& spec_kernel)
+    {
+        kernel_output o;
+        o.member = output.name.value;
+        std::vector<spec::text> components{output.expression};
+        if (output.expression.value.find('[') != std::string::npos) {
+            o.is_array = true;
+            components = split_list(output.expression);
+        }
+        // Further forms name the output, or one component of an array: `v_M[0] = ...`.
+        auto extra_forms = [&](std::size_t c) {
+            std::vector<spec::text> extra;
+            const std::string component_name = fmt::format("{}[{}]", o.member, c);
+            for (const spec::binding& f : spec_kernel.forms)
+                if (f.name.value == (o.is_array ? component_name : o.member))
+                    extra.push_back(f.expression);
+            return extra;
+        };
+        GiNaC::exmap lets;
+        for (const auto& [symbol, value] : k.lets)
+            lets[symbol] = value;
+        for (std::size_t c = 0; c < components.size(); ++c) {
+            const spec::text& component = components[c];
+            const result* named = d_.find_result(component.value);
+            const GiNaC::ex value = in_kernel(named ? named->value : d_.symbols.parse(component));
+            require_inputs(k, value, o.member, component.where);
+            std::vector<form> forms;
+            if (named)
+                forms.push_back({"display", in_kernel(named->display)});
+            forms.push_back({"derived", value});
+            for (const paper_comparison& p : d_.paper_checks)
+                if (named && p.what == paper_comparison::kind::result && p.subject == named->name && p.agrees())
+                    forms.push_back({"paper", in_kernel(p.printed)});
+            for (const spec::text& e : extra_forms(c)) {
+                // A form may use the kernel's `let` values; it is proven with them substituted.
+                const GiNaC::ex alternative = in_kernel(d_.symbols.parse(e));
+                const verdict v = prove_equal(alternative.subs(lets, GiNaC::subs_options::no_pattern), value,
+                                              d_.symbols, run_);
+                if (v.what != verdict::status::proven)
+                    throw error(e.where, fmt::format("form \"{}\" of '{}' is not proven equal to it (residual {})",
+                                                     e.value, o.member, d_.symbols.text(v.residual)));
+                forms.push_back({e.value, alternative});
+            }
+            o.values.push_back(value);
+            o.candidates.push_back(std::move(forms));
+        }
+        return o;
+    }
+
+    void require_inputs(const kernel& k, const GiNaC::ex& value, const std::string& member,
+                        const source_location& where) const
+    {
+        // The symbols in `value`, gathered in one walk of it (not one walk a quantity).
+        std::set<GiNaC::ex, GiNaC::ex_is_less> present;
+        for (GiNaC::const_preorder_iterator it = value.preorder_begin(); it != value.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it))
+                present.insert(*it);
+        for (const quantity& q : d_.symbols.all()) {
+            if (!present.count(q.symbol) || k.find_input(q.name))
+                continue;
+            throw error(where, fmt::format("kernel '{}': output '{}' depends on '{}', which is not among its inputs",
+                                           k.name, member, q.name));
+        }
+    }
+
+    // `status = M, m` checks inputs against their domains; `status = <expr> < 0` a condition.
+    kernel_guard make_guard(const kernel& k, const spec::binding& g)
+    {
+        kernel_guard guard;
+        guard.status = g.name.value;
+        const std::string& text = g.expression.value;
+        if (text.find('<') != std::string::npos || text.find('>') != std::string::npos) {
+            const claim_sides sides = d_.symbols.parse_claim(g.expression);
+            if (!sides.rhs.is_zero() || (sides.op != relation::less && sides.op != relation::greater))
+                throw error(g.expression.where, "a guard condition reads '<expression> < 0' or '<expression> > 0'");
+            guard.condition = in_kernel(sides.lhs);
+            guard.op = sides.op;
+            require_inputs(k, *guard.condition, "guard " + guard.status, g.expression.where);
+            return guard;
+        }
+        for (const spec::text& name : split_list({"[" + text + "]", g.expression.where}))
+            guard.parameters.push_back(find_parameter(k, name)->name);
+        return guard;
+    }
+    const derivation& d_;
+    const resolver& resolve_;
+    proof_cache& run_;
+    /// Symbols of the results that the kernel computes from its inputs (r = C_M - C_m).
+    GiNaC::exmap substitutions_;
+};
+
+} // namespace
+
+kernel build_kernel(const spec::kernel& source, const derivation& d, const resolver& resolve, proof_cache& run)
+{
+    return kernel_builder(d, resolve, run).build(source);
+}
+
+} // namespace impact::engine
