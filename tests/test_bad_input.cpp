@@ -373,6 +373,55 @@ BOOST_AUTO_TEST_CASE(a_special_value_limit_or_assumption_outside_the_declared_do
                    "positive: an assumption may only narrow a domain");
 }
 
+// M a mass, v a velocity, E an energy (lines 1 to 12); E = M v^2/2 solved (13 to 21).
+std::string with_dimensions(const std::string& equation)
+{
+    return "id = \"bad\"\ntitle = \"a bad derivation\"\n"
+           "[[symbol]]\nname = \"M\"\ndomain = \"positive\"\ndimension = \"mass\"\n"
+           "[[symbol]]\nname = \"v\"\ndimension = \"velocity\"\n"
+           "[[symbol]]\nname = \"E\"\ndimension = \"energy\"\n"
+           "[[given]]\nname = \"g\"\nequation = \"" + equation + "\"\nbecause = \"b\"\n"
+           "[[step]]\nsolve = [\"g\"]\nfor = [\"E\"]\n[[result]]\nname = \"E\"\n";
+}
+
+BOOST_AUTO_TEST_CASE(an_equation_whose_dimensions_do_not_agree)
+{
+    expect_refused(with_dimensions("E = M*v + M*v^2/2"),
+                   "derivations/bad.toml:15:12: error: adds M*v, mass*length/time (a momentum), to M*v^2/2, "
+                   "mass*length^2/time^2 (an energy): the terms of a sum share one dimension");
+    expect_refused(with_dimensions("E = M*v"),
+                   "derivations/bad.toml:15:12: error: sets E, mass*length^2/time^2 (an energy), against M*v, "
+                   "mass*length/time (a momentum): both sides share one dimension");
+}
+
+BOOST_AUTO_TEST_CASE(a_value_of_the_wrong_dimension_or_a_function_of_one)
+{
+    const std::string good = with_dimensions("E = M*v^2/2") +
+                             "[[symbol]]\nname = \"L\"\ndimension = \"length\"\n"
+                             "[[symbol]]\nname = \"u\"\ndimension = \"velocity\"\n[[step]]\ndefine = \"u\"\n";
+    // A square root of a length is no velocity (line 30, where the value is written).
+    expect_refused(good + "as = \"sqrt(L)\"\n",
+                   "derivations/bad.toml:30:6: error: 'u' is a velocity (length/time) but the value derived for it, "
+                   "sqrt(L), is length^(1/2)");
+    expect_refused(good + "as = \"v*exp(L)\"\n",
+                   "derivations/bad.toml:30:6: error: takes exp of L, length: its argument is a pure number");
+    expect_refused(good + "as = \"v*atan2(L, v)\"\n",
+                   "derivations/bad.toml:30:6: error: takes atan2 of L, length, and v, length/time (a velocity): its "
+                   "two arguments share one dimension");
+}
+
+BOOST_AUTO_TEST_CASE(a_definition_of_another_dimension_than_declared)
+{
+    expect_refused(with_dimensions("E = M*v^2/2") +
+                       "[[symbol]]\nname = \"p\"\ndimension = \"momentum\"\ndefinition = \"M*v^2\"\n",
+                   "derivations/bad.toml:25:14: error: 'p' is declared a momentum (mass*length/time) but its "
+                   "definition M*v^2 is an energy (mass*length^2/time^2)");
+    expect_refused(with_dimensions("E = M*v^2/2") + "[[symbol]]\nname = \"p\"\ndimension = \"mass*lenght\"\n",
+                   "derivations/bad.toml:24:13: error: dimension \"mass*lenght\" names 'lenght', which is not a "
+                   "dimension; write a product of powers of mass, length, time and named dimensions, such as "
+                   "mass*length^2/time^2, or 1 for a pure number");
+}
+
 BOOST_AUTO_TEST_CASE(an_empty_file)
 {
     expect_refused("", "derivations/bad.toml: error: file is empty");

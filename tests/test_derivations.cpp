@@ -12,6 +12,7 @@
 #include "engine/library.h"
 
 #include <array>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -517,6 +518,72 @@ BOOST_AUTO_TEST_CASE(inelastic_collision_in_space_matches_the_impulse_along_the_
 BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(whole_library)
+
+// The dimension a physicist gives each of the paper's quantities, typed here: masses in
+// kg, velocities in m/s, the impulse a momentum, energies, the restitution coefficient
+// and the entries of the rotation pure numbers, positions in m.
+BOOST_AUTO_TEST_CASE(every_symbol_of_the_paper_has_the_dimension_a_physicist_gives_it)
+{
+    const std::map<std::string, std::string> expected = {
+        {"M", "mass"},
+        {"m", "mass"},
+        {"eps", "1"},
+        {"v_M", "length/time"},
+        {"v_m", "length/time"},
+        {"v_M_after", "length/time"},
+        {"vMp", "length/time"},
+        {"v_Mx_after", "length/time"},
+        {"v_1par", "length/time"},
+        {"J", "mass*length/time"},
+        {"Jres", "mass*length/time"},
+        {"E_before", "mass*length^2/time^2"},
+        {"E_after", "mass*length^2/time^2"},
+        {"dE", "mass*length^2/time^2"},
+        {"tau", "1"},
+        {"theta", "1"},
+        {"cos_theta", "1"},
+        {"cos_th", "1"},
+        {"sin_th", "1"},
+        {"rot_a", "1"},
+        {"rot_b", "1"},
+        {"n_x", "1"},
+        {"C_Mx", "length"},
+        {"r_norm", "length"},
+        {"m_eff", "1/mass"},
+        {"k_impulse", "1/mass/time"},
+        {"dot", "length^2/time^2"},
+    };
+    std::set<std::string> seen;
+    for (const engine::derivation* d : library().in_order())
+        for (const engine::quantity& q : d->symbols.all()) {
+            BOOST_TEST(q.dim.has_value(), d->id() + ": " + q.name + " has no dimension");
+            const auto found = expected.find(q.name);
+            if (found == expected.end() || !q.dim)
+                continue;
+            seen.insert(q.name);
+            BOOST_TEST(q.dim->to_string() == found->second, d->id() + ": " + q.name);
+        }
+    BOOST_TEST(seen.size() == expected.size());
+}
+
+// Appendix A, line 1 prints E'_K = 1/2 m v'_m + 1/2 m v'_M: a sum of momenta where an
+// energy belongs. Eq. 12, line 3 divides tau, a pure number, by a mass.
+BOOST_AUTO_TEST_CASE(misprints_of_the_wrong_dimension_are_reported_as_such)
+{
+    auto first_change = [](const std::string& id, const std::string& subject) {
+        for (const engine::paper_comparison& p : derived(id).paper_checks)
+            if (p.subject == subject)
+                return p.reconciliations.empty() ? std::string("(none)") : p.reconciliations.front();
+        return std::string("(not compared)");
+    };
+    BOOST_TEST(first_change("energy_loss_impulse", "E_after_v") ==
+               "dimensionally inconsistent: a momentum (mass*length/time) where an energy (mass*length^2/time^2) "
+               "belongs");
+    BOOST_TEST(first_change("billiard_transfer", "tau_line3") ==
+               "dimensionally inconsistent: 1/mass where a pure number belongs");
+    // Line 5 has the dimension of an energy: its misprint is a sign, reported as before.
+    BOOST_TEST(first_change("energy_loss_impulse", "E_after").find("dimension") == std::string::npos);
+}
 
 BOOST_AUTO_TEST_CASE(every_check_of_every_derivation_is_proven)
 {

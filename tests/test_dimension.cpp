@@ -3,8 +3,12 @@
 #define BOOST_TEST_MODULE test_dimension
 #include <boost/test/unit_test.hpp>
 
+#include "engine/derive.h"
+#include "engine/dimensional.h"
 #include "engine/dimension.h"
+#include "spec/derivation.h"
 
+#include <map>
 #include <string>
 
 using namespace impact;
@@ -164,6 +168,106 @@ BOOST_AUTO_TEST_CASE(each_rule_broken_is_named_with_the_dimensions)
     BOOST_TEST(c.refusal(GiNaC::sin(c.M / c.m) + c.M).find("adds") != std::string::npos);
     BOOST_TEST(c.refusal(GiNaC::pow(c.eps, c.t)).find("an exponent is a pure number") != std::string::npos);
     BOOST_TEST(c.refusal(GiNaC::pow(c.M, c.eps)).find("takes only a numeric exponent") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(derivation_files)
+
+// A projectile, not the paper's: every kind of expression the rules cover, dimensions
+// declared, named by the file ([[dimension]]) and inferred from definitions and steps.
+const char* const projectile = R"toml(id = "projectile"
+title = "a projectile's flight"
+[[dimension]]
+name = "angle"
+[[dimension]]
+name = "spin"
+as = "angle/time"
+[[symbol]]
+name = "g"
+domain = "positive"
+dimension = "acceleration"
+[[symbol]]
+name = "w"
+domain = "positive"
+dimension = "velocity"
+[[symbol]]
+name = "alpha"
+domain = "[0, 1]"
+dimension = "1"
+[[symbol]]
+name = "k"
+domain = "positive"
+dimension = "1/time"
+[[symbol]]
+name = "omega"
+dimension = "spin"
+[[symbol]]
+name = "T"
+[[symbol]]
+name = "R"
+dimension = "length"
+[[symbol]]
+name = "h"
+dimension = "length"
+definition = "w^2*sin(alpha)^2/(2*g)"
+[[symbol]]
+name = "heading"
+definition = "atan2(w*sin(alpha), w*cos(alpha))"
+[[symbol]]
+name = "decay"
+definition = "exp(-k*T) + log(k*T)"
+[[symbol]]
+name = "landing_speed"
+definition = "sqrt(w^2 + 2*g*h)"
+[[symbol]]
+name = "turned"
+definition = "omega*T"
+[[given]]
+name = "flight"
+equation = "T = 2*w*sin(alpha)/g"
+because = "the height is back to zero"
+[[given]]
+name = "range"
+equation = "R = w*cos(alpha)*T"
+because = "uniform motion across"
+[[step]]
+solve = ["flight", "range"]
+for = ["T", "R"]
+[[result]]
+name = "R"
+[[check]]
+name = "double_angle"
+claim = "R = 2*w^2*sin(alpha)*cos(alpha)/g"
+)toml";
+
+BOOST_AUTO_TEST_CASE(a_consistent_derivation_of_every_kind_of_expression_derives)
+{
+    const engine::derivation d = engine::derive(spec::parse_derivation(projectile, "projectile.toml"), {});
+    const std::map<std::string, std::string> expected = {
+        {"g", "length/time^2"}, {"w", "length/time"},   {"alpha", "1"},    {"k", "1/time"},
+        {"omega", "angle/time"}, {"T", "time"},          {"R", "length"},   {"h", "length"},
+        {"heading", "1"},        {"decay", "1"},         {"landing_speed", "length/time"},
+        {"turned", "angle"},
+    };
+    for (const engine::quantity& q : d.symbols.all()) {
+        BOOST_TEST_REQUIRE(q.dim.has_value(), q.name);
+        BOOST_TEST(q.dim->to_string() == expected.at(q.name), q.name);
+    }
+    BOOST_TEST(d.all_hold());
+    BOOST_TEST(engine::symbols_without_dimension(d.symbols).empty());
+}
+
+BOOST_AUTO_TEST_CASE(a_file_without_dimensions_still_derives_and_says_what_has_none)
+{
+    std::string text = projectile;
+    for (std::size_t at; (at = text.find("dimension = ")) != std::string::npos;)
+        text.erase(at, text.find('\n', at) - at + 1);
+    text.erase(text.find("[[dimension]]"), text.find("[[symbol]]") - text.find("[[dimension]]"));
+    const engine::derivation d = engine::derive(spec::parse_derivation(text, "projectile.toml"), {});
+    BOOST_TEST(d.all_hold());
+    // g, w, alpha, k, omega, T, R and every abbreviation of them: nothing to infer from.
+    BOOST_TEST(engine::symbols_without_dimension(d.symbols).size() == 12u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

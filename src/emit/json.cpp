@@ -47,6 +47,15 @@ json derivation_json(const engine::derivation& d)
     j["title"] = d.source.title.value;
     j["file"] = d.source_name();
     j["paper"] = d.source.paper ? d.source.paper->value : "";
+    // Each symbol with its domain and dimension ("" where the file gives none).
+    j["symbols"] = json::object();
+    for (const engine::quantity& q : d.symbols.all()) {
+        json sj;
+        sj["domain"] = q.range.to_string();
+        sj["dimension"] = q.dim ? q.dim->to_string() : "";
+        sj["si_unit"] = q.dim ? q.dim->si_unit() : "";
+        j["symbols"][q.name] = sj;
+    }
     j["results"] = json::object();
     for (const engine::result& r : d.results)
         j["results"][r.name] = ginac_syntax(r.value, order);

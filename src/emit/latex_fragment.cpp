@@ -9,6 +9,7 @@
 #include <cctype>
 #include <map>
 #include <optional>
+#include <sstream>
 
 namespace impact::emit {
 namespace detail {
@@ -141,6 +142,29 @@ std::string fragment_writer::ref(const std::string& equation) const
     return fmt::format("\\eqref{{{}:{}}}", latex_label(d_), equation);
 }
 
+namespace {
+
+// A quantity's SI unit, e.g. $\mathrm{kg\,m^{2}\,s^{-2}}$, or "dimensionless".
+std::string si_unit_latex(const engine::dimension& d)
+{
+    if (d.is_pure_number())
+        return "dimensionless";
+    std::string out;
+    for (const auto& [unit, e] : d.si_factors()) {
+        if (!out.empty())
+            out += "\\,";
+        out += unit;
+        if (e != 1) {
+            std::ostringstream exponent;
+            exponent << e;
+            out += "^{" + exponent.str() + "}";
+        }
+    }
+    return "$\\mathrm{" + out + "}$";
+}
+
+} // namespace
+
 std::string fragment_writer::quantities() const
 {
     std::string out = "\n\\paragraph{Quantities.}\n\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
@@ -150,6 +174,8 @@ std::string fragment_writer::quantities() const
         } else {
             out += fmt::format("\\item ${} {}$", math(q.symbol), q.range.to_latex());
         }
+        if (q.dim)
+            out += " (" + si_unit_latex(*q.dim) + ")";
         out += q.meaning.empty() ? "\n" : ": " + latex_text(q.meaning) + "\n";
     }
     return out + "\\end{itemize}\n";

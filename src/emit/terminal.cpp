@@ -1,8 +1,10 @@
 #include "emit/terminal.h"
 
+#include "engine/dimensional.h"
 #include "engine/infix.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace impact::emit {
 
@@ -40,6 +42,10 @@ std::string terminal_text(const engine::derivation& d)
         if (!c.outcome.holds())
             out += fmt::format("  {:<18} residual: {}\n", "", text(c.outcome.residual));
     }
+    // A derivation file may leave dimensions out; what has none is not checked.
+    const std::vector<std::string> without = engine::symbols_without_dimension(d.symbols);
+    if (!without.empty())
+        out += fmt::format("\nwithout a dimension (not checked for consistent units): {}\n", fmt::join(without, ", "));
     if (!d.paper_checks.empty()) {
         out += "\nthe paper, held to account\n";
         for (const engine::paper_comparison& p : d.paper_checks) {

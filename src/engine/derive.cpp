@@ -1,6 +1,7 @@
 #include "engine/derive.h"
 
 #include "engine/declarations.h"
+#include "engine/dimensional.h"
 #include "engine/kernel_build.h"
 #include "engine/reconcile.h"
 
@@ -45,9 +46,11 @@ public:
     derivation run()
     {
         const spec::derivation& s = out_.source;
+        add_dimensions(out_.symbols, s.dimensions);
         for (const spec::symbol& declaration : s.symbols)
             out_.symbols.declare(declaration);
         check_definitions(out_.symbols, s, run_);
+        infer_definitions(out_.symbols, s);
         for (const spec::use& u : s.uses)
             import(u);
         for (const spec::given& g : s.givens)
@@ -143,6 +146,7 @@ private:
         equations_.push_back({g.name.value, out_.symbols.parse_equation(g.equation), g.because.value,
                               g.paper ? g.paper->value : std::string(), g.equation.where, written(g.equation)});
         out_.givens.push_back(equations_.back());
+        check_relation(out_.symbols, equations_.back().relation, g.equation.where);
         if (g.printed) {
             // The paper's printing of a given equation must be equivalent to it.
             paper_comparison p;
@@ -156,6 +160,7 @@ private:
             p.agreement = prove_equivalent(p.printed, p.derived, out_.symbols, run_);
             if (!p.agrees())
                 p.reconciliations = reconcile_equation(p.printed, p.derived, out_.symbols, resolver(), run_);
+            add_dimension_finding(p);
             p.where = g.printed->where;
             out_.paper_checks.push_back(std::move(p));
         }
@@ -189,6 +194,13 @@ private:
             case spec::step::kind::quotient: quotient(st, r); break;
             case spec::step::kind::rearrange: rearrange(st, r); break;
             }
+            // What the step derives has the dimension of what it derives it for.
+            const source_location& at = st.what == spec::step::kind::define ? st.expression.where : st.where;
+            for (const auto& [symbol, value] : r.values)
+                check_value(out_.symbols, symbol, value, at);
+            if (r.yields)
+                check_relation(out_.symbols, r.yields->relation, st.where);
+            infer_definitions(out_.symbols, out_.source);   // abbreviations of what is now known
         } catch (...) {
             rethrow_at(st.where, fmt::format("step {} ({})", out_.steps.size() + 1, r.description));
         }
@@ -329,6 +341,7 @@ private:
         if (spec_result.display) {
             r.display = out_.symbols.parse(*spec_result.display);
             r.written = written(*spec_result.display);
+            check_value(out_.symbols, r.symbol, r.display, spec_result.display->where);
             check_result c;
             c.name = fmt::format("display form of {}", q.name);
             c.display_of = q.name;
@@ -352,13 +365,24 @@ private:
             p.agreement = prove_equal(resolve(p.printed), r.value, out_.symbols, run_);
             if (!p.agrees())
                 p.reconciliations = reconcile_expression(p.printed, r.value, out_.symbols, resolver(), run_);
+            add_dimension_finding(p);
             p.where = spec_result.printed->where;
             out_.paper_checks.push_back(std::move(p));
         }
         out_.results.push_back(std::move(r));
     }
 
-    check_result run_check(const spec::check& spec_check)
+    // A printed form of the wrong dimension says so first: it is often the clearest
+    // account of a misprint (a momentum where an energy belongs).
+    void add_dimension_finding(paper_comparison& p) const
+    {
+        if (const auto finding = printed_dimension_finding(out_.symbols, p.printed, p.derived))
+            p.reconciliations.insert(p.reconciliations.begin(), *finding);
+    }
+
+    // `paper_claim`: the claim transcribes the paper's text, whose dimensions are a finding
+    // (hold_to_account), not the file's mistake.
+    check_result run_check(const spec::check& spec_check, bool paper_claim = false)
     {
         check_result c;
         c.name = spec_check.name.value;
@@ -369,6 +393,8 @@ private:
         c.written = written(spec_check.claim);
         c.op = sides.op;
         c.stated = sides.lhs == sides.rhs;
+        if (!paper_claim)
+            check_relation(out_.symbols, c.stated, spec_check.claim.where);
         GiNaC::ex lhs = resolve(sides.lhs), rhs = resolve(sides.rhs);
 
         // Symmetries compare a result at changed inputs with the result itself:
@@ -439,7 +465,7 @@ private:
         p.paper = claim.paper.value;
         p.printed_text = claim.quote.value;
         p.where = claim.test.claim.where;
-        check_result c = run_check(claim.test);
+        check_result c = run_check(claim.test, true);
         p.printed = c.stated;
         p.derived = c.value ? *c.value : c.lhs;
         p.agreement = c.outcome;
@@ -447,6 +473,8 @@ private:
             p.reconciliations = other_regimes(claim.test, c);
         else if (!p.agrees() && c.op == relation::equal)
             p.reconciliations = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
+        if (const auto finding = printed_dimension_finding(out_.symbols, p.printed, p.printed))
+            p.reconciliations.insert(p.reconciliations.begin(), *finding);
         p.test = std::move(c);
         return p;
     }

@@ -144,23 +144,28 @@ std::string dimension::describe() const
     return name ? fmt::format("{} ({})", to_string(), *name) : to_string();
 }
 
-std::string dimension::si_unit() const
+std::vector<std::pair<std::string, GiNaC::numeric>> dimension::si_factors() const
 {
     std::vector<std::pair<std::string, GiNaC::numeric>> bases(exponents_.begin(), exponents_.end());
     std::sort(bases.begin(), bases.end(), [](const auto& a, const auto& b) {
         return std::make_pair(base_rank(a.first), a.first) < std::make_pair(base_rank(b.first), b.first);
     });
-    if (bases.empty())
-        return "1";
+    for (auto& [name, e] : bases)
+        name = name == "mass" ? "kg" : name == "length" ? "m" : name == "time" ? "s" : name;
+    return bases;
+}
+
+std::string dimension::si_unit() const
+{
     std::string out;
-    for (const auto& [name, e] : bases) {
+    for (const auto& [unit, e] : si_factors()) {
         if (!out.empty())
             out += " ";
-        out += name == "mass" ? "kg" : name == "length" ? "m" : name == "time" ? "s" : name;
+        out += unit;
         if (e != 1)
             out += "^" + exponent_text(e);
     }
-    return out;
+    return out.empty() ? "1" : out;
 }
 
 dimension_names::dimension_names()
@@ -254,7 +259,10 @@ namespace {
 
 class inference {
 public:
-    inference(const dimension_map& known, const source_location& where) : known_(known), where_(where) {}
+    inference(const dimension_map& known, const source_location& where, const expression_text& text)
+        : known_(known), where_(where), text_(text)
+    {
+    }
 
     std::optional<dimension> of(const GiNaC::ex& e) const
     {
@@ -374,8 +382,10 @@ private:
         return lhs ? lhs : rhs;
     }
 
-    static std::string text(const GiNaC::ex& e)
+    std::string text(const GiNaC::ex& e) const
     {
+        if (text_)
+            return text_(e);
         std::ostringstream out;
         out << e;
         return out.str();
@@ -383,19 +393,21 @@ private:
 
     const dimension_map& known_;
     const source_location& where_;
+    const expression_text& text_;
 };
 
 } // namespace
 
-std::optional<dimension> dimension_of(const GiNaC::ex& e, const dimension_map& known, const source_location& where)
+std::optional<dimension> dimension_of(const GiNaC::ex& e, const dimension_map& known, const source_location& where,
+                                      const expression_text& text)
 {
-    return inference(known, where).of(e);
+    return inference(known, where, text).of(e);
 }
 
 std::optional<dimension> dimension_of_relation(const GiNaC::ex& relation, const dimension_map& known,
-                                               const source_location& where)
+                                               const source_location& where, const expression_text& text)
 {
-    return inference(known, where).of(relation);
+    return inference(known, where, text).of(relation);
 }
 
 } // namespace impact::engine

@@ -14,6 +14,7 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -47,6 +48,8 @@ public:
     /// The SI unit of the dimension, e.g. "kg m^2 s^-2" (bases other than mass, length
     /// and time by their own name).
     std::string si_unit() const;
+    /// The SI unit as factors and exponents: {"kg", 1}, {"m", 2}, {"s", -2}.
+    std::vector<std::pair<std::string, GiNaC::numeric>> si_factors() const;
 
 private:
     std::map<std::string, GiNaC::numeric, std::less<>> exponents_;   ///< no zero exponents
@@ -77,10 +80,14 @@ using dimension_map = std::map<GiNaC::ex, dimension, GiNaC::ex_is_less>;
 /// the result unknown (nullopt), as does any part built on it; the parts that are known
 /// are still checked. Throws `impact::error` at `where` naming the rule broken and the
 /// dimensions, e.g. "adds mass*length/time (a momentum) to mass*length^2/time^2 (an energy)".
-std::optional<dimension> dimension_of(const GiNaC::ex& e, const dimension_map& known, const source_location& where);
+/// `text` writes the expressions a message names (by default GiNaC's own printing, whose
+/// order of terms may change from run to run: the engine passes symbol_table::text).
+using expression_text = std::function<std::string(const GiNaC::ex&)>;
+std::optional<dimension> dimension_of(const GiNaC::ex& e, const dimension_map& known, const source_location& where,
+                                      const expression_text& text = {});
 
 /// Both sides of `relation` (an equation or inequality) share one dimension; returns it.
 std::optional<dimension> dimension_of_relation(const GiNaC::ex& relation, const dimension_map& known,
-                                               const source_location& where);
+                                               const source_location& where, const expression_text& text = {});
 
 } // namespace impact::engine

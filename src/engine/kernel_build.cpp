@@ -1,5 +1,6 @@
 #include "engine/kernel_build.h"
 
+#include "engine/dimensional.h"
 #include "engine/prove.h"
 
 #include <fmt/format.h>
@@ -68,6 +69,7 @@ public:
                 o->scale_factor = star == std::string::npos
                                       ? GiNaC::ex(1)
                                       : in_kernel(d_.symbols.parse({how.substr(star + 1), e.expression.where}));
+                check_scale(*o, e.expression);
             } else {
                 throw error(e.expression.where, fmt::format("error scale '{}' must be relative, velocity or "
                                                             "velocity*<expression>",
@@ -80,6 +82,20 @@ public:
     }
 
 private:
+    // An error measured in units of the inputs' velocity times `scale_factor` is an
+    // error of the output's own dimension (J, a momentum: velocity*M*m/(M + m)).
+    void check_scale(const kernel_output& o, const spec::text& written) const
+    {
+        const auto output = check_expression(d_.symbols, o.values.front(), written.where);
+        const auto factor = check_expression(d_.symbols, o.scale_factor, written.where);
+        if (!output || !factor)
+            return;
+        const dimension scale = d_.symbols.dimension_words().parse("velocity", written.where) * *factor;
+        if (scale != *output)
+            throw error(written.where, fmt::format("error scale '{}' is {}, but '{}' is {}", written.value,
+                                                   scale.describe(), o.member, output->describe()));
+    }
+
     // An expression of the derivation written in the kernel's inputs.
     GiNaC::ex in_kernel(const GiNaC::ex& e) const
     {

@@ -260,6 +260,10 @@ const quantity& symbol_table::declare(const spec::symbol& declaration)
     q.latex = declaration.latex.value;
     q.meaning = declaration.meaning.value;
     q.where = declaration.name.where;
+    if (declaration.dimension) {
+        q.dim = dimension_words_.parse(declaration.dimension->value, declaration.dimension->where);
+        q.dim_declared = true;
+    }
     if (q.range.is_positive())
         q.symbol = GiNaC::possymbol(name, q.latex);
     else
@@ -290,6 +294,22 @@ const quantity& symbol_table::adopt(const quantity& other)
     order_.reset();
     reader_.reset();
     return quantities_.back();
+}
+
+dimension_map symbol_table::dimensions() const
+{
+    dimension_map map;
+    for (const quantity& q : quantities_)
+        if (q.dim)
+            map.emplace(q.symbol, *q.dim);
+    return map;
+}
+
+void symbol_table::infer_dimension(const GiNaC::ex& symbol, const dimension& d)
+{
+    for (quantity& q : quantities_)
+        if (q.symbol.is_equal(symbol))
+            q.dim = d;
 }
 
 const quantity* symbol_table::find(const std::string& name) const

@@ -6,6 +6,7 @@
 // mode, so an undeclared name is an error at the place it was written.
 #pragma once
 
+#include "engine/dimension.h"
 #include "engine/domain.h"
 #include "engine/written_form.h"
 #include "spec/derivation.h"
@@ -32,6 +33,10 @@ struct quantity {
     std::optional<GiNaC::ex> definition;
     written_form written;   ///< how the definition was written, for the printers
     source_location where;
+    /// Its physical dimension: declared (`dimension = "velocity"`), or inferred from its
+    /// definition or the step that derives it; none when neither says.
+    std::optional<dimension> dim;
+    bool dim_declared = false;
 };
 
 /// The relation a claim states between its sides.
@@ -70,6 +75,14 @@ public:
 
     /// Substitutions that expand every abbreviation into declared quantities.
     GiNaC::exmap abbreviations() const;
+    /// The dimensions the derivation's symbols may be given (mass, length, time, their
+    /// familiar combinations and the derivation's own `[[dimension]]`s).
+    dimension_names& dimension_words() { return dimension_words_; }
+    const dimension_names& dimension_words() const { return dimension_words_; }
+    /// The dimension of each symbol that has one, keyed by the GiNaC symbol.
+    dimension_map dimensions() const;
+    /// Gives a symbol the dimension inferred for it (from its definition or a step).
+    void infer_dimension(const GiNaC::ex& symbol, const dimension& d);
     /// The domain of each symbol, keyed by the GiNaC symbol.
     const domain* domain_of(const GiNaC::ex& symbol) const;
 
@@ -79,6 +92,7 @@ public:
 
 private:
     std::vector<quantity> quantities_;
+    dimension_names dimension_words_;
     GiNaC::symtab table_;
     // Texts already read: the same pieces are read again and again (a symbol, `M + m`),
     // most of all by the LaTeX printer's written forms. Only a text that reads is kept,

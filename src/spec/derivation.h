@@ -34,6 +34,14 @@ struct symbol {
     text domain;          ///< `real`, `positive`, `nonnegative`, or an interval `[0, 1]`
     text meaning;         ///< a few words for the reader
     std::optional<text> definition; ///< set for abbreviations such as `m_eff = 1/m + 1/M`
+    std::optional<text> dimension;  ///< e.g. `mass`, `velocity`, `mass*length^2/time^2`, `1`
+};
+
+/// A dimension a derivation adds: a new base (`angle`), or a name for a combination
+/// (`spin` as `angle/time`).
+struct dimension {
+    text name;
+    std::optional<text> as;
 };
 
 /// A given equation with its justification in words.
@@ -115,6 +123,7 @@ struct derivation {
     std::optional<text> paper;
     text summary;
     std::vector<use> uses;
+    std::vector<dimension> dimensions;
     std::vector<symbol> symbols;
     std::vector<given> givens;
     std::vector<step> steps;

@@ -233,8 +233,18 @@ symbol read_symbol(table_reader& in)
     s.definition = in.optional_string("definition");
     s.domain = in.string_or("domain", "real");
     s.meaning = in.string_or("meaning", "");
+    s.dimension = in.optional_string("dimension");
     in.finish();
     return s;
+}
+
+dimension read_dimension(table_reader& in)
+{
+    dimension d;
+    d.name = in.required_string("name");
+    d.as = in.optional_string("as");
+    in.finish();
+    return d;
 }
 
 given read_given(table_reader& in)
@@ -423,6 +433,7 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     d.paper = top.optional_string("paper");
     d.summary = top.string_or("summary", "");
     d.uses = read_all<use>(top, file, "use", read_use);
+    d.dimensions = read_all<dimension>(top, file, "dimension", read_dimension);
     d.symbols = read_all<symbol>(top, file, "symbol", read_symbol);
     d.givens = read_all<given>(top, file, "given", read_given);
     d.steps = read_all<step>(top, file, "step", read_step);
