@@ -74,7 +74,63 @@ BOOST_AUTO_TEST_CASE(a_complete_file_is_read_into_its_parts)
     BOOST_TEST(d.checks.at(0).at.at(0).name.value == "x");
     BOOST_TEST(d.checks.at(0).at.at(0).expression.value == "3");
     BOOST_TEST(d.kernels.at(0).outputs.at(0).name.value == "twice");
-    BOOST_TEST(d.kernels.at(0).outputs.at(0).expression.value == "y");
+    BOOST_TEST(d.kernels.at(0).outputs.at(0).components.at(0).value == "y");
+    BOOST_TEST(!d.kernels.at(0).outputs.at(0).is_array);
+}
+
+// Lists, limits, guards and error scales are read here, so that no later stage parses
+// the file's text.
+BOOST_AUTO_TEST_CASE(kernel_lists_guards_error_scales_and_limits_are_read_into_parts)
+{
+    const std::string text = std::string(minimal) +
+                             "[[kernel]]\nname = \"k2\"\ninputs = [\"x\", \"C = [c1, c2 ]\", \"u = x\"]\n"
+                             "outputs = [\"v = [y, 2*x]\"]\n"
+                             "guards = [\"bad = x, C\", \"apart = x - 1 > 0\"]\n"
+                             "error = [\"v = velocity*M/(M + m)\", \"w = relative\", \"z = velocity\"]\n"
+                             "[[check]]\nname = \"l\"\nclaim = \"y = 0\"\nlimit = \"x ->  infinity\"\n"
+                             "[[check]]\nname = \"l2\"\nclaim = \"y = 0\"\nlimit = \"x->1/2\"\n";
+    const auto d = parse_derivation(text, "tiny.toml");
+    const impact::spec::kernel& k = d.kernels.at(1);
+    BOOST_TEST(k.inputs.at(0).components.at(0).value == "x");
+    BOOST_TEST(k.inputs.at(1).is_array);
+    BOOST_TEST(k.inputs.at(1).components.size() == 2u);
+    BOOST_TEST(k.inputs.at(1).components.at(1).value == "c2");
+    BOOST_TEST(k.inputs.at(2).name.value == "u");
+    BOOST_TEST(k.inputs.at(2).components.at(0).value == "x");
+    BOOST_TEST(k.outputs.at(0).components.at(1).value == "2*x");
+    BOOST_TEST(k.guards.at(0).parameters.size() == 2u);
+    BOOST_TEST(!k.guards.at(0).condition.has_value());
+    BOOST_TEST(k.guards.at(1).condition->value == "x - 1 > 0");
+    BOOST_TEST(!k.error.at(0).relative);
+    BOOST_TEST(k.error.at(0).factor->value == "M/(M + m)");
+    BOOST_TEST(k.error.at(1).relative);
+    BOOST_TEST(!k.error.at(2).relative);
+    BOOST_TEST(!k.error.at(2).factor.has_value());
+    const auto& to_infinity = *d.checks.at(1).limit;
+    BOOST_TEST(to_infinity.symbol.value == "x");
+    BOOST_TEST(to_infinity.to_infinity);
+    BOOST_TEST(d.checks.at(2).limit->point.value == "1/2");
+    BOOST_TEST(!d.checks.at(2).limit->to_infinity);
+}
+
+BOOST_AUTO_TEST_CASE(a_limit_list_or_error_scale_that_is_not_understood_is_refused_at_its_place)
+{
+    auto refused = [](const std::string& extra, const std::string& message) {
+        try {
+            parse_derivation(std::string(minimal) + extra, "tiny.toml");
+            BOOST_ERROR("accepted: " + extra);
+        } catch (const impact::error& e) {
+            BOOST_TEST(e.message() == message);
+        }
+    };
+    refused("[[check]]\nname = \"l\"\nclaim = \"y = 0\"\nlimit = \"x = 1\"\n",
+            "limit \"x = 1\" must read 'symbol -> point'");
+    refused("[[kernel]]\nname = \"k2\"\ninputs = [\"C = [c1, ]\"]\noutputs = [\"v = y\"]\n",
+            "empty entry in \"[c1, ]\"");
+    refused("[[kernel]]\nname = \"k2\"\ninputs = [\"x\"]\noutputs = [\"v = y\"]\nerror = [\"v = speedy\"]\n",
+            "error scale 'speedy' must be relative, velocity or velocity*<expression>");
+    refused("[[kernel]]\nname = \"k2\"\ninputs = [\"x\"]\noutputs = [\"v = y\"]\nerror = [\"v = velocityx\"]\n",
+            "error scale 'velocityx' must be relative, velocity or velocity*<expression>");
 }
 
 BOOST_AUTO_TEST_CASE(expressions_remember_the_line_they_were_written_on)

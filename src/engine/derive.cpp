@@ -440,11 +440,11 @@ private:
         c.lhs = lhs;
         c.rhs = rhs;
         if (spec_check.limit) {
-            c.limit = parse_limit(*spec_check.limit);
+            c.limit = limit_point_of(*spec_check.limit);
             if (c.op != relation::equal)
-                throw error(spec_check.limit->where, "a limit check claims an equality: lim lhs = rhs");
+                throw error(spec_check.limit->written.where, "a limit check claims an equality: lim lhs = rhs");
             c.outcome = check_limit(lhs, rhs, *c.limit, given, c.value, c.limit_by);
-            c.statement += fmt::format(" in the limit {}", spec_check.limit->value);
+            c.statement += fmt::format(" in the limit {}", spec_check.limit->written.value);
         } else if (c.op == relation::equal) {
             c.outcome = prove_equal(lhs, rhs, out_.symbols, run_);
             c.value = lhs;
@@ -482,31 +482,36 @@ private:
     std::vector<std::string> other_regimes(const spec::check& original, const check_result& failed)
     {
         std::vector<std::string> found;
+        const spec::text* symbol = nullptr;
         const spec::text* point = nullptr;
-        std::string symbol_name;
         if (original.limit) {
-            point = &*original.limit;
-            symbol_name = original.limit->value.substr(0, original.limit->value.find("->"));
-            symbol_name.erase(symbol_name.find_last_not_of(" \t") + 1);
+            symbol = &original.limit->symbol;
+            point = &original.limit->written;
         } else if (original.at.size() == 1) {
+            symbol = &original.at.front().name;
             point = &original.at.front().expression;
-            symbol_name = original.at.front().name.value;
         }
-        if (point) {
-            const quantity& q = out_.symbols.at({symbol_name, point->where});
+        if (symbol) {
+            const quantity& q = out_.symbols.at(*symbol);
             std::vector<std::string> candidates = {"0", "infinity"};
             if (q.range.what == domain::kind::interval)
                 candidates = {fmt::format("{}", q.range.lower), fmt::format("{}", q.range.upper)};
             for (const std::string& other : candidates) {
+                const bool infinity = other == "infinity";
+                const bool same = original.limit ? original.limit->to_infinity == infinity &&
+                                                       (infinity || original.limit->point.value == other)
+                                                 : other == original.at.front().expression.value;
+                if (same)
+                    continue;
                 spec::check moved = original;
                 moved.at.clear();
-                moved.limit = spec::text{symbol_name + " -> " + other, point->where};
-                if (moved.limit->value == (original.limit ? original.limit->value : "") ||
-                    (!original.limit && other == original.at.front().expression.value))
-                    continue;
+                moved.limit = spec::limit_point{{symbol->value + " -> " + other, point->where},
+                                          {symbol->value, point->where},
+                                          {infinity ? "" : other, point->where},
+                                          infinity};
                 try {
                     if (run_check(moved).outcome.what == verdict::status::proven)
-                        found.push_back(fmt::format("it holds for {} -> {} instead", symbol_name, other));
+                        found.push_back(fmt::format("it holds for {} -> {} instead", symbol->value, other));
                 } catch (const error&) {
                 }
             }
@@ -516,26 +521,16 @@ private:
         return found;
     }
 
-    // `symbol -> point`, the point an expression or `infinity`.
-    check_result::limit_point parse_limit(const spec::text& text) const
+    // The limit's symbol and point (an expression, or infinity), inside the symbol's domain.
+    check_result::limit_point limit_point_of(const spec::limit_point& l) const
     {
-        const auto arrow = text.value.find("->");
-        if (arrow == std::string::npos)
-            throw error(text.where, fmt::format("limit \"{}\" must read 'symbol -> point'", text.value));
-        auto trim = [](std::string s) {
-            const auto first = s.find_first_not_of(" \t");
-            const auto last = s.find_last_not_of(" \t");
-            return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
-        };
         check_result::limit_point p;
-        const quantity& q = out_.symbols.at({trim(text.value.substr(0, arrow)), text.where});
+        const quantity& q = out_.symbols.at(l.symbol);
         p.symbol = q.symbol;
-        const std::string point = trim(text.value.substr(arrow + 2));
-        if (point == "infinity" || point == "oo")
-            p.to_infinity = true;
-        else
-            p.point = out_.symbols.parse({point, text.where});
-        check_limit_point(q, p.point, p.to_infinity, text.where);
+        p.to_infinity = l.to_infinity;
+        if (!l.to_infinity)
+            p.point = out_.symbols.parse(l.point);
+        check_limit_point(q, p.point, p.to_infinity, l.written.where);
         return p;
     }
 

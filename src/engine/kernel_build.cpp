@@ -28,19 +28,12 @@ public:
                 throw error(name.where, fmt::format("kernel '{}' lists input '{}' twice", k.name, name.value));
             return d_.symbols.at(name);
         };
-        for (const spec::binding& input : spec_kernel.inputs) {
+        for (const spec::kernel_value& input : spec_kernel.inputs) {
             kernel_parameter p;
             p.name = input.name.value;
-            if (input.expression.value == input.name.value) {
-                p.components.push_back(add_input(input.name));
-            } else if (input.expression.value.find('[') == std::string::npos) {
-                // A scalar under another name: `v_par = v_1par`.
-                p.components.push_back(add_input(input.expression));
-            } else {
-                p.is_array = true;
-                for (const spec::text& component : split_list(input.expression))
-                    p.components.push_back(add_input(component));
-            }
+            p.is_array = input.is_array;
+            for (const spec::text& component : input.components)
+                p.components.push_back(add_input(component));
             k.parameters.push_back(std::move(p));
         }
         for (const spec::binding& b : spec_kernel.substitute)
@@ -56,27 +49,19 @@ public:
             for (const quantity& q : p->components)
                 k.velocities.push_back(q.symbol);
         }
-        for (const spec::binding& output : spec_kernel.outputs)
+        for (const spec::kernel_value& output : spec_kernel.outputs)
             k.outputs.push_back(make_output(k, output, spec_kernel));
-        for (const spec::binding& e : spec_kernel.error) {
-            kernel_output* o = find_output(k, e.name);
-            const std::string& how = e.expression.value;
-            if (how == "relative") {
+        for (const spec::error_scale& e : spec_kernel.error) {
+            kernel_output* o = find_output(k, e.output);
+            if (e.relative) {
                 o->error = kernel_output::scale::relative;
-            } else if (how.rfind("velocity", 0) == 0) {
-                o->error = kernel_output::scale::velocity;
-                const auto star = how.find('*');
-                o->scale_factor = star == std::string::npos
-                                      ? GiNaC::ex(1)
-                                      : in_kernel(d_.symbols.parse({how.substr(star + 1), e.expression.where}));
-                check_scale(*o, e.expression);
-            } else {
-                throw error(e.expression.where, fmt::format("error scale '{}' must be relative, velocity or "
-                                                            "velocity*<expression>",
-                                                            how));
+                continue;
             }
+            o->error = kernel_output::scale::velocity;
+            o->scale_factor = e.factor ? in_kernel(d_.symbols.parse(*e.factor)) : GiNaC::ex(1);
+            check_scale(*o, e.written);
         }
-        for (const spec::binding& g : spec_kernel.guards)
+        for (const spec::kernel_guard& g : spec_kernel.guards)
             k.guards.push_back(make_guard(k, g));
         return k;
     }
@@ -117,42 +102,14 @@ private:
         throw error(name.where, fmt::format("kernel '{}' has no output '{}'", k.name, name.value));
     }
 
-    // `[a, b, c]` → a, b, c
-    static std::vector<spec::text> split_list(const spec::text& list)
-    {
-        std::string inner = list.value;
-        const auto open = inner.find('['), close = inner.rfind(']');
-        if (open == std::string::npos || close == std::string::npos || close < open)
-            throw error(list.where, fmt::format("\"{}\" must be a list such as [x, y]", list.value));
-        inner = inner.substr(open + 1, close - open - 1);
-        std::vector<spec::text> items;
-        std::size_t start = 0;
-        while (start <= inner.size()) {
-            const auto comma = inner.find(',', start);
-            std::string item = inner.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-            const auto first = item.find_first_not_of(" \t");
-            const auto last = item.find_last_not_of(" \t");
-            if (first == std::string::npos)
-                throw error(list.where, fmt::format("empty entry in \"{}\"", list.value));
-            items.push_back({item.substr(first, last - first + 1), list.where});
-            if (comma == std::string::npos)
-                break;
-            start = comma + 1;
-        }
-        return items;
-    }
-
     // An output's value and its candidate forms, each proven equal to the value and
     // each written in the kernel's inputs only.
-    kernel_output make_output(const kernel& k, const spec::binding& output, const spec::kernel& spec_kernel)
+    kernel_output make_output(const kernel& k, const spec::kernel_value& output, const spec::kernel& spec_kernel)
     {
         kernel_output o;
         o.member = output.name.value;
-        std::vector<spec::text> components{output.expression};
-        if (output.expression.value.find('[') != std::string::npos) {
-            o.is_array = true;
-            components = split_list(output.expression);
-        }
+        o.is_array = output.is_array;
+        const std::vector<spec::text>& components = output.components;
         // Further forms name the output, or one component of an array: `v_M[0] = ...`.
         auto extra_forms = [&](std::size_t c) {
             std::vector<spec::text> extra;
@@ -210,21 +167,20 @@ private:
     }
 
     // `status = M, m` checks inputs against their domains; `status = <expr> < 0` a condition.
-    kernel_guard make_guard(const kernel& k, const spec::binding& g)
+    kernel_guard make_guard(const kernel& k, const spec::kernel_guard& g)
     {
         kernel_guard guard;
-        guard.status = g.name.value;
-        const std::string& text = g.expression.value;
-        if (text.find('<') != std::string::npos || text.find('>') != std::string::npos) {
-            const claim_sides sides = d_.symbols.parse_claim(g.expression);
+        guard.status = g.status.value;
+        if (g.condition) {
+            const claim_sides sides = d_.symbols.parse_claim(*g.condition);
             if (!sides.rhs.is_zero() || (sides.op != relation::less && sides.op != relation::greater))
-                throw error(g.expression.where, "a guard condition reads '<expression> < 0' or '<expression> > 0'");
+                throw error(g.condition->where, "a guard condition reads '<expression> < 0' or '<expression> > 0'");
             guard.condition = in_kernel(sides.lhs);
             guard.op = sides.op;
-            require_inputs(k, *guard.condition, "guard " + guard.status, g.expression.where);
+            require_inputs(k, *guard.condition, "guard " + guard.status, g.condition->where);
             return guard;
         }
-        for (const spec::text& name : split_list({"[" + text + "]", g.expression.where}))
+        for (const spec::text& name : g.parameters)
             guard.parameters.push_back(find_parameter(k, name)->name);
         return guard;
     }

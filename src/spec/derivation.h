@@ -77,13 +77,21 @@ struct result {
 
 /// A claim that must hold once the results are substituted: an identity, an
 /// inequality, or a limit.
+/// `symbol -> point` (the point an expression, or `infinity`).
+struct limit_point {
+    text written;                  ///< as the file writes it
+    text symbol;
+    text point;                    ///< empty when `to_infinity`
+    bool to_infinity = false;
+};
+
 struct check {
     text name;
     text claim;                    ///< `lhs = rhs`, or `lhs <= rhs` (also <, >=, >)
     text because;
     std::vector<binding> at;       ///< special values, e.g. `eps = 1`
     std::vector<binding> left_at;  ///< inputs changed on the left side only, e.g. `v_M = v_M + w`
-    std::optional<text> limit;     ///< `v_perp -> 0` or `v_perp -> infinity`: the claim is about lim lhs
+    std::optional<limit_point> limit;///< `v_perp -> 0` or `v_perp -> infinity`: the claim is about lim lhs
     std::vector<binding> assuming; ///< narrower domains for this check, e.g. `eps = "[0, 1)"`
 };
 
@@ -96,14 +104,39 @@ struct claim {
 };
 
 /// A C++ kernel to emit: a function of `inputs` returning `outputs`.
+/// A kernel's input or output: a scalar (`M`, or `v_par = v_1par` under another name)
+/// or an array of components (`C_M = [C_Mx, C_My]`).
+struct kernel_value {
+    text name;                     ///< the C++ parameter or struct member
+    std::vector<text> components;  ///< symbols (inputs) or results and expressions (outputs)
+    bool is_array = false;
+};
+
+/// `status = M, m` checks inputs against their domains; `status = <expr> < 0` (or > 0)
+/// a condition.
+struct kernel_guard {
+    text status;
+    std::vector<text> parameters;
+    std::optional<text> condition;
+};
+
+/// How an output's error is measured: relative to itself, or in units of the largest
+/// input velocity times a factor (`velocity*M*m/(M + m)` for an impulse).
+struct error_scale {
+    text output;
+    bool relative = true;
+    std::optional<text> factor;    ///< with `velocity*<factor>`
+    text written;
+};
+
 struct kernel {
     text name;
-    std::vector<binding> inputs;   ///< `M` (name = itself), or an array `C_M = [C_Mx, C_My]`
-    std::vector<binding> outputs;  ///< struct member = result expression, or `v_M = [v_Mx_after, v_My_after]`
+    std::vector<kernel_value> inputs;
+    std::vector<kernel_value> outputs;
     std::vector<text> velocities;  ///< inputs whose largest magnitude scales velocity errors
-    std::vector<binding> error;    ///< output = `relative` (default), `velocity` or `velocity*<expr>`
+    std::vector<error_scale> error;
     std::vector<binding> forms;    ///< further candidate forms of an output: `J = <expr>` (proven equal)
-    std::vector<binding> guards;   ///< status = inputs to check against their domains, or a condition
+    std::vector<kernel_guard> guards;
     std::vector<binding> substitute; ///< symbols of the results written in the inputs: `r_x = C_Mx - C_mx`
     std::vector<binding> let;      ///< values computed once in the kernel, usable in forms: `k = ...`
     bool batch = false;            ///< also emit `<name>_batch` over structure-of-arrays data

@@ -303,6 +303,97 @@ result read_result(table_reader& in)
     return r;
 }
 
+std::string trimmed(const std::string& s)
+{
+    const auto first = s.find_first_not_of(" \t");
+    const auto last = s.find_last_not_of(" \t");
+    return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+}
+
+// `v_perp -> 0`, `v_perp -> infinity` (or `oo`).
+limit_point read_limit(const text& written)
+{
+    const auto arrow = written.value.find("->");
+    if (arrow == std::string::npos)
+        throw error(written.where, fmt::format("limit \"{}\" must read 'symbol -> point'", written.value));
+    limit_point l;
+    l.written = written;
+    l.symbol = {trimmed(written.value.substr(0, arrow)), written.where};
+    l.point = {trimmed(written.value.substr(arrow + 2)), written.where};
+    l.to_infinity = l.point.value == "infinity" || l.point.value == "oo";
+    if (l.to_infinity)
+        l.point.value.clear();
+    return l;
+}
+
+// `[a, b, c]` → a, b, c
+std::vector<text> read_list(const text& list)
+{
+    std::string inner = list.value;
+    const auto open = inner.find('['), close = inner.rfind(']');
+    if (open == std::string::npos || close == std::string::npos || close < open)
+        throw error(list.where, fmt::format("\"{}\" must be a list such as [x, y]", list.value));
+    inner = inner.substr(open + 1, close - open - 1);
+    std::vector<text> items;
+    std::size_t start = 0;
+    while (start <= inner.size()) {
+        const auto comma = inner.find(',', start);
+        const std::string item = trimmed(inner.substr(start, comma == std::string::npos ? std::string::npos
+                                                                                         : comma - start));
+        if (item.empty())
+            throw error(list.where, fmt::format("empty entry in \"{}\"", list.value));
+        items.push_back({item, list.where});
+        if (comma == std::string::npos)
+            break;
+        start = comma + 1;
+    }
+    return items;
+}
+
+// `name = [a, b]` an array; `name = x` a scalar under another name; `name` itself.
+kernel_value read_kernel_value(const binding& b)
+{
+    kernel_value v;
+    v.name = b.name;
+    if (b.expression.value.find('[') != std::string::npos) {
+        v.is_array = true;
+        v.components = read_list(b.expression);
+    } else {
+        v.components.push_back(b.expression);
+    }
+    return v;
+}
+
+kernel_guard read_guard(const binding& b)
+{
+    kernel_guard g;
+    g.status = b.name;
+    const std::string& text = b.expression.value;
+    if (text.find('<') != std::string::npos || text.find('>') != std::string::npos)
+        g.condition = b.expression;
+    else
+        g.parameters = read_list({"[" + text + "]", b.expression.where});
+    return g;
+}
+
+error_scale read_error_scale(const binding& b)
+{
+    error_scale e;
+    e.output = b.name;
+    e.written = b.expression;
+    const std::string& how = b.expression.value;
+    if (how == "relative")
+        return e;
+    if (how.rfind("velocity", 0) != 0 || (how != "velocity" && trimmed(how.substr(8)).rfind('*', 0) != 0))
+        throw error(b.expression.where,
+                    fmt::format("error scale '{}' must be relative, velocity or velocity*<expression>", how));
+    e.relative = false;
+    const auto star = how.find('*');
+    if (star != std::string::npos)
+        e.factor = text{how.substr(star + 1), b.expression.where};
+    return e;
+}
+
 // The fields a check and a claim share.
 check read_check_fields(table_reader& in)
 {
@@ -312,7 +403,8 @@ check read_check_fields(table_reader& in)
     c.because = in.string_or("because", "");
     c.at = in.binding_table("at");
     c.left_at = in.binding_table("left_at");
-    c.limit = in.optional_string("limit");
+    if (const auto written = in.optional_string("limit"))
+        c.limit = read_limit(*written);
     c.assuming = in.binding_table("assuming");
     return c;
 }
@@ -339,17 +431,18 @@ kernel read_kernel(table_reader& in)
     kernel k;
     k.name = in.required_string("name");
     // An input is a name, or an array `C_M = [C_Mx, C_My]`.
-    for (const text& input : in.string_array("inputs", true)) {
-        if (input.value.find('=') == std::string::npos)
-            k.inputs.push_back({input, input});
-        else
-            k.inputs.push_back(in.split(input, "inputs"));
-    }
-    k.outputs = in.binding_array("outputs", true);
+    for (const text& input : in.string_array("inputs", true))
+        k.inputs.push_back(read_kernel_value(input.value.find('=') == std::string::npos
+                                                 ? binding{input, input}
+                                                 : in.split(input, "inputs")));
+    for (const binding& output : in.binding_array("outputs", true))
+        k.outputs.push_back(read_kernel_value(output));
     k.velocities = in.string_array("velocities", false);
-    k.error = in.binding_array("error", false);
+    for (const binding& e : in.binding_array("error", false))
+        k.error.push_back(read_error_scale(e));
     k.forms = in.binding_array("forms", false);
-    k.guards = in.binding_array("guards", false);
+    for (const binding& g : in.binding_array("guards", false))
+        k.guards.push_back(read_guard(g));
     k.substitute = in.binding_array("substitute", false);
     k.let = in.binding_array("let", false);
     k.batch = in.optional_bool("batch").value_or(false);
