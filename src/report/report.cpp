@@ -38,7 +38,8 @@ std::string picture_document(const std::string& picture)
 
 // The PDF of `main` compiled from `sources`: from the store when it holds one compiled
 // from the same sources by the same TeX installation, compiled (and kept) otherwise.
-std::string compiled(const file_map& sources, const std::string& main, const compile_options& options)
+std::string compiled(const file_map& sources, const std::string& main, const std::string& pdf_name,
+                     const compile_options& options)
 {
     std::string key;
     if (options.store) {
@@ -49,7 +50,7 @@ std::string compiled(const file_map& sources, const std::string& main, const com
             return std::move(*pdf);
     }
     if (options.doing)
-        options.doing("compiling " + main);
+        options.doing("compiling " + pdf_name);
     const pdf_build pdf = compile_latex(sources, main);
     if (!pdf.ok)
         throw error({main, 0, 0}, fmt::format("the report does not compile cleanly: {}",
@@ -83,7 +84,7 @@ file_map compile_report(const file_map& sources, const compile_options& options)
                 text.find("{" + path + "}") != std::string::npos)
                 own[path] = contents;
         pictures.push_back(std::async(std::launch::async, [own, picture, &options] {
-            return compiled(own, picture + "_document.tex", options);
+            return compiled(own, picture + "_document.tex", picture + ".pdf", options);
         }));
     }
     file_map out;
@@ -98,7 +99,7 @@ file_map compile_report(const file_map& sources, const compile_options& options)
             report[path] = contents;
     for (const auto& [path, contents] : out)
         report[path] = contents;
-    out["report.pdf"] = compiled(report, "report.tex", options);
+    out["report.pdf"] = compiled(report, "report.tex", "report.pdf", options);
     return out;
 }
 
