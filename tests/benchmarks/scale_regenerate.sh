@@ -61,7 +61,7 @@ for n in "${sizes[@]}"; do
   warm=$(timed "${args[@]}")
   echo "# a comment added by the benchmark" >> "$d/eq08_inelastic_line.toml"
   comment=$(timed "${args[@]}")
-  changed=$(ls "$d"/*_v1.toml 2>/dev/null | xargs grep -l '^\[\[kernel\]\]' | head -1)
+  changed=$(grep -l '^\[\[kernel\]\]' "$d"/*_v1.toml 2>/dev/null | head -1 || true)
   if [ -z "$changed" ]; then changed="$d/eq08_inelastic_line.toml"; fi
   sed -i -e 's/^title = "\(.*\)"/title = "\1, changed"/' "$changed"
   awk '/^\[\[kernel\]\]/ { k = 1 } k && /^name = "/ { sub(/"$/, "_changed\""); k = 0 } { print }' "$changed" > "$scratch/t" &&
