@@ -259,9 +259,12 @@ BOOST_AUTO_TEST_CASE(fig2_draws_three_billiard_shots_to_scale)
 {
     const auto files = report::figure_files();
     for (const char* name : {"figures/billiard_eps_1.dat", "figures/billiard_eps_2_3.dat",
-                             "figures/billiard_eps_1_3.dat", "figures/billiard.tex"})
+                             "figures/billiard_eps_1_3.dat", "figures/billiard.tex", "figures/billiard_plot.tex"})
         BOOST_TEST(files.count(name) == 1u, name);
-    const std::string& tex = files.at("figures/billiard.tex");
+    // The figure includes its picture compiled; the picture is drawn by pgfplots.
+    BOOST_TEST(files.at("figures/billiard.tex").find("\\includegraphics{figures/billiard_plot}") != std::string::npos);
+    BOOST_TEST(files.at("figures/billiard.tex").find("\\label{fig:billiard}") != std::string::npos);
+    const std::string& tex = files.at("figures/billiard_plot.tex");
     BOOST_TEST(tex.find("axis equal image") != std::string::npos);
     BOOST_TEST(tex.find("title={$\\epsilon = 2/3$}") != std::string::npos);
     // The elastic shot: after contact the object ball leaves along the line of centres,

@@ -2,6 +2,7 @@
 //
 // Exit status: 0 when everything holds, 1 when a check failed, 2 on bad input
 // (a derivation file that cannot be read, with file, line and what is wrong).
+#include "cache/store.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
 #include "engine/library.h"
@@ -20,6 +21,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -35,6 +38,9 @@ struct options {
     std::string file;
     bool timings = false;
     bool force = false;
+    std::string cache;         ///< empty: cache::default_folder()
+    bool no_cache = false;
+    bool quiet = false;
 };
 
 // What a write kept of the user's, and what it moved out of the way.
@@ -55,8 +61,12 @@ engine::library derive_one(const options& o)
 
 int run_regenerate(const options& o)
 {
-    const pipeline::regeneration r =
-        pipeline::regenerate(o.derivations, o.output, o.force);
+    pipeline::regenerate_options how;
+    how.force = o.force;
+    if (!o.no_cache)
+        how.cache = o.cache.empty() ? cache::default_folder() : fs::path(o.cache);
+    how.progress = !o.quiet && ::isatty(STDERR_FILENO);
+    const pipeline::regeneration r = pipeline::regenerate(o.derivations, o.output, how);
     if (!r.all_hold) {
         for (const std::string& failure : r.failures)
             fmt::print(stderr, "{}\n", failure);
@@ -68,6 +78,9 @@ int run_regenerate(const options& o)
     if (o.timings)
         for (const auto& [stage, seconds] : r.stages)
             fmt::print("impact: {:8.3f} s  {}\n", seconds, stage);
+    if (o.timings)
+        for (const std::string& line : pipeline::cache_summary(r))
+            fmt::print("impact: {}\n", line);
     return 0;
 }
 
@@ -165,6 +178,10 @@ int main(int argc, char** argv)
     regenerate->add_flag("--force", o.force, force_help);
     regenerate->add_option("--output", o.output, "output folder, replaced only when every check holds")
         ->capture_default_str();
+    CLI::Option* cache = regenerate->add_option(
+        "--cache", o.cache, "cache folder (default: $XDG_CACHE_HOME/impact, or ~/.cache/impact)");
+    regenerate->add_flag("--no-cache", o.no_cache, "compute everything; read and write no cache")->excludes(cache);
+    regenerate->add_flag("--quiet", o.quiet, "no progress line on the terminal");
 
     CLI::App* derive = app.add_subcommand("derive", "derive one derivation and print its results and checks");
     add_derivations(derive);

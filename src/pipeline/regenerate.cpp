@@ -5,12 +5,14 @@
 #include "emit/json.h"
 #include "emit/latex.h"
 #include "emit/verification.h"
+#include "pipeline/progress.h"
 #include "report/report.h"
 #include "verify/choice.h"
 
 #include <fmt/format.h>
 
 #include <chrono>
+#include <future>
 
 namespace impact::pipeline {
 namespace fs = std::filesystem;
@@ -41,10 +43,11 @@ file_set generate_kernels(const library& lib)
     return emit::kernel_files(lib, verify::plan_kernels(lib));
 }
 
-file_set generate(const library& lib, stage_times* stages)
+namespace {
+
+// The LaTeX fragments, derivations.json and errata.md.
+void add_documents(const library& lib, file_set& files)
 {
-    stopwatch clock(stages);
-    file_set files;
     // A derivation whose results the printers cannot write (the imaginary unit, a constant
     // such as Pi) is reported at its file, before the files that gather every derivation.
     for (const engine::derivation* d : lib.in_order()) {
@@ -60,8 +63,19 @@ file_set generate(const library& lib, stage_times* stages)
     }
     files["derivations.json"] = emit::derivations_json(lib.in_order());
     files["errata.md"] = emit::errata_markdown(lib.in_order());
-    clock.lap("LaTeX fragments, derivations.json, errata.md");
-    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(lib);
+}
+
+// The kernel headers and verification.md, the choice of forms taken from `store` where it can be.
+void add_kernels(const library& lib, file_set& files, stopwatch& clock, cache::store* store, progress* shown)
+{
+    const char* task = "kernel forms";
+    const std::vector<verify::kernel_plan> plans =
+        verify::plan_kernels(lib, store, [&](std::size_t done, std::size_t total) {
+            if (shown)
+                shown->say(task, fmt::format("choosing kernel forms: {} of {} kernels", done, total));
+        });
+    if (shown)
+        shown->done(task);
     clock.lap("kernel forms chosen by measurement (numeric)");
     for (auto& [path, contents] : emit::kernel_files(lib, plans))
         files[path] = std::move(contents);
@@ -71,7 +85,30 @@ file_set generate(const library& lib, stage_times* stages)
         all.push_back(&p);
     files["verification.md"] = emit::verification_markdown(all);
     clock.lap("verification report (numeric)");
+}
+
+} // namespace
+
+file_set generate(const library& lib, stage_times* stages)
+{
+    stopwatch clock(stages);
+    file_set files;
+    add_documents(lib, files);
+    clock.lap("LaTeX fragments, derivations.json, errata.md");
+    add_kernels(lib, files, clock, nullptr, nullptr);
     return files;
+}
+
+std::vector<std::string> cache_summary(const regeneration& r)
+{
+    std::vector<std::string> lines;
+    if (!r.cache)
+        return {"cache: none (--no-cache)"};
+    lines.push_back("cache: " + r.cache->string());
+    for (const auto& [kind, c] : r.cache_counts)
+        lines.push_back(fmt::format("cache: {}: {} reused, {} computed ({} damaged, computed again)", kind, c.hits,
+                                    c.misses, c.rejected));
+    return lines;
 }
 
 std::vector<std::string> failed_checks(const library& lib)
@@ -88,28 +125,74 @@ std::vector<std::string> failed_checks(const library& lib)
 
 regeneration regenerate(const fs::path& derivations, const fs::path& output, bool force)
 {
-    // The output folder is checked before anything is derived, so that a refusal comes at once.
+    regenerate_options options;
+    options.force = force;
+    return regenerate(derivations, output, options);
+}
+
+regeneration regenerate(const fs::path& derivations, const fs::path& output, const regenerate_options& options)
+{
+    // The output and cache folders are checked before anything is derived, so that a
+    // refusal comes at once.
     const fs::path target = checked_folder(output, derivations);
     recover_interrupted(target);
-    check_writable(target, {}, force);
+    check_writable(target, {}, options.force);
+    std::optional<cache::store> store;
+    if (options.cache)
+        store.emplace(*options.cache);
+    progress shown(options.progress);
 
     regeneration result;
+    result.cache = options.cache;
+    const auto start = std::chrono::steady_clock::now();
     stopwatch clock(&result.stages);
+    shown.say("derivations", "deriving and proving");
     const library lib = engine::derive_all(engine::read_directory(derivations));
+    shown.done("derivations");
     clock.lap("derivations with their checks");
     result.failures = failed_checks(lib);
     result.all_hold = result.failures.empty();
     if (!result.all_hold)
         return result;
 
-    file_set files = generate(lib, &result.stages);
-    clock.lap("");
-    result.stages.pop_back();
-    for (auto& [path, contents] : report::figures_and_report(lib, files))
+    file_set files;
+    add_documents(lib, files);
+    clock.lap("LaTeX fragments, derivations.json, errata.md");
+    // The report's sources print GiNaC expressions, so they are made here; compiling them
+    // runs pdflatex and nothing of GiNaC's (which is not thread-safe), beside the choice
+    // of kernel forms on this thread.
+    file_set report_files = report::report_sources(lib);
+    file_set sources = report_files;
+    for (const auto& [path, contents] : files)
+        if (path.rfind("latex/", 0) == 0)
+            sources[path] = contents;
+    clock.lap("figures' tables, report.tex");
+    report::compile_options compiling;
+    compiling.store = store ? &*store : nullptr;
+    compiling.doing = [&shown](const std::string& what) { shown.say("report", what); };
+    double report_seconds = 0;
+    std::future<file_set> pdfs = std::async(std::launch::async, [&] {
+        const auto began = std::chrono::steady_clock::now();
+        file_set made = report::compile_report(sources, compiling);
+        shown.done("report");
+        report_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+        return made;
+    });
+    add_kernels(lib, files, clock, compiling.store, &shown);
+    for (auto& [path, contents] : report_files)
         files[path] = std::move(contents);
-    clock.lap("figures and report");
+    for (auto& [path, contents] : pdfs.get())
+        files[path] = std::move(contents);
+    clock.lap("waiting for the figures and report");
+    result.stages.emplace_back("figures and report PDFs (beside the kernel forms)", report_seconds);
     result.files = files.size();
-    result.written = replace_folder(target, files, force);
+    result.written = replace_folder(target, files, options.force);
+    if (store) {
+        store->trim();
+        result.cache_counts = store->statistics();
+    }
+    result.stages.emplace_back("total (wall time)",
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return result;
 }
 

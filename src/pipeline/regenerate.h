@@ -6,11 +6,13 @@
 // was, and a run that was killed is put right by the next one.
 #pragma once
 
+#include "cache/store.h"
 #include "engine/library.h"
 #include "pipeline/output_folder.h"
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace impact::pipeline {
@@ -35,7 +37,18 @@ struct regeneration {
     std::vector<std::string> failures; ///< as `failed_checks` gives them
     stage_times stages;
     write_report written;             ///< the user's files kept beside the output, or moved aside
+    std::optional<std::filesystem::path> cache;    ///< the cache folder used, if any
+    std::map<std::string, cache::counts> cache_counts;  ///< by kind of entry
 };
+
+struct regenerate_options {
+    bool force = false;                               ///< write into a folder Impact does not own
+    std::optional<std::filesystem::path> cache;       ///< the cache folder (src/cache/store.h), or none
+    bool progress = false;                            ///< a progress line on standard error
+};
+
+/// One line a kind of cache entry: `kernel choice: 12 reused, 0 computed (0 damaged)`.
+std::vector<std::string> cache_summary(const regeneration& r);
 
 /// Derives everything in `derivations` and, when every check holds, replaces what Impact
 /// wrote in `output` with the generated files, the figures and the report, keeping every other
@@ -44,5 +57,13 @@ struct regeneration {
 /// Impact does not own is written into only with `force`).
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
                         bool force = false);
+
+/// The same, with a cache: the choice of kernel forms and the PDFs are taken from it
+/// when what they depend on is unchanged, and computed and kept in it otherwise (the
+/// files written are the same bytes either way). The report is compiled beside the
+/// choice of kernel forms. A cache folder that is a file, or holds what is not Impact's,
+/// throws `impact::error` before anything is derived or written.
+regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
+                        const regenerate_options& options);
 
 } // namespace impact::pipeline

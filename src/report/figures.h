@@ -10,12 +10,20 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace impact::report {
 
-/// Every figure file, by path relative to the output folder: `figures/*.dat` and the
-/// pgfplots figures `figures/billiard.tex` and `figures/scatter_angle.tex`, each a
-/// complete figure environment with caption and label (fig:billiard, fig:scatter-angle).
+/// Every figure file, by path relative to the output folder: `figures/*.dat`; the pgfplots
+/// pictures `figures/billiard_plot.tex` and `figures/scatter_angle_plot.tex` (each a
+/// tikzpicture reading its tables, sized for the report's text width); and
+/// `figures/billiard.tex` and `figures/scatter_angle.tex`, each a complete figure
+/// environment with caption and label (fig:billiard, fig:scatter-angle) that includes
+/// its picture compiled on its own (`figures/<name>_plot.pdf`, made by `compile_report`),
+/// so that the report is compiled without typesetting the plots again.
 std::map<std::string, std::string> figure_files();
+
+/// The figures' pictures: the `figures/<name>_plot` of each figure, without `.tex`.
+std::vector<std::string> figure_pictures();
 
 } // namespace impact::report

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -54,6 +55,40 @@ struct scratch_folder {
 bool have_pdflatex()
 {
     return std::system("pdflatex --version > /dev/null 2>&1") == 0;
+}
+
+namespace {
+
+// What a command prints on its standard output (nothing when it cannot run).
+std::string output_of(const std::string& command)
+{
+    std::string out;
+    if (FILE* pipe = ::popen(command.c_str(), "r")) {
+        char buffer[4096];
+        for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+            out.append(buffer, n);
+        ::pclose(pipe);
+    }
+    return out;
+}
+
+} // namespace
+
+const std::string& tex_installation()
+{
+    static const std::string identity = [] {
+        std::string text = output_of("pdflatex --version 2>/dev/null");
+        std::istringstream databases(output_of("kpsewhich -all ls-R 2>/dev/null"));
+        for (std::string path; std::getline(databases, path);) {
+            std::error_code failed;
+            const auto size = fs::file_size(path, failed);
+            const auto when = fs::last_write_time(path, failed);
+            text += fmt::format("{} {} {}\n", path, failed ? 0 : size,
+                                failed ? 0 : static_cast<long long>(when.time_since_epoch().count()));
+        }
+        return text;
+    }();
+    return identity;
 }
 
 std::vector<std::string> latex_log_problems(const std::string& log)

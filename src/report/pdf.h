@@ -34,4 +34,9 @@ std::vector<std::string> latex_overfull_boxes(const std::string& log, double tol
 /// True when pdflatex can be run.
 bool have_pdflatex();
 
+/// What identifies the TeX installation, part of the key of every cached PDF: pdflatex's
+/// version banner, and the path, size and time of each of its file databases (`ls-R`),
+/// which change whenever a TeX package is installed, removed or updated. Computed once.
+const std::string& tex_installation();
+
 } // namespace impact::report

@@ -14,8 +14,14 @@
 #include "verify/measure.h"
 #include "verify/sampling.h"
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
+
+namespace impact::cache {
+class store;
+}
 
 namespace impact::verify {
 
@@ -65,6 +71,22 @@ constexpr double target_ulps = 4;
 kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order);
 
 /// Every kernel's plan, derivation by derivation in the library's order.
-std::vector<kernel_plan> plan_kernels(const engine::library& lib);
+///
+/// With a `store`, a kernel whose description (inputs and their domains, outputs and
+/// their candidate forms, guards, `let`s) and Impact's build are those of a plan measured
+/// before takes that plan's choice (its candidates, flags, accuracies and the emitted
+/// program's accuracy) instead of measuring again; such a plan has no `samples` and no
+/// references. `done(k, n)` is called after each of the n kernels.
+std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* store = nullptr,
+                                      const std::function<void(std::size_t, std::size_t)>& done = {});
+
+/// The text a kernel's plan depends on, the key of its cache entry.
+std::string choice_key(const engine::kernel& k, const engine::term_order& order);
+
+/// A plan's choice as text, and back: nothing when the text does not describe a
+/// choice among `k`'s candidates (it was made for another kernel or is damaged).
+std::string encode_choice(const kernel_plan& plan, const engine::term_order& order);
+std::optional<kernel_plan> decode_choice(const std::string& text, const engine::kernel& k,
+                                         const engine::term_order& order);
 
 } // namespace impact::verify

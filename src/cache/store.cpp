@@ -1,0 +1,265 @@
+#include "cache/store.h"
+
+#include "cache/sha256.h"
+#include "spec/error.h"
+
+#include <fmt/format.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <vector>
+
+namespace impact::cache {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* tag_name = "CACHEDIR.TAG";
+// The standard's signature line, then who made the folder.
+constexpr const char* tag_text =
+    "Signature: 8a477f597d28d172789f06886806bc55\n"
+    "# This file is a cache directory tag created by Impact (impact regenerate).\n"
+    "# For information about cache directory tags, see https://bford.info/cachedir/\n"
+    "# Everything here can be removed: Impact computes it again when needed.\n";
+constexpr const char* entry_header = "impact cache entry 1\n";
+
+const std::regex& entry_name()
+{
+    static const std::regex r("[0-9a-f]{64}\\.entry");
+    return r;
+}
+
+const std::regex& temporary_name()
+{
+    static const std::regex r("([0-9a-f]{64}\\.entry|CACHEDIR\\.TAG)\\.tmp-[0-9]+-[0-9]+");
+    return r;
+}
+
+std::optional<std::string> read_whole(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return std::nullopt;
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    if (in.bad())
+        return std::nullopt;
+    return bytes.str();
+}
+
+// Writes `contents` to a temporary file beside `path` and renames it into place, so
+// that a reader sees the previous file or the whole new one. False when it could not.
+bool write_atomically(const fs::path& path, const std::string& contents)
+{
+    static std::atomic<unsigned> counter{0};
+    const fs::path temporary =
+        path.string() + fmt::format(".tmp-{}-{}", static_cast<long>(::getpid()), counter++);
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << contents;
+        out.close();
+        if (!out) {
+            std::error_code ignored;
+            fs::remove(temporary, ignored);
+            return false;
+        }
+    }
+    std::error_code failed;
+    fs::rename(temporary, path, failed);
+    if (failed) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        return false;
+    }
+    return true;
+}
+
+// What in `folder` is not the store's, or nothing when all of it is.
+std::optional<std::string> foreign_file(const fs::path& folder)
+{
+    bool has_tag = false, has_other = false;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        const fs::file_status status = entry.symlink_status();
+        if (!fs::is_regular_file(status))
+            return name;
+        if (name == tag_name) {
+            const auto text = read_whole(entry.path());
+            if (!text || text->find("created by Impact") == std::string::npos)
+                return name;
+            has_tag = true;
+        } else if (std::regex_match(name, entry_name()) || std::regex_match(name, temporary_name())) {
+            has_other = true;
+        } else {
+            return name;
+        }
+    }
+    // Files named like entries in a folder Impact did not tag are not known to be Impact's.
+    if (has_other && !has_tag)
+        return std::string("files without Impact's CACHEDIR.TAG");
+    return std::nullopt;
+}
+
+} // namespace
+
+fs::path default_folder()
+{
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    if (xdg && *xdg && fs::path(xdg).is_absolute())
+        return fs::path(xdg) / "impact";
+    const char* home = std::getenv("HOME");
+    if (!home || !*home)
+        throw error({"impact", 0, 0}, "neither XDG_CACHE_HOME nor HOME is set: give --cache DIR or --no-cache");
+    return fs::path(home) / ".cache" / "impact";
+}
+
+const std::string& program_fingerprint()
+{
+    static const std::string fingerprint = [] {
+        const auto bytes = read_whole("/proc/self/exe");
+        // Unreadable: a fingerprint of this process alone, so that nothing is reused.
+        if (!bytes || bytes->empty())
+            return fmt::format("unknown program, process {}", static_cast<long>(::getpid()));
+        return sha256_hex(*bytes);
+    }();
+    return fingerprint;
+}
+
+bool is_store_file_name(const std::string& name)
+{
+    return std::regex_match(name, entry_name()) || std::regex_match(name, temporary_name());
+}
+
+store::store(fs::path folder, std::uintmax_t limit) : folder_(std::move(folder)), limit_(limit)
+{
+    const std::string given = folder_.string();
+    std::error_code failed;
+    const fs::file_status status = fs::status(folder_, failed);
+    if (fs::exists(status) && !fs::is_directory(status))
+        throw error({given, 0, 0}, "the cache folder is a file, not a folder (give another --cache DIR)");
+    if (!fs::exists(status)) {
+        fs::create_directories(folder_, failed);
+        if (failed)
+            throw error({given, 0, 0}, fmt::format("cannot create the cache folder: {}", failed.message()));
+    }
+    if (const auto foreign = foreign_file(folder_))
+        throw error({given, 0, 0},
+                    fmt::format("the cache folder holds what is not Impact's cache ({}); Impact keeps its cache "
+                                "only in an empty folder or its own (give another --cache DIR)",
+                                *foreign));
+    if (!fs::exists(folder_ / tag_name) && !write_atomically(folder_ / tag_name, tag_text))
+        throw error({given, 0, 0}, "cannot write into the cache folder");
+}
+
+fs::path store::entry_path(const std::string& kind, const std::string& key) const
+{
+    return folder_ / (sha256().add(kind).add(std::string_view("\n", 1)).add(key).hex() + ".entry");
+}
+
+std::optional<std::string> store::get(const std::string& kind, const std::string& key)
+{
+    const fs::path path = entry_path(kind, key);
+    const auto bytes = read_whole(path);
+    auto count = [&](bool hit, bool rejected) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        counts& c = counts_[kind];
+        (hit ? c.hits : c.misses)++;
+        c.rejected += rejected ? 1 : 0;
+    };
+    if (!bytes) {
+        count(false, false);
+        return std::nullopt;
+    }
+    // The header: what it is, which entry, the payload's length and SHA-256.
+    const std::string expected_name = path.filename().string();
+    std::istringstream in(*bytes);
+    std::string header, name_line, length_line, hash_line, blank;
+    std::getline(in, header);
+    std::getline(in, name_line);
+    std::getline(in, length_line);
+    std::getline(in, hash_line);
+    std::getline(in, blank);
+    bool whole = in.good() && header + "\n" == entry_header && name_line == "entry " + expected_name &&
+                 length_line.rfind("length ", 0) == 0 && hash_line.rfind("sha256 ", 0) == 0 && blank.empty();
+    std::string payload;
+    if (whole) {
+        const auto start = static_cast<std::size_t>(in.tellg());
+        payload = bytes->substr(start);
+        whole = length_line == "length " + std::to_string(payload.size()) &&
+                hash_line == "sha256 " + sha256_hex(payload);
+    }
+    if (!whole) {
+        count(false, true);
+        return std::nullopt;
+    }
+    // Used now: the last to be evicted.
+    std::error_code ignored;
+    fs::last_write_time(path, fs::file_time_type::clock::now(), ignored);
+    count(true, false);
+    return payload;
+}
+
+void store::put(const std::string& kind, const std::string& key, const std::string& value)
+{
+    const fs::path path = entry_path(kind, key);
+    const std::string contents = fmt::format("{}entry {}\nlength {}\nsha256 {}\n\n", entry_header,
+                                             path.filename().string(), value.size(), sha256_hex(value)) +
+                                 value;
+    write_atomically(path, contents);
+}
+
+void store::trim()
+{
+    struct found {
+        fs::path path;
+        fs::file_time_type when;
+        std::uintmax_t size;
+    };
+    std::vector<found> entries;
+    std::uintmax_t total = 0;
+    const auto hour_ago = fs::file_time_type::clock::now() - std::chrono::hours(1);
+    std::error_code failed;
+    for (const auto& entry : fs::directory_iterator(folder_, failed)) {
+        std::error_code ignored;
+        const std::string name = entry.path().filename().string();
+        if (!entry.is_regular_file(ignored) || entry.is_symlink(ignored))
+            continue;
+        const auto when = entry.last_write_time(ignored);
+        if (ignored)
+            continue;
+        if (std::regex_match(name, temporary_name())) {
+            if (when < hour_ago)
+                fs::remove(entry.path(), ignored);
+        } else if (std::regex_match(name, entry_name())) {
+            const std::uintmax_t size = entry.file_size(ignored);
+            if (ignored)
+                continue;
+            entries.push_back({entry.path(), when, size});
+            total += size;
+        }
+    }
+    std::sort(entries.begin(), entries.end(), [](const found& a, const found& b) {
+        return a.when != b.when ? a.when < b.when : a.path < b.path;
+    });
+    for (const found& e : entries) {
+        if (total <= limit_)
+            break;
+        std::error_code ignored;
+        if (fs::remove(e.path, ignored))
+            total -= e.size;
+    }
+}
+
+std::map<std::string, counts> store::statistics() const
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return counts_;
+}
+
+} // namespace impact::cache

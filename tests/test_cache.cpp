@@ -1,0 +1,322 @@
+// The cache of `impact regenerate` (src/cache/): SHA-256 against the standard's examples,
+// entries checked before use (a damaged or truncated one is computed again), the folder
+// refused when it holds what is not Impact's, eviction of the oldest entries only; and end
+// to end, a warm regeneration, one from damaged entries and two at once sharing a cache
+// write the bytes a regeneration without a cache writes.
+#define BOOST_TEST_MODULE test_cache
+#include <boost/test/unit_test.hpp>
+
+#include "cache/sha256.h"
+#include "cache/store.h"
+#include "spec/error.h"
+
+#include "support.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+using namespace impact;
+using impact::testing::run_command;
+using impact::testing::run_result;
+using impact::testing::snapshot;
+
+namespace {
+
+// A fresh folder under the system's temporary folder, removed at the end.
+struct scratch {
+    fs::path root;
+    scratch()
+    {
+        static int n = 0;
+        root = fs::temp_directory_path() / ("impact-test-cache-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
+        fs::remove_all(root);
+        fs::create_directories(root);
+    }
+    ~scratch() { fs::remove_all(root); }
+};
+
+std::string read(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+void write(const fs::path& path, const std::string& bytes)
+{
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+// `impact regenerate` of the project's derivations into `output`, with the default
+// cache under `xdg` (never the user's ~/.cache) and any further `arguments`.
+run_result regenerate(const fs::path& xdg, const fs::path& output, const std::string& arguments)
+{
+    return run_command("XDG_CACHE_HOME='" + xdg.string() + "' " + IMPACT_BINARY + " regenerate --timings --derivations '" +
+                       std::string(IMPACT_SOURCE_DIR) + "/derivations' --output '" + output.string() + "' " +
+                       arguments);
+}
+
+// What a regeneration without any cache writes, made once.
+const std::map<std::string, std::string>& cold_output()
+{
+    static const std::map<std::string, std::string> files = [] {
+        const scratch s;
+        const run_result r = regenerate(s.root / "xdg", s.root / "output", "--no-cache");
+        BOOST_TEST_REQUIRE(r.status == 0, r.output);
+        BOOST_TEST(r.output.find("cache: none") != std::string::npos, r.output);
+        // --no-cache reads and writes no cache, not even the default one.
+        BOOST_TEST(!fs::exists(s.root / "xdg"));
+        return snapshot(s.root / "output");
+    }();
+    return files;
+}
+
+// The entries a regeneration left in `cache`.
+std::vector<fs::path> entries_in(const fs::path& cache)
+{
+    std::vector<fs::path> found;
+    for (const auto& e : fs::directory_iterator(cache))
+        if (e.path().extension() == ".entry")
+            found.push_back(e.path());
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+bool said(const std::string& output, const std::string& pattern)
+{
+    return std::regex_search(output, std::regex(pattern));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(test_cache)
+
+BOOST_AUTO_TEST_CASE(sha256_gives_the_digests_of_the_standards_examples)
+{
+    // FIPS 180-4's examples (one block, two blocks) and the empty message.
+    BOOST_TEST(cache::sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    BOOST_TEST(cache::sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    const std::string two_blocks = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
+    BOOST_TEST(cache::sha256_hex(two_blocks) == "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+    // Given in pieces of any size, the same digest.
+    cache::sha256 pieces;
+    for (std::size_t at = 0; at < two_blocks.size(); at += 7)
+        pieces.add(std::string_view(two_blocks).substr(at, 7));
+    BOOST_TEST(pieces.hex() == cache::sha256_hex(two_blocks));
+    // A million 'a's, the standard's long example.
+    BOOST_TEST(cache::sha256_hex(std::string(1000000, 'a')) ==
+               "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+BOOST_AUTO_TEST_CASE(a_stored_result_comes_back_for_its_key_only)
+{
+    const scratch s;
+    cache::store store(s.root / "cache");
+    BOOST_TEST(!store.get("PDF", "sources 1").has_value());
+    store.put("PDF", "sources 1", std::string("%PDF-\0binary\n", 13));
+    BOOST_TEST(store.get("PDF", "sources 1").value() == std::string("%PDF-\0binary\n", 13));
+    BOOST_TEST(!store.get("PDF", "sources 2").has_value());
+    BOOST_TEST(!store.get("kernel choice", "sources 1").has_value());   // another kind, another entry
+    const auto counts = store.statistics();
+    BOOST_TEST(counts.at("PDF").hits == 1u);
+    BOOST_TEST(counts.at("PDF").misses == 2u);
+    BOOST_TEST(counts.at("PDF").rejected == 0u);
+    BOOST_TEST(fs::exists(s.root / "cache" / "CACHEDIR.TAG"));
+    BOOST_TEST(read(s.root / "cache" / "CACHEDIR.TAG").rfind("Signature: 8a477f597d28d172789f06886806bc55\n", 0) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_corrupted_entry_is_rejected_and_computed_again)
+{
+    const scratch s;
+    cache::store store(s.root / "cache");
+    store.put("PDF", "key", "the result of a long computation");
+    const fs::path entry = store.entry_path("PDF", "key");
+    std::string bytes = read(entry);
+    bytes[bytes.size() - 5] ^= 0x01;   // one bit of the result flipped, its length unchanged
+    write(entry, bytes);
+    BOOST_TEST(!store.get("PDF", "key").has_value());
+    BOOST_TEST(store.statistics().at("PDF").rejected == 1u);
+    store.put("PDF", "key", "the result of a long computation");
+    BOOST_TEST(store.get("PDF", "key").value() == "the result of a long computation");
+}
+
+BOOST_AUTO_TEST_CASE(a_truncated_entry_is_rejected_and_computed_again)
+{
+    const scratch s;
+    cache::store store(s.root / "cache");
+    store.put("kernel choice", "key", std::string(10000, 'x'));
+    const fs::path entry = store.entry_path("kernel choice", "key");
+    for (std::size_t keep : {std::size_t(0), std::size_t(10), read(entry).size() - 1}) {
+        write(entry, read(entry).substr(0, keep));
+        BOOST_TEST(!store.get("kernel choice", "key").has_value(), "truncated to " << keep << " bytes");
+        store.put("kernel choice", "key", std::string(10000, 'x'));
+    }
+    BOOST_TEST(store.statistics().at("kernel choice").rejected == 3u);
+    BOOST_TEST(store.get("kernel choice", "key").value() == std::string(10000, 'x'));
+}
+
+BOOST_AUTO_TEST_CASE(an_entry_renamed_to_another_key_is_rejected)
+{
+    const scratch s;
+    cache::store store(s.root / "cache");
+    store.put("PDF", "first", "one");
+    fs::copy_file(store.entry_path("PDF", "first"), store.entry_path("PDF", "second"));
+    BOOST_TEST(!store.get("PDF", "second").has_value());
+}
+
+BOOST_AUTO_TEST_CASE(a_folder_holding_a_users_file_is_refused_and_the_file_kept)
+{
+    const scratch s;
+    fs::create_directories(s.root / "cache");
+    write(s.root / "cache" / "notes.txt", "mine\n");
+    try {
+        cache::store store(s.root / "cache");
+        BOOST_FAIL("a folder holding notes.txt was taken for a cache");
+    } catch (const impact::error& e) {
+        const std::string what = e.what();
+        BOOST_TEST(what.rfind((s.root / "cache").string() + ": error: ", 0) == 0u, what);
+        BOOST_TEST(what.find("notes.txt") != std::string::npos, what);
+    }
+    BOOST_TEST(read(s.root / "cache" / "notes.txt") == "mine\n");
+    BOOST_TEST(!fs::exists(s.root / "cache" / "CACHEDIR.TAG"));
+    // Files named like entries, in a folder Impact did not tag, are not taken for its own.
+    fs::remove(s.root / "cache" / "notes.txt");
+    write(s.root / "cache" / (std::string(64, 'a') + ".entry"), "someone else's\n");
+    BOOST_CHECK_THROW(cache::store(s.root / "cache"), impact::error);
+    BOOST_TEST(read(s.root / "cache" / (std::string(64, 'a') + ".entry")) == "someone else's\n");
+}
+
+BOOST_AUTO_TEST_CASE(a_file_given_as_the_cache_folder_is_refused)
+{
+    const scratch s;
+    write(s.root / "file", "not a folder\n");
+    BOOST_CHECK_THROW(cache::store(s.root / "file"), impact::error);
+    BOOST_TEST(read(s.root / "file") == "not a folder\n");
+}
+
+BOOST_AUTO_TEST_CASE(trimming_removes_the_entries_used_longest_ago_and_nothing_else)
+{
+    const scratch s;
+    // Room for two entries of about 1100 bytes, not three.
+    cache::store store(s.root / "cache", 2500);
+    const auto now = fs::file_time_type::clock::now();
+    const char* keys[] = {"oldest", "middle", "newest"};
+    for (int i = 0; i < 3; ++i) {
+        store.put("PDF", keys[i], std::string(1000, 'x'));
+        fs::last_write_time(store.entry_path("PDF", keys[i]), now - std::chrono::minutes(30 - 10 * i));
+    }
+    // A temporary file a killed run left two hours ago, and one being written now.
+    const fs::path stale = s.root / "cache" / (std::string(64, 'b') + ".entry.tmp-1-0");
+    const fs::path fresh = s.root / "cache" / (std::string(64, 'c') + ".entry.tmp-2-0");
+    write(stale, "partial");
+    write(fresh, "partial");
+    fs::last_write_time(stale, now - std::chrono::hours(2));
+    store.trim();
+    BOOST_TEST(!fs::exists(store.entry_path("PDF", "oldest")));
+    BOOST_TEST(fs::exists(store.entry_path("PDF", "middle")));
+    BOOST_TEST(fs::exists(store.entry_path("PDF", "newest")));
+    BOOST_TEST(!fs::exists(stale));
+    BOOST_TEST(fs::exists(fresh));
+    BOOST_TEST(fs::exists(s.root / "cache" / "CACHEDIR.TAG"));
+    // A hit makes an entry the newest: "middle" outlives "newest" at the next trim.
+    BOOST_TEST(store.get("PDF", "middle").has_value());
+    store.put("PDF", "latest", std::string(1000, 'x'));
+    store.trim();
+    BOOST_TEST(fs::exists(store.entry_path("PDF", "middle")));
+    BOOST_TEST(!fs::exists(store.entry_path("PDF", "newest")));
+}
+
+BOOST_AUTO_TEST_CASE(a_warm_regeneration_writes_what_one_without_a_cache_writes)
+{
+    const scratch s;
+    // The default cache folder: $XDG_CACHE_HOME/impact.
+    const run_result cold = regenerate(s.root / "xdg", s.root / "cold", "");
+    BOOST_TEST_REQUIRE(cold.status == 0, cold.output);
+    BOOST_TEST(fs::exists(s.root / "xdg" / "impact" / "CACHEDIR.TAG"));
+    BOOST_TEST(said(cold.output, "kernel choice: 0 reused, [1-9][0-9]* computed"), cold.output);
+    const run_result warm = regenerate(s.root / "elsewhere", s.root / "warm", "--cache '" + (s.root / "xdg" / "impact").string() + "'");
+    BOOST_TEST_REQUIRE(warm.status == 0, warm.output);
+    // Both pictures and the report reused, and every kernel's choice.
+    BOOST_TEST(said(warm.output, "PDF: 3 reused, 0 computed"), warm.output);
+    BOOST_TEST(said(warm.output, "kernel choice: [1-9][0-9]* reused, 0 computed"), warm.output);
+    BOOST_TEST(!fs::exists(s.root / "elsewhere"));
+    BOOST_TEST((snapshot(s.root / "cold") == cold_output()));
+    BOOST_TEST((snapshot(s.root / "warm") == cold_output()));
+}
+
+BOOST_AUTO_TEST_CASE(damaged_and_truncated_entries_are_computed_again_and_the_output_is_the_same)
+{
+    const scratch s;
+    const fs::path cache = s.root / "cache";
+    BOOST_TEST_REQUIRE(regenerate(s.root, s.root / "first", "--cache '" + cache.string() + "'").status == 0);
+    const std::vector<fs::path> entries = entries_in(cache);
+    BOOST_TEST_REQUIRE(entries.size() >= 4u);
+    // Every other entry cut in half, the others with one byte changed near their end.
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        std::string bytes = read(entries[i]);
+        if (i % 2 == 0)
+            bytes.resize(bytes.size() / 2);
+        else
+            bytes[bytes.size() - 2] ^= 0x20;
+        write(entries[i], bytes);
+    }
+    const run_result r = regenerate(s.root, s.root / "second", "--cache '" + cache.string() + "'");
+    BOOST_TEST_REQUIRE(r.status == 0, r.output);
+    BOOST_TEST(said(r.output, "PDF: 0 reused, 3 computed \\(3 damaged"), r.output);
+    BOOST_TEST(said(r.output, "kernel choice: 0 reused, ([1-9][0-9]*) computed \\(\\1 damaged"), r.output);
+    BOOST_TEST((snapshot(s.root / "second") == cold_output()));
+    // The entries were written again: the next run reuses everything.
+    const run_result again = regenerate(s.root, s.root / "third", "--cache '" + cache.string() + "'");
+    BOOST_TEST(said(again.output, "PDF: 3 reused, 0 computed"), again.output);
+    BOOST_TEST((snapshot(s.root / "third") == cold_output()));
+}
+
+BOOST_AUTO_TEST_CASE(two_regenerations_at_once_sharing_one_cache_both_succeed_with_the_same_output)
+{
+    const scratch s;
+    const std::string cache = "--cache '" + (s.root / "cache").string() + "'";
+    const std::string one = "XDG_CACHE_HOME=/nonexistent " + std::string(IMPACT_BINARY) + " regenerate --derivations '" +
+                            IMPACT_SOURCE_DIR + "/derivations' " + cache + " --output ";
+    const run_result r = run_command("cd '" + s.root.string() + "' && (" + one + "a > a.log 2>&1 & a=$!; " + one +
+                                     "b > b.log 2>&1 & b=$!; wait $a; echo \"a $?\"; wait $b; echo \"b $?\")");
+    BOOST_TEST(r.output.find("a 0") != std::string::npos, r.output << read(s.root / "a.log"));
+    BOOST_TEST(r.output.find("b 0") != std::string::npos, r.output << read(s.root / "b.log"));
+    BOOST_TEST((snapshot(s.root / "a") == cold_output()));
+    BOOST_TEST((snapshot(s.root / "b") == cold_output()));
+    // No temporary file left behind, and every entry whole.
+    for (const auto& e : fs::directory_iterator(s.root / "cache"))
+        BOOST_TEST(e.path().string().find(".tmp-") == std::string::npos, e.path());
+    cache::store store(s.root / "cache");
+    for (const fs::path& entry : entries_in(s.root / "cache"))
+        BOOST_TEST(read(entry).rfind("impact cache entry 1\n", 0) == 0u, entry);
+}
+
+BOOST_AUTO_TEST_CASE(a_cache_folder_holding_a_users_file_is_refused_in_one_line_and_nothing_is_written)
+{
+    const scratch s;
+    fs::create_directories(s.root / "mine");
+    write(s.root / "mine" / "thesis.tex", "\\documentclass{article}\n");
+    const run_result r = regenerate(s.root, s.root / "output", "--cache '" + (s.root / "mine").string() + "'");
+    BOOST_TEST(r.status == 2, r.output);
+    BOOST_TEST(impact::testing::lines_of(r.output).size() == 1u, r.output);
+    BOOST_TEST(r.output.rfind((s.root / "mine").string() + ": error: ", 0) == 0u, r.output);
+    BOOST_TEST(read(s.root / "mine" / "thesis.tex") == "\\documentclass{article}\n");
+    BOOST_TEST(snapshot(s.root / "mine").size() == 1u);
+    BOOST_TEST(!fs::exists(s.root / "output"));
+    // A file given as the cache folder: the same.
+    const run_result file = regenerate(s.root, s.root / "output", "--cache '" + (s.root / "mine" / "thesis.tex").string() + "'");
+    BOOST_TEST(file.status == 2, file.output);
+    BOOST_TEST(file.output.find(": error: the cache folder is a file") != std::string::npos, file.output);
+    BOOST_TEST(!fs::exists(s.root / "output"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
