@@ -152,37 +152,60 @@ struct reader {
 };
 } // namespace
 
-kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order)
-{
-    kernel_plan plan;
-    plan.kernel = &k;
-    plan.samples = verify::draw_samples(k, kernel_samples, seed_of(k.name));
-    plan.double_reference = verify::compute_reference(k, plan.samples, 53);
-    plan.float_reference = verify::compute_reference(k, plan.samples, 24);
-    const std::vector<GiNaC::ex> inputs = k.input_symbols();
+namespace {
 
-    const auto all = verify::components(k);
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        const engine::kernel_output& o = k.outputs[all[i].first];
+// The choice of one kernel's forms: each output component's candidates measured on the
+// kernel's samples against the CLN reference, the best kept.
+class chooser {
+public:
+    chooser(const engine::kernel& k, const engine::term_order& order) : k_(k), order_(order), inputs_(k.input_symbols())
+    {
+        plan_.kernel = &k;
+        plan_.samples = verify::draw_samples(k, kernel_samples, seed_of(k.name));
+        plan_.double_reference = verify::compute_reference(k, plan_.samples, 53);
+        plan_.float_reference = verify::compute_reference(k, plan_.samples, 24);
+    }
+
+    kernel_plan choose()
+    {
+        const auto all = verify::components(k_);
+        for (std::size_t i = 0; i < all.size(); ++i)
+            plan_.components.push_back(component(i, k_.outputs[all[i].first], all[i].second));
+        compensate_lets_everywhere();
+        compile_chosen(plan_, k_, order_);
+        measure_emitted();
+        return std::move(plan_);
+    }
+
+private:
+    component_plan component(std::size_t i, const engine::kernel_output& o, std::size_t c)
+    {
         component_plan cp;
-        cp.name = o.is_array ? fmt::format("{}[{}]", o.member, all[i].second) : o.member;
-        auto measured = [&](candidate_result r, const std::vector<verify::sample>& on, const verify::reference& ref) {
-            const compile::program p = compile::compile_program({r.value}, inputs, order,
-                                      {r.fma, r.compensated, r.compensated_lets}, k.lets);
-            r.double_accuracy = verify::measure<double>(p, {i}, on, ref).front();
-            return r;
-        };
+        cp.name = o.is_array ? fmt::format("{}[{}]", o.member, c) : o.member;
+        const std::vector<candidate_result> plain = leanest_candidates(cp, forms_of(o, c));
+        measure_pruned(cp, i, plain);
+        pick(cp);
+        // Compensated arithmetic where it pays, and no more of it than needed: first the
+        // kernel's `let` values alone (shared by every output), then the whole form.
+        const std::size_t measured_plainly = cp.candidates.size();
+        if (cp.candidates[cp.chosen].double_accuracy.max_ulps > target_ulps && !k_.lets.empty())
+            add_variants(cp, i, measured_plainly, ", compensated let", &candidate_result::compensated_lets);
+        if (cp.candidates[cp.chosen].double_accuracy.max_ulps > target_ulps)
+            add_variants(cp, i, measured_plainly, ", compensated", &candidate_result::compensated);
+        return cp;
+    }
 
-        // No square root or division that the mathematics does not need: only the forms
-        // with the fewest of them (e.g. the rotation-free lab-frame form, not the
-        // rotation matrix with its |r|) are candidates.
-        std::vector<engine::form> forms = forms_of(o, all[i].second);
+    // No square root or division that the mathematics does not need: only the forms with
+    // the fewest of them (e.g. the rotation-free lab-frame form, not the rotation matrix
+    // with its |r|) are candidates, each with and without fused multiply-adds.
+    std::vector<candidate_result> leanest_candidates(component_plan& cp, std::vector<engine::form> forms) const
+    {
         // A kernel with `let` values computes them once for all its outputs (the one
         // division of the lab-frame collision): only forms built on them are candidates.
-        if (!k.lets.empty()) {
+        if (!k_.lets.empty()) {
             std::vector<engine::form> on_lets;
             for (const engine::form& f : forms)
-                for (const auto& [symbol, value] : k.lets)
+                for (const auto& [symbol, value] : k_.lets)
                     if (f.value.has(symbol)) {
                         on_lets.push_back(f);
                         break;
@@ -194,7 +217,7 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
         }
         std::vector<std::pair<std::size_t, std::size_t>> cost;
         for (const engine::form& f : forms) {
-            const compile::program p = compile::compile_program({f.value}, inputs, order, {}, k.lets);
+            const compile::program p = compile::compile_program({f.value}, inputs_, order_, {}, k_.lets);
             cost.emplace_back(count(p, compile::opcode::sqrt), count(p, compile::opcode::div));
         }
         const auto leanest = *std::min_element(cost.begin(), cost.end());
@@ -205,7 +228,8 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
                 continue;
             }
             for (bool fused : {false, true}) {
-                const compile::program p = compile::compile_program({forms[f].value}, inputs, order, {fused}, k.lets);
+                const compile::program p =
+                    compile::compile_program({forms[f].value}, inputs_, order_, {fused}, k_.lets);
                 if (fused && count(p, compile::opcode::fma) == 0)
                     continue;  // nothing to fuse: the same program as without
                 candidate_result r;
@@ -215,15 +239,20 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
                 plain.push_back(r);
             }
         }
-        // A first look on a sixth of the samples: a candidate far behind the best is not
-        // measured further.
-        const std::vector<verify::sample> first(plan.samples.begin(),
-                                                plan.samples.begin() + static_cast<long>(plan.samples.size() / 6));
-        const verify::reference first_reference = verify::prefix(plan.double_reference, first.size());
+        return plain;
+    }
+
+    // A first look on a sixth of the samples: a candidate far behind the best is not
+    // measured further.
+    void measure_pruned(component_plan& cp, std::size_t i, const std::vector<candidate_result>& plain) const
+    {
+        const std::vector<verify::sample> first(plan_.samples.begin(),
+                                                plan_.samples.begin() + static_cast<long>(plan_.samples.size() / 6));
+        const verify::reference first_reference = verify::prefix(plan_.double_reference, first.size());
         double best_first = std::numeric_limits<double>::infinity();
         std::vector<double> first_max;
         for (const candidate_result& r : plain) {
-            first_max.push_back(measured(r, first, first_reference).double_accuracy.max_ulps);
+            first_max.push_back(measured(r, i, first, first_reference).double_accuracy.max_ulps);
             best_first = std::min(best_first, first_max.back());
         }
         for (std::size_t c = 0; c < plain.size(); ++c) {
@@ -231,48 +260,53 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
                 ++cp.pruned;
                 continue;
             }
-            cp.candidates.push_back(measured(plain[c], plan.samples, plan.double_reference));
+            cp.candidates.push_back(measured(plain[c], i, plan_.samples, plan_.double_reference));
         }
-        auto choose = [&] {
-            for (std::size_t c = 1; c < cp.candidates.size(); ++c)
-                if (better(cp.candidates[c].double_accuracy, cp.candidates[cp.chosen].double_accuracy))
-                    cp.chosen = c;
-        };
-        choose();
-        // Compensated arithmetic where it pays, and no more of it than needed: first the
-        // kernel's `let` values alone (shared by every output), then the whole form.
-        const std::size_t measured_plainly = cp.candidates.size();
-        if (cp.candidates[cp.chosen].double_accuracy.max_ulps > target_ulps && !k.lets.empty()) {
-            for (std::size_t c = 0; c < measured_plainly; ++c) {
-                candidate_result r = cp.candidates[c];
-                r.label += ", compensated let";
-                r.compensated_lets = true;
-                cp.candidates.push_back(measured(r, plan.samples, plan.double_reference));
-            }
-            choose();
+    }
+
+    // The first `plain` candidates again with `flag` set (fused ones excluded from whole
+    // compensation, which does not fuse), then the best of all.
+    void add_variants(component_plan& cp, std::size_t i, std::size_t plain, const char* label,
+                      bool candidate_result::*flag) const
+    {
+        for (std::size_t c = 0; c < plain; ++c) {
+            if (flag == &candidate_result::compensated && cp.candidates[c].fma)
+                continue;
+            candidate_result r = cp.candidates[c];
+            r.label += label;
+            r.*flag = true;
+            cp.candidates.push_back(measured(r, i, plan_.samples, plan_.double_reference));
         }
-        if (cp.candidates[cp.chosen].double_accuracy.max_ulps > target_ulps) {
-            for (std::size_t c = 0; c < measured_plainly; ++c) {
-                if (cp.candidates[c].fma)
-                    continue;
-                candidate_result r = cp.candidates[c];
-                r.label += ", compensated";
-                r.compensated = true;
-                cp.candidates.push_back(measured(r, plan.samples, plan.double_reference));
-            }
-            choose();
-        }
-        plan.components.push_back(std::move(cp));
+        pick(cp);
+    }
+
+    static void pick(component_plan& cp)
+    {
+        for (std::size_t c = 1; c < cp.candidates.size(); ++c)
+            if (better(cp.candidates[c].double_accuracy, cp.candidates[cp.chosen].double_accuracy))
+                cp.chosen = c;
+    }
+
+    candidate_result measured(candidate_result r, std::size_t i, const std::vector<verify::sample>& on,
+                              const verify::reference& ref) const
+    {
+        const compile::program p =
+            compile::compile_program({r.value}, inputs_, order_, {r.fma, r.compensated, r.compensated_lets}, k_.lets);
+        r.double_accuracy = verify::measure<double>(p, {i}, on, ref).front();
+        return r;
     }
 
     // The `let` values are computed once for the whole kernel: when one output needs
     // them compensated, every output takes its best compensated-let candidate.
-    bool any_compensated_lets = false;
-    for (const component_plan& cp : plan.components)
-        any_compensated_lets = any_compensated_lets || cp.candidates[cp.chosen].compensated_lets;
-    if (any_compensated_lets) {
-        for (std::size_t i = 0; i < plan.components.size(); ++i) {
-            component_plan& cp = plan.components[i];
+    void compensate_lets_everywhere()
+    {
+        bool any_compensated_lets = false;
+        for (const component_plan& cp : plan_.components)
+            any_compensated_lets = any_compensated_lets || cp.candidates[cp.chosen].compensated_lets;
+        if (!any_compensated_lets)
+            return;
+        for (std::size_t i = 0; i < plan_.components.size(); ++i) {
+            component_plan& cp = plan_.components[i];
             if (cp.candidates[cp.chosen].compensated_lets)
                 continue;
             const std::size_t before = cp.candidates.size();
@@ -282,9 +316,7 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
                     continue;
                 r.label += ", compensated let";
                 r.compensated_lets = true;
-                const compile::program p = compile::compile_program({r.value}, inputs, order, {r.fma, false, true}, k.lets);
-                r.double_accuracy = verify::measure<double>(p, {i}, plan.samples, plan.double_reference).front();
-                cp.candidates.push_back(std::move(r));
+                cp.candidates.push_back(measured(std::move(r), i, plan_.samples, plan_.double_reference));
             }
             std::size_t best = before;
             for (std::size_t c = before + 1; c < cp.candidates.size(); ++c)
@@ -295,21 +327,33 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
         }
     }
 
-    compile_chosen(plan, k, order);
-
     // The program as emitted, its outputs all at once, in each type.
-    compile::program outputs_only = plan.code;
-    outputs_only.outputs.erase(outputs_only.outputs.begin(),
-                               outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
-    std::vector<std::size_t> which(plan.components.size());
-    for (std::size_t i = 0; i < which.size(); ++i)
-        which[i] = i;
-    const auto in_float = measure<float>(outputs_only, which, plan.samples, plan.float_reference);
-    const auto in_double = measure<double>(outputs_only, which, plan.samples, plan.double_reference);
-    const auto in_long = measure<long double>(outputs_only, which, plan.samples, plan.double_reference);
-    for (std::size_t i = 0; i < which.size(); ++i)
-        plan.emitted.push_back({in_float[i], in_double[i], in_long[i]});
-    return plan;
+    void measure_emitted()
+    {
+        compile::program outputs_only = plan_.code;
+        outputs_only.outputs.erase(outputs_only.outputs.begin(),
+                                   outputs_only.outputs.begin() + static_cast<long>(plan_.guard_values));
+        std::vector<std::size_t> which(plan_.components.size());
+        for (std::size_t i = 0; i < which.size(); ++i)
+            which[i] = i;
+        const auto in_float = measure<float>(outputs_only, which, plan_.samples, plan_.float_reference);
+        const auto in_double = measure<double>(outputs_only, which, plan_.samples, plan_.double_reference);
+        const auto in_long = measure<long double>(outputs_only, which, plan_.samples, plan_.double_reference);
+        for (std::size_t i = 0; i < which.size(); ++i)
+            plan_.emitted.push_back({in_float[i], in_double[i], in_long[i]});
+    }
+
+    const engine::kernel& k_;
+    const engine::term_order& order_;
+    const std::vector<GiNaC::ex> inputs_;
+    kernel_plan plan_;
+};
+
+} // namespace
+
+kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order)
+{
+    return chooser(k, order).choose();
 }
 
 std::string choice_key(const engine::kernel& k, const engine::term_order& order)
