@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -420,6 +421,57 @@ BOOST_AUTO_TEST_CASE(a_definition_of_another_dimension_than_declared)
                    "derivations/bad.toml:24:13: error: dimension \"mass*lenght\" names 'lenght', which is not a "
                    "dimension; write a product of powers of mass, length, time and named dimensions, such as "
                    "mass*length^2/time^2, or 1 for a pure number");
+}
+
+// sqrt(x^2 + 1) - x, whose best form (compensated) is within 0.69 ulps in float: a
+// bound of 0.5 ulps is missed, one of 1 ulp met.
+std::string gap_kernel(const std::string& bound)
+{
+    return "id = \"gap\"\ntitle = \"a gap\"\n[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+           "[[symbol]]\nname = \"y\"\n[[given]]\nname = \"g\"\nequation = \"y = sqrt(x^2 + 1) - x\"\n"
+           "because = \"b\"\n[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"
+           "[[kernel]]\nname = \"gap\"\ninputs = [\"x\"]\noutputs = [\"y = y\"]\n"
+           "[[kernel.bound]]\noutput = \"y\"\nulps = " + bound + "\nbecause = \"correctly rounded\"\n";
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regeneration)
+{
+    const scratch s;
+    s.write("derivations/gap.toml", gap_kernel("0.5"));
+    const auto before = snapshot(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST(r.status == 1, r.output);
+    BOOST_TEST(lines_of(r.output).front() ==
+                   "derivations/gap.toml:18:8: error: kernel 'gap': output 'y' misses its bound of 0.5 ulps in "
+                   "float: 0.692 ulps at worst (mass ratio up to 1e12), with the best of 2 candidate forms (display, "
+                   "compensated); give a more accurate form (forms = [...]) or, if this is the best it can do, raise "
+                   "the bound with [[kernel.bound]] output = \"y\", type, ulps, because",
+               r.output);
+    BOOST_TEST((snapshot(s.root / "output") == before), "output/ changed");
+    // `impact kernels` refuses the same way, and writes nothing.
+    const run_result k = s.impact("kernels --derivations derivations --output kernels_out");
+    BOOST_TEST(k.status == 1, k.output);
+    BOOST_TEST(!s.has("kernels_out"));
+
+    // A bound it meets: written, and verification.md says who set it and why.
+    s.write("derivations/gap.toml", gap_kernel("1"));
+    const run_result met = s.regenerate();
+    BOOST_TEST(met.status == 0, met.output);
+    std::ifstream in(s.root / "output" / "verification.md");
+    const std::string verification((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    BOOST_TEST(verification.find("| `y` | float | 4200 | 0.249 | 0.69 | 1 (set) |") != std::string::npos,
+               verification);
+    BOOST_TEST(verification.find("Bound of `y` in float set to 1 ulps by the derivation file: correctly rounded") !=
+               std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_bound_that_is_not_understood)
+{
+    expect_refused(gap_kernel("0"), "derivations/bad.toml:23:8: error: a bound of 0 ulps: give one from 0.5 "
+                                    "(correctly rounded) to 1e15 (no accuracy at all in double)");
+    std::string typed = gap_kernel("8");
+    typed.insert(typed.find("ulps = 8"), "type = \"half\"\n");
+    expect_refused(typed, "derivations/bad.toml:23:8: error: type 'half' must be float, double or long double");
 }
 
 BOOST_AUTO_TEST_CASE(an_empty_file)

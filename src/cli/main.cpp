@@ -124,7 +124,14 @@ int run_kernels(const options& o)
         fmt::print(stderr, "impact: no kernels written\n");
         return exit_failed_check;
     }
-    const pipeline::file_set files = pipeline::generate_kernels(lib);
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    if (!missed.empty()) {
+        for (const std::string& m : missed)
+            fmt::print(stderr, "{}\n", m);
+        fmt::print(stderr, "impact: no kernels written\n");
+        return exit_failed_check;
+    }
     print_kept(pipeline::add_to_folder(folder, files, o.force), folder);
     fmt::print("impact: wrote {} kernel headers to {}\n", files.size(), o.output);
     return 0;

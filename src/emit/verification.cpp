@@ -28,26 +28,40 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
                       "the derived result evaluated by CLN (exactly, or to 60 digits past a root or a "
                       "function) at the same inputs rounded to the type. Errors are in ulps of the output's "
                       "scale: its exact value, or the largest velocity magnitude among the inputs and the "
-                      "exact outputs (times the reduced mass for the impulse J). The programs are measured "
+                      "exact outputs (times the reduced mass for the impulse J). Every output must stay "
+                      "within its bound, 4 ulps unless its derivation file sets another with a reason, in "
+                      "every type, or the regeneration fails. The programs are measured "
                       "exactly as emitted (one operation at a time, no FMA contraction: kernels are compiled "
                       "with -ffp-contract=off in the tests).\n";
     for (const verify::kernel_plan* plan : plans) {
         const engine::kernel& k = *plan->kernel;
         const engine::term_order order(k.input_symbols());
         out += fmt::format("\n## `{}`\n\n", k.name);
-        out += "| output | type | samples | mean ulps | max ulps | worst regime | scale | form |\n"
-               "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+        out += "| output | type | samples | mean ulps | max ulps | bound | worst regime | scale | form |\n"
+               "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
         const auto components = verify::components(k);
         for (std::size_t i = 0; i < plan->components.size(); ++i) {
             const verify::component_plan& cp = plan->components[i];
             const engine::kernel_output& o = k.outputs[components[i].first];
             const std::string form = cp.candidates[cp.chosen].label;
             const verify::emitted_accuracy& measured = plan->emitted[i];
-            for (const auto& [type, a] : {std::pair<const char*, const verify::accuracy&>{"float", measured.in_float},
-                                          {"double", measured.in_double},
-                                          {"long double", measured.in_long_double}})
-                out += fmt::format("| `{}` | {} | {} | {:.3f} | {:.2f} | {} | {} | {} |\n", cp.name, type, a.samples,
-                                   a.mean_ulps, a.max_ulps, a.worst_regime, scale_text(o, order), form);
+            const char* const types[] = {"float", "double", "long double"};
+            const verify::accuracy* in_type[] = {&measured.in_float, &measured.in_double, &measured.in_long_double};
+            for (std::size_t t = 0; t < 3; ++t) {
+                const verify::accuracy& a = *in_type[t];
+                out += fmt::format("| `{}` | {} | {} | {:.3f} | {:.2f} | {:g}{} | {} | {} | {} |\n", cp.name,
+                                   types[t], a.samples, a.mean_ulps, a.max_ulps, o.bound_ulps[t],
+                                   o.bound_because[t].empty() ? "" : " (set)", a.worst_regime, scale_text(o, order),
+                                   form);
+            }
+        }
+        // A bound the derivation file sets, with its reason.
+        for (const engine::kernel_output& o : k.outputs) {
+            const char* const types[] = {"float", "double", "long double"};
+            for (std::size_t t = 0; t < 3; ++t)
+                if (!o.bound_because[t].empty())
+                    out += fmt::format("\nBound of `{}` in {} set to {:g} ulps by the derivation file: {}\n",
+                                       o.member, types[t], o.bound_ulps[t], o.bound_because[t]);
         }
         out += "\nCandidates in double (maximum ulps; the emitted form is marked):\n\n";
         for (const verify::component_plan& cp : plan->components) {

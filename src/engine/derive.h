@@ -16,6 +16,7 @@
 
 #include <ginac/ginac.h>
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -122,6 +123,10 @@ struct kernel_output {
     /// velocity of the collision times `scale_factor`.
     enum class scale { relative, velocity } error = scale::relative;
     GiNaC::ex scale_factor = 1;
+    /// The largest error allowed in float, double and long double, in ulps of its scale,
+    /// and why when the file sets it (`[[kernel.bound]]`); 4 ulps otherwise.
+    std::array<double, 3> bound_ulps{4, 4, 4};
+    std::array<std::string, 3> bound_because;
 };
 
 /// A condition the inputs must meet; when one does not, the kernel returns its status.
@@ -134,6 +139,7 @@ struct kernel_guard {
 
 struct kernel {
     std::string name;
+    source_location where;                 ///< its name in the derivation file
     std::vector<kernel_parameter> parameters;
     std::vector<kernel_output> outputs;
     std::vector<kernel_guard> guards;

@@ -21,6 +21,7 @@ public:
     {
         kernel k;
         k.name = spec_kernel.name.value;
+        k.where = spec_kernel.name.where;
         k.batch = spec_kernel.batch;
         std::set<std::string> seen;
         auto add_input = [&](const spec::text& name) {
@@ -63,6 +64,15 @@ public:
         }
         for (const spec::kernel_guard& g : spec_kernel.guards)
             k.guards.push_back(make_guard(k, g));
+        for (const spec::error_bound& b : spec_kernel.bounds) {
+            kernel_output* o = find_output(k, b.output);
+            const char* const types[] = {"float", "double", "long double"};
+            for (std::size_t t = 0; t < 3; ++t)
+                if (!b.type || b.type->value == types[t]) {
+                    o->bound_ulps[t] = b.ulps;
+                    o->bound_because[t] = b.because.value;
+                }
+        }
         return k;
     }
 

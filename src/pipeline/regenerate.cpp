@@ -38,9 +38,12 @@ private:
 
 } // namespace
 
-file_set generate_kernels(const library& lib)
+file_set generate_kernels(const library& lib, std::vector<std::string>* missed)
 {
-    return emit::kernel_files(lib, verify::plan_kernels(lib));
+    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(lib);
+    if (missed)
+        *missed = verify::missed_bounds(plans);
+    return emit::kernel_files(lib, plans);
 }
 
 namespace {
@@ -65,8 +68,10 @@ void add_documents(const library& lib, file_set& files)
     files["errata.md"] = emit::errata_markdown(lib.in_order());
 }
 
-// The kernel headers and verification.md, the choice of forms taken from `store` where it can be.
-void add_kernels(const library& lib, file_set& files, stopwatch& clock, cache::store* store, progress* shown)
+// The kernel headers and verification.md, the choice of forms taken from `store` where it
+// can be; the outputs that miss their bounds.
+std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwatch& clock, cache::store* store,
+                                     progress* shown)
 {
     const char* task = "kernel forms";
     const std::vector<verify::kernel_plan> plans =
@@ -85,6 +90,7 @@ void add_kernels(const library& lib, file_set& files, stopwatch& clock, cache::s
         all.push_back(&p);
     files["verification.md"] = emit::verification_markdown(all);
     clock.lap("verification report (numeric)");
+    return verify::missed_bounds(plans);
 }
 
 } // namespace
@@ -178,13 +184,19 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
         report_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
         return made;
     });
-    add_kernels(lib, files, clock, compiling.store, &shown);
+    const std::vector<std::string> missed = add_kernels(lib, files, clock, compiling.store, &shown);
     for (auto& [path, contents] : report_files)
         files[path] = std::move(contents);
     for (auto& [path, contents] : pdfs.get())
         files[path] = std::move(contents);
     clock.lap("waiting for the figures and report");
     result.stages.emplace_back("figures and report PDFs (beside the kernel forms)", report_seconds);
+    // A kernel that misses its accuracy bound fails the regeneration like a failed check.
+    if (!missed.empty()) {
+        result.failures = missed;
+        result.all_hold = false;
+        return result;
+    }
     result.files = files.size();
     result.written = replace_folder(target, files, options.force);
     if (store) {

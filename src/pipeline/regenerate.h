@@ -25,8 +25,9 @@ using stage_times = std::vector<std::pair<std::string, double>>;
 /// The files for a derived library: derivations.json, latex/<id>.tex, kernels/impact/*.hpp.
 file_set generate(const library& lib, stage_times* stages = nullptr);
 
-/// Only the kernel headers (kernels/impact/*.hpp), for building against them.
-file_set generate_kernels(const library& lib);
+/// Only the kernel headers (kernels/impact/*.hpp), for building against them; `missed`,
+/// when given, receives the outputs that miss their accuracy bounds (verify::missed_bounds).
+file_set generate_kernels(const library& lib, std::vector<std::string>* missed = nullptr);
 
 /// One line for each check that failed: `file:line:column: error: check failed: id: name: residual r`.
 std::vector<std::string> failed_checks(const library& lib);

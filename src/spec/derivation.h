@@ -129,12 +129,23 @@ struct error_scale {
     text written;
 };
 
+/// An output's accuracy bound set in the file (`[[kernel.bound]]`), in ulps of its error
+/// scale, with the reason; without one an output must reach 4 ulps.
+struct error_bound {
+    text output;
+    std::optional<text> type;      ///< `float`, `double` or `long double`; all three without
+    double ulps = 4;
+    source_location ulps_where;
+    text because;
+};
+
 struct kernel {
     text name;
     std::vector<kernel_value> inputs;
     std::vector<kernel_value> outputs;
     std::vector<text> velocities;  ///< inputs whose largest magnitude scales velocity errors
     std::vector<error_scale> error;
+    std::vector<error_bound> bounds;
     std::vector<binding> forms;    ///< further candidate forms of an output: `J = <expr>` (proven equal)
     std::vector<kernel_guard> guards;
     std::vector<binding> substitute; ///< symbols of the results written in the inputs: `r_x = C_Mx - C_mx`

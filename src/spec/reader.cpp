@@ -168,6 +168,29 @@ public:
 
     binding split(const text& entry, std::string_view key) const { return split_binding(entry, key); }
 
+    double required_number(std::string_view key)
+    {
+        const toml::node* node = find(key);
+        if (!node)
+            throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
+        if (const auto value = node->value<double>())
+            return *value;
+        throw error(location_of(file_, node->source()), fmt::format("'{}' in {} must be a number", key, context_));
+    }
+
+    source_location where_of(std::string_view key) const
+    {
+        if (const toml::node* node = table_.get(key))
+            return location_of(file_, node->source());
+        return where();
+    }
+
+    /// A reader for a table inside this one (`[[kernel.bound]]`).
+    table_reader nested(const toml::table& table, std::string context) const
+    {
+        return table_reader(table, file_, std::move(context));
+    }
+
     std::optional<bool> optional_bool(std::string_view key)
     {
         const toml::node* node = find(key);
@@ -446,6 +469,25 @@ kernel read_kernel(table_reader& in)
     k.substitute = in.binding_array("substitute", false);
     k.let = in.binding_array("let", false);
     k.batch = in.optional_bool("batch").value_or(false);
+    for (const toml::table* table : in.table_array("bound")) {
+        table_reader b = in.nested(*table, "[[kernel.bound]]");
+        error_bound bound;
+        bound.output = b.required_string("output");
+        bound.type = b.optional_string("type");
+        if (bound.type && bound.type->value != "float" && bound.type->value != "double" &&
+            bound.type->value != "long double")
+            throw error(bound.type->where, fmt::format("type '{}' must be float, double or long double",
+                                                       bound.type->value));
+        bound.ulps = b.required_number("ulps");
+        bound.ulps_where = b.where_of("ulps");
+        bound.because = b.required_string("because");
+        b.finish();
+        if (!(bound.ulps >= 0.5 && bound.ulps <= 1e15))
+            throw error(bound.ulps_where, fmt::format("a bound of {} ulps: give one from 0.5 (correctly rounded) to "
+                                                      "1e15 (no accuracy at all in double)",
+                                                      bound.ulps));
+        k.bounds.push_back(std::move(bound));
+    }
     in.finish();
     return k;
 }

@@ -356,6 +356,38 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
     return chooser(k, order).choose();
 }
 
+std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
+{
+    std::vector<std::string> missed;
+    for (const kernel_plan& plan : plans) {
+        const engine::kernel& k = *plan.kernel;
+        const auto all = components(k);
+        for (std::size_t i = 0; i < plan.components.size(); ++i) {
+            const engine::kernel_output& o = k.outputs[all[i].first];
+            const component_plan& cp = plan.components[i];
+            const emitted_accuracy& e = plan.emitted[i];
+            // One line an output, naming the type where it is furthest past its bound.
+            const char* const types[] = {"float", "double", "long double"};
+            const accuracy* measured[] = {&e.in_float, &e.in_double, &e.in_long_double};
+            std::size_t worst = 3;
+            for (std::size_t t = 0; t < 3; ++t)
+                if (measured[t]->max_ulps > o.bound_ulps[t] &&
+                    (worst == 3 || measured[t]->max_ulps / o.bound_ulps[t] >
+                                       measured[worst]->max_ulps / o.bound_ulps[worst]))
+                    worst = t;
+            if (worst == 3)
+                continue;
+            missed.push_back(fmt::format(
+                "{}: error: kernel '{}': output '{}' misses its bound of {:g} ulps in {}: {:.3g} ulps at worst ({}), "
+                "with the best of {} candidate forms ({}); give a more accurate form (forms = [...]) or, if this is "
+                "the best it can do, raise the bound with [[kernel.bound]] output = \"{}\", type, ulps, because",
+                to_string(k.where), k.name, cp.name, o.bound_ulps[worst], types[worst], measured[worst]->max_ulps,
+                measured[worst]->worst_regime, cp.candidates.size(), cp.candidates[cp.chosen].label, o.member));
+        }
+    }
+    return missed;
+}
+
 std::string choice_key(const engine::kernel& k, const engine::term_order& order)
 {
     // Everything plan_kernel reads of the kernel, printed in the derivation's term order

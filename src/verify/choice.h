@@ -80,6 +80,11 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
 std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* store = nullptr,
                                       const std::function<void(std::size_t, std::size_t)>& done = {});
 
+/// Every output that misses its bound (`engine::kernel_output::bound_ulps`) in float,
+/// double or long double, one line each: `file:line:column: error: kernel 'k': output 'J'
+/// misses its bound ...`, naming the error, the regime and how to raise the bound.
+std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans);
+
 /// The text a kernel's plan depends on, the key of its cache entry.
 std::string choice_key(const engine::kernel& k, const engine::term_order& order);
 
