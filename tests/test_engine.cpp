@@ -491,7 +491,7 @@ BOOST_AUTO_TEST_CASE(singular_inconsistent_underdetermined_and_nonlinear_systems
     BOOST_TEST(mentions(error_for(with("3*x", solve_both)), "inconsistent"));
     BOOST_TEST(mentions(error_for(with("2*x", "[[step]]\nsolve = [\"a\"]\nfor = [\"y\", \"z\"]\n")),
                         "2 unknowns but only 1 equations"));
-    BOOST_TEST(mentions(error_for(derivation_text("[[given]]\nname = \"a\"\nequation = \"y^2 = x\"\nbecause = \"a\"\n"
+    BOOST_TEST(mentions(error_for(derivation_text("[[given]]\nname = \"a\"\nequation = \"y^3 = x\"\nbecause = \"a\"\n"
                                                   "[[step]]\nsolve = [\"a\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n")),
                         "not linear"));
 }

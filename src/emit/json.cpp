@@ -62,6 +62,26 @@ json derivation_json(const engine::derivation& d)
     j["display"] = json::object();
     for (const engine::result& r : d.results)
         j["display"][r.name] = ginac_syntax(r.display, order);
+    // The solutions of the steps whose equations are not linear, kept and rejected.
+    for (const engine::step_result& s : d.steps) {
+        for (const engine::solution& found : s.solutions) {
+            static const char* const fates[] = {"kept", "outside its domain", "rejected by the step"};
+            json sj;
+            sj["step"] = s.description;
+            for (const auto& [symbol, value] : found.values)
+                sj["values"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
+            sj["status"] = fates[static_cast<int>(found.outcome)];
+            if (found.outcome == engine::solution::fate::outside_domain)
+                sj["domain"] = ginac_syntax(found.unknown, order) + " in " + found.range.to_string();
+            if (found.outcome == engine::solution::fate::condition)
+                sj["condition"] = ginac_syntax(found.condition.lhs(), order) + " = " +
+                                  ginac_syntax(found.condition.rhs(), order);
+            sj["why"] = found.why;
+            for (const engine::sign_step& step : found.proof)
+                sj["proof"].push_back(step.words);
+            j["solutions"].push_back(sj);
+        }
+    }
     j["checks"] = json::array();
     for (const engine::check_result* c : d.all_checks())
         j["checks"].push_back(check_json(*c, order));

@@ -244,15 +244,41 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
         out += rows(math(s.values[i].first), s.values[i].second, nullptr, "") +
                (i + 1 < s.values.size() ? " \\\\\n" : "\n");
     out += "\\end{align*}\n";
+    out += rejected_solutions(s);
     const bool all_proven = std::all_of(s.checks.begin(), s.checks.end(), [](const engine::check_result& c) {
         return c.outcome.what == engine::verdict::status::proven;
     });
     if (all_proven && !s.checks.empty())
-        out += fmt::format("Substituted back, the solution satisfies {}: \\textbf{{proven}}.\n",
+        out += fmt::format("Substituted back, {} satisfies {}: \\textbf{{proven}}.\n",
+                           s.solutions.size() > 1 ? "each solution" : "the solution",
                            equations.size() == 1 ? equations.front() : "each of " + listing(equations));
     else
         out += step_checks(s);
     return out;
+}
+
+// The solutions of a non-linear system other than the one kept, each with why it is
+// rejected: the domain of an unknown it leaves, or the condition of the step it meets.
+std::string fragment_writer::rejected_solutions(const engine::step_result& s) const
+{
+    std::vector<std::string> rejected;
+    for (const engine::solution& found : s.solutions) {
+        if (found.kept())
+            continue;
+        std::vector<std::string> values;
+        for (const auto& [symbol, value] : found.values)
+            values.push_back(math(symbol) + " = " + math(value));
+        std::string why;
+        if (found.outcome == engine::solution::fate::outside_domain)
+            why = fmt::format("${} {}$", math(found.unknown), found.range.to_latex());
+        else
+            why = fmt::format("${} = {}$: {}", math(found.condition.lhs()), math(found.condition.rhs()),
+                              latex_text(found.why));
+        rejected.push_back(fmt::format("${}$ ({})", fmt::format("{}", fmt::join(values, ",\\ ")), why));
+    }
+    if (rejected.empty())
+        return "";
+    return fmt::format("The equations have {} solutions; rejected: {}.\n", s.solutions.size(), listing(rejected));
 }
 
 std::string fragment_writer::define_step(const engine::step_result& s, const std::string& because) const

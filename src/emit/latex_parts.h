@@ -89,6 +89,7 @@ private:
     std::string step_checks(const engine::step_result& s) const;
     std::string steps() const;
     std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
+    std::string rejected_solutions(const engine::step_result& s) const;
     std::string define_step(const engine::step_result& s, const std::string& because) const;
     std::string yields(const engine::step_result& s) const;
     std::string quotient_step(const engine::step_result& s, const spec::step* source,

@@ -26,6 +26,16 @@ std::string terminal_text(const engine::derivation& d)
         out += fmt::format("  {}. {}\n", i + 1, s.description);
         for (const auto& [symbol, value] : s.values)
             out += fmt::format("       {} = {}\n", text(symbol), text(value));
+        for (const engine::solution& found : s.solutions) {
+            std::string values;
+            for (const auto& [symbol, value] : found.values)
+                values += (values.empty() ? "" : ", ") + text(symbol) + " = " + text(value);
+            const std::string condition = found.outcome == engine::solution::fate::condition
+                                              ? relation(found.condition) + ": "
+                                              : std::string();
+            out += fmt::format("       {}: {}{}\n", found.kept() ? "kept" : "rejected", values,
+                               found.why.empty() ? "" : " (" + condition + found.why + ")");
+        }
         if (s.yields)
             out += fmt::format("       {}: {}\n", s.yields->name, relation(s.yields->relation));
         for (const GiNaC::ex& a : s.assumptions)

@@ -4,6 +4,7 @@
 #include "engine/dimensional.h"
 #include "engine/kernel_build.h"
 #include "engine/reconcile.h"
+#include "engine/solve.h"
 
 #include <fmt/format.h>
 
@@ -12,28 +13,6 @@
 
 namespace impact::engine {
 namespace {
-
-// A derived value in its simplest form: numerator and denominator factored, radicals
-// of squares taken out by sign, radicals of quotients split (see simplify_radicals).
-GiNaC::ex simplified(const GiNaC::ex& e, const assumptions& given)
-{
-    // factor() is by far the engine's most expensive call; a long numerator is left
-    // expanded (a derivation states the form it wants typeset as its display form).
-    constexpr std::size_t longest_factored = 4;
-    const GiNaC::ex nd = GiNaC::normal(simplify_radicals(e, given)).numer_denom();
-    auto factored = [&](const GiNaC::ex& p) {
-        return p.nops() > longest_factored ? p : factor_polynomial(p, *given.run);
-    };
-    return simplify_radicals(factored(nd.op(0)) / factored(nd.op(1)), given);
-}
-
-std::string join(const std::vector<spec::text>& items)
-{
-    std::string out;
-    for (const spec::text& item : items)
-        out += (out.empty() ? "" : ", ") + item.value;
-    return out;
-}
 
 // The state of a derivation while its steps run.
 class deriver {
@@ -207,61 +186,13 @@ private:
         out_.steps.push_back(std::move(r));
     }
 
-    // Solves linear equations for unknowns with lsolve, then substitutes the solution
-    // back into every equation: the residuals must normalise to zero.
+    // Solves equations for unknowns (engine/solve.h); every solution is substituted back.
     void solve(const spec::step& st, step_result& r)
     {
-        r.description = fmt::format("solve {} for {}", join(st.equations), join(st.unknowns));
-        if (st.unknowns.size() > st.equations.size())
-            throw error(st.where, fmt::format("{} unknowns but only {} equations: the system is underdetermined",
-                                              st.unknowns.size(), st.equations.size()));
-        GiNaC::lst unknowns;
-        for (const spec::text& u : st.unknowns) {
-            const GiNaC::ex s = symbol_of(u);
-            if (values_.count(s))
-                throw error(u.where, fmt::format("'{}' is already derived by an earlier step", u.value));
-            unknowns.append(s);
-        }
-        GiNaC::lst system;
-        std::vector<const equation*> used;
-        for (const spec::text& name : st.equations) {
-            used.push_back(&equation_at(name));
-            system.append(resolve(used.back()->relation));
-        }
-        GiNaC::ex solution;
-        try {
-            solution = GiNaC::lsolve(system, unknowns);
-        } catch (const std::logic_error&) {
-            throw error(st.where, fmt::format("the system is not linear in {}", join(st.unknowns)));
-        }
-        if (solution.nops() == 0)
-            throw error(st.where, "the system is inconsistent: it has no solution");
-        for (const GiNaC::ex& s : solution) {
-            for (const GiNaC::ex& u : unknowns)
-                if (s.rhs().has(u))
-                    throw error(st.where, fmt::format("the system is singular: it does not determine {}",
-                                                      out_.symbols.text(s.lhs())));
-        }
-        GiNaC::exmap solved;
-        for (const GiNaC::ex& s : solution) {
-            const GiNaC::ex value = simplified(s.rhs(), declared_assumptions(out_.symbols, run_));
-            solved[s.lhs()] = value;
-            r.values.emplace_back(s.lhs(), value);
-        }
-        for (const equation* e : used) {
-            const GiNaC::ex substituted = resolve(e->relation).subs(solved);
-            check_result c;
-            c.name = fmt::format("{} holds for the solution", e->name);
-            c.statement = e->name;
-            c.stated = e->relation;
-            c.because = "the solution substituted back into the equation it solves";
-            c.lhs = substituted.lhs();
-            c.rhs = substituted.rhs();
-            c.outcome = prove_equal(c.lhs, c.rhs, out_.symbols, run_);
-            c.where = e->where;
-            r.checks.push_back(std::move(c));
-        }
-        for (const auto& [symbol, value] : solved)
+        const solve_context context{out_.symbols, run_, resolver(),
+                                    [this](const spec::text& name) -> const equation& { return equation_at(name); },
+                                    values_};
+        for (const auto& [symbol, value] : solve_equations(st, context, r))
             set_value(symbol, value);
     }
 

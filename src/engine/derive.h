@@ -60,6 +60,20 @@ struct check_result {
     written_form written;     ///< how the file writes the claim
 };
 
+/// One solution of a `solve` step whose equations are not linear: kept, or rejected by
+/// the declared domain of an unknown or by a condition the step states.
+struct solution {
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> values;  ///< unknown = value
+    enum class fate { kept, outside_domain, condition } outcome = fate::kept;
+    GiNaC::ex unknown;        ///< outside_domain: the unknown whose domain excludes the value
+    domain range;             ///< ... and that domain
+    GiNaC::ex condition;      ///< condition: the step's condition (lhs == rhs) that holds for it
+    std::string why;          ///< in words: the sign proven, or (condition) the step's `reject_because`
+    std::vector<sign_step> proof;  ///< outside_domain (or kept within a domain): the value's sign
+
+    bool kept() const { return outcome == fate::kept; }
+};
+
 /// What one step did.
 struct step_result {
     spec::step::kind what;
@@ -72,6 +86,9 @@ struct step_result {
     source_location where;
     std::optional<GiNaC::ex> as_written;  ///< define: the value as the file writes it, before substitution
     written_form written;                 ///< ... and how it writes it
+    /// solve, when its equations are not linear: every solution found, kept and rejected
+    /// (the one kept is also in `values`; each is substituted back in `checks`).
+    std::vector<solution> solutions;
 };
 
 /// Something the paper prints or claims, compared with what is derived.

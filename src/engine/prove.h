@@ -3,7 +3,8 @@
 // An identity is `proven` only when the difference of its sides normalises to zero
 // with GiNaC (a rational-function identity, exact for every value where both sides are
 // defined). When normalisation leaves something GiNaC cannot decide, the identity is
-// tested at sampled points of the declared domains with 40-digit arithmetic and
+// tested at sampled points of the declared domains with 40-digit arithmetic (a point
+// where it fails evaluated again exactly) and
 // reported as `sampled (N points)`, never as proven; if any point disagrees it is
 // `failed` with the residual.
 #pragma once

@@ -163,6 +163,8 @@ private:
 
         if (auto linear = linear_in_bounded_symbol(e))
             return *linear;
+        if (auto affine = affine_in_bounded_symbol(e, depth))
+            return *affine;
         const bool radical = has_radical(e);
 
         // A - B with A, B >= 0 has the sign of A^2 - B^2. The terms with radicals form
@@ -183,16 +185,20 @@ private:
                 b = -radicals;
             } else {
                 for (std::size_t i = 0; i < e.nops(); ++i) {
-                    if (!terms[i].negative)
+                    if (!terms[i].negative) {
                         a += e.op(i);
-                    else if (!terms[i].positive)
+                    } else if (!terms[i].positive) {
                         b -= e.op(i);
-                    else
-                        return {r, "a sum of terms of unknown sign"};
+                    } else {
+                        a = b = 0;   // a term of unknown sign: no A - B
+                        break;
+                    }
                 }
             }
-            const GiNaC::ex difference = GiNaC::normal(GiNaC::expand(a * a - b * b));
-            const auto [squares, why] = sign(factored(difference), depth + 1);
+            const GiNaC::ex difference =
+                a.is_zero() && b.is_zero() ? GiNaC::ex(0) : GiNaC::normal(GiNaC::expand(a * a - b * b));
+            const auto [squares, why] =
+                difference.is_zero() ? std::make_pair(sign_set::any(), sign_reason()) : sign(factored(difference), depth + 1);
             if (squares.is_known()) {
                 sign_set s;
                 s.positive = squares.positive;
@@ -203,6 +209,49 @@ private:
             }
         }
         return {r, "a sum of terms of unknown sign"};
+    }
+
+    // A polynomial of degree one in a symbol s with an interval domain, or in s^2 (no odd
+    // power of s), whatever its other symbols: for each value of those it is an affine
+    // function of s (of s^2) and lies between its values at the ends of the range of s
+    // (of s^2: [0, max(lower^2, upper^2)] when the interval holds 0), so the signs at
+    // those ends settle its sign (1 - b^2 >= 0 on [-1, 1]: 1 at b = 0 and 0 at b = 1).
+    std::optional<std::pair<sign_set, sign_reason>> affine_in_bounded_symbol(const GiNaC::ex& e, int depth) const
+    {
+        if (depth > 6)
+            return std::nullopt;
+        for (const auto& [s, d] : domains_) {
+            if (d.what != domain::kind::interval || !e.has(s) || !e.is_polynomial(s))
+                continue;
+            const GiNaC::ex p = GiNaC::expand(e);
+            const int degree = p.degree(s);
+            const bool squared = degree == 2 && p.coeff(s, 1).is_zero();
+            if (degree != 1 && !squared)
+                continue;
+            const GiNaC::numeric low = exact(d.lower), high = exact(d.upper);
+            std::vector<GiNaC::numeric> ends = {low, high};
+            if (squared && !low.is_positive() && !high.is_negative())
+                ends = {0, GiNaC::abs(low) > GiNaC::abs(high) ? low : high};
+            sign_set r{false, false, false};
+            std::vector<std::string> at;
+            bool known = true;
+            for (const GiNaC::numeric& end : ends) {
+                const GiNaC::ex value = p.subs(s == end);
+                const auto [sign_at, why] = sign(factored(value), depth + 1);
+                known = known && sign_at.is_known();
+                r.negative = r.negative || sign_at.negative;
+                r.positive = r.positive || sign_at.positive;
+                r.zero = r.zero || sign_at.zero;
+                at.push_back(fmt::format("{} {} at {} = {}", text(factored(value)), sign_at.describe(), text(s),
+                                         text(end)));
+            }
+            if (!known || (r.negative && r.positive))
+                continue;
+            return std::make_pair(r, fmt::format("{}, {} in {}, between its values at the ends: {}",
+                                                 squared ? "affine in " + text(GiNaC::pow(s, 2)) : "linear in " + text(s),
+                                                 text(s), d.to_string(), fmt::format("{}", fmt::join(at, " and "))));
+        }
+        return std::nullopt;
     }
 
     // A polynomial of degree one in a single symbol with an interval domain takes its

@@ -4,8 +4,11 @@
 // expression follows from the signs of its parts: the expression is normalised and
 // factored, and each factor's sign is derived from the domains (a positive mass, an
 // interval ε ∈ [0, 1], a square, a square root, a sum of terms of one sign, a linear
-// function of one bounded symbol at the ends of its interval, or A − B with A, B ≥ 0
-// through A² − B²). The derivation of each factor's sign is kept as the proof text.
+// function of one bounded symbol at the ends of its interval, a polynomial of degree
+// one in a bounded symbol or its square, whatever its other symbols, by its signs at
+// the ends (1 − b² on [−1, 1]; a sum −(1 − e²)A − (1 − b²)B expanded over one
+// denominator), or A − B with A, B ≥ 0 through A² − B²). The derivation of each
+// factor's sign is kept as the proof text.
 #pragma once
 
 #include "engine/order.h"

@@ -65,6 +65,8 @@ struct step {
     text name;                     ///< define, quotient, rearrange: what the step yields
     text expression;               ///< define: the expression; rearrange: the equation's new form
     text source;                   ///< rearrange: the equation brought to a new form
+    std::vector<text> reject;      ///< solve: conditions (`lhs = rhs`) whose solutions are not wanted
+    text reject_because;           ///< solve: why the solutions `reject` names are not wanted
 };
 
 /// A named result with the form to display and what the paper prints.

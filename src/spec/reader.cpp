@@ -295,6 +295,13 @@ step read_step(table_reader& in)
         s.what = step::kind::solve;
         s.equations = in.string_array("solve", true);
         s.unknowns = in.string_array("for", true);
+        s.reject = in.string_array("reject", false);
+        if (auto because = in.optional_string("reject_because"))
+            s.reject_because = *because;
+        if (!s.reject.empty() && s.reject_because.value.empty())
+            throw error(s.where, "'reject' needs 'reject_because': why the solutions it rejects are not wanted");
+        if (s.reject.empty() && !s.reject_because.value.empty())
+            throw error(s.reject_because.where, "'reject_because' without 'reject': no solution is rejected");
     } else if (in.has("define")) {
         s.what = step::kind::define;
         s.name = in.required_string("define");
