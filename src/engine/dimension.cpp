@@ -296,20 +296,27 @@ public:
 private:
     std::optional<dimension> sum(const GiNaC::ex& e) const
     {
+        // The terms in the order of their text, not GiNaC's (which depends on what else
+        // the process has made), so that a message names them the same way every time.
+        std::vector<std::pair<std::string, GiNaC::ex>> terms;
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            terms.emplace_back(text(e.op(i)), e.op(i));
+        std::sort(terms.begin(), terms.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
         std::optional<dimension> first;
-        GiNaC::ex first_term;
+        std::string first_term;
         bool all_known = true;
-        for (std::size_t i = 0; i < e.nops(); ++i) {
-            const auto term = of(e.op(i));
-            all_known = all_known && term;
-            if (!term)
+        for (const auto& [written, term] : terms) {
+            const auto found = of(term);
+            all_known = all_known && found;
+            if (!found)
                 continue;
             if (!first) {
-                first = term;
-                first_term = e.op(i);
-            } else if (*term != *first) {
+                first = found;
+                first_term = written;
+            } else if (*found != *first) {
                 throw error(where_, fmt::format("adds {}, {}, to {}, {}: the terms of a sum share one dimension",
-                                                text(first_term), first->describe(), text(e.op(i)), term->describe()));
+                                                first_term, first->describe(), written, found->describe()));
             }
         }
         // A sum with a term of unknown dimension has an unknown dimension.
