@@ -367,7 +367,8 @@ std::size_t sweep_pairs()
 // What a sweep saw: statuses given, pairs on a boundary of the classification, and
 // resolved pairs whose outputs are far from the closed form.
 struct tally {
-    std::size_t pairs = 0, borderline = 0, resolved = 0, imprecise = 0, measured = 0;
+    std::size_t pairs = 0, borderline = 0, imprecise = 0, measured = 0;
+    std::size_t imprecise_without_underflow = 0;  // beyond 16 ulps with every value a normal number
     std::array<std::size_t, 7> by_status{};
     W worst_ulps = 0;
 
@@ -380,7 +381,7 @@ struct tally {
         std::cout << "; on a boundary " << borderline;
         if (measured)
             std::cout << "; resolved beyond 16 ulps of the closed form " << imprecise << " of " << measured
-                      << " (worst " << worst_ulps << ")";
+                      << " (worst " << worst_ulps << "), of which without an underflow " << imprecise_without_underflow;
         std::cout << '\n';
     }
 };
@@ -448,6 +449,7 @@ struct collision_nd {
     statuses admitted = 0;
     std::array<W, N> v_M_after{}, v_m_after{};  // meaningful where ok is admitted
     W velocity_scale = 0;
+    bool underflows = false;  // a value of the closed form below the normal range
 };
 
 template <class Real, std::size_t N>
@@ -548,6 +550,11 @@ collision_nd<Real, N> classify(const pair_nd<Real, N>& p)
         c.velocity_scale = std::max({c.velocity_scale, std::fabs(static_cast<W>(p.v_M[i])), std::fabs(static_cast<W>(p.v_m[i]))});
     // Where |r|^2 is a denormal, k may be a factor of 2 off in the type (the known limit).
     const bool r2_denormal = lg(r2) < std::numeric_limits<Real>::min_exponent - 1;
+    for (W v : intermediates)
+        c.underflows = c.underflows || v < std::numeric_limits<Real>::min_exponent + 1;
+    for (std::size_t i = 0; i < N; ++i)
+        for (W v : {static_cast<W>(p.v_M[i]), static_cast<W>(p.v_m[i]), static_cast<W>(p.C_M[i]), static_cast<W>(p.C_m[i]), dv[i], r[i]})
+            c.underflows = c.underflows || (v != 0 && lg(v) < std::numeric_limits<Real>::min_exponent + 1);
     c.admitted |= range_statuses<Real>(divisor_lg, intermediates, results, r2_denormal ? 2 : slack<Real>());
 
     return c;
@@ -597,6 +604,7 @@ void check_resolved(failures& fail, tally& t, const pair_nd<Real, N>& p, const i
                               ulps_of(out.v_m[k], c.v_m_after[k], c.velocity_scale)});
         ++t.measured;
         t.imprecise += worst > imprecise_ulps ? 1 : 0;
+        t.imprecise_without_underflow += worst > imprecise_ulps && !c.underflows ? 1 : 0;
         t.worst_ulps = std::max(t.worst_ulps, worst);
     }
 }
@@ -703,6 +711,7 @@ void sweep_collide(std::uint64_t seed)
     BOOST_TEST(fail.count == 0u);
     BOOST_TEST(t.by_status[static_cast<std::size_t>(status::ok)] > t.pairs / 20);  // the sweep resolves collisions too
     BOOST_TEST(t.borderline < t.pairs / 20);  // and its classification decides most pairs alone
+    BOOST_TEST(t.imprecise_without_underflow == 0u);  // imprecise only where a value underflows
 }
 
 // ---------------------------------------------------------------------------------
@@ -751,6 +760,7 @@ struct line_closed_form {
     W velocity_scale;
     std::vector<W> line_intermediates, loss_intermediates;
     W divisor_lg, v_M_lg, v_m_lg, J_lg, dE_lg, dv;
+    bool underflows;  // a value of the closed form below the normal range
 };
 
 template <class Real>
@@ -784,6 +794,12 @@ line_closed_form closed_form(const pair_1d<Real>& p)
                             M_lg + m_lg + lg(1 + eps), M_lg + m_lg + lg(1 + eps) + dv_lg};
     // Eq. 11: (1 - eps)(1 + eps) M m (v_M - v_m)^2 over 2 (M + m).
     f.loss_intermediates = {M_lg + m_lg + lg(1 + eps), dv_lg, 2 * dv_lg, M_lg + m_lg + lg((1 - eps) * (1 + eps)) + 2 * dv_lg};
+    f.underflows = false;
+    for (const auto* values : {&f.line_intermediates, &f.loss_intermediates})
+        for (W v : *values)
+            f.underflows = f.underflows || v < std::numeric_limits<Real>::min_exponent + 1;
+    for (W v : {static_cast<W>(p.M), static_cast<W>(p.m), static_cast<W>(p.v_M), static_cast<W>(p.v_m), dv, f.J, f.dE})
+        f.underflows = f.underflows || (v != 0 && lg(v) < std::numeric_limits<Real>::min_exponent + 1);
     return f;
 }
 
@@ -824,6 +840,7 @@ void check_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
                                   ulps_of(out.v_m, f.v_m_after, f.velocity_scale), ulps_of(out.J, f.J, impulse_scale)});
         ++t.measured;
         t.imprecise += worst > imprecise_ulps ? 1 : 0;
+        t.imprecise_without_underflow += worst > imprecise_ulps && !f.underflows ? 1 : 0;
         t.worst_ulps = std::max(t.worst_ulps, worst);
     }
 }
@@ -854,6 +871,7 @@ void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p)
         const W error = ulps_of(dE, f.dE, std::max(std::fabs(f.dE), energy_scale * std::numeric_limits<Real>::epsilon()));
         ++t.measured;
         t.imprecise += error > imprecise_ulps ? 1 : 0;
+        t.imprecise_without_underflow += error > imprecise_ulps && !f.underflows ? 1 : 0;
         t.worst_ulps = std::max(t.worst_ulps, error);
     }
 }
@@ -876,6 +894,8 @@ void sweep_line(std::uint64_t seed)
     BOOST_TEST(line.by_status[static_cast<std::size_t>(status::ok)] > line.pairs / 20);
     BOOST_TEST(loss.by_status[static_cast<std::size_t>(status::ok)] > loss.pairs / 20);
     BOOST_TEST(line.borderline < line.pairs / 20);
+    BOOST_TEST(line.imprecise_without_underflow == 0u);
+    BOOST_TEST(loss.imprecise_without_underflow == 0u);
 }
 
 // scatter_angle: the angle between the outgoing velocities, in [0, pi/2] (Eq. 14: cos theta
