@@ -786,13 +786,15 @@ line_closed_form closed_form(const pair_1d<Real>& p)
     f.v_m_lg = lg(vm) + b;
     f.J_lg = lg(J) + e + b;
     f.dE_lg = lg(dE) + e + 2 * b;
-    const W mass_lg = lg(std::max(Ms, ms)) + e, M_lg = lg(Ms) + e, m_lg = lg(ms) + e, dv_lg = lg(dvs) + b;
+    // Magnitudes from the values as given (scaled, a small mass can vanish in long double).
+    const W M_lg = lg(p.M), m_lg = lg(p.m), mass_lg = std::max(M_lg, m_lg), dv_lg = lg(dv);
     // Eq. 8 written as the paper does: M v_M + m v_m + eps m (v_m - v_M) over M + m, and
     // J = (1 + eps) M m (v_M - v_m) / (M + m).
-    f.line_intermediates = {M_lg + lg(vMs) + b, m_lg + lg(vms) + b, mass_lg + lg(eps * dvs) + b, dv_lg,
+    f.line_intermediates = {M_lg + lg(p.v_M), m_lg + lg(p.v_m), mass_lg + lg(eps) + dv_lg, dv_lg,
                             M_lg + m_lg + lg(1 + eps), M_lg + m_lg + lg(1 + eps) + dv_lg};
-    // Eq. 11: (1 - eps)(1 + eps) M m (v_M - v_m)^2 over 2 (M + m).
-    f.loss_intermediates = {M_lg + m_lg + lg(1 + eps), dv_lg, 2 * dv_lg, M_lg + m_lg + lg((1 - eps) * (1 + eps)) + 2 * dv_lg};
+    // Eq. 11: (1 - eps)(1 + eps) M m, times (v_M - v_m)^2, over 2 (M + m).
+    f.loss_intermediates = {M_lg + m_lg + lg(1 + eps), M_lg + m_lg + lg((1 - eps) * (1 + eps)), dv_lg, 2 * dv_lg,
+                            M_lg + m_lg + lg((1 - eps) * (1 + eps)) + 2 * dv_lg};
     f.underflows = false;
     for (const auto* values : {&f.line_intermediates, &f.loss_intermediates})
         for (W v : *values)
