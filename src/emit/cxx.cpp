@@ -50,10 +50,18 @@ bool is_output(const engine::kernel& k, const std::string& name)
     return false;
 }
 
-// A kernel returning one scalar returns it directly; otherwise a struct.
+// A kernel returning one scalar returns it directly, and a quiet NaN where a guard refuses
+// its inputs (a NaN is what the arithmetic would give for most of them, and a caller tests
+// one value); otherwise a struct, with a status if the kernel has guards.
 bool returns_scalar(const engine::kernel& k)
 {
-    return k.outputs.size() == 1 && !k.outputs.front().is_array && k.guards.empty();
+    return k.outputs.size() == 1 && !k.outputs.front().is_array;
+}
+
+// Whether the kernel's result carries a status: one with guards that returns a struct.
+bool has_status(const engine::kernel& k)
+{
+    return !k.guards.empty() && !returns_scalar(k);
 }
 
 std::size_t dimension(const engine::kernel& k)
@@ -194,11 +202,74 @@ std::string condition_failure(const std::string& value, const engine::kernel_gua
     return fmt::format("!({} {} Real(0))", value, g.op == engine::relation::less ? "<" : ">");
 }
 
-// The scalar kernel's early return: `status` when any of `failures` holds.
-void print_refusal(std::string& out, const std::vector<std::string>& failures, const std::string& status)
+// The scalar kernel's early return when any of `failures` holds: the result as it stands
+// (inputs unchanged) with `status`, or, from a kernel returning one scalar, a quiet NaN
+// (the status then named in a comment).
+void print_refusal(std::string& out, const engine::kernel& k, const std::vector<std::string>& failures,
+                   const std::string& status)
 {
-    out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
-                       fmt::join(failures, " || "), status);
+    if (returns_scalar(k))
+        out += fmt::format("    if ({}) {{\n        return std::numeric_limits<Real>::quiet_NaN();  // {}\n    }}\n",
+                           fmt::join(failures, " || "), status);
+    else
+        out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
+                           fmt::join(failures, " || "), status);
+}
+
+// What a value outside a domain is, in words: "not positive and finite".
+std::string outside(const engine::domain& range)
+{
+    switch (range.what) {
+    case engine::domain::kind::positive: return "not positive and finite";
+    case engine::domain::kind::nonnegative: return "negative or not finite";
+    case engine::domain::kind::interval: return "outside " + range.to_string();
+    case engine::domain::kind::real: break;
+    }
+    return "not finite";
+}
+
+// What a guard refuses, in words, for the kernel's documentation: "M, m not positive and
+// finite", or the condition that must hold.
+std::string guard_meaning(const engine::derivation& d, const engine::kernel& k, const engine::kernel_guard& g)
+{
+    if (g.condition)
+        return fmt::format("unless {} {} 0", d.symbols.text(*g.condition), g.op == engine::relation::less ? "<" : ">");
+    std::vector<std::string> parts;  // "names: words", one per run of parameters alike
+    std::vector<std::string> names;
+    std::string words;
+    for (const std::string& name : g.parameters) {
+        const engine::kernel_parameter* p = k.find_parameter(name);
+        const std::string these = outside(p->components.front().range);
+        if (!names.empty() && these != words) {
+            parts.push_back(fmt::format("{} {}", fmt::join(names, ", "), words));
+            names.clear();
+        }
+        names.push_back(name);
+        words = these;
+    }
+    if (!names.empty())
+        parts.push_back(fmt::format("{} {}", fmt::join(names, ", "), words));
+    return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+// The documentation of a kernel's guards: what each status means, and what is returned.
+// `divides`: whether the kernel divides by a value it computes (then tested for range).
+void print_guards_documentation(std::string& out, const engine::derivation& d, const engine::kernel& k, bool divides)
+{
+    if (k.guards.empty())
+        return;
+    const bool others = std::any_of(k.outputs.begin(), k.outputs.end(),
+                                    [&](const engine::kernel_output& o) { return !k.find_parameter(o.member); });
+    if (returns_scalar(k))
+        out += "/// A quiet NaN when the inputs are refused, for the first of these reasons that applies:\n";
+    else
+        out += fmt::format("/// When the inputs allow no collision, `status` says why, the first of these that\n"
+                           "/// applies, and the velocities are returned unchanged{}:\n",
+                           others ? " (the other outputs 0)" : "");
+    for (const engine::kernel_guard& g : k.guards)
+        out += fmt::format("///   {}: {}\n", g.status, guard_meaning(d, k, g));
+    out += fmt::format("///   {}: the values leave the type's range ({}a result not finite).\n", out_of_range,
+                       divides ? "a divisor below\n///     detail::smallest_divisor or infinite, " : "");
 }
 
 std::string members_initialiser(const engine::kernel& k)
@@ -210,7 +281,7 @@ std::string members_initialiser(const engine::kernel& k)
         const engine::kernel_parameter* same = k.find_parameter(o.member);
         values.push_back(same ? same->name : (o.is_array ? "{}" : "Real(0)"));
     }
-    if (!k.guards.empty())
+    if (has_status(k))
         values.push_back("status::ok");
     return fmt::format("{{{}}}", fmt::join(values, ", "));
 }
@@ -562,10 +633,17 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         out += fmt::format("\n/// What {} returns.\ntemplate <class Real>\nstruct {}_result {{\n", k.name, k.name);
         for (const engine::kernel_output& o : k.outputs)
             out += fmt::format("    Real {};\n", o.member);
-        if (!k.guards.empty())
+        if (has_status(k))
             out += "    impact::status status;\n";
         out += "};\n";
     }
+
+    // The arithmetic, the inputs' components referred to by name.
+    std::vector<std::string> component_names;
+    for (const engine::kernel_parameter& p : k.parameters)
+        for (const engine::quantity& q : p.components)
+            component_names.push_back(q.name);
+    const cxx_code code = program_cxx(plan.code, component_names);
 
     // Documentation: inputs, and how each output is computed and how accurate it is.
     std::vector<std::string> names;
@@ -581,11 +659,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
                            cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
     }
-    if (!k.guards.empty())
-        out += fmt::format("/// When the inputs allow no collision, `status` says why and the velocities are unchanged;\n"
-                           "/// `{}` when the collision's values leave the type's range (a divisor below\n"
-                           "/// detail::smallest_divisor or infinite, a result not finite).\n",
-                           out_of_range);
+    print_guards_documentation(out, d, k, !code.divisors.empty());
 
     std::vector<std::string> parameters;
     for (const engine::kernel_parameter& p : k.parameters)
@@ -594,17 +668,14 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
                        fmt::join(parameters, ", "));
 
     // Components of array parameters by name.
-    std::vector<std::string> component_names;
     for (const engine::kernel_parameter& p : k.parameters) {
         for (std::size_t c = 0; c < p.components.size(); ++c) {
-            component_names.push_back(p.components[c].name);
             if (p.is_array)
                 out += fmt::format("    const Real {} = {}[{}];\n", p.components[c].name, p.name, c);
             else if (p.components[c].name != p.name)
                 out += fmt::format("    const Real {} = {};\n", p.components[c].name, p.name);
         }
     }
-    const cxx_code code = program_cxx(plan.code, component_names);
 
     if (!returns_scalar(k))
         out += fmt::format("    {} out{};\n", result_type(k), members_initialiser(k));
@@ -614,7 +685,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     for (const engine::kernel_guard& g : k.guards) {
         if (g.condition)
             continue;
-        print_refusal(out, scalar_failures(guard_tests(k, g, "")), g.status);
+        print_refusal(out, k, scalar_failures(guard_tests(k, g, "")), g.status);
     }
     const int last_guard_value = plan.guard_values ? plan.code.outputs[plan.guard_values - 1] : -1;
     std::size_t s = 0;
@@ -624,15 +695,15 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     for (const engine::kernel_guard& g : k.guards) {
         if (!g.condition)
             continue;
-        print_refusal(out, {condition_failure(code.outputs[condition++], g)}, g.status);
+        print_refusal(out, k, {condition_failure(code.outputs[condition++], g)}, g.status);
     }
-    const bool with_status = !k.guards.empty();
+    const bool with_status = !k.guards.empty();  // a status, or a NaN for a scalar
     const auto refuse_divisors_out_of_range = [&] {
         std::vector<std::string> failures;
         for (const std::string& test : with_status ? divisors_in_range(code) : std::vector<std::string>{})
             failures.push_back("!" + test);
         if (!failures.empty())
-            print_refusal(out, failures, out_of_range);
+            print_refusal(out, k, failures, out_of_range);
     };
     if (s >= code.divisors_known)
         refuse_divisors_out_of_range();
@@ -649,7 +720,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
             results[r] = fmt::format("result{}", r);
             failures.push_back(fmt::format("!std::isfinite({})", results[r]));
         }
-        print_refusal(out, failures, out_of_range);
+        print_refusal(out, k, failures, out_of_range);
     }
 
     if (returns_scalar(k)) {
@@ -820,9 +891,21 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
                       "#elif defined(_MSC_VER)\n#define IMPACT_ALWAYS_INLINE __forceinline\n"
                       "#else\n#define IMPACT_ALWAYS_INLINE inline\n#endif\n\n"
                       "namespace impact {\n";
-    std::vector<std::string> statuses{"ok"};
+    // The statuses in the order of the kernels with the most guards first (a kernel returning
+    // a scalar returns NaN instead): a kernel whose guards are a subset of another's, such as
+    // collide_line's of collide's, leaves the values as they were. (Values matter beyond
+    // compatibility: with separating and coincident_centres swapped, GCC 12 no longer
+    // vectorised the 2D batch loop for AVX-512.)
+    std::vector<const engine::kernel*> guarded;
     for (const kernel_plan* plan : plans)
-        for (const engine::kernel_guard& g : plan->kernel->guards)
+        if (has_status(*plan->kernel))
+            guarded.push_back(plan->kernel);
+    std::stable_sort(guarded.begin(), guarded.end(), [](const engine::kernel* a, const engine::kernel* b) {
+        return a->guards.size() > b->guards.size();
+    });
+    std::vector<std::string> statuses{"ok"};
+    for (const engine::kernel* k : guarded)
+        for (const engine::kernel_guard& g : k->guards)
             if (std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
                 statuses.push_back(g.status);
     if (statuses.size() > 1)

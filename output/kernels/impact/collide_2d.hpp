@@ -22,9 +22,15 @@ namespace impact {
 /// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 2.63 ulps in double on 4200 samples.
 /// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 3.50 ulps in double on 4200 samples.
 /// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 2.73 ulps in double on 4200 samples.
-/// When the inputs allow no collision, `status` says why and the velocities are unchanged;
-/// `out_of_range` when the collision's values leave the type's range (a divisor below
-/// detail::smallest_divisor or infinite, a result not finite).
+/// When the inputs allow no collision, `status` says why, the first of these that
+/// applies, and the velocities are returned unchanged:
+///   invalid_mass: M, m not positive and finite
+///   invalid_restitution: eps outside [0, 1]
+///   non_finite: C_M, C_m, v_M, v_m not finite
+///   coincident_centres: unless (C_Mx-C_mx)^2+(C_My-C_my)^2 > 0
+///   separating: unless (C_Mx-C_mx)*(v_Mx-v_mx)+(C_My-C_my)*(v_My-v_my) < 0
+///   out_of_range: the values leave the type's range (a divisor below
+///     detail::smallest_divisor or infinite, a result not finite).
 template <class Real>
 inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps) noexcept
 {

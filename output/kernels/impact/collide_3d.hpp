@@ -28,9 +28,15 @@ namespace impact {
 /// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 2.80 ulps in double on 4200 samples.
 /// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 3.56 ulps in double on 4200 samples.
 /// v_m[2] is computed in the form "v_mz + k_impulse*M*(C_Mz - C_mz), compensated let": at most 3.76 ulps in double on 4200 samples.
-/// When the inputs allow no collision, `status` says why and the velocities are unchanged;
-/// `out_of_range` when the collision's values leave the type's range (a divisor below
-/// detail::smallest_divisor or infinite, a result not finite).
+/// When the inputs allow no collision, `status` says why, the first of these that
+/// applies, and the velocities are returned unchanged:
+///   invalid_mass: M, m not positive and finite
+///   invalid_restitution: eps outside [0, 1]
+///   non_finite: C_M, C_m, v_M, v_m not finite
+///   coincident_centres: unless (C_Mx-C_mx)^2+(C_My-C_my)^2+(C_Mz-C_mz)^2 > 0
+///   separating: unless (C_Mx-C_mx)*(v_Mx-v_mx)+(C_My-C_my)*(v_My-v_my)+(C_Mz-C_mz)*(v_Mz-v_mz) < 0
+///   out_of_range: the values leave the type's range (a divisor below
+///     detail::smallest_divisor or infinite, a result not finite).
 template <class Real>
 inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
 {

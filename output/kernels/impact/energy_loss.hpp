@@ -13,9 +13,24 @@ namespace impact {
 ///   v_m: velocity of m along the line of action before the collision (real)
 ///   eps: Newton's coefficient of restitution ([0, 1])
 /// dE is computed in the form "-(1 - eps)*(1 + eps)*M*m*(v_M - v_m)^2/(2*(M + m)), compensated": at most 0.50 ulps in double on 4200 samples.
+/// A quiet NaN when the inputs are refused, for the first of these reasons that applies:
+///   invalid_mass: M, m not positive and finite
+///   invalid_restitution: eps outside [0, 1]
+///   non_finite: v_M, v_m not finite
+///   out_of_range: the values leave the type's range (a divisor below
+///     detail::smallest_divisor or infinite, a result not finite).
 template <class Real>
 inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
+    if (!(M > Real(0)) || !std::isfinite(M) || !(m > Real(0)) || !std::isfinite(m)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // invalid_mass
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        return std::numeric_limits<Real>::quiet_NaN();  // invalid_restitution
+    }
+    if (!std::isfinite(v_M) || !std::isfinite(v_m)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // non_finite
+    }
     const Real t0 = M * m;
     const Real t1 = Real(1) + eps;
     const Real t2 = t1 - Real(1);
@@ -31,8 +46,15 @@ inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
     const Real t12 = M + m;
     const Real t13 = t12 - M;
     const Real t14 = Real(2) * t12;
+    if (!(std::fabs(t14) >= detail::smallest_divisor<Real>) || !(std::fabs(t14) <= std::numeric_limits<Real>::max())) {
+        return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
+    }
     const Real t15 = -(t11 / t14);
-    return t15 + -(std::fma(t15, std::fma(Real(2), M - (t12 - t13) + (m - t13), std::fma(Real(2), t12, -t14)), std::fma(t15, t14, t11) + std::fma(std::fma(std::fma(std::fma(M, m, -t0), t1, std::fma(t0, Real(1) - (t1 - t2) + (eps - t2), std::fma(t0, t1, -t3))), t4, std::fma(t3, Real(1) - (t4 - t5) - (eps + t5), std::fma(t3, t4, -t6))), t10, std::fma(t6, std::fma(t9, t7, std::fma(t7, t9, std::fma(t7, t7, -t10))), std::fma(t6, t10, -t11)))) / t14);
+    const Real result0 = t15 + -(std::fma(t15, std::fma(Real(2), M - (t12 - t13) + (m - t13), std::fma(Real(2), t12, -t14)), std::fma(t15, t14, t11) + std::fma(std::fma(std::fma(std::fma(M, m, -t0), t1, std::fma(t0, Real(1) - (t1 - t2) + (eps - t2), std::fma(t0, t1, -t3))), t4, std::fma(t3, Real(1) - (t4 - t5) - (eps + t5), std::fma(t3, t4, -t6))), t10, std::fma(t6, std::fma(t9, t7, std::fma(t7, t9, std::fma(t7, t7, -t10))), std::fma(t6, t10, -t11)))) / t14);
+    if (!std::isfinite(result0)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
+    }
+    return result0;
 }
 
 } // namespace impact

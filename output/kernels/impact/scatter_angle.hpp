@@ -11,12 +11,26 @@ namespace impact {
 ///   v_1perp: speed of the cue ball across the line of action (an off-centre hit) (positive)
 ///   eps: Newton's coefficient of restitution ([0, 1])
 /// theta is computed in the form "atan2(2*v_1perp, (1 - eps)*v_1par)": at most 1.31 ulps in double on 4200 samples.
+/// A quiet NaN when the inputs are refused, for the first of these reasons that applies:
+///   invalid_restitution: eps outside [0, 1]
+///   invalid_speed: v_par, v_perp not positive and finite
+///   out_of_range: the values leave the type's range (a result not finite).
 template <class Real>
 inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
 {
     const Real v_1par = v_par;
     const Real v_1perp = v_perp;
-    return std::atan2(Real(2) * v_1perp, v_1par * (Real(1) - eps));
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        return std::numeric_limits<Real>::quiet_NaN();  // invalid_restitution
+    }
+    if (!(v_1par > Real(0)) || !std::isfinite(v_1par) || !(v_1perp > Real(0)) || !std::isfinite(v_1perp)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // invalid_speed
+    }
+    const Real result0 = std::atan2(Real(2) * v_1perp, v_1par * (Real(1) - eps));
+    if (!std::isfinite(result0)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
+    }
+    return result0;
 }
 
 } // namespace impact
