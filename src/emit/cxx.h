@@ -22,21 +22,8 @@
 
 namespace impact::emit {
 
-using engine::print_infix;
 using engine::term_order;
 using verify::kernel_plan;
-
-/// The C++ print context, for a single expression: `std::` functions, `Real(2)`
-/// literals, x * x for x^2. Kernel bodies are printed from programs instead (program.h).
-/// (GiNaC finds a context's parent by the name given here: it must be unqualified.)
-class print_cxx : public print_infix {
-    GINAC_DECLARE_PRINT_CONTEXT(print_cxx, print_infix)
-public:
-    print_cxx(std::ostream& os, const term_order& order);
-};
-
-/// An expression as C++ source, its numbers of type `Real`.
-std::string cxx(const GiNaC::ex& e, const term_order& order);
 
 /// The header of one derivation's kernels; `plans` are those kernels' plans, in order.
 std::string kernel_header(const engine::derivation& d, const std::vector<const kernel_plan*>& plans);

@@ -3,9 +3,8 @@
 // `print_infix` is a GiNaC print context of Impact's own: print functions registered
 // for numbers, symbols, sums, products and powers write operands in `term_order`
 // (never GiNaC's run-dependent order) with the fewest parentheses the precedences
-// need. Its `infix_style` decides the spelling; two contexts derive from it:
-// `print_ginac_syntax` (text GiNaC's parser reads back, used in derivations.json) and
-// `print_cxx` (C++ source for kernels, in emit/cxx.h).
+// need. Its `infix_style` decides the spelling; `print_ginac_syntax` (text GiNaC's parser
+// reads back, used in derivations.json and messages) derives from it.
 #pragma once
 
 #include "engine/order.h"

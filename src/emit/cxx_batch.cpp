@@ -1,0 +1,505 @@
+// The batch kernel over structure-of-arrays data: a loop without branches that compilers
+// vectorise, run over blocks that ask for their data ahead, or skewed for arrays that
+// crowd one page offset; and the arrays of a batch in one allocation.
+#include "emit/cxx_parts.h"
+#include "emit/program_cxx.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+#include <iterator>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+namespace impact::emit::cxx_detail {
+namespace {
+
+// The batch loop's form: the comparisons, then one test for every value that must be
+// finite. x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so a sum of such
+// products is 0 exactly when every x is finite. Fused, a value costs one operation, where
+// std::isfinite costs two and a merge of the results (the guards were a third of the
+// loop's instructions). The sum is a balanced tree, not a chain: the test gates the loop's
+// division and its stores, and a chain of 12 dependent operations delayed both (README,
+// "How the batch loops were shaped", has the measurements).
+// Each term of the sum is written as `term` gives it (in place by default).
+using term_writer = std::function<std::string(const std::string& term, bool is_sum)>;
+
+std::string in_place(const std::string& term, bool is_sum)
+{
+    return is_sum ? "(" + term + ")" : term;
+}
+
+std::string all_finite(const std::vector<std::string>& values, const term_writer& term = in_place)
+{
+    if (values.size() == 1)
+        return fmt::format("std::isfinite({})", values.front());
+    std::vector<std::string> terms;  // x * 0 + y * 0 for the values two by two
+    for (std::size_t v = 0; v < values.size(); v += 2)
+        terms.push_back(term(v + 1 < values.size()
+                                 ? fmt::format("std::fma({}, Real(0), {} * Real(0))", values[v], values[v + 1])
+                                 : values[v] + " * Real(0)",
+                             false));
+    while (terms.size() > 1) {
+        std::vector<std::string> sums;
+        for (std::size_t t = 0; t < terms.size(); t += 2)
+            sums.push_back(t + 1 < terms.size() ? term(terms[t] + " + " + terms[t + 1], true) : terms[t]);
+        terms = std::move(sums);
+    }
+    return fmt::format("({} == Real(0))", terms.front());
+}
+
+std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)
+{
+    std::vector<std::string> failures, finite;
+    for (const domain_test& t : tests)
+        if (t.finite.empty())
+            failures.push_back(t.failure);
+        else
+            finite.push_back(t.finite);
+    if (!finite.empty())
+        failures.push_back("!" + all_finite(finite));
+    return failures;
+}
+
+// One scalar input of a batch kernel: a component, its array in the batch data, and
+// whether the batch writes it.
+struct lane_input {
+    std::string name;
+    std::string field;
+    bool written = false;
+};
+
+std::vector<lane_input> lane_inputs(const engine::kernel& k)
+{
+    std::vector<lane_input> inputs;
+    for (const engine::kernel_parameter& p : k.parameters)
+        for (std::size_t c = 0; c < p.components.size(); ++c)
+            inputs.push_back({p.components[c].name,
+                              p.is_array ? fmt::format("data.{}[{}]", p.name, c) : "data." + p.name,
+                              is_output(k, p.name)});
+    return inputs;
+}
+
+// The parameters of a batch loop: a pointer per scalar input (`restrict`), and the
+// status array.
+std::string loop_parameters(const std::vector<lane_input>& inputs, bool with_status)
+{
+    std::vector<std::string> pointers;
+    for (const lane_input& in : inputs)
+        pointers.push_back(fmt::format("{}Real* IMPACT_RESTRICT {}_", in.written ? "" : "const ", in.name));
+    if (with_status)
+        pointers.push_back("impact::status* IMPACT_RESTRICT status_");
+    return fmt::format("{}", fmt::join(pointers, ", "));
+}
+
+// A line of a block loop asking for an array's data 64 pairs past block b.
+std::string prefetch_ahead(const lane_input& in)
+{
+    return fmt::format("            IMPACT_PREFETCH({}_ + b + ahead, {});\n", in.name, in.written ? 1 : 0);
+}
+
+// The arguments a block loop passes to the loop for the block at b: each array from b.
+std::vector<std::string> block_arguments(const std::vector<lane_input>& inputs, bool with_status)
+{
+    std::vector<std::string> from_block;
+    for (const lane_input& in : inputs)
+        from_block.push_back(fmt::format("{}_ + b", in.name));
+    if (with_status)
+        from_block.push_back("with_status ? status_ + b : status_");
+    return from_block;
+}
+
+constexpr const char* status_ahead = "            if constexpr (with_status)\n"
+                                     "                IMPACT_PREFETCH(status_ + b + ahead, 1);\n";
+
+// The batch loop run over blocks of 8 pairs (a cache line of doubles), each array's
+// data asked for 64 pairs ahead: out of cache, the hardware's prefetching alone leaves
+// the loop waiting for memory (in 3D, 16 arrays streamed at once, a quarter slower).
+void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status)
+{
+    std::vector<std::string> ahead;
+    for (const lane_input& in : inputs)
+        ahead.push_back(prefetch_ahead(in));
+    if (with_status)
+        ahead.push_back(status_ahead);
+    const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+    out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
+                       "// processor's own prefetching, following so many arrays, falls behind.\n"
+                       "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
+                       "    constexpr std::size_t block = 8, ahead = 64;\n    std::size_t b = 0;\n"
+                       "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
+                       "        {4}(block, {5});\n    }}\n    {4}(count - b, {5});\n}}\n",
+                       loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
+                       fmt::join(ahead, ""), call, fmt::join(block_arguments(inputs, with_status), ", "));
+}
+
+
+} // namespace
+
+// Whether a batch kernel gets a skewed block loop too, for arrays that crowd one page
+// offset: one that streams 16 arrays or more (the 3D collide gains by it, the 2D collide,
+// with 12 arrays, loses: README, "How the batch loops were shaped").
+bool skews(const engine::kernel& k)
+{
+    constexpr std::size_t skewed_from = 16;
+    return k.batch && lane_inputs(k).size() + (k.guards.empty() ? 0 : 1) >= skewed_from;
+}
+
+namespace {
+
+// The read-only arrays of a batch: the ones a skewed loop reads ahead.
+std::vector<lane_input> read_only(const std::vector<lane_input>& inputs)
+{
+    std::vector<lane_input> read;
+    std::copy_if(inputs.begin(), inputs.end(), std::back_inserter(read), [](const lane_input& in) { return !in.written; });
+    return read;
+}
+
+// The batch loop over blocks of 8 pairs for arrays that start at one offset within their
+// pages. Pair i of every array then falls on the same cache sets; the read-only array k
+// is read 2 (k + 1) blocks ahead of its turn instead, into a ring of blocks on the stack,
+// so that at any time the arrays are read at offsets 128 bytes apart, as if staggered
+// (see `skews`; staggered arrays lose a tenth by it, and keep the plain block loop).
+void print_skewed_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs,
+                         bool with_status)
+{
+    std::vector<std::string> ahead, starts, from_block = block_arguments(inputs, with_status);
+    const std::vector<std::string> at_end = from_block;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        if (inputs[i].written) {
+            ahead.push_back(prefetch_ahead(inputs[i]));
+            continue;
+        }
+        // Asked for as many blocks further ahead as it is read ahead: one line an array, as
+        // the plain loop asks (a loop over `from` here ran slower and less steadily).
+        ahead.push_back(fmt::format("            if (b + ahead + block * lead({0}) < count)\n"
+                                    "                IMPACT_PREFETCH({1}_ + b + ahead + block * lead({0}), 0);\n",
+                                    starts.size(), inputs[i].name));
+        from_block[i] = fmt::format("stage[{}][r]", starts.size());
+        starts.push_back(inputs[i].name + "_");
+    }
+    if (with_status)
+        ahead.push_back(status_ahead);
+    std::size_t ring = 1;
+    while (ring <= 2 * starts.size())  // more blocks than the farthest lead
+        ring *= 2;
+    const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+    out += fmt::format(
+        "\n// {0} over blocks of 8 pairs for arrays that start at one offset within their pages:\n"
+        "// pair i of every array then falls on the same cache sets. The read-only array k is read\n"
+        "// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read\n"
+        "// at offsets 128 bytes apart, as if staggered.\n"
+        "template <class Real{1}>\ninline void {0}_skewed(std::size_t count, {2}) noexcept\n{{\n"
+        "    constexpr std::size_t block = 8, ahead = 64, ring = {3}, read_only = {4};\n"
+        "    const Real* const from[read_only] = {{{5}}};\n"
+        "    alignas(64) Real stage[read_only][ring][block];\n"
+        "    auto lead = [](std::size_t k) {{ return 2 * (k + 1); }};\n"
+        "    auto read = [&](std::size_t k, std::size_t j) {{\n"
+        "        for (std::size_t i = 0; i < block; ++i)\n"
+        "            stage[k][j % ring][i] = from[k][j * block + i];\n"
+        "    }};\n"
+        "    const std::size_t blocks = count / block;\n"
+        "    for (std::size_t k = 0; k < read_only; ++k)\n"
+        "        for (std::size_t j = 0; j < lead(k) && j < blocks; ++j)\n"
+        "            read(k, j);\n"
+        "    std::size_t b = 0;\n"
+        "    for (std::size_t j = 0; j < blocks; ++j, b += block) {{\n"
+        "        if (b + ahead < count) {{\n{6}        }}\n"
+        "        for (std::size_t k = 0; k < read_only; ++k)\n"
+        "            if (j + lead(k) < blocks)\n"
+        "                read(k, j + lead(k));\n"
+        "        const std::size_t r = j % ring;\n"
+        "        {7}(block, {8});\n"
+        "    }}\n"
+        "    {7}(count - b, {9});\n}}\n",
+        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, starts.size(),
+        fmt::join(starts, ", "), fmt::join(ahead, ""), call, fmt::join(from_block, ", "), fmt::join(at_end, ", "));
+}
+
+// The values a batch loop's arithmetic can hold at once: AVX-512 has 32 vector registers,
+// and the loop also holds constants (0, 1, a divisor's bounds) and statuses. A program
+// that holds more in the order it was compiled in is printed in an order for registers
+// (ordered_for_registers): the compiler loads a value it cannot keep in a register again
+// from its array, and spills others. The 3D collide holds 29 values at once as compiled,
+// 21 ordered, and gains by the order; the 2D collide (21) keeps its own, one operation
+// across every coordinate, then the next, which gives the processor more independent work
+// side by side (README, "How the batch loops were shaped").
+constexpr std::size_t batch_registers = 24;
+
+} // namespace
+
+// The batch kernel: a loop without branches, so that compilers vectorise it. Each pair's
+// status is decided as the scalar kernel decides it (the guards in reverse order, so that
+// the first failing one wins); every pair is computed, one not resolved dividing by 1 (no
+// division by zero) and its results discarded. A resolved pair runs the scalar kernel's
+// operations on the same values: the same results, bit for bit, under the same
+// floating-point contraction.
+void print_batch(std::string& out, const kernel_plan& plan)
+{
+    const engine::kernel& k = *plan.kernel;
+    const std::size_t n = dimension(k);
+    const std::vector<lane_input> inputs = lane_inputs(k);
+    const std::string loop = fmt::format("{}_batch_{}d", k.name, n);
+
+    std::vector<std::string> element_names, plain_names, arguments;
+    for (const lane_input& in : inputs) {
+        element_names.push_back(in.name + "_[i]");
+        plain_names.push_back(in.name);
+        arguments.push_back(in.field);
+    }
+    const bool with_status = !k.guards.empty();
+
+    out += fmt::format("\nnamespace detail {{\n\n// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
+                       "// block's call runs one pass of 8 pairs.\n", k.name, n);
+    out += fmt::format("template <class Real{}>\nIMPACT_ALWAYS_INLINE void {}(std::size_t count, {}) noexcept\n{{\n"
+                       "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
+                       with_status ? ", bool with_status" : "", loop, loop_parameters(inputs, with_status));
+
+    // The status, from the guards on the values as given.
+    const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
+    if (with_status) {
+        // The scalar kernel tests the inputs' domains first, then the conditions computed
+        // from them; a lane whose inputs are refused divides by 1 in those computations.
+        std::vector<const engine::kernel_guard*> domains, conditions;
+        for (const engine::kernel_guard& g : k.guards)
+            (g.condition ? conditions : domains).push_back(&g);
+        out += "        // The status, as the scalar kernel decides it: the first guard that fails.\n"
+               "        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)\n"
+               "        impact::status outcome = status::ok;\n        {\n";
+        // `fails |= test`, not `||`: no branch, so that the loop vectorises.
+        bool declared = false;
+        auto fail_with = [&](const std::vector<std::string>& failures, const std::string& status, const char* into) {
+            for (std::size_t f = 0; f < failures.size(); ++f)
+                out += fmt::format("            {} {};\n", f == 0 ? (declared ? "fails =" : "bool fails =") : "fails |=",
+                                   failures[f]);
+            out += fmt::format("            {0} = fails ? status::{1} : {0};\n", into, status);
+            declared = true;
+        };
+        for (auto g = domains.rbegin(); g != domains.rend(); ++g)
+            fail_with(batch_failures(guard_tests(k, **g, "_[i]")), (*g)->status, "outcome");
+        if (!conditions.empty()) {
+            // A separate status for the conditions, taken where the domains admit the
+            // inputs (GCC vectorises this, not `fails &= admitted`).
+            out += "            const bool admitted = outcome == status::ok;\n"
+                   "            impact::status condition = status::ok;\n";
+            const cxx_code given = program_cxx(plan.code, element_names, "admitted");
+            for (std::size_t s = 0; s < given.statements.size(); ++s)
+                if (for_guards[given.statement_values[s]])
+                    out += "            " + given.statements[s] + "\n";
+            for (std::size_t c = conditions.size(); c-- > 0;)
+                fail_with({condition_failure(given.outputs[c], *conditions[c])}, conditions[c]->status, "condition");
+            out += "            outcome = admitted ? condition : outcome;\n";
+        }
+        out += "        }\n        const bool resolved = outcome == status::ok;\n";
+    }
+
+    // The arithmetic, every lane computed; a lane not resolved divides by 1.
+    if (with_status)
+        out += "        // Every pair is computed; one not resolved divides by 1, and its results are discarded.\n";
+    for (const lane_input& in : inputs)
+        out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
+    compile::program outputs_only = plan.code;  // the guards' values are computed above
+    outputs_only.outputs.erase(outputs_only.outputs.begin(),
+                               outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
+    const bool for_registers = compile::most_live(outputs_only) > batch_registers;
+    const compile::program arithmetic = for_registers ? compile::ordered_for_registers(outputs_only) : outputs_only;
+    const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
+    const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "");
+    // A resolved pair is divided only by divisors in range (`usable`), and its results are
+    // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
+    // GCC if-converts; with `&`, it leaves the loop's conditional stores unvectorised.)
+    const auto declare_usable = [&] {
+        std::vector<std::string> in_range{"resolved"};
+        for (const std::string& test : divisors_in_range(code))
+            in_range.push_back(test);
+        out += fmt::format("        const bool usable = {};\n", fmt::join(in_range, " && "));
+    };
+    if (with_status && code.divisors_known == 0)
+        declare_usable();
+    for (std::size_t s = 0; s < code.statements.size(); ++s) {
+        if (for_outputs[code.statement_values[s]])
+            out += "        " + code.statements[s] + "\n";
+        if (with_status && s + 1 == code.divisors_known)
+            declare_usable();
+    }
+    std::vector<std::pair<std::string, std::string>> writes;  // target, value
+    std::size_t value = 0;
+    for (const engine::kernel_output& o : k.outputs) {
+        for (std::size_t c = 0; c < o.values.size(); ++c, ++value) {
+            const engine::kernel_parameter* same = k.find_parameter(o.member);
+            if (!same)
+                throw std::logic_error("a batch kernel writes only outputs named after inputs");
+            writes.emplace_back(same->components.at(c).name, code.outputs[value]);
+        }
+    }
+    if (with_status) {
+        std::vector<std::string> results;
+        for (const auto& [target, result] : writes) {
+            out += fmt::format("        const Real {}_out = {};\n", target, result);
+            results.push_back(target + "_out");
+        }
+        // In a loop ordered for registers, the results' test is computed for every pair, in
+        // statements of its own. As a condition after `usable &&`, GCC computed it only
+        // where `usable` held, and the ordered 3D loop loaded more vectors of the arrays
+        // than it needs, each a miss out of cache. The 2D loop, in its own order, runs better
+        // with the test in place.
+        int names = 0;
+        const std::string finite = all_finite(results, [&](const std::string& term, bool is_sum) {
+            if (!for_registers)
+                return in_place(term, is_sum);
+            const std::string name = fmt::format("finite{}", names++);
+            out += fmt::format("        const Real {} = {};\n", name, term);
+            return name;
+        });
+        out += fmt::format("        const bool written = usable && {};\n", finite);
+        for (const auto& [target, result] : writes)
+            out += fmt::format("        {0}_[i] = written ? {0}_out : {0}_[i];\n", target);
+        out += fmt::format("        if constexpr (with_status)\n"
+                           "            status_[i] = resolved && !written ? status::{} : outcome;\n",
+                           out_of_range);
+    } else {
+        for (const auto& [target, result] : writes)
+            out += fmt::format("        {}_[i] = {};\n", target, result);
+    }
+    out += "    }\n}\n";
+    print_blocks(out, loop, inputs, with_status);
+    if (skews(k))
+        print_skewed_blocks(out, loop, inputs, with_status);
+    out += "\n} // namespace detail\n";
+
+    // The public entry point.
+    out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays: outputs named after\n"
+                       "/// inputs are updated in place.{1}\n"
+                       "/// The loop has no branches, so that compilers vectorise it; each result is bit for\n"
+                       "/// bit the scalar {0}'s (compiled alike, e.g. -ffp-contract=off). The arrays written\n"
+                       "/// must not overlap any other array.\n",
+                       k.name, with_status ? " `status` (if not null) receives each status." : "");
+    out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n",
+                       k.name, n);
+    if (skews(k)) {
+        std::vector<std::string> read_starts;
+        for (const lane_input& in : read_only(inputs))
+            read_starts.push_back(in.field);
+        const std::string skewed =
+            with_status ? fmt::format("            if (data.status)\n                detail::{0}_skewed<Real, true>(data.count, {1}, data.status);\n"
+                                      "            else\n                detail::{0}_skewed<Real, false>(data.count, {1}, nullptr);\n",
+                                      loop, fmt::join(arguments, ", "))
+                        : fmt::format("            detail::{}_skewed<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
+        out += fmt::format("    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the\n"
+                           "    // distances are a double's; other types keep the plain loop).\n"
+                           "    if constexpr (sizeof(Real) == sizeof(double))\n"
+                           "        if (detail::crowded(std::array<const void*, {0}>{{{1}}})) {{\n{2}            return;\n        }}\n",
+                           read_starts.size(), fmt::join(read_starts, ", "), skewed);
+    }
+    if (with_status)
+        out += fmt::format("    if (data.status)\n        detail::{0}_ahead<Real, true>(data.count, {1}, data.status);\n"
+                           "    else\n        detail::{0}_ahead<Real, false>(data.count, {1}, nullptr);\n",
+                           loop, fmt::join(arguments, ", "));
+    else
+        out += fmt::format("    detail::{}_ahead<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
+    out += "}\n";
+}
+
+// The arrays of `<name>_batch_data`, owned, in a layout that keeps a large batch fast: one
+// allocation, array k starting 64 + 256 k bytes (modulo 4 KiB) past a page boundary.
+void print_batch_arrays(std::string& out, const engine::kernel& k)
+{
+    // Each parameter's first array among all, as C++ in N: the scalars before it, and N
+    // arrays for each array parameter before it.
+    std::vector<std::string> first;
+    std::size_t scalars = 0, arrays = 0;
+    auto index = [&] {
+        if (arrays == 0)
+            return std::to_string(scalars);
+        return fmt::format("{}{}N", scalars == 0 ? "" : std::to_string(scalars) + " + ",
+                           arrays == 1 ? "" : std::to_string(arrays) + " * ");
+    };
+    for (const engine::kernel_parameter& p : k.parameters) {
+        first.push_back(index());
+        ++(p.is_array ? arrays : scalars);
+    }
+    const std::string reals = index();
+    const bool with_status = !k.guards.empty();
+
+    out += fmt::format(
+        "\n/// The arrays of {0}_batch_data, owned: one allocation holds them all, array k starting\n"
+        "/// 64 + 256 k bytes (modulo 4 KiB) past a page boundary. Arrays allocated one by one all\n"
+        "/// start at one offset within their pages: pair i of every array then falls on the same\n"
+        "/// cache sets, and a large batch runs about a fifth slower. Each array holds `count`\n"
+        "/// values, not initialised, and starts on a 64-byte boundary. The constructor throws\n"
+        "/// std::bad_alloc, or std::bad_array_new_length for a count no allocation can hold.\n"
+        "/// Move-only; an object moved from holds no arrays.\n"
+        "template <class Real, std::size_t N>\nclass {0}_batch_arrays {{\npublic:\n"
+        "    static_assert(std::is_floating_point_v<Real>, \"{0}_batch_arrays holds floating-point values\");\n\n"
+        "    explicit {0}_batch_arrays(std::size_t count) : count_(count)\n    {{\n"
+        "        // Each array padded to whole pages plus `apart`; the bytes in all must not wrap around.\n"
+        "        constexpr std::size_t most = (std::numeric_limits<std::size_t>::max() - first - reals * (page + apart)) / per_pair;\n"
+        "        if (count > most)\n"
+        "            throw std::bad_array_new_length();\n"
+        "        stride_ = (count * sizeof(Real) + page - 1) / page * page + apart;\n"
+        "        block_ = static_cast<unsigned char*>(::operator new(first + reals * stride_{1}, std::align_val_t{{page}}));\n"
+        "        for (std::size_t a = 0; a < reals; ++a)\n"
+        "            std::uninitialized_default_construct_n(at<Real>(a), count);\n",
+        k.name, with_status ? " + count * sizeof(impact::status)" : "");
+    if (with_status)
+        out += "        std::uninitialized_default_construct_n(at<impact::status>(reals), count);\n";
+    out += fmt::format(
+        "    }}\n"
+        "    {0}_batch_arrays({0}_batch_arrays&& other) noexcept {{ swap(other); }}\n"
+        "    {0}_batch_arrays& operator=({0}_batch_arrays&& other) noexcept\n    {{\n"
+        "        {0}_batch_arrays(std::move(other)).swap(*this);\n        return *this;\n    }}\n"
+        "    {0}_batch_arrays(const {0}_batch_arrays&) = delete;\n"
+        "    {0}_batch_arrays& operator=(const {0}_batch_arrays&) = delete;\n"
+        "    ~{0}_batch_arrays()\n    {{\n"
+        "        if (block_)\n            ::operator delete(block_, std::align_val_t{{page}});\n    }}\n\n"
+        "    std::size_t count() const noexcept {{ return count_; }}\n",
+        k.name);
+    for (std::size_t i = 0; i < k.parameters.size(); ++i) {
+        const engine::kernel_parameter& p = k.parameters[i];
+        const std::string axis = p.is_array ? "std::size_t axis" : "";
+        const std::string where = first[i] + (p.is_array ? " + axis" : "");
+        out += fmt::format("    Real* {0}({1}) noexcept {{ return at<Real>({2}); }}\n"
+                           "    const Real* {0}({1}) const noexcept {{ return at<Real>({2}); }}\n",
+                           p.name, axis, where);
+    }
+    if (with_status)
+        out += "    impact::status* status() noexcept { return at<impact::status>(reals); }\n"
+               "    const impact::status* status() const noexcept { return at<impact::status>(reals); }\n";
+    out += fmt::format("\n    /// The arrays as {0}_batch takes them.\n"
+                       "    {0}_batch_data<Real, N> data() noexcept\n    {{\n"
+                       "        {0}_batch_data<Real, N> d{{}};\n        d.count = count_;\n",
+                       k.name);
+    for (const engine::kernel_parameter& p : k.parameters) {
+        if (p.is_array)
+            out += fmt::format("        for (std::size_t axis = 0; axis < N; ++axis)\n"
+                               "            d.{0}[axis] = {0}(axis);\n",
+                               p.name);
+        else
+            out += fmt::format("        d.{0} = {0}();\n", p.name);
+    }
+    if (with_status)
+        out += "        d.status = status();\n";
+    out += fmt::format(
+        "        return d;\n    }}\n\n"
+        "private:\n"
+        "    static constexpr std::size_t reals = {0};  // the arrays of Real{1}\n"
+        "    static constexpr std::size_t page = 4096, apart = 256, first = 64;\n"
+        "    static constexpr std::size_t per_pair = reals * sizeof(Real){2};  // bytes\n"
+        "    template <class T>\n"
+        "    T* at(std::size_t a) const noexcept\n    {{\n"
+        "        return block_ ? reinterpret_cast<T*>(block_ + first + a * stride_) : nullptr;\n    }}\n"
+        "    void swap({3}_batch_arrays& other) noexcept\n    {{\n"
+        "        std::swap(count_, other.count_);\n        std::swap(stride_, other.stride_);\n"
+        "        std::swap(block_, other.block_);\n    }}\n\n"
+        "    std::size_t count_ = 0;\n"
+        "    std::size_t stride_ = 0;  // bytes from one array's start to the next\n"
+        "    unsigned char* block_ = nullptr;\n"
+        "}};\n",
+        reals, with_status ? ", then the statuses" : "", with_status ? " + sizeof(impact::status)" : "", k.name);
+}
+
+} // namespace impact::emit::cxx_detail

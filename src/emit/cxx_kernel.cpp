@@ -1,0 +1,236 @@
+// The scalar kernel: its result structure, its documentation (what each status means),
+// its guards as early returns, and its arithmetic, the plan's program statement by
+// statement.
+#include "emit/cxx_parts.h"
+#include "emit/program_cxx.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+#include <iterator>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+namespace impact::emit::cxx_detail {
+namespace {
+
+// The scalar kernel's form of the tests: a finite value tested with std::isfinite.
+std::vector<std::string> scalar_failures(const std::vector<domain_test>& tests)
+{
+    std::vector<std::string> failures;
+    for (const domain_test& t : tests)
+        failures.push_back(t.finite.empty() ? t.failure : fmt::format("!std::isfinite({})", t.finite));
+    return failures;
+}
+
+// The scalar kernel's early return when any of `failures` holds: the result as it stands
+// (inputs unchanged) with `status`, or, from a kernel returning one scalar, a quiet NaN
+// (the status then named in a comment).
+void print_refusal(std::string& out, const engine::kernel& k, const std::vector<std::string>& failures,
+                   const std::string& status)
+{
+    if (returns_scalar(k))
+        out += fmt::format("    if ({}) {{\n        return std::numeric_limits<Real>::quiet_NaN();  // {}\n    }}\n",
+                           fmt::join(failures, " || "), status);
+    else
+        out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
+                           fmt::join(failures, " || "), status);
+}
+
+// What a value outside a domain is, in words: "not positive and finite".
+std::string outside(const engine::domain& range)
+{
+    switch (range.what) {
+    case engine::domain::kind::positive: return "not positive and finite";
+    case engine::domain::kind::nonnegative: return "negative or not finite";
+    case engine::domain::kind::interval: return "outside " + range.to_string();
+    case engine::domain::kind::real: break;
+    }
+    return "not finite";
+}
+
+// What a guard refuses, in words, for the kernel's documentation: "M, m not positive and
+// finite", or the condition that must hold.
+std::string guard_meaning(const engine::derivation& d, const engine::kernel& k, const engine::kernel_guard& g)
+{
+    if (g.condition)
+        return fmt::format("unless {} {} 0", d.symbols.text(*g.condition), g.op == engine::relation::less ? "<" : ">");
+    std::vector<std::string> parts;  // "names: words", one per run of parameters alike
+    std::vector<std::string> names;
+    std::string words;
+    for (const std::string& name : g.parameters) {
+        const engine::kernel_parameter* p = k.find_parameter(name);
+        const std::string these = outside(p->components.front().range);
+        if (!names.empty() && these != words) {
+            parts.push_back(fmt::format("{} {}", fmt::join(names, ", "), words));
+            names.clear();
+        }
+        names.push_back(name);
+        words = these;
+    }
+    if (!names.empty())
+        parts.push_back(fmt::format("{} {}", fmt::join(names, ", "), words));
+    return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+// The documentation of a kernel's guards: what each status means, and what is returned.
+// `divides`: whether the kernel divides by a value it computes (then tested for range).
+void print_guards_documentation(std::string& out, const engine::derivation& d, const engine::kernel& k, bool divides)
+{
+    if (k.guards.empty())
+        return;
+    const bool others = std::any_of(k.outputs.begin(), k.outputs.end(),
+                                    [&](const engine::kernel_output& o) { return !k.find_parameter(o.member); });
+    if (returns_scalar(k))
+        out += "/// A quiet NaN when the inputs are refused, for the first of these reasons that applies:\n";
+    else
+        out += fmt::format("/// When the inputs allow no collision, `status` says why, the first of these that\n"
+                           "/// applies, and the velocities are returned unchanged{}:\n",
+                           others ? " (the other outputs 0)" : "");
+    for (const engine::kernel_guard& g : k.guards)
+        out += fmt::format("///   {}: {}\n", g.status, guard_meaning(d, k, g));
+    out += fmt::format("///   {}: the values leave the type's range ({}a result not finite).\n", out_of_range,
+                       divides ? "a divisor below\n///     detail::smallest_divisor or infinite, " : "");
+}
+
+std::string members_initialiser(const engine::kernel& k)
+{
+    // Outputs named after an input start as that input: a collision not resolved leaves
+    // the velocities unchanged.
+    std::vector<std::string> values;
+    for (const engine::kernel_output& o : k.outputs) {
+        const engine::kernel_parameter* same = k.find_parameter(o.member);
+        values.push_back(same ? same->name : (o.is_array ? "{}" : "Real(0)"));
+    }
+    if (has_status(k))
+        values.push_back("status::ok");
+    return fmt::format("{{{}}}", fmt::join(values, ", "));
+}
+
+} // namespace
+
+void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan)
+{
+    const engine::kernel& k = *plan.kernel;
+    const std::size_t n = dimension(k);
+
+    if (!returns_scalar(k) && n == 0) {
+        out += fmt::format("\n/// What {} returns.\ntemplate <class Real>\nstruct {}_result {{\n", k.name, k.name);
+        for (const engine::kernel_output& o : k.outputs)
+            out += fmt::format("    Real {};\n", o.member);
+        if (has_status(k))
+            out += "    impact::status status;\n";
+        out += "};\n";
+    }
+
+    // The arithmetic, the inputs' components referred to by name.
+    std::vector<std::string> component_names;
+    for (const engine::kernel_parameter& p : k.parameters)
+        for (const engine::quantity& q : p.components)
+            component_names.push_back(q.name);
+    const cxx_code code = program_cxx(plan.code, component_names);
+
+    // Documentation: inputs, and how each output is computed and how accurate it is.
+    std::vector<std::string> names;
+    for (const engine::kernel_parameter& p : k.parameters)
+        names.push_back(p.name);
+    out += fmt::format("\n/// {}({}): {}{}.\n", k.name, fmt::join(names, ", "), d.source.title.value,
+                       d.source.paper ? ", " + d.source.paper->value : "");
+    for (const engine::kernel_parameter& p : k.parameters)
+        for (const engine::quantity& q : p.components)
+            out += fmt::format("///   {}{}\n", p.is_array ? p.name + ": " : "", describe(q));
+    for (const verify::component_plan& cp : plan.components) {
+        const verify::candidate_result& c = cp.candidates[cp.chosen];
+        out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
+                           cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
+    }
+    print_guards_documentation(out, d, k, !code.divisors.empty());
+
+    std::vector<std::string> parameters;
+    for (const engine::kernel_parameter& p : k.parameters)
+        parameters.push_back(parameter_type(p) + " " + p.name);
+    out += fmt::format("template <class Real>\ninline {} {}({}) noexcept\n{{\n", result_type(k), k.name,
+                       fmt::join(parameters, ", "));
+
+    // Components of array parameters by name.
+    for (const engine::kernel_parameter& p : k.parameters) {
+        for (std::size_t c = 0; c < p.components.size(); ++c) {
+            if (p.is_array)
+                out += fmt::format("    const Real {} = {}[{}];\n", p.components[c].name, p.name, c);
+            else if (p.components[c].name != p.name)
+                out += fmt::format("    const Real {} = {};\n", p.components[c].name, p.name);
+        }
+    }
+
+    if (!returns_scalar(k))
+        out += fmt::format("    {} out{};\n", result_type(k), members_initialiser(k));
+
+    // Guards on the inputs' domains, then the statements their conditions need, then
+    // the conditions.
+    for (const engine::kernel_guard& g : k.guards) {
+        if (g.condition)
+            continue;
+        print_refusal(out, k, scalar_failures(guard_tests(k, g, "")), g.status);
+    }
+    const int last_guard_value = plan.guard_values ? plan.code.outputs[plan.guard_values - 1] : -1;
+    std::size_t s = 0;
+    for (; s < code.statements.size() && code.statement_values[s] <= last_guard_value; ++s)
+        out += "    " + code.statements[s] + "\n";
+    std::size_t condition = 0;
+    for (const engine::kernel_guard& g : k.guards) {
+        if (!g.condition)
+            continue;
+        print_refusal(out, k, {condition_failure(code.outputs[condition++], g)}, g.status);
+    }
+    const bool with_status = !k.guards.empty();  // a status, or a NaN for a scalar
+    const auto refuse_divisors_out_of_range = [&] {
+        std::vector<std::string> failures;
+        for (const std::string& test : with_status ? divisors_in_range(code) : std::vector<std::string>{})
+            failures.push_back("!" + test);
+        if (!failures.empty())
+            print_refusal(out, k, failures, out_of_range);
+    };
+    if (s >= code.divisors_known)
+        refuse_divisors_out_of_range();
+    for (; s < code.statements.size(); ++s) {
+        out += "    " + code.statements[s] + "\n";
+        if (s + 1 == code.divisors_known)
+            refuse_divisors_out_of_range();
+    }
+    std::vector<std::string> results(code.outputs.begin() + static_cast<long>(plan.guard_values), code.outputs.end());
+    if (with_status) {
+        std::vector<std::string> failures;
+        for (std::size_t r = 0; r < results.size(); ++r) {
+            out += fmt::format("    const Real result{} = {};\n", r, results[r]);
+            results[r] = fmt::format("result{}", r);
+            failures.push_back(fmt::format("!std::isfinite({})", results[r]));
+        }
+        print_refusal(out, k, failures, out_of_range);
+    }
+
+    if (returns_scalar(k)) {
+        out += fmt::format("    return {};\n}}\n", results.front());
+    } else {
+        std::size_t i = 0;
+        for (const engine::kernel_output& o : k.outputs) {
+            if (!o.is_array) {
+                out += fmt::format("    out.{} = {};\n", o.member, results[i++]);
+                continue;
+            }
+            std::vector<std::string> components;
+            for (std::size_t c = 0; c < o.values.size(); ++c)
+                components.push_back(results[i++]);
+            out += fmt::format("    out.{} = {{{}}};\n", o.member, fmt::join(components, ", "));
+        }
+        out += "    return out;\n}\n";
+    }
+
+    if (k.batch)
+        print_batch(out, plan);
+}
+
+} // namespace impact::emit::cxx_detail

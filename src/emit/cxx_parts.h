@@ -1,0 +1,61 @@
+// What the C++ emitter's printers share: the scalar kernel (cxx_kernel.cpp), the batch
+// kernel and its arrays (cxx_batch.cpp), the common header (cxx_common.cpp) and the
+// headers' assembly (cxx.cpp).
+#pragma once
+
+#include "emit/cxx.h"
+#include "emit/program_cxx.h"
+
+#include <string>
+#include <vector>
+
+namespace impact::emit::cxx_detail {
+
+/// A quantity for the kernel's documentation: "M: mass of sphere M (positive)".
+std::string describe(const engine::quantity& q);
+/// Whether the kernel writes the parameter `name` (an output named after an input).
+bool is_output(const engine::kernel& k, const std::string& name);
+/// A kernel returning one scalar returns it directly, and a quiet NaN where a guard
+/// refuses its inputs (a NaN is what the arithmetic would give for most of them, and a
+/// caller tests one value); otherwise a struct, with a status if the kernel has guards.
+bool returns_scalar(const engine::kernel& k);
+/// Whether the kernel's result carries a status: one with guards that returns a struct.
+bool has_status(const engine::kernel& k);
+/// The number of components of the kernel's array parameters; 0 without arrays.
+std::size_t dimension(const engine::kernel& k);
+std::string result_type(const engine::kernel& k);
+std::string parameter_type(const engine::kernel_parameter& p);
+
+/// One test a guard makes of a value: a comparison, written as the test that fails (NaN
+/// fails every comparison, so each is the negation of what must hold), or that the value
+/// is finite.
+struct domain_test {
+    std::string failure;  ///< e.g. "!(M > Real(0))"; empty for a finiteness test
+    std::string finite;   ///< the value that must be finite
+};
+std::vector<domain_test> domain_tests(const engine::quantity& q, const std::string& value);
+/// The tests of a guard on the domains of its parameters, in order.
+std::vector<domain_test> guard_tests(const engine::kernel& k, const engine::kernel_guard& g,
+                                     const std::string& suffix);
+
+/// A kernel with a status resolves a collision only inside the floating-point range: every
+/// divisor at least detail::smallest_divisor (its rounding errors still normal numbers, so
+/// that compensated arithmetic keeps its precision) and finite, every result finite.
+/// Otherwise the status is `out_of_range` and the velocities are unchanged.
+inline constexpr const char* out_of_range = "out_of_range";
+/// What must hold of every divisor, as tests; the scalar kernel refuses a pair where one
+/// fails, the batch loop divides by 1 instead.
+std::vector<std::string> divisors_in_range(const cxx_code& code);
+/// A guard's condition (the value compared with 0), written as the test that fails.
+std::string condition_failure(const std::string& value, const engine::kernel_guard& g);
+
+/// The scalar kernel, its result structure and documentation; then its batch form.
+void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan);
+/// The batch kernel of a kernel with `batch = true`.
+void print_batch(std::string& out, const kernel_plan& plan);
+/// The arrays of `<name>_batch_data`, owned, in one allocation laid out for speed.
+void print_batch_arrays(std::string& out, const engine::kernel& k);
+/// Whether a batch kernel gets a skewed block loop too (and common.hpp detail::crowded).
+bool skews(const engine::kernel& k);
+
+} // namespace impact::emit::cxx_detail
