@@ -308,8 +308,11 @@ private:
                 first = term;
                 first_term = e.op(i);
             } else if (*term != *first) {
-                throw error(where_, fmt::format("adds {}, {}, to {}, {}: the terms of a sum share one dimension",
-                                                text(first_term), first->describe(), text(e.op(i)), term->describe()));
+                throw dimension_clash(where_,
+                                      fmt::format("adds {}, {}, to {}, {}: the terms of a sum share one dimension",
+                                                  text(first_term), first->describe(), text(e.op(i)),
+                                                  term->describe()),
+                                      dimension_clash::kind::adds, first_term, *first, e.op(i), *term);
             }
         }
         // A sum with a term of unknown dimension has an unknown dimension.
@@ -375,8 +378,10 @@ private:
         const auto lhs = of(e.op(0)), rhs = of(e.op(1));
         // 0 on one side is a zero of any dimension.
         if (lhs && rhs && *lhs != *rhs && !e.op(0).is_zero() && !e.op(1).is_zero())
-            throw error(where_, fmt::format("sets {}, {}, against {}, {}: both sides share one dimension",
-                                            text(e.op(0)), lhs->describe(), text(e.op(1)), rhs->describe()));
+            throw dimension_clash(where_,
+                                  fmt::format("sets {}, {}, against {}, {}: both sides share one dimension",
+                                              text(e.op(0)), lhs->describe(), text(e.op(1)), rhs->describe()),
+                                  dimension_clash::kind::sets, e.op(0), *lhs, e.op(1), *rhs);
         if (e.op(0).is_zero())
             return rhs;
         return lhs ? lhs : rhs;

@@ -8,6 +8,8 @@
 // through A² − B²). The derivation of each factor's sign is kept as the proof text.
 #pragma once
 
+#include "engine/finding.h"
+
 #include "engine/order.h"
 #include "engine/symbols.h"
 
@@ -45,6 +47,7 @@ struct sign_reason {
     sign_reason(const char* text) : words(text) {}             // NOLINT
 
     std::string words;
+    finding typeset;                    ///< the same words with their mathematics, when it has any
     std::optional<GiNaC::ex> declared;
     std::string domain;
 };
