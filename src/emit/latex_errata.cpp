@@ -142,16 +142,22 @@ void fragment_writer::errata_rows(errata_table& table) const
 {
     constexpr double printed_pt = 122, derived_pt = 99, change_pt = 78;
     const auto& all = d_.paper_checks;
-    for (std::size_t i = 0; i < all.size();) {
+    std::vector<bool> done(all.size(), false);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (done[i])
+            continue;
         const engine::paper_comparison& p = all[i];
-        // The components that share this row's misprint.
-        std::size_t end = i + 1;
+        // The components that share this row's misprint: the same equation, the same finding.
+        std::vector<std::size_t> group = {i};
         if (!p.agrees() && !p.reconciliations.empty())
-            while (end < all.size() && !all[end].agrees() && all[end].paper == p.paper &&
-                   all[end].reconciliations == p.reconciliations && all[end].what == p.what)
-                ++end;
+            for (std::size_t j = i + 1; j < all.size(); ++j)
+                if (!done[j] && !all[j].agrees() && all[j].paper == p.paper && all[j].what == p.what &&
+                    all[j].reconciliations == p.reconciliations) {
+                    group.push_back(j);
+                    done[j] = true;
+                }
         std::vector<std::string> subjects;
-        for (std::size_t k = i; k < end; ++k)
+        for (std::size_t k : group)
             subjects.push_back(subject(all[k]));
         const std::string verdict = comparison_verdict(p);
 
@@ -174,8 +180,8 @@ void fragment_writer::errata_rows(errata_table& table) const
                                         : findings(p);
         if (change.empty())
             change = verdict == "undecided" ? "neither proven nor refuted" : "no single edit; see the derived form";
-        if (end - i > 1)
-            change += fmt::format("; one misprint, in each of the {} components", end - i);
+        if (group.size() > 1)
+            change += fmt::format("; one misprint, in each of the {} components", group.size());
 
         bool to_display = (!printed_math.empty() && !fits(printed_math, printed_pt)) ||
                           (!derived_math.empty() && !fits(derived_math, derived_pt));
@@ -210,11 +216,10 @@ void fragment_writer::errata_rows(errata_table& table) const
                 table.displays += "It agrees (" + change + ").\n";
             }
         }
-        table.rows += fmt::format("{} (\\S\\ref{{{}}}) & {} & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
+        table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & {} & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
                                   latex_label(d_), listing(subjects),
                                   p.agrees() ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
                                   change_cell);
-        i = end;
     }
 }
 
