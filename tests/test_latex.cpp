@@ -193,7 +193,8 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
 {
     const std::string tex = emit::latex_fragment(derived("inelastic_line"));
     // Givens with their justifications, numbered and labelled for the steps.
-    BOOST_TEST(contains(tex, "The impulse J changes the momentum of M by -J (Eq.~6):\n\\begin{align}"));
+    // (prose from the file, its $...$ mathematics kept as mathematics)
+    BOOST_TEST(contains(tex, "The impulse $J$ changes the momentum of $M$ by $-J$ (Eq.~6):\n\\begin{align}"));
     BOOST_TEST(contains(tex, "\\tag{G1}\\label{impact:inelastic_line:impulse_M}"));
     // The step refers to the equations it solves.
     BOOST_TEST(contains(tex, "Solving \\eqref{impact:inelastic_line:impulse_M}, "
@@ -206,8 +207,15 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
     // Checks with status; the paper's Eq. 7 found wanting.
     BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
                              "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));
-    BOOST_TEST(contains(tex, "Eq.~7, \\texttt{restitution}: printed $v_{M,\\parallel} - v_{m,\\parallel} = "
+    BOOST_TEST(contains(tex, "Eq.~7, restitution (equation): printed $v_{M,\\parallel} - v_{m,\\parallel} = "
                              "-\\epsilon (v_{M,\\parallel} - v_{m,\\parallel})$ --- \\textbf{disagrees}"));
+    BOOST_TEST(contains(tex, "smallest change: on the left, the primes missing."));
+}
+
+BOOST_AUTO_TEST_CASE(prose_keeps_its_mathematics_and_escapes_the_rest)
+{
+    BOOST_TEST(emit::latex_prose("at $\\epsilon = 1$ the loss is 100%") == "at $\\epsilon = 1$ the loss is 100\\%");
+    BOOST_TEST(emit::latex_prose("a_b costs $5") == "a\\_b costs \\$5");
 }
 
 BOOST_AUTO_TEST_CASE(limits_and_inequalities_say_how_they_were_established)

@@ -10,6 +10,11 @@
 #include "pipeline/regenerate.h"
 #include "report/report.h"
 
+#include <cstdio>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <regex>
 #include <string>
 
 using namespace impact;
@@ -89,7 +94,8 @@ BOOST_AUTO_TEST_CASE(the_report_includes_every_derivation_the_errata_and_both_fi
     BOOST_TEST(tex.find("\\input{figures/billiard}") != std::string::npos);
     BOOST_TEST(tex.find("\\input{figures/scatter_angle}") != std::string::npos);
     // The errata table says which of the paper's items disagree: Eq. 7 lost its primes.
-    BOOST_TEST(tex.find("Eq.~7 & restitution") != std::string::npos);
+    BOOST_TEST(tex.find("Eq.~7 (Sect.~\\ref{impact:inelastic_line}) & restitution (equation) & \\textbf{disagrees}") !=
+                   std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_latex_error_or_an_undefined_reference_is_caught)
@@ -116,4 +122,94 @@ BOOST_AUTO_TEST_CASE(the_same_document_gives_the_same_pdf_bytes)
     const report::pdf_build second = report::compile_latex(doc, "main.tex");
     BOOST_TEST_REQUIRE(first.ok, joined(first.problems));
     BOOST_TEST((first.pdf == second.pdf));
+}
+
+namespace {
+
+// The text of a PDF, as pdftotext reads it.
+std::string pdf_text(const std::string& pdf)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("impact-test-report-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    {
+        std::ofstream(dir / "report.pdf", std::ios::binary) << pdf;
+    }
+    const std::string command = "pdftotext -q '" + (dir / "report.pdf").string() + "' '" +
+                                (dir / "report.txt").string() + "'";
+    BOOST_TEST_REQUIRE(std::system(command.c_str()) == 0, "pdftotext failed (poppler-utils)");
+    std::ifstream in(dir / "report.txt", std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove_all(dir);
+    return text;
+}
+
+// Code that must not reach the typeset text: the derivation files' syntax (eps, ->, ASCII
+// products and powers, sqrt(...), backticks) and Impact's internal names (_after, _line2).
+std::vector<std::string> code_tokens(const std::string& text)
+{
+    static const std::pair<const char*, const char*> tokens[] = {
+        {"eps", "\\beps\\b"},
+        {"->", "->"},
+        {"ASCII product", "[A-Za-z0-9)]\\s*\\*\\s*[A-Za-z0-9(]"},
+        {"^(", "\\^\\("},
+        {"sqrt(", "sqrt\\("},
+        {"_after", "_after"},
+        {"_line2", "_line[0-9]"},
+        {"backtick", "`"},
+        {"too long for the table", "too long for the table"},
+        {"R^T", "R\\^T"},
+        {"v_par", "v_par|v_perp|_1par|_1perp"},
+        {"<=", "<=|>="},
+    };
+    std::vector<std::string> found;
+    for (const auto& [name, pattern] : tokens) {
+        const std::regex re(pattern);
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator(); ++it) {
+            const auto at = static_cast<std::size_t>(it->position());
+            const std::size_t from = at < 30 ? 0 : at - 30;
+            found.push_back(std::string(name) + ": ..." + text.substr(from, 70) + "...");
+        }
+    }
+    return found;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_typeset_report_has_no_code_in_its_text)
+{
+    const std::string text = pdf_text(output().files.at("report.pdf"));
+    BOOST_TEST_REQUIRE(text.find("The paper, held to account") != std::string::npos);
+    const auto found = code_tokens(text);
+    BOOST_TEST(found.empty(), joined(found));
+}
+
+BOOST_AUTO_TEST_CASE(the_code_token_check_finds_code)
+{
+    // The check itself can fail: each token it looks for, found in a line of code.
+    BOOST_TEST(code_tokens("At eps = 1 the collision is elastic").size() == 1u);
+    BOOST_TEST(code_tokens("it holds for v -> 0").size() == 1u);
+    BOOST_TEST(code_tokens("the sign of the term M*eps").size() == 2u);
+    BOOST_TEST(code_tokens("tau_line2 and v_M_after").size() == 2u);
+    BOOST_TEST(code_tokens("sqrt(x) and x^(1/2)").size() == 2u);
+    // Words that merely contain the letters are prose: "keeps", "steps".
+    BOOST_TEST(code_tokens("the cue ball keeps its steps").empty());
+}
+
+BOOST_AUTO_TEST_CASE(the_errata_table_names_quantities_not_identifiers_and_groups_a_misprint)
+{
+    const std::string& tex = output().files.at("report.tex");
+    const auto begin = tex.find("\\begin{longtable}");
+    const auto end = tex.find("\\end{longtable}");
+    BOOST_TEST_REQUIRE((begin != std::string::npos && end != std::string::npos));
+    const std::string table = tex.substr(begin, end - begin);
+    // Identifiers of the derivation files stay out of the table.
+    for (const char* identifier : {"tau\\_line", "\\_after", "texttt"})
+        BOOST_TEST(table.find(identifier) == std::string::npos, identifier);
+    // Eq. 9 prints v'_m with the sign of eps M (v_M - v_m) wrong: one row for its
+    // parallel and both lab-frame components.
+    BOOST_TEST(table.find("$v'_{m,\\parallel}$, $v'_{m,x}$ and $v'_{m,y}$ & \\textbf{disagrees}") != std::string::npos);
+    BOOST_TEST(tex.find("one misprint, in each of the 3 components") != std::string::npos);
+    // Eq. 12: the sentence blamed is the one calling tau the transferred share.
+    BOOST_TEST(table.find("Let $\\tau$ denote the transfer rate") != std::string::npos);
 }

@@ -1,9 +1,11 @@
 #include "emit/errata.h"
 
-#include "engine/infix.h"
+#include "emit/latex.h"
 #include "engine/order.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace impact::emit {
 namespace {
@@ -23,9 +25,12 @@ std::string cell(std::string text)
     return out;
 }
 
-std::string code(const std::string& text)
+// Mathematics for a renderer of Markdown with LaTeX math (`$...$`).
+std::string math(const GiNaC::ex& e, const engine::term_order& order, const engine::written_form* written)
 {
-    return "`" + cell(text) + "`";
+    if (e.info(GiNaC::info_flags::relation))
+        return "$" + latex(e.lhs(), order, written) + " = " + latex(e.rhs(), order, written) + "$";
+    return "$" + latex(e, order, written) + "$";
 }
 
 const char* kind_name(engine::paper_comparison::kind k)
@@ -54,27 +59,40 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                       "Every equation that *General Collisions of Smooth Spheres* prints, and every claim its text "
                       "makes about them, as transcribed in `derivations/`, compared with what Impact derives. "
                       "An equation agrees when it is proven equal to the derived result (an equation of the "
-                      "paper's: proven equivalent); a claim agrees when it is proven. For each disagreement the "
-                      "smallest change that reconciles the two is given, when a single change does.\n\n";
+                      "paper's: proven equivalent); a claim agrees when it is proven, and is undecided when it can "
+                      "be neither proven nor refuted. For each disagreement the smallest change that reconciles "
+                      "the two is given, when a single edit does. Mathematics is LaTeX between dollar signs.\n\n";
     out += fmt::format("{} items checked: {} agree, {} disagree.\n\n", total, agree, total - agree);
     out += "| Where | Kind | Item | Verdict | Printed | Derived | Smallest change |\n"
            "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const engine::derivation* d : derivations) {
         const engine::term_order order = engine::declaration_order(d->symbols);
         for (const engine::paper_comparison& p : d->paper_checks) {
-            const std::string derived = p.derived.info(GiNaC::info_flags::relation)
-                                            ? engine::ginac_syntax(p.derived.lhs(), order) + " = " +
-                                                  engine::ginac_syntax(p.derived.rhs(), order)
-                                            : engine::ginac_syntax(p.derived, order);
-            std::string printed = p.what == engine::paper_comparison::kind::claim ? cell(p.printed_text)
-                                                                                   : code(p.printed_text);
+            // The derived form in the variables the paper prints: the result as its file displays it.
+            const engine::result* r =
+                p.what == engine::paper_comparison::kind::result ? d->find_result(p.subject) : nullptr;
+            const std::string derived = r ? math(r->display, order, &r->written) : math(p.derived, order, nullptr);
+            const std::string printed = p.what == engine::paper_comparison::kind::claim
+                                            ? cell(p.printed_text)
+                                            : math(p.printed, order, &p.written);
+            const engine::quantity* q = d->symbols.find(p.subject);
+            std::string name = p.subject;
+            std::replace(name.begin(), name.end(), '_', ' ');
+            const std::string item = p.what == engine::paper_comparison::kind::claim ? "claim"
+                                     : q && r ? math(q->symbol, order, nullptr)
+                                              : name;
             std::string change = "—";
-            if (!p.agrees())
-                change = p.reconciliations.empty() ? "no single change; see the derived form"
-                                                   : cell(fmt::format("{}", fmt::join(p.reconciliations, "; ")));
+            if (!p.agrees()) {
+                std::vector<std::string> said;
+                for (const engine::finding& f : p.findings)
+                    said.push_back(cell(finding_latex(f, order)));
+                change = said.empty() ? "no single edit; see the derived form"
+                                      : fmt::format("{}", fmt::join(said, "; "));
+            }
+            const std::string verdict = comparison_verdict(p);
             out += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", cell(p.paper), kind_name(p.what),
-                               code(d->id() + ": " + p.subject), p.agrees() ? "agrees" : "**disagrees**", printed,
-                               code(derived), change);
+                               cell(item), verdict == "agrees" ? verdict : "**" + verdict + "**", printed,
+                               derived, change);
         }
     }
     return out;

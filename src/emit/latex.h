@@ -58,6 +58,18 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
 /// Plain text escaped for LaTeX.
 std::string latex_text(const std::string& text);
 
+/// Prose from a derivation file: plain text escaped for LaTeX, and what it writes between
+/// `$` and `$` kept as LaTeX mathematics ("at $\epsilon = 1$ the collision is elastic").
+std::string latex_prose(const std::string& text);
+
+/// A finding of the engine (a smallest change, a dimensional inconsistency, the regime
+/// where a claim holds instead) as LaTeX prose with its mathematics typeset.
+std::string finding_latex(const engine::finding& f, const term_order& order);
+
+/// "agrees", "disagrees", or "undecided" when the comparison could be neither proven nor
+/// refuted.
+std::string comparison_verdict(const engine::paper_comparison& p);
+
 /// The LaTeX fragment of one derivation, typeset as a derivation: its quantities, the
 /// given equations with their justifications, each step and what it yields, the results
 /// numbered as in the paper, the checks with their status and how each was
@@ -70,8 +82,15 @@ std::string latex_fragment_name(const engine::derivation& d);
 /// The label of a derivation's fragment, for \ref (`impact:<id>`).
 std::string latex_label(const engine::derivation& d);
 
-/// A line per paper comparison of `derivations` as rows of a LaTeX table (the errata
-/// table of the report): where, item, verdict, printed, derived, smallest change.
-std::string latex_errata_rows(const std::vector<const engine::derivation*>& derivations);
+/// The errata table of the report: a row per paper comparison of `derivations` (where,
+/// what, verdict, printed, derived, smallest change; one row for a misprint shared by
+/// consecutive components), and the forms too wide for a cell as numbered items
+/// (`\item[(T1)] ...`) of a list to set under the table.
+struct errata_table {
+    std::string rows;
+    std::string displays;
+    std::size_t displayed = 0;
+};
+errata_table latex_errata(const std::vector<const engine::derivation*>& derivations);
 
 } // namespace impact::emit

@@ -78,20 +78,6 @@ bool wants_display(const std::string& math)
     return latex_width(math) > 230 || nested_fraction(math);
 }
 
-// Long names and GiNaC expressions in text may break after _ * + / , and =.
-std::string breakable(const std::string& text)
-{
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        out += text[i];
-        const bool after = text[i] == '*' || text[i] == '+' || text[i] == '/' || text[i] == ',' ||
-                           text[i] == '=' || (text[i] == '_' && i > 0 && text[i - 1] == '\\');
-        if (after)
-            out += "\\allowbreak{}";
-    }
-    return out;
-}
-
 } // namespace
 
 namespace detail {
@@ -123,8 +109,10 @@ std::string fragment_writer::sign_text(const engine::sign_step& step) const
     const char* relation = relation_to_zero(step.sign);
     if (!relation)
         return latex_text(step.words);
-    const std::string why = step.why.declared ? "declared " + step.why.domain : step.why.words;
-    return fmt::format("${} {} 0$ ({})", math(step.factor), relation, latex_text(why));
+    const std::string why = step.why.declared       ? "declared " + latex_text(step.why.domain)
+                            : step.why.typeset.parts.empty() ? latex_text(step.why.words)
+                                                             : finding_latex(step.why.typeset, order_);
+    return fmt::format("${} {} 0$ ({})", math(step.factor), relation, why);
 }
 
 std::string fragment_writer::limit_text(const engine::limit_method& how) const
@@ -208,7 +196,7 @@ std::string fragment_writer::checks() const
         else if (!shown)
             out += ".";
         if (!c.because.empty())
-            out += (shown && conditions.empty() ? "" : " ") + sentence_end(capitalised(latex_text(c.because)));
+            out += (shown && conditions.empty() ? "" : " ") + sentence_end(capitalised(latex_prose(c.because)));
         out += how(c) + "\n";
     }
     return out + "\\end{itemize}\n";
@@ -238,66 +226,35 @@ std::string fragment_writer::paper() const
         return "";
     std::string out = "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
     for (const engine::paper_comparison& p : d_.paper_checks) {
-        out += fmt::format("\\item {}, \\texttt{{{}}}: ", paper_text(p.paper), breakable(latex_text(p.subject)));
+        const std::string what = subject(p);
+        out += fmt::format("\\item {}, {}: ", paper_text(p.paper), what);
         bool after_display = false;
         if (p.what == engine::paper_comparison::kind::claim) {
-            out += fmt::format("``{}''", breakable(latex_text(p.printed_text)));
+            out += fmt::format("``{}''", latex_prose(p.printed_text));
         } else {
             const written_form& w = p.written;
             out += "printed " + form(p.printed, &w);
             after_display = displayed(p.printed, &w);
         }
+        const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {
             out += after_display ? "It agrees.\n" : " --- agrees.\n";
             continue;
         }
-        out += after_display ? "It \\textbf{disagrees}: derived " : " --- \\textbf{disagrees}: derived ";
-        out += form(p.derived, nullptr);
-        after_display = displayed(p.derived, nullptr);
-        if (!p.reconciliations.empty()) {
-            const std::string change =
-                breakable(latex_text(fmt::format("{}", fmt::join(p.reconciliations, "; "))));
-            out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
+        out += fmt::format(after_display ? "It is \\textbf{{{}}}" : " --- \\textbf{{{}}}", verdict);
+        if (p.what != engine::paper_comparison::kind::claim || p.agreement.what == engine::verdict::status::failed) {
+            const auto [derived, written] = derived_form(p);
+            out += ": derived " + form(derived, written);
+            after_display = displayed(derived, written);
+        } else {
+            after_display = false;
         }
-        out += after_display && p.reconciliations.empty() ? "\n" : ".\n";
+        const std::string change = findings(p);
+        if (!change.empty())
+            out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
+        out += after_display && change.empty() ? "\n" : ".\n";
     }
     return out + "\\end{itemize}\n";
-}
-
-// The paper comparisons as rows of the report's errata table.
-std::string fragment_writer::errata_rows() const
-{
-    // Math wider than its column (printed 4.3 cm, derived 3.5 cm) is left to the
-    // derivation's section: a fraction cannot be broken across lines of a table cell.
-    // Set in 8 pt, inline math is about 0.75 of its displayed width (measured).
-    auto cell = [&](const GiNaC::ex& e, const written_form* w, double column_pt) {
-        const std::string m = e.info(GiNaC::info_flags::relation) ? relation_math(e, w) : math(e, w);
-        // Inline math breaks after + - = at its outer level, never inside \frac or \sqrt.
-        const bool unbreakable = m.find("\\frac") != std::string::npos || m.find("\\sqrt") != std::string::npos;
-        if ((unbreakable && 0.75 * latex_width(m) > column_pt - 4) || nested_fraction(m))
-            return fmt::format("\\emph{{too long for the table, see Section~\\ref{{{}}}}}", latex_label(d_));
-        return "$" + m + "$";
-    };
-    std::string out;
-    for (const engine::paper_comparison& p : d_.paper_checks) {
-        std::string printed;
-        if (p.what == engine::paper_comparison::kind::claim) {
-            printed = "``" + breakable(latex_text(p.printed_text)) + "''";
-        } else {
-            const written_form& w = p.written;
-            printed = cell(p.printed, &w, 122);
-        }
-        std::string change = "---";
-        if (!p.agrees())
-            change = p.reconciliations.empty()
-                         ? "no single change; see the derived form"
-                         : breakable(latex_text(fmt::format("{}", fmt::join(p.reconciliations, "; "))));
-        out += fmt::format("{} & {} (\\ref{{{}}}) & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
-                           breakable(latex_text(p.subject)), latex_label(d_),
-                           p.agrees() ? "agrees" : "\\textbf{disagrees}", printed,
-                           p.agrees() ? "" : cell(p.derived, nullptr, 99), change);
-    }
-    return out;
 }
 
 } // namespace detail
@@ -310,14 +267,6 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
         lhs = fmt::format("\\lim_{{{} \\to {}}} {}", latex(c.limit->symbol, order), point, lhs);
     }
     return fmt::format("{} {} {}", lhs, latex_relation(c.op), latex(c.stated.rhs(), order, written));
-}
-
-std::string latex_errata_rows(const std::vector<const engine::derivation*>& derivations)
-{
-    std::string out;
-    for (const engine::derivation* d : derivations)
-        out += detail::fragment_writer(*d).errata_rows();
-    return out;
 }
 
 } // namespace impact::emit

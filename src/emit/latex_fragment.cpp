@@ -88,7 +88,7 @@ std::string fragment_writer::write()
     out += fmt::format("\\subsection{{{}{}}}\\label{{{}}}\n", latex_text(d_.source.title.value),
                        d_.source.paper ? " (" + paper_text(d_.source.paper->value) + ")" : "", latex_label(d_));
     if (!d_.source.summary.value.empty())
-        out += latex_text(d_.source.summary.value) + "\n";
+        out += latex_prose(d_.source.summary.value) + "\n";
     out += quantities();
     out += givens();
     out += steps();
@@ -142,8 +142,6 @@ std::string fragment_writer::ref(const std::string& equation) const
     return fmt::format("\\eqref{{{}:{}}}", latex_label(d_), equation);
 }
 
-namespace {
-
 // A quantity's SI unit, e.g. $\mathrm{kg\,m^{2}\,s^{-2}}$, or "dimensionless".
 std::string si_unit_latex(const engine::dimension& d)
 {
@@ -163,8 +161,6 @@ std::string si_unit_latex(const engine::dimension& d)
     return "$\\mathrm{" + out + "}$";
 }
 
-} // namespace
-
 std::string fragment_writer::quantities() const
 {
     std::string out = "\n\\paragraph{Quantities.}\n\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
@@ -176,7 +172,7 @@ std::string fragment_writer::quantities() const
         }
         if (q.dim)
             out += " (" + si_unit_latex(*q.dim) + ")";
-        out += q.meaning.empty() ? "\n" : ": " + latex_text(q.meaning) + "\n";
+        out += q.meaning.empty() ? "\n" : ": " + latex_prose(q.meaning) + "\n";
     }
     return out + "\\end{itemize}\n";
 }
@@ -188,7 +184,7 @@ std::string fragment_writer::givens() const
     std::string out = "\n\\paragraph{Given.}\n";
     for (std::size_t i = 0; i < d_.givens.size(); ++i) {
         const engine::equation& g = d_.givens[i];
-        const std::string why = capitalised(latex_text(g.because)) +
+        const std::string why = capitalised(latex_prose(g.because)) +
                                 (g.paper.empty() ? "" : " (" + paper_text(g.paper) + ")") + ":";
         if (i == 0)
             out += why + "\n\\begin{align}\n";
@@ -217,7 +213,7 @@ std::string fragment_writer::steps() const
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
         const engine::step_result& s = d_.steps[i];
         const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
-        const std::string because = s.because.empty() ? "" : " (" + latex_text(s.because) + ")";
+        const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
         out += "\\item ";
         switch (s.what) {
         case spec::step::kind::solve: out += solve_step(s, source, because); break;

@@ -67,6 +67,9 @@ std::string capitalised(std::string text);
 /// Joins items as "a, b and c".
 std::string listing(const std::vector<std::string>& items);
 
+/// A dimension's SI unit, e.g. $\mathrm{kg\,m^{2}\,s^{-2}}$, or "dimensionless".
+std::string si_unit_latex(const engine::dimension& d);
+
 /// Everything the fragment of one derivation needs while it is written.
 class fragment_writer {
 public:
@@ -74,8 +77,8 @@ public:
 
     /// The whole fragment.
     std::string write();
-    /// The paper comparisons as rows of the report's errata table.
-    std::string errata_rows() const;
+    /// The paper comparisons as rows (and displays) of the report's errata table.
+    void errata_rows(errata_table& table) const;
 
 private:
     // latex_fragment.cpp: the printing shared by every part, and the derivation itself.
@@ -110,6 +113,11 @@ private:
     std::string form(const GiNaC::ex& e, const written_form* w) const;
     std::string paper() const;
 
+    // latex_errata.cpp: the paper held to account, in the errata table.
+    std::string findings(const engine::paper_comparison& p) const;
+    std::string subject(const engine::paper_comparison& p) const;
+    std::string shown(const GiNaC::ex& e, const written_form* w) const;
+    std::pair<GiNaC::ex, const written_form*> derived_form(const engine::paper_comparison& p) const;
     // The text width of the report (A4, 2 cm margins: 482 pt) less a list's indent: steps
     // and checks are items of a list.
     static constexpr double content_width = 450;

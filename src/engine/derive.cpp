@@ -138,7 +138,7 @@ private:
             p.derived = equations_.back().relation;
             p.agreement = prove_equivalent(p.printed, p.derived, out_.symbols, run_);
             if (!p.agrees())
-                p.reconciliations = reconcile_equation(p.printed, p.derived, out_.symbols, resolver(), run_);
+                p.findings = reconcile_equation(p.printed, p.derived, out_.symbols, resolver(), run_);
             add_dimension_finding(p);
             p.where = g.printed->where;
             out_.paper_checks.push_back(std::move(p));
@@ -295,7 +295,7 @@ private:
             p.derived = r.value;
             p.agreement = prove_equal(resolve(p.printed), r.value, out_.symbols, run_);
             if (!p.agrees())
-                p.reconciliations = reconcile_expression(p.printed, r.value, out_.symbols, resolver(), run_);
+                p.findings = reconcile_expression(p.printed, r.value, out_.symbols, resolver(), run_);
             add_dimension_finding(p);
             p.where = spec_result.printed->where;
             out_.paper_checks.push_back(std::move(p));
@@ -307,8 +307,9 @@ private:
     // account of a misprint (a momentum where an energy belongs).
     void add_dimension_finding(paper_comparison& p) const
     {
-        if (const auto finding = printed_dimension_finding(out_.symbols, p.printed, p.derived))
-            p.reconciliations.insert(p.reconciliations.begin(), *finding);
+        if (const auto found = printed_dimension_finding(out_.symbols, p.printed, p.derived))
+            p.findings.insert(p.findings.begin(), *found);
+        p.reconciliations = plain_texts(p.findings, out_.symbols);
     }
 
     // `paper_claim`: the claim transcribes the paper's text, whose dimensions are a finding
@@ -401,18 +402,19 @@ private:
         p.derived = c.value ? *c.value : c.lhs;
         p.agreement = c.outcome;
         if (!p.agrees() && c.value && (claim.test.limit || !claim.test.at.empty()))
-            p.reconciliations = other_regimes(claim.test, c);
+            p.findings = other_regimes(claim.test, c);
         else if (!p.agrees() && c.op == relation::equal)
-            p.reconciliations = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
-        if (const auto finding = printed_dimension_finding(out_.symbols, p.printed, p.printed))
-            p.reconciliations.insert(p.reconciliations.begin(), *finding);
+            p.findings = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
+        if (const auto found = printed_dimension_finding(out_.symbols, p.printed, p.printed))
+            p.findings.insert(p.findings.begin(), *found);
+        p.reconciliations = plain_texts(p.findings, out_.symbols);
         p.test = std::move(c);
         return p;
     }
 
-    std::vector<std::string> other_regimes(const spec::check& original, const check_result& failed)
+    std::vector<finding> other_regimes(const spec::check& original, const check_result& failed)
     {
-        std::vector<std::string> found;
+        std::vector<finding> found;
         const spec::text* symbol = nullptr;
         const spec::text* point = nullptr;
         if (original.limit) {
@@ -442,13 +444,18 @@ private:
                                           infinity};
                 try {
                     if (run_check(moved).outcome.what == verdict::status::proven)
-                        found.push_back(fmt::format("it holds for {} -> {} instead", symbol->value, other));
+                        found.push_back(finding()
+                                            .say("it holds for ")
+                                            .tends(q.symbol, infinity ? std::nullopt
+                                                                      : std::optional<GiNaC::ex>(out_.symbols.parse(
+                                                                            spec::text{other, point->where})))
+                                            .say(" instead"));
                 } catch (const error&) {
                 }
             }
         }
-        found.push_back(fmt::format("the derived value is {}, not {}", out_.symbols.text(*failed.value),
-                                    out_.symbols.text(failed.rhs)));
+        found.push_back(
+            finding().say("the derived value is ").math(*failed.value).say(", not ").math(failed.rhs));
         return found;
     }
 

@@ -8,6 +8,7 @@
 // disagreement there is a finding about the paper, not a failure of the derivation.
 #pragma once
 
+#include "engine/finding.h"
 #include "engine/limit.h"
 #include "engine/prove.h"
 #include "engine/symbols.h"
@@ -101,7 +102,8 @@ struct paper_comparison {
     GiNaC::ex printed;        ///< the printed expression or equation (for a claim: what it states)
     GiNaC::ex derived;        ///< the derived expression or equation (for a claim: its derived value)
     verdict agreement;        ///< proven: the paper agrees; otherwise a disagreement, with the residual
-    std::vector<std::string> reconciliations; ///< the smallest edits that make the printed form right
+    std::vector<finding> findings;            ///< the smallest edits that make the printed form right, etc.
+    std::vector<std::string> reconciliations; ///< the same findings as plain text
     std::optional<check_result> test;         ///< for a claim: the check it was turned into
     source_location where;
     written_form written;     ///< how the file transcribes the printed form (not for a claim)

@@ -305,6 +305,7 @@ private:
                   [](const auto& a, const auto& b) { return a.first < b.first; });
         std::optional<dimension> first;
         std::string first_term;
+        GiNaC::ex first_ex;
         bool all_known = true;
         for (const auto& [written, term] : terms) {
             const auto found = of(term);
@@ -314,9 +315,12 @@ private:
             if (!first) {
                 first = found;
                 first_term = written;
+                first_ex = term;
             } else if (*found != *first) {
-                throw error(where_, fmt::format("adds {}, {}, to {}, {}: the terms of a sum share one dimension",
-                                                first_term, first->describe(), written, found->describe()));
+                throw dimension_clash(where_,
+                                      fmt::format("adds {}, {}, to {}, {}: the terms of a sum share one dimension",
+                                                  first_term, first->describe(), written, found->describe()),
+                                      dimension_clash::kind::adds, first_ex, *first, term, *found);
             }
         }
         // A sum with a term of unknown dimension has an unknown dimension.
@@ -382,8 +386,10 @@ private:
         const auto lhs = of(e.op(0)), rhs = of(e.op(1));
         // 0 on one side is a zero of any dimension.
         if (lhs && rhs && *lhs != *rhs && !e.op(0).is_zero() && !e.op(1).is_zero())
-            throw error(where_, fmt::format("sets {}, {}, against {}, {}: both sides share one dimension",
-                                            text(e.op(0)), lhs->describe(), text(e.op(1)), rhs->describe()));
+            throw dimension_clash(where_,
+                                  fmt::format("sets {}, {}, against {}, {}: both sides share one dimension",
+                                              text(e.op(0)), lhs->describe(), text(e.op(1)), rhs->describe()),
+                                  dimension_clash::kind::sets, e.op(0), *lhs, e.op(1), *rhs);
         if (e.op(0).is_zero())
             return rhs;
         return lhs ? lhs : rhs;

@@ -55,6 +55,25 @@ private:
     std::map<std::string, GiNaC::numeric, std::less<>> exponents_;   ///< no zero exponents
 };
 
+/// Two parts of an expression that must share a dimension and do not: the terms of a sum
+/// (`adds`) or the sides of an equation (`sets`), kept apart from the message so that a
+/// finding can name them.
+class dimension_clash : public error {
+public:
+    enum class kind { adds, sets };
+    dimension_clash(source_location where, const std::string& what, kind k, GiNaC::ex first, dimension first_dim,
+                    GiNaC::ex second, dimension second_dim)
+        : error(std::move(where), what), how(k), first(std::move(first)), first_dim(std::move(first_dim)),
+          second(std::move(second)), second_dim(std::move(second_dim))
+    {
+    }
+    kind how;
+    GiNaC::ex first;
+    dimension first_dim;
+    GiNaC::ex second;
+    dimension second_dim;
+};
+
 /// Names of dimensions a derivation may use: mass, length and time, the familiar
 /// combinations (velocity, acceleration, momentum, energy, force, angular_velocity,
 /// moment_of_inertia, ...) and those the derivation adds.

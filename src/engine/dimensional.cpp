@@ -92,15 +92,27 @@ void check_value(symbol_table& symbols, const GiNaC::ex& symbol, const GiNaC::ex
     }
 }
 
-std::optional<std::string> printed_dimension_finding(const symbol_table& symbols, const GiNaC::ex& printed,
-                                                     const GiNaC::ex& derived)
+std::optional<finding> printed_dimension_finding(const symbol_table& symbols, const GiNaC::ex& printed,
+                                                 const GiNaC::ex& derived)
 {
     const dimension_map known = symbols.dimensions();
     std::optional<dimension> of_printed;
     try {
         of_printed = dimension_of(printed, known, {}, written_by(symbols));
+    } catch (const dimension_clash& e) {
+        const bool sum = e.how == dimension_clash::kind::adds;
+        return finding()
+            .say(sum ? "dimensionally inconsistent: it adds " : "dimensionally inconsistent: it sets ")
+            .math(e.first)
+            .say(", ")
+            .of_dimension(e.first_dim)
+            .say(sum ? ", to " : ", against ")
+            .math(e.second)
+            .say(", ")
+            .of_dimension(e.second_dim)
+            .say(sum ? ": the terms of a sum share one dimension" : ": both sides share one dimension");
     } catch (const error& e) {
-        return fmt::format("dimensionally inconsistent: it {}", e.message());
+        return finding::words(fmt::format("dimensionally inconsistent: it {}", e.message()));
     }
     std::optional<dimension> of_derived;
     try {
@@ -112,7 +124,12 @@ std::optional<std::string> printed_dimension_finding(const symbol_table& symbols
         return std::nullopt;   // a relation's sides were compared above
     if (!of_printed || !of_derived || *of_printed == *of_derived)
         return std::nullopt;
-    return fmt::format("dimensionally inconsistent: {} where {} belongs", named(*of_printed), named(*of_derived));
+    return finding()
+        .say("dimensionally inconsistent: ")
+        .of_dimension(*of_printed)
+        .say(" where ")
+        .of_dimension(*of_derived)
+        .say(" belongs");
 }
 
 std::vector<std::string> symbols_without_dimension(const symbol_table& symbols)

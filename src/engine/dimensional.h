@@ -8,6 +8,7 @@
 #pragma once
 
 #include "engine/dimension.h"
+#include "engine/finding.h"
 #include "engine/symbols.h"
 #include "spec/derivation.h"
 
@@ -43,7 +44,7 @@ void check_value(symbol_table& symbols, const GiNaC::ex& symbol, const GiNaC::ex
 /// inconsistent: a momentum (mass*length/time) where an energy (mass*length^2/time^2)
 /// belongs". A printed form inconsistent in itself (a sum of two dimensions) is reported
 /// with the rule it breaks.
-std::optional<std::string> printed_dimension_finding(const symbol_table& symbols, const GiNaC::ex& printed,
+std::optional<finding> printed_dimension_finding(const symbol_table& symbols, const GiNaC::ex& printed,
                                                      const GiNaC::ex& derived);
 
 /// The names of the symbols that have no dimension, declared or inferred.

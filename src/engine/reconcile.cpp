@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -63,7 +64,7 @@ GiNaC::ex replace_at(const GiNaC::ex& e, const std::vector<std::size_t>& path, s
 
 struct candidate {
     int priority;            ///< smaller is a smaller change
-    std::function<std::string()> change;  ///< described only if it reconciles (printing costs)
+    std::function<finding()> change;  ///< described only if it reconciles (printing costs)
     GiNaC::ex edited;
 };
 
@@ -89,21 +90,19 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
     std::vector<std::size_t> path;
     collect_sites(e, path, e, false, sites);
 
-    emit({1, [=] { return std::string(side + "the sign of the whole expression"); }, -e});
-    emit({4, [=] { return std::string(side + "a factor 2 too many"); }, e / 2});
-    emit({4, [=] { return std::string(side + "a factor 2 missing"); }, e * 2});
-    emit({4, [=] { return std::string(side + "the reciprocal of the printed form"); }, 1 / e});
+    emit({1, [=] { return finding::words(side + "the sign of the whole expression"); }, -e});
+    emit({4, [=] { return finding::words(side + "a factor 2 too many"); }, e / 2});
+    emit({4, [=] { return finding::words(side + "a factor 2 missing"); }, e * 2});
+    emit({4, [=] { return finding::words(side + "the reciprocal of the printed form"); }, 1 / e});
     const auto order = std::make_shared<term_order>(declaration_order(symbols));
-    const symbol_table* table = &symbols;
     // A term named by its magnitude: GiNaC may store it as -1/m or as 1/m in -(...).
     // (Descriptions are written later, for the edits that reconcile: captured by value.)
-    auto magnitude = [order, table](const GiNaC::ex& term) {
-        return table->text(order->negative(term) ? -term : term);
-    };
+    auto magnitude = [order](const GiNaC::ex& term) { return order->negative(term) ? -term : term; };
     std::set<std::string> present;
     for (const site& s : sites) {
         if (s.is_term && !s.path.empty()) {
-            emit({2, [=] { return std::string(fmt::format("{}the sign of the term {}", side, magnitude(s.node))); }, replace_at(e, s.path, 0, -s.node)});
+            emit({2, [=] { return finding().say(side + "the sign of the term ").math(magnitude(s.node)); },
+                  replace_at(e, s.path, 0, -s.node)});
         }
         if (!GiNaC::is_a<GiNaC::symbol>(s.node))
             continue;
@@ -111,22 +110,31 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
         if (!from)
             continue;
         present.insert(from->name);
-        emit({3, [=] { return std::string(fmt::format("{}a spurious {} in {}", side, from->name, magnitude(s.term))); }, replace_at(e, s.path, 0, 1)});
+        emit({3, [=] { return finding().say(side + "a spurious ").math(from->symbol).say(" in ").math(magnitude(s.term)); },
+              replace_at(e, s.path, 0, 1)});
         for (const quantity& to : symbols.all()) {
             if (to.name == from->name || !wanted.count(to.name))
                 continue;
             const quantity* prime = primed(*from, symbols);
             const bool adds_prime = prime && prime->name == to.name;
-            emit({adds_prime ? 2 : 3, [=] { return std::string(fmt::format("{}{} {} for {} in {}", side, adds_prime ? "a missing prime:" : "write", to.name,
-                              from->name, magnitude(s.term))); }, replace_at(e, s.path, 0, to.symbol)});
+            emit({adds_prime ? 2 : 3,
+                  [=] {
+                      return finding()
+                          .say(side + (adds_prime ? "a missing prime: " : "write "))
+                          .math(to.symbol)
+                          .say(" for ")
+                          .math(from->symbol)
+                          .say(" in ")
+                          .math(magnitude(s.term));
+                  },
+                  replace_at(e, s.path, 0, to.symbol)});
         }
     }
     // Two symbols swapped throughout.
     for (auto a = present.begin(); a != present.end(); ++a) {
         for (auto b = std::next(a); b != present.end(); ++b) {
             const GiNaC::ex sa = symbols.find(*a)->symbol, sb = symbols.find(*b)->symbol;
-            const std::string first = *a, second = *b;
-            emit({3, [=] { return fmt::format("{}{} and {} swapped", side, first, second); },
+            emit({3, [=] { return finding().say(side).math(sa).say(" and ").math(sb).say(" swapped"); },
                   e.subs(GiNaC::lst{sa, sb}, GiNaC::lst{sb, sa}, GiNaC::subs_options::no_pattern)});
         }
     }
@@ -136,7 +144,8 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
         if (const quantity* prime = primed(*symbols.find(name), symbols))
             prime_all[symbols.find(name)->symbol] = prime->symbol;
     if (!prime_all.empty())
-        emit({1, [=] { return std::string(side + "the primes missing"); }, e.subs(prime_all, GiNaC::subs_options::no_pattern)});
+        emit({1, [=] { return finding::words(side + "the primes missing"); },
+              e.subs(prime_all, GiNaC::subs_options::no_pattern)});
 }
 
 GiNaC::numeric exact(double value)
@@ -185,30 +194,32 @@ std::set<std::string> names_in(const GiNaC::ex& e, const symbol_table& symbols)
 }
 
 template <class Screen, class Confirm>
-std::vector<std::string> search(std::vector<candidate> all, Screen screen, Confirm confirm)
+std::vector<finding> search(std::vector<candidate> all, const symbol_table& symbols, Screen screen, Confirm confirm)
 {
     // The smallest kind of change that works, every edit of that kind that does.
     std::stable_sort(all.begin(), all.end(),
                      [](const candidate& a, const candidate& b) { return a.priority < b.priority; });
-    std::vector<std::string> found;
+    // Sorted and told apart by their text, so that the report is the same on every run.
+    std::map<std::string, finding> found;
     int best = 0;
     for (const candidate& c : all) {
         if (best && c.priority > best)
             break;
         if (screen(c.edited) && confirm(c.edited)) {
-            const std::string change = c.change();
-            if (std::find(found.begin(), found.end(), change) == found.end())
-                found.push_back(change);
+            finding change = c.change();
+            found.emplace(plain_text(change, symbols), std::move(change));
             best = c.priority;
         }
     }
-    std::sort(found.begin(), found.end());
-    return found;
+    std::vector<finding> out;
+    for (auto& [text, change] : found)
+        out.push_back(std::move(change));
+    return out;
 }
 
 } // namespace
 
-std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
+std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                               const symbol_table& symbols, const resolver& resolve,
                                               proof_cache& run)
 {
@@ -233,10 +244,10 @@ std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const Gi
     auto confirm = [&](const GiNaC::ex& edited) {
         return prove_equal(resolve(edited), derived, symbols, run).what == verdict::status::proven;
     };
-    return search(all, screen, confirm);
+    return search(all, symbols, screen, confirm);
 }
 
-std::vector<std::string> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
+std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                             const symbol_table& symbols, const resolver& resolve,
                                             proof_cache& run)
 {
@@ -267,7 +278,7 @@ std::vector<std::string> reconcile_equation(const GiNaC::ex& printed, const GiNa
     auto confirm = [&](const GiNaC::ex& edited) {
         return prove_equivalent(resolve(edited), resolve(derived), symbols, run).what == verdict::status::proven;
     };
-    return search(all, screen, confirm);
+    return search(all, symbols, screen, confirm);
 }
 
 } // namespace impact::engine

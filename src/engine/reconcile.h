@@ -11,6 +11,7 @@
 // normal(); the list is sorted, so the report is the same on every run.
 #pragma once
 
+#include "engine/finding.h"
 #include "engine/sign.h"
 #include "engine/symbols.h"
 
@@ -27,13 +28,13 @@ namespace impact::engine {
 using resolver = std::function<GiNaC::ex(const GiNaC::ex&)>;
 
 /// Single edits of `printed` (an expression) that make it equal to `derived`.
-std::vector<std::string> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
+std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                               const symbol_table& symbols, const resolver& resolve,
                                               proof_cache& run);
 
 /// Single edits of the equation `printed` (a relational) that make it equivalent to
 /// `derived` (equal up to a non-zero constant factor between lhs − rhs of the two).
-std::vector<std::string> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
+std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                             const symbol_table& symbols, const resolver& resolve,
                                             proof_cache& run);
 

@@ -204,8 +204,14 @@ private:
                 s.positive = squares.positive;
                 s.negative = squares.negative;
                 s.zero = squares.zero;
-                return {s, fmt::format("A - B with A, B >= 0 and A^2 - B^2 = {} {}", text(factored(difference)),
-                                       squares.describe())};
+                sign_reason reason(fmt::format("A - B with A, B >= 0 and A^2 - B^2 = {} {}",
+                                               text(factored(difference)), squares.describe()));
+                reason.typeset.say("a difference of non-negative terms whose squares differ by ")
+                    .math(factored(difference))
+                    .say(squares.negative ? ", which is negative"
+                         : squares.zero   ? ", which is not negative"
+                                          : ", which is positive");
+                return {s, reason};
             }
         }
         return {r, "a sum of terms of unknown sign"};
@@ -286,8 +292,11 @@ private:
         r.negative = least < 0;
         r.positive = most > 0;
         r.zero = (least < 0 && most > 0) || (least == 0 && !least_open) || (most == 0 && !most_open);
-        return std::make_pair(r, fmt::format("linear in {} in {}: {} and {} at the ends", text(only),
-                                             d.to_string(), text(low), text(high)));
+        sign_reason reason(fmt::format("linear in {} in {}: {} and {} at the ends", text(only), d.to_string(),
+                                       text(low), text(high)));
+        reason.typeset.say("linear in ").math(only).say(", ").math(low).say(" and ").math(high).say(
+            " at the ends of its domain");
+        return std::make_pair(r, reason);
     }
 
     GiNaC::ex factored(const GiNaC::ex& e) const

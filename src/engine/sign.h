@@ -11,6 +11,8 @@
 // factor's sign is kept as the proof text.
 #pragma once
 
+#include "engine/finding.h"
+
 #include "engine/order.h"
 #include "engine/symbols.h"
 
@@ -48,6 +50,7 @@ struct sign_reason {
     sign_reason(const char* text) : words(text) {}             // NOLINT
 
     std::string words;
+    finding typeset;                    ///< the same words with their mathematics, when it has any
     std::optional<GiNaC::ex> declared;
     std::string domain;
 };

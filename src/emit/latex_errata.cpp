@@ -1,0 +1,236 @@
+// The paper held to account, typeset: prose with its mathematics, the findings of the
+// engine (words and the expressions and dimensions they name), and the rows of the
+// report's errata table, with the forms too wide for a cell set as numbered displays
+// under the table.
+#include "emit/latex.h"
+#include "emit/latex_parts.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace impact::emit {
+namespace {
+
+// The width of a table cell's math, set in 8 pt inline: about 0.75 of its displayed width.
+double cell_width(const std::string& math)
+{
+    return 0.75 * latex_width(math);
+}
+
+// Inline math in a table cell breaks after + - = at its outer level, never inside
+// \frac or \sqrt: such math must fit its column whole.
+bool fits(const std::string& math, double column_pt)
+{
+    const bool unbreakable = math.find("\\frac") != std::string::npos || math.find("\\sqrt") != std::string::npos;
+    return !(unbreakable && cell_width(math) > column_pt - 4) && math.find("\\frac{\\frac") == std::string::npos;
+}
+
+// A dimension as a physicist names it, with its SI unit: "a momentum
+// ($\mathrm{kg\,m\,s^{-1}}$)", "$\mathrm{kg^{-1}}$", "a pure number".
+std::string dimension_latex(const engine::dimension& d)
+{
+    if (d.is_pure_number())
+        return "a pure number";
+    const auto name = d.familiar_name();
+    const std::string unit = detail::si_unit_latex(d);
+    return name ? *name + " (" + unit + ")" : unit;
+}
+
+} // namespace
+
+std::string latex_prose(const std::string& text)
+{
+    // `$...$` is mathematics already; an unmatched `$` is a dollar sign.
+    std::string out;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t open = text.find('$', at);
+        const std::size_t close = open == std::string::npos ? open : text.find('$', open + 1);
+        if (close == std::string::npos) {
+            out += latex_text(text.substr(at));
+            break;
+        }
+        out += latex_text(text.substr(at, open - at)) + text.substr(open, close - open + 1);
+        at = close + 1;
+    }
+    return out;
+}
+
+std::string finding_latex(const engine::finding& f, const term_order& order)
+{
+    std::string out;
+    for (const engine::finding::part& p : f.parts) {
+        switch (p.what) {
+        case engine::finding::part::kind::words: out += latex_prose(p.words); break;
+        case engine::finding::part::kind::math:
+            out += "$" +
+                   (GiNaC::is_a<GiNaC::relational>(p.value)
+                        ? latex(p.value.lhs(), order) + " = " + latex(p.value.rhs(), order)
+                        : latex(p.value, order)) +
+                   "$";
+            break;
+        case engine::finding::part::kind::tends:
+            out += "$" + latex(p.value, order) + " \\to " + (p.point ? latex(*p.point, order) : "\\infty") + "$";
+            break;
+        case engine::finding::part::kind::dimension: out += dimension_latex(p.dim); break;
+        }
+    }
+    return out;
+}
+
+std::string comparison_verdict(const engine::paper_comparison& p)
+{
+    switch (p.agreement.what) {
+    case engine::verdict::status::proven: return "agrees";
+    case engine::verdict::status::sampled: return "undecided";
+    case engine::verdict::status::failed: break;
+    }
+    return "disagrees";
+}
+
+namespace detail {
+
+// The words of a comparison's findings, in LaTeX, joined by semicolons.
+std::string fragment_writer::findings(const engine::paper_comparison& p) const
+{
+    std::vector<std::string> said;
+    for (const engine::finding& f : p.findings)
+        said.push_back(finding_latex(f, order_));
+    std::string out;
+    for (const std::string& s : said)
+        out += (out.empty() ? "" : "; ") + s;
+    return out;
+}
+
+// What a comparison is about: the quantity's symbol, an equation's name in words, or
+// "claim".
+std::string fragment_writer::subject(const engine::paper_comparison& p) const
+{
+    if (p.what == engine::paper_comparison::kind::claim)
+        return "claim";
+    if (const engine::quantity* q = d_.symbols.find(p.subject); q && p.what == engine::paper_comparison::kind::result)
+        return "$" + math(q->symbol) + "$";
+    std::string name = p.subject;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    return latex_text(name) + " (equation)";
+}
+
+// The derived form to set beside a printed one: the result as its file displays it
+// (in the variables the paper prints it in), else as derived.
+std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const engine::paper_comparison& p) const
+{
+    if (p.what == engine::paper_comparison::kind::result)
+        if (const engine::result* r = d_.find_result(p.subject))
+            return {r->display, &r->written};
+    return {p.derived, nullptr};
+}
+
+// An expression or an equation as a display, broken over lines.
+std::string fragment_writer::shown(const GiNaC::ex& e, const written_form* w) const
+{
+    if (e.info(GiNaC::info_flags::relation))
+        return display(math(e.lhs(), w), "=", e.rhs(), w);
+    return display("", "", e, w);
+}
+
+// The paper comparisons as rows of the report's errata table. A disagreement that the
+// same finding explains in several consecutive components (Eq. 9's lab-frame
+// components of one line) is one row; forms wider than their column are set under the
+// table as numbered displays (T1), (T2), ...
+void fragment_writer::errata_rows(errata_table& table) const
+{
+    constexpr double printed_pt = 122, derived_pt = 99, change_pt = 78;
+    const auto& all = d_.paper_checks;
+    std::vector<bool> done(all.size(), false);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (done[i])
+            continue;
+        const engine::paper_comparison& p = all[i];
+        // The components that share this row's misprint: the same equation, the same finding.
+        std::vector<std::size_t> group = {i};
+        if (!p.agrees() && !p.reconciliations.empty())
+            for (std::size_t j = i + 1; j < all.size(); ++j)
+                if (!done[j] && !all[j].agrees() && all[j].paper == p.paper && all[j].what == p.what &&
+                    all[j].reconciliations == p.reconciliations) {
+                    group.push_back(j);
+                    done[j] = true;
+                }
+        std::vector<std::string> subjects;
+        for (std::size_t k : group)
+            subjects.push_back(subject(all[k]));
+        const std::string verdict = comparison_verdict(p);
+
+        std::string printed, printed_math;
+        if (p.what == engine::paper_comparison::kind::claim)
+            printed = "``" + latex_prose(p.printed_text) + "''";
+        else
+            printed_math = p.printed.info(GiNaC::info_flags::relation) ? relation_math(p.printed, &p.written)
+                                                                       : math(p.printed, &p.written);
+        const auto [derived, derived_written] = derived_form(p);
+        const bool show_derived = !p.agrees() && p.what != engine::paper_comparison::kind::claim;
+        const std::string derived_math = !show_derived ? ""
+                                         : derived.info(GiNaC::info_flags::relation)
+                                             ? relation_math(derived, derived_written)
+                                             : math(derived, derived_written);
+        std::string change = p.agrees() ? (p.what == engine::paper_comparison::kind::claim ? "proven"
+                                           : p.what == engine::paper_comparison::kind::given
+                                               ? "proven equivalent"
+                                               : "proven equal")
+                                        : findings(p);
+        if (change.empty())
+            change = verdict == "undecided" ? "neither proven nor refuted" : "no single edit; see the derived form";
+        if (group.size() > 1)
+            change += fmt::format("; one misprint, in each of the {} components", group.size());
+
+        bool to_display = (!printed_math.empty() && !fits(printed_math, printed_pt)) ||
+                          (!derived_math.empty() && !fits(derived_math, derived_pt));
+        for (const engine::finding& f : p.findings)
+            for (const engine::finding::part& part : f.parts)
+                if (part.what == engine::finding::part::kind::math &&
+                    !fits(part.value.info(GiNaC::info_flags::relation) ? relation_math(part.value)
+                                                                       : math(part.value),
+                          change_pt))
+                    to_display = true;
+        std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;
+        std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
+        std::string change_cell = change;
+        if (to_display) {
+            const std::string mark = fmt::format("(T{})", ++table.displayed);
+            const std::string see = "display " + mark + " below";
+            table.displays += fmt::format("\\item[{}] {}, {}: ", mark, paper_text(p.paper), listing(subjects));
+            if (!printed_math.empty()) {
+                table.displays += "printed" + shown(p.printed, &p.written);
+                printed_cell = see;
+            } else {
+                table.displays += "the paper says " + printed + ".";
+            }
+            if (!derived_math.empty()) {
+                table.displays += "Derived" + shown(derived, derived_written);
+                derived_cell = see;
+            }
+            if (!p.agrees()) {
+                table.displays += (derived_math.empty() ? " " : "") + capitalised(change) + ".\n";
+                change_cell = see;
+            } else {
+                table.displays += "It agrees (" + change + ").\n";
+            }
+        }
+        table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & {} & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
+                                  latex_label(d_), listing(subjects),
+                                  p.agrees() ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
+                                  change_cell);
+    }
+}
+
+} // namespace detail
+
+errata_table latex_errata(const std::vector<const engine::derivation*>& derivations)
+{
+    errata_table table;
+    for (const engine::derivation* d : derivations)
+        detail::fragment_writer(*d).errata_rows(table);
+    return table;
+}
+
+} // namespace impact::emit

@@ -1,0 +1,67 @@
+// A finding about one of the paper's printed forms (the smallest change that reconciles
+// it with what is derived, a dimensional inconsistency, the regime where a claim holds
+// instead), kept as words and the mathematics they mention, so that each emitter
+// typesets it in its own way: plain text for the terminal and JSON, LaTeX for the report.
+// No later stage reads the words back.
+#pragma once
+
+#include "engine/dimension.h"
+
+#include <ginac/ginac.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impact::engine {
+
+class symbol_table;
+
+struct finding {
+    struct part {
+        enum class kind {
+            words,      ///< plain prose
+            math,       ///< an expression (or an equation) of the derivation's symbols
+            tends,      ///< `value` tends to `point` (or to infinity when `point` is empty)
+            dimension,  ///< a physical dimension, named as a physicist names it
+        };
+        kind what = kind::words;
+        std::string words;
+        GiNaC::ex value;
+        std::optional<GiNaC::ex> point;
+        engine::dimension dim;
+    };
+    std::vector<part> parts;
+
+    finding& say(std::string text)
+    {
+        parts.push_back({part::kind::words, std::move(text), {}, {}, {}});
+        return *this;
+    }
+    finding& math(const GiNaC::ex& e)
+    {
+        parts.push_back({part::kind::math, {}, e, {}, {}});
+        return *this;
+    }
+    finding& tends(const GiNaC::ex& symbol, std::optional<GiNaC::ex> point)
+    {
+        parts.push_back({part::kind::tends, {}, symbol, std::move(point), {}});
+        return *this;
+    }
+    finding& of_dimension(const engine::dimension& d)
+    {
+        parts.push_back({part::kind::dimension, {}, {}, {}, d});
+        return *this;
+    }
+    /// A finding that is one piece of prose.
+    static finding words(std::string text) { return finding().say(std::move(text)); }
+};
+
+/// The finding as plain text, expressions in the file's syntax: "the sign of the term
+/// M*eps*(v_M-v_m)", "a momentum (mass*length/time) where an energy ... belongs".
+std::string plain_text(const finding& f, const symbol_table& symbols);
+
+/// Each finding as plain text.
+std::vector<std::string> plain_texts(const std::vector<finding>& found, const symbol_table& symbols);
+
+} // namespace impact::engine
