@@ -49,6 +49,9 @@ std::vector<std::string> divisors_in_range(const cxx_code& code);
 /// A guard's condition (the value compared with 0), written as the test that fails.
 std::string condition_failure(const std::string& value, const engine::kernel_guard& g);
 
+/// The hand-written part of common.hpp: src/emit/kernel_prelude.hpp, as CMake embeds it.
+extern const char* const kernel_prelude;
+
 /// The scalar kernel, its result structure and documentation; then its batch form.
 void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan);
 /// The batch kernel of a kernel with `batch = true`.

@@ -2,6 +2,9 @@
 // What Impact's kernels share.
 #pragma once
 
+// The part of impact/common.hpp written by hand, copied into it after its banner
+// (src/emit/kernel_prelude.hpp in Impact's sources): the standard headers the kernels
+// use, and the macros that let compilers vectorise, prefetch and inline them.
 #include <array>
 #include <cmath>
 #include <cstddef>
