@@ -13,22 +13,19 @@
 #include <set>
 #include <sstream>
 
-#define TOML_EXCEPTIONS 1
-#include <toml++/toml.h>
+#include "spec/table_reader.h"
 
 namespace impact::spec {
 namespace {
+
+using detail::location_of;
+using detail::table_reader;
 
 // A derivation is a page of text; anything much larger is a mistake.
 constexpr std::size_t max_file_bytes = 1 << 20;
 // Ids become file names.
 constexpr std::size_t max_id_length = 64;
 
-source_location location_of(const std::string& file, const toml::source_region& region)
-{
-    return {file, static_cast<std::uint32_t>(region.begin.line),
-            static_cast<std::uint32_t>(region.begin.column)};
-}
 
 // TOML is text: a NUL or another control character (tab and line breaks aside) means
 // the file is something else, reported at the first such byte.
@@ -62,191 +59,6 @@ void check_id(const text& id)
         throw error(id.where, fmt::format("id '{}...' is longer than {} characters", id.value.substr(0, 16),
                                           max_id_length));
 }
-
-// Walks one TOML table, remembering which keys were read so that a misspelt key
-// is reported instead of silently ignored.
-class table_reader {
-public:
-    table_reader(const toml::table& table, std::string file, std::string context)
-        : table_(table), file_(std::move(file)), context_(std::move(context))
-    {
-    }
-
-    source_location where() const { return location_of(file_, table_.source()); }
-
-    bool has(std::string_view key) const { return table_.contains(key); }
-
-    text required_string(std::string_view key)
-    {
-        const toml::node* node = find(key);
-        if (!node)
-            throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
-        return as_text(*node, key);
-    }
-
-    std::optional<text> optional_string(std::string_view key)
-    {
-        const toml::node* node = find(key);
-        if (!node)
-            return std::nullopt;
-        return as_text(*node, key);
-    }
-
-    text string_or(std::string_view key, std::string fallback)
-    {
-        if (auto value = optional_string(key))
-            return *value;
-        return {std::move(fallback), where()};
-    }
-
-    std::vector<text> string_array(std::string_view key, bool required)
-    {
-        const toml::node* node = find(key);
-        if (!node) {
-            if (required)
-                throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
-            return {};
-        }
-        const toml::array* array = node->as_array();
-        if (!array)
-            throw error(location_of(file_, node->source()),
-                        fmt::format("'{}' in {} must be an array of strings", key, context_));
-        std::vector<text> values;
-        for (const toml::node& element : *array)
-            values.push_back(as_text(element, key));
-        return values;
-    }
-
-    // `name = expression` strings, e.g. kernel outputs `v_M = v_M_after`.
-    std::vector<binding> binding_array(std::string_view key, bool required)
-    {
-        std::vector<binding> bindings;
-        for (const text& entry : string_array(key, required))
-            bindings.push_back(split_binding(entry, key));
-        return bindings;
-    }
-
-    // A table of `name = "expression"` pairs, e.g. `at = { eps = "1" }`.
-    std::vector<binding> binding_table(std::string_view key)
-    {
-        const toml::node* node = find(key);
-        if (!node)
-            return {};
-        const toml::table* table = node->as_table();
-        if (!table)
-            throw error(location_of(file_, node->source()),
-                        fmt::format("'{}' in {} must be a table such as {{ eps = \"1\" }}", key, context_));
-        std::vector<binding> bindings;
-        for (const auto& [name, value] : *table) {
-            text expression = as_text(value, key);
-            bindings.push_back({{std::string(name.str()), location_of(file_, name.source())},
-                                std::move(expression)});
-        }
-        return bindings;
-    }
-
-    // An array of tables (`[[given]]` or `given = [{...}, ...]`).
-    std::vector<const toml::table*> table_array(std::string_view key)
-    {
-        const toml::node* node = find(key);
-        if (!node)
-            return {};
-        const toml::array* array = node->as_array();
-        if (!array)
-            throw error(location_of(file_, node->source()),
-                        fmt::format("'{}' must be an array of tables ([[{}]])", key, key));
-        std::vector<const toml::table*> tables;
-        for (const toml::node& element : *array) {
-            const toml::table* table = element.as_table();
-            if (!table)
-                throw error(location_of(file_, element.source()),
-                            fmt::format("each entry of '{}' must be a table", key));
-            tables.push_back(table);
-        }
-        return tables;
-    }
-
-    binding split(const text& entry, std::string_view key) const { return split_binding(entry, key); }
-
-    double required_number(std::string_view key)
-    {
-        const toml::node* node = find(key);
-        if (!node)
-            throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
-        if (const auto value = node->value<double>())
-            return *value;
-        throw error(location_of(file_, node->source()), fmt::format("'{}' in {} must be a number", key, context_));
-    }
-
-    source_location where_of(std::string_view key) const
-    {
-        if (const toml::node* node = table_.get(key))
-            return location_of(file_, node->source());
-        return where();
-    }
-
-    /// A reader for a table inside this one (`[[kernel.bound]]`).
-    table_reader nested(const toml::table& table, std::string context) const
-    {
-        return table_reader(table, file_, std::move(context));
-    }
-
-    std::optional<bool> optional_bool(std::string_view key)
-    {
-        const toml::node* node = find(key);
-        if (!node)
-            return std::nullopt;
-        if (const auto* value = node->as_boolean())
-            return value->get();
-        throw error(location_of(file_, node->source()), fmt::format("'{}' in {} must be true or false", key, context_));
-    }
-
-    // Every key must have been read: an unknown key is most likely a typo.
-    void finish() const
-    {
-        for (const auto& [key, value] : table_) {
-            if (!read_.count(std::string(key.str())))
-                throw error(location_of(file_, key.source()),
-                            fmt::format("unknown field '{}' in {}", key.str(), context_));
-        }
-    }
-
-private:
-    const toml::node* find(std::string_view key)
-    {
-        read_.insert(std::string(key));
-        return table_.get(key);
-    }
-
-    text as_text(const toml::node& node, std::string_view key) const
-    {
-        const auto* value = node.as_string();
-        if (!value)
-            throw error(location_of(file_, node.source()),
-                        fmt::format("'{}' in {} must be a string", key, context_));
-        return {value->get(), location_of(file_, node.source())};
-    }
-
-    binding split_binding(const text& entry, std::string_view key) const
-    {
-        const auto equals = entry.value.find('=');
-        if (equals == std::string::npos)
-            throw error(entry.where, fmt::format("'{}' entry \"{}\" must read 'name = expression'",
-                                                 key, entry.value));
-        auto trim = [](std::string s) {
-            const auto first = s.find_first_not_of(" \t");
-            const auto last = s.find_last_not_of(" \t");
-            return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
-        };
-        return {{trim(entry.value.substr(0, equals)), entry.where},
-                {trim(entry.value.substr(equals + 1)), entry.where}};
-    }
-
-    const toml::table& table_;
-    std::string file_;
-    std::string context_;
-    std::set<std::string> read_;
-};
 
 symbol read_symbol(table_reader& in)
 {
