@@ -1,0 +1,406 @@
+// The example derivation files of the README's reference (tests/examples/): each derived,
+// every check proven, the key results against closed forms typed here; together they use
+// every kind of step, check and kernel option. And the reference itself: the README's
+// "Derivation files" section documents every field the reader accepts, and no other.
+//
+// The examples are written for these tests, not from the paper (a ball, a spring, a
+// pendulum, a seesaw, a puck); the expected results are textbook mechanics.
+#define BOOST_TEST_MODULE test_examples
+#include <boost/test/unit_test.hpp>
+
+#include "engine/library.h"
+#include "pipeline/regenerate.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace impact;
+
+// Derived once for every test case: deriving the five files takes a fraction of a second.
+const engine::library& examples()
+{
+    static const engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/tests/examples"));
+    return lib;
+}
+
+const engine::derivation& example(const std::string& id)
+{
+    const auto found = examples().derived.find(id);
+    BOOST_REQUIRE_MESSAGE(found != examples().derived.end(), "no example " + id);
+    return found->second;
+}
+
+GiNaC::ex sym(const engine::derivation& d, const std::string& name)
+{
+    const engine::quantity* q = d.symbols.find(name);
+    BOOST_REQUIRE_MESSAGE(q, "no symbol " + name + " in " + d.id());
+    return q->symbol;
+}
+
+GiNaC::ex value_of(const engine::derivation& d, const std::string& name)
+{
+    const engine::result* r = d.find_result(name);
+    BOOST_REQUIRE_MESSAGE(r, "no result " + name + " in " + d.id());
+    return r->value;
+}
+
+bool equal(const GiNaC::ex& a, const GiNaC::ex& b)
+{
+    return GiNaC::normal(GiNaC::expand(a - b)).is_zero();
+}
+
+const engine::check_result& check_named(const engine::derivation& d, const std::string& name)
+{
+    for (const engine::check_result* c : d.all_checks())
+        if (c->name == name)
+            return *c;
+    BOOST_FAIL("no check " + name + " in " + d.id());
+    throw;
+}
+
+const engine::kernel& kernel_named(const engine::derivation& d, const std::string& name)
+{
+    for (const engine::kernel& k : d.kernels)
+        if (k.name == name)
+            return k;
+    BOOST_FAIL("no kernel " + name + " in " + d.id());
+    throw;
+}
+
+const engine::kernel_output& output_named(const engine::kernel& k, const std::string& member)
+{
+    for (const engine::kernel_output& o : k.outputs)
+        if (o.member == member)
+            return o;
+    BOOST_FAIL("no output " + member + " in kernel " + k.name);
+    throw;
+}
+
+// The solutions a step kept or rejected, for the step that solved for `unknown`.
+const engine::step_result& step_solving(const engine::derivation& d, const std::string& unknown)
+{
+    const GiNaC::ex u = sym(d, unknown);
+    for (const engine::step_result& s : d.steps)
+        if (s.what == spec::step::kind::solve)
+            for (const auto& [symbol, value] : s.values)
+                if (symbol.is_equal(u))
+                    return s;
+    BOOST_FAIL("no step solves for " + unknown + " in " + d.id());
+    throw;
+}
+
+std::string read_text(const std::string& path)
+{
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(test_examples)
+
+BOOST_AUTO_TEST_CASE(every_example_is_derived_with_every_check_proven)
+{
+    const std::set<std::string> expected = {"pendulum", "pushed_puck", "seesaw", "spring", "thrown_ball"};
+    BOOST_TEST((std::set<std::string>(examples().order.begin(), examples().order.end()) == expected));
+    for (const std::string& id : examples().order) {
+        const engine::derivation& d = example(id);
+        BOOST_TEST(!d.all_checks().empty(), id);
+        // Proven, not sampled: every step's checks, every display form, every [[check]].
+        for (const engine::check_result* c : d.all_checks())
+            BOOST_TEST((c->outcome.what == engine::verdict::status::proven), id + ": " + c->name + " is "
+                                                                                 + engine::to_string(c->outcome));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_examples_use_every_kind_of_step_check_and_kernel_option)
+{
+    std::set<spec::step::kind> steps;
+    bool solve_rejects_by_condition = false, solve_rejects_by_domain = false;
+    bool inequality = false, at = false, left_at = false, limit_to_point = false, limit_to_infinity = false,
+         assuming = false;
+    bool claim = false, use = false, new_base = false, named_combination = false;
+    bool array_input = false, renamed_scalar = false, velocities = false, relative = false, velocity = false,
+         velocity_times = false, forms = false, parameter_guard = false, guard_below = false,
+         guard_above = false, substitute = false, let = false, batch = false, bound_for_all = false,
+         bound_for_one_type = false;
+    for (const std::string& id : examples().order) {
+        const engine::derivation& d = example(id);
+        const spec::derivation& s = d.source;
+        for (const engine::step_result& st : d.steps) {
+            steps.insert(st.what);
+            for (const engine::solution& sol : st.solutions) {
+                solve_rejects_by_condition |= sol.outcome == engine::solution::fate::condition;
+                solve_rejects_by_domain |= sol.outcome == engine::solution::fate::outside_domain;
+            }
+        }
+        for (const spec::check& c : s.checks) {
+            inequality |= c.claim.value.find('<') != std::string::npos || c.claim.value.find('>') != std::string::npos;
+            at |= !c.at.empty();
+            left_at |= !c.left_at.empty();
+            limit_to_point |= c.limit && !c.limit->to_infinity;
+            limit_to_infinity |= c.limit && c.limit->to_infinity;
+            assuming |= !c.assuming.empty();
+        }
+        claim |= !s.claims.empty();
+        use |= !s.uses.empty();
+        for (const spec::dimension& dim : s.dimensions)
+            (dim.as ? named_combination : new_base) = true;
+        for (const spec::kernel& k : s.kernels) {
+            for (const spec::kernel_value& input : k.inputs) {
+                array_input |= input.is_array;
+                renamed_scalar |= !input.is_array && input.name.value != input.components.front().value;
+            }
+            velocities |= !k.velocities.empty();
+            for (const spec::error_scale& e : k.error) {
+                relative |= e.relative;
+                velocity |= !e.relative && !e.factor;
+                velocity_times |= !e.relative && e.factor.has_value();
+            }
+            forms |= !k.forms.empty();
+            for (const spec::kernel_guard& g : k.guards) {
+                parameter_guard |= !g.condition;
+                guard_below |= g.condition && g.condition->value.find('<') != std::string::npos;
+                guard_above |= g.condition && g.condition->value.find('>') != std::string::npos;
+            }
+            substitute |= !k.substitute.empty();
+            let |= !k.let.empty();
+            batch |= k.batch;
+            for (const spec::error_bound& b : k.bounds)
+                (b.type ? bound_for_one_type : bound_for_all) = true;
+        }
+    }
+    BOOST_TEST(steps.size() == 4u);
+    BOOST_TEST(solve_rejects_by_condition);
+    BOOST_TEST(solve_rejects_by_domain);
+    BOOST_TEST(inequality);
+    BOOST_TEST(at);
+    BOOST_TEST(left_at);
+    BOOST_TEST(limit_to_point);
+    BOOST_TEST(limit_to_infinity);
+    BOOST_TEST(assuming);
+    BOOST_TEST(claim);
+    BOOST_TEST(use);
+    BOOST_TEST(new_base);
+    BOOST_TEST(named_combination);
+    BOOST_TEST(array_input);
+    BOOST_TEST(renamed_scalar);
+    BOOST_TEST(velocities);
+    BOOST_TEST(relative);
+    BOOST_TEST(velocity);
+    BOOST_TEST(velocity_times);
+    BOOST_TEST(forms);
+    BOOST_TEST(parameter_guard);
+    BOOST_TEST(guard_below);
+    BOOST_TEST(guard_above);
+    BOOST_TEST(substitute);
+    BOOST_TEST(let);
+    BOOST_TEST(batch);
+    BOOST_TEST(bound_for_all);
+    BOOST_TEST(bound_for_one_type);
+}
+
+BOOST_AUTO_TEST_CASE(a_ball_thrown_up_at_w_lands_after_2w_over_g)
+{
+    const engine::derivation& d = example("thrown_ball");
+    const GiNaC::ex w = sym(d, "w"), g = sym(d, "g"), T = sym(d, "T");
+    BOOST_TEST(equal(value_of(d, "t_top"), w / g));
+    BOOST_TEST(equal(value_of(d, "T"), 2 * w / g));
+    BOOST_TEST(equal(value_of(d, "H"), w * w / (2 * g)));
+    // The quadratic's other root, the launch, rejected by the step's condition.
+    const engine::step_result& landing = step_solving(d, "T");
+    BOOST_TEST_REQUIRE(landing.solutions.size() == 2u);
+    const engine::solution& launch = landing.solutions[0].kept() ? landing.solutions[1] : landing.solutions[0];
+    BOOST_TEST((launch.outcome == engine::solution::fate::condition));
+    BOOST_TEST(launch.values.front().first.is_equal(T));
+    BOOST_TEST(launch.values.front().second.is_zero());
+    BOOST_TEST(launch.why == "T = 0 is the launch, not the landing");
+}
+
+BOOST_AUTO_TEST_CASE(the_fictional_textbook_is_right_once_and_wrong_once)
+{
+    const engine::derivation& d = example("thrown_ball");
+    BOOST_TEST_REQUIRE(d.paper_checks.size() == 2u);
+    // "A ball spends as long rising as it does falling": true.
+    BOOST_TEST(d.paper_checks[0].subject == "book_time_up_is_half_the_flight");
+    BOOST_TEST(d.paper_checks[0].agrees());
+    // "Twice as fast, twice as high": the height grows with the square, a finding, not a
+    // failed check (the derivation holds).
+    BOOST_TEST(d.paper_checks[1].subject == "book_twice_as_fast_twice_as_high");
+    BOOST_TEST(!d.paper_checks[1].agrees());
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_spring_oscillates_with_period_two_pi_root_m_over_k)
+{
+    const engine::derivation& d = example("spring");
+    const GiNaC::ex m = sym(d, "m"), k = sym(d, "k"), A = sym(d, "A"), pi = sym(d, "pi");
+    BOOST_TEST(equal(value_of(d, "T"), 2 * pi * GiNaC::sqrt(m / k)));
+    BOOST_TEST(equal(value_of(d, "v_max"), A * GiNaC::sqrt(k / m)));
+    BOOST_TEST(equal(value_of(d, "E"), k * A * A / 2));
+    // v_max = -A sqrt(k/m) solves the equations too; v_max's domain (positive) rejects it.
+    const engine::step_result& energy = step_solving(d, "v_max");
+    BOOST_TEST_REQUIRE(energy.solutions.size() == 2u);
+    const engine::solution& backwards = energy.solutions[0].kept() ? energy.solutions[1] : energy.solutions[0];
+    BOOST_TEST((backwards.outcome == engine::solution::fate::outside_domain));
+    BOOST_TEST(backwards.unknown.is_equal(sym(d, "v_max")));
+    // The limits: to infinity (a stiff spring) and to a point (a light mass).
+    BOOST_TEST(check_named(d, "a_stiff_spring_oscillates_fast").limit->to_infinity);
+    BOOST_TEST(!check_named(d, "a_light_mass_oscillates_fast").limit->to_infinity);
+}
+
+BOOST_AUTO_TEST_CASE(a_pendulum_is_a_spring_of_stiffness_m_g_over_l)
+{
+    const engine::derivation& d = example("pendulum");
+    const GiNaC::ex L = sym(d, "L"), g = sym(d, "g"), pi = sym(d, "pi");
+    BOOST_TEST(equal(value_of(d, "T"), 2 * pi * GiNaC::sqrt(L / g)));
+    BOOST_TEST(equal(value_of(d, "rate_max"), sym(d, "theta_0") * GiNaC::sqrt(g / L)));
+    // The spring's period, imported and evaluated at k = m g / L.
+    const engine::check_result& same = check_named(d, "a_spring_of_stiffness_m_g_over_L");
+    BOOST_TEST(same.at.size() == 1u);
+    BOOST_TEST(equal(same.lhs, 2 * pi * GiNaC::sqrt(L / g)));
+    // The dimensions it adds: rate_max is an angle per time.
+    BOOST_TEST(d.symbols.find("rate_max")->dim->to_string() == "angle/time");
+}
+
+BOOST_AUTO_TEST_CASE(on_a_balanced_seesaw_the_lighter_child_sits_further_out)
+{
+    const engine::derivation& d = example("seesaw");
+    const GiNaC::ex q = sym(d, "q"), L = sym(d, "L");
+    // m_1 d_1 = m_2 d_2 and d_1 + d_2 = L, with m_2 = q m_1.
+    BOOST_TEST(equal(value_of(d, "d_1"), q * L / (1 + q)));
+    BOOST_TEST(equal(value_of(d, "d_2"), L / (1 + q)));
+    // The quotient assumes its divisor, the second torque, non-zero.
+    const auto quotient = std::find_if(d.steps.begin(), d.steps.end(), [](const engine::step_result& s) {
+        return s.what == spec::step::kind::quotient;
+    });
+    BOOST_TEST_REQUIRE((quotient != d.steps.end()));
+    BOOST_TEST(quotient->assumptions.size() == 1u);
+    BOOST_TEST(check_named(d, "the_lighter_child_sits_further_out").assuming.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_pushed_puck_gains_the_impulse_of_the_force)
+{
+    const engine::derivation& d = example("pushed_puck");
+    const GiNaC::ex m = sym(d, "m"), t = sym(d, "t"), a_x = sym(d, "a_x"), a_y = sym(d, "a_y");
+    const GiNaC::ex v_x = sym(d, "v_x"), v_y = sym(d, "v_y");
+    BOOST_TEST(equal(value_of(d, "dp_x"), m * a_x * t));
+    // The work-energy theorem: W = m t (a.v) + m t^2 |a|^2 / 2.
+    BOOST_TEST(equal(value_of(d, "W"), m * t * (a_x * v_x + a_y * v_y) + m * t * t * (a_x * a_x + a_y * a_y) / 2));
+
+    const engine::kernel& push = kernel_named(d, "push");
+    // Its velocity in the kernel's inputs, a = F/m substituted: v + F t / m.
+    const GiNaC::ex F_x = sym(d, "F_x");
+    BOOST_TEST(equal(output_named(push, "v").values[0], v_x + F_x * t / m));
+    BOOST_TEST(push.find_parameter("duration")->components.front().name == "t");
+    BOOST_TEST(push.find_parameter("F")->is_array);
+    BOOST_TEST(push.guards.size() == 4u);
+    BOOST_TEST(push.lets.size() == 1u);
+    BOOST_TEST((output_named(push, "v").error == engine::kernel_output::scale::velocity));
+    BOOST_TEST(equal(output_named(push, "dp").scale_factor, m));
+    BOOST_TEST((output_named(push, "E_push").error == engine::kernel_output::scale::relative));
+    // [[kernel.bound]] with a type: 5 ulps in float, the default 4 in double and long double.
+    BOOST_TEST(output_named(push, "E_push").bound_ulps[0] == 5.0);
+    BOOST_TEST(output_named(push, "E_push").bound_ulps[1] == 4.0);
+    BOOST_TEST(output_named(push, "E_push").bound_ulps[2] == 4.0);
+    BOOST_TEST(kernel_named(d, "push_velocity").batch);
+}
+
+BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
+{
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(examples(), &missed);
+    BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
+    std::string all;
+    for (const auto& [path, text] : files)
+        all += text;
+    for (const char* function : {"spring_motion(", "push(", "push_velocity(", "push_velocity_batch("})
+        BOOST_TEST(all.find(function) != std::string::npos, function);
+    // Every status a guard names, and out_of_range, which a kernel with a status adds.
+    BOOST_TEST(all.find("enum class status : std::int64_t { ok, invalid_input, non_finite, no_force, "
+                        "pulled_back, out_of_range };") != std::string::npos);
+}
+
+// Every key reader.cpp accepts, by table, typed from reading it (src/spec/reader.cpp:
+// parse_derivation, read_symbol, read_dimension, read_given, read_step, read_result,
+// read_check_fields, read_claim, read_kernel, read_use). A field added there fails this
+// test until the README documents it.
+const std::map<std::string, std::set<std::string>> fields_read = {
+    {"top level", {"id", "title", "paper", "summary"}},
+    {"[[use]]", {"derivation", "results"}},
+    {"[[dimension]]", {"name", "as"}},
+    {"[[symbol]]", {"name", "latex", "definition", "domain", "meaning", "dimension"}},
+    {"[[given]]", {"name", "equation", "because", "paper", "printed"}},
+    {"[[step]]", {"because", "solve", "for", "reject", "reject_because", "define", "as", "quotient", "name",
+                  "rearrange", "into"}},
+    {"[[result]]", {"name", "display", "paper", "printed"}},
+    {"[[check]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming"}},
+    {"[[claim]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming", "paper", "quote"}},
+    {"[[kernel]]", {"name", "inputs", "outputs", "velocities", "error", "forms", "guards", "substitute", "let",
+                    "batch"}},
+    {"[[kernel.bound]]", {"output", "type", "ulps", "because"}},
+};
+
+// The README's "## Derivation files" section: a `### ` heading per TOML table (its name in
+// backticks, or "The top level"), then a table whose rows start with the field in backticks.
+std::map<std::string, std::set<std::string>> fields_documented()
+{
+    const std::string readme = read_text(IMPACT_SOURCE_DIR "/README.md");
+    const auto start = readme.find("\n## Derivation files\n");
+    BOOST_REQUIRE(start != std::string::npos);
+    const auto end = readme.find("\n## ", start + 1);
+    std::istringstream section(readme.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    std::map<std::string, std::set<std::string>> documented;
+    std::string table, line;
+    auto in_backticks = [](const std::string& s) {
+        const auto open = s.find('`');
+        const auto close = open == std::string::npos ? open : s.find('`', open + 1);
+        return close == std::string::npos ? std::string() : s.substr(open + 1, close - open - 1);
+    };
+    while (std::getline(section, line)) {
+        if (line.rfind("### ", 0) == 0) {
+            const std::string named = in_backticks(line);
+            table = !named.empty() ? named : line.find("top level") != std::string::npos ? "top level" : "";
+            if (!table.empty())
+                documented[table];
+        } else if (!table.empty() && line.rfind("| `", 0) == 0) {
+            documented[table].insert(in_backticks(line));
+        }
+    }
+    return documented;
+}
+
+BOOST_AUTO_TEST_CASE(the_readme_documents_every_field_the_reader_accepts_and_no_other)
+{
+    const auto documented = fields_documented();
+    for (const auto& [table, fields] : fields_read) {
+        const auto found = documented.find(table);
+        BOOST_TEST_REQUIRE((found != documented.end()), "README documents no table " + table);
+        for (const std::string& field : fields)
+            BOOST_TEST(found->second.count(field) == 1u, table + ": field '" + field + "' is not documented");
+        for (const std::string& field : found->second)
+            BOOST_TEST(fields.count(field) == 1u, table + ": README documents '" + field + "', which the reader "
+                                                  "does not accept");
+    }
+    for (const auto& [table, fields] : documented)
+        BOOST_TEST(fields_read.count(table) == 1u, "README documents a table " + table + " the reader does not read");
+}
+
+BOOST_AUTO_TEST_CASE(the_readme_links_every_example)
+{
+    const std::string readme = read_text(IMPACT_SOURCE_DIR "/README.md");
+    for (const std::string& id : examples().order)
+        BOOST_TEST(readme.find("(tests/examples/" + id + ".toml)") != std::string::npos, id);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
