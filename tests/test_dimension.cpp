@@ -8,6 +8,8 @@
 #include "engine/dimension.h"
 #include "spec/derivation.h"
 
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -268,6 +270,22 @@ BOOST_AUTO_TEST_CASE(a_file_without_dimensions_still_derives_and_says_what_has_n
     BOOST_TEST(d.all_hold());
     // g, w, alpha, k, omega, T, R and every abbreviation of them: nothing to infer from.
     BOOST_TEST(engine::symbols_without_dimension(d.symbols).size() == 12u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(kernels)
+
+// The committed headers are what a regeneration writes (test_cli); their parameter
+// comments name the SI unit each input is expected in.
+BOOST_AUTO_TEST_CASE(kernel_parameters_name_their_units)
+{
+    std::ifstream in(IMPACT_SOURCE_DIR "/output/kernels/impact/collide_line.hpp");
+    const std::string header((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const char* line : {"///   M: mass of sphere M (positive, in kg)\n",
+                             "///   eps: Newton's coefficient of restitution ([0, 1], a pure number)\n"})
+        BOOST_TEST(header.find(line) != std::string::npos, line);
+    BOOST_TEST(header.find("(real, in m s^-1)") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

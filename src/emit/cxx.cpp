@@ -23,9 +23,14 @@ namespace cxx_detail {
 std::string describe(const engine::quantity& q)
 {
     std::string text = q.name;
-    if (!q.meaning.empty())
-        text += ": " + q.meaning;
-    return text + " (" + q.range.to_string() + ")";
+    // A meaning's math, $...$ in the derivation file, as Doxygen's \f$...\f$.
+    for (char c : q.meaning.empty() ? std::string() : ": " + q.meaning)
+        text += c == '$' ? std::string("\\f$") : std::string(1, c);
+    text += " (" + q.range.to_string();
+    // The unit expected, in SI (any consistent units do, the kernel being a formula).
+    if (q.dim)
+        text += q.dim->is_pure_number() ? ", a pure number" : ", in " + q.dim->si_unit();
+    return text + ")";
 }
 
 bool is_output(const engine::kernel& k, const std::string& name)

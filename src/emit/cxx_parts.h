@@ -11,7 +11,7 @@
 
 namespace impact::emit::cxx_detail {
 
-/// A quantity for the kernel's documentation: "M: mass of sphere M (positive)".
+/// A quantity for the kernel's documentation: "M: mass of sphere M (positive, in kg)".
 std::string describe(const engine::quantity& q);
 /// Whether the kernel writes the parameter `name` (an output named after an input).
 bool is_output(const engine::kernel& k, const std::string& name);

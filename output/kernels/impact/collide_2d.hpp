@@ -7,17 +7,17 @@
 namespace impact {
 
 /// collide(M, m, C_M, C_m, v_M, v_m, eps): Inelastic collision in a plane, Eq. 9.
-///   M: mass of sphere M (positive)
-///   m: mass of sphere m (positive)
-///   C_M: C_Mx: $x$-coordinate of the centre of M at contact (real)
-///   C_M: C_My: $y$-coordinate of the centre of M at contact (real)
-///   C_m: C_mx: $x$-coordinate of the centre of m at contact (real)
-///   C_m: C_my: $y$-coordinate of the centre of m at contact (real)
-///   v_M: v_Mx: $x$-component of M's velocity before the collision (lab frame) (real)
-///   v_M: v_My: $y$-component of M's velocity before the collision (lab frame) (real)
-///   v_m: v_mx: $x$-component of m's velocity before the collision (lab frame) (real)
-///   v_m: v_my: $y$-component of m's velocity before the collision (lab frame) (real)
-///   eps: Newton's coefficient of restitution ([0, 1])
+///   M: mass of sphere M (positive, in kg)
+///   m: mass of sphere m (positive, in kg)
+///   C_M: C_Mx: \f$x\f$-coordinate of the centre of M at contact (real, in m)
+///   C_M: C_My: \f$y\f$-coordinate of the centre of M at contact (real, in m)
+///   C_m: C_mx: \f$x\f$-coordinate of the centre of m at contact (real, in m)
+///   C_m: C_my: \f$y\f$-coordinate of the centre of m at contact (real, in m)
+///   v_M: v_Mx: \f$x\f$-component of M's velocity before the collision (lab frame) (real, in m s^-1)
+///   v_M: v_My: \f$y\f$-component of M's velocity before the collision (lab frame) (real, in m s^-1)
+///   v_m: v_mx: \f$x\f$-component of m's velocity before the collision (lab frame) (real, in m s^-1)
+///   v_m: v_my: \f$y\f$-component of m's velocity before the collision (lab frame) (real, in m s^-1)
+///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 /// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), compensated let": at most 2.78 ulps in double on 4200 samples.
 /// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 2.63 ulps in double on 4200 samples.
 /// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 3.50 ulps in double on 4200 samples.

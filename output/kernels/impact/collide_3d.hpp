@@ -7,21 +7,21 @@
 namespace impact {
 
 /// collide(M, m, C_M, C_m, v_M, v_m, eps): Collision of two spheres in space, footnote 10.
-///   M: mass of sphere M (positive)
-///   m: mass of sphere m (positive)
-///   C_M: C_Mx: $x$-coordinate of the centre of M at contact (real)
-///   C_M: C_My: $y$-coordinate of the centre of M at contact (real)
-///   C_M: C_Mz: $z$-coordinate of the centre of M at contact (real)
-///   C_m: C_mx: $x$-coordinate of the centre of m at contact (real)
-///   C_m: C_my: $y$-coordinate of the centre of m at contact (real)
-///   C_m: C_mz: $z$-coordinate of the centre of m at contact (real)
-///   v_M: v_Mx: $x$-component of M's velocity before the collision (real)
-///   v_M: v_My: $y$-component of M's velocity before the collision (real)
-///   v_M: v_Mz: $z$-component of M's velocity before the collision (real)
-///   v_m: v_mx: $x$-component of m's velocity before the collision (real)
-///   v_m: v_my: $y$-component of m's velocity before the collision (real)
-///   v_m: v_mz: $z$-component of m's velocity before the collision (real)
-///   eps: Newton's coefficient of restitution ([0, 1])
+///   M: mass of sphere M (positive, in kg)
+///   m: mass of sphere m (positive, in kg)
+///   C_M: C_Mx: \f$x\f$-coordinate of the centre of M at contact (real, in m)
+///   C_M: C_My: \f$y\f$-coordinate of the centre of M at contact (real, in m)
+///   C_M: C_Mz: \f$z\f$-coordinate of the centre of M at contact (real, in m)
+///   C_m: C_mx: \f$x\f$-coordinate of the centre of m at contact (real, in m)
+///   C_m: C_my: \f$y\f$-coordinate of the centre of m at contact (real, in m)
+///   C_m: C_mz: \f$z\f$-coordinate of the centre of m at contact (real, in m)
+///   v_M: v_Mx: \f$x\f$-component of M's velocity before the collision (real, in m s^-1)
+///   v_M: v_My: \f$y\f$-component of M's velocity before the collision (real, in m s^-1)
+///   v_M: v_Mz: \f$z\f$-component of M's velocity before the collision (real, in m s^-1)
+///   v_m: v_mx: \f$x\f$-component of m's velocity before the collision (real, in m s^-1)
+///   v_m: v_my: \f$y\f$-component of m's velocity before the collision (real, in m s^-1)
+///   v_m: v_mz: \f$z\f$-component of m's velocity before the collision (real, in m s^-1)
+///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 /// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), compensated let": at most 2.01 ulps in double on 4200 samples.
 /// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 3.04 ulps in double on 4200 samples.
 /// v_M[2] is computed in the form "v_Mz - k_impulse*m*(C_Mz - C_mz), compensated let": at most 3.18 ulps in double on 4200 samples.

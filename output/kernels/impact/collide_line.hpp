@@ -16,11 +16,11 @@ struct collide_line_result {
 };
 
 /// collide_line(M, m, v_M, v_m, eps): Inelastic collision along the line of action, Eq. 8.
-///   M: mass of sphere M (positive)
-///   m: mass of sphere m (positive)
-///   v_M: velocity of M along the line of action before the collision (real)
-///   v_m: velocity of m along the line of action before the collision (real)
-///   eps: Newton's coefficient of restitution ([0, 1])
+///   M: mass of sphere M (positive, in kg)
+///   m: mass of sphere m (positive, in kg)
+///   v_M: velocity of M along the line of action before the collision (real, in m s^-1)
+///   v_m: velocity of m along the line of action before the collision (real, in m s^-1)
+///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 /// v_M is computed in the form "display, fma": at most 2.37 ulps in double on 4200 samples.
 /// v_m is computed in the form "display, fma": at most 2.40 ulps in double on 4200 samples.
 /// J is computed in the form "display, compensated": at most 1.98 ulps in double on 4200 samples.

@@ -7,11 +7,11 @@
 namespace impact {
 
 /// energy_loss(M, m, v_M, v_m, eps): Kinetic energy lost in an inelastic collision, Eq. 11.
-///   M: mass of sphere M (positive)
-///   m: mass of sphere m (positive)
-///   v_M: velocity of M along the line of action before the collision (real)
-///   v_m: velocity of m along the line of action before the collision (real)
-///   eps: Newton's coefficient of restitution ([0, 1])
+///   M: mass of sphere M (positive, in kg)
+///   m: mass of sphere m (positive, in kg)
+///   v_M: velocity of M along the line of action before the collision (real, in m s^-1)
+///   v_m: velocity of m along the line of action before the collision (real, in m s^-1)
+///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 /// dE is computed in the form "-(1 - eps)*(1 + eps)*M*m*(v_M - v_m)^2/(2*(M + m)), compensated": at most 0.50 ulps in double on 4200 samples.
 /// A quiet NaN when the inputs are refused, for the first of these reasons that applies:
 ///   invalid_mass: M, m not positive and finite
