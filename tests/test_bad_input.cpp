@@ -474,6 +474,60 @@ BOOST_AUTO_TEST_CASE(a_bound_that_is_not_understood)
     expect_refused(typed, "derivations/bad.toml:23:8: error: type 'half' must be float, double or long double");
 }
 
+// a = x/(y + 1), b = y/(x + 2): a kernel with guards and two divisors (lines 1 to 28).
+std::string two_divisors(const std::string& kernel_options)
+{
+    return "id = \"d\"\ntitle = \"two divisors\"\n[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+           "[[symbol]]\nname = \"y\"\ndomain = \"positive\"\n[[symbol]]\nname = \"a\"\n[[symbol]]\nname = \"b\"\n"
+           "[[given]]\nname = \"ga\"\nequation = \"a = x/(y + 1)\"\nbecause = \"g\"\n"
+           "[[given]]\nname = \"gb\"\nequation = \"b = y/(x + 2)\"\nbecause = \"g\"\n"
+           "[[step]]\nsolve = [\"ga\", \"gb\"]\nfor = [\"a\", \"b\"]\n[[result]]\nname = \"a\"\n[[result]]\nname = \"b\"\n"
+           "[[kernel]]\nname = \"k\"\ninputs = [\"x\", \"y\"]\noutputs = [\"a = a\", \"b = b\"]\n"
+           "guards = [\"bad = x, y\"]\n" + kernel_options;
+}
+
+BOOST_AUTO_TEST_CASE(kernels_with_guards_and_several_divisors_test_them_all_first)
+{
+    const scratch s;
+    s.write("derivations/d.toml", two_divisors(""));
+    const run_result r = s.impact("kernels --derivations derivations --output k");
+    BOOST_TEST(r.status == 0, r.output);
+    std::ifstream in(s.root / "k" / "kernels" / "impact" / "k.hpp");
+    const std::string header((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Both divisors tested, then both divisions.
+    const auto test = header.find("detail::smallest_divisor<Real>");
+    BOOST_TEST(test != std::string::npos);
+    BOOST_TEST(header.find("x / ") > test);
+    BOOST_TEST(header.find("y / ") > test);
+}
+
+BOOST_AUTO_TEST_CASE(a_batch_kernel_whose_output_is_no_input)
+{
+    expect_refused(two_divisors("batch = true\n"),
+                   "derivations/bad.toml:29:8: error: kernel 'k' has batch = true, which writes each output over the "
+                   "input of its name, and 'a' is no input of its size; name the output after an input (v_M = ...), "
+                   "or give the batch to a kernel of its own");
+}
+
+BOOST_AUTO_TEST_CASE(pi_is_derived_and_typeset_but_no_kernel_computes_it)
+{
+    const std::string circle = "id = \"p\"\ntitle = \"a circle\"\n[[symbol]]\nname = \"r\"\ndomain = \"positive\"\n"
+                               "[[symbol]]\nname = \"A\"\n[[given]]\nname = \"g\"\nequation = \"A = Pi*r^2\"\n"
+                               "because = \"a disc\"\n[[step]]\nsolve = [\"g\"]\nfor = [\"A\"]\n[[result]]\nname = \"A\"\n"
+                               "[[check]]\nname = \"positive\"\nclaim = \"A > 0\"\n";
+    const scratch s;
+    s.write("derivations/p.toml", circle);
+    const run_result derived = s.impact("derive p");
+    BOOST_TEST(derived.status == 0, derived.output);
+    BOOST_TEST(derived.output.find("proven             positive: A > 0") != std::string::npos, derived.output);
+    const run_result latex = s.impact("latex p");
+    BOOST_TEST(latex.output.find("\\pi r^{2}") != std::string::npos, latex.output);
+    expect_refused(circle + "[[kernel]]\nname = \"area\"\ninputs = [\"r\"]\noutputs = [\"A = A\"]\n",
+                   "derivations/bad.toml:21:8: error: kernel 'area': a kernel cannot compute Pi (a kernel computes "
+                   "with +, -, *, /, sqrt, the functions of <cmath> and rational numbers; give such a constant as an "
+                   "input)");
+}
+
 BOOST_AUTO_TEST_CASE(an_empty_file)
 {
     expect_refused("", "derivations/bad.toml: error: file is empty");

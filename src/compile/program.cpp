@@ -441,6 +441,18 @@ bool divides(const program& p, const instruction& in)
 }
 
 // The values p divides by that are not constants, each once, in the order of their divisions.
+bool divides_early(const program& p)
+{
+    const std::vector<int> by = divisors(p);
+    if (by.empty())
+        return false;
+    const int last_divisor = *std::max_element(by.begin(), by.end());
+    for (std::size_t i = 0; i < p.code.size(); ++i)
+        if (divides(p, p.code[i]))
+            return static_cast<int>(i) < last_divisor;
+    return false;
+}
+
 std::vector<int> divisors(const program& p)
 {
     std::vector<int> found;

@@ -81,6 +81,10 @@ std::vector<int> operands(const instruction& in);
 /// Whether `in` divides by a value that is not a constant (one a kernel names and tests).
 bool divides(const program& p, const instruction& in);
 
+/// Whether `p` divides before it has computed every value it divides by (a kernel with
+/// guards tests its divisors before its first division, and so needs them all first).
+bool divides_early(const program& p);
+
 /// The values `p` divides by that are not constants, each once, in the order of their divisions.
 std::vector<int> divisors(const program& p);
 

@@ -486,6 +486,9 @@ void register_print_functions()
     static const bool registered = [] {
         GiNaC::set_print_func<GiNaC::numeric, print_tex>(print_numeric);
         GiNaC::set_print_func<GiNaC::symbol, print_tex>(print_symbol);
+        // Pi as \pi: GiNaC's own LaTeX for its constants.
+        GiNaC::set_print_func<GiNaC::constant, print_tex>(
+            +[](const GiNaC::constant& k, const print_tex& c, unsigned) { k.print(GiNaC::print_latex(c.s)); });
         GiNaC::set_print_func<GiNaC::add, print_tex>(print_add);
         GiNaC::set_print_func<GiNaC::mul, print_tex>(print_mul);
         GiNaC::set_print_func<GiNaC::power, print_tex>(print_power);

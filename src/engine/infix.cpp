@@ -221,6 +221,9 @@ void register_print_functions()
         GiNaC::set_print_func<GiNaC::relational, print_infix>(print_relational);
         GiNaC::set_print_func<GiNaC::numeric, print_infix>(print_numeric);
         GiNaC::set_print_func<GiNaC::symbol, print_infix>(print_symbol);
+        // Pi (and GiNaC's other constants) by the name GiNaC's parser reads back.
+        GiNaC::set_print_func<GiNaC::constant, print_infix>(
+            +[](const GiNaC::constant& k, const print_infix& c, unsigned) { k.print(GiNaC::print_dflt(c.s)); });
         GiNaC::set_print_func<GiNaC::add, print_infix>(print_add);
         GiNaC::set_print_func<GiNaC::mul, print_infix>(print_mul);
         GiNaC::set_print_func<GiNaC::power, print_infix>(print_power);

@@ -64,6 +64,16 @@ public:
         }
         for (const spec::kernel_guard& g : spec_kernel.guards)
             k.guards.push_back(make_guard(k, g));
+        if (k.batch)
+            for (const kernel_output& o : k.outputs) {
+                const kernel_parameter* same = k.find_parameter(o.member);
+                if (!same || same->components.size() != o.values.size())
+                    throw error(spec_kernel.name.where,
+                                fmt::format("kernel '{}' has batch = true, which writes each output over the input "
+                                            "of its name, and '{}' is no input of its size; name the output after "
+                                            "an input (v_M = ...), or give the batch to a kernel of its own",
+                                            k.name, o.member));
+            }
         for (const spec::error_bound& b : spec_kernel.bounds) {
             kernel_output* o = find_output(k, b.output);
             const char* const types[] = {"float", "double", "long double"};

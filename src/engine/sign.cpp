@@ -93,6 +93,9 @@ private:
                 return {sign_set::any(), "not a real number"};
             return {sign_set::exactly(n.is_zero() ? 0 : n.is_positive() ? 1 : -1), "a number"};
         }
+        // Pi and GiNaC's other constants: positive ones say so.
+        if (GiNaC::is_a<GiNaC::constant>(e) && e.info(GiNaC::info_flags::positive))
+            return {sign_set::exactly(1), "a positive constant"};
         if (GiNaC::is_a<GiNaC::symbol>(e)) {
             const auto found = domains_.find(e);
             if (found == domains_.end())

@@ -9,6 +9,7 @@
 #include <map>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 
 namespace impact::verify {
 namespace {
@@ -77,6 +78,17 @@ void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::te
         outputs.emplace_back(chosen.value, compile::compile_options{chosen.fma, chosen.compensated, chosen.compensated_lets});
     }
     plan.code = compile::compile_program(outputs, k.input_symbols(), order, k.lets);
+    // A kernel with guards tests every divisor before its first division: where the order
+    // compiled in divides earlier, the order that computes the divisors first (the same
+    // operations on the same values, so the same results).
+    if (!k.guards.empty() && compile::divides_early(plan.code)) {
+        plan.code = compile::ordered_for_registers(plan.code);
+        if (compile::divides_early(plan.code))
+            throw error(k.where, fmt::format("kernel '{}' divides by a value that another division computes, so no "
+                                             "order has every divisor before the first division, as its guards "
+                                             "need; give forms (forms = [...]) or a let that divide once",
+                                             k.name));
+    }
 }
 
 // The cache entries' text: one field a line, strings with their length in front
@@ -353,7 +365,15 @@ private:
 
 kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order)
 {
-    return chooser(k, order).choose();
+    try {
+        return chooser(k, order).choose();
+    } catch (const std::invalid_argument& e) {
+        // What compile cannot turn into operations of the kernel (a constant such as Pi):
+        // the kernel's mistake, at its place in the file.
+        throw error(k.where, fmt::format("kernel '{}': {} (a kernel computes with +, -, *, /, sqrt, the functions "
+                                         "of <cmath> and rational numbers; give such a constant as an input)",
+                                         k.name, e.what()));
+    }
 }
 
 std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
