@@ -70,6 +70,16 @@ constexpr double target_ulps = 4;
 /// program and measures it, all outputs at once, in float, double and long double.
 kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order);
 
+/// The derived value of output `o`'s component `c` as a quotient of polynomials,
+/// `which` = "expanded" or "factored"; nothing when it has a radical.
+std::optional<engine::form> derived_form(const engine::kernel_output& o, std::size_t c, const std::string& which);
+
+/// The plan's program: the guards' conditions first, then the chosen form of every
+/// component, sharing what they can, in an order that computes every divisor before the
+/// first division when the kernel has guards. Throws `impact::error` at the kernel where
+/// no order does.
+void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::term_order& order);
+
 /// Every kernel's plan, derivation by derivation in the library's order.
 ///
 /// With a `store`, a kernel whose description (inputs and their domains, outputs and
