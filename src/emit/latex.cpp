@@ -270,6 +270,9 @@ void print_symbol(const GiNaC::symbol& s, const print_tex& c, unsigned)
     c.s << symbol_latex(s);
 }
 
+// Pi as \pi: GiNaC's own LaTeX for its constants.
+void print_constant(const GiNaC::constant& k, const print_tex& c, unsigned) { k.print(GiNaC::print_latex(c.s)); }
+
 // The terms of a sum in print order: as written where the text gives them, the rest
 // (and every term of a sum not written) in `term_order`.
 std::vector<GiNaC::ex> ordered_terms(const GiNaC::ex& sum, const print_tex& c)
@@ -486,9 +489,7 @@ void register_print_functions()
     static const bool registered = [] {
         GiNaC::set_print_func<GiNaC::numeric, print_tex>(print_numeric);
         GiNaC::set_print_func<GiNaC::symbol, print_tex>(print_symbol);
-        // Pi as \pi: GiNaC's own LaTeX for its constants.
-        GiNaC::set_print_func<GiNaC::constant, print_tex>(
-            +[](const GiNaC::constant& k, const print_tex& c, unsigned) { k.print(GiNaC::print_latex(c.s)); });
+        GiNaC::set_print_func<GiNaC::constant, print_tex>(print_constant);
         GiNaC::set_print_func<GiNaC::add, print_tex>(print_add);
         GiNaC::set_print_func<GiNaC::mul, print_tex>(print_mul);
         GiNaC::set_print_func<GiNaC::power, print_tex>(print_power);
@@ -574,28 +575,6 @@ std::string latex(const GiNaC::ex& e, const term_order& order, const written_for
     const print_tex c(out, order, written && !written->empty() ? written : nullptr);
     print_operand(e, c, 0);
     return out.str();
-}
-
-std::string latex_text(const std::string& text)
-{
-    std::string out;
-    for (char ch : text) {
-        switch (ch) {
-        case '\\': out += "\\textbackslash{}"; break;
-        case '_': case '%': case '&': case '#': case '$': case '{': case '}':
-            out += '\\';
-            out += ch;
-            break;
-        // OT1 accents, not the text companion's \textasciicircum (a bitmap font without cm-super).
-        case '~': out += "\\~{}"; break;
-        case '^': out += "\\^{}"; break;
-        case '<': out += "\\textless{}"; break;
-        case '>': out += "\\textgreater{}"; break;
-        case '|': out += "\\textbar{}"; break;
-        default: out += ch;
-        }
-    }
-    return out;
 }
 
 } // namespace impact::emit

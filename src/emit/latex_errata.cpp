@@ -39,24 +39,6 @@ std::string dimension_latex(const engine::dimension& d)
 
 } // namespace
 
-std::string latex_prose(const std::string& text)
-{
-    // `$...$` is mathematics already; an unmatched `$` is a dollar sign.
-    std::string out;
-    std::size_t at = 0;
-    while (at < text.size()) {
-        const std::size_t open = text.find('$', at);
-        const std::size_t close = open == std::string::npos ? open : text.find('$', open + 1);
-        if (close == std::string::npos) {
-            out += latex_text(text.substr(at));
-            break;
-        }
-        out += latex_text(text.substr(at, open - at)) + text.substr(open, close - open + 1);
-        at = close + 1;
-    }
-    return out;
-}
-
 std::string finding_latex(const engine::finding& f, const term_order& order)
 {
     std::string out;
