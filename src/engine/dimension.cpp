@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <sstream>
+#include <stdexcept>
+#include <tuple>
 
 namespace impact::engine {
 namespace {
@@ -296,35 +298,38 @@ public:
 private:
     std::optional<dimension> sum(const GiNaC::ex& e) const
     {
-        // The terms in the order of their text, not GiNaC's (which depends on what else
-        // the process has made), so that a message names them the same way every time.
-        std::vector<std::pair<std::string, GiNaC::ex>> terms;
-        for (std::size_t i = 0; i < e.nops(); ++i)
-            terms.emplace_back(text(e.op(i)), e.op(i));
-        std::sort(terms.begin(), terms.end(),
-                  [](const auto& a, const auto& b) { return a.first < b.first; });
-        std::optional<dimension> first;
-        std::string first_term;
-        GiNaC::ex first_ex;
+        std::vector<std::pair<GiNaC::ex, dimension>> known;
         bool all_known = true;
-        for (const auto& [written, term] : terms) {
-            const auto found = of(term);
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            const auto found = of(e.op(i));
             all_known = all_known && found;
-            if (!found)
-                continue;
-            if (!first) {
-                first = found;
-                first_term = written;
-                first_ex = term;
-            } else if (*found != *first) {
+            if (found)
+                known.emplace_back(e.op(i), *found);
+        }
+        for (const auto& [term, d] : known)
+            if (d != known.front().second)
+                refuse_sum(known);
+        // A sum with a term of unknown dimension has an unknown dimension.
+        return all_known && !known.empty() ? std::optional<dimension>(known.front().second) : std::nullopt;
+    }
+
+    // Two terms of different dimensions, named in the order of their text, not GiNaC's
+    // (which depends on what else the process has made): the same message every run.
+    [[noreturn]] void refuse_sum(const std::vector<std::pair<GiNaC::ex, dimension>>& known) const
+    {
+        std::vector<std::tuple<std::string, GiNaC::ex, dimension>> terms;
+        for (const auto& [term, d] : known)
+            terms.emplace_back(text(term), term, d);
+        std::sort(terms.begin(), terms.end(),
+                  [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
+        const auto& [first_text, first, first_dimension] = terms.front();
+        for (const auto& [written, term, d] : terms)
+            if (d != first_dimension)
                 throw dimension_clash(where_,
                                       fmt::format("adds {}, {}, to {}, {}: the terms of a sum share one dimension",
-                                                  first_term, first->describe(), written, found->describe()),
-                                      dimension_clash::kind::adds, first_ex, *first, term, *found);
-            }
-        }
-        // A sum with a term of unknown dimension has an unknown dimension.
-        return all_known ? first : std::nullopt;
+                                                  first_text, first_dimension.describe(), written, d.describe()),
+                                      dimension_clash::kind::adds, first, first_dimension, term, d);
+        throw std::logic_error("refuse_sum: the terms share one dimension");
     }
 
     std::optional<dimension> power(const GiNaC::ex& e) const
@@ -397,8 +402,13 @@ private:
 
     std::string text(const GiNaC::ex& e) const
     {
-        if (text_)
-            return text_(e);
+        // A message must not fail for want of a printer: GiNaC's own printing then.
+        if (text_) {
+            try {
+                return text_(e);
+            } catch (const std::exception&) {
+            }
+        }
         std::ostringstream out;
         out << e;
         return out.str();
