@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <optional>
+#include <stdexcept>
 
 namespace impact::engine {
 namespace {
@@ -48,7 +49,13 @@ void check_definitions(const symbol_table& symbols, const spec::derivation& sour
                                                q.range.to_string(), declaration.definition->value, *value));
             continue;
         }
-        const sign_proof proof = prove_sign(*q.definition, declared);
+        // A definition whose sign cannot be worked out is not contradicted.
+        sign_proof proof;
+        try {
+            proof = prove_sign(*q.definition, declared);
+        } catch (const std::exception&) {
+            continue;
+        }
         if (!sign_allowed(q.range, proof.sign))
             throw error(where, fmt::format("'{}' is declared {} but its definition {} is {} under the declared "
                                            "domains; correct the domain or the definition",
