@@ -200,10 +200,10 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
     BOOST_TEST(contains(tex, "Solving \\eqref{impact:inelastic_line:impulse_M}, "
                              "\\eqref{impact:inelastic_line:impulse_m} and "
                              "\\eqref{impact:inelastic_line:restitution} for"));
-    // The results in their display forms, numbered 8a-8c.
+    // The results in their display forms, numbered by the lines of Eq. 8 that print them.
     BOOST_TEST(contains(tex, "v'_{M,\\parallel} &= \\frac{M v_{M,\\parallel} + m v_{m,\\parallel} + \\epsilon m "
-                             "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag{8a}"));
-    BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag{8c}"));
+                             "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag{8, right, line 1}"));
+    BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag{8, right, line 3}"));
     // Checks with status; the paper's Eq. 7 found wanting.
     BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
                              "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));

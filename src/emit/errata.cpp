@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <set>
 
 namespace impact::emit {
 namespace {
@@ -45,6 +46,15 @@ const char* kind_name(engine::paper_comparison::kind k)
 
 } // namespace
 
+std::size_t compared_places(const std::vector<const engine::derivation*>& derivations)
+{
+    std::set<std::string> places;
+    for (const engine::derivation* d : derivations)
+        for (const engine::paper_comparison& p : d->paper_checks)
+            places.insert(p.paper);
+    return places.size();
+}
+
 std::string errata_markdown(const std::vector<const engine::derivation*>& derivations)
 {
     std::size_t total = 0, agree = 0;
@@ -61,8 +71,16 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                       "An equation agrees when it is proven equal to the derived result (an equation of the "
                       "paper's: proven equivalent); a claim agrees when it is proven, and is undecided when it can "
                       "be neither proven nor refuted. For each disagreement the smallest change that reconciles "
-                      "the two is given, when a single edit does. Mathematics is LaTeX between dollar signs.\n\n";
-    out += fmt::format("{} items checked: {} agree, {} disagree.\n\n", total, agree, total - agree);
+                      "the two is given, when a single edit does. Mathematics is LaTeX between dollar signs.\n\n"
+                      "Each item names its place in the paper: a line of a displayed equation (\"Eq. 12, line 2\"), "
+                      "an equation or a sentence of the text (\"Sec. III C, after Eq. 14, 5th sentence\"), a "
+                      "footnote. One place may be compared more than once (the components of a vector, two claims "
+                      "of one sentence). The lines and claims of the paper that are not compared (references, "
+                      "figure captions that describe a drawing, assumptions, notation) are listed, each with its "
+                      "reason, beside those compared, in `tests/test_paper_lines.cpp`, which fails when a line it "
+                      "lists as compared is not.\n\n";
+    out += fmt::format("{} printed lines and claims of the paper compared, in {} items: {} agree, {} disagree.\n\n",
+                       compared_places(derivations), total, agree, total - agree);
     out += "| Where | Kind | Item | Verdict | Printed | Derived | Smallest change |\n"
            "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const engine::derivation* d : derivations) {

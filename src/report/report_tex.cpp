@@ -1,5 +1,6 @@
 #include "report/report_tex.h"
 
+#include "emit/errata.h"
 #include "emit/latex.h"
 
 #include <fmt/format.h>
@@ -56,7 +57,7 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
 
     out += "\n\\section{The paper, held to account}\\label{sec:errata}\n";
     out += fmt::format("Every equation the paper prints, and every claim its text makes about them, as transcribed "
-                       "in the derivation files, compared with what is derived: {} items, {} agree, {} disagree{}. "
+                       "in the derivation files, compared with what is derived: {} printed lines and claims, in {} items, {} agree, {} disagree{}. "
                        "An equation agrees when it is proven equal to the derived result (an equation of the "
                        "paper's: proven equivalent); a claim agrees when it is proven, and is undecided when it "
                        "can be neither proven nor refuted. For each disagreement the smallest change that "
@@ -64,7 +65,7 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
                        "components of one equation is one row. Printed forms are set in the paper's variables, "
                        "beside the derived result in the same variables; forms too wide for the table are set "
                        "under it.\n\n",
-                       total, agree, total - agree - undecided,
+                       emit::compared_places(derivations), total, agree, total - agree - undecided,
                        undecided ? fmt::format(", {} undecided", undecided) : std::string());
     out += "{\\footnotesize\\setlength{\\tabcolsep}{3pt}\\renewcommand{\\arraystretch}{1.3}\n"
            "\\begin{longtable}{@{}>{\\raggedright\\arraybackslash}p{1.9cm}"

@@ -1,0 +1,278 @@
+// Every printed line and claim of the paper, typed here from the paper, and whether
+// Impact compares it.
+//
+// The list below is typed from *General Collisions of Smooth Spheres* (not from the
+// derivation files): each line of each displayed equation (multi-line equations line by
+// line), each equation the text states, each sentence that claims something of the
+// results, the figure captions and the footnotes, in the paper's order, with its place.
+// A line the derivation files compare must be named, by exactly that place, by the
+// `paper` field of some comparison (a printed form of a result or given, or a claim).
+// A line that cannot be compared says why: a reference, a caption describing a drawing,
+// an assumption, notation. The test fails when a line listed as compared is not, when
+// one listed as not compared is, and when a comparison names a place the list does not
+// have (so the count the errata prints is the count of lines compared).
+#define BOOST_TEST_MODULE test_paper_lines
+#include <boost/test/unit_test.hpp>
+
+#include "emit/errata.h"
+#include "engine/derive.h"
+#include "engine/library.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace impact;
+
+struct printed_line {
+    const char* where;         ///< its place, as the derivation files' `paper` names it
+    const char* text;          ///< as printed (equations in LaTeX)
+    const char* not_compared;  ///< why it is not compared; nullptr: it must be
+};
+
+// clang-format off
+const std::vector<printed_line> paper = {
+    {"Abstract", "Collisions of spheres are a standard topic ... This final, novel approach to the billiard collision clarifies the scattering behaviour greatly.",
+     "a summary: each of its statements is compared where a section makes it"},
+    {"Sec. I, assumptions 1 to 3", "Rigid bodies. ... Short collision duration. ... Low velocities.",
+     "assumptions, which Impact makes too (an instantaneous impulse between rigid spheres), not results"},
+    {"Sec. I, after the assumptions", "Beyond these assumptions, this paper is limited to cases where the colliding masses are perfectly uniform spheres. The symmetry present in this geometry provides many simplifications for important quantities (e.g. a simplified inertia tensor and limiting the contact surface to a point between the two masses).",
+     "the scope, which Impact shares (uniform smooth spheres touching at a point), not a result"},
+
+    // II A. Collisions along a Line
+    {"Sec. II A, before Eq. 1a", "All collisions observe the law of conservation of total energy, but for elastic collisions the kinetic energy is also conserved.", nullptr},
+    {"Eq. 1a", "Mv_M + mv_m = Mv'_M + mv'_m (Momentum)", nullptr},
+    {"Eq. 1b", "\\frac{1}{2}Mv_M^2 + \\frac{1}{2}mv_m^2 = \\frac{1}{2}Mv_M'^2 + \\frac{1}{2}mv_m'^2 (Energy)", nullptr},
+    {"Sec. II A, before Eq. 2", "A standard result, see for example Morin's theorem 5.3 is the third conserved quantity for 1D collisions. Taking the quotient of the relative momenta and energy quantities indicates that the absolute relative velocity is conserved.", nullptr},
+    {"Eq. 2, line 1", "m(v_m - v'_m) = M(v'_M - v_M)", nullptr},
+    {"Eq. 2, line 2", "m(v_m^2 - v'_m^2) = M(v_M'^2 - v_M^2)", nullptr},
+    {"Eq. 2, right of the brace", "(v_m - v_M) = -(v'_m - v'_M)", nullptr},
+    {"Eq. 2, line 3", "\\implies |v_m - v_M| = |v'_m - v'_M|", nullptr},
+    {"Sec. II A, after Eq. 2", "Using Eqs. 1a and 2, one can solve this system of two unknowns (v'_m, v'_M) in two equations. Eq. 3 is the general solution for 1D elastic collisions.", nullptr},
+    {"Eq. 3, line 1", "v'_M = \\frac{(M-m)v_M + 2mv_m}{M+m}", nullptr},
+    {"Eq. 3, line 2", "v'_m = \\frac{(m-M)v_m + 2mv_M}{M+m}", nullptr},
+    {"Sec. II A, after Eq. 3, 1st sentence", "Rewriting Eq. 2 as v_m + v'_m = v_M + v'_M reveals the core argument of Čepič's method.", nullptr},
+    {"Sec. II A, after Eq. 3, 2nd sentence", "For collisions along a line, the change in velocities due to collisions are equal but opposite for the colliding particles.", nullptr},
+    {"Sec. II A, after Eq. 3, 3rd sentence", "This follows from the fact that the change in velocities must follow the line along which the impulses between the masses occur.",
+     "a reason given, not a result: along a line every change is along it (in the plane the claim is compared at Sec. II B, before Eq. 4)"},
+    {"Fig. 1 caption", "A geometric depiction of the elastic collision of two spheres. Subfigure (a) ... Subfigure (c) shows the displacement as a function of the sine and cosine of the displacement between the spheres ...",
+     "describes a drawing Impact does not make; the rotation it depicts is compared at Sec. II B, display of R"},
+
+    // II B. Collisions along a Plane
+    {"Sec. II B, 1st paragraph", "with a component along the parallel of the line-of-action that is affected according to Eq. 2, and a component along the perpendicular", nullptr},
+    {"Sec. II B, planar Eq. 2, line 1", "Mv_{M,y} + mv_{m,y} = Mv'_{M,y} + m'_{m,y}, Mv_{M,y} + mv_{m,y} = Mv'_{M,y} + m'_{m,y}", nullptr},
+    {"Sec. II B, planar Eq. 2, line 2", "\\frac{1}{2}M(v_{M,x}^2 + v_{M,y}^2) + \\frac{1}{2}m(v_{m,x}^2 + v_{m,y}^2) = \\frac{1}{2}M(v'_{M,x}^2 + v'_{M,y}^2) + \\frac{1}{2}m(v_{m,x}^2 + v_{m,y}^2) (Eq. 2)", nullptr},
+    {"Sec. II B, before the display of R", "Given the displacement vector (the line connecting the CoMs of each sphere) r_{mM} = C_M - C_m, a rotation matrix can be constructed using the x- and y-components.",
+     "the definition of r_mM, which the derivations take as the meaning of their symbols r_x, r_y (and the kernels compute from the centres); a definition, not a result"},
+    {"Sec. II B, display of R", "R = (cos θ, sin θ; -sin θ, cos θ) = (r_{mM,x}/||r_{mM}||, r_{mM,y}/||r_{mM}||; -r_{mM,y}/||r_{mM}||, r_{mM,x}/||r_{mM}||)", nullptr},
+    {"Footnote 9", "Note that a rotation of axes is a passive transformation, and as such the presented rotation matrix is the transpose (and coincidentally) the inverse of the standard rotation matrix. See 7.", nullptr},
+    {"Sec. II B, display of the change of frame", "(v_∥, v_⊥) = R (v_x, v_y) <=> (v_x, v_y) = R^T (v_∥, v_⊥)", nullptr},
+    {"Sec. II B, before Eq. 4", "Furthermore, for elastic collisions of smooth spheres, only one of these 1D-axes sees change before and after contact with the other mass.", nullptr},
+    {"Footnote 10", "The generalisation to collisions in three dimensions is a simple one.", nullptr},
+    {"Eq. 4, line 1", "v_M^{(C)'} = (\\frac{(M-m)v_{M,∥} + 2mv_{m,∥}}{M+m}, v_{M,⊥}), v_m^{(C)'} = (\\frac{(m-M)v_{m,∥} + 2Mv_{M,∥}}{m+M}, v_{m,⊥})", nullptr},
+    {"Eq. 4, line 2", "v_M^{(L)'} = R^T v_M^{(C)'}, v_m^{(L)'} = R^T v_m^{(C)'}", nullptr},
+    {"Sec. II B, after Eq. 4", "This result extends to higher dimensions also, however, only for spherical objects colliding.", nullptr},
+
+    // III. Inelastic Collisions without Friction
+    {"Sec. III, 1st paragraph", "Realistic collisions are not as neatly summarised in a two-liner as Eq. 3. ... Collision restitution laws closely approximating experiment are by necessity empirical.",
+     "about restitution laws in general, not about a result"},
+    {"Eq. 5", "\\epsilon = -\\frac{v'_M - v'_m}{v_M - v_m}", nullptr},
+    {"Sec. III, after Eq. 5", "Newton's coefficient of restitution is defined in the range of ε ∈ [0, 1], with 0 denoting a perfectly inelastic collision and 1 a perfectly elastic.", nullptr},
+    {"Sec. III, 4th paragraph", "Newton's restitution law is relevant only for modelling frictional forces along the line of action. Therefore, Čepič's method remains relevant.",
+     "the model's scope, which Impact shares (restitution along the line of action, smooth spheres), not a result"},
+    {"Sec. III, before Sec. III A", "The standard result of right angle collisions given an elastic collision, also presented in Čepič's paper is shown to be a special case.", nullptr},
+
+    // III A. Derivation of Final Velocities
+    {"Sec. III A, 1st paragraph", "The two spheres collide in such a manner, that for each sphere a force is applied from the point of contact, opposite to the direction of motion.",
+     "the direction of the forces: Impact has no forces, only the impulse, whose signs are compared at Eq. 6 and Eq. 8"},
+    {"Eq. 6, line 1", "F = \\frac{dp}{dt} \\iff J = \\int_{t_1}^{t_2} F dt = p' - p", nullptr},
+    {"Eq. 6, line 2", "p' = p - J", nullptr},
+    {"Eq. 6, line 3", "v' = v - \\frac{1}{m} J", nullptr},
+    {"Eq. 7", "(v_M - v_m) = -\\epsilon(v_M - v_m)", nullptr},
+    {"Sec. III A, after Eq. 7", "What remains is a system of three equations in three unknowns, v'_M, v'_m and J. Note the alternating sign in the term for the impulses correction for masses M and m.", nullptr},
+    {"Eq. 8, left, line 1", "v'_{M,∥} = v_{M,∥} - \\frac{1}{M} J", nullptr},
+    {"Eq. 8, left, line 2", "v'_{m,∥} = v_{m,∥} + \\frac{1}{m} J", nullptr},
+    {"Eq. 8, left, line 3", "(v'_{M,∥} - v'_{m,∥}) = -\\epsilon(v_{M,∥} - v_{m,∥})", nullptr},
+    {"Eq. 8, right, line 1", "v'_{M,∥} = \\frac{Mv_{M,∥} + mv_{m,∥} + \\epsilon m(v_{m,∥} - v_{M,∥})}{M+m}", nullptr},
+    {"Eq. 8, right, line 2", "v'_{m,∥} = \\frac{mv_{m,∥} + Mv_{M,∥} + \\epsilon M(v_{M,∥} - v_{m,∥})}{M+m}", nullptr},
+    {"Eq. 8, right, line 3", "J = -m_{eff}^{-1}(1+\\epsilon)(v_{m,∥} - v_{M,∥})", nullptr},
+    {"Sec. III A, after Eq. 8, 1st sentence", "Here the factor m_{eff} denotes the effective mass, defined as m_{eff} = \\frac{1}{m} + \\frac{1}{M} = \\frac{M+m}{mM}.", nullptr},
+    {"Sec. III A, after Eq. 8, 2nd sentence", "The final velocities in the elastic collision model, Eq. 4, follow as the special case ε = 1.", nullptr},
+    {"Eq. 9", "v'_M = R^T (\\frac{Mv_{M,∥} + mv_{m,∥} + \\epsilon m(v_{m,∥} - v_{M,∥})}{M+m}, v_{M,⊥}), v'_m = R^T (\\frac{Mv_{M,∥} + mv_{m,∥} + \\epsilon M(v_{m,∥} - v_{M,∥})}{M+m}, v_{m,⊥})", nullptr},
+    {"Sec. III A, after Eq. 9", "where the superscript (L) denotes the lab frame and (C) the collision frame.",
+     "notation: it names the frames of the superscripts (L) and (C) used in Eqs. 4 and 9"},
+
+    // III B. Relative Velocity and Kinetic Energy Loss due to Collision
+    {"Sec. III B, before Eq. 10", "A key result for the evaluation of the final velocities in the elastic collision case was the conservation of velocity along the line-of-action. It was already given that this would no longer hold for inelastic collisions",
+     "a negation (the relative velocity is not conserved when ε < 1), which a claim, an equality or inequality that must hold, cannot state; the change itself is Eq. 10"},
+    {"Eq. 10, line 1", "\\Delta|v_\\Delta| = (v'_M - v'_m) - (v_M - v_m) = -(\\frac{1}{M} - \\frac{1}{m}) J", nullptr},
+    {"Eq. 10, line 2", "= -(1+\\epsilon)(v_m - v_M)", nullptr},
+    {"Fig. 2 caption", "Billiard ball collisions with various values for ε (l to r: 3/3, 2/3, 1/3). The left case shows a perfect elastic collision, whereas the other have increasing values for the coefficient of restitution. These plots come from the accompanying Mathematica notebook.",
+     "the figure's values of ε, not a derived result (Impact recomputes Fig. 2 with its kernels); its 'increasing values' describes ε = 2/3, 1/3 after 3/3, which decrease"},
+    {"Sec. III B, before Eq. 11", "For elastic collisions, one needs only to invoke the law of conservation of energy to realise that this change is 0.", nullptr},
+    {"Eq. 11", "\\Delta|E_K| = E'_{K,∥} - E_{K,∥} = -\\frac{1}{2}(1 - \\epsilon^2)m_{eff}^{-1}(v_m - v_M)^2", nullptr},
+    {"Sec. III B, after Eq. 11, 1st sentence", "From the implication of Newton's 0 ≤ ε ≤ 1 implies that ΔE_K ≤ 0; energy is always lost in inelastic collisions.", nullptr},
+    {"Sec. III B, after Eq. 11, 2nd sentence", "Again, the limiting case for ε = 1 simply provides Eq. 1b, indicating elastic collisions.", nullptr},
+    {"Sec. III B, after Eq. 11, 3rd sentence", "This result is a form of Carnot's 1803 theorem for rigid bodies in translator motion, although limiting cases may have been known much earlier already.", nullptr},
+
+    // III C. Generalised Collisions of Billiard Balls
+    {"Sec. III C, 1st paragraph", "Two equal balls are placed on a frictionless surface. ... Otherwise, m = M, r_m = r_M, ||v_M|| = 0.",
+     "the billiard set-up, which the derivation billiard_transfer takes as its givens (M = m, v_M = 0): assumptions, not results"},
+    {"Sec. III C, before Eq. 12", "a more intuitive result is given by considering the proportion of momentum transferred. Let τ denote the transfer rate, such that", nullptr},
+    {"Eq. 12, line 1", "\\tau = \\frac{v'_{1,∥}}{v'_{1,∥} + v'_{2,∥}}", nullptr},
+    {"Eq. 12, line 2", "= \\frac{mv_{1,∥} + m\\epsilon v_{1,∥}}{mv_{1,∥} + m\\epsilon v_{1,∥} + mv_{1,∥} - m\\epsilon v_{1,∥}}", nullptr},
+    {"Eq. 12, line 3", "= \\frac{v_{1,∥} - \\epsilon v_{1,∥}}{2mv_{1,∥}}", nullptr},
+    {"Eq. 12, line 4", "= \\frac{1}{2} - \\frac{1}{2}\\epsilon", nullptr},
+    {"Sec. III C, after Eq. 12, 1st sentence", "Again, it is clear collisions occur between one of two extremes.", nullptr},
+    {"Sec. III C, after Eq. 12, 2nd sentence", "In the elastic case, 100% of the parallel velocity transfers from the cue ball to the object ball, leaving the first with only its perpendicular velocity.", nullptr},
+    {"Sec. III C, after Eq. 12, 3rd sentence", "Juxtaposed to this is the perfectly inelastic case, where the minimum of 50% of the parallel velocity is transferred.", nullptr},
+    {"Sec. III C, after Eq. 12, 4th sentence", "This explains why collisions that have the bodies eventually 'stick' together require a ε value of 0; their final parallel velocities are identical", nullptr},
+    {"Footnote 11", "Note however that the contrapositive does not hold; collisions where objects do not stick together may still be inelastic, just with some perpendicular velocity remaining. The spheres then continue to move apart.",
+     "an existence statement (some collisions that do not stick are inelastic), not an equality or inequality of the results"},
+    {"Sec. III C, after Eq. 12, 5th sentence", "Substituting, Eq. 12 provides a definition of the resultant parallel velocities v'_{M,∥} and v'_{m,∥} solely in terms of the incident parallel velocity v_{m,∥}.", nullptr},
+    {"Sec. III C, after Eq. 12, 6th sentence", "Furthermore, the incident velocity of the object ball is set to be 0, such that the eventual final velocities of both balls is a system of two equation in two unknowns.",
+     "the set-up (v_M = 0, a given of billiard_transfer) and the method"},
+    {"Sec. III C, before Eq. 13", "Recall the definition of the dot product as the product of the magnitudes of two vectors and the cosine of the angle separating them. Rewritten, the angle between the incident velocities follows as",
+     "the definition of the dot product, which the derivation scatter_angle uses for cos θ; 'incident velocities' are the final ones of Eq. 13 (primed), a slip of wording"},
+    {"Eq. 13", "v'_1 \\cdot v'_2 = |v'_1| |v'_2| \\cos θ_{v'_1, v'_2} \\iff θ_{v'_1, v'_2} = \\arccos \\frac{v'_1 \\cdot v'_2}{|v'_1| |v'_2|}", nullptr},
+    {"Sec. III C, after Eq. 13, 1st sentence", "The dot-product of the velocities post-collision is simply the product of the parallel components, given the lack of a perpendicular velocity of the object ball.", nullptr},
+    {"Sec. III C, after Eq. 13, 2nd sentence", "For the object ball this implies that the final velocity magnitude is entirely dependent on the momentum transferred from the incident cue ball.", nullptr},
+    {"Fig. 3 caption", "Plot of the final scatter angle as a function of the pre-collision perpendicular collision and the ε. The parallel incident velocity of the cue ball is set to 1. The left graph has lines in order of the incident perpendicular velocity of the cue ball, whose values are to the right of the plot.",
+     "describes the plot, which Impact recomputes with its kernel; the limits it shows are compared at Sec. III C, after Eq. 14"},
+    {"Eq. 14, line 1", "θ_{v'_1, v'_2} = \\frac{v'_{1,∥} v'_{2,∥}}{\\sqrt{v'^2_{1,∥} + v'^2_{1,⊥}} \\sqrt{v'^2_{2,∥}}} = \\frac{(\\frac{1}{2} - \\frac{1}{2}\\epsilon)v_{1,∥} \\cdot (\\frac{1}{2} - \\frac{1}{2}\\epsilon)v_{1,∥}}{\\sqrt{((\\frac{1}{2} - \\frac{1}{2}\\epsilon)v_{1,∥})^2 + v_{1,⊥}^2} \\cdot (\\frac{1}{2} + \\frac{1}{2}\\epsilon)v_{1,∥}}", nullptr},
+    {"Eq. 14, line 2", "= \\frac{\\frac{1}{2}(1-\\epsilon)v_{1,∥}}{\\frac{1}{2}\\sqrt{((1-\\epsilon)v_{1,∥})^2 + 4v_{1,⊥}^2}} = \\frac{(1-\\epsilon)v_{1,∥}}{\\sqrt{(1-\\epsilon)^2 v_{1,∥}^2 + 4v_{1,⊥}^2}}", nullptr},
+    {"Sec. III C, after Eq. 14, 1st sentence", "Eq. 14 gives the scatter angle for a general billiard collision problem as a function of the coefficient of restitution and the incident perpendicular velocity of the first ball.", nullptr},
+    {"Sec. III C, after Eq. 14, 2nd sentence", "The standard result of the scatter angle being 90° for all elastic collisions again is a limiting case for ε = 0.", nullptr},
+    {"Sec. III C, after Eq. 14, 3rd sentence", "Fig. 3 gives the scatter angle of billiard collisions for an incident parallel velocity of v_{m,∥} = 1.",
+     "the figure's set-up"},
+    {"Sec. III C, after Eq. 14, 4th sentence", "Each curve is limited between 0° and 90° degrees, with the steepness being determined by incident perpendicular velocity.", nullptr},
+    {"Sec. III C, after Eq. 14, 5th sentence", "For situations where v_{m,∥} ≫ v_{m,⊥} the scatter angle tends towards 90°, whereas v_{m,∥} ≪ v_{m,⊥} implies tendency towards the minimum of 0°.", nullptr},
+
+    // IV. Conclusion
+    {"Sec. IV", "Investigated and discussed throughout this paper are the general collisions of smooth spheres. ... Consideration of a collision frame allowed for easy construction of functions that model arbitrary collisions.",
+     "restates, without equations, results compared above (the billiard velocities from the cue ball's, the scatter angle)"},
+
+    // Appendix A: Derivation of ΔE_K for inelastic collisions
+    {"Appendix A, line 1", "E'_K = \\frac{1}{2}mv'_m + \\frac{1}{2}mv'_M", nullptr},
+    {"Appendix A, line 2", "= \\frac{1}{2}m(v_m + \\frac{1}{m}J)^2 + \\frac{1}{2}M(v_M - \\frac{1}{M}J)^2", nullptr},
+    {"Appendix A, line 3", "= \\frac{1}{2}m(v_m^2 + 2\\frac{1}{m}v_mJ + \\frac{1}{m^2}J^2) + \\frac{1}{2}M(v_M^2 - 2\\frac{1}{M}v_MJ + \\frac{1}{M^2}J^2)", nullptr},
+    {"Appendix A, line 4", "= \\frac{1}{2}mv_m^2 + v_mJ + \\frac{1}{2m}J^2 + \\frac{1}{2}Mv_M^2 - v_MJ + \\frac{1}{2M}J^2", nullptr},
+    {"Appendix A, line 5", "= \\frac{1}{2}mv_m^2 + \\frac{1}{2}Mv_M^2 - (v_m - v_M)J + (\\frac{1}{2m} + \\frac{1}{2M})J^2", nullptr},
+    {"Appendix A, line 6", "\\rightarrow (\\frac{1}{2m} + \\frac{1}{2M}) = \\frac{2M + 2m}{4mM} = \\frac{1}{2} \\frac{M + m}{mM}", nullptr},
+    {"Appendix A, line 7", "\\rightarrow \\frac{M + m}{mM}J^2 = \\frac{M + m}{mM} \\frac{(mM)^2(1 + \\epsilon)^2(v_m - v_M)^2}{(M + m)^2} = \\frac{mM(1 + \\epsilon)^2(v_m - v_M)^2}{M + m}", nullptr},
+    {"Appendix A, line 8", "\\rightarrow E_K = \\frac{1}{2}mv_m^2 + \\frac{1}{2}Mv_M^2", nullptr},
+    {"Appendix A, line 9", "= E_K - \\frac{mM(1 + \\epsilon)(v_m - v_M)^2}{M + m} + \\frac{1}{2} \\frac{mM(1 + \\epsilon)^2(v_m - v_M)^2}{M + m}", nullptr},
+    {"Appendix A, line 10", "= E_K - \\frac{2mM(1 + \\epsilon)(v_m - v_M)^2}{2(M + m)} + \\frac{mM(1 + \\epsilon)^2(v_m - v_M)^2}{2(M + m)}", nullptr},
+    {"Appendix A, line 11", "\\rightarrow -2 - 2\\epsilon + (1 + \\epsilon)^2 = -1 + \\epsilon^2 = -(1 - \\epsilon^2)", nullptr},
+    {"Appendix A, line 12", "= E_K - (1 - \\epsilon^2) \\frac{mM(v_m - v_M)^2}{2(M + m)}", nullptr},
+    {"Appendix A, line 13", "\\Delta E_K = E'_K - E_K = -(1 - \\epsilon^2) \\frac{mM(v_m - v_M)^2}{2(M + m)}", nullptr},
+
+    {"Footnotes 1 to 8, 12 and 13", "Bernard Brogliato and B Brogliato. Nonsmooth mechanics. ... William James Stronge. Impact mechanics.",
+     "bibliographic references"},
+};
+// clang-format on
+
+// Typed from the list above, counted by hand: the paper's printed lines and claims, and
+// those Impact compares.
+constexpr std::size_t printed_lines_and_claims = 100;
+constexpr std::size_t compared = 80;
+
+const engine::library& library()
+{
+    static const engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+    return lib;
+}
+
+// Every place the derivations' comparisons name, with how many comparisons name it.
+std::map<std::string, int> compared_places()
+{
+    std::map<std::string, int> places;
+    for (const engine::derivation* d : library().in_order())
+        for (const engine::paper_comparison& p : d->paper_checks)
+            ++places[p.paper];
+    return places;
+}
+
+std::string read(const std::string& path)
+{
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_list_counts_the_paper_s_lines_and_claims)
+{
+    std::set<std::string> places;
+    std::size_t to_compare = 0;
+    for (const printed_line& line : paper) {
+        BOOST_TEST(places.insert(line.where).second, "listed twice: " << line.where);
+        BOOST_TEST(std::string(line.text).size() > 0u, line.where << " has no text");
+        if (line.not_compared)
+            BOOST_TEST(std::string(line.not_compared).size() > 10u, line.where << " says too little of why");
+        else
+            ++to_compare;
+    }
+    BOOST_TEST(paper.size() == printed_lines_and_claims);
+    BOOST_TEST(to_compare == compared);
+}
+
+BOOST_AUTO_TEST_CASE(every_line_listed_as_compared_is_compared_and_no_other)
+{
+    const std::map<std::string, int> places = compared_places();
+    for (const printed_line& line : paper) {
+        const bool is = places.count(line.where) > 0;
+        if (line.not_compared)
+            BOOST_TEST(!is, line.where << " is listed as not compared (" << line.not_compared
+                                      << "), yet a derivation compares it");
+        else
+            BOOST_TEST(is, line.where << " is printed (\"" << line.text
+                                      << "\") and no derivation file compares it: no [[result]], [[given]] "
+                                         "or [[claim]] has paper = \"" << line.where << "\"");
+    }
+    // A comparison whose place the list does not have: a misnamed place, or a line the
+    // list lacks.
+    std::set<std::string> listed;
+    for (const printed_line& line : paper)
+        listed.insert(line.where);
+    for (const auto& [place, count] : places)
+        BOOST_TEST(listed.count(place) == 1u, count << " comparison(s) name \"" << place
+                                                    << "\", a place not in the paper's list");
+}
+
+BOOST_AUTO_TEST_CASE(the_errata_and_the_report_state_the_count)
+{
+    const std::vector<const engine::derivation*> all = library().in_order();
+    BOOST_TEST(emit::compared_places(all) == compared);
+    const std::string errata = emit::errata_markdown(all);
+    BOOST_TEST(errata.find(fmt::format("{} printed lines and claims of the paper compared", compared)) !=
+               std::string::npos);
+    // The committed output says the same, and the README gives both counts.
+    BOOST_TEST((read(IMPACT_SOURCE_DIR "/output/errata.md") == errata),
+               "output/errata.md is not what the derivations give: run impact regenerate");
+    const std::string readme = read(IMPACT_SOURCE_DIR "/README.md");
+    BOOST_TEST(readme.find(fmt::format("{} printed lines and claims", printed_lines_and_claims)) !=
+               std::string::npos);
+    BOOST_TEST(readme.find(fmt::format("{} of them are compared", compared)) != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(every_comparison_s_verdict_is_settled)
+{
+    // Compared means proven to agree or to disagree: a sampled or undecided verdict on a
+    // printed line is no comparison a reader can trust.
+    for (const engine::derivation* d : library().in_order())
+        for (const engine::paper_comparison& p : d->paper_checks)
+            BOOST_TEST((p.agreement.what == engine::verdict::status::proven ||
+                        p.agreement.what == engine::verdict::status::failed),
+                       d->id() << ": " << p.paper << ", " << p.subject << " is " << engine::to_string(p.agreement));
+}
