@@ -219,7 +219,7 @@ std::vector<finding> search(std::vector<candidate> all, const symbol_table& symb
 
 } // namespace
 
-std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
+static std::vector<finding> reconcile_expression_search(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                               const symbol_table& symbols, const resolver& resolve,
                                               proof_cache& run)
 {
@@ -247,7 +247,7 @@ std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC:
     return search(all, symbols, screen, confirm);
 }
 
-std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
+static std::vector<finding> reconcile_equation_search(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                             const symbol_table& symbols, const resolver& resolve,
                                             proof_cache& run)
 {
@@ -279,6 +279,36 @@ std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::e
         return prove_equivalent(resolve(edited), resolve(derived), symbols, run).what == verdict::status::proven;
     };
     return search(all, symbols, screen, confirm);
+}
+
+std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
+                                              const symbol_table& symbols, const resolver& resolve,
+                                              proof_cache& run)
+{
+    // A search that meets arithmetic it cannot do (a printed form of 0 divided by) finds
+    // nothing; it never stops the derivation.
+    try {
+        return reconcile_expression_search(printed, derived, symbols, resolve, run);
+    } catch (const error&) {
+        throw;
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
+std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
+                                            const symbol_table& symbols, const resolver& resolve,
+                                            proof_cache& run)
+{
+    // A search that meets arithmetic it cannot do (a printed form of 0 divided by) finds
+    // nothing; it never stops the derivation.
+    try {
+        return reconcile_equation_search(printed, derived, symbols, resolve, run);
+    } catch (const error&) {
+        throw;
+    } catch (const std::exception&) {
+        return {};
+    }
 }
 
 } // namespace impact::engine
