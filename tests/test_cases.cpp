@@ -270,3 +270,43 @@ BOOST_AUTO_TEST_CASE(json_and_terminal_list_the_cases)
     BOOST_TEST(text.find("  y by cases\n    y = x    if x <= 1\n    y = 1    if x > 1\n") != std::string::npos, text);
     BOOST_TEST(text.find("      case 1 (y = x, where x <= 1): proven\n") != std::string::npos, text);
 }
+
+BOOST_AUTO_TEST_CASE(a_bound_on_one_symbol_narrows_its_domain_in_that_case)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"narrowed\"\nclaim = \"y*(2 - y) >= 0\"\n"));
+    // x (2 - x) >= 0 holds for x in (0, 1], not for every positive x: the sign of 2 - x
+    // needs the case's bound.
+    const engine::check_result& c = check_named(d, "narrowed");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(proven(c.parts[0].outcome));
+    BOOST_TEST(c.parts[0].outcome.method.rfind("under x <= 1, x in (0, 1]: ", 0) == 0, c.parts[0].outcome.method);
+    BOOST_TEST(proven(c.outcome));
+}
+
+BOOST_AUTO_TEST_CASE(a_case_only_sampled_is_reported_sampled_never_proven)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"cubic\"\nclaim = \"y^3 - 3*y + 3 > 0\"\n"));
+    // x^3 - 3x + 3 > 0 for every positive x (its least value, at x = 1, is 1), but no sign
+    // argument of the prover settles it: case 1 is sampled, case 2 (1 > 0) proven.
+    const engine::check_result& c = check_named(d, "cubic");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST((c.parts[0].outcome.what == engine::verdict::status::sampled));
+    BOOST_TEST(c.parts[0].outcome.method.rfind("not proven under x <= 1; sampled over the whole domain", 0) == 0,
+               c.parts[0].outcome.method);
+    BOOST_TEST(proven(c.parts[1].outcome));
+    BOOST_TEST((c.outcome.what == engine::verdict::status::sampled));
+    BOOST_TEST(c.outcome.method.find("case 1 (y = x, where x <= 1): sampled (200 points)") != std::string::npos,
+               c.outcome.method);
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_output_by_cases_is_refused_at_the_output)
+{
+    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+                                  "[[kernel]]\nname = \"k\"\ninputs = [\"x\"]\noutputs = [\"y = 2*y\"]\n")) ==
+               "test.toml:16:12: error: kernel 'k': output 'y' uses 'y', defined by cases, which kernels do not "
+               "compute yet");
+}

@@ -54,6 +54,71 @@ verdict combined(const std::vector<check_result::part>& parts, const std::string
     return v;
 }
 
+// A number a domain's bound (a double) holds exactly: an integer or a dyadic fraction.
+bool exact_bound(const GiNaC::numeric& n)
+{
+    if (!n.is_rational())
+        return false;
+    const GiNaC::numeric d = n.denom();
+    if (!d.is_integer() || d > 1 << 20)
+        return false;
+    const long den = d.to_long();
+    return (den & (den - 1)) == 0;
+}
+
+// The condition `s op n` (or `n op s`), with s a symbol and n a number, as a narrower
+// domain of s; none when the condition is not such a bound, or does not narrow s's domain
+// in a way a domain can say (an upper bound on a real quantity).
+std::optional<std::pair<GiNaC::ex, domain>> bound_domain(const case_value& c, const assumptions& given)
+{
+    GiNaC::ex s = c.lhs, n = c.rhs;
+    relation op = c.op;
+    if (!GiNaC::is_a<GiNaC::symbol>(s)) {
+        std::swap(s, n);
+        op = op == relation::less_equal ? relation::greater_equal
+             : op == relation::less     ? relation::greater
+             : op == relation::greater  ? relation::less
+                                        : relation::less_equal;
+    }
+    if (!GiNaC::is_a<GiNaC::symbol>(s) || !GiNaC::is_a<GiNaC::numeric>(n) ||
+        !exact_bound(GiNaC::ex_to<GiNaC::numeric>(n)))
+        return std::nullopt;
+    const auto found = given.domains.find(s);
+    const domain d = found != given.domains.end() ? found->second : domain{};
+    const double x = GiNaC::ex_to<GiNaC::numeric>(n).to_double();
+    const bool strict = op == relation::less || op == relation::greater;
+    domain out = d;
+    if (op == relation::less_equal || op == relation::less) {
+        if (d.what == domain::kind::interval) {
+            if (!(x < d.upper || (x == d.upper && strict && !d.upper_open)))
+                return std::nullopt;
+            out.upper = x;
+            out.upper_open = strict;
+        } else if (d.what == domain::kind::positive || d.what == domain::kind::nonnegative) {
+            out = domain{domain::kind::interval, 0, x, d.what == domain::kind::positive, strict};
+        } else {
+            return std::nullopt;
+        }
+    } else {
+        if (d.what == domain::kind::interval) {
+            if (!(x > d.lower || (x == d.lower && strict && !d.lower_open)))
+                return std::nullopt;
+            out.lower = x;
+            out.lower_open = strict;
+        } else if ((x > 0 || (x == 0 && strict)) && d.what != domain::kind::positive) {
+            out = domain{domain::kind::positive};
+        } else if (x == 0 && d.what == domain::kind::real) {
+            out = domain{domain::kind::nonnegative};
+        } else {
+            return std::nullopt;
+        }
+    }
+    if (out.what == domain::kind::interval &&
+        (out.lower > out.upper || (out.lower == out.upper && (out.lower_open || out.upper_open))))
+        return std::nullopt;
+    return std::make_pair(s, out);
+}
+
 bool nonnegative(const sign_set& s) { return !s.negative; }
 bool positive(const sign_set& s) { return !s.negative && !s.zero; }
 
@@ -157,6 +222,19 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
             v.proof = p.steps;
             v.method = fmt::format("{}: {} = ({}) + ({}), the condition's side plus a term {}", under,
                                    given.text(g), given.text(condition.value), given.text(r), p.sign.describe());
+            return v;
+        }
+    }
+    // A bound on one symbol by a number (x <= 1): the sign proof run again on the symbol's
+    // domain narrowed by it.
+    if (const auto bound = bound_domain(c, given)) {
+        assumptions narrowed = given;
+        narrowed.domains[bound->first] = bound->second;
+        narrowed.known = std::make_shared<worked_out>();
+        verdict v = prove_inequality(lhs, op, rhs, symbols, narrowed);
+        if (v.what == verdict::status::proven) {
+            v.method = fmt::format("{}, {} in {}: {}", under, ginac_syntax(bound->first, symbols.order()),
+                                   bound->second.to_string(), v.method);
             return v;
         }
     }

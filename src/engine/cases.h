@@ -32,7 +32,9 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
 /// when it follows from the domains alone, or from the condition C >= 0 (or > 0, with C
 /// its lhs − rhs turned the right way) through the claim's difference G as G = q·C with
 /// q's sign proven non-negative (positive for a strict claim from a non-strict
-/// condition), or G = C + r with r's sign proven non-negative; otherwise the verdict of
+/// condition), or G = C + r with r's sign proven non-negative, or, when the condition is
+/// a bound of one symbol by a number (`x <= 1`), from the signs under that symbol's
+/// domain narrowed by it (x in (0, 1] for a positive x); otherwise the verdict of
 /// the domains alone: sampled when samples of the whole domain hold (never proven), failed
 /// when they do not (which may be outside the case: the method says the claim was not
 /// proven under the condition).
