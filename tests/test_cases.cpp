@@ -310,3 +310,21 @@ BOOST_AUTO_TEST_CASE(a_kernel_output_by_cases_is_refused_at_the_output)
                "test.toml:16:12: error: kernel 'k': output 'y' uses 'y', defined by cases, which kernels do not "
                "compute yet");
 }
+
+BOOST_AUTO_TEST_CASE(at_special_values_a_case_that_does_not_arise_is_not_proven_against)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"at two\"\nclaim = \"y = 1\"\nat = { x = \"2\" }\n"
+        "[[check]]\nname = \"at a half\"\nclaim = \"y = 1\"\nat = { x = \"1/2\" }\n"));
+    // min(2, 1) = 1: case 1 (y = 2) does not arise at x = 2, case 2 gives 1.
+    const engine::check_result& two = check_named(d, "at two");
+    BOOST_REQUIRE_EQUAL(two.parts.size(), 2u);
+    BOOST_TEST(two.parts[0].outcome.method == "the case does not arise: its condition is false at these values");
+    BOOST_TEST(proven(two.outcome));
+    // min(1/2, 1) = 1/2, not 1: case 1 arises and fails.
+    const engine::check_result& half = check_named(d, "at a half");
+    BOOST_TEST((half.parts.at(0).outcome.what == engine::verdict::status::failed));
+    BOOST_TEST(half.parts.at(1).outcome.method == "the case does not arise: its condition is false at these values");
+    BOOST_TEST(!half.outcome.holds());
+}

@@ -512,6 +512,23 @@ private:
             check_result::part part;
             part.under = fmt::format("case {} ({} = {}, where {})", i + 1, c.cases_of, given.text(one.value),
                                      condition_text(one, given.order));
+            // At special values a condition may be a comparison of numbers: a case whose
+            // condition is false there holds nothing to prove.
+            const GiNaC::ex gap = GiNaC::normal(one.rhs - one.lhs);
+            if (GiNaC::is_a<GiNaC::numeric>(gap) && GiNaC::ex_to<GiNaC::numeric>(gap).is_real()) {
+                const GiNaC::numeric g = GiNaC::ex_to<GiNaC::numeric>(gap);   // rhs - lhs
+                const bool holds = one.op == relation::less_equal ? g >= 0
+                                   : one.op == relation::less     ? g > 0
+                                   : one.op == relation::greater_equal ? g <= 0
+                                                                       : g < 0;
+                if (!holds) {
+                    part.outcome.what = verdict::status::proven;
+                    part.outcome.residual = 0;
+                    part.outcome.method = "the case does not arise: its condition is false at these values";
+                    c.parts.push_back(std::move(part));
+                    continue;
+                }
+            }
             part.outcome = c.op == relation::equal ? prove_equal(lhs, rhs, out_.symbols, run_)
                                                    : prove_in_case(lhs, c.op, rhs, one, out_.symbols, given);
             c.parts.push_back(std::move(part));
