@@ -13,7 +13,18 @@
 #include "emit/json.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
+#include "compile/program.h"
+#include "emit/program_cxx.h"
 #include "engine/derive.h"
+#include "engine/infix.h"
+#include "engine/library.h"
+#include "pipeline/regenerate.h"
+#include "verify/choice.h"
+
+#include <cstdlib>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
 
 #include <string>
 
@@ -303,12 +314,60 @@ BOOST_AUTO_TEST_CASE(a_case_only_sampled_is_reported_sampled_never_proven)
                c.outcome.method);
 }
 
-BOOST_AUTO_TEST_CASE(a_kernel_output_by_cases_is_refused_at_the_output)
+BOOST_AUTO_TEST_CASE(a_kernel_computes_cases_with_one_select_on_both_sides_of_the_boundary)
 {
-    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
-                                  "[[kernel]]\nname = \"k\"\ninputs = [\"x\"]\noutputs = [\"y = 2*y\"]\n")) ==
-               "test.toml:16:12: error: kernel 'k': output 'y' uses 'y', defined by cases, which kernels do not "
-               "compute yet");
+    const engine::derivation d = derive_file("friction.toml");
+    BOOST_REQUIRE_EQUAL(d.kernels.size(), 1u);
+    const engine::kernel& k = d.kernels.front();
+    const std::vector<GiNaC::ex> inputs = k.input_symbols();
+    const compile::program p =
+        compile::compile_program({k.outputs.at(0).values.at(0)}, inputs, engine::term_order(inputs));
+    BOOST_TEST(compile::count(p, compile::opcode::select) == 1u);
+    // Inputs g_t, m_t, b, mu, m_n, v_n, e. Sticking: (1 + b) m_t g_t = 1.5 within
+    // mu (1 + e) m_n v_n = 2, so J_t = 1.5; sliding at g_t = 2: 3 > 2, so J_t = 2; sliding
+    // with mu = 1/4: 1.5 > 0.5, so J_t = 0.5; on the edge (b = 1): 2 = 2, both cases give 2.
+    BOOST_TEST(compile::run<double>(p, {1, 1, 0.5, 1, 1, 1, 1}).at(0) == 1.5);
+    BOOST_TEST(compile::run<double>(p, {2, 1, 0.5, 1, 1, 1, 1}).at(0) == 2.0);
+    BOOST_TEST(compile::run<double>(p, {1, 1, 0.5, 0.25, 1, 1, 1}).at(0) == 0.5);
+    BOOST_TEST(compile::run<double>(p, {1, 1, 1, 1, 1, 1, 1}).at(0) == 2.0);
+    // Printed as a conditional expression on values computed before it.
+    const emit::cxx_code code = emit::program_cxx(p, {"g_t", "m_t", "b", "mu", "m_n", "v_n", "e"});
+    BOOST_REQUIRE_EQUAL(code.outputs.size(), 1u);
+    BOOST_TEST(code.outputs[0].find(" > Real(0) ? ") != std::string::npos, code.outputs[0]);
+    BOOST_TEST(code.outputs[0].find(" : ") != std::string::npos, code.outputs[0]);
+    // Measured against CLN, which evaluates the case that holds at each sample.
+    const verify::kernel_plan plan = verify::plan_kernel(k, engine::declaration_order(d.symbols));
+    const std::vector<std::string> missed = verify::missed_bounds({plan});
+    BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
+}
+
+BOOST_AUTO_TEST_CASE(the_emitted_kernel_compiles_and_selects_each_case)
+{
+    namespace fs = std::filesystem;
+    const engine::library lib = engine::derive_all({spec::read_derivation(IMPACT_SOURCE_DIR "/tests/cases/friction.toml")});
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    BOOST_TEST(missed.empty());
+    const fs::path dir = fs::temp_directory_path() / ("impact_test_cases_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const auto& [path, text] : files) {
+        fs::create_directories((dir / path).parent_path());
+        std::ofstream(dir / path) << text;
+    }
+    // Sticking (1.5 within 2), sliding (3 beyond 2: 2), sliding with mu = 1/4 (0.5), the edge (2).
+    std::ofstream(dir / "main.cpp") << "#include \"impact/friction_impulse.hpp\"\n"
+                                       "int main()\n{\n"
+                                       "    using impact::friction_impulse;\n"
+                                       "    return friction_impulse<double>(1, 1, 0.5, 1, 1, 1, 1) == 1.5 &&\n"
+                                       "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1) == 2.0 &&\n"
+                                       "           friction_impulse<double>(1, 1, 0.5, 0.25, 1, 1, 1) == 0.5 &&\n"
+                                       "           friction_impulse<float>(1, 1, 1, 1, 1, 1, 1) == 2.0f ? 0 : 1;\n"
+                                       "}\n";
+    const std::string command = std::string(IMPACT_CXX) + " -std=c++17 -O2 -I" + (dir / "kernels").string() + " " +
+                                (dir / "main.cpp").string() + " -o " + (dir / "main").string() + " && " +
+                                (dir / "main").string();
+    BOOST_TEST(std::system(command.c_str()) == 0, command);
+    fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(at_special_values_a_case_that_does_not_arise_is_not_proven_against)

@@ -122,7 +122,43 @@ std::optional<std::pair<GiNaC::ex, domain>> bound_domain(const case_value& c, co
 bool nonnegative(const sign_set& s) { return !s.negative; }
 bool positive(const sign_set& s) { return !s.negative && !s.zero; }
 
+GiNaC::ex select_eval(const GiNaC::ex& c, const GiNaC::ex& a, const GiNaC::ex& b)
+{
+    if (GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_real())
+        return GiNaC::ex_to<GiNaC::numeric>(c).is_positive() ? a : b;
+    return select_positive(c, a, b).hold();
+}
+
+GiNaC::ex select_evalf(const GiNaC::ex& c, const GiNaC::ex& a, const GiNaC::ex& b)
+{
+    const GiNaC::ex at = c.evalf();
+    if (GiNaC::is_a<GiNaC::numeric>(at) && GiNaC::ex_to<GiNaC::numeric>(at).is_real())
+        return GiNaC::ex_to<GiNaC::numeric>(at).is_positive() ? a.evalf() : b.evalf();
+    return select_positive(at, a.evalf(), b.evalf()).hold();
+}
+
 } // namespace
+
+REGISTER_FUNCTION(select_positive, eval_func(select_eval).evalf_func(select_evalf))
+
+GiNaC::ex select_of(const std::vector<case_value>& cases)
+{
+    GiNaC::ex rest = cases.back().value;
+    for (std::size_t i = cases.size() - 1; i-- > 0;) {
+        const nonnegative_form f = condition_form(cases[i]);
+        rest = f.strict ? select_positive(f.value, cases[i].value, rest)
+                        : select_positive(-f.value, rest, cases[i].value);
+    }
+    return rest;
+}
+
+bool has_select(const GiNaC::ex& e)
+{
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "select_positive")
+            return true;
+    return false;
+}
 
 std::string condition_text(const case_value& c, const term_order& order)
 {

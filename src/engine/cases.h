@@ -24,6 +24,19 @@
 
 namespace impact::engine {
 
+/// `select_positive(c, a, b)`: a where c > 0, b otherwise. A kernel computes a quantity
+/// defined by cases as nested selects (see select_of), compiled to the `select` operation.
+DECLARE_FUNCTION_3P(select_positive)
+
+/// The cases as one expression of selects, the first case whose condition holds chosen:
+/// a strict condition C > 0 as select_positive(C, value, rest), a non-strict C >= 0 as
+/// select_positive(-C, rest, value); the last case is what is left (the step proves the
+/// cases exhaustive).
+GiNaC::ex select_of(const std::vector<case_value>& cases);
+
+/// Whether `e` holds a select_positive.
+bool has_select(const GiNaC::ex& e);
+
 /// The check that the conditions of `cases` (for the quantity `name`) cover every value.
 check_result prove_exhaustive(const std::string& name, const std::vector<case_value>& cases,
                               const symbol_table& symbols);

@@ -44,10 +44,15 @@ public:
             out_.checks.push_back(run_check(c));
         for (const spec::claim& c : s.claims)
             out_.paper_checks.push_back(hold_to_account(c));
-        for (const spec::kernel& k : s.kernels) {
-            refuse_cases_in(k);
-            out_.kernels.push_back(build_kernel(k, out_, resolver(), run_));
-        }
+        // A kernel computes a quantity defined by cases as a select of its cases' values.
+        GiNaC::exmap selects;
+        for (const auto& [symbol, pieces] : cases_)
+            selects[symbol] = select_of(pieces);
+        const engine::resolver in_kernels = [this, &selects](const GiNaC::ex& e) {
+            return resolve(e).subs(selects, GiNaC::subs_options::no_pattern);
+        };
+        for (const spec::kernel& k : s.kernels)
+            out_.kernels.push_back(build_kernel(k, out_, in_kernels, run_));
         return std::move(out_);
     }
 
@@ -254,27 +259,6 @@ private:
         r.checks.push_back(prove_exhaustive(st.name.value, r.cases, out_.symbols));
         cases_[s] = r.cases;
         resolved_.clear();
-    }
-
-    // A kernel computes no value by cases yet: one of its outputs that is such a value is
-    // refused at the output.
-    void refuse_cases_in(const spec::kernel& k) const
-    {
-        for (const spec::kernel_value& output : k.outputs)
-            for (const spec::text& component : output.components) {
-                GiNaC::ex e;
-                try {
-                    e = resolve(out_.symbols.parse(component));
-                } catch (const error&) {
-                    continue;   // build_kernel reports it at its place
-                }
-                for (const auto& [symbol, pieces] : cases_)
-                    if (e.has(symbol))
-                        throw error(component.where,
-                                    fmt::format("kernel '{}': output '{}' uses '{}', defined by cases, which "
-                                                "kernels do not compute yet",
-                                                k.name.value, output.name.value, ginac_syntax(symbol, out_.symbols.order())));
-            }
     }
 
     // Divides one equation by another side by side (Eq. 2's route); valid where the
