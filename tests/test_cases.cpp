@@ -260,8 +260,16 @@ BOOST_AUTO_TEST_CASE(a_result_by_cases_is_typeset_as_a_cases_environment)
     BOOST_TEST(tex.find("  y &= " + cases + "\n\\end{align*}") != std::string::npos, tex);
     BOOST_TEST(tex.find("  y &= " + cases + " \\notag\n") != std::string::npos, tex);
     BOOST_TEST(tex.find("The cases of y cover every value: \\textbf{proven}.") != std::string::npos, tex);
+    // A check proven case by case lists each case in mathematics.
+    const engine::derivation checked = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"at most one\"\nclaim = \"y <= 1\"\n"));
+    const std::string checked_tex = emit::latex_fragment(checked);
+    BOOST_TEST(checked_tex.find("Case by case: case 1 ($y = x$ where $x \\leq 1$): \\textbf{proven} and case 2 "
+                                "($y = 1$ where $x > 1$): \\textbf{proven}.") != std::string::npos,
+               checked_tex);
     BOOST_TEST(tex.find("\\item \\textbf{proven} --- meets: $y$ is continuous where its cases meet. Where the "
-                        "cases meet: cases 1 and 2 at x = 1: \\textbf{proven}.") != std::string::npos,
+                        "cases meet: cases 1 and 2 at $x = 1$: \\textbf{proven}.") != std::string::npos,
                tex);
 }
 

@@ -109,8 +109,24 @@ std::string fragment_writer::cases_text(const engine::check_result& c) const
     if (c.parts.empty())
         return "";
     std::vector<std::string> parts;
-    for (const engine::check_result::part& p : c.parts)
-        parts.push_back(fmt::format("{}: {}", latex_text(p.under), status_text(p.outcome)));
+    const engine::quantity* q = d_.symbols.find(c.cases_of);
+    for (const engine::check_result::part& p : c.parts) {
+        if (p.in_case && q) {
+            const engine::case_value& one = *p.in_case;
+            const char* relation = one.op == engine::relation::less_equal      ? "\\leq"
+                                   : one.op == engine::relation::less          ? "<"
+                                   : one.op == engine::relation::greater_equal ? "\\geq"
+                                                                               : ">";
+            parts.push_back(fmt::format("case {} (${} = {}$ where ${} {} {}$): {}", p.first, math(q->symbol),
+                                        math(one.value), math(one.lhs), relation, math(one.rhs),
+                                        status_text(p.outcome)));
+        } else if (p.boundary) {
+            parts.push_back(fmt::format("cases {} and {} at ${} = {}$: {}", p.first, p.second,
+                                        math(p.boundary->first), math(p.boundary->second), status_text(p.outcome)));
+        } else {
+            parts.push_back(fmt::format("{}: {}", latex_text(p.under), status_text(p.outcome)));
+        }
+    }
     return fmt::format(" {}: {}.", c.continuity ? "Where the cases meet" : "Case by case", listing(parts));
 }
 

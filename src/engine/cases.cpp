@@ -298,6 +298,8 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
             if (!constant_ratio(cj, ci))
                 continue;
             check_result::part part;
+            part.first = i + 1;
+            part.second = j + 1;
             // The boundary C_i = 0, solved for the first declared quantity it is linear in.
             const GiNaC::ex top = GiNaC::expand(ci.numer());
             std::optional<std::pair<GiNaC::ex, GiNaC::ex>> at;
@@ -318,6 +320,7 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
             } else {
                 part.under = fmt::format("cases {} and {} at {} = {}", i + 1, j + 1, ginac_syntax(at->first, symbols.order()),
                                          ginac_syntax(at->second, symbols.order()));
+                part.boundary = *at;
                 const GiNaC::exmap on{{at->first, at->second}};
                 const GiNaC::ex vi = cases[i].value.subs(on, GiNaC::subs_options::no_pattern);
                 const GiNaC::ex vj = cases[j].value.subs(on, GiNaC::subs_options::no_pattern);

@@ -494,6 +494,8 @@ private:
             const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
             const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
             check_result::part part;
+            part.first = i + 1;
+            part.in_case = one;
             part.under = fmt::format("case {} ({} = {}, where {})", i + 1, c.cases_of, given.text(one.value),
                                      condition_text(one, given.order));
             // At special values a condition may be a comparison of numbers: a case whose

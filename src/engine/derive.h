@@ -78,6 +78,10 @@ struct check_result {
     struct part {
         std::string under;    ///< e.g. "case 1 (J_t = ...) where ... <= ...", or the boundary
         verdict outcome;
+        std::size_t first = 0;        ///< the case (from 1), or the first of the two that meet
+        std::size_t second = 0;       ///< continuity: the second case
+        std::optional<case_value> in_case;                          ///< the case, as proven (after `at`)
+        std::optional<std::pair<GiNaC::ex, GiNaC::ex>> boundary;    ///< continuity: symbol = value there
     };
     std::vector<part> parts;
     std::string cases_of;     ///< the quantity whose cases split the check, if any
