@@ -23,7 +23,7 @@ namespace {
 
 using namespace impact;
 
-// Derived once for every test case: deriving the five files takes a fraction of a second.
+// Derived once for every test case: deriving the six files takes a fraction of a second.
 const engine::library& examples()
 {
     static const engine::library lib =
@@ -111,7 +111,8 @@ BOOST_AUTO_TEST_SUITE(test_examples)
 
 BOOST_AUTO_TEST_CASE(every_example_is_derived_with_every_check_proven)
 {
-    const std::set<std::string> expected = {"pendulum", "pushed_puck", "seesaw", "spring", "thrown_ball"};
+    const std::set<std::string> expected = {"pendulum", "pushed_block", "pushed_puck", "seesaw", "spring",
+                                            "thrown_ball"};
     BOOST_TEST((std::set<std::string>(examples().order.begin(), examples().order.end()) == expected));
     for (const std::string& id : examples().order) {
         const engine::derivation& d = example(id);
@@ -128,7 +129,7 @@ BOOST_AUTO_TEST_CASE(the_examples_use_every_kind_of_step_check_and_kernel_option
     std::set<spec::step::kind> steps;
     bool solve_rejects_by_condition = false, solve_rejects_by_domain = false;
     bool inequality = false, at = false, left_at = false, limit_to_point = false, limit_to_infinity = false,
-         assuming = false;
+         assuming = false, cases = false, continuity = false;
     bool claim = false, use = false, new_base = false, named_combination = false;
     bool array_input = false, renamed_scalar = false, velocities = false, relative = false, velocity = false,
          velocity_times = false, forms = false, parameter_guard = false, guard_below = false,
@@ -151,7 +152,10 @@ BOOST_AUTO_TEST_CASE(the_examples_use_every_kind_of_step_check_and_kernel_option
             limit_to_point |= c.limit && !c.limit->to_infinity;
             limit_to_infinity |= c.limit && c.limit->to_infinity;
             assuming |= !c.assuming.empty();
+            continuity |= c.continuity.has_value();
         }
+        for (const spec::step& st : s.steps)
+            cases |= !st.cases.empty();
         claim |= !s.claims.empty();
         use |= !s.uses.empty();
         for (const spec::dimension& dim : s.dimensions)
@@ -189,6 +193,8 @@ BOOST_AUTO_TEST_CASE(the_examples_use_every_kind_of_step_check_and_kernel_option
     BOOST_TEST(limit_to_point);
     BOOST_TEST(limit_to_infinity);
     BOOST_TEST(assuming);
+    BOOST_TEST(cases);
+    BOOST_TEST(continuity);
     BOOST_TEST(claim);
     BOOST_TEST(use);
     BOOST_TEST(new_base);
@@ -316,6 +322,22 @@ BOOST_AUTO_TEST_CASE(a_pushed_puck_gains_the_impulse_of_the_force)
     BOOST_TEST(kernel_named(d, "push_velocity").batch);
 }
 
+BOOST_AUTO_TEST_CASE(a_pushed_block_sticks_up_to_mu_m_g_then_slides)
+{
+    const engine::derivation& d = example("pushed_block");
+    const GiNaC::ex F = sym(d, "F"), m = sym(d, "m"), g = sym(d, "g"), mu = sym(d, "mu");
+    const engine::result* f = d.find_result("f");
+    BOOST_REQUIRE(f);
+    BOOST_REQUIRE_EQUAL(f->cases.size(), 2u);
+    BOOST_TEST(equal(f->cases[0].value, F));
+    BOOST_TEST(equal(f->cases[1].value, mu * m * g));
+    // a >= 0 in each case: 0 while it sticks, F/m - mu*g > 0 by the condition once it slides.
+    const engine::check_result& backwards = check_named(d, "the_block_never_accelerates_backwards");
+    BOOST_REQUIRE_EQUAL(backwards.parts.size(), 2u);
+    BOOST_TEST((backwards.parts[1].outcome.what == engine::verdict::status::proven));
+    BOOST_TEST(check_named(d, "sticking_and_sliding_meet").parts.size() == 1u);
+}
+
 BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
 {
     std::vector<std::string> missed;
@@ -341,10 +363,10 @@ const std::map<std::string, std::set<std::string>> fields_read = {
     {"[[dimension]]", {"name", "as"}},
     {"[[symbol]]", {"name", "latex", "definition", "domain", "meaning", "dimension"}},
     {"[[given]]", {"name", "equation", "because", "paper", "printed"}},
-    {"[[step]]", {"because", "solve", "for", "reject", "reject_because", "define", "as", "quotient", "name",
-                  "rearrange", "into"}},
+    {"[[step]]", {"because", "solve", "for", "reject", "reject_because", "define", "as", "cases", "quotient",
+                  "name", "rearrange", "into"}},
     {"[[result]]", {"name", "display", "paper", "printed"}},
-    {"[[check]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming"}},
+    {"[[check]]", {"name", "claim", "continuity", "because", "at", "left_at", "limit", "assuming"}},
     {"[[claim]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming", "paper", "quote"}},
     {"[[kernel]]", {"name", "inputs", "outputs", "velocities", "error", "forms", "guards", "substitute", "let",
                     "batch"}},

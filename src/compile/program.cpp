@@ -284,6 +284,8 @@ private:
             const int v = power(t);
             return negated ? op(opcode::neg, v) : v;
         }
+        if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "select_positive")
+            return op(opcode::select, value(e.op(0)), value(e.op(1)), value(e.op(2)));
         if (GiNaC::is_a<GiNaC::function>(e)) {
             std::vector<int> arguments;
             for (std::size_t i = 0; i < e.nops(); ++i)

@@ -18,7 +18,8 @@
 
 namespace impact::compile {
 
-enum class opcode { input, constant, add, sub, mul, div, neg, sqrt, fma, call };
+/// `select`: b where a > 0, c otherwise (a quantity defined by cases), both computed.
+enum class opcode { input, constant, add, sub, mul, div, neg, sqrt, fma, call, select };
 
 struct instruction {
     opcode op = opcode::constant;
@@ -109,6 +110,7 @@ std::vector<Real> run(const program& p, const std::vector<Real>& inputs)
         case opcode::neg: v[i] = -v[in.a]; break;
         case opcode::sqrt: v[i] = std::sqrt(v[in.a]); break;
         case opcode::fma: v[i] = std::fma(v[in.a], v[in.b], v[in.c]); break;
+        case opcode::select: v[i] = v[in.a] > Real(0) ? v[in.b] : v[in.c]; break;
         case opcode::call:
             if (in.function == "acos")
                 v[i] = std::acos(v[in.a]);

@@ -1,5 +1,7 @@
 #include "emit/json.h"
 
+#include "engine/cases.h"
+
 #include "engine/infix.h"
 #include "engine/order.h"
 
@@ -18,8 +20,17 @@ json check_json(const engine::check_result& c, const term_order& order)
     json j;
     j["name"] = c.name;
     j["status"] = engine::to_string(c.outcome);
-    j["claim"] = ginac_syntax(c.stated.lhs(), order) + " " + engine::to_string(c.op) + " " +
-                 ginac_syntax(c.stated.rhs(), order);
+    if (c.continuity)
+        j["continuity"] = c.cases_of;
+    else if (!GiNaC::is_a<GiNaC::relational>(c.stated))   // a check stated in words (cases exhaustive)
+        j["claim"] = c.statement;
+    else
+        j["claim"] = ginac_syntax(c.stated.lhs(), order) + " " + engine::to_string(c.op) + " " +
+                     ginac_syntax(c.stated.rhs(), order);
+    // Proven case by case (or, for continuity, boundary by boundary).
+    for (const engine::check_result::part& part : c.parts)
+        j["parts"].push_back({{"under", part.under}, {"status", engine::to_string(part.outcome)},
+                              {"method", part.outcome.method}});
     if (c.limit)
         j["limit"] = ginac_syntax(c.limit->symbol, order) + " -> " +
                      (c.limit->to_infinity ? std::string("infinity") : ginac_syntax(c.limit->point, order));
@@ -59,6 +70,11 @@ json derivation_json(const engine::derivation& d)
     j["results"] = json::object();
     for (const engine::result& r : d.results)
         j["results"][r.name] = ginac_syntax(r.value, order);
+    // A result defined by cases: each case's condition and value.
+    for (const engine::result& r : d.results)
+        for (const engine::case_value& c : r.cases)
+            j["cases"][r.name].push_back({{"when", engine::condition_text(c, order)},
+                                          {"value", ginac_syntax(c.value, order)}});
     j["display"] = json::object();
     for (const engine::result& r : d.results)
         j["display"][r.name] = ginac_syntax(r.display, order);

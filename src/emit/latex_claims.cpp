@@ -103,6 +103,33 @@ std::string fragment_writer::how(const engine::check_result& c) const
     return out;
 }
 
+// A check proven case by case, or a continuity check boundary by boundary: each part.
+std::string fragment_writer::cases_text(const engine::check_result& c) const
+{
+    if (c.parts.empty())
+        return "";
+    std::vector<std::string> parts;
+    const engine::quantity* q = d_.symbols.find(c.cases_of);
+    for (const engine::check_result::part& p : c.parts) {
+        if (p.in_case && q) {
+            const engine::case_value& one = *p.in_case;
+            const char* relation = one.op == engine::relation::less_equal      ? "\\leq"
+                                   : one.op == engine::relation::less          ? "<"
+                                   : one.op == engine::relation::greater_equal ? "\\geq"
+                                                                               : ">";
+            parts.push_back(fmt::format("case {} (${} = {}$ where ${} {} {}$): {}", p.first, math(q->symbol),
+                                        math(one.value), math(one.lhs), relation, math(one.rhs),
+                                        status_text(p.outcome)));
+        } else if (p.boundary) {
+            parts.push_back(fmt::format("cases {} and {} at ${} = {}$: {}", p.first, p.second,
+                                        math(p.boundary->first), math(p.boundary->second), status_text(p.outcome)));
+        } else {
+            parts.push_back(fmt::format("{}: {}", latex_text(p.under), status_text(p.outcome)));
+        }
+    }
+    return fmt::format(" {}: {}.", c.continuity ? "Where the cases meet" : "Case by case", listing(parts));
+}
+
 // "$x - 1 \leq 0$ (linear in x ...)", "$M > 0$ (declared positive)"
 std::string fragment_writer::sign_text(const engine::sign_step& step) const
 {
@@ -167,6 +194,15 @@ std::string fragment_writer::checks() const
                                status_text(c.outcome), q ? math(q->symbol) : latex_text(name), where);
             continue;
         }
+        if (c.continuity) {
+            const engine::quantity* q = d_.symbols.find(c.cases_of);
+            out += fmt::format("\\item {} --- {}: ${}$ is continuous where its cases meet.", status_text(c.outcome),
+                               latex_text(words(c.name)), q ? math(q->symbol) : latex_text(c.cases_of));
+            if (!c.because.empty())
+                out += " " + sentence_end(capitalised(latex_prose(c.because)));
+            out += cases_text(c) + "\n";
+            continue;
+        }
         const written_form& w = c.written;
         out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), latex_text(words(c.name)));
         const std::string inline_math = claim_math(c, order_, &w);
@@ -197,7 +233,7 @@ std::string fragment_writer::checks() const
             out += ".";
         if (!c.because.empty())
             out += (shown && conditions.empty() ? "" : " ") + sentence_end(capitalised(latex_prose(c.because)));
-        out += how(c) + "\n";
+        out += how(c) + cases_text(c) + "\n";
     }
     return out + "\\end{itemize}\n";
 }

@@ -4,6 +4,7 @@
 #include "emit/latex_parts.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -277,9 +278,35 @@ std::string fragment_writer::rejected_solutions(const engine::step_result& s) co
     return fmt::format("The equations have {} solutions; rejected: {}.\n", s.solutions.size(), listing(rejected));
 }
 
+std::string fragment_writer::cases_math(const std::vector<engine::case_value>& cases, bool derived) const
+{
+    std::vector<std::string> rows;
+    for (const engine::case_value& c : cases) {
+        const char* relation = c.op == engine::relation::less_equal      ? "\\leq"
+                               : c.op == engine::relation::less          ? "<"
+                               : c.op == engine::relation::greater_equal ? "\\geq"
+                                                                         : ">";
+        rows.push_back(fmt::format("{} & \\text{{if }} {} {} {}",
+                                   derived ? math(c.value) : math(c.as_written, &c.written),
+                                   math(derived ? c.lhs : c.written_lhs), relation,
+                                   math(derived ? c.rhs : c.written_rhs)));
+    }
+    return fmt::format("\\begin{{cases}} {} \\end{{cases}}", fmt::join(rows, " \\\\ "));
+}
+
 std::string fragment_writer::define_step(const engine::step_result& s, const std::string& because) const
 {
     std::string out;
+    if (!s.cases.empty()) {
+        const std::string symbol = math(s.cases_of);
+        out += fmt::format("Defining ${}${} by cases:\n\\begin{{align*}}\n  {} &= {}", symbol, because, symbol,
+                           cases_math(s.cases, false));
+        // What the cases come to in the declared quantities, when that differs.
+        const std::string derived = cases_math(s.cases, true);
+        if (derived != cases_math(s.cases, false))
+            out += fmt::format(" \\\\\n  &= {}", derived);
+        return out + "\n\\end{align*}\n" + step_checks(s);
+    }
     for (const auto& [symbol, value] : s.values) {
         out += fmt::format("Defining ${}${}:\n\\begin{{align*}}\n", math(symbol), because);
         // The definition as written, then what it comes to when that differs.
@@ -359,8 +386,12 @@ std::string fragment_writer::results() const
         }
         if (!r.paper.empty())
             tag += fmt::format("\\label{{{}:result:{}}}", latex_label(d_), r.name);
-        out += rows(math(r.symbol), r.display, &r.written, tag, "=", widest) +
-               (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
+        if (!r.cases.empty())
+            out += fmt::format("  {} &= {} {}", math(r.symbol), cases_math(r.cases, true), tag) +
+                   (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
+        else
+            out += rows(math(r.symbol), r.display, &r.written, tag, "=", widest) +
+                   (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
     }
     return out + "\\end{align}\n";
 }

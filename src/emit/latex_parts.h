@@ -93,7 +93,11 @@ private:
     std::string steps() const;
     std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
     std::string rejected_solutions(const engine::step_result& s) const;
+    std::string cases_text(const engine::check_result& c) const;
     std::string define_step(const engine::step_result& s, const std::string& because) const;
+    /// `\begin{cases} value & \text{if } condition \\ ... \end{cases}`: as the file writes
+    /// them, or (`derived`) in the declared quantities.
+    std::string cases_math(const std::vector<engine::case_value>& cases, bool derived) const;
     std::string yields(const engine::step_result& s) const;
     std::string quotient_step(const engine::step_result& s, const spec::step* source,
                               const std::string& because) const;

@@ -77,6 +77,10 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             expression = "std::sqrt(" + (kept_if.empty() ? text[in.a] : kept_if + " ? " + text[in.a] + " : Real(0)") + ")";
             break;
         case opcode::fma: expression = "std::fma(" + text[in.a] + ", " + text[in.b] + ", " + text[in.c] + ")"; break;
+        // Both values computed, one chosen: no branch (a conditional move, a blend in vectors).
+        case opcode::select:
+            expression = "(" + text[in.a] + " > Real(0) ? " + text[in.b] + " : " + text[in.c] + ")";
+            break;
         case opcode::call:
             expression = "std::" + in.function + "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";
             break;

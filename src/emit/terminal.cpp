@@ -1,5 +1,6 @@
 #include "emit/terminal.h"
 
+#include "engine/cases.h"
 #include "engine/dimensional.h"
 #include "engine/infix.h"
 
@@ -26,6 +27,9 @@ std::string terminal_text(const engine::derivation& d)
         out += fmt::format("  {}. {}\n", i + 1, s.description);
         for (const auto& [symbol, value] : s.values)
             out += fmt::format("       {} = {}\n", text(symbol), text(value));
+        for (const engine::case_value& c : s.cases)
+            out += fmt::format("       {} = {}    if {}\n", text(s.cases_of), text(c.value),
+                               engine::condition_text(c, order));
         for (const engine::solution& found : s.solutions) {
             std::string values;
             for (const auto& [symbol, value] : found.values)
@@ -44,11 +48,20 @@ std::string terminal_text(const engine::derivation& d)
             out += fmt::format("       {}: {}\n", c.name, engine::to_string(c.outcome));
     }
     out += "\nresults\n";
-    for (const engine::result& r : d.results)
+    for (const engine::result& r : d.results) {
+        if (!r.cases.empty()) {
+            out += fmt::format("  {} by cases{}\n", r.name, r.paper.empty() ? "" : "    [" + r.paper + "]");
+            for (const engine::case_value& c : r.cases)
+                out += fmt::format("    {} = {}    if {}\n", r.name, text(c.value), engine::condition_text(c, order));
+            continue;
+        }
         out += fmt::format("  {} = {}{}\n", r.name, text(r.display), r.paper.empty() ? "" : "    [" + r.paper + "]");
+    }
     out += "\nchecks\n";
     for (const engine::check_result& c : d.checks) {
         out += fmt::format("  {:<18} {}: {}\n", engine::to_string(c.outcome), c.name, c.statement);
+        for (const engine::check_result::part& part : c.parts)
+            out += fmt::format("  {:<18}   {}: {}\n", "", part.under, engine::to_string(part.outcome));
         if (!c.outcome.holds())
             out += fmt::format("  {:<18} residual: {}\n", "", text(c.outcome.residual));
     }

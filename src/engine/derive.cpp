@@ -1,6 +1,8 @@
 #include "engine/derive.h"
 
+#include "engine/cases.h"
 #include "engine/declarations.h"
+#include "engine/infix.h"
 #include "engine/dimensional.h"
 #include "engine/kernel_build.h"
 #include "engine/reconcile.h"
@@ -42,8 +44,15 @@ public:
             out_.checks.push_back(run_check(c));
         for (const spec::claim& c : s.claims)
             out_.paper_checks.push_back(hold_to_account(c));
+        // A kernel computes a quantity defined by cases as a select of its cases' values.
+        GiNaC::exmap selects;
+        for (const auto& [symbol, pieces] : cases_)
+            selects[symbol] = select_of(pieces);
+        const engine::resolver in_kernels = [this, &selects](const GiNaC::ex& e) {
+            return resolve(e).subs(selects, GiNaC::subs_options::no_pattern);
+        };
         for (const spec::kernel& k : s.kernels)
-            out_.kernels.push_back(build_kernel(k, out_, resolver(), run_));
+            out_.kernels.push_back(build_kernel(k, out_, in_kernels, run_));
         return std::move(out_);
     }
 
@@ -198,16 +207,58 @@ private:
 
     void define(const spec::step& st, step_result& r)
     {
-        r.description = fmt::format("define {} = {}", st.name.value, st.expression.value);
         const GiNaC::ex s = symbol_of(st.name);
-        if (values_.count(s))
+        if (values_.count(s) || cases_.count(s))
             throw error(st.name.where, fmt::format("'{}' is already derived by an earlier step", st.name.value));
+        if (!st.cases.empty())
+            return define_by_cases(st, s, r);
+        r.description = fmt::format("define {} = {}", st.name.value, st.expression.value);
         // Radicals of squares come out by the declared signs: sqrt(u^2) = u for u >= 0.
         r.as_written = out_.symbols.parse(st.expression);
         r.written = written(st.expression);
         const GiNaC::ex value = simplified(resolve(*r.as_written), declared_assumptions(out_.symbols, run_));
         set_value(s, value);
         r.values.emplace_back(s, value);
+    }
+
+    // A value by cases: each condition an inequality and each value of the quantity's
+    // dimension; the quantity keeps no single value (it stays a symbol in what uses it,
+    // and a check on it is proven case by case), and the cases are proven to cover every value.
+    void define_by_cases(const spec::step& st, const GiNaC::ex& s, step_result& r)
+    {
+        r.description = fmt::format("define {} by {} cases", st.name.value, st.cases.size());
+        r.cases_of = s;
+        const assumptions declared = declared_assumptions(out_.symbols, run_);
+        for (const spec::case_of& one : st.cases) {
+            case_value c;
+            c.where = one.where;
+            const claim_sides when = out_.symbols.parse_claim(one.when);
+            if (when.op == relation::equal)
+                throw error(one.when.where, fmt::format("condition \"{}\" must be an inequality (<, <=, >, >=), "
+                                                        "not an equation", one.when.value));
+            check_relation(out_.symbols, when.lhs == when.rhs, one.when.where);
+            c.op = when.op;
+            c.written_lhs = when.lhs;
+            c.written_rhs = when.rhs;
+            c.lhs = resolve(when.lhs);
+            c.rhs = resolve(when.rhs);
+            for (const auto& [other, pieces] : cases_)
+                if (c.lhs.has(other) || c.rhs.has(other))
+                    throw error(one.when.where, fmt::format("condition \"{}\" uses '{}', itself defined by cases",
+                                                            one.when.value, ginac_syntax(other, out_.symbols.order())));
+            c.as_written = out_.symbols.parse(one.as);
+            c.written = written(one.as);
+            c.value = simplified(resolve(c.as_written), declared);
+            for (const auto& [other, pieces] : cases_)
+                if (c.value.has(other))
+                    throw error(one.as.where, fmt::format("value \"{}\" uses '{}', itself defined by cases",
+                                                          one.as.value, ginac_syntax(other, out_.symbols.order())));
+            check_value(out_.symbols, s, c.value, one.as.where);
+            r.cases.push_back(std::move(c));
+        }
+        r.checks.push_back(prove_exhaustive(st.name.value, r.cases, out_.symbols));
+        cases_[s] = r.cases;
+        resolved_.clear();
     }
 
     // Divides one equation by another side by side (Eq. 2's route); valid where the
@@ -259,6 +310,21 @@ private:
     void add_result(const spec::result& spec_result)
     {
         const quantity& q = out_.symbols.at(spec_result.name);
+        if (const auto by_cases = cases_.find(q.symbol); by_cases != cases_.end()) {
+            if (spec_result.display || spec_result.printed)
+                throw error(spec_result.name.where, fmt::format("result '{}' is defined by cases: it has no single "
+                                                                "'display' or 'printed' form",
+                                                                spec_result.name.value));
+            result r;
+            r.name = q.name;
+            r.symbol = q.symbol;
+            r.value = q.symbol;
+            r.display = q.symbol;
+            r.paper = spec_result.paper ? spec_result.paper->value : std::string();
+            r.cases = by_cases->second;
+            out_.results.push_back(std::move(r));
+            return;
+        }
         const auto value = values_.find(q.symbol);
         if (value == values_.end())
             throw error(spec_result.name.where,
@@ -316,6 +382,8 @@ private:
     // (hold_to_account), not the file's mistake.
     check_result run_check(const spec::check& spec_check, bool paper_claim = false)
     {
+        if (spec_check.continuity)
+            return run_continuity(spec_check);
         check_result c;
         c.name = spec_check.name.value;
         c.statement = spec_check.claim.value;
@@ -371,6 +439,13 @@ private:
 
         c.lhs = lhs;
         c.rhs = rhs;
+        if (const auto split = cases_in(lhs, rhs, c.where)) {
+            if (spec_check.limit || !spec_check.left_at.empty())
+                throw error(c.where, fmt::format("check '{}' on '{}', defined by cases, may have no 'limit' or "
+                                                 "'left_at'", c.name, ginac_syntax(split->first, out_.symbols.order())));
+            prove_by_cases(c, split->first, split->second, at, given);
+            return c;
+        }
         if (spec_check.limit) {
             c.limit = limit_point_of(*spec_check.limit);
             if (c.op != relation::equal)
@@ -383,6 +458,84 @@ private:
         } else {
             c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, given);
         }
+        return c;
+    }
+
+    // The quantity defined by cases that a check's sides use, if any (one at most).
+    std::optional<std::pair<GiNaC::ex, std::vector<case_value>>> cases_in(const GiNaC::ex& lhs, const GiNaC::ex& rhs,
+                                                                          const source_location& where) const
+    {
+        std::optional<std::pair<GiNaC::ex, std::vector<case_value>>> found;
+        for (const auto& [symbol, pieces] : cases_)
+            if (lhs.has(symbol) || rhs.has(symbol)) {
+                if (found)
+                    throw error(where, fmt::format("the check uses '{}' and '{}', both defined by cases: a check "
+                                                   "may split on one quantity's cases",
+                                                   ginac_syntax(found->first, out_.symbols.order()), ginac_syntax(symbol, out_.symbols.order())));
+                found.emplace(symbol, pieces);
+            }
+        return found;
+    }
+
+    // Each case's value substituted (and the check's special values into the case), the
+    // claim proven under the case's condition.
+    void prove_by_cases(check_result& c, const GiNaC::ex& symbol, std::vector<case_value> pieces,
+                        const GiNaC::exmap& at, const assumptions& given)
+    {
+        c.cases_of = ginac_syntax(symbol, out_.symbols.order());
+        for (std::size_t i = 0; i < pieces.size(); ++i) {
+            case_value& one = pieces[i];
+            if (!at.empty()) {
+                one.lhs = one.lhs.subs(at);
+                one.rhs = one.rhs.subs(at);
+                one.value = one.value.subs(at);
+            }
+            const GiNaC::exmap in_case{{symbol, one.value}};
+            const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
+            const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
+            check_result::part part;
+            part.first = i + 1;
+            part.in_case = one;
+            part.under = fmt::format("case {} ({} = {}, where {})", i + 1, c.cases_of, given.text(one.value),
+                                     condition_text(one, given.order));
+            // At special values a condition may be a comparison of numbers: a case whose
+            // condition is false there holds nothing to prove.
+            const GiNaC::ex gap = GiNaC::normal(one.rhs - one.lhs);
+            if (GiNaC::is_a<GiNaC::numeric>(gap) && GiNaC::ex_to<GiNaC::numeric>(gap).is_real()) {
+                const GiNaC::numeric g = GiNaC::ex_to<GiNaC::numeric>(gap);   // rhs - lhs
+                const bool holds = one.op == relation::less_equal ? g >= 0
+                                   : one.op == relation::less     ? g > 0
+                                   : one.op == relation::greater_equal ? g <= 0
+                                                                       : g < 0;
+                if (!holds) {
+                    part.outcome.what = verdict::status::proven;
+                    part.outcome.residual = 0;
+                    part.outcome.method = "the case does not arise: its condition is false at these values";
+                    c.parts.push_back(std::move(part));
+                    continue;
+                }
+            }
+            part.outcome = c.op == relation::equal ? prove_equal(lhs, rhs, out_.symbols, run_)
+                                                   : prove_in_case(lhs, c.op, rhs, one, out_.symbols, given);
+            c.parts.push_back(std::move(part));
+        }
+        c.outcome = combine_cases(c.parts);
+    }
+
+    // `continuity = "J_t"`: the cases of J_t agree where their conditions meet.
+    check_result run_continuity(const spec::check& spec_check)
+    {
+        const spec::text& name = *spec_check.continuity;
+        const quantity& q = out_.symbols.at(name);
+        const auto found = cases_.find(q.symbol);
+        if (found == cases_.end())
+            throw error(name.where, fmt::format("continuity of '{}': it is not defined by cases", name.value));
+        check_result c = prove_continuity(name.value, found->second, out_.symbols, run_, name.where);
+        c.name = spec_check.name.value;
+        c.continuity = true;
+        c.statement = fmt::format("{} is continuous where its cases meet", name.value);
+        c.because = spec_check.because.value;
+        c.stated = q.symbol == q.symbol;
         return c;
     }
 
@@ -503,6 +656,7 @@ private:
     derivation out_;
     std::vector<equation> equations_;
     GiNaC::exmap values_;
+    std::map<GiNaC::ex, std::vector<case_value>, GiNaC::ex_is_less> cases_;   ///< quantities defined by cases
     mutable std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> resolved_;
 };
 

@@ -35,6 +35,20 @@ struct equation {
     written_form written;     ///< how the file writes it (a given, a rearranged form)
 };
 
+/// One case of a quantity defined by cases (`define` with `cases`): its value where its
+/// condition `lhs op rhs` holds. The first case whose condition holds applies.
+struct case_value {
+    relation op = relation::less_equal;   ///< the condition's relation (never `equal`)
+    GiNaC::ex lhs;            ///< the condition's sides, in the declared quantities
+    GiNaC::ex rhs;
+    GiNaC::ex value;          ///< the value in this case, in the declared quantities
+    GiNaC::ex written_lhs;    ///< the condition and value as the file writes them, before substitution
+    GiNaC::ex written_rhs;
+    GiNaC::ex as_written;
+    written_form written;     ///< how the file writes the value
+    source_location where;    ///< the case's table
+};
+
 /// One proven (or failed) statement.
 struct check_result {
     std::string name;
@@ -59,6 +73,19 @@ struct check_result {
     verdict outcome;
     source_location where;
     written_form written;     ///< how the file writes the claim
+    /// A check on a quantity defined by cases is proven case by case (and a continuity
+    /// check boundary by boundary): each part's verdict, with what it was proven under.
+    struct part {
+        std::string under;    ///< e.g. "case 1 (J_t = ...) where ... <= ...", or the boundary
+        verdict outcome;
+        std::size_t first = 0;        ///< the case (from 1), or the first of the two that meet
+        std::size_t second = 0;       ///< continuity: the second case
+        std::optional<case_value> in_case;                          ///< the case, as proven (after `at`)
+        std::optional<std::pair<GiNaC::ex, GiNaC::ex>> boundary;    ///< continuity: symbol = value there
+    };
+    std::vector<part> parts;
+    std::string cases_of;     ///< the quantity whose cases split the check, if any
+    bool continuity = false;  ///< a continuity check (`continuity = "J_t"`) of `cases_of`
 };
 
 /// One solution of a `solve` step whose equations are not linear: kept, or rejected by
@@ -90,6 +117,10 @@ struct step_result {
     /// solve, when its equations are not linear: every solution found, kept and rejected
     /// (the one kept is also in `values`; each is substituted back in `checks`).
     std::vector<solution> solutions;
+    /// define with `cases`: the value in each case (`values` is then empty), and the
+    /// quantity they define.
+    std::vector<case_value> cases;
+    GiNaC::ex cases_of;
 };
 
 /// Something the paper prints or claims, compared with what is derived.
@@ -118,6 +149,8 @@ struct result {
     GiNaC::ex display;        ///< the form to typeset, proven equal to `value`
     std::string paper;
     written_form written;     ///< how the file writes the display form
+    /// Defined by cases: each case (then `value` and `display` are the symbol itself).
+    std::vector<case_value> cases;
 };
 
 /// A parameter of a kernel: a scalar, or an array of components (`C_M = [C_Mx, C_My]`).

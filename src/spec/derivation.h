@@ -53,6 +53,13 @@ struct given {
     std::optional<text> printed; ///< the equation as the paper prints it, compared for equivalence
 };
 
+/// One case of a value defined by cases: `{ when = "lhs <= rhs", as = "expression" }`.
+struct case_of {
+    text when;                     ///< the condition, an inequality `lhs op rhs` (op one of <, <=, >, >=)
+    text as;                       ///< the value in that case
+    source_location where;         ///< the case's table
+};
+
 /// One step of a derivation. Exactly one of the kinds is filled in.
 struct step {
     enum class kind { solve, define, quotient, rearrange };
@@ -67,6 +74,7 @@ struct step {
     text source;                   ///< rearrange: the equation brought to a new form
     std::vector<text> reject;      ///< solve: conditions (`lhs = rhs`) whose solutions are not wanted
     text reject_because;           ///< solve: why the solutions `reject` names are not wanted
+    std::vector<case_of> cases;    ///< define: the value by cases, in place of `expression` (empty otherwise)
 };
 
 /// A named result with the form to display and what the paper prints.
@@ -89,7 +97,8 @@ struct limit_point {
 
 struct check {
     text name;
-    text claim;                    ///< `lhs = rhs`, or `lhs <= rhs` (also <, >=, >)
+    text claim;                    ///< `lhs = rhs`, or `lhs <= rhs` (also <, >=, >); empty for `continuity`
+    std::optional<text> continuity;///< a quantity defined by cases: its cases agree where their conditions meet
     text because;
     std::vector<binding> at;       ///< special values, e.g. `eps = 1`
     std::vector<binding> left_at;  ///< inputs changed on the left side only, e.g. `v_M = v_M + w`

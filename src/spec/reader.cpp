@@ -94,6 +94,32 @@ given read_given(table_reader& in)
     return g;
 }
 
+// `cases = [{ when = "lhs <= rhs", as = "value" }, ...]`: two cases at least, each an
+// inequality and a value; whether the conditions are inequalities of the derivation's
+// quantities is the engine's business.
+std::vector<case_of> read_cases(table_reader& in, const text& name)
+{
+    const source_location where = in.where_of("cases");
+    std::vector<case_of> cases;
+    for (const toml::table* table : in.table_array("cases")) {
+        table_reader c = in.nested(*table, fmt::format("a case of '{}'", name.value));
+        case_of one;
+        one.where = c.where();
+        one.when = c.required_string("when");
+        one.as = c.required_string("as");
+        c.finish();
+        const std::string& w = one.when.value;
+        if (w.find('<') == std::string::npos && w.find('>') == std::string::npos)
+            throw error(one.when.where, fmt::format("condition \"{}\" must be an inequality 'lhs op rhs' with op one "
+                                                    "of <, <=, >, >=", w));
+        cases.push_back(std::move(one));
+    }
+    if (cases.size() < 2)
+        throw error(where, fmt::format("'cases' of '{}' must list two cases or more, each "
+                                       "{{ when = \"lhs <= rhs\", as = \"value\" }}", name.value));
+    return cases;
+}
+
 step read_step(table_reader& in)
 {
     step s;
@@ -117,7 +143,13 @@ step read_step(table_reader& in)
     } else if (in.has("define")) {
         s.what = step::kind::define;
         s.name = in.required_string("define");
-        s.expression = in.required_string("as");
+        if (in.has("as") && in.has("cases"))
+            throw error(in.where_of("cases"), fmt::format("step '{}' has both 'as' and 'cases': give one value or "
+                                                          "its cases", s.name.value));
+        if (in.has("cases"))
+            s.cases = read_cases(in, s.name);
+        else
+            s.expression = in.required_string("as");
     } else if (in.has("quotient")) {
         s.what = step::kind::quotient;
         s.equations = in.string_array("quotient", true);
@@ -236,12 +268,23 @@ error_scale read_error_scale(const binding& b)
     return e;
 }
 
-// The fields a check and a claim share.
-check read_check_fields(table_reader& in)
+// The fields a check and a claim share; a check may be `continuity` in place of `claim`.
+check read_check_fields(table_reader& in, bool continuity_allowed = false)
 {
     check c;
     c.name = in.required_string("name");
-    c.claim = in.required_string("claim");
+    if (continuity_allowed && in.has("continuity")) {
+        c.continuity = in.optional_string("continuity");
+        if (in.has("claim"))
+            throw error(in.where_of("claim"), fmt::format("check '{}' has both 'claim' and 'continuity': a continuity "
+                                                          "check states its claim itself", c.name.value));
+        for (const char* other : {"at", "left_at", "limit", "assuming"})
+            if (in.has(other))
+                throw error(in.where_of(other), fmt::format("'{}' does not apply to a continuity check", other));
+        c.claim = {"", c.continuity->where};
+    } else {
+        c.claim = in.required_string("claim");
+    }
     c.because = in.string_or("because", "");
     c.at = in.binding_table("at");
     c.left_at = in.binding_table("left_at");
@@ -253,7 +296,7 @@ check read_check_fields(table_reader& in)
 
 check read_check(table_reader& in)
 {
-    check c = read_check_fields(in);
+    check c = read_check_fields(in, true);
     in.finish();
     return c;
 }

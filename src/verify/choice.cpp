@@ -1,6 +1,7 @@
 #include "verify/choice.h"
 
 #include "cache/store.h"
+#include "engine/cases.h"
 #include "engine/sign.h"
 
 #include <fmt/format.h>
@@ -57,7 +58,7 @@ bool better(const verify::accuracy& a, const verify::accuracy& b)
 std::optional<engine::form> derived_form(const engine::kernel_output& o, std::size_t c, const std::string& which)
 {
     const GiNaC::ex derived = o.values[c];
-    if (engine::has_radical(derived))
+    if (engine::has_radical(derived) || engine::has_select(derived))
         return std::nullopt;
     const GiNaC::ex nd = GiNaC::normal(derived).numer_denom();
     if (which == "expanded")

@@ -1,0 +1,397 @@
+// Quantities defined by cases (a `define` step with `cases`): sticking and sliding
+// friction derived with its conditions, its checks proven case by case under each case's
+// condition, continuity at the cases' boundary proven, and a continuity that fails
+// reported failed; the cases' syntax refused at its place.
+//
+// The derivation files are written for these tests (tests/cases/), not the paper's; the
+// expected values are closed forms typed here.
+#define BOOST_TEST_MODULE test_cases
+#include <boost/test/unit_test.hpp>
+
+#include "support.h"
+
+#include "emit/json.h"
+#include "emit/latex.h"
+#include "emit/terminal.h"
+#include "compile/program.h"
+#include "emit/program_cxx.h"
+#include "engine/derive.h"
+#include "engine/infix.h"
+#include "engine/library.h"
+#include "pipeline/regenerate.h"
+#include "verify/choice.h"
+
+#include <cstdlib>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+
+#include <string>
+
+namespace {
+
+using namespace impact;
+
+engine::derivation derive_file(const std::string& name)
+{
+    return engine::derive(spec::read_derivation(IMPACT_SOURCE_DIR "/tests/cases/" + name), {});
+}
+
+engine::derivation derive_text(const std::string& text)
+{
+    return engine::derive(spec::parse_derivation(text, "test.toml"), {});
+}
+
+// The full message (`file:line:column: error: what`) of the error `text` raises.
+std::string error_for(const std::string& text)
+{
+    try {
+        derive_text(text);
+    } catch (const impact::error& e) {
+        return e.what();
+    }
+    BOOST_FAIL("no error for:\n" + text);
+    return {};
+}
+
+GiNaC::ex sym(const engine::derivation& d, const std::string& name)
+{
+    return d.symbols.find(name)->symbol;
+}
+
+bool equal(const GiNaC::ex& a, const GiNaC::ex& b)
+{
+    return GiNaC::normal(GiNaC::expand(a - b)).is_zero();
+}
+
+const engine::check_result& check_named(const engine::derivation& d, const std::string& name)
+{
+    for (const engine::check_result* c : d.all_checks())
+        if (c->name == name)
+            return *c;
+    BOOST_FAIL("no check named " + name);
+    throw;
+}
+
+bool proven(const engine::verdict& v)
+{
+    return v.what == engine::verdict::status::proven;
+}
+
+// A derivation of y by cases in x; `cases_line` is line 10 of the file, `more` follows.
+std::string by_cases(const std::string& cases_line, const std::string& more = "")
+{
+    return "id = \"t\"\n"                 // 1
+           "title = \"t\"\n"              // 2
+           "[[symbol]]\n"                 // 3
+           "name = \"x\"\n"               // 4
+           "domain = \"positive\"\n"      // 5
+           "[[symbol]]\n"                 // 6
+           "name = \"y\"\n"               // 7
+           "[[step]]\n"                   // 8
+           "define = \"y\"\n"             // 9
+           + cases_line + "\n" +          // 10
+           "[[result]]\n"                 // 11
+           "name = \"y\"\n" + more;       // 12
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(friction_is_derived_as_its_cases_with_their_conditions)
+{
+    const engine::derivation d = derive_file("friction.toml");
+    const GiNaC::ex g_t = sym(d, "g_t"), m_t = sym(d, "m_t"), b = sym(d, "b"), mu = sym(d, "mu"),
+                    m_n = sym(d, "m_n"), v_n = sym(d, "v_n"), e = sym(d, "e");
+    const engine::result* j_t = d.find_result("J_t");
+    BOOST_REQUIRE(j_t);
+    BOOST_REQUIRE_EQUAL(j_t->cases.size(), 2u);
+    // Sticking: the impulse that stops the slip (with restitution b); sliding: mu J_n, with
+    // J_n = (1 + e) m_n v_n substituted.
+    BOOST_TEST(equal(j_t->cases[0].value, (1 + b) * m_t * g_t));
+    BOOST_TEST(equal(j_t->cases[1].value, mu * (1 + e) * m_n * v_n));
+    BOOST_TEST((j_t->cases[0].op == engine::relation::less_equal));
+    BOOST_TEST((j_t->cases[1].op == engine::relation::greater));
+    BOOST_TEST(equal(j_t->cases[0].lhs, (1 + b) * m_t * g_t));
+    BOOST_TEST(equal(j_t->cases[0].rhs, mu * (1 + e) * m_n * v_n));
+    // The step proves that the two conditions cover every value.
+    const engine::step_result& step = d.steps.at(1);
+    BOOST_REQUIRE_EQUAL(step.cases.size(), 2u);
+    BOOST_REQUIRE_EQUAL(step.checks.size(), 1u);
+    BOOST_TEST(step.checks[0].name == "the cases of J_t cover every value");
+    BOOST_TEST(proven(step.checks[0].outcome));
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(friction_checks_are_proven_case_by_case_under_each_condition)
+{
+    const engine::derivation d = derive_file("friction.toml");
+    for (const std::string name : {"inside the friction cone", "never more than sticking needs", "opposes the slip"}) {
+        BOOST_TEST_CONTEXT(name)
+        {
+            const engine::check_result& c = check_named(d, name);
+            BOOST_TEST(c.cases_of == "J_t");
+            BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+            BOOST_TEST(proven(c.parts[0].outcome));
+            BOOST_TEST(proven(c.parts[1].outcome));
+            BOOST_TEST(proven(c.outcome));
+        }
+    }
+    // J_t <= mu J_n when sticking holds only by the condition: (1 + b) m_t g_t <= mu J_n
+    // is not true for every value, so the proof must have used it.
+    const engine::check_result& cone = check_named(d, "inside the friction cone");
+    const std::string& method = cone.parts[0].outcome.method;
+    BOOST_TEST(method.rfind("under g_t*m_t*(1+b) <= mu*m_n*v_n*(1+e): ", 0) == 0, method);
+    BOOST_TEST(method.find("a factor > 0 times the condition's") != std::string::npos, method);
+}
+
+BOOST_AUTO_TEST_CASE(sticking_and_sliding_meet_at_the_edge_of_the_cone)
+{
+    const engine::derivation d = derive_file("friction.toml");
+    const engine::check_result& c = check_named(d, "sticking and sliding meet");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 1u);
+    // The boundary solved for g_t, the first declared quantity it is linear in.
+    BOOST_TEST(c.parts[0].under.rfind("cases 1 and 2 at g_t = ", 0) == 0, c.parts[0].under);
+    BOOST_TEST(proven(c.parts[0].outcome));
+    BOOST_TEST(proven(c.outcome));
+}
+
+BOOST_AUTO_TEST_CASE(a_halved_sliding_impulse_fails_continuity)
+{
+    const engine::derivation d = derive_file("discontinuous.toml");
+    const engine::check_result& c = check_named(d, "sticking and sliding meet");
+    BOOST_TEST((c.outcome.what == engine::verdict::status::failed));
+    BOOST_TEST(!c.outcome.holds());
+    BOOST_TEST(!d.all_hold());
+    // At the edge, (1 + b) m_t g_t = mu J_n: the values differ by mu J_n / 2.
+    const GiNaC::ex mu = sym(d, "mu"), m_n = sym(d, "m_n"), v_n = sym(d, "v_n"), e = sym(d, "e");
+    const GiNaC::ex r = c.parts.at(0).outcome.residual;
+    BOOST_TEST((equal(r, mu * (1 + e) * m_n * v_n / 2) || equal(r, -mu * (1 + e) * m_n * v_n / 2)), r);
+    // The other checks still hold in both cases.
+    BOOST_TEST(proven(check_named(d, "inside the friction cone").outcome));
+    BOOST_TEST(proven(check_named(d, "never more than sticking needs").outcome));
+}
+
+BOOST_AUTO_TEST_CASE(a_claim_false_in_one_case_fails_in_that_case_only)
+{
+    const std::string text = by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"at most one\"\nclaim = \"y <= 1\"\n"
+        "[[check]]\nname = \"at most a half\"\nclaim = \"y <= 1/2\"\n"
+        "[[check]]\nname = \"meets\"\ncontinuity = \"y\"\n");
+    const engine::derivation d = derive_text(text);
+    // y = min(x, 1) <= 1: case 1 by its condition x <= 1, case 2 by 1 <= 1.
+    const engine::check_result& one = check_named(d, "at most one");
+    BOOST_TEST(proven(one.outcome));
+    // y <= 1/2 is false in both cases (x = 1 in the first, 1 in the second).
+    const engine::check_result& half = check_named(d, "at most a half");
+    BOOST_TEST((half.parts.at(0).outcome.what == engine::verdict::status::failed));
+    BOOST_TEST((half.parts.at(1).outcome.what == engine::verdict::status::failed));
+    BOOST_TEST(!half.outcome.holds());
+    // min(x, 1) is continuous at x = 1.
+    const engine::check_result& meets = check_named(d, "meets");
+    BOOST_TEST(meets.parts.at(0).under == "cases 1 and 2 at x = 1");
+    BOOST_TEST(proven(meets.outcome));
+}
+
+BOOST_AUTO_TEST_CASE(cases_that_leave_their_boundary_out_are_not_exhaustive)
+{
+    const engine::derivation d =
+        derive_text(by_cases("cases = [{ when = \"x < 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]"));
+    const engine::check_result& c = d.steps.at(0).checks.at(0);
+    BOOST_TEST((c.outcome.what == engine::verdict::status::failed));
+    BOOST_TEST(c.outcome.method.find("D = 0 is in no case") != std::string::npos, c.outcome.method);
+    BOOST_TEST(!d.all_hold());
+    // Conditions on two different expressions are not proven to cover every value.
+    const engine::derivation two = derive_text(
+        by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x^2 > 1\", as = \"1\" }]"));
+    BOOST_TEST((two.steps.at(0).checks.at(0).outcome.what == engine::verdict::status::failed));
+}
+
+BOOST_AUTO_TEST_CASE(bad_cases_are_refused_at_their_place)
+{
+    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }]")) ==
+               "test.toml:10:9: error: 'cases' of 'y' must list two cases or more, each "
+               "{ when = \"lhs <= rhs\", as = \"value\" }");
+    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\" }]")) ==
+               "test.toml:10:41: error: a case of 'y' is missing the required field 'as'");
+    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\", at = \"1\" }, "
+                                  "{ when = \"x > 1\", as = \"1\" }]")) ==
+               "test.toml:10:39: error: unknown field 'at' in a case of 'y'");
+    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x = 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]")) ==
+               "test.toml:10:19: error: condition \"x = 1\" must be an inequality 'lhs op rhs' with op one of "
+               "<, <=, >, >=");
+    BOOST_TEST(error_for(by_cases("as = \"x\"\ncases = [{ when = \"x <= 1\", as = \"x\" }, "
+                                  "{ when = \"x > 1\", as = \"1\" }]")) ==
+               "test.toml:11:9: error: step 'y' has both 'as' and 'cases': give one value or its cases");
+    // A case's value must have the quantity's dimension, like any definition's.
+    const std::string dimensions = "id = \"t\"\ntitle = \"t\"\n"
+                                   "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\ndimension = \"length\"\n"
+                                   "[[symbol]]\nname = \"y\"\ndimension = \"length\"\n"
+                                   "[[step]]\ndefine = \"y\"\n"
+                                   "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]\n"
+                                   "[[result]]\nname = \"y\"\n";
+    BOOST_TEST(error_for(dimensions).rfind("test.toml:12:", 0) == 0, error_for(dimensions));
+}
+
+BOOST_AUTO_TEST_CASE(continuity_checks_are_refused_where_they_mean_nothing)
+{
+    const std::string cases = "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]";
+    // Continuity of a quantity not defined by cases.
+    BOOST_TEST(error_for(by_cases(cases, "[[check]]\nname = \"c\"\ncontinuity = \"x\"\n")) ==
+               "test.toml:15:14: error: continuity of 'x': it is not defined by cases");
+    BOOST_TEST(error_for(by_cases(cases, "[[check]]\nname = \"c\"\ncontinuity = \"y\"\nclaim = \"y > 0\"\n")) ==
+               "test.toml:16:9: error: check 'c' has both 'claim' and 'continuity': a continuity check states its "
+               "claim itself");
+    // Cases on two different expressions share no boundary.
+    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x^2 > 1\", as = \"1\" }]",
+                                  "[[check]]\nname = \"c\"\ncontinuity = \"y\"\n")) ==
+               "test.toml:15:14: error: no two cases of 'y' share a boundary (conditions that are signs of one "
+               "expression): continuity cannot be checked");
+}
+
+BOOST_AUTO_TEST_CASE(a_result_by_cases_is_typeset_as_a_cases_environment)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"meets\"\ncontinuity = \"y\"\n"));
+    const std::string tex = emit::latex_fragment(d);
+    const std::string cases = "\\begin{cases} x & \\text{if } x \\leq 1 \\\\ 1 & \\text{if } x > 1 \\end{cases}";
+    // In the step, as written, and among the results.
+    BOOST_TEST(tex.find("  y &= " + cases + "\n\\end{align*}") != std::string::npos, tex);
+    BOOST_TEST(tex.find("  y &= " + cases + " \\notag\n") != std::string::npos, tex);
+    BOOST_TEST(tex.find("The cases of y cover every value: \\textbf{proven}.") != std::string::npos, tex);
+    // A check proven case by case lists each case in mathematics.
+    const engine::derivation checked = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"at most one\"\nclaim = \"y <= 1\"\n"));
+    const std::string checked_tex = emit::latex_fragment(checked);
+    BOOST_TEST(checked_tex.find("Case by case: case 1 ($y = x$ where $x \\leq 1$): \\textbf{proven} and case 2 "
+                                "($y = 1$ where $x > 1$): \\textbf{proven}.") != std::string::npos,
+               checked_tex);
+    BOOST_TEST(tex.find("\\item \\textbf{proven} --- meets: $y$ is continuous where its cases meet. Where the "
+                        "cases meet: cases 1 and 2 at $x = 1$: \\textbf{proven}.") != std::string::npos,
+               tex);
+}
+
+BOOST_AUTO_TEST_CASE(json_and_terminal_list_the_cases)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"at most one\"\nclaim = \"y <= 1\"\n"));
+    const std::string json = emit::derivations_json({&d});
+    BOOST_TEST(json.find("      \"cases\": {\n        \"y\": [\n          {\n            \"when\": \"x <= 1\",\n"
+                         "            \"value\": \"x\"\n          },\n          {\n"
+                         "            \"when\": \"x > 1\",\n            \"value\": \"1\"\n          }\n"
+                         "        ]\n      }") != std::string::npos,
+               json);
+    BOOST_TEST(json.find("\"under\": \"case 2 (y = 1, where x > 1)\"") != std::string::npos, json);
+    const std::string text = emit::terminal_text(d);
+    BOOST_TEST(text.find("  y by cases\n    y = x    if x <= 1\n    y = 1    if x > 1\n") != std::string::npos, text);
+    BOOST_TEST(text.find("      case 1 (y = x, where x <= 1): proven\n") != std::string::npos, text);
+}
+
+BOOST_AUTO_TEST_CASE(a_bound_on_one_symbol_narrows_its_domain_in_that_case)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"narrowed\"\nclaim = \"y*(2 - y) >= 0\"\n"));
+    // x (2 - x) >= 0 holds for x in (0, 1], not for every positive x: the sign of 2 - x
+    // needs the case's bound.
+    const engine::check_result& c = check_named(d, "narrowed");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(proven(c.parts[0].outcome));
+    BOOST_TEST(c.parts[0].outcome.method.rfind("under x <= 1, x in (0, 1]: ", 0) == 0, c.parts[0].outcome.method);
+    BOOST_TEST(proven(c.outcome));
+}
+
+BOOST_AUTO_TEST_CASE(a_case_only_sampled_is_reported_sampled_never_proven)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"cubic\"\nclaim = \"y^3 - 3*y + 3 > 0\"\n"));
+    // x^3 - 3x + 3 > 0 for every positive x (its least value, at x = 1, is 1), but no sign
+    // argument of the prover settles it: case 1 is sampled, case 2 (1 > 0) proven.
+    const engine::check_result& c = check_named(d, "cubic");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST((c.parts[0].outcome.what == engine::verdict::status::sampled));
+    BOOST_TEST(c.parts[0].outcome.method.rfind("not proven under x <= 1; sampled over the whole domain", 0) == 0,
+               c.parts[0].outcome.method);
+    BOOST_TEST(proven(c.parts[1].outcome));
+    BOOST_TEST((c.outcome.what == engine::verdict::status::sampled));
+    BOOST_TEST(c.outcome.method.find("case 1 (y = x, where x <= 1): sampled (200 points)") != std::string::npos,
+               c.outcome.method);
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_computes_cases_with_one_select_on_both_sides_of_the_boundary)
+{
+    const engine::derivation d = derive_file("friction.toml");
+    BOOST_REQUIRE_EQUAL(d.kernels.size(), 1u);
+    const engine::kernel& k = d.kernels.front();
+    const std::vector<GiNaC::ex> inputs = k.input_symbols();
+    const compile::program p =
+        compile::compile_program({k.outputs.at(0).values.at(0)}, inputs, engine::term_order(inputs));
+    BOOST_TEST(compile::count(p, compile::opcode::select) == 1u);
+    // Inputs g_t, m_t, b, mu, m_n, v_n, e. Sticking: (1 + b) m_t g_t = 1.5 within
+    // mu (1 + e) m_n v_n = 2, so J_t = 1.5; sliding at g_t = 2: 3 > 2, so J_t = 2; sliding
+    // with mu = 1/4: 1.5 > 0.5, so J_t = 0.5; on the edge (b = 1): 2 = 2, both cases give 2.
+    BOOST_TEST(compile::run<double>(p, {1, 1, 0.5, 1, 1, 1, 1}).at(0) == 1.5);
+    BOOST_TEST(compile::run<double>(p, {2, 1, 0.5, 1, 1, 1, 1}).at(0) == 2.0);
+    BOOST_TEST(compile::run<double>(p, {1, 1, 0.5, 0.25, 1, 1, 1}).at(0) == 0.5);
+    BOOST_TEST(compile::run<double>(p, {1, 1, 1, 1, 1, 1, 1}).at(0) == 2.0);
+    // Printed as a conditional expression on values computed before it.
+    const emit::cxx_code code = emit::program_cxx(p, {"g_t", "m_t", "b", "mu", "m_n", "v_n", "e"});
+    BOOST_REQUIRE_EQUAL(code.outputs.size(), 1u);
+    BOOST_TEST(code.outputs[0].find(" > Real(0) ? ") != std::string::npos, code.outputs[0]);
+    BOOST_TEST(code.outputs[0].find(" : ") != std::string::npos, code.outputs[0]);
+    // Measured against CLN, which evaluates the case that holds at each sample.
+    const verify::kernel_plan plan = verify::plan_kernel(k, engine::declaration_order(d.symbols));
+    const std::vector<std::string> missed = verify::missed_bounds({plan});
+    BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
+}
+
+BOOST_AUTO_TEST_CASE(the_emitted_kernel_compiles_and_selects_each_case)
+{
+    namespace fs = std::filesystem;
+    const engine::library lib = engine::derive_all({spec::read_derivation(IMPACT_SOURCE_DIR "/tests/cases/friction.toml")});
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    BOOST_TEST(missed.empty());
+    const fs::path dir = fs::temp_directory_path() / ("impact_test_cases_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const auto& [path, text] : files) {
+        fs::create_directories((dir / path).parent_path());
+        std::ofstream(dir / path) << text;
+    }
+    // Sticking (1.5 within 2), sliding (3 beyond 2: 2), sliding with mu = 1/4 (0.5), the edge (2).
+    std::ofstream(dir / "main.cpp") << "#include \"impact/friction_impulse.hpp\"\n"
+                                       "int main()\n{\n"
+                                       "    using impact::friction_impulse;\n"
+                                       "    return friction_impulse<double>(1, 1, 0.5, 1, 1, 1, 1) == 1.5 &&\n"
+                                       "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1) == 2.0 &&\n"
+                                       "           friction_impulse<double>(1, 1, 0.5, 0.25, 1, 1, 1) == 0.5 &&\n"
+                                       "           friction_impulse<float>(1, 1, 1, 1, 1, 1, 1) == 2.0f ? 0 : 1;\n"
+                                       "}\n";
+    const std::string command = std::string(IMPACT_CXX) + " -std=c++17 -O2 -I" + (dir / "kernels").string() + " " +
+                                (dir / "main.cpp").string() + " -o " + (dir / "main").string() + " && " +
+                                (dir / "main").string();
+    BOOST_TEST(std::system(command.c_str()) == 0, command);
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(at_special_values_a_case_that_does_not_arise_is_not_proven_against)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[check]]\nname = \"at two\"\nclaim = \"y = 1\"\nat = { x = \"2\" }\n"
+        "[[check]]\nname = \"at a half\"\nclaim = \"y = 1\"\nat = { x = \"1/2\" }\n"));
+    // min(2, 1) = 1: case 1 (y = 2) does not arise at x = 2, case 2 gives 1.
+    const engine::check_result& two = check_named(d, "at two");
+    BOOST_REQUIRE_EQUAL(two.parts.size(), 2u);
+    BOOST_TEST(two.parts[0].outcome.method == "the case does not arise: its condition is false at these values");
+    BOOST_TEST(proven(two.outcome));
+    // min(1/2, 1) = 1/2, not 1: case 1 arises and fails.
+    const engine::check_result& half = check_named(d, "at a half");
+    BOOST_TEST((half.parts.at(0).outcome.what == engine::verdict::status::failed));
+    BOOST_TEST(half.parts.at(1).outcome.method == "the case does not arise: its condition is false at these values");
+    BOOST_TEST(!half.outcome.holds());
+}
