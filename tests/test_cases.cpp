@@ -8,6 +8,7 @@
 #define BOOST_TEST_MODULE test_cases
 #include <boost/test/unit_test.hpp>
 
+#include "derivation_support.h"
 #include "support.h"
 
 #include "emit/json.h"
@@ -31,46 +32,12 @@
 namespace {
 
 using namespace impact;
-
-engine::derivation derive_file(const std::string& name)
-{
-    return engine::derive(spec::read_derivation(IMPACT_SOURCE_DIR "/tests/cases/" + name), {});
-}
-
-engine::derivation derive_text(const std::string& text)
-{
-    return engine::derive(spec::parse_derivation(text, "test.toml"), {});
-}
+using namespace impact::testing;
 
 // The full message (`file:line:column: error: what`) of the error `text` raises.
-std::string error_for(const std::string& text)
+std::string message_for(const std::string& text)
 {
-    try {
-        derive_text(text);
-    } catch (const impact::error& e) {
-        return e.what();
-    }
-    BOOST_FAIL("no error for:\n" + text);
-    return {};
-}
-
-GiNaC::ex sym(const engine::derivation& d, const std::string& name)
-{
-    return d.symbols.find(name)->symbol;
-}
-
-bool equal(const GiNaC::ex& a, const GiNaC::ex& b)
-{
-    return GiNaC::normal(GiNaC::expand(a - b)).is_zero();
-}
-
-const engine::check_result& check_named(const engine::derivation& d, const std::string& name)
-{
-    for (const engine::check_result* c : d.all_checks())
-        if (c->name == name)
-            return *c;
-    BOOST_FAIL("no check named " + name);
-    throw;
+    return error_for(text).what();
 }
 
 bool proven(const engine::verdict& v)
@@ -99,7 +66,7 @@ std::string by_cases(const std::string& cases_line, const std::string& more = ""
 
 BOOST_AUTO_TEST_CASE(friction_is_derived_as_its_cases_with_their_conditions)
 {
-    const engine::derivation d = derive_file("friction.toml");
+    const engine::derivation d = derive_file("tests/cases/friction.toml");
     const GiNaC::ex g_t = sym(d, "g_t"), m_t = sym(d, "m_t"), b = sym(d, "b"), mu = sym(d, "mu"),
                     m_n = sym(d, "m_n"), v_n = sym(d, "v_n"), e = sym(d, "e");
     const engine::result* j_t = d.find_result("J_t");
@@ -124,7 +91,7 @@ BOOST_AUTO_TEST_CASE(friction_is_derived_as_its_cases_with_their_conditions)
 
 BOOST_AUTO_TEST_CASE(friction_checks_are_proven_case_by_case_under_each_condition)
 {
-    const engine::derivation d = derive_file("friction.toml");
+    const engine::derivation d = derive_file("tests/cases/friction.toml");
     for (const std::string name : {"inside the friction cone", "never more than sticking needs", "opposes the slip"}) {
         BOOST_TEST_CONTEXT(name)
         {
@@ -146,7 +113,7 @@ BOOST_AUTO_TEST_CASE(friction_checks_are_proven_case_by_case_under_each_conditio
 
 BOOST_AUTO_TEST_CASE(sticking_and_sliding_meet_at_the_edge_of_the_cone)
 {
-    const engine::derivation d = derive_file("friction.toml");
+    const engine::derivation d = derive_file("tests/cases/friction.toml");
     const engine::check_result& c = check_named(d, "sticking and sliding meet");
     BOOST_REQUIRE_EQUAL(c.parts.size(), 1u);
     // The boundary solved for g_t, the first declared quantity it is linear in.
@@ -157,7 +124,7 @@ BOOST_AUTO_TEST_CASE(sticking_and_sliding_meet_at_the_edge_of_the_cone)
 
 BOOST_AUTO_TEST_CASE(a_halved_sliding_impulse_fails_continuity)
 {
-    const engine::derivation d = derive_file("discontinuous.toml");
+    const engine::derivation d = derive_file("tests/cases/discontinuous.toml");
     const engine::check_result& c = check_named(d, "sticking and sliding meet");
     BOOST_TEST((c.outcome.what == engine::verdict::status::failed));
     BOOST_TEST(!c.outcome.holds());
@@ -209,18 +176,18 @@ BOOST_AUTO_TEST_CASE(cases_that_leave_their_boundary_out_are_not_exhaustive)
 
 BOOST_AUTO_TEST_CASE(bad_cases_are_refused_at_their_place)
 {
-    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }]")) ==
+    BOOST_TEST(message_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }]")) ==
                "test.toml:10:9: error: 'cases' of 'y' must list two cases or more, each "
                "{ when = \"lhs <= rhs\", as = \"value\" }");
-    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\" }]")) ==
+    BOOST_TEST(message_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\" }]")) ==
                "test.toml:10:41: error: a case of 'y' is missing the required field 'as'");
-    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\", at = \"1\" }, "
+    BOOST_TEST(message_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\", at = \"1\" }, "
                                   "{ when = \"x > 1\", as = \"1\" }]")) ==
                "test.toml:10:39: error: unknown field 'at' in a case of 'y'");
-    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x = 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]")) ==
+    BOOST_TEST(message_for(by_cases("cases = [{ when = \"x = 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]")) ==
                "test.toml:10:19: error: condition \"x = 1\" must be an inequality 'lhs op rhs' with op one of "
                "<, <=, >, >=");
-    BOOST_TEST(error_for(by_cases("as = \"x\"\ncases = [{ when = \"x <= 1\", as = \"x\" }, "
+    BOOST_TEST(message_for(by_cases("as = \"x\"\ncases = [{ when = \"x <= 1\", as = \"x\" }, "
                                   "{ when = \"x > 1\", as = \"1\" }]")) ==
                "test.toml:11:9: error: step 'y' has both 'as' and 'cases': give one value or its cases");
     // A case's value must have the quantity's dimension, like any definition's.
@@ -230,20 +197,20 @@ BOOST_AUTO_TEST_CASE(bad_cases_are_refused_at_their_place)
                                    "[[step]]\ndefine = \"y\"\n"
                                    "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]\n"
                                    "[[result]]\nname = \"y\"\n";
-    BOOST_TEST(error_for(dimensions).rfind("test.toml:12:", 0) == 0, error_for(dimensions));
+    BOOST_TEST(message_for(dimensions).rfind("test.toml:12:", 0) == 0, message_for(dimensions));
 }
 
 BOOST_AUTO_TEST_CASE(continuity_checks_are_refused_where_they_mean_nothing)
 {
     const std::string cases = "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]";
     // Continuity of a quantity not defined by cases.
-    BOOST_TEST(error_for(by_cases(cases, "[[check]]\nname = \"c\"\ncontinuity = \"x\"\n")) ==
+    BOOST_TEST(message_for(by_cases(cases, "[[check]]\nname = \"c\"\ncontinuity = \"x\"\n")) ==
                "test.toml:15:14: error: continuity of 'x': it is not defined by cases");
-    BOOST_TEST(error_for(by_cases(cases, "[[check]]\nname = \"c\"\ncontinuity = \"y\"\nclaim = \"y > 0\"\n")) ==
+    BOOST_TEST(message_for(by_cases(cases, "[[check]]\nname = \"c\"\ncontinuity = \"y\"\nclaim = \"y > 0\"\n")) ==
                "test.toml:16:9: error: check 'c' has both 'claim' and 'continuity': a continuity check states its "
                "claim itself");
     // Cases on two different expressions share no boundary.
-    BOOST_TEST(error_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x^2 > 1\", as = \"1\" }]",
+    BOOST_TEST(message_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x^2 > 1\", as = \"1\" }]",
                                   "[[check]]\nname = \"c\"\ncontinuity = \"y\"\n")) ==
                "test.toml:15:14: error: no two cases of 'y' share a boundary (conditions that are signs of one "
                "expression): continuity cannot be checked");
@@ -324,7 +291,7 @@ BOOST_AUTO_TEST_CASE(a_case_only_sampled_is_reported_sampled_never_proven)
 
 BOOST_AUTO_TEST_CASE(a_kernel_computes_cases_with_one_select_on_both_sides_of_the_boundary)
 {
-    const engine::derivation d = derive_file("friction.toml");
+    const engine::derivation d = derive_file("tests/cases/friction.toml");
     BOOST_REQUIRE_EQUAL(d.kernels.size(), 1u);
     const engine::kernel& k = d.kernels.front();
     const std::vector<GiNaC::ex> inputs = k.input_symbols();

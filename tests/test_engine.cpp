@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "derivation_support.h"
 #include "engine/derive.h"
 #include "engine/polynomial.h"
 #include "engine/library.h"
@@ -13,6 +14,7 @@
 namespace {
 
 using namespace impact;
+using namespace impact::testing;
 
 // A derivation over x > 0, real y and z, eps in [0, 1], with `body` appended.
 std::string derivation_text(const std::string& body, const std::string& id = "t")
@@ -26,45 +28,9 @@ std::string derivation_text(const std::string& body, const std::string& id = "t"
 }
 constexpr unsigned header_lines = 12;  // lines before `body` in derivation_text
 
-engine::derivation derive_text(const std::string& text, const engine::derived_by_id& done = {})
-{
-    return engine::derive(spec::parse_derivation(text, "test.toml"), done);
-}
-
-impact::error error_for(const std::string& text)
-{
-    try {
-        derive_text(text);
-    } catch (const impact::error& e) {
-        return e;
-    }
-    BOOST_FAIL("no error for:\n" + text);
-    throw;
-}
-
 bool mentions(const impact::error& e, const std::string& words)
 {
     return e.message().find(words) != std::string::npos;
-}
-
-const engine::check_result& check_named(const engine::derivation& d, const std::string& name)
-{
-    for (const engine::check_result* c : d.all_checks())
-        if (c->name == name)
-            return *c;
-    BOOST_FAIL("no check " + name);
-    throw;
-}
-
-// The symbols of a derivation by name, to type closed forms against.
-GiNaC::ex sym(const engine::derivation& d, const std::string& name)
-{
-    return d.symbols.find(name)->symbol;
-}
-
-bool equal(const GiNaC::ex& a, const GiNaC::ex& b)
-{
-    return GiNaC::normal(a - b).is_zero();
 }
 
 const std::string solve_y = "[[given]]\nname = \"g\"\nequation = \"y = 3*x\"\nbecause = \"given\"\n"

@@ -8,6 +8,7 @@
 #define BOOST_TEST_MODULE test_examples
 #include <boost/test/unit_test.hpp>
 
+#include "derivation_support.h"
 #include "engine/library.h"
 #include "pipeline/regenerate.h"
 
@@ -22,6 +23,7 @@
 namespace {
 
 using namespace impact;
+using namespace impact::testing;
 
 // Derived once for every test case: deriving the six files takes a fraction of a second.
 const engine::library& examples()
@@ -36,34 +38,6 @@ const engine::derivation& example(const std::string& id)
     const auto found = examples().derived.find(id);
     BOOST_REQUIRE_MESSAGE(found != examples().derived.end(), "no example " + id);
     return found->second;
-}
-
-GiNaC::ex sym(const engine::derivation& d, const std::string& name)
-{
-    const engine::quantity* q = d.symbols.find(name);
-    BOOST_REQUIRE_MESSAGE(q, "no symbol " + name + " in " + d.id());
-    return q->symbol;
-}
-
-GiNaC::ex value_of(const engine::derivation& d, const std::string& name)
-{
-    const engine::result* r = d.find_result(name);
-    BOOST_REQUIRE_MESSAGE(r, "no result " + name + " in " + d.id());
-    return r->value;
-}
-
-bool equal(const GiNaC::ex& a, const GiNaC::ex& b)
-{
-    return GiNaC::normal(GiNaC::expand(a - b)).is_zero();
-}
-
-const engine::check_result& check_named(const engine::derivation& d, const std::string& name)
-{
-    for (const engine::check_result* c : d.all_checks())
-        if (c->name == name)
-            return *c;
-    BOOST_FAIL("no check " + name + " in " + d.id());
-    throw;
 }
 
 const engine::kernel& kernel_named(const engine::derivation& d, const std::string& name)

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdio>
 
+#include "derivation_support.h"
 #include "support.h"
 
 #include "emit/json.h"
@@ -29,42 +30,7 @@ namespace fs = std::filesystem;
 namespace {
 
 using namespace impact;
-
-engine::derivation derive_file(const std::string& name)
-{
-    return engine::derive(spec::read_derivation(IMPACT_SOURCE_DIR "/tests/solve/" + name), {});
-}
-
-engine::derivation derive_text(const std::string& text)
-{
-    return engine::derive(spec::parse_derivation(text, "test.toml"), {});
-}
-
-impact::error error_for(const std::string& text)
-{
-    try {
-        derive_text(text);
-    } catch (const impact::error& e) {
-        return e;
-    }
-    BOOST_FAIL("no error for:\n" + text);
-    throw;
-}
-
-GiNaC::ex sym(const engine::derivation& d, const std::string& name)
-{
-    return d.symbols.find(name)->symbol;
-}
-
-bool equal(const GiNaC::ex& a, const GiNaC::ex& b)
-{
-    return GiNaC::normal(GiNaC::expand(a - b)).is_zero();
-}
-
-GiNaC::ex value_of(const engine::derivation& d, const std::string& name)
-{
-    return d.find_result(name)->value;
-}
+using namespace impact::testing;
 
 // The value a solution gives `unknown`.
 GiNaC::ex value_in(const engine::solution& s, const GiNaC::ex& unknown)
@@ -96,7 +62,7 @@ BOOST_AUTO_TEST_SUITE(test_solve)
 
 BOOST_AUTO_TEST_CASE(ballistic_pendulum_keeps_the_positive_root)
 {
-    const engine::derivation d = derive_file("ballistic_pendulum.toml");
+    const engine::derivation d = derive_file("tests/solve/ballistic_pendulum.toml");
     const GiNaC::ex m = sym(d, "m"), M = sym(d, "M"), g = sym(d, "g"), h = sym(d, "h");
     const GiNaC::ex V = sym(d, "V"), v = sym(d, "v");
     // V = sqrt(2 g h): the swing; v = (m + M) V / m: the impact.
@@ -121,7 +87,7 @@ BOOST_AUTO_TEST_CASE(ballistic_pendulum_keeps_the_positive_root)
 
 BOOST_AUTO_TEST_CASE(time_of_flight_rejects_the_launch_by_the_domain_of_T)
 {
-    const engine::derivation d = derive_file("projectile_flight.toml");
+    const engine::derivation d = derive_file("tests/solve/projectile_flight.toml");
     const GiNaC::ex w = sym(d, "w"), g = sym(d, "g"), T = sym(d, "T");
     BOOST_TEST(equal(value_of(d, "T"), 2 * w / g));
     const engine::step_result& step = d.steps.front();
@@ -136,7 +102,7 @@ BOOST_AUTO_TEST_CASE(time_of_flight_rejects_the_launch_by_the_domain_of_T)
 
 BOOST_AUTO_TEST_CASE(elastic_collision_solved_from_momentum_and_energy_gives_eq3)
 {
-    const engine::derivation d = derive_file("elastic_from_conservation.toml");
+    const engine::derivation d = derive_file("tests/solve/elastic_from_conservation.toml");
     const GiNaC::ex M = sym(d, "M"), m = sym(d, "m"), v_M = sym(d, "v_M"), v_m = sym(d, "v_m");
     // Eq. 3 of the paper (v'_m with 2 M v_M, as Eq. 4 has it).
     BOOST_TEST(equal(value_of(d, "v_M_after"), ((M - m) * v_M + 2 * m * v_m) / (M + m)));
@@ -155,7 +121,7 @@ BOOST_AUTO_TEST_CASE(elastic_collision_solved_from_momentum_and_energy_gives_eq3
 
 BOOST_AUTO_TEST_CASE(equal_masses_exchange_velocities_in_the_direct_solution)
 {
-    const engine::derivation direct = derive_file("elastic_from_conservation.toml");
+    const engine::derivation direct = derive_file("tests/solve/elastic_from_conservation.toml");
     const GiNaC::ex M = sym(direct, "M"), m = sym(direct, "m");
     BOOST_TEST(equal(value_of(direct, "v_M_after").subs(M == m), sym(direct, "v_m")));
     BOOST_TEST(equal(value_of(direct, "v_m_after").subs(M == m), sym(direct, "v_M")));
@@ -218,7 +184,7 @@ BOOST_AUTO_TEST_CASE(a_condition_keeps_the_root_a_domain_cannot)
 
 BOOST_AUTO_TEST_CASE(the_solutions_are_printed_with_why_each_is_rejected)
 {
-    const engine::derivation d = derive_file("projectile_flight.toml");
+    const engine::derivation d = derive_file("tests/solve/projectile_flight.toml");
     const std::string terminal = emit::terminal_text(d);
     BOOST_TEST(terminal.find("       kept: T = 2*w/g (T > 0: 2*w/g > 0)\n"
                              "       rejected: T = 0 (T > 0, but T = 0)\n") != std::string::npos,
@@ -234,7 +200,7 @@ BOOST_AUTO_TEST_CASE(the_solutions_are_printed_with_why_each_is_rejected)
                          "          \"why\": \"T > 0, but T = 0\"") != std::string::npos,
                json);
 
-    const engine::derivation e = derive_file("elastic_from_conservation.toml");
+    const engine::derivation e = derive_file("tests/solve/elastic_from_conservation.toml");
     BOOST_TEST(emit::latex_fragment(e).find("rejected: $v'_M = v_M,\\ v'_m = v_m$ ($v'_M = v_M$: the spheres "
                                             "would pass through each other unchanged).") != std::string::npos);
 }
