@@ -45,7 +45,7 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
             const engine::kernel_output& o = k.outputs[components[i].first];
             const std::string form = cp.candidates[cp.chosen].label;
             const verify::emitted_accuracy& measured = plan->emitted[i];
-            const char* const types[] = {"float", "double", "long double"};
+            const auto& types = engine::kernel_output::types;
             const verify::accuracy* in_type[] = {&measured.in_float, &measured.in_double, &measured.in_long_double};
             for (std::size_t t = 0; t < 3; ++t) {
                 const verify::accuracy& a = *in_type[t];
@@ -57,7 +57,7 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
         }
         // A bound the derivation file sets, with its reason.
         for (const engine::kernel_output& o : k.outputs) {
-            const char* const types[] = {"float", "double", "long double"};
+            const auto& types = engine::kernel_output::types;
             for (std::size_t t = 0; t < 3; ++t)
                 if (!o.bound_because[t].empty())
                     out += fmt::format("\nBound of `{}` in {} set to {:g} ulps by the derivation file: {}\n",

@@ -175,6 +175,8 @@ struct kernel_output {
     /// velocity of the collision times `scale_factor`.
     enum class scale { relative, velocity } error = scale::relative;
     GiNaC::ex scale_factor = 1;
+    /// The floating-point types a kernel is emitted in, in the order of `bound_ulps`.
+    static constexpr const char* types[] = {"float", "double", "long double"};
     /// The largest error allowed in float, double and long double, in ulps of its scale,
     /// and why when the file sets it (`[[kernel.bound]]`); 4 ulps otherwise.
     std::array<double, 3> bound_ulps{4, 4, 4};

@@ -131,10 +131,17 @@ std::string dimension::to_string() const
 
 std::optional<std::string> dimension::familiar_name() const
 {
-    const dimension_names names;
-    for (const familiar& f : familiar_dimensions)
-        if (names.parse(f.text, {}) == *this)
-            return f.name;
+    // The familiar dimensions, read once (constant data, shared by every run).
+    static const std::vector<std::pair<dimension, const char*>> familiars = [] {
+        const dimension_names names;
+        std::vector<std::pair<dimension, const char*>> read;
+        for (const familiar& f : familiar_dimensions)
+            read.emplace_back(names.parse(f.text, {}), f.name);
+        return read;
+    }();
+    for (const auto& [d, name] : familiars)
+        if (d == *this)
+            return name;
     return std::nullopt;
 }
 

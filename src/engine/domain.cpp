@@ -57,30 +57,32 @@ bool domain::closure_contains(double x) const
     return x >= lower && x <= upper;
 }
 
-bool domain::within(const domain& outer) const
-{
-    // This domain's ends, as the lowest and highest values it takes (open or not).
+namespace {
+
+// A domain as its lowest and highest values, each open or not.
+struct ends {
     double low = -INFINITY, high = INFINITY;
     bool low_open = true, high_open = true;
-    switch (what) {
-    case kind::real: break;
-    case kind::positive: low = 0; break;
-    case kind::nonnegative: low = 0, low_open = false; break;
-    case kind::interval: low = lower, high = upper, low_open = lower_open, high_open = upper_open; break;
+};
+
+ends ends_of(const domain& d)
+{
+    switch (d.what) {
+    case domain::kind::real: return {};
+    case domain::kind::positive: return {0, INFINITY, true, true};
+    case domain::kind::nonnegative: return {0, INFINITY, false, true};
+    case domain::kind::interval: break;
     }
-    double outer_low = -INFINITY, outer_high = INFINITY;
-    bool outer_low_open = true, outer_high_open = true;
-    switch (outer.what) {
-    case kind::real: break;
-    case kind::positive: outer_low = 0; break;
-    case kind::nonnegative: outer_low = 0, outer_low_open = false; break;
-    case kind::interval:
-        outer_low = outer.lower, outer_high = outer.upper;
-        outer_low_open = outer.lower_open, outer_high_open = outer.upper_open;
-        break;
-    }
-    const bool low_inside = low > outer_low || (low == outer_low && (low_open || !outer_low_open));
-    const bool high_inside = high < outer_high || (high == outer_high && (high_open || !outer_high_open));
+    return {d.lower, d.upper, d.lower_open, d.upper_open};
+}
+
+} // namespace
+
+bool domain::within(const domain& outer) const
+{
+    const ends in = ends_of(*this), out = ends_of(outer);
+    const bool low_inside = in.low > out.low || (in.low == out.low && (in.low_open || !out.low_open));
+    const bool high_inside = in.high < out.high || (in.high == out.high && (in.high_open || !out.high_open));
     return low_inside && high_inside;
 }
 

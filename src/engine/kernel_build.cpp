@@ -76,7 +76,7 @@ public:
             }
         for (const spec::error_bound& b : spec_kernel.bounds) {
             kernel_output* o = find_output(k, b.output);
-            const char* const types[] = {"float", "double", "long double"};
+            const auto& types = kernel_output::types;
             for (std::size_t t = 0; t < 3; ++t)
                 if (!b.type || b.type->value == types[t]) {
                     o->bound_ulps[t] = b.ulps;

@@ -19,6 +19,7 @@ namespace impact::spec {
 namespace {
 
 using detail::location_of;
+using detail::trimmed;
 using detail::table_reader;
 
 // A derivation is a page of text; anything much larger is a mistake.
@@ -175,13 +176,6 @@ result read_result(table_reader& in)
     r.printed = in.optional_string("printed");
     in.finish();
     return r;
-}
-
-std::string trimmed(const std::string& s)
-{
-    const auto first = s.find_first_not_of(" \t");
-    const auto last = s.find_last_not_of(" \t");
-    return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
 }
 
 // `v_perp -> 0`, `v_perp -> infinity` (or `oo`).

@@ -18,6 +18,14 @@
 
 namespace impact::spec::detail {
 
+/// `s` without the blanks and tabs around it.
+inline std::string trimmed(const std::string& s)
+{
+    const auto first = s.find_first_not_of(" \t");
+    const auto last = s.find_last_not_of(" \t");
+    return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+}
+
 /// A place in the file from toml++'s region.
 inline source_location location_of(const std::string& file, const toml::source_region& region)
 {
@@ -194,13 +202,8 @@ private:
         if (equals == std::string::npos)
             throw error(entry.where, fmt::format("'{}' entry \"{}\" must read 'name = expression'",
                                                  key, entry.value));
-        auto trim = [](std::string s) {
-            const auto first = s.find_first_not_of(" \t");
-            const auto last = s.find_last_not_of(" \t");
-            return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
-        };
-        return {{trim(entry.value.substr(0, equals)), entry.where},
-                {trim(entry.value.substr(equals + 1)), entry.where}};
+        return {{trimmed(entry.value.substr(0, equals)), entry.where},
+                {trimmed(entry.value.substr(equals + 1)), entry.where}};
     }
 
     const toml::table& table_;

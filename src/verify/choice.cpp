@@ -316,7 +316,7 @@ std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
             const component_plan& cp = plan.components[i];
             const emitted_accuracy& e = plan.emitted[i];
             // One line an output, naming the type where it is furthest past its bound.
-            const char* const types[] = {"float", "double", "long double"};
+            const auto& types = engine::kernel_output::types;
             const accuracy* measured[] = {&e.in_float, &e.in_double, &e.in_long_double};
             std::size_t worst = 3;
             for (std::size_t t = 0; t < 3; ++t)
