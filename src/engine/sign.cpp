@@ -1,6 +1,7 @@
 #include "engine/sign.h"
 
 #include "engine/infix.h"
+#include "engine/sign_arguments.h"
 
 #include <cln/rational.h>
 #include <cln/real.h>
@@ -168,6 +169,8 @@ private:
             return *linear;
         if (auto affine = affine_in_bounded_symbol(e, depth))
             return *affine;
+        if (auto argued = argued_sign(e, depth))
+            return *argued;
         const bool radical = has_radical(e);
 
         // A - B with A, B >= 0 has the sign of A^2 - B^2. The terms with radicals form
@@ -218,6 +221,29 @@ private:
             }
         }
         return {r, "a sum of terms of unknown sign"};
+    }
+
+    // An argument about one symbol (sign_arguments.h): Sturm's theorem for a
+    // polynomial in one symbol alone, else monotonicity in a symbol bounded below.
+    std::optional<std::pair<sign_set, sign_reason>> argued_sign(const GiNaC::ex& e, int depth) const
+    {
+        if (depth > 6)
+            return std::nullopt;
+        const auto write = [this](const GiNaC::ex& x) { return text(x); };
+        std::vector<std::pair<GiNaC::ex, const domain*>> in;
+        for (const auto& [s, d] : domains_)
+            if (e.has(s))
+                in.emplace_back(s, &d);
+        if (in.size() == 1)
+            if (auto sturm = sturm_sign(e, in.front().first, *in.front().second, write))
+                return sturm;
+        for (const auto& [s, d] : in) {
+            auto monotone = monotone_sign(
+                e, s, *d, [&](const GiNaC::ex& x) { return sign(factored(x), depth + 1); }, write);
+            if (monotone)
+                return monotone;
+        }
+        return std::nullopt;
     }
 
     // A polynomial of degree one in a symbol s with an interval domain, or in s^2 (no odd
