@@ -208,7 +208,11 @@ bool eliminator::solve_in_one(const std::vector<GiNaC::ex>& left, const GiNaC::e
         const GiNaC::ex base = GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::posint) ? f.op(0) : f;
         if (!base.has(u))
             continue;
-        const GiNaC::ex e = GiNaC::expand(base);
+        // Each factor written with a positive leading coefficient in u (GiNaC's factor
+        // may give either sign).
+        GiNaC::ex e = GiNaC::expand(base);
+        if (GiNaC::is_a<GiNaC::numeric>(e.lcoeff(u)) && GiNaC::ex_to<GiNaC::numeric>(e.lcoeff(u)).is_negative())
+            e = GiNaC::expand(-e);
         if (e.degree(u) > 2 && !squared(e))
             throw unsolvable(fmt::format(
                 "{} = 0 is of degree {} in {}{}: beyond the quadratic formula (a polynomial in one unknown is "

@@ -48,6 +48,17 @@ GiNaC::ex simplest(const GiNaC::ex& value, const assumptions& given)
         GiNaC::ex operator()(const GiNaC::ex& part) override
         {
             if (GiNaC::is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
+                // A number's root past its first power (GiNaC writes 2·√2 as 2^(3/2)):
+                // the whole powers stand outside, so that they cancel (2^(3/2)/4 = √2/2).
+                const GiNaC::ex& exponent = part.op(1);
+                if (GiNaC::is_a<GiNaC::numeric>(part.op(0)) && exponent.info(GiNaC::info_flags::rational) &&
+                    GiNaC::ex_to<GiNaC::numeric>(exponent).denom() == 2 &&
+                    GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(exponent)) > 1) {
+                    const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(exponent);
+                    const GiNaC::numeric whole = k.is_positive() ? (k - GiNaC::numeric(1, 2)) : (k + GiNaC::numeric(1, 2));
+                    return GiNaC::pow(part.op(0), whole) *
+                           (*this)(GiNaC::pow(part.op(0), k.is_positive() ? GiNaC::numeric(1, 2) : GiNaC::numeric(-1, 2)));
+                }
                 auto found = to.find(part);
                 if (found == to.end()) {
                     const GiNaC::ex standing = GiNaC::realsymbol();
