@@ -286,11 +286,11 @@ BOOST_AUTO_TEST_CASE(unsolvable_systems_are_refused_with_their_reason)
                             "[[result]]\nname = \"y\"\n");
     };
     BOOST_TEST(error_for(solving("y^3 = x")).message() ==
-               "-x+y^3 = 0 is of degree 3 in y and has no factor over the rationals: beyond the quadratic "
+               "the system is not linear in y: -x+y^3 = 0 is of degree 3 in y and has no factor over the rationals: beyond the quadratic "
                "formula (a polynomial in one unknown is solved when its factors over the rationals are of degree "
                "2 or less, or quadratic in y^2)");
     BOOST_TEST(error_for(solving("(y - x)*(y^3 - x) = 0")).message() ==
-               "x^2-x*y-x*y^3+y^4 = 0 is of degree 4 in y, and its factor -x+y^3 is of degree 3: beyond "
+               "the system is not linear in y: x^2-x*y-x*y^3+y^4 = 0 is of degree 4 in y, and its factor -x+y^3 is of degree 3: beyond "
                "the quadratic formula (a polynomial in one unknown is solved when its factors over the rationals "
                "are of degree 2 or less, or quadratic in y^2)");
     BOOST_TEST(error_for(solving("y^2 = -x")).message() ==

@@ -215,9 +215,10 @@ bool eliminator::solve_in_one(const std::vector<GiNaC::ex>& left, const GiNaC::e
             e = GiNaC::expand(-e);
         if (e.degree(u) > 2 && !squared(e))
             throw unsolvable(fmt::format(
-                "{} = 0 is of degree {} in {}{}: beyond the quadratic formula (a polynomial in one unknown is "
-                "solved when its factors over the rationals are of degree 2 or less, or quadratic in {}^2)",
-                symbols_.text(p), degree, symbols_.text(u),
+                "the system is not linear in {}: {} = 0 is of degree {} in {}{}: beyond the quadratic formula (a "
+                "polynomial in one unknown is solved when its factors over the rationals are of degree 2 or less, "
+                "or quadratic in {}^2)",
+                names(unknowns), symbols_.text(p), degree, symbols_.text(u),
                 e.is_equal(p) ? std::string(" and has no factor over the rationals")
                               : fmt::format(", and its factor {} is of degree {}", symbols_.text(e), e.degree(u)),
                 symbols_.text(u)));

@@ -1,9 +1,10 @@
 // Signs settled by an argument about one symbol, where the signs of the parts do not
 // settle them (sign.h tries these last).
 //
-// Sturm's theorem: a polynomial in one symbol s with rational coefficients has, on an
-// interval (a, b), as many distinct real roots as its Sturm sequence q, q', −rem(q, q'), ...
-// loses sign changes between a and b. A polynomial whose factors of odd multiplicity have
+// Sturm's theorem (Sturm, 1829; Basu, Pollack and Roy, "Algorithms in Real Algebraic
+// Geometry", Ch. 2): a square-free polynomial q in one symbol s with rational coefficients
+// has, on an interval (a, b) whose ends are not roots, as many distinct real roots as its
+// Sturm sequence q, q', −rem(q, q'), ... loses sign changes between a and b. A polynomial whose factors of odd multiplicity have
 // no root inside the interval keeps one sign there, read at one inner point; a root at an
 // included end, or of a factor of even multiplicity, adds zero.
 //
