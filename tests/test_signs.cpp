@@ -129,6 +129,19 @@ BOOST_AUTO_TEST_CASE(sturms_theorem_proves_a_polynomial_in_one_symbol)
                boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(a_rational_function_of_one_symbol_is_proven_factor_by_factor)
+{
+    // b^4 + b - 3 is irreducible (no rational root, no integer quadratic factors) and
+    // negative on [-1, 1] (its largest value, near b = -0.63, is about -3.47; -1 at b = 1).
+    const engine::verdict v = verdict_of("(b^3 - b + 1)/(b^4 + b - 3) < 0");
+    BOOST_TEST((v.what == engine::verdict::status::proven));
+    BOOST_TEST_REQUIRE(v.proof.size() == 2u);
+    for (const engine::sign_step& s : v.proof)
+        BOOST_TEST(s.words.find("by Sturm's theorem") != std::string::npos, s.words);
+    // b^4 + b - 1 changes sign on [-1, 1] (-1 at b = 0, 1 at b = 1): no sign for the quotient.
+    BOOST_TEST((verdict_of("(b^3 - b + 1)/(b^4 + b - 1) < 0").what != engine::verdict::status::proven));
+}
+
 BOOST_AUTO_TEST_CASE(monotonicity_in_a_bounded_symbol_proves_a_sign)
 {
     // 1 + x - x eps^3: its derivative -3 x eps^2 <= 0, so it is at least 1, its value at eps = 1.
