@@ -215,8 +215,31 @@ BOOST_AUTO_TEST_CASE(a_throw_of_given_speed_has_two_trajectories_and_is_refused)
         "[[result]]\nname = \"u\"\n";
     const std::string message = error_for(text).message();
     BOOST_TEST(message.find("2 solutions are admissible: ") == 0u, message);
-    BOOST_TEST(message.find("T = sqrt(2)*sqrt(s^2+sqrt(-(X*g+s^2)*(X*g-s^2)))/g") != std::string::npos, message);
-    BOOST_TEST(message.find("T = sqrt(2)*sqrt(s^2-sqrt(-(X*g+s^2)*(X*g-s^2)))/g") != std::string::npos, message);
+    BOOST_TEST(message.find("T = sqrt(2)*sqrt(s^2+sqrt(-X^2*g^2+s^4))/g") != std::string::npos, message);
+    BOOST_TEST(message.find("T = sqrt(2)*sqrt(s^2-sqrt(-X^2*g^2+s^4))/g") != std::string::npos, message);
+}
+
+BOOST_AUTO_TEST_CASE(the_flat_throw_of_given_speed_is_kept_when_the_lob_is_rejected)
+{
+    // The same system with reject = ["g^2*T^2 = 2*s^2 + 2*sqrt(s^4 - g^2*X^2)"]: the flat
+    // throw, g^2 T^2 = 2 s^2 - 2 sqrt(s^4 - g^2 X^2), w = g T/2, u = X/T.
+    const engine::derivation d = derive_file("tests/solve/throw_of_given_speed.toml");
+    const GiNaC::ex X = sym(d, "X"), s = sym(d, "s"), g = sym(d, "g"), T = sym(d, "T");
+    const GiNaC::exmap point{{X, 3}, {s, 10}, {g, 10}};
+    const double flat = std::sqrt(2 * (100 - std::sqrt(10000.0 - 900)) / 100);
+    const double lob = std::sqrt(2 * (100 + std::sqrt(10000.0 - 900)) / 100);
+    BOOST_TEST(at(value_of(d, "T"), point) == flat, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(at(value_of(d, "w"), point) == 10 * flat / 2, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(at(value_of(d, "u"), point) == 3 / flat, boost::test_tools::tolerance(1e-12));
+    const engine::step_result& step = d.steps.front();
+    BOOST_TEST_REQUIRE(step.solutions.size() == 4u);
+    const auto lobbed = std::find_if(step.solutions.begin(), step.solutions.end(), [&](const engine::solution& x) {
+        return x.outcome == engine::solution::fate::condition;
+    });
+    BOOST_TEST_REQUIRE((lobbed != step.solutions.end()));
+    BOOST_TEST(at(value_in(*lobbed, T), point) == lob, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(every_step_check_proven(step));
+    BOOST_TEST(d.all_hold());
 }
 
 BOOST_AUTO_TEST_CASE(a_cubic_is_solved_through_its_factors)

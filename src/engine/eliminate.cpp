@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace impact::engine {
 namespace {
@@ -88,9 +89,20 @@ GiNaC::ex root_up_to_sign(const GiNaC::ex& d, proof_cache& run)
         else
             rest *= f;
     }
-    if (number.is_positive())
-        return outside * root_of_number(number) * GiNaC::sqrt(rest);
-    return outside * GiNaC::sqrt(inside);
+    if (!number.is_real() || number.is_zero())
+        return outside * GiNaC::sqrt(inside);
+    // A negative number's sign stays inside, with the rest factored or expanded, whichever
+    // is the shorter: √(s⁴ − g²X²) rather than √(−(Xg + s²)(Xg − s²)), but
+    // √(−(R + r + d)(R + r − d)(R − r + d)(R − r − d)) as Heron has it.
+    if (number.is_negative()) {
+        number = -number;
+        const GiNaC::ex expanded = GiNaC::expand(-rest);
+        std::ostringstream factored_text, expanded_text;
+        factored_text << -rest;
+        expanded_text << expanded;
+        rest = expanded_text.str().size() < factored_text.str().size() ? expanded : -rest;
+    }
+    return outside * root_of_number(number) * GiNaC::sqrt(rest);
 }
 
 void eliminator::branch(const std::vector<GiNaC::ex>& equations, const std::vector<GiNaC::ex>& unknowns,
