@@ -6,8 +6,8 @@
 #include <cln/real.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace impact::engine {
 namespace {
@@ -47,6 +47,52 @@ GiNaC::exvector factors_of(const GiNaC::ex& f)
     return factors;
 }
 
+// The sign of a polynomial's coefficient of its first monomial, the monomials ordered by
+// the names and powers of their symbols (not by GiNaC's order of terms, which changes from
+// run to run).
+int first_sign(const GiNaC::ex& sum)
+{
+    std::string first;
+    int sign = 1;
+    bool any = false;
+    const GiNaC::ex expanded = GiNaC::expand(sum);
+    const GiNaC::exvector terms =
+        GiNaC::is_a<GiNaC::add>(expanded) ? GiNaC::exvector(expanded.begin(), expanded.end()) : GiNaC::exvector{expanded};
+    for (const GiNaC::ex& term : terms) {
+        std::vector<std::string> powers;
+        GiNaC::numeric coefficient = 1;
+        for (const GiNaC::ex& f : factors_of(term)) {
+            if (GiNaC::is_a<GiNaC::numeric>(f))
+                coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
+            else if (GiNaC::is_a<GiNaC::symbol>(f))
+                powers.push_back(GiNaC::ex_to<GiNaC::symbol>(f).get_name() + "^1");
+            else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) &&
+                     f.op(1).info(GiNaC::info_flags::integer))
+                powers.push_back(GiNaC::ex_to<GiNaC::symbol>(f.op(0)).get_name() + "^" +
+                                 std::to_string(GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int()));
+        }
+        std::sort(powers.begin(), powers.end());
+        std::string key;
+        for (const std::string& p : powers)
+            key += p + "*";
+        if (!any || key < first) {
+            first = key;
+            sign = coefficient.is_negative() ? -1 : 1;
+            any = true;
+        }
+    }
+    return sign;
+}
+
+// The number of nodes of an expression's tree: its size, whatever the order of its terms.
+std::size_t size_of(const GiNaC::ex& e)
+{
+    std::size_t n = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        n += size_of(e.op(i));
+    return n;
+}
+
 // Rather too many branches than a search that does not end.
 constexpr int deepest = 40;
 
@@ -79,28 +125,34 @@ GiNaC::ex root_up_to_sign(const GiNaC::ex& d, proof_cache& run)
         }
     }
     // A positive number comes out of the root as far as it is a square; the rest of
-    // the root is kept whole.
+    // the root is kept whole. Each sum in it is given its sign by its own terms, not by
+    // factor() (whose choice follows GiNaC's order of terms, which follows addresses and
+    // changes from run to run), so that the number's sign, and the radicand, do not.
     GiNaC::numeric number = 1;
     GiNaC::ex rest = 1;
-    const GiNaC::ex parts = GiNaC::is_a<GiNaC::mul>(inside) ? inside : GiNaC::ex(GiNaC::lst{inside});
-    for (const GiNaC::ex& f : parts) {
-        if (GiNaC::is_a<GiNaC::numeric>(f))
+    for (const GiNaC::ex& f : factors_of(inside)) {
+        if (GiNaC::is_a<GiNaC::numeric>(f)) {
             number *= GiNaC::ex_to<GiNaC::numeric>(f);
-        else
+            continue;
+        }
+        const bool below = GiNaC::is_a<GiNaC::power>(f) && f.op(1).is_equal(-1);
+        const GiNaC::ex base = below ? f.op(0) : f;
+        if (GiNaC::is_a<GiNaC::add>(base) && first_sign(base) < 0) {
+            number = -number;
+            rest *= below ? 1 / GiNaC::expand(-base) : GiNaC::expand(-base);
+        } else {
             rest *= f;
+        }
     }
     if (!number.is_real() || number.is_zero())
         return outside * GiNaC::sqrt(inside);
     // A negative number's sign stays inside, with the rest factored or expanded, whichever
-    // is the shorter: √(s⁴ − g²X²) rather than √(−(Xg + s²)(Xg − s²)), but
+    // is the smaller: √(s⁴ − g²X²) rather than √(−(Xg + s²)(Xg − s²)), but
     // √(−(R + r + d)(R + r − d)(R − r + d)(R − r − d)) as Heron has it.
     if (number.is_negative()) {
         number = -number;
         const GiNaC::ex expanded = GiNaC::expand(-rest);
-        std::ostringstream factored_text, expanded_text;
-        factored_text << -rest;
-        expanded_text << expanded;
-        rest = expanded_text.str().size() < factored_text.str().size() ? expanded : -rest;
+        rest = size_of(expanded) < size_of(-rest) ? expanded : -rest;
     }
     return outside * root_of_number(number) * GiNaC::sqrt(rest);
 }
@@ -223,7 +275,7 @@ bool eliminator::solve_in_one(const std::vector<GiNaC::ex>& left, const GiNaC::e
         // Each factor written with a positive leading coefficient in u (GiNaC's factor
         // may give either sign).
         GiNaC::ex e = GiNaC::expand(base);
-        if (GiNaC::is_a<GiNaC::numeric>(e.lcoeff(u)) && GiNaC::ex_to<GiNaC::numeric>(e.lcoeff(u)).is_negative())
+        if (first_sign(e.lcoeff(u)) < 0)
             e = GiNaC::expand(-e);
         if (e.degree(u) > 2 && !squared(e))
             throw unsolvable(fmt::format(
@@ -251,8 +303,13 @@ bool eliminator::solve_in_one(const std::vector<GiNaC::ex>& left, const GiNaC::e
 
 void eliminator::quadratic(const std::vector<GiNaC::ex>& left, const GiNaC::ex& p, const GiNaC::ex& u,
                            const std::vector<GiNaC::ex>& unknowns, const GiNaC::exmap& values, bool unverified,
-                           int depth, const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::ex& c, bool squared)
+                           int depth, const GiNaC::ex& a_given, const GiNaC::ex& b_given, const GiNaC::ex& c_given,
+                           bool squared)
 {
+    // a of one sign whatever the run, so that the roots (−b + √Δ)/(2a), (−b − √Δ)/(2a)
+    // come in one order.
+    const int turn = first_sign(a_given);
+    const GiNaC::ex a = turn * a_given, b = turn * b_given, c = turn * c_given;
     const GiNaC::ex discriminant = GiNaC::expand(b * b - 4 * a * c);
     const sign_set s = prove_sign(discriminant, given_).sign;
     const std::string of = squared ? fmt::format(" (a quadratic in {})", symbols_.text(GiNaC::pow(u, 2))) : "";
