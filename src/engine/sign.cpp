@@ -348,13 +348,33 @@ bool has_radical(const GiNaC::ex& e)
     return false;
 }
 
+namespace {
+
+// factor()'s result with each factor a flat sum: factor() may leave a factor partly
+// collected (t*(a^2 + b^2) + 2*a*v for t*a^2 + t*b^2 + 2*a*v), one way or the other
+// depending on GiNaC's order of terms, which changes from run to run.
+GiNaC::ex flattened(const GiNaC::ex& f)
+{
+    if (GiNaC::is_a<GiNaC::add>(f))
+        return GiNaC::expand(f);
+    if (GiNaC::is_a<GiNaC::mul>(f) || (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::integer))) {
+        struct each : GiNaC::map_function {
+            GiNaC::ex operator()(const GiNaC::ex& part) override { return flattened(part); }
+        } flatten;
+        return f.map(flatten);
+    }
+    return f;
+}
+
+} // namespace
+
 // factor() on a polynomial; an expression with radicals is left as it is, since
 // factoring under a root may pull out -1 and leave I behind.
 GiNaC::ex factor_polynomial(const GiNaC::ex& e)
 {
     if (has_radical(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e))
         return e;
-    return GiNaC::factor(e);
+    return flattened(GiNaC::factor(e));
 }
 
 GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
@@ -367,7 +387,7 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
     const auto known = factored.find(e);
     if (known != factored.end())
         return known->second;
-    const GiNaC::ex f = GiNaC::factor(e);
+    const GiNaC::ex f = flattened(GiNaC::factor(e));
     if (factored.size() >= 4096)  // bounded: a long run (the fuzzer) meets ever new polynomials
         factored.clear();
     factored.emplace(e, f);
