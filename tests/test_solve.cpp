@@ -242,6 +242,30 @@ BOOST_AUTO_TEST_CASE(the_flat_throw_of_given_speed_is_kept_when_the_lob_is_rejec
     BOOST_TEST(d.all_hold());
 }
 
+BOOST_AUTO_TEST_CASE(a_split_on_a_coefficient_keeps_the_solutions_where_it_vanishes)
+{
+    // x y = 0 and x^2 + y^2 = 1: x = 0 where y is not 0 (y = ±1), and y = 0 (x = ±1):
+    // four solutions, two of them non-negative, one from each branch.
+    const std::string text =
+        "id = \"t\"\ntitle = \"test\"\n[[symbol]]\nname = \"x\"\ndomain = \"nonnegative\"\n"
+        "[[symbol]]\nname = \"y\"\ndomain = \"nonnegative\"\n"
+        "[[given]]\nname = \"a\"\nequation = \"x*y = 0\"\nbecause = \"given\"\n"
+        "[[given]]\nname = \"b\"\nequation = \"x^2 + y^2 = 1\"\nbecause = \"given\"\n"
+        "[[step]]\nsolve = [\"a\", \"b\"]\nfor = [\"x\", \"y\"]\n";
+    const std::string message = error_for(text + "[[result]]\nname = \"x\"\n").message();
+    BOOST_TEST(message.find("2 solutions are admissible: ") == 0u, message);
+    BOOST_TEST(message.find("x = 0, y = 1") != std::string::npos, message);
+    BOOST_TEST(message.find("x = 1, y = 0") != std::string::npos, message);
+    // Rejecting y = 0 leaves x = 0, y = 1; the negative ones are outside the domains.
+    const engine::derivation d =
+        derive_text(text + "reject = [\"y = 0\"]\nreject_because = \"y is the one that moves\"\n"
+                           "[[result]]\nname = \"x\"\n[[result]]\nname = \"y\"\n");
+    BOOST_TEST(value_of(d, "x").is_zero());
+    BOOST_TEST(value_of(d, "y").is_equal(1));
+    BOOST_TEST(d.steps.front().solutions.size() == 4u);
+    BOOST_TEST(every_step_check_proven(d.steps.front()));
+}
+
 BOOST_AUTO_TEST_CASE(a_cubic_is_solved_through_its_factors)
 {
     // y^3 = x^2 y: y (y - x) (y + x) = 0; a positive y keeps x.

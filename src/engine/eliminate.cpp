@@ -392,7 +392,7 @@ bool may_vanish(const GiNaC::ex& residual, const assumptions& given)
     GiNaC::Digits = 60;
     bool vanishes = true;
     uniform_stream stream(20261125);
-    for (int attempt = 0; attempt < 8 && vanishes; ++attempt) {
+    for (int attempt = 0; attempt < 32 && vanishes; ++attempt) {
         GiNaC::exmap point;
         for (const auto& [s, range] : given.domains)
             if (residual.has(s))
