@@ -7,8 +7,10 @@
 #include <boost/test/unit_test.hpp>
 
 #include "engine/derive.h"
+#include "engine/sign_arguments.h"
 
 #include <algorithm>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -140,6 +142,34 @@ BOOST_AUTO_TEST_CASE(a_rational_function_of_one_symbol_is_proven_factor_by_facto
         BOOST_TEST(s.words.find("by Sturm's theorem") != std::string::npos, s.words);
     // b^4 + b - 1 changes sign on [-1, 1] (-1 at b = 0, 1 at b = 1): no sign for the quotient.
     BOOST_TEST((verdict_of("(b^3 - b + 1)/(b^4 + b - 1) < 0").what != engine::verdict::status::proven));
+}
+
+BOOST_AUTO_TEST_CASE(sturms_theorem_counts_only_roots_of_odd_multiplicity)
+{
+    // (x - 1/2)^2 (x + 2), expanded: x + 2 has no root in (0, 1), so the polynomial is
+    // >= 0 there, and 0 at x = 1/2, the root of the square.
+    const GiNaC::symbol x("x");
+    const engine::domain unit = engine::parse_domain("[0, 1]", {});
+    const auto write = [](const GiNaC::ex& e) {
+        std::ostringstream out;
+        out << e;
+        return out.str();
+    };
+    const auto touching = engine::sturm_sign(GiNaC::expand(GiNaC::pow(x - GiNaC::numeric(1, 2), 2) * (x + 2)), x,
+                                             unit, write);
+    BOOST_TEST_REQUIRE(touching.has_value());
+    BOOST_TEST(touching->first.describe() == ">= 0");
+    // Its value is read from the odd part, (x + 2)/4 once (x - 1/2)^2 = (2x - 1)^2/4 (5/8 at
+    // x = 1/2), not from the polynomial, which is 0 there.
+    BOOST_TEST(touching->second.words.find("and 5/8 > 0 at x = 1/2; it touches zero") != std::string::npos,
+               touching->second.words);
+    // (x - 1/2)(x + 2) changes sign at 1/2: no sign.
+    BOOST_TEST(!engine::sturm_sign(GiNaC::expand((x - GiNaC::numeric(1, 2)) * (x + 2)), x, unit, write).has_value());
+    // x^2 - 2 on [0, 1] has its roots ±sqrt(2) outside: < 0, and on x >= 0 it has one inside.
+    const auto below = engine::sturm_sign(x * x - 2, x, unit, write);
+    BOOST_TEST_REQUIRE(below.has_value());
+    BOOST_TEST(below->first.describe() == "< 0");
+    BOOST_TEST(!engine::sturm_sign(x * x - 2, x, engine::parse_domain("nonnegative", {}), write).has_value());
 }
 
 BOOST_AUTO_TEST_CASE(monotonicity_in_a_bounded_symbol_proves_a_sign)

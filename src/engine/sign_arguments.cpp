@@ -188,12 +188,14 @@ std::optional<reasoned_sign> sturm_sign(const GiNaC::ex& e, const GiNaC::ex& s, 
     const sign_set result{interior < 0, zero, interior > 0};
 
     const std::string where = interval_text(closure, text);
+    // The value read is O's (p's, when it has no repeated factor): p itself may vanish
+    // at the inner point, where E does.
     std::string words = fmt::format(
         "by Sturm's theorem, {} has no root {}in {} (sign changes of its Sturm sequence: {} at {}, {} at {}), "
         "and {} {} at {} = {}",
         text(odd), even.is_equal(1) ? "" : "of odd multiplicity ", where, changing.at_lower,
         closure.lower ? text(*closure.lower) : "-infinity", changing.at_upper,
-        closure.upper ? text(*closure.upper) : "infinity", text(p.subs(s == inside)),
+        closure.upper ? text(*closure.upper) : "infinity", text(odd.subs(s == inside)),
         sign_set::exactly(interior).describe(), text(s), text(inside));
     if (touching > 0)
         words += fmt::format("; it touches zero at the roots of {} (an even power)", text(even));
@@ -206,7 +208,7 @@ std::optional<reasoned_sign> sturm_sign(const GiNaC::ex& e, const GiNaC::ex& s, 
         .math(s)
         .say(fmt::format(" (sign changes of its Sturm sequence: {} and {} at the ends), and is ", changing.at_lower,
                          changing.at_upper))
-        .math(p.subs(s == inside))
+        .math(odd.subs(s == inside))
         .say(fmt::format(", {}, at ", in_words(sign_set::exactly(interior))))
         .math(s == inside);
     if (zero)
