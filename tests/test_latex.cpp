@@ -59,6 +59,23 @@ bool contains(const std::string& text, const std::string& part)
 
 BOOST_FIXTURE_TEST_SUITE(display_forms, eq8_symbols)
 
+BOOST_AUTO_TEST_CASE(a_form_as_written_keeps_every_term_the_text_has)
+{
+    // GiNaC merges m v + m v into 2 m v and cancels m ε v - m ε v; as written, nothing is.
+    const std::string text = "(M*v_M + M*v_M + M*eps*v_M - M*eps*v_M)/(2*(M + m))";
+    const engine::written_form w = engine::written_form::read(text, [this](const std::string& t) { return parse(t); });
+    BOOST_TEST_REQUIRE(w.tree().has_value());
+    BOOST_TEST(emit::latex_as_written(*w.tree(), order) ==
+               "\\frac{M v_{M,\\parallel} + M v_{M,\\parallel} + M \\epsilon v_{M,\\parallel} - M \\epsilon v_{M,\\parallel}}"
+               "{2 (M + m)}");
+    BOOST_TEST(emit::latex(parse(text), order, &w) == "\\frac{M v_{M,\\parallel}}{M + m}");
+    // ½ in front of a product, a power of a primed symbol, an equation.
+    const engine::written_form e = engine::written_form::read(
+        "1/2*M*v_M_after^2 = -m_eff^(-1)*(1 + eps)", [this](const std::string& t) { return parse(t); });
+    BOOST_TEST(emit::latex_as_written(*e.tree(), order) ==
+               "\\frac{1}{2} M v'^{2}_{M,\\parallel} = -m^{-1}_{\\mathrm{eff}} (1 + \\epsilon)");
+}
+
 BOOST_AUTO_TEST_CASE(eq8_is_printed_in_the_order_its_display_form_gives)
 {
     // Eq. 8 as the paper prints it: ε m (v_m − v_M), not m ε (v_M − v_m) with a minus.
@@ -205,11 +222,40 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
                              "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag{8, right, line 1}"));
     BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag{8, right, line 3}"));
     // Checks with status; the paper's Eq. 7 found wanting.
-    BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
+    BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- Momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
                              "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));
-    BOOST_TEST(contains(tex, "Eq.~7, restitution (equation): printed $v_{M,\\parallel} - v_{m,\\parallel} = "
+    // Eq. 7 as the paper prints it, its parentheses kept: (v_M - v_m) = -eps(v_M - v_m).
+    BOOST_TEST(contains(tex, "Eq.~7, restitution (equation): printed $(v_{M,\\parallel} - v_{m,\\parallel}) = "
                              "-\\epsilon (v_{M,\\parallel} - v_{m,\\parallel})$ --- \\textbf{disagrees}"));
     BOOST_TEST(contains(tex, "smallest change: on the left, the primes missing."));
+}
+
+BOOST_AUTO_TEST_CASE(printed_forms_are_shown_as_the_paper_prints_them)
+{
+    // Eq. 12, line 2, typed from the paper: its denominator mv + mεv + mv − mεv, which
+    // GiNaC would merge into 2mv.
+    const std::string eq12 = emit::latex_fragment(derived("billiard_transfer"));
+    BOOST_TEST(contains(eq12, "Eq.~12, line 2, $\\tau$: printed $\\frac{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel}}"
+                              "{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel} + m v_{1,\\parallel} - m \\epsilon v_{1,\\parallel}}$"));
+    // Eq. 14, line 2, first member: ½(1 − ε)v∥ over ½√(((1 − ε)v∥)² + 4v⊥²), the halves kept.
+    const std::string eq14 = emit::latex_fragment(derived("scatter_angle"));
+    BOOST_TEST(contains(eq14, "\\frac{\\frac{1}{2} (1 - \\epsilon) v_{1,\\parallel}}{\\frac{1}{2} "
+                              "\\sqrt{((1 - \\epsilon) v_{1,\\parallel})^{2} + 4 v^{2}_{1,\\perp}}}"));
+    // The errata table shows the same printed forms.
+    std::vector<const engine::derivation*> all = {&derived("billiard_transfer")};
+    BOOST_TEST(contains(emit::latex_errata(all).rows,
+                        "{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel} + m v_{1,\\parallel} - m \\epsilon v_{1,\\parallel}}"));
+}
+
+BOOST_AUTO_TEST_CASE(checks_are_headed_in_words_not_identifiers)
+{
+    const std::string tex = emit::latex_fragment(derived("inelastic_plane"));
+    BOOST_TEST(contains(tex, "--- Momentum conserved ($x$ component): "));
+    BOOST_TEST(contains(tex, "--- Exchange symmetry ($M$, $x$ component): "));
+    BOOST_TEST(!contains(tex, "momentum conserved x"));
+    const std::string space = emit::latex_fragment(derived("inelastic_space"));
+    BOOST_TEST(contains(space, "--- $n$ is a unit vector: "));
+    BOOST_TEST(contains(space, "--- Energy loss is Eq.~11: "));
 }
 
 BOOST_AUTO_TEST_CASE(prose_keeps_its_mathematics_and_escapes_the_rest)

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 
 namespace impact::emit {
@@ -45,11 +46,46 @@ bool nested_fraction(const std::string& math)
     return false;
 }
 
-// momentum_conserved → "momentum conserved"
-std::string words(const std::string& name)
+// A check's name as a heading a physicist reads (LaTeX): its words, a single letter as
+// the quantity it names (n_is_a_unit_vector: "$n$ is a unit vector"), eq11 as "Eq. 11",
+// and the sphere and component a name ends in as a qualifier: momentum_conserved_x is
+// "Momentum conserved ($x$ component)", exchange_symmetry_M_y "Exchange symmetry ($M$,
+// $y$ component)".
+std::string heading(const std::string& name)
 {
-    std::string out = name;
-    std::replace(out.begin(), out.end(), '_', ' ');
+    std::vector<std::string> words;
+    for (std::size_t begin = 0; begin <= name.size();) {
+        const std::size_t end = std::min(name.find('_', begin), name.size());
+        if (end > begin)
+            words.push_back(name.substr(begin, end - begin));
+        begin = end + 1;
+    }
+    std::vector<std::string> qualifiers;
+    if (words.size() > 1 && (words.back() == "x" || words.back() == "y" || words.back() == "z")) {
+        qualifiers.push_back("$" + words.back() + "$ component");
+        words.pop_back();
+    }
+    if (words.size() > 1 && (words.back() == "M" || words.back() == "m" || words.back() == "J")) {
+        qualifiers.insert(qualifiers.begin(), "$" + words.back() + "$");
+        words.pop_back();
+    }
+    std::string out;
+    for (const std::string& w : words) {
+        std::string typeset = latex_text(w);
+        const bool number_follows = w.size() > 2 && w.compare(0, 2, "eq") == 0 &&
+                                    std::all_of(w.begin() + 2, w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+        if (number_follows)
+            typeset = "Eq.~" + w.substr(2);
+        else if (w.size() == 1 && std::isalpha(static_cast<unsigned char>(w[0])) && w != "a")
+            typeset = "$" + w + "$";
+        else if (w == "galilean")
+            typeset = "Galilean";
+        out += (out.empty() ? "" : " ") + typeset;
+    }
+    if (!out.empty() && std::islower(static_cast<unsigned char>(out[0])))
+        out[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(out[0])));
+    if (!qualifiers.empty())
+        out += " (" + qualifiers.front() + (qualifiers.size() > 1 ? ", " + qualifiers.back() : "") + ")";
     return out;
 }
 
@@ -188,7 +224,7 @@ std::string fragment_writer::checks() const
             const engine::result* r = d_.find_result(name);
             // Only a numbered result has a number to refer to.
             const std::string where = r && !r->paper.empty()
-                                          ? fmt::format(", \\eqref{{{}:result:{}}},", latex_label(d_), name)
+                                          ? fmt::format(", \\ref{{{}:result:{}}},", latex_label(d_), name)
                                           : "";
             out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result.\n",
                                status_text(c.outcome), q ? math(q->symbol) : latex_text(name), where);
@@ -197,14 +233,14 @@ std::string fragment_writer::checks() const
         if (c.continuity) {
             const engine::quantity* q = d_.symbols.find(c.cases_of);
             out += fmt::format("\\item {} --- {}: ${}$ is continuous where its cases meet.", status_text(c.outcome),
-                               latex_text(words(c.name)), q ? math(q->symbol) : latex_text(c.cases_of));
+                               heading(c.name), q ? math(q->symbol) : latex_text(c.cases_of));
             if (!c.because.empty())
                 out += " " + sentence_end(capitalised(latex_prose(c.because)));
             out += cases_text(c) + "\n";
             continue;
         }
         const written_form& w = c.written;
-        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), latex_text(words(c.name)));
+        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), heading(c.name));
         const std::string inline_math = claim_math(c, order_, &w);
         const bool shown = wants_display(inline_math);
         out += shown ? display(claim_lhs(c, &w), latex_relation(c.op), c.stated.rhs(), &w)
@@ -268,9 +304,9 @@ std::string fragment_writer::paper() const
         if (p.what == engine::paper_comparison::kind::claim) {
             out += fmt::format("``{}''", latex_prose(p.printed_text));
         } else {
-            const written_form& w = p.written;
-            out += "printed " + form(p.printed, &w);
-            after_display = displayed(p.printed, &w);
+            const std::string printed = as_printed(p);
+            after_display = wants_display(printed);
+            out += "printed " + (after_display ? shown_as_printed(p) : "$" + printed + "$");
         }
         const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {
@@ -288,6 +324,10 @@ std::string fragment_writer::paper() const
         const std::string change = findings(p);
         if (!change.empty())
             out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
+        else if (p.what == engine::paper_comparison::kind::claim && p.test)
+            out += (after_display ? capitalised(unreconciled(p)) : "; " + unreconciled(p)) + ".\n";
+        if (change.empty() && p.what == engine::paper_comparison::kind::claim && p.test)
+            continue;
         out += after_display && change.empty() ? "\n" : ".\n";
     }
     return out + "\\end{itemize}\n";

@@ -16,12 +16,41 @@ namespace impact::emit {
 namespace detail {
 
 // "Eq. 8" → "Eq.~8" in running text.
+// A place in the paper as a physicist cites it: "Eq. 3, line 2" is "Eq.~(3), second
+// line", "Sec. III C, after Eq. 14, 5th sentence" "Sec. III C, after Eq.~(14), 5th
+// sentence", "Appendix A, line 5" "Appendix A, fifth line".
 std::string paper_text(const std::string& paper)
 {
-    std::string out = latex_text(paper);
-    const auto space = out.find("Eq. ");
-    if (space != std::string::npos)
-        out.replace(space + 3, 1, "~");
+    static const char* const ordinals[] = {"first",   "second", "third",    "fourth",  "fifth",
+                                           "sixth",   "seventh", "eighth",  "ninth",   "tenth",
+                                           "eleventh", "twelfth", "thirteenth"};
+    std::string out;
+    std::size_t at = 0;
+    while (at < paper.size()) {
+        const bool eq = paper.compare(at, 4, "Eq. ") == 0;
+        const bool line = paper.compare(at, 5, "line ") == 0 && (at == 0 || paper[at - 1] == ' ');
+        if (eq || line) {
+            std::size_t end = at + (eq ? 4 : 5);
+            while (end < paper.size() && std::isalnum(static_cast<unsigned char>(paper[end])))
+                ++end;
+            const std::string number = paper.substr(at + (eq ? 4 : 5), end - at - (eq ? 4 : 5));
+            const bool whole = !number.empty() && std::all_of(number.begin(), number.end(), [](char c) {
+                return std::isdigit(static_cast<unsigned char>(c));
+            });
+            if (eq && !number.empty()) {
+                out += "Eq.~(" + latex_text(number) + ")";
+                at = end;
+                continue;
+            }
+            if (line && whole && std::stoul(number) >= 1 && std::stoul(number) <= std::size(ordinals)) {
+                out += std::string(ordinals[std::stoul(number) - 1]) + " line";
+                at = end;
+                continue;
+            }
+        }
+        out += latex_text(std::string(1, paper[at]));
+        ++at;
+    }
     return out;
 }
 
@@ -58,11 +87,10 @@ std::string listing(const std::vector<std::string>& items)
 
 namespace {
 
-// "Eq. 8" → "8"; the tag of a numbered result.
+// The tag of a numbered result: the paper's place as cited, "Eq.~(8), right, first line".
 std::string equation_tag(const std::string& paper)
 {
-    const std::string prefix = "Eq. ";
-    return paper.rfind(prefix, 0) == 0 ? paper.substr(prefix.size()) : paper;
+    return detail::paper_text(paper);
 }
 
 } // namespace
@@ -118,8 +146,10 @@ std::string fragment_writer::rows(const std::string& lhs, const GiNaC::ex& rhs, 
 {
     // The tag, set at the right of the last line, takes about 5 pt a character and a gap.
     double tag_width = 0;
-    if (const auto at = tag.find("\\tag{"); at != std::string::npos)
-        tag_width = 5.0 * static_cast<double>(tag.find('}', at) - at - 5) + 25;
+    if (const auto at = tag.find("\\tag"); at != std::string::npos) {
+        const auto open = tag.find('{', at);
+        tag_width = 5.0 * static_cast<double>(tag.find('}', open) - open - 1) + 25;
+    }
     const double side = align_at >= 0 ? align_at : latex_width(lhs);
     const bool own_line = side > 0.4 * content_width;
     const double indent = own_line ? 20 : side;
@@ -371,18 +401,12 @@ std::string fragment_writer::results() const
     double widest = 0;
     for (const engine::result& r : d_.results)
         widest = std::max(widest, latex_width(math(r.symbol)));
-    std::map<std::string, int> used_tags;
-    for (const engine::result& r : d_.results)
-        ++used_tags[r.paper];
-    std::map<std::string, int> next_letter;
     for (std::size_t i = 0; i < d_.results.size(); ++i) {
         const engine::result& r = d_.results[i];
         std::string tag = "\\notag";
         if (!r.paper.empty()) {
-            std::string t = equation_tag(r.paper);
-            if (used_tags[r.paper] > 1)
-                t += static_cast<char>('a' + next_letter[r.paper]++);
-            tag = fmt::format("\\tag{{{}}}", latex_text(t));
+            // The paper's own numbering, as cited: several results of one printed line share it.
+            tag = fmt::format("\\tag*{{{}}}", equation_tag(r.paper));
         }
         if (!r.paper.empty())
             tag += fmt::format("\\label{{{}:result:{}}}", latex_label(d_), r.name);

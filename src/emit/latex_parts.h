@@ -28,6 +28,19 @@ constexpr unsigned atom_level = 30;
 /// Registers print_tex's print functions with GiNaC (once).
 void register_print_functions();
 
+/// A symbol's LaTeX name (the one its file gives, else one made from its name).
+std::string symbol_latex(const GiNaC::symbol& s);
+
+/// A symbol's LaTeX name raised to a power as a textbook writes it (v'^{2}_{M,\parallel}).
+std::string symbol_power(const std::string& name, const std::string& exponent);
+
+/// Math in parentheses, \left( \right) around something tall.
+std::string parenthesised(const std::string& math);
+bool is_tall(const std::string& math);
+
+/// GiNaC's function names and their LaTeX (acos → \arccos).
+const std::map<std::string, std::string>& function_names();
+
 /// `e` printed in the context of `c` at precedence `level`.
 std::string render(const GiNaC::ex& e, const print_tex& c, unsigned level);
 
@@ -121,6 +134,9 @@ private:
     std::string findings(const engine::paper_comparison& p) const;
     std::string subject(const engine::paper_comparison& p) const;
     std::string shown(const GiNaC::ex& e, const written_form* w) const;
+    std::string as_printed(const engine::paper_comparison& p) const;
+    std::string unreconciled(const engine::paper_comparison& p) const;
+    std::string shown_as_printed(const engine::paper_comparison& p) const;
     std::pair<GiNaC::ex, const written_form*> derived_form(const engine::paper_comparison& p) const;
     // The text width of the report (A4, 2 cm margins: 482 pt) less a list's indent: steps
     // and checks are items of a list.
