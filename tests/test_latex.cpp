@@ -211,7 +211,7 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
     const std::string tex = emit::latex_fragment(derived("inelastic_line"));
     // Givens with their justifications, numbered and labelled for the steps.
     // (prose from the file, its $...$ mathematics kept as mathematics)
-    BOOST_TEST(contains(tex, "The impulse $J$ changes the momentum of $M$ by $-J$ (Eq.~6):\n\\begin{align}"));
+    BOOST_TEST(contains(tex, "The impulse $J$ changes the momentum of $M$ by $-J$ (Eq.~(6)):\n\\begin{align}"));
     BOOST_TEST(contains(tex, "\\tag{G1}\\label{impact:inelastic_line:impulse_M}"));
     // The step refers to the equations it solves.
     BOOST_TEST(contains(tex, "Solving \\eqref{impact:inelastic_line:impulse_M}, "
@@ -219,13 +219,13 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
                              "\\eqref{impact:inelastic_line:restitution} for"));
     // The results in their display forms, numbered by the lines of Eq. 8 that print them.
     BOOST_TEST(contains(tex, "v'_{M,\\parallel} &= \\frac{M v_{M,\\parallel} + m v_{m,\\parallel} + \\epsilon m "
-                             "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag{8, right, line 1}"));
-    BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag{8, right, line 3}"));
+                             "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag*{Eq.~(8), right, first line}"));
+    BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag*{Eq.~(8), right, third line}"));
     // Checks with status; the paper's Eq. 7 found wanting.
     BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- Momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
                              "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));
     // Eq. 7 as the paper prints it, its parentheses kept: (v_M - v_m) = -eps(v_M - v_m).
-    BOOST_TEST(contains(tex, "Eq.~7, restitution (equation): printed $(v_{M,\\parallel} - v_{m,\\parallel}) = "
+    BOOST_TEST(contains(tex, "Eq.~(7), restitution (equation): printed $(v_{M,\\parallel} - v_{m,\\parallel}) = "
                              "-\\epsilon (v_{M,\\parallel} - v_{m,\\parallel})$ --- \\textbf{disagrees}"));
     BOOST_TEST(contains(tex, "smallest change: on the left, the primes missing."));
 }
@@ -235,7 +235,7 @@ BOOST_AUTO_TEST_CASE(printed_forms_are_shown_as_the_paper_prints_them)
     // Eq. 12, line 2, typed from the paper: its denominator mv + mεv + mv − mεv, which
     // GiNaC would merge into 2mv.
     const std::string eq12 = emit::latex_fragment(derived("billiard_transfer"));
-    BOOST_TEST(contains(eq12, "Eq.~12, line 2, $\\tau$: printed $\\frac{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel}}"
+    BOOST_TEST(contains(eq12, "Eq.~(12), second line, $\\tau$: printed $\\frac{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel}}"
                               "{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel} + m v_{1,\\parallel} - m \\epsilon v_{1,\\parallel}}$"));
     // Eq. 14, line 2, first member: ½(1 − ε)v∥ over ½√(((1 − ε)v∥)² + 4v⊥²), the halves kept.
     const std::string eq14 = emit::latex_fragment(derived("scatter_angle"));

@@ -316,8 +316,13 @@ std::string fragment_writer::paper() const
         out += fmt::format(after_display ? "It is \\textbf{{{}}}" : " --- \\textbf{{{}}}", verdict);
         if (p.what != engine::paper_comparison::kind::claim || p.agreement.what == engine::verdict::status::failed) {
             const auto [derived, written] = derived_form(p);
-            out += ": derived " + form(derived, written);
-            after_display = displayed(derived, written);
+            // After a long quote the line has little room left: a derived form of any
+            // width is displayed.
+            const bool wide = p.what == engine::paper_comparison::kind::claim &&
+                              latex_width(derived.info(GiNaC::info_flags::relation) ? relation_math(derived, written)
+                                                                                   : math(derived, written)) > 150;
+            after_display = wide || displayed(derived, written);
+            out += ": derived " + (wide ? shown(derived, written) : form(derived, written));
         } else {
             after_display = false;
         }
@@ -325,7 +330,7 @@ std::string fragment_writer::paper() const
         if (!change.empty())
             out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
         else if (p.what == engine::paper_comparison::kind::claim && p.test)
-            out += (after_display ? capitalised(unreconciled(p)) : "; " + unreconciled(p)) + ".\n";
+            out += (after_display ? capitalised(unreconciled(p, 60)) : "; " + unreconciled(p, 60)) + ".\n";
         if (change.empty() && p.what == engine::paper_comparison::kind::claim && p.test)
             continue;
         out += after_display && change.empty() ? "\n" : ".\n";

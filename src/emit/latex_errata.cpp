@@ -39,7 +39,7 @@ std::string dimension_latex(const engine::dimension& d)
 
 } // namespace
 
-std::string finding_latex(const engine::finding& f, const term_order& order)
+std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written)
 {
     std::string out;
     for (const engine::finding::part& p : f.parts) {
@@ -48,8 +48,8 @@ std::string finding_latex(const engine::finding& f, const term_order& order)
         case engine::finding::part::kind::math:
             out += "$" +
                    (GiNaC::is_a<GiNaC::relational>(p.value)
-                        ? latex(p.value.lhs(), order) + " = " + latex(p.value.rhs(), order)
-                        : latex(p.value, order)) +
+                        ? latex(p.value.lhs(), order, written) + " = " + latex(p.value.rhs(), order, written)
+                        : latex(p.value, order, written)) +
                    "$";
             break;
         case engine::finding::part::kind::tends:
@@ -77,8 +77,9 @@ namespace detail {
 std::string fragment_writer::findings(const engine::paper_comparison& p) const
 {
     std::vector<std::string> said;
+    // Parts of the printed form a finding names are turned the way the paper writes them.
     for (const engine::finding& f : p.findings)
-        said.push_back(finding_latex(f, order_));
+        said.push_back(finding_latex(f, order_, p.written.empty() ? nullptr : &p.written));
     std::string out;
     for (const std::string& s : said)
         out += (out.empty() ? "" : "; ") + s;
@@ -101,12 +102,16 @@ std::string fragment_writer::subject(const engine::paper_comparison& p) const
 // What to say of a disagreement no single edit reconciles: for a claim, the claim as
 // checked (which the table does not show otherwise) does not hold; for a printed form,
 // the derived form beside it is what is right.
-std::string fragment_writer::unreconciled(const engine::paper_comparison& p) const
+std::string fragment_writer::unreconciled(const engine::paper_comparison& p, double width) const
 {
     if (p.what != engine::paper_comparison::kind::claim || !p.test)
         return "no single edit; the derived form is what holds";
     const engine::check_result& c = *p.test;
-    std::string out = "as checked, $" + claim_math(c, order_, &c.written) + "$";
+    const std::string checked = claim_math(c, order_, &c.written);
+    // Too wide to set inline where it is said: refer to the claim's section instead.
+    if (!fits(checked, width) || latex_width(checked) > width)
+        return fmt::format("the claim, as checked in Sect.~\\ref{{{}}}, does not hold", latex_label(d_));
+    std::string out = "as checked, $" + checked + "$";
     std::vector<std::string> at;
     for (const auto& [symbol, value] : c.at)
         at.push_back(fmt::format("${} = {}$", math(symbol), math(value)));
@@ -219,13 +224,13 @@ void fragment_writer::errata_rows(errata_table& table) const
                                                : "proven equal")
                                         : findings(p);
         if (change.empty())
-            change = verdict == "undecided" ? "neither proven nor refuted" : unreconciled(p);
+            change = verdict == "undecided" ? "neither proven nor refuted" : unreconciled(p, change_pt);
         if (claims.size() > 1 && !p.agrees()) {
             std::vector<std::string> said = {change};
             for (std::size_t k = 1; k < claims.size(); ++k) {
                 std::string more = findings(all[claims[k]]);
                 if (more.empty())
-                    more = unreconciled(all[claims[k]]);
+                    more = unreconciled(all[claims[k]], change_pt);
                 if (std::find(said.begin(), said.end(), more) == said.end())
                     said.push_back(more);
             }
