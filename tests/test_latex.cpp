@@ -247,6 +247,17 @@ BOOST_AUTO_TEST_CASE(printed_forms_are_shown_as_the_paper_prints_them)
                         "{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel} + m v_{1,\\parallel} - m \\epsilon v_{1,\\parallel}}"));
 }
 
+BOOST_AUTO_TEST_CASE(a_result_repeated_for_several_printed_lines_is_shown_once)
+{
+    // Eq. 12's second, third and fourth lines all give the paper's tau = 1/2 - eps/2.
+    const std::string tex = emit::latex_fragment(derived("billiard_transfer"));
+    BOOST_TEST(contains(tex, "\\tau &= \\frac{1}{2} - \\frac{1}{2} \\epsilon \\tag*{Eq.~(12), second, third and fourth lines}"));
+    const std::string results = tex.substr(tex.find("\\paragraph{Results.}"));
+    BOOST_TEST(results.find("\\tau &=") == results.rfind("\\tau &="), "tau is shown more than once");
+    // No step that merely copies tau under another name.
+    BOOST_TEST(!contains(tex, "\\tau &= \\tau"));
+}
+
 BOOST_AUTO_TEST_CASE(checks_are_headed_in_words_not_identifiers)
 {
     const std::string tex = emit::latex_fragment(derived("inelastic_plane"));

@@ -222,6 +222,16 @@ std::string fragment_writer::checks() const
             const std::string& name = c.display_of;
             const engine::quantity* q = d_.symbols.find(name);
             const engine::result* r = d_.find_result(name);
+            // A result shown once for several lines of the paper: its display form is one
+            // check, said once, for all of them.
+            if (r && &shown_as(*r) != r) {
+                const engine::check_result* first = nullptr;
+                for (const engine::check_result& other : d_.checks)
+                    if (other.display_of == shown_as(*r).name)
+                        first = &other;
+                if (first && first->outcome.what == c.outcome.what)
+                    continue;
+            }
             // Only a numbered result has a number to refer to.
             const std::string where = r && !r->paper.empty()
                                           ? fmt::format(", \\ref{{{}:result:{}}},", latex_label(d_), name)

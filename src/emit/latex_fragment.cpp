@@ -244,6 +244,11 @@ std::string fragment_writer::steps() const
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
         const engine::step_result& s = d_.steps[i];
         const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
+        // A copy of a quantity under another name (τ again, to compare with another printed
+        // line): the same symbol, the same value, nothing for the reader to follow.
+        if (s.what == spec::step::kind::define && s.values.size() == 1 && s.as_written &&
+            math(*s.as_written) == math(s.values[0].first))
+            continue;
         const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
         out += "\\item ";
         switch (s.what) {
@@ -393,29 +398,78 @@ std::string fragment_writer::rearrange_step(const engine::step_result& s, const 
     return out;
 }
 
+// The result shown in place of `r`: an earlier result of the same symbol and the same
+// display (τ of Eq. 12's second, third and fourth lines), shown once; or `r` itself.
+const engine::result& fragment_writer::shown_as(const engine::result& r) const
+{
+    for (const engine::result& earlier : d_.results) {
+        if (&earlier == &r)
+            break;
+        if (earlier.cases.empty() && r.cases.empty() && math(earlier.symbol) == math(r.symbol) &&
+            math(earlier.display, &earlier.written) == math(r.display, &r.written))
+            return earlier;
+    }
+    return r;
+}
+
+// The places of the results shown as `first`, cited together: "Eq.~(12), second, third
+// and fourth lines" when they are lines of one equation.
+std::string fragment_writer::places(const engine::result& first) const
+{
+    std::vector<std::string> papers;
+    for (const engine::result& r : d_.results)
+        if (&shown_as(r) == &first && !r.paper.empty())
+            papers.push_back(r.paper);
+    if (papers.size() < 2)
+        return equation_tag(first.paper);
+    static const char* const ordinals[] = {"first", "second", "third", "fourth", "fifth", "sixth",
+                                           "seventh", "eighth", "ninth", "tenth"};
+    const std::string line = ", line ";
+    const std::string base = papers[0].substr(0, papers[0].rfind(line));
+    std::vector<int> numbers;
+    for (const std::string& paper : papers) {
+        const auto at = paper.rfind(line);
+        if (at == std::string::npos || paper.substr(0, at) != base)
+            return equation_tag(first.paper);
+        numbers.push_back(std::atoi(paper.c_str() + at + line.size()));
+    }
+    std::sort(numbers.begin(), numbers.end());
+    numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
+    if (numbers.size() == 1)
+        return equation_tag(first.paper);
+    std::vector<std::string> words;
+    for (int n : numbers) {
+        if (n < 1 || n > 10)
+            return equation_tag(first.paper);
+        words.push_back(ordinals[n - 1]);
+    }
+    return equation_tag(base) + ", " + listing(words) + " lines";
+}
+
 std::string fragment_writer::results() const
 {
     if (d_.results.empty())
         return "";
+    std::vector<const engine::result*> shown;
+    for (const engine::result& r : d_.results)
+        if (&shown_as(r) == &r)
+            shown.push_back(&r);
     std::string out = "\n\\paragraph{Results.}\n\\begin{align}\n";
     double widest = 0;
-    for (const engine::result& r : d_.results)
-        widest = std::max(widest, latex_width(math(r.symbol)));
-    for (std::size_t i = 0; i < d_.results.size(); ++i) {
-        const engine::result& r = d_.results[i];
+    for (const engine::result* r : shown)
+        widest = std::max(widest, latex_width(math(r->symbol)));
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        const engine::result& r = *shown[i];
         std::string tag = "\\notag";
-        if (!r.paper.empty()) {
-            // The paper's own numbering, as cited: several results of one printed line share it.
-            tag = fmt::format("\\tag*{{{}}}", equation_tag(r.paper));
-        }
+        // The paper's own numbering, as cited: several results of one printed line share it.
         if (!r.paper.empty())
-            tag += fmt::format("\\label{{{}:result:{}}}", latex_label(d_), r.name);
+            tag = fmt::format("\\tag*{{{}}}\\label{{{}:result:{}}}", places(r), latex_label(d_), r.name);
         if (!r.cases.empty())
             out += fmt::format("  {} &= {} {}", math(r.symbol), cases_math(r.cases, true), tag) +
-                   (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
+                   (i + 1 < shown.size() ? " \\\\\n" : "\n");
         else
             out += rows(math(r.symbol), r.display, &r.written, tag, "=", widest) +
-                   (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
+                   (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }
     return out + "\\end{align}\n";
 }

@@ -117,6 +117,8 @@ private:
     std::string rearrange_step(const engine::step_result& s, const spec::step* source,
                                const std::string& because) const;
     std::string results() const;
+    const engine::result& shown_as(const engine::result& r) const;
+    std::string places(const engine::result& first) const;
 
     // latex_claims.cpp: the checks and the paper held to account.
     std::string how(const engine::check_result& c) const;
