@@ -258,6 +258,19 @@ BOOST_AUTO_TEST_CASE(a_result_repeated_for_several_printed_lines_is_shown_once)
     BOOST_TEST(!contains(tex, "\\tau &= \\tau"));
 }
 
+BOOST_AUTO_TEST_CASE(a_step_shows_its_value_collected_not_expanded)
+{
+    // E'_K with Eq. 8's velocities, typed from the closed form
+    // ((M v_M + m v_m)^2 + eps^2 M m (v_M - v_m)^2) / (2 (M + m)): collected in eps.
+    const std::string tex = emit::latex_fragment(derived("energy_loss_impulse"));
+    BOOST_TEST(contains(tex, "&= \\frac{M m \\epsilon^{2} (v_{M,\\parallel} - v_{m,\\parallel})^{2} + "
+                             "(M v_{M,\\parallel} + m v_{m,\\parallel})^{2}}{2 (M + m)}\n\\end{align*}\n"
+                             "The value is shown collected in $\\epsilon$, each coefficient factored."));
+    // |v'_1| = sqrt(v^2 (1 - eps)^2 + 4 v_perp^2)/2, not an expanded sum under the root.
+    const std::string angle = emit::latex_fragment(derived("scatter_angle"));
+    BOOST_TEST(contains(angle, "\\sqrt{v^{2}_{1,\\parallel} (1 - \\epsilon)^{2} + 4 v^{2}_{1,\\perp}}"));
+}
+
 BOOST_AUTO_TEST_CASE(checks_are_headed_in_words_not_identifiers)
 {
     const std::string tex = emit::latex_fragment(derived("inelastic_plane"));

@@ -347,14 +347,28 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
         // The definition as written, then what it comes to when that differs.
         const std::optional<GiNaC::ex>& as_written = s.as_written;
         const written_form& w = s.written;
-        if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value))
+        // What it comes to: the result's display form when it is a result, else the value
+        // as a textbook shows it (factored or collected, which is said).
+        const engine::result* r = d_.find_result(GiNaC::ex_to<GiNaC::symbol>(symbol).get_name());
+        const bool displayed = r && r->cases.empty() && !r->written.empty() &&
+                               !(as_written && math(*as_written, &w) == math(r->display, &r->written));
+        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
+        const written_form* shown_written = displayed ? &r->written : nullptr;
+        std::string how;
+        if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
+            math(*as_written, &w) != math(shown.value, shown_written)) {
             out += rows(math(symbol), *as_written, &w, "") + " \\\\\n" +
-                   rows("", value, nullptr, "", "=", latex_width(math(symbol))) + "\n";
-        else if (as_written)
+                   rows("", shown.value, shown_written, "", "=", latex_width(math(symbol))) + "\n";
+            how = shown.how;
+        } else if (as_written) {
             out += rows(math(symbol), *as_written, &w, "") + "\n";
-        else
-            out += rows(math(symbol), value, nullptr, "") + "\n";
+        } else {
+            out += rows(math(symbol), shown.value, shown_written, "") + "\n";
+            how = shown.how;
+        }
         out += "\\end{align*}\n";
+        if (!how.empty())
+            out += "The value is shown " + how + ".\n";
     }
     return out + step_checks(s);
 }

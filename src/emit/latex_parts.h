@@ -41,6 +41,16 @@ bool is_tall(const std::string& math);
 /// GiNaC's function names and their LaTeX (acos → \arccos).
 const std::map<std::string, std::string>& function_names();
 
+/// An intermediate value as a textbook shows it: factored, or collected in one quantity
+/// with each coefficient factored, whichever prints shortest, when clearly shorter than
+/// `value` as it is (proven equal to it); `how` says which, in LaTeX prose, and is empty
+/// when the value is left as it is.
+struct textbook_value {
+    GiNaC::ex value;
+    std::string how;
+};
+textbook_value textbook_form(const GiNaC::ex& e, const term_order& order);
+
 /// `e` printed in the context of `c` at precedence `level`.
 std::string render(const GiNaC::ex& e, const print_tex& c, unsigned level);
 
