@@ -75,8 +75,8 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                       "Each item names its place in the paper: a line of a displayed equation (\"Eq. 12, line 2\"), "
                       "an equation or a sentence of the text (\"Sec. III C, after Eq. 14, 5th sentence\"), a "
                       "footnote. One place may be compared more than once (the components of a vector, two claims "
-                      "of one sentence). The lines and claims of the paper that are not compared (references, "
-                      "figure captions that describe a drawing, assumptions, notation) are listed, each with its "
+                      "of one sentence). The lines and claims of the paper that are not compared (the references, "
+                      "the assumptions and scope of Sec. I, notation, a figure's set-up) are listed, each with its "
                       "reason, beside those compared, in `tests/test_paper_lines.cpp`, which fails when a line it "
                       "lists as compared is not.\n\n";
     out += fmt::format("{} printed lines and claims of the paper compared, in {} items: {} agree, {} disagree.\n\n",

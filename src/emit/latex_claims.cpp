@@ -323,7 +323,9 @@ std::string fragment_writer::paper() const
             out += after_display ? "It agrees.\n" : " --- agrees.\n";
             continue;
         }
-        out += fmt::format(after_display ? "It is \\textbf{{{}}}" : " --- \\textbf{{{}}}", verdict);
+        out += fmt::format(after_display ? (verdict == "disagrees" ? "It \\textbf{{{}}}" : "It is \\textbf{{{}}}")
+                                         : " --- \\textbf{{{}}}",
+                           verdict);
         if (p.what != engine::paper_comparison::kind::claim || p.agreement.what == engine::verdict::status::failed) {
             const auto [derived, written] = derived_form(p);
             // After a long quote the line has little room left: a derived form of any
