@@ -277,6 +277,10 @@ BOOST_AUTO_TEST_CASE(checks_are_headed_in_words_not_identifiers)
     BOOST_TEST(contains(tex, "--- Momentum conserved ($x$ component): "));
     BOOST_TEST(contains(tex, "--- Exchange symmetry ($M$, $x$ component): "));
     BOOST_TEST(!contains(tex, "momentum conserved x"));
+    // The claim as the file writes it, not as GiNaC merges it (0 = 0).
+    const std::string plane = emit::latex_fragment(derived("elastic_plane"));
+    BOOST_TEST(contains(plane, "--- Rows of the rotation are perpendicular: $\\cos\\theta \\, (-\\sin\\theta) + "
+                               "\\sin\\theta \\, \\cos\\theta = 0$."));
     const std::string space = emit::latex_fragment(derived("inelastic_space"));
     BOOST_TEST(contains(space, "--- $n$ is a unit vector: "));
     BOOST_TEST(contains(space, "--- Energy loss is Eq.~11: "));

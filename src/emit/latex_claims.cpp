@@ -251,7 +251,11 @@ std::string fragment_writer::checks() const
         }
         const written_form& w = c.written;
         out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), heading(c.name));
-        const std::string inline_math = claim_math(c, order_, &w);
+        // The claim as the file writes it, nothing merged (cos θ (−sin θ) + sin θ cos θ = 0,
+        // not 0 = 0); a limit, and a claim too wide for the line, as GiNaC reads it.
+        const std::string inline_math = w.tree() && !c.limit && !wants_display(claim_math(c, order_, &w))
+                                            ? latex_as_written(*w.tree(), order_)
+                                            : claim_math(c, order_, &w);
         const bool shown = wants_display(inline_math);
         out += shown ? display(claim_lhs(c, &w), latex_relation(c.op), c.stated.rhs(), &w)
                      : "$" + inline_math + "$";

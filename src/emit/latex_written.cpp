@@ -90,11 +90,20 @@ private:
         auto factors = [&](const std::vector<const node*>& items) {
             if (items.size() == 1)
                 return bare(*items[0]);
+            // A number after another factor takes a \cdot; a factor after \cos\theta a thin
+            // space (cos θ r, not cos θr).
+            auto reads_like_function = [&](const node& n) {
+                if (n.what != node::kind::atom || !GiNaC::is_a<GiNaC::symbol>(n.value))
+                    return false;
+                const std::string name = atom(n.value);
+                return name.rfind("\\cos", 0) == 0 || name.rfind("\\sin", 0) == 0 || name.rfind("\\tan", 0) == 0;
+            };
             std::string out;
             for (std::size_t i = 0; i < items.size(); ++i) {
                 const bool number = unwrapped(*items[i]).what == node::kind::atom &&
                                     GiNaC::is_a<GiNaC::numeric>(unwrapped(*items[i]).value);
-                out += (i == 0 ? "" : number ? " \\cdot " : " ") + print(*items[i]);
+                const char* gap = i == 0 ? "" : number ? " \\cdot " : reads_like_function(*items[i - 1]) ? " \\, " : " ";
+                out += gap + print(*items[i]);
             }
             return out;
         };
