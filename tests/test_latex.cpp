@@ -59,6 +59,23 @@ bool contains(const std::string& text, const std::string& part)
 
 BOOST_FIXTURE_TEST_SUITE(display_forms, eq8_symbols)
 
+BOOST_AUTO_TEST_CASE(a_form_as_written_keeps_every_term_the_text_has)
+{
+    // GiNaC merges m v + m v into 2 m v and cancels m ε v - m ε v; as written, nothing is.
+    const std::string text = "(M*v_M + M*v_M + M*eps*v_M - M*eps*v_M)/(2*(M + m))";
+    const engine::written_form w = engine::written_form::read(text, [this](const std::string& t) { return parse(t); });
+    BOOST_TEST_REQUIRE(w.tree().has_value());
+    BOOST_TEST(emit::latex_as_written(*w.tree(), order) ==
+               "\\frac{M v_{M,\\parallel} + M v_{M,\\parallel} + M \\epsilon v_{M,\\parallel} - M \\epsilon v_{M,\\parallel}}"
+               "{2 (M + m)}");
+    BOOST_TEST(emit::latex(parse(text), order, &w) == "\\frac{M v_{M,\\parallel}}{M + m}");
+    // ½ in front of a product, a power of a primed symbol, an equation.
+    const engine::written_form e = engine::written_form::read(
+        "1/2*M*v_M_after^2 = -m_eff^(-1)*(1 + eps)", [this](const std::string& t) { return parse(t); });
+    BOOST_TEST(emit::latex_as_written(*e.tree(), order) ==
+               "\\frac{1}{2} M v'^{2}_{M,\\parallel} = -m^{-1}_{\\mathrm{eff}} (1 + \\epsilon)");
+}
+
 BOOST_AUTO_TEST_CASE(eq8_is_printed_in_the_order_its_display_form_gives)
 {
     // Eq. 8 as the paper prints it: ε m (v_m − v_M), not m ε (v_M − v_m) with a minus.
@@ -194,7 +211,7 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
     const std::string tex = emit::latex_fragment(derived("inelastic_line"));
     // Givens with their justifications, numbered and labelled for the steps.
     // (prose from the file, its $...$ mathematics kept as mathematics)
-    BOOST_TEST(contains(tex, "The impulse $J$ changes the momentum of $M$ by $-J$ (Eq.~6):\n\\begin{align}"));
+    BOOST_TEST(contains(tex, "The impulse $J$ changes the momentum of $M$ by $-J$ (Eq.~(6)):\n\\begin{align}"));
     BOOST_TEST(contains(tex, "\\tag{G1}\\label{impact:inelastic_line:impulse_M}"));
     // The step refers to the equations it solves.
     BOOST_TEST(contains(tex, "Solving \\eqref{impact:inelastic_line:impulse_M}, "
@@ -202,14 +219,71 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
                              "\\eqref{impact:inelastic_line:restitution} for"));
     // The results in their display forms, numbered by the lines of Eq. 8 that print them.
     BOOST_TEST(contains(tex, "v'_{M,\\parallel} &= \\frac{M v_{M,\\parallel} + m v_{m,\\parallel} + \\epsilon m "
-                             "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag{8, right, line 1}"));
-    BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag{8, right, line 3}"));
+                             "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag*{Eq.~(8), right, first line}"));
+    BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag*{Eq.~(8), right, third line}"));
     // Checks with status; the paper's Eq. 7 found wanting.
-    BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
+    BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- Momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
                              "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));
-    BOOST_TEST(contains(tex, "Eq.~7, restitution (equation): printed $v_{M,\\parallel} - v_{m,\\parallel} = "
+    // Eq. 7 as the paper prints it, its parentheses kept: (v_M - v_m) = -eps(v_M - v_m).
+    BOOST_TEST(contains(tex, "Eq.~(7), restitution (equation): printed $(v_{M,\\parallel} - v_{m,\\parallel}) = "
                              "-\\epsilon (v_{M,\\parallel} - v_{m,\\parallel})$ --- \\textbf{disagrees}"));
     BOOST_TEST(contains(tex, "smallest change: on the left, the primes missing."));
+}
+
+BOOST_AUTO_TEST_CASE(printed_forms_are_shown_as_the_paper_prints_them)
+{
+    // Eq. 12, line 2, typed from the paper: its denominator mv + mεv + mv − mεv, which
+    // GiNaC would merge into 2mv.
+    const std::string eq12 = emit::latex_fragment(derived("billiard_transfer"));
+    BOOST_TEST(contains(eq12, "Eq.~(12), second line, $\\tau$: printed $\\frac{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel}}"
+                              "{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel} + m v_{1,\\parallel} - m \\epsilon v_{1,\\parallel}}$"));
+    // Eq. 14, line 2, first member: ½(1 − ε)v∥ over ½√(((1 − ε)v∥)² + 4v⊥²), the halves kept.
+    const std::string eq14 = emit::latex_fragment(derived("scatter_angle"));
+    BOOST_TEST(contains(eq14, "\\frac{\\frac{1}{2} (1 - \\epsilon) v_{1,\\parallel}}{\\frac{1}{2} "
+                              "\\sqrt{((1 - \\epsilon) v_{1,\\parallel})^{2} + 4 v^{2}_{1,\\perp}}}"));
+    // The errata table shows the same printed forms.
+    std::vector<const engine::derivation*> all = {&derived("billiard_transfer")};
+    BOOST_TEST(contains(emit::latex_errata(all).rows,
+                        "{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel} + m v_{1,\\parallel} - m \\epsilon v_{1,\\parallel}}"));
+}
+
+BOOST_AUTO_TEST_CASE(a_result_repeated_for_several_printed_lines_is_shown_once)
+{
+    // Eq. 12's second, third and fourth lines all give the paper's tau = 1/2 - eps/2.
+    const std::string tex = emit::latex_fragment(derived("billiard_transfer"));
+    BOOST_TEST(contains(tex, "\\tau &= \\frac{1}{2} - \\frac{1}{2} \\epsilon \\tag*{Eq.~(12), second, third and fourth lines}"));
+    const std::string results = tex.substr(tex.find("\\paragraph{Results.}"));
+    BOOST_TEST(results.find("\\tau &=") == results.rfind("\\tau &="), "tau is shown more than once");
+    // No step that merely copies tau under another name.
+    BOOST_TEST(!contains(tex, "\\tau &= \\tau"));
+}
+
+BOOST_AUTO_TEST_CASE(a_step_shows_its_value_collected_not_expanded)
+{
+    // E'_K with Eq. 8's velocities, typed from the closed form
+    // ((M v_M + m v_m)^2 + eps^2 M m (v_M - v_m)^2) / (2 (M + m)): collected in eps.
+    const std::string tex = emit::latex_fragment(derived("energy_loss_impulse"));
+    BOOST_TEST(contains(tex, "&= \\frac{M m \\epsilon^{2} (v_{M,\\parallel} - v_{m,\\parallel})^{2} + "
+                             "(M v_{M,\\parallel} + m v_{m,\\parallel})^{2}}{2 (M + m)}\n\\end{align*}\n"
+                             "The value is shown collected in $\\epsilon$, each coefficient factored."));
+    // |v'_1| = sqrt(v^2 (1 - eps)^2 + 4 v_perp^2)/2, not an expanded sum under the root.
+    const std::string angle = emit::latex_fragment(derived("scatter_angle"));
+    BOOST_TEST(contains(angle, "\\sqrt{v^{2}_{1,\\parallel} (1 - \\epsilon)^{2} + 4 v^{2}_{1,\\perp}}"));
+}
+
+BOOST_AUTO_TEST_CASE(checks_are_headed_in_words_not_identifiers)
+{
+    const std::string tex = emit::latex_fragment(derived("inelastic_plane"));
+    BOOST_TEST(contains(tex, "--- Momentum conserved ($x$ component): "));
+    BOOST_TEST(contains(tex, "--- Exchange symmetry ($M$, $x$ component): "));
+    BOOST_TEST(!contains(tex, "momentum conserved x"));
+    // The claim as the file writes it, not as GiNaC merges it (0 = 0).
+    const std::string plane = emit::latex_fragment(derived("elastic_plane"));
+    BOOST_TEST(contains(plane, "--- Rows of the rotation are perpendicular: $\\cos\\theta \\, (-\\sin\\theta) + "
+                               "\\sin\\theta \\, \\cos\\theta = 0$."));
+    const std::string space = emit::latex_fragment(derived("inelastic_space"));
+    BOOST_TEST(contains(space, "--- $n$ is a unit vector: "));
+    BOOST_TEST(contains(space, "--- Energy loss is Eq.~11: "));
 }
 
 BOOST_AUTO_TEST_CASE(prose_keeps_its_mathematics_and_escapes_the_rest)

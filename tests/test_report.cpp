@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(the_report_includes_every_derivation_the_errata_and_both_fi
     BOOST_TEST(tex.find("\\input{figures/billiard}") != std::string::npos);
     BOOST_TEST(tex.find("\\input{figures/scatter_angle}") != std::string::npos);
     // The errata table says which of the paper's items disagree: Eq. 7 lost its primes.
-    BOOST_TEST(tex.find("Eq.~7 (Sect.~\\ref{impact:inelastic_line}) & restitution (equation) & \\textbf{disagrees}") !=
+    BOOST_TEST(tex.find("Eq.~(7) (Sect.~\\ref{impact:inelastic_line}) & restitution (equation) & \\textbf{disagrees}") !=
                    std::string::npos);
 }
 

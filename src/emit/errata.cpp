@@ -75,8 +75,8 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                       "Each item names its place in the paper: a line of a displayed equation (\"Eq. 12, line 2\"), "
                       "an equation or a sentence of the text (\"Sec. III C, after Eq. 14, 5th sentence\"), a "
                       "footnote. One place may be compared more than once (the components of a vector, two claims "
-                      "of one sentence). The lines and claims of the paper that are not compared (references, "
-                      "figure captions that describe a drawing, assumptions, notation) are listed, each with its "
+                      "of one sentence). The lines and claims of the paper that are not compared (the references, "
+                      "the assumptions and scope of Sec. I, notation, a figure's set-up) are listed, each with its "
                       "reason, beside those compared, in `tests/test_paper_lines.cpp`, which fails when a line it "
                       "lists as compared is not.\n\n";
     out += fmt::format("{} printed lines and claims of the paper compared, in {} items: {} agree, {} disagree.\n\n",
@@ -90,9 +90,10 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
             const engine::result* r =
                 p.what == engine::paper_comparison::kind::result ? d->find_result(p.subject) : nullptr;
             const std::string derived = r ? math(r->display, order, &r->written) : math(p.derived, order, nullptr);
-            const std::string printed = p.what == engine::paper_comparison::kind::claim
-                                            ? cell(p.printed_text)
-                                            : math(p.printed, order, &p.written);
+            // As the paper prints it: the transcription's terms and factors, nothing merged.
+            const std::string printed = p.what == engine::paper_comparison::kind::claim ? cell(p.printed_text)
+                                        : p.written.tree() ? "$" + latex_as_written(*p.written.tree(), order) + "$"
+                                                           : math(p.printed, order, &p.written);
             const engine::quantity* q = d->symbols.find(p.subject);
             std::string name = p.subject;
             std::replace(name.begin(), name.end(), '_', ' ');
@@ -104,6 +105,8 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                 std::vector<std::string> said;
                 for (const engine::finding& f : p.findings)
                     said.push_back(cell(finding_latex(f, order)));
+                if (said.empty() && p.test)
+                    said.push_back("as checked, $" + claim_math(*p.test, order, &p.test->written) + "$, it does not hold");
                 change = said.empty() ? "no single edit; see the derived form"
                                       : fmt::format("{}", fmt::join(said, "; "));
             }

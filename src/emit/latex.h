@@ -52,6 +52,16 @@ std::vector<std::string> latex_lines(const GiNaC::ex& e, const term_order& order
 /// Modern at 10 pt: fractions count their wider part, scripts 0.7 of theirs.
 double latex_width(const std::string& math);
 
+/// A form exactly as its text writes it (`written_form::tree`): every term, factor, sign
+/// and parenthesis where the text has it, nothing merged or reordered; for the paper's
+/// printed forms, shown as printed.
+std::string latex_as_written(const written_form::node& n, const term_order& order);
+
+/// The same broken before a + or - of its outermost sum into lines none (where it can be
+/// helped) wider than `width` points; one line when it fits.
+std::vector<std::string> latex_lines_as_written(const written_form::node& n, const term_order& order,
+                                                double width);
+
 /// A check's claim as LaTeX math: `\lim_{v_\perp \to \infty} \cos\theta = 0`, `\Delta E_K \leq 0`.
 std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written = nullptr);
 
@@ -64,7 +74,7 @@ std::string latex_prose(const std::string& text);
 
 /// A finding of the engine (a smallest change, a dimensional inconsistency, the regime
 /// where a claim holds instead) as LaTeX prose with its mathematics typeset.
-std::string finding_latex(const engine::finding& f, const term_order& order);
+std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written = nullptr);
 
 /// "agrees", "disagrees", or "undecided" when the comparison could be neither proven nor
 /// refuted.

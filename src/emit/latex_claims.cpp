@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 
 namespace impact::emit {
@@ -45,11 +46,46 @@ bool nested_fraction(const std::string& math)
     return false;
 }
 
-// momentum_conserved → "momentum conserved"
-std::string words(const std::string& name)
+// A check's name as a heading a physicist reads (LaTeX): its words, a single letter as
+// the quantity it names (n_is_a_unit_vector: "$n$ is a unit vector"), eq11 as "Eq. 11",
+// and the sphere and component a name ends in as a qualifier: momentum_conserved_x is
+// "Momentum conserved ($x$ component)", exchange_symmetry_M_y "Exchange symmetry ($M$,
+// $y$ component)".
+std::string heading(const std::string& name)
 {
-    std::string out = name;
-    std::replace(out.begin(), out.end(), '_', ' ');
+    std::vector<std::string> words;
+    for (std::size_t begin = 0; begin <= name.size();) {
+        const std::size_t end = std::min(name.find('_', begin), name.size());
+        if (end > begin)
+            words.push_back(name.substr(begin, end - begin));
+        begin = end + 1;
+    }
+    std::vector<std::string> qualifiers;
+    if (words.size() > 1 && (words.back() == "x" || words.back() == "y" || words.back() == "z")) {
+        qualifiers.push_back("$" + words.back() + "$ component");
+        words.pop_back();
+    }
+    if (words.size() > 1 && (words.back() == "M" || words.back() == "m" || words.back() == "J")) {
+        qualifiers.insert(qualifiers.begin(), "$" + words.back() + "$");
+        words.pop_back();
+    }
+    std::string out;
+    for (const std::string& w : words) {
+        std::string typeset = latex_text(w);
+        const bool number_follows = w.size() > 2 && w.compare(0, 2, "eq") == 0 &&
+                                    std::all_of(w.begin() + 2, w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+        if (number_follows)
+            typeset = "Eq.~" + w.substr(2);
+        else if (w.size() == 1 && std::isalpha(static_cast<unsigned char>(w[0])) && w != "a")
+            typeset = "$" + w + "$";
+        else if (w == "galilean")
+            typeset = "Galilean";
+        out += (out.empty() ? "" : " ") + typeset;
+    }
+    if (!out.empty() && std::islower(static_cast<unsigned char>(out[0])))
+        out[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(out[0])));
+    if (!qualifiers.empty())
+        out += " (" + qualifiers.front() + (qualifiers.size() > 1 ? ", " + qualifiers.back() : "") + ")";
     return out;
 }
 
@@ -186,9 +222,19 @@ std::string fragment_writer::checks() const
             const std::string& name = c.display_of;
             const engine::quantity* q = d_.symbols.find(name);
             const engine::result* r = d_.find_result(name);
+            // A result shown once for several lines of the paper: its display form is one
+            // check, said once, for all of them.
+            if (r && &shown_as(*r) != r) {
+                const engine::check_result* first = nullptr;
+                for (const engine::check_result& other : d_.checks)
+                    if (other.display_of == shown_as(*r).name)
+                        first = &other;
+                if (first && first->outcome.what == c.outcome.what)
+                    continue;
+            }
             // Only a numbered result has a number to refer to.
             const std::string where = r && !r->paper.empty()
-                                          ? fmt::format(", \\eqref{{{}:result:{}}},", latex_label(d_), name)
+                                          ? fmt::format(", \\ref{{{}:result:{}}},", latex_label(d_), name)
                                           : "";
             out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result.\n",
                                status_text(c.outcome), q ? math(q->symbol) : latex_text(name), where);
@@ -197,15 +243,19 @@ std::string fragment_writer::checks() const
         if (c.continuity) {
             const engine::quantity* q = d_.symbols.find(c.cases_of);
             out += fmt::format("\\item {} --- {}: ${}$ is continuous where its cases meet.", status_text(c.outcome),
-                               latex_text(words(c.name)), q ? math(q->symbol) : latex_text(c.cases_of));
+                               heading(c.name), q ? math(q->symbol) : latex_text(c.cases_of));
             if (!c.because.empty())
                 out += " " + sentence_end(capitalised(latex_prose(c.because)));
             out += cases_text(c) + "\n";
             continue;
         }
         const written_form& w = c.written;
-        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), latex_text(words(c.name)));
-        const std::string inline_math = claim_math(c, order_, &w);
+        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), heading(c.name));
+        // The claim as the file writes it, nothing merged (cos θ (−sin θ) + sin θ cos θ = 0,
+        // not 0 = 0); a limit, and a claim too wide for the line, as GiNaC reads it.
+        const std::string inline_math = w.tree() && !c.limit && !wants_display(claim_math(c, order_, &w))
+                                            ? latex_as_written(*w.tree(), order_)
+                                            : claim_math(c, order_, &w);
         const bool shown = wants_display(inline_math);
         out += shown ? display(claim_lhs(c, &w), latex_relation(c.op), c.stated.rhs(), &w)
                      : "$" + inline_math + "$";
@@ -268,26 +318,37 @@ std::string fragment_writer::paper() const
         if (p.what == engine::paper_comparison::kind::claim) {
             out += fmt::format("``{}''", latex_prose(p.printed_text));
         } else {
-            const written_form& w = p.written;
-            out += "printed " + form(p.printed, &w);
-            after_display = displayed(p.printed, &w);
+            const std::string printed = as_printed(p);
+            after_display = wants_display(printed);
+            out += "printed " + (after_display ? shown_as_printed(p) : "$" + printed + "$");
         }
         const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {
             out += after_display ? "It agrees.\n" : " --- agrees.\n";
             continue;
         }
-        out += fmt::format(after_display ? "It is \\textbf{{{}}}" : " --- \\textbf{{{}}}", verdict);
+        out += fmt::format(after_display ? (verdict == "disagrees" ? "It \\textbf{{{}}}" : "It is \\textbf{{{}}}")
+                                         : " --- \\textbf{{{}}}",
+                           verdict);
         if (p.what != engine::paper_comparison::kind::claim || p.agreement.what == engine::verdict::status::failed) {
             const auto [derived, written] = derived_form(p);
-            out += ": derived " + form(derived, written);
-            after_display = displayed(derived, written);
+            // After a long quote the line has little room left: a derived form of any
+            // width is displayed.
+            const bool wide = p.what == engine::paper_comparison::kind::claim &&
+                              latex_width(derived.info(GiNaC::info_flags::relation) ? relation_math(derived, written)
+                                                                                   : math(derived, written)) > 150;
+            after_display = wide || displayed(derived, written);
+            out += ": derived " + (wide ? shown(derived, written) : form(derived, written));
         } else {
             after_display = false;
         }
         const std::string change = findings(p);
         if (!change.empty())
             out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
+        else if (p.what == engine::paper_comparison::kind::claim && p.test)
+            out += (after_display ? capitalised(unreconciled(p, 60)) : "; " + unreconciled(p, 60)) + ".\n";
+        if (change.empty() && p.what == engine::paper_comparison::kind::claim && p.test)
+            continue;
         out += after_display && change.empty() ? "\n" : ".\n";
     }
     return out + "\\end{itemize}\n";

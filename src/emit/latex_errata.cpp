@@ -39,7 +39,7 @@ std::string dimension_latex(const engine::dimension& d)
 
 } // namespace
 
-std::string finding_latex(const engine::finding& f, const term_order& order)
+std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written)
 {
     std::string out;
     for (const engine::finding::part& p : f.parts) {
@@ -48,8 +48,8 @@ std::string finding_latex(const engine::finding& f, const term_order& order)
         case engine::finding::part::kind::math:
             out += "$" +
                    (GiNaC::is_a<GiNaC::relational>(p.value)
-                        ? latex(p.value.lhs(), order) + " = " + latex(p.value.rhs(), order)
-                        : latex(p.value, order)) +
+                        ? latex(p.value.lhs(), order, written) + " = " + latex(p.value.rhs(), order, written)
+                        : latex(p.value, order, written)) +
                    "$";
             break;
         case engine::finding::part::kind::tends:
@@ -77,8 +77,9 @@ namespace detail {
 std::string fragment_writer::findings(const engine::paper_comparison& p) const
 {
     std::vector<std::string> said;
+    // Parts of the printed form a finding names are turned the way the paper writes them.
     for (const engine::finding& f : p.findings)
-        said.push_back(finding_latex(f, order_));
+        said.push_back(finding_latex(f, order_, p.written.empty() ? nullptr : &p.written));
     std::string out;
     for (const std::string& s : said)
         out += (out.empty() ? "" : "; ") + s;
@@ -98,6 +99,27 @@ std::string fragment_writer::subject(const engine::paper_comparison& p) const
     return latex_text(name) + " (equation)";
 }
 
+// What to say of a disagreement no single edit reconciles: for a claim, the claim as
+// checked (which the table does not show otherwise) does not hold; for a printed form,
+// the derived form beside it is what is right.
+std::string fragment_writer::unreconciled(const engine::paper_comparison& p, double width) const
+{
+    if (p.what != engine::paper_comparison::kind::claim || !p.test)
+        return "no single edit; the derived form is what holds";
+    const engine::check_result& c = *p.test;
+    const std::string checked = claim_math(c, order_, &c.written);
+    // Too wide to set inline where it is said: refer to the claim's section instead.
+    if (!fits(checked, width) || latex_width(checked) > width)
+        return fmt::format("the claim, as checked in Sect.~\\ref{{{}}}, does not hold", latex_label(d_));
+    std::string out = "as checked, $" + checked + "$";
+    std::vector<std::string> at;
+    for (const auto& [symbol, value] : c.at)
+        at.push_back(fmt::format("${} = {}$", math(symbol), math(value)));
+    if (!at.empty())
+        out += " at " + listing(at);
+    return out + ", it does not hold";
+}
+
 // The derived form to set beside a printed one: the result as its file displays it
 // (in the variables the paper prints it in), else as derived.
 std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const engine::paper_comparison& p) const
@@ -114,6 +136,36 @@ std::string fragment_writer::shown(const GiNaC::ex& e, const written_form* w) co
     if (e.info(GiNaC::info_flags::relation))
         return display(math(e.lhs(), w), "=", e.rhs(), w);
     return display("", "", e, w);
+}
+
+// A printed form as the paper prints it: the transcription's own terms, factors and
+// parentheses, nothing merged (written_form::tree); GiNaC's reading of it only when the
+// text could not be followed.
+std::string fragment_writer::as_printed(const engine::paper_comparison& p) const
+{
+    if (const auto& tree = p.written.tree())
+        return latex_as_written(*tree, order_);
+    return p.printed.info(GiNaC::info_flags::relation) ? relation_math(p.printed, &p.written)
+                                                       : math(p.printed, &p.written);
+}
+
+// The same as a display, a long right side broken before a + or -.
+std::string fragment_writer::shown_as_printed(const engine::paper_comparison& p) const
+{
+    const auto& tree = p.written.tree();
+    if (!tree)
+        return shown(p.printed, &p.written);
+    using node = written_form::node;
+    const bool relation = tree->what == node::kind::relation && tree->children.size() == 2;
+    const std::string lhs = relation ? latex_as_written(tree->children[0], order_) : "";
+    const char* op = !relation ? "" : tree->name == "<=" ? "\\leq" : tree->name == ">=" ? "\\geq" : tree->name.c_str();
+    const double room = content_width - latex_width(lhs) - 34;
+    const std::vector<std::string> lines =
+        latex_lines_as_written(relation ? tree->children[1] : *tree, order_, std::max(room, 150.0));
+    std::string out = fmt::format("\n\\begin{{align*}}\n  {} &{} {}", lhs, op, lines.front());
+    for (std::size_t i = 1; i < lines.size(); ++i)
+        out += " \\\\\n  &\\qquad " + lines[i];
+    return out + "\n\\end{align*}\n";
 }
 
 // The paper comparisons as rows of the report's errata table. A disagreement that the
@@ -138,17 +190,28 @@ void fragment_writer::errata_rows(errata_table& table) const
                     group.push_back(j);
                     done[j] = true;
                 }
+        // Claims of one sentence with one verdict (two claims of one quote): one row, the
+        // quote shown once.
+        std::vector<std::size_t> claims = {i};
+        if (p.what == engine::paper_comparison::kind::claim)
+            for (std::size_t j = i + 1; j < all.size(); ++j)
+                if (!done[j] && all[j].what == p.what && all[j].paper == p.paper &&
+                    all[j].printed_text == p.printed_text && all[j].agreement.what == p.agreement.what) {
+                    claims.push_back(j);
+                    done[j] = true;
+                }
         std::vector<std::string> subjects;
         for (std::size_t k : group)
             subjects.push_back(subject(all[k]));
+        if (claims.size() > 1)
+            subjects = {fmt::format("{} claims", claims.size())};
         const std::string verdict = comparison_verdict(p);
 
         std::string printed, printed_math;
         if (p.what == engine::paper_comparison::kind::claim)
             printed = "``" + latex_prose(p.printed_text) + "''";
         else
-            printed_math = p.printed.info(GiNaC::info_flags::relation) ? relation_math(p.printed, &p.written)
-                                                                       : math(p.printed, &p.written);
+            printed_math = as_printed(p);
         const auto [derived, derived_written] = derived_form(p);
         const bool show_derived = !p.agrees() && p.what != engine::paper_comparison::kind::claim;
         const std::string derived_math = !show_derived ? ""
@@ -161,7 +224,20 @@ void fragment_writer::errata_rows(errata_table& table) const
                                                : "proven equal")
                                         : findings(p);
         if (change.empty())
-            change = verdict == "undecided" ? "neither proven nor refuted" : "no single edit; see the derived form";
+            change = verdict == "undecided" ? "neither proven nor refuted" : unreconciled(p, change_pt);
+        if (claims.size() > 1 && !p.agrees()) {
+            std::vector<std::string> said = {change};
+            for (std::size_t k = 1; k < claims.size(); ++k) {
+                std::string more = findings(all[claims[k]]);
+                if (more.empty())
+                    more = unreconciled(all[claims[k]], change_pt);
+                if (std::find(said.begin(), said.end(), more) == said.end())
+                    said.push_back(more);
+            }
+            change.clear();
+            for (const std::string& one : said)
+                change += (change.empty() ? "" : "; ") + one;
+        }
         if (group.size() > 1)
             change += fmt::format("; one misprint, in each of the {} components", group.size());
 
@@ -182,7 +258,7 @@ void fragment_writer::errata_rows(errata_table& table) const
             const std::string see = "display " + mark + " below";
             table.displays += fmt::format("\\item[{}] {}, {}: ", mark, paper_text(p.paper), listing(subjects));
             if (!printed_math.empty()) {
-                table.displays += "printed" + shown(p.printed, &p.written);
+                table.displays += "printed" + shown_as_printed(p);
                 printed_cell = see;
             } else {
                 table.displays += "the paper says " + printed + ".";

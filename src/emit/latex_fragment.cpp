@@ -16,12 +16,41 @@ namespace impact::emit {
 namespace detail {
 
 // "Eq. 8" → "Eq.~8" in running text.
+// A place in the paper as a physicist cites it: "Eq. 3, line 2" is "Eq.~(3), second
+// line", "Sec. III C, after Eq. 14, 5th sentence" "Sec. III C, after Eq.~(14), 5th
+// sentence", "Appendix A, line 5" "Appendix A, fifth line".
 std::string paper_text(const std::string& paper)
 {
-    std::string out = latex_text(paper);
-    const auto space = out.find("Eq. ");
-    if (space != std::string::npos)
-        out.replace(space + 3, 1, "~");
+    static const char* const ordinals[] = {"first",   "second", "third",    "fourth",  "fifth",
+                                           "sixth",   "seventh", "eighth",  "ninth",   "tenth",
+                                           "eleventh", "twelfth", "thirteenth"};
+    std::string out;
+    std::size_t at = 0;
+    while (at < paper.size()) {
+        const bool eq = paper.compare(at, 4, "Eq. ") == 0;
+        const bool line = paper.compare(at, 5, "line ") == 0 && (at == 0 || paper[at - 1] == ' ');
+        if (eq || line) {
+            std::size_t end = at + (eq ? 4 : 5);
+            while (end < paper.size() && std::isalnum(static_cast<unsigned char>(paper[end])))
+                ++end;
+            const std::string number = paper.substr(at + (eq ? 4 : 5), end - at - (eq ? 4 : 5));
+            const bool whole = !number.empty() && std::all_of(number.begin(), number.end(), [](char c) {
+                return std::isdigit(static_cast<unsigned char>(c));
+            });
+            if (eq && !number.empty()) {
+                out += "Eq.~(" + latex_text(number) + ")";
+                at = end;
+                continue;
+            }
+            if (line && whole && std::stoul(number) >= 1 && std::stoul(number) <= std::size(ordinals)) {
+                out += std::string(ordinals[std::stoul(number) - 1]) + " line";
+                at = end;
+                continue;
+            }
+        }
+        out += latex_text(std::string(1, paper[at]));
+        ++at;
+    }
     return out;
 }
 
@@ -58,11 +87,10 @@ std::string listing(const std::vector<std::string>& items)
 
 namespace {
 
-// "Eq. 8" → "8"; the tag of a numbered result.
+// The tag of a numbered result: the paper's place as cited, "Eq.~(8), right, first line".
 std::string equation_tag(const std::string& paper)
 {
-    const std::string prefix = "Eq. ";
-    return paper.rfind(prefix, 0) == 0 ? paper.substr(prefix.size()) : paper;
+    return detail::paper_text(paper);
 }
 
 } // namespace
@@ -118,8 +146,10 @@ std::string fragment_writer::rows(const std::string& lhs, const GiNaC::ex& rhs, 
 {
     // The tag, set at the right of the last line, takes about 5 pt a character and a gap.
     double tag_width = 0;
-    if (const auto at = tag.find("\\tag{"); at != std::string::npos)
-        tag_width = 5.0 * static_cast<double>(tag.find('}', at) - at - 5) + 25;
+    if (const auto at = tag.find("\\tag"); at != std::string::npos) {
+        const auto open = tag.find('{', at);
+        tag_width = 5.0 * static_cast<double>(tag.find('}', open) - open - 1) + 25;
+    }
     const double side = align_at >= 0 ? align_at : latex_width(lhs);
     const bool own_line = side > 0.4 * content_width;
     const double indent = own_line ? 20 : side;
@@ -214,6 +244,11 @@ std::string fragment_writer::steps() const
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
         const engine::step_result& s = d_.steps[i];
         const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
+        // A copy of a quantity under another name (τ again, to compare with another printed
+        // line): the same symbol, the same value, nothing for the reader to follow.
+        if (s.what == spec::step::kind::define && s.values.size() == 1 && s.as_written &&
+            math(*s.as_written) == math(s.values[0].first))
+            continue;
         const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
         out += "\\item ";
         switch (s.what) {
@@ -312,14 +347,28 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
         // The definition as written, then what it comes to when that differs.
         const std::optional<GiNaC::ex>& as_written = s.as_written;
         const written_form& w = s.written;
-        if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value))
+        // What it comes to: the result's display form when it is a result, else the value
+        // as a textbook shows it (factored or collected, which is said).
+        const engine::result* r = d_.find_result(GiNaC::ex_to<GiNaC::symbol>(symbol).get_name());
+        const bool displayed = r && r->cases.empty() && !r->written.empty() &&
+                               !(as_written && math(*as_written, &w) == math(r->display, &r->written));
+        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
+        const written_form* shown_written = displayed ? &r->written : nullptr;
+        std::string how;
+        if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
+            math(*as_written, &w) != math(shown.value, shown_written)) {
             out += rows(math(symbol), *as_written, &w, "") + " \\\\\n" +
-                   rows("", value, nullptr, "", "=", latex_width(math(symbol))) + "\n";
-        else if (as_written)
+                   rows("", shown.value, shown_written, "", "=", latex_width(math(symbol))) + "\n";
+            how = shown.how;
+        } else if (as_written) {
             out += rows(math(symbol), *as_written, &w, "") + "\n";
-        else
-            out += rows(math(symbol), value, nullptr, "") + "\n";
+        } else {
+            out += rows(math(symbol), shown.value, shown_written, "") + "\n";
+            how = shown.how;
+        }
         out += "\\end{align*}\n";
+        if (!how.empty())
+            out += "The value is shown " + how + ".\n";
     }
     return out + step_checks(s);
 }
@@ -363,35 +412,78 @@ std::string fragment_writer::rearrange_step(const engine::step_result& s, const 
     return out;
 }
 
+// The result shown in place of `r`: an earlier result of the same symbol and the same
+// display (τ of Eq. 12's second, third and fourth lines), shown once; or `r` itself.
+const engine::result& fragment_writer::shown_as(const engine::result& r) const
+{
+    for (const engine::result& earlier : d_.results) {
+        if (&earlier == &r)
+            break;
+        if (earlier.cases.empty() && r.cases.empty() && math(earlier.symbol) == math(r.symbol) &&
+            math(earlier.display, &earlier.written) == math(r.display, &r.written))
+            return earlier;
+    }
+    return r;
+}
+
+// The places of the results shown as `first`, cited together: "Eq.~(12), second, third
+// and fourth lines" when they are lines of one equation.
+std::string fragment_writer::places(const engine::result& first) const
+{
+    std::vector<std::string> papers;
+    for (const engine::result& r : d_.results)
+        if (&shown_as(r) == &first && !r.paper.empty())
+            papers.push_back(r.paper);
+    if (papers.size() < 2)
+        return equation_tag(first.paper);
+    static const char* const ordinals[] = {"first", "second", "third", "fourth", "fifth", "sixth",
+                                           "seventh", "eighth", "ninth", "tenth"};
+    const std::string line = ", line ";
+    const std::string base = papers[0].substr(0, papers[0].rfind(line));
+    std::vector<int> numbers;
+    for (const std::string& paper : papers) {
+        const auto at = paper.rfind(line);
+        if (at == std::string::npos || paper.substr(0, at) != base)
+            return equation_tag(first.paper);
+        numbers.push_back(std::atoi(paper.c_str() + at + line.size()));
+    }
+    std::sort(numbers.begin(), numbers.end());
+    numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
+    if (numbers.size() == 1)
+        return equation_tag(first.paper);
+    std::vector<std::string> words;
+    for (int n : numbers) {
+        if (n < 1 || n > 10)
+            return equation_tag(first.paper);
+        words.push_back(ordinals[n - 1]);
+    }
+    return equation_tag(base) + ", " + listing(words) + " lines";
+}
+
 std::string fragment_writer::results() const
 {
     if (d_.results.empty())
         return "";
+    std::vector<const engine::result*> shown;
+    for (const engine::result& r : d_.results)
+        if (&shown_as(r) == &r)
+            shown.push_back(&r);
     std::string out = "\n\\paragraph{Results.}\n\\begin{align}\n";
     double widest = 0;
-    for (const engine::result& r : d_.results)
-        widest = std::max(widest, latex_width(math(r.symbol)));
-    std::map<std::string, int> used_tags;
-    for (const engine::result& r : d_.results)
-        ++used_tags[r.paper];
-    std::map<std::string, int> next_letter;
-    for (std::size_t i = 0; i < d_.results.size(); ++i) {
-        const engine::result& r = d_.results[i];
+    for (const engine::result* r : shown)
+        widest = std::max(widest, latex_width(math(r->symbol)));
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        const engine::result& r = *shown[i];
         std::string tag = "\\notag";
-        if (!r.paper.empty()) {
-            std::string t = equation_tag(r.paper);
-            if (used_tags[r.paper] > 1)
-                t += static_cast<char>('a' + next_letter[r.paper]++);
-            tag = fmt::format("\\tag{{{}}}", latex_text(t));
-        }
+        // The paper's own numbering, as cited: several results of one printed line share it.
         if (!r.paper.empty())
-            tag += fmt::format("\\label{{{}:result:{}}}", latex_label(d_), r.name);
+            tag = fmt::format("\\tag*{{{}}}\\label{{{}:result:{}}}", places(r), latex_label(d_), r.name);
         if (!r.cases.empty())
             out += fmt::format("  {} &= {} {}", math(r.symbol), cases_math(r.cases, true), tag) +
-                   (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
+                   (i + 1 < shown.size() ? " \\\\\n" : "\n");
         else
             out += rows(math(r.symbol), r.display, &r.written, tag, "=", widest) +
-                   (i + 1 < d_.results.size() ? " \\\\\n" : "\n");
+                   (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }
     return out + "\\end{align}\n";
 }

@@ -28,6 +28,29 @@ constexpr unsigned atom_level = 30;
 /// Registers print_tex's print functions with GiNaC (once).
 void register_print_functions();
 
+/// A symbol's LaTeX name (the one its file gives, else one made from its name).
+std::string symbol_latex(const GiNaC::symbol& s);
+
+/// A symbol's LaTeX name raised to a power as a textbook writes it (v'^{2}_{M,\parallel}).
+std::string symbol_power(const std::string& name, const std::string& exponent);
+
+/// Math in parentheses, \left( \right) around something tall.
+std::string parenthesised(const std::string& math);
+bool is_tall(const std::string& math);
+
+/// GiNaC's function names and their LaTeX (acos → \arccos).
+const std::map<std::string, std::string>& function_names();
+
+/// An intermediate value as a textbook shows it: factored, or collected in one quantity
+/// with each coefficient factored, whichever prints shortest, when clearly shorter than
+/// `value` as it is (proven equal to it); `how` says which, in LaTeX prose, and is empty
+/// when the value is left as it is.
+struct textbook_value {
+    GiNaC::ex value;
+    std::string how;
+};
+textbook_value textbook_form(const GiNaC::ex& e, const term_order& order);
+
 /// `e` printed in the context of `c` at precedence `level`.
 std::string render(const GiNaC::ex& e, const print_tex& c, unsigned level);
 
@@ -104,6 +127,8 @@ private:
     std::string rearrange_step(const engine::step_result& s, const spec::step* source,
                                const std::string& because) const;
     std::string results() const;
+    const engine::result& shown_as(const engine::result& r) const;
+    std::string places(const engine::result& first) const;
 
     // latex_claims.cpp: the checks and the paper held to account.
     std::string how(const engine::check_result& c) const;
@@ -121,6 +146,9 @@ private:
     std::string findings(const engine::paper_comparison& p) const;
     std::string subject(const engine::paper_comparison& p) const;
     std::string shown(const GiNaC::ex& e, const written_form* w) const;
+    std::string as_printed(const engine::paper_comparison& p) const;
+    std::string unreconciled(const engine::paper_comparison& p, double width) const;
+    std::string shown_as_printed(const engine::paper_comparison& p) const;
     std::pair<GiNaC::ex, const written_form*> derived_form(const engine::paper_comparison& p) const;
     // The text width of the report (A4, 2 cm margins: 482 pt) less a list's indent: steps
     // and checks are items of a list.

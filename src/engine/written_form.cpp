@@ -211,6 +211,15 @@ const node& unwrapped(const node& n)
     return n.what == node::kind::group ? unwrapped(n.children[0]) : n;
 }
 
+// The relation of `lhs op rhs` as written: =, <=, <, >= or >.
+std::string relation_between(const std::string& text)
+{
+    for (const token& t : tokenize(text))
+        if (t.what == token::kind::relation)
+            return t.text;
+    return "=";
+}
+
 } // namespace
 
 // Walks the tree of a text and records its sums, products and powers as GiNaC sees them.
@@ -219,6 +228,40 @@ public:
     written_reader(const std::string& text, const written_form::parser& parse, written_form& out)
         : text_(text), parse_(parse), out_(out)
     {
+    }
+
+    // The tree of the text as the printers see it: atoms read by the derivation's parser.
+    written_form::node tree(const node& n) const
+    {
+        written_form::node out;
+        out.flags = n.flags;
+        switch (n.what) {
+        case node::kind::sum: out.what = written_form::node::kind::sum; break;
+        case node::kind::product: out.what = written_form::node::kind::product; break;
+        case node::kind::negate: out.what = written_form::node::kind::negate; break;
+        case node::kind::power: out.what = written_form::node::kind::power; break;
+        case node::kind::group: out.what = written_form::node::kind::group; break;
+        case node::kind::call: {
+            out.what = written_form::node::kind::call;
+            const std::string head = text_.substr(n.begin, n.end - n.begin);
+            std::string name = head.substr(0, head.find('('));
+            while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back())))
+                name.pop_back();
+            out.name = name;
+            break;
+        }
+        case node::kind::atom: {
+            out.what = written_form::node::kind::atom;
+            const auto v = value(n);
+            if (!v)
+                throw std::invalid_argument("an atom the derivation does not read");
+            out.value = *v;
+            return out;
+        }
+        }
+        for (const node& child : n.children)
+            out.children.push_back(tree(child));
+        return out;
     }
 
     void record(const node& n)
@@ -355,8 +398,23 @@ written_form written_form::read(const std::string& text, const parser& parse)
     try {
         tree_parser reader(text);
         written_reader recorder(text, parse, form);
-        for (const node& side : reader.sides())
+        const auto sides = reader.sides();
+        for (const auto& side : sides)
             recorder.record(side);
+        try {
+            if (sides.size() == 1) {
+                form.tree_ = recorder.tree(sides[0]);
+            } else {
+                written_form::node relation;
+                relation.what = written_form::node::kind::relation;
+                relation.name = relation_between(text);
+                for (const auto& side : sides)
+                    relation.children.push_back(recorder.tree(side));
+                form.tree_ = std::move(relation);
+            }
+        } catch (const std::exception&) {
+            form.tree_.reset();
+        }
     } catch (const std::exception&) {
         return written_form();
     }

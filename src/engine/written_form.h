@@ -74,6 +74,23 @@ public:
 
     bool empty() const { return sums_.empty() && products_.empty(); }
 
+    /// The text itself as a tree, for a printer that shows a form exactly as transcribed
+    /// (the paper's printed lines: m v + m ε v + m v - m ε v, which GiNaC would merge
+    /// into 2 m v): sums with the sign of each term, products with their divisors in
+    /// written order, powers, calls, parentheses, and the atoms (symbols, numbers) as the
+    /// derivation reads them. A relation `lhs = rhs` is a node of its own.
+    struct node {
+        enum class kind { sum, product, negate, power, call, group, atom, relation };
+        kind what = kind::atom;
+        std::vector<bool> flags;       ///< sum: the term is subtracted; product: the factor divides
+        std::vector<node> children;    ///< relation: its sides
+        GiNaC::ex value;               ///< atom: the symbol or number
+        std::string name;              ///< call: the function (sqrt, acos, ...); relation: =, <=, ...
+    };
+
+    /// The tree of the text; nothing when the text was not followed (or nothing was read).
+    const std::optional<node>& tree() const { return tree_; }
+
 private:
     friend class written_reader;
     struct sum {
@@ -84,6 +101,7 @@ private:
     std::vector<GiNaC::ex> negated_groups_;
     std::vector<product> products_;
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> powers_;
+    std::optional<node> tree_;
 };
 
 } // namespace impact::engine

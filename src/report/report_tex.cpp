@@ -62,9 +62,10 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
                        "paper's: proven equivalent); a claim agrees when it is proven, and is undecided when it "
                        "can be neither proven nor refuted. For each disagreement the smallest change that "
                        "reconciles the two is given, when a single edit does; a misprint repeated in several "
-                       "components of one equation is one row. Printed forms are set in the paper's variables, "
-                       "beside the derived result in the same variables; forms too wide for the table are set "
-                       "under it.\n\n",
+                       "components of one equation is one row, as are the claims of one sentence that share a "
+                       "verdict. Printed forms are set as the paper prints them, term by term and factor by "
+                       "factor, nothing merged or simplified, beside the derived result in the same variables; "
+                       "forms too wide for the table are set under it.\n\n",
                        emit::compared_places(derivations), total, agree, total - agree - undecided,
                        undecided ? fmt::format(", {} undecided", undecided) : std::string());
     out += "{\\footnotesize\\setlength{\\tabcolsep}{3pt}\\renewcommand{\\arraystretch}{1.3}\n"
