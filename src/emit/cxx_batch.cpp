@@ -308,7 +308,8 @@ void print_batch(std::string& out, const kernel_plan& plan)
     const bool for_registers = compile::most_live(outputs_only) > batch_registers;
     const compile::program arithmetic = for_registers ? compile::ordered_for_registers(outputs_only) : outputs_only;
     const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
-    const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "");
+    const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
+                                      with_status ? for_outputs : std::vector<bool>{});
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
     // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
     // GCC if-converts; with `&`, it leaves the loop's conditional stores unvectorised.)
@@ -355,12 +356,33 @@ void print_batch(std::string& out, const kernel_plan& plan)
             out += fmt::format("        const Real {} = {};\n", name, term);
             return name;
         });
-        out += fmt::format("        const bool written = usable && {};\n", finite);
+        // Written only in range and where nothing underflowed, as the scalar kernel decides:
+        // out_of_range first, then underflow.
+        if (code.underflows.empty()) {
+            out += fmt::format("        const bool written = usable && {};\n", finite);
+        } else {
+            out += fmt::format("        const bool finite = {};\n", finite);
+            // A balanced tree of |, as the finiteness test is a tree (it gates the stores too).
+            std::vector<std::string> terms = code.underflows;
+            while (terms.size() > 1) {
+                std::vector<std::string> pairs;
+                for (std::size_t t = 0; t < terms.size(); t += 2)
+                    pairs.push_back(t + 1 < terms.size() ? "(" + terms[t] + " | " + terms[t + 1] + ")" : terms[t]);
+                terms = std::move(pairs);
+            }
+            out += fmt::format("        const bool underflows = {};\n", terms.front());
+            out += "        const bool written = usable && finite && !underflows;\n";
+        }
         for (const auto& [target, result] : writes)
             out += fmt::format("        {0}_[i] = written ? {0}_out : {0}_[i];\n", target);
-        out += fmt::format("        if constexpr (with_status)\n"
-                           "            status_[i] = resolved && !written ? status::{} : outcome;\n",
-                           out_of_range);
+        if (code.underflows.empty())
+            out += fmt::format("        if constexpr (with_status)\n"
+                               "            status_[i] = resolved && !written ? status::{} : outcome;\n",
+                               out_of_range);
+        else
+            out += fmt::format("        if constexpr (with_status)\n"
+                               "            status_[i] = resolved && !written ? (usable && finite ? status::{} : status::{}) : outcome;\n",
+                               underflow, out_of_range);
     } else {
         for (const auto& [target, result] : writes)
             out += fmt::format("        {}_[i] = {};\n", target, result);

@@ -42,8 +42,10 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
         for (const engine::kernel_guard& g : k->guards)
             if (std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
                 statuses.push_back(g.status);
-    if (statuses.size() > 1)
+    if (statuses.size() > 1) {
         statuses.push_back(out_of_range);
+        statuses.push_back(underflow);
+    }
     out += fmt::format("\n/// Why a kernel resolved no collision; `ok` when it did.\n"
                        "/// As wide as a double, so that a vectorised batch loop over doubles keeps one\n"
                        "/// width in every lane: with a narrower status, compilers pack two vectors of\n"

@@ -23,9 +23,56 @@ std::string literal(const GiNaC::numeric& n)
     return out.str();
 }
 
+// Whether value v of p is tested for underflow, and which of its operands the test reads
+// (a constant is not 0, and is left out).
+bool tested(const program& p, const std::vector<bool>& watched, std::size_t v)
+{
+    return v < watched.size() && watched[v] && (p.code[v].op == opcode::input || compile::can_underflow(p.code[v]));
+}
+
+std::vector<int> multiplied(const program& p, const instruction& in)
+{
+    std::vector<int> of;
+    if (in.op == opcode::mul || in.op == opcode::fma)
+        of = {in.a, in.b};
+    else if (in.op == opcode::div)
+        of = {in.a};
+    of.erase(std::remove_if(of.begin(), of.end(), [&](int o) { return p.code[o].op == opcode::constant; }), of.end());
+    if (of.size() == 2 && of[0] == of[1])  // a square
+        of.pop_back();
+    return of;
+}
+
+// The test that value v (written text[v]) fell below the normal range, as cxx_code says;
+// `branch_free`: with & and | of comparisons, and std::isless, which a vectorised loop needs:
+// GCC computes the test only where the pair is usable, and with && and ||, or `<` (which
+// may trap on NaN, where isless is quiet), leaves it behind branches.
+std::string underflow_test(const program& p, std::size_t v, const std::vector<std::string>& text, bool branch_free)
+{
+    const char* const both = branch_free ? " & " : " && ";
+    const char* const either = branch_free ? " | " : " || ";
+    const auto compared = [&](const std::string& value, const char* op) {
+        return fmt::format(branch_free ? "({} {} Real(0))" : "{} {} Real(0)", value, op);
+    };
+    const instruction& in = p.code[v];
+    const std::string below = fmt::format(branch_free ? "std::isless(std::fabs({}), std::numeric_limits<Real>::min())"
+                                                      : "std::fabs({}) < std::numeric_limits<Real>::min()",
+                                          text[v]);
+    std::vector<std::string> nonzero;
+    for (int o : multiplied(p, in))
+        nonzero.push_back(compared(text[o], "!="));
+    if (in.op == opcode::fma && !nonzero.empty())  // a sum may cancel to 0 exactly: 0 only where 0 is added
+        nonzero = {fmt::format("({}{}({}{}{}))", compared(text[v], "!="), either, compared(text[in.c], "=="), both,
+                               fmt::join(nonzero, both))};
+    else if (nonzero.empty())  // an input, a function's value, a product of constants
+        nonzero.push_back(compared(text[v], "!="));
+    return fmt::format("({}{}{})", below, both, fmt::join(nonzero, both));
+}
+
 } // namespace
 
-cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if)
+cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if,
+                     const std::vector<bool>& watched)
 {
     // A value used more than once gets a name; one used once is written in place, with
     // the parentheses that keep the program's tree (C++ evaluates a - b + c as (a - b) + c,
@@ -40,6 +87,15 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     const std::vector<int> divided_by = divisors(p);
     for (int d : divided_by)
         uses[d] += 2;
+    // Values tested for underflow are named, and so are the operands their tests read.
+    for (std::size_t v = 0; v < p.code.size(); ++v)
+        if (tested(p, watched, v)) {
+            uses[v] += 2;
+            for (int o : multiplied(p, p.code[v]))
+                uses[o] += 2;
+            if (p.code[v].op == opcode::fma)
+                uses[p.code[v].c] += 2;
+        }
     const auto first = std::find_if(p.code.begin(), p.code.end(), [&](const instruction& in) { return divides(p, in); });
     const int first_division = first == p.code.end() ? -1 : static_cast<int>(first - p.code.begin());
     const int last_divisor = divided_by.empty() ? -1 : *std::max_element(divided_by.begin(), divided_by.end());
@@ -99,6 +155,9 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     }
     for (int o : p.outputs)
         code.outputs.push_back(text[o]);
+    for (std::size_t v = 0; v < p.code.size(); ++v)
+        if (tested(p, watched, v))
+            code.underflows.push_back(underflow_test(p, v, text, !kept_if.empty()));
     for (int d : divided_by)
         code.divisors.push_back(text[d]);
     code.divides_early = first_division >= 0 && first_division < last_divisor;

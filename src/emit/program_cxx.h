@@ -21,6 +21,12 @@ namespace impact::emit {
 /// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
 /// their range before dividing: all are computed by the first `divisors_known` statements,
 /// and no division is made before them unless `divides_early`.
+/// With `watched` (a flag per value of p), every watched value that can fall below the
+/// normal range (an input, or see compile::can_underflow) is named, with its operands, and
+/// `underflows` holds for each the test that it did: a non-zero value below
+/// std::numeric_limits<Real>::min(), or a product (of a fused multiply-add, one added to
+/// 0) or quotient that is 0 though what it multiplies or divides is not. With `kept_if`
+/// (a batch loop), the tests are written without branches (& and | of comparisons).
 struct cxx_code {
     std::vector<std::string> statements;
     std::vector<int> statement_values;   ///< the value each statement computes
@@ -28,7 +34,9 @@ struct cxx_code {
     std::vector<std::string> divisors;
     std::size_t divisors_known = 0;
     bool divides_early = false;
+    std::vector<std::string> underflows;
 };
-cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {});
+cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {},
+                     const std::vector<bool>& watched = {});
 
 } // namespace impact::emit
