@@ -338,7 +338,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
         }
     }
     if (with_status) {
-        std::vector<std::string> results;
+        std::vector<std::string> results = code.arguments;  // functions' arguments tested as results are
         for (const auto& [target, result] : writes) {
             out += fmt::format("        const Real {}_out = {};\n", target, result);
             results.push_back(target + "_out");

@@ -79,8 +79,10 @@ std::string guard_meaning(const engine::derivation& d, const engine::kernel& k, 
 }
 
 // The documentation of a kernel's guards: what each status means, and what is returned.
-// `divides`: whether the kernel divides by a value it computes (then tested for range).
-void print_guards_documentation(std::string& out, const engine::derivation& d, const engine::kernel& k, bool divides)
+// `divides`: whether the kernel divides by a value it computes (then tested for range);
+// `calls`: whether it calls a function (its arguments tested).
+void print_guards_documentation(std::string& out, const engine::derivation& d, const engine::kernel& k, bool divides,
+                                bool calls)
 {
     if (k.guards.empty())
         return;
@@ -94,8 +96,9 @@ void print_guards_documentation(std::string& out, const engine::derivation& d, c
                            others ? " (the other outputs 0)" : "");
     for (const engine::kernel_guard& g : k.guards)
         out += fmt::format("///   {}: {}\n", g.status, guard_meaning(d, k, g));
-    out += fmt::format("///   {}: the values leave the type's range ({}a result not finite).\n", out_of_range,
-                       divides ? "a divisor below\n///     detail::smallest_divisor or infinite, " : "");
+    out += fmt::format("///   {}: the values leave the type's range ({}{}a result not finite).\n", out_of_range,
+                       divides ? "a divisor below\n///     detail::smallest_divisor or infinite, " : "",
+                       calls ? "an argument of a function\n///     or " : "");
     out += fmt::format("///   {}: an input is subnormal, or a value of the arithmetic below (a product,\n"
                        "///     quotient, fused multiply-add or function; not a correction of compensated\n"
                        "///     arithmetic) is below std::numeric_limits<Real>::min() but not 0, or is 0\n"
@@ -159,7 +162,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
                            cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
     }
-    print_guards_documentation(out, d, k, !code.divisors.empty());
+    print_guards_documentation(out, d, k, !code.divisors.empty(), !code.arguments.empty());
 
     std::vector<std::string> parameters;
     for (const engine::kernel_parameter& p : k.parameters)
@@ -214,6 +217,8 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     std::vector<std::string> results(code.outputs.begin() + static_cast<long>(plan.guard_values), code.outputs.end());
     if (with_status) {
         std::vector<std::string> failures;
+        for (const std::string& argument : code.arguments)
+            failures.push_back(fmt::format("!std::isfinite({})", argument));
         for (std::size_t r = 0; r < results.size(); ++r) {
             out += fmt::format("    const Real result{} = {};\n", r, results[r]);
             results[r] = fmt::format("result{}", r);

@@ -23,8 +23,8 @@ std::string literal(const GiNaC::numeric& n)
     return out.str();
 }
 
-// Whether value v of p is tested for underflow, and which of its operands the test reads
-// (a constant is not 0, and is left out).
+// Whether value v of p is tested for underflow; and the operands whose product or quotient
+// it is (a constant is not 0, and is left out), which are not 0 where v fell to 0.
 bool tested(const program& p, const std::vector<bool>& watched, std::size_t v)
 {
     return v < watched.size() && watched[v] && (p.code[v].op == opcode::input || compile::can_underflow(p.code[v]));
@@ -35,7 +35,7 @@ std::vector<int> multiplied(const program& p, const instruction& in)
     std::vector<int> of;
     if (in.op == opcode::mul || in.op == opcode::fma)
         of = {in.a, in.b};
-    else if (in.op == opcode::div)
+    else if (in.op == opcode::div || (in.op == opcode::call && in.function == "atan2"))  // atan2(y, x) = 0 where y = 0
         of = {in.a};
     of.erase(std::remove_if(of.begin(), of.end(), [&](int o) { return p.code[o].op == opcode::constant; }), of.end());
     if (of.size() == 2 && of[0] == of[1])  // a square
@@ -95,6 +95,9 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                 uses[o] += 2;
             if (p.code[v].op == opcode::fma)
                 uses[p.code[v].c] += 2;
+            if (p.code[v].op == opcode::call)
+                for (int o : operands(p.code[v]))
+                    uses[o] += 2;
         }
     const auto first = std::find_if(p.code.begin(), p.code.end(), [&](const instruction& in) { return divides(p, in); });
     const int first_division = first == p.code.end() ? -1 : static_cast<int>(first - p.code.begin());
@@ -155,9 +158,15 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     }
     for (int o : p.outputs)
         code.outputs.push_back(text[o]);
-    for (std::size_t v = 0; v < p.code.size(); ++v)
-        if (tested(p, watched, v))
-            code.underflows.push_back(underflow_test(p, v, text, !kept_if.empty()));
+    for (std::size_t v = 0; v < p.code.size(); ++v) {
+        if (!tested(p, watched, v))
+            continue;
+        code.underflows.push_back(underflow_test(p, v, text, !kept_if.empty()));
+        if (p.code[v].op == opcode::call)
+            for (int o : operands(p.code[v]))
+                if (p.code[o].op != opcode::constant)
+                    code.arguments.push_back(text[o]);
+    }
     for (int d : divided_by)
         code.divisors.push_back(text[d]);
     code.divides_early = first_division >= 0 && first_division < last_divisor;

@@ -35,6 +35,9 @@ struct cxx_code {
     std::size_t divisors_known = 0;
     bool divides_early = false;
     std::vector<std::string> underflows;
+    /// With `watched`, the arguments of its functions (named): a function can hide an
+    /// overflow (atan2 of an infinity is finite), so a kernel tests them as it tests its results.
+    std::vector<std::string> arguments;
 };
 cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {},
                      const std::vector<bool>& watched = {});
