@@ -37,6 +37,11 @@ namespace impact {
 ///   separating: unless (C_Mx-C_mx)*(v_Mx-v_mx)+(C_My-C_my)*(v_My-v_my)+(C_Mz-C_mz)*(v_Mz-v_mz) < 0
 ///   out_of_range: the values leave the type's range (a divisor below
 ///     detail::smallest_divisor or infinite, a result not finite).
+///   underflow: an input is subnormal, or a value of the arithmetic below (a product,
+///     quotient, fused multiply-add or function; not a correction of compensated
+///     arithmetic) is below std::numeric_limits<Real>::min() but not 0, or is 0
+///     where what it multiplies or divides is not: it lost digits, and the result
+///     could be imprecise. Zero inputs are ordinary.
 template <class Real>
 inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
 {
@@ -124,15 +129,56 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
     const Real t44 = -t43;
     const Real t45 = t43 + std::fma(t44, std::fma(M - (t33 - t34) + (m - t34), t41, std::fma(t33, t40 - (t41 - t38), std::fma(t33, t41, -t42))), std::fma(t44, t42, t32) + std::fma(Real(1) - (t14 - t15) + (eps - t15), t31, std::fma(t14, t30 - (t31 - t28), std::fma(t14, t31, -t32)))) / t42;
     const Real t46 = t45 * m;
-    const Real t47 = t45 * M;
-    const Real result0 = -(t46 * t0) + v_Mx;
-    const Real result1 = -(t46 * t2) + v_My;
-    const Real result2 = -(t46 * t5) + v_Mz;
-    const Real result3 = t47 * t0 + v_mx;
-    const Real result4 = t47 * t2 + v_my;
-    const Real result5 = t47 * t5 + v_mz;
+    const Real t47 = t46 * t0;
+    const Real t48 = t46 * t2;
+    const Real t49 = t46 * t5;
+    const Real t50 = t45 * M;
+    const Real t51 = t50 * t0;
+    const Real t52 = t50 * t2;
+    const Real t53 = t50 * t5;
+    const Real result0 = -t47 + v_Mx;
+    const Real result1 = -t48 + v_My;
+    const Real result2 = -t49 + v_Mz;
+    const Real result3 = t51 + v_mx;
+    const Real result4 = t52 + v_my;
+    const Real result5 = t53 + v_mz;
     if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
         out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(M) < std::numeric_limits<Real>::min() && M != Real(0)) ||
+        (std::fabs(m) < std::numeric_limits<Real>::min() && m != Real(0)) ||
+        (std::fabs(C_Mx) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(C_My) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(C_Mz) < std::numeric_limits<Real>::min() && C_Mz != Real(0)) ||
+        (std::fabs(C_mx) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
+        (std::fabs(C_my) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
+        (std::fabs(C_mz) < std::numeric_limits<Real>::min() && C_mz != Real(0)) ||
+        (std::fabs(v_Mx) < std::numeric_limits<Real>::min() && v_Mx != Real(0)) ||
+        (std::fabs(v_My) < std::numeric_limits<Real>::min() && v_My != Real(0)) ||
+        (std::fabs(v_Mz) < std::numeric_limits<Real>::min() && v_Mz != Real(0)) ||
+        (std::fabs(v_mx) < std::numeric_limits<Real>::min() && v_mx != Real(0)) ||
+        (std::fabs(v_my) < std::numeric_limits<Real>::min() && v_my != Real(0)) ||
+        (std::fabs(v_mz) < std::numeric_limits<Real>::min() && v_mz != Real(0)) ||
+        (std::fabs(eps) < std::numeric_limits<Real>::min() && eps != Real(0)) ||
+        (std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && t0 != Real(0) && t7 != Real(0)) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t2 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t5 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && t14 != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t42) < std::numeric_limits<Real>::min() && t33 != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t43) < std::numeric_limits<Real>::min() && t32 != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && t45 != Real(0) && m != Real(0)) ||
+        (std::fabs(t47) < std::numeric_limits<Real>::min() && t46 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t48) < std::numeric_limits<Real>::min() && t46 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t49) < std::numeric_limits<Real>::min() && t46 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t50) < std::numeric_limits<Real>::min() && t45 != Real(0) && M != Real(0)) ||
+        (std::fabs(t51) < std::numeric_limits<Real>::min() && t50 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t52) < std::numeric_limits<Real>::min() && t50 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && t50 != Real(0) && t5 != Real(0))) {
+        out.status = status::underflow;
         return out;
     }
     out.v_M = {result0, result1, result2};
@@ -249,19 +295,27 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real t44 = -t42;
         const Real t45 = t42 + std::fma(t44, std::fma(M - (t40 - t43) + (m - t43), t19, std::fma(t40, t18 - (t19 - t15), std::fma(t40, t19, -t41))), std::fma(t44, t41, t38) + std::fma(Real(1) - (t37 - t39) + (eps - t39), t36, std::fma(t37, t35 - (t36 - t32), std::fma(t37, t36, -t38)))) / (usable ? t41 : Real(1));
         const Real t46 = t45 * m;
-        const Real t47 = t45 * M;
-        const Real v_Mx_out = -(t46 * t0) + v_Mx;
-        const Real v_My_out = -(t46 * t4) + v_My;
-        const Real v_Mz_out = -(t46 * t12) + v_Mz;
-        const Real v_mx_out = t47 * t0 + v_mx;
-        const Real v_my_out = t47 * t4 + v_my;
-        const Real v_mz_out = t47 * t12 + v_mz;
+        const Real t47 = t46 * t0;
+        const Real t48 = t46 * t4;
+        const Real t49 = t46 * t12;
+        const Real t50 = t45 * M;
+        const Real t51 = t50 * t0;
+        const Real t52 = t50 * t4;
+        const Real t53 = t50 * t12;
+        const Real v_Mx_out = -t47 + v_Mx;
+        const Real v_My_out = -t48 + v_My;
+        const Real v_Mz_out = -t49 + v_Mz;
+        const Real v_mx_out = t51 + v_mx;
+        const Real v_my_out = t52 + v_my;
+        const Real v_mz_out = t53 + v_mz;
         const Real finite0 = std::fma(v_Mx_out, Real(0), v_My_out * Real(0));
         const Real finite1 = std::fma(v_Mz_out, Real(0), v_mx_out * Real(0));
         const Real finite2 = std::fma(v_my_out, Real(0), v_mz_out * Real(0));
         const Real finite3 = finite0 + finite1;
         const Real finite4 = finite3 + finite2;
-        const bool written = usable && (finite4 == Real(0));
+        const bool finite = (finite4 == Real(0));
+        const bool underflows = ((((((std::isless(std::fabs(M), std::numeric_limits<Real>::min()) & (M != Real(0))) | (std::isless(std::fabs(m), std::numeric_limits<Real>::min()) & (m != Real(0)))) | ((std::isless(std::fabs(C_Mx), std::numeric_limits<Real>::min()) & (C_Mx != Real(0))) | (std::isless(std::fabs(C_My), std::numeric_limits<Real>::min()) & (C_My != Real(0))))) | (((std::isless(std::fabs(C_Mz), std::numeric_limits<Real>::min()) & (C_Mz != Real(0))) | (std::isless(std::fabs(C_mx), std::numeric_limits<Real>::min()) & (C_mx != Real(0)))) | ((std::isless(std::fabs(C_my), std::numeric_limits<Real>::min()) & (C_my != Real(0))) | (std::isless(std::fabs(C_mz), std::numeric_limits<Real>::min()) & (C_mz != Real(0)))))) | ((((std::isless(std::fabs(v_Mx), std::numeric_limits<Real>::min()) & (v_Mx != Real(0))) | (std::isless(std::fabs(v_My), std::numeric_limits<Real>::min()) & (v_My != Real(0)))) | ((std::isless(std::fabs(v_Mz), std::numeric_limits<Real>::min()) & (v_Mz != Real(0))) | (std::isless(std::fabs(v_mx), std::numeric_limits<Real>::min()) & (v_mx != Real(0))))) | (((std::isless(std::fabs(v_my), std::numeric_limits<Real>::min()) & (v_my != Real(0))) | (std::isless(std::fabs(v_mz), std::numeric_limits<Real>::min()) & (v_mz != Real(0)))) | ((std::isless(std::fabs(eps), std::numeric_limits<Real>::min()) & (eps != Real(0))) | (std::isless(std::fabs(t2), std::numeric_limits<Real>::min()) & (t0 != Real(0))))))) | (((((std::isless(std::fabs(t6), std::numeric_limits<Real>::min()) & (t4 != Real(0))) | (std::isless(std::fabs(t14), std::numeric_limits<Real>::min()) & (t12 != Real(0)))) | ((std::isless(std::fabs(t21), std::numeric_limits<Real>::min()) & (t0 != Real(0)) & (t20 != Real(0))) | (std::isless(std::fabs(t24), std::numeric_limits<Real>::min()) & (t4 != Real(0)) & (t23 != Real(0))))) | (((std::isless(std::fabs(t31), std::numeric_limits<Real>::min()) & (t12 != Real(0)) & (t30 != Real(0))) | (std::isless(std::fabs(t38), std::numeric_limits<Real>::min()) & (t37 != Real(0)) & (t36 != Real(0)))) | ((std::isless(std::fabs(t41), std::numeric_limits<Real>::min()) & (t40 != Real(0)) & (t19 != Real(0))) | (std::isless(std::fabs(t42), std::numeric_limits<Real>::min()) & (t38 != Real(0)))))) | ((((std::isless(std::fabs(t46), std::numeric_limits<Real>::min()) & (t45 != Real(0)) & (m != Real(0))) | (std::isless(std::fabs(t47), std::numeric_limits<Real>::min()) & (t46 != Real(0)) & (t0 != Real(0)))) | ((std::isless(std::fabs(t48), std::numeric_limits<Real>::min()) & (t46 != Real(0)) & (t4 != Real(0))) | (std::isless(std::fabs(t49), std::numeric_limits<Real>::min()) & (t46 != Real(0)) & (t12 != Real(0))))) | (((std::isless(std::fabs(t50), std::numeric_limits<Real>::min()) & (t45 != Real(0)) & (M != Real(0))) | (std::isless(std::fabs(t51), std::numeric_limits<Real>::min()) & (t50 != Real(0)) & (t0 != Real(0)))) | ((std::isless(std::fabs(t52), std::numeric_limits<Real>::min()) & (t50 != Real(0)) & (t4 != Real(0))) | (std::isless(std::fabs(t53), std::numeric_limits<Real>::min()) & (t50 != Real(0)) & (t12 != Real(0))))))));
+        const bool written = usable && finite && !underflows;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_Mz_[i] = written ? v_Mz_out : v_Mz_[i];
@@ -269,7 +323,7 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         v_my_[i] = written ? v_my_out : v_my_[i];
         v_mz_[i] = written ? v_mz_out : v_mz_[i];
         if constexpr (with_status)
-            status_[i] = resolved && !written ? status::out_of_range : outcome;
+            status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
     }
 }
 

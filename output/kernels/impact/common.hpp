@@ -49,7 +49,7 @@ namespace impact {
 /// As wide as a double, so that a vectorised batch loop over doubles keeps one
 /// width in every lane: with a narrower status, compilers pack two vectors of
 /// doubles per vector of statuses, and the loop runs short of registers.
-enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range };
+enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range, underflow };
 
 namespace detail {
 
