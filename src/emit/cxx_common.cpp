@@ -59,8 +59,12 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
                            "/// smaller divisor, or a result that is not finite, gives status::{}.\n"
                            "template <class Real>\nconstexpr Real smallest_divisor =\n"
                            "    std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();\n\n"
+                           "/// The smaller of a and b (one instruction in vectors: a batch loop takes the least\n"
+                           "/// magnitude of the values it tests for status::{}).\n"
+                           "template <class Real>\nIMPACT_ALWAYS_INLINE Real least(Real a, Real b) noexcept\n{{\n"
+                           "    return a < b ? a : b;\n}}\n\n"
                            "}} // namespace detail\n",
-                           out_of_range);
+                           out_of_range, underflow);
 
     if (std::any_of(plans.begin(), plans.end(), [](const kernel_plan* plan) { return skews(*plan->kernel); }))
         out += "\nnamespace detail {\n\n"

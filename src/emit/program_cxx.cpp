@@ -43,30 +43,18 @@ std::vector<int> multiplied(const program& p, const instruction& in)
     return of;
 }
 
-// The test that value v (written text[v]) fell below the normal range, as cxx_code says;
-// `branch_free`: with & and | of comparisons, and std::isless, which a vectorised loop needs:
-// GCC computes the test only where the pair is usable, and with && and ||, or `<` (which
-// may trap on NaN, where isless is quiet), leaves it behind branches.
-std::string underflow_test(const program& p, std::size_t v, const std::vector<std::string>& text, bool branch_free)
+// The test that value v (written text[v]) fell below the normal range, as cxx_code says.
+std::string underflow_test(const program& p, std::size_t v, const std::vector<std::string>& text)
 {
-    const char* const both = branch_free ? " & " : " && ";
-    const char* const either = branch_free ? " | " : " || ";
-    const auto compared = [&](const std::string& value, const char* op) {
-        return fmt::format(branch_free ? "({} {} Real(0))" : "{} {} Real(0)", value, op);
-    };
     const instruction& in = p.code[v];
-    const std::string below = fmt::format(branch_free ? "std::isless(std::fabs({}), std::numeric_limits<Real>::min())"
-                                                      : "std::fabs({}) < std::numeric_limits<Real>::min()",
-                                          text[v]);
     std::vector<std::string> nonzero;
     for (int o : multiplied(p, in))
-        nonzero.push_back(compared(text[o], "!="));
+        nonzero.push_back(text[o] + " != Real(0)");
     if (in.op == opcode::fma && !nonzero.empty())  // a sum may cancel to 0 exactly: 0 only where 0 is added
-        nonzero = {fmt::format("({}{}({}{}{}))", compared(text[v], "!="), either, compared(text[in.c], "=="), both,
-                               fmt::join(nonzero, both))};
+        nonzero = {fmt::format("({} != Real(0) || ({} == Real(0) && {}))", text[v], text[in.c], fmt::join(nonzero, " && "))};
     else if (nonzero.empty())  // an input, a function's value, a product of constants
-        nonzero.push_back(compared(text[v], "!="));
-    return fmt::format("({}{}{})", below, both, fmt::join(nonzero, both));
+        nonzero.push_back(text[v] + " != Real(0)");
+    return fmt::format("(std::fabs({}) < std::numeric_limits<Real>::min() && {})", text[v], fmt::join(nonzero, " && "));
 }
 
 } // namespace
@@ -161,7 +149,8 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     for (std::size_t v = 0; v < p.code.size(); ++v) {
         if (!tested(p, watched, v))
             continue;
-        code.underflows.push_back(underflow_test(p, v, text, !kept_if.empty()));
+        code.underflows.push_back(underflow_test(p, v, text));
+        code.watched_values.push_back(text[v]);
         if (p.code[v].op == opcode::call)
             for (int o : operands(p.code[v]))
                 if (p.code[o].op != opcode::constant)

@@ -245,14 +245,35 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real v_mx_out = t35 + v_mx;
         const Real v_my_out = t36 + v_my;
         const bool finite = ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
-        const bool underflows = ((((((std::isless(std::fabs(M), std::numeric_limits<Real>::min()) & (M != Real(0))) | (std::isless(std::fabs(m), std::numeric_limits<Real>::min()) & (m != Real(0)))) | ((std::isless(std::fabs(C_Mx), std::numeric_limits<Real>::min()) & (C_Mx != Real(0))) | (std::isless(std::fabs(C_My), std::numeric_limits<Real>::min()) & (C_My != Real(0))))) | (((std::isless(std::fabs(C_mx), std::numeric_limits<Real>::min()) & (C_mx != Real(0))) | (std::isless(std::fabs(C_my), std::numeric_limits<Real>::min()) & (C_my != Real(0)))) | ((std::isless(std::fabs(v_Mx), std::numeric_limits<Real>::min()) & (v_Mx != Real(0))) | (std::isless(std::fabs(v_My), std::numeric_limits<Real>::min()) & (v_My != Real(0)))))) | ((((std::isless(std::fabs(v_mx), std::numeric_limits<Real>::min()) & (v_mx != Real(0))) | (std::isless(std::fabs(v_my), std::numeric_limits<Real>::min()) & (v_my != Real(0)))) | ((std::isless(std::fabs(eps), std::numeric_limits<Real>::min()) & (eps != Real(0))) | (std::isless(std::fabs(t1), std::numeric_limits<Real>::min()) & (t0 != Real(0))))) | (((std::isless(std::fabs(t3), std::numeric_limits<Real>::min()) & (t2 != Real(0))) | (std::isless(std::fabs(t6), std::numeric_limits<Real>::min()) & (t0 != Real(0)) & (t5 != Real(0)))) | ((std::isless(std::fabs(t8), std::numeric_limits<Real>::min()) & (t2 != Real(0)) & (t7 != Real(0))) | (std::isless(std::fabs(t21), std::numeric_limits<Real>::min()) & (t10 != Real(0)) & (t20 != Real(0))))))) | ((((std::isless(std::fabs(t27), std::numeric_limits<Real>::min()) & (t22 != Real(0)) & (t26 != Real(0))) | (std::isless(std::fabs(t28), std::numeric_limits<Real>::min()) & (t21 != Real(0)))) | ((std::isless(std::fabs(t31), std::numeric_limits<Real>::min()) & (t30 != Real(0)) & (m != Real(0))) | (std::isless(std::fabs(t32), std::numeric_limits<Real>::min()) & (t31 != Real(0)) & (t0 != Real(0))))) | (((std::isless(std::fabs(t33), std::numeric_limits<Real>::min()) & (t31 != Real(0)) & (t2 != Real(0))) | (std::isless(std::fabs(t34), std::numeric_limits<Real>::min()) & (t30 != Real(0)) & (M != Real(0)))) | ((std::isless(std::fabs(t35), std::numeric_limits<Real>::min()) & (t34 != Real(0)) & (t0 != Real(0))) | (std::isless(std::fabs(t36), std::numeric_limits<Real>::min()) & (t34 != Real(0)) & (t2 != Real(0)))))));
-        const bool written = usable && finite && !underflows;
+        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(M), std::fabs(m)), detail::least(std::fabs(C_Mx), std::fabs(C_My))), detail::least(detail::least(std::fabs(C_mx), std::fabs(C_my)), detail::least(std::fabs(v_Mx), std::fabs(v_My)))), detail::least(detail::least(detail::least(std::fabs(v_mx), std::fabs(v_my)), detail::least(std::fabs(eps), std::fabs(t1))), detail::least(detail::least(std::fabs(t3), std::fabs(t6)), detail::least(std::fabs(t8), std::fabs(t21))))), detail::least(detail::least(detail::least(std::fabs(t27), std::fabs(t28)), detail::least(std::fabs(t31), std::fabs(t32))), detail::least(detail::least(std::fabs(t33), std::fabs(t34)), detail::least(std::fabs(t35), std::fabs(t36))))), std::numeric_limits<Real>::min());
+        const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_mx_[i] = written ? v_mx_out : v_mx_[i];
         v_my_[i] = written ? v_my_out : v_my_[i];
-        if constexpr (with_status)
-            status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+    }
+}
+
+// The pairs collide_batch_2d left to the scalar collide (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide<Real>(M_[i], m_[i], std::array<Real, 2>{C_Mx_[i], C_My_[i]}, std::array<Real, 2>{C_mx_[i], C_my_[i]}, std::array<Real, 2>{v_Mx_[i], v_My_[i]}, std::array<Real, 2>{v_mx_[i], v_my_[i]}, eps_[i]);
+        v_Mx_[i] = out.v_M[0];
+        v_My_[i] = out.v_M[1];
+        v_mx_[i] = out.v_m[0];
+        v_my_[i] = out.v_m[1];
+        status_[i] = out.status;
     }
 }
 
@@ -262,6 +283,7 @@ template <class Real, bool with_status>
 inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
+    impact::status own[block];  // the statuses, where the caller wants none
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -279,9 +301,11 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : status_);
+        collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : status_);
+    collide_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail

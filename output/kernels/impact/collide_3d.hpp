@@ -314,16 +314,39 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real finite3 = finite0 + finite1;
         const Real finite4 = finite3 + finite2;
         const bool finite = (finite4 == Real(0));
-        const bool underflows = ((((((std::isless(std::fabs(M), std::numeric_limits<Real>::min()) & (M != Real(0))) | (std::isless(std::fabs(m), std::numeric_limits<Real>::min()) & (m != Real(0)))) | ((std::isless(std::fabs(C_Mx), std::numeric_limits<Real>::min()) & (C_Mx != Real(0))) | (std::isless(std::fabs(C_My), std::numeric_limits<Real>::min()) & (C_My != Real(0))))) | (((std::isless(std::fabs(C_Mz), std::numeric_limits<Real>::min()) & (C_Mz != Real(0))) | (std::isless(std::fabs(C_mx), std::numeric_limits<Real>::min()) & (C_mx != Real(0)))) | ((std::isless(std::fabs(C_my), std::numeric_limits<Real>::min()) & (C_my != Real(0))) | (std::isless(std::fabs(C_mz), std::numeric_limits<Real>::min()) & (C_mz != Real(0)))))) | ((((std::isless(std::fabs(v_Mx), std::numeric_limits<Real>::min()) & (v_Mx != Real(0))) | (std::isless(std::fabs(v_My), std::numeric_limits<Real>::min()) & (v_My != Real(0)))) | ((std::isless(std::fabs(v_Mz), std::numeric_limits<Real>::min()) & (v_Mz != Real(0))) | (std::isless(std::fabs(v_mx), std::numeric_limits<Real>::min()) & (v_mx != Real(0))))) | (((std::isless(std::fabs(v_my), std::numeric_limits<Real>::min()) & (v_my != Real(0))) | (std::isless(std::fabs(v_mz), std::numeric_limits<Real>::min()) & (v_mz != Real(0)))) | ((std::isless(std::fabs(eps), std::numeric_limits<Real>::min()) & (eps != Real(0))) | (std::isless(std::fabs(t2), std::numeric_limits<Real>::min()) & (t0 != Real(0))))))) | (((((std::isless(std::fabs(t6), std::numeric_limits<Real>::min()) & (t4 != Real(0))) | (std::isless(std::fabs(t14), std::numeric_limits<Real>::min()) & (t12 != Real(0)))) | ((std::isless(std::fabs(t21), std::numeric_limits<Real>::min()) & (t0 != Real(0)) & (t20 != Real(0))) | (std::isless(std::fabs(t24), std::numeric_limits<Real>::min()) & (t4 != Real(0)) & (t23 != Real(0))))) | (((std::isless(std::fabs(t31), std::numeric_limits<Real>::min()) & (t12 != Real(0)) & (t30 != Real(0))) | (std::isless(std::fabs(t38), std::numeric_limits<Real>::min()) & (t37 != Real(0)) & (t36 != Real(0)))) | ((std::isless(std::fabs(t41), std::numeric_limits<Real>::min()) & (t40 != Real(0)) & (t19 != Real(0))) | (std::isless(std::fabs(t42), std::numeric_limits<Real>::min()) & (t38 != Real(0)))))) | ((((std::isless(std::fabs(t46), std::numeric_limits<Real>::min()) & (t45 != Real(0)) & (m != Real(0))) | (std::isless(std::fabs(t47), std::numeric_limits<Real>::min()) & (t46 != Real(0)) & (t0 != Real(0)))) | ((std::isless(std::fabs(t48), std::numeric_limits<Real>::min()) & (t46 != Real(0)) & (t4 != Real(0))) | (std::isless(std::fabs(t49), std::numeric_limits<Real>::min()) & (t46 != Real(0)) & (t12 != Real(0))))) | (((std::isless(std::fabs(t50), std::numeric_limits<Real>::min()) & (t45 != Real(0)) & (M != Real(0))) | (std::isless(std::fabs(t51), std::numeric_limits<Real>::min()) & (t50 != Real(0)) & (t0 != Real(0)))) | ((std::isless(std::fabs(t52), std::numeric_limits<Real>::min()) & (t50 != Real(0)) & (t4 != Real(0))) | (std::isless(std::fabs(t53), std::numeric_limits<Real>::min()) & (t50 != Real(0)) & (t12 != Real(0))))))));
-        const bool written = usable && finite && !underflows;
+        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(M), std::fabs(m)), detail::least(std::fabs(C_Mx), std::fabs(C_My))), detail::least(detail::least(std::fabs(C_Mz), std::fabs(C_mx)), detail::least(std::fabs(C_my), std::fabs(C_mz)))), detail::least(detail::least(detail::least(std::fabs(v_Mx), std::fabs(v_My)), detail::least(std::fabs(v_Mz), std::fabs(v_mx))), detail::least(detail::least(std::fabs(v_my), std::fabs(v_mz)), detail::least(std::fabs(eps), std::fabs(t2))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t6), std::fabs(t14)), detail::least(std::fabs(t21), std::fabs(t24))), detail::least(detail::least(std::fabs(t31), std::fabs(t38)), detail::least(std::fabs(t41), std::fabs(t42)))), detail::least(detail::least(detail::least(std::fabs(t46), std::fabs(t47)), detail::least(std::fabs(t48), std::fabs(t49))), detail::least(detail::least(std::fabs(t50), std::fabs(t51)), detail::least(std::fabs(t52), std::fabs(t53)))))), std::numeric_limits<Real>::min());
+        const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_Mz_[i] = written ? v_Mz_out : v_Mz_[i];
         v_mx_[i] = written ? v_mx_out : v_mx_[i];
         v_my_[i] = written ? v_my_out : v_my_[i];
         v_mz_[i] = written ? v_mz_out : v_mz_[i];
-        if constexpr (with_status)
-            status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+    }
+}
+
+// The pairs collide_batch_3d left to the scalar collide (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_batch_3d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide<Real>(M_[i], m_[i], std::array<Real, 3>{C_Mx_[i], C_My_[i], C_Mz_[i]}, std::array<Real, 3>{C_mx_[i], C_my_[i], C_mz_[i]}, std::array<Real, 3>{v_Mx_[i], v_My_[i], v_Mz_[i]}, std::array<Real, 3>{v_mx_[i], v_my_[i], v_mz_[i]}, eps_[i]);
+        v_Mx_[i] = out.v_M[0];
+        v_My_[i] = out.v_M[1];
+        v_Mz_[i] = out.v_M[2];
+        v_mx_[i] = out.v_m[0];
+        v_my_[i] = out.v_m[1];
+        v_mz_[i] = out.v_m[2];
+        status_[i] = out.status;
     }
 }
 
@@ -333,6 +356,7 @@ template <class Real, bool with_status>
 inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
+    impact::status own[block];  // the statuses, where the caller wants none
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -354,9 +378,11 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+        collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 // collide_batch_3d over blocks of 8 pairs for arrays that start at one offset within their pages:
@@ -367,6 +393,7 @@ template <class Real, bool with_status>
 inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 9;
+    impact::status own[block];  // the statuses, where the caller wants none
     const Real* const from[read_only] = {M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, eps_};
     alignas(64) Real stage[read_only][ring][block];
     auto lead = [](std::size_t k) { return 2 * (k + 1); };
@@ -412,9 +439,11 @@ inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRI
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : status_);
+        collide_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
+        collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail

@@ -60,6 +60,14 @@ template <class Real>
 constexpr Real smallest_divisor =
     std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();
 
+/// The smaller of a and b (one instruction in vectors: a batch loop takes the least
+/// magnitude of the values it tests for status::underflow).
+template <class Real>
+IMPACT_ALWAYS_INLINE Real least(Real a, Real b) noexcept
+{
+    return a < b ? a : b;
+}
+
 } // namespace detail
 
 namespace detail {
