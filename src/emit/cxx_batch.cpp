@@ -410,8 +410,12 @@ void print_batch(std::string& out, const kernel_plan& plan)
             // The scalar kernel's underflow test costs about as much as the loop's arithmetic:
             // the loop takes only the smallest magnitude of the values it tests (a balanced
             // tree of minima), and leaves a pair where that is below the normal range, or 0,
-            // to the scalar kernel (status underflow here, then `settle`).
+            // to the scalar kernel (status underflow here, then `settle`). An input may be 0:
+            // |2|x| - min| is below min exactly where x is subnormal.
             std::vector<std::string> terms;
+            for (const std::string& input : code.watched_inputs)
+                terms.push_back(fmt::format("std::fabs(std::fma(Real(2), std::fabs({}), -std::numeric_limits<Real>::min()))",
+                                            input));
             for (const std::string& value : code.watched_values)
                 terms.push_back(fmt::format("std::fabs({})", value));
             while (terms.size() > 1) {
@@ -439,7 +443,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
             out += fmt::format("        {}_[i] = {};\n", target, result);
     }
     out += "    }\n}\n";
-    const bool settles = with_status && !code.watched_values.empty();
+    const bool settles = with_status && !code.underflows.empty();
     if (settles)
         print_settle(out, k, loop, inputs);
     print_blocks(out, loop, inputs, with_status, settles);

@@ -150,7 +150,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
         if (!tested(p, watched, v))
             continue;
         code.underflows.push_back(underflow_test(p, v, text));
-        code.watched_values.push_back(text[v]);
+        (p.code[v].op == opcode::input ? code.watched_inputs : code.watched_values).push_back(text[v]);
         if (p.code[v].op == opcode::call)
             for (int o : operands(p.code[v]))
                 if (p.code[o].op != opcode::constant)

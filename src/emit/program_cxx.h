@@ -27,8 +27,9 @@ namespace impact::emit {
 /// std::numeric_limits<Real>::min(), or a product (of a fused multiply-add, one added to
 /// 0) or quotient that is 0 though what it multiplies or divides is not (for atan2(y, x),
 /// 0 though y is not). A batch loop, whose exact test would cost as much as its arithmetic,
-/// takes the least magnitude of `watched_values` instead, and leaves a pair where that is
-/// below the normal range, or 0, to the scalar kernel.
+/// takes the least magnitude of `watched_values` instead (and tests `watched_inputs` for
+/// subnormal values), and leaves a pair where that is below the normal range, or 0, to the
+/// scalar kernel.
 struct cxx_code {
     std::vector<std::string> statements;
     std::vector<int> statement_values;   ///< the value each statement computes
@@ -37,7 +38,8 @@ struct cxx_code {
     std::size_t divisors_known = 0;
     bool divides_early = false;
     std::vector<std::string> underflows;
-    std::vector<std::string> watched_values;  ///< the values `underflows` tests (named)
+    std::vector<std::string> watched_values;  ///< the values `underflows` tests (named), but inputs
+    std::vector<std::string> watched_inputs;  ///< the inputs `underflows` tests
     /// With `watched`, the arguments of its functions (named): a function can hide an
     /// overflow (atan2 of an infinity is finite), so a kernel tests them as it tests its results.
     std::vector<std::string> arguments;
