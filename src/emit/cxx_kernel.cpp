@@ -99,11 +99,11 @@ void print_guards_documentation(std::string& out, const engine::derivation& d, c
     out += fmt::format("///   {}: the values leave the type's range ({}{}a result not finite).\n", out_of_range,
                        divides ? "a divisor below\n///     detail::smallest_divisor or infinite, " : "",
                        calls ? "an argument of a function\n///     or " : "");
-    out += fmt::format("///   {}: an input is subnormal, or a value of the arithmetic below (a product,\n"
-                       "///     quotient, fused multiply-add or function; not a correction of compensated\n"
-                       "///     arithmetic) is below std::numeric_limits<Real>::min() but not 0, or is 0\n"
-                       "///     where what it multiplies or divides is not: it lost digits, and the result\n"
-                       "///     could be imprecise. Zero inputs are ordinary.\n",
+    out += fmt::format("///   {}: a value of the arithmetic below (a product, quotient, fused\n"
+                       "///     multiply-add or function; not a correction of compensated arithmetic) is\n"
+                       "///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it\n"
+                       "///     multiplies or divides is not: it lost digits, and the result could be\n"
+                       "///     imprecise. Zero inputs are ordinary.\n",
                        underflow);
 }
 

@@ -27,7 +27,7 @@ std::string literal(const GiNaC::numeric& n)
 // it is (a constant is not 0, and is left out), which are not 0 where v fell to 0.
 bool tested(const program& p, const std::vector<bool>& watched, std::size_t v)
 {
-    return v < watched.size() && watched[v] && (p.code[v].op == opcode::input || compile::can_underflow(p.code[v]));
+    return v < watched.size() && watched[v] && compile::can_underflow(p.code[v]);
 }
 
 std::vector<int> multiplied(const program& p, const instruction& in)
@@ -43,6 +43,16 @@ std::vector<int> multiplied(const program& p, const instruction& in)
     return of;
 }
 
+// Whether value o may be 0 where nothing underflowed, as an input, a sum or a difference
+// may (a product or quotient of values not 0 is not 0 unless it underflowed).
+bool may_be_zero(const program& p, int o)
+{
+    while (p.code[o].op == opcode::neg)
+        o = p.code[o].a;
+    const opcode op = p.code[o].op;
+    return op == opcode::input || op == opcode::add || op == opcode::sub || op == opcode::select;
+}
+
 // The test that value v (written text[v]) fell below the normal range, as cxx_code says.
 std::string underflow_test(const program& p, std::size_t v, const std::vector<std::string>& text)
 {
@@ -52,7 +62,7 @@ std::string underflow_test(const program& p, std::size_t v, const std::vector<st
         nonzero.push_back(text[o] + " != Real(0)");
     if (in.op == opcode::fma && !nonzero.empty())  // a sum may cancel to 0 exactly: 0 only where 0 is added
         nonzero = {fmt::format("({} != Real(0) || ({} == Real(0) && {}))", text[v], text[in.c], fmt::join(nonzero, " && "))};
-    else if (nonzero.empty())  // an input, a function's value, a product of constants
+    else if (nonzero.empty())  // a function's value, a product of constants
         nonzero.push_back(text[v] + " != Real(0)");
     return fmt::format("(std::fabs({}) < std::numeric_limits<Real>::min() && {})", text[v], fmt::join(nonzero, " && "));
 }
@@ -150,7 +160,13 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
         if (!tested(p, watched, v))
             continue;
         code.underflows.push_back(underflow_test(p, v, text));
-        (p.code[v].op == opcode::input ? code.watched_inputs : code.watched_values).push_back(text[v]);
+        code.watched_values.push_back(text[v]);
+        std::vector<std::string> zero_if;  // operands that may be 0, making the value 0 as it should be
+        if (p.code[v].op != opcode::fma)
+            for (int o : multiplied(p, p.code[v]))
+                if (may_be_zero(p, o))
+                    zero_if.push_back(text[o]);
+        code.watched_zero_if.push_back(std::move(zero_if));
         if (p.code[v].op == opcode::call)
             for (int o : operands(p.code[v]))
                 if (p.code[o].op != opcode::constant)

@@ -31,11 +31,11 @@ namespace impact {
 ///   separating: unless (C_Mx-C_mx)*(v_Mx-v_mx)+(C_My-C_my)*(v_My-v_my) < 0
 ///   out_of_range: the values leave the type's range (a divisor below
 ///     detail::smallest_divisor or infinite, a result not finite).
-///   underflow: an input is subnormal, or a value of the arithmetic below (a product,
-///     quotient, fused multiply-add or function; not a correction of compensated
-///     arithmetic) is below std::numeric_limits<Real>::min() but not 0, or is 0
-///     where what it multiplies or divides is not: it lost digits, and the result
-///     could be imprecise. Zero inputs are ordinary.
+///   underflow: a value of the arithmetic below (a product, quotient, fused
+///     multiply-add or function; not a correction of compensated arithmetic) is
+///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
+///     multiplies or divides is not: it lost digits, and the result could be
+///     imprecise. Zero inputs are ordinary.
 template <class Real>
 inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps) noexcept
 {
@@ -117,18 +117,7 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(M) < std::numeric_limits<Real>::min() && M != Real(0)) ||
-        (std::fabs(m) < std::numeric_limits<Real>::min() && m != Real(0)) ||
-        (std::fabs(C_Mx) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(C_My) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(C_mx) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(C_my) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(v_Mx) < std::numeric_limits<Real>::min() && v_Mx != Real(0)) ||
-        (std::fabs(v_My) < std::numeric_limits<Real>::min() && v_My != Real(0)) ||
-        (std::fabs(v_mx) < std::numeric_limits<Real>::min() && v_mx != Real(0)) ||
-        (std::fabs(v_my) < std::numeric_limits<Real>::min() && v_my != Real(0)) ||
-        (std::fabs(eps) < std::numeric_limits<Real>::min() && eps != Real(0)) ||
-        (std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
         (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
         (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
         (std::fabs(t8) < std::numeric_limits<Real>::min() && t2 != Real(0) && t7 != Real(0)) ||
@@ -245,7 +234,7 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real v_mx_out = t35 + v_mx;
         const Real v_my_out = t36 + v_my;
         const bool finite = ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
-        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(std::fma(Real(2), std::fabs(M), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(m), -std::numeric_limits<Real>::min()))), detail::least(std::fabs(std::fma(Real(2), std::fabs(C_Mx), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(C_My), -std::numeric_limits<Real>::min())))), detail::least(detail::least(std::fabs(std::fma(Real(2), std::fabs(C_mx), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(C_my), -std::numeric_limits<Real>::min()))), detail::least(std::fabs(std::fma(Real(2), std::fabs(v_Mx), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(v_My), -std::numeric_limits<Real>::min()))))), detail::least(detail::least(detail::least(std::fabs(std::fma(Real(2), std::fabs(v_mx), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(v_my), -std::numeric_limits<Real>::min()))), detail::least(std::fabs(std::fma(Real(2), std::fabs(eps), -std::numeric_limits<Real>::min())), std::fabs(t1))), detail::least(detail::least(std::fabs(t3), std::fabs(t6)), detail::least(std::fabs(t8), std::fabs(t21))))), detail::least(detail::least(detail::least(std::fabs(t27), std::fabs(t28)), detail::least(std::fabs(t31), std::fabs(t32))), detail::least(detail::least(std::fabs(t33), std::fabs(t34)), detail::least(std::fabs(t35), std::fabs(t36))))), std::numeric_limits<Real>::min());
+        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), detail::most(detail::most(std::fabs(t8), detail::zero_as_min(t2)), detail::zero_as_min(t7)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t10)), detail::zero_as_min(t20)), detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t22)), detail::zero_as_min(t26))), detail::least(std::fabs(t28), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t30)), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t32), detail::zero_as_min(t0)), detail::most(std::fabs(t33), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(t30)), detail::zero_as_min(M)), detail::most(std::fabs(t35), detail::zero_as_min(t0)))), detail::most(std::fabs(t36), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
         const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];

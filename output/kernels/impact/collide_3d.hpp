@@ -37,11 +37,11 @@ namespace impact {
 ///   separating: unless (C_Mx-C_mx)*(v_Mx-v_mx)+(C_My-C_my)*(v_My-v_my)+(C_Mz-C_mz)*(v_Mz-v_mz) < 0
 ///   out_of_range: the values leave the type's range (a divisor below
 ///     detail::smallest_divisor or infinite, a result not finite).
-///   underflow: an input is subnormal, or a value of the arithmetic below (a product,
-///     quotient, fused multiply-add or function; not a correction of compensated
-///     arithmetic) is below std::numeric_limits<Real>::min() but not 0, or is 0
-///     where what it multiplies or divides is not: it lost digits, and the result
-///     could be imprecise. Zero inputs are ordinary.
+///   underflow: a value of the arithmetic below (a product, quotient, fused
+///     multiply-add or function; not a correction of compensated arithmetic) is
+///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
+///     multiplies or divides is not: it lost digits, and the result could be
+///     imprecise. Zero inputs are ordinary.
 template <class Real>
 inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
 {
@@ -146,22 +146,7 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(M) < std::numeric_limits<Real>::min() && M != Real(0)) ||
-        (std::fabs(m) < std::numeric_limits<Real>::min() && m != Real(0)) ||
-        (std::fabs(C_Mx) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(C_My) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(C_Mz) < std::numeric_limits<Real>::min() && C_Mz != Real(0)) ||
-        (std::fabs(C_mx) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(C_my) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(C_mz) < std::numeric_limits<Real>::min() && C_mz != Real(0)) ||
-        (std::fabs(v_Mx) < std::numeric_limits<Real>::min() && v_Mx != Real(0)) ||
-        (std::fabs(v_My) < std::numeric_limits<Real>::min() && v_My != Real(0)) ||
-        (std::fabs(v_Mz) < std::numeric_limits<Real>::min() && v_Mz != Real(0)) ||
-        (std::fabs(v_mx) < std::numeric_limits<Real>::min() && v_mx != Real(0)) ||
-        (std::fabs(v_my) < std::numeric_limits<Real>::min() && v_my != Real(0)) ||
-        (std::fabs(v_mz) < std::numeric_limits<Real>::min() && v_mz != Real(0)) ||
-        (std::fabs(eps) < std::numeric_limits<Real>::min() && eps != Real(0)) ||
-        (std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
         (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
         (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
         (std::fabs(t8) < std::numeric_limits<Real>::min() && t0 != Real(0) && t7 != Real(0)) ||
@@ -314,7 +299,7 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real finite3 = finite0 + finite1;
         const Real finite4 = finite3 + finite2;
         const bool finite = (finite4 == Real(0));
-        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(std::fma(Real(2), std::fabs(M), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(m), -std::numeric_limits<Real>::min()))), detail::least(std::fabs(std::fma(Real(2), std::fabs(C_Mx), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(C_My), -std::numeric_limits<Real>::min())))), detail::least(detail::least(std::fabs(std::fma(Real(2), std::fabs(C_Mz), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(C_mx), -std::numeric_limits<Real>::min()))), detail::least(std::fabs(std::fma(Real(2), std::fabs(C_my), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(C_mz), -std::numeric_limits<Real>::min()))))), detail::least(detail::least(detail::least(std::fabs(std::fma(Real(2), std::fabs(v_Mx), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(v_My), -std::numeric_limits<Real>::min()))), detail::least(std::fabs(std::fma(Real(2), std::fabs(v_Mz), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(v_mx), -std::numeric_limits<Real>::min())))), detail::least(detail::least(std::fabs(std::fma(Real(2), std::fabs(v_my), -std::numeric_limits<Real>::min())), std::fabs(std::fma(Real(2), std::fabs(v_mz), -std::numeric_limits<Real>::min()))), detail::least(std::fabs(std::fma(Real(2), std::fabs(eps), -std::numeric_limits<Real>::min())), std::fabs(t2))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t6), std::fabs(t14)), detail::least(std::fabs(t21), std::fabs(t24))), detail::least(detail::least(std::fabs(t31), std::fabs(t38)), detail::least(std::fabs(t41), std::fabs(t42)))), detail::least(detail::least(detail::least(std::fabs(t46), std::fabs(t47)), detail::least(std::fabs(t48), std::fabs(t49))), detail::least(detail::least(std::fabs(t50), std::fabs(t51)), detail::least(std::fabs(t52), std::fabs(t53)))))), std::numeric_limits<Real>::min());
+        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t14), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t0)), detail::zero_as_min(t20)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t24), detail::zero_as_min(t4)), detail::zero_as_min(t23)), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t12)), detail::zero_as_min(t30))), detail::least(detail::most(detail::most(std::fabs(t38), detail::zero_as_min(t37)), detail::zero_as_min(t36)), detail::most(detail::most(std::fabs(t41), detail::zero_as_min(t40)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(std::fabs(t42), detail::most(detail::most(std::fabs(t46), detail::zero_as_min(t45)), detail::zero_as_min(m))), detail::least(detail::most(std::fabs(t47), detail::zero_as_min(t0)), detail::most(std::fabs(t48), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t49), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t50), detail::zero_as_min(t45)), detail::zero_as_min(M))), detail::least(detail::most(std::fabs(t51), detail::zero_as_min(t0)), detail::most(std::fabs(t52), detail::zero_as_min(t4)))))), detail::most(std::fabs(t53), detail::zero_as_min(t12))), std::numeric_limits<Real>::min());
         const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
