@@ -301,11 +301,15 @@ W lowest_product(std::initializer_list<std::initializer_list<W>> monomials)
 // The statuses admitted once underflow is considered: where ok is admitted, a lowest product
 // that could fall below the normal range admits underflow too. (A subnormal input is not
 // refused for itself: a sum of it is exact, and a product of it is tested.)
+// `certain`: the least of products the forms compute as the last of a chain of products of
+// factors not 0; below min/4, the kernel's value of it is below min, and underflow certain.
 template <class Real>
-statuses with_underflow(statuses admitted, W lowest)
+statuses with_underflow(statuses admitted, W lowest, W certain = std::numeric_limits<W>::infinity())
 {
     if (!admits(admitted, status::ok))
         return admitted;
+    if (certain < std::numeric_limits<Real>::min_exponent - 3)
+        return (admitted & ~only(status::ok)) | only(status::underflow);
     if (!(lowest >= std::numeric_limits<Real>::min_exponent + 2))
         admitted |= only(status::underflow);
     return admitted;
@@ -601,7 +605,11 @@ collision_nd<Real, N> classify(const pair_nd<Real, N>& p)
         lowest = std::min(lowest, lowest_product({{lg(r[i]), lg(r[i])}, {lg(dv[i]), lg(r[i])}, {k_lg, M_lg, lg(r[i])},
                                                   {k_lg, m_lg, lg(r[i])}}));
     }
-    c.admitted = with_underflow<Real>(c.admitted, lowest);
+    W certain = std::numeric_limits<W>::infinity();  // k m r_i and k M r_i, r_i not 0
+    for (std::size_t i = 0; i < N; ++i)
+        if (r[i] != 0)
+            certain = std::min(certain, k_lg + std::min(M_lg, m_lg) + lg(r[i]));
+    c.admitted = with_underflow<Real>(c.admitted, lowest, certain);
     return c;
 }
 
@@ -809,6 +817,7 @@ struct line_closed_form {
     W divisor_lg, v_M_lg, v_m_lg, J_lg, dE_lg, dv;
     bool underflows;  // a value of the closed form below the normal range
     W line_lowest, loss_lowest;  // the lowest products of the documented forms (see lowest_product)
+    W line_certain, loss_certain;  // the products the forms must compute (see with_underflow)
 };
 
 template <class Real>
@@ -851,10 +860,22 @@ line_closed_form closed_form(const pair_1d<Real>& p)
     const W vM_lg = lg(p.v_M), vm_lg = lg(p.v_m), eps_lg = lg(eps), div_lg = lg(Ms + ms) + e;
     const W plus_lg = lg(1 + eps), minus_lg = lg(1 - eps), cancelled = -2 * std::numeric_limits<Real>::digits - 8;
     const W largest_term = std::max({M_lg + vM_lg, m_lg + vm_lg, mass_lg + eps_lg + dv_lg});
+    // A sum whose exact value is above 8 ulps of its largest term is computed within a factor
+    // of 2 of it; below, it may be as small as the floor.
+    const auto sum_lg = [&](W exact_lg) {
+        return exact_lg >= largest_term + 3 - std::numeric_limits<Real>::digits ? exact_lg - 1 : largest_term + cancelled;
+    };
+    const W partial_lg = sum_lg(lg(Ms * vMs + ms * vms) + e + b), partial_eps_lg = sum_lg(lg(Ms * vMs + eps * Ms * dvs) + e + b);
+    const W numerator_M_lg = sum_lg(lg(vM) + b + div_lg), numerator_m_lg = sum_lg(lg(vm) + b + div_lg);
     f.line_lowest = lowest_product({{M_lg, vM_lg}, {m_lg, vm_lg}, {eps_lg, dv_lg}, {mass_lg, eps_lg, dv_lg},
-                                    {M_lg, m_lg, eps_lg, dv_lg}, {M_lg, m_lg, plus_lg, dv_lg, -div_lg},
-                                    {largest_term + cancelled}, {largest_term + cancelled, -div_lg}});
+                                    {M_lg, m_lg, eps_lg, dv_lg}, {M_lg, m_lg, plus_lg, dv_lg, -div_lg}, {partial_lg},
+                                    {partial_eps_lg}, {numerator_M_lg}, {numerator_m_lg}, {numerator_M_lg, -div_lg},
+                                    {numerator_m_lg, -div_lg}});
     f.loss_lowest = lowest_product({{M_lg, m_lg, plus_lg, minus_lg, dv_lg, dv_lg, -div_lg - 1}});
+    // J's numerator (1 + eps) M m (v_M - v_m), and dE's, are chains of products of factors not 0.
+    const W never = std::numeric_limits<W>::infinity();
+    f.line_certain = dv != 0 ? M_lg + m_lg + plus_lg + dv_lg : never;
+    f.loss_certain = eps < 1 && dv != 0 ? M_lg + m_lg + plus_lg + minus_lg + 2 * dv_lg : never;
     f.underflows = false;
     for (const auto* values : {&f.line_intermediates, &f.loss_intermediates})
         for (W v : *values)
@@ -874,7 +895,7 @@ statuses classify_line(const pair_1d<Real>& p, const line_closed_form& f)
         return only(status::separating);
     return with_underflow<Real>(
         range_statuses<Real>(f.divisor_lg, f.line_intermediates, {f.v_M_lg, f.v_m_lg, f.J_lg}, slack<Real>()),
-        f.line_lowest);
+        f.line_lowest, f.line_certain);
 }
 
 template <class Real>
@@ -917,7 +938,8 @@ void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p)
     statuses admitted = domain_statuses(p);
     if (!admitted)
         admitted = with_underflow<Real>(
-            range_statuses<Real>(f.divisor_lg + 1, f.loss_intermediates, {f.dE_lg}, slack<Real>()), f.loss_lowest);
+            range_statuses<Real>(f.divisor_lg + 1, f.loss_intermediates, {f.dE_lg}, slack<Real>()), f.loss_lowest,
+            f.loss_certain);
     std::feclearexcept(FE_DIVBYZERO);
     const Real dE = impact::energy_loss(p.M, p.m, p.v_M, p.v_m, p.eps);
     fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
