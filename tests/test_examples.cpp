@@ -322,9 +322,9 @@ BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
         all += text;
     for (const char* function : {"spring_motion(", "push(", "push_velocity(", "push_velocity_batch("})
         BOOST_TEST(all.find(function) != std::string::npos, function);
-    // Every status a guard names, and out_of_range, which a kernel with a status adds.
+    // Every status a guard names, and out_of_range and underflow, which a kernel with a status adds.
     BOOST_TEST(all.find("enum class status : std::int64_t { ok, invalid_input, non_finite, no_force, "
-                        "pulled_back, out_of_range };") != std::string::npos);
+                        "pulled_back, out_of_range, underflow };") != std::string::npos);
 }
 
 // Every key reader.cpp accepts, by table, typed from reading it (src/spec/reader.cpp:

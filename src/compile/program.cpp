@@ -102,11 +102,13 @@ private:
     pair dd_mul(pair a, pair b)
     {
         const int p = op(opcode::mul, a.hi, b.hi);
+        correcting_ = true;
         int e = op(opcode::fma, a.hi, b.hi, op(opcode::neg, p));
         if (b.lo >= 0)
             e = op(opcode::fma, a.hi, b.lo, e);
         if (a.lo >= 0)
             e = op(opcode::fma, a.lo, b.hi, e);
+        correcting_ = false;
         return {p, e};
     }
 
@@ -116,18 +118,24 @@ private:
     pair dd_div(pair a, pair b)
     {
         const int q1 = op(opcode::div, a.hi, b.hi);
+        correcting_ = true;
         const int minus_q1 = op(opcode::neg, q1);
         int r = add_lo(op(opcode::fma, minus_q1, b.hi, a.hi), a.lo);
         if (b.lo >= 0)
             r = op(opcode::fma, minus_q1, b.lo, r);
-        return {q1, op(opcode::div, r, b.hi)};
+        const int lo = op(opcode::div, r, b.hi);
+        correcting_ = false;
+        return {q1, lo};
     }
 
     pair dd_sqrt(pair a)
     {
         const int h = op(opcode::sqrt, a.hi);
+        correcting_ = true;
         const int r = add_lo(op(opcode::fma, op(opcode::neg, h), h, a.hi), a.lo);
-        return {h, op(opcode::div, r, op(opcode::add, h, h))};
+        const int lo = op(opcode::div, r, op(opcode::add, h, h));
+        correcting_ = false;
+        return {h, lo};
     }
 
     pair dd_constant(const GiNaC::numeric& n)
@@ -137,7 +145,10 @@ private:
         // p/q = hi + lo with lo = (p - hi q) / q, the remainder exact through fma.
         const int p = constant(n.numer()), q = constant(n.denom());
         const int hi = op(opcode::div, p, q);
-        return {hi, op(opcode::div, op(opcode::fma, op(opcode::neg, hi), q, p), q)};
+        correcting_ = true;
+        const int lo = op(opcode::div, op(opcode::fma, op(opcode::neg, hi), q, p), q);
+        correcting_ = false;
+        return {hi, lo};
     }
 
     pair compensated(const GiNaC::ex& e)
@@ -226,11 +237,15 @@ private:
         in.a = a;
         in.b = b;
         in.c = c;
-        // The same operation on the same operands is the same value.
+        in.correction = correcting_;
+        // The same operation on the same operands is the same value (a correction only if
+        // it is one wherever it is used).
         const auto key = std::make_tuple(static_cast<int>(code), a, b, c);
         const auto found = ops_.find(key);
-        if (found != ops_.end())
+        if (found != ops_.end()) {
+            p_.code[found->second].correction = p_.code[found->second].correction && correcting_;
             return found->second;
+        }
         const int v = emit(in);
         ops_.emplace(key, v);
         return v;
@@ -386,6 +401,7 @@ private:
     std::map<int, std::map<GiNaC::ex, pair, GiNaC::ex_is_less>> known_pairs_;
     std::map<GiNaC::numeric, int, std::less<>> constants_;
     std::map<std::tuple<int, int, int, int>, int> ops_;
+    bool correcting_ = false;  // the operations made now are corrections
 };
 
 } // namespace
@@ -436,6 +452,11 @@ std::vector<int> operands(const instruction& in)
     return of;
 }
 
+bool can_underflow(const instruction& in)
+{
+    return !in.correction && (in.op == opcode::mul || in.op == opcode::div || in.op == opcode::fma || in.op == opcode::call);
+}
+
 // A division by a value that is not a constant: one whose divisor a kernel names and tests.
 bool divides(const program& p, const instruction& in)
 {
@@ -474,118 +495,6 @@ std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t las
             for (int operand : operands(p.code[i]))
                 needed[operand] = true;
     return needed;
-}
-
-std::size_t most_live(const program& p)
-{
-    const std::size_t n = p.code.size();
-    const std::vector<bool> needed = needed_by(p, 0, p.outputs.size());
-    std::vector<std::size_t> first(n, n), last(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!needed[i])
-            continue;
-        if (!is_leaf(p.code[i]))
-            first[i] = std::min(first[i], i);
-        for (int operand : operands(p.code[i]))
-            if (p.code[operand].op != opcode::constant) {
-                first[operand] = std::min(first[operand], i);
-                last[operand] = std::max(last[operand], i);
-            }
-    }
-    for (int o : p.outputs)
-        last[o] = n;
-    std::vector<int> change(n + 1, 0);  // values becoming live, less those dying, at each step
-    for (std::size_t v = 0; v < n; ++v)
-        if (first[v] < last[v]) {
-            ++change[first[v]];
-            --change[last[v]];
-        }
-    std::size_t most = 0;
-    long live = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        live += change[i];
-        most = std::max(most, static_cast<std::size_t>(live));
-    }
-    return most;
-}
-
-program ordered_for_registers(const program& p)
-{
-    const std::size_t n = p.code.size();
-    // What each division or square root waits for: the divisors that do not need it.
-    const std::vector<int> divided_by = divisors(p);
-    std::vector<std::vector<int>> waits(n);
-    for (std::size_t d = 0; d < n; ++d) {
-        if (!divides(p, p.code[d]) && p.code[d].op != opcode::sqrt)
-            continue;
-        std::vector<bool> needs_d(n, false);
-        needs_d[d] = true;
-        for (std::size_t i = d + 1; i < n; ++i)
-            for (int operand : operands(p.code[i]))
-                needs_d[i] = needs_d[i] || needs_d[operand];
-        for (int divisor : divided_by)
-            if (!needs_d[divisor])
-                waits[d].push_back(divisor);
-    }
-
-    constexpr double never = std::numeric_limits<double>::infinity();
-    std::vector<bool> done(n, false);
-    std::vector<double> since(n, never);  // when a value was computed, or an input first read
-    std::vector<int> order;               // the leaves first, as they were
-    for (std::size_t i = 0; i < n; ++i)
-        if (is_leaf(p.code[i])) {
-            done[i] = true;
-            order.push_back(static_cast<int>(i));
-        }
-    for (double step = 0; order.size() < n; ++step) {
-        int best = -1;
-        bool best_reads = true;  // reads an input not yet read
-        double best_since = never;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (done[i])
-                continue;
-            bool ready = true, reads = false;
-            double oldest = never;
-            for (int operand : operands(p.code[i])) {
-                ready = ready && done[operand];
-                if (p.code[operand].op == opcode::input && since[operand] == never)
-                    reads = true;
-                else if (p.code[operand].op != opcode::constant)
-                    oldest = std::min(oldest, since[operand]);
-            }
-            for (int w : waits[i])
-                ready = ready && done[w];
-            if (ready && (best < 0 || (best_reads && !reads) || (!best_reads && !reads && oldest < best_since))) {
-                best = static_cast<int>(i);
-                best_reads = reads;
-                best_since = oldest;
-            }
-        }
-        if (best < 0)
-            return p;  // divisions whose quotients make each other's divisors: no such order
-        for (int operand : operands(p.code[best]))
-            if (p.code[operand].op == opcode::input && since[operand] == never)
-                since[operand] = step - 0.5;  // read just before the value is computed
-        since[best] = step;
-        done[best] = true;
-        order.push_back(best);
-    }
-
-    std::vector<int> renumbered(n);
-    for (std::size_t i = 0; i < n; ++i)
-        renumbered[order[i]] = static_cast<int>(i);
-    program q;
-    q.inputs = p.inputs;
-    for (int i : order) {
-        instruction in = p.code[i];
-        for (int* operand : {&in.a, &in.b, &in.c})
-            if (*operand >= 0)
-                *operand = renumbered[*operand];
-        q.code.push_back(std::move(in));
-    }
-    for (int o : p.outputs)
-        q.outputs.push_back(renumbered[o]);
-    return q;
 }
 
 } // namespace impact::compile

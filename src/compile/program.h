@@ -27,6 +27,11 @@ struct instruction {
     int input = -1;               ///< for `input`: the index among the program's inputs
     GiNaC::numeric value;         ///< for `constant`: an exact rational
     std::string function;         ///< for `call`: acos, atan2, pow, ...
+    /// A correction of compensated arithmetic (the low part of a value: a rounding error,
+    /// a remainder, what carries them), not a value of the arithmetic itself: its
+    /// magnitude is naturally near the rounding error of another, even below the normal
+    /// range, where that costs nothing (a kernel's underflow test leaves it alone).
+    bool correction = false;
 };
 
 struct program {
@@ -78,6 +83,11 @@ bool is_leaf(const instruction& in);
 
 /// The values `in` reads.
 std::vector<int> operands(const instruction& in);
+
+/// Whether `in`'s result can fall below the normal range where its operands are within it,
+/// losing precision: a product, quotient, fused multiply-add or function that is not a
+/// correction (sums and differences of floating-point numbers are exact when they are that small).
+bool can_underflow(const instruction& in);
 
 /// Whether `in` divides by a value that is not a constant (one a kernel names and tests).
 bool divides(const program& p, const instruction& in);

@@ -103,14 +103,51 @@ std::string prefetch_ahead(const lane_input& in)
 }
 
 // The arguments a block loop passes to the loop for the block at b: each array from b.
-std::vector<std::string> block_arguments(const std::vector<lane_input>& inputs, bool with_status)
+// A loop that settles (see print_settle) always writes statuses: into the caller's array, or
+// into a block's own.
+std::vector<std::string> block_arguments(const std::vector<lane_input>& inputs, bool with_status, bool settles = false)
 {
     std::vector<std::string> from_block;
     for (const lane_input& in : inputs)
         from_block.push_back(fmt::format("{}_ + b", in.name));
     if (with_status)
-        from_block.push_back("with_status ? status_ + b : status_");
+        from_block.push_back(settles ? "with_status ? status_ + b : own" : "with_status ? status_ + b : status_");
     return from_block;
+}
+
+// The pairs a batch loop left to the scalar kernel, found by their status `underflow` (a value
+// its underflow test tests may be below the normal range, or 0): each resolved by the scalar
+// kernel, as one collision, which decides its status exactly. Called after each block.
+void print_settle(std::string& out, const engine::kernel& k, const std::string& loop,
+                  const std::vector<lane_input>& inputs)
+{
+    std::vector<std::string> arguments, writes;
+    for (const engine::kernel_parameter& p : k.parameters) {
+        std::vector<std::string> components;
+        for (const engine::quantity& q : p.components)
+            components.push_back(q.name + "_[i]");
+        arguments.push_back(p.is_array ? fmt::format("std::array<Real, {}>{{{}}}", components.size(), fmt::join(components, ", "))
+                                       : components.front());
+    }
+    for (const engine::kernel_output& o : k.outputs) {
+        const engine::kernel_parameter* same = k.find_parameter(o.member);
+        for (std::size_t c = 0; c < same->components.size(); ++c)
+            writes.push_back(fmt::format("        {}_[i] = out.{}{};\n", same->components[c].name, o.member,
+                                         o.is_array ? fmt::format("[{}]", c) : ""));
+    }
+    out += fmt::format("\n// The pairs {0} left to the scalar {1} (status {2}: a value it tests for underflow may be\n"
+                       "// below the normal range), each resolved by it, which decides exactly.\n"
+                       "template <class Real>\ninline void {0}_settle(std::size_t count, {3}) noexcept\n{{\n"
+                       "    bool doubtful = false;\n"
+                       "    for (std::size_t i = 0; i < count; ++i)\n"
+                       "        doubtful |= status_[i] == status::{2};\n"
+                       "    if (!doubtful)\n        return;\n"
+                       "    for (std::size_t i = 0; i < count; ++i) {{\n"
+                       "        if (status_[i] != status::{2})\n            continue;\n"
+                       "        const auto out = {1}<Real>({4});\n{5}"
+                       "        status_[i] = out.status;\n    }}\n}}\n",
+                       loop, k.name, underflow, loop_parameters(inputs, true), fmt::join(arguments, ", "),
+                       fmt::join(writes, ""));
 }
 
 constexpr const char* status_ahead = "            if constexpr (with_status)\n"
@@ -119,7 +156,8 @@ constexpr const char* status_ahead = "            if constexpr (with_status)\n"
 // The batch loop run over blocks of 8 pairs (a cache line of doubles), each array's
 // data asked for 64 pairs ahead: out of cache, the hardware's prefetching alone leaves
 // the loop waiting for memory (in 3D, 16 arrays streamed at once, a quarter slower).
-void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status)
+void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status,
+                  bool settles)
 {
     std::vector<std::string> ahead;
     for (const lane_input& in : inputs)
@@ -127,14 +165,18 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
     if (with_status)
         ahead.push_back(status_ahead);
     const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+    const std::string arguments = fmt::format("{}", fmt::join(block_arguments(inputs, with_status, settles), ", "));
+    const std::string settle = settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, arguments) : "";
     out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
                        "// processor's own prefetching, following so many arrays, falls behind.\n"
                        "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
-                       "    constexpr std::size_t block = 8, ahead = 64;\n    std::size_t b = 0;\n"
+                       "    constexpr std::size_t block = 8, ahead = 64;\n{6}    std::size_t b = 0;\n"
                        "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
-                       "        {4}(block, {5});\n    }}\n    {4}(count - b, {5});\n}}\n",
+                       "        {4}(block, {5});\n{7}    }}\n    {4}(count - b, {5});\n{8}}}\n",
                        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
-                       fmt::join(ahead, ""), call, fmt::join(block_arguments(inputs, with_status), ", "));
+                       fmt::join(ahead, ""), call, arguments,
+                       settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "",
+                       settle, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "");
 }
 
 
@@ -165,9 +207,9 @@ std::vector<lane_input> read_only(const std::vector<lane_input>& inputs)
 // so that at any time the arrays are read at offsets 128 bytes apart, as if staggered
 // (see `skews`; staggered arrays lose a tenth by it, and keep the plain block loop).
 void print_skewed_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs,
-                         bool with_status)
+                         bool with_status, bool settles)
 {
-    std::vector<std::string> ahead, starts, from_block = block_arguments(inputs, with_status);
+    std::vector<std::string> ahead, starts, from_block = block_arguments(inputs, with_status, settles);
     const std::vector<std::string> at_end = from_block;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         if (inputs[i].written) {
@@ -194,7 +236,7 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read\n"
         "// at offsets 128 bytes apart, as if staggered.\n"
         "template <class Real{1}>\ninline void {0}_skewed(std::size_t count, {2}) noexcept\n{{\n"
-        "    constexpr std::size_t block = 8, ahead = 64, ring = {3}, read_only = {4};\n"
+        "    constexpr std::size_t block = 8, ahead = 64, ring = {3}, read_only = {4};\n{12}"
         "    const Real* const from[read_only] = {{{5}}};\n"
         "    alignas(64) Real stage[read_only][ring][block];\n"
         "    auto lead = [](std::size_t k) {{ return 2 * (k + 1); }};\n"
@@ -213,11 +255,14 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "            if (j + lead(k) < blocks)\n"
         "                read(k, j + lead(k));\n"
         "        const std::size_t r = j % ring;\n"
-        "        {7}(block, {8});\n"
+        "        {7}(block, {8});\n{10}"
         "    }}\n"
-        "    {7}(count - b, {9});\n}}\n",
+        "    {7}(count - b, {9});\n{11}}}\n",
         loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, starts.size(),
-        fmt::join(starts, ", "), fmt::join(ahead, ""), call, fmt::join(from_block, ", "), fmt::join(at_end, ", "));
+        fmt::join(starts, ", "), fmt::join(ahead, ""), call, fmt::join(from_block, ", "), fmt::join(at_end, ", "),
+        settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, fmt::join(at_end, ", ")) : "",
+        settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, fmt::join(at_end, ", ")) : "",
+        settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "");
 }
 
 // The values a batch loop's arithmetic can hold at once: AVX-512 has 32 vector registers,
@@ -308,7 +353,8 @@ void print_batch(std::string& out, const kernel_plan& plan)
     const bool for_registers = compile::most_live(outputs_only) > batch_registers;
     const compile::program arithmetic = for_registers ? compile::ordered_for_registers(outputs_only) : outputs_only;
     const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
-    const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "");
+    const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
+                                      with_status ? for_outputs : std::vector<bool>{});
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
     // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
     // GCC if-converts; with `&`, it leaves the loop's conditional stores unvectorised.)
@@ -337,7 +383,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
         }
     }
     if (with_status) {
-        std::vector<std::string> results;
+        std::vector<std::string> results = code.arguments;  // functions' arguments tested as results are
         for (const auto& [target, result] : writes) {
             out += fmt::format("        const Real {}_out = {};\n", target, result);
             results.push_back(target + "_out");
@@ -355,20 +401,58 @@ void print_batch(std::string& out, const kernel_plan& plan)
             out += fmt::format("        const Real {} = {};\n", name, term);
             return name;
         });
-        out += fmt::format("        const bool written = usable && {};\n", finite);
+        // Written only in range and where nothing underflowed, as the scalar kernel decides:
+        // out_of_range first, then underflow.
+        if (code.underflows.empty()) {
+            out += fmt::format("        const bool written = usable && {};\n", finite);
+        } else {
+            out += fmt::format("        const bool finite = {};\n", finite);
+            // The scalar kernel's underflow test costs about as much as the loop's arithmetic:
+            // the loop takes only the smallest magnitude of the values it tests (a balanced
+            // tree of minima), and leaves a pair where that is below the normal range, or 0,
+            // to the scalar kernel (status underflow here, then `settle`). A value 0 because an
+            // operand that may be 0 is (centres level in an axis) counts as min, without a
+            // comparison (detail::zero_as_min), so that such pairs stay in the loop: with a
+            // comparison and a blend per value, GCC no longer takes minima in one instruction,
+            // and the 3D loop ran at 0.38 of its speed before the test, against 0.61.
+            std::vector<std::string> terms;
+            for (std::size_t v = 0; v < code.watched_values.size(); ++v) {
+                std::string term = fmt::format("std::fabs({})", code.watched_values[v]);
+                for (const std::string& operand : code.watched_zero_if[v])
+                    term = fmt::format("detail::most({}, detail::zero_as_min({}))", term, operand);
+                terms.push_back(term);
+            }
+            while (terms.size() > 1) {
+                std::vector<std::string> pairs;
+                for (std::size_t t = 0; t < terms.size(); t += 2)
+                    pairs.push_back(t + 1 < terms.size() ? fmt::format("detail::least({}, {})", terms[t], terms[t + 1])
+                                                         : terms[t]);
+                terms = std::move(pairs);
+            }
+            out += fmt::format("        const bool doubtful = !std::isgreaterequal({}, std::numeric_limits<Real>::min());\n",
+                               terms.front());
+            out += "        const bool written = usable && finite && !doubtful;\n";
+        }
         for (const auto& [target, result] : writes)
             out += fmt::format("        {0}_[i] = written ? {0}_out : {0}_[i];\n", target);
-        out += fmt::format("        if constexpr (with_status)\n"
-                           "            status_[i] = resolved && !written ? status::{} : outcome;\n",
-                           out_of_range);
+        if (code.underflows.empty())
+            out += fmt::format("        if constexpr (with_status)\n"
+                               "            status_[i] = resolved && !written ? status::{} : outcome;\n",
+                               out_of_range);
+        else  // always: a doubtful pair is found by its status (`settle`)
+            out += fmt::format("        status_[i] = resolved && !written ? (usable && finite ? status::{} : status::{}) : outcome;\n",
+                               underflow, out_of_range);
     } else {
         for (const auto& [target, result] : writes)
             out += fmt::format("        {}_[i] = {};\n", target, result);
     }
     out += "    }\n}\n";
-    print_blocks(out, loop, inputs, with_status);
+    const bool settles = with_status && !code.underflows.empty();
+    if (settles)
+        print_settle(out, k, loop, inputs);
+    print_blocks(out, loop, inputs, with_status, settles);
     if (skews(k))
-        print_skewed_blocks(out, loop, inputs, with_status);
+        print_skewed_blocks(out, loop, inputs, with_status, settles);
     out += "\n} // namespace detail\n";
 
     // The public entry point.

@@ -42,8 +42,10 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
         for (const engine::kernel_guard& g : k->guards)
             if (std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
                 statuses.push_back(g.status);
-    if (statuses.size() > 1)
+    if (statuses.size() > 1) {
         statuses.push_back(out_of_range);
+        statuses.push_back(underflow);
+    }
     out += fmt::format("\n/// Why a kernel resolved no collision; `ok` when it did.\n"
                        "/// As wide as a double, so that a vectorised batch loop over doubles keeps one\n"
                        "/// width in every lane: with a narrower status, compilers pack two vectors of\n"
@@ -57,8 +59,26 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
                            "/// smaller divisor, or a result that is not finite, gives status::{}.\n"
                            "template <class Real>\nconstexpr Real smallest_divisor =\n"
                            "    std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();\n\n"
+                           "/// The smaller and the larger of a and b (one instruction each in vectors: a batch\n"
+                           "/// loop takes the least magnitude of the values it tests for status::{}).\n"
+                           "template <class Real>\nIMPACT_ALWAYS_INLINE Real least(Real a, Real b) noexcept\n{{\n"
+                           "    return a < b ? a : b;\n}}\n"
+                           "template <class Real>\nIMPACT_ALWAYS_INLINE Real most(Real a, Real b) noexcept\n{{\n"
+                           "    return a < b ? b : a;\n}}\n\n"
+                           "/// 2^k with (|x| s) s >= 1 for every x not 0, the smallest subnormal number included.\n"
+                           "template <class Real>\nconstexpr Real underflow_scale = [] {{\n"
+                           "    Real s = 1;\n"
+                           "    for (int k = 0; k < (std::numeric_limits<Real>::digits - std::numeric_limits<Real>::min_exponent + 2) / 2; ++k)\n"
+                           "        s *= 2;\n"
+                           "    return s;\n}}();\n\n"
+                           "/// min where x is 0, and not above 0 elsewhere, without a comparison: a product with a\n"
+                           "/// factor x that is 0 is 0 as it should be, and counts as min in a batch loop's least\n"
+                           "/// magnitude.\n"
+                           "template <class Real>\nIMPACT_ALWAYS_INLINE Real zero_as_min(Real x) noexcept\n{{\n"
+                           "    return std::fma(-(std::fabs(x) * underflow_scale<Real>), underflow_scale<Real>, Real(1)) *\n"
+                           "           std::numeric_limits<Real>::min();\n}}\n\n"
                            "}} // namespace detail\n",
-                           out_of_range);
+                           out_of_range, underflow);
 
     if (std::any_of(plans.begin(), plans.end(), [](const kernel_plan* plan) { return skews(*plan->kernel); }))
         out += "\nnamespace detail {\n\n"

@@ -30,15 +30,16 @@ std::vector<std::string> scalar_failures(const std::vector<domain_test>& tests)
 // The scalar kernel's early return when any of `failures` holds: the result as it stands
 // (inputs unchanged) with `status`, or, from a kernel returning one scalar, a quiet NaN
 // (the status then named in a comment).
+// `or_else` joins the failures (a line each, for a long list).
 void print_refusal(std::string& out, const engine::kernel& k, const std::vector<std::string>& failures,
-                   const std::string& status)
+                   const std::string& status, const char* or_else = " || ")
 {
     if (returns_scalar(k))
         out += fmt::format("    if ({}) {{\n        return std::numeric_limits<Real>::quiet_NaN();  // {}\n    }}\n",
-                           fmt::join(failures, " || "), status);
+                           fmt::join(failures, or_else), status);
     else
         out += fmt::format("    if ({}) {{\n        out.status = status::{};\n        return out;\n    }}\n",
-                           fmt::join(failures, " || "), status);
+                           fmt::join(failures, or_else), status);
 }
 
 // What a value outside a domain is, in words: "not positive and finite".
@@ -78,8 +79,10 @@ std::string guard_meaning(const engine::derivation& d, const engine::kernel& k, 
 }
 
 // The documentation of a kernel's guards: what each status means, and what is returned.
-// `divides`: whether the kernel divides by a value it computes (then tested for range).
-void print_guards_documentation(std::string& out, const engine::derivation& d, const engine::kernel& k, bool divides)
+// `divides`: whether the kernel divides by a value it computes (then tested for range);
+// `calls`: whether it calls a function (its arguments tested).
+void print_guards_documentation(std::string& out, const engine::derivation& d, const engine::kernel& k, bool divides,
+                                bool calls)
 {
     if (k.guards.empty())
         return;
@@ -93,8 +96,15 @@ void print_guards_documentation(std::string& out, const engine::derivation& d, c
                            others ? " (the other outputs 0)" : "");
     for (const engine::kernel_guard& g : k.guards)
         out += fmt::format("///   {}: {}\n", g.status, guard_meaning(d, k, g));
-    out += fmt::format("///   {}: the values leave the type's range ({}a result not finite).\n", out_of_range,
-                       divides ? "a divisor below\n///     detail::smallest_divisor or infinite, " : "");
+    out += fmt::format("///   {}: the values leave the type's range ({}{}a result not finite).\n", out_of_range,
+                       divides ? "a divisor below\n///     detail::smallest_divisor or infinite, " : "",
+                       calls ? "an argument of a function\n///     or " : "");
+    out += fmt::format("///   {}: a value of the arithmetic below (a product, quotient, fused\n"
+                       "///     multiply-add or function; not a correction of compensated arithmetic) is\n"
+                       "///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it\n"
+                       "///     multiplies or divides is not: it lost digits, and the result could be\n"
+                       "///     imprecise. Zero inputs are ordinary.\n",
+                       underflow);
 }
 
 std::string members_initialiser(const engine::kernel& k)
@@ -132,7 +142,11 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     for (const engine::kernel_parameter& p : k.parameters)
         for (const engine::quantity& q : p.components)
             component_names.push_back(q.name);
-    const cxx_code code = program_cxx(plan.code, component_names);
+    // With a status, the values the results need are tested for underflow.
+    const bool with_status = !k.guards.empty();  // a status, or a NaN for a scalar
+    const cxx_code code =
+        program_cxx(plan.code, component_names, "",
+                    with_status ? needed_by(plan.code, plan.guard_values, plan.code.outputs.size()) : std::vector<bool>{});
 
     // Documentation: inputs, and how each output is computed and how accurate it is.
     std::vector<std::string> names;
@@ -148,7 +162,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
                            cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
     }
-    print_guards_documentation(out, d, k, !code.divisors.empty());
+    print_guards_documentation(out, d, k, !code.divisors.empty(), !code.arguments.empty());
 
     std::vector<std::string> parameters;
     for (const engine::kernel_parameter& p : k.parameters)
@@ -186,7 +200,6 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
             continue;
         print_refusal(out, k, {condition_failure(code.outputs[condition++], g)}, g.status);
     }
-    const bool with_status = !k.guards.empty();  // a status, or a NaN for a scalar
     const auto refuse_divisors_out_of_range = [&] {
         std::vector<std::string> failures;
         for (const std::string& test : with_status ? divisors_in_range(code) : std::vector<std::string>{})
@@ -204,12 +217,16 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     std::vector<std::string> results(code.outputs.begin() + static_cast<long>(plan.guard_values), code.outputs.end());
     if (with_status) {
         std::vector<std::string> failures;
+        for (const std::string& argument : code.arguments)
+            failures.push_back(fmt::format("!std::isfinite({})", argument));
         for (std::size_t r = 0; r < results.size(); ++r) {
             out += fmt::format("    const Real result{} = {};\n", r, results[r]);
             results[r] = fmt::format("result{}", r);
             failures.push_back(fmt::format("!std::isfinite({})", results[r]));
         }
         print_refusal(out, k, failures, out_of_range);
+        if (!code.underflows.empty())
+            print_refusal(out, k, code.underflows, underflow, " ||\n        ");
     }
 
     if (returns_scalar(k)) {

@@ -43,6 +43,14 @@ std::vector<domain_test> guard_tests(const engine::kernel& k, const engine::kern
 /// that compensated arithmetic keeps its precision) and finite, every result finite.
 /// Otherwise the status is `out_of_range` and the velocities are unchanged.
 inline constexpr const char* out_of_range = "out_of_range";
+/// A kernel with a status resolves a collision only where its arithmetic stays in the
+/// normal range at the bottom too: no value of its arithmetic (a product, quotient, fused
+/// multiply-add or function; not a correction of compensated arithmetic) below
+/// std::numeric_limits<Real>::min() or fallen to 0 from operands that are not
+/// (cxx_code::underflows). Otherwise, if no status before applies, the status is
+/// `underflow` and the velocities are unchanged: a value below the normal range has lost
+/// digits, and the result could be far from the exact one.
+inline constexpr const char* underflow = "underflow";
 /// What must hold of every divisor, as tests; the scalar kernel refuses a pair where one
 /// fails, the batch loop divides by 1 instead.
 std::vector<std::string> divisors_in_range(const cxx_code& code);

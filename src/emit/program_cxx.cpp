@@ -23,9 +23,54 @@ std::string literal(const GiNaC::numeric& n)
     return out.str();
 }
 
+// Whether value v of p is tested for underflow; and the operands whose product or quotient
+// it is (a constant is not 0, and is left out), which are not 0 where v fell to 0.
+bool tested(const program& p, const std::vector<bool>& watched, std::size_t v)
+{
+    return v < watched.size() && watched[v] && compile::can_underflow(p.code[v]);
+}
+
+std::vector<int> multiplied(const program& p, const instruction& in)
+{
+    std::vector<int> of;
+    if (in.op == opcode::mul || in.op == opcode::fma)
+        of = {in.a, in.b};
+    else if (in.op == opcode::div || (in.op == opcode::call && in.function == "atan2"))  // atan2(y, x) = 0 where y = 0
+        of = {in.a};
+    of.erase(std::remove_if(of.begin(), of.end(), [&](int o) { return p.code[o].op == opcode::constant; }), of.end());
+    if (of.size() == 2 && of[0] == of[1])  // a square
+        of.pop_back();
+    return of;
+}
+
+// Whether value o may be 0 where nothing underflowed, as an input, a sum or a difference
+// may (a product or quotient of values not 0 is not 0 unless it underflowed).
+bool may_be_zero(const program& p, int o)
+{
+    while (p.code[o].op == opcode::neg)
+        o = p.code[o].a;
+    const opcode op = p.code[o].op;
+    return op == opcode::input || op == opcode::add || op == opcode::sub || op == opcode::select;
+}
+
+// The test that value v (written text[v]) fell below the normal range, as cxx_code says.
+std::string underflow_test(const program& p, std::size_t v, const std::vector<std::string>& text)
+{
+    const instruction& in = p.code[v];
+    std::vector<std::string> nonzero;
+    for (int o : multiplied(p, in))
+        nonzero.push_back(text[o] + " != Real(0)");
+    if (in.op == opcode::fma && !nonzero.empty())  // a sum may cancel to 0 exactly: 0 only where 0 is added
+        nonzero = {fmt::format("({} != Real(0) || ({} == Real(0) && {}))", text[v], text[in.c], fmt::join(nonzero, " && "))};
+    else if (nonzero.empty())  // a function's value, a product of constants
+        nonzero.push_back(text[v] + " != Real(0)");
+    return fmt::format("(std::fabs({}) < std::numeric_limits<Real>::min() && {})", text[v], fmt::join(nonzero, " && "));
+}
+
 } // namespace
 
-cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if)
+cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if,
+                     const std::vector<bool>& watched)
 {
     // A value used more than once gets a name; one used once is written in place, with
     // the parentheses that keep the program's tree (C++ evaluates a - b + c as (a - b) + c,
@@ -40,6 +85,18 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     const std::vector<int> divided_by = divisors(p);
     for (int d : divided_by)
         uses[d] += 2;
+    // Values tested for underflow are named, and so are the operands their tests read.
+    for (std::size_t v = 0; v < p.code.size(); ++v)
+        if (tested(p, watched, v)) {
+            uses[v] += 2;
+            for (int o : multiplied(p, p.code[v]))
+                uses[o] += 2;
+            if (p.code[v].op == opcode::fma)
+                uses[p.code[v].c] += 2;
+            if (p.code[v].op == opcode::call)
+                for (int o : operands(p.code[v]))
+                    uses[o] += 2;
+        }
     const auto first = std::find_if(p.code.begin(), p.code.end(), [&](const instruction& in) { return divides(p, in); });
     const int first_division = first == p.code.end() ? -1 : static_cast<int>(first - p.code.begin());
     const int last_divisor = divided_by.empty() ? -1 : *std::max_element(divided_by.begin(), divided_by.end());
@@ -99,6 +156,22 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     }
     for (int o : p.outputs)
         code.outputs.push_back(text[o]);
+    for (std::size_t v = 0; v < p.code.size(); ++v) {
+        if (!tested(p, watched, v))
+            continue;
+        code.underflows.push_back(underflow_test(p, v, text));
+        code.watched_values.push_back(text[v]);
+        std::vector<std::string> zero_if;  // operands that may be 0, making the value 0 as it should be
+        if (p.code[v].op != opcode::fma)
+            for (int o : multiplied(p, p.code[v]))
+                if (may_be_zero(p, o))
+                    zero_if.push_back(text[o]);
+        code.watched_zero_if.push_back(std::move(zero_if));
+        if (p.code[v].op == opcode::call)
+            for (int o : operands(p.code[v]))
+                if (p.code[o].op != opcode::constant)
+                    code.arguments.push_back(text[o]);
+    }
     for (int d : divided_by)
         code.divisors.push_back(text[d]);
     code.divides_early = first_division >= 0 && first_division < last_divisor;

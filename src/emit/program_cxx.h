@@ -21,6 +21,15 @@ namespace impact::emit {
 /// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
 /// their range before dividing: all are computed by the first `divisors_known` statements,
 /// and no division is made before them unless `divides_early`.
+/// With `watched` (a flag per value of p), every watched value that can fall below the
+/// normal range (compile::can_underflow) is named, with its operands, and `underflows`
+/// holds for each the test that it did: a non-zero value below
+/// std::numeric_limits<Real>::min(), or a product (of a fused multiply-add, one added to
+/// 0) or quotient that is 0 though what it multiplies or divides is not (for atan2(y, x),
+/// 0 though y is not). A batch loop, whose exact test would cost as much as its arithmetic,
+/// takes the least magnitude of `watched_values` instead (a value 0 because an operand that
+/// may be 0 is, counted as min), and leaves a pair where that is below the normal range, or
+/// 0, to the scalar kernel.
 struct cxx_code {
     std::vector<std::string> statements;
     std::vector<int> statement_values;   ///< the value each statement computes
@@ -28,7 +37,16 @@ struct cxx_code {
     std::vector<std::string> divisors;
     std::size_t divisors_known = 0;
     bool divides_early = false;
+    std::vector<std::string> underflows;
+    std::vector<std::string> watched_values;  ///< the values `underflows` tests (named), but inputs
+    /// For each of `watched_values`, its operands that may be 0 (an input, a sum, a difference),
+    /// making it 0 as it should be; none for a fused multiply-add (a 0 goes to the scalar kernel).
+    std::vector<std::vector<std::string>> watched_zero_if;
+    /// With `watched`, the arguments of its functions (named): a function can hide an
+    /// overflow (atan2 of an infinity is finite), so a kernel tests them as it tests its results.
+    std::vector<std::string> arguments;
 };
-cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {});
+cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {},
+                     const std::vector<bool>& watched = {});
 
 } // namespace impact::emit

@@ -1,5 +1,7 @@
 // Speed of the generated collision kernels, side by side in one run with a hand-written
-// batch loop of the same arithmetic and a memory-bandwidth probe (a triad).
+// batch loop of the same arithmetic, the batch loop as generated before the kernels tested
+// their arithmetic for underflow (batch_before_underflow.hpp), and a memory-bandwidth
+// probe (a triad).
 //
 // A benchmark, never a test: it reports collisions per second of the scalar and batch
 // kernels, in cache (4 096 pairs) and out of cache (4 194 304 pairs), and the ratios the
@@ -24,6 +26,7 @@
 // - the same on 2 MiB pages (madvise MADV_HUGEPAGE): fewer misses of address translation.
 // The triad's three arrays are laid out alike.
 
+#include "batch_before_underflow.hpp"
 #include "impact/impact.hpp"
 
 #include <benchmark/benchmark.h>
@@ -383,6 +386,14 @@ template <std::size_t D>
     benchmark::ClobberMemory();
 }
 
+// The batch loop before the underflow test: what the test costs, timed beside it.
+template <std::size_t D>
+[[gnu::noinline]] void generated_batch_before_underflow(pairs<D>& p)
+{
+    impact::before_underflow::collide_batch(p.data());
+    benchmark::ClobberMemory();
+}
+
 template <std::size_t D>
 [[gnu::noinline]] void generated_scalar(pairs<D>& p)
 {
@@ -407,11 +418,12 @@ template <std::size_t D>
 // The loops timed side by side, and the figures each benchmark reports (medians of its
 // repetitions): pairs per second (millions) of the three collision loops, the triad's bytes
 // per second (GB), and the two ratios the batch kernel is held to.
-enum loop { scalar_loop, batch_loop, hand_written_loop, triad_loop, loops };
-const char* const pairs_per_second[] = {"scalar_M/s", "batch_M/s", "hand_M/s"};
+enum loop { scalar_loop, batch_loop, hand_written_loop, before_loop, triad_loop, loops };
+const char* const pairs_per_second[] = {"scalar_M/s", "batch_M/s", "hand_M/s", "before_M/s"};
 const char* const triad_bandwidth = "triad_GB/s";
 const char* const batch_per_hand_written = "batch/hand";
 const char* const batch_per_triad = "batch/triad";
+const char* const batch_per_before = "batch/before";
 
 // Arguments: pairs (the triad runs over 5 times as many elements, about as many bytes as 2D
 // pairs carry), page size in KiB, layout.
@@ -437,6 +449,7 @@ void side_by_side(benchmark::State& state)
             case scalar_loop: generated_scalar(p); break;
             case batch_loop: generated_batch(p); break;
             case hand_written_loop: hand_written(p); break;
+            case before_loop: generated_batch_before_underflow(p); break;
             default: probe.run(); break;
             }
             const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -447,11 +460,12 @@ void side_by_side(benchmark::State& state)
         state.SetIterationTime(pass);
     }
     const double passes = static_cast<double>(state.iterations());
-    for (loop which : {scalar_loop, batch_loop, hand_written_loop})
+    for (loop which : {scalar_loop, batch_loop, hand_written_loop, before_loop})
         state.counters[pairs_per_second[which]] = passes * n / seconds[which] / 1e6;
     const double triad_bytes = passes * probe.a.size() * triad_arrays::bytes_per_element / seconds[triad_loop];
     state.counters[triad_bandwidth] = triad_bytes / 1e9;
     state.counters[batch_per_hand_written] = seconds[hand_written_loop] / seconds[batch_loop];
+    state.counters[batch_per_before] = seconds[before_loop] / seconds[batch_loop];
     state.counters[batch_per_triad] = passes * n * pairs<D>::bytes_per_pair / seconds[batch_loop] / triad_bytes;
 }
 
@@ -520,6 +534,44 @@ long huge_pages_granted()
     return kib < 0 ? -1 : kib / 1024;
 }
 
+// The instruction set the loops were compiled for (the widest vectors decide how many
+// pairs a vector holds), the compiler, and the processor they ran on.
+std::string isa()
+{
+    std::string set;
+#if defined(__AVX512F__)
+    set = "AVX-512F";
+#elif defined(__AVX2__)
+    set = "AVX2";
+#elif defined(__AVX__)
+    set = "AVX";
+#elif defined(__SSE2__)
+    set = "SSE2";
+#else
+    set = "no x86 vectors known here";
+#endif
+#if defined(__FMA__)
+    set += " + FMA";
+#endif
+#if defined(__clang__)
+    set += ", Clang " __clang_version__;
+#elif defined(__GNUC__)
+    set += ", GCC " __VERSION__;
+#endif
+    std::string cpu = "unknown processor";
+    if (std::FILE* f = std::fopen("/proc/cpuinfo", "r")) {
+        char line[256];
+        while (std::fgets(line, sizeof line, f))
+            if (std::string(line).rfind("model name", 0) == 0) {
+                cpu = std::string(line).substr(std::string(line).find(':') + 2);
+                cpu.erase(cpu.find_last_not_of("\n") + 1);
+                break;
+            }
+        std::fclose(f);
+    }
+    return set + ", on " + cpu;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -534,10 +586,12 @@ int main(int argc, char** argv)
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
     std::printf("\nMedians of %d repetitions; targets: batch / hand-written >= 0.95, and out of cache the batch's "
-                "bytes/s >= 80%% of the triad's.\n",
-                repetitions);
-    std::printf("%-3s %-12s %-9s %-12s %9s %9s %9s %10s %10s %11s\n", "", "pairs", "pages", "layout", "scalar M/s",
-                "batch M/s", "hand M/s", "triad GB/s", "batch/hand", "batch/triad");
+                "bytes/s >= 80%% of the triad's. batch/before: the batch loop against the same loop before its "
+                "underflow test.\nCompiled for %s.\n",
+                repetitions, isa().c_str());
+    std::printf("%-3s %-12s %-9s %-12s %9s %9s %9s %10s %10s %11s %10s %12s\n", "", "pairs", "pages", "layout",
+                "scalar M/s", "batch M/s", "hand M/s", "triad GB/s", "batch/hand", "batch/triad", "before M/s",
+                "batch/before");
     for (int d : {2, 3})
         for (const auto& [pairs, pages, how] : regimes) {
             const std::string name = "side_by_side<" + std::to_string(d) + ">/pairs:" + std::to_string(pairs) +
@@ -546,11 +600,12 @@ int main(int argc, char** argv)
             if (found == reporter.medians.end())
                 continue;
             auto figure = [&](const char* counter) { return found->second[counter]; };
-            std::printf("%-3s %-12zu %-9s %-12s %9.1f %9.1f %9.1f %10.2f %10.3f %10.0f%%\n",
+            std::printf("%-3s %-12zu %-9s %-12s %9.1f %9.1f %9.1f %10.2f %10.3f %10.0f%% %10.1f %12.3f\n",
                         (std::to_string(d) + "D").c_str(), pairs, pages == huge_pages ? "2 MiB" : "4 KiB",
                         how == staggered ? "staggered" : "same offset", figure(pairs_per_second[scalar_loop]),
                         figure(pairs_per_second[batch_loop]), figure(pairs_per_second[hand_written_loop]),
-                        figure(triad_bandwidth), figure(batch_per_hand_written), 100 * figure(batch_per_triad));
+                        figure(triad_bandwidth), figure(batch_per_hand_written), 100 * figure(batch_per_triad),
+                        figure(pairs_per_second[before_loop]), figure(batch_per_before));
         }
     std::printf("arrays on 2 MiB pages at the end: %ld MiB of the %zu MiB asked for (the system may grant fewer; "
                 "the 2 MiB-page figures hold for as many as it granted)\n",

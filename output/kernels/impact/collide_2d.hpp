@@ -31,6 +31,11 @@ namespace impact {
 ///   separating: unless (C_Mx-C_mx)*(v_Mx-v_mx)+(C_My-C_my)*(v_My-v_my) < 0
 ///   out_of_range: the values leave the type's range (a divisor below
 ///     detail::smallest_divisor or infinite, a result not finite).
+///   underflow: a value of the arithmetic below (a product, quotient, fused
+///     multiply-add or function; not a correction of compensated arithmetic) is
+///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
+///     multiplies or divides is not: it lost digits, and the result could be
+///     imprecise. Zero inputs are ordinary.
 template <class Real>
 inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps) noexcept
 {
@@ -99,13 +104,33 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
     const Real t29 = -t28;
     const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / t27;
     const Real t31 = t30 * m;
-    const Real t32 = t30 * M;
-    const Real result0 = -(t31 * t0) + v_Mx;
-    const Real result1 = -(t31 * t2) + v_My;
-    const Real result2 = t32 * t0 + v_mx;
-    const Real result3 = t32 * t2 + v_my;
+    const Real t32 = t31 * t0;
+    const Real t33 = t31 * t2;
+    const Real t34 = t30 * M;
+    const Real t35 = t34 * t0;
+    const Real t36 = t34 * t2;
+    const Real result0 = -t32 + v_Mx;
+    const Real result1 = -t33 + v_My;
+    const Real result2 = t35 + v_mx;
+    const Real result3 = t36 + v_my;
     if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3)) {
         out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && t2 != Real(0) && t7 != Real(0)) ||
+        (std::fabs(t21) < std::numeric_limits<Real>::min() && t10 != Real(0) && t20 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && t22 != Real(0) && t26 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && t21 != Real(0)) ||
+        (std::fabs(t31) < std::numeric_limits<Real>::min() && t30 != Real(0) && m != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && t31 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t33) < std::numeric_limits<Real>::min() && t31 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t34) < std::numeric_limits<Real>::min() && t30 != Real(0) && M != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && t34 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t36) < std::numeric_limits<Real>::min() && t34 != Real(0) && t2 != Real(0))) {
+        out.status = status::underflow;
         return out;
     }
     out.v_M = {result0, result1};
@@ -199,18 +224,45 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real t29 = -t28;
         const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / (usable ? t27 : Real(1));
         const Real t31 = t30 * m;
-        const Real t32 = t30 * M;
-        const Real v_Mx_out = -(t31 * t0) + v_Mx;
-        const Real v_My_out = -(t31 * t2) + v_My;
-        const Real v_mx_out = t32 * t0 + v_mx;
-        const Real v_my_out = t32 * t2 + v_my;
-        const bool written = usable && ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
+        const Real t32 = t31 * t0;
+        const Real t33 = t31 * t2;
+        const Real t34 = t30 * M;
+        const Real t35 = t34 * t0;
+        const Real t36 = t34 * t2;
+        const Real v_Mx_out = -t32 + v_Mx;
+        const Real v_My_out = -t33 + v_My;
+        const Real v_mx_out = t35 + v_mx;
+        const Real v_my_out = t36 + v_my;
+        const bool finite = ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
+        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), detail::most(detail::most(std::fabs(t8), detail::zero_as_min(t2)), detail::zero_as_min(t7)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t10)), detail::zero_as_min(t20)), detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t22)), detail::zero_as_min(t26))), detail::least(std::fabs(t28), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t30)), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t32), detail::zero_as_min(t0)), detail::most(std::fabs(t33), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(t30)), detail::zero_as_min(M)), detail::most(std::fabs(t35), detail::zero_as_min(t0)))), detail::most(std::fabs(t36), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
+        const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_mx_[i] = written ? v_mx_out : v_mx_[i];
         v_my_[i] = written ? v_my_out : v_my_[i];
-        if constexpr (with_status)
-            status_[i] = resolved && !written ? status::out_of_range : outcome;
+        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+    }
+}
+
+// The pairs collide_batch_2d left to the scalar collide (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide<Real>(M_[i], m_[i], std::array<Real, 2>{C_Mx_[i], C_My_[i]}, std::array<Real, 2>{C_mx_[i], C_my_[i]}, std::array<Real, 2>{v_Mx_[i], v_My_[i]}, std::array<Real, 2>{v_mx_[i], v_my_[i]}, eps_[i]);
+        v_Mx_[i] = out.v_M[0];
+        v_My_[i] = out.v_M[1];
+        v_mx_[i] = out.v_m[0];
+        v_my_[i] = out.v_m[1];
+        status_[i] = out.status;
     }
 }
 
@@ -220,6 +272,7 @@ template <class Real, bool with_status>
 inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
+    impact::status own[block];  // the statuses, where the caller wants none
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -237,9 +290,11 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : status_);
+        collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : status_);
+    collide_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail

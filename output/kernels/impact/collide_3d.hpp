@@ -37,6 +37,11 @@ namespace impact {
 ///   separating: unless (C_Mx-C_mx)*(v_Mx-v_mx)+(C_My-C_my)*(v_My-v_my)+(C_Mz-C_mz)*(v_Mz-v_mz) < 0
 ///   out_of_range: the values leave the type's range (a divisor below
 ///     detail::smallest_divisor or infinite, a result not finite).
+///   underflow: a value of the arithmetic below (a product, quotient, fused
+///     multiply-add or function; not a correction of compensated arithmetic) is
+///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
+///     multiplies or divides is not: it lost digits, and the result could be
+///     imprecise. Zero inputs are ordinary.
 template <class Real>
 inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
 {
@@ -124,15 +129,41 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
     const Real t44 = -t43;
     const Real t45 = t43 + std::fma(t44, std::fma(M - (t33 - t34) + (m - t34), t41, std::fma(t33, t40 - (t41 - t38), std::fma(t33, t41, -t42))), std::fma(t44, t42, t32) + std::fma(Real(1) - (t14 - t15) + (eps - t15), t31, std::fma(t14, t30 - (t31 - t28), std::fma(t14, t31, -t32)))) / t42;
     const Real t46 = t45 * m;
-    const Real t47 = t45 * M;
-    const Real result0 = -(t46 * t0) + v_Mx;
-    const Real result1 = -(t46 * t2) + v_My;
-    const Real result2 = -(t46 * t5) + v_Mz;
-    const Real result3 = t47 * t0 + v_mx;
-    const Real result4 = t47 * t2 + v_my;
-    const Real result5 = t47 * t5 + v_mz;
+    const Real t47 = t46 * t0;
+    const Real t48 = t46 * t2;
+    const Real t49 = t46 * t5;
+    const Real t50 = t45 * M;
+    const Real t51 = t50 * t0;
+    const Real t52 = t50 * t2;
+    const Real t53 = t50 * t5;
+    const Real result0 = -t47 + v_Mx;
+    const Real result1 = -t48 + v_My;
+    const Real result2 = -t49 + v_Mz;
+    const Real result3 = t51 + v_mx;
+    const Real result4 = t52 + v_my;
+    const Real result5 = t53 + v_mz;
     if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
         out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && t0 != Real(0) && t7 != Real(0)) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t2 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t5 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && t14 != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t42) < std::numeric_limits<Real>::min() && t33 != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t43) < std::numeric_limits<Real>::min() && t32 != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && t45 != Real(0) && m != Real(0)) ||
+        (std::fabs(t47) < std::numeric_limits<Real>::min() && t46 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t48) < std::numeric_limits<Real>::min() && t46 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t49) < std::numeric_limits<Real>::min() && t46 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t50) < std::numeric_limits<Real>::min() && t45 != Real(0) && M != Real(0)) ||
+        (std::fabs(t51) < std::numeric_limits<Real>::min() && t50 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t52) < std::numeric_limits<Real>::min() && t50 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && t50 != Real(0) && t5 != Real(0))) {
+        out.status = status::underflow;
         return out;
     }
     out.v_M = {result0, result1, result2};
@@ -249,27 +280,58 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real t44 = -t42;
         const Real t45 = t42 + std::fma(t44, std::fma(M - (t40 - t43) + (m - t43), t19, std::fma(t40, t18 - (t19 - t15), std::fma(t40, t19, -t41))), std::fma(t44, t41, t38) + std::fma(Real(1) - (t37 - t39) + (eps - t39), t36, std::fma(t37, t35 - (t36 - t32), std::fma(t37, t36, -t38)))) / (usable ? t41 : Real(1));
         const Real t46 = t45 * m;
-        const Real t47 = t45 * M;
-        const Real v_Mx_out = -(t46 * t0) + v_Mx;
-        const Real v_My_out = -(t46 * t4) + v_My;
-        const Real v_Mz_out = -(t46 * t12) + v_Mz;
-        const Real v_mx_out = t47 * t0 + v_mx;
-        const Real v_my_out = t47 * t4 + v_my;
-        const Real v_mz_out = t47 * t12 + v_mz;
+        const Real t47 = t46 * t0;
+        const Real t48 = t46 * t4;
+        const Real t49 = t46 * t12;
+        const Real t50 = t45 * M;
+        const Real t51 = t50 * t0;
+        const Real t52 = t50 * t4;
+        const Real t53 = t50 * t12;
+        const Real v_Mx_out = -t47 + v_Mx;
+        const Real v_My_out = -t48 + v_My;
+        const Real v_Mz_out = -t49 + v_Mz;
+        const Real v_mx_out = t51 + v_mx;
+        const Real v_my_out = t52 + v_my;
+        const Real v_mz_out = t53 + v_mz;
         const Real finite0 = std::fma(v_Mx_out, Real(0), v_My_out * Real(0));
         const Real finite1 = std::fma(v_Mz_out, Real(0), v_mx_out * Real(0));
         const Real finite2 = std::fma(v_my_out, Real(0), v_mz_out * Real(0));
         const Real finite3 = finite0 + finite1;
         const Real finite4 = finite3 + finite2;
-        const bool written = usable && (finite4 == Real(0));
+        const bool finite = (finite4 == Real(0));
+        const bool doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t14), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t0)), detail::zero_as_min(t20)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t24), detail::zero_as_min(t4)), detail::zero_as_min(t23)), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t12)), detail::zero_as_min(t30))), detail::least(detail::most(detail::most(std::fabs(t38), detail::zero_as_min(t37)), detail::zero_as_min(t36)), detail::most(detail::most(std::fabs(t41), detail::zero_as_min(t40)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(std::fabs(t42), detail::most(detail::most(std::fabs(t46), detail::zero_as_min(t45)), detail::zero_as_min(m))), detail::least(detail::most(std::fabs(t47), detail::zero_as_min(t0)), detail::most(std::fabs(t48), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t49), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t50), detail::zero_as_min(t45)), detail::zero_as_min(M))), detail::least(detail::most(std::fabs(t51), detail::zero_as_min(t0)), detail::most(std::fabs(t52), detail::zero_as_min(t4)))))), detail::most(std::fabs(t53), detail::zero_as_min(t12))), std::numeric_limits<Real>::min());
+        const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
         v_Mz_[i] = written ? v_Mz_out : v_Mz_[i];
         v_mx_[i] = written ? v_mx_out : v_mx_[i];
         v_my_[i] = written ? v_my_out : v_my_[i];
         v_mz_[i] = written ? v_mz_out : v_mz_[i];
-        if constexpr (with_status)
-            status_[i] = resolved && !written ? status::out_of_range : outcome;
+        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+    }
+}
+
+// The pairs collide_batch_3d left to the scalar collide (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_batch_3d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide<Real>(M_[i], m_[i], std::array<Real, 3>{C_Mx_[i], C_My_[i], C_Mz_[i]}, std::array<Real, 3>{C_mx_[i], C_my_[i], C_mz_[i]}, std::array<Real, 3>{v_Mx_[i], v_My_[i], v_Mz_[i]}, std::array<Real, 3>{v_mx_[i], v_my_[i], v_mz_[i]}, eps_[i]);
+        v_Mx_[i] = out.v_M[0];
+        v_My_[i] = out.v_M[1];
+        v_Mz_[i] = out.v_M[2];
+        v_mx_[i] = out.v_m[0];
+        v_my_[i] = out.v_m[1];
+        v_mz_[i] = out.v_m[2];
+        status_[i] = out.status;
     }
 }
 
@@ -279,6 +341,7 @@ template <class Real, bool with_status>
 inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
+    impact::status own[block];  // the statuses, where the caller wants none
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -300,9 +363,11 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+        collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 // collide_batch_3d over blocks of 8 pairs for arrays that start at one offset within their pages:
@@ -313,6 +378,7 @@ template <class Real, bool with_status>
 inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 9;
+    impact::status own[block];  // the statuses, where the caller wants none
     const Real* const from[read_only] = {M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, eps_};
     alignas(64) Real stage[read_only][ring][block];
     auto lead = [](std::size_t k) { return 2 * (k + 1); };
@@ -358,9 +424,11 @@ inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRI
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : status_);
+        collide_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
+        collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_);
+    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail

@@ -32,6 +32,11 @@ struct collide_line_result {
 ///   separating: unless v_M-v_m > 0
 ///   out_of_range: the values leave the type's range (a divisor below
 ///     detail::smallest_divisor or infinite, a result not finite).
+///   underflow: a value of the arithmetic below (a product, quotient, fused
+///     multiply-add or function; not a correction of compensated arithmetic) is
+///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
+///     multiplies or divides is not: it lost digits, and the result could be
+///     imprecise. Zero inputs are ordinary.
 template <class Real>
 inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
@@ -54,26 +59,48 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
         return out;
     }
     const Real t1 = M * v_M;
-    const Real t2 = eps * t0;
-    const Real t3 = M + m;
-    if (!(std::fabs(t3) >= detail::smallest_divisor<Real>) || !(std::fabs(t3) <= std::numeric_limits<Real>::max())) {
+    const Real t2 = std::fma(m, v_m, t1);
+    const Real t3 = eps * t0;
+    const Real t4 = -m;
+    const Real t5 = std::fma(t4, t3, t2);
+    const Real t6 = M + m;
+    if (!(std::fabs(t6) >= detail::smallest_divisor<Real>) || !(std::fabs(t6) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t4 = M * m;
-    const Real t5 = Real(1) + eps;
-    const Real t6 = t5 - Real(1);
-    const Real t7 = t4 * t5;
-    const Real t8 = t0 - v_M;
-    const Real t9 = t7 * t0;
-    const Real t10 = t3 - M;
-    const Real t11 = t9 / t3;
-    const Real t12 = -t11;
-    const Real result0 = std::fma(-m, t2, std::fma(m, v_m, t1)) / t3;
-    const Real result1 = std::fma(m, v_m, std::fma(M, t2, t1)) / t3;
-    const Real result2 = t11 + std::fma(t12, M - (t3 - t10) + (m - t10), std::fma(t12, t3, t9) + std::fma(std::fma(std::fma(M, m, -t4), t5, std::fma(t4, Real(1) - (t5 - t6) + (eps - t6), std::fma(t4, t5, -t7))), t0, std::fma(t7, v_M - (t0 - t8) - (v_m + t8), std::fma(t7, t0, -t9)))) / t3;
+    const Real t7 = t5 / t6;
+    const Real t8 = std::fma(M, t3, t1);
+    const Real t9 = std::fma(m, v_m, t8);
+    const Real t10 = t9 / t6;
+    const Real t11 = M * m;
+    const Real t12 = Real(1) + eps;
+    const Real t13 = t12 - Real(1);
+    const Real t14 = t11 * t12;
+    const Real t15 = t0 - v_M;
+    const Real t16 = t14 * t0;
+    const Real t17 = t6 - M;
+    const Real t18 = t16 / t6;
+    const Real t19 = -t18;
+    const Real result0 = t7;
+    const Real result1 = t10;
+    const Real result2 = t18 + std::fma(t19, M - (t6 - t17) + (m - t17), std::fma(t19, t6, t16) + std::fma(std::fma(std::fma(M, m, -t11), t12, std::fma(t11, Real(1) - (t12 - t13) + (eps - t13), std::fma(t11, t12, -t14))), t0, std::fma(t14, v_M - (t0 - t15) - (v_m + t15), std::fma(t14, t0, -t16)))) / t6;
     if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2)) {
         out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && M != Real(0) && v_M != Real(0)) ||
+        (std::fabs(t2) < std::numeric_limits<Real>::min() && (t2 != Real(0) || (t1 == Real(0) && m != Real(0) && v_m != Real(0)))) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && eps != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t2 == Real(0) && t4 != Real(0) && t3 != Real(0)))) ||
+        (std::fabs(t7) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && (t8 != Real(0) || (t1 == Real(0) && M != Real(0) && t3 != Real(0)))) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && (t9 != Real(0) || (t8 == Real(0) && m != Real(0) && v_m != Real(0)))) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t9 != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t11 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t14 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && t16 != Real(0))) {
+        out.status = status::underflow;
         return out;
     }
     out.v_M = result0;

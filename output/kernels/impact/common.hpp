@@ -49,7 +49,7 @@ namespace impact {
 /// As wide as a double, so that a vectorised batch loop over doubles keeps one
 /// width in every lane: with a narrower status, compilers pack two vectors of
 /// doubles per vector of statuses, and the loop runs short of registers.
-enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range };
+enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range, underflow };
 
 namespace detail {
 
@@ -59,6 +59,38 @@ namespace detail {
 template <class Real>
 constexpr Real smallest_divisor =
     std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();
+
+/// The smaller and the larger of a and b (one instruction each in vectors: a batch
+/// loop takes the least magnitude of the values it tests for status::underflow).
+template <class Real>
+IMPACT_ALWAYS_INLINE Real least(Real a, Real b) noexcept
+{
+    return a < b ? a : b;
+}
+template <class Real>
+IMPACT_ALWAYS_INLINE Real most(Real a, Real b) noexcept
+{
+    return a < b ? b : a;
+}
+
+/// 2^k with (|x| s) s >= 1 for every x not 0, the smallest subnormal number included.
+template <class Real>
+constexpr Real underflow_scale = [] {
+    Real s = 1;
+    for (int k = 0; k < (std::numeric_limits<Real>::digits - std::numeric_limits<Real>::min_exponent + 2) / 2; ++k)
+        s *= 2;
+    return s;
+}();
+
+/// min where x is 0, and not above 0 elsewhere, without a comparison: a product with a
+/// factor x that is 0 is 0 as it should be, and counts as min in a batch loop's least
+/// magnitude.
+template <class Real>
+IMPACT_ALWAYS_INLINE Real zero_as_min(Real x) noexcept
+{
+    return std::fma(-(std::fabs(x) * underflow_scale<Real>), underflow_scale<Real>, Real(1)) *
+           std::numeric_limits<Real>::min();
+}
 
 } // namespace detail
 

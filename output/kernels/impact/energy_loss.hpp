@@ -19,6 +19,11 @@ namespace impact {
 ///   non_finite: v_M, v_m not finite
 ///   out_of_range: the values leave the type's range (a divisor below
 ///     detail::smallest_divisor or infinite, a result not finite).
+///   underflow: a value of the arithmetic below (a product, quotient, fused
+///     multiply-add or function; not a correction of compensated arithmetic) is
+///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
+///     multiplies or divides is not: it lost digits, and the result could be
+///     imprecise. Zero inputs are ordinary.
 template <class Real>
 inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
@@ -49,10 +54,20 @@ inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
     if (!(std::fabs(t14) >= detail::smallest_divisor<Real>) || !(std::fabs(t14) <= std::numeric_limits<Real>::max())) {
         return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
     }
-    const Real t15 = -(t11 / t14);
-    const Real result0 = t15 + -(std::fma(t15, std::fma(Real(2), M - (t12 - t13) + (m - t13), std::fma(Real(2), t12, -t14)), std::fma(t15, t14, t11) + std::fma(std::fma(std::fma(std::fma(M, m, -t0), t1, std::fma(t0, Real(1) - (t1 - t2) + (eps - t2), std::fma(t0, t1, -t3))), t4, std::fma(t3, Real(1) - (t4 - t5) - (eps + t5), std::fma(t3, t4, -t6))), t10, std::fma(t6, std::fma(t9, t7, std::fma(t7, t9, std::fma(t7, t7, -t10))), std::fma(t6, t10, -t11)))) / t14);
+    const Real t15 = t11 / t14;
+    const Real t16 = -t15;
+    const Real result0 = t16 + -(std::fma(t16, std::fma(Real(2), M - (t12 - t13) + (m - t13), std::fma(Real(2), t12, -t14)), std::fma(t16, t14, t11) + std::fma(std::fma(std::fma(std::fma(M, m, -t0), t1, std::fma(t0, Real(1) - (t1 - t2) + (eps - t2), std::fma(t0, t1, -t3))), t4, std::fma(t3, Real(1) - (t4 - t5) - (eps + t5), std::fma(t3, t4, -t6))), t10, std::fma(t6, std::fma(t9, t7, std::fma(t7, t9, std::fma(t7, t7, -t10))), std::fma(t6, t10, -t11)))) / t14);
     if (!std::isfinite(result0)) {
         return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
+    }
+    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t0 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t3 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t7 != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && t6 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && t11 != Real(0))) {
+        return std::numeric_limits<Real>::quiet_NaN();  // underflow
     }
     return result0;
 }

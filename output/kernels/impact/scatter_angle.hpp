@@ -14,7 +14,13 @@ namespace impact {
 /// A quiet NaN when the inputs are refused, for the first of these reasons that applies:
 ///   invalid_restitution: eps outside [0, 1]
 ///   invalid_speed: v_par, v_perp not positive and finite
-///   out_of_range: the values leave the type's range (a result not finite).
+///   out_of_range: the values leave the type's range (an argument of a function
+///     or a result not finite).
+///   underflow: a value of the arithmetic below (a product, quotient, fused
+///     multiply-add or function; not a correction of compensated arithmetic) is
+///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
+///     multiplies or divides is not: it lost digits, and the result could be
+///     imprecise. Zero inputs are ordinary.
 template <class Real>
 inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
 {
@@ -26,9 +32,18 @@ inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
     if (!(v_1par > Real(0)) || !std::isfinite(v_1par) || !(v_1perp > Real(0)) || !std::isfinite(v_1perp)) {
         return std::numeric_limits<Real>::quiet_NaN();  // invalid_speed
     }
-    const Real result0 = std::atan2(Real(2) * v_1perp, v_1par * (Real(1) - eps));
-    if (!std::isfinite(result0)) {
+    const Real t0 = Real(2) * v_1perp;
+    const Real t1 = Real(1) - eps;
+    const Real t2 = v_1par * t1;
+    const Real t3 = std::atan2(t0, t2);
+    const Real result0 = t3;
+    if (!std::isfinite(t0) || !std::isfinite(t2) || !std::isfinite(result0)) {
         return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
+    }
+    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && v_1perp != Real(0)) ||
+        (std::fabs(t2) < std::numeric_limits<Real>::min() && v_1par != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t0 != Real(0))) {
+        return std::numeric_limits<Real>::quiet_NaN();  // underflow
     }
     return result0;
 }
