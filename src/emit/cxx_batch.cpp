@@ -298,7 +298,10 @@ void print_batch(std::string& out, const kernel_plan& plan)
     }
     const bool with_status = !k.guards.empty();
 
-    out += fmt::format("\nnamespace detail {{\n\n// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
+    out += "\nnamespace detail {\n\n";
+    if (with_status)
+        print_input_k(out, loop, plan);
+    out += fmt::format("// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
                        "// block's call runs one pass of 8 pairs.\n", k.name, n);
     out += fmt::format("template <class Real{}>\nIMPACT_ALWAYS_INLINE void {}(std::size_t count, {}) noexcept\n{{\n"
                        "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
@@ -407,30 +410,19 @@ void print_batch(std::string& out, const kernel_plan& plan)
             out += fmt::format("        const bool written = usable && {};\n", finite);
         } else {
             out += fmt::format("        const bool finite = {};\n", finite);
-            // The scalar kernel's underflow test costs about as much as the loop's arithmetic:
-            // the loop takes only the smallest magnitude of the values it tests (a balanced
-            // tree of minima), and leaves a pair where that is below the normal range, or 0,
-            // to the scalar kernel (status underflow here, then `settle`). A value 0 because an
-            // operand that may be 0 is (centres level in an axis) counts as min, without a
-            // comparison (detail::zero_as_min), so that such pairs stay in the loop: with a
-            // comparison and a blend per value, GCC no longer takes minima in one instruction,
-            // and the 3D loop ran at 0.38 of its speed before the test, against 0.61.
-            std::vector<std::string> terms;
-            for (std::size_t v = 0; v < code.watched_values.size(); ++v) {
-                std::string term = fmt::format("std::fabs({})", code.watched_values[v]);
-                for (const std::string& operand : code.watched_zero_if[v])
-                    term = fmt::format("detail::most({}, detail::zero_as_min({}))", term, operand);
-                terms.push_back(term);
-            }
-            while (terms.size() > 1) {
-                std::vector<std::string> pairs;
-                for (std::size_t t = 0; t < terms.size(); t += 2)
-                    pairs.push_back(t + 1 < terms.size() ? fmt::format("detail::least({}, {})", terms[t], terms[t + 1])
-                                                         : terms[t]);
-                terms = std::move(pairs);
-            }
-            out += fmt::format("        const bool doubtful = !std::isgreaterequal({}, std::numeric_limits<Real>::min());\n",
-                               terms.front());
+            // The scalar kernel's underflow test costs about as much as the loop's arithmetic,
+            // and a least magnitude of the values it tests more than half of it: the loop
+            // tests the inputs' range only (detail::<loop>_k), and leaves a pair outside it
+            // to the scalar kernel (status underflow here, then `settle`). An input 0 passes.
+            std::vector<std::string> low, high;
+            for (const compile::instruction& in : arithmetic.code)
+                if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
+                    low.push_back(fmt::format("({0} == Real(0) ? Real(1) : std::fabs({0}))", plain_names[in.input]));
+                    high.push_back(fmt::format("std::fabs({})", plain_names[in.input]));
+                }
+            out += fmt::format("        constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
+                               "        const bool doubtful = !(std::isgreaterequal({1}, lowest) & std::islessequal({2}, highest));\n",
+                               loop, balanced("detail::least", low), balanced("detail::most", high));
             out += "        const bool written = usable && finite && !doubtful;\n";
         }
         for (const auto& [target, result] : writes)

@@ -5,6 +5,7 @@
 
 #include "emit/cxx.h"
 #include "emit/program_cxx.h"
+#include "compile/range.h"
 
 #include <string>
 #include <vector>
@@ -64,6 +65,13 @@ extern const char* const kernel_prelude;
 void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan);
 /// The batch kernel of a kernel with `batch = true`.
 void print_batch(std::string& out, const kernel_plan& plan);
+/// `f` of `terms` as a balanced tree: f(f(a, b), f(c, d)), ...
+std::string balanced(const std::string& f, std::vector<std::string> terms);
+/// `detail::<loop>_k<Real>`: the exponent k of the loop's input range, per format.
+void print_input_k(std::string& out, const std::string& loop, const kernel_plan& plan);
+/// The formats a batch loop's input range is derived for, in the order of detail::input_k's
+/// arguments (common.hpp): float, double, x87's and IEEE's quadruple long double.
+inline constexpr compile::float_format batch_formats[] = {{24, -125, 128}, {53, -1021, 1024}, {64, -16381, 16384}, {113, -16381, 16384}};
 /// The arrays of `<name>_batch_data`, owned, in one allocation laid out for speed.
 void print_batch_arrays(std::string& out, const engine::kernel& k);
 /// Whether a batch kernel gets a skewed block loop too (and common.hpp detail::crowded).

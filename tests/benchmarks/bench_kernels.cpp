@@ -258,7 +258,10 @@ inline double div(dd a, dd b)
 
 // Written as one would by hand for speed: no branches (each status decided by masks, the
 // denominator of a pair not resolved replaced by 1), arrays that do not overlap, so that
-// the compiler vectorises the loop as it does the generated one.
+// the compiler vectorises the loop as it does the generated one. Held to the same contract
+// as the generated loop, underflow included (like with like): a pair whose inputs are not
+// all 0 or within [2^-k, 2^k] (k the generated header's, detail::collide_batch_<D>d_k) is
+// left to the scalar kernel after its block of 8, which decides exactly.
 template <std::size_t D>
 [[gnu::noinline]] void hand_written(pairs<D>& p)
 {
@@ -276,6 +279,8 @@ template <std::size_t D>
     impact::status* __restrict status = p.status.data();
     // Blocks of 8 pairs, every array asked for 64 pairs ahead, as the generated batch does.
     constexpr std::size_t block = 8, ahead = 64;
+    constexpr int k = D == 2 ? impact::detail::collide_batch_2d_k<double> : impact::detail::collide_batch_3d_k<double>;
+    constexpr double lowest = impact::detail::power_of_2<double>(-k), highest = impact::detail::power_of_2<double>(k);
     const auto pairs_from = [&](std::size_t first, std::size_t n) __attribute__((always_inline)) {
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = first; i < first + n; ++i) {
@@ -302,6 +307,16 @@ template <std::size_t D>
         s = bad_eps ? impact::status::invalid_restitution : s;
         s = bad_mass ? impact::status::invalid_mass : s;
         const bool ok = s == impact::status::ok;
+        // The inputs' range: the least magnitude not 0, and the largest.
+        double low = std::fmin(M[i], m[i]), high = std::fmax(M[i], m[i]);
+        low = std::fmin(low, eps[i] == 0 ? 1.0 : eps[i]);
+        high = std::fmax(high, eps[i]);
+        for (std::size_t d = 0; d < D; ++d)
+            for (const double x : {C_M[d][i], C_m[d][i], v_M[d][i], v_m[d][i]}) {
+                low = std::fmin(low, x == 0 ? 1.0 : std::fabs(x));
+                high = std::fmax(high, std::fabs(x));
+            }
+        const bool in_range = std::isgreaterequal(low, lowest) & std::islessequal(high, highest);
 
         // k = (1 + eps) (dv . r) / ((M + m) r . r), in double-double, then the updates.
         const dd r0 = two_sum(C_M[0][i], -C_m[0][i]);
@@ -325,13 +340,38 @@ template <std::size_t D>
             after_m[d] = v_m[d][i] + k * M[i] * r[d];
             results = std::fma(after_M[d], 0.0, std::fma(after_m[d], 0.0, results));
         }
-        const bool written = usable && results == 0;
+        const bool written = usable && results == 0 && in_range;
         for (std::size_t d = 0; d < D; ++d) {
             v_M[d][i] = written ? after_M[d] : v_M[d][i];
             v_m[d][i] = written ? after_m[d] : v_m[d][i];
         }
-        status[i] = ok && !written ? impact::status::out_of_range : s;
+        status[i] = ok && !written ? (usable && results == 0 ? impact::status::underflow : impact::status::out_of_range) : s;
     }
+    };
+    // The pairs left to the scalar kernel.
+    const auto settle = [&](std::size_t first, std::size_t n) {
+        bool any = false;
+        for (std::size_t i = first; i < first + n; ++i)
+            any |= status[i] == impact::status::underflow;
+        if (!any)
+            return;
+        for (std::size_t i = first; i < first + n; ++i) {
+            if (status[i] != impact::status::underflow)
+                continue;
+            std::array<double, D> cM, cm, vM, vm;
+            for (std::size_t d = 0; d < D; ++d) {
+                cM[d] = C_M[d][i];
+                cm[d] = C_m[d][i];
+                vM[d] = v_M[d][i];
+                vm[d] = v_m[d][i];
+            }
+            const auto r = impact::collide(M[i], m[i], cM, cm, vM, vm, eps[i]);
+            for (std::size_t d = 0; d < D; ++d) {
+                v_M[d][i] = r.v_M[d];
+                v_m[d][i] = r.v_m[d];
+            }
+            status[i] = r.status;
+        }
     };
     std::size_t b = 0;
     for (; b + block <= p.count; b += block) {
@@ -347,8 +387,10 @@ template <std::size_t D>
             __builtin_prefetch(status + b + ahead, 1);
         }
         pairs_from(b, block);
+        settle(b, block);
     }
     pairs_from(b, p.count - b);
+    settle(b, p.count - b);
 }
 
 // ---- Benchmarks -------------------------------------------------------------------

@@ -61,7 +61,7 @@ constexpr Real smallest_divisor =
     std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();
 
 /// The smaller and the larger of a and b (one instruction each in vectors: a batch
-/// loop takes the least magnitude of the values it tests for status::underflow).
+/// loop takes the least and the largest magnitude of its inputs, for status::underflow).
 template <class Real>
 IMPACT_ALWAYS_INLINE Real least(Real a, Real b) noexcept
 {
@@ -73,23 +73,34 @@ IMPACT_ALWAYS_INLINE Real most(Real a, Real b) noexcept
     return a < b ? b : a;
 }
 
-/// 2^k with (|x| s) s >= 1 for every x not 0, the smallest subnormal number included.
-template <class Real>
-constexpr Real underflow_scale = [] {
-    Real s = 1;
-    for (int k = 0; k < (std::numeric_limits<Real>::digits - std::numeric_limits<Real>::min_exponent + 2) / 2; ++k)
-        s *= 2;
-    return s;
-}();
-
-/// min where x is 0, and not above 0 elsewhere, without a comparison: a product with a
-/// factor x that is 0 is 0 as it should be, and counts as min in a batch loop's least
-/// magnitude.
-template <class Real>
-IMPACT_ALWAYS_INLINE Real zero_as_min(Real x) noexcept
+/// The exponent k of a batch loop's input range for Real, given for each format it
+/// knows (mantissa digits 24, 53, 64, 113: float, double, x87's and IEEE's quadruple
+/// long double); -1 (every pair left to the scalar kernel) for any other.
+constexpr int format_k(int digits, int min_exponent, int max_exponent, int k24, int k53, int k64, int k113) noexcept
 {
-    return std::fma(-(std::fabs(x) * underflow_scale<Real>), underflow_scale<Real>, Real(1)) *
-           std::numeric_limits<Real>::min();
+    return digits == 24 && min_exponent == -125 && max_exponent == 128        ? k24
+           : digits == 53 && min_exponent == -1021 && max_exponent == 1024    ? k53
+           : digits == 64 && min_exponent == -16381 && max_exponent == 16384  ? k64
+           : digits == 113 && min_exponent == -16381 && max_exponent == 16384 ? k113
+                                                                               : -1;
+}
+template <class Real>
+constexpr int input_k(int k24, int k53, int k64, int k113) noexcept
+{
+    using limits = std::numeric_limits<Real>;
+    return limits::radix == 2 ? format_k(limits::digits, limits::min_exponent, limits::max_exponent, k24, k53, k64, k113) : -1;
+}
+
+/// 2^e, exactly (e within the type's exponents).
+template <class Real>
+constexpr Real power_of_2(int e) noexcept
+{
+    Real r = 1;
+    for (; e > 0; --e)
+        r *= 2;
+    for (; e < 0; ++e)
+        r /= 2;
+    return r;
 }
 
 } // namespace detail
