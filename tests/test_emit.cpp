@@ -2,8 +2,12 @@
 #define BOOST_TEST_MODULE test_emit
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+#include <limits>
+
 #include "emit/cxx.h"
 #include "compile/program.h"
+#include "compile/range.h"
 #include "emit/program_cxx.h"
 #include "engine/infix.h"
 
@@ -113,6 +117,33 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_finishes_with_values_before_reading_m
     BOOST_TEST(both.size() == 2u);
     BOOST_TEST(both[0] == 0.75 * 3.375 + 3.875 * 2.34375);
     BOOST_TEST(both[1] == 3.875);
+}
+
+BOOST_AUTO_TEST_CASE(input_range_keeps_every_product_normal_and_no_wider)
+{
+    // a b with |a|, |b| in [2^-k, 2^k] is within [2^-2k, 2^2k]: normal in double up to
+    // k = 511 (2^-1022 is the least normal number, 2^1023 below the largest), in float up to
+    // 63 (2^-126, 2^127).
+    using compile::opcode;
+    const compile::float_format single{24, -125, 128}, twice{53, -1021, 1024};
+    program_builder product(2);
+    product.p.outputs.push_back(product(opcode::mul, 0, 1));
+    const std::vector<bool> all(product.p.code.size(), true);
+    BOOST_TEST(compile::input_exponent_bound(product.p, all, twice) == 511);
+    BOOST_TEST(compile::input_exponent_bound(product.p, all, single) == 63);
+
+    // (a - b)^2: a difference not 0 of numbers of at least 2^-k is at least their ulp,
+    // 2^(-k - 52) in double, its square 2^(-2k - 104): normal up to k = 459. At k = 460 it
+    // can be below the normal range: a = 2^-460 (1 + 2^-52), b = 2^-460.
+    program_builder square(2);
+    const int difference = square(opcode::sub, 0, 1);
+    square.p.outputs.push_back(square(opcode::mul, difference, difference));
+    const std::vector<bool> every(square.p.code.size(), true);
+    BOOST_TEST(compile::input_exponent_bound(square.p, every, twice) == 459);
+    BOOST_TEST(compile::input_exponent_bound(square.p, every, single) == 40);  // 2^(-2k - 46) >= 2^-126
+    const double b = std::ldexp(1.0, -460), a = b + std::ldexp(1.0, -512);
+    BOOST_TEST(compile::run<double>(square.p, {a, b}).front() < std::numeric_limits<double>::min());
+    BOOST_TEST(compile::run<double>(square.p, {2 * a, 2 * b}).front() == std::numeric_limits<double>::min());
 }
 
 BOOST_AUTO_TEST_CASE(ordered_for_registers_divides_only_once_every_divisor_is_known)

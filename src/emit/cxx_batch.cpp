@@ -348,8 +348,6 @@ void print_batch(std::string& out, const kernel_plan& plan)
     // The arithmetic, every lane computed; a lane not resolved divides by 1.
     if (with_status)
         out += "        // Every pair is computed; one not resolved divides by 1, and its results are discarded.\n";
-    for (const lane_input& in : inputs)
-        out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
     compile::program outputs_only = plan.code;  // the guards' values are computed above
     outputs_only.outputs.erase(outputs_only.outputs.begin(),
                                outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
@@ -358,6 +356,27 @@ void print_batch(std::string& out, const kernel_plan& plan)
     const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
     const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
                                       with_status ? for_outputs : std::vector<bool>{});
+    for (const lane_input& in : inputs)
+        out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
+    if (with_status && !code.underflows.empty()) {
+        // The scalar kernel's underflow test costs about as much as the loop's arithmetic,
+        // and a least magnitude of the values it tests more than half of it: the loop
+        // tests the inputs' range only (detail::<loop>_k), and leaves a pair outside it
+        // to the scalar kernel (status underflow here, then `settle`). An input 0 passes
+        // (detail::magnitude_or). Tested as the inputs are read: tested at the end, the loop
+        // kept them all live, and ran slower.
+        std::vector<std::string> low, high;
+        for (const compile::instruction& in : arithmetic.code)
+            if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
+                low.push_back(fmt::format("detail::magnitude_or({}, lowest)", plain_names[in.input]));
+                high.push_back(fmt::format("std::fabs({})", plain_names[in.input]));
+            }
+        out += fmt::format("        bool doubtful = false;\n        if constexpr ({0}_k<Real> >= 0) {{\n"
+                           "            constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
+                           "            doubtful = !(std::isgreaterequal({1}, lowest) & std::islessequal({2}, highest));\n"
+                           "        }}\n",
+                           loop, balanced("detail::least", low), balanced("detail::most", high));
+    }
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
     // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
     // GCC if-converts; with `&`, it leaves the loop's conditional stores unvectorised.)
@@ -410,19 +429,10 @@ void print_batch(std::string& out, const kernel_plan& plan)
             out += fmt::format("        const bool written = usable && {};\n", finite);
         } else {
             out += fmt::format("        const bool finite = {};\n", finite);
-            // The scalar kernel's underflow test costs about as much as the loop's arithmetic,
-            // and a least magnitude of the values it tests more than half of it: the loop
-            // tests the inputs' range only (detail::<loop>_k), and leaves a pair outside it
-            // to the scalar kernel (status underflow here, then `settle`). An input 0 passes.
-            std::vector<std::string> low, high;
-            for (const compile::instruction& in : arithmetic.code)
-                if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
-                    low.push_back(fmt::format("({0} == Real(0) ? Real(1) : std::fabs({0}))", plain_names[in.input]));
-                    high.push_back(fmt::format("std::fabs({})", plain_names[in.input]));
-                }
-            out += fmt::format("        constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
-                               "        const bool doubtful = !(std::isgreaterequal({1}, lowest) & std::islessequal({2}, highest));\n",
-                               loop, balanced("detail::least", low), balanced("detail::most", high));
+            // Where the format has no range (k = -1), the least magnitude of the values tested.
+            out += fmt::format("        if constexpr ({}_k<Real> < 0)\n"
+                               "            doubtful = !std::isgreaterequal({}, std::numeric_limits<Real>::min());\n",
+                               loop, least_magnitude(code));
             out += "        const bool written = usable && finite && !doubtful;\n";
         }
         for (const auto& [target, result] : writes)

@@ -69,6 +69,9 @@ void print_batch(std::string& out, const kernel_plan& plan);
 std::string balanced(const std::string& f, std::vector<std::string> terms);
 /// `detail::<loop>_k<Real>`: the exponent k of the loop's input range, per format.
 void print_input_k(std::string& out, const std::string& loop, const kernel_plan& plan);
+/// The least magnitude of the values `code` tests for underflow (detail::zero_as_min for
+/// operands that may be 0), where a format has no input range.
+std::string least_magnitude(const cxx_code& code);
 /// The formats a batch loop's input range is derived for, in the order of detail::input_k's
 /// arguments (common.hpp): float, double, x87's and IEEE's quadruple long double.
 inline constexpr compile::float_format batch_formats[] = {{24, -125, 128}, {53, -1021, 1024}, {64, -16381, 16384}, {113, -16381, 16384}};

@@ -40,9 +40,25 @@ void print_input_k(std::string& out, const std::string& loop, const kernel_plan&
         "// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the\n"
         "// bounds crosswise, a square root halves them, atan2(y, x) lies within\n"
         "// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's\n"
-        "// quadruple long double): k = {1}; -1 leaves every pair to the scalar kernel.\n"
+        "// quadruple long double): k = {1}; where it is -1, the loop tests the least magnitude of the values.\n"
         "template <class Real>\nconstexpr int {0}_k = input_k<Real>({1});\n\n",
         loop, fmt::join(ks, ", "));
+}
+
+// The least magnitude of the values the scalar kernel tests for underflow, a balanced tree
+// of minima, for a format without an input range: a value 0 because an operand that may be
+// 0 is (centres level in an axis) counts as min, without a comparison (detail::zero_as_min):
+// with a comparison and a blend per value, GCC no longer takes minima in one instruction.
+std::string least_magnitude(const cxx_code& code)
+{
+    std::vector<std::string> terms;
+    for (std::size_t v = 0; v < code.watched_values.size(); ++v) {
+        std::string term = fmt::format("std::fabs({})", code.watched_values[v]);
+        for (const std::string& operand : code.watched_zero_if[v])
+            term = fmt::format("detail::most({}, detail::zero_as_min({}))", term, operand);
+        terms.push_back(term);
+    }
+    return balanced("detail::least", terms);
 }
 
 } // namespace impact::emit::cxx_detail

@@ -43,6 +43,16 @@ std::vector<int> multiplied(const program& p, const instruction& in)
     return of;
 }
 
+// Whether value o may be 0 where nothing underflowed, as an input, a sum or a difference
+// may (a product or quotient of values not 0 is not 0 unless it underflowed).
+bool may_be_zero(const program& p, int o)
+{
+    while (p.code[o].op == opcode::neg)
+        o = p.code[o].a;
+    const opcode op = p.code[o].op;
+    return op == opcode::input || op == opcode::add || op == opcode::sub || op == opcode::select;
+}
+
 // The test that value v (written text[v]) fell below the normal range, as cxx_code says.
 std::string underflow_test(const program& p, std::size_t v, const std::vector<std::string>& text)
 {
@@ -151,6 +161,12 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             continue;
         code.underflows.push_back(underflow_test(p, v, text));
         code.watched_values.push_back(text[v]);
+        std::vector<std::string> zero_if;  // operands that may be 0, making the value 0 as it should be
+        if (p.code[v].op != opcode::fma)
+            for (int o : multiplied(p, p.code[v]))
+                if (may_be_zero(p, o))
+                    zero_if.push_back(text[o]);
+        code.watched_zero_if.push_back(std::move(zero_if));
         if (p.code[v].op == opcode::call)
             for (int o : operands(p.code[v]))
                 if (p.code[o].op != opcode::constant)

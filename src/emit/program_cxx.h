@@ -27,8 +27,10 @@ namespace impact::emit {
 /// std::numeric_limits<Real>::min(), or a product (of a fused multiply-add, one added to
 /// 0) or quotient that is 0 though what it multiplies or divides is not (for atan2(y, x),
 /// 0 though y is not). A batch loop, whose exact test would cost as much as its arithmetic,
-/// tests its inputs' range instead (compile::input_exponent_bound), and leaves a pair
-/// outside it to the scalar kernel.
+/// tests its inputs' range instead (compile::input_exponent_bound), or, for a format where
+/// no range can be derived, the least magnitude of `watched_values` (a value 0 because an
+/// operand that may be 0 is, counted as min), and leaves a pair outside, or where that is
+/// below the normal range, or 0, to the scalar kernel.
 struct cxx_code {
     std::vector<std::string> statements;
     std::vector<int> statement_values;   ///< the value each statement computes
@@ -38,6 +40,9 @@ struct cxx_code {
     bool divides_early = false;
     std::vector<std::string> underflows;
     std::vector<std::string> watched_values;  ///< the values `underflows` tests (named), but inputs
+    /// For each of `watched_values`, its operands that may be 0 (an input, a sum, a difference),
+    /// making it 0 as it should be; none for a fused multiply-add (a 0 goes to the scalar kernel).
+    std::vector<std::vector<std::string>> watched_zero_if;
     /// With `watched`, the arguments of its functions (named): a function can hide an
     /// overflow (atan2 of an infinity is finite), so a kernel tests them as it tests its results.
     std::vector<std::string> arguments;

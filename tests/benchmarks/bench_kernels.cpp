@@ -308,14 +308,24 @@ template <std::size_t D>
         s = bad_mass ? impact::status::invalid_mass : s;
         const bool ok = s == impact::status::ok;
         // The inputs' range: the least magnitude not 0, and the largest.
-        double low = std::fmin(M[i], m[i]), high = std::fmax(M[i], m[i]);
-        low = std::fmin(low, eps[i] == 0 ? 1.0 : eps[i]);
-        high = std::fmax(high, eps[i]);
-        for (std::size_t d = 0; d < D; ++d)
-            for (const double x : {C_M[d][i], C_m[d][i], v_M[d][i], v_m[d][i]}) {
-                low = std::fmin(low, x == 0 ? 1.0 : std::fabs(x));
-                high = std::fmax(high, std::fabs(x));
-            }
+        // (An input 0 is admitted through impact::detail::magnitude_or, as in the generated
+        // loop: with a comparison and a blend per input, it runs at half the speed.)
+        const auto least = [](double a, double b) { return a < b ? a : b; };
+        const auto most = [](double a, double b) { return a < b ? b : a; };
+        double low = least(M[i], m[i]), high = most(M[i], m[i]);
+        low = least(low, impact::detail::magnitude_or(eps[i], lowest));
+        high = most(high, eps[i]);
+        // Each axis written out (a loop over the axes left GCC's 3D loop unvectorised).
+        const auto axis = [&](std::size_t d) __attribute__((always_inline)) {
+            low = least(least(low, impact::detail::magnitude_or(C_M[d][i], lowest)), impact::detail::magnitude_or(C_m[d][i], lowest));
+            low = least(least(low, impact::detail::magnitude_or(v_M[d][i], lowest)), impact::detail::magnitude_or(v_m[d][i], lowest));
+            high = most(most(high, std::fabs(C_M[d][i])), std::fabs(C_m[d][i]));
+            high = most(most(high, std::fabs(v_M[d][i])), std::fabs(v_m[d][i]));
+        };
+        axis(0);
+        axis(1);
+        if constexpr (D == 3)
+            axis(2);
         const bool in_range = std::isgreaterequal(low, lowest) & std::islessequal(high, highest);
 
         // k = (1 + eps) (dv . r) / ((M + m) r . r), in double-double, then the updates.

@@ -151,7 +151,7 @@ namespace detail {
 // rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
 // bounds crosswise, a square root halves them, atan2(y, x) lies within
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, 37, 1127, 1096; -1 leaves every pair to the scalar kernel.
+// quadruple long double): k = -1, 37, 1127, 1096; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
 constexpr int collide_batch_2d_k = input_k<Real>(-1, 37, 1127, 1096);
 
@@ -206,6 +206,11 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real v_mx = v_mx_[i];
         const Real v_my = v_my_[i];
         const Real eps = eps_[i];
+        bool doubtful = false;
+        if constexpr (collide_batch_2d_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_k<Real>);
+            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My)))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), std::fabs(eps))), highest));
+        }
         const Real t0 = C_Mx - C_mx;
         const Real t1 = t0 * t0;
         const Real t2 = C_My - C_my;
@@ -249,8 +254,8 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real v_mx_out = t35 + v_mx;
         const Real v_my_out = t36 + v_my;
         const bool finite = ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_k<Real>);
-        const bool doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least((M == Real(0) ? Real(1) : std::fabs(M)), (m == Real(0) ? Real(1) : std::fabs(m))), detail::least((C_Mx == Real(0) ? Real(1) : std::fabs(C_Mx)), (C_My == Real(0) ? Real(1) : std::fabs(C_My)))), detail::least(detail::least((C_mx == Real(0) ? Real(1) : std::fabs(C_mx)), (C_my == Real(0) ? Real(1) : std::fabs(C_my))), detail::least((v_Mx == Real(0) ? Real(1) : std::fabs(v_Mx)), (v_My == Real(0) ? Real(1) : std::fabs(v_My))))), detail::least(detail::least((v_mx == Real(0) ? Real(1) : std::fabs(v_mx)), (v_my == Real(0) ? Real(1) : std::fabs(v_my))), (eps == Real(0) ? Real(1) : std::fabs(eps)))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My)))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), std::fabs(eps))), highest));
+        if constexpr (collide_batch_2d_k<Real> < 0)
+            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), detail::most(detail::most(std::fabs(t8), detail::zero_as_min(t2)), detail::zero_as_min(t7)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t10)), detail::zero_as_min(t20)), detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t22)), detail::zero_as_min(t26))), detail::least(std::fabs(t28), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t30)), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t32), detail::zero_as_min(t0)), detail::most(std::fabs(t33), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(t30)), detail::zero_as_min(M)), detail::most(std::fabs(t35), detail::zero_as_min(t0)))), detail::most(std::fabs(t36), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
         const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];

@@ -184,7 +184,7 @@ namespace detail {
 // rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
 // bounds crosswise, a square root halves them, atan2(y, x) lies within
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, 36, 1126, 1095; -1 leaves every pair to the scalar kernel.
+// quadruple long double): k = -1, 36, 1126, 1095; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
 constexpr int collide_batch_3d_k = input_k<Real>(-1, 36, 1126, 1095);
 
@@ -247,6 +247,11 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real v_my = v_my_[i];
         const Real v_mz = v_mz_[i];
         const Real eps = eps_[i];
+        bool doubtful = false;
+        if constexpr (collide_batch_3d_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_k<Real>);
+            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_Mz, lowest), detail::magnitude_or(C_mx, lowest)), detail::least(detail::magnitude_or(C_my, lowest), detail::magnitude_or(C_mz, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)), detail::least(detail::magnitude_or(v_Mz, lowest), detail::magnitude_or(v_mx, lowest))), detail::least(detail::least(detail::magnitude_or(v_my, lowest), detail::magnitude_or(v_mz, lowest)), detail::magnitude_or(eps, lowest)))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_Mz), std::fabs(C_mx)), detail::most(std::fabs(C_my), std::fabs(C_mz)))), detail::most(detail::most(detail::most(std::fabs(v_Mx), std::fabs(v_My)), detail::most(std::fabs(v_Mz), std::fabs(v_mx))), detail::most(detail::most(std::fabs(v_my), std::fabs(v_mz)), std::fabs(eps)))), highest));
+        }
         const Real t0 = C_Mx - C_mx;
         const Real t1 = t0 - C_Mx;
         const Real t2 = t0 * t0;
@@ -314,8 +319,8 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real finite3 = finite0 + finite1;
         const Real finite4 = finite3 + finite2;
         const bool finite = (finite4 == Real(0));
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_k<Real>);
-        const bool doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least((M == Real(0) ? Real(1) : std::fabs(M)), (m == Real(0) ? Real(1) : std::fabs(m))), detail::least((C_Mx == Real(0) ? Real(1) : std::fabs(C_Mx)), (C_My == Real(0) ? Real(1) : std::fabs(C_My)))), detail::least(detail::least((C_Mz == Real(0) ? Real(1) : std::fabs(C_Mz)), (C_mx == Real(0) ? Real(1) : std::fabs(C_mx))), detail::least((C_my == Real(0) ? Real(1) : std::fabs(C_my)), (C_mz == Real(0) ? Real(1) : std::fabs(C_mz))))), detail::least(detail::least(detail::least((v_Mx == Real(0) ? Real(1) : std::fabs(v_Mx)), (v_My == Real(0) ? Real(1) : std::fabs(v_My))), detail::least((v_Mz == Real(0) ? Real(1) : std::fabs(v_Mz)), (v_mx == Real(0) ? Real(1) : std::fabs(v_mx)))), detail::least(detail::least((v_my == Real(0) ? Real(1) : std::fabs(v_my)), (v_mz == Real(0) ? Real(1) : std::fabs(v_mz))), (eps == Real(0) ? Real(1) : std::fabs(eps))))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_Mz), std::fabs(C_mx)), detail::most(std::fabs(C_my), std::fabs(C_mz)))), detail::most(detail::most(detail::most(std::fabs(v_Mx), std::fabs(v_My)), detail::most(std::fabs(v_Mz), std::fabs(v_mx))), detail::most(detail::most(std::fabs(v_my), std::fabs(v_mz)), std::fabs(eps)))), highest));
+        if constexpr (collide_batch_3d_k<Real> < 0)
+            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t14), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t0)), detail::zero_as_min(t20)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t24), detail::zero_as_min(t4)), detail::zero_as_min(t23)), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t12)), detail::zero_as_min(t30))), detail::least(detail::most(detail::most(std::fabs(t38), detail::zero_as_min(t37)), detail::zero_as_min(t36)), detail::most(detail::most(std::fabs(t41), detail::zero_as_min(t40)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(std::fabs(t42), detail::most(detail::most(std::fabs(t46), detail::zero_as_min(t45)), detail::zero_as_min(m))), detail::least(detail::most(std::fabs(t47), detail::zero_as_min(t0)), detail::most(std::fabs(t48), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t49), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t50), detail::zero_as_min(t45)), detail::zero_as_min(M))), detail::least(detail::most(std::fabs(t51), detail::zero_as_min(t0)), detail::most(std::fabs(t52), detail::zero_as_min(t4)))))), detail::most(std::fabs(t53), detail::zero_as_min(t12))), std::numeric_limits<Real>::min());
         const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
