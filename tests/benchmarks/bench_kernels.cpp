@@ -307,26 +307,6 @@ template <std::size_t D>
         s = bad_eps ? impact::status::invalid_restitution : s;
         s = bad_mass ? impact::status::invalid_mass : s;
         const bool ok = s == impact::status::ok;
-        // The inputs' range: the least magnitude not 0, and the largest.
-        // (An input 0 is admitted through impact::detail::magnitude_or, as in the generated
-        // loop: with a comparison and a blend per input, it runs at half the speed.)
-        const auto least = [](double a, double b) { return a < b ? a : b; };
-        const auto most = [](double a, double b) { return a < b ? b : a; };
-        double low = least(M[i], m[i]), high = most(M[i], m[i]);
-        low = least(low, impact::detail::magnitude_or(eps[i], lowest));
-        high = most(high, eps[i]);
-        // Each axis written out (a loop over the axes left GCC's 3D loop unvectorised).
-        const auto axis = [&](std::size_t d) __attribute__((always_inline)) {
-            low = least(least(low, impact::detail::magnitude_or(C_M[d][i], lowest)), impact::detail::magnitude_or(C_m[d][i], lowest));
-            low = least(least(low, impact::detail::magnitude_or(v_M[d][i], lowest)), impact::detail::magnitude_or(v_m[d][i], lowest));
-            high = most(most(high, std::fabs(C_M[d][i])), std::fabs(C_m[d][i]));
-            high = most(most(high, std::fabs(v_M[d][i])), std::fabs(v_m[d][i]));
-        };
-        axis(0);
-        axis(1);
-        if constexpr (D == 3)
-            axis(2);
-        const bool in_range = std::isgreaterequal(low, lowest) & std::islessequal(high, highest);
 
         // k = (1 + eps) (dv . r) / ((M + m) r . r), in double-double, then the updates.
         const dd r0 = two_sum(C_M[0][i], -C_m[0][i]);
@@ -350,6 +330,27 @@ template <std::size_t D>
             after_m[d] = v_m[d][i] + k * M[i] * r[d];
             results = std::fma(after_M[d], 0.0, std::fma(after_m[d], 0.0, results));
         }
+        // The inputs' range: the least magnitude not 0, and the largest; tested after the
+        // arithmetic, as the generated loop tests it (tested first, it keeps the inputs live).
+        // (An input 0 is admitted through impact::detail::magnitude_or, as in the generated
+        // loop: with a comparison and a blend per input, it runs at half the speed.)
+        const auto least = [](double a, double b) { return a < b ? a : b; };
+        const auto most = [](double a, double b) { return a < b ? b : a; };
+        double low = least(M[i], m[i]), high = most(M[i], m[i]);
+        low = least(low, impact::detail::magnitude_or(eps[i], lowest));
+        high = most(high, eps[i]);
+        // Each axis written out (a loop over the axes left GCC's 3D loop unvectorised).
+        const auto axis = [&](std::size_t d) __attribute__((always_inline)) {
+            low = least(least(low, impact::detail::magnitude_or(C_M[d][i], lowest)), impact::detail::magnitude_or(C_m[d][i], lowest));
+            low = least(least(low, impact::detail::magnitude_or(v_M[d][i], lowest)), impact::detail::magnitude_or(v_m[d][i], lowest));
+            high = most(most(high, std::fabs(C_M[d][i])), std::fabs(C_m[d][i]));
+            high = most(most(high, std::fabs(v_M[d][i])), std::fabs(v_m[d][i]));
+        };
+        axis(0);
+        axis(1);
+        if constexpr (D == 3)
+            axis(2);
+        const bool in_range = std::isgreaterequal(low, lowest) & std::islessequal(high, highest);
         const bool written = usable && results == 0 && in_range;
         for (std::size_t d = 0; d < D; ++d) {
             v_M[d][i] = written ? after_M[d] : v_M[d][i];
