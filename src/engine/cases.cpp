@@ -3,6 +3,9 @@
 #include "engine/infix.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 namespace impact::engine {
 namespace {
@@ -217,8 +220,106 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
     return c;
 }
 
-verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
-                      const symbol_table& symbols, const assumptions& given)
+namespace {
+
+// |x y| = |x| |y|, and |x| = x or -x where the sign of x is proven: the absolute values
+// a case's value and condition hold, taken out where the domains allow.
+GiNaC::ex without_abs(const GiNaC::ex& e, const assumptions& given)
+{
+    if (!e.has(GiNaC::abs(GiNaC::wild())))
+        return e;
+    if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
+        const GiNaC::ex inside = without_abs(e.op(0), given);
+        const sign_set s = prove_sign(inside, given).sign;
+        if (!s.negative)
+            return inside;
+        if (!s.positive)
+            return -inside;
+        if (GiNaC::is_a<GiNaC::mul>(inside)) {
+            GiNaC::ex product = 1;
+            for (std::size_t i = 0; i < inside.nops(); ++i)
+                product *= without_abs(GiNaC::abs(inside.op(i)), given);
+            return product;
+        }
+        if (GiNaC::is_a<GiNaC::power>(inside) && inside.op(1).info(GiNaC::info_flags::integer))
+            return GiNaC::pow(without_abs(GiNaC::abs(inside.op(0)), given), inside.op(1));
+        return GiNaC::abs(inside);
+    }
+    struct inside : GiNaC::map_function {
+        const assumptions& given;
+        explicit inside(const assumptions& g) : given(g) {}
+        GiNaC::ex operator()(const GiNaC::ex& x) override { return without_abs(x, given); }
+    } each(given);
+    return e.map(each);
+}
+
+// The real symbols of unknown sign whose absolute value `e` takes.
+void symbols_under_abs(const GiNaC::ex& e, const assumptions& given, std::vector<GiNaC::ex>& found)
+{
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::function>(*it) || GiNaC::ex_to<GiNaC::function>(*it).get_name() != "abs" ||
+            !GiNaC::is_a<GiNaC::symbol>(it->op(0)))
+            continue;
+        const GiNaC::ex x = it->op(0);
+        const auto d = given.domains.find(x);
+        if ((d == given.domains.end() || !d->second.is_nonnegative()) &&
+            std::find_if(found.begin(), found.end(), [&x](const GiNaC::ex& y) { return y.is_equal(x); }) == found.end())
+            found.push_back(x);
+    }
+}
+
+// The claim G >= 0 (> 0) from the condition C >= 0 (> 0) by dividing G's numerator by
+// C's in a symbol x that C is linear in, a term at a time: G = q C + r with q and r
+// proven non-negative, as a textbook bounds a quadratic by the condition it lies under.
+std::optional<verdict> divided_by_condition(const GiNaC::ex& g, bool strict, const GiNaC::ex& condition,
+                                            bool condition_strict, const assumptions& given)
+{
+    const GiNaC::ex gnd = GiNaC::normal(g).numer_denom();
+    const GiNaC::ex cnd = GiNaC::normal(condition).numer_denom();
+    const GiNaC::ex top = GiNaC::expand(gnd.op(0)), bottom = gnd.op(1);
+    const GiNaC::ex c_top = GiNaC::expand(cnd.op(0)), c_bottom = cnd.op(1);
+    std::vector<GiNaC::ex> xs;
+    for (GiNaC::const_preorder_iterator it = c_top.preorder_begin(); it != c_top.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+            std::find_if(xs.begin(), xs.end(), [&it](const GiNaC::ex& y) { return y.is_equal(*it); }) == xs.end())
+            xs.push_back(*it);
+    for (const GiNaC::ex& x : xs) {
+        if (c_top.degree(x) != 1 || top.degree(x) < 1 || top.ldegree(x) < 0)
+            continue;
+        const GiNaC::ex lead = c_top.coeff(x, 1);
+        GiNaC::ex q = 0, r = top;
+        for (int k = top.degree(x); k >= 1; --k) {
+            const GiNaC::ex t = GiNaC::normal(r.coeff(x, k) / lead) * GiNaC::pow(x, k - 1);
+            q += t;
+            r = GiNaC::normal(GiNaC::expand(top - q * c_top));
+            // G = (q c_bottom / bottom) C + r / bottom.
+            const GiNaC::ex factor = GiNaC::normal(q * c_bottom / bottom);
+            const GiNaC::ex rest = GiNaC::normal(r / bottom);
+            const sign_proof pq = prove_sign(factor, given);
+            if (pq.sign.negative)
+                continue;
+            const sign_proof pr = prove_sign(rest, given);
+            if (pr.sign.negative)
+                continue;
+            if (strict && !(positive(pr.sign) || (positive(pq.sign) && condition_strict)))
+                continue;
+            verdict v;
+            v.what = verdict::status::proven;
+            v.residual = 0;
+            v.proof = pq.steps;
+            v.proof.insert(v.proof.end(), pr.steps.begin(), pr.steps.end());
+            v.method = fmt::format("{} = ({})*({}) + {}, divided by the condition's side in {}: a factor {} times "
+                                   "it plus a remainder {}",
+                                   given.text(g), given.text(factor), given.text(condition), given.text(rest),
+                                   given.text(x), pq.sign.describe(), pr.sign.describe());
+            return v;
+        }
+    }
+    return std::nullopt;
+}
+
+verdict prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
+                    const symbol_table& symbols, const assumptions& given)
 {
     const verdict alone = prove_inequality(lhs, op, rhs, symbols, given);
     if (alone.what == verdict::status::proven)
@@ -261,6 +362,11 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
             return v;
         }
     }
+    if (!condition.value.is_zero())
+        if (auto v = divided_by_condition(g, strict, condition.value, condition.strict, given)) {
+            v->method = fmt::format("{}: {}", under, v->method);
+            return *v;
+        }
     // A bound on one symbol by a number (x <= 1): the sign proof run again on the symbol's
     // domain narrowed by it.
     if (const auto bound = bound_domain(c, given)) {
@@ -280,6 +386,164 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
     else
         v.method = fmt::format("not proven {} (it fails somewhere in the whole domain): {}", under, v.method);
     return v;
+}
+
+// The condition of `c` proven false under `given`: the case does not arise.
+bool cannot_arise(const case_value& c, const symbol_table& symbols, const assumptions& given)
+{
+    const nonnegative_form f = condition_form(c);
+    const GiNaC::ex value = without_abs(GiNaC::normal(f.value.subs(symbols.abbreviations())), given);
+    const sign_set s = prove_sign(value, given).sign;
+    return f.strict ? !s.positive : (!s.positive && !s.zero);
+}
+
+} // namespace
+
+verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
+                      const symbol_table& symbols, const assumptions& given)
+{
+    // |x| for a real x: proven for x > 0, x < 0 and x = 0 apart, x written as +y, -y and 0
+    // with y > 0, each absolute value then taken out.
+    std::vector<GiNaC::ex> xs;
+    for (const GiNaC::ex& e : {lhs, rhs, c.lhs, c.rhs})
+        symbols_under_abs(e, given, xs);
+    if (xs.empty() || xs.size() > 2) {
+        const GiNaC::ex l = without_abs(lhs, given), r = without_abs(rhs, given);
+        case_value plain = c;
+        plain.lhs = without_abs(c.lhs, given);
+        plain.rhs = without_abs(c.rhs, given);
+        return prove_under(l, op, r, plain, symbols, given);
+    }
+    std::vector<check_result::part> parts;
+    const std::size_t branches = xs.size() == 1 ? 3 : 9;
+    for (std::size_t branch = 0; branch < branches; ++branch) {
+        // y > 0 is a new symbol, declared positive for the whole run: the signs worked
+        // out under the declared domains hold with it.
+        assumptions signed_given = given;
+        GiNaC::exmap to;
+        std::vector<std::string> words;
+        std::size_t code = branch;
+        for (const GiNaC::ex& x : xs) {
+            const int which = static_cast<int>(code % 3);   // 0: x > 0, 1: x < 0, 2: x = 0
+            code /= 3;
+            const std::string name = GiNaC::ex_to<GiNaC::symbol>(x).get_name();
+            GiNaC::ex y = GiNaC::possymbol(name, GiNaC::ex_to<GiNaC::symbol>(x).get_TeX_name());
+            if (given.run) {
+                const auto known = given.run->magnitudes.emplace(x, y).first;
+                y = known->second;
+            }
+            signed_given.domains[y] = domain{domain::kind::positive};
+            to[x] = which == 0 ? GiNaC::ex(y) : which == 1 ? GiNaC::ex(-y) : GiNaC::ex(0);
+            words.push_back(fmt::format("{} {} 0", name, which == 0 ? ">" : which == 1 ? "<" : "="));
+        }
+        check_result::part part;
+        part.under = fmt::format("for {}", fmt::join(words, " and "));
+        case_value here = c;
+        try {
+            here.lhs = without_abs(c.lhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+            here.rhs = without_abs(c.rhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+        } catch (const std::exception&) {
+            part.outcome.method = "the condition is not defined there";
+            parts.push_back(std::move(part));
+            continue;
+        }
+        if (cannot_arise(here, symbols, signed_given)) {
+            part.outcome.what = verdict::status::proven;
+            part.outcome.residual = 0;
+            part.outcome.method = "the case does not arise: its condition is false there";
+            parts.push_back(std::move(part));
+            continue;
+        }
+        try {
+            const GiNaC::ex l = without_abs(lhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+            const GiNaC::ex r = without_abs(rhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+            part.outcome = prove_under(l, op, r, here, symbols, signed_given);
+        } catch (const std::exception&) {
+            part.outcome.method = "the claim is not defined there";
+        }
+        parts.push_back(std::move(part));
+    }
+    verdict v = combined(parts, "by the sign of what is under |.|");
+    if (v.what == verdict::status::failed) {
+        // A failed branch may fail outside the case: the verdict over the whole domain says.
+        const verdict alone = prove_inequality(lhs, op, rhs, symbols, given);
+        if (alone.what == verdict::status::sampled) {
+            v = alone;
+            v.method = fmt::format("not proven under {}; sampled over the whole domain, where it holds: {}",
+                                   condition_text(c, given.order), alone.method);
+        }
+    }
+    return v;
+}
+
+bool same_conditions(const std::vector<case_value>& a, const std::vector<case_value>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].op != b[i].op || !GiNaC::normal(a[i].lhs - b[i].lhs).is_zero() ||
+            !GiNaC::normal(a[i].rhs - b[i].rhs).is_zero())
+            return false;
+    return true;
+}
+
+void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::exmap& at,
+                        const symbol_table& symbols, const assumptions& given, proof_cache& run)
+{
+    std::vector<std::string> names;
+    for (const GiNaC::ex& s : split.symbols)
+        names.push_back(ginac_syntax(s, symbols.order()));
+    c.cases_of = fmt::format("{}", fmt::join(names, " and "));
+    const std::size_t count = split.pieces.front().size();
+    for (std::size_t i = 0; i < count; ++i) {
+        GiNaC::exmap in_case;
+        std::vector<std::string> values;
+        case_value one = split.pieces.front()[i];
+        for (std::size_t k = 0; k < split.symbols.size(); ++k) {
+            GiNaC::ex value = split.pieces[k][i].value;
+            if (!at.empty())
+                value = value.subs(at);
+            in_case[split.symbols[k]] = value;
+            values.push_back(fmt::format("{} = {}", names[k], given.text(value)));
+        }
+        if (!at.empty()) {
+            one.lhs = one.lhs.subs(at);
+            one.rhs = one.rhs.subs(at);
+            one.value = in_case[split.symbols.front()];
+        }
+        const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
+        const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
+        check_result::part part;
+        part.first = i + 1;
+        part.in_case = one;
+        part.under = fmt::format("case {} ({}, where {})", i + 1, fmt::join(values, ", "),
+                                 condition_text(one, given.order));
+        // At special values a condition may be a comparison of numbers, or one the domains
+        // contradict: a case whose condition is false holds nothing to prove.
+        const GiNaC::ex gap = GiNaC::normal(one.rhs - one.lhs);
+        bool arises = true;
+        if (GiNaC::is_a<GiNaC::numeric>(gap) && GiNaC::ex_to<GiNaC::numeric>(gap).is_real()) {
+            const GiNaC::numeric g = GiNaC::ex_to<GiNaC::numeric>(gap);   // rhs - lhs
+            arises = one.op == relation::less_equal      ? g >= 0
+                     : one.op == relation::less          ? g > 0
+                     : one.op == relation::greater_equal ? g <= 0
+                                                         : g < 0;
+            if (!arises)
+                part.outcome.method = "the case does not arise: its condition is false at these values";
+        } else if (cannot_arise(one, symbols, given)) {
+            arises = false;
+            part.outcome.method = "the case does not arise: the domains make its condition false";
+        }
+        if (!arises) {
+            part.outcome.what = verdict::status::proven;
+            part.outcome.residual = 0;
+        } else {
+            part.outcome = c.op == relation::equal ? prove_equal(lhs, rhs, symbols, run)
+                                                   : prove_in_case(lhs, c.op, rhs, one, symbols, given);
+        }
+        c.parts.push_back(std::move(part));
+    }
+    c.outcome = combine_cases(c.parts);
 }
 
 check_result prove_continuity(const std::string& name, const std::vector<case_value>& cases,
@@ -302,15 +566,28 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
             part.second = j + 1;
             // The boundary C_i = 0, solved for the first declared quantity it is linear in.
             const GiNaC::ex top = GiNaC::expand(ci.numer());
+            // Of the declared quantities it is linear in, the one whose value there is the
+            // shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass), its coefficient
+            // proven non-zero where one can be.
             std::optional<std::pair<GiNaC::ex, GiNaC::ex>> at;
+            std::size_t shortest = 0;
+            bool coefficient_proven = false;
+            const assumptions given = declared_assumptions(symbols, run);
             for (const quantity& q : symbols.all()) {
                 if (q.definition || !top.has(q.symbol) || top.degree(q.symbol) != 1 || top.ldegree(q.symbol) < 0)
                     continue;
                 const GiNaC::ex a = top.coeff(q.symbol, 1);
                 if (a.has(q.symbol) || GiNaC::normal(a).is_zero())
                     continue;
-                at.emplace(q.symbol, GiNaC::normal(-top.coeff(q.symbol, 0) / a));
-                break;
+                const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / a);
+                const sign_set s = prove_sign(a, given).sign;
+                const bool non_zero = !s.zero && (!s.positive || !s.negative);
+                const std::size_t length = ginac_syntax(value, symbols.order()).size();
+                if (at && (coefficient_proven > non_zero || (coefficient_proven == non_zero && length >= shortest)))
+                    continue;
+                at.emplace(q.symbol, value);
+                shortest = length;
+                coefficient_proven = non_zero;
             }
             if (!at) {
                 part.under = fmt::format("cases {} and {} at {} = 0", i + 1, j + 1, ginac_syntax(ci, symbols.order()));

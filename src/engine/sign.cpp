@@ -322,13 +322,30 @@ bool has_radical(const GiNaC::ex& e)
     return false;
 }
 
+namespace {
+
+// GiNaC's factor() takes time exponential in the number of variables of a large
+// polynomial and cannot be interrupted: the expanded energy of two rough spheres (a
+// difference of two sums of squares in eleven symbols) did not finish in ten minutes.
+// A polynomial of more terms than this is left as it is; its sign is then settled by
+// another argument (an earlier check's closed form, see prove_inequality) or sampled.
+constexpr std::size_t most_terms_factored = 120;
+
+bool worth_factoring(const GiNaC::ex& e)
+{
+    if (has_radical(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e))
+        return false;
+    const GiNaC::ex expanded = GiNaC::expand(e);
+    return !GiNaC::is_a<GiNaC::add>(expanded) || expanded.nops() <= most_terms_factored;
+}
+
+} // namespace
+
 // factor() on a polynomial; an expression with radicals is left as it is, since
 // factoring under a root may pull out -1 and leave I behind.
 GiNaC::ex factor_polynomial(const GiNaC::ex& e)
 {
-    if (has_radical(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e))
-        return e;
-    return GiNaC::factor(e);
+    return worth_factoring(e) ? GiNaC::factor(e) : e;
 }
 
 GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
@@ -341,7 +358,7 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
     const auto known = factored.find(e);
     if (known != factored.end())
         return known->second;
-    const GiNaC::ex f = GiNaC::factor(e);
+    const GiNaC::ex f = worth_factoring(e) ? GiNaC::factor(e) : e;
     if (factored.size() >= 4096)  // bounded: a long run (the fuzzer) meets ever new polynomials
         factored.clear();
     factored.emplace(e, f);
