@@ -275,9 +275,10 @@ BOOST_AUTO_TEST_CASE(a_case_only_sampled_is_reported_sampled_never_proven)
 {
     const engine::derivation d = derive_text(by_cases(
         "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
-        "[[check]]\nname = \"cubic\"\nclaim = \"y^3 - 3*y + 3 > 0\"\n"));
-    // x^3 - 3x + 3 > 0 for every positive x (its least value, at x = 1, is 1), but no sign
-    // argument of the prover settles it: case 1 is sampled, case 2 (1 > 0) proven.
+        "[[symbol]]\nname = \"z\"\n[[check]]\nname = \"cubic\"\nclaim = \"y^2 + y*z + z^2 > 0\"\n"));
+    // x^2 + x z + z^2 > 0 for every positive x (a positive definite form), but no sign
+    // argument of the prover settles it: case 1 is sampled, case 2 (1 + z + z^2 > 0, by
+    // Sturm's theorem in z) proven.
     const engine::check_result& c = check_named(d, "cubic");
     BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
     BOOST_TEST((c.parts[0].outcome.what == engine::verdict::status::sampled));

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 
 #include "derivation_support.h"
@@ -46,6 +47,21 @@ bool every_step_check_proven(const engine::step_result& s)
 {
     return !s.checks.empty() && std::all_of(s.checks.begin(), s.checks.end(), [](const engine::check_result& c) {
         return c.outcome.what == engine::verdict::status::proven;
+    });
+}
+
+// The value of `e` at a point (symbol = number), to 30 digits.
+double at(const GiNaC::ex& e, const GiNaC::exmap& point)
+{
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(point))).to_double();
+}
+
+// A value found in the solutions of the step, whatever its order.
+bool has_solution(const engine::step_result& step, const GiNaC::ex& unknown, const GiNaC::ex& expected,
+                  const GiNaC::exmap& point)
+{
+    return std::any_of(step.solutions.begin(), step.solutions.end(), [&](const engine::solution& s) {
+        return std::abs(at(value_in(s, unknown), point) - at(expected, point)) < 1e-12;
     });
 }
 
@@ -127,6 +143,169 @@ BOOST_AUTO_TEST_CASE(equal_masses_exchange_velocities_in_the_direct_solution)
     BOOST_TEST(equal(value_of(direct, "v_m_after").subs(M == m), sym(direct, "v_M")));
 }
 
+BOOST_AUTO_TEST_CASE(a_coefficient_holding_an_unknown_is_split_on_aimed_throw)
+{
+    // X = u T and Y = u T - g T^2/2: u = X/T leaves g T^2 = 2 (X - Y).
+    const engine::derivation d = derive_file("tests/solve/aimed_throw.toml");
+    const GiNaC::ex X = sym(d, "X"), Y = sym(d, "Y"), g = sym(d, "g"), u = sym(d, "u"), T = sym(d, "T");
+    const GiNaC::ex time = value_of(d, "T"), speed = value_of(d, "u");
+    BOOST_TEST(equal(time * time, 2 * (X - Y) / g));
+    BOOST_TEST(equal(speed * speed, g * X * X / (2 * (X - Y))));
+    // At X = 3, Y = 1, g = 10: T = sqrt(2/5), u = 3 sqrt(5/2), both positive.
+    const GiNaC::exmap point{{X, 3}, {Y, 1}, {g, 10}};
+    BOOST_TEST(at(time, point) == std::sqrt(0.4), boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(at(speed, point) == 3 * std::sqrt(2.5), boost::test_tools::tolerance(1e-12));
+    const engine::step_result& step = d.steps.front();
+    BOOST_TEST_REQUIRE(step.solutions.size() == 2u);
+    BOOST_TEST(has_solution(step, T, -GiNaC::sqrt(2 * (X - Y) / g), point));
+    BOOST_TEST((step.solutions.back().outcome == engine::solution::fate::outside_domain));
+    BOOST_TEST(every_step_check_proven(step));
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_mass_weighed_by_an_elastic_collision)
+{
+    // Eqs. 1a and 1b for m and v'_m: v'_m = v'_M + v_M - v_m (Eq. 2), and m from momentum.
+    const engine::derivation d = derive_file("tests/solve/unknown_mass.toml");
+    const GiNaC::ex M = sym(d, "M"), v_M = sym(d, "v_M"), v_m = sym(d, "v_m"), after = sym(d, "v_M_after");
+    BOOST_TEST(equal(value_of(d, "v_m_after"), after + v_M - v_m));
+    BOOST_TEST(equal(value_of(d, "m"), M * (v_M - after) / (v_M + after - 2 * v_m)));
+    // v'_m = v_m is the split's other branch: momentum then asks M v_M = M v'_M, no solution.
+    BOOST_TEST(d.steps.front().solutions.size() == 1u);
+    BOOST_TEST(every_step_check_proven(d.steps.front()));
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_resultant_finds_where_two_circles_meet)
+{
+    // x^2 + y^2 = R^2 and (x - d)^2 + y^2 = r^2: x = (R^2 - r^2 + d^2)/(2d), y = sqrt(R^2 - x^2).
+    const engine::derivation d = derive_file("tests/solve/hung_lamp.toml");
+    const GiNaC::ex R = sym(d, "R"), r = sym(d, "r"), D = sym(d, "d"), x = sym(d, "x"), y = sym(d, "y");
+    const GiNaC::ex across = (R * R - r * r + D * D) / (2 * D);
+    BOOST_TEST(equal(value_of(d, "x"), across));
+    BOOST_TEST(equal(GiNaC::pow(value_of(d, "y"), 2), R * R - across * across));
+    // R = 5, r = 4, d = 3: a right angle at the lamp, at (3, 4)... from the first hook
+    // x = (25 - 16 + 9)/6 = 3, y = 4.
+    const GiNaC::exmap point{{R, 5}, {r, 4}, {D, 3}};
+    BOOST_TEST(at(value_of(d, "y"), point) == 4.0, boost::test_tools::tolerance(1e-12));
+    // The roots of the resultant give y = ±4; x = -3 from the first circle is no root of
+    // the second and is dropped: two solutions, one rejected by y's domain.
+    const engine::step_result& step = d.steps.front();
+    BOOST_TEST_REQUIRE(step.solutions.size() == 2u);
+    BOOST_TEST(has_solution(step, y, -4, point));
+    BOOST_TEST(!has_solution(step, x, -3, point));
+    BOOST_TEST(every_step_check_proven(step));
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_throw_of_given_speed_has_two_trajectories_and_is_refused)
+{
+    // Through (X, 0) at speed s: X = u T, w T = g T^2/2, u^2 + w^2 = s^2, so that
+    // g^2 T^4 - 4 s^2 T^2 + 4 X^2 = 0, a quadratic in T^2 with two positive roots: the
+    // flat and the lobbed throw, both admissible.
+    const std::string text =
+        "id = \"t\"\ntitle = \"test\"\n"
+        "[[symbol]]\nname = \"X\"\ndomain = \"positive\"\n[[symbol]]\nname = \"s\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"g\"\ndomain = \"positive\"\n[[symbol]]\nname = \"u\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"w\"\ndomain = \"positive\"\n[[symbol]]\nname = \"T\"\ndomain = \"positive\"\n"
+        "[[given]]\nname = \"across\"\nequation = \"X = u*T\"\nbecause = \"h\"\n"
+        "[[given]]\nname = \"up\"\nequation = \"0 = w*T - g*T^2/2\"\nbecause = \"h\"\n"
+        "[[given]]\nname = \"speed\"\nequation = \"u^2 + w^2 = s^2\"\nbecause = \"h\"\n"
+        "[[step]]\nsolve = [\"across\", \"up\", \"speed\"]\nfor = [\"u\", \"w\", \"T\"]\n"
+        "[[result]]\nname = \"u\"\n";
+    const std::string message = error_for(text).message();
+    BOOST_TEST(message.find("2 solutions are admissible: ") == 0u, message);
+    BOOST_TEST(message.find("T = sqrt(2)*sqrt(s^2+sqrt(-X^2*g^2+s^4))/g") != std::string::npos, message);
+    BOOST_TEST(message.find("T = sqrt(2)*sqrt(s^2-sqrt(-X^2*g^2+s^4))/g") != std::string::npos, message);
+}
+
+BOOST_AUTO_TEST_CASE(the_flat_throw_of_given_speed_is_kept_when_the_lob_is_rejected)
+{
+    // The same system with reject = ["g^2*T^2 = 2*s^2 + 2*sqrt(s^4 - g^2*X^2)"]: the flat
+    // throw, g^2 T^2 = 2 s^2 - 2 sqrt(s^4 - g^2 X^2), w = g T/2, u = X/T.
+    const engine::derivation d = derive_file("tests/solve/throw_of_given_speed.toml");
+    const GiNaC::ex X = sym(d, "X"), s = sym(d, "s"), g = sym(d, "g"), T = sym(d, "T");
+    const GiNaC::exmap point{{X, 3}, {s, 10}, {g, 10}};
+    const double flat = std::sqrt(2 * (100 - std::sqrt(10000.0 - 900)) / 100);
+    const double lob = std::sqrt(2 * (100 + std::sqrt(10000.0 - 900)) / 100);
+    BOOST_TEST(at(value_of(d, "T"), point) == flat, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(at(value_of(d, "w"), point) == 10 * flat / 2, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(at(value_of(d, "u"), point) == 3 / flat, boost::test_tools::tolerance(1e-12));
+    const engine::step_result& step = d.steps.front();
+    BOOST_TEST_REQUIRE(step.solutions.size() == 4u);
+    const auto lobbed = std::find_if(step.solutions.begin(), step.solutions.end(), [&](const engine::solution& x) {
+        return x.outcome == engine::solution::fate::condition;
+    });
+    BOOST_TEST_REQUIRE((lobbed != step.solutions.end()));
+    BOOST_TEST(at(value_in(*lobbed, T), point) == lob, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(every_step_check_proven(step));
+    BOOST_TEST(d.all_hold());
+}
+
+BOOST_AUTO_TEST_CASE(a_split_on_a_coefficient_keeps_the_solutions_where_it_vanishes)
+{
+    // x y = 0 and x^2 + y^2 = 1: x = 0 where y is not 0 (y = ±1), and y = 0 (x = ±1):
+    // four solutions, two of them non-negative, one from each branch.
+    const std::string text =
+        "id = \"t\"\ntitle = \"test\"\n[[symbol]]\nname = \"x\"\ndomain = \"nonnegative\"\n"
+        "[[symbol]]\nname = \"y\"\ndomain = \"nonnegative\"\n"
+        "[[given]]\nname = \"a\"\nequation = \"x*y = 0\"\nbecause = \"given\"\n"
+        "[[given]]\nname = \"b\"\nequation = \"x^2 + y^2 = 1\"\nbecause = \"given\"\n"
+        "[[step]]\nsolve = [\"a\", \"b\"]\nfor = [\"x\", \"y\"]\n";
+    const std::string message = error_for(text + "[[result]]\nname = \"x\"\n").message();
+    BOOST_TEST(message.find("2 solutions are admissible: ") == 0u, message);
+    BOOST_TEST(message.find("x = 0, y = 1") != std::string::npos, message);
+    BOOST_TEST(message.find("x = 1, y = 0") != std::string::npos, message);
+    // Rejecting y = 0 leaves x = 0, y = 1; the negative ones are outside the domains.
+    const engine::derivation d =
+        derive_text(text + "reject = [\"y = 0\"]\nreject_because = \"y is the one that moves\"\n"
+                           "[[result]]\nname = \"x\"\n[[result]]\nname = \"y\"\n");
+    BOOST_TEST(value_of(d, "x").is_zero());
+    BOOST_TEST(value_of(d, "y").is_equal(1));
+    BOOST_TEST(d.steps.front().solutions.size() == 4u);
+    BOOST_TEST(every_step_check_proven(d.steps.front()));
+}
+
+BOOST_AUTO_TEST_CASE(a_cubic_is_solved_through_its_factors)
+{
+    // y^3 = x^2 y: y (y - x) (y + x) = 0; a positive y keeps x.
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"test\"\n[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"y\"\ndomain = \"positive\"\n"
+        "[[given]]\nname = \"g\"\nequation = \"y^3 = x^2*y\"\nbecause = \"given\"\n"
+        "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n");
+    const GiNaC::ex x = sym(d, "x"), y = sym(d, "y");
+    BOOST_TEST(equal(value_of(d, "y"), x));
+    const engine::step_result& step = d.steps.front();
+    BOOST_TEST_REQUIRE(step.solutions.size() == 3u);
+    const GiNaC::exmap point{{x, 2}};
+    BOOST_TEST(has_solution(step, y, 0, point));
+    BOOST_TEST(has_solution(step, y, -x, point));
+    BOOST_TEST(every_step_check_proven(step));
+    // Of a real y, all three are admissible: refused, each listed.
+    BOOST_TEST(error_for(with_x_and_y("[[given]]\nname = \"g\"\nequation = \"y^3 = x^2*y\"\nbecause = \"given\"\n"
+                                      "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"))
+                   .message()
+                   .find("3 solutions are admissible: ") == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_quartic_in_y_squared_is_solved_as_a_quadratic)
+{
+    // y^4 - x^2 y^2 - x = 0: y^2 = (x^2 ± sqrt(x^4 + 4x))/2, the minus root negative, so
+    // y = ±sqrt((x^2 + sqrt(x^4 + 4x))/2), the positive one kept.
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"test\"\n[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"y\"\ndomain = \"positive\"\n"
+        "[[given]]\nname = \"g\"\nequation = \"y^4 = x^2*y^2 + x\"\nbecause = \"given\"\n"
+        "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n");
+    const GiNaC::ex x = sym(d, "x");
+    const GiNaC::exmap point{{x, 2}};
+    // At x = 2: y^2 = (4 + sqrt(24))/2 = 2 + sqrt(6).
+    BOOST_TEST(at(value_of(d, "y"), point) == std::sqrt(2 + std::sqrt(6.0)), boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(d.steps.front().solutions.size() == 2u);
+    BOOST_TEST(every_step_check_proven(d.steps.front()));
+}
+
 BOOST_AUTO_TEST_CASE(a_linear_system_is_solved_as_before)
 {
     const engine::derivation d = derive_text(with_x_and_y(
@@ -154,8 +333,13 @@ BOOST_AUTO_TEST_CASE(unsolvable_systems_are_refused_with_their_reason)
                             "[[result]]\nname = \"y\"\n");
     };
     BOOST_TEST(error_for(solving("y^3 = x")).message() ==
-               "the system is not linear in y, and eliminating the unknowns it holds linearly leaves no "
-               "equation of degree 2 or less in one unknown (-x+y^3 = 0 is of degree 3 in y)");
+               "the system is not linear in y: -x+y^3 = 0 is of degree 3 in y and has no factor over the rationals: beyond the quadratic "
+               "formula (a polynomial in one unknown is solved when its factors over the rationals are of degree "
+               "2 or less, or quadratic in y^2)");
+    BOOST_TEST(error_for(solving("(y - x)*(y^3 - x) = 0")).message() ==
+               "the system is not linear in y: x^2-x*y-x*y^3+y^4 = 0 is of degree 4 in y, and its factor -x+y^3 is of degree 3: beyond "
+               "the quadratic formula (a polynomial in one unknown is solved when its factors over the rationals "
+               "are of degree 2 or less, or quadratic in y^2)");
     BOOST_TEST(error_for(solving("y^2 = -x")).message() ==
                "the system has no real solution: x+y^2 = 0 has no real root (b^2 - 4 a c = -4*x < 0)");
     BOOST_TEST(error_for(solving("y^2 = x", "reject = [\"y = x\"]\nreject_because = \"why\"\n")).message() ==

@@ -1,6 +1,7 @@
 #include "engine/sign.h"
 
 #include "engine/infix.h"
+#include "engine/sign_arguments.h"
 
 #include <cln/rational.h>
 #include <cln/real.h>
@@ -168,6 +169,8 @@ private:
             return *linear;
         if (auto affine = affine_in_bounded_symbol(e, depth))
             return *affine;
+        if (auto argued = argued_sign(e, depth))
+            return *argued;
         const bool radical = has_radical(e);
 
         // A - B with A, B >= 0 has the sign of A^2 - B^2. The terms with radicals form
@@ -218,6 +221,29 @@ private:
             }
         }
         return {r, "a sum of terms of unknown sign"};
+    }
+
+    // An argument about one symbol (sign_arguments.h): Sturm's theorem for a
+    // polynomial in one symbol alone, else monotonicity in a symbol bounded below.
+    std::optional<std::pair<sign_set, sign_reason>> argued_sign(const GiNaC::ex& e, int depth) const
+    {
+        if (depth > 6)
+            return std::nullopt;
+        const auto write = [this](const GiNaC::ex& x) { return text(x); };
+        std::vector<std::pair<GiNaC::ex, const domain*>> in;
+        for (const auto& [s, d] : domains_)
+            if (e.has(s))
+                in.emplace_back(s, &d);
+        if (in.size() == 1)
+            if (auto sturm = sturm_sign(e, in.front().first, *in.front().second, write))
+                return sturm;
+        for (const auto& [s, d] : in) {
+            auto monotone = monotone_sign(
+                e, s, *d, [&](const GiNaC::ex& x) { return sign(factored(x), depth + 1); }, write);
+            if (monotone)
+                return monotone;
+        }
+        return std::nullopt;
     }
 
     // A polynomial of degree one in a symbol s with an interval domain, or in s^2 (no odd
@@ -339,13 +365,29 @@ bool worth_factoring(const GiNaC::ex& e)
     return !GiNaC::is_a<GiNaC::add>(expanded) || expanded.nops() <= most_terms_factored;
 }
 
+// factor()'s result with each factor a flat sum: factor() may leave a factor partly
+// collected (t*(a^2 + b^2) + 2*a*v for t*a^2 + t*b^2 + 2*a*v), one way or the other
+// depending on GiNaC's order of terms, which changes from run to run.
+GiNaC::ex flattened(const GiNaC::ex& f)
+{
+    if (GiNaC::is_a<GiNaC::add>(f))
+        return GiNaC::expand(f);
+    if (GiNaC::is_a<GiNaC::mul>(f) || (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::integer))) {
+        struct each : GiNaC::map_function {
+            GiNaC::ex operator()(const GiNaC::ex& part) override { return flattened(part); }
+        } flatten;
+        return f.map(flatten);
+    }
+    return f;
+}
+
 } // namespace
 
 // factor() on a polynomial; an expression with radicals is left as it is, since
 // factoring under a root may pull out -1 and leave I behind.
 GiNaC::ex factor_polynomial(const GiNaC::ex& e)
 {
-    return worth_factoring(e) ? GiNaC::factor(e) : e;
+    return worth_factoring(e) ? flattened(GiNaC::factor(e)) : e;
 }
 
 GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
@@ -358,7 +400,7 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
     const auto known = factored.find(e);
     if (known != factored.end())
         return known->second;
-    const GiNaC::ex f = worth_factoring(e) ? GiNaC::factor(e) : e;
+    const GiNaC::ex f = worth_factoring(e) ? flattened(GiNaC::factor(e)) : e;
     if (factored.size() >= 4096)  // bounded: a long run (the fuzzer) meets ever new polynomials
         factored.clear();
     factored.emplace(e, f);

@@ -7,8 +7,9 @@
 // function of one bounded symbol at the ends of its interval, a polynomial of degree
 // one in a bounded symbol or its square, whatever its other symbols, by its signs at
 // the ends (1 − b² on [−1, 1]; a sum −(1 − e²)A − (1 − b²)B expanded over one
-// denominator), or A − B with A, B ≥ 0 through A² − B²). The derivation of each
-// factor's sign is kept as the proof text.
+// denominator), a polynomial in one symbol by Sturm's theorem or in a bounded symbol by
+// its monotonicity (sign_arguments.h), or A − B with A, B ≥ 0 through A² − B²). The
+// derivation of each factor's sign is kept as the proof text.
 #pragma once
 
 #include "engine/finding.h"

@@ -1,5 +1,7 @@
 #include "engine/solve.h"
 
+#include "engine/eliminate.h"
+
 #include <cln/rational.h>
 #include <cln/real.h>
 #include <fmt/format.h>
@@ -32,84 +34,6 @@ std::string join(const std::vector<spec::text>& items)
     return out;
 }
 
-// Why a system could not be solved, said at the step by the caller.
-struct unsolvable : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-bool has_any(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols)
-{
-    for (const GiNaC::ex& s : symbols)
-        if (e.has(s))
-            return true;
-    return false;
-}
-
-// lhs − rhs (or an expression) as a polynomial: the numerator of its normal form, expanded.
-GiNaC::ex polynomial_of(const GiNaC::ex& e)
-{
-    const GiNaC::ex difference = GiNaC::is_a<GiNaC::relational>(e) ? e.lhs() - e.rhs() : e;
-    return GiNaC::expand(GiNaC::normal(difference).numer_denom().op(0));
-}
-
-// √n = k√r for a positive rational n, k the largest square taken out of it by trial
-// division (numbers in derivations are small): √8 = 2√2, √(9/2) = 3√2/2.
-GiNaC::ex root_of_number(const GiNaC::numeric& n)
-{
-    if (!n.is_rational() || !n.is_positive())
-        return GiNaC::sqrt(GiNaC::ex(n));   // GiNaC::sqrt(numeric) would be a float
-    GiNaC::numeric whole = n.numer() * n.denom(), outside = 1;
-    for (GiNaC::numeric k = 2; k < 1000 && k * k <= whole; ++k) {
-        while (GiNaC::irem(whole, k * k).is_zero()) {
-            whole = GiNaC::iquo(whole, k * k);
-            outside *= k;
-        }
-    }
-    return outside * GiNaC::sqrt(GiNaC::ex(whole)) / n.denom();
-}
-
-// √d up to its sign: the square of each factor is taken out whatever the factor's sign,
-// since both roots ±√d are taken (√((a − b)² c) → (a − b)√c).
-GiNaC::ex root_up_to_sign(const GiNaC::ex& d, proof_cache& run)
-{
-    const GiNaC::ex nd = GiNaC::normal(d).numer_denom();
-    GiNaC::ex outside = 1, inside = 1;
-    for (int part = 0; part < 2; ++part) {
-        const GiNaC::ex f = factor_polynomial(nd.op(part), run);
-        GiNaC::exvector factors;
-        if (GiNaC::is_a<GiNaC::mul>(f))
-            factors.assign(f.begin(), f.end());
-        else
-            factors.push_back(f);
-        for (const GiNaC::ex& g : factors) {
-            GiNaC::ex base = g;
-            GiNaC::numeric k = 1;
-            if (GiNaC::is_a<GiNaC::power>(g) && g.op(1).info(GiNaC::info_flags::posint)) {
-                base = g.op(0);
-                k = GiNaC::ex_to<GiNaC::numeric>(g.op(1));
-            }
-            const GiNaC::numeric half = k.is_even() ? k / 2 : (k - 1) / 2;
-            const GiNaC::ex out = GiNaC::pow(base, half), in = GiNaC::pow(base, k - 2 * half);
-            outside = part == 0 ? outside * out : outside / out;
-            inside = part == 0 ? inside * in : inside / in;
-        }
-    }
-    // A positive number comes out of the root as far as it is a square; the rest of
-    // the root is kept whole.
-    GiNaC::numeric number = 1;
-    GiNaC::ex rest = 1;
-    const GiNaC::ex parts = GiNaC::is_a<GiNaC::mul>(inside) ? inside : GiNaC::ex(GiNaC::lst{inside});
-    for (const GiNaC::ex& f : parts) {
-        if (GiNaC::is_a<GiNaC::numeric>(f))
-            number *= GiNaC::ex_to<GiNaC::numeric>(f);
-        else
-            rest *= f;
-    }
-    if (number.is_positive())
-        return outside * root_of_number(number) * GiNaC::sqrt(rest);
-    return outside * GiNaC::sqrt(inside);
-}
-
 // A solution's value in its simplest form: as `simplified`, with each radical standing
 // as a symbol while the rest is factored (√2 √(gh) m + √2 √(gh) M → √2 √(gh) (m + M)).
 GiNaC::ex simplest(const GiNaC::ex& value, const assumptions& given)
@@ -124,6 +48,17 @@ GiNaC::ex simplest(const GiNaC::ex& value, const assumptions& given)
         GiNaC::ex operator()(const GiNaC::ex& part) override
         {
             if (GiNaC::is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
+                // A number's root past its first power (GiNaC writes 2·√2 as 2^(3/2)):
+                // the whole powers stand outside, so that they cancel (2^(3/2)/4 = √2/2).
+                const GiNaC::ex& exponent = part.op(1);
+                if (GiNaC::is_a<GiNaC::numeric>(part.op(0)) && exponent.info(GiNaC::info_flags::rational) &&
+                    GiNaC::ex_to<GiNaC::numeric>(exponent).denom() == 2 &&
+                    GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(exponent)) > 1) {
+                    const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(exponent);
+                    const GiNaC::numeric whole = k.is_positive() ? (k - GiNaC::numeric(1, 2)) : (k + GiNaC::numeric(1, 2));
+                    return GiNaC::pow(part.op(0), whole) *
+                           (*this)(GiNaC::pow(part.op(0), k.is_positive() ? GiNaC::numeric(1, 2) : GiNaC::numeric(-1, 2)));
+                }
                 auto found = to.find(part);
                 if (found == to.end()) {
                     const GiNaC::ex standing = GiNaC::realsymbol();
@@ -142,115 +77,20 @@ GiNaC::ex simplest(const GiNaC::ex& value, const assumptions& given)
                              given);
 }
 
-// Every solution of polynomial equations, by elimination (see solve.h). A branch whose
-// equations reduce to a non-zero constant has no solution and ends there; a quadratic
-// whose discriminant is proven negative has no real root.
-class eliminator {
-public:
-    eliminator(const symbol_table& symbols, const assumptions& given) : symbols_(symbols), given_(given) {}
-
-    std::vector<GiNaC::exmap> found;
-    std::size_t dead_ends = 0;     // branches found inconsistent
-    std::vector<std::string> complex;  // quadratics without real roots, in words
-
-    void run(const std::vector<GiNaC::ex>& equations, const std::vector<GiNaC::ex>& unknowns,
-             const GiNaC::exmap& values)
-    {
-        std::vector<GiNaC::ex> left;
-        for (const GiNaC::ex& e : equations) {
-            const GiNaC::ex p = polynomial_of(e);
-            if (p.is_zero())
-                continue;
-            if (!has_any(p, unknowns)) {
-                ++dead_ends;
-                return;
-            }
-            left.push_back(p);
+// Each radicand expanded (√(−(Xg + s²)(Xg − s²)) = √(s⁴ − g²X²)): a condition written with
+// the radical in the author's form meets the solution's in one form.
+GiNaC::ex expanded_radicands(const GiNaC::ex& e)
+{
+    struct expand_under : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& part) override
+        {
+            if (GiNaC::is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer))
+                return GiNaC::pow(GiNaC::expand((*this)(part.op(0))), part.op(1));
+            return part.map(*this);
         }
-        if (unknowns.empty()) {
-            found.push_back(values);
-            return;
-        }
-        if (left.empty())
-            throw unsolvable(fmt::format("the equations do not determine {}: the system is underdetermined",
-                                         names(unknowns)));
-        // An unknown that an equation holds linearly, with a coefficient free of the
-        // unknowns: u = −c₀/c₁, substituted everywhere.
-        for (const GiNaC::ex& p : left) {
-            for (const GiNaC::ex& u : unknowns) {
-                if (!p.is_polynomial(u) || p.degree(u) != 1 || has_any(p.coeff(u, 1), unknowns))
-                    continue;
-                eliminate(left, p, unknowns, u, -p.coeff(u, 0) / p.coeff(u, 1), values);
-                return;
-            }
-        }
-        // An equation in one unknown of degree two: a u² + b u + c = 0.
-        for (const GiNaC::ex& p : left) {
-            std::vector<GiNaC::ex> in;
-            for (const GiNaC::ex& u : unknowns)
-                if (p.has(u))
-                    in.push_back(u);
-            if (in.size() != 1 || !p.is_polynomial(in.front()) || p.degree(in.front()) != 2)
-                continue;
-            const GiNaC::ex u = in.front();
-            const GiNaC::ex a = p.coeff(u, 2), b = p.coeff(u, 1), c = p.coeff(u, 0);
-            const GiNaC::ex discriminant = GiNaC::expand(b * b - 4 * a * c);
-            const sign_set s = prove_sign(discriminant, given_).sign;
-            if (!s.positive && !s.zero) {
-                complex.push_back(fmt::format("{} = 0 has no real root (b^2 - 4 a c = {} < 0)", symbols_.text(p),
-                                              symbols_.text(discriminant)));
-                return;
-            }
-            const GiNaC::ex root = discriminant.is_zero() ? GiNaC::ex(0) : root_up_to_sign(discriminant, *given_.run);
-            eliminate(left, p, unknowns, u, (-b + root) / (2 * a), values);
-            if (!root.is_zero())
-                eliminate(left, p, unknowns, u, (-b - root) / (2 * a), values);
-            return;
-        }
-        std::string degrees;
-        for (const GiNaC::ex& p : left)
-            for (const GiNaC::ex& u : unknowns)
-                if (p.has(u))
-                    degrees += fmt::format("{}{} = 0 is {} in {}", degrees.empty() ? "" : "; ", symbols_.text(p),
-                                           p.is_polynomial(u) ? fmt::format("of degree {}", p.degree(u))
-                                                              : std::string("not polynomial"),
-                                           symbols_.text(u));
-        throw unsolvable(fmt::format("the system is not linear in {}, and eliminating the unknowns it holds "
-                                     "linearly leaves no equation of degree 2 or less in one unknown ({})",
-                                     names(unknowns), degrees));
-    }
-
-private:
-    void eliminate(const std::vector<GiNaC::ex>& left, const GiNaC::ex& used, const std::vector<GiNaC::ex>& unknowns,
-                   const GiNaC::ex& u, const GiNaC::ex& value, const GiNaC::exmap& values)
-    {
-        const GiNaC::exmap one{{u, value}};
-        std::vector<GiNaC::ex> rest;
-        for (const GiNaC::ex& p : left)
-            if (!p.is_equal(used))
-                rest.push_back(p.subs(one, GiNaC::subs_options::no_pattern));
-        std::vector<GiNaC::ex> others;
-        for (const GiNaC::ex& v : unknowns)
-            if (!v.is_equal(u))
-                others.push_back(v);
-        GiNaC::exmap now;
-        for (const auto& [symbol, earlier] : values)
-            now[symbol] = earlier.subs(one, GiNaC::subs_options::no_pattern);
-        now[u] = value;
-        run(rest, others, now);
-    }
-
-    std::string names(const std::vector<GiNaC::ex>& unknowns) const
-    {
-        std::string out;
-        for (const GiNaC::ex& u : unknowns)
-            out += (out.empty() ? "" : ", ") + symbols_.text(u);
-        return out;
-    }
-
-    const symbol_table& symbols_;
-    const assumptions& given_;
-};
+    } expand;
+    return expand(e);
+}
 
 // Where a value lies with respect to its unknown's domain: proven inside, proven
 // outside, or not settled (then it stays admissible).
@@ -418,11 +258,23 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
     } else {
         eliminator solver(context.symbols, given);
         try {
-            solver.run(std::vector<GiNaC::ex>(system.begin(), system.end()), unknown_list, {});
+            solver.run(std::vector<GiNaC::ex>(system.begin(), system.end()), unknown_list);
         } catch (const unsolvable& e) {
             throw error(st.where, e.what());
         }
-        found = std::move(solver.found);
+        // What a split on a coefficient or a resultant found is a solution only where it
+        // satisfies every equation.
+        for (const candidate& c : solver.found) {
+            const bool solves = !c.unverified || std::all_of(system.begin(), system.end(), [&](const GiNaC::ex& e) {
+                try {
+                    return may_vanish(polynomial_of(e.subs(c.values, GiNaC::subs_options::no_pattern)), given);
+                } catch (const std::exception&) {
+                    return false;   // a denominator of the value vanishes
+                }
+            });
+            if (solves)
+                found.push_back(c.values);
+        }
         complex = std::move(solver.complex);
     }
     if (found.empty())
@@ -471,7 +323,7 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
         for (const auto& [u, v] : s.values)
             values[u] = v;
         for (std::size_t i = 0; i < conditions.size(); ++i) {
-            const GiNaC::ex holds = conditions[i].subs(values, GiNaC::subs_options::no_pattern);
+            const GiNaC::ex holds = expanded_radicands(conditions[i].subs(values, GiNaC::subs_options::no_pattern));
             if (prove_equal(holds.lhs(), holds.rhs(), context.symbols, context.run).what == verdict::status::proven) {
                 s.outcome = solution::fate::condition;
                 s.condition = context.symbols.parse_equation(st.reject[i]);

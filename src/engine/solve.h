@@ -1,10 +1,11 @@
 // Solving a step's equations for its unknowns.
 //
 // A linear system is solved by GiNaC's lsolve. Any other is brought to polynomials in
-// the unknowns (the numerators of lhs − rhs) and solved by elimination: an equation
-// linear in an unknown, with a coefficient free of the unknowns, is solved for it and
-// substituted into the others; an equation left in one unknown, of degree two, is
-// solved by the quadratic formula, each root a branch of its own. Every solution found
+// the unknowns (the numerators of lhs − rhs) and solved by elimination (eliminate.h): an
+// unknown held linearly is substituted (splitting the system where its coefficient holds
+// other unknowns), an equation left in one unknown is solved through its factors of
+// degree one or two, and two equations that share an unknown give way to their
+// resultant; each root is a branch of its own. Every solution found
 // is substituted back into the equations and proven, then kept or rejected: by the
 // declared domain of an unknown (the sign of the value proven against it: a positive V
 // rejects V = −√(2gh)), or by a condition the step states (`reject`, proven to hold for
