@@ -1,5 +1,6 @@
 #include "engine/cases.h"
 
+#include "engine/condition_proof.h"
 #include "engine/infix.h"
 
 #include <fmt/format.h>
@@ -222,107 +223,11 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
 
 namespace {
 
-// |x y| = |x| |y|, and |x| = x or -x where the sign of x is proven: the absolute values
-// a case's value and condition hold, taken out where the domains allow.
-GiNaC::ex without_abs(const GiNaC::ex& e, const assumptions& given)
+// The claim proven under the case's condition, or none (nothing sampled).
+std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
+                                   const symbol_table& symbols, const assumptions& given)
 {
-    if (!e.has(GiNaC::abs(GiNaC::wild())))
-        return e;
-    if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
-        const GiNaC::ex inside = without_abs(e.op(0), given);
-        const sign_set s = prove_sign(inside, given).sign;
-        if (!s.negative)
-            return inside;
-        if (!s.positive)
-            return -inside;
-        if (GiNaC::is_a<GiNaC::mul>(inside)) {
-            GiNaC::ex product = 1;
-            for (std::size_t i = 0; i < inside.nops(); ++i)
-                product *= without_abs(GiNaC::abs(inside.op(i)), given);
-            return product;
-        }
-        if (GiNaC::is_a<GiNaC::power>(inside) && inside.op(1).info(GiNaC::info_flags::integer))
-            return GiNaC::pow(without_abs(GiNaC::abs(inside.op(0)), given), inside.op(1));
-        return GiNaC::abs(inside);
-    }
-    struct inside : GiNaC::map_function {
-        const assumptions& given;
-        explicit inside(const assumptions& g) : given(g) {}
-        GiNaC::ex operator()(const GiNaC::ex& x) override { return without_abs(x, given); }
-    } each(given);
-    return e.map(each);
-}
-
-// The real symbols of unknown sign whose absolute value `e` takes.
-void symbols_under_abs(const GiNaC::ex& e, const assumptions& given, std::vector<GiNaC::ex>& found)
-{
-    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-        if (!GiNaC::is_a<GiNaC::function>(*it) || GiNaC::ex_to<GiNaC::function>(*it).get_name() != "abs" ||
-            !GiNaC::is_a<GiNaC::symbol>(it->op(0)))
-            continue;
-        const GiNaC::ex x = it->op(0);
-        const auto d = given.domains.find(x);
-        if ((d == given.domains.end() || !d->second.is_nonnegative()) &&
-            std::find_if(found.begin(), found.end(), [&x](const GiNaC::ex& y) { return y.is_equal(x); }) == found.end())
-            found.push_back(x);
-    }
-}
-
-// The claim G >= 0 (> 0) from the condition C >= 0 (> 0) by dividing G's numerator by
-// C's in a symbol x that C is linear in, a term at a time: G = q C + r with q and r
-// proven non-negative, as a textbook bounds a quadratic by the condition it lies under.
-std::optional<verdict> divided_by_condition(const GiNaC::ex& g, bool strict, const GiNaC::ex& condition,
-                                            bool condition_strict, const assumptions& given)
-{
-    const GiNaC::ex gnd = GiNaC::normal(g).numer_denom();
-    const GiNaC::ex cnd = GiNaC::normal(condition).numer_denom();
-    const GiNaC::ex top = GiNaC::expand(gnd.op(0)), bottom = gnd.op(1);
-    const GiNaC::ex c_top = GiNaC::expand(cnd.op(0)), c_bottom = cnd.op(1);
-    std::vector<GiNaC::ex> xs;
-    for (GiNaC::const_preorder_iterator it = c_top.preorder_begin(); it != c_top.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it) &&
-            std::find_if(xs.begin(), xs.end(), [&it](const GiNaC::ex& y) { return y.is_equal(*it); }) == xs.end())
-            xs.push_back(*it);
-    for (const GiNaC::ex& x : xs) {
-        if (c_top.degree(x) != 1 || top.degree(x) < 1 || top.ldegree(x) < 0)
-            continue;
-        const GiNaC::ex lead = c_top.coeff(x, 1);
-        GiNaC::ex q = 0, r = top;
-        for (int k = top.degree(x); k >= 1; --k) {
-            const GiNaC::ex t = GiNaC::normal(r.coeff(x, k) / lead) * GiNaC::pow(x, k - 1);
-            q += t;
-            r = GiNaC::normal(GiNaC::expand(top - q * c_top));
-            // G = (q c_bottom / bottom) C + r / bottom.
-            const GiNaC::ex factor = GiNaC::normal(q * c_bottom / bottom);
-            const GiNaC::ex rest = GiNaC::normal(r / bottom);
-            const sign_proof pq = prove_sign(factor, given);
-            if (pq.sign.negative)
-                continue;
-            const sign_proof pr = prove_sign(rest, given);
-            if (pr.sign.negative)
-                continue;
-            if (strict && !(positive(pr.sign) || (positive(pq.sign) && condition_strict)))
-                continue;
-            verdict v;
-            v.what = verdict::status::proven;
-            v.residual = 0;
-            v.proof = pq.steps;
-            v.proof.insert(v.proof.end(), pr.steps.begin(), pr.steps.end());
-            v.method = fmt::format("{} = ({})*({}) + {}, divided by the condition's side in {}: a factor {} times "
-                                   "it plus a remainder {}",
-                                   given.text(g), given.text(factor), given.text(condition), given.text(rest),
-                                   given.text(x), pq.sign.describe(), pr.sign.describe());
-            return v;
-        }
-    }
-    return std::nullopt;
-}
-
-verdict prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
-                    const symbol_table& symbols, const assumptions& given)
-{
-    const verdict alone = prove_inequality(lhs, op, rhs, symbols, given);
-    if (alone.what == verdict::status::proven)
+    if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, given))
         return alone;
 
     const GiNaC::exmap abbreviations = symbols.abbreviations();
@@ -362,37 +267,52 @@ verdict prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, con
             return v;
         }
     }
-    if (!condition.value.is_zero())
-        if (auto v = divided_by_condition(g, strict, condition.value, condition.strict, given)) {
-            v->method = fmt::format("{}: {}", under, v->method);
-            return *v;
-        }
     // A bound on one symbol by a number (x <= 1): the sign proof run again on the symbol's
     // domain narrowed by it.
     if (const auto bound = bound_domain(c, given)) {
         assumptions narrowed = given;
         narrowed.domains[bound->first] = bound->second;
         narrowed.known = std::make_shared<worked_out>();
-        verdict v = prove_inequality(lhs, op, rhs, symbols, narrowed);
-        if (v.what == verdict::status::proven) {
-            v.method = fmt::format("{}, {} in {}: {}", under, ginac_syntax(bound->first, symbols.order()),
-                                   bound->second.to_string(), v.method);
+        if (auto v = prove_inequality_by_signs(lhs, op, rhs, symbols, narrowed)) {
+            v->method = fmt::format("{}, {} in {}: {}", under, ginac_syntax(bound->first, symbols.order()),
+                                    bound->second.to_string(), v->method);
             return v;
         }
     }
-    verdict v = alone;
+    if (!condition.value.is_zero())
+        if (auto v = divided_by_condition(g, strict, condition.value, condition.strict, given)) {
+            v->method = fmt::format("{}: {}", under, v->method);
+            return *v;
+        }
+    return std::nullopt;
+}
+
+// Not proven under the condition of `c`: the verdict over the whole domain, sampled where
+// it holds (never proven), failed where it does not (which may be outside the case).
+verdict unproven_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
+                         const symbol_table& symbols, const assumptions& given)
+{
+    verdict v = prove_inequality(lhs, op, rhs, symbols, given);
+    const std::string under = fmt::format("under {}", condition_text(c, given.order));
     if (v.what == verdict::status::sampled)
         v.method = fmt::format("not proven {}; sampled over the whole domain, where it holds: {}", under, v.method);
-    else
+    else if (v.what == verdict::status::failed)
         v.method = fmt::format("not proven {} (it fails somewhere in the whole domain): {}", under, v.method);
     return v;
 }
 
-// The condition of `c` proven false under `given`: the case does not arise.
+// The condition of `c` proven false under `given`: the case does not arise. Asked where a
+// condition may have become one the domains decide (at special values, for a sign of
+// what is under |.|), and only of a condition of a few terms: a sign proof of a long
+// sum that holds somewhere costs seconds and finds nothing.
 bool cannot_arise(const case_value& c, const symbol_table& symbols, const assumptions& given)
 {
+    constexpr std::size_t most_terms = 4;
     const nonnegative_form f = condition_form(c);
     const GiNaC::ex value = without_abs(GiNaC::normal(f.value.subs(symbols.abbreviations())), given);
+    const GiNaC::ex top = GiNaC::expand(value.numer());
+    if (GiNaC::is_a<GiNaC::add>(top) && top.nops() > most_terms)
+        return false;
     const sign_set s = prove_sign(value, given).sign;
     return f.strict ? !s.positive : (!s.positive && !s.zero);
 }
@@ -412,7 +332,9 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
         case_value plain = c;
         plain.lhs = without_abs(c.lhs, given);
         plain.rhs = without_abs(c.rhs, given);
-        return prove_under(l, op, r, plain, symbols, given);
+        if (auto v = prove_under(l, op, r, plain, symbols, given))
+            return *v;
+        return unproven_in_case(lhs, op, rhs, c, symbols, given);
     }
     std::vector<check_result::part> parts;
     const std::size_t branches = xs.size() == 1 ? 3 : 9;
@@ -457,23 +379,18 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
         try {
             const GiNaC::ex l = without_abs(lhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
             const GiNaC::ex r = without_abs(rhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
-            part.outcome = prove_under(l, op, r, here, symbols, signed_given);
+            if (auto v = prove_under(l, op, r, here, symbols, signed_given))
+                part.outcome = std::move(*v);
+            else
+                part.outcome.method = "not proven there";
         } catch (const std::exception&) {
             part.outcome.method = "the claim is not defined there";
         }
+        if (part.outcome.what != verdict::status::proven)
+            return unproven_in_case(lhs, op, rhs, c, symbols, given);
         parts.push_back(std::move(part));
     }
-    verdict v = combined(parts, "by the sign of what is under |.|");
-    if (v.what == verdict::status::failed) {
-        // A failed branch may fail outside the case: the verdict over the whole domain says.
-        const verdict alone = prove_inequality(lhs, op, rhs, symbols, given);
-        if (alone.what == verdict::status::sampled) {
-            v = alone;
-            v.method = fmt::format("not proven under {}; sampled over the whole domain, where it holds: {}",
-                                   condition_text(c, given.order), alone.method);
-        }
-    }
-    return v;
+    return combined(parts, "by the sign of what is under |.|");
 }
 
 bool same_conditions(const std::vector<case_value>& a, const std::vector<case_value>& b)
@@ -496,25 +413,29 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
     c.cases_of = fmt::format("{}", fmt::join(names, " and "));
     const std::size_t count = split.pieces.front().size();
     for (std::size_t i = 0; i < count; ++i) {
-        GiNaC::exmap in_case;
-        std::vector<std::string> values;
         case_value one = split.pieces.front()[i];
-        for (std::size_t k = 0; k < split.symbols.size(); ++k) {
-            GiNaC::ex value = split.pieces[k][i].value;
-            if (!at.empty())
-                value = value.subs(at);
-            in_case[split.symbols[k]] = value;
-            values.push_back(fmt::format("{} = {}", names[k], given.text(value)));
-        }
+        check_result::part part;
+        part.first = i + 1;
         if (!at.empty()) {
             one.lhs = one.lhs.subs(at);
             one.rhs = one.rhs.subs(at);
-            one.value = in_case[split.symbols.front()];
         }
-        const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
-        const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
-        check_result::part part;
-        part.first = i + 1;
+        // A value at special values where its case does not arise may not exist (k/(1 + b)
+        // at b = -1): it is worked out only where the case arises.
+        GiNaC::exmap in_case;
+        std::vector<std::string> values;
+        for (std::size_t k = 0; k < split.symbols.size(); ++k) {
+            GiNaC::ex value = split.pieces[k][i].value;
+            try {
+                if (!at.empty())
+                    value = value.subs(at);
+            } catch (const std::exception&) {
+                value = split.pieces[k][i].value;
+            }
+            in_case[split.symbols[k]] = value;
+            values.push_back(fmt::format("{} = {}", names[k], given.text(value)));
+        }
+        one.value = in_case[split.symbols.front()];
         part.in_case = one;
         part.under = fmt::format("case {} ({}, where {})", i + 1, fmt::join(values, ", "),
                                  condition_text(one, given.order));
@@ -530,7 +451,7 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
                                                          : g < 0;
             if (!arises)
                 part.outcome.method = "the case does not arise: its condition is false at these values";
-        } else if (cannot_arise(one, symbols, given)) {
+        } else if (!at.empty() && cannot_arise(one, symbols, given)) {
             arises = false;
             part.outcome.method = "the case does not arise: the domains make its condition false";
         }
@@ -538,6 +459,8 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
             part.outcome.what = verdict::status::proven;
             part.outcome.residual = 0;
         } else {
+            const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
+            const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
             part.outcome = c.op == relation::equal ? prove_equal(lhs, rhs, symbols, run)
                                                    : prove_in_case(lhs, c.op, rhs, one, symbols, given);
         }

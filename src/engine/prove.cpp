@@ -290,6 +290,25 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
     return sample(a, b, residual, symbols, nearly_equal, "=");
 }
 
+std::optional<verdict> prove_inequality_by_signs(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                                 const symbol_table& symbols, const assumptions& given)
+{
+    const GiNaC::exmap abbreviations = symbols.abbreviations();
+    const bool upper = op == relation::less_equal || op == relation::less;
+    const bool strict = op == relation::less || op == relation::greater;
+    const GiNaC::ex a = spelled_out(lhs, abbreviations), b = spelled_out(rhs, abbreviations);
+    const GiNaC::ex difference = upper ? b - a : a - b;
+    const sign_proof proof = prove_sign(difference, given);
+    if (proof.sign.negative || (strict && proof.sign.zero))
+        return std::nullopt;
+    verdict v;
+    v.residual = GiNaC::normal(difference);
+    v.proof = proof.steps;
+    v.what = verdict::status::proven;
+    v.method = fmt::format("the sign of each factor of {} follows from the domains", given.text(v.residual));
+    return v;
+}
+
 verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const symbol_table& symbols,
                          const assumptions& given)
 {
@@ -298,17 +317,12 @@ verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs
     const GiNaC::ex b = spelled_out(rhs, abbreviations);
     // lhs <= rhs  <=>  rhs - lhs >= 0; strict relations need > 0.
     const bool upper = op == relation::less_equal || op == relation::less;
-    const bool strict = op == relation::less || op == relation::greater;
     const GiNaC::ex difference = upper ? b - a : a - b;
-    const sign_proof proof = prove_sign(difference, given);
+    if (auto proven = prove_inequality_by_signs(lhs, op, rhs, symbols, given))
+        return *proven;
+    const sign_proof proof = prove_sign(difference, given);   // worked out: the steps it got to
     verdict v;
     v.residual = GiNaC::normal(difference);
-    v.proof = proof.steps;
-    if (!proof.sign.negative && !(strict && proof.sign.zero)) {
-        v.what = verdict::status::proven;
-        v.method = fmt::format("the sign of each factor of {} follows from the domains", given.text(v.residual));
-        return v;
-    }
     auto holds = [&](const GiNaC::numeric& x, const GiNaC::numeric& y) {
         switch (op) {
         case relation::less_equal: return x <= y;

@@ -42,6 +42,11 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
 verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const symbol_table& symbols,
                          const assumptions& given);
 
+/// Decides `lhs op rhs` from the signs of the factors of the difference alone: proven,
+/// or none (nothing sampled).
+std::optional<verdict> prove_inequality_by_signs(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                                 const symbol_table& symbols, const assumptions& given);
+
 /// An equality the derivation has proven (a check, or a result's display form), its
 /// sides with the derived quantities substituted and nothing expanded.
 struct proven_identity {

@@ -237,6 +237,10 @@ private:
         if (in.size() == 1)
             if (auto sturm = sturm_sign(e, in.front().first, *in.front().second, write))
                 return sturm;
+        // Trying every symbol, and again for each slope, grows as the symbols' count to the
+        // depth: kept to short polynomials in a few symbols (in ten, it ran for half an hour).
+        if (depth > 2 || in.size() > 4 || (GiNaC::is_a<GiNaC::add>(e) && e.nops() > 24))
+            return std::nullopt;
         for (const auto& [s, d] : in) {
             auto monotone = monotone_sign(
                 e, s, *d, [&](const GiNaC::ex& x) { return sign(factored(x), depth + 1); }, write);
@@ -350,11 +354,9 @@ bool has_radical(const GiNaC::ex& e)
 
 namespace {
 
-// GiNaC's factor() takes time exponential in the number of variables of a large
-// polynomial and cannot be interrupted: the expanded energy of two rough spheres (a
-// difference of two sums of squares in eleven symbols) did not finish in ten minutes.
-// A polynomial of more terms than this is left as it is; its sign is then settled by
-// another argument (an earlier check's closed form, see prove_inequality) or sampled.
+// factor() cannot be interrupted and took over ten minutes on the expanded energy of two
+// rough spheres (eleven symbols): a longer polynomial is left as it is, its sign settled
+// by another argument (an earlier check's closed form, prove_inequality_through) or sampled.
 constexpr std::size_t most_terms_factored = 120;
 
 bool worth_factoring(const GiNaC::ex& e)
