@@ -363,3 +363,126 @@ BOOST_AUTO_TEST_CASE(at_special_values_a_case_that_does_not_arise_is_not_proven_
     BOOST_TEST(half.parts.at(1).outcome.method == "the case does not arise: its condition is false at these values");
     BOOST_TEST(!half.outcome.holds());
 }
+
+// Two quantities defined by cases with the same conditions are split on together: in each
+// case both take that case's value.
+BOOST_AUTO_TEST_CASE(a_check_splits_on_two_quantities_with_the_same_conditions)
+{
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[symbol]]\nname = \"z\"\n"
+        "[[step]]\ndefine = \"z\"\ncases = [{ when = \"x <= 1\", as = \"1 - x\" }, { when = \"x > 1\", as = \"0\" }]\n"
+        "[[check]]\nname = \"sum\"\nclaim = \"y + z = 1\"\n"));
+    // x + (1 - x) = 1 where x <= 1, 1 + 0 = 1 where x > 1.
+    const engine::check_result& c = check_named(d, "sum");
+    BOOST_TEST(c.cases_of == "y and z");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(c.parts[0].under.rfind("case 1 (y = x, z = 1-x, where x <= 1)", 0) == 0, c.parts[0].under);
+    BOOST_TEST(proven(c.outcome));
+
+    const std::string message = message_for(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",
+        "[[symbol]]\nname = \"z\"\n"
+        "[[step]]\ndefine = \"z\"\ncases = [{ when = \"x <= 2\", as = \"1 - x\" }, { when = \"x > 2\", as = \"0\" }]\n"
+        "[[check]]\nname = \"sum\"\nclaim = \"y + z = 1\"\n"));
+    BOOST_TEST(message.find("both defined by cases with different conditions") != std::string::npos, message);
+}
+
+// |x| for a real x: the claim proven for x > 0, x < 0 and x = 0 apart. Clipping x to
+// [-1, 1] by cases: |y| <= 1 in both cases, and in the second only through x/|x| = ±1.
+BOOST_AUTO_TEST_CASE(absolute_values_are_proven_by_the_sign_of_what_is_under_them)
+{
+    const std::string text = "id = \"t\"\ntitle = \"t\"\n"
+                             "[[symbol]]\nname = \"x\"\n"
+                             "[[symbol]]\nname = \"y\"\n"
+                             "[[step]]\ndefine = \"y\"\n"
+                             "cases = [{ when = \"abs(x) <= 1\", as = \"x\" }, { when = \"abs(x) > 1\", as = \"x/abs(x)\" }]\n"
+                             "[[result]]\nname = \"y\"\n"
+                             "[[check]]\nname = \"clipped\"\nclaim = \"abs(y) <= 1\"\n"
+                             "[[check]]\nname = \"same sign\"\nclaim = \"x*y >= 0\"\n";
+    const engine::derivation d = derive_text(text);
+    for (const std::string name : {"clipped", "same sign"}) {
+        BOOST_TEST_CONTEXT(name)
+        {
+            const engine::check_result& c = check_named(d, name);
+            BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+            BOOST_TEST(proven(c.parts[0].outcome), c.parts[0].outcome.method);
+            BOOST_TEST(proven(c.parts[1].outcome), c.parts[1].outcome.method);
+        }
+    }
+    const std::string& method = check_named(d, "clipped").parts[1].outcome.method;
+    BOOST_TEST(method.find("for x > 0: proven") != std::string::npos, method);
+    BOOST_TEST(method.find("for x < 0: proven") != std::string::npos, method);
+    // At x = 0 the second case's condition, 0 > 1, is false.
+    BOOST_TEST(method.find("for x = 0: proven (the case does not arise") != std::string::npos, method);
+
+    // A false claim is never proven: |y| <= 1/2 fails where x = 3/4.
+    const engine::derivation wrong = derive_text(text + "[[check]]\nname = \"too tight\"\nclaim = \"abs(y) <= 1/2\"\n");
+    BOOST_TEST(!check_named(wrong, "too tight").outcome.holds());
+}
+
+// A claim G >= 0 under a condition C >= 0 that is neither a multiple of C nor C plus a
+// term of known sign: G divided by C in the symbol C is linear in, G = q C + r with q and
+// r >= 0. The tangential energy of a slipping contact, u (s - u/2) for an impulse u
+// capped at (1 + b) s: (u/2)((1 + b) s - u) + (1 - b) u s / 2.
+BOOST_AUTO_TEST_CASE(a_claim_is_divided_by_its_condition)
+{
+    const std::string text = "id = \"t\"\ntitle = \"t\"\n"
+                             "[[symbol]]\nname = \"u\"\ndomain = \"positive\"\n"
+                             "[[symbol]]\nname = \"s\"\ndomain = \"positive\"\n"
+                             "[[symbol]]\nname = \"b\"\ndomain = \"[-1, 1]\"\n"
+                             "[[symbol]]\nname = \"y\"\n"
+                             "[[step]]\ndefine = \"y\"\n"
+                             "cases = [{ when = \"u <= (1 + b)*s\", as = \"u\" }, { when = \"u > (1 + b)*s\", as = \"(1 + b)*s\" }]\n"
+                             "[[result]]\nname = \"y\"\n"
+                             "[[check]]\nname = \"energy lost\"\nclaim = \"y*(s - y/2) >= 0\"\n";
+    const engine::derivation d = derive_text(text);
+    const engine::check_result& c = check_named(d, "energy lost");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(proven(c.parts[0].outcome), c.parts[0].outcome.method);
+    BOOST_TEST(c.parts[0].outcome.method.find("divided by the condition's side in ") != std::string::npos,
+               c.parts[0].outcome.method);
+    BOOST_TEST(proven(c.parts[1].outcome), c.parts[1].outcome.method);
+    // Without the cap the claim is false (u = 3 s): case 1 then fails.
+    const engine::derivation uncapped = derive_text(text + "[[check]]\nname = \"uncapped\"\nclaim = \"u*(s - u/2) >= 0\"\n");
+    BOOST_TEST(!check_named(uncapped, "uncapped").outcome.holds());
+}
+
+// An inequality whose difference a check has already written in closed form is proven
+// through that check, as a textbook argues "by (n)".
+BOOST_AUTO_TEST_CASE(an_inequality_is_proven_through_an_identity_proven_before_it)
+{
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\n[[symbol]]\nname = \"z\"\n[[symbol]]\nname = \"k\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"d\"\n"
+        "[[step]]\ndefine = \"d\"\nas = \"k*x^2 + k*z^2 - 2*k*x*z\"\n"
+        "[[result]]\nname = \"d\"\n"
+        "[[check]]\nname = \"a square\"\nclaim = \"d = k*(x - z)^2\"\n"
+        "[[check]]\nname = \"never negative\"\nclaim = \"d >= 0\"\n");
+    const engine::check_result& c = check_named(d, "never negative");
+    BOOST_TEST(proven(c.outcome));
+    BOOST_TEST(c.outcome.method.rfind("by the check 'a square' the difference of the sides is k*(x-z)^2", 0) == 0,
+               c.outcome.method);
+}
+
+// At a special value a case's condition may contradict the domains (0 > k for k >= 0 at
+// b = -1); the case does not arise, and its value there (k/(1 + b)) is never formed.
+BOOST_AUTO_TEST_CASE(a_case_the_domains_rule_out_at_a_special_value_holds_nothing)
+{
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"k\"\ndomain = \"nonnegative\"\n"
+        "[[symbol]]\nname = \"b\"\ndomain = \"[-1, 1]\"\n"
+        "[[symbol]]\nname = \"y\"\n"
+        "[[step]]\ndefine = \"y\"\n"
+        "cases = [{ when = \"(1 + b)*x <= k\", as = \"(1 + b)*x\" }, { when = \"(1 + b)*x > k\", as = \"k/(1 + b)\" }]\n"
+        "[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"smooth\"\nclaim = \"y = 0\"\nat = { b = \"-1\" }\n");
+    const engine::check_result& c = check_named(d, "smooth");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(proven(c.parts[0].outcome));
+    BOOST_TEST(c.parts[1].outcome.method == "the case does not arise: the domains make its condition false");
+    BOOST_TEST(proven(c.outcome));
+}

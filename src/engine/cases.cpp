@@ -1,8 +1,12 @@
 #include "engine/cases.h"
 
+#include "engine/condition_proof.h"
 #include "engine/infix.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 namespace impact::engine {
 namespace {
@@ -217,11 +221,13 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
     return c;
 }
 
-verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
-                      const symbol_table& symbols, const assumptions& given)
+namespace {
+
+// The claim proven under the case's condition, or none (nothing sampled).
+std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
+                                   const symbol_table& symbols, const assumptions& given)
 {
-    const verdict alone = prove_inequality(lhs, op, rhs, symbols, given);
-    if (alone.what == verdict::status::proven)
+    if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, given))
         return alone;
 
     const GiNaC::exmap abbreviations = symbols.abbreviations();
@@ -267,19 +273,200 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
         assumptions narrowed = given;
         narrowed.domains[bound->first] = bound->second;
         narrowed.known = std::make_shared<worked_out>();
-        verdict v = prove_inequality(lhs, op, rhs, symbols, narrowed);
-        if (v.what == verdict::status::proven) {
-            v.method = fmt::format("{}, {} in {}: {}", under, ginac_syntax(bound->first, symbols.order()),
-                                   bound->second.to_string(), v.method);
+        if (auto v = prove_inequality_by_signs(lhs, op, rhs, symbols, narrowed)) {
+            v->method = fmt::format("{}, {} in {}: {}", under, ginac_syntax(bound->first, symbols.order()),
+                                    bound->second.to_string(), v->method);
             return v;
         }
     }
-    verdict v = alone;
+    if (!condition.value.is_zero())
+        if (auto v = divided_by_condition(g, strict, condition.value, condition.strict, given)) {
+            v->method = fmt::format("{}: {}", under, v->method);
+            return *v;
+        }
+    return std::nullopt;
+}
+
+// Not proven under the condition of `c`: the verdict over the whole domain, sampled where
+// it holds (never proven), failed where it does not (which may be outside the case).
+verdict unproven_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
+                         const symbol_table& symbols, const assumptions& given)
+{
+    verdict v = prove_inequality(lhs, op, rhs, symbols, given);
+    const std::string under = fmt::format("under {}", condition_text(c, given.order));
     if (v.what == verdict::status::sampled)
         v.method = fmt::format("not proven {}; sampled over the whole domain, where it holds: {}", under, v.method);
-    else
+    else if (v.what == verdict::status::failed)
         v.method = fmt::format("not proven {} (it fails somewhere in the whole domain): {}", under, v.method);
     return v;
+}
+
+// The condition of `c` proven false under `given`: the case does not arise. Asked where a
+// condition may have become one the domains decide (at special values, for a sign of
+// what is under |.|), and only of a condition of a few terms: a sign proof of a long
+// sum that holds somewhere costs seconds and finds nothing.
+bool cannot_arise(const case_value& c, const symbol_table& symbols, const assumptions& given)
+{
+    constexpr std::size_t most_terms = 4;
+    const nonnegative_form f = condition_form(c);
+    const GiNaC::ex value = without_abs(GiNaC::normal(f.value.subs(symbols.abbreviations())), given);
+    const GiNaC::ex top = GiNaC::expand(value.numer());
+    if (GiNaC::is_a<GiNaC::add>(top) && top.nops() > most_terms)
+        return false;
+    const sign_set s = prove_sign(value, given).sign;
+    return f.strict ? !s.positive : (!s.positive && !s.zero);
+}
+
+} // namespace
+
+verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
+                      const symbol_table& symbols, const assumptions& given)
+{
+    // |x| for a real x: proven for x > 0, x < 0 and x = 0 apart, x written as +y, -y and 0
+    // with y > 0, each absolute value then taken out.
+    std::vector<GiNaC::ex> xs;
+    for (const GiNaC::ex& e : {lhs, rhs, c.lhs, c.rhs})
+        symbols_under_abs(e, given, xs);
+    if (xs.empty() || xs.size() > 2) {
+        const GiNaC::ex l = without_abs(lhs, given), r = without_abs(rhs, given);
+        case_value plain = c;
+        plain.lhs = without_abs(c.lhs, given);
+        plain.rhs = without_abs(c.rhs, given);
+        if (auto v = prove_under(l, op, r, plain, symbols, given))
+            return *v;
+        return unproven_in_case(lhs, op, rhs, c, symbols, given);
+    }
+    std::vector<check_result::part> parts;
+    const std::size_t branches = xs.size() == 1 ? 3 : 9;
+    for (std::size_t branch = 0; branch < branches; ++branch) {
+        // y > 0 is a new symbol, declared positive for the whole run: the signs worked
+        // out under the declared domains hold with it.
+        assumptions signed_given = given;
+        GiNaC::exmap to;
+        std::vector<std::string> words;
+        std::size_t code = branch;
+        for (const GiNaC::ex& x : xs) {
+            const int which = static_cast<int>(code % 3);   // 0: x > 0, 1: x < 0, 2: x = 0
+            code /= 3;
+            const std::string name = GiNaC::ex_to<GiNaC::symbol>(x).get_name();
+            GiNaC::ex y = GiNaC::possymbol(name, GiNaC::ex_to<GiNaC::symbol>(x).get_TeX_name());
+            if (given.run) {
+                const auto known = given.run->magnitudes.emplace(x, y).first;
+                y = known->second;
+            }
+            signed_given.domains[y] = domain{domain::kind::positive};
+            to[x] = which == 0 ? GiNaC::ex(y) : which == 1 ? GiNaC::ex(-y) : GiNaC::ex(0);
+            words.push_back(fmt::format("{} {} 0", name, which == 0 ? ">" : which == 1 ? "<" : "="));
+        }
+        check_result::part part;
+        part.under = fmt::format("for {}", fmt::join(words, " and "));
+        case_value here = c;
+        try {
+            here.lhs = without_abs(c.lhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+            here.rhs = without_abs(c.rhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+        } catch (const std::exception&) {
+            part.outcome.method = "the condition is not defined there";
+            parts.push_back(std::move(part));
+            continue;
+        }
+        if (cannot_arise(here, symbols, signed_given)) {
+            part.outcome.what = verdict::status::proven;
+            part.outcome.residual = 0;
+            part.outcome.method = "the case does not arise: its condition is false there";
+            parts.push_back(std::move(part));
+            continue;
+        }
+        try {
+            const GiNaC::ex l = without_abs(lhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+            const GiNaC::ex r = without_abs(rhs.subs(to, GiNaC::subs_options::no_pattern), signed_given);
+            if (auto v = prove_under(l, op, r, here, symbols, signed_given))
+                part.outcome = std::move(*v);
+            else
+                part.outcome.method = "not proven there";
+        } catch (const std::exception&) {
+            part.outcome.method = "the claim is not defined there";
+        }
+        if (part.outcome.what != verdict::status::proven)
+            return unproven_in_case(lhs, op, rhs, c, symbols, given);
+        parts.push_back(std::move(part));
+    }
+    return combined(parts, "by the sign of what is under |.|");
+}
+
+bool same_conditions(const std::vector<case_value>& a, const std::vector<case_value>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].op != b[i].op || !GiNaC::normal(a[i].lhs - b[i].lhs).is_zero() ||
+            !GiNaC::normal(a[i].rhs - b[i].rhs).is_zero())
+            return false;
+    return true;
+}
+
+void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::exmap& at,
+                        const symbol_table& symbols, const assumptions& given, proof_cache& run)
+{
+    std::vector<std::string> names;
+    for (const GiNaC::ex& s : split.symbols)
+        names.push_back(ginac_syntax(s, symbols.order()));
+    c.cases_of = fmt::format("{}", fmt::join(names, " and "));
+    const std::size_t count = split.pieces.front().size();
+    for (std::size_t i = 0; i < count; ++i) {
+        case_value one = split.pieces.front()[i];
+        check_result::part part;
+        part.first = i + 1;
+        if (!at.empty()) {
+            one.lhs = one.lhs.subs(at);
+            one.rhs = one.rhs.subs(at);
+        }
+        // A value at special values where its case does not arise may not exist (k/(1 + b)
+        // at b = -1): it is worked out only where the case arises.
+        GiNaC::exmap in_case;
+        std::vector<std::string> values;
+        for (std::size_t k = 0; k < split.symbols.size(); ++k) {
+            GiNaC::ex value = split.pieces[k][i].value;
+            try {
+                if (!at.empty())
+                    value = value.subs(at);
+            } catch (const std::exception&) {
+                value = split.pieces[k][i].value;
+            }
+            in_case[split.symbols[k]] = value;
+            values.push_back(fmt::format("{} = {}", names[k], given.text(value)));
+        }
+        one.value = in_case[split.symbols.front()];
+        part.in_case = one;
+        part.under = fmt::format("case {} ({}, where {})", i + 1, fmt::join(values, ", "),
+                                 condition_text(one, given.order));
+        // At special values a condition may be a comparison of numbers, or one the domains
+        // contradict: a case whose condition is false holds nothing to prove.
+        const GiNaC::ex gap = GiNaC::normal(one.rhs - one.lhs);
+        bool arises = true;
+        if (GiNaC::is_a<GiNaC::numeric>(gap) && GiNaC::ex_to<GiNaC::numeric>(gap).is_real()) {
+            const GiNaC::numeric g = GiNaC::ex_to<GiNaC::numeric>(gap);   // rhs - lhs
+            arises = one.op == relation::less_equal      ? g >= 0
+                     : one.op == relation::less          ? g > 0
+                     : one.op == relation::greater_equal ? g <= 0
+                                                         : g < 0;
+            if (!arises)
+                part.outcome.method = "the case does not arise: its condition is false at these values";
+        } else if (!at.empty() && cannot_arise(one, symbols, given)) {
+            arises = false;
+            part.outcome.method = "the case does not arise: the domains make its condition false";
+        }
+        if (!arises) {
+            part.outcome.what = verdict::status::proven;
+            part.outcome.residual = 0;
+        } else {
+            const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
+            const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
+            part.outcome = c.op == relation::equal ? prove_equal(lhs, rhs, symbols, run)
+                                                   : prove_in_case(lhs, c.op, rhs, one, symbols, given);
+        }
+        c.parts.push_back(std::move(part));
+    }
+    c.outcome = combine_cases(c.parts);
 }
 
 check_result prove_continuity(const std::string& name, const std::vector<case_value>& cases,
@@ -302,15 +489,28 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
             part.second = j + 1;
             // The boundary C_i = 0, solved for the first declared quantity it is linear in.
             const GiNaC::ex top = GiNaC::expand(ci.numer());
+            // Of the declared quantities it is linear in, the one whose value there is the
+            // shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass), its coefficient
+            // proven non-zero where one can be.
             std::optional<std::pair<GiNaC::ex, GiNaC::ex>> at;
+            std::size_t shortest = 0;
+            bool coefficient_proven = false;
+            const assumptions given = declared_assumptions(symbols, run);
             for (const quantity& q : symbols.all()) {
                 if (q.definition || !top.has(q.symbol) || top.degree(q.symbol) != 1 || top.ldegree(q.symbol) < 0)
                     continue;
                 const GiNaC::ex a = top.coeff(q.symbol, 1);
                 if (a.has(q.symbol) || GiNaC::normal(a).is_zero())
                     continue;
-                at.emplace(q.symbol, GiNaC::normal(-top.coeff(q.symbol, 0) / a));
-                break;
+                const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / a);
+                const sign_set s = prove_sign(a, given).sign;
+                const bool non_zero = !s.zero && (!s.positive || !s.negative);
+                const std::size_t length = ginac_syntax(value, symbols.order()).size();
+                if (at && (coefficient_proven > non_zero || (coefficient_proven == non_zero && length >= shortest)))
+                    continue;
+                at.emplace(q.symbol, value);
+                shortest = length;
+                coefficient_proven = non_zero;
             }
             if (!at) {
                 part.under = fmt::format("cases {} and {} at {} = 0", i + 1, j + 1, ginac_syntax(ci, symbols.order()));

@@ -59,6 +59,23 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
 check_result prove_continuity(const std::string& name, const std::vector<case_value>& cases,
                               const symbol_table& symbols, proof_cache& run, const source_location& where);
 
+/// The quantities a check splits on: one defined by cases, or several whose cases have
+/// the same conditions (J_t and the effective restitution of sticking and sliding).
+struct case_split {
+    std::vector<GiNaC::ex> symbols;
+    std::vector<std::vector<case_value>> pieces;   ///< each symbol's cases, in its order
+};
+
+/// True when the two lists of cases have the same conditions, in the same order.
+bool same_conditions(const std::vector<case_value>& a, const std::vector<case_value>& b);
+
+/// Proves the check `c` (its sides already resolved) case by case: in each case every
+/// quantity of `split` replaced by its value there (and `at`'s special values put into
+/// the case), the claim proven under the case's condition. A case whose condition is
+/// proven false (at the special values, or under the domains) holds nothing to prove.
+void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::exmap& at,
+                        const symbol_table& symbols, const assumptions& given, proof_cache& run);
+
 /// The verdict of a check proven case by case: failed if a case failed, sampled if one was
 /// sampled, proven if every case was; its method lists each case's.
 verdict combine_cases(const std::vector<check_result::part>& parts);

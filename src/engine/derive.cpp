@@ -78,6 +78,19 @@ private:
         return now;
     }
 
+    // Replaces every derived quantity by its value, abbreviations kept as written.
+    GiNaC::ex derived_substituted(const GiNaC::ex& e) const
+    {
+        GiNaC::ex now = e;
+        for (int depth = 0; depth < 8; ++depth) {
+            const GiNaC::ex next = now.subs(values_, GiNaC::subs_options::no_pattern);
+            if (next.is_equal(now))
+                break;
+            now = next;
+        }
+        return now;
+    }
+
     void set_value(const GiNaC::ex& symbol, const GiNaC::ex& value)
     {
         values_[symbol] = value;
@@ -442,8 +455,8 @@ private:
         if (const auto split = cases_in(lhs, rhs, c.where)) {
             if (spec_check.limit || !spec_check.left_at.empty())
                 throw error(c.where, fmt::format("check '{}' on '{}', defined by cases, may have no 'limit' or "
-                                                 "'left_at'", c.name, ginac_syntax(split->first, out_.symbols.order())));
-            prove_by_cases(c, split->first, split->second, at, given);
+                                                 "'left_at'", c.name, ginac_syntax(split->symbols.front(), out_.symbols.order())));
+            prove_case_by_case(c, *split, at, out_.symbols, given, run_);
             return c;
         }
         if (spec_check.limit) {
@@ -455,71 +468,48 @@ private:
         } else if (c.op == relation::equal) {
             c.outcome = prove_equal(lhs, rhs, out_.symbols, run_);
             c.value = lhs;
+        } else if (auto through = prove_inequality_through(lhs, c.op, rhs, proven_identities(), out_.symbols, given)) {
+            c.outcome = std::move(*through);
         } else {
             c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, given);
         }
         return c;
     }
 
-    // The quantity defined by cases that a check's sides use, if any (one at most).
-    std::optional<std::pair<GiNaC::ex, std::vector<case_value>>> cases_in(const GiNaC::ex& lhs, const GiNaC::ex& rhs,
-                                                                          const source_location& where) const
+    // The equalities proven so far, without special values or changed domains: what an
+    // inequality may be proven through.
+    std::vector<proven_identity> proven_identities() const
     {
-        std::optional<std::pair<GiNaC::ex, std::vector<case_value>>> found;
-        for (const auto& [symbol, pieces] : cases_)
-            if (lhs.has(symbol) || rhs.has(symbol)) {
-                if (found)
-                    throw error(where, fmt::format("the check uses '{}' and '{}', both defined by cases: a check "
-                                                   "may split on one quantity's cases",
-                                                   ginac_syntax(found->first, out_.symbols.order()), ginac_syntax(symbol, out_.symbols.order())));
-                found.emplace(symbol, pieces);
-            }
-        return found;
+        std::vector<proven_identity> identities;
+        for (const check_result& c : out_.checks)
+            if (c.op == relation::equal && c.outcome.what == verdict::status::proven && c.at.empty() &&
+                c.left_at.empty() && !c.limit && c.assuming.empty() && c.parts.empty())
+                identities.push_back({c.display_of.empty() ? fmt::format("the check '{}'", c.name)
+                                                           : fmt::format("the display form of {}", c.display_of),
+                                      derived_substituted(c.stated.lhs()), derived_substituted(c.stated.rhs())});
+        return identities;
     }
 
-    // Each case's value substituted (and the check's special values into the case), the
-    // claim proven under the case's condition.
-    void prove_by_cases(check_result& c, const GiNaC::ex& symbol, std::vector<case_value> pieces,
-                        const GiNaC::exmap& at, const assumptions& given)
+    // The quantities defined by cases that a check's sides use, if any: one, or several
+    // whose cases have the same conditions (split together, case by case).
+    std::optional<case_split> cases_in(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const source_location& where) const
     {
-        c.cases_of = ginac_syntax(symbol, out_.symbols.order());
-        for (std::size_t i = 0; i < pieces.size(); ++i) {
-            case_value& one = pieces[i];
-            if (!at.empty()) {
-                one.lhs = one.lhs.subs(at);
-                one.rhs = one.rhs.subs(at);
-                one.value = one.value.subs(at);
-            }
-            const GiNaC::exmap in_case{{symbol, one.value}};
-            const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
-            const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
-            check_result::part part;
-            part.first = i + 1;
-            part.in_case = one;
-            part.under = fmt::format("case {} ({} = {}, where {})", i + 1, c.cases_of, given.text(one.value),
-                                     condition_text(one, given.order));
-            // At special values a condition may be a comparison of numbers: a case whose
-            // condition is false there holds nothing to prove.
-            const GiNaC::ex gap = GiNaC::normal(one.rhs - one.lhs);
-            if (GiNaC::is_a<GiNaC::numeric>(gap) && GiNaC::ex_to<GiNaC::numeric>(gap).is_real()) {
-                const GiNaC::numeric g = GiNaC::ex_to<GiNaC::numeric>(gap);   // rhs - lhs
-                const bool holds = one.op == relation::less_equal ? g >= 0
-                                   : one.op == relation::less     ? g > 0
-                                   : one.op == relation::greater_equal ? g <= 0
-                                                                       : g < 0;
-                if (!holds) {
-                    part.outcome.what = verdict::status::proven;
-                    part.outcome.residual = 0;
-                    part.outcome.method = "the case does not arise: its condition is false at these values";
-                    c.parts.push_back(std::move(part));
-                    continue;
+        std::optional<case_split> found;
+        for (const auto& [symbol, pieces] : cases_)
+            if (lhs.has(symbol) || rhs.has(symbol)) {
+                if (!found) {
+                    found.emplace();
+                } else if (!same_conditions(found->pieces.front(), pieces)) {
+                    throw error(where, fmt::format("the check uses '{}' and '{}', both defined by cases with different "
+                                                   "conditions: a check may split on the cases of quantities whose "
+                                                   "conditions are the same",
+                                                   ginac_syntax(found->symbols.front(), out_.symbols.order()),
+                                                   ginac_syntax(symbol, out_.symbols.order())));
                 }
+                found->symbols.push_back(symbol);
+                found->pieces.push_back(pieces);
             }
-            part.outcome = c.op == relation::equal ? prove_equal(lhs, rhs, out_.symbols, run_)
-                                                   : prove_in_case(lhs, c.op, rhs, one, out_.symbols, given);
-            c.parts.push_back(std::move(part));
-        }
-        c.outcome = combine_cases(c.parts);
+        return found;
     }
 
     // `continuity = "J_t"`: the cases of J_t agree where their conditions meet.

@@ -14,6 +14,7 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
 #include <string>
 
 namespace impact::engine {
@@ -40,6 +41,28 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
 /// the difference under `given` (prove_sign), else sampled, else failed.
 verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const symbol_table& symbols,
                          const assumptions& given);
+
+/// Decides `lhs op rhs` from the signs of the factors of the difference alone: proven,
+/// or none (nothing sampled).
+std::optional<verdict> prove_inequality_by_signs(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                                 const symbol_table& symbols, const assumptions& given);
+
+/// An equality the derivation has proven (a check, or a result's display form), its
+/// sides with the derived quantities substituted and nothing expanded.
+struct proven_identity {
+    std::string name;
+    GiNaC::ex lhs;
+    GiNaC::ex rhs;
+};
+
+/// Decides `lhs op rhs` through an identity proven before it, as a textbook argues "by
+/// (n), the difference is ..., each of whose terms is ...": when the claim's difference
+/// (rhs − lhs for <=, lhs − rhs for >=) is ± one side of an identity, the sign of ± its
+/// other side, as written, is proven instead. None when no identity matches, or the
+/// sign of the matching side is not proven.
+std::optional<verdict> prove_inequality_through(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                                const std::vector<proven_identity>& identities,
+                                                const symbol_table& symbols, const assumptions& given);
 
 /// Decides whether two equations are equivalent: their differences lhs − rhs are equal
 /// up to a non-zero constant factor.

@@ -70,6 +70,10 @@ struct worked_out {
 struct proof_cache {
     std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> factored;
     std::shared_ptr<worked_out> declared = std::make_shared<worked_out>();
+    /// For a real symbol x under |.|, the positive symbol y with x = ±y or 0 that a proof
+    /// by the sign of x writes (engine/cases.cpp): one per x, so that what is worked out
+    /// about y is kept.
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> magnitudes;
 
     /// Nothing worked out yet.
     bool empty() const;
