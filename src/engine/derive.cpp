@@ -509,6 +509,23 @@ private:
                 found->symbols.push_back(symbol);
                 found->pieces.push_back(pieces);
             }
+        // cases_ is ordered by GiNaC's order of symbols, which may differ between runs: the
+        // split is written in the order of the names.
+        if (found && found->symbols.size() > 1) {
+            std::vector<std::size_t> order(found->symbols.size());
+            for (std::size_t i = 0; i < order.size(); ++i)
+                order[i] = i;
+            const auto name = [this](const GiNaC::ex& s) { return ginac_syntax(s, out_.symbols.order()); };
+            std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+                return name(found->symbols[a]) < name(found->symbols[b]);
+            });
+            case_split sorted;
+            for (const std::size_t i : order) {
+                sorted.symbols.push_back(found->symbols[i]);
+                sorted.pieces.push_back(found->pieces[i]);
+            }
+            found = std::move(sorted);
+        }
         return found;
     }
 
