@@ -123,8 +123,6 @@ std::optional<std::pair<GiNaC::ex, domain>> bound_domain(const case_value& c, co
     return std::make_pair(s, out);
 }
 
-bool nonnegative(const sign_set& s) { return !s.negative; }
-bool positive(const sign_set& s) { return !s.negative && !s.zero; }
 
 GiNaC::ex select_eval(const GiNaC::ex& c, const GiNaC::ex& a, const GiNaC::ex& b)
 {
@@ -243,7 +241,7 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     if (!condition.value.is_zero()) {
         const GiNaC::ex q = GiNaC::normal(g / condition.value);
         const sign_proof p = prove_sign(q, given);
-        if (strict ? (positive(p.sign) && condition.strict) : nonnegative(p.sign)) {
+        if (strict ? (p.sign.is_positive() && condition.strict) : p.sign.is_nonnegative()) {
             verdict v;
             v.what = verdict::status::proven;
             v.residual = 0;
@@ -257,7 +255,7 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     {
         const GiNaC::ex r = GiNaC::normal(g - condition.value);
         const sign_proof p = prove_sign(r, given);
-        if (nonnegative(p.sign) && (!strict || positive(p.sign) || condition.strict)) {
+        if (p.sign.is_nonnegative() && (!strict || p.sign.is_positive() || condition.strict)) {
             verdict v;
             v.what = verdict::status::proven;
             v.residual = 0;

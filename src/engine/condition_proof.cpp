@@ -85,7 +85,7 @@ std::optional<verdict> divided_by_condition(const GiNaC::ex& g, bool strict, con
             const sign_proof pr = prove_sign(rest, given);
             if (pr.sign.negative)
                 continue;
-            if (strict && !((!pr.sign.negative && !pr.sign.zero) || (!pq.sign.negative && !pq.sign.zero && condition_strict)))
+            if (strict && !(pr.sign.is_positive() || (pq.sign.is_positive() && condition_strict)))
                 continue;
             verdict v;
             v.what = verdict::status::proven;

@@ -65,25 +65,19 @@ private:
         const auto known = resolved_.find(e);
         if (known != resolved_.end())
             return known->second;
-        const GiNaC::exmap abbreviations = out_.symbols.abbreviations();
-        GiNaC::ex now = e;
-        for (int depth = 0; depth < 8; ++depth) {
-            const GiNaC::ex next = now.subs(values_, GiNaC::subs_options::no_pattern)
-                                       .subs(abbreviations, GiNaC::subs_options::no_pattern);
-            if (next.is_equal(now))
-                break;
-            now = next;
-        }
+        const GiNaC::ex now = substituted(e, out_.symbols.abbreviations());
         resolved_.emplace(e, now);
         return now;
     }
 
-    // Replaces every derived quantity by its value, abbreviations kept as written.
-    GiNaC::ex derived_substituted(const GiNaC::ex& e) const
+    // Every derived quantity replaced by its value, and each of `abbreviations` by its
+    // definition, until nothing changes (a value may hold other derived quantities).
+    GiNaC::ex substituted(const GiNaC::ex& e, const GiNaC::exmap& abbreviations) const
     {
         GiNaC::ex now = e;
         for (int depth = 0; depth < 8; ++depth) {
-            const GiNaC::ex next = now.subs(values_, GiNaC::subs_options::no_pattern);
+            const GiNaC::ex next = now.subs(values_, GiNaC::subs_options::no_pattern)
+                                       .subs(abbreviations, GiNaC::subs_options::no_pattern);
             if (next.is_equal(now))
                 break;
             now = next;
@@ -486,7 +480,7 @@ private:
                 c.left_at.empty() && !c.limit && c.assuming.empty() && c.parts.empty())
                 identities.push_back({c.display_of.empty() ? fmt::format("the check '{}'", c.name)
                                                            : fmt::format("the display form of {}", c.display_of),
-                                      derived_substituted(c.stated.lhs()), derived_substituted(c.stated.rhs())});
+                                      substituted(c.stated.lhs(), {}), substituted(c.stated.rhs(), {})});
         return identities;
     }
 

@@ -353,9 +353,9 @@ assumptions with_abbreviations_as_atoms(const GiNaC::ex& e, const GiNaC::exmap& 
             continue;
         const sign_set s = prove_sign(spelled_out(definition, abbreviations), given).sign;
         domain range;
-        if (!s.negative && !s.zero)
+        if (s.is_positive())
             range.what = domain::kind::positive;
-        else if (!s.negative)
+        else if (s.is_nonnegative())
             range.what = domain::kind::nonnegative;
         atoms.domains[symbol] = range;
     }
@@ -380,10 +380,13 @@ std::optional<verdict> prove_inequality_through(const GiNaC::ex& lhs, relation o
                 if (!GiNaC::normal(difference - same).is_zero())
                     continue;
                 const GiNaC::ex other = s * sides[1 - side];
+                const auto settled = [strict](const sign_proof& p) {
+                    return strict ? p.sign.is_positive() : p.sign.is_nonnegative();
+                };
                 sign_proof proof = prove_sign(other, with_abbreviations_as_atoms(other, abbreviations, given));
-                if (proof.sign.negative || (strict && proof.sign.zero))
+                if (!settled(proof))
                     proof = prove_sign(spelled_out(other, abbreviations), given);
-                if (proof.sign.negative || (strict && proof.sign.zero))
+                if (!settled(proof))
                     continue;
                 verdict v;
                 v.what = verdict::status::proven;

@@ -36,6 +36,8 @@ struct sign_set {
     static sign_set any() { return {}; }
     static sign_set exactly(int sign);
     bool is_known() const { return !(negative && positive); }
+    bool is_nonnegative() const { return !negative; }              ///< proven >= 0
+    bool is_positive() const { return !negative && !zero; }        ///< proven > 0
     std::string describe() const;   ///< "> 0", ">= 0", "= 0", "<= 0", "< 0" or "of unknown sign"
 };
 
