@@ -169,7 +169,7 @@ BOOST_AUTO_TEST_CASE(a_domain_that_is_not_understood)
 {
     expect_refused(prefix + "[[symbol]]\nname = \"w\"\ndomain = \"sometimes\"\n[[result]]\nname = \"y\"\n",
                    "derivations/bad.toml:12:10: error: domain 'sometimes' is not understood; write real, "
-                   "positive, nonnegative or an interval such as [0, 1]");
+                   "positive, nonnegative, an interval such as [0, 1], or [0, +inf]");
 }
 
 BOOST_AUTO_TEST_CASE(a_singular_system)

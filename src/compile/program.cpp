@@ -48,9 +48,13 @@ public:
         return v;
     }
 
+    // The options and the branch of a quantity defined by cases being compiled: a value
+    // computed inside a branch may divide by a divisor selected there (see `op`), so it is
+    // not the same value as outside it.
     int options_key() const
     {
-        return (options_.fma ? 1 : 0) | (options_.compensated ? 2 : 0) | (options_.compensated_lets ? 4 : 0);
+        return (options_.fma ? 1 : 0) | (options_.compensated ? 2 : 0) | (options_.compensated_lets ? 4 : 0) |
+               (branch_key_ << 3);
     }
 
 private:
@@ -199,6 +203,20 @@ private:
             const pair v = compensated_factor(order_.oriented(e, negated));
             return negated ? dd_neg(v) : v;
         }
+        if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "select_positive") {
+            // A quantity defined by cases: each branch compensated, the pair selected.
+            const int condition = value(e.op(0));
+            const pair taken = compensated_in_branch(condition, true, e.op(1));
+            const pair discarded = compensated_in_branch(condition, false, e.op(2));
+            const int hi = op(opcode::select, condition, taken.hi, discarded.hi);
+            if (taken.lo < 0 && discarded.lo < 0)
+                return {hi, -1};
+            correcting_ = true;
+            const int lo = op(opcode::select, condition, taken.lo < 0 ? constant(0) : taken.lo,
+                              discarded.lo < 0 ? constant(0) : discarded.lo);
+            correcting_ = false;
+            return {hi, lo};
+        }
         // Functions: evaluated on the leading part.
         return {value(e), -1};
     }
@@ -224,6 +242,38 @@ private:
         return {power(t), -1};
     }
 
+    // The value of `e` in the branch of `condition` taken where it is positive (or not).
+    int in_branch(int condition, bool positive, const GiNaC::ex& e)
+    {
+        enter_branch(condition, positive);
+        const int v = value(e);
+        leave_branch();
+        return v;
+    }
+
+    pair compensated_in_branch(int condition, bool positive, const GiNaC::ex& e)
+    {
+        enter_branch(condition, positive);
+        const pair v = compensated(e);
+        leave_branch();
+        return v;
+    }
+
+    void enter_branch(int condition, bool positive)
+    {
+        branch_.emplace_back(condition, positive);
+        const auto known = branch_keys_.emplace(branch_, static_cast<int>(branch_keys_.size()) + 1).first;
+        outer_keys_.push_back(branch_key_);
+        branch_key_ = known->second;
+    }
+
+    void leave_branch()
+    {
+        branch_.pop_back();
+        branch_key_ = outer_keys_.back();
+        outer_keys_.pop_back();
+    }
+
     int emit(instruction in)
     {
         p_.code.push_back(std::move(in));
@@ -232,6 +282,14 @@ private:
 
     int op(opcode code, int a, int b = -1, int c = -1)
     {
+        // A division in a branch of a quantity defined by cases divides by its divisor where
+        // the branch is taken and by 1 where it is discarded: a kernel tests every divisor
+        // before it divides, and a divisor that is 0 in the other case (|g_t| where the
+        // contact sticks with g_t = 0) would refuse a collision it resolves.
+        if (code == opcode::div && p_.code[b].op != opcode::constant)
+            for (auto level = branch_.rbegin(); level != branch_.rend(); ++level)
+                b = level->second ? op(opcode::select, level->first, b, constant(1))
+                                  : op(opcode::select, level->first, constant(1), b);
         instruction in;
         in.op = code;
         in.a = a;
@@ -299,8 +357,14 @@ private:
             const int v = power(t);
             return negated ? op(opcode::neg, v) : v;
         }
-        if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "select_positive")
-            return op(opcode::select, value(e.op(0)), value(e.op(1)), value(e.op(2)));
+        if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "select_positive") {
+            // Both branches are computed; each divides by its divisors only where it is the
+            // one taken, and by 1 where it is discarded (see `op`).
+            const int condition = value(e.op(0));
+            const int taken = in_branch(condition, true, e.op(1));
+            const int discarded = in_branch(condition, false, e.op(2));
+            return op(opcode::select, condition, taken, discarded);
+        }
         if (GiNaC::is_a<GiNaC::function>(e)) {
             std::vector<int> arguments;
             for (std::size_t i = 0; i < e.nops(); ++i)
@@ -402,6 +466,10 @@ private:
     std::map<GiNaC::numeric, int, std::less<>> constants_;
     std::map<std::tuple<int, int, int, int>, int> ops_;
     bool correcting_ = false;  // the operations made now are corrections
+    std::vector<std::pair<int, bool>> branch_;  // the branches being compiled: condition, taken where positive
+    std::map<std::vector<std::pair<int, bool>>, int> branch_keys_;
+    int branch_key_ = 0;       // 0 outside every branch
+    std::vector<int> outer_keys_;
 };
 
 } // namespace

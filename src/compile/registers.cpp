@@ -43,11 +43,19 @@ std::size_t most_live(const program& p)
 program ordered_for_registers(const program& p)
 {
     const std::size_t n = p.code.size();
-    // What each division or square root waits for: the divisors that do not need it.
+    // What each division or square root waits for: the divisors that do not need it (a
+    // square root: that need no square root, so that two roots never wait for each other).
     const std::vector<int> divided_by = divisors(p);
+    std::vector<bool> needs_a_root(n, false);
+    for (std::size_t i = 0; i < n; ++i) {
+        needs_a_root[i] = p.code[i].op == opcode::sqrt;
+        for (int operand : operands(p.code[i]))
+            needs_a_root[i] = needs_a_root[i] || needs_a_root[operand];
+    }
     std::vector<std::vector<int>> waits(n);
     for (std::size_t d = 0; d < n; ++d) {
-        if (!divides(p, p.code[d]) && p.code[d].op != opcode::sqrt)
+        const bool root = p.code[d].op == opcode::sqrt;
+        if (!divides(p, p.code[d]) && !root)
             continue;
         std::vector<bool> needs_d(n, false);
         needs_d[d] = true;
@@ -55,7 +63,7 @@ program ordered_for_registers(const program& p)
             for (int operand : operands(p.code[i]))
                 needs_d[i] = needs_d[i] || needs_d[operand];
         for (int divisor : divided_by)
-            if (!needs_d[divisor])
+            if (!needs_d[divisor] && !(root && needs_a_root[divisor]))
                 waits[d].push_back(divisor);
     }
 

@@ -81,8 +81,12 @@ std::vector<domain_test> domain_tests(const engine::quantity& q, const std::stri
 {
     switch (q.range.what) {
     case engine::domain::kind::positive:
+        if (q.range.infinity_included)
+            return {{fmt::format("!({} > Real(0))", value), {}}};
         return {{fmt::format("!({} > Real(0))", value), {}}, {{}, value}};
     case engine::domain::kind::nonnegative:
+        if (q.range.infinity_included)
+            return {{fmt::format("!({} >= Real(0))", value), {}}};
         return {{fmt::format("!({} >= Real(0))", value), {}}, {{}, value}};
     case engine::domain::kind::interval:
         return {{fmt::format("!({} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower), {}},

@@ -46,8 +46,8 @@ void print_refusal(std::string& out, const engine::kernel& k, const std::vector<
 std::string outside(const engine::domain& range)
 {
     switch (range.what) {
-    case engine::domain::kind::positive: return "not positive and finite";
-    case engine::domain::kind::nonnegative: return "negative or not finite";
+    case engine::domain::kind::positive: return range.infinity_included ? "not positive" : "not positive and finite";
+    case engine::domain::kind::nonnegative: return range.infinity_included ? "negative or NaN" : "negative or not finite";
     case engine::domain::kind::interval: return "outside " + range.to_string();
     case engine::domain::kind::real: break;
     }

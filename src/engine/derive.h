@@ -198,6 +198,9 @@ struct kernel {
     std::vector<kernel_output> outputs;
     std::vector<kernel_guard> guards;
     std::vector<GiNaC::ex> velocities;     ///< the velocity components among the inputs
+    /// Further velocities of the collision, in the inputs (a spin's rim speed `R_M*w_M`):
+    /// the largest magnitude among these and `velocities` scales velocity errors.
+    std::vector<GiNaC::ex> speeds;
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> lets;  ///< symbol = value in the inputs, computed once
     bool batch = false;
 

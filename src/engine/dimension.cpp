@@ -372,6 +372,17 @@ private:
         const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
         if (name == "abs")
             return of(e.op(0));
+        if (name == "select_positive") {
+            // A quantity defined by cases: the condition's dimension is its own; the two
+            // values share one, the result's.
+            of(e.op(0));
+            const auto a = of(e.op(1)), b = of(e.op(2));
+            if (a && b && *a != *b && !e.op(1).is_zero() && !e.op(2).is_zero())
+                throw error(where_, fmt::format("defines a quantity by cases as {}, {}, or {}, {}: its cases share "
+                                                "one dimension",
+                                                text(e.op(1)), a->describe(), text(e.op(2)), b->describe()));
+            return e.op(1).is_zero() ? b : a;
+        }
         if (name == "atan2") {
             const auto y = of(e.op(0)), x = of(e.op(1));
             if (y && x && *y != *x)

@@ -90,8 +90,8 @@ std::string domain::to_string() const
 {
     switch (what) {
     case kind::real: return "real";
-    case kind::positive: return "positive";
-    case kind::nonnegative: return "nonnegative";
+    case kind::positive: return infinity_included ? "(0, +inf]" : "positive";
+    case kind::nonnegative: return infinity_included ? "[0, +inf]" : "nonnegative";
     case kind::interval: break;
     }
     return fmt::format("{}{}, {}{}", lower_open ? '(' : '[', format_bound(lower), format_bound(upper),
@@ -102,8 +102,8 @@ std::string domain::to_latex() const
 {
     switch (what) {
     case kind::real: return "\\in \\mathbb{R}";
-    case kind::positive: return "> 0";
-    case kind::nonnegative: return "\\geq 0";
+    case kind::positive: return infinity_included ? "\\in (0, +\\infty]" : "> 0";
+    case kind::nonnegative: return infinity_included ? "\\in [0, +\\infty]" : "\\geq 0";
     case kind::interval: break;
     }
     return fmt::format("\\in {}{}, {}{}", lower_open ? '(' : '[', format_bound(lower), format_bound(upper),
@@ -148,13 +148,21 @@ domain parse_domain(const std::string& text, const source_location& where)
         d.what = domain::kind::nonnegative;
         return d;
     }
+    // +infinity included: [0, +inf] or (0, +inf].
+    static const std::regex to_infinity(R"(^\s*([\[\(])\s*0\s*,\s*\+?inf\s*\]\s*$)");
+    std::smatch end;
+    if (std::regex_match(text, end, to_infinity)) {
+        d.what = end[1] == "(" ? domain::kind::positive : domain::kind::nonnegative;
+        d.infinity_included = true;
+        return d;
+    }
     // An interval with numeric bounds: [0, 1], (0, 1], [-1/2, 3).
     static const std::regex interval(
         R"(^\s*([\[\(])\s*([-+]?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?)\s*,\s*([-+]?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?)\s*([\]\)])\s*$)");
     std::smatch match;
     if (!std::regex_match(text, match, interval))
         throw error(where, fmt::format("domain '{}' is not understood; write real, positive, "
-                                       "nonnegative or an interval such as [0, 1]",
+                                       "nonnegative, an interval such as [0, 1], or [0, +inf]",
                                        text));
     auto bound = [](const std::string& s) {
         const auto slash = s.find('/');

@@ -19,6 +19,10 @@ struct domain {
     double upper = 0;
     bool lower_open = false;   ///< `(0, 1]` excludes 0
     bool upper_open = false;
+    /// `[0, +inf]` or `(0, +inf]`: +infinity is a value too (a coefficient of friction that
+    /// never lets a contact slide). The engine reasons on the finite values; a kernel accepts
+    /// +infinity for it.
+    bool infinity_included = false;
 
     /// True when every value of the domain is > 0 (or ≥ 0).
     bool is_positive() const;
@@ -55,8 +59,8 @@ private:
 /// over [1/20, 20], real ones uniformly over [-10, 10].
 double draw(const domain& range, uniform_stream& stream);
 
-/// Parses `real`, `positive`, `nonnegative`, or an interval `[a, b]`, `(a, b]`, … with
-/// numeric bounds. Throws `impact::error` at `where` when the text is not understood.
+/// Parses `real`, `positive`, `nonnegative`, an interval `[a, b]`, `(a, b]`, … with
+/// numeric bounds, or `[0, +inf]` and `(0, +inf]` (infinity included). Throws `impact::error` at `where` when the text is not understood.
 domain parse_domain(const std::string& text, const source_location& where);
 
 } // namespace impact::engine

@@ -1,6 +1,7 @@
 #include "engine/kernel_build.h"
 
 #include "engine/dimensional.h"
+#include "engine/cases.h"
 #include "engine/prove.h"
 
 #include <fmt/format.h>
@@ -46,9 +47,16 @@ public:
             k.lets.emplace_back(symbol, value);
         }
         for (const spec::text& v : spec_kernel.velocities) {
-            const kernel_parameter* p = find_parameter(k, v);
-            for (const quantity& q : p->components)
-                k.velocities.push_back(q.symbol);
+            // An input (`v_M`), or an expression in the inputs that is a speed (`R_M*w_M`).
+            if (k.find_parameter(v.value) || v.value.find_first_of("*/+-()") == std::string::npos) {
+                const kernel_parameter* p = find_parameter(k, v);
+                for (const quantity& q : p->components)
+                    k.velocities.push_back(q.symbol);
+                continue;
+            }
+            const GiNaC::ex speed = in_kernel(d_.symbols.parse(v));
+            require_inputs(k, speed, "velocities", v.where);
+            k.speeds.push_back(speed);
         }
         for (const spec::kernel_value& output : spec_kernel.outputs)
             k.outputs.push_back(make_output(k, output, spec_kernel));
@@ -157,8 +165,9 @@ private:
             for (const spec::text& e : extra_forms(c)) {
                 // A form may use the kernel's `let` values; it is proven with them substituted.
                 const GiNaC::ex alternative = in_kernel(d_.symbols.parse(e));
-                const verdict v = prove_equal(alternative.subs(lets, GiNaC::subs_options::no_pattern), value,
-                                              d_.symbols, run_);
+                const verdict v =
+                    prove_equal(canonical_selects(alternative.subs(lets, GiNaC::subs_options::no_pattern)),
+                                canonical_selects(value), d_.symbols, run_);
                 if (v.what != verdict::status::proven)
                     throw error(e.where, fmt::format("form \"{}\" of '{}' is not proven equal to it (residual {})",
                                                      e.value, o.member, d_.symbols.text(v.residual)));

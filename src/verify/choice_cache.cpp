@@ -112,6 +112,8 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
     w.text("velocities");
     for (const GiNaC::ex& v : k.velocities)
         w.text(order.text(v));
+    for (const GiNaC::ex& v : k.speeds)
+        w.text(order.text(v));
     for (const engine::kernel_output& o : k.outputs) {
         w.text(o.member);
         w.count(o.is_array);

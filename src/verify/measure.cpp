@@ -99,6 +99,9 @@ reference compute_reference(const engine::kernel& k, const std::vector<sample>& 
     }
     for (const engine::kernel_output& o : k.outputs)
         expressions.push_back(o.scale_factor);
+    const std::size_t first_speed = expressions.size();
+    for (const GiNaC::ex& v : k.speeds)
+        expressions.push_back(v);
     const compile::program exact_program = compile::compile_program(expressions, inputs, order, {}, k.lets);
 
     std::vector<std::size_t> velocity_slots;
@@ -120,6 +123,8 @@ reference compute_reference(const engine::kernel& k, const std::vector<sample>& 
         GiNaC::numeric speed = 0;
         for (std::size_t slot : velocity_slots)
             speed = std::max(speed, GiNaC::abs(x[slot]));
+        for (std::size_t i = first_speed; i < values.size(); ++i)
+            speed = std::max(speed, GiNaC::abs(values[i]));
         for (std::size_t i = 0; i < all.size(); ++i) {
             const engine::kernel_output& o = k.outputs[all[i].first];
             if (o.error == engine::kernel_output::scale::velocity && o.scale_factor.is_equal(1))

@@ -1,0 +1,251 @@
+// The generated kernel `impact::collide_rough` in 2D (tests/rough/rough_plane.toml),
+// checked against the physics of rough spheres typed here, not read from Impact:
+// Walton's model (issue 21): g = v_M - v_m + (R_M w_M + R_m w_m) t at the contact, with
+// n = (C_m - C_M)/|C_m - C_M| and t = z x n; J_n = (1 + eps) m_r g_n,
+// J_t = min((1 + beta) m_t |g_t|, mu J_n) sign(g_t), 1/m_t = 1/M + 1/m + 1/(q_M M) + 1/(q_m m).
+// Checked on the outputs: momentum, angular momentum about the contact point, the energy
+// change -(1 - eps^2) m_r g_n^2/2 - J_t (g_t - J_t/(2 m_t)), the restitution laws, the
+// smooth spheres of Eq. 9, and each refusal with its status.
+#define BOOST_TEST_MODULE test_rough_kernel
+#include <boost/test/unit_test.hpp>
+
+#include <impact/collide_rough_2d.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <cstring>
+
+namespace {
+
+using vec = std::array<double, 2>;
+
+struct collision {
+    double M = 2, m = 3, R_M = 0.5, R_m = 0.25, q_M = 0.4, q_m = 2.0 / 3;
+    vec C_M{0, 0}, C_m{0.75, 0};
+    vec v_M{1, 0}, v_m{0, 0};
+    double w_M = 0, w_m = 0, eps = 0.8, beta = 0.5, mu = 0.3;
+};
+
+impact::collide_rough_result<double, 2> run(const collision& c)
+{
+    return impact::collide_rough(c.M, c.m, c.R_M, c.R_m, c.q_M, c.q_m, c.C_M, c.C_m, c.v_M, c.v_m, c.w_M, c.w_m,
+                                 c.eps, c.beta, c.mu);
+}
+
+// The model, in long double, from the issue's formulas.
+struct model {
+    long double n[2], t[2], g_n, g_t, J_n, J_t, m_r, m_t;
+};
+
+model expected(const collision& c)
+{
+    model e{};
+    const long double rx = c.C_m[0] - c.C_M[0], ry = c.C_m[1] - c.C_M[1];
+    const long double d = std::sqrt(rx * rx + ry * ry);
+    e.n[0] = rx / d;
+    e.n[1] = ry / d;
+    e.t[0] = -e.n[1];
+    e.t[1] = e.n[0];
+    const long double ux = (long double)c.v_M[0] - c.v_m[0], uy = (long double)c.v_M[1] - c.v_m[1];
+    e.g_n = ux * e.n[0] + uy * e.n[1];
+    e.g_t = ux * e.t[0] + uy * e.t[1] + (long double)c.R_M * c.w_M + (long double)c.R_m * c.w_m;
+    e.m_r = (long double)c.M * c.m / ((long double)c.M + c.m);
+    e.m_t = 1 / (1 / (long double)c.M + 1 / (long double)c.m + 1 / ((long double)c.q_M * c.M) +
+                 1 / ((long double)c.q_m * c.m));
+    e.J_n = (1 + (long double)c.eps) * e.m_r * e.g_n;
+    const long double stick = (1 + (long double)c.beta) * e.m_t * std::fabs(e.g_t);
+    const long double cap = c.mu * e.J_n;
+    const long double magnitude = std::isinf(c.mu) ? stick : std::min(stick, cap);
+    e.J_t = e.g_t == 0 ? 0 : std::copysign(magnitude, e.g_t);
+    return e;
+}
+
+double energy(const collision& c, const vec& v_M, const vec& v_m, double w_M, double w_m)
+{
+    const double I_M = c.q_M * c.M * c.R_M * c.R_M, I_m = c.q_m * c.m * c.R_m * c.R_m;
+    return 0.5 * c.M * (v_M[0] * v_M[0] + v_M[1] * v_M[1]) + 0.5 * c.m * (v_m[0] * v_m[0] + v_m[1] * v_m[1]) +
+           0.5 * I_M * w_M * w_M + 0.5 * I_m * w_m * w_m;
+}
+
+// Every output against the model: v_M' = v_M - J/M, v_m' = v_m + J/m,
+// w' = w - J_t/(q mass R), within `ulps` of the collision's largest speed.
+void check_against_model(const collision& c, double ulps)
+{
+    const auto out = run(c);
+    BOOST_REQUIRE(out.status == impact::status::ok);
+    const model e = expected(c);
+    const double speed = std::max({std::fabs(c.v_M[0]), std::fabs(c.v_M[1]), std::fabs(c.v_m[0]),
+                                   std::fabs(c.v_m[1]), std::fabs(c.R_M * c.w_M), std::fabs(c.R_m * c.w_m)});
+    const double tolerance = ulps * speed * std::numeric_limits<double>::epsilon();
+    for (int i = 0; i < 2; ++i) {
+        const long double J = e.J_n * e.n[i] + e.J_t * e.t[i];
+        BOOST_TEST(std::fabs(out.v_M[i] - (c.v_M[i] - J / c.M)) <= tolerance);
+        BOOST_TEST(std::fabs(out.v_m[i] - (c.v_m[i] + J / c.m)) <= tolerance);
+    }
+    BOOST_TEST(std::fabs(out.w_M - (c.w_M - e.J_t / (c.q_M * c.M * c.R_M))) * c.R_M <= tolerance);
+    BOOST_TEST(std::fabs(out.w_m - (c.w_m - e.J_t / (c.q_m * c.m * c.R_m))) * c.R_m <= tolerance);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(head_on_without_spin_is_the_smooth_collision)
+{
+    // g_t = 0: no tangential impulse whatever beta and mu (mu = 0 too: the sliding
+    // branch, which divides by |g_t|, is discarded, and nothing is refused).
+    for (double mu : {0.0, 0.3, std::numeric_limits<double>::infinity()}) {
+        collision c;
+        c.mu = mu;
+        const auto out = run(c);
+        BOOST_TEST_INFO("mu = " << mu);
+        BOOST_REQUIRE(out.status == impact::status::ok);
+        // Eq. 8 along x: J = (1 + eps) M m (v_M - v_m)/(M + m) = 1.8 * 6/5 = 2.16.
+        BOOST_TEST(out.v_M[0] == 1 - 2.16 / 2, boost::test_tools::tolerance(1e-15));
+        BOOST_TEST(out.v_m[0] == 2.16 / 3, boost::test_tools::tolerance(1e-15));
+        BOOST_TEST(out.v_M[1] == 0.0);
+        BOOST_TEST(out.v_m[1] == 0.0);
+        BOOST_TEST(out.w_M == 0.0);
+        BOOST_TEST(out.w_m == 0.0);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(sticking_and_sliding_follow_the_model)
+{
+    collision c;
+    c.v_M = {1, 0.5};
+    c.w_M = 3;
+    c.w_m = -1;
+    for (double mu : {0.0, 0.05, 0.3, 2.0, std::numeric_limits<double>::infinity()})
+        for (double beta : {-1.0, -0.3, 0.5, 1.0}) {
+            c.mu = mu;
+            c.beta = beta;
+            BOOST_TEST_CONTEXT("mu = " << mu << ", beta = " << beta) check_against_model(c, 8);
+        }
+}
+
+BOOST_AUTO_TEST_CASE(conservation_laws_and_the_energy_change)
+{
+    std::mt19937_64 random(21);
+    std::uniform_real_distribution<double> unit(-1, 1), positive(0.1, 10), fraction(0, 1);
+    for (int n = 0; n < 2000; ++n) {
+        collision c;
+        c.M = positive(random);
+        c.m = positive(random);
+        c.R_M = positive(random);
+        c.R_m = positive(random);
+        c.q_M = 0.05 + fraction(random) * (2.0 / 3 - 0.05);
+        c.q_m = 0.05 + fraction(random) * (2.0 / 3 - 0.05);
+        c.C_M = {unit(random), unit(random)};
+        c.C_m = {unit(random), unit(random)};
+        c.v_M = {unit(random), unit(random)};
+        c.v_m = {unit(random), unit(random)};
+        c.w_M = unit(random);
+        c.w_m = unit(random);
+        c.eps = fraction(random);
+        c.beta = unit(random);
+        c.mu = n % 5 == 0 ? std::numeric_limits<double>::infinity() : 2 * fraction(random);
+        const auto out = run(c);
+        const model e = expected(c);
+        if (e.g_n <= 0) {
+            BOOST_TEST((out.status == impact::status::separating));
+            continue;
+        }
+        BOOST_REQUIRE(out.status == impact::status::ok);
+        check_against_model(c, 8);
+        const double scale = 100 * std::numeric_limits<double>::epsilon();
+        // Momentum.
+        for (int i = 0; i < 2; ++i) {
+            const double before = c.M * c.v_M[i] + c.m * c.v_m[i];
+            const double after = c.M * out.v_M[i] + c.m * out.v_m[i];
+            BOOST_TEST(std::fabs(after - before) <= scale * (c.M + c.m) * 10);
+        }
+        // Angular momentum about the contact point (lever arms R_M, R_m along n):
+        // I w - R_M M v_M.t before and after for M, I w + R_m m v_m.t for m.
+        auto angular = [&](const vec& v_M, const vec& v_m, double w_M, double w_m) {
+            const double vMt = (double)(v_M[0] * e.t[0] + v_M[1] * e.t[1]);
+            const double vmt = (double)(v_m[0] * e.t[0] + v_m[1] * e.t[1]);
+            return c.q_M * c.M * c.R_M * c.R_M * w_M + c.q_m * c.m * c.R_m * c.R_m * w_m - c.R_M * c.M * vMt +
+                   c.R_m * c.m * vmt;
+        };
+        const double L_scale = (c.M + c.m) * (c.R_M + c.R_m) * (10 + c.R_M + c.R_m);
+        BOOST_TEST(std::fabs(angular(out.v_M, out.v_m, out.w_M, out.w_m) - angular(c.v_M, c.v_m, c.w_M, c.w_m)) <=
+                   scale * L_scale);
+        // The energy change, and never a gain.
+        const double dE = energy(c, out.v_M, out.v_m, out.w_M, out.w_m) - energy(c, c.v_M, c.v_m, c.w_M, c.w_m);
+        const long double formula =
+            -(1 - (long double)c.eps * c.eps) * e.m_r * e.g_n * e.g_n / 2 - e.J_t * (e.g_t - e.J_t / (2 * e.m_t));
+        const double E_scale = energy(c, c.v_M, c.v_m, c.w_M, c.w_m) + 1;
+        BOOST_TEST(std::fabs(dE - (double)formula) <= scale * E_scale);
+        BOOST_TEST(dE <= scale * E_scale);
+        // Newton's restitution along n; tangentially, g_t' = -beta g_t while sticking, and
+        // never reversed past it while sliding.
+        const double gn_after = (out.v_M[0] - out.v_m[0]) * e.n[0] + (out.v_M[1] - out.v_m[1]) * e.n[1];
+        const double gt_after = (out.v_M[0] - out.v_m[0]) * e.t[0] + (out.v_M[1] - out.v_m[1]) * e.t[1] +
+                                c.R_M * out.w_M + c.R_m * out.w_m;
+        const double g_scale = 10 + 10 * (c.R_M + c.R_m);
+        BOOST_TEST(std::fabs(gn_after + c.eps * (double)e.g_n) <= scale * g_scale);
+        BOOST_TEST((gt_after + c.beta * (double)e.g_t) * (double)e.g_t >= -scale * g_scale * g_scale);
+        if (std::isinf(c.mu))
+            BOOST_TEST(std::fabs(gt_after + c.beta * (double)e.g_t) <= scale * g_scale);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(perfectly_rough_elastic_spheres_keep_their_energy)
+{
+    // eps = beta = 1, mu = +inf: no energy lost, however the spheres spin.
+    collision c;
+    c.v_M = {1, -2};
+    c.v_m = {-0.5, 0.25};
+    c.w_M = 4;
+    c.w_m = -7;
+    c.eps = 1;
+    c.beta = 1;
+    c.mu = std::numeric_limits<double>::infinity();
+    const auto out = run(c);
+    BOOST_REQUIRE(out.status == impact::status::ok);
+    const double before = energy(c, c.v_M, c.v_m, c.w_M, c.w_m);
+    BOOST_TEST(energy(c, out.v_M, out.v_m, out.w_M, out.w_m) == before, boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_status)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    struct bad {
+        void (*spoil)(collision&);
+        impact::status status;
+    };
+    const bad cases[] = {
+        {[](collision& c) { c.m = 0; }, impact::status::invalid_mass},
+        {[](collision& c) { c.R_M = 0; }, impact::status::invalid_radius},
+        {[](collision& c) { c.R_m = std::numeric_limits<double>::infinity(); }, impact::status::invalid_radius},
+        {[](collision& c) { c.q_M = 0; }, impact::status::invalid_inertia},
+        {[](collision& c) { c.q_m = 0.7; }, impact::status::invalid_inertia},
+        {[](collision& c) { c.eps = 1.5; }, impact::status::invalid_restitution},
+        {[](collision& c) { c.beta = -1.5; }, impact::status::invalid_tangential_restitution},
+        {[](collision& c) { c.beta = std::numeric_limits<double>::quiet_NaN(); },
+         impact::status::invalid_tangential_restitution},
+        {[](collision& c) { c.mu = -0.1; }, impact::status::invalid_friction},
+        {[](collision& c) { c.mu = std::numeric_limits<double>::quiet_NaN(); }, impact::status::invalid_friction},
+        {[](collision& c) { c.w_M = std::numeric_limits<double>::quiet_NaN(); }, impact::status::non_finite},
+        {[](collision& c) { c.w_m = std::numeric_limits<double>::infinity(); }, impact::status::non_finite},
+        {[](collision& c) { c.C_m = c.C_M; }, impact::status::coincident_centres},
+        {[](collision& c) { c.v_M = {-1, 0}; }, impact::status::separating},
+    };
+    (void)nan;
+    (void)inf;
+    for (const bad& b : cases) {
+        collision c;
+        c.w_M = 2;
+        c.w_m = -3;
+        b.spoil(c);
+        const auto out = run(c);
+        BOOST_TEST((out.status == b.status), "status " << static_cast<int>(out.status));
+        // Everything returned as given, bit for bit.
+        BOOST_TEST(std::memcmp(&out.v_M, &c.v_M, sizeof c.v_M) == 0);
+        BOOST_TEST(std::memcmp(&out.v_m, &c.v_m, sizeof c.v_m) == 0);
+        BOOST_TEST(std::memcmp(&out.w_M, &c.w_M, sizeof c.w_M) == 0);
+        BOOST_TEST(std::memcmp(&out.w_m, &c.w_m, sizeof c.w_m) == 0);
+    }
+}
