@@ -162,29 +162,6 @@ bool has_select(const GiNaC::ex& e)
     return false;
 }
 
-namespace {
-
-// `e` with every argument of every function in it (abs, select_positive) in normal form.
-GiNaC::ex normal_arguments(const GiNaC::ex& e)
-{
-    if (GiNaC::is_a<GiNaC::function>(e)) {
-        GiNaC::ex f = e;
-        for (std::size_t i = 0; i < e.nops(); ++i)
-            f.let_op(i) = GiNaC::normal(normal_arguments(e.op(i)));
-        return f;
-    }
-    if (e.nops() == 0)
-        return e;
-    return e.map([](const GiNaC::ex& x) { return normal_arguments(x); });
-}
-
-} // namespace
-
-GiNaC::ex canonical_selects(const GiNaC::ex& e)
-{
-    return has_select(e) ? normal_arguments(e) : e;
-}
-
 std::string condition_text(const case_value& c, const term_order& order)
 {
     return fmt::format("{} {} {}", ginac_syntax(c.lhs, order), to_string(c.op), ginac_syntax(c.rhs, order));

@@ -37,10 +37,6 @@ GiNaC::ex select_of(const std::vector<case_value>& cases);
 /// Whether `e` holds a select_positive.
 bool has_select(const GiNaC::ex& e);
 
-/// `e` with the arguments of each select_positive in GiNaC's normal form, so that two
-/// writings of one quantity defined by cases (a kernel's `let` of it and its derived value)
-/// are the same select, which a proof then treats as one unknown.
-GiNaC::ex canonical_selects(const GiNaC::ex& e);
 
 /// The check that the conditions of `cases` (for the quantity `name`) cover every value.
 check_result prove_exhaustive(const std::string& name, const std::vector<case_value>& cases,

@@ -165,9 +165,7 @@ private:
             for (const spec::text& e : extra_forms(c)) {
                 // A form may use the kernel's `let` values; it is proven with them substituted.
                 const GiNaC::ex alternative = in_kernel(d_.symbols.parse(e));
-                const verdict v =
-                    prove_equal(canonical_selects(alternative.subs(lets, GiNaC::subs_options::no_pattern)),
-                                canonical_selects(value), d_.symbols, run_);
+                const verdict v = prove_form(alternative.subs(lets, GiNaC::subs_options::no_pattern), value);
                 if (v.what != verdict::status::proven)
                     throw error(e.where, fmt::format("form \"{}\" of '{}' is not proven equal to it (residual {})",
                                                      e.value, o.member, d_.symbols.text(v.residual)));
@@ -177,6 +175,59 @@ private:
             o.candidates.push_back(std::move(forms));
         }
         return o;
+    }
+
+    // A form proven equal to an output's value. A quantity defined by cases is a select in
+    // both; each select is named by one symbol, the same for selects whose condition and
+    // cases are proven equal, so that the proof is of the algebra around them (GiNaC's
+    // normal form of a select's arguments alone can differ between two writings of it).
+    verdict prove_form(const GiNaC::ex& form, const GiNaC::ex& value)
+    {
+        if (!has_select(form) && !has_select(value))
+            return prove_equal(form, value, d_.symbols, run_);
+        std::vector<GiNaC::ex> selects;
+        for (const GiNaC::ex& side : {form, value})
+            for (GiNaC::const_postorder_iterator it = side.postorder_begin(); it != side.postorder_end(); ++it)
+                if (GiNaC::is_a<GiNaC::function>(*it) &&
+                    GiNaC::ex_to<GiNaC::function>(*it).get_name() == "select_positive")
+                    selects.push_back(*it);
+        GiNaC::exmap named;
+        std::vector<std::pair<GiNaC::ex, GiNaC::symbol>> classes;
+        for (const GiNaC::ex& s : selects) {
+            if (named.count(s))
+                continue;
+            const GiNaC::symbol* same = nullptr;
+            for (const auto& [representative, symbol] : classes) {
+                bool equal = true;
+                for (std::size_t i = 0; i < 3 && equal; ++i)
+                    equal = prove_equal(s.op(i), representative.op(i), d_.symbols, run_).what ==
+                            verdict::status::proven;
+                if (equal) {
+                    same = &symbol;
+                    break;
+                }
+            }
+            if (!same) {
+                classes.emplace_back(s, GiNaC::symbol(fmt::format("case_{}", classes.size())));
+                same = &classes.back().second;
+            }
+            named[s] = *same;
+        }
+        return prove_equal(expanded_radicands(form.subs(named, GiNaC::subs_options::no_pattern)),
+                           expanded_radicands(value.subs(named, GiNaC::subs_options::no_pattern)), d_.symbols,
+                           run_);
+    }
+
+    // `e` with the base of every fractional power expanded: one radical written two ways
+    // ((C_mx - C_Mx)^2 + ... and its expansion) is then one quantity to normal().
+    static GiNaC::ex expanded_radicands(const GiNaC::ex& e)
+    {
+        if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+            !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())
+            return GiNaC::pow(GiNaC::expand(expanded_radicands(e.op(0))), e.op(1));
+        if (e.nops() == 0)
+            return e;
+        return e.map([](const GiNaC::ex& x) { return expanded_radicands(x); });
     }
 
     void require_inputs(const kernel& k, const GiNaC::ex& value, const std::string& member,

@@ -28,6 +28,28 @@ GiNaC::ex spelled_out(const GiNaC::ex& e, const GiNaC::exmap& abbreviations)
     return once.is_equal(e) ? once : once.subs(abbreviations);
 }
 
+// False when `e` is certainly not identically zero: its exact value at one point of
+// rationals is a non-zero number. True otherwise (zero there, or not a number there: a
+// radical of rationals, a pole), when only normal() can tell. A cheap test before
+// normal() on large expressions that are mostly not equal.
+bool may_vanish(const GiNaC::ex& e)
+{
+    GiNaC::exmap point;
+    long k = 0;
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !point.count(*it)) {
+            ++k;
+            point[*it] = GiNaC::numeric(2 * k + 3, k + 7);  // distinct, positive, below 1 after 4
+        }
+    try {
+        const GiNaC::ex value = e.subs(point, GiNaC::subs_options::no_pattern);
+        return !(GiNaC::is_a<GiNaC::numeric>(value) && GiNaC::ex_to<GiNaC::numeric>(value).is_rational() &&
+                 !value.is_zero());
+    } catch (const std::exception&) {
+        return true;
+    }
+}
+
 // The exact rational value of a double, so that sampled points carry no rounding.
 GiNaC::numeric exact(double value)
 {
@@ -377,7 +399,7 @@ std::optional<verdict> prove_inequality_through(const GiNaC::ex& lhs, relation o
         for (int side = 0; side < 2; ++side) {
             for (const int s : {1, -1}) {
                 const GiNaC::ex same = spelled_out(s * sides[side], abbreviations);
-                if (!GiNaC::normal(difference - same).is_zero())
+                if (!may_vanish(difference - same) || !GiNaC::normal(difference - same).is_zero())
                     continue;
                 const GiNaC::ex other = s * sides[1 - side];
                 const auto settled = [strict](const sign_proof& p) {
