@@ -132,11 +132,36 @@ struct lab_collision {
     ex m_after(std::size_t i) const { return vm[i] + k * M / (M + m) * closing() * r[i] / dot(r, r); }
 };
 
+// `e` with each quantity defined by cases in d replaced by its value in the case whose
+// condition holds at `at` (the conditions evaluated there, the derivation's
+// abbreviations written out).
+ex with_case_that_holds(const engine::derivation& d, ex e, const GiNaC::exmap& at)
+{
+    const GiNaC::exmap abbreviations = d.symbols.abbreviations();
+    const auto spelled = [&](const ex& x) { return x.subs(abbreviations).subs(abbreviations).subs(abbreviations); };
+    for (const engine::step_result& s : d.steps) {
+        for (const engine::case_value& c : s.cases) {
+            const ex difference = GiNaC::evalf(spelled(c.lhs - c.rhs).subs(at));
+            BOOST_REQUIRE(GiNaC::is_a<numeric>(difference));
+            const numeric x = GiNaC::ex_to<numeric>(difference);
+            const bool holds = c.op == engine::relation::less           ? x < 0
+                               : c.op == engine::relation::less_equal  ? x <= 0
+                               : c.op == engine::relation::greater     ? x > 0
+                                                                        : x >= 0;
+            if (holds) {
+                e = e.subs(s.cases_of == spelled(c.value));
+                break;
+            }
+        }
+    }
+    return spelled(e);
+}
+
 // The derivations this file has closed-form tests for.
 const std::set<std::string> covered = {"elastic_line",      "inelastic_line",      "relative_velocity_change",
                                        "energy_loss",       "energy_loss_impulse", "billiard_transfer",
                                        "scatter_angle",     "elastic_plane",       "inelastic_plane",
-                                       "inelastic_space"};
+                                       "inelastic_space",   "rough_sticking",      "rough_plane"};
 
 } // namespace
 
@@ -514,6 +539,75 @@ BOOST_AUTO_TEST_CASE(inelastic_collision_in_space_matches_the_impulse_along_the_
     const ex E = c.M * c.dot(c.vM, c.vM) + c.m * c.dot(c.vm, c.vm);
     BOOST_TEST(equal(E_after.subs(GiNaC::exmap{{sym(d, "eps"), 1}}), E));
     BOOST_TEST(!equal(E_after, E));  // and only at eps = 1
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// Rough spheres (beyond the paper, issue 21), from Walton's model: the normal impulse of
+// Eq. 8, J_n = (1 + eps) m_r g_n, and a tangential impulse that reverses the contact
+// points' tangential velocity g_t with restitution beta, J_t = (1 + beta) m_t g_t, where
+// 1/m_t = 1/M + 1/m + 1/(q_M M) + 1/(q_m m) (each sphere's mass, and its inertia seen at
+// its rim); capped by Coulomb friction at mu J_n (the contact slides).
+BOOST_AUTO_TEST_SUITE(rough_spheres)
+
+BOOST_AUTO_TEST_CASE(sticking_impulses_match_walton_s_model)
+{
+    const engine::derivation& d = derived("rough_sticking");
+    const ex M = sym(d, "M"), m = sym(d, "m"), q_M = sym(d, "q_M"), q_m = sym(d, "q_m"), eps = sym(d, "eps"),
+             b = sym(d, "b"), R_M = sym(d, "R_M"), R_m = sym(d, "R_m");
+    const ex g_n = sym(d, "v_Mn") - sym(d, "v_mn");
+    const ex g_t = sym(d, "v_Mt") - sym(d, "v_mt") + R_M * sym(d, "w_M") + R_m * sym(d, "w_m");
+    const ex m_r = M * m / (M + m);
+    const ex m_t = 1 / (1 / M + 1 / m + 1 / (q_M * M) + 1 / (q_m * m));
+    BOOST_TEST(equal(value(d, "J_n"), (1 + eps) * m_r * g_n));
+    BOOST_TEST(equal(value(d, "J_t"), (1 + b) * m_t * g_t));
+    BOOST_TEST(equal(value(d, "v_Mt_after"), sym(d, "v_Mt") - (1 + b) * m_t * g_t / M));
+    // The spin changes by the moment R_M J_t over the moment of inertia q_M M R_M^2.
+    BOOST_TEST(equal(value(d, "w_M_after"), sym(d, "w_M") - (1 + b) * m_t * g_t / (q_M * M * R_M)));
+}
+
+BOOST_AUTO_TEST_CASE(the_lab_frame_velocities_and_spins_stick_or_slide_as_walton_s_model_says)
+{
+    const engine::derivation& d = derived("rough_plane");
+    const ex M = sym(d, "M"), m = sym(d, "m"), R_M = sym(d, "R_M"), R_m = sym(d, "R_m"), q_M = sym(d, "q_M"),
+             q_m = sym(d, "q_m"), eps = sym(d, "eps"), b = sym(d, "b"), mu = sym(d, "mu"), r_x = sym(d, "r_x"),
+             r_y = sym(d, "r_y"), v_Mx = sym(d, "v_Mx"), v_My = sym(d, "v_My"), v_mx = sym(d, "v_mx"),
+             v_my = sym(d, "v_my"), w_M = sym(d, "w_M"), w_m = sym(d, "w_m");
+    // Points where the contact sticks (a large mu) and where it slides (a small one), and
+    // one of each with the spheres spinning the other way: n = r/|r| from M to m, t = z x n.
+    struct point {
+        int mu_num, mu_den, w_M_num;
+    };
+    for (const point p : {point{5, 1, 3}, point{1, 20, 3}, point{5, 1, -7}, point{1, 50, -7}}) {
+        const GiNaC::exmap at{{M, 2}, {m, 3}, {R_M, numeric(1, 2)}, {R_m, numeric(1, 4)}, {q_M, numeric(2, 5)},
+                              {q_m, numeric(2, 3)}, {eps, numeric(4, 5)}, {b, numeric(1, 2)},
+                              {mu, numeric(p.mu_num, p.mu_den)}, {r_x, 3}, {r_y, 4}, {v_Mx, 1},
+                              {v_My, numeric(1, 2)}, {v_mx, numeric(-1, 4)}, {v_my, 0}, {w_M, p.w_M_num},
+                              {w_m, -1}};
+        // The model in exact numbers: n = (3/5, 4/5), t = (-4/5, 3/5).
+        const numeric n[2] = {numeric(3, 5), numeric(4, 5)}, tt[2] = {numeric(-4, 5), numeric(3, 5)};
+        const numeric u[2] = {numeric(1) + numeric(1, 4), numeric(1, 2)};
+        const numeric g_n = u[0] * n[0] + u[1] * n[1];
+        const numeric g_t = u[0] * tt[0] + u[1] * tt[1] + numeric(1, 2) * p.w_M_num + numeric(1, 4) * -1;
+        const numeric m_r = numeric(6, 5);
+        const numeric m_t = 1 / (numeric(1, 2) + numeric(1, 3) + 1 / (numeric(2, 5) * 2) + 1 / (numeric(2, 3) * 3));
+        const numeric J_n = numeric(9, 5) * m_r * g_n;
+        const numeric stick = numeric(3, 2) * m_t * g_t;
+        const numeric cap = numeric(p.mu_num, p.mu_den) * J_n;
+        const numeric J_t = GiNaC::abs(stick) <= cap ? stick : (g_t > 0 ? cap : -cap);
+        const std::vector<GiNaC::exmap> here{at};
+        // The derived results hold J_t, defined by cases: the case whose condition holds here.
+        const auto in_case = [&](const ex& e) { return with_case_that_holds(d, e, at); };
+        BOOST_TEST_CONTEXT("mu = " << p.mu_num << "/" << p.mu_den << ", w_M = " << p.w_M_num)
+        {
+            BOOST_TEST(numerically_equal(in_case(value(d, "v_Mx_after")), 1 - (J_n * n[0] + J_t * tt[0]) / 2, here));
+            BOOST_TEST(numerically_equal(in_case(value(d, "v_My_after")), numeric(1, 2) - (J_n * n[1] + J_t * tt[1]) / 2, here));
+            BOOST_TEST(numerically_equal(in_case(value(d, "v_mx_after")), numeric(-1, 4) + (J_n * n[0] + J_t * tt[0]) / 3, here));
+            BOOST_TEST(numerically_equal(in_case(value(d, "v_my_after")), (J_n * n[1] + J_t * tt[1]) / 3, here));
+            BOOST_TEST(numerically_equal(in_case(value(d, "w_M_after")), p.w_M_num - J_t / (numeric(2, 5) * 2 * numeric(1, 2)), here));
+            BOOST_TEST(numerically_equal(in_case(value(d, "w_m_after")), -1 - J_t / (numeric(2, 3) * 3 * numeric(1, 4)), here));
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,5 @@
 // Rough spheres (issue 21, the paper's "future research"), derived in the collision frame
-// with every check proven: tests/rough/rough_sticking.toml solves the impulse, spin and
+// with every check proven: derivations/rough_sticking.toml solves the impulse, spin and
 // restitution equations of a contact that sticks; tests/rough/rough_collision_frame.toml
 // caps the tangential impulse by Coulomb friction, by cases (sticking and sliding), and
 // proves momentum, angular momentum about the contact point, the energy change and its
@@ -24,7 +24,7 @@ using namespace impact::testing;
 
 engine::derivation rough_sticking()
 {
-    return derive_file("tests/rough/rough_sticking.toml");
+    return derive_file("derivations/rough_sticking.toml");
 }
 
 engine::derivation rough_collision_frame()

@@ -1,4 +1,4 @@
-// The generated kernel `impact::collide_rough` in 2D (tests/rough/rough_plane.toml),
+// The generated kernel `impact::collide_rough` in 2D (derivations/rough_plane.toml),
 // checked against the physics of rough spheres typed here, not read from Impact:
 // Walton's model (issue 21): g = v_M - v_m + (R_M w_M + R_m w_m) t at the contact, with
 // n = (C_m - C_M)/|C_m - C_M| and t = z x n; J_n = (1 + eps) m_r g_n,

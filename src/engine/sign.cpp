@@ -231,9 +231,9 @@ private:
             return std::nullopt;
         const auto write = [this](const GiNaC::ex& x) { return text(x); };
         std::vector<std::pair<GiNaC::ex, const domain*>> in;
-        for (const auto& [s, d] : domains_)
+        for (const auto& [s, d] : by_name())
             if (e.has(s))
-                in.emplace_back(s, &d);
+                in.emplace_back(s, d);
         if (in.size() == 1)
             if (auto sturm = sturm_sign(e, in.front().first, *in.front().second, write))
                 return sturm;
@@ -259,7 +259,8 @@ private:
     {
         if (depth > 6)
             return std::nullopt;
-        for (const auto& [s, d] : domains_) {
+        for (const auto& [s, range] : by_name()) {
+            const domain& d = *range;
             if (d.what != domain::kind::interval || !e.has(s) || !e.is_polynomial(s))
                 continue;
             const GiNaC::ex p = GiNaC::expand(e);
@@ -273,22 +274,31 @@ private:
                 ends = {0, GiNaC::abs(low) > GiNaC::abs(high) ? low : high};
             sign_set r{false, false, false};
             std::vector<std::string> at;
+            finding typeset;
+            typeset.say(squared ? "affine in " : "linear in ").math(squared ? GiNaC::pow(s, 2) : s);
+            typeset.say(", so between its values at the ends of the domain of ").math(s).say(": ");
             bool known = true;
             for (const GiNaC::numeric& end : ends) {
-                const GiNaC::ex value = p.subs(s == end);
-                const auto [sign_at, why] = sign(factored(value), depth + 1);
+                const GiNaC::ex value = factored(p.subs(s == end));
+                const auto [sign_at, why] = sign(value, depth + 1);
                 known = known && sign_at.is_known();
                 r.negative = r.negative || sign_at.negative;
                 r.positive = r.positive || sign_at.positive;
                 r.zero = r.zero || sign_at.zero;
-                at.push_back(fmt::format("{} {} at {} = {}", text(factored(value)), sign_at.describe(), text(s),
-                                         text(end)));
+                at.push_back(fmt::format("{} {} at {} = {}", text(value), sign_at.describe(), text(s), text(end)));
+                if (&end != &ends.front())
+                    typeset.say(" and ");
+                typeset.math(value).say(sign_at.negative ? (sign_at.zero ? " is not positive" : " is negative")
+                                                         : (sign_at.zero ? " is not negative" : " is positive"));
+                typeset.say(" at ").math(s == end);
             }
             if (!known || (r.negative && r.positive))
                 continue;
-            return std::make_pair(r, fmt::format("{}, {} in {}, between its values at the ends: {}",
-                                                 squared ? "affine in " + text(GiNaC::pow(s, 2)) : "linear in " + text(s),
-                                                 text(s), d.to_string(), fmt::format("{}", fmt::join(at, " and "))));
+            sign_reason reason(fmt::format("{}, {} in {}, between its values at the ends: {}",
+                                           squared ? "affine in " + text(GiNaC::pow(s, 2)) : "linear in " + text(s),
+                                           text(s), d.to_string(), fmt::format("{}", fmt::join(at, " and "))));
+            reason.typeset = typeset;
+            return std::make_pair(r, reason);
         }
         return std::nullopt;
     }
@@ -330,6 +340,17 @@ private:
         reason.typeset.say("linear in ").math(only).say(", ").math(low).say(" and ").math(high).say(
             " at the ends of its domain");
         return std::make_pair(r, reason);
+    }
+
+    // The symbols with a domain, in the order of their names (GiNaC's order of symbols
+    // differs between runs, and the argument a proof takes must not).
+    std::vector<std::pair<GiNaC::ex, const domain*>> by_name() const
+    {
+        std::vector<std::pair<GiNaC::ex, const domain*>> all;
+        for (const auto& [s, d] : domains_)
+            all.emplace_back(s, &d);
+        std::sort(all.begin(), all.end(), [this](const auto& a, const auto& b) { return text(a.first) < text(b.first); });
+        return all;
     }
 
     GiNaC::ex factored(const GiNaC::ex& e) const

@@ -52,8 +52,11 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
            "compares every equation and claim of the paper with what is derived, and "
            "Section~\\ref{sec:figures} recomputes the paper's Figs.~2 and~3 with the generated C++ kernels.\n\n"
            "\\tableofcontents\n\n\\section{Derivations}\\label{sec:derivations}\n";
+    // The paper's derivations; those beyond it (rough spheres, no `paper` of their own) are
+    // written to latex/ but not yet typeset in the report.
     for (const engine::derivation* d : derivations)
-        out += fmt::format("\\input{{latex/{}}}\n", d->id());
+        if (d->source.paper)
+            out += fmt::format("\\input{{latex/{}}}\n", d->id());
 
     out += "\n\\section{The paper, held to account}\\label{sec:errata}\n";
     out += fmt::format("Every equation the paper prints, and every claim its text makes about them, as transcribed "

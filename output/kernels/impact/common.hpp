@@ -49,7 +49,7 @@ namespace impact {
 /// As wide as a double, so that a vectorised batch loop over doubles keeps one
 /// width in every lane: with a narrower status, compilers pack two vectors of
 /// doubles per vector of statuses, and the loop runs short of registers.
-enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range, underflow };
+enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range, underflow, invalid_radius, invalid_inertia, invalid_tangential_restitution, invalid_friction };
 
 namespace detail {
 
@@ -271,6 +271,16 @@ private:
     std::size_t count_ = 0;
     std::size_t stride_ = 0;  // bytes from one array's start to the next
     unsigned char* block_ = nullptr;
+};
+
+/// What collide_rough returns in N dimensions.
+template <class Real, std::size_t N>
+struct collide_rough_result {
+    std::array<Real, N> v_M;
+    std::array<Real, N> v_m;
+    Real w_M;
+    Real w_m;
+    impact::status status;
 };
 
 } // namespace impact

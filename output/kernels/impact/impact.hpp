@@ -8,3 +8,4 @@
 #include "collide_2d.hpp"
 #include "scatter_angle.hpp"
 #include "collide_3d.hpp"
+#include "collide_rough_2d.hpp"
