@@ -65,6 +65,12 @@ std::vector<std::string> latex_lines_as_written(const written_form::node& n, con
 /// A check's claim as LaTeX math: `\lim_{v_\perp \to \infty} \cos\theta = 0`, `\Delta E_K \leq 0`.
 std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written = nullptr);
 
+/// What a claim of the paper was checked as, in LaTeX prose: the claim as its file writes
+/// it, then its special values, narrowed domains and the inputs changed on its left side
+/// ("$\frac{1}{\cos^2\theta} = \frac{1}{\cos^2\theta}$, for $\epsilon \in [0, 1)$, the left side
+/// taken at $v_{1,\parallel} \to k v_{1,\parallel}$").
+std::string checked_claim_latex(const engine::check_result& c, const term_order& order);
+
 /// Plain text escaped for LaTeX.
 std::string latex_text(const std::string& text);
 

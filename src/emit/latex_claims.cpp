@@ -308,7 +308,7 @@ std::string fragment_writer::form(const GiNaC::ex& e, const written_form* w) con
 // Text after a displayed formula starts a new sentence.
 std::string fragment_writer::paper() const
 {
-    if (d_.paper_checks.empty())
+    if (d_.paper_checks.empty() && d_.source.open_claims.empty())
         return "";
     std::string out = "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
     for (const engine::paper_comparison& p : d_.paper_checks) {
@@ -351,6 +351,10 @@ std::string fragment_writer::paper() const
             continue;
         out += after_display && change.empty() ? "\n" : ".\n";
     }
+    // Claims no derivation settles: the words, undecided, and why.
+    for (const spec::open_claim& c : d_.source.open_claims)
+        out += fmt::format("\\item {}, claim: ``{}'' --- \\textbf{{undecided}}: {}.\n", paper_text(c.paper.value),
+                           latex_prose(c.quote.value), latex_prose(c.undecided.value));
     return out + "\\end{itemize}\n";
 }
 
@@ -364,6 +368,28 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
         lhs = fmt::format("\\lim_{{{} \\to {}}} {}", latex(c.limit->symbol, order), point, lhs);
     }
     return fmt::format("{} {} {}", lhs, latex_relation(c.op), latex(c.stated.rhs(), order, written));
+}
+
+std::string checked_claim_latex(const engine::check_result& c, const term_order& order)
+{
+    // As the file writes it, nothing merged ((-a_M n_x)(-J n_y) - ... = 0, not 0 = 0); a
+    // limit as GiNaC reads it.
+    const auto& tree = c.written.tree();
+    std::string out = "$" + (tree && !c.limit ? latex_as_written(*tree, order) : claim_math(c, order, &c.written)) + "$";
+    std::vector<std::string> conditions, at, assuming, left;
+    for (const auto& [symbol, value] : c.at)
+        at.push_back(fmt::format("${} = {}$", latex(symbol, order), latex(value, order)));
+    if (!at.empty())
+        conditions.push_back("at " + detail::listing(at));
+    for (const auto& [symbol, range] : c.assuming)
+        assuming.push_back(fmt::format("${} \\in {}$", latex(symbol, order), range));
+    if (!assuming.empty())
+        conditions.push_back("for " + detail::listing(assuming));
+    for (const auto& [symbol, value] : c.left_at)
+        left.push_back(fmt::format("${} \\to {}$", latex(symbol, order), latex(value, order)));
+    if (!left.empty())
+        conditions.push_back("the left side taken at " + detail::listing(left));
+    return conditions.empty() ? out : out + ", " + detail::listing(conditions);
 }
 
 } // namespace impact::emit

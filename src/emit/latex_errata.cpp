@@ -2,6 +2,7 @@
 // engine (words and the expressions and dimensions they name), and the rows of the
 // report's errata table, with the forms too wide for a cell set as numbered displays
 // under the table.
+#include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
 
@@ -168,43 +169,20 @@ std::string fragment_writer::shown_as_printed(const engine::paper_comparison& p)
     return out + "\n\\end{align*}\n";
 }
 
-// The paper comparisons as rows of the report's errata table. A disagreement that the
-// same finding explains in several consecutive components (Eq. 9's lab-frame
-// components of one line) is one row; forms wider than their column are set under the
-// table as numbered displays (T1), (T2), ...
+// The paper comparisons as rows of the report's errata table, one per finding
+// (emit::errata_rows): a claim, a printed form, or the consecutive components of one
+// line that one misprint explains (Eq. 9's lab-frame components); then the claims no
+// derivation settles, undecided with the reason. Forms wider than their column are set
+// under the table as numbered displays (T1), (T2), ...
 void fragment_writer::errata_rows(errata_table& table) const
 {
     constexpr double printed_pt = 122, derived_pt = 99, change_pt = 78;
     const auto& all = d_.paper_checks;
-    std::vector<bool> done(all.size(), false);
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        if (done[i])
-            continue;
-        const engine::paper_comparison& p = all[i];
-        // The components that share this row's misprint: the same equation, the same finding.
-        std::vector<std::size_t> group = {i};
-        if (!p.agrees() && !p.reconciliations.empty())
-            for (std::size_t j = i + 1; j < all.size(); ++j)
-                if (!done[j] && !all[j].agrees() && all[j].paper == p.paper && all[j].what == p.what &&
-                    all[j].reconciliations == p.reconciliations) {
-                    group.push_back(j);
-                    done[j] = true;
-                }
-        // Claims of one sentence with one verdict (two claims of one quote): one row, the
-        // quote shown once.
-        std::vector<std::size_t> claims = {i};
-        if (p.what == engine::paper_comparison::kind::claim)
-            for (std::size_t j = i + 1; j < all.size(); ++j)
-                if (!done[j] && all[j].what == p.what && all[j].paper == p.paper &&
-                    all[j].printed_text == p.printed_text && all[j].agreement.what == p.agreement.what) {
-                    claims.push_back(j);
-                    done[j] = true;
-                }
+    for (const std::vector<std::size_t>& group : emit::errata_rows(d_)) {
+        const engine::paper_comparison& p = all[group.front()];
         std::vector<std::string> subjects;
         for (std::size_t k : group)
             subjects.push_back(subject(all[k]));
-        if (claims.size() > 1)
-            subjects = {fmt::format("{} claims", claims.size())};
         const std::string verdict = comparison_verdict(p);
 
         std::string printed, printed_math;
@@ -225,19 +203,6 @@ void fragment_writer::errata_rows(errata_table& table) const
                                         : findings(p);
         if (change.empty())
             change = verdict == "undecided" ? "neither proven nor refuted" : unreconciled(p, change_pt);
-        if (claims.size() > 1 && !p.agrees()) {
-            std::vector<std::string> said = {change};
-            for (std::size_t k = 1; k < claims.size(); ++k) {
-                std::string more = findings(all[claims[k]]);
-                if (more.empty())
-                    more = unreconciled(all[claims[k]], change_pt);
-                if (std::find(said.begin(), said.end(), more) == said.end())
-                    said.push_back(more);
-            }
-            change.clear();
-            for (const std::string& one : said)
-                change += (change.empty() ? "" : "; ") + one;
-        }
         if (group.size() > 1)
             change += fmt::format("; one misprint, in each of the {} components", group.size());
 
@@ -252,6 +217,13 @@ void fragment_writer::errata_rows(errata_table& table) const
                     to_display = true;
         std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;
         std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
+        // A claim: what was checked (at its special values, or its limit), when it fits.
+        if (p.what == engine::paper_comparison::kind::claim && p.test) {
+            const std::string checked = checked_claim_latex(*p.test, order_);
+            derived_cell = fits(checked, derived_pt) && cell_width(checked) <= 2.5 * derived_pt
+                               ? "checked: " + checked
+                               : fmt::format("checked in Sect.~\\ref{{{}}}", latex_label(d_));
+        }
         std::string change_cell = change;
         if (to_display) {
             const std::string mark = fmt::format("(T{})", ++table.displayed);
@@ -279,6 +251,10 @@ void fragment_writer::errata_rows(errata_table& table) const
                                   p.agrees() ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
                                   change_cell);
     }
+    for (const spec::open_claim& c : d_.source.open_claims)
+        table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & claim & \\textbf{{undecided}} & ``{}'' & & {} \\\\\n",
+                                  paper_text(c.paper.value), latex_label(d_), latex_prose(c.quote.value),
+                                  capitalised(latex_prose(c.undecided.value)));
 }
 
 } // namespace detail
