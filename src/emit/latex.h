@@ -80,7 +80,10 @@ std::string latex_prose(const std::string& text);
 
 /// A finding of the engine (a smallest change, a dimensional inconsistency, the regime
 /// where a claim holds instead) as LaTeX prose with its mathematics typeset.
-std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written = nullptr);
+/// With `of`, the comparison it is about: an expression the finding names that is the
+/// printed form itself is set as the paper prints it.
+std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written = nullptr,
+                          const engine::paper_comparison* of = nullptr);
 
 /// "agrees", "disagrees", or "undecided" when the comparison could be neither proven nor
 /// refuted.

@@ -324,7 +324,15 @@ std::string fragment_writer::paper() const
         }
         const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {
-            out += after_display ? "It agrees.\n" : " --- agrees.\n";
+            // A claim: what was proven, so that two claims of one sentence read apart.
+            std::string checked;
+            if (p.what == engine::paper_comparison::kind::claim && p.test) {
+                const std::string c = checked_claim_latex(*p.test, order_);
+                checked = latex_width(c) < 260 && c.find("\\frac{\\frac") == std::string::npos
+                              ? " (proven: " + c + ")"
+                              : "";
+            }
+            out += after_display ? "It agrees" + checked + ".\n" : " --- agrees" + checked + ".\n";
             continue;
         }
         out += fmt::format(after_display ? (verdict == "disagrees" ? "It \\textbf{{{}}}" : "It is \\textbf{{{}}}")
@@ -342,9 +350,14 @@ std::string fragment_writer::paper() const
         } else {
             after_display = false;
         }
+        // A dimensional inconsistency is said as such, then the change that mends it.
+        const std::string dimensions = findings(p, finding_kind::dimensions);
+        const std::string changes = findings(p, finding_kind::changes);
         const std::string change = findings(p);
-        if (!change.empty())
-            out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
+        if (!dimensions.empty())
+            out += after_display ? capitalised(dimensions) : "; it is " + dimensions;
+        if (!changes.empty())
+            out += after_display && dimensions.empty() ? "Smallest change: " + changes : "; smallest change: " + changes;
         else if (p.what == engine::paper_comparison::kind::claim && p.test)
             out += (after_display ? capitalised(unreconciled(p, 60)) : "; " + unreconciled(p, 60)) + ".\n";
         if (change.empty() && p.what == engine::paper_comparison::kind::claim && p.test)

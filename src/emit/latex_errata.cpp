@@ -40,13 +40,27 @@ std::string dimension_latex(const engine::dimension& d)
 
 } // namespace
 
-std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written)
+std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written,
+                          const engine::paper_comparison* of)
 {
+    // The printed form itself, named by a finding (a spurious m in the whole of Eq. 12's
+    // third line), as the paper prints it: its terms, factors and signs as transcribed.
+    const auto& tree = of && of->what != engine::paper_comparison::kind::claim ? of->written.tree()
+                                                                               : std::optional<written_form::node>();
+    auto is_printed = [&](const GiNaC::ex& e) {
+        if (!tree || e.info(GiNaC::info_flags::relation) || of->printed.info(GiNaC::info_flags::relation))
+            return false;
+        return GiNaC::normal(e - of->printed).is_zero() || GiNaC::normal(e + of->printed).is_zero();
+    };
     std::string out;
     for (const engine::finding::part& p : f.parts) {
         switch (p.what) {
         case engine::finding::part::kind::words: out += latex_prose(p.words); break;
         case engine::finding::part::kind::math:
+            if (is_printed(p.value)) {
+                out += "$" + latex_as_written(*tree, order) + "$";
+                break;
+            }
             out += "$" +
                    (GiNaC::is_a<GiNaC::relational>(p.value)
                         ? latex(p.value.lhs(), order, written) + " = " + latex(p.value.rhs(), order, written)
@@ -74,16 +88,20 @@ std::string comparison_verdict(const engine::paper_comparison& p)
 
 namespace detail {
 
-// The words of a comparison's findings, in LaTeX, joined by semicolons.
-std::string fragment_writer::findings(const engine::paper_comparison& p) const
+// The words of a comparison's findings, in LaTeX, joined by semicolons: `which` of them,
+// those about dimensions, the changes, or all.
+std::string fragment_writer::findings(const engine::paper_comparison& p, finding_kind which) const
 {
-    std::vector<std::string> said;
-    // Parts of the printed form a finding names are turned the way the paper writes them.
-    for (const engine::finding& f : p.findings)
-        said.push_back(finding_latex(f, order_, p.written.empty() ? nullptr : &p.written));
     std::string out;
-    for (const std::string& s : said)
-        out += (out.empty() ? "" : "; ") + s;
+    for (const engine::finding& f : p.findings) {
+        const bool dimensional = std::any_of(f.parts.begin(), f.parts.end(), [](const engine::finding::part& part) {
+            return part.what == engine::finding::part::kind::dimension;
+        });
+        if ((which == finding_kind::dimensions && !dimensional) || (which == finding_kind::changes && dimensional))
+            continue;
+        // Parts of the printed form a finding names are turned the way the paper writes them.
+        out += (out.empty() ? "" : "; ") + finding_latex(f, order_, p.written.empty() ? nullptr : &p.written, &p);
+    }
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include <cctype>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace impact::emit {
@@ -195,7 +196,13 @@ std::string si_unit_latex(const engine::dimension& d)
 std::string fragment_writer::quantities() const
 {
     std::string out = "\n\\paragraph{Quantities.}\n\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
+    std::set<std::string> listed;
     for (const engine::quantity& q : d_.symbols.all()) {
+        // A quantity under another name, for another printed line (tau again for Eq. 12's
+        // second line, Delta v written with J and with eps): one symbol to the reader,
+        // listed once.
+        if (!listed.insert(math(q.symbol)).second)
+            continue;
         if (q.definition) {
             out += fmt::format("\\item ${} = {}$", math(q.symbol), math(*q.definition, &q.written));
         } else {
@@ -261,6 +268,24 @@ std::string fragment_writer::steps() const
     return out + "\\end{enumerate}\n";
 }
 
+// Whether the step's equations are the givens `unknown = value` of each of its values, as
+// written: solving them restates them.
+bool fragment_writer::givens_state(const engine::step_result& s, const spec::step& source) const
+{
+    if (s.values.empty() || source.equations.size() != s.values.size())
+        return false;
+    for (const auto& [unknown, value] : s.values) {
+        bool stated = false;
+        for (const spec::text& name : source.equations)
+            for (const engine::equation& g : d_.givens)
+                if (g.name == name.value && g.relation.lhs().is_equal(unknown) && g.relation.rhs().is_equal(value))
+                    stated = true;
+        if (!stated)
+            return false;
+    }
+    return true;
+}
+
 std::string fragment_writer::solve_step(const engine::step_result& s, const spec::step* source,
                                         const std::string& because) const
 {
@@ -270,6 +295,11 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
             equations.push_back(ref(e.value));
     for (const auto& value : s.values)
         unknowns.push_back("$" + math(value.first) + "$");
+    // Givens that state their unknowns' values already (M = m, v_M = 0): nothing to solve,
+    // said in words rather than set out as a step to follow.
+    if (source && s.solutions.size() <= 1 && givens_state(s, *source))
+        return fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
+                           capitalised(listing(equations)), listing(unknowns), because);
     std::string out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations),
                                   listing(unknowns), because);
     for (std::size_t i = 0; i < s.values.size(); ++i)
@@ -474,6 +504,10 @@ std::string fragment_writer::results() const
         widest = std::max(widest, latex_width(math(r->symbol)));
     for (std::size_t i = 0; i < shown.size(); ++i) {
         const engine::result& r = *shown[i];
+        // The same quantity in another form right after it (Eq. 10's two lines): one chain,
+        // the symbol shown once.
+        const bool continued = i > 0 && r.cases.empty() && shown[i - 1]->cases.empty() &&
+                               math(shown[i - 1]->symbol) == math(r.symbol);
         std::string tag = "\\notag";
         // The paper's own numbering, as cited: several results of one printed line share it.
         if (!r.paper.empty())
@@ -482,7 +516,7 @@ std::string fragment_writer::results() const
             out += fmt::format("  {} &= {} {}", math(r.symbol), cases_math(r.cases, true), tag) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");
         else
-            out += rows(math(r.symbol), r.display, &r.written, tag, "=", widest) +
+            out += rows(continued ? "" : math(r.symbol), r.display, &r.written, tag, "=", widest) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }
     return out + "\\end{align}\n";
