@@ -302,10 +302,25 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
                            capitalised(listing(equations)), listing(unknowns), because);
     std::string out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations),
                                   listing(unknowns), because);
-    for (std::size_t i = 0; i < s.values.size(); ++i)
-        out += rows(math(s.values[i].first), s.values[i].second, nullptr, "") +
+    // Each value as a textbook shows it: the result's display form when the unknown is a
+    // result (Eq. 8's v'_M, collected in eps as the paper prints it), else factored or
+    // collected, and said which.
+    std::vector<std::string> hows;
+    for (std::size_t i = 0; i < s.values.size(); ++i) {
+        const auto& [unknown, value] = s.values[i];
+        const engine::result* r = GiNaC::is_a<GiNaC::symbol>(unknown)
+                                      ? d_.find_result(GiNaC::ex_to<GiNaC::symbol>(unknown).get_name())
+                                      : nullptr;
+        const bool displayed = r && r->cases.empty() && !r->written.empty() && r->symbol.is_equal(unknown);
+        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
+        out += rows(math(unknown), shown.value, displayed ? &r->written : nullptr, "") +
                (i + 1 < s.values.size() ? " \\\\\n" : "\n");
+        if (!shown.how.empty())
+            hows.push_back(fmt::format("${}$ {}", math(unknown), shown.how));
+    }
     out += "\\end{align*}\n";
+    if (!hows.empty())
+        out += "Shown: " + listing(hows) + ".\n";
     out += rejected_solutions(s);
     const bool all_proven = std::all_of(s.checks.begin(), s.checks.end(), [](const engine::check_result& c) {
         return c.outcome.what == engine::verdict::status::proven;
