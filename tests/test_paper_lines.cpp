@@ -16,8 +16,10 @@
 #include <boost/test/unit_test.hpp>
 
 #include "emit/errata.h"
+#include "emit/latex.h"
 #include "engine/derive.h"
 #include "engine/library.h"
+#include "spec/derivation.h"
 
 #include <fmt/format.h>
 
@@ -319,5 +321,48 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
     // A claim's row shows what was checked, not the value of one side.
     for (const std::string& row : errata_rows_at(errata, "Sec. III C, after Eq. 14, 2nd sentence"))
         BOOST_TEST(row.find("checked: ") != std::string::npos, row);
+}
+
+BOOST_AUTO_TEST_CASE(a_limit_no_method_settles_is_undecided_never_disagrees)
+{
+    // A fictional claim: lim_{x -> infinity} sin(x) = 0. No method (substitution, series,
+    // leading term) establishes a limit that does not exist; the claim is not refuted.
+    const spec::derivation source = spec::parse_derivation(R"toml(id = "oscillating"
+title = "An oscillation"
+
+[[symbol]]
+name = "x"
+dimension = "1"
+latex = "x"
+domain = "positive"
+
+[[symbol]]
+name = "y"
+dimension = "1"
+latex = "y"
+
+[[step]]
+define = "y"
+as = "sin(x)"
+
+[[result]]
+name = "y"
+
+[[claim]]
+name = "dies_away"
+paper = "Sec. X"
+quote = "The oscillation dies away."
+claim = "y = 0"
+limit = "x -> infinity"
+)toml", "oscillating.toml");
+    const engine::derivation d = engine::derive(source, {});
+    BOOST_TEST_REQUIRE(d.paper_checks.size() == 1u);
+    BOOST_TEST(emit::comparison_verdict(d.paper_checks[0]) == "undecided");
+    const std::string errata = emit::errata_markdown({&d});
+    const std::vector<std::string> rows = errata_rows_at(errata, "Sec. X");
+    BOOST_TEST_REQUIRE(rows.size() == 1u);
+    BOOST_TEST(rows[0].find("**undecided**") != std::string::npos, rows[0]);
+    BOOST_TEST(rows[0].find("disagrees") == std::string::npos, rows[0]);
+    BOOST_TEST(errata.find("0 agree, 0 disagree, 1 undecided") != std::string::npos);
 }
 

@@ -155,7 +155,9 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
             std::string change = p.what == engine::paper_comparison::kind::claim    ? "proven"
                                  : p.what == engine::paper_comparison::kind::given ? "proven equivalent"
                                                                                    : "proven equal";
-            if (!p.agrees()) {
+            if (comparison_verdict(p) == "undecided") {
+                change = "neither proven nor refuted: " + cell(p.agreement.method);
+            } else if (!p.agrees()) {
                 std::vector<std::string> said;
                 for (const engine::finding& f : p.findings)
                     said.push_back(cell(finding_latex(f, order, nullptr, &p)));

@@ -86,7 +86,7 @@ std::string finding_latex(const engine::finding& f, const term_order& order, con
                           const engine::paper_comparison* of = nullptr);
 
 /// "agrees", "disagrees", or "undecided" when the comparison could be neither proven nor
-/// refuted.
+/// refuted (only sampled, or a limit that no method established).
 std::string comparison_verdict(const engine::paper_comparison& p);
 
 /// The LaTeX fragment of one derivation, typeset as a derivation: its quantities, the

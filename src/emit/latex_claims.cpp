@@ -338,6 +338,10 @@ std::string fragment_writer::paper() const
         out += fmt::format(after_display ? (verdict == "disagrees" ? "It \\textbf{{{}}}" : "It is \\textbf{{{}}}")
                                          : " --- \\textbf{{{}}}",
                            verdict);
+        if (verdict == "undecided") {
+            out += ": neither proven nor refuted (" + latex_prose(p.agreement.method) + ").\n";
+            continue;
+        }
         if (p.what != engine::paper_comparison::kind::claim || p.agreement.what == engine::verdict::status::failed) {
             const auto [derived, written] = derived_form(p);
             // After a long quote the line has little room left: a derived form of any

@@ -83,6 +83,9 @@ std::string comparison_verdict(const engine::paper_comparison& p)
     case engine::verdict::status::sampled: return "undecided";
     case engine::verdict::status::failed: break;
     }
+    // A limit no method established is not refuted: the claim is undecided.
+    if (p.test && p.test->limit && !p.test->value)
+        return "undecided";
     return "disagrees";
 }
 
@@ -218,9 +221,10 @@ void fragment_writer::errata_rows(errata_table& table) const
                                            : p.what == engine::paper_comparison::kind::given
                                                ? "proven equivalent"
                                                : "proven equal")
-                                        : findings(p);
+                                        : verdict == "undecided" ? "neither proven nor refuted"
+                                                                 : findings(p);
         if (change.empty())
-            change = verdict == "undecided" ? "neither proven nor refuted" : unreconciled(p, change_pt);
+            change = unreconciled(p, change_pt);
         if (group.size() > 1)
             change += fmt::format("; one misprint, in each of the {} components", group.size());
 
