@@ -278,6 +278,8 @@ BOOST_AUTO_TEST_CASE(one_quantity_in_two_forms_is_named_once)
     BOOST_TEST(count("Defining $\\Delta v_\\Delta$") == 1u);
     BOOST_TEST(count("\\Delta v_\\Delta &=") == 2u);  // the step, and the first result
     BOOST_TEST(contains(tex, "   &= -(1 + \\epsilon) (v_{M,\\parallel} - v_{m,\\parallel}) \\tag*{Eq.~(10), second line}"));
+    // Its definition as the file writes it, the relative velocities in parentheses.
+    BOOST_TEST(contains(tex, "\\Delta v_\\Delta &= (v'_{M,\\parallel} - v'_{m,\\parallel}) - (v_{M,\\parallel} - v_{m,\\parallel})"));
 }
 
 BOOST_AUTO_TEST_CASE(givens_that_state_their_values_are_not_a_step_to_follow)

@@ -374,6 +374,18 @@ std::string fragment_writer::cases_math(const std::vector<engine::case_value>& c
     return fmt::format("\\begin{{cases}} {} \\end{{cases}}", fmt::join(rows, " \\\\ "));
 }
 
+// A definition as its file writes it, its parentheses kept ((v'_M - v'_m) - (v_M - v_m),
+// which GiNaC would flatten), when it fits a line; else broken as GiNaC reads it.
+std::string fragment_writer::as_defined(const std::string& lhs, const GiNaC::ex& value, const written_form& w) const
+{
+    if (const auto& tree = w.tree(); tree && tree->what != written_form::node::kind::relation) {
+        const std::string written = latex_as_written(*tree, order_);
+        if (latex_width(lhs) + latex_width(written) < content_width - 60)
+            return fmt::format("  {} &= {}", lhs, written);
+    }
+    return rows(lhs, value, &w, "");
+}
+
 std::string fragment_writer::define_step(const engine::step_result& s, const std::string& because) const
 {
     std::string out;
@@ -402,11 +414,11 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
         std::string how;
         if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
             math(*as_written, &w) != math(shown.value, shown_written)) {
-            out += rows(math(symbol), *as_written, &w, "") + " \\\\\n" +
+            out += as_defined(math(symbol), *as_written, w) + " \\\\\n" +
                    rows("", shown.value, shown_written, "", "=", latex_width(math(symbol))) + "\n";
             how = shown.how;
         } else if (as_written) {
-            out += rows(math(symbol), *as_written, &w, "") + "\n";
+            out += as_defined(math(symbol), *as_written, w) + "\n";
         } else {
             out += rows(math(symbol), shown.value, shown_written, "") + "\n";
             how = shown.how;

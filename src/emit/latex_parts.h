@@ -114,6 +114,7 @@ private:
     std::string givens() const;
     std::string step_checks(const engine::step_result& s) const;
     std::string steps() const;
+    std::string as_defined(const std::string& lhs, const GiNaC::ex& value, const written_form& w) const;
     bool givens_state(const engine::step_result& s, const spec::step& source) const;
     std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
     std::string rejected_solutions(const engine::step_result& s) const;
