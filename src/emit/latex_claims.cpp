@@ -363,7 +363,7 @@ std::string fragment_writer::paper() const
         if (!changes.empty())
             out += after_display && dimensions.empty() ? "Smallest change: " + changes : "; smallest change: " + changes;
         else if (p.what == engine::paper_comparison::kind::claim && p.test)
-            out += (after_display ? capitalised(unreconciled(p, 60)) : "; " + unreconciled(p, 60)) + ".\n";
+            out += (after_display ? capitalised(unreconciled(p, 250)) : "; " + unreconciled(p, 250)) + ".\n";
         if (change.empty() && p.what == engine::paper_comparison::kind::claim && p.test)
             continue;
         out += after_display && change.empty() ? "\n" : ".\n";

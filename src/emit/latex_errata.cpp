@@ -149,7 +149,8 @@ std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const en
     if (p.what == engine::paper_comparison::kind::result)
         if (const engine::result* r = d_.find_result(p.subject))
             return {r->display, &r->written};
-    return {p.derived, nullptr};
+    // Else as a textbook shows it: factored, or collected (a root's argument likewise).
+    return {textbook_form(p.derived, order_).value, nullptr};
 }
 
 // An expression or an equation as a display, broken over lines.
