@@ -101,10 +101,11 @@ std::string latex_fragment_name(const engine::derivation& d);
 /// The label of a derivation's fragment, for \ref (`impact:<id>`).
 std::string latex_label(const engine::derivation& d);
 
-/// The errata table of the report: a row per paper comparison of `derivations` (where,
-/// what, verdict, printed, derived, smallest change; one row for a misprint shared by
-/// consecutive components), and the forms too wide for a cell as numbered items
-/// (`\item[(T1)] ...`) of a list to set under the table.
+/// The errata table of the report: a row per finding of `derivations` (where, what,
+/// verdict, printed, derived or what a claim was checked as, finding; one row for a
+/// misprint shared by the components of one equation, `errata_rows`; a row per claim no
+/// derivation settles, undecided with why), and the forms too wide for a cell as numbered
+/// items (`\item[(T1)] ...`) of a list to set under the table.
 struct errata_table {
     std::string rows;
     std::string displays;

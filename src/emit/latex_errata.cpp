@@ -224,8 +224,10 @@ void fragment_writer::errata_rows(errata_table& table) const
                                                : "proven equal")
                                         : verdict == "undecided" ? "neither proven nor refuted"
                                                                  : findings(p);
+        // A claim shows what was checked beside it: that it does not hold is then enough.
+        const bool claim_checked = p.what == engine::paper_comparison::kind::claim && p.test;
         if (change.empty())
-            change = unreconciled(p, change_pt);
+            change = claim_checked ? "as checked, it does not hold" : unreconciled(p, change_pt);
         if (group.size() > 1)
             change += fmt::format("; one misprint, in each of the {} components", group.size());
 
