@@ -312,6 +312,14 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
     // Typed from the paper: the 5th sentence after Eq. 14 makes two claims (90 degrees for
     // v_par >> v_perp, 0 degrees for v_par << v_perp), each a row of its own.
     BOOST_TEST(errata_rows_at(errata, "Sec. III C, after Eq. 14, 5th sentence").size() == 2u);
+    // Claims about the angle in degrees (90 and 0 degrees) are answered in the angle, not
+    // its cosine.
+    for (const char* place : {"Sec. III C, after Eq. 14, 5th sentence", "Sec. III C, after Eq. 14, 2nd sentence"})
+        for (const std::string& row : errata_rows_at(errata, place)) {
+            BOOST_TEST(row.find("\\theta") != std::string::npos, row);
+            BOOST_TEST(row.find("\\frac{\\pi}{2}") != std::string::npos, row);
+            BOOST_TEST(row.find("\\cos") == std::string::npos, row);
+        }
     // Eq. 9 prints v'_m with the sign of eps M (v_M - v_m) turned, once in the collision
     // frame and so in both lab components: one misprint, one row that disagrees.
     std::size_t disagree = 0;
