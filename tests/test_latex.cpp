@@ -369,3 +369,18 @@ BOOST_AUTO_TEST_CASE(fragments_are_the_same_on_every_run)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(one_misprint_in_several_components_is_one_item_of_the_fragment)
+{
+    // Eq. 9 prints v'_m with the sign of eps M (v_M - v_m) turned: in its collision-frame
+    // component and so in both lab components. One item, the others named.
+    const std::string tex = emit::latex_fragment(derived("inelastic_plane"));
+    const std::string paper = tex.substr(tex.find("\\paragraph{The paper, held to account.}"));
+    std::size_t disagree = 0;
+    for (auto at = paper.find("disagrees"); at != std::string::npos; at = paper.find("disagrees", at + 1))
+        ++disagree;
+    BOOST_TEST(disagree == 1u);
+    BOOST_TEST(contains(paper, "The same misprint, with the same smallest change, is in $v'_{m,x}$ and $v'_{m,y}$."));
+    // No empty sentence left behind.
+    BOOST_TEST(!contains(emit::latex_fragment(derived("elastic_plane")), "\n.\n"));
+}

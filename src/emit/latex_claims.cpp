@@ -1,5 +1,6 @@
 // The checks of a derivation's LaTeX fragment, with how each was established, and the
 // paper's printed forms held to account, in the fragment and as rows of the errata table.
+#include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
 
@@ -311,7 +312,10 @@ std::string fragment_writer::paper() const
     if (d_.paper_checks.empty() && d_.source.open_claims.empty())
         return "";
     std::string out = "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
-    for (const engine::paper_comparison& p : d_.paper_checks) {
+    // One item per finding: a misprint that one finding explains in several components of
+    // one equation (Eq. 9's v'_m) is shown once, the other components named.
+    for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
+        const engine::paper_comparison& p = d_.paper_checks[row.front()];
         const std::string what = subject(p);
         out += fmt::format("\\item {}, {}: ", paper_text(p.paper), what);
         bool after_display = false;
@@ -357,16 +361,21 @@ std::string fragment_writer::paper() const
         // A dimensional inconsistency is said as such, then the change that mends it.
         const std::string dimensions = findings(p, finding_kind::dimensions);
         const std::string changes = findings(p, finding_kind::changes);
-        const std::string change = findings(p);
+        std::string tail;
         if (!dimensions.empty())
-            out += after_display ? capitalised(dimensions) : "; it is " + dimensions;
+            tail += after_display ? capitalised(dimensions) : "; it is " + dimensions;
         if (!changes.empty())
-            out += after_display && dimensions.empty() ? "Smallest change: " + changes : "; smallest change: " + changes;
+            tail += after_display && tail.empty() ? "Smallest change: " + changes : "; smallest change: " + changes;
         else if (p.what == engine::paper_comparison::kind::claim && p.test)
-            out += (after_display ? capitalised(unreconciled(p, 250)) : "; " + unreconciled(p, 250)) + ".\n";
-        if (change.empty() && p.what == engine::paper_comparison::kind::claim && p.test)
-            continue;
-        out += after_display && change.empty() ? "\n" : ".\n";
+            tail += after_display && tail.empty() ? capitalised(unreconciled(p, 250)) : "; " + unreconciled(p, 250);
+        if (row.size() > 1) {
+            std::vector<std::string> others;
+            for (std::size_t k = 1; k < row.size(); ++k)
+                others.push_back(subject(d_.paper_checks[row[k]]));
+            tail += (tail.empty() && after_display ? "" : ". ") +
+                    fmt::format("The same misprint, with the same smallest change, is in {}", listing(others));
+        }
+        out += tail + (tail.empty() && after_display ? "\n" : ".\n");
     }
     // Claims no derivation settles: the words, undecided, and why.
     for (const spec::open_claim& c : d_.source.open_claims)
