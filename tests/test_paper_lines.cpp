@@ -4,7 +4,13 @@
 // The list below is typed from *General Collisions of Smooth Spheres* (not from the
 // derivation files): each line of each displayed equation (multi-line equations line by
 // line), each equation the text states, each sentence that claims something of the
-// results, the figure captions and the footnotes, in the paper's order, with its place.
+// results (or of collisions and restitution, in the text's own words), the figure
+// captions and the footnotes, in the paper's order, with its place. Sentences that claim
+// nothing of collisions are not listed: the paper's plan (Sec. I A), its account of
+// others' work ("Eventually Čepič achieved ..."), announcements of what follows ("A more
+// intuitive result ... will be derived below", "The derivation is provided in Appendix A")
+// and judgements of effort ("The exact magnitude for inelastic collisions is considerably
+// more complex").
 // A line the derivation files compare must be named, by exactly that place, by the
 // `paper` field of some comparison (a printed form of a result or given, or a claim,
 // checked or, when no derivation can settle it, `undecided`). A line that cannot be
@@ -48,6 +54,7 @@ const std::vector<printed_line> paper = {
 
     // II A. Collisions along a Line
     {"Sec. II A, before Eq. 1a", "All collisions observe the law of conservation of total energy, but for elastic collisions the kinetic energy is also conserved.", nullptr},
+    {"Sec. II A, before Eq. 1a, 2nd sentence", "Inelastic collisions instead see some energy transform due to dissipative or frictive forces.", nullptr},
     {"Eq. 1a", "Mv_M + mv_m = Mv'_M + mv'_m (Momentum)", nullptr},
     {"Eq. 1b", "\\frac{1}{2}Mv_M^2 + \\frac{1}{2}mv_m^2 = \\frac{1}{2}Mv_M'^2 + \\frac{1}{2}mv_m'^2 (Energy)", nullptr},
     {"Sec. II A, before Eq. 2", "A standard result, see for example Morin's theorem 5.3 is the third conserved quantity for 1D collisions. Taking the quotient of the relative momenta and energy quantities indicates that the absolute relative velocity is conserved.", nullptr},
@@ -61,6 +68,7 @@ const std::vector<printed_line> paper = {
     {"Sec. II A, after Eq. 3, 1st sentence", "Rewriting Eq. 2 as v_m + v'_m = v_M + v'_M reveals the core argument of Čepič's method.", nullptr},
     {"Sec. II A, after Eq. 3, 2nd sentence", "For collisions along a line, the change in velocities due to collisions are equal but opposite for the colliding particles.", nullptr},
     {"Sec. II A, after Eq. 3, 3rd sentence", "This follows from the fact that the change in velocities must follow the line along which the impulses between the masses occur.", nullptr},
+    {"Sec. II A, after Eq. 3, 4th sentence", "Clear and immediate implications for higher dimension collisions are present.", nullptr},
     {"Fig. 1 caption", "A geometric depiction of the elastic collision of two spheres. Subfigure (a) ... Subfigure (c) shows the displacement as a function of the sine and cosine of the displacement between the spheres ...", nullptr},
 
     // II B. Collisions along a Plane
@@ -72,16 +80,22 @@ const std::vector<printed_line> paper = {
     {"Footnote 9", "Note that a rotation of axes is a passive transformation, and as such the presented rotation matrix is the transpose (and coincidentally) the inverse of the standard rotation matrix. See 7.", nullptr},
     {"Sec. II B, display of the change of frame", "(v_∥, v_⊥) = R (v_x, v_y) <=> (v_x, v_y) = R^T (v_∥, v_⊥)", nullptr},
     {"Sec. II B, before Eq. 4", "Furthermore, for elastic collisions of smooth spheres, only one of these 1D-axes sees change before and after contact with the other mass.", nullptr},
+    {"Sec. II B, before Eq. 4, 2nd and 3rd sentences", "As the spheres collide with point contact, the forces between them act along two perpendicular axes. As only collision forces are responsible for change in velocities, a problem with motion along a plane collapses to one of forces along two lines.", nullptr},
     {"Footnote 10", "The generalisation to collisions in three dimensions is a simple one.", nullptr},
     {"Eq. 4, line 1", "v_M^{(C)'} = (\\frac{(M-m)v_{M,∥} + 2mv_{m,∥}}{M+m}, v_{M,⊥}), v_m^{(C)'} = (\\frac{(m-M)v_{m,∥} + 2Mv_{M,∥}}{m+M}, v_{m,⊥})", nullptr},
     {"Eq. 4, line 2", "v_M^{(L)'} = R^T v_M^{(C)'}, v_m^{(L)'} = R^T v_m^{(C)'}", nullptr},
+    {"Sec. II B, after Eq. 4, 1st sentence", "Thus, the collision in planar motion collapses into the relatively simple linear motion case.", nullptr},
     {"Sec. II B, after Eq. 4", "This result extends to higher dimensions also, however, only for spherical objects colliding.", nullptr},
 
     // III. Inelastic Collisions without Friction
     {"Sec. III, 1st paragraph", "Realistic collisions are not as neatly summarised in a two-liner as Eq. 3. ... Collision restitution laws closely approximating experiment are by necessity empirical.", nullptr},
+    {"Sec. III, before Eq. 5", "The first, and most commonly used restitution law is one suggested by Newton himself, introduced as an experimental multiplicative correction to the conservation of relative velocity as Eq. 2", nullptr},
     {"Eq. 5", "\\epsilon = -\\frac{v'_M - v'_m}{v_M - v_m}", nullptr},
+    {"Sec. III, 2nd paragraph", "For Newton's ε, the key distinguishing factor is the materials of the colliding objects. Other relevant factors include ...", nullptr},
+    {"Sec. III, 3rd paragraph, 1st sentence", "Generally, a coefficient of restitution only describes collisions between two specific objects; it does not generalise.", nullptr},
     {"Sec. III, after Eq. 5", "Newton's coefficient of restitution is defined in the range of ε ∈ [0, 1], with 0 denoting a perfectly inelastic collision and 1 a perfectly elastic.", nullptr},
     {"Sec. III, 4th paragraph", "Newton's restitution law is relevant only for modelling frictional forces along the line of action. Therefore, Čepič's method remains relevant.", nullptr},
+    {"Sec. III, 4th paragraph, 3rd sentence", "Modelling dissipative forces along the perpendicular dimensions is considerably more difficult.", nullptr},
     {"Sec. III, before Sec. III A", "The standard result of right angle collisions given an elastic collision, also presented in Čepič's paper is shown to be a special case.", nullptr},
 
     // III A. Derivation of Final Velocities
@@ -89,6 +103,7 @@ const std::vector<printed_line> paper = {
     {"Eq. 6, line 1", "F = \\frac{dp}{dt} \\iff J = \\int_{t_1}^{t_2} F dt = p' - p", nullptr},
     {"Eq. 6, line 2", "p' = p - J", nullptr},
     {"Eq. 6, line 3", "v' = v - \\frac{1}{m} J", nullptr},
+    {"Sec. III A, before Eq. 7", "While the conservation of kinetic energy may no longer hold for inelastic collisions, the change of relative velocities is known to be mediated by an experimentally defined multiplicative correction: Newton's coefficient of restitution ε.", nullptr},
     {"Eq. 7", "(v_M - v_m) = -\\epsilon(v_M - v_m)", nullptr},
     {"Sec. III A, after Eq. 7", "What remains is a system of three equations in three unknowns, v'_M, v'_m and J. Note the alternating sign in the term for the impulses correction for masses M and m.", nullptr},
     {"Eq. 8, left, line 1", "v'_{M,∥} = v_{M,∥} - \\frac{1}{M} J", nullptr},
@@ -107,6 +122,7 @@ const std::vector<printed_line> paper = {
     {"Eq. 10, line 1", "\\Delta|v_\\Delta| = (v'_M - v'_m) - (v_M - v_m) = -(\\frac{1}{M} - \\frac{1}{m}) J", nullptr},
     {"Eq. 10, line 2", "= -(1+\\epsilon)(v_m - v_M)", nullptr},
     {"Fig. 2 caption", "Billiard ball collisions with various values for ε (l to r: 3/3, 2/3, 1/3). The left case shows a perfect elastic collision, whereas the other have increasing values for the coefficient of restitution. These plots come from the accompanying Mathematica notebook.", nullptr},
+    {"Sec. III B, before Eq. 11, 1st sentence", "The observation that elastic collisions are simply a specific case of inelastic collisions also becomes apparent when considering the change in kinetic energy before and after a collision.", nullptr},
     {"Sec. III B, before Eq. 11", "For elastic collisions, one needs only to invoke the law of conservation of energy to realise that this change is 0.", nullptr},
     {"Eq. 11", "\\Delta|E_K| = E'_{K,∥} - E_{K,∥} = -\\frac{1}{2}(1 - \\epsilon^2)m_{eff}^{-1}(v_m - v_M)^2", nullptr},
     {"Sec. III B, after Eq. 11, 1st sentence", "From the implication of Newton's 0 ≤ ε ≤ 1 implies that ΔE_K ≤ 0; energy is always lost in inelastic collisions.", nullptr},
@@ -127,6 +143,7 @@ const std::vector<printed_line> paper = {
     {"Footnote 11", "Note however that the contrapositive does not hold; collisions where objects do not stick together may still be inelastic, just with some perpendicular velocity remaining. The spheres then continue to move apart.", nullptr},
     {"Sec. III C, after Eq. 12, 5th sentence", "Substituting, Eq. 12 provides a definition of the resultant parallel velocities v'_{M,∥} and v'_{m,∥} solely in terms of the incident parallel velocity v_{m,∥}.", nullptr},
     {"Sec. III C, after Eq. 12, 6th sentence", "Furthermore, the incident velocity of the object ball is set to be 0, such that the eventual final velocities of both balls is a system of two equation in two unknowns.", nullptr},
+    {"Sec. III C, before Eq. 13, 1st sentence", "While the fully general case of scattering angles is rather daunting, using the above defined quantities, it can be derived for inelastic billiard collisions.", nullptr},
     {"Sec. III C, before Eq. 13", "Recall the definition of the dot product as the product of the magnitudes of two vectors and the cosine of the angle separating them. Rewritten, the angle between the incident velocities follows as", nullptr},
     {"Eq. 13", "v'_1 \\cdot v'_2 = |v'_1| |v'_2| \\cos θ_{v'_1, v'_2} \\iff θ_{v'_1, v'_2} = \\arccos \\frac{v'_1 \\cdot v'_2}{|v'_1| |v'_2|}", nullptr},
     {"Sec. III C, after Eq. 13, 1st sentence", "The dot-product of the velocities post-collision is simply the product of the parallel components, given the lack of a perpendicular velocity of the object ball.", nullptr},
@@ -165,8 +182,8 @@ const std::vector<printed_line> paper = {
 
 // Typed from the list above, counted by hand: the paper's printed lines and claims, and
 // those Impact compares.
-constexpr std::size_t printed_lines_and_claims = 100;
-constexpr std::size_t compared = 99;
+constexpr std::size_t printed_lines_and_claims = 111;
+constexpr std::size_t compared = 110;
 
 const engine::library& library()
 {
