@@ -249,13 +249,47 @@ BOOST_AUTO_TEST_CASE(printed_forms_are_shown_as_the_paper_prints_them)
 
 BOOST_AUTO_TEST_CASE(a_result_repeated_for_several_printed_lines_is_shown_once)
 {
-    // Eq. 12's second, third and fourth lines all give the paper's tau = 1/2 - eps/2.
+    // Eq. 12's second and fourth lines give the paper's tau = 1/2 - eps/2; the third line's
+    // form, without its spurious m, is (v - eps v)/(2 v): one chain, tau written once.
     const std::string tex = emit::latex_fragment(derived("billiard_transfer"));
-    BOOST_TEST(contains(tex, "\\tau &= \\frac{1}{2} - \\frac{1}{2} \\epsilon \\tag*{Eq.~(12), second, third and fourth lines}"));
+    BOOST_TEST(contains(tex, "\\tau &= \\frac{v_{1,\\parallel} - \\epsilon v_{1,\\parallel}}{2 v_{1,\\parallel}} "
+                             "\\tag*{Eq.~(12), third line}"));
+    BOOST_TEST(contains(tex, "   &= \\frac{1}{2} - \\frac{1}{2} \\epsilon \\tag*{Eq.~(12), second and fourth lines}"));
     const std::string results = tex.substr(tex.find("\\paragraph{Results.}"));
     BOOST_TEST(results.find("\\tau &=") == results.rfind("\\tau &="), "tau is shown more than once");
-    // No step that merely copies tau under another name.
+    // No step that merely copies tau under another name, and tau listed once as a quantity.
     BOOST_TEST(!contains(tex, "\\tau &= \\tau"));
+    const std::string quantities = tex.substr(0, tex.find("\\paragraph{Given.}"));
+    BOOST_TEST(quantities.find("\\item $\\tau") == quantities.rfind("\\item $\\tau"), "tau is listed more than once");
+}
+
+BOOST_AUTO_TEST_CASE(one_quantity_in_two_forms_is_named_once)
+{
+    // Eq. 10 gives the change of the relative velocity with J and with eps: one quantity,
+    // listed once, derived once, its two forms one chain of results.
+    const std::string tex = emit::latex_fragment(derived("relative_velocity_change"));
+    const auto count = [&tex](const std::string& s) {
+        std::size_t n = 0;
+        for (auto at = tex.find(s); at != std::string::npos; at = tex.find(s, at + 1))
+            ++n;
+        return n;
+    };
+    BOOST_TEST(count("\\item $\\Delta v_\\Delta") == 1u);
+    BOOST_TEST(count("Defining $\\Delta v_\\Delta$") == 1u);
+    BOOST_TEST(count("\\Delta v_\\Delta &=") == 2u);  // the step, and the first result
+    BOOST_TEST(contains(tex, "   &= -(1 + \\epsilon) (v_{M,\\parallel} - v_{m,\\parallel}) \\tag*{Eq.~(10), second line}"));
+    // Its definition as the file writes it, the relative velocities in parentheses.
+    BOOST_TEST(contains(tex, "\\Delta v_\\Delta &= (v'_{M,\\parallel} - v'_{m,\\parallel}) - (v_{M,\\parallel} - v_{m,\\parallel})"));
+}
+
+BOOST_AUTO_TEST_CASE(givens_that_state_their_values_are_not_a_step_to_follow)
+{
+    // Billiards: M = m, v_M = 0, v_m = v_1 are the givens themselves; solving them for M,
+    // v_M and v_m restates them, so the step says so in words.
+    const std::string tex = emit::latex_fragment(derived("billiard_transfer"));
+    BOOST_TEST(!contains(tex, "Solving \\eqref{impact:billiard_transfer:equal_masses}"));
+    BOOST_TEST(contains(tex, "give $M$, $v_{M,\\parallel}$ and $v_{m,\\parallel}$ directly"));
+    BOOST_TEST(!contains(tex, "  M &= m \\\\"));
 }
 
 BOOST_AUTO_TEST_CASE(a_step_shows_its_value_collected_not_expanded)
@@ -335,3 +369,18 @@ BOOST_AUTO_TEST_CASE(fragments_are_the_same_on_every_run)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(one_misprint_in_several_components_is_one_item_of_the_fragment)
+{
+    // Eq. 9 prints v'_m with the sign of eps M (v_M - v_m) turned: in its collision-frame
+    // component and so in both lab components. One item, the others named.
+    const std::string tex = emit::latex_fragment(derived("inelastic_plane"));
+    const std::string paper = tex.substr(tex.find("\\paragraph{The paper, held to account.}"));
+    std::size_t disagree = 0;
+    for (auto at = paper.find("disagrees"); at != std::string::npos; at = paper.find("disagrees", at + 1))
+        ++disagree;
+    BOOST_TEST(disagree == 1u);
+    BOOST_TEST(contains(paper, "The same misprint, with the same smallest change, is in $v'_{m,x}$ and $v'_{m,y}$."));
+    // No empty sentence left behind.
+    BOOST_TEST(!contains(emit::latex_fragment(derived("elastic_plane")), "\n.\n"));
+}

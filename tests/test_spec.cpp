@@ -198,3 +198,42 @@ BOOST_AUTO_TEST_CASE(a_kernel_output_must_read_name_equals_expression)
     BOOST_TEST(e.message().find("'name = expression'") != std::string::npos);
     BOOST_TEST(e.where().line == 34u);
 }
+
+BOOST_AUTO_TEST_CASE(an_undecided_claim_says_why_and_has_nothing_to_check)
+{
+    const std::string open = "\n[[claim]]\nname = \"empirical\"\npaper = \"Sec. III\"\n"
+                             "quote = \"Restitution laws are empirical.\"\n"
+                             "undecided = \"a statement about experiment\"\n"
+                             "[[not_compared]]\npaper = \"Footnote 1\"\nbecause = \"a reference\"\n";
+    const auto d = parse_derivation(minimal + open, "tiny.toml");
+    BOOST_TEST(d.claims.empty());
+    BOOST_TEST(d.open_claims.size() == 1u);
+    BOOST_TEST(d.open_claims.at(0).paper.value == "Sec. III");
+    BOOST_TEST(d.open_claims.at(0).undecided.value == "a statement about experiment");
+    BOOST_TEST(d.uncompared.size() == 1u);
+    BOOST_TEST(d.uncompared.at(0).because.value == "a reference");
+
+    // Both a claim to check and `undecided`: which is it?
+    impact::error e = error_for(minimal + "\n[[claim]]\nname = \"c\"\nclaim = \"y = 2*x\"\npaper = \"Eq. 1\"\n"
+                                          "quote = \"y = 2x\"\nundecided = \"why\"\n");
+    BOOST_TEST(e.message() == "claim 'c' is undecided: 'claim' does not apply (an undecided claim states why no "
+                              "derivation settles it, and nothing to check)");
+    BOOST_TEST(e.where().line == 38u);
+    // A special value with nothing to check at it.
+    e = error_for(minimal + "\n[[claim]]\nname = \"c\"\npaper = \"Eq. 1\"\nquote = \"y = 2x\"\n"
+                            "undecided = \"why\"\nat = { x = \"1\" }\n");
+    BOOST_TEST(e.message().find("'at' does not apply") != std::string::npos);
+    // An empty reason.
+    e = error_for(minimal + "\n[[claim]]\nname = \"c\"\npaper = \"Eq. 1\"\nquote = \"y = 2x\"\nundecided = \"  \"\n");
+    BOOST_TEST(e.message() == "claim 'c': 'undecided' must say why no derivation settles it");
+    // Its name is shared with the checks and claims, as theirs is.
+    e = error_for(minimal + "\n[[claim]]\nname = \"doubles\"\npaper = \"Eq. 1\"\nquote = \"y = 2x\"\n"
+                            "undecided = \"why\"\n");
+    BOOST_TEST(e.message().find("check or claim 'doubles' is declared twice") != std::string::npos);
+    // A line not compared says why.
+    e = error_for(minimal + "\n[[not_compared]]\npaper = \"Footnote 1\"\n");
+    BOOST_TEST(e.message().find("'because'") != std::string::npos);
+    e = error_for(minimal + "\n[[not_compared]]\npaper = \"Footnote 1\"\nbecause = \"\"\n");
+    BOOST_TEST(e.message() == "'Footnote 1' is not compared: 'because' must say why");
+}
+

@@ -9,15 +9,36 @@
 
 namespace impact::emit {
 
-/// The errata table in Markdown.
+/// The errata table in Markdown: a row per finding, that is per claim of the text and
+/// per printed form, the components of one equation that one misprint explains together
+/// in one row (`errata_rows`), and a row per claim no derivation settles (undecided).
 std::string errata_markdown(const std::vector<const engine::derivation*>& derivations);
 
+/// The rows of the errata for one derivation's comparisons (`paper_checks`), each the
+/// indices of the comparisons it shows: one comparison, or the consecutive components of
+/// one printed equation that disagree with the same finding (one misprint, Eq. 9's lab
+/// components). Claims are never grouped: each is a row of its own.
+std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d);
+
+/// The paper's lines and claims as the derivation files account for them.
+struct paper_count {
+    std::size_t lines = 0;      ///< places compared and places listed as not compared
+    std::size_t compared = 0;   ///< places compared (checked, or a claim no derivation settles)
+    std::size_t rows = 0;       ///< rows of the errata: findings
+    std::size_t agree = 0;
+    std::size_t disagree = 0;
+    std::size_t undecided = 0;  ///< sampled only, or a claim no derivation settles
+    std::vector<const spec::not_compared*> not_compared;
+};
+paper_count count_paper(const std::vector<const engine::derivation*>& derivations);
+
 /// How many printed lines and claims of the paper `derivations` compare: the distinct
-/// places (`paper`) their comparisons name. A place is one printed line of a displayed
+/// places (`paper`) their comparisons and their undecided claims name. A place is one printed line of a displayed
 /// equation ("Eq. 12, line 2"), an equation or a sentence of the text ("Sec. III C,
 /// after Eq. 14, 5th sentence"), a footnote; several comparisons may name one place (a
-/// vector's components, two claims of one sentence). How many the paper prints is not
-/// known here: tests/test_paper_lines.cpp lists them, typed from the paper.
+/// vector's components, two claims of one sentence). The lines no derivation compares are
+/// named by `[[not_compared]]`; tests/test_paper_lines.cpp lists them all, typed from the
+/// paper.
 std::size_t compared_places(const std::vector<const engine::derivation*>& derivations);
 
 } // namespace impact::emit

@@ -65,6 +65,12 @@ std::vector<std::string> latex_lines_as_written(const written_form::node& n, con
 /// A check's claim as LaTeX math: `\lim_{v_\perp \to \infty} \cos\theta = 0`, `\Delta E_K \leq 0`.
 std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written = nullptr);
 
+/// What a claim of the paper was checked as, in LaTeX prose: the claim as its file writes
+/// it, then its special values, narrowed domains and the inputs changed on its left side
+/// ("$\frac{1}{\cos^2\theta} = \frac{1}{\cos^2\theta}$, for $\epsilon \in [0, 1)$, the left side
+/// taken at $v_{1,\parallel} \to k v_{1,\parallel}$").
+std::string checked_claim_latex(const engine::check_result& c, const term_order& order);
+
 /// Plain text escaped for LaTeX.
 std::string latex_text(const std::string& text);
 
@@ -74,10 +80,13 @@ std::string latex_prose(const std::string& text);
 
 /// A finding of the engine (a smallest change, a dimensional inconsistency, the regime
 /// where a claim holds instead) as LaTeX prose with its mathematics typeset.
-std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written = nullptr);
+/// With `of`, the comparison it is about: an expression the finding names that is the
+/// printed form itself is set as the paper prints it.
+std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written = nullptr,
+                          const engine::paper_comparison* of = nullptr);
 
 /// "agrees", "disagrees", or "undecided" when the comparison could be neither proven nor
-/// refuted.
+/// refuted (only sampled, or a limit that no method established).
 std::string comparison_verdict(const engine::paper_comparison& p);
 
 /// The LaTeX fragment of one derivation, typeset as a derivation: its quantities, the
@@ -92,10 +101,11 @@ std::string latex_fragment_name(const engine::derivation& d);
 /// The label of a derivation's fragment, for \ref (`impact:<id>`).
 std::string latex_label(const engine::derivation& d);
 
-/// The errata table of the report: a row per paper comparison of `derivations` (where,
-/// what, verdict, printed, derived, smallest change; one row for a misprint shared by
-/// consecutive components), and the forms too wide for a cell as numbered items
-/// (`\item[(T1)] ...`) of a list to set under the table.
+/// The errata table of the report: a row per finding of `derivations` (where, what,
+/// verdict, printed, derived or what a claim was checked as, finding; one row for a
+/// misprint shared by the components of one equation, `errata_rows`; a row per claim no
+/// derivation settles, undecided with why), and the forms too wide for a cell as numbered
+/// items (`\item[(T1)] ...`) of a list to set under the table.
 struct errata_table {
     std::string rows;
     std::string displays;

@@ -1,5 +1,6 @@
 // The checks of a derivation's LaTeX fragment, with how each was established, and the
 // paper's printed forms held to account, in the fragment and as rows of the errata table.
+#include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
 
@@ -308,10 +309,13 @@ std::string fragment_writer::form(const GiNaC::ex& e, const written_form* w) con
 // Text after a displayed formula starts a new sentence.
 std::string fragment_writer::paper() const
 {
-    if (d_.paper_checks.empty())
+    if (d_.paper_checks.empty() && d_.source.open_claims.empty())
         return "";
     std::string out = "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
-    for (const engine::paper_comparison& p : d_.paper_checks) {
+    // One item per finding: a misprint that one finding explains in several components of
+    // one equation (Eq. 9's v'_m) is shown once, the other components named.
+    for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
+        const engine::paper_comparison& p = d_.paper_checks[row.front()];
         const std::string what = subject(p);
         out += fmt::format("\\item {}, {}: ", paper_text(p.paper), what);
         bool after_display = false;
@@ -324,12 +328,24 @@ std::string fragment_writer::paper() const
         }
         const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {
-            out += after_display ? "It agrees.\n" : " --- agrees.\n";
+            // A claim: what was proven, so that two claims of one sentence read apart.
+            std::string checked;
+            if (p.what == engine::paper_comparison::kind::claim && p.test) {
+                const std::string c = checked_claim_latex(*p.test, order_);
+                checked = latex_width(c) < 260 && c.find("\\frac{\\frac") == std::string::npos
+                              ? " (proven: " + c + ")"
+                              : "";
+            }
+            out += after_display ? "It agrees" + checked + ".\n" : " --- agrees" + checked + ".\n";
             continue;
         }
         out += fmt::format(after_display ? (verdict == "disagrees" ? "It \\textbf{{{}}}" : "It is \\textbf{{{}}}")
                                          : " --- \\textbf{{{}}}",
                            verdict);
+        if (verdict == "undecided") {
+            out += ": neither proven nor refuted (" + latex_prose(p.agreement.method) + ").\n";
+            continue;
+        }
         if (p.what != engine::paper_comparison::kind::claim || p.agreement.what == engine::verdict::status::failed) {
             const auto [derived, written] = derived_form(p);
             // After a long quote the line has little room left: a derived form of any
@@ -342,15 +358,29 @@ std::string fragment_writer::paper() const
         } else {
             after_display = false;
         }
-        const std::string change = findings(p);
-        if (!change.empty())
-            out += after_display ? "Smallest change: " + change : "; smallest change: " + change;
+        // A dimensional inconsistency is said as such, then the change that mends it.
+        const std::string dimensions = findings(p, finding_kind::dimensions);
+        const std::string changes = findings(p, finding_kind::changes);
+        std::string tail;
+        if (!dimensions.empty())
+            tail += after_display ? capitalised(dimensions) : "; it is " + dimensions;
+        if (!changes.empty())
+            tail += after_display && tail.empty() ? "Smallest change: " + changes : "; smallest change: " + changes;
         else if (p.what == engine::paper_comparison::kind::claim && p.test)
-            out += (after_display ? capitalised(unreconciled(p, 60)) : "; " + unreconciled(p, 60)) + ".\n";
-        if (change.empty() && p.what == engine::paper_comparison::kind::claim && p.test)
-            continue;
-        out += after_display && change.empty() ? "\n" : ".\n";
+            tail += after_display && tail.empty() ? capitalised(unreconciled(p, 250)) : "; " + unreconciled(p, 250);
+        if (row.size() > 1) {
+            std::vector<std::string> others;
+            for (std::size_t k = 1; k < row.size(); ++k)
+                others.push_back(subject(d_.paper_checks[row[k]]));
+            tail += (tail.empty() && after_display ? "" : ". ") +
+                    fmt::format("The same misprint, with the same smallest change, is in {}", listing(others));
+        }
+        out += tail + (tail.empty() && after_display ? "\n" : ".\n");
     }
+    // Claims no derivation settles: the words, undecided, and why.
+    for (const spec::open_claim& c : d_.source.open_claims)
+        out += fmt::format("\\item {}, claim: ``{}'' --- \\textbf{{undecided}}: {}.\n", paper_text(c.paper.value),
+                           latex_prose(c.quote.value), latex_prose(c.undecided.value));
     return out + "\\end{itemize}\n";
 }
 
@@ -364,6 +394,28 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
         lhs = fmt::format("\\lim_{{{} \\to {}}} {}", latex(c.limit->symbol, order), point, lhs);
     }
     return fmt::format("{} {} {}", lhs, latex_relation(c.op), latex(c.stated.rhs(), order, written));
+}
+
+std::string checked_claim_latex(const engine::check_result& c, const term_order& order)
+{
+    // As the file writes it, nothing merged ((-a_M n_x)(-J n_y) - ... = 0, not 0 = 0); a
+    // limit as GiNaC reads it.
+    const auto& tree = c.written.tree();
+    std::string out = "$" + (tree && !c.limit ? latex_as_written(*tree, order) : claim_math(c, order, &c.written)) + "$";
+    std::vector<std::string> conditions, at, assuming, left;
+    for (const auto& [symbol, value] : c.at)
+        at.push_back(fmt::format("${} = {}$", latex(symbol, order), latex(value, order)));
+    if (!at.empty())
+        conditions.push_back("at " + detail::listing(at));
+    for (const auto& [symbol, range] : c.assuming)
+        assuming.push_back(fmt::format("${} \\in {}$", latex(symbol, order), range));
+    if (!assuming.empty())
+        conditions.push_back("for " + detail::listing(assuming));
+    for (const auto& [symbol, value] : c.left_at)
+        left.push_back(fmt::format("${} \\to {}$", latex(symbol, order), latex(value, order)));
+    if (!left.empty())
+        conditions.push_back("the left side taken at " + detail::listing(left));
+    return conditions.empty() ? out : out + ", " + detail::listing(conditions);
 }
 
 } // namespace impact::emit

@@ -2,6 +2,7 @@
 // engine (words and the expressions and dimensions they name), and the rows of the
 // report's errata table, with the forms too wide for a cell set as numbered displays
 // under the table.
+#include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
 
@@ -39,13 +40,27 @@ std::string dimension_latex(const engine::dimension& d)
 
 } // namespace
 
-std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written)
+std::string finding_latex(const engine::finding& f, const term_order& order, const written_form* written,
+                          const engine::paper_comparison* of)
 {
+    // The printed form itself, named by a finding (a spurious m in the whole of Eq. 12's
+    // third line), as the paper prints it: its terms, factors and signs as transcribed.
+    const auto& tree = of && of->what != engine::paper_comparison::kind::claim ? of->written.tree()
+                                                                               : std::optional<written_form::node>();
+    auto is_printed = [&](const GiNaC::ex& e) {
+        if (!tree || e.info(GiNaC::info_flags::relation) || of->printed.info(GiNaC::info_flags::relation))
+            return false;
+        return GiNaC::normal(e - of->printed).is_zero() || GiNaC::normal(e + of->printed).is_zero();
+    };
     std::string out;
     for (const engine::finding::part& p : f.parts) {
         switch (p.what) {
         case engine::finding::part::kind::words: out += latex_prose(p.words); break;
         case engine::finding::part::kind::math:
+            if (is_printed(p.value)) {
+                out += "$" + latex_as_written(*tree, order) + "$";
+                break;
+            }
             out += "$" +
                    (GiNaC::is_a<GiNaC::relational>(p.value)
                         ? latex(p.value.lhs(), order, written) + " = " + latex(p.value.rhs(), order, written)
@@ -68,21 +83,28 @@ std::string comparison_verdict(const engine::paper_comparison& p)
     case engine::verdict::status::sampled: return "undecided";
     case engine::verdict::status::failed: break;
     }
+    // A limit no method established is not refuted: the claim is undecided.
+    if (p.test && p.test->limit && !p.test->value)
+        return "undecided";
     return "disagrees";
 }
 
 namespace detail {
 
-// The words of a comparison's findings, in LaTeX, joined by semicolons.
-std::string fragment_writer::findings(const engine::paper_comparison& p) const
+// The words of a comparison's findings, in LaTeX, joined by semicolons: `which` of them,
+// those about dimensions, the changes, or all.
+std::string fragment_writer::findings(const engine::paper_comparison& p, finding_kind which) const
 {
-    std::vector<std::string> said;
-    // Parts of the printed form a finding names are turned the way the paper writes them.
-    for (const engine::finding& f : p.findings)
-        said.push_back(finding_latex(f, order_, p.written.empty() ? nullptr : &p.written));
     std::string out;
-    for (const std::string& s : said)
-        out += (out.empty() ? "" : "; ") + s;
+    for (const engine::finding& f : p.findings) {
+        const bool dimensional = std::any_of(f.parts.begin(), f.parts.end(), [](const engine::finding::part& part) {
+            return part.what == engine::finding::part::kind::dimension;
+        });
+        if ((which == finding_kind::dimensions && !dimensional) || (which == finding_kind::changes && dimensional))
+            continue;
+        // Parts of the printed form a finding names are turned the way the paper writes them.
+        out += (out.empty() ? "" : "; ") + finding_latex(f, order_, p.written.empty() ? nullptr : &p.written, &p);
+    }
     return out;
 }
 
@@ -127,7 +149,8 @@ std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const en
     if (p.what == engine::paper_comparison::kind::result)
         if (const engine::result* r = d_.find_result(p.subject))
             return {r->display, &r->written};
-    return {p.derived, nullptr};
+    // Else as a textbook shows it: factored, or collected (a root's argument likewise).
+    return {textbook_form(p.derived, order_).value, nullptr};
 }
 
 // An expression or an equation as a display, broken over lines.
@@ -168,43 +191,20 @@ std::string fragment_writer::shown_as_printed(const engine::paper_comparison& p)
     return out + "\n\\end{align*}\n";
 }
 
-// The paper comparisons as rows of the report's errata table. A disagreement that the
-// same finding explains in several consecutive components (Eq. 9's lab-frame
-// components of one line) is one row; forms wider than their column are set under the
-// table as numbered displays (T1), (T2), ...
+// The paper comparisons as rows of the report's errata table, one per finding
+// (emit::errata_rows): a claim, a printed form, or the consecutive components of one
+// line that one misprint explains (Eq. 9's lab-frame components); then the claims no
+// derivation settles, undecided with the reason. Forms wider than their column are set
+// under the table as numbered displays (T1), (T2), ...
 void fragment_writer::errata_rows(errata_table& table) const
 {
     constexpr double printed_pt = 122, derived_pt = 99, change_pt = 78;
     const auto& all = d_.paper_checks;
-    std::vector<bool> done(all.size(), false);
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        if (done[i])
-            continue;
-        const engine::paper_comparison& p = all[i];
-        // The components that share this row's misprint: the same equation, the same finding.
-        std::vector<std::size_t> group = {i};
-        if (!p.agrees() && !p.reconciliations.empty())
-            for (std::size_t j = i + 1; j < all.size(); ++j)
-                if (!done[j] && !all[j].agrees() && all[j].paper == p.paper && all[j].what == p.what &&
-                    all[j].reconciliations == p.reconciliations) {
-                    group.push_back(j);
-                    done[j] = true;
-                }
-        // Claims of one sentence with one verdict (two claims of one quote): one row, the
-        // quote shown once.
-        std::vector<std::size_t> claims = {i};
-        if (p.what == engine::paper_comparison::kind::claim)
-            for (std::size_t j = i + 1; j < all.size(); ++j)
-                if (!done[j] && all[j].what == p.what && all[j].paper == p.paper &&
-                    all[j].printed_text == p.printed_text && all[j].agreement.what == p.agreement.what) {
-                    claims.push_back(j);
-                    done[j] = true;
-                }
+    for (const std::vector<std::size_t>& group : emit::errata_rows(d_)) {
+        const engine::paper_comparison& p = all[group.front()];
         std::vector<std::string> subjects;
         for (std::size_t k : group)
             subjects.push_back(subject(all[k]));
-        if (claims.size() > 1)
-            subjects = {fmt::format("{} claims", claims.size())};
         const std::string verdict = comparison_verdict(p);
 
         std::string printed, printed_math;
@@ -222,22 +222,12 @@ void fragment_writer::errata_rows(errata_table& table) const
                                            : p.what == engine::paper_comparison::kind::given
                                                ? "proven equivalent"
                                                : "proven equal")
-                                        : findings(p);
+                                        : verdict == "undecided" ? "neither proven nor refuted"
+                                                                 : findings(p);
+        // A claim shows what was checked beside it: that it does not hold is then enough.
+        const bool claim_checked = p.what == engine::paper_comparison::kind::claim && p.test;
         if (change.empty())
-            change = verdict == "undecided" ? "neither proven nor refuted" : unreconciled(p, change_pt);
-        if (claims.size() > 1 && !p.agrees()) {
-            std::vector<std::string> said = {change};
-            for (std::size_t k = 1; k < claims.size(); ++k) {
-                std::string more = findings(all[claims[k]]);
-                if (more.empty())
-                    more = unreconciled(all[claims[k]], change_pt);
-                if (std::find(said.begin(), said.end(), more) == said.end())
-                    said.push_back(more);
-            }
-            change.clear();
-            for (const std::string& one : said)
-                change += (change.empty() ? "" : "; ") + one;
-        }
+            change = claim_checked ? "as checked, it does not hold" : unreconciled(p, change_pt);
         if (group.size() > 1)
             change += fmt::format("; one misprint, in each of the {} components", group.size());
 
@@ -252,6 +242,13 @@ void fragment_writer::errata_rows(errata_table& table) const
                     to_display = true;
         std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;
         std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
+        // A claim: what was checked (at its special values, or its limit), when it fits.
+        if (p.what == engine::paper_comparison::kind::claim && p.test) {
+            const std::string checked = checked_claim_latex(*p.test, order_);
+            derived_cell = fits(checked, derived_pt) && cell_width(checked) <= 2.5 * derived_pt
+                               ? "checked: " + checked
+                               : fmt::format("checked in Sect.~\\ref{{{}}}", latex_label(d_));
+        }
         std::string change_cell = change;
         if (to_display) {
             const std::string mark = fmt::format("(T{})", ++table.displayed);
@@ -279,6 +276,10 @@ void fragment_writer::errata_rows(errata_table& table) const
                                   p.agrees() ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
                                   change_cell);
     }
+    for (const spec::open_claim& c : d_.source.open_claims)
+        table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & claim & \\textbf{{undecided}} & ``{}'' & & {} \\\\\n",
+                                  paper_text(c.paper.value), latex_label(d_), latex_prose(c.quote.value),
+                                  capitalised(latex_prose(c.undecided.value)));
 }
 
 } // namespace detail

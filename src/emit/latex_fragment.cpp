@@ -10,6 +10,7 @@
 #include <cctype>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace impact::emit {
@@ -195,7 +196,13 @@ std::string si_unit_latex(const engine::dimension& d)
 std::string fragment_writer::quantities() const
 {
     std::string out = "\n\\paragraph{Quantities.}\n\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
+    std::set<std::string> listed;
     for (const engine::quantity& q : d_.symbols.all()) {
+        // A quantity under another name, for another printed line (tau again for Eq. 12's
+        // second line, Delta v written with J and with eps): one symbol to the reader,
+        // listed once.
+        if (!listed.insert(math(q.symbol)).second)
+            continue;
         if (q.definition) {
             out += fmt::format("\\item ${} = {}$", math(q.symbol), math(*q.definition, &q.written));
         } else {
@@ -261,6 +268,24 @@ std::string fragment_writer::steps() const
     return out + "\\end{enumerate}\n";
 }
 
+// Whether the step's equations are the givens `unknown = value` of each of its values, as
+// written: solving them restates them.
+bool fragment_writer::givens_state(const engine::step_result& s, const spec::step& source) const
+{
+    if (s.values.empty() || source.equations.size() != s.values.size())
+        return false;
+    for (const auto& [unknown, value] : s.values) {
+        bool stated = false;
+        for (const spec::text& name : source.equations)
+            for (const engine::equation& g : d_.givens)
+                if (g.name == name.value && g.relation.lhs().is_equal(unknown) && g.relation.rhs().is_equal(value))
+                    stated = true;
+        if (!stated)
+            return false;
+    }
+    return true;
+}
+
 std::string fragment_writer::solve_step(const engine::step_result& s, const spec::step* source,
                                         const std::string& because) const
 {
@@ -270,12 +295,32 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
             equations.push_back(ref(e.value));
     for (const auto& value : s.values)
         unknowns.push_back("$" + math(value.first) + "$");
+    // Givens that state their unknowns' values already (M = m, v_M = 0): nothing to solve,
+    // said in words rather than set out as a step to follow.
+    if (source && s.solutions.size() <= 1 && givens_state(s, *source))
+        return fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
+                           capitalised(listing(equations)), listing(unknowns), because);
     std::string out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations),
                                   listing(unknowns), because);
-    for (std::size_t i = 0; i < s.values.size(); ++i)
-        out += rows(math(s.values[i].first), s.values[i].second, nullptr, "") +
+    // Each value as a textbook shows it: the result's display form when the unknown is a
+    // result (Eq. 8's v'_M, collected in eps as the paper prints it), else factored or
+    // collected, and said which.
+    std::vector<std::string> hows;
+    for (std::size_t i = 0; i < s.values.size(); ++i) {
+        const auto& [unknown, value] = s.values[i];
+        const engine::result* r = GiNaC::is_a<GiNaC::symbol>(unknown)
+                                      ? d_.find_result(GiNaC::ex_to<GiNaC::symbol>(unknown).get_name())
+                                      : nullptr;
+        const bool displayed = r && r->cases.empty() && !r->written.empty() && r->symbol.is_equal(unknown);
+        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
+        out += rows(math(unknown), shown.value, displayed ? &r->written : nullptr, "") +
                (i + 1 < s.values.size() ? " \\\\\n" : "\n");
+        if (!shown.how.empty())
+            hows.push_back(fmt::format("${}$ {}", math(unknown), shown.how));
+    }
     out += "\\end{align*}\n";
+    if (!hows.empty())
+        out += "Shown: " + listing(hows) + ".\n";
     out += rejected_solutions(s);
     const bool all_proven = std::all_of(s.checks.begin(), s.checks.end(), [](const engine::check_result& c) {
         return c.outcome.what == engine::verdict::status::proven;
@@ -329,6 +374,18 @@ std::string fragment_writer::cases_math(const std::vector<engine::case_value>& c
     return fmt::format("\\begin{{cases}} {} \\end{{cases}}", fmt::join(rows, " \\\\ "));
 }
 
+// A definition as its file writes it, its parentheses kept ((v'_M - v'_m) - (v_M - v_m),
+// which GiNaC would flatten), when it fits a line; else broken as GiNaC reads it.
+std::string fragment_writer::as_defined(const std::string& lhs, const GiNaC::ex& value, const written_form& w) const
+{
+    if (const auto& tree = w.tree(); tree && tree->what != written_form::node::kind::relation) {
+        const std::string written = latex_as_written(*tree, order_);
+        if (latex_width(lhs) + latex_width(written) < content_width - 60)
+            return fmt::format("  {} &= {}", lhs, written);
+    }
+    return rows(lhs, value, &w, "");
+}
+
 std::string fragment_writer::define_step(const engine::step_result& s, const std::string& because) const
 {
     std::string out;
@@ -357,11 +414,11 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
         std::string how;
         if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
             math(*as_written, &w) != math(shown.value, shown_written)) {
-            out += rows(math(symbol), *as_written, &w, "") + " \\\\\n" +
+            out += as_defined(math(symbol), *as_written, w) + " \\\\\n" +
                    rows("", shown.value, shown_written, "", "=", latex_width(math(symbol))) + "\n";
             how = shown.how;
         } else if (as_written) {
-            out += rows(math(symbol), *as_written, &w, "") + "\n";
+            out += as_defined(math(symbol), *as_written, w) + "\n";
         } else {
             out += rows(math(symbol), shown.value, shown_written, "") + "\n";
             how = shown.how;
@@ -474,6 +531,10 @@ std::string fragment_writer::results() const
         widest = std::max(widest, latex_width(math(r->symbol)));
     for (std::size_t i = 0; i < shown.size(); ++i) {
         const engine::result& r = *shown[i];
+        // The same quantity in another form right after it (Eq. 10's two lines): one chain,
+        // the symbol shown once.
+        const bool continued = i > 0 && r.cases.empty() && shown[i - 1]->cases.empty() &&
+                               math(shown[i - 1]->symbol) == math(r.symbol);
         std::string tag = "\\notag";
         // The paper's own numbering, as cited: several results of one printed line share it.
         if (!r.paper.empty())
@@ -482,7 +543,7 @@ std::string fragment_writer::results() const
             out += fmt::format("  {} &= {} {}", math(r.symbol), cases_math(r.cases, true), tag) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");
         else
-            out += rows(math(r.symbol), r.display, &r.written, tag, "=", widest) +
+            out += rows(continued ? "" : math(r.symbol), r.display, &r.written, tag, "=", widest) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }
     return out + "\\end{align}\n";

@@ -114,6 +114,8 @@ private:
     std::string givens() const;
     std::string step_checks(const engine::step_result& s) const;
     std::string steps() const;
+    std::string as_defined(const std::string& lhs, const GiNaC::ex& value, const written_form& w) const;
+    bool givens_state(const engine::step_result& s, const spec::step& source) const;
     std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
     std::string rejected_solutions(const engine::step_result& s) const;
     std::string cases_text(const engine::check_result& c) const;
@@ -143,7 +145,8 @@ private:
     std::string paper() const;
 
     // latex_errata.cpp: the paper held to account, in the errata table.
-    std::string findings(const engine::paper_comparison& p) const;
+    enum class finding_kind { all, dimensions, changes };
+    std::string findings(const engine::paper_comparison& p, finding_kind which = finding_kind::all) const;
     std::string subject(const engine::paper_comparison& p) const;
     std::string shown(const GiNaC::ex& e, const written_form* w) const;
     std::string as_printed(const engine::paper_comparison& p) const;

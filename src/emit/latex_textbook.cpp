@@ -56,18 +56,22 @@ textbook_value textbook_form(const GiNaC::ex& e, const term_order& order)
         return {GiNaC::pow(inner.value, e.op(1)), "with the argument of the root " + inner.how};
     }
     // Square roots inside (|v'_1| over a sum, a quotient): each argument rewritten alone.
-    if (!GiNaC::is_a<GiNaC::power>(e) && e.has(GiNaC::pow(GiNaC::wild(0), GiNaC::numeric(1, 2)))) {
+    // (A root under a fraction bar is a power -1/2: cos(theta) inside arccos.)
+    if (!GiNaC::is_a<GiNaC::power>(e) && (e.has(GiNaC::pow(GiNaC::wild(0), GiNaC::numeric(1, 2))) ||
+                                          e.has(GiNaC::pow(GiNaC::wild(0), GiNaC::numeric(-1, 2))))) {
         struct roots : GiNaC::map_function {
             const term_order& order;
             std::string how;
             explicit roots(const term_order& o) : order(o) {}
             GiNaC::ex operator()(const GiNaC::ex& x) override
             {
-                if (GiNaC::is_a<GiNaC::power>(x) && x.op(1).is_equal(GiNaC::numeric(1, 2))) {
-                    textbook_value inner = textbook_form(x, order);
-                    if (!inner.how.empty())
-                        how = inner.how;
-                    return inner.value;
+                if (GiNaC::is_a<GiNaC::power>(x) &&
+                    (x.op(1).is_equal(GiNaC::numeric(1, 2)) || x.op(1).is_equal(GiNaC::numeric(-1, 2)))) {
+                    const textbook_value inner = textbook_form(x.op(0), order);
+                    if (inner.how.empty())
+                        return x;
+                    how = "with the argument of the root " + inner.how;
+                    return GiNaC::pow(inner.value, x.op(1));
                 }
                 return x.map(*this);
             }

@@ -114,6 +114,24 @@ struct claim {
     check test;                    ///< what the words claim, as a check (name, claim, at, limit, assuming)
 };
 
+/// Something the paper's text claims that no derivation can settle: a statement about
+/// experiment, or an assumption the model makes about real bodies. `[[claim]]` with
+/// `undecided` (why) in place of `claim`; it is compared, and reported undecided with
+/// its reason, never as agreeing or disagreeing.
+struct open_claim {
+    text name;
+    text paper;                    ///< where the paper says it
+    text quote;                    ///< the paper's words
+    text undecided;                ///< why no derivation settles it
+};
+
+/// A printed line of the paper that nothing compares (the references), with why:
+/// `[[not_compared]]`. The errata counts it among the paper's lines.
+struct not_compared {
+    text paper;                    ///< its place, e.g. `Footnotes 1 to 8, 12 and 13`
+    text because;
+};
+
 /// A C++ kernel to emit: a function of `inputs` returning `outputs`.
 /// A kernel's input or output: a scalar (`M`, or `v_par = v_1par` under another name)
 /// or an array of components (`C_M = [C_Mx, C_My]`).
@@ -185,6 +203,8 @@ struct derivation {
     std::vector<result> results;
     std::vector<check> checks;
     std::vector<claim> claims;
+    std::vector<open_claim> open_claims;  ///< claims read with `undecided`, in the file's order
+    std::vector<not_compared> uncompared;   ///< `[[not_compared]]`: lines of the paper nothing compares
     std::vector<kernel> kernels;
 };
 

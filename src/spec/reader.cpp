@@ -305,6 +305,38 @@ claim read_claim(table_reader& in)
     return c;
 }
 
+// A claim no derivation settles: its words, its place and why, and nothing to check.
+open_claim read_open_claim(table_reader& in)
+{
+    open_claim c;
+    c.name = in.required_string("name");
+    c.undecided = in.required_string("undecided");
+    for (const char* other : {"claim", "at", "left_at", "limit", "assuming", "because"})
+        if (in.has(other))
+            throw error(in.where_of(other),
+                        fmt::format("claim '{}' is undecided: '{}' does not apply (an undecided claim states why "
+                                    "no derivation settles it, and nothing to check)",
+                                    c.name.value, other));
+    if (trimmed(c.undecided.value).empty())
+        throw error(c.undecided.where, fmt::format("claim '{}': 'undecided' must say why no derivation settles it",
+                                                   c.name.value));
+    c.paper = in.required_string("paper");
+    c.quote = in.required_string("quote");
+    in.finish();
+    return c;
+}
+
+not_compared read_not_compared(table_reader& in)
+{
+    not_compared n;
+    n.paper = in.required_string("paper");
+    n.because = in.required_string("because");
+    in.finish();
+    if (trimmed(n.because.value).empty())
+        throw error(n.because.where, fmt::format("'{}' is not compared: 'because' must say why", n.paper.value));
+    return n;
+}
+
 kernel read_kernel(table_reader& in)
 {
     kernel k;
@@ -378,6 +410,8 @@ void check_names(const derivation& d)
         checks.push_back(&c.name);
     for (const claim& c : d.claims)
         checks.push_back(&c.test.name);
+    for (const open_claim& c : d.open_claims)
+        checks.push_back(&c.name);
     for (const kernel& k : d.kernels)
         kernels.push_back(&k.name);
     refuse_twice(results, "result");
@@ -430,7 +464,15 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     d.steps = read_all<step>(top, file, "step", read_step);
     d.results = read_all<result>(top, file, "result", read_result);
     d.checks = read_all<check>(top, file, "check", read_check);
-    d.claims = read_all<claim>(top, file, "claim", read_claim);
+    // A claim with `undecided` has nothing to check: it is kept apart from those checked.
+    for (const toml::table* table : top.table_array("claim")) {
+        table_reader in(*table, file, "[[claim]]");
+        if (in.has("undecided"))
+            d.open_claims.push_back(read_open_claim(in));
+        else
+            d.claims.push_back(read_claim(in));
+    }
+    d.uncompared = read_all<not_compared>(top, file, "not_compared", read_not_compared);
     d.kernels = read_all<kernel>(top, file, "kernel", read_kernel);
     top.finish();
     check_names(d);
