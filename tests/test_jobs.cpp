@@ -298,4 +298,20 @@ BOOST_AUTO_TEST_CASE(a_warm_impact_kernels_takes_every_choice_from_the_cache)
     BOOST_TEST((hashes(s.root / "default") == headers));
 }
 
+BOOST_AUTO_TEST_CASE(a_number_of_jobs_below_one_is_refused_in_one_line)
+{
+    const scratch s;
+    s.copy("eq08_inelastic_line.toml");
+    const auto before = impact::testing::everything_under(s.root / "output");
+    for (const char* command : {"regenerate --output output --jobs 0", "kernels --output output --jobs 0",
+                                "regenerate --output output --jobs -2", "regenerate --output output --jobs two"}) {
+        const run_result r = s.impact(command);
+        BOOST_TEST(r.status == 2, command << ": " << r.output);
+        BOOST_TEST(lines_of(r.output).size() == 1u, r.output);
+        BOOST_TEST(r.output.rfind("impact: error: --jobs", 0) == 0u, r.output);
+    }
+    BOOST_TEST((impact::testing::everything_under(s.root / "output") == before));
+    BOOST_TEST(!fs::exists(s.root / "xdg"));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -234,7 +234,7 @@ int main(int argc, char** argv)
         command->add_option("-j,--jobs", o.jobs,
                             "kernels whose forms are chosen at once, each in a worker process (default: the "
                             "hardware's threads; 1: one after another, in Impact's own process)")
-            ->check(CLI::PositiveNumber);
+            ->check(CLI::Range(1u, 4096u));
     };
 
     CLI::App* regenerate = app.add_subcommand("regenerate", "derive everything and rewrite the output folder");
