@@ -2,8 +2,9 @@
 // collected in the tasks' order whichever worker finishes first, a task's error thrown
 // at its place (the first in the tasks' order), a worker that dies named as such; end to
 // end, a regeneration with two jobs writes the bytes of one with one, and a failure under
-// two jobs is reported as under one with the output folder left as it was; `impact
-// kernels` takes its choices from the cache.
+// two jobs (a derivation, a kernel in its worker, a worker killed) is reported as under one
+// with the output folder left as it was; `impact kernels` takes its choices from the
+// cache; a number of jobs below one is refused.
 #define BOOST_TEST_MODULE test_jobs
 #include <boost/test/unit_test.hpp>
 
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -73,6 +75,11 @@ std::map<std::string, std::string> hashes(const fs::path& root)
 verify::text_task task(const std::string& what, std::function<std::string()> run)
 {
     return {what, {"derivations/d.toml", 7, 3}, std::move(run)};
+}
+
+bool said(const std::string& text, const std::string& pattern)
+{
+    return std::regex_search(text, std::regex(pattern));
 }
 
 std::string what_is_thrown(const std::vector<verify::text_task>& tasks, unsigned jobs)
@@ -271,6 +278,30 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_fails_in_its_worker_is_reported_as_without_wo
         BOOST_TEST((impact::testing::everything_under(s.root / "output") == before), "--jobs " << jobs);
         BOOST_TEST(!fs::exists(s.root / "output.impact-new"));
     }
+}
+
+BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_kernel_and_the_output_kept)
+{
+    const scratch s;
+    for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "derivations"))
+        s.copy(entry.path().filename().string());
+    const auto before = impact::testing::everything_under(s.root / "output");
+    // The first worker seen among Impact's children (pdflatex runs under a shell) is killed.
+    const run_result r = impact::testing::run_command(
+        "cd '" + s.root.string() + "' && { XDG_CACHE_HOME=xdg " + IMPACT_BINARY +
+        " regenerate --no-cache --jobs 2 --derivations derivations --output output > log 2>&1 & p=$!; "
+        "for i in $(seq 1 3000); do for c in $(cat /proc/$p/task/*/children 2>/dev/null); do "
+        "if [ \"$(cat /proc/$c/comm 2>/dev/null)\" = impact ]; then kill -KILL $c; echo killed; break 2; fi; done; "
+        "sleep 0.01; done; wait $p; echo \"status $?\"; cat log; }");
+    BOOST_TEST_REQUIRE(r.output.find("killed\n") == 0u, r.output);
+    BOOST_TEST(r.output.find("status 2\n") != std::string::npos, r.output);
+    const std::vector<std::string> lines = lines_of(r.output);
+    BOOST_TEST_REQUIRE(lines.size() == 3u, r.output);
+    BOOST_TEST(said(lines[2], "^derivations/[a-z0-9_]+\\.toml:[0-9]+:[0-9]+: error: kernel '[a-z_]+': the worker "
+                              "process choosing its forms was killed by signal 9 "),
+               lines[2]);
+    BOOST_TEST((impact::testing::everything_under(s.root / "output") == before));
+    BOOST_TEST(!fs::exists(s.root / "output.impact-new"));
 }
 
 BOOST_AUTO_TEST_CASE(a_warm_impact_kernels_takes_every_choice_from_the_cache)
