@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -127,6 +128,25 @@ BOOST_AUTO_TEST_CASE(workers_give_their_texts_in_the_tasks_order_whichever_finis
         bytes[i] = static_cast<char>(i * 7 % 256);
     const auto whole = pipeline::run_in_workers({task("big", [&] { return bytes; }), task("small", [] { return ""; })}, 2);
     BOOST_TEST((whole == std::vector<std::string>{bytes, ""}));
+}
+
+BOOST_AUTO_TEST_CASE(the_costliest_task_is_started_first_and_its_text_kept_in_its_place)
+{
+    // Each says when it started (a clock all processes share); two run at once, so the
+    // third task to start waits for one of the first two to end.
+    const auto started = [] {
+        ::timespec now{};
+        ::clock_gettime(CLOCK_MONOTONIC, &now);
+        ::usleep(200000);
+        return std::to_string(now.tv_sec * 1000000000LL + now.tv_nsec);
+    };
+    std::vector<verify::text_task> tasks = {task("cheap", started), task("cheap too", started),
+                                            task("costly", started)};
+    tasks[2].cost = 9;
+    const std::vector<std::string> texts = pipeline::run_in_workers(tasks, 2);
+    BOOST_TEST_REQUIRE(texts.size() == 3u);
+    // The costly one, last in the tasks' order, started before the second.
+    BOOST_TEST(std::stoll(texts[2]) < std::stoll(texts[1]));
 }
 
 BOOST_AUTO_TEST_CASE(one_job_runs_the_tasks_in_this_process_one_after_another)

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
@@ -124,6 +125,7 @@ struct worker {
     pid_t pid;
     int fd;
     std::string bytes;
+    bool stopped = false;   ///< killed: its task comes after one that failed
 };
 
 // The workers running; those left when the parent stops early (an error, an exception)
@@ -161,7 +163,7 @@ std::optional<worker> start(const verify::text_task& task, std::size_t index)
         be_worker(task, fds[1]);
     }
     ::close(fds[1]);
-    return worker{index, pid, fds[0], {}};
+    return worker{index, pid, fds[0], {}, false};
 }
 
 } // namespace
@@ -184,20 +186,31 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
         return texts;
     }
     std::vector<outcome> outcomes(tasks.size());
+    // The costliest first, so that the last to finish is a short one; ties in the tasks' order.
+    std::vector<std::size_t> queue(tasks.size());
+    for (std::size_t i = 0; i < queue.size(); ++i)
+        queue[i] = i;
+    std::stable_sort(queue.begin(), queue.end(),
+                     [&](std::size_t a, std::size_t b) { return tasks[a].cost > tasks[b].cost; });
     std::size_t next = 0;
     std::size_t first_failure = tasks.size();
     crew workers;
     while (true) {
-        while (workers.running.size() < jobs && next < std::min(first_failure, tasks.size())) {
-            if (auto w = start(tasks[next], next)) {
+        while (workers.running.size() < jobs && next < queue.size()) {
+            const std::size_t i = queue[next];
+            if (i > first_failure) {
+                ++next;   // after a failure: it cannot change what is reported
+                continue;
+            }
+            if (auto w = start(tasks[i], i)) {
                 workers.running.push_back(std::move(*w));
             } else if (workers.running.empty()) {
                 // No process to be had: this task here, as with --jobs 1.
                 try {
-                    outcomes[next].text = tasks[next].run();
+                    outcomes[i].text = tasks[i].run();
                 } catch (...) {
-                    outcomes[next].failed = std::current_exception();
-                    first_failure = std::min(first_failure, next);
+                    outcomes[i].failed = std::current_exception();
+                    first_failure = std::min(first_failure, i);
                 }
                 if (finished)
                     finished();
@@ -241,12 +254,19 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
                 finished();
         }
         // Those after the first failure cannot change what is reported: stopped (by the
-        // crew, which kills and waits for them) once no task before it is running.
+        // crew, which kills and waits for them) once no task before it is left.
         if (first_failure < tasks.size()) {
-            bool earlier_running = false;
+            for (worker& w : workers.running)
+                if (w.task > first_failure && !w.stopped) {
+                    ::kill(w.pid, SIGKILL);
+                    w.stopped = true;
+                }
+            bool earlier_left = false;
             for (const worker& w : workers.running)
-                earlier_running = earlier_running || w.task < first_failure;
-            if (!earlier_running)
+                earlier_left = earlier_left || w.task < first_failure;
+            for (std::size_t q = next; q < queue.size(); ++q)
+                earlier_left = earlier_left || queue[q] < first_failure;
+            if (!earlier_left)
                 break;
         }
     }

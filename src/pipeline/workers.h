@@ -30,7 +30,8 @@ unsigned default_jobs();
 /// (a signal, an exit without its whole result) is an `impact::error` at the task's
 /// place naming how it died. When several fail, the first in the tasks' order is thrown,
 /// as a run of one task after another would have; workers still running after it are
-/// stopped. With `jobs` 1 or a single task, the tasks run here, one after another.
+/// stopped. With `jobs` 1 or a single task, the tasks run here, one after another;
+/// otherwise the costliest (`text_task::cost`) are started first.
 std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& tasks, unsigned jobs,
                                         const std::function<void()>& finished = {});
 

@@ -85,6 +85,7 @@ struct text_task {
     std::string what;              ///< e.g. "kernel 'collide_line'", for a worker that dies
     source_location where;         ///< where that is in a derivation file
     std::function<std::string()> run;
+    std::size_t cost = 0;          ///< a guess at its work: the costliest are started first
 };
 
 /// Runs every task (perhaps several at once, in worker processes) and gives their texts
