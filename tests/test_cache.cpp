@@ -2,7 +2,8 @@
 // entries checked before use (a damaged or truncated one is computed again), the folder
 // refused when it holds what is not Impact's, eviction of the oldest entries only; and end
 // to end, a warm regeneration, one from damaged entries and two at once sharing a cache
-// write the bytes a regeneration without a cache writes.
+// write the bytes a regeneration without a cache writes; its size given by --cache-size or
+// IMPACT_CACHE_SIZE, and a size that is none refused.
 #define BOOST_TEST_MODULE test_cache
 #include <boost/test/unit_test.hpp>
 
@@ -235,6 +236,21 @@ BOOST_AUTO_TEST_CASE(trimming_removes_the_entries_used_longest_ago_and_nothing_e
     BOOST_TEST(!fs::exists(store.entry_path("PDF", "newest")));
 }
 
+BOOST_AUTO_TEST_CASE(a_cache_size_is_bytes_or_a_number_with_a_binary_unit)
+{
+    BOOST_TEST(cache::parse_size("1048576").value() == 1048576u);
+    BOOST_TEST(cache::parse_size("512M").value() == 512ull * 1024 * 1024);
+    BOOST_TEST(cache::parse_size("2G").value() == 2ull * 1024 * 1024 * 1024);
+    BOOST_TEST(cache::parse_size("2g").value() == 2ull * 1024 * 1024 * 1024);
+    BOOST_TEST(cache::parse_size("100KiB").value() == 102400u);
+    BOOST_TEST(cache::parse_size("3MB").value() == 3ull * 1024 * 1024);
+    BOOST_TEST(cache::parse_size("1T").value() == 1ull << 40);
+    BOOST_TEST(cache::parse_size("0").value() == 0u);
+    for (const char* bad : {"", "M", "-1", "1.5G", "12Q", "2 G", " 2G", "2GG", "abc", "99999999999999999999",
+                            "16777216T"})
+        BOOST_TEST(!cache::parse_size(bad).has_value(), "'" << bad << "' taken for a size");
+}
+
 BOOST_AUTO_TEST_CASE(a_warm_regeneration_writes_what_one_without_a_cache_writes)
 {
     const scratch s;
@@ -317,6 +333,67 @@ BOOST_AUTO_TEST_CASE(a_cache_folder_holding_a_users_file_is_refused_in_one_line_
     BOOST_TEST(file.status == 2, file.output);
     BOOST_TEST(file.output.find(": error: the cache folder is a file") != std::string::npos, file.output);
     BOOST_TEST(!fs::exists(s.root / "output"));
+}
+
+BOOST_AUTO_TEST_CASE(a_cache_size_given_trims_the_cache_to_it_oldest_entries_first)
+{
+    const scratch s;
+    const fs::path cache = s.root / "cache";
+    const std::string at = "--cache '" + cache.string() + "' ";
+    BOOST_TEST_REQUIRE(regenerate(s.root, s.root / "first", at).status == 0);
+    std::uintmax_t total = 0;
+    for (const fs::path& entry : entries_in(cache))
+        total += fs::file_size(entry);
+    // An entry of 20 000 bytes used a day ago, the oldest by far.
+    const fs::path old_entry = cache / (std::string(64, 'd') + ".entry");
+    write(old_entry, std::string(20000, 'x'));
+    fs::last_write_time(old_entry, fs::file_time_type::clock::now() - std::chrono::hours(24));
+    // Room for what the regeneration uses, not for the old entry as well: it alone goes.
+    const run_result r = regenerate(s.root, s.root / "second", at + "--cache-size " + std::to_string(total + 10000));
+    BOOST_TEST_REQUIRE(r.status == 0, r.output);
+    BOOST_TEST(said(r.output, "kernel choice: [1-9][0-9]* reused, 0 computed"), r.output);
+    BOOST_TEST(!fs::exists(old_entry));
+    std::uintmax_t left = 0;
+    for (const fs::path& entry : entries_in(cache))
+        left += fs::file_size(entry);
+    BOOST_TEST(left == total);
+    // A limit of 1K, from the environment: every entry is beyond it.
+    const run_result tiny = run_command("IMPACT_CACHE_SIZE=1K XDG_CACHE_HOME='" + s.root.string() + "' " +
+                                        IMPACT_BINARY + " regenerate --derivations '" + IMPACT_SOURCE_DIR +
+                                        "/derivations' --output '" + (s.root / "third").string() + "' " + at);
+    BOOST_TEST_REQUIRE(tiny.status == 0, tiny.output);
+    BOOST_TEST(entries_in(cache).empty());
+    BOOST_TEST(fs::exists(cache / "CACHEDIR.TAG"));
+    BOOST_TEST((snapshot(s.root / "second") == snapshot(s.root / "first")));
+    BOOST_TEST((snapshot(s.root / "third") == snapshot(s.root / "first")));
+}
+
+BOOST_AUTO_TEST_CASE(a_cache_size_that_is_no_size_is_refused_in_one_line_before_anything_is_done)
+{
+    const scratch s;
+    const std::string derivations = " --derivations '" + std::string(IMPACT_SOURCE_DIR) + "/derivations'";
+    const std::string output = " --output '" + (s.root / "output").string() + "'";
+    const std::string cache = " --cache '" + (s.root / "cache").string() + "'";
+    struct refused {
+        std::string environment, arguments, said;
+    };
+    for (const refused& c : {
+             refused{"", "regenerate --cache-size 12Q" + cache + output, "--cache-size '12Q' is not a size"},
+             refused{"", "regenerate --cache-size 1.5G --no-cache" + output, "--cache-size '1.5G' is not a size"},
+             refused{"IMPACT_CACHE_SIZE=lots ", "regenerate" + cache + output, "IMPACT_CACHE_SIZE 'lots' is not a size"},
+             refused{"", "kernels --cache-size -3" + cache + output, "--cache-size '-3' is not a size"},
+         }) {
+        const run_result r = run_command(c.environment + IMPACT_BINARY + " " + c.arguments + derivations);
+        BOOST_TEST(r.status == 2, c.arguments << ": " << r.output);
+        BOOST_TEST(impact::testing::lines_of(r.output).size() == 1u, r.output);
+        BOOST_TEST(r.output.rfind("impact: error: " + c.said + ": give a number of bytes", 0) == 0u, r.output);
+        BOOST_TEST(!fs::exists(s.root / "output"));
+        BOOST_TEST(!fs::exists(s.root / "cache"));
+    }
+    // --cache-size takes precedence over the environment.
+    const run_result r = run_command("IMPACT_CACHE_SIZE=lots " + std::string(IMPACT_BINARY) +
+                                     " regenerate --cache-size 12Q" + cache + output + derivations);
+    BOOST_TEST(r.output.find("--cache-size '12Q'") != std::string::npos, r.output);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

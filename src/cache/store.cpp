@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
+#include <limits>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -129,6 +131,31 @@ const std::string& program_fingerprint()
         return sha256_hex(*bytes);
     }();
     return fingerprint;
+}
+
+std::optional<std::uintmax_t> parse_size(const std::string& text)
+{
+    std::size_t digits = 0;
+    while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9')
+        ++digits;
+    if (digits == 0 || digits > 19)
+        return std::nullopt;
+    std::string unit = text.substr(digits);
+    for (char& c : unit)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    int shift = 0;
+    if (!unit.empty() && std::string("KMGT").find(unit[0]) != std::string::npos) {
+        shift = 10 * (1 + static_cast<int>(std::string("KMGT").find(unit[0])));
+        unit.erase(0, 1);
+        if (unit == "IB")
+            unit.clear();
+    }
+    if (!unit.empty() && unit != "B")
+        return std::nullopt;
+    const std::uintmax_t n = std::stoull(text.substr(0, digits));
+    if (shift > 0 && n > (std::numeric_limits<std::uintmax_t>::max() >> shift))
+        return std::nullopt;
+    return n << shift;
 }
 
 bool is_store_file_name(const std::string& name)

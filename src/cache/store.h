@@ -42,6 +42,11 @@ struct counts {
 /// The size the cache is kept under by default, in bytes.
 inline constexpr std::uintmax_t default_limit = 256ull << 20;
 
+/// A size as `--cache-size` and IMPACT_CACHE_SIZE give it: a whole number of bytes, or
+/// one followed by K, M, G or T (powers of 1024, either case, `B` or `iB` allowed after),
+/// e.g. `512M`, `2G`, `1048576`; nothing when `text` is not one (or is too large).
+std::optional<std::uintmax_t> parse_size(const std::string& text);
+
 class store {
 public:
     /// Opens the cache folder, creating it when missing. Throws `impact::error` naming

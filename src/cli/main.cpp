@@ -8,6 +8,7 @@
 #include "engine/library.h"
 #include "pipeline/output_folder.h"
 #include "pipeline/regenerate.h"
+#include "pipeline/workers.h"
 #include "simulate/command.h"
 #include "simulate/simulate.h"
 
@@ -17,6 +18,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -40,8 +42,38 @@ struct options {
     bool force = false;
     std::string cache;         ///< empty: cache::default_folder()
     bool no_cache = false;
+    std::string cache_size;    ///< empty: $IMPACT_CACHE_SIZE, or cache::default_limit
+    unsigned jobs = 0;         ///< 0: pipeline::default_jobs()
     bool quiet = false;
 };
+
+// The cache folder and its size limit as the options and the environment give them;
+// no folder with --no-cache. A size that is not one is refused before anything is done.
+std::optional<fs::path> cache_folder(const options& o)
+{
+    if (o.no_cache)
+        return std::nullopt;
+    return o.cache.empty() ? cache::default_folder() : fs::path(o.cache);
+}
+
+std::uintmax_t cache_limit(const options& o)
+{
+    const char* from_environment = std::getenv("IMPACT_CACHE_SIZE");
+    const bool given = !o.cache_size.empty();
+    if (!given && (!from_environment || !*from_environment))
+        return cache::default_limit;
+    const std::string text = given ? o.cache_size : std::string(from_environment);
+    if (const auto size = cache::parse_size(text))
+        return *size;
+    throw std::runtime_error(fmt::format("{} '{}' is not a size: give a number of bytes, or one with K, M, G or T "
+                                         "(powers of 1024), e.g. 512M or 2G",
+                                         given ? "--cache-size" : "IMPACT_CACHE_SIZE", text));
+}
+
+unsigned jobs_of(const options& o)
+{
+    return o.jobs == 0 ? pipeline::default_jobs() : o.jobs;
+}
 
 // What a write kept of the user's, and what it moved out of the way.
 void print_kept(const pipeline::write_report& report, const fs::path& folder)
@@ -63,8 +95,9 @@ int run_regenerate(const options& o)
 {
     pipeline::regenerate_options how;
     how.force = o.force;
-    if (!o.no_cache)
-        how.cache = o.cache.empty() ? cache::default_folder() : fs::path(o.cache);
+    how.cache = cache_folder(o);
+    how.cache_size = cache_limit(o);
+    how.jobs = jobs_of(o);
     how.progress = !o.quiet && ::isatty(STDERR_FILENO);
     const pipeline::regeneration r = pipeline::regenerate(o.derivations, o.output, how);
     if (!r.all_hold) {
@@ -115,8 +148,13 @@ int run_latex(const options& o)
 
 int run_kernels(const options& o)
 {
+    const std::uintmax_t limit = cache_limit(o);
     const fs::path folder = pipeline::checked_folder(o.output, o.derivations, pipeline::writing::beside);
     pipeline::check_writable(folder, {}, o.force);
+    const std::optional<fs::path> cache_at = cache_folder(o);
+    std::optional<cache::store> store;
+    if (cache_at)
+        store.emplace(*cache_at, limit);
     const engine::library lib = engine::derive_all(engine::read_directory(o.derivations));
     if (!lib.all_hold()) {
         for (const std::string& failure : pipeline::failed_checks(lib))
@@ -125,7 +163,10 @@ int run_kernels(const options& o)
         return exit_failed_check;
     }
     std::vector<std::string> missed;
-    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    pipeline::kernel_options how;
+    how.store = store ? &*store : nullptr;
+    how.jobs = jobs_of(o);
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed, how);
     if (!missed.empty()) {
         for (const std::string& m : missed)
             fmt::print(stderr, "{}\n", m);
@@ -134,6 +175,12 @@ int run_kernels(const options& o)
     }
     print_kept(pipeline::add_to_folder(folder, files, o.force), folder);
     fmt::print("impact: wrote {} kernel headers to {}\n", files.size(), o.output);
+    if (store)
+        store->trim();
+    if (o.timings)
+        for (const std::string& line : pipeline::cache_summary(cache_at, store ? store->statistics()
+                                                                                : std::map<std::string, cache::counts>{}))
+            fmt::print("impact: {}\n", line);
     return 0;
 }
 
@@ -177,6 +224,19 @@ int main(int argc, char** argv)
                             "folder of derivation files (default: derivations, or the folder of the file given)");
     };
 
+    // The cache and the worker processes, for the commands that choose kernel forms.
+    auto add_cache = [&](CLI::App* command) {
+        CLI::Option* cache = command->add_option(
+            "--cache", o.cache, "cache folder (default: $XDG_CACHE_HOME/impact, or ~/.cache/impact)");
+        command->add_flag("--no-cache", o.no_cache, "compute everything; read and write no cache")->excludes(cache);
+        command->add_option("--cache-size", o.cache_size,
+                            "trim the cache to this size, e.g. 512M or 2G (default: $IMPACT_CACHE_SIZE, or 256M)");
+        command->add_option("-j,--jobs", o.jobs,
+                            "kernels whose forms are chosen at once, each in a worker process (default: the "
+                            "hardware's threads; 1: one after another, in Impact's own process)")
+            ->check(CLI::Range(1u, 4096u));
+    };
+
     CLI::App* regenerate = app.add_subcommand("regenerate", "derive everything and rewrite the output folder");
     add_derivations(regenerate);
     regenerate->add_flag("--timings", o.timings, "print the wall time of each stage");
@@ -185,9 +245,7 @@ int main(int argc, char** argv)
     regenerate->add_flag("--force", o.force, force_help);
     regenerate->add_option("--output", o.output, "output folder, replaced only when every check holds")
         ->capture_default_str();
-    CLI::Option* cache = regenerate->add_option(
-        "--cache", o.cache, "cache folder (default: $XDG_CACHE_HOME/impact, or ~/.cache/impact)");
-    regenerate->add_flag("--no-cache", o.no_cache, "compute everything; read and write no cache")->excludes(cache);
+    add_cache(regenerate);
     regenerate->add_flag("--quiet", o.quiet, "no progress line on the terminal");
 
     CLI::App* derive = app.add_subcommand("derive", "derive one derivation and print its results and checks");
@@ -204,6 +262,8 @@ int main(int argc, char** argv)
     add_derivations(kernels);
     kernels->add_option("--output", o.output, "folder to write kernels/impact/*.hpp into")->capture_default_str();
     kernels->add_flag("--force", o.force, force_help);
+    kernels->add_flag("--timings", o.timings, "print how often the cache was used");
+    add_cache(kernels);
 
     simulate::command_options sim;
     CLI::App* simulation = app.add_subcommand(

@@ -6,6 +6,7 @@
 #include "emit/latex.h"
 #include "emit/verification.h"
 #include "pipeline/progress.h"
+#include "pipeline/workers.h"
 #include "report/report.h"
 #include "verify/choice.h"
 
@@ -38,9 +39,19 @@ private:
 
 } // namespace
 
-file_set generate_kernels(const library& lib, std::vector<std::string>* missed)
+namespace {
+
+// The worker processes to measure kernels in, when more than one at once.
+verify::task_runner runner_for(unsigned jobs)
 {
-    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(lib);
+    return jobs > 1 ? worker_runner(jobs) : verify::task_runner{};
+}
+
+} // namespace
+
+file_set generate_kernels(const library& lib, std::vector<std::string>* missed, const kernel_options& how)
+{
+    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(lib, how.store, {}, runner_for(how.jobs));
     if (missed)
         *missed = verify::missed_bounds(plans);
     return emit::kernel_files(lib, plans);
@@ -70,18 +81,22 @@ void add_documents(const library& lib, file_set& files)
 
 // The kernel headers and verification.md, the choice of forms taken from `store` where it
 // can be; the outputs that miss their bounds.
-std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwatch& clock, cache::store* store,
+std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwatch& clock, const kernel_options& how,
                                      progress* shown)
 {
     const char* task = "kernel forms";
-    const std::vector<verify::kernel_plan> plans =
-        verify::plan_kernels(lib, store, [&](std::size_t done, std::size_t total) {
+    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(
+        lib, how.store,
+        [&](std::size_t done, std::size_t total) {
             if (shown)
                 shown->say(task, fmt::format("choosing kernel forms: {} of {} kernels", done, total));
-        });
+        },
+        runner_for(how.jobs));
     if (shown)
         shown->done(task);
-    clock.lap("kernel forms chosen by measurement (numeric)");
+    clock.lap(how.jobs > 1 ? fmt::format("kernel forms chosen by measurement (numeric, up to {} worker processes)",
+                                         how.jobs)
+                           : std::string("kernel forms chosen by measurement (numeric)"));
     for (auto& [path, contents] : emit::kernel_files(lib, plans))
         files[path] = std::move(contents);
     clock.lap("kernel sources");
@@ -101,17 +116,23 @@ file_set generate(const library& lib, stage_times* stages)
     file_set files;
     add_documents(lib, files);
     clock.lap("LaTeX fragments, derivations.json, errata.md");
-    add_kernels(lib, files, clock, nullptr, nullptr);
+    add_kernels(lib, files, clock, {}, nullptr);
     return files;
 }
 
 std::vector<std::string> cache_summary(const regeneration& r)
 {
+    return cache_summary(r.cache, r.cache_counts);
+}
+
+std::vector<std::string> cache_summary(const std::optional<fs::path>& folder,
+                                       const std::map<std::string, cache::counts>& counts)
+{
     std::vector<std::string> lines;
-    if (!r.cache)
+    if (!folder)
         return {"cache: none (--no-cache)"};
-    lines.push_back("cache: " + r.cache->string());
-    for (const auto& [kind, c] : r.cache_counts)
+    lines.push_back("cache: " + folder->string());
+    for (const auto& [kind, c] : counts)
         lines.push_back(fmt::format("cache: {}: {} reused, {} computed ({} damaged, computed again)", kind, c.hits,
                                     c.misses, c.rejected));
     return lines;
@@ -145,7 +166,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     check_writable(target, {}, options.force);
     std::optional<cache::store> store;
     if (options.cache)
-        store.emplace(*options.cache);
+        store.emplace(*options.cache, options.cache_size);
     progress shown(options.progress);
 
     regeneration result;
@@ -184,7 +205,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
         report_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
         return made;
     });
-    const std::vector<std::string> missed = add_kernels(lib, files, clock, compiling.store, &shown);
+    const std::vector<std::string> missed =
+        add_kernels(lib, files, clock, kernel_options{compiling.store, options.jobs}, &shown);
     for (auto& [path, contents] : report_files)
         files[path] = std::move(contents);
     for (auto& [path, contents] : pdfs.get())

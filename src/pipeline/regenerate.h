@@ -25,9 +25,18 @@ using stage_times = std::vector<std::pair<std::string, double>>;
 /// The files for a derived library: derivations.json, latex/<id>.tex, kernels/impact/*.hpp.
 file_set generate(const library& lib, stage_times* stages = nullptr);
 
+/// How the kernels' forms are chosen: the cache to take choices from and keep them in
+/// (or none), and how many kernels are measured at once, each in a worker process of
+/// its own (src/pipeline/workers.h; 1: one after another, in this process).
+struct kernel_options {
+    cache::store* store = nullptr;
+    unsigned jobs = 1;
+};
+
 /// Only the kernel headers (kernels/impact/*.hpp), for building against them; `missed`,
 /// when given, receives the outputs that miss their accuracy bounds (verify::missed_bounds).
-file_set generate_kernels(const library& lib, std::vector<std::string>* missed = nullptr);
+file_set generate_kernels(const library& lib, std::vector<std::string>* missed = nullptr,
+                          const kernel_options& how = {});
 
 /// One line for each check that failed: `file:line:column: error: check failed: id: name: residual r`.
 std::vector<std::string> failed_checks(const library& lib);
@@ -45,11 +54,15 @@ struct regeneration {
 struct regenerate_options {
     bool force = false;                               ///< write into a folder Impact does not own
     std::optional<std::filesystem::path> cache;       ///< the cache folder (src/cache/store.h), or none
+    std::uintmax_t cache_size = cache::default_limit; ///< the cache trimmed to this many bytes
     bool progress = false;                            ///< a progress line on standard error
+    unsigned jobs = 1;                                ///< kernels whose forms are chosen at once
 };
 
 /// One line a kind of cache entry: `kernel choice: 12 reused, 0 computed (0 damaged)`.
 std::vector<std::string> cache_summary(const regeneration& r);
+std::vector<std::string> cache_summary(const std::optional<std::filesystem::path>& folder,
+                                       const std::map<std::string, cache::counts>& counts);
 
 /// Derives everything in `derivations` and, when every check holds, replaces what Impact
 /// wrote in `output` with the generated files, the figures and the report, keeping every other
@@ -62,7 +75,8 @@ regeneration regenerate(const std::filesystem::path& derivations, const std::fil
 /// The same, with a cache: the choice of kernel forms and the PDFs are taken from it
 /// when what they depend on is unchanged, and computed and kept in it otherwise (the
 /// files written are the same bytes either way). The report is compiled beside the
-/// choice of kernel forms. A cache folder that is a file, or holds what is not Impact's,
+/// choice of kernel forms, and with `jobs` above 1 the kernels' forms are chosen in worker
+/// processes, that many at once (the output the same bytes). A cache folder that is a file, or holds what is not Impact's,
 /// throws `impact::error` before anything is derived or written.
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
                         const regenerate_options& options);

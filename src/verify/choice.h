@@ -80,6 +80,20 @@ std::optional<engine::form> derived_form(const engine::kernel_output& o, std::si
 /// no order does.
 void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::term_order& order);
 
+/// A piece of work whose result is text, so that it may run in another process.
+struct text_task {
+    std::string what;              ///< e.g. "kernel 'collide_line'", for a worker that dies
+    source_location where;         ///< where that is in a derivation file
+    std::function<std::string()> run;
+    std::size_t cost = 0;          ///< a guess at its work: the costliest are started first
+};
+
+/// Runs every task (perhaps several at once, in worker processes) and gives their texts
+/// in the tasks' order, calling `finished()` after each; a task's `impact::error` is
+/// thrown as it is, that of the first failing task in their order.
+using task_runner =
+    std::function<std::vector<std::string>(const std::vector<text_task>&, const std::function<void()>& finished)>;
+
 /// Every kernel's plan, derivation by derivation in the library's order.
 ///
 /// With a `store`, a kernel whose description (inputs and their domains, outputs and
@@ -87,8 +101,13 @@ void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::te
 /// before takes that plan's choice (its candidates, flags, accuracies and the emitted
 /// program's accuracy) instead of measuring again; such a plan has no `samples` and no
 /// references. `done(k, n)` is called after each of the n kernels.
+///
+/// With a `runner`, the kernels not taken from the store are measured as its tasks, each
+/// giving its choice as `encode_choice` writes it, read back as from the store: the plans
+/// are those of a run without one, in the same order.
 std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* store = nullptr,
-                                      const std::function<void(std::size_t, std::size_t)>& done = {});
+                                      const std::function<void(std::size_t, std::size_t)>& done = {},
+                                      const task_runner& runner = {});
 
 /// Every output that misses its bound (`engine::kernel_output::bound_ulps`) in float,
 /// double or long double, one line each: `file:line:column: error: kernel 'k': output 'J'
