@@ -38,10 +38,35 @@ double width(const GiNaC::ex& e, const term_order& order)
     return latex_width(latex(e, order));
 }
 
-// A polynomial factored, each factor kept as GiNaC builds it.
-GiNaC::ex factored(const GiNaC::ex& p)
+// A polynomial factored, each factor a flat sum whose first term in `order` is positive
+// (GiNaC nests a factor, and gives it either sign, differently between runs; the sign is
+// carried outside), so that a form, and its width, is the same on every run.
+GiNaC::ex factored(const GiNaC::ex& p, const term_order& order)
 {
-    return GiNaC::factor(p, GiNaC::factor_options::all);
+    const GiNaC::ex f = GiNaC::factor(p, GiNaC::factor_options::all);
+    const GiNaC::ex factors = GiNaC::is_a<GiNaC::mul>(f) ? f : GiNaC::ex(GiNaC::lst{f});
+    GiNaC::ex out = 1;
+    bool flip = false;
+    for (std::size_t i = 0; i < factors.nops(); ++i) {
+        GiNaC::ex x = factors.op(i);
+        const bool power = GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
+                           GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_integer();
+        // An irreducible factor as a flat sum: GiNaC nests it by its order of symbols.
+        const GiNaC::ex base = GiNaC::expand(power ? x.op(0) : x);
+        if (GiNaC::is_a<GiNaC::add>(base))
+            x = power ? GiNaC::pow(base, x.op(1)) : base;
+        if (GiNaC::is_a<GiNaC::add>(base)) {
+            const std::vector<GiNaC::ex> terms = order.terms(base);
+            if (!terms.empty() && order.negative(terms.front())) {
+                x = power ? GiNaC::pow(-base, x.op(1)) : -base;
+                // (-b)^n = (-1)^n b^n: an odd power carries the sign out.
+                if (!power || GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_odd())
+                    flip = !flip;
+            }
+        }
+        out *= x;
+    }
+    return flip ? -out : out;
 }
 
 } // namespace
@@ -92,10 +117,10 @@ textbook_value textbook_form(const GiNaC::ex& e, const term_order& order)
         std::sort(symbols.begin(), symbols.end(), [&](const GiNaC::ex& a, const GiNaC::ex& b) {
             return latex(a, order) < latex(b, order);
         });
-        const GiNaC::ex under = factored(denominator);
+        const GiNaC::ex under = factored(denominator, order);
         textbook_value best{e, ""};
         double best_width = 0.85 * width(e, order);
-        const GiNaC::ex whole = factored(numerator) / under;
+        const GiNaC::ex whole = factored(numerator, order) / under;
         if (const double w = width(whole, order); w < best_width) {
             best = {whole, "factored"};
             best_width = w;
@@ -106,7 +131,7 @@ textbook_value textbook_form(const GiNaC::ex& e, const term_order& order)
                 continue;
             GiNaC::ex sum = 0;
             for (int k = degree; k >= 0; --k)
-                sum += factored(numerator.coeff(s, k)) * GiNaC::pow(s, k);
+                sum += factored(numerator.coeff(s, k), order) * GiNaC::pow(s, k);
             const GiNaC::ex candidate = sum / under;
             if (const double w = width(candidate, order); w < best_width) {
                 best = {candidate, "collected in $" + latex(s, order) + "$, each coefficient factored"};
