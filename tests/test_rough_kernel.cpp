@@ -17,6 +17,7 @@
 #include <limits>
 #include <random>
 #include <cstring>
+#include <vector>
 
 namespace {
 
@@ -248,4 +249,82 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_status)
         BOOST_TEST(std::memcmp(&out.w_M, &c.w_M, sizeof c.w_M) == 0);
         BOOST_TEST(std::memcmp(&out.w_m, &c.w_m, sizeof c.w_m) == 0);
     }
+}
+
+BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
+{
+    // Ordinary, sticking, sliding, head-on (g_t = 0 with mu = 0), mu = +inf, and refused
+    // pairs of every status, in one batch: each pair's velocities, spins and status are
+    // the scalar kernel's, bit for bit.
+    std::mt19937_64 random(2121);
+    std::uniform_real_distribution<double> unit(-1, 1), positive(0.01, 100), fraction(0, 1);
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    const std::size_t count = 1003;  // not a multiple of a block
+    impact::collide_rough_batch_arrays<double, 2> batch(count);
+    std::vector<collision> pairs(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        collision& c = pairs[i];
+        c.M = positive(random);
+        c.m = positive(random);
+        c.R_M = positive(random);
+        c.R_m = positive(random);
+        c.q_M = 0.01 + fraction(random) * (2.0 / 3 - 0.01);
+        c.q_m = 0.01 + fraction(random) * (2.0 / 3 - 0.01);
+        c.C_M = {unit(random), unit(random)};
+        c.C_m = {unit(random), unit(random)};
+        c.v_M = {unit(random), unit(random)};
+        c.v_m = {unit(random), unit(random)};
+        c.w_M = unit(random);
+        c.w_m = unit(random);
+        c.eps = fraction(random);
+        c.beta = unit(random);
+        c.mu = fraction(random);
+        switch (i % 16) {
+        case 1: c.mu = inf; break;
+        case 2: c.mu = 0; c.C_M = {0, 0}; c.C_m = {1, 0}; c.v_M = {1, 0}; c.v_m = {0, 0}; c.w_M = c.w_m = 0; break;
+        case 3: c.R_M = -1; break;
+        case 4: c.q_m = 0.9; break;
+        case 5: c.beta = nan; break;
+        case 6: c.mu = -1; break;
+        case 7: c.w_m = inf; break;
+        case 8: c.C_m = c.C_M; break;
+        case 9: c.M = 1e-300; c.m = 1e300; break;
+        case 10: c.mu = 1e-300; break;
+        default: break;
+        }
+        batch.M()[i] = c.M;
+        batch.m()[i] = c.m;
+        batch.R_M()[i] = c.R_M;
+        batch.R_m()[i] = c.R_m;
+        batch.q_M()[i] = c.q_M;
+        batch.q_m()[i] = c.q_m;
+        batch.eps()[i] = c.eps;
+        batch.beta()[i] = c.beta;
+        batch.mu()[i] = c.mu;
+        batch.w_M()[i] = c.w_M;
+        batch.w_m()[i] = c.w_m;
+        for (std::size_t axis = 0; axis < 2; ++axis) {
+            batch.C_M(axis)[i] = c.C_M[axis];
+            batch.C_m(axis)[i] = c.C_m[axis];
+            batch.v_M(axis)[i] = c.v_M[axis];
+            batch.v_m(axis)[i] = c.v_m[axis];
+        }
+    }
+    impact::collide_rough_batch(batch.data());
+    std::size_t resolved = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto out = run(pairs[i]);
+        resolved += out.status == impact::status::ok ? 1 : 0;
+        BOOST_TEST_CONTEXT("pair " << i)
+        {
+            BOOST_TEST((batch.status()[i] == out.status));
+            for (std::size_t axis = 0; axis < 2; ++axis) {
+                BOOST_TEST(std::memcmp(&batch.v_M(axis)[i], &out.v_M[axis], sizeof(double)) == 0);
+                BOOST_TEST(std::memcmp(&batch.v_m(axis)[i], &out.v_m[axis], sizeof(double)) == 0);
+            }
+            BOOST_TEST(std::memcmp(&batch.w_M()[i], &out.w_M, sizeof(double)) == 0);
+            BOOST_TEST(std::memcmp(&batch.w_m()[i], &out.w_m, sizeof(double)) == 0);
+        }
+    }
+    BOOST_TEST(resolved > count / 4);
 }

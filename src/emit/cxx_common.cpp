@@ -34,30 +34,27 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
     for (const kernel_plan* plan : plans)
         if (has_status(*plan->kernel))
             guarded.push_back(plan->kernel);
-    // The kernels with a batch loop come first, out_of_range and underflow right after their
-    // statuses, and only then the statuses that kernels without one add (collide_rough's
-    // invalid_radius, ...): the values the vectorised loops were measured with stay theirs.
+    // The statuses several kernels return first, then out_of_range and underflow, then
+    // those of one kernel alone (collide_rough's invalid_radius, ...): a kernel added
+    // beside the others leaves their values as they were.
     std::stable_sort(guarded.begin(), guarded.end(), [](const engine::kernel* a, const engine::kernel* b) {
-        if (a->batch != b->batch)
-            return a->batch;
         return a->guards.size() > b->guards.size();
     });
+    std::map<std::string, int> returned_by;
+    for (const engine::kernel* k : guarded)
+        for (const engine::kernel_guard& g : k->guards)
+            ++returned_by[g.status];
     std::vector<std::string> statuses{"ok"};
-    bool ends_added = false, batch_seen = false;
-    for (const engine::kernel* k : guarded) {
-        batch_seen = batch_seen || k->batch;
-        if (!k->batch && batch_seen && !ends_added) {
+    for (const bool shared : {true, false}) {
+        for (const engine::kernel* k : guarded)
+            for (const engine::kernel_guard& g : k->guards)
+                if ((returned_by[g.status] > 1) == shared &&
+                    std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
+                    statuses.push_back(g.status);
+        if (shared && !guarded.empty()) {
             statuses.push_back(out_of_range);
             statuses.push_back(underflow);
-            ends_added = true;
         }
-        for (const engine::kernel_guard& g : k->guards)
-            if (std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
-                statuses.push_back(g.status);
-    }
-    if (!ends_added && statuses.size() > 1) {
-        statuses.push_back(out_of_range);
-        statuses.push_back(underflow);
     }
     out += fmt::format("\n/// Why a kernel resolved no collision; `ok` when it did.\n"
                        "/// As wide as a double, so that a vectorised batch loop over doubles keeps one\n"

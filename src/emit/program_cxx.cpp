@@ -131,7 +131,13 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             break;
         case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
         case opcode::sqrt:
-            expression = "std::sqrt(" + (kept_if.empty() ? text[in.a] : kept_if + " ? " + text[in.a] + " : Real(0)") + ")";
+            // A root a divisor needs is taken before `kept_if` is known (from the divisors):
+            // a discarded pair's NaN there makes its divisors fail their test, and no more.
+            expression = "std::sqrt(" +
+                         (kept_if.empty() || static_cast<int>(i) < last_divisor
+                              ? text[in.a]
+                              : kept_if + " ? " + text[in.a] + " : Real(0)") +
+                         ")";
             break;
         case opcode::fma: expression = "std::fma(" + text[in.a] + ", " + text[in.b] + ", " + text[in.c] + ")"; break;
         // Both values computed, one chosen: no branch (a conditional move, a blend in vectors).

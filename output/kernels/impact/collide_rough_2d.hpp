@@ -637,4 +637,682 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
     return out;
 }
 
+namespace detail {
+
+// The range of collide_rough_batch_2d's inputs within which its arithmetic stays in the normal range: where
+// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
+// normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
+// the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
+// by Impact from the program, operation by operation, bounding each value not 0 by powers
+// of 2, 2^lo <= |v| <= 2^hi, and by the power of 2 it is a multiple of, 2^q (a number of
+// at least 2^lo is a multiple of its ulp, 2^(lo - digits + 1)): a product adds them; a sum,
+// difference or fused multiply-add is exactly a multiple of its terms' finest q, and so,
+// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
+// bounds crosswise, a square root halves them, atan2(y, x) lies within
+// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
+// quadruple long double): k = -1, -1, 464, 442; where it is -1, the loop tests the least magnitude of the values.
+template <class Real>
+constexpr int collide_rough_batch_2d_k = input_k<Real>(-1, -1, 464, 442);
+
+// The loop of collide_rough_batch in 2D, without branches; inlined where it is called, so that a
+// block's call runs one pass of 8 pairs.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < count; ++i) {
+        // The status, as the scalar kernel decides it: the first guard that fails.
+        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
+        impact::status outcome = status::ok;
+        {
+            bool fails = !((((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_mx_[i], Real(0), C_my_[i] * Real(0))) + (std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)) + std::fma(v_mx_[i], Real(0), v_my_[i] * Real(0)))) + std::fma(w_M_[i], Real(0), w_m_[i] * Real(0))) == Real(0));
+            outcome = fails ? status::non_finite : outcome;
+            fails = !(mu_[i] >= Real(0));
+            outcome = fails ? status::invalid_friction : outcome;
+            fails = !(b_[i] >= Real(-1));
+            fails |= !(b_[i] <= Real(1));
+            outcome = fails ? status::invalid_tangential_restitution : outcome;
+            fails = !(eps_[i] >= Real(0));
+            fails |= !(eps_[i] <= Real(1));
+            outcome = fails ? status::invalid_restitution : outcome;
+            fails = !(q_M_[i] > Real(0));
+            fails |= !(q_M_[i] <= Real(0.6666666666666666));
+            fails |= !(q_m_[i] > Real(0));
+            fails |= !(q_m_[i] <= Real(0.6666666666666666));
+            outcome = fails ? status::invalid_inertia : outcome;
+            fails = !(R_M_[i] > Real(0));
+            fails |= !(R_m_[i] > Real(0));
+            fails |= !(std::fma(R_M_[i], Real(0), R_m_[i] * Real(0)) == Real(0));
+            outcome = fails ? status::invalid_radius : outcome;
+            fails = !(M_[i] > Real(0));
+            fails |= !(m_[i] > Real(0));
+            fails |= !(std::fma(M_[i], Real(0), m_[i] * Real(0)) == Real(0));
+            outcome = fails ? status::invalid_mass : outcome;
+            const bool admitted = outcome == status::ok;
+            impact::status condition = status::ok;
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t2 = t0 * t0;
+            const Real t4 = C_My_[i] - C_my_[i];
+            const Real t6 = t4 * t4;
+            const Real t7 = t2 + t6;
+            const Real t12 = v_Mx_[i] - v_mx_[i];
+            const Real t13 = t12 * t0;
+            const Real t22 = v_My_[i] - v_my_[i];
+            const Real t25 = t22 * t4;
+            fails = !(-t13 - t25 > Real(0));
+            condition = fails ? status::separating : condition;
+            fails = !(t7 > Real(0));
+            condition = fails ? status::coincident_centres : condition;
+            outcome = admitted ? condition : outcome;
+        }
+        const bool resolved = outcome == status::ok;
+        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real R_M = R_M_[i];
+        const Real R_m = R_m_[i];
+        const Real q_M = q_M_[i];
+        const Real q_m = q_m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real w_M = w_M_[i];
+        const Real w_m = w_m_[i];
+        const Real eps = eps_[i];
+        const Real b = b_[i];
+        const Real mu = mu_[i];
+        const Real t0 = C_Mx - C_mx;
+        const Real t1 = t0 - C_Mx;
+        const Real t2 = t0 * t0;
+        const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
+        const Real t4 = C_My - C_my;
+        const Real t5 = t4 - C_My;
+        const Real t6 = t4 * t4;
+        const Real t7 = t2 + t6;
+        const Real t8 = t7 - t2;
+        const Real t9 = C_My - (t4 - t5) - (C_my + t5);
+        const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
+        const Real t11 = t7 + t10;
+        const Real t12 = v_Mx - v_mx;
+        const Real t13 = t12 * t0;
+        const Real t14 = v_Mx * t0;
+        const Real t15 = v_mx * t0;
+        const Real t16 = t12 * t4;
+        const Real t17 = v_Mx * t4;
+        const Real t18 = v_mx * t4;
+        const Real t19 = -v_mx;
+        const Real t20 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+        const Real t21 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+        const Real t22 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17));
+        const Real t23 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t18));
+        const Real t24 = v_My - v_my;
+        const Real t25 = t24 * t0;
+        const Real t26 = v_My * t0;
+        const Real t27 = v_my * t0;
+        const Real t28 = t24 * t4;
+        const Real t29 = v_My * t4;
+        const Real t30 = v_my * t4;
+        const Real t31 = std::fma(t24, t4, t13);
+        const Real t32 = t13 + t28;
+        const Real t33 = t14 + t29;
+        const Real t34 = t33 - t14;
+        const Real t35 = -v_My;
+        const Real t36 = -t24;
+        const Real t37 = std::fma(v_My, t3, std::fma(v_My, t0, -t26));
+        const Real t38 = std::fma(v_my, t3, std::fma(v_my, t0, -t27));
+        const Real t39 = std::fma(v_My, t9, std::fma(v_My, t4, -t29));
+        const Real t40 = std::fma(v_my, t9, std::fma(v_my, t4, -t30));
+        const Real t41 = t14 - (t33 - t34) + (t29 - t34) + (t20 + t39);
+        const Real t42 = t33 + t41;
+        const Real t43 = t42 - t15;
+        const Real t44 = t43 - t42;
+        const Real t45 = t42 - (t43 - t44) - (t15 + t44) + (t41 - (t42 - t33) - t21);
+        const Real t46 = t43 + t45;
+        const Real t47 = t46 - t30;
+        const Real t48 = t47 - t46;
+        const Real t49 = t46 - (t47 - t48) - (t30 + t48) + (t45 - (t46 - t43) - t40);
+        const Real t50 = t47 + t49;
+        const Real t51 = t49 - (t50 - t47);
+        const Real t52 = M * m;
+        const Real t53 = M + m;
+        const Real t54 = t53 - M;
+        const Real t55 = std::fma(M, m, -t52);
+        const Real t56 = M - (t53 - t54) + (m - t54);
+        const Real t57 = Real(1) + eps;
+        const Real t58 = t52 * t57;
+        const Real t59 = t57 - Real(1);
+        const Real t60 = Real(1) - (t57 - t59) + (eps - t59);
+        const Real t61 = q_M * q_m;
+        const Real t62 = M * q_M;
+        const Real t63 = m * q_m;
+        const Real t64 = m * q_M;
+        const Real t65 = t52 * q_M;
+        const Real t66 = Real(1) + q_m;
+        const Real t67 = Real(1) + q_M;
+        const Real t68 = t65 * q_m;
+        const Real t69 = t62 * q_m;
+        const Real t70 = t64 * q_m;
+        const Real t71 = q_m * t67;
+        const Real t72 = t62 * t66;
+        const Real t73 = std::fma(m, t71, t72);
+        const Real t74 = t57 * t73;
+        const Real t75 = t74 * t31;
+        const Real t76 = std::fma(M, q_M, -t62);
+        const Real t77 = t62 + t69;
+        const Real t78 = t77 - t62;
+        const Real t79 = t63 * t67;
+        const Real t80 = std::fma(std::fma(t55, q_M, std::fma(t52, q_M, -t65)), q_m, std::fma(t65, q_m, -t68));
+        const Real t81 = t72 + t79;
+        const Real t82 = t62 - (t77 - t78) + (t69 - t78) + (t76 + std::fma(t76, q_m, std::fma(t62, q_m, -t69)));
+        const Real t83 = t77 + t82;
+        const Real t84 = t83 + t70;
+        const Real t85 = t84 - t83;
+        const Real t86 = t83 - (t84 - t85) + (t70 - t85) + (t82 - (t83 - t77) + std::fma(std::fma(m, q_M, -t64), q_m, std::fma(t64, q_m, -t70)));
+        const Real t87 = t84 + t86;
+        const Real t88 = t87 + t63;
+        const Real t89 = t88 - t87;
+        const Real t90 = t87 - (t88 - t89) + (t63 - t89) + (t86 - (t87 - t84) + std::fma(m, q_m, -t63));
+        const Real t91 = t88 + t90;
+        const Real t92 = t90 - (t91 - t88);
+        const Real t93 = Real(1) + b;
+        const Real t94 = b * v_Mx;
+        const Real t95 = t94 * t4;
+        const Real t96 = b * v_mx;
+        const Real t97 = t96 * t4;
+        const Real t98 = b * v_My;
+        const Real t99 = t98 * t0;
+        const Real t100 = b * v_my;
+        const Real t101 = t100 * t0;
+        const Real t102 = t61 * t93;
+        const Real t103 = t102 * t53;
+        const Real t104 = std::fma(std::fma(b, v_Mx, -t94), t4, std::fma(t94, t9, std::fma(t94, t4, -t95)));
+        const Real t105 = std::fma(std::fma(b, v_mx, -t96), t4, std::fma(t96, t9, std::fma(t96, t4, -t97)));
+        const Real t106 = std::fma(std::fma(b, v_My, -t98), t0, std::fma(t98, t3, std::fma(t98, t0, -t99)));
+        const Real t107 = std::fma(std::fma(b, v_my, -t100), t0, std::fma(t100, t3, std::fma(t100, t0, -t101)));
+        const Real t108 = R_M * w_M;
+        const Real t109 = M * R_M;
+        const Real t110 = t109 * q_M;
+        const Real t111 = R_M * b;
+        const Real t112 = t111 * w_M;
+        const Real t113 = std::fma(R_M, w_M, -t108);
+        const Real t114 = std::fma(std::fma(R_M, b, -t111), w_M, std::fma(t111, w_M, -t112));
+        const Real t115 = R_m * w_m;
+        const Real t116 = m * R_m;
+        const Real t117 = t116 * q_m;
+        const Real t118 = std::sqrt(t7);
+        const Real t119 = std::sqrt(t11);
+        const Real t120 = t53 * t119;
+        const Real t121 = t91 * t119;
+        const Real t122 = R_m * b;
+        const Real t123 = t108 + t115;
+        const Real t124 = t108 * t119;
+        const Real t125 = t108 * t118;
+        const Real t126 = std::fma(R_m, w_m, t108);
+        const Real t127 = t112 * t119;
+        const Real t128 = t122 * w_m;
+        const Real t129 = w_m * t118;
+        const Real t130 = std::fma(R_m, t129, t125);
+        const Real t131 = std::fma(v_Mx, t4, t130);
+        const Real t132 = std::fma(t35, t0, t131);
+        const Real t133 = std::fma(t19, t4, t132);
+        const Real t134 = std::fma(v_my, t0, t133);
+        const Real t135 = std::fma(R_m, w_m, -t115);
+        const Real t136 = t115 * t119;
+        const Real t137 = t115 * t118;
+        const Real t138 = t123 * t118;
+        const Real t139 = t138 + t16 - t25;
+        const Real t140 = t126 * t118;
+        const Real t141 = std::fma(t12, t4, t140);
+        const Real t142 = std::fma(t36, t0, t141);
+        const Real t143 = std::fma(-t119, t119, t11) + (t10 - (t11 - t7));
+        const Real t144 = t119 + t119;
+        const Real t145 = t128 * t119;
+        const Real t146 = std::fma(t53, t119, -t120);
+        const Real t147 = std::fma(t91, t119, -t121);
+        const Real t148 = std::fma(t108, t119, -t124);
+        const Real t149 = t124 + t136;
+        const Real t150 = t149 - t124;
+        const Real t151 = t127 + t124;
+        const Real t152 = t125 + t137 + t17 - t26 - t18 + t27;
+        const Real t153 = std::fma(t112, t119, -t127);
+        const Real t154 = t151 - t127;
+        const Real t155 = std::fma(std::fma(R_m, b, -t122), w_m, std::fma(t122, w_m, -t128));
+        const Real t156 = std::abs(t134);
+        const Real t157 = t120 * t156;
+        const Real t158 = std::fma(t115, t119, -t136);
+        const Real t159 = std::abs(t139);
+        const Real t160 = t103 * t159;
+        const Real t161 = std::abs(t142);
+        const Real t162 = t103 * t161;
+        const Real t163 = std::fma(t128, t119, -t145);
+        const Real t164 = std::abs(t152);
+        const Real t165 = t120 * t164;
+        const Real t166 = t127 - (t151 - t154) + (t124 - t154);
+        const Real t167 = t124 - (t149 - t150) + (t136 - t150);
+        const Real t168 = mu * t57;
+        const Real t169 = t52 * mu;
+        const Real t170 = t169 * t57;
+        const Real t171 = std::fma(mu, t75, t162);
+        const Real t172 = t168 * t81;
+        const Real t173 = t172 * t32;
+        const Real t174 = (t171 > Real(0) ? Real(1) : t121);
+        const Real t175 = (t171 > Real(0) ? t144 : Real(1));
+        const Real t176 = (t171 > Real(0) ? Real(1) : t144);
+        const Real t177 = (t171 > Real(0) ? t157 : Real(1));
+        const Real t178 = t160 + t173;
+        const Real t179 = (t178 > Real(0) ? Real(1) : t121);
+        const Real t180 = (t178 > Real(0) ? t144 : Real(1));
+        const Real t181 = (t178 > Real(0) ? Real(1) : t144);
+        const Real t182 = (t178 > Real(0) ? t165 : Real(1));
+        const bool usable = resolved && (std::fabs(t119) >= detail::smallest_divisor<Real>) && (std::fabs(t119) <= std::numeric_limits<Real>::max()) && (std::fabs(t144) >= detail::smallest_divisor<Real>) && (std::fabs(t144) <= std::numeric_limits<Real>::max()) && (std::fabs(t180) >= detail::smallest_divisor<Real>) && (std::fabs(t180) <= std::numeric_limits<Real>::max()) && (std::fabs(t181) >= detail::smallest_divisor<Real>) && (std::fabs(t181) <= std::numeric_limits<Real>::max()) && (std::fabs(t175) >= detail::smallest_divisor<Real>) && (std::fabs(t175) <= std::numeric_limits<Real>::max()) && (std::fabs(t176) >= detail::smallest_divisor<Real>) && (std::fabs(t176) <= std::numeric_limits<Real>::max()) && (std::fabs(t120) >= detail::smallest_divisor<Real>) && (std::fabs(t120) <= std::numeric_limits<Real>::max()) && (std::fabs(t182) >= detail::smallest_divisor<Real>) && (std::fabs(t182) <= std::numeric_limits<Real>::max()) && (std::fabs(t177) >= detail::smallest_divisor<Real>) && (std::fabs(t177) <= std::numeric_limits<Real>::max()) && (std::fabs(t179) >= detail::smallest_divisor<Real>) && (std::fabs(t179) <= std::numeric_limits<Real>::max()) && (std::fabs(t117) >= detail::smallest_divisor<Real>) && (std::fabs(t117) <= std::numeric_limits<Real>::max()) && (std::fabs(t174) >= detail::smallest_divisor<Real>) && (std::fabs(t174) <= std::numeric_limits<Real>::max()) && (std::fabs(t110) >= detail::smallest_divisor<Real>) && (std::fabs(t110) <= std::numeric_limits<Real>::max()) && (std::fabs(M) >= detail::smallest_divisor<Real>) && (std::fabs(M) <= std::numeric_limits<Real>::max()) && (std::fabs(m) >= detail::smallest_divisor<Real>) && (std::fabs(m) <= std::numeric_limits<Real>::max());
+        const Real t183 = t14 / (usable ? t119 : Real(1));
+        const Real t184 = t15 / (usable ? t119 : Real(1));
+        const Real t185 = t29 / (usable ? t119 : Real(1));
+        const Real t186 = t30 / (usable ? t119 : Real(1));
+        const Real t187 = t143 / (usable ? t144 : Real(1));
+        const Real t188 = std::fma(t56, t119, std::fma(t53, t187, t146));
+        const Real t189 = t143 / (usable ? t180 : Real(1));
+        const Real t190 = t143 / (usable ? t181 : Real(1));
+        const Real t191 = t143 / (usable ? t175 : Real(1));
+        const Real t192 = t143 / (usable ? t176 : Real(1));
+        const Real t193 = std::fma(std::fma(t55, mu, std::fma(t52, mu, -t169)), t57, std::fma(t169, t60, std::fma(t169, t57, -t170)));
+        const Real t194 = -t183;
+        const Real t195 = t183 + t185;
+        const Real t196 = t195 - t183;
+        const Real t197 = -t184;
+        const Real t198 = -t185;
+        const Real t199 = -t186;
+        const Real t200 = t167 + (std::fma(t113, t119, std::fma(t108, t189, t148)) + std::fma(t135, t119, std::fma(t115, t189, t158)));
+        const Real t201 = t149 + t200;
+        const Real t202 = t201 + t17;
+        const Real t203 = t166 + (std::fma(t114, t119, std::fma(t112, t190, t153)) + std::fma(t113, t119, std::fma(t108, t190, t148)));
+        const Real t204 = t151 + t203;
+        const Real t205 = t204 + t145;
+        const Real t206 = t167 + (std::fma(t113, t119, std::fma(t108, t191, t148)) + std::fma(t135, t119, std::fma(t115, t191, t158)));
+        const Real t207 = t149 + t206;
+        const Real t208 = t207 + t17;
+        const Real t209 = t166 + (std::fma(t114, t119, std::fma(t112, t192, t153)) + std::fma(t113, t119, std::fma(t108, t192, t148)));
+        const Real t210 = t151 + t209;
+        const Real t211 = t210 + t145;
+        const Real t212 = t202 - t201;
+        const Real t213 = t205 - t204;
+        const Real t214 = t208 - t207;
+        const Real t215 = t211 - t210;
+        const Real t216 = t183 - (t195 - t196) + (t185 - t196) + (std::fma(t194, t187, std::fma(t194, t119, t14) + t20) / (usable ? t119 : Real(1)) + std::fma(t198, t187, std::fma(t198, t119, t29) + t39) / (usable ? t119 : Real(1)));
+        const Real t217 = t195 + t216;
+        const Real t218 = t217 - t184;
+        const Real t219 = t201 - (t202 - t212) + (t17 - t212) + (t200 - (t201 - t149) + t22);
+        const Real t220 = t202 + t219;
+        const Real t221 = t220 - t26;
+        const Real t222 = t204 - (t205 - t213) + (t145 - t213) + (t203 - (t204 - t151) + std::fma(t155, t119, std::fma(t128, t190, t163)));
+        const Real t223 = t205 + t222;
+        const Real t224 = t223 + t136;
+        const Real t225 = t207 - (t208 - t214) + (t17 - t214) + (t206 - (t207 - t149) + t22);
+        const Real t226 = t208 + t225;
+        const Real t227 = t226 - t26;
+        const Real t228 = t210 - (t211 - t215) + (t145 - t215) + (t209 - (t210 - t151) + std::fma(t155, t119, std::fma(t128, t192, t163)));
+        const Real t229 = t211 + t228;
+        const Real t230 = t229 + t136;
+        const Real t231 = t218 - t217;
+        const Real t232 = t221 - t220;
+        const Real t233 = t224 - t223;
+        const Real t234 = t227 - t226;
+        const Real t235 = t230 - t229;
+        const Real t236 = t217 - (t218 - t231) - (t184 + t231) + (t216 - (t217 - t195) - std::fma(t197, t187, std::fma(t197, t119, t15) + t21) / (usable ? t119 : Real(1)));
+        const Real t237 = t218 + t236;
+        const Real t238 = t237 - t186;
+        const Real t239 = t220 - (t221 - t232) - (t26 + t232) + (t219 - (t220 - t202) - t37);
+        const Real t240 = t221 + t239;
+        const Real t241 = t240 - t18;
+        const Real t242 = t223 - (t224 - t233) + (t136 - t233) + (t222 - (t223 - t205) + std::fma(t135, t119, std::fma(t115, t190, t158)));
+        const Real t243 = t224 + t242;
+        const Real t244 = t243 + t95;
+        const Real t245 = t226 - (t227 - t234) - (t26 + t234) + (t225 - (t226 - t208) - t37);
+        const Real t246 = t227 + t245;
+        const Real t247 = t246 - t18;
+        const Real t248 = t229 - (t230 - t235) + (t136 - t235) + (t228 - (t229 - t211) + std::fma(t135, t119, std::fma(t115, t192, t158)));
+        const Real t249 = t230 + t248;
+        const Real t250 = t249 + t95;
+        const Real t251 = t238 - t237;
+        const Real t252 = t241 - t240;
+        const Real t253 = t244 - t243;
+        const Real t254 = t247 - t246;
+        const Real t255 = t250 - t249;
+        const Real t256 = t237 - (t238 - t251) - (t186 + t251) + (t236 - (t237 - t218) - std::fma(t199, t187, std::fma(t199, t119, t30) + t40) / (usable ? t119 : Real(1)));
+        const Real t257 = t238 + t256;
+        const Real t258 = t58 * t257;
+        const Real t259 = t258 * t0;
+        const Real t260 = t258 * t4;
+        const Real t261 = t259 / (usable ? t120 : Real(1));
+        const Real t262 = t260 / (usable ? t120 : Real(1));
+        const Real t263 = t240 - (t241 - t252) - (t18 + t252) + (t239 - (t240 - t221) - t23);
+        const Real t264 = t241 + t263;
+        const Real t265 = t264 + t27;
+        const Real t266 = t243 - (t244 - t253) + (t95 - t253) + (t242 - (t243 - t224) + t104);
+        const Real t267 = t244 + t266;
+        const Real t268 = t267 - t99;
+        const Real t269 = t246 - (t247 - t254) - (t18 + t254) + (t245 - (t246 - t227) - t23);
+        const Real t270 = t247 + t269;
+        const Real t271 = t270 + t27;
+        const Real t272 = t249 - (t250 - t255) + (t95 - t255) + (t248 - (t249 - t230) + t104);
+        const Real t273 = t250 + t272;
+        const Real t274 = t273 - t99;
+        const Real t275 = std::fma(std::fma(t55, t57, std::fma(t52, t60, std::fma(t52, t57, -t58))), t257, std::fma(t58, t256 - (t257 - t238), std::fma(t58, t257, -t258)));
+        const Real t276 = -t261;
+        const Real t277 = -t262;
+        const Real t278 = t265 - t264;
+        const Real t279 = t268 - t267;
+        const Real t280 = t271 - t270;
+        const Real t281 = t274 - t273;
+        const Real t282 = std::fma(t276, t188, std::fma(t276, t120, t259) + std::fma(t275, t0, std::fma(t258, t3, std::fma(t258, t0, -t259)))) / (usable ? t120 : Real(1));
+        const Real t283 = std::fma(t277, t188, std::fma(t277, t120, t260) + std::fma(t275, t4, std::fma(t258, t9, std::fma(t258, t4, -t260)))) / (usable ? t120 : Real(1));
+        const Real t284 = t264 - (t265 - t278) + (t27 - t278) + (t263 - (t264 - t241) + t38);
+        const Real t285 = t265 + t284;
+        const Real t286 = t170 * t285;
+        const Real t287 = t286 * t50;
+        const Real t288 = t287 / (usable ? t182 : Real(1));
+        const Real t289 = t267 - (t268 - t279) - (t99 + t279) + (t266 - (t267 - t244) - t106);
+        const Real t290 = t268 + t289;
+        const Real t291 = t290 - t97;
+        const Real t292 = t270 - (t271 - t280) + (t27 - t280) + (t269 - (t270 - t247) + t38);
+        const Real t293 = t271 + t292;
+        const Real t294 = t170 * t293;
+        const Real t295 = t294 * t50;
+        const Real t296 = t295 / (usable ? t177 : Real(1));
+        const Real t297 = t273 - (t274 - t281) - (t99 + t281) + (t272 - (t273 - t250) - t106);
+        const Real t298 = t274 + t297;
+        const Real t299 = t298 - t97;
+        const Real t300 = -t288;
+        const Real t301 = t291 - t290;
+        const Real t302 = -t296;
+        const Real t303 = t299 - t298;
+        const Real t304 = t290 - (t291 - t301) - (t97 + t301) + (t289 - (t290 - t268) - t105);
+        const Real t305 = t291 + t304;
+        const Real t306 = t305 + t101;
+        const Real t307 = t298 - (t299 - t303) - (t97 + t303) + (t297 - (t298 - t274) - t105);
+        const Real t308 = t299 + t307;
+        const Real t309 = t308 + t101;
+        const Real t310 = t306 - t305;
+        const Real t311 = t309 - t308;
+        const Real t312 = t305 - (t306 - t310) + (t101 - t310) + (t304 - (t305 - t291) + t107);
+        const Real t313 = t306 + t312;
+        const Real t314 = t313 + t17;
+        const Real t315 = t308 - (t309 - t311) + (t101 - t311) + (t307 - (t308 - t299) + t107);
+        const Real t316 = t309 + t315;
+        const Real t317 = t316 + t17;
+        const Real t318 = t314 - t313;
+        const Real t319 = t317 - t316;
+        const Real t320 = t313 - (t314 - t318) + (t17 - t318) + (t312 - (t313 - t306) + t22);
+        const Real t321 = t314 + t320;
+        const Real t322 = t321 - t26;
+        const Real t323 = t316 - (t317 - t319) + (t17 - t319) + (t315 - (t316 - t309) + t22);
+        const Real t324 = t317 + t323;
+        const Real t325 = t324 - t26;
+        const Real t326 = t322 - t321;
+        const Real t327 = t325 - t324;
+        const Real t328 = t321 - (t322 - t326) - (t26 + t326) + (t320 - (t321 - t314) - t37);
+        const Real t329 = t322 + t328;
+        const Real t330 = t329 - t18;
+        const Real t331 = t324 - (t325 - t327) - (t26 + t327) + (t323 - (t324 - t317) - t37);
+        const Real t332 = t325 + t331;
+        const Real t333 = t332 - t18;
+        const Real t334 = t330 - t329;
+        const Real t335 = t333 - t332;
+        const Real t336 = t329 - (t330 - t334) - (t18 + t334) + (t328 - (t329 - t322) - t23);
+        const Real t337 = t330 + t336;
+        const Real t338 = t337 + t27;
+        const Real t339 = t332 - (t333 - t335) - (t18 + t335) + (t331 - (t332 - t325) - t23);
+        const Real t340 = t333 + t339;
+        const Real t341 = t340 + t27;
+        const Real t342 = t338 - t337;
+        const Real t343 = t341 - t340;
+        const Real t344 = t337 - (t338 - t342) + (t27 - t342) + (t336 - (t337 - t330) + t38);
+        const Real t345 = t338 + t344;
+        const Real t346 = t68 * t345;
+        const Real t347 = t346 / (usable ? t179 : Real(1));
+        const Real t348 = (t178 > Real(0) ? t300 : t347);
+        const Real t349 = t0 * t348;
+        const Real t350 = t4 * t348;
+        const Real t351 = t348 / (usable ? t117 : Real(1));
+        const Real t352 = t350 / (usable ? t119 : Real(1));
+        const Real t353 = t349 / (usable ? t119 : Real(1));
+        const Real t354 = t261 + t352;
+        const Real t355 = t354 - t261;
+        const Real t356 = t262 - t353;
+        const Real t357 = t356 - t262;
+        const Real t358 = t340 - (t341 - t343) + (t27 - t343) + (t339 - (t340 - t333) + t38);
+        const Real t359 = t341 + t358;
+        const Real t360 = t68 * t359;
+        const Real t361 = t360 / (usable ? t174 : Real(1));
+        const Real t362 = (t171 > Real(0) ? t302 : t361);
+        const Real t363 = t0 * t362;
+        const Real t364 = t4 * t362;
+        const Real t365 = t362 / (usable ? t110 : Real(1));
+        const Real t366 = t364 / (usable ? t119 : Real(1));
+        const Real t367 = t363 / (usable ? t119 : Real(1));
+        const Real t368 = t261 + t366;
+        const Real t369 = t368 - t261;
+        const Real t370 = t262 - t367;
+        const Real t371 = t370 - t262;
+        const Real t372 = -t347;
+        const Real t373 = -t351;
+        const Real t374 = -t352;
+        const Real t375 = -t353;
+        const Real t376 = -t361;
+        const Real t377 = -t365;
+        const Real t378 = -t366;
+        const Real t379 = -t367;
+        const Real t380 = (t178 > Real(0) ? -(std::fma(t300, std::fma(std::fma(t56, t119, std::fma(t53, t189, t146)), t164, std::fma(t120, t164, -t165)), std::fma(t300, t165, t287) + std::fma(std::fma(t193, t285, std::fma(t170, t284 - (t285 - t265), std::fma(t170, t285, -t286))), t50, std::fma(t286, t51, std::fma(t286, t50, -t287)))) / (usable ? t182 : Real(1))) : std::fma(t372, std::fma(t92, t119, std::fma(t91, t190, t147)), std::fma(t372, t121, t346) + std::fma(t80, t345, std::fma(t68, t344 - (t345 - t338), std::fma(t68, t345, -t346)))) / (usable ? t179 : Real(1)));
+        const Real t381 = (t171 > Real(0) ? -(std::fma(t302, std::fma(std::fma(t56, t119, std::fma(t53, t191, t146)), t156, std::fma(t120, t156, -t157)), std::fma(t302, t157, t295) + std::fma(std::fma(t193, t293, std::fma(t170, t292 - (t293 - t271), std::fma(t170, t293, -t294))), t50, std::fma(t294, t51, std::fma(t294, t50, -t295)))) / (usable ? t177 : Real(1))) : std::fma(t376, std::fma(t92, t119, std::fma(t91, t192, t147)), std::fma(t376, t121, t360) + std::fma(t80, t359, std::fma(t68, t358 - (t359 - t341), std::fma(t68, t359, -t360)))) / (usable ? t174 : Real(1)));
+        const Real t382 = t261 - (t354 - t355) + (t352 - t355) + (t282 + std::fma(t374, t187, std::fma(t374, t119, t350) + std::fma(t9, t348, std::fma(t4, t380, std::fma(t4, t348, -t350)))) / (usable ? t119 : Real(1)));
+        const Real t383 = t354 + t382;
+        const Real t384 = t383 / (usable ? M : Real(1));
+        const Real t385 = t262 - (t356 - t357) - (t353 + t357) + (t283 - std::fma(t375, t187, std::fma(t375, t119, t349) + std::fma(t3, t348, std::fma(t0, t380, std::fma(t0, t348, -t349)))) / (usable ? t119 : Real(1)));
+        const Real t386 = t356 + t385;
+        const Real t387 = t386 / (usable ? M : Real(1));
+        const Real t388 = t261 - (t368 - t369) + (t366 - t369) + (t282 + std::fma(t378, t187, std::fma(t378, t119, t364) + std::fma(t9, t362, std::fma(t4, t381, std::fma(t4, t362, -t364)))) / (usable ? t119 : Real(1)));
+        const Real t389 = t368 + t388;
+        const Real t390 = t389 / (usable ? m : Real(1));
+        const Real t391 = t262 - (t370 - t371) - (t367 + t371) + (t283 - std::fma(t379, t187, std::fma(t379, t119, t363) + std::fma(t3, t362, std::fma(t0, t381, std::fma(t0, t362, -t363)))) / (usable ? t119 : Real(1)));
+        const Real t392 = t370 + t391;
+        const Real t393 = t392 / (usable ? m : Real(1));
+        const Real t394 = -t384;
+        const Real t395 = -t387;
+        const Real v_Mx_out = v_Mx + (t394 + -((std::fma(t394, M, t383) + (t382 - (t383 - t354))) / (usable ? M : Real(1))));
+        const Real v_My_out = v_My + (t395 + -((std::fma(t395, M, t386) + (t385 - (t386 - t356))) / (usable ? M : Real(1))));
+        const Real v_mx_out = v_mx + (t390 + (std::fma(-t390, m, t389) + (t388 - (t389 - t368))) / (usable ? m : Real(1)));
+        const Real v_my_out = v_my + (t393 + (std::fma(-t393, m, t392) + (t391 - (t392 - t370))) / (usable ? m : Real(1)));
+        const Real w_M_out = w_M + (t377 + -(std::fma(t377, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t377, t110, t362) + t381) / (usable ? t110 : Real(1))));
+        const Real w_m_out = w_m + (t373 + -(std::fma(t373, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t373, t117, t348) + t380) / (usable ? t117 : Real(1))));
+        const Real finite0 = std::fma(t134, Real(0), t139 * Real(0));
+        const Real finite1 = std::fma(t142, Real(0), t152 * Real(0));
+        const Real finite2 = std::fma(v_Mx_out, Real(0), v_My_out * Real(0));
+        const Real finite3 = std::fma(v_mx_out, Real(0), v_my_out * Real(0));
+        const Real finite4 = std::fma(w_M_out, Real(0), w_m_out * Real(0));
+        const Real finite5 = finite0 + finite1;
+        const Real finite6 = finite2 + finite3;
+        const Real finite7 = finite5 + finite6;
+        const Real finite8 = finite7 + finite4;
+        const bool finite = (finite8 == Real(0));
+        bool doubtful = false;
+        if constexpr (collide_rough_batch_2d_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_rough_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_rough_batch_2d_k<Real>);
+            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
+        }
+        if constexpr (collide_rough_batch_2d_k<Real> < 0)
+            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(t24)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(t24)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(std::fabs(t31), detail::most(detail::most(std::fabs(t52), detail::zero_as_min(M)), detail::zero_as_min(m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t58), detail::zero_as_min(t57)), detail::most(detail::most(std::fabs(t61), detail::zero_as_min(q_M)), detail::zero_as_min(q_m))), detail::least(detail::most(detail::most(std::fabs(t62), detail::zero_as_min(M)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(m)), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(std::fabs(t65), detail::zero_as_min(q_M))), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_m)), detail::most(std::fabs(t69), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t71), detail::zero_as_min(q_m)), detail::zero_as_min(t67))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(t66)), std::fabs(t73))), detail::least(detail::least(detail::most(std::fabs(t74), detail::zero_as_min(t57)), std::fabs(t75)), detail::least(detail::most(std::fabs(t79), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t94), detail::zero_as_min(b)), detail::zero_as_min(v_Mx))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t95), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t96), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t97), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t98), detail::zero_as_min(b)), detail::zero_as_min(v_My)))), detail::least(detail::least(detail::most(std::fabs(t99), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t100), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t101), detail::zero_as_min(t0)), detail::most(std::fabs(t102), detail::zero_as_min(t93))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(t53)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t110), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t112), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)), detail::most(detail::most(std::fabs(t116), detail::zero_as_min(m)), detail::zero_as_min(R_m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t117), detail::zero_as_min(q_m)), detail::most(std::fabs(t120), detail::zero_as_min(t53))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t91)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))), detail::least(detail::least(std::fabs(t124), std::fabs(t125)), detail::least(std::fabs(t126), std::fabs(t127)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t128), detail::zero_as_min(w_m)), detail::most(std::fabs(t129), detail::zero_as_min(w_m))), detail::least(std::fabs(t130), std::fabs(t131))), detail::least(detail::least(std::fabs(t132), std::fabs(t133)), detail::least(std::fabs(t134), std::fabs(t136))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t137), detail::most(std::fabs(t138), detail::zero_as_min(t123))), detail::least(std::fabs(t140), std::fabs(t141))), detail::least(detail::least(std::fabs(t142), std::fabs(t145)), detail::least(std::fabs(t156), std::fabs(t157)))), detail::least(detail::least(detail::least(std::fabs(t159), std::fabs(t160)), detail::least(std::fabs(t161), std::fabs(t162))), detail::least(detail::least(std::fabs(t164), std::fabs(t165)), detail::least(detail::most(detail::most(std::fabs(t168), detail::zero_as_min(mu)), detail::zero_as_min(t57)), detail::most(std::fabs(t169), detail::zero_as_min(mu)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t170), detail::zero_as_min(t57)), std::fabs(t171)), detail::least(detail::most(std::fabs(t172), detail::zero_as_min(t81)), detail::most(std::fabs(t173), detail::zero_as_min(t32)))), detail::least(detail::least(std::fabs(t183), std::fabs(t184)), detail::least(std::fabs(t185), std::fabs(t186)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t258), detail::zero_as_min(t257)), detail::most(std::fabs(t259), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t260), detail::zero_as_min(t4)), std::fabs(t261))), detail::least(detail::least(std::fabs(t262), detail::most(std::fabs(t286), detail::zero_as_min(t285))), detail::least(detail::most(std::fabs(t287), detail::zero_as_min(t50)), std::fabs(t288)))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t294), detail::zero_as_min(t293)), detail::most(std::fabs(t295), detail::zero_as_min(t50))), detail::least(std::fabs(t296), detail::most(std::fabs(t346), detail::zero_as_min(t345)))), detail::least(detail::least(std::fabs(t347), detail::most(detail::most(std::fabs(t349), detail::zero_as_min(t0)), detail::zero_as_min(t348))), detail::least(detail::most(detail::most(std::fabs(t350), detail::zero_as_min(t4)), detail::zero_as_min(t348)), detail::most(std::fabs(t351), detail::zero_as_min(t348))))), detail::least(detail::least(detail::least(std::fabs(t352), std::fabs(t353)), detail::least(detail::most(std::fabs(t360), detail::zero_as_min(t359)), std::fabs(t361))), detail::least(detail::least(detail::most(detail::most(std::fabs(t363), detail::zero_as_min(t0)), detail::zero_as_min(t362)), detail::most(detail::most(std::fabs(t364), detail::zero_as_min(t4)), detail::zero_as_min(t362))), detail::least(detail::most(std::fabs(t365), detail::zero_as_min(t362)), std::fabs(t366))))), detail::least(detail::least(detail::least(std::fabs(t367), detail::most(std::fabs(t384), detail::zero_as_min(t383))), detail::least(detail::most(std::fabs(t387), detail::zero_as_min(t386)), detail::most(std::fabs(t390), detail::zero_as_min(t389)))), detail::most(std::fabs(t393), detail::zero_as_min(t392)))))), std::numeric_limits<Real>::min());
+        const bool written = usable && finite && !doubtful;
+        v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
+        v_My_[i] = written ? v_My_out : v_My_[i];
+        v_mx_[i] = written ? v_mx_out : v_mx_[i];
+        v_my_[i] = written ? v_my_out : v_my_[i];
+        w_M_[i] = written ? w_M_out : w_M_[i];
+        w_m_[i] = written ? w_m_out : w_m_[i];
+        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+    }
+}
+
+// The pairs collide_rough_batch_2d left to the scalar collide_rough (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_rough_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide_rough<Real>(M_[i], m_[i], R_M_[i], R_m_[i], q_M_[i], q_m_[i], std::array<Real, 2>{C_Mx_[i], C_My_[i]}, std::array<Real, 2>{C_mx_[i], C_my_[i]}, std::array<Real, 2>{v_Mx_[i], v_My_[i]}, std::array<Real, 2>{v_mx_[i], v_my_[i]}, w_M_[i], w_m_[i], eps_[i], b_[i], mu_[i]);
+        v_Mx_[i] = out.v_M[0];
+        v_My_[i] = out.v_M[1];
+        v_mx_[i] = out.v_m[0];
+        v_my_[i] = out.v_m[1];
+        w_M_[i] = out.w_M;
+        w_m_[i] = out.w_m;
+        status_[i] = out.status;
+    }
+}
+
+// collide_rough_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// processor's own prefetching, following so many arrays, falls behind.
+template <class Real, bool with_status>
+inline void collide_rough_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64;
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t b = 0;
+    for (; b + block <= count; b += block) {
+        if (b + ahead < count) {
+            IMPACT_PREFETCH(M_ + b + ahead, 0);
+            IMPACT_PREFETCH(m_ + b + ahead, 0);
+            IMPACT_PREFETCH(R_M_ + b + ahead, 0);
+            IMPACT_PREFETCH(R_m_ + b + ahead, 0);
+            IMPACT_PREFETCH(q_M_ + b + ahead, 0);
+            IMPACT_PREFETCH(q_m_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_My_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_my_ + b + ahead, 0);
+            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_M_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_m_ + b + ahead, 1);
+            IMPACT_PREFETCH(eps_ + b + ahead, 0);
+            IMPACT_PREFETCH(b_ + b + ahead, 0);
+            IMPACT_PREFETCH(mu_ + b + ahead, 0);
+            if constexpr (with_status)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        collide_rough_batch_2d<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    }
+    collide_rough_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+}
+
+// collide_rough_batch_2d over blocks of 8 pairs for arrays that start at one offset within their pages:
+// pair i of every array then falls on the same cache sets. The read-only array k is read
+// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
+// at offsets 128 bytes apart, as if staggered.
+template <class Real, bool with_status>
+inline void collide_rough_batch_2d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 13;
+    impact::status own[block];  // the statuses, where the caller wants none
+    const Real* const from[read_only] = {M_, m_, R_M_, R_m_, q_M_, q_m_, C_Mx_, C_My_, C_mx_, C_my_, eps_, b_, mu_};
+    alignas(64) Real stage[read_only][ring][block];
+    auto lead = [](std::size_t k) { return 2 * (k + 1); };
+    auto read = [&](std::size_t k, std::size_t j) {
+        for (std::size_t i = 0; i < block; ++i)
+            stage[k][j % ring][i] = from[k][j * block + i];
+    };
+    const std::size_t blocks = count / block;
+    for (std::size_t k = 0; k < read_only; ++k)
+        for (std::size_t j = 0; j < lead(k) && j < blocks; ++j)
+            read(k, j);
+    std::size_t b = 0;
+    for (std::size_t j = 0; j < blocks; ++j, b += block) {
+        if (b + ahead < count) {
+            if (b + ahead + block * lead(0) < count)
+                IMPACT_PREFETCH(M_ + b + ahead + block * lead(0), 0);
+            if (b + ahead + block * lead(1) < count)
+                IMPACT_PREFETCH(m_ + b + ahead + block * lead(1), 0);
+            if (b + ahead + block * lead(2) < count)
+                IMPACT_PREFETCH(R_M_ + b + ahead + block * lead(2), 0);
+            if (b + ahead + block * lead(3) < count)
+                IMPACT_PREFETCH(R_m_ + b + ahead + block * lead(3), 0);
+            if (b + ahead + block * lead(4) < count)
+                IMPACT_PREFETCH(q_M_ + b + ahead + block * lead(4), 0);
+            if (b + ahead + block * lead(5) < count)
+                IMPACT_PREFETCH(q_m_ + b + ahead + block * lead(5), 0);
+            if (b + ahead + block * lead(6) < count)
+                IMPACT_PREFETCH(C_Mx_ + b + ahead + block * lead(6), 0);
+            if (b + ahead + block * lead(7) < count)
+                IMPACT_PREFETCH(C_My_ + b + ahead + block * lead(7), 0);
+            if (b + ahead + block * lead(8) < count)
+                IMPACT_PREFETCH(C_mx_ + b + ahead + block * lead(8), 0);
+            if (b + ahead + block * lead(9) < count)
+                IMPACT_PREFETCH(C_my_ + b + ahead + block * lead(9), 0);
+            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_M_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_m_ + b + ahead, 1);
+            if (b + ahead + block * lead(10) < count)
+                IMPACT_PREFETCH(eps_ + b + ahead + block * lead(10), 0);
+            if (b + ahead + block * lead(11) < count)
+                IMPACT_PREFETCH(b_ + b + ahead + block * lead(11), 0);
+            if (b + ahead + block * lead(12) < count)
+                IMPACT_PREFETCH(mu_ + b + ahead + block * lead(12), 0);
+            if constexpr (with_status)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        for (std::size_t k = 0; k < read_only; ++k)
+            if (j + lead(k) < blocks)
+                read(k, j + lead(k));
+        const std::size_t r = j % ring;
+        collide_rough_batch_2d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], with_status ? status_ + b : own);
+        collide_rough_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    }
+    collide_rough_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+}
+
+} // namespace detail
+
+/// collide_rough over `count` collisions stored as structure of arrays: outputs named after
+/// inputs are updated in place. `status` (if not null) receives each status.
+/// The loop has no branches, so that compilers vectorise it; each result is bit for
+/// bit the scalar collide_rough's (compiled alike, e.g. -ffp-contract=off). The arrays written
+/// must not overlap any other array.
+template <class Real>
+inline void collide_rough_batch(const collide_rough_batch_data<Real, 2>& data) noexcept
+{
+    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the
+    // distances are a double's; other types keep the plain loop).
+    if constexpr (sizeof(Real) == sizeof(double))
+        if (detail::crowded(std::array<const void*, 13>{data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.eps, data.beta, data.mu})) {
+            if (data.status)
+                detail::collide_rough_batch_2d_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
+            else
+                detail::collide_rough_batch_2d_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+            return;
+        }
+    if (data.status)
+        detail::collide_rough_batch_2d_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
+    else
+        detail::collide_rough_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+}
+
 } // namespace impact

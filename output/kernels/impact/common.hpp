@@ -283,4 +283,148 @@ struct collide_rough_result {
     impact::status status;
 };
 
+/// Structure-of-arrays data for collide_rough_batch: one array per scalar, N per vector.
+/// The arrays written (velocities, status) must not overlap any other.
+template <class Real, std::size_t N>
+struct collide_rough_batch_data {
+    std::size_t count;
+    const Real* M;
+    const Real* m;
+    const Real* R_M;
+    const Real* R_m;
+    const Real* q_M;
+    const Real* q_m;
+    std::array<const Real*, N> C_M;
+    std::array<const Real*, N> C_m;
+    std::array<Real*, N> v_M;
+    std::array<Real*, N> v_m;
+    Real* w_M;
+    Real* w_m;
+    const Real* eps;
+    const Real* beta;
+    const Real* mu;
+    impact::status* status;
+};
+
+/// The arrays of collide_rough_batch_data, owned: one allocation holds them all, array k starting
+/// 64 + 256 k bytes (modulo 4 KiB) past a page boundary. Arrays allocated one by one all
+/// start at one offset within their pages: pair i of every array then falls on the same
+/// cache sets, and a large batch runs about a fifth slower. Each array holds `count`
+/// values, not initialised, and starts on a 64-byte boundary. The constructor throws
+/// std::bad_alloc, or std::bad_array_new_length for a count no allocation can hold.
+/// Move-only; an object moved from holds no arrays.
+template <class Real, std::size_t N>
+class collide_rough_batch_arrays {
+public:
+    static_assert(std::is_floating_point_v<Real>, "collide_rough_batch_arrays holds floating-point values");
+
+    explicit collide_rough_batch_arrays(std::size_t count) : count_(count)
+    {
+        // Each array padded to whole pages plus `apart`; the bytes in all must not wrap around.
+        constexpr std::size_t most = (std::numeric_limits<std::size_t>::max() - first - reals * (page + apart)) / per_pair;
+        if (count > most)
+            throw std::bad_array_new_length();
+        stride_ = (count * sizeof(Real) + page - 1) / page * page + apart;
+        block_ = static_cast<unsigned char*>(::operator new(first + reals * stride_ + count * sizeof(impact::status), std::align_val_t{page}));
+        for (std::size_t a = 0; a < reals; ++a)
+            std::uninitialized_default_construct_n(at<Real>(a), count);
+        std::uninitialized_default_construct_n(at<impact::status>(reals), count);
+    }
+    collide_rough_batch_arrays(collide_rough_batch_arrays&& other) noexcept { swap(other); }
+    collide_rough_batch_arrays& operator=(collide_rough_batch_arrays&& other) noexcept
+    {
+        collide_rough_batch_arrays(std::move(other)).swap(*this);
+        return *this;
+    }
+    collide_rough_batch_arrays(const collide_rough_batch_arrays&) = delete;
+    collide_rough_batch_arrays& operator=(const collide_rough_batch_arrays&) = delete;
+    ~collide_rough_batch_arrays()
+    {
+        if (block_)
+            ::operator delete(block_, std::align_val_t{page});
+    }
+
+    std::size_t count() const noexcept { return count_; }
+    Real* M() noexcept { return at<Real>(0); }
+    const Real* M() const noexcept { return at<Real>(0); }
+    Real* m() noexcept { return at<Real>(1); }
+    const Real* m() const noexcept { return at<Real>(1); }
+    Real* R_M() noexcept { return at<Real>(2); }
+    const Real* R_M() const noexcept { return at<Real>(2); }
+    Real* R_m() noexcept { return at<Real>(3); }
+    const Real* R_m() const noexcept { return at<Real>(3); }
+    Real* q_M() noexcept { return at<Real>(4); }
+    const Real* q_M() const noexcept { return at<Real>(4); }
+    Real* q_m() noexcept { return at<Real>(5); }
+    const Real* q_m() const noexcept { return at<Real>(5); }
+    Real* C_M(std::size_t axis) noexcept { return at<Real>(6 + axis); }
+    const Real* C_M(std::size_t axis) const noexcept { return at<Real>(6 + axis); }
+    Real* C_m(std::size_t axis) noexcept { return at<Real>(6 + N + axis); }
+    const Real* C_m(std::size_t axis) const noexcept { return at<Real>(6 + N + axis); }
+    Real* v_M(std::size_t axis) noexcept { return at<Real>(6 + 2 * N + axis); }
+    const Real* v_M(std::size_t axis) const noexcept { return at<Real>(6 + 2 * N + axis); }
+    Real* v_m(std::size_t axis) noexcept { return at<Real>(6 + 3 * N + axis); }
+    const Real* v_m(std::size_t axis) const noexcept { return at<Real>(6 + 3 * N + axis); }
+    Real* w_M() noexcept { return at<Real>(6 + 4 * N); }
+    const Real* w_M() const noexcept { return at<Real>(6 + 4 * N); }
+    Real* w_m() noexcept { return at<Real>(7 + 4 * N); }
+    const Real* w_m() const noexcept { return at<Real>(7 + 4 * N); }
+    Real* eps() noexcept { return at<Real>(8 + 4 * N); }
+    const Real* eps() const noexcept { return at<Real>(8 + 4 * N); }
+    Real* beta() noexcept { return at<Real>(9 + 4 * N); }
+    const Real* beta() const noexcept { return at<Real>(9 + 4 * N); }
+    Real* mu() noexcept { return at<Real>(10 + 4 * N); }
+    const Real* mu() const noexcept { return at<Real>(10 + 4 * N); }
+    impact::status* status() noexcept { return at<impact::status>(reals); }
+    const impact::status* status() const noexcept { return at<impact::status>(reals); }
+
+    /// The arrays as collide_rough_batch takes them.
+    collide_rough_batch_data<Real, N> data() noexcept
+    {
+        collide_rough_batch_data<Real, N> d{};
+        d.count = count_;
+        d.M = M();
+        d.m = m();
+        d.R_M = R_M();
+        d.R_m = R_m();
+        d.q_M = q_M();
+        d.q_m = q_m();
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.C_M[axis] = C_M(axis);
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.C_m[axis] = C_m(axis);
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.v_M[axis] = v_M(axis);
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.v_m[axis] = v_m(axis);
+        d.w_M = w_M();
+        d.w_m = w_m();
+        d.eps = eps();
+        d.beta = beta();
+        d.mu = mu();
+        d.status = status();
+        return d;
+    }
+
+private:
+    static constexpr std::size_t reals = 11 + 4 * N;  // the arrays of Real, then the statuses
+    static constexpr std::size_t page = 4096, apart = 256, first = 64;
+    static constexpr std::size_t per_pair = reals * sizeof(Real) + sizeof(impact::status);  // bytes
+    template <class T>
+    T* at(std::size_t a) const noexcept
+    {
+        return block_ ? reinterpret_cast<T*>(block_ + first + a * stride_) : nullptr;
+    }
+    void swap(collide_rough_batch_arrays& other) noexcept
+    {
+        std::swap(count_, other.count_);
+        std::swap(stride_, other.stride_);
+        std::swap(block_, other.block_);
+    }
+
+    std::size_t count_ = 0;
+    std::size_t stride_ = 0;  // bytes from one array's start to the next
+    unsigned char* block_ = nullptr;
+};
+
 } // namespace impact
