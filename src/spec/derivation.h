@@ -214,4 +214,8 @@ derivation read_derivation(const std::string& path);
 /// Reads a derivation from text; `file` names it in messages.
 derivation parse_derivation(const std::string& contents, const std::string& file);
 
+/// The TOML of a derivation file without what cannot change a derivation (comments, spacing,
+/// the order of a table's keys), for keying cached results; none when it is not TOML.
+std::optional<std::string> meaningful_content(const std::string& contents);
+
 } // namespace impact::spec

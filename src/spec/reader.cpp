@@ -433,6 +433,17 @@ std::vector<T> read_all(table_reader& top, const std::string& file, std::string_
 
 } // namespace
 
+std::optional<std::string> meaningful_content(const std::string& contents)
+{
+    try {
+        std::ostringstream out;
+        out << toml::parse(contents);
+        return out.str();
+    } catch (const toml::parse_error&) {
+        return std::nullopt;
+    }
+}
+
 derivation parse_derivation(const std::string& contents, const std::string& file)
 {
     if (contents.size() > max_file_bytes)

@@ -58,7 +58,7 @@ echo "impact regenerate, cold and warm; $(nproc) cores, $cpu ($isa), load averag
 printf '%6s %4s %9s %9s %8s %9s %7s %10s %7s %9s %7s  %s\n' files jobs cold_s kernels_s derive_s warm_s warm/c \
   comment_s com/c change_s chg/c "cache after the change"
 # The seconds --timings gave a stage in the last run.
-stage() { grep -m1 "$1" "$scratch/last" | awk '{ print $2 }'; }
+stage() { { grep -m1 "$1" "$scratch/last" || echo 'impact: 0'; } | awk '{ print $2 }'; }
 for n in "${sizes[@]}"; do
   for jobs in "${jobs_list[@]}"; do
     d="$scratch/d$n-j$jobs"
