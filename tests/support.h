@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -84,6 +85,23 @@ inline std::map<std::string, std::string> everything_under(const std::filesystem
     }
     return found;
 }
+
+/// A folder of a test's own under the system's temporary folder, `<prefix>-<pid>-<n>`, empty
+/// when made and removed with everything in it at the end.
+struct temporary_folder {
+    std::filesystem::path root;
+    explicit temporary_folder(const std::string& prefix)
+    {
+        static int n = 0;
+        root = std::filesystem::temp_directory_path() /
+               (prefix + "-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
+        std::filesystem::remove_all(root);
+        std::filesystem::create_directories(root);
+    }
+    ~temporary_folder() { std::filesystem::remove_all(root); }
+    temporary_folder(const temporary_folder&) = delete;
+    temporary_folder& operator=(const temporary_folder&) = delete;
+};
 
 /// Makes `folder` look like an earlier Impact's output: `previous.txt`, listed in the
 /// marker Impact keeps there (its format as README.md gives it).

@@ -32,16 +32,8 @@ using impact::testing::snapshot;
 namespace {
 
 // A fresh folder under the system's temporary folder, removed at the end.
-struct scratch {
-    fs::path root;
-    scratch()
-    {
-        static int n = 0;
-        root = fs::temp_directory_path() / ("impact-test-cache-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-        fs::remove_all(root);
-        fs::create_directories(root);
-    }
-    ~scratch() { fs::remove_all(root); }
+struct scratch : impact::testing::temporary_folder {
+    scratch() : temporary_folder("impact-test-cache") {}
 };
 
 std::string read(const fs::path& path)

@@ -36,17 +36,12 @@ namespace {
 // A folder of its own under the system's temporary folder, holding derivations/ and an
 // output/ from an earlier run; `impact` runs inside it, so that messages name
 // `derivations/<file>` as a user sees them.
-struct scratch {
-    fs::path root;
-    scratch()
+struct scratch : impact::testing::temporary_folder {
+    scratch() : temporary_folder("impact-test-jobs")
     {
-        static int n = 0;
-        root = fs::temp_directory_path() / ("impact-test-jobs-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-        fs::remove_all(root);
         fs::create_directories(root / "derivations");
         impact::testing::previous_output(root / "output");
     }
-    ~scratch() { fs::remove_all(root); }
 
     void write(const std::string& relative, const std::string& bytes) const
     {

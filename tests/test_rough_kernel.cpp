@@ -71,6 +71,30 @@ double energy(const collision& c, const vec& v_M, const vec& v_m, double w_M, do
            0.5 * I_M * w_M * w_M + 0.5 * I_m * w_m * w_m;
 }
 
+// A collision drawn at random: masses and radii in [least, most], q in [least_q, 2/3],
+// centres, velocities and spins in [-1, 1], eps in [0, 1], beta in [-1, 1], mu in [0, 2].
+collision drawn(std::mt19937_64& random, double least, double most, double least_q)
+{
+    std::uniform_real_distribution<double> unit(-1, 1), positive(least, most), fraction(0, 1);
+    collision c;
+    c.M = positive(random);
+    c.m = positive(random);
+    c.R_M = positive(random);
+    c.R_m = positive(random);
+    c.q_M = least_q + fraction(random) * (2.0 / 3 - least_q);
+    c.q_m = least_q + fraction(random) * (2.0 / 3 - least_q);
+    c.C_M = {unit(random), unit(random)};
+    c.C_m = {unit(random), unit(random)};
+    c.v_M = {unit(random), unit(random)};
+    c.v_m = {unit(random), unit(random)};
+    c.w_M = unit(random);
+    c.w_m = unit(random);
+    c.eps = fraction(random);
+    c.beta = unit(random);
+    c.mu = 2 * fraction(random);
+    return c;
+}
+
 // Every output against the model: v_M' = v_M - J/M, v_m' = v_m + J/m,
 // w' = w - J_t/(q mass R), within `ulps` of the collision's largest speed.
 void check_against_model(const collision& c, double ulps)
@@ -129,24 +153,10 @@ BOOST_AUTO_TEST_CASE(sticking_and_sliding_follow_the_model)
 BOOST_AUTO_TEST_CASE(conservation_laws_and_the_energy_change)
 {
     std::mt19937_64 random(21);
-    std::uniform_real_distribution<double> unit(-1, 1), positive(0.1, 10), fraction(0, 1);
     for (int n = 0; n < 2000; ++n) {
-        collision c;
-        c.M = positive(random);
-        c.m = positive(random);
-        c.R_M = positive(random);
-        c.R_m = positive(random);
-        c.q_M = 0.05 + fraction(random) * (2.0 / 3 - 0.05);
-        c.q_m = 0.05 + fraction(random) * (2.0 / 3 - 0.05);
-        c.C_M = {unit(random), unit(random)};
-        c.C_m = {unit(random), unit(random)};
-        c.v_M = {unit(random), unit(random)};
-        c.v_m = {unit(random), unit(random)};
-        c.w_M = unit(random);
-        c.w_m = unit(random);
-        c.eps = fraction(random);
-        c.beta = unit(random);
-        c.mu = n % 5 == 0 ? std::numeric_limits<double>::infinity() : 2 * fraction(random);
+        collision c = drawn(random, 0.1, 10, 0.05);
+        if (n % 5 == 0)
+            c.mu = std::numeric_limits<double>::infinity();
         const auto out = run(c);
         const model e = expected(c);
         if (e.g_n <= 0) {
@@ -257,28 +267,14 @@ BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
     // pairs of every status, in one batch: each pair's velocities, spins and status are
     // the scalar kernel's, bit for bit.
     std::mt19937_64 random(2121);
-    std::uniform_real_distribution<double> unit(-1, 1), positive(0.01, 100), fraction(0, 1);
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
     const std::size_t count = 1003;  // not a multiple of a block
     impact::collide_rough_batch_arrays<double, 2> batch(count);
     std::vector<collision> pairs(count);
     for (std::size_t i = 0; i < count; ++i) {
         collision& c = pairs[i];
-        c.M = positive(random);
-        c.m = positive(random);
-        c.R_M = positive(random);
-        c.R_m = positive(random);
-        c.q_M = 0.01 + fraction(random) * (2.0 / 3 - 0.01);
-        c.q_m = 0.01 + fraction(random) * (2.0 / 3 - 0.01);
-        c.C_M = {unit(random), unit(random)};
-        c.C_m = {unit(random), unit(random)};
-        c.v_M = {unit(random), unit(random)};
-        c.v_m = {unit(random), unit(random)};
-        c.w_M = unit(random);
-        c.w_m = unit(random);
-        c.eps = fraction(random);
-        c.beta = unit(random);
-        c.mu = fraction(random);
+        c = drawn(random, 0.01, 100, 0.01);
+        c.mu /= 2;
         switch (i % 16) {
         case 1: c.mu = inf; break;
         case 2: c.mu = 0; c.C_M = {0, 0}; c.C_m = {1, 0}; c.v_M = {1, 0}; c.v_m = {0, 0}; c.w_M = c.w_m = 0; break;
