@@ -40,11 +40,14 @@ public:
         }
         for (const spec::binding& b : spec_kernel.substitute)
             substitutions_[d_.symbols.at(b.name).symbol] = d_.symbols.parse(b.expression);
+        // A let may use the lets before it, computed once and shared (K_t in dv_Mx and dw_M).
+        GiNaC::exmap earlier;
         for (const spec::binding& b : spec_kernel.let) {
             const GiNaC::ex symbol = d_.symbols.at(b.name).symbol;
             const GiNaC::ex value = in_kernel(d_.symbols.parse(b.expression));
-            require_inputs(k, value, b.name.value, b.expression.where);
+            require_inputs(k, value.subs(earlier, GiNaC::subs_options::no_pattern), b.name.value, b.expression.where);
             k.lets.emplace_back(symbol, value);
+            earlier[symbol] = value.subs(earlier, GiNaC::subs_options::no_pattern);
         }
         for (const spec::text& v : spec_kernel.velocities) {
             // An input (`v_M`), or an expression in the inputs that is a speed (`R_M*w_M`).
@@ -147,9 +150,10 @@ private:
                     extra.push_back(f.expression);
             return extra;
         };
+        // Each let in the inputs alone, the lets it uses written out.
         GiNaC::exmap lets;
         for (const auto& [symbol, value] : k.lets)
-            lets[symbol] = value;
+            lets[symbol] = value.subs(lets, GiNaC::subs_options::no_pattern);
         for (std::size_t c = 0; c < components.size(); ++c) {
             const spec::text& component = components[c];
             const result* named = d_.find_result(component.value);
