@@ -99,6 +99,11 @@ const char* name(status s)
     case status::coincident_centres: return "coincident_centres";
     case status::out_of_range: return "out_of_range";
     case status::underflow: return "underflow";
+    // collide_rough's own (no kernel tested here returns them).
+    case status::invalid_radius: return "invalid_radius";
+    case status::invalid_inertia: return "invalid_inertia";
+    case status::invalid_tangential_restitution: return "invalid_tangential_restitution";
+    case status::invalid_friction: return "invalid_friction";
     }
     return "(not a status)";
 }

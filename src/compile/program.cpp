@@ -1,5 +1,7 @@
 #include "compile/program.h"
 
+#include "engine/cases.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -203,7 +205,7 @@ private:
             const pair v = compensated_factor(order_.oriented(e, negated));
             return negated ? dd_neg(v) : v;
         }
-        if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "select_positive") {
+        if (engine::is_select(e)) {
             // A quantity defined by cases: each branch compensated, the pair selected.
             const int condition = value(e.op(0));
             const pair taken = compensated_in_branch(condition, true, e.op(1));
@@ -357,7 +359,7 @@ private:
             const int v = power(t);
             return negated ? op(opcode::neg, v) : v;
         }
-        if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "select_positive") {
+        if (engine::is_select(e)) {
             // Both branches are computed; each divides by its divisors only where it is the
             // one taken, and by 1 where it is discarded (see `op`).
             const int condition = value(e.op(0));

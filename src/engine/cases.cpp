@@ -154,10 +154,15 @@ GiNaC::ex select_of(const std::vector<case_value>& cases)
     return rest;
 }
 
+bool is_select(const GiNaC::ex& e)
+{
+    return GiNaC::is_the_function<select_positive_SERIAL>(e);
+}
+
 bool has_select(const GiNaC::ex& e)
 {
     for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "select_positive")
+        if (is_select(*it))
             return true;
     return false;
 }

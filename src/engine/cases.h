@@ -34,7 +34,8 @@ DECLARE_FUNCTION_3P(select_positive)
 /// cases exhaustive).
 GiNaC::ex select_of(const std::vector<case_value>& cases);
 
-/// Whether `e` holds a select_positive.
+/// Whether `e` is a select_positive, and whether it holds one.
+bool is_select(const GiNaC::ex& e);
 bool has_select(const GiNaC::ex& e);
 
 

@@ -51,8 +51,7 @@ public:
         }
         for (const spec::text& v : spec_kernel.velocities) {
             // An input (`v_M`), or an expression in the inputs that is a speed (`R_M*w_M`).
-            if (k.find_parameter(v.value) || v.value.find_first_of("*/+-()") == std::string::npos) {
-                const kernel_parameter* p = find_parameter(k, v);
+            if (const kernel_parameter* p = k.find_parameter(v.value)) {
                 for (const quantity& q : p->components)
                     k.velocities.push_back(q.symbol);
                 continue;
@@ -192,8 +191,7 @@ private:
         std::vector<GiNaC::ex> selects;
         for (const GiNaC::ex& side : {form, value})
             for (GiNaC::const_postorder_iterator it = side.postorder_begin(); it != side.postorder_end(); ++it)
-                if (GiNaC::is_a<GiNaC::function>(*it) &&
-                    GiNaC::ex_to<GiNaC::function>(*it).get_name() == "select_positive")
+                if (is_select(*it))
                     selects.push_back(*it);
         GiNaC::exmap named;
         std::vector<std::pair<GiNaC::ex, GiNaC::symbol>> classes;

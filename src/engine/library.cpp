@@ -22,6 +22,16 @@ bool library::all_hold() const
     return std::all_of(derived.begin(), derived.end(), [](const auto& entry) { return entry.second.all_hold(); });
 }
 
+std::vector<std::filesystem::path> derivation_files(const std::filesystem::path& directory)
+{
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(directory))
+        if (entry.is_regular_file() && entry.path().extension() == ".toml")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
 std::vector<spec::derivation> read_directory(const std::filesystem::path& directory)
 {
     if (!std::filesystem::exists(directory))
@@ -29,11 +39,7 @@ std::vector<spec::derivation> read_directory(const std::filesystem::path& direct
                                                 "(or, to derive one file, its path)");
     if (!std::filesystem::is_directory(directory))
         throw error({directory.string(), 0, 0}, "not a folder of derivation files");
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(directory))
-        if (entry.is_regular_file() && entry.path().extension() == ".toml")
-            files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
+    const std::vector<std::filesystem::path> files = derivation_files(directory);
     if (files.empty())
         throw error({directory.string(), 0, 0}, "holds no derivation files (*.toml)");
     std::vector<spec::derivation> sources;

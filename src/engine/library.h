@@ -27,6 +27,9 @@ struct library {
 /// Reads every `*.toml` in `directory` (sorted by file name). Throws `impact::error`.
 std::vector<spec::derivation> read_directory(const std::filesystem::path& directory);
 
+/// The derivation files of a folder (`*.toml`, regular files), sorted by path.
+std::vector<std::filesystem::path> derivation_files(const std::filesystem::path& directory);
+
 /// Derives `sources` in dependency order; with `only`, just that id and what it uses.
 library derive_all(const std::vector<spec::derivation>& sources, const std::string& only = "");
 

@@ -50,14 +50,9 @@ std::optional<std::string> output_key(const fs::path& derivations)
 {
     if (!fs::is_directory(derivations))
         return std::nullopt;
-    std::vector<fs::path> paths;
-    for (const auto& entry : fs::directory_iterator(derivations))
-        if (entry.is_regular_file() && entry.path().extension() == ".toml")
-            paths.push_back(entry.path());
-    std::sort(paths.begin(), paths.end());
     std::string key = "a regeneration of output/\n" + cache::program_fingerprint() + "\n" +
                       report::tex_installation() + "\n";
-    for (const fs::path& path : paths) {
+    for (const fs::path& path : engine::derivation_files(derivations)) {
         std::ifstream in(path, std::ios::binary);
         std::ostringstream text;
         text << in.rdbuf();

@@ -27,6 +27,7 @@
 // The triad's three arrays are laid out alike.
 
 #include "batch_before_underflow.hpp"
+#include "machine.hpp"
 #include "impact/impact.hpp"
 
 #include <benchmark/benchmark.h>
@@ -587,44 +588,6 @@ long huge_pages_granted()
     return kib < 0 ? -1 : kib / 1024;
 }
 
-// The instruction set the loops were compiled for (the widest vectors decide how many
-// pairs a vector holds), the compiler, and the processor they ran on.
-std::string isa()
-{
-    std::string set;
-#if defined(__AVX512F__)
-    set = "AVX-512F";
-#elif defined(__AVX2__)
-    set = "AVX2";
-#elif defined(__AVX__)
-    set = "AVX";
-#elif defined(__SSE2__)
-    set = "SSE2";
-#else
-    set = "no x86 vectors known here";
-#endif
-#if defined(__FMA__)
-    set += " + FMA";
-#endif
-#if defined(__clang__)
-    set += ", Clang " __clang_version__;
-#elif defined(__GNUC__)
-    set += ", GCC " __VERSION__;
-#endif
-    std::string cpu = "unknown processor";
-    if (std::FILE* f = std::fopen("/proc/cpuinfo", "r")) {
-        char line[256];
-        while (std::fgets(line, sizeof line, f))
-            if (std::string(line).rfind("model name", 0) == 0) {
-                cpu = std::string(line).substr(std::string(line).find(':') + 2);
-                cpu.erase(cpu.find_last_not_of("\n") + 1);
-                break;
-            }
-        std::fclose(f);
-    }
-    return set + ", on " + cpu;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -641,7 +604,7 @@ int main(int argc, char** argv)
     std::printf("\nMedians of %d repetitions; targets: batch / hand-written >= 0.95, and out of cache the batch's "
                 "bytes/s >= 80%% of the triad's. batch/before: the batch loop against the same loop before its "
                 "underflow test.\nCompiled for %s.\n",
-                repetitions, isa().c_str());
+                repetitions, impact::benchmarks::isa().c_str());
     std::printf("%-3s %-12s %-9s %-12s %9s %9s %9s %10s %10s %11s %10s %12s\n", "", "pairs", "pages", "layout",
                 "scalar M/s", "batch M/s", "hand M/s", "triad GB/s", "batch/hand", "batch/triad", "before M/s",
                 "batch/before");

@@ -7,6 +7,7 @@
 // set the loops were compiled for and the processor they ran on.
 
 #include "impact/impact.hpp"
+#include "machine.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -56,6 +57,25 @@ pair_data drawn()
     return p;
 }
 
+// A batch's arrays that collide and collide_rough share: masses, eps, centres, velocities, status.
+template <class Data>
+Data shared_arrays(pair_data& p, std::vector<impact::status>& status)
+{
+    Data d{};
+    d.count = pairs;
+    d.M = p.M.data();
+    d.m = p.m.data();
+    d.eps = p.eps.data();
+    for (std::size_t a = 0; a < 2; ++a) {
+        d.C_M[a] = p.C_M[a].data();
+        d.C_m[a] = p.C_m[a].data();
+        d.v_M[a] = p.v_M[a].data();
+        d.v_m[a] = p.v_m[a].data();
+    }
+    d.status = status.data();
+    return d;
+}
+
 enum loop { smooth_scalar, rough_scalar, smooth_batch, rough_batch, loops };
 const char* const names[] = {"collide", "collide_rough", "collide_batch", "collide_rough_batch"};
 
@@ -96,42 +116,20 @@ void side_by_side(benchmark::State& state)
                 }
                 break;
             case smooth_batch: {
-                impact::collide_batch_data<double, 2> d{};
-                d.count = pairs;
-                d.M = p.M.data();
-                d.m = p.m.data();
-                d.eps = p.eps.data();
-                for (std::size_t a = 0; a < 2; ++a) {
-                    d.C_M[a] = p.C_M[a].data();
-                    d.C_m[a] = p.C_m[a].data();
-                    d.v_M[a] = p.v_M[a].data();
-                    d.v_m[a] = p.v_m[a].data();
-                }
-                d.status = status.data();
+                auto d = shared_arrays<impact::collide_batch_data<double, 2>>(p, status);
                 impact::collide_batch(d);
                 break;
             }
             case rough_batch: {
-                impact::collide_rough_batch_data<double, 2> d{};
-                d.count = pairs;
-                d.M = p.M.data();
-                d.m = p.m.data();
+                auto d = shared_arrays<impact::collide_rough_batch_data<double, 2>>(p, status);
                 d.R_M = p.R_M.data();
                 d.R_m = p.R_m.data();
                 d.q_M = p.q_M.data();
                 d.q_m = p.q_m.data();
-                d.eps = p.eps.data();
                 d.beta = p.beta.data();
                 d.mu = p.mu.data();
                 d.w_M = p.w_M.data();
                 d.w_m = p.w_m.data();
-                for (std::size_t a = 0; a < 2; ++a) {
-                    d.C_M[a] = p.C_M[a].data();
-                    d.C_m[a] = p.C_m[a].data();
-                    d.v_M[a] = p.v_M[a].data();
-                    d.v_m[a] = p.v_m[a].data();
-                }
-                d.status = status.data();
                 impact::collide_rough_batch(d);
                 break;
             }
@@ -152,31 +150,6 @@ void side_by_side(benchmark::State& state)
     state.counters["rough/smooth batch"] = seconds[smooth_batch] / seconds[rough_batch];
 }
 
-std::string isa()
-{
-    std::string set;
-#if defined(__AVX512F__)
-    set = "AVX-512F";
-#elif defined(__AVX2__)
-    set = "AVX2";
-#elif defined(__SSE2__)
-    set = "SSE2";
-#elif defined(__ARM_NEON)
-    set = "NEON";
-#else
-    set = "no vector extension known here";
-#endif
-#if defined(__FMA__)
-    set += " + FMA";
-#endif
-#if defined(__clang__)
-    set += ", Clang " __clang_version__;
-#elif defined(__GNUC__)
-    set += ", GCC " __VERSION__;
-#endif
-    return set;
-}
-
 } // namespace
 
 BENCHMARK(side_by_side)->UseManualTime()->Repetitions(5)->ReportAggregatesOnly(true);
@@ -187,6 +160,6 @@ int main(int argc, char** argv)
     benchmark::RunSpecifiedBenchmarks();
     std::printf("M/s: million pairs per second, in cache (%zu pairs, 2D); rough/smooth: the rough kernel's speed "
                 "as a share of the smooth one's. Compiled for %s.\n",
-                pairs, isa().c_str());
+                pairs, impact::benchmarks::isa().c_str());
     return 0;
 }
