@@ -188,6 +188,22 @@ BOOST_AUTO_TEST_CASE(a_folder_holding_a_users_file_is_refused_and_the_file_kept)
     BOOST_TEST(read(s.root / "cache" / (std::string(64, 'a') + ".entry")) == "someone else's\n");
 }
 
+// Two regenerations opening one new folder at once: the first is writing its tag (a
+// temporary file, renamed into place) when the second looks. That folder is Impact's.
+BOOST_AUTO_TEST_CASE(a_new_folder_whose_tag_another_regeneration_is_writing_is_taken)
+{
+    const scratch s;
+    fs::create_directories(s.root / "cache");
+    write(s.root / "cache" / "CACHEDIR.TAG.tmp-4242-0", "");
+    cache::store store(s.root / "cache");
+    BOOST_TEST(fs::exists(s.root / "cache" / "CACHEDIR.TAG"));
+    // A temporary entry is another matter: entries come after the tag.
+    const scratch t;
+    fs::create_directories(t.root / "cache");
+    write(t.root / "cache" / (std::string(64, 'b') + ".entry.tmp-4242-1"), "");
+    BOOST_CHECK_THROW(cache::store(t.root / "cache"), impact::error);
+}
+
 BOOST_AUTO_TEST_CASE(a_file_given_as_the_cache_folder_is_refused)
 {
     const scratch s;

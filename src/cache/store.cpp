@@ -96,6 +96,9 @@ std::optional<std::string> foreign_file(const fs::path& folder)
             if (!text || text->find("created by Impact") == std::string::npos)
                 return name;
             has_tag = true;
+        } else if (name.rfind(std::string(tag_name) + ".tmp-", 0) == 0 && std::regex_match(name, temporary_name())) {
+            // Another regeneration tagging the same new folder at this moment: its tag is
+            // written before any entry, so this is not yet a reason to refuse the folder.
         } else if (std::regex_match(name, entry_name()) || std::regex_match(name, temporary_name())) {
             has_other = true;
         } else {
