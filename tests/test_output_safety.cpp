@@ -414,11 +414,12 @@ BOOST_AUTO_TEST_CASE(a_full_disk_is_an_error_and_the_output_survives)
     BOOST_TEST_REQUIRE(can_mount(), "this machine does not let a test mount a small disk (unshare -rm)");
     project p;
     BOOST_TEST_REQUIRE(p.impact("regenerate").status == 0);
-    // A disk of 448 KiB holding the previous output (about 300 KiB, the report included):
-    // the new one, written beside it, cannot fit. What the disk holds after is copied out.
+    // A disk of 768 KiB holding the previous output (about 570 KiB on a tmpfs, the report and
+    // its three figures' PDFs included): the new one, written beside it, cannot fit. What the
+    // disk holds after is copied out.
     fs::create_directories(p.root / "disk");
     const std::string script =
-        "mount -t tmpfs -o size=448k tmpfs disk && cp -a output disk/ && "
+        "mount -t tmpfs -o size=768k tmpfs disk && cp -a output disk/ && "
         "(cd disk && " + std::string(IMPACT_BINARY) + " regenerate --derivations ../derivations; "
         "echo \"exit $?\") > result.txt 2>&1; cp -a disk/. after/";
     fs::create_directories(p.root / "after");

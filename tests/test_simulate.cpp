@@ -274,6 +274,33 @@ BOOST_AUTO_TEST_CASE(fig2_draws_three_billiard_shots_to_scale)
     BOOST_TEST(std::atan2(last[2], last[1]) * 180 / pi == -30.0, boost::test_tools::tolerance(1e-3));
 }
 
+// The rough-sphere figure against Walton's model typed here: two equal solid spheres
+// (q = 2/5, so 1/m_t = 1 + 1 + 5/2 + 5/2 = 7 for unit masses, m_r = 1/2), eps = 0.9,
+// beta = 0.4. Sticking: beta_eff = beta; sliding: -1 + mu (1 + eps) (m_r/m_t)/tan psi,
+// where (1 + beta) m_t tan psi > mu (1 + eps) m_r.
+BOOST_AUTO_TEST_CASE(the_rough_figure_follows_waltons_model)
+{
+    const auto files = report::figure_files();
+    const std::string& data = files.at("figures/rough_beta_eff.dat");
+    const double mu[] = {0.05, 0.1, 0.2, 0.5};
+    const double m_r = 0.5, m_t = 1.0 / 7, eps = 0.9, beta = 0.4;
+    for (const char* psi_text : {"5.0", "20.0", "30.0", "45.0", "60.0", "80.0", "89.0"}) {
+        const std::vector<double> row = row_at(data, psi_text);
+        BOOST_TEST_REQUIRE(row.size() == 6u, psi_text);
+        const double tan_psi = std::tan(row[0] * pi / 180);
+        for (int j = 0; j < 4; ++j) {
+            const bool slides = (1 + beta) * m_t * tan_psi > mu[j] * (1 + eps) * m_r;
+            const double expected = slides ? -1 + mu[j] * (1 + eps) * (m_r / m_t) / tan_psi : beta;
+            // The table keeps four decimals: within half a unit of the last.
+            BOOST_TEST(std::fabs(row[j + 1] - expected) <= 0.5e-4 + 1e-12, psi_text << ", mu = " << mu[j]);
+        }
+        BOOST_TEST(std::fabs(row[5] - beta) <= 0.5e-4 + 1e-12);   // mu = +inf: always sticks
+    }
+    const std::string& figure = files.at("figures/rough_beta_eff.tex");
+    BOOST_TEST(figure.find("\\includegraphics{figures/rough_beta_eff_plot}") != std::string::npos);
+    BOOST_TEST(figure.find("\\label{fig:rough-beta-eff}") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(figures_are_the_same_bytes_every_time)
 {
     BOOST_TEST((report::figure_files() == report::figure_files()));

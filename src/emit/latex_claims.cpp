@@ -149,14 +149,14 @@ std::string fragment_writer::cases_text(const engine::check_result& c) const
     const engine::quantity* q = d_.symbols.find(c.cases_of);
     for (const engine::check_result::part& p : c.parts) {
         if (p.in_case && q) {
+            // The case as proven when it is short; else as the file writes it (its value
+            // in the declared quantities is displayed where the quantity is defined).
             const engine::case_value& one = *p.in_case;
-            const char* relation = one.op == engine::relation::less_equal      ? "\\leq"
-                                   : one.op == engine::relation::less          ? "<"
-                                   : one.op == engine::relation::greater_equal ? "\\geq"
-                                                                               : ">";
-            parts.push_back(fmt::format("case {} (${} = {}$ where ${} {} {}$): {}", p.first, math(q->symbol),
-                                        math(one.value), math(one.lhs), relation, math(one.rhs),
-                                        status_text(p.outcome)));
+            std::string value = math(one.value);
+            if (latex_width(value) > 0.4 * content_width)
+                value = math(one.as_written, &one.written);
+            parts.push_back(fmt::format("case {} (${} = {}$ where ${}$): {}", p.first, math(q->symbol), value,
+                                        case_condition(one), status_text(p.outcome)));
         } else if (p.boundary) {
             parts.push_back(fmt::format("cases {} and {} at ${} = {}$: {}", p.first, p.second,
                                         math(p.boundary->first), math(p.boundary->second), status_text(p.outcome)));
@@ -258,8 +258,14 @@ std::string fragment_writer::checks() const
                                             ? latex_as_written(*w.tree(), order_)
                                             : claim_math(c, order_, &w);
         const bool shown = wants_display(inline_math);
-        out += shown ? display(claim_lhs(c, &w), latex_relation(c.op), c.stated.rhs(), &w)
-                     : "$" + inline_math + "$";
+        const std::string lhs = claim_lhs(c, &w);
+        if (shown && !c.limit && latex_width(lhs) > content_width - 40)
+            // A left side too wide for a line of its own (an energy summed over both
+            // spheres): broken like the right side, which follows on lines of its own.
+            out += "\n\\begin{align*}\n" + rows("", c.stated.lhs(), &w, "", "") + " \\\\\n" +
+                   rows("", c.stated.rhs(), &w, "", latex_relation(c.op)) + "\n\\end{align*}\n";
+        else
+            out += shown ? display(lhs, latex_relation(c.op), c.stated.rhs(), &w) : "$" + inline_math + "$";
         std::vector<std::string> conditions;
         std::vector<std::string> at;
         for (const auto& [symbol, value] : c.at)

@@ -358,20 +358,67 @@ std::string fragment_writer::rejected_solutions(const engine::step_result& s) co
     return fmt::format("The equations have {} solutions; rejected: {}.\n", s.solutions.size(), listing(rejected));
 }
 
+namespace {
+
+const char* relation_latex(engine::relation op)
+{
+    return op == engine::relation::less_equal      ? "\\leq"
+           : op == engine::relation::less          ? "<"
+           : op == engine::relation::greater_equal ? "\\geq"
+                                                   : ">";
+}
+
+} // namespace
+
 std::string fragment_writer::cases_math(const std::vector<engine::case_value>& cases, bool derived) const
 {
     std::vector<std::string> rows;
-    for (const engine::case_value& c : cases) {
-        const char* relation = c.op == engine::relation::less_equal      ? "\\leq"
-                               : c.op == engine::relation::less          ? "<"
-                               : c.op == engine::relation::greater_equal ? "\\geq"
-                                                                         : ">";
+    for (const engine::case_value& c : cases)
         rows.push_back(fmt::format("{} & \\text{{if }} {} {} {}",
                                    derived ? math(c.value) : math(c.as_written, &c.written),
-                                   math(derived ? c.lhs : c.written_lhs), relation,
+                                   math(derived ? c.lhs : c.written_lhs), relation_latex(c.op),
                                    math(derived ? c.rhs : c.written_rhs)));
-    }
     return fmt::format("\\begin{{cases}} {} \\end{{cases}}", fmt::join(rows, " \\\\ "));
+}
+
+std::string fragment_writer::case_condition(const engine::case_value& c) const
+{
+    const std::string derived = fmt::format("{} {} {}", math(c.lhs), relation_latex(c.op), math(c.rhs));
+    if (latex_width(derived) < 0.6 * content_width)
+        return derived;
+    return fmt::format("{} {} {}", math(c.written_lhs), relation_latex(c.op), math(c.written_rhs));
+}
+
+std::optional<std::string> fragment_writer::derived_cases_rows(const std::string& lhs,
+                                                               const std::vector<engine::case_value>& cases,
+                                                               const std::string& tag, bool must) const
+{
+    const std::string whole = cases_math(cases, true);
+    if (latex_width(lhs) + latex_width(whole) < content_width - 40)
+        return fmt::format("  {} &= {}{}", lhs, whole, tag.empty() ? "" : " " + tag);
+    const std::string notag = tag.empty() ? "" : " \\notag";
+    std::string out;
+    if (!must) {
+        // Shown only when every case reads in at most three lines that fit.
+        for (const engine::case_value& c : cases) {
+            const std::vector<std::string> lines =
+                latex_lines(textbook_form(c.value, order_).value, order_, nullptr, content_width - 60);
+            if (lines.size() > 3)
+                return std::nullopt;
+            for (const std::string& line : lines)
+                if (latex_width(line) > content_width - 40)
+                    return std::nullopt;
+        }
+    }
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const engine::case_value& c = cases[i];
+        if (i > 0)
+            out += " \\\\\n";
+        out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", case_condition(c), notag);
+        const textbook_value shown = textbook_form(c.value, order_);
+        out += rows(lhs, shown.value, nullptr, i + 1 == cases.size() ? tag : "");
+    }
+    return out;
 }
 
 // A definition as its file writes it, its parentheses kept ((v'_M - v'_m) - (v_M - v_m),
@@ -394,10 +441,16 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
         out += fmt::format("Defining ${}${} by cases:\n\\begin{{align*}}\n  {} &= {}", symbol, because, symbol,
                            cases_math(s.cases, false));
         // What the cases come to in the declared quantities, when that differs.
-        const std::string derived = cases_math(s.cases, true);
-        if (derived != cases_math(s.cases, false))
-            out += fmt::format(" \\\\\n  &= {}", derived);
-        return out + "\n\\end{align*}\n" + step_checks(s);
+        std::string too_long;
+        if (cases_math(s.cases, true) != cases_math(s.cases, false)) {
+            if (const auto derived = derived_cases_rows(symbol, s.cases, "", false))
+                out += " \\\\\n" + *derived;
+            else
+                too_long = fmt::format("Written out in the declared quantities, its cases would take more than three "
+                                       "lines each; what follows uses ${}$ by name.\n",
+                                       symbol);
+        }
+        return out + "\n\\end{align*}\n" + too_long + step_checks(s);
     }
     for (const auto& [symbol, value] : s.values) {
         out += fmt::format("Defining ${}${}:\n\\begin{{align*}}\n", math(symbol), because);
@@ -540,8 +593,7 @@ std::string fragment_writer::results() const
         if (!r.paper.empty())
             tag = fmt::format("\\tag*{{{}}}\\label{{{}:result:{}}}", places(r), latex_label(d_), r.name);
         if (!r.cases.empty())
-            out += fmt::format("  {} &= {} {}", math(r.symbol), cases_math(r.cases, true), tag) +
-                   (i + 1 < shown.size() ? " \\\\\n" : "\n");
+            out += *derived_cases_rows(math(r.symbol), r.cases, tag, true) + (i + 1 < shown.size() ? " \\\\\n" : "\n");
         else
             out += rows(continued ? "" : math(r.symbol), r.display, &r.written, tag, "=", widest) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");

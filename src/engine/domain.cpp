@@ -9,9 +9,10 @@
 namespace impact::engine {
 namespace {
 
-std::string format_bound(double value)
+// A bound as the file writes it, when it was read from one; else the number.
+std::string format_bound(double value, const std::string& written)
 {
-    return fmt::format("{}", value);
+    return written.empty() ? fmt::format("{}", value) : written;
 }
 
 } // namespace
@@ -94,8 +95,8 @@ std::string domain::to_string() const
     case kind::nonnegative: return infinity_included ? "[0, +inf]" : "nonnegative";
     case kind::interval: break;
     }
-    return fmt::format("{}{}, {}{}", lower_open ? '(' : '[', format_bound(lower), format_bound(upper),
-                       upper_open ? ')' : ']');
+    return fmt::format("{}{}, {}{}", lower_open ? '(' : '[', format_bound(lower, lower_text),
+                       format_bound(upper, upper_text), upper_open ? ')' : ']');
 }
 
 std::string domain::to_latex() const
@@ -106,8 +107,8 @@ std::string domain::to_latex() const
     case kind::nonnegative: return infinity_included ? "\\in [0, +\\infty]" : "\\geq 0";
     case kind::interval: break;
     }
-    return fmt::format("\\in {}{}, {}{}", lower_open ? '(' : '[', format_bound(lower), format_bound(upper),
-                       upper_open ? ')' : ']');
+    return fmt::format("\\in {}{}, {}{}", lower_open ? '(' : '[', format_bound(lower, lower_text),
+                       format_bound(upper, upper_text), upper_open ? ')' : ']');
 }
 
 double uniform_stream::next()
@@ -174,6 +175,8 @@ domain parse_domain(const std::string& text, const source_location& where)
     d.lower_open = match[1] == "(";
     d.lower = bound(match[2]);
     d.upper = bound(match[3]);
+    d.lower_text = match[2];
+    d.upper_text = match[3];
     d.upper_open = match[4] == ")";
     if (!(d.lower < d.upper) || !std::isfinite(d.lower) || !std::isfinite(d.upper))
         throw error(where, fmt::format("domain '{}' is an empty interval", text));

@@ -65,7 +65,8 @@ std::string compiled(const file_map& sources, const std::string& main, const std
 file_map report_sources(const engine::library& lib)
 {
     file_map files = figure_files();
-    files["report.tex"] = report::report_tex(lib.in_order(), {"figures/billiard", "figures/scatter_angle"});
+    files["report.tex"] = report::report_tex(lib.in_order(), {"figures/billiard", "figures/scatter_angle"},
+                                              {"figures/rough_beta_eff"});
     return files;
 }
 

@@ -25,7 +25,7 @@ std::string report_preamble()
 }
 
 std::string report_tex(const std::vector<const engine::derivation*>& derivations,
-                       const std::vector<std::string>& figures)
+                       const std::vector<std::string>& figures, const std::vector<std::string>& beyond_figures)
 {
     const emit::paper_count n = emit::count_paper(derivations);
 
@@ -44,10 +44,11 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
            "yields, the results numbered as in the paper, and every check with its status. A result is typeset in "
            "the form its derivation file chooses, proven equal to the derived one. Section~\\ref{sec:errata} "
            "compares every equation and claim of the paper with what is derived, and "
-           "Section~\\ref{sec:figures} recomputes the paper's Figs.~2 and~3 with the generated C++ kernels.\n\n"
+           "Section~\\ref{sec:figures} recomputes the paper's Figs.~2 and~3 with the generated C++ kernels. "
+           "Section~\\ref{sec:beyond} goes where the paper stops: rough spheres, which grip each other at the "
+           "contact, spin and slide.\n\n"
            "\\tableofcontents\n\n\\section{Derivations}\\label{sec:derivations}\n";
-    // The paper's derivations; those beyond it (rough spheres, no `paper` of their own) are
-    // written to latex/ but not yet typeset in the report.
+    // The paper's derivations here; those beyond it (no `paper` of their own) in their chapter.
     for (const engine::derivation* d : derivations)
         if (d->source.paper)
             out += fmt::format("\\input{{latex/{}}}\n", d->id());
@@ -93,6 +94,27 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
            "\\setcounter{figure}{1}\n";
     for (const std::string& figure : figures)
         out += fmt::format("\\input{{{}}}\n", figure);
+
+    std::string beyond;
+    for (const engine::derivation* d : derivations)
+        if (!d->source.paper)
+            beyond += fmt::format("\\input{{latex/{}}}\n", d->id());
+    if (!beyond.empty()) {
+        out += "\n\\clearpage\n\\section{Beyond the paper: rough spheres}\\label{sec:beyond}\n"
+               "The paper treats smooth spheres and leaves tangential adherence to future research. Real spheres "
+               "grip each other where they touch: the impulse has a part across the line of action, which changes "
+               "the spins and the sliding of the contact points. The derivations below give Walton's model of "
+               "rough spheres: the normal impulse of Eq.~8, $J_n = (1 + \\epsilon) m_r g_n$, and a tangential "
+               "impulse that makes the contact points' tangential velocity $g_t$ stick with a tangential "
+               "restitution $\\beta$ ($\\beta = -1$: smooth spheres, the paper's case; $\\beta = 1$: perfectly "
+               "rough), $J_t = (1 + \\beta) m_t g_t$ with $1/m_t = 1/M + 1/m + 1/(q_M M) + 1/(q_m m)$, unless "
+               "Coulomb friction caps it at $\\mu J_n$, where the contact slides. Each derivation is checked as the "
+               "paper's are; the generated kernel \\texttt{impact::collide\\_rough} computes the result, and "
+               "Fig.~\\ref{fig:rough-beta-eff} plots its effective tangential restitution.\n";
+        out += beyond;
+        for (const std::string& figure : beyond_figures)
+            out += fmt::format("\\input{{{}}}\n", figure);
+    }
     out += "\n\\end{document}\n";
     return out;
 }

@@ -9,12 +9,13 @@
 
 namespace impact::report {
 
-/// The report's LaTeX source. It \input's `latex/<id>.tex` for each derivation (in the
-/// order given) and each of `figures` (paths relative to the output folder, without
-/// `.tex`), and typesets the errata table from the derivations' paper comparisons. The
-/// PDF it makes is the same bytes on every run (no dates, no trailer id).
+/// The report's LaTeX source. It \input's `latex/<id>.tex` for each derivation of the
+/// paper (in the order given) and each of `figures` (paths relative to the output folder,
+/// without `.tex`); then, in the chapter "Beyond the paper: rough spheres", the derivations
+/// that have no `paper` and `beyond_figures`; and it typesets the errata table from the
+/// derivations' paper comparisons. The PDF it makes is the same bytes on every run (no dates, no trailer id).
 std::string report_tex(const std::vector<const engine::derivation*>& derivations,
-                       const std::vector<std::string>& figures);
+                       const std::vector<std::string>& figures, const std::vector<std::string>& beyond_figures);
 
 /// The preamble the report and the test documents share (packages, PDF determinism).
 std::string report_preamble();

@@ -11,8 +11,8 @@ namespace impact {
 ///   m: mass of sphere m (positive, in kg)
 ///   R_M: radius of sphere M (positive, in m)
 ///   R_m: radius of sphere m (positive, in m)
-///   q_M: M's moment of inertia in units of \f$M R_M^2\f$ (\f$2/5\f$ for a solid sphere, \f$2/3\f$ for a hollow one) ((0, 0.6666666666666666], a pure number)
-///   q_m: m's moment of inertia in units of \f$m R_m^2\f$ ((0, 0.6666666666666666], a pure number)
+///   q_M: M's moment of inertia in units of \f$M R_M^2\f$ (\f$2/5\f$ for a solid sphere, \f$2/3\f$ for a hollow one) ((0, 2/3], a pure number)
+///   q_m: m's moment of inertia in units of \f$m R_m^2\f$ ((0, 2/3], a pure number)
 ///   C_M: C_Mx: x-coordinate of the centre of sphere M (real, in m)
 ///   C_M: C_My: y-coordinate of the centre of sphere M (real, in m)
 ///   C_m: C_mx: x-coordinate of the centre of sphere m (real, in m)
@@ -36,7 +36,7 @@ namespace impact {
 /// applies, and the velocities are returned unchanged:
 ///   invalid_mass: M, m not positive and finite
 ///   invalid_radius: R_M, R_m not positive and finite
-///   invalid_inertia: q_M, q_m outside (0, 0.6666666666666666]
+///   invalid_inertia: q_M, q_m outside (0, 2/3]
 ///   invalid_restitution: eps outside [0, 1]
 ///   invalid_tangential_restitution: beta outside [-1, 1]
 ///   invalid_friction: mu negative or NaN
