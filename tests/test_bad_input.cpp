@@ -20,6 +20,7 @@
 #include <iterator>
 #include <map>
 #include <sstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -441,12 +442,13 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regenerat
     const auto before = snapshot(s.root / "output");
     const run_result r = s.regenerate();
     BOOST_TEST(r.status == 1, r.output);
-    BOOST_TEST(lines_of(r.output).front() ==
-                   "derivations/gap.toml:18:8: error: kernel 'gap': output 'y' misses its bound of 0.5 ulps in "
-                   "float: 0.692 ulps at worst (mass ratio up to 1e12), with the best of 2 candidate forms (display, "
-                   "compensated); give a more accurate form (forms = [...]) or, if this is the best it can do, raise "
-                   "the bound with [[kernel.bound]] output = \"y\", type, ulps, because",
-               r.output);
+    // The measured worst (about 0.69 ulps: above half an ulp, below one) depends on the samples.
+    static const std::regex missed(
+        "derivations/gap\\.toml:18:8: error: kernel 'gap': output 'y' misses its bound of 0\\.5 ulps in "
+        "float: 0\\.[5-9][0-9]* ulps at worst \\([a-z0-9 ]+\\), with the best of 2 candidate forms \\(display, "
+        "compensated\\); give a more accurate form \\(forms = \\[\\.\\.\\.\\]\\) or, if this is the best it can "
+        "do, raise the bound with \\[\\[kernel\\.bound\\]\\] output = \"y\", type, ulps, because");
+    BOOST_TEST(std::regex_match(lines_of(r.output).front(), missed), r.output);
     BOOST_TEST((snapshot(s.root / "output") == before), "output/ changed");
     // `impact kernels` refuses the same way, and writes nothing.
     const run_result k = s.impact("kernels --derivations derivations --output kernels_out");
@@ -459,8 +461,8 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regenerat
     BOOST_TEST(met.status == 0, met.output);
     std::ifstream in(s.root / "output" / "verification.md");
     const std::string verification((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    BOOST_TEST(verification.find("| `y` | float | 4200 | 0.249 | 0.69 | 1 (set) |") != std::string::npos,
-               verification);
+    static const std::regex row("\\| `y` \\| float \\| 4200 \\| 0\\.[0-9]+ \\| 0\\.[5-9][0-9] \\| 1 \\(set\\) \\|");
+    BOOST_TEST(std::regex_search(verification, row), verification);
     BOOST_TEST(verification.find("Bound of `y` in float set to 1 ulps by the derivation file: correctly rounded") !=
                std::string::npos);
 }

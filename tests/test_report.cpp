@@ -9,6 +9,7 @@
 #include "engine/library.h"
 #include "pipeline/regenerate.h"
 #include "report/report.h"
+#include "support.h"
 
 #include <cstdio>
 #include <unistd.h>
@@ -108,6 +109,21 @@ BOOST_AUTO_TEST_CASE(the_report_includes_every_derivation_the_errata_and_the_fig
     // The errata table says which of the paper's items disagree: Eq. 7 lost its primes.
     BOOST_TEST(tex.find("Eq.~(7) (Sect.~\\ref{impact:inelastic_line}) & restitution (equation) & \\textbf{disagrees}") !=
                    std::string::npos);
+}
+
+// A folder of the paper's derivations alone, none beyond it: the report still compiles
+// (the chapter beyond the paper holds its figure, and nothing refers to what is absent).
+BOOST_AUTO_TEST_CASE(a_folder_without_derivations_beyond_the_paper_compiles)
+{
+    BOOST_TEST_REQUIRE(report::have_pdflatex());
+    const impact::testing::temporary_folder folder("impact-test-report");
+    std::filesystem::copy_file(IMPACT_SOURCE_DIR "/derivations/eq08_inelastic_line.toml",
+                               folder.root / "eq08_inelastic_line.toml");
+    const engine::library lib = engine::derive_all(engine::read_directory(folder.root.string()));
+    const pipeline::file_set files = pipeline::generate(lib);
+    std::map<std::string, std::string> pdfs;
+    BOOST_CHECK_NO_THROW(pdfs = report::figures_and_report(lib, files));
+    BOOST_TEST(pdfs.count("report.pdf") == 1u);
 }
 
 BOOST_AUTO_TEST_CASE(a_latex_error_or_an_undefined_reference_is_caught)

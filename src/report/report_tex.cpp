@@ -95,25 +95,27 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
     for (const std::string& figure : figures)
         out += fmt::format("\\input{{{}}}\n", figure);
 
-    std::string beyond;
-    for (const engine::derivation* d : derivations)
-        if (!d->source.paper)
-            beyond += fmt::format("\\input{{latex/{}}}\n", d->id());
-    if (!beyond.empty()) {
+    // Beyond the paper: its figure is computed with the generated kernel whatever the
+    // derivations, as Figs. 2 and 3 are; the derivations without a `paper` follow it.
+    {
         out += "\n\\clearpage\n\\section{Beyond the paper: rough spheres}\\label{sec:beyond}\n"
                "The paper treats smooth spheres and leaves tangential adherence to future research. Real spheres "
                "grip each other where they touch: the impulse has a part across the line of action, which changes "
-               "the spins and the sliding of the contact points. The derivations below give Walton's model of "
-               "rough spheres: the normal impulse of Eq.~8, $J_n = (1 + \\epsilon) m_r g_n$, and a tangential "
-               "impulse that makes the contact points' tangential velocity $g_t$ stick with a tangential "
-               "restitution $\\beta$ ($\\beta = -1$: smooth spheres, the paper's case; $\\beta = 1$: perfectly "
-               "rough), $J_t = (1 + \\beta) m_t g_t$ with $1/m_t = 1/M + 1/m + 1/(q_M M) + 1/(q_m m)$, unless "
-               "Coulomb friction caps it at $\\mu J_n$, where the contact slides. Each derivation is checked as the "
-               "paper's are; the generated kernel \\texttt{impact::collide\\_rough} computes the result, and "
-               "Fig.~\\ref{fig:rough-beta-eff} plots its effective tangential restitution.\n";
-        out += beyond;
+               "the spins and the sliding of the contact points. In Walton's model of rough spheres the normal "
+               "impulse is Eq.~8's, $J_n = (1 + \\epsilon) m_r g_n$, and a tangential impulse makes the contact "
+               "points' tangential velocity $g_t$ stick with a tangential restitution $\\beta$ ($\\beta = -1$: "
+               "smooth spheres, the paper's case; $\\beta = 1$: perfectly rough), $J_t = (1 + \\beta) m_t g_t$ with "
+               "$1/m_t = 1/M + 1/m + 1/(q_M M) + 1/(q_m m)$, unless Coulomb friction caps it at $\\mu J_n$, where "
+               "the contact slides. Impact derives it (derivation files \\texttt{rough\\_sticking.toml} and "
+               "\\texttt{rough\\_plane.toml}, checked as the paper's are) and emits the kernel "
+               "\\texttt{impact::collide\\_rough}, with which Fig.~\\ref{fig:rough-beta-eff} plots the effective "
+               "tangential restitution. The derivations below are those of the derivation files that have no "
+               "place in the paper.\n";
         for (const std::string& figure : beyond_figures)
             out += fmt::format("\\input{{{}}}\n", figure);
+        for (const engine::derivation* d : derivations)
+            if (!d->source.paper)
+                out += fmt::format("\\input{{latex/{}}}\n", d->id());
     }
     out += "\n\\end{document}\n";
     return out;

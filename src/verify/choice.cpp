@@ -16,12 +16,21 @@
 namespace impact::verify {
 namespace {
 
-// A seed from the kernel's name, so that each kernel has its own repeatable samples.
-std::uint64_t seed_of(const std::string& name)
+// A seed from what the kernel computes from and gives: its inputs' and outputs' names,
+// not its own name, so that a kernel renamed (or copied under another name) is measured
+// on the same samples and its forms chosen alike. The FNV-1a hash.
+std::uint64_t seed_of(const engine::kernel& k)
 {
     std::uint64_t h = 1469598103934665603ULL;
-    for (unsigned char c : name)
-        h = (h ^ c) * 1099511628211ULL;
+    auto add = [&h](const std::string& text) {
+        for (unsigned char c : text)
+            h = (h ^ c) * 1099511628211ULL;
+        h = (h ^ 0xffu) * 1099511628211ULL;   // a separator no name holds
+    };
+    for (const GiNaC::ex& input : k.input_symbols())
+        add(GiNaC::ex_to<GiNaC::symbol>(input).get_name());
+    for (const engine::kernel_output& o : k.outputs)
+        add(o.member);
     return h;
 }
 
@@ -103,7 +112,7 @@ public:
     chooser(const engine::kernel& k, const engine::term_order& order) : k_(k), order_(order), inputs_(k.input_symbols())
     {
         plan_.kernel = &k;
-        plan_.samples = verify::draw_samples(k, kernel_samples, seed_of(k.name));
+        plan_.samples = verify::draw_samples(k, kernel_samples, seed_of(k));
         plan_.double_reference = verify::compute_reference(k, plan_.samples, 53);
         plan_.float_reference = verify::compute_reference(k, plan_.samples, 24);
     }

@@ -15,15 +15,15 @@
 # `--jobs 2`, two kernels at once in worker processes), each with its own empty cache;
 # the columns kernels_s and derive_s are the cold run's choice of kernel forms and the
 # warm run's derivations, from --timings.
-# Sizes above 50 hold a fifth variant of each file, whose 2D kernel `collide_v5` draws
-# its samples (seeded by the kernel's name) where `v_m` misses Eq. 9's float bound
-# (4.53 ulps against 4), which fails the regeneration: the default sizes stop at 50.
-# Usage: [JOBS="1 2"] scale_regenerate.sh IMPACT [N ...]   (default sizes: 10 25 50)
+# A variant's kernels draw the samples of the kernel they copy (samples are seeded by a
+# kernel's inputs and outputs, not its name), so every variant is measured and verified
+# like its original, and a folder of any size regenerates.
+# Usage: [JOBS="1 2"] scale_regenerate.sh IMPACT [N ...]   (default sizes: 12 50 100 200 300)
 set -euo pipefail
 impact=$(realpath "${1:?usage: scale_regenerate.sh path/to/impact [N ...]}")
 shift
 sizes=("$@")
-[ $# -eq 0 ] && sizes=(10 25 50)
+[ $# -eq 0 ] && sizes=(12 50 100 200 300)
 here=$(cd "$(dirname "$0")/../.." && pwd)
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT

@@ -26,12 +26,12 @@ namespace impact {
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 ///   b: tangential restitution: \f$-1\f$ for smooth spheres, \f$1\f$ for perfectly rough ones ([-1, 1], a pure number)
 ///   mu: Coulomb's coefficient of friction (\f$+\infty\f$: the contact never slides) ([0, +inf], a pure number)
-/// v_M[0] is computed in the form "v_Mx + dv_Mx, compensated let": at most 0.92 ulps in double on 4200 samples.
-/// v_M[1] is computed in the form "v_My + dv_My, compensated let": at most 1.35 ulps in double on 4200 samples.
-/// v_m[0] is computed in the form "v_mx + dv_mx, fma, compensated let": at most 1.09 ulps in double on 4200 samples.
+/// v_M[0] is computed in the form "v_Mx + dv_Mx, compensated let": at most 0.97 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My + dv_My, compensated let": at most 1.08 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + dv_mx, fma, compensated let": at most 1.13 ulps in double on 4200 samples.
 /// v_m[1] is computed in the form "v_my + dv_my, fma, compensated let": at most 0.99 ulps in double on 4200 samples.
-/// w_M is computed in the form "w_M + dw_M, fma, compensated let": at most 1.93 ulps in double on 4200 samples.
-/// w_m is computed in the form "w_m + dw_m, compensated let": at most 2.68 ulps in double on 4200 samples.
+/// w_M is computed in the form "w_M + dw_M, fma, compensated let": at most 3.53 ulps in double on 4200 samples.
+/// w_m is computed in the form "w_m + dw_m, fma, compensated let": at most 2.76 ulps in double on 4200 samples.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged:
 ///   invalid_mass: M, m not positive and finite
@@ -283,7 +283,7 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
     const Real t180 = (t178 > Real(0) ? t144 : Real(1));
     const Real t181 = (t178 > Real(0) ? Real(1) : t144);
     const Real t182 = (t178 > Real(0) ? t165 : Real(1));
-    if (!(std::fabs(t119) >= detail::smallest_divisor<Real>) || !(std::fabs(t119) <= std::numeric_limits<Real>::max()) || !(std::fabs(t144) >= detail::smallest_divisor<Real>) || !(std::fabs(t144) <= std::numeric_limits<Real>::max()) || !(std::fabs(t180) >= detail::smallest_divisor<Real>) || !(std::fabs(t180) <= std::numeric_limits<Real>::max()) || !(std::fabs(t181) >= detail::smallest_divisor<Real>) || !(std::fabs(t181) <= std::numeric_limits<Real>::max()) || !(std::fabs(t175) >= detail::smallest_divisor<Real>) || !(std::fabs(t175) <= std::numeric_limits<Real>::max()) || !(std::fabs(t176) >= detail::smallest_divisor<Real>) || !(std::fabs(t176) <= std::numeric_limits<Real>::max()) || !(std::fabs(t120) >= detail::smallest_divisor<Real>) || !(std::fabs(t120) <= std::numeric_limits<Real>::max()) || !(std::fabs(t182) >= detail::smallest_divisor<Real>) || !(std::fabs(t182) <= std::numeric_limits<Real>::max()) || !(std::fabs(t177) >= detail::smallest_divisor<Real>) || !(std::fabs(t177) <= std::numeric_limits<Real>::max()) || !(std::fabs(t179) >= detail::smallest_divisor<Real>) || !(std::fabs(t179) <= std::numeric_limits<Real>::max()) || !(std::fabs(t117) >= detail::smallest_divisor<Real>) || !(std::fabs(t117) <= std::numeric_limits<Real>::max()) || !(std::fabs(t174) >= detail::smallest_divisor<Real>) || !(std::fabs(t174) <= std::numeric_limits<Real>::max()) || !(std::fabs(t110) >= detail::smallest_divisor<Real>) || !(std::fabs(t110) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
+    if (!(std::fabs(t119) >= detail::smallest_divisor<Real>) || !(std::fabs(t119) <= std::numeric_limits<Real>::max()) || !(std::fabs(t144) >= detail::smallest_divisor<Real>) || !(std::fabs(t144) <= std::numeric_limits<Real>::max()) || !(std::fabs(t180) >= detail::smallest_divisor<Real>) || !(std::fabs(t180) <= std::numeric_limits<Real>::max()) || !(std::fabs(t181) >= detail::smallest_divisor<Real>) || !(std::fabs(t181) <= std::numeric_limits<Real>::max()) || !(std::fabs(t175) >= detail::smallest_divisor<Real>) || !(std::fabs(t175) <= std::numeric_limits<Real>::max()) || !(std::fabs(t176) >= detail::smallest_divisor<Real>) || !(std::fabs(t176) <= std::numeric_limits<Real>::max()) || !(std::fabs(t120) >= detail::smallest_divisor<Real>) || !(std::fabs(t120) <= std::numeric_limits<Real>::max()) || !(std::fabs(t182) >= detail::smallest_divisor<Real>) || !(std::fabs(t182) <= std::numeric_limits<Real>::max()) || !(std::fabs(t177) >= detail::smallest_divisor<Real>) || !(std::fabs(t177) <= std::numeric_limits<Real>::max()) || !(std::fabs(t179) >= detail::smallest_divisor<Real>) || !(std::fabs(t179) <= std::numeric_limits<Real>::max()) || !(std::fabs(t174) >= detail::smallest_divisor<Real>) || !(std::fabs(t174) <= std::numeric_limits<Real>::max()) || !(std::fabs(t110) >= detail::smallest_divisor<Real>) || !(std::fabs(t110) <= std::numeric_limits<Real>::max()) || !(std::fabs(t117) >= detail::smallest_divisor<Real>) || !(std::fabs(t117) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
@@ -453,54 +453,54 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
     const Real t346 = t345 / t119;
     const Real t347 = t346 * t0;
     const Real t348 = t346 * t4;
-    const Real t349 = t346 * t119;
-    const Real t350 = t349 / t117;
-    const Real t351 = t272 - t348;
-    const Real t352 = t351 - t272;
-    const Real t353 = t273 + t347;
-    const Real t354 = t353 - t273;
-    const Real t355 = t337 - (t338 - t340) + (t27 - t340) + (t336 - (t337 - t330) + t38);
-    const Real t356 = t338 + t355;
-    const Real t357 = t68 * t356;
-    const Real t358 = t357 / t174;
-    const Real t359 = (t171 > Real(0) ? t299 : t358);
-    const Real t360 = t359 / t119;
-    const Real t361 = t360 * t0;
-    const Real t362 = t360 * t4;
-    const Real t363 = t360 * t119;
-    const Real t364 = t363 / t110;
-    const Real t365 = t272 - t362;
-    const Real t366 = t365 - t272;
-    const Real t367 = t273 + t361;
-    const Real t368 = t367 - t273;
-    const Real t369 = -t344;
-    const Real t370 = -t346;
-    const Real t371 = -t350;
-    const Real t372 = -t358;
-    const Real t373 = -t360;
-    const Real t374 = -t364;
-    const Real t375 = std::fma(t370, t187, std::fma(t370, t119, t345) + (t178 > Real(0) ? -(std::fma(t297, std::fma(std::fma(t56, t119, std::fma(t53, t188, t146)), t164, std::fma(t120, t164, -t165)), std::fma(t297, t165, t281) + std::fma(std::fma(t192, t279, std::fma(t170, t278 - (t279 - t261), std::fma(t170, t279, -t280))), t50, std::fma(t280, t51, std::fma(t280, t50, -t281)))) / t182) : std::fma(t369, std::fma(t92, t119, std::fma(t91, t189, t147)), std::fma(t369, t121, t343) + std::fma(t80, t342, std::fma(t68, t341 - (t342 - t335), std::fma(t68, t342, -t343)))) / t179)) / t119;
-    const Real t376 = std::fma(t373, t187, std::fma(t373, t119, t359) + (t171 > Real(0) ? -(std::fma(t299, std::fma(std::fma(t56, t119, std::fma(t53, t190, t146)), t156, std::fma(t120, t156, -t157)), std::fma(t299, t157, t289) + std::fma(std::fma(t192, t287, std::fma(t170, t286 - (t287 - t267), std::fma(t170, t287, -t288))), t50, std::fma(t288, t51, std::fma(t288, t50, -t289)))) / t177) : std::fma(t372, std::fma(t92, t119, std::fma(t91, t191, t147)), std::fma(t372, t121, t357) + std::fma(t80, t356, std::fma(t68, t355 - (t356 - t338), std::fma(t68, t356, -t357)))) / t174)) / t119;
-    const Real t377 = t272 - (t351 - t352) - (t348 + t352) + (t295 - std::fma(t375, t4, std::fma(t346, t9, std::fma(t346, t4, -t348))));
-    const Real t378 = t351 + t377;
+    const Real t349 = t272 - t348;
+    const Real t350 = t349 - t272;
+    const Real t351 = t273 + t347;
+    const Real t352 = t351 - t273;
+    const Real t353 = t337 - (t338 - t340) + (t27 - t340) + (t336 - (t337 - t330) + t38);
+    const Real t354 = t338 + t353;
+    const Real t355 = t68 * t354;
+    const Real t356 = t355 / t174;
+    const Real t357 = (t171 > Real(0) ? t299 : t356);
+    const Real t358 = t357 / t119;
+    const Real t359 = t358 * t0;
+    const Real t360 = t358 * t4;
+    const Real t361 = t358 * t119;
+    const Real t362 = t361 / t110;
+    const Real t363 = t361 / t117;
+    const Real t364 = t272 - t360;
+    const Real t365 = t364 - t272;
+    const Real t366 = t273 + t359;
+    const Real t367 = t366 - t273;
+    const Real t368 = -t344;
+    const Real t369 = -t346;
+    const Real t370 = -t356;
+    const Real t371 = -t358;
+    const Real t372 = -t362;
+    const Real t373 = -t363;
+    const Real t374 = std::fma(t369, t187, std::fma(t369, t119, t345) + (t178 > Real(0) ? -(std::fma(t297, std::fma(std::fma(t56, t119, std::fma(t53, t188, t146)), t164, std::fma(t120, t164, -t165)), std::fma(t297, t165, t281) + std::fma(std::fma(t192, t279, std::fma(t170, t278 - (t279 - t261), std::fma(t170, t279, -t280))), t50, std::fma(t280, t51, std::fma(t280, t50, -t281)))) / t182) : std::fma(t368, std::fma(t92, t119, std::fma(t91, t189, t147)), std::fma(t368, t121, t343) + std::fma(t80, t342, std::fma(t68, t341 - (t342 - t335), std::fma(t68, t342, -t343)))) / t179)) / t119;
+    const Real t375 = std::fma(t371, t187, std::fma(t371, t119, t357) + (t171 > Real(0) ? -(std::fma(t299, std::fma(std::fma(t56, t119, std::fma(t53, t190, t146)), t156, std::fma(t120, t156, -t157)), std::fma(t299, t157, t289) + std::fma(std::fma(t192, t287, std::fma(t170, t286 - (t287 - t267), std::fma(t170, t287, -t288))), t50, std::fma(t288, t51, std::fma(t288, t50, -t289)))) / t177) : std::fma(t370, std::fma(t92, t119, std::fma(t91, t191, t147)), std::fma(t370, t121, t355) + std::fma(t80, t354, std::fma(t68, t353 - (t354 - t338), std::fma(t68, t354, -t355)))) / t174)) / t119;
+    const Real t376 = std::fma(t375, t119, std::fma(t358, t187, std::fma(t358, t119, -t361)));
+    const Real t377 = t272 - (t349 - t350) - (t348 + t350) + (t295 - std::fma(t374, t4, std::fma(t346, t9, std::fma(t346, t4, -t348))));
+    const Real t378 = t349 + t377;
     const Real t379 = t378 / M;
-    const Real t380 = t273 - (t353 - t354) + (t347 - t354) + (t296 + std::fma(t375, t0, std::fma(t346, t3, std::fma(t346, t0, -t347))));
-    const Real t381 = t353 + t380;
+    const Real t380 = t273 - (t351 - t352) + (t347 - t352) + (t296 + std::fma(t374, t0, std::fma(t346, t3, std::fma(t346, t0, -t347))));
+    const Real t381 = t351 + t380;
     const Real t382 = t381 / M;
-    const Real t383 = t272 - (t365 - t366) - (t362 + t366) + (t295 - std::fma(t376, t4, std::fma(t360, t9, std::fma(t360, t4, -t362))));
-    const Real t384 = t365 + t383;
+    const Real t383 = t272 - (t364 - t365) - (t360 + t365) + (t295 - std::fma(t375, t4, std::fma(t358, t9, std::fma(t358, t4, -t360))));
+    const Real t384 = t364 + t383;
     const Real t385 = t384 / m;
-    const Real t386 = t273 - (t367 - t368) + (t361 - t368) + (t296 + std::fma(t376, t0, std::fma(t360, t3, std::fma(t360, t0, -t361))));
-    const Real t387 = t367 + t386;
+    const Real t386 = t273 - (t366 - t367) + (t359 - t367) + (t296 + std::fma(t375, t0, std::fma(t358, t3, std::fma(t358, t0, -t359))));
+    const Real t387 = t366 + t386;
     const Real t388 = t387 / m;
     const Real t389 = -t385;
     const Real t390 = -t388;
-    const Real result0 = v_Mx + (t379 + (std::fma(-t379, M, t378) + (t377 - (t378 - t351))) / M);
-    const Real result1 = v_My + (t382 + (std::fma(-t382, M, t381) + (t380 - (t381 - t353))) / M);
-    const Real result2 = v_mx + (t389 + -((std::fma(t389, m, t384) + (t383 - (t384 - t365))) / m));
-    const Real result3 = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t367))) / m));
-    const Real result4 = w_M + (t374 + -(std::fma(t374, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t374, t110, t363) + std::fma(t376, t119, std::fma(t360, t187, std::fma(t360, t119, -t363)))) / t110));
-    const Real result5 = w_m + (t371 + -(std::fma(t371, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t371, t117, t349) + std::fma(t375, t119, std::fma(t346, t187, std::fma(t346, t119, -t349)))) / t117));
+    const Real result0 = v_Mx + (t379 + (std::fma(-t379, M, t378) + (t377 - (t378 - t349))) / M);
+    const Real result1 = v_My + (t382 + (std::fma(-t382, M, t381) + (t380 - (t381 - t351))) / M);
+    const Real result2 = v_mx + (t389 + -((std::fma(t389, m, t384) + (t383 - (t384 - t364))) / m));
+    const Real result3 = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t366))) / m));
+    const Real result4 = w_M + (t372 + -(std::fma(t372, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t372, t110, t361) + t376) / t110));
+    const Real result5 = w_m + (t373 + -(std::fma(t373, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t373, t117, t361) + t376) / t117));
     if (!std::isfinite(t134) || !std::isfinite(t139) || !std::isfinite(t142) || !std::isfinite(t152) || !std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
         out.status = status::out_of_range;
         return out;
@@ -608,15 +608,14 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
         (std::fabs(t346) < std::numeric_limits<Real>::min() && t345 != Real(0)) ||
         (std::fabs(t347) < std::numeric_limits<Real>::min() && t346 != Real(0) && t0 != Real(0)) ||
         (std::fabs(t348) < std::numeric_limits<Real>::min() && t346 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t349) < std::numeric_limits<Real>::min() && t346 != Real(0) && t119 != Real(0)) ||
-        (std::fabs(t350) < std::numeric_limits<Real>::min() && t349 != Real(0)) ||
-        (std::fabs(t357) < std::numeric_limits<Real>::min() && t68 != Real(0) && t356 != Real(0)) ||
+        (std::fabs(t355) < std::numeric_limits<Real>::min() && t68 != Real(0) && t354 != Real(0)) ||
+        (std::fabs(t356) < std::numeric_limits<Real>::min() && t355 != Real(0)) ||
         (std::fabs(t358) < std::numeric_limits<Real>::min() && t357 != Real(0)) ||
-        (std::fabs(t360) < std::numeric_limits<Real>::min() && t359 != Real(0)) ||
-        (std::fabs(t361) < std::numeric_limits<Real>::min() && t360 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t362) < std::numeric_limits<Real>::min() && t360 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t363) < std::numeric_limits<Real>::min() && t360 != Real(0) && t119 != Real(0)) ||
-        (std::fabs(t364) < std::numeric_limits<Real>::min() && t363 != Real(0)) ||
+        (std::fabs(t359) < std::numeric_limits<Real>::min() && t358 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t360) < std::numeric_limits<Real>::min() && t358 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t361) < std::numeric_limits<Real>::min() && t358 != Real(0) && t119 != Real(0)) ||
+        (std::fabs(t362) < std::numeric_limits<Real>::min() && t361 != Real(0)) ||
+        (std::fabs(t363) < std::numeric_limits<Real>::min() && t361 != Real(0)) ||
         (std::fabs(t379) < std::numeric_limits<Real>::min() && t378 != Real(0)) ||
         (std::fabs(t382) < std::numeric_limits<Real>::min() && t381 != Real(0)) ||
         (std::fabs(t385) < std::numeric_limits<Real>::min() && t384 != Real(0)) ||
@@ -903,7 +902,7 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
         const Real t180 = (t178 > Real(0) ? t144 : Real(1));
         const Real t181 = (t178 > Real(0) ? Real(1) : t144);
         const Real t182 = (t178 > Real(0) ? t165 : Real(1));
-        const bool usable = resolved && (std::fabs(t119) >= detail::smallest_divisor<Real>) && (std::fabs(t119) <= std::numeric_limits<Real>::max()) && (std::fabs(t144) >= detail::smallest_divisor<Real>) && (std::fabs(t144) <= std::numeric_limits<Real>::max()) && (std::fabs(t180) >= detail::smallest_divisor<Real>) && (std::fabs(t180) <= std::numeric_limits<Real>::max()) && (std::fabs(t181) >= detail::smallest_divisor<Real>) && (std::fabs(t181) <= std::numeric_limits<Real>::max()) && (std::fabs(t175) >= detail::smallest_divisor<Real>) && (std::fabs(t175) <= std::numeric_limits<Real>::max()) && (std::fabs(t176) >= detail::smallest_divisor<Real>) && (std::fabs(t176) <= std::numeric_limits<Real>::max()) && (std::fabs(t120) >= detail::smallest_divisor<Real>) && (std::fabs(t120) <= std::numeric_limits<Real>::max()) && (std::fabs(t182) >= detail::smallest_divisor<Real>) && (std::fabs(t182) <= std::numeric_limits<Real>::max()) && (std::fabs(t177) >= detail::smallest_divisor<Real>) && (std::fabs(t177) <= std::numeric_limits<Real>::max()) && (std::fabs(t179) >= detail::smallest_divisor<Real>) && (std::fabs(t179) <= std::numeric_limits<Real>::max()) && (std::fabs(t117) >= detail::smallest_divisor<Real>) && (std::fabs(t117) <= std::numeric_limits<Real>::max()) && (std::fabs(t174) >= detail::smallest_divisor<Real>) && (std::fabs(t174) <= std::numeric_limits<Real>::max()) && (std::fabs(t110) >= detail::smallest_divisor<Real>) && (std::fabs(t110) <= std::numeric_limits<Real>::max()) && (std::fabs(M) >= detail::smallest_divisor<Real>) && (std::fabs(M) <= std::numeric_limits<Real>::max()) && (std::fabs(m) >= detail::smallest_divisor<Real>) && (std::fabs(m) <= std::numeric_limits<Real>::max());
+        const bool usable = resolved && (std::fabs(t119) >= detail::smallest_divisor<Real>) && (std::fabs(t119) <= std::numeric_limits<Real>::max()) && (std::fabs(t144) >= detail::smallest_divisor<Real>) && (std::fabs(t144) <= std::numeric_limits<Real>::max()) && (std::fabs(t180) >= detail::smallest_divisor<Real>) && (std::fabs(t180) <= std::numeric_limits<Real>::max()) && (std::fabs(t181) >= detail::smallest_divisor<Real>) && (std::fabs(t181) <= std::numeric_limits<Real>::max()) && (std::fabs(t175) >= detail::smallest_divisor<Real>) && (std::fabs(t175) <= std::numeric_limits<Real>::max()) && (std::fabs(t176) >= detail::smallest_divisor<Real>) && (std::fabs(t176) <= std::numeric_limits<Real>::max()) && (std::fabs(t120) >= detail::smallest_divisor<Real>) && (std::fabs(t120) <= std::numeric_limits<Real>::max()) && (std::fabs(t182) >= detail::smallest_divisor<Real>) && (std::fabs(t182) <= std::numeric_limits<Real>::max()) && (std::fabs(t177) >= detail::smallest_divisor<Real>) && (std::fabs(t177) <= std::numeric_limits<Real>::max()) && (std::fabs(t179) >= detail::smallest_divisor<Real>) && (std::fabs(t179) <= std::numeric_limits<Real>::max()) && (std::fabs(t174) >= detail::smallest_divisor<Real>) && (std::fabs(t174) <= std::numeric_limits<Real>::max()) && (std::fabs(t110) >= detail::smallest_divisor<Real>) && (std::fabs(t110) <= std::numeric_limits<Real>::max()) && (std::fabs(t117) >= detail::smallest_divisor<Real>) && (std::fabs(t117) <= std::numeric_limits<Real>::max()) && (std::fabs(M) >= detail::smallest_divisor<Real>) && (std::fabs(M) <= std::numeric_limits<Real>::max()) && (std::fabs(m) >= detail::smallest_divisor<Real>) && (std::fabs(m) <= std::numeric_limits<Real>::max());
         const Real t183 = t14 / (usable ? t119 : Real(1));
         const Real t184 = t15 / (usable ? t119 : Real(1));
         const Real t185 = t29 / (usable ? t119 : Real(1));
@@ -1070,54 +1069,54 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
         const Real t346 = t345 / (usable ? t119 : Real(1));
         const Real t347 = t346 * t0;
         const Real t348 = t346 * t4;
-        const Real t349 = t346 * t119;
-        const Real t350 = t349 / (usable ? t117 : Real(1));
-        const Real t351 = t272 - t348;
-        const Real t352 = t351 - t272;
-        const Real t353 = t273 + t347;
-        const Real t354 = t353 - t273;
-        const Real t355 = t337 - (t338 - t340) + (t27 - t340) + (t336 - (t337 - t330) + t38);
-        const Real t356 = t338 + t355;
-        const Real t357 = t68 * t356;
-        const Real t358 = t357 / (usable ? t174 : Real(1));
-        const Real t359 = (t171 > Real(0) ? t299 : t358);
-        const Real t360 = t359 / (usable ? t119 : Real(1));
-        const Real t361 = t360 * t0;
-        const Real t362 = t360 * t4;
-        const Real t363 = t360 * t119;
-        const Real t364 = t363 / (usable ? t110 : Real(1));
-        const Real t365 = t272 - t362;
-        const Real t366 = t365 - t272;
-        const Real t367 = t273 + t361;
-        const Real t368 = t367 - t273;
-        const Real t369 = -t344;
-        const Real t370 = -t346;
-        const Real t371 = -t350;
-        const Real t372 = -t358;
-        const Real t373 = -t360;
-        const Real t374 = -t364;
-        const Real t375 = std::fma(t370, t187, std::fma(t370, t119, t345) + (t178 > Real(0) ? -(std::fma(t297, std::fma(std::fma(t56, t119, std::fma(t53, t188, t146)), t164, std::fma(t120, t164, -t165)), std::fma(t297, t165, t281) + std::fma(std::fma(t192, t279, std::fma(t170, t278 - (t279 - t261), std::fma(t170, t279, -t280))), t50, std::fma(t280, t51, std::fma(t280, t50, -t281)))) / (usable ? t182 : Real(1))) : std::fma(t369, std::fma(t92, t119, std::fma(t91, t189, t147)), std::fma(t369, t121, t343) + std::fma(t80, t342, std::fma(t68, t341 - (t342 - t335), std::fma(t68, t342, -t343)))) / (usable ? t179 : Real(1)))) / (usable ? t119 : Real(1));
-        const Real t376 = std::fma(t373, t187, std::fma(t373, t119, t359) + (t171 > Real(0) ? -(std::fma(t299, std::fma(std::fma(t56, t119, std::fma(t53, t190, t146)), t156, std::fma(t120, t156, -t157)), std::fma(t299, t157, t289) + std::fma(std::fma(t192, t287, std::fma(t170, t286 - (t287 - t267), std::fma(t170, t287, -t288))), t50, std::fma(t288, t51, std::fma(t288, t50, -t289)))) / (usable ? t177 : Real(1))) : std::fma(t372, std::fma(t92, t119, std::fma(t91, t191, t147)), std::fma(t372, t121, t357) + std::fma(t80, t356, std::fma(t68, t355 - (t356 - t338), std::fma(t68, t356, -t357)))) / (usable ? t174 : Real(1)))) / (usable ? t119 : Real(1));
-        const Real t377 = t272 - (t351 - t352) - (t348 + t352) + (t295 - std::fma(t375, t4, std::fma(t346, t9, std::fma(t346, t4, -t348))));
-        const Real t378 = t351 + t377;
+        const Real t349 = t272 - t348;
+        const Real t350 = t349 - t272;
+        const Real t351 = t273 + t347;
+        const Real t352 = t351 - t273;
+        const Real t353 = t337 - (t338 - t340) + (t27 - t340) + (t336 - (t337 - t330) + t38);
+        const Real t354 = t338 + t353;
+        const Real t355 = t68 * t354;
+        const Real t356 = t355 / (usable ? t174 : Real(1));
+        const Real t357 = (t171 > Real(0) ? t299 : t356);
+        const Real t358 = t357 / (usable ? t119 : Real(1));
+        const Real t359 = t358 * t0;
+        const Real t360 = t358 * t4;
+        const Real t361 = t358 * t119;
+        const Real t362 = t361 / (usable ? t110 : Real(1));
+        const Real t363 = t361 / (usable ? t117 : Real(1));
+        const Real t364 = t272 - t360;
+        const Real t365 = t364 - t272;
+        const Real t366 = t273 + t359;
+        const Real t367 = t366 - t273;
+        const Real t368 = -t344;
+        const Real t369 = -t346;
+        const Real t370 = -t356;
+        const Real t371 = -t358;
+        const Real t372 = -t362;
+        const Real t373 = -t363;
+        const Real t374 = std::fma(t369, t187, std::fma(t369, t119, t345) + (t178 > Real(0) ? -(std::fma(t297, std::fma(std::fma(t56, t119, std::fma(t53, t188, t146)), t164, std::fma(t120, t164, -t165)), std::fma(t297, t165, t281) + std::fma(std::fma(t192, t279, std::fma(t170, t278 - (t279 - t261), std::fma(t170, t279, -t280))), t50, std::fma(t280, t51, std::fma(t280, t50, -t281)))) / (usable ? t182 : Real(1))) : std::fma(t368, std::fma(t92, t119, std::fma(t91, t189, t147)), std::fma(t368, t121, t343) + std::fma(t80, t342, std::fma(t68, t341 - (t342 - t335), std::fma(t68, t342, -t343)))) / (usable ? t179 : Real(1)))) / (usable ? t119 : Real(1));
+        const Real t375 = std::fma(t371, t187, std::fma(t371, t119, t357) + (t171 > Real(0) ? -(std::fma(t299, std::fma(std::fma(t56, t119, std::fma(t53, t190, t146)), t156, std::fma(t120, t156, -t157)), std::fma(t299, t157, t289) + std::fma(std::fma(t192, t287, std::fma(t170, t286 - (t287 - t267), std::fma(t170, t287, -t288))), t50, std::fma(t288, t51, std::fma(t288, t50, -t289)))) / (usable ? t177 : Real(1))) : std::fma(t370, std::fma(t92, t119, std::fma(t91, t191, t147)), std::fma(t370, t121, t355) + std::fma(t80, t354, std::fma(t68, t353 - (t354 - t338), std::fma(t68, t354, -t355)))) / (usable ? t174 : Real(1)))) / (usable ? t119 : Real(1));
+        const Real t376 = std::fma(t375, t119, std::fma(t358, t187, std::fma(t358, t119, -t361)));
+        const Real t377 = t272 - (t349 - t350) - (t348 + t350) + (t295 - std::fma(t374, t4, std::fma(t346, t9, std::fma(t346, t4, -t348))));
+        const Real t378 = t349 + t377;
         const Real t379 = t378 / (usable ? M : Real(1));
-        const Real t380 = t273 - (t353 - t354) + (t347 - t354) + (t296 + std::fma(t375, t0, std::fma(t346, t3, std::fma(t346, t0, -t347))));
-        const Real t381 = t353 + t380;
+        const Real t380 = t273 - (t351 - t352) + (t347 - t352) + (t296 + std::fma(t374, t0, std::fma(t346, t3, std::fma(t346, t0, -t347))));
+        const Real t381 = t351 + t380;
         const Real t382 = t381 / (usable ? M : Real(1));
-        const Real t383 = t272 - (t365 - t366) - (t362 + t366) + (t295 - std::fma(t376, t4, std::fma(t360, t9, std::fma(t360, t4, -t362))));
-        const Real t384 = t365 + t383;
+        const Real t383 = t272 - (t364 - t365) - (t360 + t365) + (t295 - std::fma(t375, t4, std::fma(t358, t9, std::fma(t358, t4, -t360))));
+        const Real t384 = t364 + t383;
         const Real t385 = t384 / (usable ? m : Real(1));
-        const Real t386 = t273 - (t367 - t368) + (t361 - t368) + (t296 + std::fma(t376, t0, std::fma(t360, t3, std::fma(t360, t0, -t361))));
-        const Real t387 = t367 + t386;
+        const Real t386 = t273 - (t366 - t367) + (t359 - t367) + (t296 + std::fma(t375, t0, std::fma(t358, t3, std::fma(t358, t0, -t359))));
+        const Real t387 = t366 + t386;
         const Real t388 = t387 / (usable ? m : Real(1));
         const Real t389 = -t385;
         const Real t390 = -t388;
-        const Real v_Mx_out = v_Mx + (t379 + (std::fma(-t379, M, t378) + (t377 - (t378 - t351))) / (usable ? M : Real(1)));
-        const Real v_My_out = v_My + (t382 + (std::fma(-t382, M, t381) + (t380 - (t381 - t353))) / (usable ? M : Real(1)));
-        const Real v_mx_out = v_mx + (t389 + -((std::fma(t389, m, t384) + (t383 - (t384 - t365))) / (usable ? m : Real(1))));
-        const Real v_my_out = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t367))) / (usable ? m : Real(1))));
-        const Real w_M_out = w_M + (t374 + -(std::fma(t374, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t374, t110, t363) + std::fma(t376, t119, std::fma(t360, t187, std::fma(t360, t119, -t363)))) / (usable ? t110 : Real(1))));
-        const Real w_m_out = w_m + (t371 + -(std::fma(t371, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t371, t117, t349) + std::fma(t375, t119, std::fma(t346, t187, std::fma(t346, t119, -t349)))) / (usable ? t117 : Real(1))));
+        const Real v_Mx_out = v_Mx + (t379 + (std::fma(-t379, M, t378) + (t377 - (t378 - t349))) / (usable ? M : Real(1)));
+        const Real v_My_out = v_My + (t382 + (std::fma(-t382, M, t381) + (t380 - (t381 - t351))) / (usable ? M : Real(1)));
+        const Real v_mx_out = v_mx + (t389 + -((std::fma(t389, m, t384) + (t383 - (t384 - t364))) / (usable ? m : Real(1))));
+        const Real v_my_out = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t366))) / (usable ? m : Real(1))));
+        const Real w_M_out = w_M + (t372 + -(std::fma(t372, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t372, t110, t361) + t376) / (usable ? t110 : Real(1))));
+        const Real w_m_out = w_m + (t373 + -(std::fma(t373, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t373, t117, t361) + t376) / (usable ? t117 : Real(1))));
         const Real finite0 = std::fma(t134, Real(0), t139 * Real(0));
         const Real finite1 = std::fma(t142, Real(0), t152 * Real(0));
         const Real finite2 = std::fma(v_Mx_out, Real(0), v_My_out * Real(0));
@@ -1134,7 +1133,7 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
             doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
         }
         if constexpr (collide_rough_batch_2d_k<Real> < 0)
-            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(t24)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(t24)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(std::fabs(t31), detail::most(detail::most(std::fabs(t52), detail::zero_as_min(M)), detail::zero_as_min(m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t58), detail::zero_as_min(t57)), detail::most(detail::most(std::fabs(t61), detail::zero_as_min(q_M)), detail::zero_as_min(q_m))), detail::least(detail::most(detail::most(std::fabs(t62), detail::zero_as_min(M)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(m)), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(std::fabs(t65), detail::zero_as_min(q_M))), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_m)), detail::most(std::fabs(t69), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t71), detail::zero_as_min(q_m)), detail::zero_as_min(t67))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(t66)), std::fabs(t73))), detail::least(detail::least(detail::most(std::fabs(t74), detail::zero_as_min(t57)), std::fabs(t75)), detail::least(detail::most(std::fabs(t79), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t94), detail::zero_as_min(b)), detail::zero_as_min(v_Mx))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t95), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t96), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t97), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t98), detail::zero_as_min(b)), detail::zero_as_min(v_My)))), detail::least(detail::least(detail::most(std::fabs(t99), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t100), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t101), detail::zero_as_min(t0)), detail::most(std::fabs(t102), detail::zero_as_min(t93))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(t53)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t110), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t112), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)), detail::most(detail::most(std::fabs(t116), detail::zero_as_min(m)), detail::zero_as_min(R_m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t117), detail::zero_as_min(q_m)), detail::most(std::fabs(t120), detail::zero_as_min(t53))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t91)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))), detail::least(detail::least(std::fabs(t124), std::fabs(t125)), detail::least(std::fabs(t126), std::fabs(t127)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t128), detail::zero_as_min(w_m)), detail::most(std::fabs(t129), detail::zero_as_min(w_m))), detail::least(std::fabs(t130), std::fabs(t131))), detail::least(detail::least(std::fabs(t132), std::fabs(t133)), detail::least(std::fabs(t134), std::fabs(t136))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t137), detail::most(std::fabs(t138), detail::zero_as_min(t123))), detail::least(std::fabs(t140), std::fabs(t141))), detail::least(detail::least(std::fabs(t142), std::fabs(t145)), detail::least(std::fabs(t156), std::fabs(t157)))), detail::least(detail::least(detail::least(std::fabs(t159), std::fabs(t160)), detail::least(std::fabs(t161), std::fabs(t162))), detail::least(detail::least(std::fabs(t164), std::fabs(t165)), detail::least(detail::most(detail::most(std::fabs(t168), detail::zero_as_min(mu)), detail::zero_as_min(t57)), detail::most(std::fabs(t169), detail::zero_as_min(mu)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t170), detail::zero_as_min(t57)), std::fabs(t171)), detail::least(detail::most(std::fabs(t172), detail::zero_as_min(t81)), detail::most(std::fabs(t173), detail::zero_as_min(t32)))), detail::least(detail::least(std::fabs(t183), std::fabs(t184)), detail::least(std::fabs(t185), std::fabs(t186)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t257), detail::zero_as_min(t256)), std::fabs(t258)), detail::least(detail::most(std::fabs(t272), detail::zero_as_min(t0)), detail::most(std::fabs(t273), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t280), detail::zero_as_min(t279)), detail::most(std::fabs(t281), detail::zero_as_min(t50))), detail::least(std::fabs(t282), detail::most(std::fabs(t288), detail::zero_as_min(t287))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t289), detail::zero_as_min(t50)), std::fabs(t290)), detail::least(detail::most(std::fabs(t343), detail::zero_as_min(t342)), std::fabs(t344))), detail::least(detail::least(detail::most(std::fabs(t346), detail::zero_as_min(t345)), detail::most(std::fabs(t347), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t348), detail::zero_as_min(t4)), std::fabs(t349)))), detail::least(detail::least(detail::least(std::fabs(t350), detail::most(std::fabs(t357), detail::zero_as_min(t356))), detail::least(std::fabs(t358), detail::most(std::fabs(t360), detail::zero_as_min(t359)))), detail::least(detail::least(detail::most(std::fabs(t361), detail::zero_as_min(t0)), detail::most(std::fabs(t362), detail::zero_as_min(t4))), detail::least(std::fabs(t363), std::fabs(t364))))), detail::least(detail::least(detail::most(std::fabs(t379), detail::zero_as_min(t378)), detail::most(std::fabs(t382), detail::zero_as_min(t381))), detail::least(detail::most(std::fabs(t385), detail::zero_as_min(t384)), detail::most(std::fabs(t388), detail::zero_as_min(t387))))))), std::numeric_limits<Real>::min());
+            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(t24)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(t24)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(std::fabs(t31), detail::most(detail::most(std::fabs(t52), detail::zero_as_min(M)), detail::zero_as_min(m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t58), detail::zero_as_min(t57)), detail::most(detail::most(std::fabs(t61), detail::zero_as_min(q_M)), detail::zero_as_min(q_m))), detail::least(detail::most(detail::most(std::fabs(t62), detail::zero_as_min(M)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(m)), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(std::fabs(t65), detail::zero_as_min(q_M))), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_m)), detail::most(std::fabs(t69), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t71), detail::zero_as_min(q_m)), detail::zero_as_min(t67))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(t66)), std::fabs(t73))), detail::least(detail::least(detail::most(std::fabs(t74), detail::zero_as_min(t57)), std::fabs(t75)), detail::least(detail::most(std::fabs(t79), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t94), detail::zero_as_min(b)), detail::zero_as_min(v_Mx))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t95), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t96), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t97), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t98), detail::zero_as_min(b)), detail::zero_as_min(v_My)))), detail::least(detail::least(detail::most(std::fabs(t99), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t100), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t101), detail::zero_as_min(t0)), detail::most(std::fabs(t102), detail::zero_as_min(t93))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(t53)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t110), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t112), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)), detail::most(detail::most(std::fabs(t116), detail::zero_as_min(m)), detail::zero_as_min(R_m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t117), detail::zero_as_min(q_m)), detail::most(std::fabs(t120), detail::zero_as_min(t53))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t91)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))), detail::least(detail::least(std::fabs(t124), std::fabs(t125)), detail::least(std::fabs(t126), std::fabs(t127)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t128), detail::zero_as_min(w_m)), detail::most(std::fabs(t129), detail::zero_as_min(w_m))), detail::least(std::fabs(t130), std::fabs(t131))), detail::least(detail::least(std::fabs(t132), std::fabs(t133)), detail::least(std::fabs(t134), std::fabs(t136))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t137), detail::most(std::fabs(t138), detail::zero_as_min(t123))), detail::least(std::fabs(t140), std::fabs(t141))), detail::least(detail::least(std::fabs(t142), std::fabs(t145)), detail::least(std::fabs(t156), std::fabs(t157)))), detail::least(detail::least(detail::least(std::fabs(t159), std::fabs(t160)), detail::least(std::fabs(t161), std::fabs(t162))), detail::least(detail::least(std::fabs(t164), std::fabs(t165)), detail::least(detail::most(detail::most(std::fabs(t168), detail::zero_as_min(mu)), detail::zero_as_min(t57)), detail::most(std::fabs(t169), detail::zero_as_min(mu)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t170), detail::zero_as_min(t57)), std::fabs(t171)), detail::least(detail::most(std::fabs(t172), detail::zero_as_min(t81)), detail::most(std::fabs(t173), detail::zero_as_min(t32)))), detail::least(detail::least(std::fabs(t183), std::fabs(t184)), detail::least(std::fabs(t185), std::fabs(t186)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t257), detail::zero_as_min(t256)), std::fabs(t258)), detail::least(detail::most(std::fabs(t272), detail::zero_as_min(t0)), detail::most(std::fabs(t273), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t280), detail::zero_as_min(t279)), detail::most(std::fabs(t281), detail::zero_as_min(t50))), detail::least(std::fabs(t282), detail::most(std::fabs(t288), detail::zero_as_min(t287))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t289), detail::zero_as_min(t50)), std::fabs(t290)), detail::least(detail::most(std::fabs(t343), detail::zero_as_min(t342)), std::fabs(t344))), detail::least(detail::least(detail::most(std::fabs(t346), detail::zero_as_min(t345)), detail::most(std::fabs(t347), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t348), detail::zero_as_min(t4)), detail::most(std::fabs(t355), detail::zero_as_min(t354))))), detail::least(detail::least(detail::least(std::fabs(t356), detail::most(std::fabs(t358), detail::zero_as_min(t357))), detail::least(detail::most(std::fabs(t359), detail::zero_as_min(t0)), detail::most(std::fabs(t360), detail::zero_as_min(t4)))), detail::least(detail::least(std::fabs(t361), std::fabs(t362)), detail::least(std::fabs(t363), detail::most(std::fabs(t379), detail::zero_as_min(t378)))))), detail::least(detail::least(detail::most(std::fabs(t382), detail::zero_as_min(t381)), detail::most(std::fabs(t385), detail::zero_as_min(t384))), detail::most(std::fabs(t388), detail::zero_as_min(t387)))))), std::numeric_limits<Real>::min());
         const bool written = usable && finite && !doubtful;
         v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
         v_My_[i] = written ? v_My_out : v_My_[i];
