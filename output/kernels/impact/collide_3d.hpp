@@ -6,6 +6,304 @@
 
 namespace impact {
 
+namespace detail {
+
+// collide with M = +infinity, a fixed sphere: every output the limit of collide's as M grows
+// without bound (derived by the engine, each form proven equal to the limit).
+// v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_M[2] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+// v_m[2] is computed in the form "limit of display, fma": at most 3.47 ulps in double on 4200 samples.
+template <class Real>
+inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_Mz = C_M[2];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real C_mz = C_m[2];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_Mz = v_M[2];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    const Real v_mz = v_m[2];
+    collide_result<Real, 3> out{v_M, v_m, status::ok};
+    if (!(m > Real(0)) || !std::isfinite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_Mz) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(C_mz) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_Mz) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(v_mz)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = t1 + t3;
+    const Real t5 = C_Mz - C_mz;
+    const Real t6 = t5 * t5;
+    const Real t7 = t4 + t6;
+    const Real t8 = v_Mx - v_mx;
+    const Real t9 = t0 * t8;
+    const Real t10 = v_My - v_my;
+    const Real t11 = t2 * t10;
+    const Real t12 = t9 + t11;
+    const Real t13 = v_Mz - v_mz;
+    const Real t14 = t5 * t13;
+    if (!(t7 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(t12 + t14 < Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t15 = Real(1) + eps;
+    const Real t16 = t15 - Real(1);
+    const Real t17 = Real(1) - (t15 - t16) + (eps - t16);
+    const Real t18 = t0 - C_Mx;
+    const Real t19 = C_Mx - (t0 - t18) - (C_mx + t18);
+    const Real t20 = t15 * t0;
+    const Real t21 = t8 - v_Mx;
+    const Real t22 = t2 - C_My;
+    const Real t23 = C_My - (t2 - t22) - (C_my + t22);
+    const Real t24 = t10 - v_My;
+    const Real t25 = t12 - t9;
+    const Real t26 = t9 - (t12 - t25) + (t11 - t25) + (std::fma(t19, t8, std::fma(t0, v_Mx - (t8 - t21) - (v_mx + t21), std::fma(t0, t8, -t9))) + std::fma(t23, t10, std::fma(t2, v_My - (t10 - t24) - (v_my + t24), std::fma(t2, t10, -t11))));
+    const Real t27 = t12 + t26;
+    const Real t28 = t5 - C_Mz;
+    const Real t29 = C_Mz - (t5 - t28) - (C_mz + t28);
+    const Real t30 = t13 - v_Mz;
+    const Real t31 = t27 + t14;
+    const Real t32 = t31 - t27;
+    const Real t33 = t27 - (t31 - t32) + (t14 - t32) + (t26 - (t27 - t12) + std::fma(t29, t13, std::fma(t5, v_Mz - (t13 - t30) - (v_mz + t30), std::fma(t5, t13, -t14))));
+    const Real t34 = t31 + t33;
+    const Real t35 = t33 - (t34 - t31);
+    const Real t36 = t20 * t34;
+    const Real t37 = t4 - t1;
+    const Real t38 = t1 - (t4 - t37) + (t3 - t37) + (std::fma(t19, t0, std::fma(t0, t19, std::fma(t0, t0, -t1))) + std::fma(t23, t2, std::fma(t2, t23, std::fma(t2, t2, -t3))));
+    const Real t39 = t4 + t38;
+    const Real t40 = t39 + t6;
+    const Real t41 = t40 - t39;
+    const Real t42 = t39 - (t40 - t41) + (t6 - t41) + (t38 - (t39 - t4) + std::fma(t29, t5, std::fma(t5, t29, std::fma(t5, t5, -t6))));
+    const Real t43 = t40 + t42;
+    if (!(std::fabs(t43) >= detail::smallest_divisor<Real>) || !(std::fabs(t43) <= std::numeric_limits<Real>::max()) || !(std::fabs(t7) >= detail::smallest_divisor<Real>) || !(std::fabs(t7) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t44 = t42 - (t43 - t40);
+    const Real t45 = t36 / t43;
+    const Real t46 = -t45;
+    const Real t47 = v_mx + t45;
+    const Real t48 = t47 - v_mx;
+    const Real t49 = v_mx - (t47 - t48) + (t45 - t48) + std::fma(t46, t44, std::fma(t46, t43, t36) + std::fma(std::fma(t17, t0, std::fma(t15, t19, std::fma(t15, t0, -t20))), t34, std::fma(t20, t35, std::fma(t20, t34, -t36)))) / t43;
+    const Real t50 = t47 + t49;
+    const Real t51 = t15 * t2;
+    const Real t52 = t51 * t34;
+    const Real t53 = t52 / t43;
+    const Real t54 = -t53;
+    const Real t55 = v_my + t53;
+    const Real t56 = t55 - v_my;
+    const Real t57 = v_my - (t55 - t56) + (t53 - t56) + std::fma(t54, t44, std::fma(t54, t43, t52) + std::fma(std::fma(t17, t2, std::fma(t15, t23, std::fma(t15, t2, -t51))), t34, std::fma(t51, t35, std::fma(t51, t34, -t52)))) / t43;
+    const Real t58 = t55 + t57;
+    const Real t59 = t15 * t5;
+    const Real t60 = std::fma(t2, t10, t9);
+    const Real t61 = std::fma(t5, t13, t60);
+    const Real t62 = t59 * t61;
+    const Real t63 = t62 / t7;
+    const Real result0 = v_Mx;
+    const Real result1 = v_My;
+    const Real result2 = v_Mz;
+    const Real result3 = t50 + (t49 - (t50 - t47));
+    const Real result4 = t58 + (t57 - (t58 - t55));
+    const Real result5 = v_mz + t63;
+    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && t0 != Real(0) && t8 != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && t2 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t5 != Real(0) && t13 != Real(0)) ||
+        (std::fabs(t20) < std::numeric_limits<Real>::min() && t15 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t36) < std::numeric_limits<Real>::min() && t20 != Real(0) && t34 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && t36 != Real(0)) ||
+        (std::fabs(t51) < std::numeric_limits<Real>::min() && t15 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t52) < std::numeric_limits<Real>::min() && t51 != Real(0) && t34 != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && t52 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t15 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && (t60 != Real(0) || (t9 == Real(0) && t2 != Real(0) && t10 != Real(0)))) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && (t61 != Real(0) || (t60 == Real(0) && t5 != Real(0) && t13 != Real(0)))) ||
+        (std::fabs(t62) < std::numeric_limits<Real>::min() && t59 != Real(0) && t61 != Real(0)) ||
+        (std::fabs(t63) < std::numeric_limits<Real>::min() && t62 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1, result2};
+    out.v_m = {result3, result4, result5};
+    return out;
+}
+
+// collide with m = +infinity, a fixed sphere: every output the limit of collide's as m grows
+// without bound (derived by the engine, each form proven equal to the limit).
+// v_M[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+// v_M[2] is computed in the form "limit of display, fma": at most 3.57 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m[2] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+template <class Real>
+inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_Mz = C_M[2];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real C_mz = C_m[2];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_Mz = v_M[2];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    const Real v_mz = v_m[2];
+    collide_result<Real, 3> out{v_M, v_m, status::ok};
+    if (!(M > Real(0)) || !std::isfinite(M)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_Mz) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(C_mz) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_Mz) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(v_mz)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = t1 + t3;
+    const Real t5 = C_Mz - C_mz;
+    const Real t6 = t5 * t5;
+    const Real t7 = t4 + t6;
+    const Real t8 = v_Mx - v_mx;
+    const Real t9 = t0 * t8;
+    const Real t10 = v_My - v_my;
+    const Real t11 = t2 * t10;
+    const Real t12 = t9 + t11;
+    const Real t13 = v_Mz - v_mz;
+    const Real t14 = t5 * t13;
+    if (!(t7 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(t12 + t14 < Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t15 = Real(1) + eps;
+    const Real t16 = t15 - Real(1);
+    const Real t17 = Real(1) - (t15 - t16) + (eps - t16);
+    const Real t18 = t0 - C_Mx;
+    const Real t19 = C_Mx - (t0 - t18) - (C_mx + t18);
+    const Real t20 = t15 * t0;
+    const Real t21 = t8 - v_Mx;
+    const Real t22 = t2 - C_My;
+    const Real t23 = C_My - (t2 - t22) - (C_my + t22);
+    const Real t24 = t10 - v_My;
+    const Real t25 = t12 - t9;
+    const Real t26 = t9 - (t12 - t25) + (t11 - t25) + (std::fma(t19, t8, std::fma(t0, v_Mx - (t8 - t21) - (v_mx + t21), std::fma(t0, t8, -t9))) + std::fma(t23, t10, std::fma(t2, v_My - (t10 - t24) - (v_my + t24), std::fma(t2, t10, -t11))));
+    const Real t27 = t12 + t26;
+    const Real t28 = t5 - C_Mz;
+    const Real t29 = C_Mz - (t5 - t28) - (C_mz + t28);
+    const Real t30 = t13 - v_Mz;
+    const Real t31 = t27 + t14;
+    const Real t32 = t31 - t27;
+    const Real t33 = t27 - (t31 - t32) + (t14 - t32) + (t26 - (t27 - t12) + std::fma(t29, t13, std::fma(t5, v_Mz - (t13 - t30) - (v_mz + t30), std::fma(t5, t13, -t14))));
+    const Real t34 = t31 + t33;
+    const Real t35 = t33 - (t34 - t31);
+    const Real t36 = t20 * t34;
+    const Real t37 = t4 - t1;
+    const Real t38 = t1 - (t4 - t37) + (t3 - t37) + (std::fma(t19, t0, std::fma(t0, t19, std::fma(t0, t0, -t1))) + std::fma(t23, t2, std::fma(t2, t23, std::fma(t2, t2, -t3))));
+    const Real t39 = t4 + t38;
+    const Real t40 = t39 + t6;
+    const Real t41 = t40 - t39;
+    const Real t42 = t39 - (t40 - t41) + (t6 - t41) + (t38 - (t39 - t4) + std::fma(t29, t5, std::fma(t5, t29, std::fma(t5, t5, -t6))));
+    const Real t43 = t40 + t42;
+    if (!(std::fabs(t43) >= detail::smallest_divisor<Real>) || !(std::fabs(t43) <= std::numeric_limits<Real>::max()) || !(std::fabs(t7) >= detail::smallest_divisor<Real>) || !(std::fabs(t7) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t44 = t42 - (t43 - t40);
+    const Real t45 = t36 / t43;
+    const Real t46 = -t45;
+    const Real t47 = v_Mx - t45;
+    const Real t48 = t47 - v_Mx;
+    const Real t49 = v_Mx - (t47 - t48) - (t45 + t48) + -(std::fma(t46, t44, std::fma(t46, t43, t36) + std::fma(std::fma(t17, t0, std::fma(t15, t19, std::fma(t15, t0, -t20))), t34, std::fma(t20, t35, std::fma(t20, t34, -t36)))) / t43);
+    const Real t50 = t47 + t49;
+    const Real t51 = t15 * t2;
+    const Real t52 = t51 * t34;
+    const Real t53 = t52 / t43;
+    const Real t54 = -t53;
+    const Real t55 = v_My - t53;
+    const Real t56 = t55 - v_My;
+    const Real t57 = v_My - (t55 - t56) - (t53 + t56) + -(std::fma(t54, t44, std::fma(t54, t43, t52) + std::fma(std::fma(t17, t2, std::fma(t15, t23, std::fma(t15, t2, -t51))), t34, std::fma(t51, t35, std::fma(t51, t34, -t52)))) / t43);
+    const Real t58 = t55 + t57;
+    const Real t59 = t15 * t5;
+    const Real t60 = std::fma(t2, t10, t9);
+    const Real t61 = std::fma(t5, t13, t60);
+    const Real t62 = t59 * t61;
+    const Real t63 = t62 / t7;
+    const Real result0 = t50 + (t49 - (t50 - t47));
+    const Real result1 = t58 + (t57 - (t58 - t55));
+    const Real result2 = v_Mz - t63;
+    const Real result3 = v_mx;
+    const Real result4 = v_my;
+    const Real result5 = v_mz;
+    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && t0 != Real(0) && t8 != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && t2 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t5 != Real(0) && t13 != Real(0)) ||
+        (std::fabs(t20) < std::numeric_limits<Real>::min() && t15 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t36) < std::numeric_limits<Real>::min() && t20 != Real(0) && t34 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && t36 != Real(0)) ||
+        (std::fabs(t51) < std::numeric_limits<Real>::min() && t15 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t52) < std::numeric_limits<Real>::min() && t51 != Real(0) && t34 != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && t52 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t15 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && (t60 != Real(0) || (t9 == Real(0) && t2 != Real(0) && t10 != Real(0)))) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && (t61 != Real(0) || (t60 == Real(0) && t5 != Real(0) && t13 != Real(0)))) ||
+        (std::fabs(t62) < std::numeric_limits<Real>::min() && t59 != Real(0) && t61 != Real(0)) ||
+        (std::fabs(t63) < std::numeric_limits<Real>::min() && t62 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1, result2};
+    out.v_m = {result3, result4, result5};
+    return out;
+}
+
+} // namespace detail
+
 /// collide(M, m, C_M, C_m, v_M, v_m, eps): Collision of two spheres in space, footnote 10.
 ///   M: mass of sphere M (positive, in kg)
 ///   m: mass of sphere m (positive, in kg)
@@ -28,9 +326,24 @@ namespace impact {
 /// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 2.80 ulps in double on 4200 samples.
 /// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 3.56 ulps in double on 4200 samples.
 /// v_m[2] is computed in the form "v_mz + k_impulse*M*(C_Mz - C_mz), compensated let": at most 3.76 ulps in double on 4200 samples.
+/// M or m may be +infinity, one at a time: a fixed sphere, an obstacle the impulse does not move. Every
+/// output is then its limit as that mass grows without bound, derived and proven
+/// (momentum is not conserved: the obstacle takes the impulse).
+/// With M = +infinity, v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With M = +infinity, v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With M = +infinity, v_M[2] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With M = +infinity, v_m[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With M = +infinity, v_m[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With M = +infinity, v_m[2] is computed in the form "limit of display, fma": at most 3.47 ulps in double.
+/// With m = +infinity, v_M[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With m = +infinity, v_M[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With m = +infinity, v_M[2] is computed in the form "limit of display, fma": at most 3.57 ulps in double.
+/// With m = +infinity, v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With m = +infinity, v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With m = +infinity, v_m[2] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged:
-///   invalid_mass: M, m not positive and finite
+///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: C_M, C_m, v_M, v_m not finite
 ///   coincident_centres: unless (C_Mx-C_mx)^2+(C_My-C_my)^2+(C_Mz-C_mz)^2 > 0
@@ -45,6 +358,12 @@ namespace impact {
 template <class Real>
 inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
 {
+    if (M == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_fixed_M<Real>(m, C_M, C_m, v_M, v_m, eps);
+    }
+    if (m == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_fixed_m<Real>(M, C_M, C_m, v_M, v_m, eps);
+    }
     const Real C_Mx = C_M[0];
     const Real C_My = C_M[1];
     const Real C_Mz = C_M[2];
@@ -230,6 +549,8 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
             condition = fails ? status::coincident_centres : condition;
             outcome = admitted ? condition : outcome;
         }
+        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
+        outcome = (M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()) ? status::underflow : outcome;
         const bool resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
         const Real M = M_[i];
