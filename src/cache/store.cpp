@@ -96,6 +96,9 @@ std::optional<std::string> foreign_file(const fs::path& folder)
             if (!text || text->find("created by Impact") == std::string::npos)
                 return name;
             has_tag = true;
+        } else if (name.rfind(std::string(tag_name) + ".tmp-", 0) == 0 && std::regex_match(name, temporary_name())) {
+            // The tag being written by another regeneration that created the folder just
+            // now (it renames it into place): not yet a tag, nor a foreign file.
         } else if (std::regex_match(name, entry_name()) || std::regex_match(name, temporary_name())) {
             has_other = true;
         } else {

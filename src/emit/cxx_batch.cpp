@@ -368,8 +368,14 @@ void print_batch(std::string& out, const kernel_plan& plan)
     const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
     const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
                                       with_status ? for_outputs : std::vector<bool>{});
-    for (const lane_input& in : inputs)
-        out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
+    // The inputs the arithmetic reads (a wall's point and centre only its guards read).
+    std::vector<bool> read(inputs.size(), false);
+    for (std::size_t v = 0; v < arithmetic.code.size(); ++v)
+        if (arithmetic.code[v].op == compile::opcode::input && for_outputs[v])
+            read.at(static_cast<std::size_t>(arithmetic.code[v].input)) = true;
+    for (std::size_t in = 0; in < inputs.size(); ++in)
+        if (read[in])
+            out += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
     std::string range_test;  // printed after the arithmetic
     if (with_status && !code.underflows.empty()) {
         // The scalar kernel's underflow test costs about as much as the loop's arithmetic,
