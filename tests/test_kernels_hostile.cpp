@@ -106,6 +106,9 @@ const char* name(status s)
     case status::invalid_inertia: return "invalid_inertia";
     case status::invalid_tangential_restitution: return "invalid_tangential_restitution";
     case status::invalid_friction: return "invalid_friction";
+    // collide_wall's own.
+    case status::invalid_normal: return "invalid_normal";
+    case status::behind_the_wall: return "behind_the_wall";
     }
     return "(not a status)";
 }
