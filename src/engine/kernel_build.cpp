@@ -300,8 +300,9 @@ public:
                     // With the lets of the limit; else with the finite kernel's written out
                     // (a let that vanishes times a mass that grows: k_impulse*M).
                     std::optional<GiNaC::ex> l = limit_form(f.value.subs(numbers, GiNaC::subs_options::no_pattern));
-                    if (!l && f.value.subs(finite_lets, GiNaC::subs_options::no_pattern) != f.value)
-                        l = limit_form(f.value.subs(finite_lets, GiNaC::subs_options::no_pattern));
+                    const GiNaC::ex written_out = f.value.subs(finite_lets, GiNaC::subs_options::no_pattern);
+                    if (!l && !written_out.is_equal(f.value))
+                        l = limit_form(written_out);
                     if (!l || std::any_of(forms.begin(), forms.end(),
                                           [&](const form& g) { return g.value.is_equal(*l); }))
                         continue;
