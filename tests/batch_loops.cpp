@@ -4,3 +4,5 @@
 
 template void impact::collide_batch<double>(const impact::collide_batch_data<double, 2>&);
 template void impact::collide_batch<double>(const impact::collide_batch_data<double, 3>&);
+template void impact::collide_wall_batch<double>(const impact::collide_wall_batch_data<double, 2>&);
+template void impact::collide_wall_batch<double>(const impact::collide_wall_batch_data<double, 3>&);

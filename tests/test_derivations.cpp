@@ -161,7 +161,8 @@ ex with_case_that_holds(const engine::derivation& d, ex e, const GiNaC::exmap& a
 const std::set<std::string> covered = {"elastic_line",      "inelastic_line",      "relative_velocity_change",
                                        "energy_loss",       "energy_loss_impulse", "billiard_transfer",
                                        "scatter_angle",     "elastic_plane",       "inelastic_plane",
-                                       "inelastic_space",   "rough_sticking",      "rough_plane"};
+                                       "inelastic_space",   "rough_sticking",      "rough_plane",
+                                       "wall_plane",        "wall_space"};
 
 } // namespace
 
@@ -543,6 +544,118 @@ BOOST_AUTO_TEST_CASE(inelastic_collision_in_space_matches_the_impulse_along_the_
 
 BOOST_AUTO_TEST_SUITE_END()
 
+// Fixed spheres and walls (beyond the paper, issue 21): a body of infinite mass that no
+// impulse moves. The sphere that hits it rebounds along the line of centres (the wall's
+// normal n) with its velocity there reversed and scaled by eps, v' = v - (1 + eps)(v.n) n/|n|^2
+// against a body at rest; across n nothing changes.
+BOOST_AUTO_TEST_SUITE(fixed_obstacles)
+
+// The kernel of `d` called `name`, and its fixed sphere's kernel for `mass`.
+const engine::kernel& fixed_kernel(const engine::derivation& d, const std::string& name, const std::string& mass)
+{
+    for (const engine::kernel& k : d.kernels)
+        if (k.name == name)
+            for (const engine::kernel& f : k.limits)
+                if (f.fixed_mass == mass)
+                    return f;
+    BOOST_FAIL(d.id() + ": no fixed sphere " + mass + " for kernel " + name);
+    throw;
+}
+
+// The value of the kernel output `member`, component `c`.
+ex output(const engine::kernel& k, const std::string& member, std::size_t c = 0)
+{
+    for (const engine::kernel_output& o : k.outputs)
+        if (o.member == member)
+            return o.values.at(c);
+    BOOST_FAIL(k.name + " has no output " + member);
+    throw;
+}
+
+BOOST_AUTO_TEST_CASE(the_fixed_sphere_kernels_on_the_line_are_the_limits_of_eq8)
+{
+    const engine::derivation& d = derived("inelastic_line");
+    const ex M = sym(d, "M"), m = sym(d, "m"), vM = sym(d, "v_M"), vm = sym(d, "v_m"), e = sym(d, "eps");
+    const engine::kernel& fixed_M = fixed_kernel(d, "collide_line", "M");
+    BOOST_TEST(fixed_M.limit_of == "collide_line");
+    BOOST_TEST(fixed_M.find_input("M") == nullptr);  // the fixed mass is no input
+    BOOST_TEST(equal(output(fixed_M, "v_M"), vM));
+    BOOST_TEST(equal(output(fixed_M, "v_m"), vM + e * (vM - vm)));
+    BOOST_TEST(equal(output(fixed_M, "J"), (1 + e) * m * (vM - vm)));
+    const engine::kernel& fixed_m = fixed_kernel(d, "collide_line", "m");
+    BOOST_TEST(equal(output(fixed_m, "v_M"), vm + e * (vm - vM)));
+    BOOST_TEST(equal(output(fixed_m, "v_m"), vm));
+    BOOST_TEST(equal(output(fixed_m, "J"), (1 + e) * M * (vM - vm)));
+    // Every candidate form of every output is its limit too.
+    for (const engine::kernel* k : {&fixed_M, &fixed_m})
+        for (const engine::kernel_output& o : k->outputs)
+            for (const engine::form& f : o.candidates.at(0))
+                BOOST_TEST(equal(f.value, o.values.at(0)), k->name + " " + o.member + ": " + f.label);
+}
+
+BOOST_AUTO_TEST_CASE(the_fixed_sphere_kernels_in_a_plane_and_in_space_rebound_along_the_line_of_centres)
+{
+    for (const std::string& id : {std::string("inelastic_plane"), std::string("inelastic_space")}) {
+        const engine::derivation& d = derived(id);
+        const std::size_t n = id == "inelastic_plane" ? 2 : 3;
+        const char* axes[] = {"x", "y", "z"};
+        std::vector<ex> r, vM, vm;
+        for (std::size_t i = 0; i < n; ++i) {
+            // The kernel's r is C_M - C_m, in its inputs.
+            r.push_back(sym(d, std::string("C_M") + axes[i]) - sym(d, std::string("C_m") + axes[i]));
+            vM.push_back(sym(d, std::string("v_M") + axes[i]));
+            vm.push_back(sym(d, std::string("v_m") + axes[i]));
+        }
+        ex rr = 0, dot = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            rr += r[i] * r[i];
+            dot += (vm[i] - vM[i]) * r[i];
+        }
+        const ex e = sym(d, "eps");
+        const engine::kernel& fixed_M = fixed_kernel(d, "collide", "M");
+        const engine::kernel& fixed_m = fixed_kernel(d, "collide", "m");
+        for (std::size_t i = 0; i < n; ++i) {
+            BOOST_TEST(equal(output(fixed_M, "v_M", i), vM[i]), id);
+            BOOST_TEST(equal(output(fixed_M, "v_m", i), vm[i] - (1 + e) * dot * r[i] / rr), id);
+            BOOST_TEST(equal(output(fixed_m, "v_M", i), vM[i] + (1 + e) * dot * r[i] / rr), id);
+            BOOST_TEST(equal(output(fixed_m, "v_m", i), vm[i]), id);
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_smooth_sphere_rebounds_from_a_wall_with_eps_along_its_normal)
+{
+    for (const std::string& id : {std::string("wall_plane"), std::string("wall_space")}) {
+        const engine::derivation& d = derived(id);
+        const std::size_t n = id == "wall_plane" ? 2 : 3;
+        const char* axes[] = {"x", "y", "z"};
+        std::vector<ex> nn, v;
+        for (std::size_t i = 0; i < n; ++i) {
+            nn.push_back(sym(d, std::string("N_") + axes[i]));
+            v.push_back(sym(d, std::string("v_") + axes[i]));
+        }
+        ex n2 = 0, vn = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            n2 += nn[i] * nn[i];
+            vn += v[i] * nn[i];
+        }
+        const ex e = sym(d, "eps"), m = sym(d, "m");
+        ex speed2 = 0, after2 = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const ex after = value(d, std::string("v_") + axes[i] + "_after");
+            BOOST_TEST(equal(after, v[i] - (1 + e) * vn * nn[i] / n2), id + " " + axes[i]);
+            speed2 += v[i] * v[i];
+            after2 += after * after;
+        }
+        // The impulse on the sphere, along the unit normal: -(1 + eps) m (v.n)/|n|.
+        BOOST_TEST(equal(GiNaC::pow(value(d, "J"), 2), GiNaC::pow((1 + e) * m * vn, 2) / n2), id);
+        // An elastic rebound keeps the speed; an inelastic one loses (1 - eps^2) of the normal part.
+        BOOST_TEST(equal(after2 - speed2, -(1 - e * e) * vn * vn / n2), id);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
 // Rough spheres (beyond the paper, issue 21), from Walton's model: the normal impulse of
 // Eq. 8, J_n = (1 + eps) m_r g_n, and a tangential impulse that reverses the contact
 // points' tangential velocity g_t with restitution beta, J_t = (1 + beta) m_t g_t, where
@@ -642,6 +755,7 @@ BOOST_AUTO_TEST_CASE(every_symbol_of_the_paper_has_the_dimension_a_physicist_giv
         {"rot_a", "1"},
         {"rot_b", "1"},
         {"n_x", "1"},
+        {"N_x", "length"},
         {"C_Mx", "length"},
         {"r_norm", "length"},
         {"m_eff", "1/mass"},

@@ -354,7 +354,7 @@ const std::map<std::string, std::set<std::string>> fields_read = {
     {"[[claim]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming", "paper", "quote", "undecided"}},
     {"[[not_compared]]", {"paper", "because"}},
     {"[[kernel]]", {"name", "inputs", "outputs", "velocities", "error", "forms", "guards", "substitute", "let",
-                    "batch"}},
+                    "batch", "fixed"}},
     {"[[kernel.bound]]", {"output", "type", "ulps", "because"}},
 };
 

@@ -324,13 +324,14 @@ BOOST_AUTO_TEST_CASE(a_warm_impact_kernels_takes_every_choice_from_the_cache)
     const scratch s;
     s.copy("eq08_inelastic_line.toml");
     s.copy("eq11_energy_loss.toml");
+    // Four kernels: collide_line, its fixed spheres' (M and m +infinity), energy_loss.
     const std::string cache = " --cache '" + (s.root / "cache").string() + "'";
     const run_result cold = s.impact("kernels --timings --jobs 2 --output cold" + cache);
     BOOST_TEST_REQUIRE(cold.status == 0, cold.output);
-    BOOST_TEST(cold.output.find("cache: kernel choice: 0 reused, 2 computed") != std::string::npos, cold.output);
+    BOOST_TEST(cold.output.find("cache: kernel choice: 0 reused, 4 computed") != std::string::npos, cold.output);
     const run_result warm = s.impact("kernels --timings --output warm" + cache);
     BOOST_TEST_REQUIRE(warm.status == 0, warm.output);
-    BOOST_TEST(warm.output.find("cache: kernel choice: 2 reused, 0 computed") != std::string::npos, warm.output);
+    BOOST_TEST(warm.output.find("cache: kernel choice: 4 reused, 0 computed") != std::string::npos, warm.output);
     const run_result none = s.impact("kernels --timings --no-cache --jobs 1 --output none");
     BOOST_TEST_REQUIRE(none.status == 0, none.output);
     BOOST_TEST(none.output.find("cache: none (--no-cache)") != std::string::npos, none.output);

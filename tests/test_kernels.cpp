@@ -486,11 +486,11 @@ std::vector<bad_pair> bad_pairs()
         {0, 1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
         {2, -1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
         {nan, 1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
-        {2, inf, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
+        {2, -inf, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
         {2, 1, 1.5, C_M, C_m, v_M, v_m, status::invalid_restitution},
         {2, 1, -0.1, C_M, C_m, v_M, v_m, status::invalid_restitution},
         {2, 1, nan, C_M, C_m, v_M, v_m, status::invalid_restitution},
-        {inf, 1, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},
+        {inf, inf, 0.5, C_M, C_m, v_M, v_m, status::invalid_mass},     // two fixed spheres
         {2, 1, 0.5, C_M, C_m, {inf, 0}, v_m, status::non_finite},
         {2, 1, 0.5, {nan, 0}, C_m, v_M, v_m, status::non_finite},
         {2, 1, 0.5, C_M, {0, nan}, v_M, v_m, status::non_finite},

@@ -13,6 +13,8 @@
 // checked against a classification of the inputs made here, independently of the kernels:
 //
 //   1. a mass not positive and finite            -> invalid_mass
+//      (but one mass +infinity, the other positive and finite, is a fixed sphere:
+//      collide_line and collide take the limit; see check_fixed_pair)
 //   2. eps outside [0, 1] (or NaN)               -> invalid_restitution
 //   3. a position or velocity not finite         -> non_finite
 //   4. |C_M - C_m| = 0 in the type               -> coincident_centres     (2D, 3D)
@@ -104,6 +106,9 @@ const char* name(status s)
     case status::invalid_inertia: return "invalid_inertia";
     case status::invalid_tangential_restitution: return "invalid_tangential_restitution";
     case status::invalid_friction: return "invalid_friction";
+    // collide_wall's own.
+    case status::invalid_normal: return "invalid_normal";
+    case status::behind_the_wall: return "behind_the_wall";
     }
     return "(not a status)";
 }
@@ -491,6 +496,14 @@ bool positive_and_finite(W x)
     return x > 0 && std::isfinite(x);
 }
 
+// A fixed sphere: one mass +infinity, the other positive and finite (collide_line and
+// collide then take the limit of that mass growing without bound; energy_loss refuses it).
+bool fixed_sphere(W M, W m)
+{
+    const W inf = std::numeric_limits<W>::infinity();
+    return (M == inf && positive_and_finite(m)) || (m == inf && positive_and_finite(M));
+}
+
 // The closed form of the collision, v'_M = v_M - (1 + eps) m (dv.r) r / ((M + m)|r|^2),
 // v'_m = v_m + (1 + eps) M (dv.r) r / ((M + m)|r|^2) (the impulse along the line of centres,
 // Eq. 9 and its 3D form), worked out in long double with masses, lengths and velocities
@@ -680,10 +693,73 @@ impact::collide_result<Real, N> scalar_collide(const pair_nd<Real, N>& p)
     return impact::collide(p.M, p.m, p.C_M, p.C_m, p.v_M, p.v_m, p.eps);
 }
 
+// A fixed sphere (one mass +infinity): the statuses of the domains as for any pair, then
+// any of the geometry's and the range's (its boundaries are not classified here); where
+// resolved, the fixed sphere's velocity unchanged bit for bit and the other's within 16
+// ulps of the limit's closed form, v - (1 + eps) ((v - V).r) r/|r|^2, V the fixed sphere's
+// velocity, worked out in long double.
+template <class Real, std::size_t N>
+void check_fixed_pair(failures& fail, tally& t, const pair_nd<Real, N>& p, status got, const std::array<Real, N>& v_M,
+                      const std::array<Real, N>& v_m)
+{
+    statuses admitted = only(status::coincident_centres) | only(status::separating) | only(status::ok) |
+                        only(status::underflow) | only(status::out_of_range);
+    bool finite = true;
+    for (std::size_t k = 0; k < N; ++k)
+        finite = finite && std::isfinite(p.C_M[k]) && std::isfinite(p.C_m[k]) && std::isfinite(p.v_M[k]) &&
+                 std::isfinite(p.v_m[k]);
+    if (!(p.eps >= 0 && p.eps <= 1))
+        admitted = only(status::invalid_restitution);
+    else if (!finite)
+        admitted = only(status::non_finite);
+    require_admitted(fail, got, admitted, "a fixed sphere: " + p.describe());
+    if (got != status::ok)
+        return;
+    const bool M_fixed = std::isinf(p.M);
+    fail(M_fixed ? identical(v_M, p.v_M) : identical(v_m, p.v_m),
+         "the fixed sphere's velocity changed: " + p.describe() + " -> " + text(v_M) + ", " + text(v_m));
+    if constexpr (!std::is_same_v<Real, long double>) {
+        W dot = 0, r2 = 0, scale = 0;
+        for (std::size_t k = 0; k < N; ++k) {
+            const W r = static_cast<W>(p.C_M[k]) - static_cast<W>(p.C_m[k]);
+            dot += (static_cast<W>(p.v_M[k]) - static_cast<W>(p.v_m[k])) * r;
+            r2 += r * r;
+        }
+        W worst = 0;
+        for (std::size_t k = 0; k < N; ++k) {
+            const W r = static_cast<W>(p.C_M[k]) - static_cast<W>(p.C_m[k]);
+            const W push = (1 + static_cast<W>(p.eps)) * dot / r2 * r;
+            const W exact = M_fixed ? static_cast<W>(p.v_m[k]) + push : static_cast<W>(p.v_M[k]) - push;
+            const Real got_k = M_fixed ? v_m[k] : v_M[k];
+            scale = std::max({scale, std::fabs(exact), std::fabs(static_cast<W>(p.v_M[k])),
+                              std::fabs(static_cast<W>(p.v_m[k]))});
+            worst = std::max(worst, std::fabs(static_cast<W>(got_k) - exact));
+        }
+        worst = worst / (scale * static_cast<W>(std::numeric_limits<Real>::epsilon()));
+        ++t.measured;
+        t.imprecise += worst > imprecise_ulps ? 1 : 0;
+        t.worst_ulps = std::max(t.worst_ulps, worst);
+        fail(worst <= imprecise_ulps, "a fixed sphere, ok but " + text(worst) + " ulps from the limit's closed form: " +
+                                          p.describe() + " -> " + text(v_M) + ", " + text(v_m));
+    }
+}
+
 // One pair through the scalar kernel, against the classification.
 template <class Real, std::size_t N>
 void check_pair(failures& fail, tally& t, const pair_nd<Real, N>& p)
 {
+    if (fixed_sphere(p.M, p.m)) {
+        std::feclearexcept(FE_DIVBYZERO);
+        const auto out = scalar_collide(p);
+        fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
+        ++t.pairs;
+        ++t.by_status.at(static_cast<std::size_t>(out.status));
+        if (out.status != status::ok)
+            fail(identical(out.v_M, p.v_M) && identical(out.v_m, p.v_m),
+                 std::string("refused (") + name(out.status) + ") with velocities changed: " + p.describe());
+        check_fixed_pair(fail, t, p, out.status, out.v_M, out.v_m);
+        return;
+    }
     const collision_nd<Real, N> c = classify(p);
     std::feclearexcept(FE_DIVBYZERO);
     const auto out = scalar_collide(p);
@@ -909,9 +985,57 @@ statuses classify_line(const pair_1d<Real>& p, const line_closed_form& f)
         f.line_lowest, f.line_certain);
 }
 
+// A fixed sphere along the line (one mass +infinity): the statuses of the domains and the
+// direction; where resolved, the fixed sphere's velocity unchanged bit for bit, the other's
+// v_M + eps (v_M - v_m) (M fixed; v_m + eps (v_m - v_M) for m) and J = (1 + eps) mu (v_M - v_m),
+// mu the finite mass, within 16 ulps, in long double.
+template <class Real>
+void check_fixed_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
+{
+    std::feclearexcept(FE_DIVBYZERO);
+    const auto out = impact::collide_line(p.M, p.m, p.v_M, p.v_m, p.eps);
+    fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
+    ++t.pairs;
+    ++t.by_status.at(static_cast<std::size_t>(out.status));
+    statuses admitted = only(status::ok) | only(status::underflow) | only(status::out_of_range);
+    if (!(p.eps >= 0 && p.eps <= 1))
+        admitted = only(status::invalid_restitution);
+    else if (!std::isfinite(p.v_M) || !std::isfinite(p.v_m))
+        admitted = only(status::non_finite);
+    else if (!(p.v_M > p.v_m))
+        admitted = only(status::separating);
+    require_admitted(fail, out.status, admitted, "a fixed sphere: " + p.describe());
+    if (out.status != status::ok) {
+        fail(identical(out.v_M, p.v_M) && identical(out.v_m, p.v_m) && identical(out.J, Real(0)),
+             std::string("refused (") + name(out.status) + ") with outputs changed: " + p.describe());
+        return;
+    }
+    const bool M_fixed = std::isinf(p.M);
+    fail(M_fixed ? identical(out.v_M, p.v_M) : identical(out.v_m, p.v_m),
+         "the fixed sphere's velocity changed: " + p.describe());
+    fail(out.J >= 0, "an approaching pair pushed together (J < 0): " + p.describe());
+    if constexpr (!std::is_same_v<Real, long double>) {
+        const W vM = p.v_M, vm = p.v_m, eps = p.eps, finite = M_fixed ? p.m : p.M;
+        const W other = M_fixed ? vM + eps * (vM - vm) : vm + eps * (vm - vM);
+        const W J = (1 + eps) * finite * (vM - vm);
+        const W scale = std::max({std::fabs(vM), std::fabs(vm), std::fabs(other)});
+        const W worst = std::max(ulps_of(M_fixed ? out.v_m : out.v_M, other, scale), ulps_of(out.J, J, scale * finite));
+        ++t.measured;
+        t.imprecise += worst > imprecise_ulps ? 1 : 0;
+        t.worst_ulps = std::max(t.worst_ulps, worst);
+        fail(worst <= imprecise_ulps, "a fixed sphere, ok but " + text(worst) + " ulps from the limit's closed form: " +
+                                          p.describe() + " -> " + text(out.v_M) + ", " + text(out.v_m) + ", J " +
+                                          text(out.J));
+    }
+}
+
 template <class Real>
 void check_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
 {
+    if (fixed_sphere(p.M, p.m)) {
+        check_fixed_line_pair(fail, t, p);
+        return;
+    }
     const line_closed_form f = closed_form(p);
     const statuses admitted = classify_line(p, f);
     std::feclearexcept(FE_DIVBYZERO);
@@ -1107,7 +1231,12 @@ std::vector<line_case<Real>> line_cases()
         {0, 1, 1, -1, 1, status::invalid_mass, 1, -1, 0, "zero mass"},
         {1, -Real(0), 1, -1, 1, status::invalid_mass, 1, -1, 0, "-0 mass"},
         {1, -1, 1, -1, 1, status::invalid_mass, 1, -1, 0, "negative mass"},
-        {inf, 1, 1, -1, 1, status::invalid_mass, 1, -1, 0, "infinite mass"},
+        {-inf, 1, 1, -1, 1, status::invalid_mass, 1, -1, 0, "a mass -infinity"},
+        {inf, inf, 1, -1, 1, status::invalid_mass, 1, -1, 0, "both masses +infinity"},
+        {inf, 1, 1, -1, 1, status::ok, 1, 3, 4,
+         "a fixed sphere M (+infinity): m rebounds at v_M + eps (v_M - v_m), J = (1 + eps) m (v_M - v_m)"},
+        {1, inf, 1, -1, Real(0.5), status::ok, -2, -1, 3,
+         "a fixed sphere m (+infinity): M rebounds at v_m + eps (v_m - v_M), J = (1 + eps) M (v_M - v_m)"},
         {1, 1, 1, -1, e::below_zero(), status::invalid_restitution, 1, -1, 0, "eps just below 0"},
         {1, 1, 1, -1, e::above_one(), status::invalid_restitution, 1, -1, 0, "eps = 1 + epsilon"},
         {1, 1, 1, -1, nan, status::invalid_restitution, 1, -1, 0, "NaN eps"},
@@ -1257,7 +1386,11 @@ std::vector<collide_case<Real, 2>> collide_cases()
         {nan, 1, 1, 1, 0, -1, 1, status::invalid_mass, -1, 1, "NaN mass"},
         {1, 0, 1, 1, 0, -1, 1, status::invalid_mass, -1, 1, "zero mass"},
         {-1, 1, 1, 1, 0, -1, 1, status::invalid_mass, -1, 1, "negative mass"},
-        {1, inf, 1, 1, 0, -1, 1, status::invalid_mass, -1, 1, "infinite mass"},
+        {1, -inf, 1, 1, 0, -1, 1, status::invalid_mass, -1, 1, "a mass -infinity"},
+        {inf, inf, 1, 1, 0, -1, 1, status::invalid_mass, -1, 1, "both masses +infinity"},
+        {inf, 1, 1, 1, 0, -1, 1, status::ok, -1, -3, "a fixed sphere M (+infinity): m rebounds at 2 v_M - v_m"},
+        {1, inf, Real(0.5), 1, 0, -1, 1, status::ok, 2, 1,
+         "a fixed sphere m (+infinity): M rebounds at v_m + eps (v_m - v_M)"},
         {1, 1, e::below_zero(), 1, 0, -1, 1, status::invalid_restitution, -1, 1, "eps just below 0"},
         {1, 1, e::above_one(), 1, 0, -1, 1, status::invalid_restitution, -1, 1, "eps = 1 + epsilon"},
         {1, 1, nan, 1, 0, -1, 1, status::invalid_restitution, -1, 1, "NaN eps"},

@@ -67,8 +67,10 @@ std::string result_type(const engine::kernel& k)
 {
     if (returns_scalar(k))
         return "Real";
+    // A fixed sphere's kernel returns what the kernel it is the limit of returns.
+    const std::string& name = k.limit_of.empty() ? k.name : k.limit_of;
     const std::size_t n = dimension(k);
-    return n ? fmt::format("{}_result<Real, {}>", k.name, n) : fmt::format("{}_result<Real>", k.name);
+    return n ? fmt::format("{}_result<Real, {}>", name, n) : fmt::format("{}_result<Real>", name);
 }
 
 std::string parameter_type(const engine::kernel_parameter& p)
@@ -149,8 +151,14 @@ std::string kernel_header(const engine::derivation& d, const std::vector<const k
     out += fmt::format("// {}{}.\n", d.source.title.value,
                        d.source.paper ? fmt::format(" ({} of the paper)", d.source.paper->value) : "");
     out += "#pragma once\n\n#include \"common.hpp\"\n\nnamespace impact {\n";
-    for (const kernel_plan* plan : plans)
-        print_kernel(out, d, *plan);
+    // Each kernel's plan, then its fixed spheres' (verify::plan_kernels' order), printed with it.
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        std::vector<const kernel_plan*> fixed;
+        while (i + 1 + fixed.size() < plans.size() && !plans[i + 1 + fixed.size()]->kernel->limit_of.empty())
+            fixed.push_back(plans[i + 1 + fixed.size()]);
+        print_kernel(out, d, *plans[i], fixed);
+        i += fixed.size();
+    }
     out += "\n} // namespace impact\n";
     return out;
 }
@@ -177,9 +185,11 @@ std::map<std::string, std::string> kernel_files(const engine::library& lib,
             continue;
         with_kernels.push_back(d);
         std::vector<const verify::kernel_plan*> own;
-        for (std::size_t i = 0; i < d->kernels.size(); ++i)
-            own.push_back(&plans[next++]);
-        all.insert(all.end(), own.begin(), own.end());
+        for (const engine::kernel& k : d->kernels) {
+            all.push_back(&plans[next]);   // common.hpp: the kernels callers see
+            for (std::size_t i = 0; i <= k.limits.size(); ++i)
+                own.push_back(&plans[next++]);
+        }
         const std::string header = "kernels/impact/" + kernel_header_name(*d);
         if (const auto taken = written_by.find(header); taken != written_by.end())
             throw error({d->source.file, 0, 0},

@@ -25,7 +25,8 @@ namespace impact::emit {
 using engine::term_order;
 using verify::kernel_plan;
 
-/// The header of one derivation's kernels; `plans` are those kernels' plans, in order.
+/// The header of one derivation's kernels; `plans` are those kernels' plans, in order, each
+/// followed by the plans of its fixed spheres' kernels (`engine::kernel::limits`).
 std::string kernel_header(const engine::derivation& d, const std::vector<const kernel_plan*>& plans);
 
 /// The file name of a derivation's kernel header: its kernel's name, with `_<N>d` when the

@@ -342,7 +342,19 @@ void print_batch(std::string& out, const kernel_plan& plan)
                 fail_with({condition_failure(given.outputs[c], *conditions[c])}, conditions[c]->status, "condition");
             out += "            outcome = admitted ? condition : outcome;\n";
         }
-        out += "        }\n        const bool resolved = outcome == status::ok;\n";
+        out += "        }\n";
+        if (!k.limits.empty()) {
+            // A fixed sphere (a mass +infinity) is left to the scalar kernel, which takes its
+            // limit: marked as a pair the loop leaves to it (status underflow, then `settle`),
+            // so that the loop stays one program without branches.
+            std::vector<std::string> infinite;
+            for (const engine::kernel& f : k.limits)
+                infinite.push_back(fmt::format("({}_[i] == std::numeric_limits<Real>::infinity())", f.fixed_mass));
+            out += fmt::format("        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).\n"
+                               "        outcome = {} ? status::{} : outcome;\n",
+                               fmt::join(infinite, " | "), underflow);
+        }
+        out += "        const bool resolved = outcome == status::ok;\n";
     }
 
     // The arithmetic, every lane computed; a lane not resolved divides by 1.
@@ -356,8 +368,14 @@ void print_batch(std::string& out, const kernel_plan& plan)
     const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
     const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
                                       with_status ? for_outputs : std::vector<bool>{});
-    for (const lane_input& in : inputs)
-        out += fmt::format("        const Real {0} = {0}_[i];\n", in.name);
+    // The inputs the arithmetic reads (a wall's point and centre only its guards read).
+    std::vector<bool> read(inputs.size(), false);
+    for (std::size_t v = 0; v < arithmetic.code.size(); ++v)
+        if (arithmetic.code[v].op == compile::opcode::input && for_outputs[v])
+            read.at(static_cast<std::size_t>(arithmetic.code[v].input)) = true;
+    for (std::size_t in = 0; in < inputs.size(); ++in)
+        if (read[in])
+            out += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
     std::string range_test;  // printed after the arithmetic
     if (with_status && !code.underflows.empty()) {
         // The scalar kernel's underflow test costs about as much as the loop's arithmetic,
@@ -439,10 +457,12 @@ void print_batch(std::string& out, const kernel_plan& plan)
         }
         for (const auto& [target, result] : writes)
             out += fmt::format("        {0}_[i] = written ? {0}_out : {0}_[i];\n", target);
-        if (code.underflows.empty())
+        if (code.underflows.empty() && k.limits.empty())
             out += fmt::format("        if constexpr (with_status)\n"
                                "            status_[i] = resolved && !written ? status::{} : outcome;\n",
                                out_of_range);
+        else if (code.underflows.empty())  // always: a fixed sphere is found by its status (`settle`)
+            out += fmt::format("        status_[i] = resolved && !written ? status::{} : outcome;\n", out_of_range);
         else  // always: a doubtful pair is found by its status (`settle`)
             out += fmt::format("        status_[i] = resolved && !written ? (usable && finite ? status::{} : status::{}) : outcome;\n",
                                underflow, out_of_range);
@@ -451,7 +471,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
             out += fmt::format("        {}_[i] = {};\n", target, result);
     }
     out += "    }\n}\n";
-    const bool settles = with_status && !code.underflows.empty();
+    const bool settles = with_status && (!code.underflows.empty() || !k.limits.empty());
     if (settles)
         print_settle(out, k, loop, inputs);
     print_blocks(out, loop, inputs, with_status, settles);

@@ -40,15 +40,16 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
     std::stable_sort(guarded.begin(), guarded.end(), [](const engine::kernel* a, const engine::kernel* b) {
         return a->guards.size() > b->guards.size();
     });
-    std::map<std::string, int> returned_by;
+    // Returned by several functions: one function in 2D and 3D (collide_wall) counts once.
+    std::map<std::string, std::set<std::string>> returned_by;
     for (const engine::kernel* k : guarded)
         for (const engine::kernel_guard& g : k->guards)
-            ++returned_by[g.status];
+            returned_by[g.status].insert(k->name);
     std::vector<std::string> statuses{"ok"};
     for (const bool shared : {true, false}) {
         for (const engine::kernel* k : guarded)
             for (const engine::kernel_guard& g : k->guards)
-                if ((returned_by[g.status] > 1) == shared &&
+                if ((returned_by[g.status].size() > 1) == shared &&
                     std::find(statuses.begin(), statuses.end(), g.status) == statuses.end())
                     statuses.push_back(g.status);
         if (shared && !guarded.empty()) {

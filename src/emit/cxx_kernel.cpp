@@ -75,6 +75,13 @@ std::string guard_meaning(const engine::derivation& d, const engine::kernel& k, 
     }
     if (!names.empty())
         parts.push_back(fmt::format("{} {}", fmt::join(names, ", "), words));
+    std::vector<std::string> fixed;
+    for (const engine::kernel& f : k.limits)
+        if (std::find(g.parameters.begin(), g.parameters.end(), f.fixed_mass) != g.parameters.end())
+            fixed.push_back(f.fixed_mass);
+    if (!fixed.empty())
+        parts.back() += fmt::format(" (+infinity allowed for {}{})", fmt::join(fixed, " or "),
+                                    fixed.size() > 1 ? ", not both" : "");
     return fmt::format("{}", fmt::join(parts, "; "));
 }
 
@@ -107,6 +114,26 @@ void print_guards_documentation(std::string& out, const engine::derivation& d, c
                        underflow);
 }
 
+// What a kernel with fixed spheres does with an infinite mass, and how accurate it is then.
+void print_fixed_documentation(std::string& out, const std::vector<const kernel_plan*>& fixed)
+{
+    if (fixed.empty())
+        return;
+    std::vector<std::string> masses;
+    for (const kernel_plan* f : fixed)
+        masses.push_back(f->kernel->fixed_mass);
+    out += fmt::format("/// {} may be +infinity{}: a fixed sphere, an obstacle the impulse does not move. Every\n"
+                       "/// output is then its limit as that mass grows without bound, derived and proven\n"
+                       "/// (momentum is not conserved: the obstacle takes the impulse).\n",
+                       fmt::join(masses, " or "), masses.size() > 1 ? ", one at a time" : "");
+    for (const kernel_plan* f : fixed)
+        for (const verify::component_plan& cp : f->components) {
+            const verify::candidate_result& c = cp.candidates[cp.chosen];
+            out += fmt::format("/// With {} = +infinity, {} is computed in the form \"{}\": at most {:.2f} ulps in double.\n",
+                               f->kernel->fixed_mass, cp.name, c.label, c.double_accuracy.max_ulps);
+        }
+}
+
 std::string members_initialiser(const engine::kernel& k)
 {
     // Outputs named after an input start as that input: a collision not resolved leaves
@@ -123,12 +150,14 @@ std::string members_initialiser(const engine::kernel& k)
 
 } // namespace
 
-void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan)
+void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan,
+                  const std::vector<const kernel_plan*>& fixed)
 {
     const engine::kernel& k = *plan.kernel;
     const std::size_t n = dimension(k);
+    const bool is_limit = !k.limit_of.empty();
 
-    if (!returns_scalar(k) && n == 0) {
+    if (!returns_scalar(k) && n == 0 && !is_limit) {
         out += fmt::format("\n/// What {} returns.\ntemplate <class Real>\nstruct {}_result {{\n", k.name, k.name);
         for (const engine::kernel_output& o : k.outputs)
             out += fmt::format("    Real {};\n", o.member);
@@ -148,27 +177,57 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         program_cxx(plan.code, component_names, "",
                     with_status ? needed_by(plan.code, plan.guard_values, plan.code.outputs.size()) : std::vector<bool>{});
 
+    // The fixed spheres' kernels first, which this one calls.
+    if (!fixed.empty()) {
+        out += "\nnamespace detail {\n";
+        for (const kernel_plan* f : fixed)
+            print_kernel(out, d, *f);
+        out += "\n} // namespace detail\n";
+    }
+
     // Documentation: inputs, and how each output is computed and how accurate it is.
     std::vector<std::string> names;
     for (const engine::kernel_parameter& p : k.parameters)
         names.push_back(p.name);
-    out += fmt::format("\n/// {}({}): {}{}.\n", k.name, fmt::join(names, ", "), d.source.title.value,
-                       d.source.paper ? ", " + d.source.paper->value : "");
-    for (const engine::kernel_parameter& p : k.parameters)
-        for (const engine::quantity& q : p.components)
-            out += fmt::format("///   {}{}\n", p.is_array ? p.name + ": " : "", describe(q));
-    for (const verify::component_plan& cp : plan.components) {
-        const verify::candidate_result& c = cp.candidates[cp.chosen];
-        out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
-                           cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
+    if (is_limit) {
+        out += fmt::format("\n// {} with {} = +infinity, a fixed sphere: every output the limit of {}'s as {} grows\n"
+                           "// without bound (derived by the engine, each form proven equal to the limit).\n",
+                           k.limit_of, k.fixed_mass, k.limit_of, k.fixed_mass);
+        for (const verify::component_plan& cp : plan.components) {
+            const verify::candidate_result& c = cp.candidates[cp.chosen];
+            out += fmt::format("// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
+                               cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
+        }
+    } else {
+        out += fmt::format("\n/// {}({}): {}{}.\n", k.name, fmt::join(names, ", "), d.source.title.value,
+                           d.source.paper ? ", " + d.source.paper->value : "");
+        for (const engine::kernel_parameter& p : k.parameters)
+            for (const engine::quantity& q : p.components)
+                out += fmt::format("///   {}{}\n", p.is_array ? p.name + ": " : "", describe(q));
+        for (const verify::component_plan& cp : plan.components) {
+            const verify::candidate_result& c = cp.candidates[cp.chosen];
+            out += fmt::format("/// {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
+                               cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
+        }
+        print_fixed_documentation(out, fixed);
+        print_guards_documentation(out, d, k, !code.divisors.empty(), !code.arguments.empty());
     }
-    print_guards_documentation(out, d, k, !code.divisors.empty(), !code.arguments.empty());
 
     std::vector<std::string> parameters;
     for (const engine::kernel_parameter& p : k.parameters)
         parameters.push_back(parameter_type(p) + " " + p.name);
     out += fmt::format("template <class Real>\ninline {} {}({}) noexcept\n{{\n", result_type(k), k.name,
                        fmt::join(parameters, ", "));
+
+    // A fixed sphere: its mass +infinity (a mass -infinity or NaN is refused below).
+    for (const kernel_plan* f : fixed) {
+        std::vector<std::string> arguments;
+        for (const engine::kernel_parameter& p : f->kernel->parameters)
+            arguments.push_back(p.name);
+        out += fmt::format("    if ({} == std::numeric_limits<Real>::infinity()) {{\n"
+                           "        return detail::{}<Real>({});\n    }}\n",
+                           f->kernel->fixed_mass, f->kernel->name, fmt::join(arguments, ", "));
+    }
 
     // Components of array parameters by name.
     for (const engine::kernel_parameter& p : k.parameters) {

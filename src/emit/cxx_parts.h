@@ -61,8 +61,11 @@ std::string condition_failure(const std::string& value, const engine::kernel_gua
 /// The hand-written part of common.hpp: src/emit/kernel_prelude.hpp, as CMake embeds it.
 extern const char* const kernel_prelude;
 
-/// The scalar kernel, its result structure and documentation; then its batch form.
-void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan);
+/// The scalar kernel, its result structure and documentation; then its batch form. `fixed`:
+/// the plans of its fixed spheres' kernels, printed before it in `detail` and called where
+/// their mass is +infinity.
+void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan,
+                  const std::vector<const kernel_plan*>& fixed = {});
 /// The batch kernel of a kernel with `batch = true`.
 void print_batch(std::string& out, const kernel_plan& plan);
 /// `f` of `terms` as a balanced tree: f(f(a, b), f(c, d)), ...

@@ -36,7 +36,11 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
     for (const verify::kernel_plan* plan : plans) {
         const engine::kernel& k = *plan->kernel;
         const engine::term_order order(k.input_symbols());
-        out += fmt::format("\n## `{}`\n\n", k.name);
+        if (k.limit_of.empty())
+            out += fmt::format("\n## `{}`\n\n", k.name);
+        else  // a fixed sphere's kernel, beside the finite one
+            out += fmt::format("\n## `{}` with `{}` = +infinity (a fixed sphere: the limit {} -> infinity)\n\n",
+                               k.limit_of, k.fixed_mass, k.fixed_mass);
         out += "| output | type | samples | mean ulps | max ulps | bound | worst regime | scale | form |\n"
                "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
         const auto components = verify::components(k);

@@ -408,7 +408,8 @@ bool same_conditions(const std::vector<case_value>& a, const std::vector<case_va
 }
 
 void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::exmap& at,
-                        const symbol_table& symbols, const assumptions& given, proof_cache& run)
+                        const symbol_table& symbols, const assumptions& given, proof_cache& run,
+                        const std::function<verdict(const GiNaC::ex&, const GiNaC::ex&)>& prove)
 {
     std::vector<std::string> names;
     for (const GiNaC::ex& s : split.symbols)
@@ -464,8 +465,9 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
         } else {
             const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
             const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
-            part.outcome = c.op == relation::equal ? prove_equal(lhs, rhs, symbols, run)
-                                                   : prove_in_case(lhs, c.op, rhs, one, symbols, given);
+            part.outcome = prove                    ? prove(lhs, rhs)
+                           : c.op == relation::equal ? prove_equal(lhs, rhs, symbols, run)
+                                                     : prove_in_case(lhs, c.op, rhs, one, symbols, given);
         }
         c.parts.push_back(std::move(part));
     }

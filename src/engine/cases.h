@@ -19,6 +19,7 @@
 
 #include "engine/derive.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -75,8 +76,11 @@ bool same_conditions(const std::vector<case_value>& a, const std::vector<case_va
 /// quantity of `split` replaced by its value there (and `at`'s special values put into
 /// the case), the claim proven under the case's condition. A case whose condition is
 /// proven false (at the special values, or under the domains) holds nothing to prove.
+/// `prove`, when given, decides each case's claim (its sides with the case's values) in
+/// place of an identity or inequality: a limit, proven in every case whatever its condition.
 void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::exmap& at,
-                        const symbol_table& symbols, const assumptions& given, proof_cache& run);
+                        const symbol_table& symbols, const assumptions& given, proof_cache& run,
+                        const std::function<verdict(const GiNaC::ex&, const GiNaC::ex&)>& prove = {});
 
 /// The verdict of a check proven case by case: failed if a case failed, sampled if one was
 /// sampled, proven if every case was; its method lists each case's.

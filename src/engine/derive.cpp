@@ -447,9 +447,25 @@ private:
         c.lhs = lhs;
         c.rhs = rhs;
         if (const auto split = cases_in(lhs, rhs, c.where)) {
-            if (spec_check.limit || !spec_check.left_at.empty())
-                throw error(c.where, fmt::format("check '{}' on '{}', defined by cases, may have no 'limit' or "
-                                                 "'left_at'", c.name, ginac_syntax(split->symbols.front(), out_.symbols.order())));
+            if (!spec_check.left_at.empty())
+                throw error(c.where, fmt::format("check '{}' on '{}', defined by cases, may have no 'left_at'",
+                                                 c.name, ginac_syntax(split->symbols.front(), out_.symbols.order())));
+            if (spec_check.limit) {
+                // The limit in every case, whatever its condition: a quantity that takes one
+                // case's value or another's has the limit they share (a fixed sphere's
+                // velocity, sticking or sliding).
+                c.limit = limit_point_of(*spec_check.limit);
+                if (c.op != relation::equal)
+                    throw error(spec_check.limit->written.where, "a limit check claims an equality: lim lhs = rhs");
+                prove_case_by_case(c, *split, at, out_.symbols, given, run_,
+                                   [&](const GiNaC::ex& l, const GiNaC::ex& r) {
+                                       std::optional<GiNaC::ex> value;
+                                       std::optional<limit_method> how;
+                                       return check_limit(l, r, *c.limit, given, value, how);
+                                   });
+                c.statement += fmt::format(" in the limit {}", spec_check.limit->written.value);
+                return c;
+            }
             prove_case_by_case(c, *split, at, out_.symbols, given, run_);
             return c;
         }

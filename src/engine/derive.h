@@ -203,6 +203,15 @@ struct kernel {
     std::vector<GiNaC::ex> speeds;
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> lets;  ///< symbol = value in the inputs, computed once
     bool batch = false;
+    /// A fixed sphere's kernel (`fixed = ["M"]`): the kernel `limit_of` as its input
+    /// `fixed_mass` grows without bound, that mass left out of its parameters. Every output
+    /// (and every candidate form) is the limit of the finite kernel's, each form proven
+    /// equal to the limit of the output's value. Empty for an ordinary kernel.
+    std::string limit_of;
+    std::string fixed_mass;
+    /// The kernels of the fixed spheres, one for each mass in `fixed`, in its order: the
+    /// emitted kernel calls one where its mass is +infinity.
+    std::vector<kernel> limits;
 
     /// Every input symbol, parameters' components in order.
     std::vector<GiNaC::ex> input_symbols() const;

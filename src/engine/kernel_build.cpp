@@ -6,10 +6,119 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
 
 namespace impact::engine {
 namespace {
+
+// The limit of `e` as `s` -> +infinity, through quantities defined by cases: a select's
+// condition by the sign it takes for s large (its limit, or that of its quotient by s or
+// s^2, the first that is finite and not 0), its values by their limits; a select inside
+// another expression named by a symbol while the expression's limit is taken, its own
+// limit put back after (the select is bounded: its cases' limits are finite). Nothing
+// when no method establishes a finite limit.
+std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given);
+
+std::optional<GiNaC::ex> limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given)
+{
+    if (!e.has(s))
+        return e;
+    if (is_select(e)) {
+        std::optional<GiNaC::ex> condition;
+        for (int power = 0; power <= 2 && !condition; ++power) {
+            const auto r = limit(e.op(0) / GiNaC::pow(s, power), s, 0, true, given);
+            if (r && !r->infinite && !r->value.is_zero())
+                condition = r->value;
+        }
+        const auto taken = limit_at_infinity(e.op(1), s, given);
+        const auto otherwise = limit_at_infinity(e.op(2), s, given);
+        if (!condition || !taken || !otherwise)
+            return std::nullopt;
+        if (GiNaC::is_a<GiNaC::numeric>(*condition))
+            return GiNaC::ex_to<GiNaC::numeric>(*condition).is_positive() ? *taken : *otherwise;
+        return select_positive(*condition, *taken, *otherwise);
+    }
+    // The limit laws, so that what the file wrote survives outside the parts that hold s:
+    // a sum's limit is the sum of its terms', a product's the product of its factors', a
+    // power's the power of its base's (a base whose limit is not 0 where the exponent is
+    // negative), each finite. Where one is not, the terms (factors) free of s are kept as
+    // they are and those with s taken to their limit together (M/(M + m) -> 1).
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+        const bool is_sum = GiNaC::is_a<GiNaC::add>(e);
+        GiNaC::ex free = is_sum ? 0 : 1, with = is_sum ? 0 : 1, whole = is_sum ? 0 : 1;
+        bool each = true;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            const GiNaC::ex& part = e.op(i);
+            if (!part.has(s)) {
+                free = is_sum ? free + part : free * part;
+                continue;
+            }
+            with = is_sum ? with + part : with * part;
+            if (each) {
+                const auto l = limit_at_infinity(part, s, given);
+                if (l)
+                    whole = is_sum ? whole + *l : whole * *l;
+                else
+                    each = false;
+            }
+        }
+        if (each)
+            return is_sum ? free + whole : free * whole;
+        if (with.is_equal(e))
+            return limit_of_whole(e, s, given);
+        const auto l = limit_at_infinity(with, s, given);
+        if (!l)
+            return std::nullopt;
+        return is_sum ? free + *l : free * *l;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1))) {
+        const auto base = limit_at_infinity(e.op(0), s, given);
+        if (base && (!base->is_zero() || GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_positive()))
+            return GiNaC::pow(*base, e.op(1));
+    }
+    return limit_of_whole(e, s, given);
+}
+
+// The limit of `e` taken at once (engine::limit), a select inside it named by a symbol.
+std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given)
+{
+    if (has_select(e)) {
+        // Each outermost select named by a symbol of its own, its limit kept to put back.
+        struct naming : GiNaC::map_function {
+            const GiNaC::ex& s;
+            const assumptions& given;
+            GiNaC::exmap back;
+            bool found = true;
+            naming(const GiNaC::ex& s, const assumptions& given) : s(s), given(given) {}
+            GiNaC::ex operator()(const GiNaC::ex& x) override
+            {
+                if (!is_select(x))
+                    return x.nops() == 0 ? x : x.map(*this);
+                const auto l = limit_at_infinity(x, s, given);
+                if (!l) {
+                    found = false;
+                    return x;
+                }
+                const GiNaC::symbol z;
+                back[z] = *l;
+                return z;
+            }
+        } name(s, given);
+        GiNaC::exmap& back = name.back;
+        const GiNaC::ex named = name(e);
+        if (!name.found)
+            return std::nullopt;
+        const auto r = limit(named, s, 0, true, given);
+        if (!r || r->infinite)
+            return std::nullopt;
+        return r->value.subs(back, GiNaC::subs_options::no_pattern);
+    }
+    const auto r = limit(e, s, 0, true, given);
+    if (!r || r->infinite)
+        return std::nullopt;
+    return r->value;
+}
 
 class kernel_builder {
 public:
@@ -93,7 +202,120 @@ public:
                     o->bound_because[t] = b.because.value;
                 }
         }
+        std::set<std::string> fixed;
+        for (const spec::text& mass : spec_kernel.fixed) {
+            if (!fixed.insert(mass.value).second)
+                throw error(mass.where, fmt::format("kernel '{}' lists '{}' as fixed twice", k.name, mass.value));
+            k.limits.push_back(limit_kernel(k, mass));
+        }
         return k;
+    }
+
+    // The kernel of a fixed sphere: `k` in the limit `mass` → +∞ (an obstacle no impulse
+    // moves). Each output's value is replaced by its limit, and each candidate form by its
+    // own limit where that is proven equal to the value's (a form whose limit is not, or
+    // has none, is left out: a let that vanishes may carry a factor that grows). The lets
+    // are taken to their limits too, a later one with the earlier ones held as they are
+    // (their limits finite), one whose limit is a number put into the forms that use it.
+    kernel limit_kernel(const kernel& k, const spec::text& mass)
+    {
+        const kernel_parameter* p = k.find_parameter(mass.value);
+        if (!p || p->is_array || !p->components.front().range.is_positive() ||
+            p->components.front().range.infinity_included)
+            throw error(mass.where, fmt::format("kernel '{}': fixed = [\"{}\"] names no scalar input of a positive, "
+                                                "finite domain (a mass)",
+                                                k.name, mass.value));
+        const GiNaC::ex M = p->components.front().symbol;
+        const assumptions given = declared_assumptions(d_.symbols, run_);
+        kernel lk;
+        lk.name = fmt::format("{}_fixed_{}", k.name, mass.value);
+        lk.where = mass.where;
+        lk.limit_of = k.name;
+        lk.fixed_mass = mass.value;
+        for (const kernel_parameter& q : k.parameters)
+            if (q.name != mass.value)
+                lk.parameters.push_back(q);
+        auto refuse_if_on_mass = [&](const GiNaC::ex& e, const std::string& what) {
+            if (e.has(M))
+                throw error(mass.where, fmt::format("kernel '{}': {} depends on '{}', which fixed = [...] lets "
+                                                    "grow without bound",
+                                                    k.name, what, mass.value));
+        };
+        lk.velocities = k.velocities;
+        lk.speeds = k.speeds;
+        for (const GiNaC::ex& speed : k.speeds)
+            refuse_if_on_mass(speed, "a velocity of its error scale");
+        // The guards as they are, the fixed mass no longer among the inputs they test (the
+        // kernel that calls this one tests it: +infinity).
+        for (kernel_guard g : k.guards) {
+            if (g.condition)
+                refuse_if_on_mass(*g.condition, "guard " + g.status);
+            g.parameters.erase(std::remove(g.parameters.begin(), g.parameters.end(), mass.value), g.parameters.end());
+            if (g.condition || !g.parameters.empty())
+                lk.guards.push_back(std::move(g));
+        }
+        auto limit_of = [&](const GiNaC::ex& e, const std::string& what) {
+            const std::optional<GiNaC::ex> l = limit_at_infinity(e, M, given);
+            if (!l)
+                throw error(mass.where, fmt::format("kernel '{}': no finite limit of {} as {} -> infinity", k.name,
+                                                    what, mass.value));
+            return *l;
+        };
+        GiNaC::exmap numbers;  // lets whose limit is a number
+        for (const auto& [symbol, value] : k.lets) {
+            const GiNaC::ex l = limit_of(value.subs(numbers, GiNaC::subs_options::no_pattern),
+                                         "let " + d_.symbols.text(symbol));
+            if (GiNaC::is_a<GiNaC::numeric>(l))
+                numbers[symbol] = l;
+            else
+                lk.lets.emplace_back(symbol, l);
+        }
+        GiNaC::exmap finite_lets;  // each let of `k` in the inputs alone
+        for (const auto& [symbol, value] : k.lets)
+            finite_lets[symbol] = value.subs(finite_lets, GiNaC::subs_options::no_pattern);
+        GiNaC::exmap lets;  // each let of the limit in the inputs alone
+        for (const auto& [symbol, value] : lk.lets)
+            lets[symbol] = value.subs(lets, GiNaC::subs_options::no_pattern);
+        for (const kernel_output& o : k.outputs) {
+            kernel_output lo = o;
+            lo.values.clear();
+            lo.candidates.clear();
+            if (o.error == kernel_output::scale::velocity)
+                lo.scale_factor = limit_of(o.scale_factor, "the error scale of " + o.member);
+            for (std::size_t c = 0; c < o.values.size(); ++c) {
+                const std::string name = o.is_array ? fmt::format("{}[{}]", o.member, c) : o.member;
+                const GiNaC::ex value = limit_of(o.values[c], "output " + name);
+                require_inputs(lk, value, o.member, mass.where);
+                // A form's limit, kept where it is proven equal to the value's.
+                auto limit_form = [&](const GiNaC::ex& written) -> std::optional<GiNaC::ex> {
+                    const std::optional<GiNaC::ex> l = limit_at_infinity(written, M, given);
+                    if (!l || l->has(M) ||
+                        prove_form(l->subs(lets, GiNaC::subs_options::no_pattern), value).what !=
+                            verdict::status::proven)
+                        return std::nullopt;
+                    return l;
+                };
+                std::vector<form> forms;
+                for (const form& f : o.candidates[c]) {
+                    // With the lets of the limit; else with the finite kernel's written out
+                    // (a let that vanishes times a mass that grows: k_impulse*M).
+                    std::optional<GiNaC::ex> l = limit_form(f.value.subs(numbers, GiNaC::subs_options::no_pattern));
+                    const GiNaC::ex written_out = f.value.subs(finite_lets, GiNaC::subs_options::no_pattern);
+                    if (!l && !written_out.is_equal(f.value))
+                        l = limit_form(written_out);
+                    if (!l || std::any_of(forms.begin(), forms.end(),
+                                          [&](const form& g) { return g.value.is_equal(*l); }))
+                        continue;
+                    forms.push_back({"limit of " + f.label, *l});
+                }
+                if (forms.empty())
+                    forms.push_back({"limit of derived", value});
+                lo.values.push_back(value);
+                lo.candidates.push_back(std::move(forms));
+            }
+            lk.outputs.push_back(std::move(lo));
+        }
+        return lk;
     }
 
 private:

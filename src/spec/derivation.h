@@ -179,6 +179,9 @@ struct kernel {
     std::vector<kernel_guard> guards;
     std::vector<binding> substitute; ///< symbols of the results written in the inputs: `r_x = C_Mx - C_mx`
     std::vector<binding> let;      ///< values computed once in the kernel, usable in forms: `k = ...`
+    /// Masses that may be +infinity, one at a time (`fixed = ["M", "m"]`): a fixed sphere,
+    /// computed by the limit of every output as that mass grows without bound.
+    std::vector<text> fixed;
     bool batch = false;            ///< also emit `<name>_batch` over structure-of-arrays data
 };
 

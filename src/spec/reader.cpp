@@ -357,6 +357,7 @@ kernel read_kernel(table_reader& in)
     k.substitute = in.binding_array("substitute", false);
     k.let = in.binding_array("let", false);
     k.batch = in.optional_bool("batch").value_or(false);
+    k.fixed = in.string_array("fixed", false);
     for (const toml::table* table : in.table_array("bound")) {
         table_reader b = in.nested(*table, "[[kernel.bound]]");
         error_bound bound;

@@ -364,8 +364,11 @@ std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* 
     std::vector<pending> kernels;
     for (const engine::derivation* d : lib.in_order()) {
         orders.push_back(std::make_unique<engine::term_order>(engine::declaration_order(d->symbols)));
-        for (const engine::kernel& k : d->kernels)
+        for (const engine::kernel& k : d->kernels) {
             kernels.push_back({&k, orders.back().get(), {}, std::nullopt});
+            for (const engine::kernel& fixed : k.limits)   // its fixed spheres' kernels after it
+                kernels.push_back({&fixed, orders.back().get(), {}, std::nullopt});
+        }
     }
     std::size_t finished = 0;
     auto one_done = [&] {

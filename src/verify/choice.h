@@ -94,7 +94,8 @@ struct text_task {
 using task_runner =
     std::function<std::vector<std::string>(const std::vector<text_task>&, const std::function<void()>& finished)>;
 
-/// Every kernel's plan, derivation by derivation in the library's order.
+/// Every kernel's plan, derivation by derivation in the library's order, each kernel's
+/// fixed spheres' kernels (`engine::kernel::limits`) right after it.
 ///
 /// With a `store`, a kernel whose description (inputs and their domains, outputs and
 /// their candidate forms, guards, `let`s) and Impact's build are those of a plan measured

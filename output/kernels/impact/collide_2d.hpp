@@ -6,6 +6,226 @@
 
 namespace impact {
 
+namespace detail {
+
+// collide with M = +infinity, a fixed sphere: every output the limit of collide's as M grows
+// without bound (derived by the engine, each form proven equal to the limit).
+// v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+template <class Real>
+inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    collide_result<Real, 2> out{v_M, v_m, status::ok};
+    if (!(m > Real(0)) || !std::isfinite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = t1 + t3;
+    const Real t5 = v_Mx - v_mx;
+    const Real t6 = t0 * t5;
+    const Real t7 = v_My - v_my;
+    const Real t8 = t2 * t7;
+    const Real t9 = t6 + t8;
+    if (!(t4 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(t9 < Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t10 = Real(1) + eps;
+    const Real t11 = t10 - Real(1);
+    const Real t12 = Real(1) - (t10 - t11) + (eps - t11);
+    const Real t13 = t0 - C_Mx;
+    const Real t14 = C_Mx - (t0 - t13) - (C_mx + t13);
+    const Real t15 = t10 * t0;
+    const Real t16 = t5 - v_Mx;
+    const Real t17 = t2 - C_My;
+    const Real t18 = C_My - (t2 - t17) - (C_my + t17);
+    const Real t19 = t7 - v_My;
+    const Real t20 = t9 - t6;
+    const Real t21 = t6 - (t9 - t20) + (t8 - t20) + (std::fma(t14, t5, std::fma(t0, v_Mx - (t5 - t16) - (v_mx + t16), std::fma(t0, t5, -t6))) + std::fma(t18, t7, std::fma(t2, v_My - (t7 - t19) - (v_my + t19), std::fma(t2, t7, -t8))));
+    const Real t22 = t9 + t21;
+    const Real t23 = t21 - (t22 - t9);
+    const Real t24 = t15 * t22;
+    const Real t25 = t4 - t1;
+    const Real t26 = t1 - (t4 - t25) + (t3 - t25) + (std::fma(t14, t0, std::fma(t0, t14, std::fma(t0, t0, -t1))) + std::fma(t18, t2, std::fma(t2, t18, std::fma(t2, t2, -t3))));
+    const Real t27 = t4 + t26;
+    if (!(std::fabs(t27) >= detail::smallest_divisor<Real>) || !(std::fabs(t27) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t28 = t26 - (t27 - t4);
+    const Real t29 = t24 / t27;
+    const Real t30 = -t29;
+    const Real t31 = v_mx + t29;
+    const Real t32 = t31 - v_mx;
+    const Real t33 = v_mx - (t31 - t32) + (t29 - t32) + std::fma(t30, t28, std::fma(t30, t27, t24) + std::fma(std::fma(t12, t0, std::fma(t10, t14, std::fma(t10, t0, -t15))), t22, std::fma(t15, t23, std::fma(t15, t22, -t24)))) / t27;
+    const Real t34 = t31 + t33;
+    const Real t35 = t10 * t2;
+    const Real t36 = t35 * t22;
+    const Real t37 = t36 / t27;
+    const Real t38 = -t37;
+    const Real t39 = v_my + t37;
+    const Real t40 = t39 - v_my;
+    const Real t41 = v_my - (t39 - t40) + (t37 - t40) + std::fma(t38, t28, std::fma(t38, t27, t36) + std::fma(std::fma(t12, t2, std::fma(t10, t18, std::fma(t10, t2, -t35))), t22, std::fma(t35, t23, std::fma(t35, t22, -t36)))) / t27;
+    const Real t42 = t39 + t41;
+    const Real result0 = v_Mx;
+    const Real result1 = v_My;
+    const Real result2 = t34 + (t33 - (t34 - t31));
+    const Real result3 = t42 + (t41 - (t42 - t39));
+    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && t2 != Real(0) && t7 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && t10 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t24) < std::numeric_limits<Real>::min() && t15 != Real(0) && t22 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && t24 != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && t10 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t36) < std::numeric_limits<Real>::min() && t35 != Real(0) && t22 != Real(0)) ||
+        (std::fabs(t37) < std::numeric_limits<Real>::min() && t36 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    return out;
+}
+
+// collide with m = +infinity, a fixed sphere: every output the limit of collide's as m grows
+// without bound (derived by the engine, each form proven equal to the limit).
+// v_M[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display, fma": at most 3.85 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+template <class Real>
+inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    collide_result<Real, 2> out{v_M, v_m, status::ok};
+    if (!(M > Real(0)) || !std::isfinite(M)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = t1 + t3;
+    const Real t5 = v_Mx - v_mx;
+    const Real t6 = t0 * t5;
+    const Real t7 = v_My - v_my;
+    const Real t8 = t2 * t7;
+    const Real t9 = t6 + t8;
+    if (!(t4 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(t9 < Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t10 = Real(1) + eps;
+    const Real t11 = t10 - Real(1);
+    const Real t12 = t0 - C_Mx;
+    const Real t13 = C_Mx - (t0 - t12) - (C_mx + t12);
+    const Real t14 = t10 * t0;
+    const Real t15 = t5 - v_Mx;
+    const Real t16 = t2 - C_My;
+    const Real t17 = C_My - (t2 - t16) - (C_my + t16);
+    const Real t18 = t7 - v_My;
+    const Real t19 = t9 - t6;
+    const Real t20 = t6 - (t9 - t19) + (t8 - t19) + (std::fma(t13, t5, std::fma(t0, v_Mx - (t5 - t15) - (v_mx + t15), std::fma(t0, t5, -t6))) + std::fma(t17, t7, std::fma(t2, v_My - (t7 - t18) - (v_my + t18), std::fma(t2, t7, -t8))));
+    const Real t21 = t9 + t20;
+    const Real t22 = t14 * t21;
+    const Real t23 = t4 - t1;
+    const Real t24 = t1 - (t4 - t23) + (t3 - t23) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t17, t2, std::fma(t2, t17, std::fma(t2, t2, -t3))));
+    const Real t25 = t4 + t24;
+    if (!(std::fabs(t25) >= detail::smallest_divisor<Real>) || !(std::fabs(t25) <= std::numeric_limits<Real>::max()) || !(std::fabs(t4) >= detail::smallest_divisor<Real>) || !(std::fabs(t4) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t26 = t22 / t25;
+    const Real t27 = -t26;
+    const Real t28 = v_Mx - t26;
+    const Real t29 = t28 - v_Mx;
+    const Real t30 = v_Mx - (t28 - t29) - (t26 + t29) + -(std::fma(t27, t24 - (t25 - t4), std::fma(t27, t25, t22) + std::fma(std::fma(Real(1) - (t10 - t11) + (eps - t11), t0, std::fma(t10, t13, std::fma(t10, t0, -t14))), t21, std::fma(t14, t20 - (t21 - t9), std::fma(t14, t21, -t22)))) / t25);
+    const Real t31 = t28 + t30;
+    const Real t32 = t10 * t2;
+    const Real t33 = std::fma(t2, t7, t6);
+    const Real t34 = t32 * t33;
+    const Real t35 = t34 / t4;
+    const Real result0 = t31 + (t30 - (t31 - t28));
+    const Real result1 = v_My - t35;
+    const Real result2 = v_mx;
+    const Real result3 = v_my;
+    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && t2 != Real(0) && t7 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t10 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t22) < std::numeric_limits<Real>::min() && t14 != Real(0) && t21 != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && t10 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t33) < std::numeric_limits<Real>::min() && (t33 != Real(0) || (t6 == Real(0) && t2 != Real(0) && t7 != Real(0)))) ||
+        (std::fabs(t34) < std::numeric_limits<Real>::min() && t32 != Real(0) && t33 != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && t34 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    return out;
+}
+
+} // namespace detail
+
 /// collide(M, m, C_M, C_m, v_M, v_m, eps): Inelastic collision in a plane, Eq. 9.
 ///   M: mass of sphere M (positive, in kg)
 ///   m: mass of sphere m (positive, in kg)
@@ -22,9 +242,20 @@ namespace impact {
 /// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 2.68 ulps in double on 4200 samples.
 /// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 2.75 ulps in double on 4200 samples.
 /// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 2.74 ulps in double on 4200 samples.
+/// M or m may be +infinity, one at a time: a fixed sphere, an obstacle the impulse does not move. Every
+/// output is then its limit as that mass grows without bound, derived and proven
+/// (momentum is not conserved: the obstacle takes the impulse).
+/// With M = +infinity, v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With M = +infinity, v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With M = +infinity, v_m[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With M = +infinity, v_m[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With m = +infinity, v_M[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With m = +infinity, v_M[1] is computed in the form "limit of display, fma": at most 3.85 ulps in double.
+/// With m = +infinity, v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With m = +infinity, v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged:
-///   invalid_mass: M, m not positive and finite
+///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: C_M, C_m, v_M, v_m not finite
 ///   coincident_centres: unless (C_Mx-C_mx)^2+(C_My-C_my)^2 > 0
@@ -39,6 +270,12 @@ namespace impact {
 template <class Real>
 inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps) noexcept
 {
+    if (M == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_fixed_M<Real>(m, C_M, C_m, v_M, v_m, eps);
+    }
+    if (m == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_fixed_m<Real>(M, C_M, C_m, v_M, v_m, eps);
+    }
     const Real C_Mx = C_M[0];
     const Real C_My = C_M[1];
     const Real C_mx = C_m[0];
@@ -193,6 +430,8 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
             condition = fails ? status::coincident_centres : condition;
             outcome = admitted ? condition : outcome;
         }
+        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
+        outcome = (M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()) ? status::underflow : outcome;
         const bool resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
         const Real M = M_[i];

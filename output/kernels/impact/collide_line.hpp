@@ -15,6 +15,126 @@ struct collide_line_result {
     impact::status status;
 };
 
+namespace detail {
+
+// collide_line with M = +infinity, a fixed sphere: every output the limit of collide_line's as M grows
+// without bound (derived by the engine, each form proven equal to the limit).
+// v_M is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m is computed in the form "limit of display, fma": at most 1.46 ulps in double on 4200 samples.
+// J is computed in the form "expanded, fma": at most 2.62 ulps in double on 4200 samples.
+template <class Real>
+inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m, Real eps) noexcept
+{
+    collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
+    if (!(m > Real(0)) || !std::isfinite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!std::isfinite(v_M) || !std::isfinite(v_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    if (!(v_M - v_m > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t0 = std::fma(v_M, eps, v_M);
+    const Real t1 = -v_m;
+    const Real t2 = std::fma(t1, eps, t0);
+    const Real t3 = m * v_M;
+    const Real t4 = v_M * eps;
+    const Real t5 = std::fma(m, t4, t3);
+    const Real t6 = -m;
+    const Real t7 = std::fma(t6, v_m, t5);
+    const Real t8 = v_m * eps;
+    const Real t9 = std::fma(t6, t8, t7);
+    const Real result0 = v_M;
+    const Real result1 = t2;
+    const Real result2 = t9;
+    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && (t0 != Real(0) || (v_M == Real(0) && v_M != Real(0) && eps != Real(0)))) ||
+        (std::fabs(t2) < std::numeric_limits<Real>::min() && (t2 != Real(0) || (t0 == Real(0) && t1 != Real(0) && eps != Real(0)))) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && m != Real(0) && v_M != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && v_M != Real(0) && eps != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t3 == Real(0) && m != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t7) < std::numeric_limits<Real>::min() && (t7 != Real(0) || (t5 == Real(0) && t6 != Real(0) && v_m != Real(0)))) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && v_m != Real(0) && eps != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && (t9 != Real(0) || (t7 == Real(0) && t6 != Real(0) && t8 != Real(0))))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = result0;
+    out.v_m = result1;
+    out.J = result2;
+    return out;
+}
+
+// collide_line with m = +infinity, a fixed sphere: every output the limit of collide_line's as m grows
+// without bound (derived by the engine, each form proven equal to the limit).
+// v_M is computed in the form "limit of display, fma": at most 1.23 ulps in double on 4200 samples.
+// v_m is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// J is computed in the form "expanded, fma": at most 3.06 ulps in double on 4200 samples.
+template <class Real>
+inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m, Real eps) noexcept
+{
+    collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
+    if (!(M > Real(0)) || !std::isfinite(M)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!std::isfinite(v_M) || !std::isfinite(v_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    if (!(v_M - v_m > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t0 = v_M * eps;
+    const Real t1 = -t0 + v_m;
+    const Real t2 = std::fma(v_m, eps, t1);
+    const Real t3 = M * v_M;
+    const Real t4 = std::fma(M, t0, t3);
+    const Real t5 = -M;
+    const Real t6 = std::fma(t5, v_m, t4);
+    const Real t7 = v_m * eps;
+    const Real t8 = std::fma(t5, t7, t6);
+    const Real result0 = t2;
+    const Real result1 = v_m;
+    const Real result2 = t8;
+    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && v_M != Real(0) && eps != Real(0)) ||
+        (std::fabs(t2) < std::numeric_limits<Real>::min() && (t2 != Real(0) || (t1 == Real(0) && v_m != Real(0) && eps != Real(0)))) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && M != Real(0) && v_M != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && (t4 != Real(0) || (t3 == Real(0) && M != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && (t6 != Real(0) || (t4 == Real(0) && t5 != Real(0) && v_m != Real(0)))) ||
+        (std::fabs(t7) < std::numeric_limits<Real>::min() && v_m != Real(0) && eps != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && (t8 != Real(0) || (t6 == Real(0) && t5 != Real(0) && t7 != Real(0))))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = result0;
+    out.v_m = result1;
+    out.J = result2;
+    return out;
+}
+
+} // namespace detail
+
 /// collide_line(M, m, v_M, v_m, eps): Inelastic collision along the line of action, Eq. 8.
 ///   M: mass of sphere M (positive, in kg)
 ///   m: mass of sphere m (positive, in kg)
@@ -24,9 +144,18 @@ struct collide_line_result {
 /// v_M is computed in the form "display, fma": at most 2.30 ulps in double on 4200 samples.
 /// v_m is computed in the form "display, fma": at most 2.40 ulps in double on 4200 samples.
 /// J is computed in the form "display, compensated": at most 1.92 ulps in double on 4200 samples.
+/// M or m may be +infinity, one at a time: a fixed sphere, an obstacle the impulse does not move. Every
+/// output is then its limit as that mass grows without bound, derived and proven
+/// (momentum is not conserved: the obstacle takes the impulse).
+/// With M = +infinity, v_M is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With M = +infinity, v_m is computed in the form "limit of display, fma": at most 1.46 ulps in double.
+/// With M = +infinity, J is computed in the form "expanded, fma": at most 2.62 ulps in double.
+/// With m = +infinity, v_M is computed in the form "limit of display, fma": at most 1.23 ulps in double.
+/// With m = +infinity, v_m is computed in the form "limit of display": at most 0.00 ulps in double.
+/// With m = +infinity, J is computed in the form "expanded, fma": at most 3.06 ulps in double.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged (the other outputs 0):
-///   invalid_mass: M, m not positive and finite
+///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: v_M, v_m not finite
 ///   separating: unless v_M-v_m > 0
@@ -40,6 +169,12 @@ struct collide_line_result {
 template <class Real>
 inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
+    if (M == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_line_fixed_M<Real>(m, v_M, v_m, eps);
+    }
+    if (m == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_line_fixed_m<Real>(M, v_M, v_m, eps);
+    }
     collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
     if (!(M > Real(0)) || !std::isfinite(M) || !(m > Real(0)) || !std::isfinite(m)) {
         out.status = status::invalid_mass;

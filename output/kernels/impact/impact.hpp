@@ -9,3 +9,5 @@
 #include "scatter_angle.hpp"
 #include "collide_3d.hpp"
 #include "collide_rough_2d.hpp"
+#include "collide_wall_2d.hpp"
+#include "collide_wall_3d.hpp"

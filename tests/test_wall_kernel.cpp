@@ -1,0 +1,266 @@
+// The generated kernel `impact::collide_wall` in 2D and 3D (derivations/wall_plane.toml,
+// wall_space.toml): a smooth sphere against a fixed wall through P with normal n (of any
+// length, out of the wall towards the sphere). Checked against the physics typed here, not
+// read from Impact: v' = v - (1 + eps) (v.n) n/|n|^2 when the sphere approaches (v.n < 0),
+// so that v'.n = -eps v.n (Newton's law of restitution, Eq. 5, against a body at rest), the
+// velocity along the wall unchanged, the speed never gained; the sphere-sphere kernel
+// `collide` with the other sphere fixed (mass +infinity, at rest, the line of centres along
+// n) agrees; every refusal with its status and the velocity returned bit for bit; the batch
+// loop gives the scalar results bit for bit.
+#define BOOST_TEST_MODULE test_wall_kernel
+#include <boost/test/unit_test.hpp>
+
+#include <impact/collide_2d.hpp>
+#include <impact/collide_3d.hpp>
+#include <impact/collide_wall_2d.hpp>
+#include <impact/collide_wall_3d.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+const double inf = std::numeric_limits<double>::infinity();
+const double nan = std::numeric_limits<double>::quiet_NaN();
+
+template <std::size_t N>
+using vec = std::array<double, N>;
+
+template <std::size_t N>
+bool same_bits(const vec<N>& a, const vec<N>& b)
+{
+    return std::memcmp(a.data(), b.data(), sizeof(double) * N) == 0;
+}
+
+template <std::size_t N>
+struct wall_hit {
+    vec<N> P, n, C, v;
+    double eps;
+};
+
+template <std::size_t N>
+long double dot(const vec<N>& a, const vec<N>& b)
+{
+    long double s = 0;
+    for (std::size_t k = 0; k < N; ++k)
+        s += static_cast<long double>(a[k]) * b[k];
+    return s;
+}
+
+// A sphere in front of a wall, moving towards it: P, n, v, eps at random, C = P + (a bit) n
+// plus a displacement along the wall.
+template <std::size_t N>
+wall_hit<N> draw(std::mt19937_64& random)
+{
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1), decade(-3, 3);
+    wall_hit<N> h{};
+    for (std::size_t k = 0; k < N; ++k) {
+        h.P[k] = unit(random);
+        h.n[k] = unit(random) * std::pow(10.0, decade(random) / 3);
+        h.v[k] = unit(random);
+    }
+    // C = P + ahead n + d, d along the wall (its part along n taken out).
+    const double ahead = fraction(random) + 0.01;
+    vec<N> d{};
+    for (double& x : d)
+        x = unit(random);
+    const long double along = dot(d, h.n) / dot(h.n, h.n);
+    for (std::size_t k = 0; k < N; ++k)
+        h.C[k] = h.P[k] + ahead * h.n[k] + static_cast<double>(d[k] - along * h.n[k]);
+    if (dot(h.v, h.n) > 0)
+        for (double& x : h.v)
+            x = -x;
+    h.eps = fraction(random);
+    return h;
+}
+
+template <std::size_t N>
+void check_against_the_physics(std::uint64_t seed)
+{
+    std::mt19937_64 random(seed);
+    double worst = 0;
+    int resolved = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const wall_hit<N> h = draw<N>(random);
+        const auto out = impact::collide_wall(h.P, h.n, h.C, h.v, h.eps);
+        if (out.status == impact::status::separating || out.status == impact::status::behind_the_wall)
+            continue;  // v.n or (C - P).n rounded to 0
+        BOOST_TEST_REQUIRE((out.status == impact::status::ok));
+        ++resolved;
+        const long double n2 = dot(h.n, h.n), vn = dot(h.v, h.n);
+        long double scale = 0;
+        std::array<long double, N> expected{};
+        for (std::size_t k = 0; k < N; ++k) {
+            expected[k] = h.v[k] - (1 + static_cast<long double>(h.eps)) * vn * h.n[k] / n2;
+            scale = std::max({scale, std::fabs(expected[k]), std::fabs(static_cast<long double>(h.v[k]))});
+        }
+        for (std::size_t k = 0; k < N; ++k)
+            worst = std::max(worst, static_cast<double>(std::fabs(out.v[k] - expected[k]) /
+                                                        (scale * std::numeric_limits<double>::epsilon())));
+        // Restitution along n, nothing along the wall, no speed gained (within rounding).
+        const long double after_n = dot(out.v, h.n) / std::sqrt(n2);
+        const double tolerance = 16 * std::numeric_limits<double>::epsilon() * static_cast<double>(scale);
+        BOOST_TEST(std::fabs(after_n + h.eps * vn / std::sqrt(n2)) <= tolerance);
+        for (std::size_t k = 0; k < N; ++k) {
+            const long double along_before = h.v[k] - vn * h.n[k] / n2;
+            const long double along_after = out.v[k] - dot(out.v, h.n) * h.n[k] / n2;
+            BOOST_TEST(std::fabs(along_after - along_before) <= tolerance);
+        }
+        BOOST_TEST(dot(out.v, out.v) <= dot(h.v, h.v) * (1 + 16 * std::numeric_limits<double>::epsilon()));
+    }
+    BOOST_TEST(resolved > 3900);
+    BOOST_TEST(worst <= 4.0, N << "D: worst " << worst << " ulps");
+}
+
+BOOST_AUTO_TEST_CASE(random_wall_hits_match_the_reflection_scaled_by_eps)
+{
+    check_against_the_physics<2>(5001);
+    check_against_the_physics<3>(5002);
+}
+
+BOOST_AUTO_TEST_CASE(a_ball_dropped_on_the_floor_bounces_at_eps_times_its_speed)
+{
+    // The floor y = 0, normal (0, 2) (not a unit vector), a ball at height 1 falling at
+    // (3, -4): it leaves at (3, 4 eps), eps = 1/2.
+    const auto out = impact::collide_wall(vec<2>{5, 0}, vec<2>{0, 2}, vec<2>{0, 1}, vec<2>{3, -4}, 0.5);
+    BOOST_TEST((out.status == impact::status::ok));
+    BOOST_TEST(out.v[0] == 3.0);
+    BOOST_TEST(out.v[1] == 2.0);
+    // In 3D, a wall x = 1 facing -x, the sphere at x = 0 moving at (1, 2, 3), elastic.
+    const auto out3 = impact::collide_wall(vec<3>{1, 7, -7}, vec<3>{-1, 0, 0}, vec<3>{0, 0, 0}, vec<3>{1, 2, 3}, 1.0);
+    BOOST_TEST((out3.status == impact::status::ok));
+    BOOST_TEST(out3.v[0] == -1.0);
+    BOOST_TEST(out3.v[1] == 2.0);
+    BOOST_TEST(out3.v[2] == 3.0);
+}
+
+// The wall is the sphere-sphere collision with the other sphere fixed: M = +infinity at rest,
+// centred behind the wall along -n (r = C_M - C_m = -n); within a few ulps of the largest
+// velocity (each kernel rounds its own way).
+template <std::size_t N>
+void check_against_a_fixed_sphere(std::uint64_t seed)
+{
+    std::mt19937_64 random(seed);
+    for (int i = 0; i < 1000; ++i) {
+        const wall_hit<N> h = draw<N>(random);
+        const auto wall = impact::collide_wall(h.P, h.n, h.C, h.v, h.eps);
+        if (wall.status != impact::status::ok)
+            continue;
+        // The sphere at the origin (only C_M - C_m matters), M at -n: exactly r = -n.
+        vec<N> C_M{}, C_m{}, at_rest{};
+        for (std::size_t k = 0; k < N; ++k)
+            C_M[k] = -h.n[k];
+        const auto sphere = impact::collide(inf, 1.0, C_M, C_m, at_rest, h.v, h.eps);
+        BOOST_TEST_REQUIRE((sphere.status == impact::status::ok));
+        BOOST_TEST(same_bits(sphere.v_M, at_rest));
+        double scale = 0;
+        for (std::size_t k = 0; k < N; ++k)
+            scale = std::max({scale, std::fabs(h.v[k]), std::fabs(wall.v[k])});
+        for (std::size_t k = 0; k < N; ++k)
+            BOOST_TEST(std::fabs(sphere.v_m[k] - wall.v[k]) <= 8 * std::numeric_limits<double>::epsilon() * scale);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_wall_is_a_fixed_sphere_at_rest)
+{
+    check_against_a_fixed_sphere<2>(6001);
+    check_against_a_fixed_sphere<3>(6002);
+}
+
+BOOST_AUTO_TEST_CASE(each_refusal_has_its_status_and_returns_the_velocity_bit_for_bit)
+{
+    using impact::status;
+    struct refused {
+        vec<2> P, n, C, v;
+        double eps;
+        status expected;
+    };
+    const vec<2> P{0, 0}, n{0, 1}, C{0, 1}, v{1, -1};
+    for (const refused& r : {refused{P, n, C, v, 1.5, status::invalid_restitution},
+                             refused{P, n, C, v, nan, status::invalid_restitution},
+                             refused{P, n, C, {inf, -1}, 0.5, status::non_finite},
+                             refused{P, {nan, 1}, C, v, 0.5, status::non_finite},
+                             refused{{0, inf}, n, C, v, 0.5, status::non_finite},
+                             refused{P, {0, 0}, C, v, 0.5, status::invalid_normal},
+                             refused{P, n, {0, -1}, v, 0.5, status::behind_the_wall},
+                             refused{P, n, {3, 0}, v, 0.5, status::behind_the_wall},  // centre on the wall
+                             refused{P, n, C, {1, 1}, 0.5, status::separating},
+                             refused{P, n, C, {1, 0}, 0.5, status::separating}}) {  // along the wall
+        const auto out = impact::collide_wall(r.P, r.n, r.C, r.v, r.eps);
+        BOOST_TEST((out.status == r.expected), "status " << static_cast<int>(out.status));
+        BOOST_TEST(same_bits(out.v, r.v));
+    }
+    // The first guard that fails: eps before the velocity, the normal before the side.
+    BOOST_TEST((impact::collide_wall(P, {0, 0}, vec<2>{0, -1}, v, 2.0).status == status::invalid_restitution));
+    BOOST_TEST((impact::collide_wall(P, {0, 0}, vec<2>{0, -1}, v, 0.5).status == status::invalid_normal));
+}
+
+template <std::size_t N>
+void check_batch(std::uint64_t seed)
+{
+    std::mt19937_64 random(seed);
+    const std::size_t count = 1003;
+    std::vector<wall_hit<N>> hits(count);
+    std::array<std::vector<double>, N> P, n, C, v;
+    for (std::size_t k = 0; k < N; ++k)
+        for (auto* a : {&P[k], &n[k], &C[k], &v[k]})
+            a->resize(count);
+    std::vector<double> eps(count);
+    std::vector<impact::status> statuses(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        wall_hit<N>& h = hits[i];
+        h = draw<N>(random);
+        switch (i % 9) {
+        case 1: h.eps = 2; break;
+        case 2: h.n = vec<N>{}; break;
+        case 3: h.v[0] = nan; break;
+        case 4: for (double& x : h.v) x = -x; break;
+        case 5: h.n[0] *= 1e-200; h.n[N - 1] *= 1e-200; break;
+        default: break;
+        }
+        for (std::size_t k = 0; k < N; ++k) {
+            P[k][i] = h.P[k];
+            n[k][i] = h.n[k];
+            C[k][i] = h.C[k];
+            v[k][i] = h.v[k];
+        }
+        eps[i] = h.eps;
+    }
+    impact::collide_wall_batch_data<double, N> data{};
+    data.count = count;
+    for (std::size_t k = 0; k < N; ++k) {
+        data.P[k] = P[k].data();
+        data.n[k] = n[k].data();
+        data.C[k] = C[k].data();
+        data.v[k] = v[k].data();
+    }
+    data.eps = eps.data();
+    data.status = statuses.data();
+    impact::collide_wall_batch(data);
+    std::size_t resolved = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const wall_hit<N>& h = hits[i];
+        const auto out = impact::collide_wall(h.P, h.n, h.C, h.v, h.eps);
+        resolved += out.status == impact::status::ok ? 1 : 0;
+        BOOST_TEST_CONTEXT(N << "D, hit " << i)
+        {
+            BOOST_TEST((statuses[i] == out.status));
+            for (std::size_t k = 0; k < N; ++k)
+                BOOST_TEST(std::memcmp(&v[k][i], &out.v[k], sizeof(double)) == 0);
+        }
+    }
+    BOOST_TEST(resolved > count / 3);
+}
+
+BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
+{
+    check_batch<2>(7001);
+    check_batch<3>(7002);
+}
+
+} // namespace
