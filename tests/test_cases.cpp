@@ -174,6 +174,31 @@ BOOST_AUTO_TEST_CASE(cases_that_leave_their_boundary_out_are_not_exhaustive)
     BOOST_TEST((two.steps.at(0).checks.at(0).outcome.what == engine::verdict::status::failed));
 }
 
+BOOST_AUTO_TEST_CASE(cases_on_a_radical_of_a_radical_cover_every_value)
+{
+    // |g_t| of rough spheres in space is the square root of a sum of squares that holds the
+    // distance sqrt(r.r): the two conditions, one the other turned, are compared as written
+    // before normal() gives each radical a form of its own.
+    const engine::derivation d = derive_text(
+        by_cases("cases = [{ when = \"x*sqrt((1 - x*sqrt(1 + x^2))^2 + x^4) <= 1\", as = \"x\" }, "
+                 "{ when = \"x*sqrt((1 - x*sqrt(1 + x^2))^2 + x^4) > 1\", as = \"1\" }]"));
+    const engine::check_result& c = d.steps.at(0).checks.at(0);
+    BOOST_TEST(proven(c.outcome), c.outcome.method);
+    BOOST_TEST(c.outcome.method.find("D >= 0, D < 0") != std::string::npos, c.outcome.method);
+}
+
+BOOST_AUTO_TEST_CASE(a_radical_of_a_radical_is_derived_with_its_radicand_expanded)
+{
+    // normal() leaves such a radicand in whichever form GiNaC's order of terms gives it in a
+    // run; expanded, a derived value is typeset the same in every run (|g_t| in space).
+    const engine::derivation d = derive_text("id = \"t\"\ntitle = \"t\"\n[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+                                             "[[symbol]]\nname = \"y\"\n[[step]]\ndefine = \"y\"\n"
+                                             "as = \"sqrt((1 + x)*(x + sqrt(1 + x^2)))\"\n[[result]]\nname = \"y\"\n");
+    const GiNaC::ex x = d.symbols.find("x")->symbol;
+    const GiNaC::ex expanded = GiNaC::sqrt(x + x * x + x * GiNaC::sqrt(1 + x * x) + GiNaC::sqrt(1 + x * x));
+    BOOST_TEST(d.find_result("y")->value.is_equal(expanded), d.find_result("y")->value);
+}
+
 BOOST_AUTO_TEST_CASE(bad_cases_are_refused_at_their_place)
 {
     BOOST_TEST(message_for(by_cases("cases = [{ when = \"x <= 1\", as = \"x\" }]")) ==

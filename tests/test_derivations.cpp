@@ -162,7 +162,7 @@ const std::set<std::string> covered = {"elastic_line",      "inelastic_line",   
                                        "energy_loss",       "energy_loss_impulse", "billiard_transfer",
                                        "scatter_angle",     "elastic_plane",       "inelastic_plane",
                                        "inelastic_space",   "rough_sticking",      "rough_plane",
-                                       "wall_plane",        "wall_space"};
+                                       "wall_plane",        "wall_space",          "rough_space_impulse"};
 
 } // namespace
 
@@ -719,6 +719,52 @@ BOOST_AUTO_TEST_CASE(the_lab_frame_velocities_and_spins_stick_or_slide_as_walton
             BOOST_TEST(numerically_equal(in_case(value(d, "v_my_after")), (J_n * n[1] + J_t * tt[1]) / 3, here));
             BOOST_TEST(numerically_equal(in_case(value(d, "w_M_after")), p.w_M_num - J_t / (numeric(2, 5) * 2 * numeric(1, 2)), here));
             BOOST_TEST(numerically_equal(in_case(value(d, "w_m_after")), -1 - J_t / (numeric(2, 3) * 3 * numeric(1, 4)), here));
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(an_impulse_at_the_contact_point_in_space_moves_and_spins_the_spheres_as_newton_says)
+{
+    // Any impulse J = J_n n + J_t on m at the contact point, -J on M (Eq. 6): the centres
+    // move by -J/M and J/m, and each spin changes by the moment about its centre over the
+    // moment of inertia q mass R^2, w_M' = w_M - (R_M/I_M) n x J_t, w_m' = w_m - (R_m/I_m) n x J_t.
+    // Checked in exact numbers at a point: n = (2, 3, 6)/7, J_t = (3, -2, 5) (any J_t: the
+    // derivation does not ask it to lie across n).
+    const engine::derivation& d = derived("rough_space_impulse");
+    const ex M = sym(d, "M"), m = sym(d, "m"), R_M = sym(d, "R_M"), R_m = sym(d, "R_m"), q_M = sym(d, "q_M"),
+             q_m = sym(d, "q_m"), eps = sym(d, "eps");
+    const std::array<std::string, 3> axis{"x", "y", "z"};
+    const numeric r[3] = {2, 3, 6}, n[3] = {numeric(2, 7), numeric(3, 7), numeric(6, 7)};
+    const numeric v_M[3] = {1, numeric(1, 2), -2}, v_m[3] = {numeric(-1, 4), 0, 1};
+    const numeric w_M[3] = {3, -1, numeric(1, 2)}, w_m[3] = {-1, 2, numeric(1, 3)}, J_t[3] = {3, -2, 5};
+    GiNaC::exmap at{{M, 2}, {m, 3}, {R_M, numeric(1, 2)}, {R_m, numeric(1, 4)}, {q_M, numeric(2, 5)},
+                    {q_m, numeric(2, 3)}, {eps, numeric(4, 5)}};
+    for (int i = 0; i < 3; ++i) {
+        at[sym(d, "r_" + axis[i])] = r[i];
+        at[sym(d, "v_M" + axis[i])] = v_M[i];
+        at[sym(d, "v_m" + axis[i])] = v_m[i];
+        at[sym(d, "w_M" + axis[i])] = w_M[i];
+        at[sym(d, "w_m" + axis[i])] = w_m[i];
+        at[sym(d, "J_t" + axis[i])] = J_t[i];
+    }
+    // J_n = (1 + eps) m_r g_n (rough_sticking) with g_n = (v_M - v_m).n: the spins' part
+    // (R w) x n has none along n.
+    numeric g_n = 0;
+    for (int i = 0; i < 3; ++i)
+        g_n += (v_M[i] - v_m[i]) * n[i];
+    const numeric J_n = numeric(9, 5) * numeric(6, 5) * g_n;
+    // n x J_t, component by component.
+    const numeric nJ[3] = {n[1] * J_t[2] - n[2] * J_t[1], n[2] * J_t[0] - n[0] * J_t[2], n[0] * J_t[1] - n[1] * J_t[0]};
+    const std::vector<GiNaC::exmap> here{at};
+    for (int i = 0; i < 3; ++i) {
+        const numeric J = J_n * n[i] + J_t[i];
+        BOOST_TEST_CONTEXT("axis " << axis[i])
+        {
+            BOOST_TEST(numerically_equal(value(d, "v_M" + axis[i] + "_after"), v_M[i] - J / 2, here));
+            BOOST_TEST(numerically_equal(value(d, "v_m" + axis[i] + "_after"), v_m[i] + J / 3, here));
+            // R_M/I_M = 1/(q_M M R_M) = 1/(2/5 * 2 * 1/2); R_m/I_m = 1/(2/3 * 3 * 1/4).
+            BOOST_TEST(numerically_equal(value(d, "w_M" + axis[i] + "_after"), w_M[i] - nJ[i] / (numeric(2, 5) * 2 * numeric(1, 2)), here));
+            BOOST_TEST(numerically_equal(value(d, "w_m" + axis[i] + "_after"), w_m[i] - nJ[i] / (numeric(2, 3) * 3 * numeric(1, 4)), here));
         }
     }
 }

@@ -184,13 +184,19 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
     c.lhs = 0;
     c.rhs = 0;
     c.outcome.residual = 0;
-    // Each condition as a sign of D, the first condition's C.
-    const GiNaC::ex d = GiNaC::normal(condition_form(cases.front()).value);
+    // Each condition as a sign of D, the first condition's C. Compared as written first: a
+    // condition with a radical of a radical (|g_t| in space, whose square holds the
+    // distance sqrt(r.r)) may normalise to forms normal() cannot compare, though it is the
+    // first's, turned.
+    const GiNaC::ex first = condition_form(cases.front()).value;
+    const GiNaC::ex d = GiNaC::normal(first);
     sign_set covered{false, false, false};
     std::vector<std::string> signs;
     for (const case_value& one : cases) {
         const nonnegative_form f = condition_form(one);
-        const auto k = constant_ratio(f.value, d);
+        auto k = constant_ratio(f.value, first);
+        if (!k)
+            k = constant_ratio(f.value, d);
         if (!k) {
             c.outcome.what = verdict::status::failed;
             c.outcome.residual = f.value;

@@ -12,7 +12,30 @@
 
 namespace impact::engine {
 
+namespace {
+
+// Each radical whose radicand holds a radical itself (|g_t| of rough spheres in space: the
+// square root of a sum of squares that holds the distance sqrt(r.r)) with its radicand
+// expanded: normal() leaves such a radicand in whichever form GiNaC's order of terms
+// gave it in this run, and a derived value is typeset and compared as it stands.
+struct expand_nested_radicands : GiNaC::map_function {
+    GiNaC::ex operator()(const GiNaC::ex& x) override
+    {
+        if (GiNaC::is_a<GiNaC::power>(x) && !x.op(1).info(GiNaC::info_flags::integer) && has_radical(x.op(0)))
+            return GiNaC::pow(GiNaC::expand(x.op(0).map(*this)), x.op(1));
+        return x.map(*this);
+    }
+};
+
+} // namespace
+
 GiNaC::ex simplified(const GiNaC::ex& e, const assumptions& given)
+{
+    expand_nested_radicands expand_nested;
+    return expand_nested(simplified_as_normalised(e, given));
+}
+
+GiNaC::ex simplified_as_normalised(const GiNaC::ex& e, const assumptions& given)
 {
     // factor() is by far the engine's most expensive call; a long numerator is left
     // expanded (a derivation states the form it wants typeset as its display form).

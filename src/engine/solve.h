@@ -24,6 +24,9 @@ namespace impact::engine {
 /// of squares taken out by sign, radicals of quotients split (see simplify_radicals).
 GiNaC::ex simplified(const GiNaC::ex& e, const assumptions& given);
 
+/// `simplified` without the radicands of nested radicals expanded.
+GiNaC::ex simplified_as_normalised(const GiNaC::ex& e, const assumptions& given);
+
 /// What a `solve` step needs of the derivation it is part of.
 struct solve_context {
     const symbol_table& symbols;
