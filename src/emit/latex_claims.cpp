@@ -11,9 +11,8 @@
 #include <map>
 
 namespace impact::emit {
-namespace {
 
-const char* latex_relation(engine::relation op)
+const char* detail::latex_relation(engine::relation op)
 {
     switch (op) {
     case engine::relation::equal: return "=";
@@ -24,6 +23,10 @@ const char* latex_relation(engine::relation op)
     }
     return "=";
 }
+
+using detail::latex_relation;
+
+namespace {
 
 // True when a \frac has another \frac inside its arguments (too tall to set inline).
 bool nested_fraction(const std::string& math)

@@ -358,35 +358,23 @@ std::string fragment_writer::rejected_solutions(const engine::step_result& s) co
     return fmt::format("The equations have {} solutions; rejected: {}.\n", s.solutions.size(), listing(rejected));
 }
 
-namespace {
-
-const char* relation_latex(engine::relation op)
-{
-    return op == engine::relation::less_equal      ? "\\leq"
-           : op == engine::relation::less          ? "<"
-           : op == engine::relation::greater_equal ? "\\geq"
-                                                   : ">";
-}
-
-} // namespace
-
 std::string fragment_writer::cases_math(const std::vector<engine::case_value>& cases, bool derived) const
 {
     std::vector<std::string> rows;
     for (const engine::case_value& c : cases)
         rows.push_back(fmt::format("{} & \\text{{if }} {} {} {}",
                                    derived ? math(c.value) : math(c.as_written, &c.written),
-                                   math(derived ? c.lhs : c.written_lhs), relation_latex(c.op),
+                                   math(derived ? c.lhs : c.written_lhs), latex_relation(c.op),
                                    math(derived ? c.rhs : c.written_rhs)));
     return fmt::format("\\begin{{cases}} {} \\end{{cases}}", fmt::join(rows, " \\\\ "));
 }
 
 std::string fragment_writer::case_condition(const engine::case_value& c) const
 {
-    const std::string derived = fmt::format("{} {} {}", math(c.lhs), relation_latex(c.op), math(c.rhs));
+    const std::string derived = fmt::format("{} {} {}", math(c.lhs), latex_relation(c.op), math(c.rhs));
     if (latex_width(derived) < 0.6 * content_width)
         return derived;
-    return fmt::format("{} {} {}", math(c.written_lhs), relation_latex(c.op), math(c.written_rhs));
+    return fmt::format("{} {} {}", math(c.written_lhs), latex_relation(c.op), math(c.written_rhs));
 }
 
 std::optional<std::string> fragment_writer::derived_cases_rows(const std::string& lhs,

@@ -17,6 +17,9 @@
 
 namespace impact::emit::detail {
 
+/// `=`, `\\leq`, `<`, `\\geq` or `>`.
+const char* latex_relation(engine::relation op);
+
 using power_term = engine::term_order::power_term;
 
 // Precedence levels: an operand printed at `level` is parenthesised when its own level
