@@ -10,7 +10,8 @@ packages=(
   libtomlplusplus-dev              # derivation files
   libcli11-dev                     # the command line
   nlohmann-json3-dev               # derivations.json
-  clang libclang-rt-14-dev         # the fuzzer (libFuzzer) and sanitized builds in CI
+  clang libclang-rt-14-dev         # the fuzzer (libFuzzer) and sanitized builds in CI; batch loops vectorised by Clang
+  g++-aarch64-linux-gnu qemu-user  # batch loops vectorised for AArch64, its kernel tests run there (kernels_aarch64)
   libbenchmark-dev                 # the kernels' benchmark (built on demand)
   texlive-latex-recommended        # pdflatex, amsmath: output/report.pdf and its test
   texlive-latex-extra              # longtable, booktabs and the rest of the report's packages

@@ -318,13 +318,16 @@ void print_batch(std::string& out, const kernel_plan& plan)
         out += "        // The status, as the scalar kernel decides it: the first guard that fails.\n"
                "        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)\n"
                "        impact::status outcome = status::ok;\n        {\n";
-        // `fails |= test`, not `||`: no branch, so that the loop vectorises.
+        // `fails |= test`, not `||`, and the status blended, not chosen by `?:`: no branch,
+        // so that the loop vectorises (detail::blend). Every condition is an int64, one mask
+        // as wide as a double in vectors: GCC vectorised selects between booleans only with
+        // AVX-512.
         bool declared = false;
         auto fail_with = [&](const std::vector<std::string>& failures, const std::string& status, const char* into) {
             for (std::size_t f = 0; f < failures.size(); ++f)
-                out += fmt::format("            {} {};\n", f == 0 ? (declared ? "fails =" : "bool fails =") : "fails |=",
+                out += fmt::format("            {} {};\n", f == 0 ? (declared ? "fails =" : "std::int64_t fails =") : "fails |=",
                                    failures[f]);
-            out += fmt::format("            {0} = fails ? status::{1} : {0};\n", into, status);
+            out += fmt::format("            {0} = detail::blend(fails, status::{1}, {0});\n", into, status);
             declared = true;
         };
         for (auto g = domains.rbegin(); g != domains.rend(); ++g)
@@ -332,7 +335,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
         if (!conditions.empty()) {
             // A separate status for the conditions, taken where the domains admit the
             // inputs (GCC vectorises this, not `fails &= admitted`).
-            out += "            const bool admitted = outcome == status::ok;\n"
+            out += "            const std::int64_t admitted = outcome == status::ok;\n"
                    "            impact::status condition = status::ok;\n";
             const cxx_code given = program_cxx(plan.code, element_names, "admitted");
             for (std::size_t s = 0; s < given.statements.size(); ++s)
@@ -340,7 +343,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
                     out += "            " + given.statements[s] + "\n";
             for (std::size_t c = conditions.size(); c-- > 0;)
                 fail_with({condition_failure(given.outputs[c], *conditions[c])}, conditions[c]->status, "condition");
-            out += "            outcome = admitted ? condition : outcome;\n";
+            out += "            outcome = detail::blend(admitted, condition, outcome);\n";
         }
         out += "        }\n";
         if (!k.limits.empty()) {
@@ -351,10 +354,10 @@ void print_batch(std::string& out, const kernel_plan& plan)
             for (const engine::kernel& f : k.limits)
                 infinite.push_back(fmt::format("({}_[i] == std::numeric_limits<Real>::infinity())", f.fixed_mass));
             out += fmt::format("        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).\n"
-                               "        outcome = {} ? status::{} : outcome;\n",
+                               "        outcome = detail::blend({}, status::{}, outcome);\n",
                                fmt::join(infinite, " | "), underflow);
         }
-        out += "        const bool resolved = outcome == status::ok;\n";
+        out += "        const std::int64_t resolved = outcome == status::ok;\n";
     }
 
     // The arithmetic, every lane computed; a lane not resolved divides by 1.
@@ -390,20 +393,21 @@ void print_batch(std::string& out, const kernel_plan& plan)
                 low.push_back(fmt::format("detail::magnitude_or({}, lowest)", plain_names[in.input]));
                 high.push_back(fmt::format("std::fabs({})", plain_names[in.input]));
             }
-        range_test = fmt::format("        bool doubtful = false;\n        if constexpr ({0}_k<Real> >= 0) {{\n"
+        range_test = fmt::format("        std::int64_t doubtful = 0;\n        if constexpr ({0}_k<Real> >= 0) {{\n"
                            "            constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
                            "            doubtful = !(std::isgreaterequal({1}, lowest) & std::islessequal({2}, highest));\n"
                            "        }}\n",
                            loop, balanced("detail::least", low), balanced("detail::most", high));
     }
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
-    // written only if finite (`written`), as the scalar kernel decides. (`&&` here, which
-    // GCC if-converts; with `&`, it leaves the loop's conditional stores unvectorised.)
+    // written only if finite (`written`), as the scalar kernel decides. (`&`, not `&&`: with
+    // `&&`, GCC tested a divisor's range only where the tests before it held, a comparison
+    // that may trap made conditional, and did not vectorise without -fno-trapping-math.)
     const auto declare_usable = [&] {
         std::vector<std::string> in_range{"resolved"};
         for (const std::string& test : divisors_in_range(code))
             in_range.push_back(test);
-        out += fmt::format("        const bool usable = {};\n", fmt::join(in_range, " && "));
+        out += fmt::format("        const std::int64_t usable = {};\n", fmt::join(in_range, " & "));
     };
     if (with_status && code.divisors_known == 0)
         declare_usable();
@@ -430,8 +434,8 @@ void print_batch(std::string& out, const kernel_plan& plan)
             results.push_back(target + "_out");
         }
         // In a loop ordered for registers, the results' test is computed for every pair, in
-        // statements of its own. As a condition after `usable &&`, GCC computed it only
-        // where `usable` held, and the ordered 3D loop loaded more vectors of the arrays
+        // statements of its own. As a condition after `usable &&` (before the conditions
+        // were int64 flags), GCC computed it only where `usable` held, and the ordered 3D loop loaded more vectors of the arrays
         // than it needs, each a miss out of cache. The 2D loop, in its own order, runs better
         // with the test in place.
         int names = 0;
@@ -445,26 +449,29 @@ void print_batch(std::string& out, const kernel_plan& plan)
         // Written only in range and where nothing underflowed, as the scalar kernel decides:
         // out_of_range first, then underflow.
         if (code.underflows.empty()) {
-            out += fmt::format("        const bool written = usable && {};\n", finite);
+            out += fmt::format("        const std::int64_t written = usable & {};\n", finite);
         } else {
-            out += fmt::format("        const bool finite = {};\n", finite);
+            out += fmt::format("        const std::int64_t finite = {};\n", finite);
             out += range_test;
             // Where the format has no range (k = -1), the least magnitude of the values tested.
             out += fmt::format("        if constexpr ({}_k<Real> < 0)\n"
                                "            doubtful = !std::isgreaterequal({}, std::numeric_limits<Real>::min());\n",
                                loop, least_magnitude(code));
-            out += "        const bool written = usable && finite && !doubtful;\n";
+            out += "        const std::int64_t written = usable & finite & !doubtful;\n";
         }
+        // Every pair's velocities stored, the old ones where not written: a store only
+        // where `written` held needs a masked store (AArch64 has none), and GCC made one of
+        // `v_[i] = written ? v_out : v_[i]`.
         for (const auto& [target, result] : writes)
-            out += fmt::format("        {0}_[i] = written ? {0}_out : {0}_[i];\n", target);
+            out += fmt::format("        {0}_[i] = detail::blend(written, {0}_out, {0}_[i]);\n", target);
         if (code.underflows.empty() && k.limits.empty())
             out += fmt::format("        if constexpr (with_status)\n"
-                               "            status_[i] = resolved && !written ? status::{} : outcome;\n",
+                               "            status_[i] = detail::blend(resolved & !written, status::{}, outcome);\n",
                                out_of_range);
         else if (code.underflows.empty())  // always: a fixed sphere is found by its status (`settle`)
-            out += fmt::format("        status_[i] = resolved && !written ? status::{} : outcome;\n", out_of_range);
+            out += fmt::format("        status_[i] = detail::blend(resolved & !written, status::{}, outcome);\n", out_of_range);
         else  // always: a doubtful pair is found by its status (`settle`)
-            out += fmt::format("        status_[i] = resolved && !written ? (usable && finite ? status::{} : status::{}) : outcome;\n",
+            out += fmt::format("        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::{}, status::{}), outcome);\n",
                                underflow, out_of_range);
     } else {
         for (const auto& [target, result] : writes)

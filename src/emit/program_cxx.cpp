@@ -126,7 +126,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             expression = operand(in.a, product) + " / " +
                          (kept_if.empty() || !divides(p, in)
                               ? operand(in.b, unary)
-                              : "(" + kept_if + " ? " + text[in.b] + " : Real(1))");
+                              : "detail::blend(" + kept_if + ", " + text[in.b] + ", Real(1))");
             own = product;
             break;
         case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
@@ -136,13 +136,17 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             expression = "std::sqrt(" +
                          (kept_if.empty() || static_cast<int>(i) < last_divisor
                               ? text[in.a]
-                              : kept_if + " ? " + text[in.a] + " : Real(0)") +
+                              : "detail::blend(" + kept_if + ", " + text[in.a] + ", Real(0))") +
                          ")";
             break;
         case opcode::fma: expression = "std::fma(" + text[in.a] + ", " + text[in.b] + ", " + text[in.c] + ")"; break;
         // Both values computed, one chosen: no branch (a conditional move, a blend in vectors).
+        // In a batch loop (`kept_if`), a blend of the bits: GCC made a select of divisors a
+        // division in each branch, which a loop without AVX-512 cannot vectorise.
         case opcode::select:
-            expression = "(" + text[in.a] + " > Real(0) ? " + text[in.b] + " : " + text[in.c] + ")";
+            expression = kept_if.empty()
+                             ? "(" + text[in.a] + " > Real(0) ? " + text[in.b] + " : " + text[in.c] + ")"
+                             : "detail::blend(" + text[in.a] + " > Real(0), " + text[in.b] + ", " + text[in.c] + ")";
             break;
         case opcode::call:
             expression = "std::" + in.function + "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";

@@ -14,10 +14,11 @@ namespace impact::emit {
 
 /// The body of a kernel: one `const Real tN = ...;` line per instruction that is not an
 /// input (inputs are referred to by `names`), and the C++ expression of each output.
-/// With `kept_if`, every divisor d that is not a constant is written `(kept_if ? d : Real(1))`
-/// and every square root's argument x `(kept_if ? x : Real(0))`: a batch loop computes every
-/// lane, and one whose results it discards neither divides by zero nor takes a root of a
-/// negative number.
+/// With `kept_if` (an int64 flag), every divisor d that is not a constant is written
+/// `detail::blend(kept_if, d, Real(1))` and every square root's argument x
+/// `detail::blend(kept_if, x, Real(0))`: a batch loop computes every lane, and one whose
+/// results it discards neither divides by zero nor takes a root of a negative number.
+/// Selects are blends too (no branch a compiler could divide in).
 /// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
 /// their range before dividing: all are computed by the first `divisors_known` statements,
 /// and no division is made before them unless `divides_early`.

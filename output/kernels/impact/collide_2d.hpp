@@ -403,16 +403,16 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            bool fails = !(((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_mx_[i], Real(0), C_my_[i] * Real(0))) + (std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)) + std::fma(v_mx_[i], Real(0), v_my_[i] * Real(0)))) == Real(0));
-            outcome = fails ? status::non_finite : outcome;
+            std::int64_t fails = !(((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_mx_[i], Real(0), C_my_[i] * Real(0))) + (std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)) + std::fma(v_mx_[i], Real(0), v_my_[i] * Real(0)))) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
-            outcome = fails ? status::invalid_restitution : outcome;
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
             fails = !(M_[i] > Real(0));
             fails |= !(m_[i] > Real(0));
             fails |= !(std::fma(M_[i], Real(0), m_[i] * Real(0)) == Real(0));
-            outcome = fails ? status::invalid_mass : outcome;
-            const bool admitted = outcome == status::ok;
+            outcome = detail::blend(fails, status::invalid_mass, outcome);
+            const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
             const Real t0 = C_Mx_[i] - C_mx_[i];
             const Real t1 = t0 * t0;
@@ -425,14 +425,14 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
             const Real t8 = t2 * t7;
             const Real t9 = t6 + t8;
             fails = !(t9 < Real(0));
-            condition = fails ? status::separating : condition;
+            condition = detail::blend(fails, status::separating, condition);
             fails = !(t4 > Real(0));
-            condition = fails ? status::coincident_centres : condition;
-            outcome = admitted ? condition : outcome;
+            condition = detail::blend(fails, status::coincident_centres, condition);
+            outcome = detail::blend(admitted, condition, outcome);
         }
         // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
-        outcome = (M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()) ? status::underflow : outcome;
-        const bool resolved = outcome == status::ok;
+        outcome = detail::blend((M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()), status::underflow, outcome);
+        const std::int64_t resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
         const Real M = M_[i];
         const Real m = m_[i];
@@ -473,10 +473,10 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real t25 = t1 - (t4 - t24) + (t3 - t24) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t16, t2, std::fma(t2, t16, std::fma(t2, t2, -t3))));
         const Real t26 = t4 + t25;
         const Real t27 = t22 * t26;
-        const bool usable = resolved && (std::fabs(t27) >= detail::smallest_divisor<Real>) && (std::fabs(t27) <= std::numeric_limits<Real>::max());
-        const Real t28 = t21 / (usable ? t27 : Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t27) >= detail::smallest_divisor<Real>) & (std::fabs(t27) <= std::numeric_limits<Real>::max());
+        const Real t28 = t21 / detail::blend(usable, t27, Real(1));
         const Real t29 = -t28;
-        const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / (usable ? t27 : Real(1));
+        const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / detail::blend(usable, t27, Real(1));
         const Real t31 = t30 * m;
         const Real t32 = t31 * t0;
         const Real t33 = t31 * t2;
@@ -487,20 +487,20 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real v_My_out = -t33 + v_My;
         const Real v_mx_out = t35 + v_mx;
         const Real v_my_out = t36 + v_my;
-        const bool finite = ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
-        bool doubtful = false;
+        const std::int64_t finite = ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
+        std::int64_t doubtful = 0;
         if constexpr (collide_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_k<Real>);
             doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My)))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), std::fabs(eps))), highest));
         }
         if constexpr (collide_batch_2d_k<Real> < 0)
             doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), detail::most(detail::most(std::fabs(t8), detail::zero_as_min(t2)), detail::zero_as_min(t7)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t10)), detail::zero_as_min(t20)), detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t22)), detail::zero_as_min(t26))), detail::least(std::fabs(t28), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t30)), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t32), detail::zero_as_min(t0)), detail::most(std::fabs(t33), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(t30)), detail::zero_as_min(M)), detail::most(std::fabs(t35), detail::zero_as_min(t0)))), detail::most(std::fabs(t36), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
-        const bool written = usable && finite && !doubtful;
-        v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
-        v_My_[i] = written ? v_My_out : v_My_[i];
-        v_mx_[i] = written ? v_mx_out : v_mx_[i];
-        v_my_[i] = written ? v_my_out : v_my_[i];
-        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+        const std::int64_t written = usable & finite & !doubtful;
+        v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
+        v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
+        v_mx_[i] = detail::blend(written, v_mx_out, v_mx_[i]);
+        v_my_[i] = detail::blend(written, v_my_out, v_my_[i]);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
 }
 

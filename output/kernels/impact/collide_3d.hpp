@@ -511,16 +511,16 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            bool fails = !((((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_Mz_[i], Real(0), C_mx_[i] * Real(0))) + (std::fma(C_my_[i], Real(0), C_mz_[i] * Real(0)) + std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)))) + (std::fma(v_Mz_[i], Real(0), v_mx_[i] * Real(0)) + std::fma(v_my_[i], Real(0), v_mz_[i] * Real(0)))) == Real(0));
-            outcome = fails ? status::non_finite : outcome;
+            std::int64_t fails = !((((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_Mz_[i], Real(0), C_mx_[i] * Real(0))) + (std::fma(C_my_[i], Real(0), C_mz_[i] * Real(0)) + std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)))) + (std::fma(v_Mz_[i], Real(0), v_mx_[i] * Real(0)) + std::fma(v_my_[i], Real(0), v_mz_[i] * Real(0)))) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
-            outcome = fails ? status::invalid_restitution : outcome;
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
             fails = !(M_[i] > Real(0));
             fails |= !(m_[i] > Real(0));
             fails |= !(std::fma(M_[i], Real(0), m_[i] * Real(0)) == Real(0));
-            outcome = fails ? status::invalid_mass : outcome;
-            const bool admitted = outcome == status::ok;
+            outcome = detail::blend(fails, status::invalid_mass, outcome);
+            const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
             const Real t0 = C_Mx_[i] - C_mx_[i];
             const Real t1 = t0 * t0;
@@ -537,14 +537,14 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
             const Real t12 = v_Mz_[i] - v_mz_[i];
             const Real t13 = t5 * t12;
             fails = !(t11 + t13 < Real(0));
-            condition = fails ? status::separating : condition;
+            condition = detail::blend(fails, status::separating, condition);
             fails = !(t4 + t6 > Real(0));
-            condition = fails ? status::coincident_centres : condition;
-            outcome = admitted ? condition : outcome;
+            condition = detail::blend(fails, status::coincident_centres, condition);
+            outcome = detail::blend(admitted, condition, outcome);
         }
         // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
-        outcome = (M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()) ? status::underflow : outcome;
-        const bool resolved = outcome == status::ok;
+        outcome = detail::blend((M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()), status::underflow, outcome);
+        const std::int64_t resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
         const Real M = M_[i];
         const Real m = m_[i];
@@ -603,11 +603,11 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real t39 = t37 - Real(1);
         const Real t40 = M + m;
         const Real t41 = t40 * t19;
-        const bool usable = resolved && (std::fabs(t41) >= detail::smallest_divisor<Real>) && (std::fabs(t41) <= std::numeric_limits<Real>::max());
-        const Real t42 = t38 / (usable ? t41 : Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t41) >= detail::smallest_divisor<Real>) & (std::fabs(t41) <= std::numeric_limits<Real>::max());
+        const Real t42 = t38 / detail::blend(usable, t41, Real(1));
         const Real t43 = t40 - M;
         const Real t44 = -t42;
-        const Real t45 = t42 + std::fma(t44, std::fma(M - (t40 - t43) + (m - t43), t19, std::fma(t40, t18 - (t19 - t15), std::fma(t40, t19, -t41))), std::fma(t44, t41, t38) + std::fma(Real(1) - (t37 - t39) + (eps - t39), t36, std::fma(t37, t35 - (t36 - t32), std::fma(t37, t36, -t38)))) / (usable ? t41 : Real(1));
+        const Real t45 = t42 + std::fma(t44, std::fma(M - (t40 - t43) + (m - t43), t19, std::fma(t40, t18 - (t19 - t15), std::fma(t40, t19, -t41))), std::fma(t44, t41, t38) + std::fma(Real(1) - (t37 - t39) + (eps - t39), t36, std::fma(t37, t35 - (t36 - t32), std::fma(t37, t36, -t38)))) / detail::blend(usable, t41, Real(1));
         const Real t46 = t45 * m;
         const Real t47 = t46 * t0;
         const Real t48 = t46 * t4;
@@ -627,22 +627,22 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real finite2 = std::fma(v_my_out, Real(0), v_mz_out * Real(0));
         const Real finite3 = finite0 + finite1;
         const Real finite4 = finite3 + finite2;
-        const bool finite = (finite4 == Real(0));
-        bool doubtful = false;
+        const std::int64_t finite = (finite4 == Real(0));
+        std::int64_t doubtful = 0;
         if constexpr (collide_batch_3d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_k<Real>);
             doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_Mz, lowest), detail::magnitude_or(C_mx, lowest)), detail::least(detail::magnitude_or(C_my, lowest), detail::magnitude_or(C_mz, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)), detail::least(detail::magnitude_or(v_Mz, lowest), detail::magnitude_or(v_mx, lowest))), detail::least(detail::least(detail::magnitude_or(v_my, lowest), detail::magnitude_or(v_mz, lowest)), detail::magnitude_or(eps, lowest)))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_Mz), std::fabs(C_mx)), detail::most(std::fabs(C_my), std::fabs(C_mz)))), detail::most(detail::most(detail::most(std::fabs(v_Mx), std::fabs(v_My)), detail::most(std::fabs(v_Mz), std::fabs(v_mx))), detail::most(detail::most(std::fabs(v_my), std::fabs(v_mz)), std::fabs(eps)))), highest));
         }
         if constexpr (collide_batch_3d_k<Real> < 0)
             doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t14), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t0)), detail::zero_as_min(t20)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t24), detail::zero_as_min(t4)), detail::zero_as_min(t23)), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t12)), detail::zero_as_min(t30))), detail::least(detail::most(detail::most(std::fabs(t38), detail::zero_as_min(t37)), detail::zero_as_min(t36)), detail::most(detail::most(std::fabs(t41), detail::zero_as_min(t40)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(std::fabs(t42), detail::most(detail::most(std::fabs(t46), detail::zero_as_min(t45)), detail::zero_as_min(m))), detail::least(detail::most(std::fabs(t47), detail::zero_as_min(t0)), detail::most(std::fabs(t48), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t49), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t50), detail::zero_as_min(t45)), detail::zero_as_min(M))), detail::least(detail::most(std::fabs(t51), detail::zero_as_min(t0)), detail::most(std::fabs(t52), detail::zero_as_min(t4)))))), detail::most(std::fabs(t53), detail::zero_as_min(t12))), std::numeric_limits<Real>::min());
-        const bool written = usable && finite && !doubtful;
-        v_Mx_[i] = written ? v_Mx_out : v_Mx_[i];
-        v_My_[i] = written ? v_My_out : v_My_[i];
-        v_Mz_[i] = written ? v_Mz_out : v_Mz_[i];
-        v_mx_[i] = written ? v_mx_out : v_mx_[i];
-        v_my_[i] = written ? v_my_out : v_my_[i];
-        v_mz_[i] = written ? v_mz_out : v_mz_[i];
-        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+        const std::int64_t written = usable & finite & !doubtful;
+        v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
+        v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
+        v_Mz_[i] = detail::blend(written, v_Mz_out, v_Mz_[i]);
+        v_mx_[i] = detail::blend(written, v_mx_out, v_mx_[i]);
+        v_my_[i] = detail::blend(written, v_my_out, v_my_[i]);
+        v_mz_[i] = detail::blend(written, v_mz_out, v_mz_[i]);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
 }
 

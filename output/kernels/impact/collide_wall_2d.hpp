@@ -137,12 +137,12 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_2d(std::size_t count, const Real* I
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            bool fails = !(((std::fma(P_x_[i], Real(0), P_y_[i] * Real(0)) + std::fma(N_x_[i], Real(0), N_y_[i] * Real(0))) + (std::fma(C_x_[i], Real(0), C_y_[i] * Real(0)) + std::fma(v_x_[i], Real(0), v_y_[i] * Real(0)))) == Real(0));
-            outcome = fails ? status::non_finite : outcome;
+            std::int64_t fails = !(((std::fma(P_x_[i], Real(0), P_y_[i] * Real(0)) + std::fma(N_x_[i], Real(0), N_y_[i] * Real(0))) + (std::fma(C_x_[i], Real(0), C_y_[i] * Real(0)) + std::fma(v_x_[i], Real(0), v_y_[i] * Real(0)))) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
-            outcome = fails ? status::invalid_restitution : outcome;
-            const bool admitted = outcome == status::ok;
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
+            const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
             const Real t0 = N_x_[i] * N_x_[i];
             const Real t1 = N_y_[i] * N_y_[i];
@@ -151,14 +151,14 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_2d(std::size_t count, const Real* I
             const Real t4 = N_y_[i] * v_y_[i];
             const Real t5 = t3 + t4;
             fails = !(t5 < Real(0));
-            condition = fails ? status::separating : condition;
+            condition = detail::blend(fails, status::separating, condition);
             fails = !(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) > Real(0));
-            condition = fails ? status::behind_the_wall : condition;
+            condition = detail::blend(fails, status::behind_the_wall, condition);
             fails = !(t2 > Real(0));
-            condition = fails ? status::invalid_normal : condition;
-            outcome = admitted ? condition : outcome;
+            condition = detail::blend(fails, status::invalid_normal, condition);
+            outcome = detail::blend(admitted, condition, outcome);
         }
-        const bool resolved = outcome == status::ok;
+        const std::int64_t resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
         const Real N_x = N_x_[i];
         const Real N_y = N_y_[i];
@@ -180,26 +180,26 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_2d(std::size_t count, const Real* I
         const Real t12 = t2 - t0;
         const Real t13 = t0 - (t2 - t12) + (t1 - t12) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
         const Real t14 = t2 + t13;
-        const bool usable = resolved && (std::fabs(t14) >= detail::smallest_divisor<Real>) && (std::fabs(t14) <= std::numeric_limits<Real>::max());
-        const Real t15 = t11 / (usable ? t14 : Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t14) >= detail::smallest_divisor<Real>) & (std::fabs(t14) <= std::numeric_limits<Real>::max());
+        const Real t15 = t11 / detail::blend(usable, t14, Real(1));
         const Real t16 = -t15;
-        const Real t17 = t15 + std::fma(t16, t13 - (t14 - t2), std::fma(t16, t14, t11) + std::fma(Real(1) - (t6 - t7) + (eps - t7), t10, std::fma(t6, t9 - (t10 - t5), std::fma(t6, t10, -t11)))) / (usable ? t14 : Real(1));
+        const Real t17 = t15 + std::fma(t16, t13 - (t14 - t2), std::fma(t16, t14, t11) + std::fma(Real(1) - (t6 - t7) + (eps - t7), t10, std::fma(t6, t9 - (t10 - t5), std::fma(t6, t10, -t11)))) / detail::blend(usable, t14, Real(1));
         const Real t18 = N_x * t17;
         const Real t19 = N_y * t17;
         const Real v_x_out = -t18 + v_x;
         const Real v_y_out = -t19 + v_y;
-        const bool finite = (std::fma(v_x_out, Real(0), v_y_out * Real(0)) == Real(0));
-        bool doubtful = false;
+        const std::int64_t finite = (std::fma(v_x_out, Real(0), v_y_out * Real(0)) == Real(0));
+        std::int64_t doubtful = 0;
         if constexpr (collide_wall_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_k<Real>);
             doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & std::islessequal(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
         }
         if constexpr (collide_wall_batch_2d_k<Real> < 0)
             doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t4), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t11), detail::zero_as_min(t6)), detail::zero_as_min(t10)), std::fabs(t15)), detail::least(detail::most(detail::most(std::fabs(t18), detail::zero_as_min(N_x)), detail::zero_as_min(t17)), detail::most(detail::most(std::fabs(t19), detail::zero_as_min(N_y)), detail::zero_as_min(t17))))), std::numeric_limits<Real>::min());
-        const bool written = usable && finite && !doubtful;
-        v_x_[i] = written ? v_x_out : v_x_[i];
-        v_y_[i] = written ? v_y_out : v_y_[i];
-        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+        const std::int64_t written = usable & finite & !doubtful;
+        v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
+        v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
 }
 

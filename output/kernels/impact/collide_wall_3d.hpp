@@ -161,12 +161,12 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_3d(std::size_t count, const Real* I
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            bool fails = !((((std::fma(P_x_[i], Real(0), P_y_[i] * Real(0)) + std::fma(P_z_[i], Real(0), N_x_[i] * Real(0))) + (std::fma(N_y_[i], Real(0), N_z_[i] * Real(0)) + std::fma(C_x_[i], Real(0), C_y_[i] * Real(0)))) + (std::fma(C_z_[i], Real(0), v_x_[i] * Real(0)) + std::fma(v_y_[i], Real(0), v_z_[i] * Real(0)))) == Real(0));
-            outcome = fails ? status::non_finite : outcome;
+            std::int64_t fails = !((((std::fma(P_x_[i], Real(0), P_y_[i] * Real(0)) + std::fma(P_z_[i], Real(0), N_x_[i] * Real(0))) + (std::fma(N_y_[i], Real(0), N_z_[i] * Real(0)) + std::fma(C_x_[i], Real(0), C_y_[i] * Real(0)))) + (std::fma(C_z_[i], Real(0), v_x_[i] * Real(0)) + std::fma(v_y_[i], Real(0), v_z_[i] * Real(0)))) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
-            outcome = fails ? status::invalid_restitution : outcome;
-            const bool admitted = outcome == status::ok;
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
+            const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
             const Real t0 = N_x_[i] * N_x_[i];
             const Real t1 = N_y_[i] * N_y_[i];
@@ -177,14 +177,14 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_3d(std::size_t count, const Real* I
             const Real t6 = t4 + t5;
             const Real t7 = N_z_[i] * v_z_[i];
             fails = !(t6 + t7 < Real(0));
-            condition = fails ? status::separating : condition;
+            condition = detail::blend(fails, status::separating, condition);
             fails = !(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) + N_z_[i] * (C_z_[i] - P_z_[i]) > Real(0));
-            condition = fails ? status::behind_the_wall : condition;
+            condition = detail::blend(fails, status::behind_the_wall, condition);
             fails = !(t2 + t3 > Real(0));
-            condition = fails ? status::invalid_normal : condition;
-            outcome = admitted ? condition : outcome;
+            condition = detail::blend(fails, status::invalid_normal, condition);
+            outcome = detail::blend(admitted, condition, outcome);
         }
-        const bool resolved = outcome == status::ok;
+        const std::int64_t resolved = outcome == status::ok;
         // Every pair is computed; one not resolved divides by 1, and its results are discarded.
         const Real N_x = N_x_[i];
         const Real N_y = N_y_[i];
@@ -218,29 +218,29 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_3d(std::size_t count, const Real* I
         const Real t22 = t21 - t20;
         const Real t23 = t20 - (t21 - t22) + (t3 - t22) + (t19 - (t20 - t2) + std::fma(N_z, N_z, -t3));
         const Real t24 = t21 + t23;
-        const bool usable = resolved && (std::fabs(t24) >= detail::smallest_divisor<Real>) && (std::fabs(t24) <= std::numeric_limits<Real>::max());
-        const Real t25 = t17 / (usable ? t24 : Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t24) >= detail::smallest_divisor<Real>) & (std::fabs(t24) <= std::numeric_limits<Real>::max());
+        const Real t25 = t17 / detail::blend(usable, t24, Real(1));
         const Real t26 = -t25;
-        const Real t27 = t25 + std::fma(t26, t23 - (t24 - t21), std::fma(t26, t24, t17) + std::fma(Real(1) - (t8 - t9) + (eps - t9), t16, std::fma(t8, t15 - (t16 - t13), std::fma(t8, t16, -t17)))) / (usable ? t24 : Real(1));
+        const Real t27 = t25 + std::fma(t26, t23 - (t24 - t21), std::fma(t26, t24, t17) + std::fma(Real(1) - (t8 - t9) + (eps - t9), t16, std::fma(t8, t15 - (t16 - t13), std::fma(t8, t16, -t17)))) / detail::blend(usable, t24, Real(1));
         const Real t28 = N_x * t27;
         const Real t29 = N_y * t27;
         const Real t30 = N_z * t27;
         const Real v_x_out = -t28 + v_x;
         const Real v_y_out = -t29 + v_y;
         const Real v_z_out = -t30 + v_z;
-        const bool finite = ((std::fma(v_x_out, Real(0), v_y_out * Real(0)) + v_z_out * Real(0)) == Real(0));
-        bool doubtful = false;
+        const std::int64_t finite = ((std::fma(v_x_out, Real(0), v_y_out * Real(0)) + v_z_out * Real(0)) == Real(0));
+        std::int64_t doubtful = 0;
         if constexpr (collide_wall_batch_3d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_3d_k<Real>);
             doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(N_z, lowest), detail::magnitude_or(v_x, lowest))), detail::least(detail::least(detail::magnitude_or(v_y, lowest), detail::magnitude_or(v_z, lowest)), detail::magnitude_or(eps, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(N_z), std::fabs(v_x))), detail::most(detail::most(std::fabs(v_y), std::fabs(v_z)), std::fabs(eps))), highest));
         }
         if constexpr (collide_wall_batch_3d_k<Real> < 0)
             doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t3), detail::zero_as_min(N_z)), detail::most(detail::most(std::fabs(t4), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t5), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t7), detail::zero_as_min(N_z)), detail::zero_as_min(v_z))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(t8)), detail::zero_as_min(t16)), std::fabs(t25)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t28), detail::zero_as_min(N_x)), detail::zero_as_min(t27)), detail::most(detail::most(std::fabs(t29), detail::zero_as_min(N_y)), detail::zero_as_min(t27))), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(N_z)), detail::zero_as_min(t27)))), std::numeric_limits<Real>::min());
-        const bool written = usable && finite && !doubtful;
-        v_x_[i] = written ? v_x_out : v_x_[i];
-        v_y_[i] = written ? v_y_out : v_y_[i];
-        v_z_[i] = written ? v_z_out : v_z_[i];
-        status_[i] = resolved && !written ? (usable && finite ? status::underflow : status::out_of_range) : outcome;
+        const std::int64_t written = usable & finite & !doubtful;
+        v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
+        v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
+        v_z_[i] = detail::blend(written, v_z_out, v_z_[i]);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
 }
 
