@@ -25,6 +25,10 @@
 #include <utility>
 #include <vector>
 
+// Built with -ffast-math too (test_kernels_fast_math, _ofast, _fp_contract): the test's own
+// arithmetic, which measures the kernels', as written. The kernels keep theirs by themselves.
+IMPACT_PRECISE_BEGIN
+
 namespace {
 
 using namespace impact;
@@ -844,3 +848,5 @@ BOOST_AUTO_TEST_CASE(a_batch_whose_arrays_share_a_page_offset_gives_the_scalar_r
         BOOST_TEST((status[count] == impact::status::separating));  // past the count: untouched
     }
 }
+
+IMPACT_PRECISE_END

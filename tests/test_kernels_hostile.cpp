@@ -62,6 +62,94 @@
 #include <string>
 #include <vector>
 
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#define IMPACT_TEST_MXCSR 1
+#endif
+
+// ---------------------------------------------------------------------------------
+// Under the flags users have (test_kernels_hostile_fast_math, _ofast, _fp_contract).
+
+namespace {
+
+// What a caller compiled with the test's flags sees, -ffast-math included: not between
+// IMPACT_PRECISE_BEGIN and IMPACT_PRECISE_END, so GCC inlines the kernels only if their
+// options allow it. A NaN velocity must still be refused, the velocities returned as given.
+template <std::size_t N>
+impact::collide_result<double, N> collide_from_the_callers_flags(double v)
+{
+    std::array<double, N> C_M{}, C_m{}, v_M{}, v_m{};
+    C_M[0] = 1;
+    v_M[0] = -1;
+    v_m[N - 1] = v;
+    return impact::collide(1.0, 2.0, C_M, C_m, v_M, v_m, 0.5);
+}
+
+impact::status collide_batch_from_the_callers_flags(double v)
+{
+    impact::collide_batch_arrays<double, 2> a(3);
+    for (std::size_t i = 0; i < 3; ++i) {
+        a.M()[i] = 1;
+        a.m()[i] = 2;
+        a.C_M(0)[i] = 1;
+        a.C_M(1)[i] = a.C_m(0)[i] = a.C_m(1)[i] = a.v_M(1)[i] = a.v_m(0)[i] = 0;
+        a.v_M(0)[i] = -1;
+        a.v_m(1)[i] = v;
+        a.eps()[i] = 0.5;
+    }
+    impact::collide_batch(a.data());
+    return a.status()[1];
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(a_caller_built_with_any_flags_gets_nan_and_infinities_refused)
+{
+    for (const double v : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        const auto out2 = collide_from_the_callers_flags<2>(v);
+        BOOST_TEST(static_cast<int>(out2.status) == static_cast<int>(impact::status::non_finite));
+        BOOST_TEST(std::memcmp(&out2.v_m[1], &v, sizeof v) == 0);
+        const auto out3 = collide_from_the_callers_flags<3>(v);
+        BOOST_TEST(static_cast<int>(out3.status) == static_cast<int>(impact::status::non_finite));
+        BOOST_TEST(std::memcmp(&out3.v_m[2], &v, sizeof v) == 0);
+        BOOST_TEST(static_cast<int>(collide_batch_from_the_callers_flags(v)) == static_cast<int>(impact::status::non_finite));
+    }
+    const auto ok = collide_from_the_callers_flags<2>(0);
+    BOOST_TEST(static_cast<int>(ok.status) == static_cast<int>(impact::status::ok));
+}
+
+// The test's own checks need what the kernels need: its arithmetic as written, and tests
+// for NaN and infinities that no flag folds (std::isnan and std::isfinite are compiled in
+// <cmath> with the test's flags, and under -ffinite-math-only may be folded to constants).
+IMPACT_PRECISE_BEGIN
+
+namespace {
+
+template <class Real>
+bool same_bits(Real a, Real b)
+{
+    // x87's long double: 10 bytes of value, the rest padding.
+    constexpr std::size_t bytes = std::numeric_limits<Real>::digits == 64 ? 10 : sizeof(Real);
+    return std::memcmp(&a, &b, bytes) == 0;
+}
+template <class Real>
+bool is_finite(Real x)
+{
+    return impact::detail::finite(x);
+}
+template <class Real>
+bool is_inf(Real x)
+{
+    return same_bits(x, std::numeric_limits<Real>::infinity()) || same_bits(x, -std::numeric_limits<Real>::infinity());
+}
+template <class Real>
+bool is_nan(Real x)
+{
+    return !is_finite(x) && !is_inf(x);
+}
+
+} // namespace
+
 namespace {
 
 using impact::status;
@@ -78,7 +166,7 @@ bool identical(Real a, Real b)
     if constexpr (sizeof(Real) <= sizeof(double))
         return std::memcmp(&a, &b, sizeof(Real)) == 0;
     else
-        return (std::isnan(a) && std::isnan(b)) || (a == b && std::signbit(a) == std::signbit(b));
+        return (is_nan(a) && is_nan(b)) || (a == b && std::signbit(a) == std::signbit(b));
 }
 
 template <class Real, std::size_t N>
@@ -191,7 +279,7 @@ struct range {
 // The power of 2 that brings x near 1 (0 for 0, infinities and NaN).
 int scale_of(W x)
 {
-    return std::isfinite(x) && x != 0 ? std::ilogb(x) : 0;
+    return is_finite(x) && x != 0 ? std::ilogb(x) : 0;
 }
 
 // A number f 2^e with f in [0.5, 1) (or 0) and e unbounded: the collision's values worked
@@ -203,7 +291,7 @@ struct big {
 
 big normal(W f, long e)
 {
-    if (f == 0 || !std::isfinite(f))
+    if (f == 0 || !is_finite(f))
         return {f, 0};
     int k = 0;
     const W g = std::frexp(f, &k);
@@ -256,7 +344,7 @@ bool beyond(W x)
 {
     using limits = std::numeric_limits<Real>;
     if constexpr (sizeof(Real) >= sizeof(W))
-        return !std::isfinite(x);
+        return !is_finite(x);
     else
         return !(std::fabs(x) < static_cast<W>(limits::max()) + std::ldexp(W(1), limits::max_exponent - limits::digits - 1));
 }
@@ -274,7 +362,7 @@ statuses range_statuses(W divisor_lg, const std::vector<W>& intermediates_lg, co
     bool leaves = divisor_lg < least - 2 || divisor_lg > most + slack;
     bool inside = divisor_lg >= least + 2 && divisor_lg <= most - slack;
     for (W r : results_lg) {
-        leaves = leaves || r > most + slack || std::isnan(r);
+        leaves = leaves || r > most + slack || is_nan(r);
         inside = inside && r <= most - slack;
     }
     for (W i : intermediates_lg)  // each a term of a sum of up to 3: below max/4, the sum fits
@@ -308,7 +396,7 @@ W lowest_product(std::initializer_list<std::initializer_list<W>> monomials)
     for (const auto& factors : monomials) {
         W bound = 0;
         for (W f : factors)
-            bound += std::isfinite(f) ? std::min<W>(0, f) : 0;
+            bound += is_finite(f) ? std::min<W>(0, f) : 0;
         lowest = std::min(lowest, bound);
     }
     return lowest;
@@ -452,7 +540,7 @@ template <class Real>
 W ulps_of(Real value, W exact, W scale)
 {
     const W unit = static_cast<W>(std::numeric_limits<Real>::epsilon());
-    if (scale == 0 || !std::isfinite(scale))
+    if (scale == 0 || !is_finite(scale))
         return value == exact ? 0 : std::numeric_limits<W>::infinity();
     return std::fabs(static_cast<W>(value) - exact) / (scale * unit);
 }
@@ -493,7 +581,7 @@ pair_nd<Real, N> draw_pair(draws& d)
 
 bool positive_and_finite(W x)
 {
-    return x > 0 && std::isfinite(x);
+    return x > 0 && is_finite(x);
 }
 
 // A fixed sphere: one mass +infinity, the other positive and finite (collide_line and
@@ -529,7 +617,7 @@ collision_nd<Real, N> classify(const pair_nd<Real, N>& p)
         return c;
     }
     for (std::size_t k = 0; k < N; ++k)
-        if (!std::isfinite(p.C_M[k]) || !std::isfinite(p.C_m[k]) || !std::isfinite(p.v_M[k]) || !std::isfinite(p.v_m[k])) {
+        if (!is_finite(p.C_M[k]) || !is_finite(p.C_m[k]) || !is_finite(p.v_M[k]) || !is_finite(p.v_m[k])) {
             c.admitted = only(status::non_finite);
             return c;
         }
@@ -666,7 +754,7 @@ void check_resolved(failures& fail, tally& t, const pair_nd<Real, N>& p, const i
                     const collision_nd<Real, N>& c)
 {
     for (std::size_t k = 0; k < N; ++k) {
-        fail(std::isfinite(out.v_M[k]) && std::isfinite(out.v_m[k]), "ok with a velocity not finite: " + p.describe());
+        fail(is_finite(out.v_M[k]) && is_finite(out.v_m[k]), "ok with a velocity not finite: " + p.describe());
         W lever = 0;
         for (std::size_t i = 0; i < N; ++i)
             lever = std::max(lever, std::fabs(static_cast<W>(p.C_M[i]) - static_cast<W>(p.C_m[i])));
@@ -706,8 +794,8 @@ void check_fixed_pair(failures& fail, tally& t, const pair_nd<Real, N>& p, statu
                         only(status::underflow) | only(status::out_of_range);
     bool finite = true;
     for (std::size_t k = 0; k < N; ++k)
-        finite = finite && std::isfinite(p.C_M[k]) && std::isfinite(p.C_m[k]) && std::isfinite(p.v_M[k]) &&
-                 std::isfinite(p.v_m[k]);
+        finite = finite && is_finite(p.C_M[k]) && is_finite(p.C_m[k]) && is_finite(p.v_M[k]) &&
+                 is_finite(p.v_m[k]);
     if (!(p.eps >= 0 && p.eps <= 1))
         admitted = only(status::invalid_restitution);
     else if (!finite)
@@ -715,7 +803,7 @@ void check_fixed_pair(failures& fail, tally& t, const pair_nd<Real, N>& p, statu
     require_admitted(fail, got, admitted, "a fixed sphere: " + p.describe());
     if (got != status::ok)
         return;
-    const bool M_fixed = std::isinf(p.M);
+    const bool M_fixed = is_inf(p.M);
     fail(M_fixed ? identical(v_M, p.v_M) : identical(v_m, p.v_m),
          "the fixed sphere's velocity changed: " + p.describe() + " -> " + text(v_M) + ", " + text(v_m));
     if constexpr (!std::is_same_v<Real, long double>) {
@@ -890,7 +978,7 @@ statuses domain_statuses(const pair_1d<Real>& p)
         return only(status::invalid_mass);
     if (!(p.eps >= 0 && p.eps <= 1))
         return only(status::invalid_restitution);
-    if (!std::isfinite(p.v_M) || !std::isfinite(p.v_m))
+    if (!is_finite(p.v_M) || !is_finite(p.v_m))
         return only(status::non_finite);
     return 0;
 }
@@ -1000,7 +1088,7 @@ void check_fixed_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
     statuses admitted = only(status::ok) | only(status::underflow) | only(status::out_of_range);
     if (!(p.eps >= 0 && p.eps <= 1))
         admitted = only(status::invalid_restitution);
-    else if (!std::isfinite(p.v_M) || !std::isfinite(p.v_m))
+    else if (!is_finite(p.v_M) || !is_finite(p.v_m))
         admitted = only(status::non_finite);
     else if (!(p.v_M > p.v_m))
         admitted = only(status::separating);
@@ -1010,7 +1098,7 @@ void check_fixed_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
              std::string("refused (") + name(out.status) + ") with outputs changed: " + p.describe());
         return;
     }
-    const bool M_fixed = std::isinf(p.M);
+    const bool M_fixed = is_inf(p.M);
     fail(M_fixed ? identical(out.v_M, p.v_M) : identical(out.v_m, p.v_m),
          "the fixed sphere's velocity changed: " + p.describe());
     fail(out.J >= 0, "an approaching pair pushed together (J < 0): " + p.describe());
@@ -1051,7 +1139,7 @@ void check_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
              std::string("refused (") + name(out.status) + ") with outputs changed: " + p.describe());
         return;
     }
-    fail(std::isfinite(out.v_M) && std::isfinite(out.v_m) && std::isfinite(out.J), "ok, not finite: " + p.describe());
+    fail(is_finite(out.v_M) && is_finite(out.v_m) && is_finite(out.J), "ok, not finite: " + p.describe());
     fail(out.J >= 0, "an approaching pair pushed together (J < 0): " + p.describe());
     fail(conserves_momentum(p.M, p.m, p.v_M, p.v_m, out.v_M, out.v_m), "momentum not conserved: " + p.describe());
     if constexpr (!std::is_same_v<Real, long double>) {
@@ -1080,7 +1168,7 @@ void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p)
     fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
     ++t.pairs;
     t.borderline += borderline(admitted) ? 1 : 0;
-    const bool refused = std::isnan(dE);
+    const bool refused = is_nan(dE);
     // NaN counted as underflow where the classification admits it, else as out_of_range.
     const status given = !refused ? status::ok : admits(admitted, status::underflow) ? status::underflow : status::out_of_range;
     ++t.by_status[static_cast<std::size_t>(given)];
@@ -1090,7 +1178,7 @@ void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p)
              p.describe());
     if (refused)
         return;
-    fail(std::isfinite(dE) && dE <= 0, "kinetic energy gained or not finite (Eq. 11: dE <= 0): " + p.describe());
+    fail(is_finite(dE) && dE <= 0, "kinetic energy gained or not finite (Eq. 11: dE <= 0): " + p.describe());
     if constexpr (!std::is_same_v<Real, long double>) {
         const W energy_scale = std::max(static_cast<W>(p.M) * static_cast<W>(p.v_M) * static_cast<W>(p.v_M),
                                         static_cast<W>(p.m) * static_cast<W>(p.v_m) * static_cast<W>(p.v_m));
@@ -1140,9 +1228,9 @@ void sweep_scatter(std::uint64_t seed)
         const bool valid = positive_and_finite(v_par) && positive_and_finite(v_perp) && eps >= 0 && eps <= 1;
         const Real theta = impact::scatter_angle(v_par, v_perp, eps);
         const std::string where = "v_par " + text(v_par) + ", v_perp " + text(v_perp) + ", eps " + text(eps);
-        refused += std::isnan(theta) ? 1 : 0;
+        refused += is_nan(theta) ? 1 : 0;
         if (!valid) {
-            fail(std::isnan(theta), "a value outside the domain: " + where);
+            fail(is_nan(theta), "a value outside the domain: " + where);
             continue;
         }
         // 7. The documented form atan2(2 v_perp, (1 - eps) v_par): its products, and the angle
@@ -1154,7 +1242,7 @@ void sweep_scatter(std::uint64_t seed)
             beyond<Real>(2 * static_cast<W>(v_perp))
                 ? only(status::out_of_range)
                 : with_underflow<Real>(only(status::ok), lowest);
-        if (std::isnan(theta)) {
+        if (is_nan(theta)) {
             underflows += admits(admitted, status::underflow) ? 1 : 0;
             fail(admitted != only(status::ok), "NaN where the inputs are valid and in range: " + where);
             continue;
@@ -1302,7 +1390,7 @@ void check_loss_cases()
             std::feclearexcept(FE_DIVBYZERO);
             const Real dE = impact::energy_loss(c.M, c.m, c.v_M, c.v_m, c.eps);
             BOOST_TEST(std::fetestexcept(FE_DIVBYZERO) == 0);
-            BOOST_TEST((std::isnan(c.dE) ? std::isnan(dE) : dE == c.dE), text(dE) << " against " << text(c.dE));
+            BOOST_TEST((is_nan(c.dE) ? is_nan(dE) : dE == c.dE), text(dE) << " against " << text(c.dE));
         }
     }
 }
@@ -1335,8 +1423,8 @@ void check_scatter_cases()
         BOOST_TEST_CONTEXT(type_name<Real>() << ": " << c.why)
         {
             const Real theta = impact::scatter_angle(c.v_par, c.v_perp, c.eps);
-            if (std::isnan(c.theta))
-                BOOST_TEST(std::isnan(theta), text(theta));
+            if (is_nan(c.theta))
+                BOOST_TEST(is_nan(theta), text(theta));
             else  // within an ulp: atan2 of the C library, correctly rounded or nearly
                 BOOST_TEST(std::fabs(theta - c.theta) <= std::max(c.theta * std::numeric_limits<Real>::epsilon(), e::tiny),
                            text(theta) << " against " << text(c.theta));
@@ -1492,3 +1580,117 @@ BOOST_AUTO_TEST_CASE(a_randomized_sweep_of_hostile_speeds_gives_an_angle_or_nan)
     sweep_scatter<double>(1732);
     sweep_scatter<long double>(1733);
 }
+
+// ---------------------------------------------------------------------------------
+// Denormals flushed to zero: a program linked with -ffast-math (crtfastmath.o) starts with
+// the processor's flush-to-zero and denormals-are-zero modes set on x86, and no pragma
+// undoes that. The contract there: a denormal input counts as a zero of its sign (a denormal
+// mass is not positive: invalid_mass), refused velocities still come back bit for bit as
+// given, and a value of the arithmetic that would have been denormal is 0 and refused as
+// underflow. The cases above are written for IEEE arithmetic: under a build that sets the
+// modes (test_kernels_hostile_fast_math, _ofast) they run with the modes cleared, and this
+// case sets them itself in every build.
+
+#ifdef IMPACT_TEST_MXCSR
+namespace {
+
+constexpr unsigned flush_modes = 0x8040;  // MXCSR: flush to zero (bit 15), denormals are zero (bit 6)
+
+// Clears the modes for the cases written for IEEE arithmetic, saying when they were set.
+struct ieee_arithmetic {
+    ieee_arithmetic()
+    {
+        if (_mm_getcsr() & flush_modes) {
+            std::cout << "denormals were flushed to zero at start (crtfastmath.o): cleared for the IEEE cases\n";
+            _mm_setcsr(_mm_getcsr() & ~flush_modes);
+        }
+    }
+};
+
+struct flushed_denormals {
+    unsigned saved = _mm_getcsr();
+    flushed_denormals() { _mm_setcsr(saved | flush_modes); }
+    ~flushed_denormals() { _mm_setcsr(saved); }
+};
+
+} // namespace
+
+BOOST_TEST_GLOBAL_FIXTURE(ieee_arithmetic);
+
+BOOST_AUTO_TEST_CASE(with_denormals_flushed_a_denormal_input_counts_as_zero)
+{
+    using limits = std::numeric_limits<double>;
+    const double tiny = limits::denorm_min(), small = 4 * limits::min() / 3;  // small: normal, a denormal apart
+    struct pair2 {
+        double M, m;
+        std::array<double, 2> C_M, C_m, v_M, v_m;
+        double eps;
+    };
+    // An approaching pair with one denormal input each, and one whose product underflows.
+    std::vector<pair2> pairs{
+        {1, 2, {1, 0}, {0, 0}, {-1, tiny}, {0, -tiny}, 0.5},
+        {tiny, 2, {1, 0}, {0, 0}, {-1, 0}, {0, 0}, 0.5},
+        {1, 2, {1, tiny}, {0, 0}, {-1, 0}, {0, 0}, 0.5},
+        {1, 2, {1, 0}, {0, 0}, {-1, 0}, {0, 0}, tiny},
+        {1, 2, {small, 0}, {0, 0}, {-small, 0}, {0, 0}, 0.5},
+        {1, 2, {tiny, 0}, {0, 0}, {-1, 0}, {0, 0}, 0.5},
+    };
+    const auto zeroed = [](double x) { return is_finite(x) && x != 0 && std::fabs(x) < limits::min() ? std::copysign(0.0, x) : x; };
+    const flushed_denormals modes;
+    for (const pair2& p : pairs) {
+        pair2 z = p;
+        z.M = zeroed(p.M);
+        z.m = zeroed(p.m);
+        z.eps = zeroed(p.eps);
+        for (std::size_t k = 0; k < 2; ++k) {
+            z.C_M[k] = zeroed(p.C_M[k]);
+            z.C_m[k] = zeroed(p.C_m[k]);
+            z.v_M[k] = zeroed(p.v_M[k]);
+            z.v_m[k] = zeroed(p.v_m[k]);
+        }
+        const auto out = impact::collide(p.M, p.m, p.C_M, p.C_m, p.v_M, p.v_m, p.eps);
+        const auto as_zero = impact::collide(z.M, z.m, z.C_M, z.C_m, z.v_M, z.v_m, z.eps);
+        BOOST_TEST_MESSAGE("flushed: " << name(out.status));
+        BOOST_TEST(name(out.status) == name(as_zero.status));
+        if (out.status == status::ok) {
+            BOOST_TEST(identical(out.v_M, as_zero.v_M));
+            BOOST_TEST(identical(out.v_m, as_zero.v_m));
+        } else {
+            BOOST_TEST(identical(out.v_M, p.v_M));
+            BOOST_TEST(identical(out.v_m, p.v_m));
+        }
+        // The batch loop as the scalar kernel.
+        impact::collide_batch_arrays<double, 2> a(1);
+        a.M()[0] = p.M;
+        a.m()[0] = p.m;
+        a.eps()[0] = p.eps;
+        for (std::size_t k = 0; k < 2; ++k) {
+            a.C_M(k)[0] = p.C_M[k];
+            a.C_m(k)[0] = p.C_m[k];
+            a.v_M(k)[0] = p.v_M[k];
+            a.v_m(k)[0] = p.v_m[k];
+        }
+        impact::collide_batch(a.data());
+        BOOST_TEST(name(a.status()[0]) == name(out.status));
+        for (std::size_t k = 0; k < 2; ++k) {
+            BOOST_TEST(identical(a.v_M(k)[0], out.v_M[k]));
+            BOOST_TEST(identical(a.v_m(k)[0], out.v_m[k]));
+        }
+    }
+    // A value that would be denormal is 0: the pair is refused, as IEEE arithmetic refuses it
+    // with underflow, or for the zero (|r|^2 = 0: coincident_centres; (v_M - v_m).r = 0:
+    // separating), its velocities as given.
+    using vec = std::array<double, 2>;
+    for (const auto& [r, v] : {std::pair{1e-160, -1.0}, std::pair{1e-100, -1e-210}}) {
+        const vec v_M{v, 0}, v_m{0, 0};
+        const auto out = impact::collide(1.0, 2.0, vec{r, 0}, vec{0, 0}, v_M, v_m, 0.5);
+        BOOST_TEST_MESSAGE("flushed: " << name(out.status));
+        BOOST_TEST((out.status == status::underflow || out.status == status::coincident_centres ||
+                    out.status == status::separating));
+        BOOST_TEST(identical(out.v_M, v_M));
+        BOOST_TEST(identical(out.v_m, v_m));
+    }
+}
+#endif
+
+IMPACT_PRECISE_END

@@ -20,7 +20,8 @@ namespace {
 
 // The batch loop's form: the comparisons, then one test for every value that must be
 // finite. x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so a sum of such
-// products is 0 exactly when every x is finite. Fused, a value costs one operation, where
+// products is 0 exactly when every x is finite (detail::zero_if_finite, which tests the bits
+// where the compiler may take every value as finite). Fused, a value costs one operation, where
 // std::isfinite costs two and a merge of the results (the guards were a third of the
 // loop's instructions). The sum is a balanced tree, not a chain: the test gates the loop's
 // division and its stores, and a chain of 12 dependent operations delayed both (README,
@@ -36,12 +37,12 @@ std::string in_place(const std::string& term, bool is_sum)
 std::string all_finite(const std::vector<std::string>& values, const term_writer& term = in_place)
 {
     if (values.size() == 1)
-        return fmt::format("std::isfinite({})", values.front());
+        return fmt::format("detail::finite({})", values.front());
     std::vector<std::string> terms;  // x * 0 + y * 0 for the values two by two
     for (std::size_t v = 0; v < values.size(); v += 2)
         terms.push_back(term(v + 1 < values.size()
-                                 ? fmt::format("std::fma({}, Real(0), {} * Real(0))", values[v], values[v + 1])
-                                 : values[v] + " * Real(0)",
+                                 ? fmt::format("detail::zero_if_finite({}, {})", values[v], values[v + 1])
+                                 : fmt::format("detail::zero_if_finite({})", values[v]),
                              false));
     while (terms.size() > 1) {
         std::vector<std::string> sums;
@@ -395,7 +396,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
             }
         range_test = fmt::format("        std::int64_t doubtful = 0;\n        if constexpr ({0}_k<Real> >= 0) {{\n"
                            "            constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
-                           "            doubtful = !(std::isgreaterequal({1}, lowest) & std::islessequal({2}, highest));\n"
+                           "            doubtful = !(detail::at_least({1}, lowest) & detail::at_most({2}, highest));\n"
                            "        }}\n",
                            loop, balanced("detail::least", low), balanced("detail::most", high));
     }
@@ -455,7 +456,7 @@ void print_batch(std::string& out, const kernel_plan& plan)
             out += range_test;
             // Where the format has no range (k = -1), the least magnitude of the values tested.
             out += fmt::format("        if constexpr ({}_k<Real> < 0)\n"
-                               "            doubtful = !std::isgreaterequal({}, std::numeric_limits<Real>::min());\n",
+                               "            doubtful = !detail::at_least({}, std::numeric_limits<Real>::min());\n",
                                loop, least_magnitude(code));
             out += "        const std::int64_t written = usable & finite & !doubtful;\n";
         }

@@ -185,7 +185,7 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
         out += "};\n";
         print_batch_arrays(out, k);
     }
-    out += "\n} // namespace impact\n";
+    out += "\n} // namespace impact\n\nIMPACT_PRECISE_END\n";
     return out;
 }
 

@@ -18,12 +18,13 @@
 namespace impact::emit::cxx_detail {
 namespace {
 
-// The scalar kernel's form of the tests: a finite value tested with std::isfinite.
+// The scalar kernel's form of the tests: a finite value tested with detail::finite (from its
+// bits: under -ffinite-math-only, std::isfinite may be folded to true).
 std::vector<std::string> scalar_failures(const std::vector<domain_test>& tests)
 {
     std::vector<std::string> failures;
     for (const domain_test& t : tests)
-        failures.push_back(t.finite.empty() ? t.failure : fmt::format("!std::isfinite({})", t.finite));
+        failures.push_back(t.finite.empty() ? t.failure : fmt::format("!detail::finite({})", t.finite));
     return failures;
 }
 
@@ -277,11 +278,11 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     if (with_status) {
         std::vector<std::string> failures;
         for (const std::string& argument : code.arguments)
-            failures.push_back(fmt::format("!std::isfinite({})", argument));
+            failures.push_back(fmt::format("!detail::finite({})", argument));
         for (std::size_t r = 0; r < results.size(); ++r) {
             out += fmt::format("    const Real result{} = {};\n", r, results[r]);
             results[r] = fmt::format("result{}", r);
-            failures.push_back(fmt::format("!std::isfinite({})", results[r]));
+            failures.push_back(fmt::format("!detail::finite({})", results[r]));
         }
         print_refusal(out, k, failures, out_of_range);
         if (!code.underflows.empty())

@@ -7,6 +7,7 @@
 // the caller says which it is. A square root's argument is treated the same way.
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
+#include "engine/polynomial.h"
 
 #include <algorithm>
 #include <set>
@@ -43,7 +44,7 @@ double width(const GiNaC::ex& e, const term_order& order)
 // carried outside), so that a form, and its width, is the same on every run.
 GiNaC::ex factored(const GiNaC::ex& p, const term_order& order)
 {
-    const GiNaC::ex f = GiNaC::factor(p, GiNaC::factor_options::all);
+    const GiNaC::ex f = engine::factor_reproducibly(p, GiNaC::factor_options::all);
     const GiNaC::ex factors = GiNaC::is_a<GiNaC::mul>(f) ? f : GiNaC::ex(GiNaC::lst{f});
     GiNaC::ex out = 1;
     bool flip = false;

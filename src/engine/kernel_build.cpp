@@ -27,9 +27,9 @@ std::optional<GiNaC::ex> limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& 
     if (is_select(e)) {
         std::optional<GiNaC::ex> condition;
         for (int power = 0; power <= 2 && !condition; ++power) {
-            const auto r = limit(e.op(0) / GiNaC::pow(s, power), s, 0, true, given);
-            if (r && !r->infinite && !r->value.is_zero())
-                condition = r->value;
+            const auto r = finite_limit_at_infinity(e.op(0) / GiNaC::pow(s, power), s, given);
+            if (r && !r->is_zero())
+                condition = *r;
         }
         const auto taken = limit_at_infinity(e.op(1), s, given);
         const auto otherwise = limit_at_infinity(e.op(2), s, given);
@@ -109,15 +109,12 @@ std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, 
         const GiNaC::ex named = name(e);
         if (!name.found)
             return std::nullopt;
-        const auto r = limit(named, s, 0, true, given);
-        if (!r || r->infinite)
+        const auto r = finite_limit_at_infinity(named, s, given);
+        if (!r)
             return std::nullopt;
-        return r->value.subs(back, GiNaC::subs_options::no_pattern);
+        return r->subs(back, GiNaC::subs_options::no_pattern);
     }
-    const auto r = limit(e, s, 0, true, given);
-    if (!r || r->infinite)
-        return std::nullopt;
-    return r->value;
+    return finite_limit_at_infinity(e, s, given);
 }
 
 class kernel_builder {

@@ -32,8 +32,9 @@ std::optional<limit_result> by_substitution(const GiNaC::ex& e, const GiNaC::ex&
 }
 
 // The leading term of the series in (symbol - point).
+// `finite_only`: an infinite limit is given up at once, its sign not proven.
 std::optional<limit_result> by_series(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
-                                      const assumptions& given)
+                                      const assumptions& given, bool finite_only)
 {
     try {
         const GiNaC::ex s = GiNaC::series(simplify_radicals(e, given), symbol == point, 3);
@@ -47,6 +48,8 @@ std::optional<limit_result> by_series(const GiNaC::ex& e, const GiNaC::ex& symbo
             } else if (order == 0) {
                 r.value = coefficient;
             } else {
+                if (finite_only)
+                    return std::nullopt;
                 const sign_proof sign = prove_sign(coefficient, given);
                 if (!sign.sign.is_known() || sign.sign.zero)
                     return std::nullopt;
@@ -72,13 +75,14 @@ std::optional<limit_result> by_series(const GiNaC::ex& e, const GiNaC::ex& symbo
 
 namespace {
 
+// `finite_only`: a value and no more, none when infinite (see finite_limit_at_infinity).
 std::optional<limit_result> find_limit(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
-                                       bool to_infinity, const assumptions& given)
+                                       bool to_infinity, const assumptions& given, bool finite_only = false)
 {
     if (!to_infinity) {
         if (auto r = by_substitution(e, symbol, point, given))
             return r;
-        return by_series(e, symbol, point, given);
+        return by_series(e, symbol, point, given, finite_only);
     }
     // s → ∞: s = 1/t with t → 0⁺, a t of this limit's own: a t shared by every limit
     // would be newer than the symbols of the first derivation and older than those of
@@ -89,8 +93,8 @@ std::optional<limit_result> find_limit(const GiNaC::ex& e, const GiNaC::ex& symb
     const GiNaC::ex in_t = simplify_radicals(GiNaC::normal(e.subs(symbol == 1 / t)), with_t);
     std::optional<limit_result> r = by_substitution(in_t, t, 0, with_t);
     if (!r)
-        r = by_series(in_t, t, 0, with_t);
-    if (!r)
+        r = by_series(in_t, t, 0, with_t, finite_only);
+    if (!r || finite_only)
         return r;
     r->how.at_infinity = true;
     r->how.inverted = symbol;
@@ -118,6 +122,14 @@ std::optional<limit_result> limit(const GiNaC::ex& e, const GiNaC::ex& symbol, c
     if (r)
         r->how.words = r->method;
     return r;
+}
+
+std::optional<GiNaC::ex> finite_limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& symbol, const assumptions& given)
+{
+    const std::optional<limit_result> r = find_limit(e, symbol, 0, true, given, true);
+    if (!r || r->infinite)
+        return std::nullopt;
+    return r->value;
 }
 
 } // namespace impact::engine

@@ -45,4 +45,10 @@ struct limit_result {
 std::optional<limit_result> limit(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
                                   bool to_infinity, const assumptions& given);
 
+/// The limit of `e` as `symbol` → +∞ when it is finite, its value alone, or nothing: what
+/// a fixed sphere's kernel needs, without the work `limit` does to say more (the sign of
+/// an infinite limit proven, the leading term in 1/s for the reader).
+std::optional<GiNaC::ex> finite_limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& symbol,
+                                                  const assumptions& given);
+
 } // namespace impact::engine

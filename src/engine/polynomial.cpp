@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <utility>
 #include <vector>
@@ -208,6 +209,12 @@ expansion expand_numerator(const GiNaC::ex& e)
     } catch (const too_large&) {
         return expansion::undecided;
     }
+}
+
+GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
+{
+    std::srand(1);
+    return GiNaC::factor(e, options);
 }
 
 } // namespace impact::engine

@@ -27,4 +27,11 @@ enum class expansion {
 /// (the least common multiple of a sum's denominators, no gcd).
 expansion expand_numerator(const GiNaC::ex& e);
 
+/// GiNaC::factor(e, options) as a function of `e` alone. GiNaC's multivariate
+/// factorization draws its evaluation points from std::rand(), whose state is whatever
+/// the factorizations before it in the process left: the same polynomial took a second
+/// in one run and a quarter of an hour in another, depending on what had been factored
+/// (or taken from a cache) before. The generator is seeded alike before every call.
+GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options = 0);
+
 } // namespace impact::engine

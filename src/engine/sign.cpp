@@ -1,6 +1,7 @@
 #include "engine/sign.h"
 
 #include "engine/infix.h"
+#include "engine/polynomial.h"
 #include "engine/sign_arguments.h"
 
 #include <cln/rational.h>
@@ -410,7 +411,7 @@ GiNaC::ex flattened(const GiNaC::ex& f)
 // factoring under a root may pull out -1 and leave I behind.
 GiNaC::ex factor_polynomial(const GiNaC::ex& e)
 {
-    return worth_factoring(e) ? flattened(GiNaC::factor(e)) : e;
+    return worth_factoring(e) ? flattened(factor_reproducibly(e)) : e;
 }
 
 GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
@@ -423,7 +424,7 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
     const auto known = factored.find(e);
     if (known != factored.end())
         return known->second;
-    const GiNaC::ex f = worth_factoring(e) ? flattened(GiNaC::factor(e)) : e;
+    const GiNaC::ex f = worth_factoring(e) ? flattened(factor_reproducibly(e)) : e;
     if (factored.size() >= 4096)  // bounded: a long run (the fuzzer) meets ever new polynomials
         factored.clear();
     factored.emplace(e, f);

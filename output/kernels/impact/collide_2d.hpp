@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 namespace detail {
@@ -26,7 +29,7 @@ inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>
     const Real v_mx = v_m[0];
     const Real v_my = v_m[1];
     collide_result<Real, 2> out{v_M, v_m, status::ok};
-    if (!(m > Real(0)) || !std::isfinite(m)) {
+    if (!(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -34,7 +37,7 @@ inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my)) {
         out.status = status::non_finite;
         return out;
     }
@@ -97,7 +100,7 @@ inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>
     const Real result1 = v_My;
     const Real result2 = t34 + (t33 - (t34 - t31));
     const Real result3 = t42 + (t41 - (t42 - t39));
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -137,7 +140,7 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
     const Real v_mx = v_m[0];
     const Real v_my = v_m[1];
     collide_result<Real, 2> out{v_M, v_m, status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M)) {
+    if (!(M > Real(0)) || !detail::finite(M)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -145,7 +148,7 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my)) {
         out.status = status::non_finite;
         return out;
     }
@@ -201,7 +204,7 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
     const Real result1 = v_My - t35;
     const Real result2 = v_mx;
     const Real result3 = v_my;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -285,7 +288,7 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
     const Real v_mx = v_m[0];
     const Real v_my = v_m[1];
     collide_result<Real, 2> out{v_M, v_m, status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M) || !(m > Real(0)) || !std::isfinite(m)) {
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -293,7 +296,7 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my)) {
         out.status = status::non_finite;
         return out;
     }
@@ -350,7 +353,7 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
     const Real result1 = -t33 + v_My;
     const Real result2 = t35 + v_mx;
     const Real result3 = t36 + v_my;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -403,14 +406,14 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            std::int64_t fails = !(((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_mx_[i], Real(0), C_my_[i] * Real(0))) + (std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)) + std::fma(v_mx_[i], Real(0), v_my_[i] * Real(0)))) == Real(0));
+            std::int64_t fails = !(((detail::zero_if_finite(C_Mx_[i], C_My_[i]) + detail::zero_if_finite(C_mx_[i], C_my_[i])) + (detail::zero_if_finite(v_Mx_[i], v_My_[i]) + detail::zero_if_finite(v_mx_[i], v_my_[i]))) == Real(0));
             outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
             outcome = detail::blend(fails, status::invalid_restitution, outcome);
             fails = !(M_[i] > Real(0));
             fails |= !(m_[i] > Real(0));
-            fails |= !(std::fma(M_[i], Real(0), m_[i] * Real(0)) == Real(0));
+            fails |= !(detail::zero_if_finite(M_[i], m_[i]) == Real(0));
             outcome = detail::blend(fails, status::invalid_mass, outcome);
             const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
@@ -487,14 +490,14 @@ IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT
         const Real v_My_out = -t33 + v_My;
         const Real v_mx_out = t35 + v_mx;
         const Real v_my_out = t36 + v_my;
-        const std::int64_t finite = ((std::fma(v_Mx_out, Real(0), v_My_out * Real(0)) + std::fma(v_mx_out, Real(0), v_my_out * Real(0))) == Real(0));
+        const std::int64_t finite = ((detail::zero_if_finite(v_Mx_out, v_My_out) + detail::zero_if_finite(v_mx_out, v_my_out)) == Real(0));
         std::int64_t doubtful = 0;
         if constexpr (collide_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_k<Real>);
-            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My)))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), std::fabs(eps))), highest));
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My)))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), std::fabs(eps))), highest));
         }
         if constexpr (collide_batch_2d_k<Real> < 0)
-            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), detail::most(detail::most(std::fabs(t8), detail::zero_as_min(t2)), detail::zero_as_min(t7)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t10)), detail::zero_as_min(t20)), detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t22)), detail::zero_as_min(t26))), detail::least(std::fabs(t28), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t30)), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t32), detail::zero_as_min(t0)), detail::most(std::fabs(t33), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(t30)), detail::zero_as_min(M)), detail::most(std::fabs(t35), detail::zero_as_min(t0)))), detail::most(std::fabs(t36), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), detail::most(detail::most(std::fabs(t8), detail::zero_as_min(t2)), detail::zero_as_min(t7)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t10)), detail::zero_as_min(t20)), detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t22)), detail::zero_as_min(t26))), detail::least(std::fabs(t28), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t30)), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t32), detail::zero_as_min(t0)), detail::most(std::fabs(t33), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(t30)), detail::zero_as_min(M)), detail::most(std::fabs(t35), detail::zero_as_min(t0)))), detail::most(std::fabs(t36), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
         v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
@@ -574,3 +577,5 @@ inline void collide_batch(const collide_batch_data<Real, 2>& data) noexcept
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END

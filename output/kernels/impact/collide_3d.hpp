@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 namespace detail {
@@ -32,7 +35,7 @@ inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>
     const Real v_my = v_m[1];
     const Real v_mz = v_m[2];
     collide_result<Real, 3> out{v_M, v_m, status::ok};
-    if (!(m > Real(0)) || !std::isfinite(m)) {
+    if (!(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -40,7 +43,7 @@ inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_Mz) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(C_mz) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_Mz) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(v_mz)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_Mz) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(C_mz) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_Mz) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(v_mz)) {
         out.status = status::non_finite;
         return out;
     }
@@ -119,7 +122,7 @@ inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>
     const Real result3 = t48 + (t47 - (t48 - t45));
     const Real result4 = v_my + t51;
     const Real result5 = v_mz + t56;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -172,7 +175,7 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
     const Real v_my = v_m[1];
     const Real v_mz = v_m[2];
     collide_result<Real, 3> out{v_M, v_m, status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M)) {
+    if (!(M > Real(0)) || !detail::finite(M)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -180,7 +183,7 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_Mz) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(C_mz) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_Mz) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(v_mz)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_Mz) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(C_mz) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_Mz) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(v_mz)) {
         out.status = status::non_finite;
         return out;
     }
@@ -268,7 +271,7 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
     const Real result3 = v_mx;
     const Real result4 = v_my;
     const Real result5 = v_mz;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -370,7 +373,7 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
     const Real v_my = v_m[1];
     const Real v_mz = v_m[2];
     collide_result<Real, 3> out{v_M, v_m, status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M) || !(m > Real(0)) || !std::isfinite(m)) {
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -378,7 +381,7 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_Mz) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(C_mz) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_Mz) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(v_mz)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_Mz) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(C_mz) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_Mz) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(v_mz)) {
         out.status = status::non_finite;
         return out;
     }
@@ -454,7 +457,7 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
     const Real result3 = t51 + v_mx;
     const Real result4 = t52 + v_my;
     const Real result5 = t53 + v_mz;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -511,14 +514,14 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            std::int64_t fails = !((((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_Mz_[i], Real(0), C_mx_[i] * Real(0))) + (std::fma(C_my_[i], Real(0), C_mz_[i] * Real(0)) + std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)))) + (std::fma(v_Mz_[i], Real(0), v_mx_[i] * Real(0)) + std::fma(v_my_[i], Real(0), v_mz_[i] * Real(0)))) == Real(0));
+            std::int64_t fails = !((((detail::zero_if_finite(C_Mx_[i], C_My_[i]) + detail::zero_if_finite(C_Mz_[i], C_mx_[i])) + (detail::zero_if_finite(C_my_[i], C_mz_[i]) + detail::zero_if_finite(v_Mx_[i], v_My_[i]))) + (detail::zero_if_finite(v_Mz_[i], v_mx_[i]) + detail::zero_if_finite(v_my_[i], v_mz_[i]))) == Real(0));
             outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
             outcome = detail::blend(fails, status::invalid_restitution, outcome);
             fails = !(M_[i] > Real(0));
             fails |= !(m_[i] > Real(0));
-            fails |= !(std::fma(M_[i], Real(0), m_[i] * Real(0)) == Real(0));
+            fails |= !(detail::zero_if_finite(M_[i], m_[i]) == Real(0));
             outcome = detail::blend(fails, status::invalid_mass, outcome);
             const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
@@ -622,19 +625,19 @@ IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT
         const Real v_mx_out = t51 + v_mx;
         const Real v_my_out = t52 + v_my;
         const Real v_mz_out = t53 + v_mz;
-        const Real finite0 = std::fma(v_Mx_out, Real(0), v_My_out * Real(0));
-        const Real finite1 = std::fma(v_Mz_out, Real(0), v_mx_out * Real(0));
-        const Real finite2 = std::fma(v_my_out, Real(0), v_mz_out * Real(0));
+        const Real finite0 = detail::zero_if_finite(v_Mx_out, v_My_out);
+        const Real finite1 = detail::zero_if_finite(v_Mz_out, v_mx_out);
+        const Real finite2 = detail::zero_if_finite(v_my_out, v_mz_out);
         const Real finite3 = finite0 + finite1;
         const Real finite4 = finite3 + finite2;
         const std::int64_t finite = (finite4 == Real(0));
         std::int64_t doubtful = 0;
         if constexpr (collide_batch_3d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_k<Real>);
-            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_Mz, lowest), detail::magnitude_or(C_mx, lowest)), detail::least(detail::magnitude_or(C_my, lowest), detail::magnitude_or(C_mz, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)), detail::least(detail::magnitude_or(v_Mz, lowest), detail::magnitude_or(v_mx, lowest))), detail::least(detail::least(detail::magnitude_or(v_my, lowest), detail::magnitude_or(v_mz, lowest)), detail::magnitude_or(eps, lowest)))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_Mz), std::fabs(C_mx)), detail::most(std::fabs(C_my), std::fabs(C_mz)))), detail::most(detail::most(detail::most(std::fabs(v_Mx), std::fabs(v_My)), detail::most(std::fabs(v_Mz), std::fabs(v_mx))), detail::most(detail::most(std::fabs(v_my), std::fabs(v_mz)), std::fabs(eps)))), highest));
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_Mz, lowest), detail::magnitude_or(C_mx, lowest)), detail::least(detail::magnitude_or(C_my, lowest), detail::magnitude_or(C_mz, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)), detail::least(detail::magnitude_or(v_Mz, lowest), detail::magnitude_or(v_mx, lowest))), detail::least(detail::least(detail::magnitude_or(v_my, lowest), detail::magnitude_or(v_mz, lowest)), detail::magnitude_or(eps, lowest)))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_Mz), std::fabs(C_mx)), detail::most(std::fabs(C_my), std::fabs(C_mz)))), detail::most(detail::most(detail::most(std::fabs(v_Mx), std::fabs(v_My)), detail::most(std::fabs(v_Mz), std::fabs(v_mx))), detail::most(detail::most(std::fabs(v_my), std::fabs(v_mz)), std::fabs(eps)))), highest));
         }
         if constexpr (collide_batch_3d_k<Real> < 0)
-            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t14), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t0)), detail::zero_as_min(t20)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t24), detail::zero_as_min(t4)), detail::zero_as_min(t23)), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t12)), detail::zero_as_min(t30))), detail::least(detail::most(detail::most(std::fabs(t38), detail::zero_as_min(t37)), detail::zero_as_min(t36)), detail::most(detail::most(std::fabs(t41), detail::zero_as_min(t40)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(std::fabs(t42), detail::most(detail::most(std::fabs(t46), detail::zero_as_min(t45)), detail::zero_as_min(m))), detail::least(detail::most(std::fabs(t47), detail::zero_as_min(t0)), detail::most(std::fabs(t48), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t49), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t50), detail::zero_as_min(t45)), detail::zero_as_min(M))), detail::least(detail::most(std::fabs(t51), detail::zero_as_min(t0)), detail::most(std::fabs(t52), detail::zero_as_min(t4)))))), detail::most(std::fabs(t53), detail::zero_as_min(t12))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t14), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t0)), detail::zero_as_min(t20)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t24), detail::zero_as_min(t4)), detail::zero_as_min(t23)), detail::most(detail::most(std::fabs(t31), detail::zero_as_min(t12)), detail::zero_as_min(t30))), detail::least(detail::most(detail::most(std::fabs(t38), detail::zero_as_min(t37)), detail::zero_as_min(t36)), detail::most(detail::most(std::fabs(t41), detail::zero_as_min(t40)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(std::fabs(t42), detail::most(detail::most(std::fabs(t46), detail::zero_as_min(t45)), detail::zero_as_min(m))), detail::least(detail::most(std::fabs(t47), detail::zero_as_min(t0)), detail::most(std::fabs(t48), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t49), detail::zero_as_min(t12)), detail::most(detail::most(std::fabs(t50), detail::zero_as_min(t45)), detail::zero_as_min(M))), detail::least(detail::most(std::fabs(t51), detail::zero_as_min(t0)), detail::most(std::fabs(t52), detail::zero_as_min(t4)))))), detail::most(std::fabs(t53), detail::zero_as_min(t12))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
         v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
@@ -793,3 +796,5 @@ inline void collide_batch(const collide_batch_data<Real, 3>& data) noexcept
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END

@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 /// What collide_line returns.
@@ -26,7 +29,7 @@ template <class Real>
 inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m, Real eps) noexcept
 {
     collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
-    if (!(m > Real(0)) || !std::isfinite(m)) {
+    if (!(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -34,7 +37,7 @@ inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(v_M) || !std::isfinite(v_m)) {
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
         out.status = status::non_finite;
         return out;
     }
@@ -55,7 +58,7 @@ inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m
     const Real result0 = v_M;
     const Real result1 = t2;
     const Real result2 = t9;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -85,7 +88,7 @@ template <class Real>
 inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m, Real eps) noexcept
 {
     collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M)) {
+    if (!(M > Real(0)) || !detail::finite(M)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -93,7 +96,7 @@ inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(v_M) || !std::isfinite(v_m)) {
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
         out.status = status::non_finite;
         return out;
     }
@@ -113,7 +116,7 @@ inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m
     const Real result0 = t2;
     const Real result1 = v_m;
     const Real result2 = t8;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -176,7 +179,7 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
         return detail::collide_line_fixed_m<Real>(M, v_M, v_m, eps);
     }
     collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M) || !(m > Real(0)) || !std::isfinite(m)) {
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
@@ -184,7 +187,7 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(v_M) || !std::isfinite(v_m)) {
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
         out.status = status::non_finite;
         return out;
     }
@@ -219,7 +222,7 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
     const Real result0 = t7;
     const Real result1 = t10;
     const Real result2 = t18 + std::fma(t19, M - (t6 - t17) + (m - t17), std::fma(t19, t6, t16) + std::fma(std::fma(std::fma(M, m, -t11), t12, std::fma(t11, Real(1) - (t12 - t13) + (eps - t13), std::fma(t11, t12, -t14))), t0, std::fma(t14, v_M - (t0 - t15) - (v_m + t15), std::fma(t14, t0, -t16)))) / t6;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -245,3 +248,5 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END

@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 namespace detail {
@@ -29,11 +32,11 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
     const Real v_my = v_m[1];
     const Real b = beta;
     collide_rough_result<Real, 2> out{v_M, v_m, w_M, w_m, status::ok};
-    if (!(m > Real(0)) || !std::isfinite(m)) {
+    if (!(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
-    if (!(R_M > Real(0)) || !std::isfinite(R_M) || !(R_m > Real(0)) || !std::isfinite(R_m)) {
+    if (!(R_M > Real(0)) || !detail::finite(R_M) || !(R_m > Real(0)) || !detail::finite(R_m)) {
         out.status = status::invalid_radius;
         return out;
     }
@@ -53,7 +56,7 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
         out.status = status::invalid_friction;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(w_M) || !std::isfinite(w_m)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(w_M) || !detail::finite(w_m)) {
         out.status = status::non_finite;
         return out;
     }
@@ -576,7 +579,7 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
     const Real result3 = v_my + (t500 + -((std::fma(t500, m, t497) + (t496 - (t497 - t485))) / m));
     const Real result4 = w_M;
     const Real result5 = w_m + (t491 + -(std::fma(t491, std::fma(std::fma(m, R_m, -t216), q_m, std::fma(t216, q_m, -t217)), std::fma(t491, t217, t483) + std::fma(t492, t221, std::fma(t481, t316, std::fma(t481, t221, -t483)))) / t217));
-    if (!std::isfinite(t238) || !std::isfinite(t244) || !std::isfinite(t258) || !std::isfinite(t259) || !std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+    if (!detail::finite(t238) || !detail::finite(t244) || !detail::finite(t258) || !detail::finite(t259) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -865,11 +868,11 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
     const Real v_my = v_m[1];
     const Real b = beta;
     collide_rough_result<Real, 2> out{v_M, v_m, w_M, w_m, status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M)) {
+    if (!(M > Real(0)) || !detail::finite(M)) {
         out.status = status::invalid_mass;
         return out;
     }
-    if (!(R_M > Real(0)) || !std::isfinite(R_M) || !(R_m > Real(0)) || !std::isfinite(R_m)) {
+    if (!(R_M > Real(0)) || !detail::finite(R_M) || !(R_m > Real(0)) || !detail::finite(R_m)) {
         out.status = status::invalid_radius;
         return out;
     }
@@ -889,7 +892,7 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
         out.status = status::invalid_friction;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(w_M) || !std::isfinite(w_m)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(w_M) || !detail::finite(w_m)) {
         out.status = status::non_finite;
         return out;
     }
@@ -1385,7 +1388,7 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
     const Real result3 = v_my;
     const Real result4 = w_M + (t464 + -(std::fma(t464, std::fma(std::fma(M, R_M, -t186), q_M, std::fma(t186, q_M, -t187)), std::fma(t464, t187, t449) + std::fma(t467, t191, std::fma(t447, t291, std::fma(t447, t191, -t449)))) / t187));
     const Real result5 = w_m;
-    if (!std::isfinite(t217) || !std::isfinite(t220) || !std::isfinite(t225) || !std::isfinite(t234) || !std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+    if (!detail::finite(t217) || !detail::finite(t220) || !detail::finite(t225) || !detail::finite(t234) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -1708,11 +1711,11 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
     const Real v_my = v_m[1];
     const Real b = beta;
     collide_rough_result<Real, 2> out{v_M, v_m, w_M, w_m, status::ok};
-    if (!(M > Real(0)) || !std::isfinite(M) || !(m > Real(0)) || !std::isfinite(m)) {
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
         out.status = status::invalid_mass;
         return out;
     }
-    if (!(R_M > Real(0)) || !std::isfinite(R_M) || !(R_m > Real(0)) || !std::isfinite(R_m)) {
+    if (!(R_M > Real(0)) || !detail::finite(R_M) || !(R_m > Real(0)) || !detail::finite(R_m)) {
         out.status = status::invalid_radius;
         return out;
     }
@@ -1732,7 +1735,7 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
         out.status = status::invalid_friction;
         return out;
     }
-    if (!std::isfinite(C_Mx) || !std::isfinite(C_My) || !std::isfinite(C_mx) || !std::isfinite(C_my) || !std::isfinite(v_Mx) || !std::isfinite(v_My) || !std::isfinite(v_mx) || !std::isfinite(v_my) || !std::isfinite(w_M) || !std::isfinite(w_m)) {
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(w_M) || !detail::finite(w_m)) {
         out.status = status::non_finite;
         return out;
     }
@@ -2145,7 +2148,7 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
     const Real result3 = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t366))) / m));
     const Real result4 = w_M + (t372 + -(std::fma(t372, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t372, t110, t361) + t376) / t110));
     const Real result5 = w_m + (t373 + -(std::fma(t373, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t373, t117, t361) + t376) / t117));
-    if (!std::isfinite(t134) || !std::isfinite(t139) || !std::isfinite(t142) || !std::isfinite(t152) || !std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2) || !std::isfinite(result3) || !std::isfinite(result4) || !std::isfinite(result5)) {
+    if (!detail::finite(t134) || !detail::finite(t139) || !detail::finite(t142) || !detail::finite(t152) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -2302,7 +2305,7 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            std::int64_t fails = !((((std::fma(C_Mx_[i], Real(0), C_My_[i] * Real(0)) + std::fma(C_mx_[i], Real(0), C_my_[i] * Real(0))) + (std::fma(v_Mx_[i], Real(0), v_My_[i] * Real(0)) + std::fma(v_mx_[i], Real(0), v_my_[i] * Real(0)))) + std::fma(w_M_[i], Real(0), w_m_[i] * Real(0))) == Real(0));
+            std::int64_t fails = !((((detail::zero_if_finite(C_Mx_[i], C_My_[i]) + detail::zero_if_finite(C_mx_[i], C_my_[i])) + (detail::zero_if_finite(v_Mx_[i], v_My_[i]) + detail::zero_if_finite(v_mx_[i], v_my_[i]))) + detail::zero_if_finite(w_M_[i], w_m_[i])) == Real(0));
             outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(mu_[i] >= Real(0));
             outcome = detail::blend(fails, status::invalid_friction, outcome);
@@ -2319,11 +2322,11 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
             outcome = detail::blend(fails, status::invalid_inertia, outcome);
             fails = !(R_M_[i] > Real(0));
             fails |= !(R_m_[i] > Real(0));
-            fails |= !(std::fma(R_M_[i], Real(0), R_m_[i] * Real(0)) == Real(0));
+            fails |= !(detail::zero_if_finite(R_M_[i], R_m_[i]) == Real(0));
             outcome = detail::blend(fails, status::invalid_radius, outcome);
             fails = !(M_[i] > Real(0));
             fails |= !(m_[i] > Real(0));
-            fails |= !(std::fma(M_[i], Real(0), m_[i] * Real(0)) == Real(0));
+            fails |= !(detail::zero_if_finite(M_[i], m_[i]) == Real(0));
             outcome = detail::blend(fails, status::invalid_mass, outcome);
             const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
@@ -2763,11 +2766,11 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
         const Real v_my_out = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t366))) / detail::blend(usable, m, Real(1))));
         const Real w_M_out = w_M + (t372 + -(std::fma(t372, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t372, t110, t361) + t376) / detail::blend(usable, t110, Real(1))));
         const Real w_m_out = w_m + (t373 + -(std::fma(t373, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t373, t117, t361) + t376) / detail::blend(usable, t117, Real(1))));
-        const Real finite0 = std::fma(t134, Real(0), t139 * Real(0));
-        const Real finite1 = std::fma(t142, Real(0), t152 * Real(0));
-        const Real finite2 = std::fma(v_Mx_out, Real(0), v_My_out * Real(0));
-        const Real finite3 = std::fma(v_mx_out, Real(0), v_my_out * Real(0));
-        const Real finite4 = std::fma(w_M_out, Real(0), w_m_out * Real(0));
+        const Real finite0 = detail::zero_if_finite(t134, t139);
+        const Real finite1 = detail::zero_if_finite(t142, t152);
+        const Real finite2 = detail::zero_if_finite(v_Mx_out, v_My_out);
+        const Real finite3 = detail::zero_if_finite(v_mx_out, v_my_out);
+        const Real finite4 = detail::zero_if_finite(w_M_out, w_m_out);
         const Real finite5 = finite0 + finite1;
         const Real finite6 = finite2 + finite3;
         const Real finite7 = finite5 + finite6;
@@ -2776,10 +2779,10 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
         std::int64_t doubtful = 0;
         if constexpr (collide_rough_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_rough_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_rough_batch_2d_k<Real>);
-            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
         }
         if constexpr (collide_rough_batch_2d_k<Real> < 0)
-            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(t24)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(t24)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(std::fabs(t31), detail::most(detail::most(std::fabs(t52), detail::zero_as_min(M)), detail::zero_as_min(m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t58), detail::zero_as_min(t57)), detail::most(detail::most(std::fabs(t61), detail::zero_as_min(q_M)), detail::zero_as_min(q_m))), detail::least(detail::most(detail::most(std::fabs(t62), detail::zero_as_min(M)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(m)), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(std::fabs(t65), detail::zero_as_min(q_M))), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_m)), detail::most(std::fabs(t69), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t71), detail::zero_as_min(q_m)), detail::zero_as_min(t67))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(t66)), std::fabs(t73))), detail::least(detail::least(detail::most(std::fabs(t74), detail::zero_as_min(t57)), std::fabs(t75)), detail::least(detail::most(std::fabs(t79), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t94), detail::zero_as_min(b)), detail::zero_as_min(v_Mx))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t95), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t96), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t97), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t98), detail::zero_as_min(b)), detail::zero_as_min(v_My)))), detail::least(detail::least(detail::most(std::fabs(t99), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t100), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t101), detail::zero_as_min(t0)), detail::most(std::fabs(t102), detail::zero_as_min(t93))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(t53)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t110), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t112), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)), detail::most(detail::most(std::fabs(t116), detail::zero_as_min(m)), detail::zero_as_min(R_m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t117), detail::zero_as_min(q_m)), detail::most(std::fabs(t120), detail::zero_as_min(t53))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t91)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))), detail::least(detail::least(std::fabs(t124), std::fabs(t125)), detail::least(std::fabs(t126), std::fabs(t127)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t128), detail::zero_as_min(w_m)), detail::most(std::fabs(t129), detail::zero_as_min(w_m))), detail::least(std::fabs(t130), std::fabs(t131))), detail::least(detail::least(std::fabs(t132), std::fabs(t133)), detail::least(std::fabs(t134), std::fabs(t136))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t137), detail::most(std::fabs(t138), detail::zero_as_min(t123))), detail::least(std::fabs(t140), std::fabs(t141))), detail::least(detail::least(std::fabs(t142), std::fabs(t145)), detail::least(std::fabs(t156), std::fabs(t157)))), detail::least(detail::least(detail::least(std::fabs(t159), std::fabs(t160)), detail::least(std::fabs(t161), std::fabs(t162))), detail::least(detail::least(std::fabs(t164), std::fabs(t165)), detail::least(detail::most(detail::most(std::fabs(t168), detail::zero_as_min(mu)), detail::zero_as_min(t57)), detail::most(std::fabs(t169), detail::zero_as_min(mu)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t170), detail::zero_as_min(t57)), std::fabs(t171)), detail::least(detail::most(std::fabs(t172), detail::zero_as_min(t81)), detail::most(std::fabs(t173), detail::zero_as_min(t32)))), detail::least(detail::least(std::fabs(t183), std::fabs(t184)), detail::least(std::fabs(t185), std::fabs(t186)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t257), detail::zero_as_min(t256)), std::fabs(t258)), detail::least(detail::most(std::fabs(t272), detail::zero_as_min(t0)), detail::most(std::fabs(t273), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t280), detail::zero_as_min(t279)), detail::most(std::fabs(t281), detail::zero_as_min(t50))), detail::least(std::fabs(t282), detail::most(std::fabs(t288), detail::zero_as_min(t287))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t289), detail::zero_as_min(t50)), std::fabs(t290)), detail::least(detail::most(std::fabs(t343), detail::zero_as_min(t342)), std::fabs(t344))), detail::least(detail::least(detail::most(std::fabs(t346), detail::zero_as_min(t345)), detail::most(std::fabs(t347), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t348), detail::zero_as_min(t4)), detail::most(std::fabs(t355), detail::zero_as_min(t354))))), detail::least(detail::least(detail::least(std::fabs(t356), detail::most(std::fabs(t358), detail::zero_as_min(t357))), detail::least(detail::most(std::fabs(t359), detail::zero_as_min(t0)), detail::most(std::fabs(t360), detail::zero_as_min(t4)))), detail::least(detail::least(std::fabs(t361), std::fabs(t362)), detail::least(std::fabs(t363), detail::most(std::fabs(t379), detail::zero_as_min(t378)))))), detail::least(detail::least(detail::most(std::fabs(t382), detail::zero_as_min(t381)), detail::most(std::fabs(t385), detail::zero_as_min(t384))), detail::most(std::fabs(t388), detail::zero_as_min(t387)))))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(t24)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(t24)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(std::fabs(t31), detail::most(detail::most(std::fabs(t52), detail::zero_as_min(M)), detail::zero_as_min(m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t58), detail::zero_as_min(t57)), detail::most(detail::most(std::fabs(t61), detail::zero_as_min(q_M)), detail::zero_as_min(q_m))), detail::least(detail::most(detail::most(std::fabs(t62), detail::zero_as_min(M)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(m)), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(std::fabs(t65), detail::zero_as_min(q_M))), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_m)), detail::most(std::fabs(t69), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t71), detail::zero_as_min(q_m)), detail::zero_as_min(t67))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(t66)), std::fabs(t73))), detail::least(detail::least(detail::most(std::fabs(t74), detail::zero_as_min(t57)), std::fabs(t75)), detail::least(detail::most(std::fabs(t79), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t94), detail::zero_as_min(b)), detail::zero_as_min(v_Mx))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t95), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t96), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t97), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t98), detail::zero_as_min(b)), detail::zero_as_min(v_My)))), detail::least(detail::least(detail::most(std::fabs(t99), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t100), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t101), detail::zero_as_min(t0)), detail::most(std::fabs(t102), detail::zero_as_min(t93))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(t53)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t110), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t112), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)), detail::most(detail::most(std::fabs(t116), detail::zero_as_min(m)), detail::zero_as_min(R_m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t117), detail::zero_as_min(q_m)), detail::most(std::fabs(t120), detail::zero_as_min(t53))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t91)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))), detail::least(detail::least(std::fabs(t124), std::fabs(t125)), detail::least(std::fabs(t126), std::fabs(t127)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t128), detail::zero_as_min(w_m)), detail::most(std::fabs(t129), detail::zero_as_min(w_m))), detail::least(std::fabs(t130), std::fabs(t131))), detail::least(detail::least(std::fabs(t132), std::fabs(t133)), detail::least(std::fabs(t134), std::fabs(t136))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t137), detail::most(std::fabs(t138), detail::zero_as_min(t123))), detail::least(std::fabs(t140), std::fabs(t141))), detail::least(detail::least(std::fabs(t142), std::fabs(t145)), detail::least(std::fabs(t156), std::fabs(t157)))), detail::least(detail::least(detail::least(std::fabs(t159), std::fabs(t160)), detail::least(std::fabs(t161), std::fabs(t162))), detail::least(detail::least(std::fabs(t164), std::fabs(t165)), detail::least(detail::most(detail::most(std::fabs(t168), detail::zero_as_min(mu)), detail::zero_as_min(t57)), detail::most(std::fabs(t169), detail::zero_as_min(mu)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t170), detail::zero_as_min(t57)), std::fabs(t171)), detail::least(detail::most(std::fabs(t172), detail::zero_as_min(t81)), detail::most(std::fabs(t173), detail::zero_as_min(t32)))), detail::least(detail::least(std::fabs(t183), std::fabs(t184)), detail::least(std::fabs(t185), std::fabs(t186)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t257), detail::zero_as_min(t256)), std::fabs(t258)), detail::least(detail::most(std::fabs(t272), detail::zero_as_min(t0)), detail::most(std::fabs(t273), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t280), detail::zero_as_min(t279)), detail::most(std::fabs(t281), detail::zero_as_min(t50))), detail::least(std::fabs(t282), detail::most(std::fabs(t288), detail::zero_as_min(t287))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t289), detail::zero_as_min(t50)), std::fabs(t290)), detail::least(detail::most(std::fabs(t343), detail::zero_as_min(t342)), std::fabs(t344))), detail::least(detail::least(detail::most(std::fabs(t346), detail::zero_as_min(t345)), detail::most(std::fabs(t347), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t348), detail::zero_as_min(t4)), detail::most(std::fabs(t355), detail::zero_as_min(t354))))), detail::least(detail::least(detail::least(std::fabs(t356), detail::most(std::fabs(t358), detail::zero_as_min(t357))), detail::least(detail::most(std::fabs(t359), detail::zero_as_min(t0)), detail::most(std::fabs(t360), detail::zero_as_min(t4)))), detail::least(detail::least(std::fabs(t361), std::fabs(t362)), detail::least(std::fabs(t363), detail::most(std::fabs(t379), detail::zero_as_min(t378)))))), detail::least(detail::least(detail::most(std::fabs(t382), detail::zero_as_min(t381)), detail::most(std::fabs(t385), detail::zero_as_min(t384))), detail::most(std::fabs(t388), detail::zero_as_min(t387)))))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
         v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
@@ -2950,3 +2953,5 @@ inline void collide_rough_batch(const collide_rough_batch_data<Real, 2>& data) n
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END

@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 /// collide_wall(P, n, C, v, eps): A smooth sphere hitting a wall, in a plane.
@@ -48,7 +51,7 @@ inline collide_wall_result<Real, 2> collide_wall(const std::array<Real, 2>& P, c
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(P_x) || !std::isfinite(P_y) || !std::isfinite(N_x) || !std::isfinite(N_y) || !std::isfinite(C_x) || !std::isfinite(C_y) || !std::isfinite(v_x) || !std::isfinite(v_y)) {
+    if (!detail::finite(P_x) || !detail::finite(P_y) || !detail::finite(N_x) || !detail::finite(N_y) || !detail::finite(C_x) || !detail::finite(C_y) || !detail::finite(v_x) || !detail::finite(v_y)) {
         out.status = status::non_finite;
         return out;
     }
@@ -90,7 +93,7 @@ inline collide_wall_result<Real, 2> collide_wall(const std::array<Real, 2>& P, c
     const Real t19 = N_y * t17;
     const Real result0 = -t18 + v_x;
     const Real result1 = -t19 + v_y;
-    if (!std::isfinite(result0) || !std::isfinite(result1)) {
+    if (!detail::finite(result0) || !detail::finite(result1)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -137,7 +140,7 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_2d(std::size_t count, const Real* I
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            std::int64_t fails = !(((std::fma(P_x_[i], Real(0), P_y_[i] * Real(0)) + std::fma(N_x_[i], Real(0), N_y_[i] * Real(0))) + (std::fma(C_x_[i], Real(0), C_y_[i] * Real(0)) + std::fma(v_x_[i], Real(0), v_y_[i] * Real(0)))) == Real(0));
+            std::int64_t fails = !(((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(N_x_[i], N_y_[i])) + (detail::zero_if_finite(C_x_[i], C_y_[i]) + detail::zero_if_finite(v_x_[i], v_y_[i]))) == Real(0));
             outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
@@ -188,14 +191,14 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_2d(std::size_t count, const Real* I
         const Real t19 = N_y * t17;
         const Real v_x_out = -t18 + v_x;
         const Real v_y_out = -t19 + v_y;
-        const std::int64_t finite = (std::fma(v_x_out, Real(0), v_y_out * Real(0)) == Real(0));
+        const std::int64_t finite = (detail::zero_if_finite(v_x_out, v_y_out) == Real(0));
         std::int64_t doubtful = 0;
         if constexpr (collide_wall_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_k<Real>);
-            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & std::islessequal(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
         }
         if constexpr (collide_wall_batch_2d_k<Real> < 0)
-            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t4), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t11), detail::zero_as_min(t6)), detail::zero_as_min(t10)), std::fabs(t15)), detail::least(detail::most(detail::most(std::fabs(t18), detail::zero_as_min(N_x)), detail::zero_as_min(t17)), detail::most(detail::most(std::fabs(t19), detail::zero_as_min(N_y)), detail::zero_as_min(t17))))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t4), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t11), detail::zero_as_min(t6)), detail::zero_as_min(t10)), std::fabs(t15)), detail::least(detail::most(detail::most(std::fabs(t18), detail::zero_as_min(N_x)), detail::zero_as_min(t17)), detail::most(detail::most(std::fabs(t19), detail::zero_as_min(N_y)), detail::zero_as_min(t17))))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
@@ -269,3 +272,5 @@ inline void collide_wall_batch(const collide_wall_batch_data<Real, 2>& data) noe
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END

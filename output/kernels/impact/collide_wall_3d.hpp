@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 /// collide_wall(P, n, C, v, eps): A smooth sphere hitting a wall, in space.
@@ -57,7 +60,7 @@ inline collide_wall_result<Real, 3> collide_wall(const std::array<Real, 3>& P, c
         out.status = status::invalid_restitution;
         return out;
     }
-    if (!std::isfinite(P_x) || !std::isfinite(P_y) || !std::isfinite(P_z) || !std::isfinite(N_x) || !std::isfinite(N_y) || !std::isfinite(N_z) || !std::isfinite(C_x) || !std::isfinite(C_y) || !std::isfinite(C_z) || !std::isfinite(v_x) || !std::isfinite(v_y) || !std::isfinite(v_z)) {
+    if (!detail::finite(P_x) || !detail::finite(P_y) || !detail::finite(P_z) || !detail::finite(N_x) || !detail::finite(N_y) || !detail::finite(N_z) || !detail::finite(C_x) || !detail::finite(C_y) || !detail::finite(C_z) || !detail::finite(v_x) || !detail::finite(v_y) || !detail::finite(v_z)) {
         out.status = status::non_finite;
         return out;
     }
@@ -111,7 +114,7 @@ inline collide_wall_result<Real, 3> collide_wall(const std::array<Real, 3>& P, c
     const Real result0 = -t28 + v_x;
     const Real result1 = -t29 + v_y;
     const Real result2 = -t30 + v_z;
-    if (!std::isfinite(result0) || !std::isfinite(result1) || !std::isfinite(result2)) {
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -161,7 +164,7 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_3d(std::size_t count, const Real* I
         // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
         impact::status outcome = status::ok;
         {
-            std::int64_t fails = !((((std::fma(P_x_[i], Real(0), P_y_[i] * Real(0)) + std::fma(P_z_[i], Real(0), N_x_[i] * Real(0))) + (std::fma(N_y_[i], Real(0), N_z_[i] * Real(0)) + std::fma(C_x_[i], Real(0), C_y_[i] * Real(0)))) + (std::fma(C_z_[i], Real(0), v_x_[i] * Real(0)) + std::fma(v_y_[i], Real(0), v_z_[i] * Real(0)))) == Real(0));
+            std::int64_t fails = !((((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(P_z_[i], N_x_[i])) + (detail::zero_if_finite(N_y_[i], N_z_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i]))) + (detail::zero_if_finite(C_z_[i], v_x_[i]) + detail::zero_if_finite(v_y_[i], v_z_[i]))) == Real(0));
             outcome = detail::blend(fails, status::non_finite, outcome);
             fails = !(eps_[i] >= Real(0));
             fails |= !(eps_[i] <= Real(1));
@@ -228,14 +231,14 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_3d(std::size_t count, const Real* I
         const Real v_x_out = -t28 + v_x;
         const Real v_y_out = -t29 + v_y;
         const Real v_z_out = -t30 + v_z;
-        const std::int64_t finite = ((std::fma(v_x_out, Real(0), v_y_out * Real(0)) + v_z_out * Real(0)) == Real(0));
+        const std::int64_t finite = ((detail::zero_if_finite(v_x_out, v_y_out) + detail::zero_if_finite(v_z_out)) == Real(0));
         std::int64_t doubtful = 0;
         if constexpr (collide_wall_batch_3d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_3d_k<Real>);
-            doubtful = !(std::isgreaterequal(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(N_z, lowest), detail::magnitude_or(v_x, lowest))), detail::least(detail::least(detail::magnitude_or(v_y, lowest), detail::magnitude_or(v_z, lowest)), detail::magnitude_or(eps, lowest))), lowest) & std::islessequal(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(N_z), std::fabs(v_x))), detail::most(detail::most(std::fabs(v_y), std::fabs(v_z)), std::fabs(eps))), highest));
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(N_z, lowest), detail::magnitude_or(v_x, lowest))), detail::least(detail::least(detail::magnitude_or(v_y, lowest), detail::magnitude_or(v_z, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(N_z), std::fabs(v_x))), detail::most(detail::most(std::fabs(v_y), std::fabs(v_z)), std::fabs(eps))), highest));
         }
         if constexpr (collide_wall_batch_3d_k<Real> < 0)
-            doubtful = !std::isgreaterequal(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t3), detail::zero_as_min(N_z)), detail::most(detail::most(std::fabs(t4), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t5), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t7), detail::zero_as_min(N_z)), detail::zero_as_min(v_z))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(t8)), detail::zero_as_min(t16)), std::fabs(t25)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t28), detail::zero_as_min(N_x)), detail::zero_as_min(t27)), detail::most(detail::most(std::fabs(t29), detail::zero_as_min(N_y)), detail::zero_as_min(t27))), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(N_z)), detail::zero_as_min(t27)))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t3), detail::zero_as_min(N_z)), detail::most(detail::most(std::fabs(t4), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t5), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t7), detail::zero_as_min(N_z)), detail::zero_as_min(v_z))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(t8)), detail::zero_as_min(t16)), std::fabs(t25)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t28), detail::zero_as_min(N_x)), detail::zero_as_min(t27)), detail::most(detail::most(std::fabs(t29), detail::zero_as_min(N_y)), detail::zero_as_min(t27))), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(N_z)), detail::zero_as_min(t27)))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
@@ -315,3 +318,5 @@ inline void collide_wall_batch(const collide_wall_batch_data<Real, 3>& data) noe
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END

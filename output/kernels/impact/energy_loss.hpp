@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 /// energy_loss(M, m, v_M, v_m, eps): Kinetic energy lost in an inelastic collision, Eq. 11.
@@ -27,13 +30,13 @@ namespace impact {
 template <class Real>
 inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 {
-    if (!(M > Real(0)) || !std::isfinite(M) || !(m > Real(0)) || !std::isfinite(m)) {
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
         return std::numeric_limits<Real>::quiet_NaN();  // invalid_mass
     }
     if (!(eps >= Real(0)) || !(eps <= Real(1))) {
         return std::numeric_limits<Real>::quiet_NaN();  // invalid_restitution
     }
-    if (!std::isfinite(v_M) || !std::isfinite(v_m)) {
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
         return std::numeric_limits<Real>::quiet_NaN();  // non_finite
     }
     const Real t0 = M * m;
@@ -57,7 +60,7 @@ inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
     const Real t15 = t11 / t14;
     const Real t16 = -t15;
     const Real result0 = t16 + -(std::fma(t16, std::fma(Real(2), M - (t12 - t13) + (m - t13), std::fma(Real(2), t12, -t14)), std::fma(t16, t14, t11) + std::fma(std::fma(std::fma(std::fma(M, m, -t0), t1, std::fma(t0, Real(1) - (t1 - t2) + (eps - t2), std::fma(t0, t1, -t3))), t4, std::fma(t3, Real(1) - (t4 - t5) - (eps + t5), std::fma(t3, t4, -t6))), t10, std::fma(t6, std::fma(t9, t7, std::fma(t7, t9, std::fma(t7, t7, -t10))), std::fma(t6, t10, -t11)))) / t14);
-    if (!std::isfinite(result0)) {
+    if (!detail::finite(result0)) {
         return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
     }
     if ((std::fabs(t0) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
@@ -73,3 +76,5 @@ inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END

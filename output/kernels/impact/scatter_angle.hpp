@@ -4,6 +4,9 @@
 
 #include "common.hpp"
 
+// The code as written, whatever the caller's floating-point flags (common.hpp says why).
+IMPACT_PRECISE_BEGIN
+
 namespace impact {
 
 /// scatter_angle(v_par, v_perp, eps): Scatter angle of a billiard collision, Eq. 14.
@@ -29,7 +32,7 @@ inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
     if (!(eps >= Real(0)) || !(eps <= Real(1))) {
         return std::numeric_limits<Real>::quiet_NaN();  // invalid_restitution
     }
-    if (!(v_1par > Real(0)) || !std::isfinite(v_1par) || !(v_1perp > Real(0)) || !std::isfinite(v_1perp)) {
+    if (!(v_1par > Real(0)) || !detail::finite(v_1par) || !(v_1perp > Real(0)) || !detail::finite(v_1perp)) {
         return std::numeric_limits<Real>::quiet_NaN();  // invalid_speed
     }
     const Real t0 = Real(2) * v_1perp;
@@ -37,7 +40,7 @@ inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
     const Real t2 = v_1par * t1;
     const Real t3 = std::atan2(t0, t2);
     const Real result0 = t3;
-    if (!std::isfinite(t0) || !std::isfinite(t2) || !std::isfinite(result0)) {
+    if (!detail::finite(t0) || !detail::finite(t2) || !detail::finite(result0)) {
         return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
     }
     if ((std::fabs(t0) < std::numeric_limits<Real>::min() && v_1perp != Real(0)) ||
@@ -49,3 +52,5 @@ inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
 }
 
 } // namespace impact
+
+IMPACT_PRECISE_END
