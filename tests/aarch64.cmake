@@ -17,10 +17,14 @@ file(WRITE ${WORK}/shim/boost/test/unit_test.hpp
 # long double is IEEE's quadruple there, computed in software.
 set(ENV{IMPACT_SWEEP_PAIRS} 2000)
 string(REPLACE "," ";" sources "${SOURCES}")
+if(NOT BOOST_INCLUDE)
+  message(FATAL_ERROR "aarch64.cmake: BOOST_INCLUDE (the folder holding boost/) is not given")
+endif()
 foreach(file IN LISTS sources)
   set(source ${TESTS}/${file})
   get_filename_component(name ${source} NAME_WE)
-  # The build machine's headers after the cross compiler's own, for Boost only.
+  # The build machine's headers searched after the cross compiler's own (for Boost's, which the
+  # cross compiler has not).
   execute_process(
     COMMAND ${CXX} -std=c++17 -O3 -ffp-contract=off -static -I${WORK}/shim -I${KERNELS}
             -idirafter ${BOOST_INCLUDE} ${source} -o ${WORK}/${name}

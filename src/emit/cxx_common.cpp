@@ -90,7 +90,7 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
                            "        std::memcpy(&b, &other, sizeof b);\n"
                            "        // The mask in a statement of its own: in one expression, GCC folds `& -mask`\n"
                            "        // to a select of booleans again.\n"
-                           "        const bits mask = -static_cast<bits>(chosen != 0);\n"
+                           "        const bits mask = bits(0) - static_cast<bits>(chosen != 0);\n"
                            "        const bits r = b ^ ((a ^ b) & mask);\n"
                            "        T out;\n"
                            "        std::memcpy(&out, &r, sizeof out);\n"

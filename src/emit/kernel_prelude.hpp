@@ -125,7 +125,7 @@ IMPACT_ALWAYS_INLINE bool finite(Real x) noexcept
 /// -ffast-math, -Ofast) folds x * 0 to 0 and compares a NaN as equal to 0 even in precise
 /// code (its code generator takes NaN as absent for the whole program): there, 0 or 1 from
 /// the bits. GCC compiles the product as written between IMPACT_PRECISE_BEGIN and _END.
-#if defined(__clang__) && defined(__FINITE_MATH_ONLY__)
+#if defined(__clang__) && defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
 template <class Real>
 IMPACT_ALWAYS_INLINE Real zero_if_finite(Real x) noexcept
 {

@@ -149,7 +149,10 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                              : "detail::blend(" + text[in.a] + " > Real(0), " + text[in.b] + ", " + text[in.c] + ")";
             break;
         case opcode::call:
-            expression = "std::" + in.function + "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";
+            // |x| as std::fabs: std::abs(double) is a wrapper of <cmath>, compiled with the
+            // caller's flags, which GCC does not inline into the kernels' precise code.
+            expression = "std::" + (in.function == "abs" ? std::string("fabs") : in.function) + "(" + text[in.a] +
+                         (in.b >= 0 ? ", " + text[in.b] : "") + ")";
             break;
         }
         const bool named = uses[i] > 1 && !is_leaf(in);

@@ -19,8 +19,8 @@ struct domain {
     double upper = 0;
     bool lower_open = false;   ///< `(0, 1]` excludes 0
     bool upper_open = false;
-    std::string lower_text;    ///< the bounds as the file writes them (2/3, not 0.666...)
-    std::string upper_text;
+    std::string lower_text{};  ///< the bounds as the file writes them (2/3, not 0.666...)
+    std::string upper_text{};
     /// `[0, +inf]` or `(0, +inf]`: +infinity is a value too (a coefficient of friction that
     /// never lets a contact slide). The engine reasons on the finite values; a kernel accepts
     /// +infinity for it.

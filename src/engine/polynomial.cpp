@@ -211,6 +211,7 @@ expansion expand_numerator(const GiNaC::ex& e)
     }
 }
 
+// Not for threads: std::rand()'s state is the process's (Impact's workers are processes).
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
 {
     std::srand(1);

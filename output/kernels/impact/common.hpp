@@ -129,7 +129,7 @@ IMPACT_ALWAYS_INLINE bool finite(Real x) noexcept
 /// -ffast-math, -Ofast) folds x * 0 to 0 and compares a NaN as equal to 0 even in precise
 /// code (its code generator takes NaN as absent for the whole program): there, 0 or 1 from
 /// the bits. GCC compiles the product as written between IMPACT_PRECISE_BEGIN and _END.
-#if defined(__clang__) && defined(__FINITE_MATH_ONLY__)
+#if defined(__clang__) && defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
 template <class Real>
 IMPACT_ALWAYS_INLINE Real zero_if_finite(Real x) noexcept
 {
@@ -224,7 +224,7 @@ IMPACT_ALWAYS_INLINE T blend(std::int64_t chosen, T x, T other) noexcept
         std::memcpy(&b, &other, sizeof b);
         // The mask in a statement of its own: in one expression, GCC folds `& -mask`
         // to a select of booleans again.
-        const bits mask = -static_cast<bits>(chosen != 0);
+        const bits mask = bits(0) - static_cast<bits>(chosen != 0);
         const bits r = b ^ ((a ^ b) & mask);
         T out;
         std::memcpy(&out, &r, sizeof out);
