@@ -2,7 +2,7 @@
 # header) is vectorised at -O3 with no other flag by GCC for AVX2 with FMA and for AVX-512
 # (-march=x86-64-v3, x86-64-v4), by Clang for both, and by GCC for AArch64 (compiled
 # only, so any x86-64 machine can run it; a compiler not found is skipped with a note), and
-# for AVX2 under -ffast-math by both (GCC's loops with a square root excepted, see below): a
+# for AVX2 under -ffast-math by both: a
 # change to the generated code can keep every result and still lose the vectors. A loop
 # that takes a square root is the exception: a C library's sqrt may set errno, so without
 # -fno-math-errno neither GCC nor Clang vectorises it, whatever the loop; such a loop must
@@ -108,10 +108,6 @@ foreach(target IN LISTS targets)
     endif()
     if(report MATCHES "${pattern}")
       message(STATUS "${target}: ${loop} vectorised${how}")
-    elseif(NOT root EQUAL -1 AND target MATCHES "^gcc-.*-fast-math$")
-      # Known: GCC keeps the square roots calls when the caller's -ffast-math meets the
-      # kernels' no-fast-math pragma, -fno-math-errno or not (README, "The flags users have").
-      message(STATUS "${target}: ${loop} not vectorised${how}: known, not required")
     else()
       message(STATUS "${target}: ${loop} NOT vectorised${how}")
       string(APPEND failures "${target}: ${loop}${how}\n")
