@@ -176,6 +176,32 @@ IMPACT_ALWAYS_INLINE bool at_most(Real a, Real b) noexcept
 #endif
 }
 
+/// x where `chosen` is not 0, otherwise `other`, by the bits of both (a batch loop's
+/// choices). Without a branch for a compiler to make of it: GCC made `d / (c ? x : 1)`
+/// a division only where c held, and `s = c ? status : s` branches it followed from
+/// guard to guard, selecting booleans it could not vectorise without AVX-512 (or,
+/// for the division, -fno-trapping-math). An int64 condition is one mask as wide as
+/// a double per lane.
+template <class T>
+IMPACT_ALWAYS_INLINE T blend(std::int64_t chosen, T x, T other) noexcept
+{
+    if constexpr (sizeof(T) == sizeof(std::uint64_t) || sizeof(T) == sizeof(std::uint32_t)) {
+        using bits = std::conditional_t<sizeof(T) == sizeof(std::uint64_t), std::uint64_t, std::uint32_t>;
+        bits a, b;
+        std::memcpy(&a, &x, sizeof a);
+        std::memcpy(&b, &other, sizeof b);
+        // The mask in a statement of its own: in one expression, GCC folds `& -mask`
+        // to a select of booleans again.
+        const bits mask = bits(0) - static_cast<bits>(chosen != 0);
+        const bits r = b ^ ((a ^ b) & mask);
+        T out;
+        std::memcpy(&out, &r, sizeof out);
+        return out;
+    } else {
+        return chosen != 0 ? x : other;
+    }
+}
+
 } // namespace impact::detail
 
 namespace impact {
@@ -206,32 +232,6 @@ template <class Real>
 IMPACT_ALWAYS_INLINE Real most(Real a, Real b) noexcept
 {
     return a < b ? b : a;
-}
-
-/// x where `chosen` is not 0, otherwise `other`, by the bits of both (a batch loop's
-/// choices). Without a branch for a compiler to make of it: GCC made `d / (c ? x : 1)`
-/// a division only where c held, and `s = c ? status : s` branches it followed from
-/// guard to guard, selecting booleans it could not vectorise without AVX-512 (or,
-/// for the division, -fno-trapping-math). An int64 condition is one mask as wide as
-/// a double per lane.
-template <class T>
-IMPACT_ALWAYS_INLINE T blend(std::int64_t chosen, T x, T other) noexcept
-{
-    if constexpr (sizeof(T) == sizeof(std::uint64_t) || sizeof(T) == sizeof(std::uint32_t)) {
-        using bits = std::conditional_t<sizeof(T) == sizeof(std::uint64_t), std::uint64_t, std::uint32_t>;
-        bits a, b;
-        std::memcpy(&a, &x, sizeof a);
-        std::memcpy(&b, &other, sizeof b);
-        // The mask in a statement of its own: in one expression, GCC folds `& -mask`
-        // to a select of booleans again.
-        const bits mask = bits(0) - static_cast<bits>(chosen != 0);
-        const bits r = b ^ ((a ^ b) & mask);
-        T out;
-        std::memcpy(&out, &r, sizeof out);
-        return out;
-    } else {
-        return chosen != 0 ? x : other;
-    }
 }
 
 /// The exponent k of a batch loop's input range for Real, given for each format it
