@@ -467,6 +467,38 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regenerat
                std::string::npos);
 }
 
+// The fast form's bound (form = "fast"): its own, missed or met alike. The gap's plain form
+// loses every digit to cancellation for a large x, so its fast form is the accurate one
+// (about 0.69 ulps in float), held to the fast bound.
+BOOST_AUTO_TEST_CASE(a_fast_form_that_misses_its_own_bound_fails_the_regeneration)
+{
+    const scratch s;
+    std::string fast = gap_kernel("1");
+    fast.insert(fast.find("ulps = 1"), "form = \"fast\"\n");
+    s.write("derivations/gap.toml", fast.substr(0, fast.find("ulps = 1")) + "ulps = 0.5" +
+                                        fast.substr(fast.find("ulps = 1") + 8));
+    const auto before = snapshot(s.root / "output");
+    const run_result r = s.regenerate();
+    BOOST_TEST(r.status == 1, r.output);
+    static const std::regex missed(
+        "derivations/gap\\.toml:18:8: error: kernel 'gap': output 'y' misses its fast bound of 0\\.5 ulps in "
+        "float: 0\\.[5-9][0-9]* ulps at worst \\([a-z0-9 ]+\\), in the fast form's candidate \\(display, "
+        "compensated\\); give a cheaper form that is accurate enough \\(forms = \\[\\.\\.\\.\\]\\) or raise "
+        "the fast bound with \\[\\[kernel\\.bound\\]\\] output = \"y\", form = \"fast\", type, ulps, because");
+    BOOST_TEST(std::regex_match(lines_of(r.output).front(), missed), r.output);
+    BOOST_TEST((snapshot(s.root / "output") == before), "output/ changed");
+
+    // A fast bound it meets: written, and verification.md says who set it and why.
+    s.write("derivations/gap.toml", fast);
+    const run_result met = s.regenerate();
+    BOOST_TEST(met.status == 0, met.output);
+    std::ifstream in(s.root / "output" / "verification.md");
+    const std::string verification((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    BOOST_TEST(verification.find("Fast form's bound of `y` in float set to 1 ulps by the derivation file: correctly "
+                                 "rounded") != std::string::npos, verification);
+    BOOST_TEST(verification.find("the fast form is the accurate one") != std::string::npos, verification);
+}
+
 BOOST_AUTO_TEST_CASE(a_bound_that_is_not_understood)
 {
     expect_refused(gap_kernel("0"), "derivations/bad.toml:23:8: error: a bound of 0 ulps: give one from 0.5 "
@@ -474,6 +506,10 @@ BOOST_AUTO_TEST_CASE(a_bound_that_is_not_understood)
     std::string typed = gap_kernel("8");
     typed.insert(typed.find("ulps = 8"), "type = \"half\"\n");
     expect_refused(typed, "derivations/bad.toml:23:8: error: type 'half' must be float, double or long double");
+    std::string formed = gap_kernel("8");
+    formed.insert(formed.find("ulps = 8"), "form = \"quick\"\n");
+    expect_refused(formed, "derivations/bad.toml:23:8: error: form 'quick' must be accurate (the kernel as called "
+                           "without a tag) or fast (called with impact::fast)");
 }
 
 // a = x/(y + 1), b = y/(x + 2): a kernel with guards and two divisors (lines 1 to 28).

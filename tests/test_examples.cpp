@@ -355,7 +355,7 @@ const std::map<std::string, std::set<std::string>> fields_read = {
     {"[[not_compared]]", {"paper", "because"}},
     {"[[kernel]]", {"name", "inputs", "outputs", "velocities", "error", "forms", "guards", "substitute", "let",
                     "batch", "fixed"}},
-    {"[[kernel.bound]]", {"output", "type", "ulps", "because"}},
+    {"[[kernel.bound]]", {"output", "type", "form", "ulps", "because"}},
 };
 
 // The README's "## Derivation files" section: a `### ` heading per TOML table (its name in

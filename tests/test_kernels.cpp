@@ -57,8 +57,8 @@ struct worst {
     }
 };
 
-template <class Real>
-void check_collide_line(const char* type, double velocity_bound, double impulse_bound)
+template <class Real, class... Form>
+void check_collide_line(const char* type, double velocity_bound, double impulse_bound, Form... form)
 {
     constexpr int samples = 4000;
     engine::uniform_stream stream(20261121);
@@ -82,7 +82,7 @@ void check_collide_line(const char* type, double velocity_bound, double impulse_
         const Real v_2 = static_cast<Real>(engine::draw(velocity, stream));
         const Real v_M = std::max(v_1, v_2), v_m = std::min(v_1, v_2);
         const Real eps = static_cast<Real>(engine::draw(restitution, stream));
-        const auto out = impact::collide_line(M, m, v_M, v_m, eps);
+        const auto out = impact::collide_line(M, m, v_M, v_m, eps, form...);
         BOOST_REQUIRE((out.status == impact::status::ok || v_M == v_m));
 
         const GiNaC::exmap point = {{sym("M"), verify::exact(M)},     {sym("m"), verify::exact(m)},
@@ -99,7 +99,7 @@ void check_collide_line(const char* type, double velocity_bound, double impulse_
         vm.update(verify::ulps(out.v_m, want_vm, scale), at);
         J.update(verify::ulps(out.J, want_J, scale * reduced_mass), at);
     }
-    std::cout << "collide_line<" << type << "> over " << samples << " samples, worst error in ulps of the velocity "
+    std::cout << "collide_line<" << type << (sizeof...(Form) ? ", impact::fast" : "") << "> over " << samples << " samples, worst error in ulps of the velocity "
               << "scale: v_M " << vM.ulps << " (" << vM.where << "), v_m " << vm.ulps << " (" << vm.where
               << "), J/mu " << J.ulps << " (" << J.where << ")\n";
     BOOST_TEST(vM.ulps <= velocity_bound);
@@ -122,6 +122,15 @@ BOOST_AUTO_TEST_CASE(collide_line_float_is_within_a_few_ulps_of_cln)
 BOOST_AUTO_TEST_CASE(collide_line_long_double_is_within_a_few_ulps_of_cln)
 {
     check_collide_line<long double>("long double", 4, 8);
+}
+
+// The fast form within its declared bound, 16 ulps of each output's scale (the test's J
+// bound twice its velocities', as above).
+BOOST_AUTO_TEST_CASE(the_fast_collide_line_is_within_its_bound_in_every_type)
+{
+    check_collide_line<float>("float", 16, 32, impact::fast);
+    check_collide_line<double>("double", 16, 32, impact::fast);
+    check_collide_line<long double>("long double", 16, 32, impact::fast);
 }
 
 BOOST_AUTO_TEST_CASE(equal_masses_elastic_collision_swaps_velocities)
@@ -207,14 +216,16 @@ std::pair<std::array<numeric, D>, std::array<numeric, D>> exact_collision(const 
     return {a, b};
 }
 
-template <std::size_t D>
-void check_collide_accuracy()
+// `form`: nothing for the accurate form (bound 4 ulps), impact::fast for the fast one (its
+// declared bound, 16).
+template <std::size_t D, class... Form>
+void check_collide_accuracy(double bound, Form... form)
 {
     engine::uniform_stream s(D * 7919);
     double worst = 0;
     for (int n = 0; n < 3000; ++n) {
         const collision<D> c = draw_collision<D>(s);
-        const auto out = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps);
+        const auto out = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps, form...);
         BOOST_REQUIRE(out.status == impact::status::ok);
         const auto [a, b] = exact_collision(c);
         numeric scale = 0;
@@ -226,21 +237,21 @@ void check_collide_accuracy()
             worst = std::max(worst, verify::ulps(out.v_m[i], b[i], scale));
         }
     }
-    std::cout << "collide<double> in " << D << "D over 3000 collisions: worst error " << worst
-              << " ulps of the largest velocity\n";
-    BOOST_TEST(worst <= 4.0);
+    std::cout << "collide<double" << (sizeof...(Form) ? ", impact::fast" : "") << "> in " << D
+              << "D over 3000 collisions: worst error " << worst << " ulps of the largest velocity\n";
+    BOOST_TEST(worst <= bound);
 }
 
-template <std::size_t D>
-void check_momentum_and_symmetry()
+template <std::size_t D, class... Form>
+void check_momentum_and_symmetry(Form... form)
 {
     engine::uniform_stream s(D * 104729);
     double worst_momentum = 0, worst_swap = 0;
     for (int n = 0; n < 3000; ++n) {
         const collision<D> c = draw_collision<D>(s);
-        const auto out = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps);
+        const auto out = impact::collide(c.M, c.m, c.C_M, c.C_m, c.v_M, c.v_m, c.eps, form...);
         // The same collision with the spheres named the other way round.
-        const auto swapped = impact::collide(c.m, c.M, c.C_m, c.C_M, c.v_m, c.v_M, c.eps);
+        const auto swapped = impact::collide(c.m, c.M, c.C_m, c.C_M, c.v_m, c.v_M, c.eps, form...);
         BOOST_REQUIRE(swapped.status == impact::status::ok);
         double speed = 0;
         for (std::size_t i = 0; i < D; ++i)
@@ -255,7 +266,8 @@ void check_momentum_and_symmetry()
             worst_swap = std::max(worst_swap, verify::ulps(swapped.v_M[i], ex_of(out.v_m[i]), ex_of(speed), 53));
         }
     }
-    std::cout << "collide<double> in " << D << "D: momentum conserved to " << worst_momentum
+    std::cout << "collide<double" << (sizeof...(Form) ? ", impact::fast" : "") << "> in " << D
+              << "D: momentum conserved to " << worst_momentum
               << " ulps of (M + m) times the largest velocity; swapping the spheres agrees to " << worst_swap
               << " ulps\n";
     BOOST_TEST(worst_momentum <= 8.0);
@@ -266,12 +278,24 @@ void check_momentum_and_symmetry()
 
 BOOST_AUTO_TEST_CASE(collide_in_2d_is_within_4_ulps_of_the_exact_impulse_along_the_line_of_centres)
 {
-    check_collide_accuracy<2>();
+    check_collide_accuracy<2>(4);
 }
 
 BOOST_AUTO_TEST_CASE(collide_in_3d_is_within_4_ulps_of_the_exact_impulse_along_the_line_of_centres)
 {
-    check_collide_accuracy<3>();
+    check_collide_accuracy<3>(4);
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_collide_is_within_its_bound_of_16_ulps_of_the_exact_impulse)
+{
+    check_collide_accuracy<2>(16, impact::fast);
+    check_collide_accuracy<3>(16, impact::fast);
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_collide_conserves_momentum_and_does_not_care_which_sphere_is_named_first)
+{
+    check_momentum_and_symmetry<2>(impact::fast);
+    check_momentum_and_symmetry<3>(impact::fast);
 }
 
 // Nearly grazing contacts: the relative velocity almost perpendicular to the line of

@@ -775,10 +775,13 @@ void check_resolved(failures& fail, tally& t, const pair_nd<Real, N>& p, const i
     }
 }
 
-template <class Real, std::size_t N>
-impact::collide_result<Real, N> scalar_collide(const pair_nd<Real, N>& p)
+// `form`: nothing for the accurate form, impact::fast for the fast one (the same contract
+// and the same classification; the fast form computes the closed form of the classification,
+// v_M - k m r, plainly).
+template <class Real, std::size_t N, class... Form>
+impact::collide_result<Real, N> scalar_collide(const pair_nd<Real, N>& p, Form... form)
 {
-    return impact::collide(p.M, p.m, p.C_M, p.C_m, p.v_M, p.v_m, p.eps);
+    return impact::collide(p.M, p.m, p.C_M, p.C_m, p.v_M, p.v_m, p.eps, form...);
 }
 
 // A fixed sphere (one mass +infinity): the statuses of the domains as for any pair, then
@@ -833,12 +836,12 @@ void check_fixed_pair(failures& fail, tally& t, const pair_nd<Real, N>& p, statu
 }
 
 // One pair through the scalar kernel, against the classification.
-template <class Real, std::size_t N>
-void check_pair(failures& fail, tally& t, const pair_nd<Real, N>& p)
+template <class Real, std::size_t N, class... Form>
+void check_pair(failures& fail, tally& t, const pair_nd<Real, N>& p, Form... form)
 {
     if (fixed_sphere(p.M, p.m)) {
         std::feclearexcept(FE_DIVBYZERO);
-        const auto out = scalar_collide(p);
+        const auto out = scalar_collide(p, form...);
         fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
         ++t.pairs;
         ++t.by_status.at(static_cast<std::size_t>(out.status));
@@ -850,7 +853,7 @@ void check_pair(failures& fail, tally& t, const pair_nd<Real, N>& p)
     }
     const collision_nd<Real, N> c = classify(p);
     std::feclearexcept(FE_DIVBYZERO);
-    const auto out = scalar_collide(p);
+    const auto out = scalar_collide(p, form...);
     fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
     ++t.pairs;
     const auto s = static_cast<std::size_t>(out.status);
@@ -870,8 +873,8 @@ void check_pair(failures& fail, tally& t, const pair_nd<Real, N>& p)
 
 // A chunk of pairs through collide_batch, with and without statuses: bit for bit the scalar
 // kernel's velocities and statuses.
-template <class Real, std::size_t N>
-void check_batch(failures& fail, const std::vector<pair_nd<Real, N>>& pairs)
+template <class Real, std::size_t N, class... Form>
+void check_batch(failures& fail, const std::vector<pair_nd<Real, N>>& pairs, Form... form)
 {
     const std::size_t n = pairs.size();
     std::vector<Real> M(n), m(n), eps(n);
@@ -908,10 +911,10 @@ void check_batch(failures& fail, const std::vector<pair_nd<Real, N>>& pairs)
         b.status = into;
         return b;
     };
-    impact::collide_batch(data(v_M, v_m, given.data()));
-    impact::collide_batch(data(v_M_plain, v_m_plain, nullptr));
+    impact::collide_batch(data(v_M, v_m, given.data()), form...);
+    impact::collide_batch(data(v_M_plain, v_m_plain, nullptr), form...);
     for (std::size_t i = 0; i < n; ++i) {
-        const auto scalar = scalar_collide(pairs[i]);
+        const auto scalar = scalar_collide(pairs[i], form...);
         bool same = given[i] == scalar.status;
         for (std::size_t k = 0; k < N; ++k)
             same = same && identical(v_M[k][i], scalar.v_M[k]) && identical(v_m[k][i], scalar.v_m[k]) &&
@@ -921,8 +924,8 @@ void check_batch(failures& fail, const std::vector<pair_nd<Real, N>>& pairs)
     }
 }
 
-template <class Real, std::size_t N>
-void sweep_collide(std::uint64_t seed)
+template <class Real, std::size_t N, class... Form>
+void sweep_collide(std::uint64_t seed, Form... form)
 {
     draws d(seed);
     failures fail;
@@ -934,10 +937,11 @@ void sweep_collide(std::uint64_t seed)
         for (; pairs.size() < chunk && done < total; ++done)
             pairs.push_back(draw_pair<Real, N>(d));
         for (const auto& p : pairs)
-            check_pair(fail, t, p);
-        check_batch(fail, pairs);
+            check_pair(fail, t, p, form...);
+        check_batch(fail, pairs, form...);
     }
-    t.report(std::string("collide<") + type_name<Real>() + ", " + std::to_string(N) + "D>");
+    t.report(std::string("collide<") + type_name<Real>() + ", " + std::to_string(N) + "D>" +
+             (sizeof...(Form) ? ", impact::fast" : ""));
     BOOST_TEST(fail.count == 0u);
     BOOST_TEST(t.by_status[static_cast<std::size_t>(status::ok)] > t.pairs / 20);  // the sweep resolves collisions too
     BOOST_TEST(t.borderline < t.pairs / 20);  // and its classification decides most pairs alone
@@ -1077,11 +1081,11 @@ statuses classify_line(const pair_1d<Real>& p, const line_closed_form& f)
 // direction; where resolved, the fixed sphere's velocity unchanged bit for bit, the other's
 // v_M + eps (v_M - v_m) (M fixed; v_m + eps (v_m - v_M) for m) and J = (1 + eps) mu (v_M - v_m),
 // mu the finite mass, within 16 ulps, in long double.
-template <class Real>
-void check_fixed_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
+template <class Real, class... Form>
+void check_fixed_line_pair(failures& fail, tally& t, const pair_1d<Real>& p, Form... form)
 {
     std::feclearexcept(FE_DIVBYZERO);
-    const auto out = impact::collide_line(p.M, p.m, p.v_M, p.v_m, p.eps);
+    const auto out = impact::collide_line(p.M, p.m, p.v_M, p.v_m, p.eps, form...);
     fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
     ++t.pairs;
     ++t.by_status.at(static_cast<std::size_t>(out.status));
@@ -1117,17 +1121,17 @@ void check_fixed_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
     }
 }
 
-template <class Real>
-void check_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
+template <class Real, class... Form>
+void check_line_pair(failures& fail, tally& t, const pair_1d<Real>& p, Form... form)
 {
     if (fixed_sphere(p.M, p.m)) {
-        check_fixed_line_pair(fail, t, p);
+        check_fixed_line_pair(fail, t, p, form...);
         return;
     }
     const line_closed_form f = closed_form(p);
     const statuses admitted = classify_line(p, f);
     std::feclearexcept(FE_DIVBYZERO);
-    const auto out = impact::collide_line(p.M, p.m, p.v_M, p.v_m, p.eps);
+    const auto out = impact::collide_line(p.M, p.m, p.v_M, p.v_m, p.eps, form...);
     fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
     ++t.pairs;
     ++t.by_status.at(static_cast<std::size_t>(out.status));
@@ -1154,8 +1158,8 @@ void check_line_pair(failures& fail, tally& t, const pair_1d<Real>& p)
     }
 }
 
-template <class Real>
-void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p)
+template <class Real, class... Form>
+void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p, Form... form)
 {
     const line_closed_form f = closed_form(p);
     statuses admitted = domain_statuses(p);
@@ -1164,7 +1168,7 @@ void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p)
             range_statuses<Real>(f.divisor_lg + 1, f.loss_intermediates, {f.dE_lg}, slack<Real>()), f.loss_lowest,
             f.loss_certain);
     std::feclearexcept(FE_DIVBYZERO);
-    const Real dE = impact::energy_loss(p.M, p.m, p.v_M, p.v_m, p.eps);
+    const Real dE = impact::energy_loss(p.M, p.m, p.v_M, p.v_m, p.eps, form...);
     fail(std::fetestexcept(FE_DIVBYZERO) == 0, "divided by zero: " + p.describe());
     ++t.pairs;
     t.borderline += borderline(admitted) ? 1 : 0;
@@ -1190,19 +1194,20 @@ void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p)
     }
 }
 
-template <class Real>
-void sweep_line(std::uint64_t seed)
+template <class Real, class... Form>
+void sweep_line(std::uint64_t seed, Form... form)
 {
     draws d(seed);
     failures fail_line, fail_loss;
     tally line, loss;
     for (std::size_t i = sweep_pairs(); i-- > 0;) {
         const pair_1d<Real> p = draw_pair_1d<Real>(d);
-        check_line_pair(fail_line, line, p);
-        check_loss_pair(fail_loss, loss, p);
+        check_line_pair(fail_line, line, p, form...);
+        check_loss_pair(fail_loss, loss, p, form...);
     }
-    line.report(std::string("collide_line<") + type_name<Real>() + ">");
-    loss.report(std::string("energy_loss<") + type_name<Real>() + "> (NaN counted as underflow or out_of_range)");
+    const std::string fast = sizeof...(Form) ? ", impact::fast" : "";
+    line.report(std::string("collide_line<") + type_name<Real>() + ">" + fast);
+    loss.report(std::string("energy_loss<") + type_name<Real>() + ">" + fast + " (NaN counted as underflow or out_of_range)");
     BOOST_TEST(fail_line.count == 0u);
     BOOST_TEST(fail_loss.count == 0u);
     BOOST_TEST(line.by_status[static_cast<std::size_t>(status::ok)] > line.pairs / 20);
@@ -1572,6 +1577,25 @@ BOOST_AUTO_TEST_CASE(a_randomized_sweep_of_hostile_pairs_keeps_every_invariant_a
     sweep_line<float>(1721);
     sweep_line<double>(1722);
     sweep_line<long double>(1723);
+}
+
+// The fast forms (impact::fast) keep the same contract: the same sweeps, the same
+// classification, every resolved collision within the same 16 ulps of the closed form.
+BOOST_AUTO_TEST_CASE(the_fast_forms_keep_every_invariant_of_the_sweep_in_2d_and_3d)
+{
+    sweep_collide<float, 2>(1731, impact::fast);
+    sweep_collide<double, 2>(1732, impact::fast);
+    sweep_collide<long double, 2>(1733, impact::fast);
+    sweep_collide<float, 3>(1741, impact::fast);
+    sweep_collide<double, 3>(1742, impact::fast);
+    sweep_collide<long double, 3>(1743, impact::fast);
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_forms_keep_every_invariant_of_the_sweep_along_the_line)
+{
+    sweep_line<float>(1751, impact::fast);
+    sweep_line<double>(1752, impact::fast);
+    sweep_line<long double>(1753, impact::fast);
 }
 
 BOOST_AUTO_TEST_CASE(a_randomized_sweep_of_hostile_speeds_gives_an_angle_or_nan)

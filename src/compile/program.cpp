@@ -508,6 +508,26 @@ std::size_t count(const program& p, opcode op)
     return n;
 }
 
+cost cost_of(const program& p)
+{
+    cost c;
+    for (const instruction& in : p.code) {
+        c.operations += is_leaf(in) ? 0 : 1;
+        c.divisions += in.op == opcode::div ? 1 : 0;
+        c.square_roots += in.op == opcode::sqrt ? 1 : 0;
+    }
+    return c;
+}
+
+bool cheaper(const cost& a, const cost& b)
+{
+    if (a.square_roots != b.square_roots)
+        return a.square_roots < b.square_roots;
+    if (a.divisions != b.divisions)
+        return a.divisions < b.divisions;
+    return a.operations < b.operations;
+}
+
 bool is_leaf(const instruction& in)
 {
     return in.op == opcode::input || in.op == opcode::constant;

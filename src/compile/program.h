@@ -61,6 +61,23 @@ program compile_program(const std::vector<std::pair<GiNaC::ex, compile_options>>
 /// The number of operations of each kind, e.g. to show that one division is used.
 std::size_t count(const program& p, opcode op);
 
+/// What a program costs, counted (the same in every run, unlike a timing): its operations
+/// (every instruction that computes, a fused multiply-add one), and among them its
+/// divisions and square roots, the slowest.
+struct cost {
+    std::size_t operations = 0;
+    std::size_t divisions = 0;
+    std::size_t square_roots = 0;
+};
+
+/// `p`'s cost.
+cost cost_of(const program& p);
+
+/// Whether `a` is cheaper than `b`: fewer square roots, then fewer divisions, then fewer
+/// operations (a division or a square root takes several times an addition's time, and
+/// vectorised, blocks the unit that does them).
+bool cheaper(const cost& a, const cost& b);
+
 /// The values the outputs [first, last) of `p` need, directly or through others.
 std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t last);
 

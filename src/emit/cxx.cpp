@@ -159,6 +159,7 @@ std::string kernel_header(const engine::derivation& d, const std::vector<const k
         while (i + 1 + fixed.size() < plans.size() && !plans[i + 1 + fixed.size()]->kernel->limit_of.empty())
             fixed.push_back(plans[i + 1 + fixed.size()]);
         print_kernel(out, d, *plans[i], fixed);
+        print_kernel(out, d, *plans[i], fixed, form::fast);
         i += fixed.size();
     }
     out += "\n} // namespace impact\n\nIMPACT_PRECISE_END\n";

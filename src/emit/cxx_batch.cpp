@@ -120,7 +120,7 @@ std::vector<std::string> block_arguments(const std::vector<lane_input>& inputs, 
 // its underflow test tests may be below the normal range, or 0): each resolved by the scalar
 // kernel, as one collision, which decides its status exactly. Called after each block.
 void print_settle(std::string& out, const engine::kernel& k, const std::string& loop,
-                  const std::vector<lane_input>& inputs)
+                  const std::vector<lane_input>& inputs, form which)
 {
     std::vector<std::string> arguments, writes;
     for (const engine::kernel_parameter& p : k.parameters) {
@@ -130,6 +130,8 @@ void print_settle(std::string& out, const engine::kernel& k, const std::string& 
         arguments.push_back(p.is_array ? fmt::format("std::array<Real, {}>{{{}}}", components.size(), fmt::join(components, ", "))
                                        : components.front());
     }
+    if (which == form::fast)
+        arguments.push_back("fast_t{}");  // the scalar kernel's fast form
     for (const engine::kernel_output& o : k.outputs) {
         const engine::kernel_parameter* same = k.find_parameter(o.member);
         for (std::size_t c = 0; c < same->components.size(); ++c)
@@ -284,12 +286,13 @@ constexpr std::size_t batch_registers = 24;
 // division by zero) and its results discarded. A resolved pair runs the scalar kernel's
 // operations on the same values: the same results, bit for bit, under the same
 // floating-point contraction.
-void print_batch(std::string& out, const kernel_plan& plan)
+void print_batch(std::string& out, const kernel_plan& plan, form which)
 {
     const engine::kernel& k = *plan.kernel;
     const std::size_t n = dimension(k);
     const std::vector<lane_input> inputs = lane_inputs(k);
-    const std::string loop = fmt::format("{}_batch_{}d", k.name, n);
+    const bool fast = which == form::fast;
+    const std::string loop = fmt::format("{}{}_batch_{}d", k.name, fast ? "_fast" : "", n);
 
     std::vector<std::string> element_names, plain_names, arguments;
     for (const lane_input& in : inputs) {
@@ -481,21 +484,26 @@ void print_batch(std::string& out, const kernel_plan& plan)
     out += "    }\n}\n";
     const bool settles = with_status && (!code.underflows.empty() || !k.limits.empty());
     if (settles)
-        print_settle(out, k, loop, inputs);
+        print_settle(out, k, loop, inputs, which);
     print_blocks(out, loop, inputs, with_status, settles);
     if (skews(k))
         print_skewed_blocks(out, loop, inputs, with_status, settles);
     out += "\n} // namespace detail\n";
 
     // The public entry point.
-    out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays: outputs named after\n"
-                       "/// inputs are updated in place.{1}\n"
-                       "/// The loop has no branches, so that compilers vectorise it; each result is bit for\n"
-                       "/// bit the scalar {0}'s (compiled alike, e.g. -ffp-contract=off). The arrays written\n"
-                       "/// must not overlap any other array.\n",
-                       k.name, with_status ? " `status` (if not null) receives each status." : "");
-    out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data) noexcept\n{{\n",
-                       k.name, n);
+    if (fast)
+        out += fmt::format("\n/// {0}_batch(data, impact::fast): {0}_batch in the fast form, each result bit for bit\n"
+                           "/// the scalar {0}(..., impact::fast)'s (compiled alike, e.g. -ffp-contract=off).\n",
+                           k.name);
+    else
+        out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays: outputs named after\n"
+                           "/// inputs are updated in place.{1}\n"
+                           "/// The loop has no branches, so that compilers vectorise it; each result is bit for\n"
+                           "/// bit the scalar {0}'s (compiled alike, e.g. -ffp-contract=off). The arrays written\n"
+                           "/// must not overlap any other array.\n",
+                           k.name, with_status ? " `status` (if not null) receives each status." : "");
+    out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data{2}) noexcept\n{{\n",
+                       k.name, n, fast ? ", fast_t" : "");
     if (skews(k)) {
         std::vector<std::string> read_starts;
         for (const lane_input& in : read_only(inputs))

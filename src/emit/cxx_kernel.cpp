@@ -149,16 +149,85 @@ std::string members_initialiser(const engine::kernel& k)
     return fmt::format("{{{}}}", fmt::join(values, ", "));
 }
 
+// The parameters of a kernel as C++ (`Real M, ..., const std::array<Real, 2>& v_M, ...`),
+// and their names.
+std::vector<std::string> parameter_list(const engine::kernel& k)
+{
+    std::vector<std::string> parameters;
+    for (const engine::kernel_parameter& p : k.parameters)
+        parameters.push_back(parameter_type(p) + " " + p.name);
+    return parameters;
+}
+
+std::vector<std::string> parameter_names(const engine::kernel& k)
+{
+    std::vector<std::string> names;
+    for (const engine::kernel_parameter& p : k.parameters)
+        names.push_back(p.name);
+    return names;
+}
+
+// The fast form's documentation: what it is, what it costs beside the accurate form, and
+// how each output is computed and how accurate it is.
+void print_fast_documentation(std::string& out, const kernel_plan& fast, const kernel_plan& accurate,
+                              const char* comment)
+{
+    const engine::kernel& k = *fast.kernel;
+    const compile::cost cost = compile::cost_of(fast.code), accurate_cost = compile::cost_of(accurate.code);
+    out += fmt::format("\n{0} {1}({2}, impact::fast): the fast form of {1}{3}, with the\n"
+                       "{0} same guards and statuses, each output in its cheapest candidate form within its fast\n"
+                       "{0} bound (verification.md): {4} operations, of them {5} divisions and {6} square roots\n"
+                       "{0} (the accurate form: {7}, {8} and {9}).\n",
+                       comment, k.limit_of.empty() ? k.name : k.limit_of, fmt::join(parameter_names(k), ", "),
+                       k.limit_of.empty() ? "" : fmt::format(" with {} = +infinity", k.fixed_mass), cost.operations,
+                       cost.divisions, cost.square_roots, accurate_cost.operations, accurate_cost.divisions,
+                       accurate_cost.square_roots);
+    for (const verify::component_plan& cp : fast.components) {
+        const verify::candidate_result& c = cp.candidates[cp.chosen];
+        out += fmt::format("{} {} is computed in the form \"{}\": at most {:.2f} ulps in double on {} samples.\n",
+                           comment, cp.name, c.label, c.double_accuracy.max_ulps, c.double_accuracy.samples);
+    }
+}
+
+// The fast form of a kernel whose fast form is its accurate one, and of its fixed
+// spheres' kernels: an overload that calls the accurate form (and its batch's).
+void print_fast_forwarding(std::string& out, const kernel_plan& plan)
+{
+    const engine::kernel& k = *plan.kernel;
+    const char* comment = k.limit_of.empty() ? "///" : "//";
+    out += fmt::format("\n{0} {1}({2}, impact::fast): the fast form of {1}, which is its accurate form: no\n"
+                       "{0} candidate form is cheaper within the fast bounds (verification.md).\n",
+                       comment, k.name, fmt::join(parameter_names(k), ", "));
+    out += fmt::format("template <class Real>\ninline {} {}({}, fast_t) noexcept\n{{\n    return {}<Real>({});\n}}\n",
+                       result_type(k), k.name, fmt::join(parameter_list(k), ", "), k.name,
+                       fmt::join(parameter_names(k), ", "));
+    if (k.batch)
+        out += fmt::format("\n/// {0}_batch(data, impact::fast): the fast form of {0}_batch, which is its accurate form.\n"
+                           "template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data, fast_t) noexcept\n"
+                           "{{\n    {0}_batch(data);\n}}\n",
+                           k.name, dimension(k));
+}
+
 } // namespace
 
-void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan,
-                  const std::vector<const kernel_plan*>& fixed)
+void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& given,
+                  const std::vector<const kernel_plan*>& fixed, form which)
 {
+    const bool fast = which == form::fast;
+    // The fast form: the plans' fast forms, printed as the accurate ones are; an overload
+    // that calls the accurate form where every one of them is the accurate one.
+    if (fast && verify::fast_is_accurate(given) &&
+        std::all_of(fixed.begin(), fixed.end(), [](const kernel_plan* f) { return verify::fast_is_accurate(*f); })) {
+        print_fast_forwarding(out, given);
+        return;
+    }
+    const kernel_plan fast_plan = fast ? verify::fast_form(given) : kernel_plan{};
+    const kernel_plan& plan = fast ? fast_plan : given;
     const engine::kernel& k = *plan.kernel;
     const std::size_t n = dimension(k);
     const bool is_limit = !k.limit_of.empty();
 
-    if (!returns_scalar(k) && n == 0 && !is_limit) {
+    if (!returns_scalar(k) && n == 0 && !is_limit && !fast) {
         out += fmt::format("\n/// What {} returns.\ntemplate <class Real>\nstruct {}_result {{\n", k.name, k.name);
         for (const engine::kernel_output& o : k.outputs)
             out += fmt::format("    Real {};\n", o.member);
@@ -182,15 +251,15 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     if (!fixed.empty()) {
         out += "\nnamespace detail {\n";
         for (const kernel_plan* f : fixed)
-            print_kernel(out, d, *f);
+            print_kernel(out, d, *f, {}, which);
         out += "\n} // namespace detail\n";
     }
 
     // Documentation: inputs, and how each output is computed and how accurate it is.
-    std::vector<std::string> names;
-    for (const engine::kernel_parameter& p : k.parameters)
-        names.push_back(p.name);
-    if (is_limit) {
+    const std::vector<std::string> names = parameter_names(k);
+    if (fast) {
+        print_fast_documentation(out, plan, given, is_limit ? "//" : "///");
+    } else if (is_limit) {
         out += fmt::format("\n// {} with {} = +infinity, a fixed sphere: every output the limit of {}'s as {} grows\n"
                            "// without bound (derived by the engine, each form proven equal to the limit).\n",
                            k.limit_of, k.fixed_mass, k.limit_of, k.fixed_mass);
@@ -214,17 +283,17 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
         print_guards_documentation(out, d, k, !code.divisors.empty(), !code.arguments.empty());
     }
 
-    std::vector<std::string> parameters;
-    for (const engine::kernel_parameter& p : k.parameters)
-        parameters.push_back(parameter_type(p) + " " + p.name);
+    std::vector<std::string> parameters = parameter_list(k);
+    if (fast)
+        parameters.push_back("fast_t");
     out += fmt::format("template <class Real>\ninline {} {}({}) noexcept\n{{\n", result_type(k), k.name,
                        fmt::join(parameters, ", "));
 
     // A fixed sphere: its mass +infinity (a mass -infinity or NaN is refused below).
     for (const kernel_plan* f : fixed) {
-        std::vector<std::string> arguments;
-        for (const engine::kernel_parameter& p : f->kernel->parameters)
-            arguments.push_back(p.name);
+        std::vector<std::string> arguments = parameter_names(*f->kernel);
+        if (fast)
+            arguments.push_back("fast_t{}");
         out += fmt::format("    if ({} == std::numeric_limits<Real>::infinity()) {{\n"
                            "        return detail::{}<Real>({});\n    }}\n",
                            f->kernel->fixed_mass, f->kernel->name, fmt::join(arguments, ", "));
@@ -307,7 +376,7 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
     }
 
     if (k.batch)
-        print_batch(out, plan);
+        print_batch(out, plan, which);
 }
 
 } // namespace impact::emit::cxx_detail

@@ -61,13 +61,19 @@ std::string condition_failure(const std::string& value, const engine::kernel_gua
 /// The hand-written part of common.hpp: src/emit/kernel_prelude.hpp, as CMake embeds it.
 extern const char* const kernel_prelude;
 
+/// Which of a kernel's two forms is printed: the accurate one, called without a tag, or the
+/// fast one, `verify::fast_form`, called with `impact::fast` (an overload of the same name
+/// with a last parameter `impact::fast_t`, which forwards to the accurate form where that
+/// is the fast one too).
+enum class form { accurate, fast };
+
 /// The scalar kernel, its result structure and documentation; then its batch form. `fixed`:
 /// the plans of its fixed spheres' kernels, printed before it in `detail` and called where
-/// their mass is +infinity.
+/// their mass is +infinity. The fast form (`which`) is printed from the same plans.
 void print_kernel(std::string& out, const engine::derivation& d, const kernel_plan& plan,
-                  const std::vector<const kernel_plan*>& fixed = {});
-/// The batch kernel of a kernel with `batch = true`.
-void print_batch(std::string& out, const kernel_plan& plan);
+                  const std::vector<const kernel_plan*>& fixed = {}, form which = form::accurate);
+/// The batch kernel of a kernel with `batch = true`, in the form `plan` is (`which`).
+void print_batch(std::string& out, const kernel_plan& plan, form which = form::accurate);
 /// `f` of `terms` as a balanced tree: f(f(a, b), f(c, d)), ...
 std::string balanced(const std::string& f, std::vector<std::string> terms);
 /// `detail::<loop>_k<Real>`: the exponent k of the loop's input range, per format.

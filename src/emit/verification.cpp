@@ -4,6 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+
 namespace impact::emit {
 namespace {
 
@@ -14,6 +17,48 @@ std::string scale_text(const engine::kernel_output& o, const engine::term_order&
     if (o.scale_factor.is_equal(1))
         return "the largest velocity";
     return "the largest velocity × " + engine::ginac_syntax(o.scale_factor, order);
+}
+
+// The table of one form's outputs: each output in each type, against `bound`.
+std::string accuracy_table(const verify::kernel_plan& plan, const std::vector<verify::emitted_accuracy>& emitted,
+                           std::array<double, 3> engine::kernel_output::*bound,
+                           std::array<std::string, 3> engine::kernel_output::*because,
+                           std::size_t verify::component_plan::*form, const engine::term_order& order)
+{
+    const engine::kernel& k = *plan.kernel;
+    std::string out = "| output | type | samples | mean ulps | max ulps | bound | worst regime | scale | form |\n"
+                      "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    const auto components = verify::components(k);
+    for (std::size_t i = 0; i < plan.components.size(); ++i) {
+        const verify::component_plan& cp = plan.components[i];
+        const engine::kernel_output& o = k.outputs[components[i].first];
+        const verify::emitted_accuracy& measured = emitted[i];
+        const auto& types = engine::kernel_output::types;
+        const verify::accuracy* in_type[] = {&measured.in_float, &measured.in_double, &measured.in_long_double};
+        for (std::size_t t = 0; t < 3; ++t) {
+            const verify::accuracy& a = *in_type[t];
+            out += fmt::format("| `{}` | {} | {} | {:.3f} | {:.2f} | {:g}{} | {} | {} | {} |\n", cp.name, types[t],
+                               a.samples, a.mean_ulps, a.max_ulps, (o.*bound)[t], (o.*because)[t].empty() ? "" : " (set)",
+                               a.worst_regime, scale_text(o, order), cp.candidates[cp.*form].label);
+        }
+    }
+    return out;
+}
+
+// One form's point on the kernel's speed/accuracy frontier: its cost, counted, and its
+// largest error in each type over every output.
+std::string frontier_row(const char* form, const compile::program& code,
+                         const std::vector<verify::emitted_accuracy>& emitted)
+{
+    const compile::cost cost = compile::cost_of(code);
+    double worst[3] = {0, 0, 0};
+    for (const verify::emitted_accuracy& e : emitted) {
+        worst[0] = std::max(worst[0], e.in_float.max_ulps);
+        worst[1] = std::max(worst[1], e.in_double.max_ulps);
+        worst[2] = std::max(worst[2], e.in_long_double.max_ulps);
+    }
+    return fmt::format("| {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} |\n", form, cost.operations, cost.divisions,
+                       cost.square_roots, worst[0], worst[1], worst[2]);
 }
 
 } // namespace
@@ -41,38 +86,44 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
         else  // a fixed sphere's kernel, beside the finite one
             out += fmt::format("\n## `{}` with `{}` = +infinity (a fixed sphere: the limit {} -> infinity)\n\n",
                                k.limit_of, k.fixed_mass, k.fixed_mass);
-        out += "| output | type | samples | mean ulps | max ulps | bound | worst regime | scale | form |\n"
-               "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
-        const auto components = verify::components(k);
-        for (std::size_t i = 0; i < plan->components.size(); ++i) {
-            const verify::component_plan& cp = plan->components[i];
-            const engine::kernel_output& o = k.outputs[components[i].first];
-            const std::string form = cp.candidates[cp.chosen].label;
-            const verify::emitted_accuracy& measured = plan->emitted[i];
-            const auto& types = engine::kernel_output::types;
-            const verify::accuracy* in_type[] = {&measured.in_float, &measured.in_double, &measured.in_long_double};
-            for (std::size_t t = 0; t < 3; ++t) {
-                const verify::accuracy& a = *in_type[t];
-                out += fmt::format("| `{}` | {} | {} | {:.3f} | {:.2f} | {:g}{} | {} | {} | {} |\n", cp.name,
-                                   types[t], a.samples, a.mean_ulps, a.max_ulps, o.bound_ulps[t],
-                                   o.bound_because[t].empty() ? "" : " (set)", a.worst_regime, scale_text(o, order),
-                                   form);
-            }
-        }
+        out += accuracy_table(*plan, plan->emitted, &engine::kernel_output::bound_ulps,
+                              &engine::kernel_output::bound_because, &verify::component_plan::chosen, order);
         // A bound the derivation file sets, with its reason.
         for (const engine::kernel_output& o : k.outputs) {
             const auto& types = engine::kernel_output::types;
-            for (std::size_t t = 0; t < 3; ++t)
+            for (std::size_t t = 0; t < 3; ++t) {
                 if (!o.bound_because[t].empty())
                     out += fmt::format("\nBound of `{}` in {} set to {:g} ulps by the derivation file: {}\n",
                                        o.member, types[t], o.bound_ulps[t], o.bound_because[t]);
+                if (!o.fast_bound_because[t].empty())
+                    out += fmt::format("\nFast form's bound of `{}` in {} set to {:g} ulps by the derivation file: {}\n",
+                                       o.member, types[t], o.fast_bound_ulps[t], o.fast_bound_because[t]);
+            }
         }
-        out += "\nCandidates in double (maximum ulps; the emitted form is marked):\n\n";
+        // The fast form (impact::fast), and both forms as points of cost and error.
+        out += "\nThe fast form (`impact::fast`): each output in its cheapest candidate within its fast bound (16 ulps "
+               "unless the derivation file sets another), the same guards and statuses.";
+        if (verify::fast_is_accurate(*plan)) {
+            out += " No candidate is cheaper within those bounds: the fast form is the accurate one.\n";
+        } else {
+            out += "\n\n";
+            out += accuracy_table(*plan, plan->fast_emitted, &engine::kernel_output::fast_bound_ulps,
+                                  &engine::kernel_output::fast_bound_because, &verify::component_plan::fastest, order);
+        }
+        out += "\nCost (operations counted in the emitted program, guards' conditions included) and largest error "
+               "over the outputs, in ulps:\n\n"
+               "| form | operations | divisions | square roots | float | double | long double |\n"
+               "| --- | --- | --- | --- | --- | --- | --- |\n";
+        out += frontier_row("accurate", plan->code, plan->emitted);
+        out += frontier_row("fast", plan->fast_code, plan->fast_emitted);
+        out += "\nCandidates in double (maximum ulps; the accurate form's is marked, the fast form's followed by "
+               "\"(fast)\"):\n\n";
         for (const verify::component_plan& cp : plan->components) {
             std::vector<std::string> items;
             for (std::size_t c = 0; c < cp.candidates.size(); ++c)
-                items.push_back(fmt::format("{}{} {:.2f}{}", c == cp.chosen ? "**" : "", cp.candidates[c].label,
-                                            cp.candidates[c].double_accuracy.max_ulps, c == cp.chosen ? "**" : ""));
+                items.push_back(fmt::format("{}{} {:.2f}{}{}", c == cp.chosen ? "**" : "", cp.candidates[c].label,
+                                            cp.candidates[c].double_accuracy.max_ulps, c == cp.chosen ? "**" : "",
+                                            c == cp.fastest ? " (fast)" : ""));
             out += fmt::format("- `{}`: {}", cp.name, fmt::join(items, "; "));
             if (cp.pruned)
                 out += fmt::format(" ({} more left behind on the first sixth of the samples)", cp.pruned);

@@ -181,6 +181,10 @@ struct kernel_output {
     /// and why when the file sets it (`[[kernel.bound]]`); 4 ulps otherwise.
     std::array<double, 3> bound_ulps{4, 4, 4};
     std::array<std::string, 3> bound_because;
+    /// The same for the fast form (`impact::fast`): 16 ulps unless the file sets another
+    /// (`[[kernel.bound]]` with `form = "fast"`).
+    std::array<double, 3> fast_bound_ulps{16, 16, 16};
+    std::array<std::string, 3> fast_bound_because;
 };
 
 /// A condition the inputs must meet; when one does not, the kernel returns its status.

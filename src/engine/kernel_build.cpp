@@ -193,10 +193,11 @@ public:
         for (const spec::error_bound& b : spec_kernel.bounds) {
             kernel_output* o = find_output(k, b.output);
             const auto& types = kernel_output::types;
+            const bool fast = b.form && b.form->value == "fast";
             for (std::size_t t = 0; t < 3; ++t)
                 if (!b.type || b.type->value == types[t]) {
-                    o->bound_ulps[t] = b.ulps;
-                    o->bound_because[t] = b.because.value;
+                    (fast ? o->fast_bound_ulps : o->bound_ulps)[t] = b.ulps;
+                    (fast ? o->fast_bound_because : o->bound_because)[t] = b.because.value;
                 }
         }
         std::set<std::string> fixed;

@@ -163,6 +163,9 @@ struct error_scale {
 struct error_bound {
     text output;
     std::optional<text> type;      ///< `float`, `double` or `long double`; all three without
+    /// `accurate` (the default) or `fast`: the bound of the accurate form (`impact::collide`)
+    /// or of the fast one (`impact::collide(..., impact::fast)`, 16 ulps without a bound)
+    std::optional<text> form;
     double ulps = 4;
     source_location ulps_where;
     text because;

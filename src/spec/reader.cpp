@@ -367,6 +367,11 @@ kernel read_kernel(table_reader& in)
             bound.type->value != "long double")
             throw error(bound.type->where, fmt::format("type '{}' must be float, double or long double",
                                                        bound.type->value));
+        bound.form = b.optional_string("form");
+        if (bound.form && bound.form->value != "accurate" && bound.form->value != "fast")
+            throw error(bound.form->where, fmt::format("form '{}' must be accurate (the kernel as called without "
+                                                       "a tag) or fast (called with impact::fast)",
+                                                       bound.form->value));
         bound.ulps = b.required_number("ulps");
         bound.ulps_where = b.where_of("ulps");
         bound.because = b.required_string("because");

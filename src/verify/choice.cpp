@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <memory>
 #include <cstdlib>
@@ -76,31 +77,65 @@ std::optional<engine::form> derived_form(const engine::kernel_output& o, std::si
     return engine::form{"factored", engine::factor_polynomial(nd.op(0)) / engine::factor_polynomial(nd.op(1))};
 }
 
-// One program: the guards' conditions first (checked before anything is computed
-// from them), then the chosen form of every component, sharing what they can.
-void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::term_order& order)
+namespace {
+
+// One program: the guards' conditions first (checked before anything is computed from
+// them), then the form `which` names of every component, sharing what they can.
+compile::program compile_forms(const kernel_plan& plan, const engine::kernel& k, const engine::term_order& order,
+                               std::size_t component_plan::*which)
 {
     std::vector<std::pair<GiNaC::ex, compile::compile_options>> outputs;
     for (const engine::kernel_guard& g : k.guards)
         if (g.condition)
             outputs.emplace_back(*g.condition, compile::compile_options{});
-    plan.guard_values = outputs.size();
     for (const component_plan& cp : plan.components) {
-        const candidate_result& chosen = cp.candidates[cp.chosen];
-        outputs.emplace_back(chosen.value, compile::compile_options{chosen.fma, chosen.compensated, chosen.compensated_lets});
+        const candidate_result& form = cp.candidates[cp.*which];
+        outputs.emplace_back(form.value, compile::compile_options{form.fma, form.compensated, form.compensated_lets});
     }
-    plan.code = compile::compile_program(outputs, k.input_symbols(), order, k.lets);
+    compile::program code = compile::compile_program(outputs, k.input_symbols(), order, k.lets);
     // A kernel with guards tests every divisor before its first division: where the order
     // compiled in divides earlier, the order that computes the divisors first (the same
     // operations on the same values, so the same results).
-    if (!k.guards.empty() && compile::divides_early(plan.code)) {
-        plan.code = compile::ordered_for_registers(plan.code);
-        if (compile::divides_early(plan.code))
+    if (!k.guards.empty() && compile::divides_early(code)) {
+        code = compile::ordered_for_registers(code);
+        if (compile::divides_early(code))
             throw error(k.where, fmt::format("kernel '{}' divides by a value that another division computes, so no "
                                              "order has every divisor before the first division, as its guards "
                                              "need; give forms (forms = [...]) or a let that divide once",
                                              k.name));
     }
+    return code;
+}
+
+} // namespace
+
+bool fast_is_accurate(const kernel_plan& plan)
+{
+    return std::all_of(plan.components.begin(), plan.components.end(),
+                       [](const component_plan& cp) { return cp.fastest == cp.chosen; });
+}
+
+void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::term_order& order)
+{
+    plan.guard_values = static_cast<std::size_t>(
+        std::count_if(k.guards.begin(), k.guards.end(), [](const engine::kernel_guard& g) { return g.condition.has_value(); }));
+    plan.code = compile_forms(plan, k, order, &component_plan::chosen);
+    plan.fast_code = fast_is_accurate(plan) ? plan.code : compile_forms(plan, k, order, &component_plan::fastest);
+}
+
+kernel_plan fast_form(const kernel_plan& plan)
+{
+    kernel_plan fast;
+    fast.kernel = plan.kernel;
+    fast.components = plan.components;
+    for (component_plan& cp : fast.components)
+        cp.chosen = cp.fastest;
+    fast.code = plan.fast_code;
+    fast.guard_values = plan.guard_values;
+    fast.emitted = plan.fast_emitted;
+    fast.fast_code = plan.fast_code;
+    fast.fast_emitted = plan.fast_emitted;
+    return fast;
 }
 
 namespace {
@@ -123,8 +158,10 @@ public:
         for (std::size_t i = 0; i < all.size(); ++i)
             plan_.components.push_back(component(i, k_.outputs[all[i].first], all[i].second));
         compensate_lets_everywhere();
+        choose_fastest();
         compile_chosen(plan_, k_, order_);
-        measure_emitted();
+        plan_.emitted = measure_emitted(plan_.code);
+        plan_.fast_emitted = fast_is_accurate(plan_) ? plan_.emitted : measure_emitted(plan_.fast_code);
         return std::move(plan_);
     }
 
@@ -278,10 +315,59 @@ private:
         }
     }
 
-    // The program as emitted, its outputs all at once, in each type.
-    void measure_emitted()
+    // The fast form: each component's cheapest candidate (compile::cheaper, the candidate
+    // compiled alone) within its fast bound in double, the more accurate of two that cost
+    // the same. The `let` values are computed once for every output: first the candidates
+    // that take them as they are, then, where a component has none within its bound, those
+    // that compensate them, for every output; where a component has neither, the fast form
+    // is the accurate one throughout.
+    void choose_fastest()
     {
-        compile::program outputs_only = plan_.code;
+        for (const bool compensated_lets : {false, true}) {
+            if (const auto fastest = cheapest_within_bounds(compensated_lets)) {
+                for (std::size_t i = 0; i < fastest->size(); ++i)
+                    plan_.components[i].fastest = (*fastest)[i];
+                return;
+            }
+        }
+        for (component_plan& cp : plan_.components)
+            cp.fastest = cp.chosen;
+    }
+
+    // Each component's cheapest candidate within its fast bound among those that compensate
+    // the `let` values or not, as `compensated_lets` says; nothing if a component has none.
+    std::optional<std::vector<std::size_t>> cheapest_within_bounds(bool compensated_lets) const
+    {
+        const auto all = verify::components(k_);
+        std::vector<std::size_t> fastest;
+        for (std::size_t i = 0; i < plan_.components.size(); ++i) {
+            const component_plan& cp = plan_.components[i];
+            const double bound = k_.outputs[all[i].first].fast_bound_ulps[1];
+            std::optional<std::size_t> best;
+            compile::cost best_cost;
+            for (std::size_t c = 0; c < cp.candidates.size(); ++c) {
+                const candidate_result& r = cp.candidates[c];
+                if (r.compensated_lets != compensated_lets || !(r.double_accuracy.max_ulps <= bound))
+                    continue;
+                const compile::cost cost = compile::cost_of(compile::compile_program(
+                    {r.value}, inputs_, order_, {r.fma, r.compensated, r.compensated_lets}, k_.lets));
+                if (!best || compile::cheaper(cost, best_cost) ||
+                    (!compile::cheaper(best_cost, cost) && better(r.double_accuracy, cp.candidates[*best].double_accuracy))) {
+                    best = c;
+                    best_cost = cost;
+                }
+            }
+            if (!best)
+                return std::nullopt;
+            fastest.push_back(*best);
+        }
+        return fastest;
+    }
+
+    // A program as emitted, its outputs all at once, in each type.
+    std::vector<emitted_accuracy> measure_emitted(const compile::program& code) const
+    {
+        compile::program outputs_only = code;
         outputs_only.outputs.erase(outputs_only.outputs.begin(),
                                    outputs_only.outputs.begin() + static_cast<long>(plan_.guard_values));
         std::vector<std::size_t> which(plan_.components.size());
@@ -290,8 +376,10 @@ private:
         const auto in_float = measure<float>(outputs_only, which, plan_.samples, plan_.float_reference);
         const auto in_double = measure<double>(outputs_only, which, plan_.samples, plan_.double_reference);
         const auto in_long = measure<long double>(outputs_only, which, plan_.samples, plan_.double_reference);
+        std::vector<emitted_accuracy> emitted;
         for (std::size_t i = 0; i < which.size(); ++i)
-            plan_.emitted.push_back({in_float[i], in_double[i], in_long[i]});
+            emitted.push_back({in_float[i], in_double[i], in_long[i]});
+        return emitted;
     }
 
     const engine::kernel& k_;
@@ -321,32 +409,45 @@ std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
     for (const kernel_plan& plan : plans) {
         const engine::kernel& k = *plan.kernel;
         const auto all = components(k);
-        for (std::size_t i = 0; i < plan.components.size(); ++i) {
-            const engine::kernel_output& o = k.outputs[all[i].first];
-            const component_plan& cp = plan.components[i];
-            const emitted_accuracy& e = plan.emitted[i];
-            // One line an output, naming the type where it is furthest past its bound.
-            const auto& types = engine::kernel_output::types;
-            const accuracy* measured[] = {&e.in_float, &e.in_double, &e.in_long_double};
-            std::size_t worst = 3;
-            for (std::size_t t = 0; t < 3; ++t)
-                if (measured[t]->max_ulps > o.bound_ulps[t] &&
-                    (worst == 3 || measured[t]->max_ulps / o.bound_ulps[t] >
-                                       measured[worst]->max_ulps / o.bound_ulps[worst]))
-                    worst = t;
-            if (worst == 3)
-                continue;
-            missed.push_back(fmt::format(
-                "{}: error: kernel '{}': output '{}' misses its bound of {:g} ulps in {}: {:.3g} ulps at worst ({}), "
-                "with the best of {} candidate forms ({}); give a more accurate form (forms = [...]) or, if this is "
-                "the best it can do, raise the bound with [[kernel.bound]] output = \"{}\", type, ulps, because",
-                to_string(k.where), k.name, cp.name, o.bound_ulps[worst], types[worst], measured[worst]->max_ulps,
-                measured[worst]->worst_regime, cp.candidates.size(), cp.candidates[cp.chosen].label, o.member));
+        // The accurate form, then the fast one (the accurate one again, where it is the
+        // fast one too, against the fast bounds).
+        for (const bool fast : {false, true}) {
+            for (std::size_t i = 0; i < plan.components.size(); ++i) {
+                const engine::kernel_output& o = k.outputs[all[i].first];
+                const component_plan& cp = plan.components[i];
+                const emitted_accuracy& e = (fast ? plan.fast_emitted : plan.emitted)[i];
+                const std::array<double, 3>& bound = fast ? o.fast_bound_ulps : o.bound_ulps;
+                // One line an output, naming the type where it is furthest past its bound.
+                const auto& types = engine::kernel_output::types;
+                const accuracy* measured[] = {&e.in_float, &e.in_double, &e.in_long_double};
+                std::size_t worst = 3;
+                for (std::size_t t = 0; t < 3; ++t)
+                    if (measured[t]->max_ulps > bound[t] &&
+                        (worst == 3 || measured[t]->max_ulps / bound[t] > measured[worst]->max_ulps / bound[worst]))
+                        worst = t;
+                if (worst == 3)
+                    continue;
+                if (fast)
+                    missed.push_back(fmt::format(
+                        "{}: error: kernel '{}': output '{}' misses its fast bound of {:g} ulps in {}: {:.3g} ulps at "
+                        "worst ({}), in the fast form's candidate ({}); give a cheaper form that is accurate enough "
+                        "(forms = [...]) or raise the fast bound with [[kernel.bound]] output = \"{}\", form = "
+                        "\"fast\", type, ulps, because",
+                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], measured[worst]->max_ulps,
+                        measured[worst]->worst_regime, cp.candidates[cp.fastest].label, o.member));
+                else
+                    missed.push_back(fmt::format(
+                        "{}: error: kernel '{}': output '{}' misses its bound of {:g} ulps in {}: {:.3g} ulps at worst "
+                        "({}), with the best of {} candidate forms ({}); give a more accurate form (forms = [...]) "
+                        "or, if this is the best it can do, raise the bound with [[kernel.bound]] output = \"{}\", "
+                        "type, ulps, because",
+                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], measured[worst]->max_ulps,
+                        measured[worst]->worst_regime, cp.candidates.size(), cp.candidates[cp.chosen].label, o.member));
+            }
         }
     }
     return missed;
 }
-
 
 std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* store,
                                       const std::function<void(std::size_t, std::size_t)>& done,

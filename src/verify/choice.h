@@ -6,6 +6,9 @@
 // in double against CLN on samples from the hard regions; the most accurate (smallest
 // maximum error, then smallest mean) is emitted, and the choice and the measurements
 // are kept for the verification report.
+//
+// Beside it, each kernel has a fast form (`impact::fast`): each output in its cheapest
+// candidate (compile::cheaper) within the output's fast bound, measured and reported alike.
 #pragma once
 
 #include "compile/program.h"
@@ -38,6 +41,7 @@ struct component_plan {
     std::string name;           ///< `v_M` or `v_M[0]`
     std::vector<candidate_result> candidates;
     std::size_t chosen = 0;     ///< index into candidates
+    std::size_t fastest = 0;    ///< the fast form's candidate: the cheapest within the fast bound
     std::size_t heavier = 0;    ///< forms left out for a square root or division more than needed
     std::size_t pruned = 0;     ///< candidates left out after the first sixth of the samples
 };
@@ -58,6 +62,10 @@ struct kernel_plan {
     verify::reference double_reference;
     verify::reference float_reference;
     std::vector<emitted_accuracy> emitted;       ///< per component: `code` as emitted, measured
+    /// The fast form: the `fastest` candidates compiled as `code` is (the same guards' values
+    /// first), and measured alike.
+    compile::program fast_code;
+    std::vector<emitted_accuracy> fast_emitted;
 };
 
 /// Samples used to choose forms and to report accuracy.
@@ -74,11 +82,19 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
 /// `which` = "expanded" or "factored"; nothing when it has a radical.
 std::optional<engine::form> derived_form(const engine::kernel_output& o, std::size_t c, const std::string& which);
 
-/// The plan's program: the guards' conditions first, then the chosen form of every
-/// component, sharing what they can, in an order that computes every divisor before the
-/// first division when the kernel has guards. Throws `impact::error` at the kernel where
-/// no order does.
+/// The plan's programs, `code` and `fast_code`: the guards' conditions first, then the
+/// chosen (or fastest) form of every component, sharing what they can, in an order that
+/// computes every divisor before the first division when the kernel has guards. Throws
+/// `impact::error` at the kernel where no order does.
 void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::term_order& order);
+
+/// The fast form of a plan as a plan of its own, for the emitters: `fast_code` as its
+/// code, each component's `fastest` candidate as its chosen one, `fast_emitted` as its
+/// accuracy (no samples).
+kernel_plan fast_form(const kernel_plan& plan);
+
+/// Whether the fast form is the accurate one: every component's fastest candidate its chosen one.
+bool fast_is_accurate(const kernel_plan& plan);
 
 /// A piece of work whose result is text, so that it may run in another process.
 struct text_task {
@@ -110,9 +126,10 @@ std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* 
                                       const std::function<void(std::size_t, std::size_t)>& done = {},
                                       const task_runner& runner = {});
 
-/// Every output that misses its bound (`engine::kernel_output::bound_ulps`) in float,
-/// double or long double, one line each: `file:line:column: error: kernel 'k': output 'J'
-/// misses its bound ...`, naming the error, the regime and how to raise the bound.
+/// Every output that misses its bound (`engine::kernel_output::bound_ulps`, and
+/// `fast_bound_ulps` in the fast form) in float, double or long double, one line each:
+/// `file:line:column: error: kernel 'k': output 'J' misses its bound ...`, naming the
+/// error, the regime and how to raise the bound.
 std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans);
 
 /// The text a kernel's plan depends on, the key of its cache entry.

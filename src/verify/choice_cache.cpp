@@ -90,7 +90,7 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
     // Everything plan_kernel reads of the kernel, printed in the derivation's term order
     // (GiNaC's own printing changes from run to run), and the build that measures.
     writer w;
-    w.text("kernel choice, format 1");
+    w.text("kernel choice, format 2");
     w.text(cache::program_fingerprint());
     w.count(kernel_samples);
     w.number(target_ulps);
@@ -119,6 +119,7 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
         w.count(o.is_array);
         w.count(static_cast<std::size_t>(o.error));
         w.text(order.text(o.scale_factor));
+        w.number(o.fast_bound_ulps[1]);   // the fast form's choice is made in double
         for (std::size_t c = 0; c < o.values.size(); ++c) {
             w.text(order.text(o.values[c]));
             for (const engine::form& f : o.candidates.at(c)) {
@@ -154,6 +155,7 @@ std::string encode_choice(const kernel_plan& plan, const engine::term_order& ord
         std::optional<engine::form> expanded;
         w.text(cp.name);
         w.count(cp.chosen);
+        w.count(cp.fastest);
         w.count(cp.heavier);
         w.count(cp.pruned);
         w.count(cp.candidates.size());
@@ -181,6 +183,9 @@ std::string encode_choice(const kernel_plan& plan, const engine::term_order& ord
         w.measured(plan.emitted.at(i).in_float);
         w.measured(plan.emitted.at(i).in_double);
         w.measured(plan.emitted.at(i).in_long_double);
+        w.measured(plan.fast_emitted.at(i).in_float);
+        w.measured(plan.fast_emitted.at(i).in_double);
+        w.measured(plan.fast_emitted.at(i).in_long_double);
     }
     w.text("end");
     return w.out;
@@ -202,10 +207,11 @@ std::optional<kernel_plan> decode_choice(const std::string& text, const engine::
         component_plan cp;
         cp.name = r.text();
         cp.chosen = r.count();
+        cp.fastest = r.count();
         cp.heavier = r.count();
         cp.pruned = r.count();
         const std::size_t n = r.count();
-        if (!r.ok || n == 0 || cp.chosen >= n || n > 64 * (o.candidates[component].size() + 2))
+        if (!r.ok || n == 0 || cp.chosen >= n || cp.fastest >= n || n > 64 * (o.candidates[component].size() + 2))
             return std::nullopt;
         for (std::size_t c = 0; c < n; ++c) {
             candidate_result cr;
@@ -243,6 +249,11 @@ std::optional<kernel_plan> decode_choice(const std::string& text, const engine::
         e.in_double = r.measured();
         e.in_long_double = r.measured();
         plan.emitted.push_back(e);
+        emitted_accuracy fast;
+        fast.in_float = r.measured();
+        fast.in_double = r.measured();
+        fast.in_long_double = r.measured();
+        plan.fast_emitted.push_back(fast);
         plan.components.push_back(std::move(cp));
     }
     if (r.text() != "end" || !r.ok || r.at != text.size())

@@ -576,6 +576,454 @@ inline void collide_batch(const collide_batch_data<Real, 2>& data) noexcept
         detail::collide_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, nullptr);
 }
 
+namespace detail {
+
+// collide(m, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with M = +infinity, with the
+// same guards and statuses, each output in its cheapest candidate form within its fast
+// bound (verification.md): 20 operations, of them 2 divisions and 0 square roots
+// (the accurate form: 126, 4 and 0).
+// v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display, fma": at most 4.98 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display, fma": at most 5.07 ulps in double on 4200 samples.
+template <class Real>
+inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps, fast_t) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    collide_result<Real, 2> out{v_M, v_m, status::ok};
+    if (!(m > Real(0)) || !detail::finite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = t1 + t3;
+    const Real t5 = v_Mx - v_mx;
+    const Real t6 = t0 * t5;
+    const Real t7 = v_My - v_my;
+    if (!(t4 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(t6 + t2 * t7 < Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    if (!(std::fabs(t4) >= detail::smallest_divisor<Real>) || !(std::fabs(t4) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t8 = Real(1) + eps;
+    const Real t9 = t8 * t0;
+    const Real t10 = std::fma(t2, t7, t6);
+    const Real t11 = t9 * t10;
+    const Real t12 = t11 / t4;
+    const Real t13 = t8 * t2;
+    const Real t14 = t13 * t10;
+    const Real t15 = t14 / t4;
+    const Real result0 = v_Mx;
+    const Real result1 = v_My;
+    const Real result2 = v_mx + t12;
+    const Real result3 = v_my + t15;
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && t8 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && (t10 != Real(0) || (t6 == Real(0) && t2 != Real(0) && t7 != Real(0)))) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && t9 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t12) < std::numeric_limits<Real>::min() && t11 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t8 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t13 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && t14 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    return out;
+}
+
+// collide(M, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with m = +infinity, with the
+// same guards and statuses, each output in its cheapest candidate form within its fast
+// bound (verification.md): 20 operations, of them 2 divisions and 0 square roots
+// (the accurate form: 105, 3 and 0).
+// v_M[0] is computed in the form "limit of display, fma": at most 4.58 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display, fma": at most 3.85 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+template <class Real>
+inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps, fast_t) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    collide_result<Real, 2> out{v_M, v_m, status::ok};
+    if (!(M > Real(0)) || !detail::finite(M)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = t1 + t3;
+    const Real t5 = v_Mx - v_mx;
+    const Real t6 = t0 * t5;
+    const Real t7 = v_My - v_my;
+    if (!(t4 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(t6 + t2 * t7 < Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    if (!(std::fabs(t4) >= detail::smallest_divisor<Real>) || !(std::fabs(t4) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t8 = Real(1) + eps;
+    const Real t9 = t8 * t0;
+    const Real t10 = std::fma(t2, t7, t6);
+    const Real t11 = t9 * t10;
+    const Real t12 = t11 / t4;
+    const Real t13 = t8 * t2;
+    const Real t14 = t13 * t10;
+    const Real t15 = t14 / t4;
+    const Real result0 = v_Mx - t12;
+    const Real result1 = v_My - t15;
+    const Real result2 = v_mx;
+    const Real result3 = v_my;
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && t8 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && (t10 != Real(0) || (t6 == Real(0) && t2 != Real(0) && t7 != Real(0)))) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && t9 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t12) < std::numeric_limits<Real>::min() && t11 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t8 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t13 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && t14 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    return out;
+}
+
+} // namespace detail
+
+/// collide(M, m, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide, with the
+/// same guards and statuses, each output in its cheapest candidate form within its fast
+/// bound (verification.md): 28 operations, of them 1 divisions and 0 square roots
+/// (the accurate form: 107, 2 and 0).
+/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), fma": at most 6.53 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), fma": at most 4.80 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), fma": at most 6.23 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), fma": at most 4.57 ulps in double on 4200 samples.
+template <class Real>
+inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps, fast_t) noexcept
+{
+    if (M == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_fixed_M<Real>(m, C_M, C_m, v_M, v_m, eps, fast_t{});
+    }
+    if (m == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_fixed_m<Real>(M, C_M, C_m, v_M, v_m, eps, fast_t{});
+    }
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    collide_result<Real, 2> out{v_M, v_m, status::ok};
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 * t0;
+    const Real t2 = C_My - C_my;
+    const Real t3 = t2 * t2;
+    const Real t4 = t1 + t3;
+    const Real t5 = v_Mx - v_mx;
+    const Real t6 = t0 * t5;
+    const Real t7 = v_My - v_my;
+    if (!(t4 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(t6 + t2 * t7 < Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t8 = Real(1) + eps;
+    const Real t9 = std::fma(t2, t7, t6);
+    const Real t10 = t8 * t9;
+    const Real t11 = M + m;
+    const Real t12 = t11 * t4;
+    if (!(std::fabs(t12) >= detail::smallest_divisor<Real>) || !(std::fabs(t12) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t13 = t10 / t12;
+    const Real t14 = t13 * m;
+    const Real t15 = t14 * t0;
+    const Real t16 = t14 * t2;
+    const Real t17 = t13 * M;
+    const Real t18 = t17 * t0;
+    const Real t19 = t17 * t2;
+    const Real result0 = -t15 + v_Mx;
+    const Real result1 = -t16 + v_My;
+    const Real result2 = t18 + v_mx;
+    const Real result3 = t19 + v_my;
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && (t9 != Real(0) || (t6 == Real(0) && t2 != Real(0) && t7 != Real(0)))) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t8 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t12) < std::numeric_limits<Real>::min() && t11 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t10 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t13 != Real(0) && m != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && t14 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t14 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && t13 != Real(0) && M != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t19) < std::numeric_limits<Real>::min() && t17 != Real(0) && t2 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    return out;
+}
+
+namespace detail {
+
+// The range of collide_fast_batch_2d's inputs within which its arithmetic stays in the normal range: where
+// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
+// normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
+// the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
+// by Impact from the program, operation by operation, bounding each value not 0 by powers
+// of 2, 2^lo <= |v| <= 2^hi, and by the power of 2 it is a multiple of, 2^q (a number of
+// at least 2^lo is a multiple of its ulp, 2^(lo - digits + 1)): a product adds them; a sum,
+// difference or fused multiply-add is exactly a multiple of its terms' finest q, and so,
+// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
+// bounds crosswise, a square root halves them, atan2(y, x) lies within
+// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
+// quadruple long double): k = 3, 101, 2015, 1991; where it is -1, the loop tests the least magnitude of the values.
+template <class Real>
+constexpr int collide_fast_batch_2d_k = input_k<Real>(3, 101, 2015, 1991);
+
+// The loop of collide_batch in 2D, without branches; inlined where it is called, so that a
+// block's call runs one pass of 8 pairs.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE void collide_fast_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < count; ++i) {
+        // The status, as the scalar kernel decides it: the first guard that fails.
+        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
+        impact::status outcome = status::ok;
+        {
+            std::int64_t fails = !(((detail::zero_if_finite(C_Mx_[i], C_My_[i]) + detail::zero_if_finite(C_mx_[i], C_my_[i])) + (detail::zero_if_finite(v_Mx_[i], v_My_[i]) + detail::zero_if_finite(v_mx_[i], v_my_[i]))) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
+            fails = !(eps_[i] >= Real(0));
+            fails |= !(eps_[i] <= Real(1));
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
+            fails = !(M_[i] > Real(0));
+            fails |= !(m_[i] > Real(0));
+            fails |= !(detail::zero_if_finite(M_[i], m_[i]) == Real(0));
+            outcome = detail::blend(fails, status::invalid_mass, outcome);
+            const std::int64_t admitted = outcome == status::ok;
+            impact::status condition = status::ok;
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t1 = C_My_[i] - C_my_[i];
+            const Real t2 = t0 * t0 + t1 * t1;
+            const Real t3 = t0 * (v_Mx_[i] - v_mx_[i]);
+            const Real t4 = v_My_[i] - v_my_[i];
+            fails = !(t3 + t1 * t4 < Real(0));
+            condition = detail::blend(fails, status::separating, condition);
+            fails = !(t2 > Real(0));
+            condition = detail::blend(fails, status::coincident_centres, condition);
+            outcome = detail::blend(admitted, condition, outcome);
+        }
+        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
+        outcome = detail::blend((M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()), status::underflow, outcome);
+        const std::int64_t resolved = outcome == status::ok;
+        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real eps = eps_[i];
+        const Real t0 = C_Mx - C_mx;
+        const Real t1 = t0 * t0;
+        const Real t2 = C_My - C_my;
+        const Real t3 = t2 * t2;
+        const Real t4 = t1 + t3;
+        const Real t5 = v_Mx - v_mx;
+        const Real t6 = t0 * t5;
+        const Real t7 = v_My - v_my;
+        const Real t8 = Real(1) + eps;
+        const Real t9 = std::fma(t2, t7, t6);
+        const Real t10 = t8 * t9;
+        const Real t11 = M + m;
+        const Real t12 = t11 * t4;
+        const std::int64_t usable = resolved & (std::fabs(t12) >= detail::smallest_divisor<Real>) & (std::fabs(t12) <= std::numeric_limits<Real>::max());
+        const Real t13 = t10 / detail::blend(usable, t12, Real(1));
+        const Real t14 = t13 * m;
+        const Real t15 = t14 * t0;
+        const Real t16 = t14 * t2;
+        const Real t17 = t13 * M;
+        const Real t18 = t17 * t0;
+        const Real t19 = t17 * t2;
+        const Real v_Mx_out = -t15 + v_Mx;
+        const Real v_My_out = -t16 + v_My;
+        const Real v_mx_out = t18 + v_mx;
+        const Real v_my_out = t19 + v_my;
+        const std::int64_t finite = ((detail::zero_if_finite(v_Mx_out, v_My_out) + detail::zero_if_finite(v_mx_out, v_my_out)) == Real(0));
+        std::int64_t doubtful = 0;
+        if constexpr (collide_fast_batch_2d_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_fast_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_fast_batch_2d_k<Real>);
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My)))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), std::fabs(eps))), highest));
+        }
+        if constexpr (collide_fast_batch_2d_k<Real> < 0)
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), std::fabs(t9))), detail::least(detail::least(detail::most(std::fabs(t10), detail::zero_as_min(t8)), detail::most(detail::most(std::fabs(t12), detail::zero_as_min(t11)), detail::zero_as_min(t4))), detail::least(std::fabs(t13), detail::most(std::fabs(t14), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t15), detail::zero_as_min(t0)), detail::most(std::fabs(t16), detail::zero_as_min(t2))), detail::least(detail::most(std::fabs(t17), detail::zero_as_min(M)), detail::most(std::fabs(t18), detail::zero_as_min(t0)))), detail::most(std::fabs(t19), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
+        const std::int64_t written = usable & finite & !doubtful;
+        v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
+        v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
+        v_mx_[i] = detail::blend(written, v_mx_out, v_mx_[i]);
+        v_my_[i] = detail::blend(written, v_my_out, v_my_[i]);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
+    }
+}
+
+// The pairs collide_fast_batch_2d left to the scalar collide (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_fast_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide<Real>(M_[i], m_[i], std::array<Real, 2>{C_Mx_[i], C_My_[i]}, std::array<Real, 2>{C_mx_[i], C_my_[i]}, std::array<Real, 2>{v_Mx_[i], v_My_[i]}, std::array<Real, 2>{v_mx_[i], v_my_[i]}, eps_[i], fast_t{});
+        v_Mx_[i] = out.v_M[0];
+        v_My_[i] = out.v_M[1];
+        v_mx_[i] = out.v_m[0];
+        v_my_[i] = out.v_m[1];
+        status_[i] = out.status;
+    }
+}
+
+// collide_fast_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// processor's own prefetching, following so many arrays, falls behind.
+template <class Real, bool with_status>
+inline void collide_fast_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64;
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t b = 0;
+    for (; b + block <= count; b += block) {
+        if (b + ahead < count) {
+            IMPACT_PREFETCH(M_ + b + ahead, 0);
+            IMPACT_PREFETCH(m_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_My_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_my_ + b + ahead, 0);
+            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
+            IMPACT_PREFETCH(eps_ + b + ahead, 0);
+            if constexpr (with_status)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        collide_fast_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_fast_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    }
+    collide_fast_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_fast_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+}
+
+} // namespace detail
+
+/// collide_batch(data, impact::fast): collide_batch in the fast form, each result bit for bit
+/// the scalar collide(..., impact::fast)'s (compiled alike, e.g. -ffp-contract=off).
+template <class Real>
+inline void collide_batch(const collide_batch_data<Real, 2>& data, fast_t) noexcept
+{
+    if (data.status)
+        detail::collide_fast_batch_2d_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, data.status);
+    else
+        detail::collide_fast_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, nullptr);
+}
+
 } // namespace impact
 
 IMPACT_PRECISE_END

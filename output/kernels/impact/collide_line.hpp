@@ -247,6 +247,199 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
     return out;
 }
 
+namespace detail {
+
+// collide_line(m, v_M, v_m, eps, impact::fast): the fast form of collide_line with M = +infinity, with the
+// same guards and statuses, each output in its cheapest candidate form within its fast
+// bound (verification.md): 7 operations, of them 0 divisions and 0 square roots
+// (the accurate form: 11, 0 and 0).
+// v_M is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// v_m is computed in the form "limit of display, fma": at most 1.46 ulps in double on 4200 samples.
+// J is computed in the form "limit of display": at most 3.55 ulps in double on 4200 samples.
+template <class Real>
+inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m, Real eps, fast_t) noexcept
+{
+    collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
+    if (!(m > Real(0)) || !detail::finite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = v_M - v_m;
+    if (!(t0 > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t1 = std::fma(v_M, eps, v_M);
+    const Real t2 = -v_m;
+    const Real t3 = std::fma(t2, eps, t1);
+    const Real t4 = Real(1) + eps;
+    const Real t5 = m * t4;
+    const Real t6 = t5 * t0;
+    const Real result0 = v_M;
+    const Real result1 = t3;
+    const Real result2 = t6;
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && (t1 != Real(0) || (v_M == Real(0) && v_M != Real(0) && eps != Real(0)))) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && (t3 != Real(0) || (t1 == Real(0) && t2 != Real(0) && eps != Real(0)))) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && m != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0) && t0 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = result0;
+    out.v_m = result1;
+    out.J = result2;
+    return out;
+}
+
+// collide_line(M, v_M, v_m, eps, impact::fast): the fast form of collide_line with m = +infinity, with the
+// same guards and statuses, each output in its cheapest candidate form within its fast
+// bound (verification.md): 8 operations, of them 0 divisions and 0 square roots
+// (the accurate form: 11, 0 and 0).
+// v_M is computed in the form "limit of display, fma": at most 1.23 ulps in double on 4200 samples.
+// v_m is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
+// J is computed in the form "limit of display": at most 3.66 ulps in double on 4200 samples.
+template <class Real>
+inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m, Real eps, fast_t) noexcept
+{
+    collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
+    if (!(M > Real(0)) || !detail::finite(M)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = v_M - v_m;
+    if (!(t0 > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t1 = v_M * eps;
+    const Real t2 = -t1 + v_m;
+    const Real t3 = std::fma(v_m, eps, t2);
+    const Real t4 = Real(1) + eps;
+    const Real t5 = M * t4;
+    const Real t6 = t5 * t0;
+    const Real result0 = t3;
+    const Real result1 = v_m;
+    const Real result2 = t6;
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && v_M != Real(0) && eps != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && (t3 != Real(0) || (t2 == Real(0) && v_m != Real(0) && eps != Real(0)))) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && M != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0) && t0 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = result0;
+    out.v_m = result1;
+    out.J = result2;
+    return out;
+}
+
+} // namespace detail
+
+/// collide_line(M, m, v_M, v_m, eps, impact::fast): the fast form of collide_line, with the
+/// same guards and statuses, each output in its cheapest candidate form within its fast
+/// bound (verification.md): 16 operations, of them 3 divisions and 0 square roots
+/// (the accurate form: 47, 4 and 0).
+/// v_M is computed in the form "display, fma": at most 2.30 ulps in double on 4200 samples.
+/// v_m is computed in the form "display, fma": at most 2.40 ulps in double on 4200 samples.
+/// J is computed in the form "display": at most 5.43 ulps in double on 4200 samples.
+template <class Real>
+inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m, Real eps, fast_t) noexcept
+{
+    if (M == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_line_fixed_M<Real>(m, v_M, v_m, eps, fast_t{});
+    }
+    if (m == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_line_fixed_m<Real>(M, v_M, v_m, eps, fast_t{});
+    }
+    collide_line_result<Real> out{v_M, v_m, Real(0), status::ok};
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = v_M - v_m;
+    if (!(t0 > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t1 = M * v_M;
+    const Real t2 = std::fma(m, v_m, t1);
+    const Real t3 = eps * t0;
+    const Real t4 = -m;
+    const Real t5 = std::fma(t4, t3, t2);
+    const Real t6 = M + m;
+    if (!(std::fabs(t6) >= detail::smallest_divisor<Real>) || !(std::fabs(t6) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t7 = t5 / t6;
+    const Real t8 = std::fma(M, t3, t1);
+    const Real t9 = std::fma(m, v_m, t8);
+    const Real t10 = t9 / t6;
+    const Real t11 = M * m;
+    const Real t12 = Real(1) + eps;
+    const Real t13 = t11 * t12;
+    const Real t14 = t13 * t0;
+    const Real t15 = t14 / t6;
+    const Real result0 = t7;
+    const Real result1 = t10;
+    const Real result2 = t15;
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && M != Real(0) && v_M != Real(0)) ||
+        (std::fabs(t2) < std::numeric_limits<Real>::min() && (t2 != Real(0) || (t1 == Real(0) && m != Real(0) && v_m != Real(0)))) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && eps != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t2 == Real(0) && t4 != Real(0) && t3 != Real(0)))) ||
+        (std::fabs(t7) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && (t8 != Real(0) || (t1 == Real(0) && M != Real(0) && t3 != Real(0)))) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && (t9 != Real(0) || (t8 == Real(0) && m != Real(0) && v_m != Real(0)))) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t9 != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t11 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && t13 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && t14 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = result0;
+    out.v_m = result1;
+    out.J = result2;
+    return out;
+}
+
 } // namespace impact
 
 IMPACT_PRECISE_END

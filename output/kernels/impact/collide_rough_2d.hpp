@@ -2952,6 +2952,2154 @@ inline void collide_rough_batch(const collide_rough_batch_data<Real, 2>& data) n
         detail::collide_rough_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
 }
 
+namespace detail {
+
+// collide_rough(m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with M = +infinity, with the
+// same guards and statuses, each output in its cheapest candidate form within its fast
+// bound (verification.md): 666 operations, of them 22 divisions and 3 square roots
+// (the accurate form: 1076, 33 and 4).
+// v_M[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of v_mx + (K_n*r_x - K_t*r_y)/m, fma, compensated let": at most 2.80 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of v_my + (K_n*r_y + K_t*r_x)/m, fma, compensated let": at most 4.29 ulps in double on 4200 samples.
+// w_M is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
+// w_m is computed in the form "limit of w_m - K_t*d/(q_m*m*R_m), fma, compensated let": at most 5.71 ulps in double on 4200 samples.
+template <class Real>
+inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu, fast_t) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    const Real b = beta;
+    collide_rough_result<Real, 2> out{v_M, v_m, w_M, w_m, status::ok};
+    if (!(m > Real(0)) || !detail::finite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(R_M > Real(0)) || !detail::finite(R_M) || !(R_m > Real(0)) || !detail::finite(R_m)) {
+        out.status = status::invalid_radius;
+        return out;
+    }
+    if (!(q_M > Real(0)) || !(q_M <= Real(0.6666666666666666)) || !(q_m > Real(0)) || !(q_m <= Real(0.6666666666666666))) {
+        out.status = status::invalid_inertia;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!(b >= Real(-1)) || !(b <= Real(1))) {
+        out.status = status::invalid_tangential_restitution;
+        return out;
+    }
+    if (!(mu >= Real(0))) {
+        out.status = status::invalid_friction;
+        return out;
+    }
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(w_M) || !detail::finite(w_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = -Real(2);
+    const Real t1 = C_Mx - C_mx;
+    const Real t2 = t1 - C_Mx;
+    const Real t3 = C_Mx * C_Mx;
+    const Real t4 = C_Mx * C_mx;
+    const Real t5 = std::fma(t0, t4, t3);
+    const Real t6 = C_mx * C_mx;
+    const Real t7 = t1 * t1;
+    const Real t8 = C_Mx - (t1 - t2) - (C_mx + t2);
+    const Real t9 = C_My - C_my;
+    const Real t10 = t9 - C_My;
+    const Real t11 = C_My * C_My;
+    const Real t12 = t5 + t11;
+    const Real t13 = C_My * C_my;
+    const Real t14 = std::fma(t0, t13, t12);
+    const Real t15 = C_my * C_my;
+    const Real t16 = t9 * t9;
+    const Real t17 = t7 + t16;
+    const Real t18 = t17 - t7;
+    const Real t19 = C_My - (t9 - t10) - (C_my + t10);
+    const Real t20 = t7 - (t17 - t18) + (t16 - t18) + (std::fma(t8, t1, std::fma(t1, t8, std::fma(t1, t1, -t7))) + std::fma(t19, t9, std::fma(t9, t19, std::fma(t9, t9, -t16))));
+    const Real t21 = t17 + t20;
+    const Real t22 = v_Mx * t1;
+    const Real t23 = v_mx * t1;
+    const Real t24 = v_Mx * t9;
+    const Real t25 = v_mx * t9;
+    const Real t26 = -v_Mx;
+    const Real t27 = -v_mx;
+    const Real t28 = std::fma(v_Mx, t8, std::fma(v_Mx, t1, -t22));
+    const Real t29 = std::fma(v_mx, t8, std::fma(v_mx, t1, -t23));
+    const Real t30 = std::fma(v_Mx, t19, std::fma(v_Mx, t9, -t24));
+    const Real t31 = std::fma(v_mx, t19, std::fma(v_mx, t9, -t25));
+    const Real t32 = v_My * t1;
+    const Real t33 = v_my * t1;
+    const Real t34 = v_My * t9;
+    const Real t35 = v_my * t9;
+    const Real t36 = t22 + t34;
+    const Real t37 = t36 - t22;
+    if (!(t17 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(-((v_Mx - v_mx) * t1) - (v_My - v_my) * t9 > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t38 = -v_My;
+    const Real t39 = -v_my;
+    const Real t40 = std::fma(v_My, t8, std::fma(v_My, t1, -t32));
+    const Real t41 = std::fma(v_my, t8, std::fma(v_my, t1, -t33));
+    const Real t42 = std::fma(v_My, t19, std::fma(v_My, t9, -t34));
+    const Real t43 = std::fma(v_my, t19, std::fma(v_my, t9, -t35));
+    const Real t44 = t22 - (t36 - t37) + (t34 - t37) + (t28 + t42);
+    const Real t45 = t36 + t44;
+    const Real t46 = t45 - t23;
+    const Real t47 = t46 - t45;
+    const Real t48 = t45 - (t46 - t47) - (t23 + t47) + (t44 - (t45 - t36) - t29);
+    const Real t49 = t46 + t48;
+    const Real t50 = t49 - t35;
+    const Real t51 = t50 - t49;
+    const Real t52 = t49 - (t50 - t51) - (t35 + t51) + (t48 - (t49 - t46) - t43);
+    const Real t53 = t50 + t52;
+    const Real t54 = Real(1) + eps;
+    const Real t55 = t54 - Real(1);
+    const Real t56 = Real(1) - (t54 - t55) + (eps - t55);
+    const Real t57 = m * t54;
+    const Real t58 = q_M * q_m;
+    const Real t59 = t58 * eps;
+    const Real t60 = q_m * eps;
+    const Real t61 = m * q_M;
+    const Real t62 = -q_M;
+    const Real t63 = t61 * q_m;
+    const Real t64 = q_M + t58;
+    const Real t65 = t64 - q_M;
+    const Real t66 = q_M - (t64 - t65) + (t58 - t65) + std::fma(q_M, q_m, -t58);
+    const Real t67 = t64 + t66;
+    const Real t68 = t59 * mu;
+    const Real t69 = t68 * v_Mx;
+    const Real t70 = t69 * C_Mx;
+    const Real t71 = mu * v_Mx;
+    const Real t72 = t71 * C_Mx;
+    const Real t73 = t71 * C_mx;
+    const Real t74 = mu * v_mx;
+    const Real t75 = t74 * C_Mx;
+    const Real t76 = t74 * C_mx;
+    const Real t77 = mu * v_My;
+    const Real t78 = t77 * C_My;
+    const Real t79 = t77 * C_my;
+    const Real t80 = mu * v_my;
+    const Real t81 = t80 * C_My;
+    const Real t82 = t80 * C_my;
+    const Real t83 = eps * mu;
+    const Real t84 = t83 * v_Mx;
+    const Real t85 = t84 * C_Mx;
+    const Real t86 = t84 * C_mx;
+    const Real t87 = t83 * v_mx;
+    const Real t88 = t87 * C_Mx;
+    const Real t89 = t87 * C_mx;
+    const Real t90 = t83 * v_My;
+    const Real t91 = t90 * C_My;
+    const Real t92 = t90 * C_my;
+    const Real t93 = t83 * v_my;
+    const Real t94 = t93 * C_My;
+    const Real t95 = t93 * C_my;
+    const Real t96 = m * mu;
+    const Real t97 = t96 * t54;
+    const Real t98 = q_m * mu;
+    const Real t99 = t98 * v_Mx;
+    const Real t100 = t99 * C_Mx;
+    const Real t101 = t99 * C_mx;
+    const Real t102 = t98 * v_mx;
+    const Real t103 = t102 * C_Mx;
+    const Real t104 = t102 * C_mx;
+    const Real t105 = t98 * v_My;
+    const Real t106 = t105 * C_My;
+    const Real t107 = t105 * C_my;
+    const Real t108 = t98 * v_my;
+    const Real t109 = t108 * C_My;
+    const Real t110 = t108 * C_my;
+    const Real t111 = t60 * mu;
+    const Real t112 = t111 * v_Mx;
+    const Real t113 = t112 * C_mx;
+    const Real t114 = t111 * v_mx;
+    const Real t115 = t114 * C_Mx;
+    const Real t116 = t114 * C_mx;
+    const Real t117 = t111 * v_My;
+    const Real t118 = t117 * C_My;
+    const Real t119 = t117 * C_my;
+    const Real t120 = t111 * v_my;
+    const Real t121 = t120 * C_My;
+    const Real t122 = t120 * C_my;
+    const Real t123 = std::fma(t62, t113, t70);
+    const Real t124 = std::fma(q_M, t118, t123);
+    const Real t125 = std::fma(t62, t119, t124);
+    const Real t126 = std::fma(t62, t115, t125);
+    const Real t127 = std::fma(q_M, t116, t126);
+    const Real t128 = std::fma(t62, t121, t127);
+    const Real t129 = std::fma(q_M, t122, t128);
+    const Real t130 = q_m * b;
+    const Real t131 = b * v_Mx;
+    const Real t132 = t131 * t9;
+    const Real t133 = b * v_mx;
+    const Real t134 = t133 * t9;
+    const Real t135 = b * v_My;
+    const Real t136 = t135 * t1;
+    const Real t137 = b * v_my;
+    const Real t138 = t137 * t1;
+    const Real t139 = R_M * w_M;
+    const Real t140 = R_M * b;
+    const Real t141 = t140 * w_M;
+    const Real t142 = std::fma(R_M, w_M, -t139);
+    const Real t143 = R_m * w_m;
+    const Real t144 = m * R_m;
+    const Real t145 = t144 * q_m;
+    const Real t146 = std::sqrt(t17);
+    const Real t147 = std::sqrt(t14 + t6 + t15);
+    const Real t148 = std::sqrt(t21);
+    const Real t149 = t67 * t148;
+    const Real t150 = R_m * b;
+    const Real t151 = t139 * t147;
+    const Real t152 = t139 * t148;
+    const Real t153 = t139 * t146;
+    const Real t154 = t141 * t148;
+    const Real t155 = w_m * t147;
+    const Real t156 = std::fma(R_m, t155, t151);
+    const Real t157 = std::fma(v_Mx, C_My, t156);
+    const Real t158 = std::fma(t26, C_my, t157);
+    const Real t159 = std::fma(t38, C_Mx, t158);
+    const Real t160 = std::fma(v_My, C_mx, t159);
+    const Real t161 = std::fma(t27, C_My, t160);
+    const Real t162 = std::fma(v_mx, C_my, t161);
+    const Real t163 = std::fma(v_my, C_Mx, t162);
+    const Real t164 = std::fma(t39, C_mx, t163);
+    const Real t165 = w_m * t146;
+    const Real t166 = std::fma(R_m, t165, t153);
+    const Real t167 = std::fma(v_Mx, t9, t166);
+    const Real t168 = std::fma(t38, t1, t167);
+    const Real t169 = std::fma(t27, t9, t168);
+    const Real t170 = std::fma(v_my, t1, t169);
+    const Real t171 = t150 * w_m;
+    const Real t172 = std::fma(R_m, w_m, -t143);
+    const Real t173 = t143 * t148;
+    const Real t174 = std::fma(-t148, t148, t21) + (t20 - (t21 - t17));
+    const Real t175 = t148 + t148;
+    const Real t176 = t171 * t148;
+    const Real t177 = std::fma(t139, t148, -t152);
+    const Real t178 = t152 + t173;
+    const Real t179 = t178 - t152;
+    const Real t180 = t154 + t152;
+    const Real t181 = t180 - t154;
+    const Real t182 = std::fabs(t164);
+    const Real t183 = q_m * t182;
+    const Real t184 = t130 * t182;
+    const Real t185 = std::fma(q_M, t184, t129);
+    const Real t186 = std::fma(q_M, t100, t185);
+    const Real t187 = std::fma(t62, t101, t186);
+    const Real t188 = std::fma(q_M, t106, t187);
+    const Real t189 = std::fma(t62, t107, t188);
+    const Real t190 = std::fma(t62, t103, t189);
+    const Real t191 = std::fma(q_M, t104, t190);
+    const Real t192 = std::fma(t62, t109, t191);
+    const Real t193 = std::fma(q_M, t110, t192);
+    const Real t194 = std::fma(q_M, t183, t193);
+    const Real t195 = std::fma(q_M, t85, t194);
+    const Real t196 = std::fma(t62, t86, t195);
+    const Real t197 = std::fma(q_M, t91, t196);
+    const Real t198 = std::fma(t62, t92, t197);
+    const Real t199 = std::fma(t62, t88, t198);
+    const Real t200 = std::fma(q_M, t89, t199);
+    const Real t201 = std::fma(t62, t94, t200);
+    const Real t202 = std::fma(q_M, t95, t201);
+    const Real t203 = std::fma(q_M, t72, t202);
+    const Real t204 = std::fma(t62, t73, t203);
+    const Real t205 = std::fma(q_M, t78, t204);
+    const Real t206 = std::fma(t62, t79, t205);
+    const Real t207 = std::fma(t62, t75, t206);
+    const Real t208 = std::fma(q_M, t76, t207);
+    const Real t209 = std::fma(t62, t81, t208);
+    const Real t210 = std::fma(q_M, t82, t209);
+    const Real t211 = (t210 > Real(0) ? Real(1) : t149);
+    const Real t212 = std::fabs(t170);
+    const Real t213 = t148 * t212;
+    const Real t214 = std::fma(t143, t148, -t173);
+    const Real t215 = (t210 > Real(0) ? t175 : Real(1));
+    const Real t216 = (t210 > Real(0) ? Real(1) : t175);
+    const Real t217 = (t210 > Real(0) ? t213 : Real(1));
+    if (!(std::fabs(t148) >= detail::smallest_divisor<Real>) || !(std::fabs(t148) <= std::numeric_limits<Real>::max()) || !(std::fabs(t175) >= detail::smallest_divisor<Real>) || !(std::fabs(t175) <= std::numeric_limits<Real>::max()) || !(std::fabs(t215) >= detail::smallest_divisor<Real>) || !(std::fabs(t215) <= std::numeric_limits<Real>::max()) || !(std::fabs(t216) >= detail::smallest_divisor<Real>) || !(std::fabs(t216) <= std::numeric_limits<Real>::max()) || !(std::fabs(t217) >= detail::smallest_divisor<Real>) || !(std::fabs(t217) <= std::numeric_limits<Real>::max()) || !(std::fabs(t211) >= detail::smallest_divisor<Real>) || !(std::fabs(t211) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max()) || !(std::fabs(t145) >= detail::smallest_divisor<Real>) || !(std::fabs(t145) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t218 = t22 / t148;
+    const Real t219 = t23 / t148;
+    const Real t220 = t34 / t148;
+    const Real t221 = t35 / t148;
+    const Real t222 = t174 / t175;
+    const Real t223 = t174 / t215;
+    const Real t224 = t174 / t216;
+    const Real t225 = -t218;
+    const Real t226 = t218 + t220;
+    const Real t227 = t226 - t218;
+    const Real t228 = -t219;
+    const Real t229 = -t220;
+    const Real t230 = -t221;
+    const Real t231 = t154 - (t180 - t181) + (t152 - t181) + (std::fma(std::fma(std::fma(R_M, b, -t140), w_M, std::fma(t140, w_M, -t141)), t148, std::fma(t141, t224, std::fma(t141, t148, -t154))) + std::fma(t142, t148, std::fma(t139, t224, t177)));
+    const Real t232 = t180 + t231;
+    const Real t233 = t232 + t176;
+    const Real t234 = t152 - (t178 - t179) + (t173 - t179) + (std::fma(t142, t148, std::fma(t139, t223, t177)) + std::fma(t172, t148, std::fma(t143, t223, t214)));
+    const Real t235 = t178 + t234;
+    const Real t236 = t235 + t24;
+    const Real t237 = t233 - t232;
+    const Real t238 = t236 - t235;
+    const Real t239 = t218 - (t226 - t227) + (t220 - t227) + (std::fma(t225, t222, std::fma(t225, t148, t22) + t28) / t148 + std::fma(t229, t222, std::fma(t229, t148, t34) + t42) / t148);
+    const Real t240 = t226 + t239;
+    const Real t241 = t240 - t219;
+    const Real t242 = t232 - (t233 - t237) + (t176 - t237) + (t231 - (t232 - t180) + std::fma(std::fma(std::fma(R_m, b, -t150), w_m, std::fma(t150, w_m, -t171)), t148, std::fma(t171, t224, std::fma(t171, t148, -t176))));
+    const Real t243 = t233 + t242;
+    const Real t244 = t243 + t173;
+    const Real t245 = t235 - (t236 - t238) + (t24 - t238) + (t234 - (t235 - t178) + t30);
+    const Real t246 = t236 + t245;
+    const Real t247 = t246 - t32;
+    const Real t248 = t241 - t240;
+    const Real t249 = t244 - t243;
+    const Real t250 = t247 - t246;
+    const Real t251 = t240 - (t241 - t248) - (t219 + t248) + (t239 - (t240 - t226) - std::fma(t228, t222, std::fma(t228, t148, t23) + t29) / t148);
+    const Real t252 = t241 + t251;
+    const Real t253 = t252 - t221;
+    const Real t254 = t243 - (t244 - t249) + (t173 - t249) + (t242 - (t243 - t233) + std::fma(t172, t148, std::fma(t143, t224, t214)));
+    const Real t255 = t244 + t254;
+    const Real t256 = t255 + t132;
+    const Real t257 = t246 - (t247 - t250) - (t32 + t250) + (t245 - (t246 - t236) - t40);
+    const Real t258 = t247 + t257;
+    const Real t259 = t258 - t25;
+    const Real t260 = t253 - t252;
+    const Real t261 = t256 - t255;
+    const Real t262 = t259 - t258;
+    const Real t263 = t252 - (t253 - t260) - (t221 + t260) + (t251 - (t252 - t241) - std::fma(t230, t222, std::fma(t230, t148, t35) + t43) / t148);
+    const Real t264 = t253 + t263;
+    const Real t265 = t57 * t264;
+    const Real t266 = t265 / t148;
+    const Real t267 = t255 - (t256 - t261) + (t132 - t261) + (t254 - (t255 - t244) + std::fma(std::fma(b, v_Mx, -t131), t9, std::fma(t131, t19, std::fma(t131, t9, -t132))));
+    const Real t268 = t256 + t267;
+    const Real t269 = t268 - t136;
+    const Real t270 = t258 - (t259 - t262) - (t25 + t262) + (t257 - (t258 - t247) - t31);
+    const Real t271 = t259 + t270;
+    const Real t272 = t271 + t33;
+    const Real t273 = -t266;
+    const Real t274 = t269 - t268;
+    const Real t275 = t272 - t271;
+    const Real t276 = t268 - (t269 - t274) - (t136 + t274) + (t267 - (t268 - t256) - std::fma(std::fma(b, v_My, -t135), t1, std::fma(t135, t8, std::fma(t135, t1, -t136))));
+    const Real t277 = t269 + t276;
+    const Real t278 = t277 - t134;
+    const Real t279 = t271 - (t272 - t275) + (t33 - t275) + (t270 - (t271 - t259) + t41);
+    const Real t280 = t272 + t279;
+    const Real t281 = t97 * t280;
+    const Real t282 = t281 * t53;
+    const Real t283 = t282 / t217;
+    const Real t284 = t273 + -(std::fma(t273, t222, std::fma(t273, t148, t265) + std::fma(std::fma(m, t56, std::fma(m, t54, -t57)), t264, std::fma(t57, t263 - (t264 - t253), std::fma(t57, t264, -t265)))) / t148);
+    const Real t285 = t284 * t1;
+    const Real t286 = t284 * t9;
+    const Real t287 = t278 - t277;
+    const Real t288 = -t283;
+    const Real t289 = t277 - (t278 - t287) - (t134 + t287) + (t276 - (t277 - t269) - std::fma(std::fma(b, v_mx, -t133), t9, std::fma(t133, t19, std::fma(t133, t9, -t134))));
+    const Real t290 = t278 + t289;
+    const Real t291 = t290 + t138;
+    const Real t292 = t291 - t290;
+    const Real t293 = t290 - (t291 - t292) + (t138 - t292) + (t289 - (t290 - t278) + std::fma(std::fma(b, v_my, -t137), t1, std::fma(t137, t8, std::fma(t137, t1, -t138))));
+    const Real t294 = t291 + t293;
+    const Real t295 = t294 + t24;
+    const Real t296 = t295 - t294;
+    const Real t297 = t294 - (t295 - t296) + (t24 - t296) + (t293 - (t294 - t291) + t30);
+    const Real t298 = t295 + t297;
+    const Real t299 = t298 - t32;
+    const Real t300 = t299 - t298;
+    const Real t301 = t298 - (t299 - t300) - (t32 + t300) + (t297 - (t298 - t295) - t40);
+    const Real t302 = t299 + t301;
+    const Real t303 = t302 - t25;
+    const Real t304 = t303 - t302;
+    const Real t305 = t302 - (t303 - t304) - (t25 + t304) + (t301 - (t302 - t299) - t31);
+    const Real t306 = t303 + t305;
+    const Real t307 = t306 + t33;
+    const Real t308 = t307 - t306;
+    const Real t309 = t306 - (t307 - t308) + (t33 - t308) + (t305 - (t306 - t303) + t41);
+    const Real t310 = t307 + t309;
+    const Real t311 = t63 * t310;
+    const Real t312 = t311 / t211;
+    const Real t313 = (t210 > Real(0) ? t288 : t312);
+    const Real t314 = t313 / t148;
+    const Real t315 = -t312;
+    const Real t316 = -t314;
+    const Real t317 = t314 + std::fma(t316, t222, std::fma(t316, t148, t313) + (t210 > Real(0) ? -(std::fma(t288, std::fma(t223, t212, std::fma(t148, t212, -t213)), std::fma(t288, t213, t282) + std::fma(std::fma(std::fma(std::fma(m, mu, -t96), t54, std::fma(t96, t56, std::fma(t96, t54, -t97))), t280, std::fma(t97, t279 - (t280 - t272), std::fma(t97, t280, -t281))), t53, std::fma(t281, t52 - (t53 - t50), std::fma(t281, t53, -t282)))) / t217) : std::fma(t315, std::fma(t66 - (t67 - t64), t148, std::fma(t67, t224, std::fma(t67, t148, -t149))), std::fma(t315, t149, t311) + std::fma(std::fma(std::fma(m, q_M, -t61), q_m, std::fma(t61, q_m, -t63)), t310, std::fma(t63, t309 - (t310 - t307), std::fma(t63, t310, -t311)))) / t211)) / t148;
+    const Real t318 = std::fma(t317, t1, t286);
+    const Real t319 = t318 / m;
+    const Real t320 = t317 * t146;
+    const Real t321 = t320 / t145;
+    const Real t322 = -t317;
+    const Real t323 = std::fma(t322, t9, t285);
+    const Real t324 = t323 / m;
+    const Real result0 = v_Mx;
+    const Real result1 = v_My;
+    const Real result2 = v_mx - t324;
+    const Real result3 = v_my - t319;
+    const Real result4 = w_M;
+    const Real result5 = w_m - t321;
+    if (!detail::finite(t164) || !detail::finite(t170) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && C_Mx != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t3 == Real(0) && t0 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
+        (std::fabs(t7) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && C_My != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && (t14 != Real(0) || (t12 == Real(0) && t0 != Real(0) && t13 != Real(0)))) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t9 != Real(0)) ||
+        (std::fabs(t22) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t23) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t24) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t25) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_My != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t33) < std::numeric_limits<Real>::min() && v_my != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t34) < std::numeric_limits<Real>::min() && v_My != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && v_my != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && m != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && eps != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t63) < std::numeric_limits<Real>::min() && t61 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t68) < std::numeric_limits<Real>::min() && t59 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t69) < std::numeric_limits<Real>::min() && t68 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && mu != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t72) < std::numeric_limits<Real>::min() && t71 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t73) < std::numeric_limits<Real>::min() && t71 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t74) < std::numeric_limits<Real>::min() && mu != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t75) < std::numeric_limits<Real>::min() && t74 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t76) < std::numeric_limits<Real>::min() && t74 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t77) < std::numeric_limits<Real>::min() && mu != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t78) < std::numeric_limits<Real>::min() && t77 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t79) < std::numeric_limits<Real>::min() && t77 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && mu != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t82) < std::numeric_limits<Real>::min() && t80 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && eps != Real(0) && mu != Real(0)) ||
+        (std::fabs(t84) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t86) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t87) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t89) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t90) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t92) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t93) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t95) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t96) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t107) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && t60 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t120 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t120 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && (t123 != Real(0) || (t70 == Real(0) && t62 != Real(0) && t113 != Real(0)))) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && (t124 != Real(0) || (t123 == Real(0) && q_M != Real(0) && t118 != Real(0)))) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && (t125 != Real(0) || (t124 == Real(0) && t62 != Real(0) && t119 != Real(0)))) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && (t126 != Real(0) || (t125 == Real(0) && t62 != Real(0) && t115 != Real(0)))) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && (t127 != Real(0) || (t126 == Real(0) && q_M != Real(0) && t116 != Real(0)))) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && (t128 != Real(0) || (t127 == Real(0) && t62 != Real(0) && t121 != Real(0)))) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && (t129 != Real(0) || (t128 == Real(0) && q_M != Real(0) && t122 != Real(0)))) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && q_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t133) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t133 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && t135 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t138) < std::numeric_limits<Real>::min() && t137 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t139) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t140) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && t140 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t143) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t144) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t145) < std::numeric_limits<Real>::min() && t144 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t149) < std::numeric_limits<Real>::min() && t67 != Real(0) && t148 != Real(0)) ||
+        (std::fabs(t150) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t151) < std::numeric_limits<Real>::min() && t139 != Real(0) && t147 != Real(0)) ||
+        (std::fabs(t152) < std::numeric_limits<Real>::min() && t139 != Real(0) && t148 != Real(0)) ||
+        (std::fabs(t153) < std::numeric_limits<Real>::min() && t139 != Real(0) && t146 != Real(0)) ||
+        (std::fabs(t154) < std::numeric_limits<Real>::min() && t141 != Real(0) && t148 != Real(0)) ||
+        (std::fabs(t155) < std::numeric_limits<Real>::min() && w_m != Real(0) && t147 != Real(0)) ||
+        (std::fabs(t156) < std::numeric_limits<Real>::min() && (t156 != Real(0) || (t151 == Real(0) && R_m != Real(0) && t155 != Real(0)))) ||
+        (std::fabs(t157) < std::numeric_limits<Real>::min() && (t157 != Real(0) || (t156 == Real(0) && v_Mx != Real(0) && C_My != Real(0)))) ||
+        (std::fabs(t158) < std::numeric_limits<Real>::min() && (t158 != Real(0) || (t157 == Real(0) && t26 != Real(0) && C_my != Real(0)))) ||
+        (std::fabs(t159) < std::numeric_limits<Real>::min() && (t159 != Real(0) || (t158 == Real(0) && t38 != Real(0) && C_Mx != Real(0)))) ||
+        (std::fabs(t160) < std::numeric_limits<Real>::min() && (t160 != Real(0) || (t159 == Real(0) && v_My != Real(0) && C_mx != Real(0)))) ||
+        (std::fabs(t161) < std::numeric_limits<Real>::min() && (t161 != Real(0) || (t160 == Real(0) && t27 != Real(0) && C_My != Real(0)))) ||
+        (std::fabs(t162) < std::numeric_limits<Real>::min() && (t162 != Real(0) || (t161 == Real(0) && v_mx != Real(0) && C_my != Real(0)))) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && (t163 != Real(0) || (t162 == Real(0) && v_my != Real(0) && C_Mx != Real(0)))) ||
+        (std::fabs(t164) < std::numeric_limits<Real>::min() && (t164 != Real(0) || (t163 == Real(0) && t39 != Real(0) && C_mx != Real(0)))) ||
+        (std::fabs(t165) < std::numeric_limits<Real>::min() && w_m != Real(0) && t146 != Real(0)) ||
+        (std::fabs(t166) < std::numeric_limits<Real>::min() && (t166 != Real(0) || (t153 == Real(0) && R_m != Real(0) && t165 != Real(0)))) ||
+        (std::fabs(t167) < std::numeric_limits<Real>::min() && (t167 != Real(0) || (t166 == Real(0) && v_Mx != Real(0) && t9 != Real(0)))) ||
+        (std::fabs(t168) < std::numeric_limits<Real>::min() && (t168 != Real(0) || (t167 == Real(0) && t38 != Real(0) && t1 != Real(0)))) ||
+        (std::fabs(t169) < std::numeric_limits<Real>::min() && (t169 != Real(0) || (t168 == Real(0) && t27 != Real(0) && t9 != Real(0)))) ||
+        (std::fabs(t170) < std::numeric_limits<Real>::min() && (t170 != Real(0) || (t169 == Real(0) && v_my != Real(0) && t1 != Real(0)))) ||
+        (std::fabs(t171) < std::numeric_limits<Real>::min() && t150 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t173) < std::numeric_limits<Real>::min() && t143 != Real(0) && t148 != Real(0)) ||
+        (std::fabs(t176) < std::numeric_limits<Real>::min() && t171 != Real(0) && t148 != Real(0)) ||
+        (std::fabs(t182) < std::numeric_limits<Real>::min() && t182 != Real(0)) ||
+        (std::fabs(t183) < std::numeric_limits<Real>::min() && q_m != Real(0) && t182 != Real(0)) ||
+        (std::fabs(t184) < std::numeric_limits<Real>::min() && t130 != Real(0) && t182 != Real(0)) ||
+        (std::fabs(t185) < std::numeric_limits<Real>::min() && (t185 != Real(0) || (t129 == Real(0) && q_M != Real(0) && t184 != Real(0)))) ||
+        (std::fabs(t186) < std::numeric_limits<Real>::min() && (t186 != Real(0) || (t185 == Real(0) && q_M != Real(0) && t100 != Real(0)))) ||
+        (std::fabs(t187) < std::numeric_limits<Real>::min() && (t187 != Real(0) || (t186 == Real(0) && t62 != Real(0) && t101 != Real(0)))) ||
+        (std::fabs(t188) < std::numeric_limits<Real>::min() && (t188 != Real(0) || (t187 == Real(0) && q_M != Real(0) && t106 != Real(0)))) ||
+        (std::fabs(t189) < std::numeric_limits<Real>::min() && (t189 != Real(0) || (t188 == Real(0) && t62 != Real(0) && t107 != Real(0)))) ||
+        (std::fabs(t190) < std::numeric_limits<Real>::min() && (t190 != Real(0) || (t189 == Real(0) && t62 != Real(0) && t103 != Real(0)))) ||
+        (std::fabs(t191) < std::numeric_limits<Real>::min() && (t191 != Real(0) || (t190 == Real(0) && q_M != Real(0) && t104 != Real(0)))) ||
+        (std::fabs(t192) < std::numeric_limits<Real>::min() && (t192 != Real(0) || (t191 == Real(0) && t62 != Real(0) && t109 != Real(0)))) ||
+        (std::fabs(t193) < std::numeric_limits<Real>::min() && (t193 != Real(0) || (t192 == Real(0) && q_M != Real(0) && t110 != Real(0)))) ||
+        (std::fabs(t194) < std::numeric_limits<Real>::min() && (t194 != Real(0) || (t193 == Real(0) && q_M != Real(0) && t183 != Real(0)))) ||
+        (std::fabs(t195) < std::numeric_limits<Real>::min() && (t195 != Real(0) || (t194 == Real(0) && q_M != Real(0) && t85 != Real(0)))) ||
+        (std::fabs(t196) < std::numeric_limits<Real>::min() && (t196 != Real(0) || (t195 == Real(0) && t62 != Real(0) && t86 != Real(0)))) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && (t197 != Real(0) || (t196 == Real(0) && q_M != Real(0) && t91 != Real(0)))) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && (t198 != Real(0) || (t197 == Real(0) && t62 != Real(0) && t92 != Real(0)))) ||
+        (std::fabs(t199) < std::numeric_limits<Real>::min() && (t199 != Real(0) || (t198 == Real(0) && t62 != Real(0) && t88 != Real(0)))) ||
+        (std::fabs(t200) < std::numeric_limits<Real>::min() && (t200 != Real(0) || (t199 == Real(0) && q_M != Real(0) && t89 != Real(0)))) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && (t201 != Real(0) || (t200 == Real(0) && t62 != Real(0) && t94 != Real(0)))) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && (t202 != Real(0) || (t201 == Real(0) && q_M != Real(0) && t95 != Real(0)))) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && (t203 != Real(0) || (t202 == Real(0) && q_M != Real(0) && t72 != Real(0)))) ||
+        (std::fabs(t204) < std::numeric_limits<Real>::min() && (t204 != Real(0) || (t203 == Real(0) && t62 != Real(0) && t73 != Real(0)))) ||
+        (std::fabs(t205) < std::numeric_limits<Real>::min() && (t205 != Real(0) || (t204 == Real(0) && q_M != Real(0) && t78 != Real(0)))) ||
+        (std::fabs(t206) < std::numeric_limits<Real>::min() && (t206 != Real(0) || (t205 == Real(0) && t62 != Real(0) && t79 != Real(0)))) ||
+        (std::fabs(t207) < std::numeric_limits<Real>::min() && (t207 != Real(0) || (t206 == Real(0) && t62 != Real(0) && t75 != Real(0)))) ||
+        (std::fabs(t208) < std::numeric_limits<Real>::min() && (t208 != Real(0) || (t207 == Real(0) && q_M != Real(0) && t76 != Real(0)))) ||
+        (std::fabs(t209) < std::numeric_limits<Real>::min() && (t209 != Real(0) || (t208 == Real(0) && t62 != Real(0) && t81 != Real(0)))) ||
+        (std::fabs(t210) < std::numeric_limits<Real>::min() && (t210 != Real(0) || (t209 == Real(0) && q_M != Real(0) && t82 != Real(0)))) ||
+        (std::fabs(t212) < std::numeric_limits<Real>::min() && t212 != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t148 != Real(0) && t212 != Real(0)) ||
+        (std::fabs(t218) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
+        (std::fabs(t219) < std::numeric_limits<Real>::min() && t23 != Real(0)) ||
+        (std::fabs(t220) < std::numeric_limits<Real>::min() && t34 != Real(0)) ||
+        (std::fabs(t221) < std::numeric_limits<Real>::min() && t35 != Real(0)) ||
+        (std::fabs(t265) < std::numeric_limits<Real>::min() && t57 != Real(0) && t264 != Real(0)) ||
+        (std::fabs(t266) < std::numeric_limits<Real>::min() && t265 != Real(0)) ||
+        (std::fabs(t281) < std::numeric_limits<Real>::min() && t97 != Real(0) && t280 != Real(0)) ||
+        (std::fabs(t282) < std::numeric_limits<Real>::min() && t281 != Real(0) && t53 != Real(0)) ||
+        (std::fabs(t283) < std::numeric_limits<Real>::min() && t282 != Real(0)) ||
+        (std::fabs(t285) < std::numeric_limits<Real>::min() && t284 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t286) < std::numeric_limits<Real>::min() && t284 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t311) < std::numeric_limits<Real>::min() && t63 != Real(0) && t310 != Real(0)) ||
+        (std::fabs(t312) < std::numeric_limits<Real>::min() && t311 != Real(0)) ||
+        (std::fabs(t314) < std::numeric_limits<Real>::min() && t313 != Real(0)) ||
+        (std::fabs(t318) < std::numeric_limits<Real>::min() && (t318 != Real(0) || (t286 == Real(0) && t317 != Real(0) && t1 != Real(0)))) ||
+        (std::fabs(t319) < std::numeric_limits<Real>::min() && t318 != Real(0)) ||
+        (std::fabs(t320) < std::numeric_limits<Real>::min() && t317 != Real(0) && t146 != Real(0)) ||
+        (std::fabs(t321) < std::numeric_limits<Real>::min() && t320 != Real(0)) ||
+        (std::fabs(t323) < std::numeric_limits<Real>::min() && (t323 != Real(0) || (t285 == Real(0) && t322 != Real(0) && t9 != Real(0)))) ||
+        (std::fabs(t324) < std::numeric_limits<Real>::min() && t323 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    out.w_M = result4;
+    out.w_m = result5;
+    return out;
+}
+
+// collide_rough(M, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with m = +infinity, with the
+// same guards and statuses, each output in its cheapest candidate form within its fast
+// bound (verification.md): 667 operations, of them 22 divisions and 3 square roots
+// (the accurate form: 1049, 33 and 4).
+// v_M[0] is computed in the form "limit of v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 4.09 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of v_My - (K_n*r_y + K_t*r_x)/M, fma, compensated let": at most 2.94 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
+// w_M is computed in the form "limit of w_M - K_t*d/(q_M*M*R_M), fma, compensated let": at most 4.46 ulps in double on 4200 samples.
+// w_m is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
+template <class Real>
+inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu, fast_t) noexcept
+{
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    const Real b = beta;
+    collide_rough_result<Real, 2> out{v_M, v_m, w_M, w_m, status::ok};
+    if (!(M > Real(0)) || !detail::finite(M)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(R_M > Real(0)) || !detail::finite(R_M) || !(R_m > Real(0)) || !detail::finite(R_m)) {
+        out.status = status::invalid_radius;
+        return out;
+    }
+    if (!(q_M > Real(0)) || !(q_M <= Real(0.6666666666666666)) || !(q_m > Real(0)) || !(q_m <= Real(0.6666666666666666))) {
+        out.status = status::invalid_inertia;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!(b >= Real(-1)) || !(b <= Real(1))) {
+        out.status = status::invalid_tangential_restitution;
+        return out;
+    }
+    if (!(mu >= Real(0))) {
+        out.status = status::invalid_friction;
+        return out;
+    }
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(w_M) || !detail::finite(w_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = -Real(2);
+    const Real t1 = C_Mx - C_mx;
+    const Real t2 = t1 - C_Mx;
+    const Real t3 = C_Mx * C_Mx;
+    const Real t4 = C_Mx * C_mx;
+    const Real t5 = std::fma(t0, t4, t3);
+    const Real t6 = C_mx * C_mx;
+    const Real t7 = t1 * t1;
+    const Real t8 = C_Mx - (t1 - t2) - (C_mx + t2);
+    const Real t9 = C_My - C_my;
+    const Real t10 = t9 - C_My;
+    const Real t11 = C_My * C_My;
+    const Real t12 = t5 + t11;
+    const Real t13 = C_My * C_my;
+    const Real t14 = std::fma(t0, t13, t12);
+    const Real t15 = C_my * C_my;
+    const Real t16 = t9 * t9;
+    const Real t17 = t7 + t16;
+    const Real t18 = t17 - t7;
+    const Real t19 = C_My - (t9 - t10) - (C_my + t10);
+    const Real t20 = t7 - (t17 - t18) + (t16 - t18) + (std::fma(t8, t1, std::fma(t1, t8, std::fma(t1, t1, -t7))) + std::fma(t19, t9, std::fma(t9, t19, std::fma(t9, t9, -t16))));
+    const Real t21 = t17 + t20;
+    const Real t22 = v_Mx * t1;
+    const Real t23 = v_mx * t1;
+    const Real t24 = v_Mx * t9;
+    const Real t25 = v_mx * t9;
+    const Real t26 = -v_Mx;
+    const Real t27 = -v_mx;
+    const Real t28 = std::fma(v_Mx, t8, std::fma(v_Mx, t1, -t22));
+    const Real t29 = std::fma(v_mx, t8, std::fma(v_mx, t1, -t23));
+    const Real t30 = std::fma(v_Mx, t19, std::fma(v_Mx, t9, -t24));
+    const Real t31 = std::fma(v_mx, t19, std::fma(v_mx, t9, -t25));
+    const Real t32 = v_My * t1;
+    const Real t33 = v_my * t1;
+    const Real t34 = v_My * t9;
+    const Real t35 = v_my * t9;
+    const Real t36 = t22 + t34;
+    const Real t37 = t36 - t22;
+    if (!(t17 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(-((v_Mx - v_mx) * t1) - (v_My - v_my) * t9 > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t38 = -v_My;
+    const Real t39 = -v_my;
+    const Real t40 = std::fma(v_My, t8, std::fma(v_My, t1, -t32));
+    const Real t41 = std::fma(v_my, t8, std::fma(v_my, t1, -t33));
+    const Real t42 = std::fma(v_My, t19, std::fma(v_My, t9, -t34));
+    const Real t43 = std::fma(v_my, t19, std::fma(v_my, t9, -t35));
+    const Real t44 = t22 - (t36 - t37) + (t34 - t37) + (t28 + t42);
+    const Real t45 = t36 + t44;
+    const Real t46 = t45 - t23;
+    const Real t47 = t46 - t45;
+    const Real t48 = t45 - (t46 - t47) - (t23 + t47) + (t44 - (t45 - t36) - t29);
+    const Real t49 = t46 + t48;
+    const Real t50 = t49 - t35;
+    const Real t51 = t50 - t49;
+    const Real t52 = t49 - (t50 - t51) - (t35 + t51) + (t48 - (t49 - t46) - t43);
+    const Real t53 = t50 + t52;
+    const Real t54 = Real(1) + eps;
+    const Real t55 = t54 - Real(1);
+    const Real t56 = Real(1) - (t54 - t55) + (eps - t55);
+    const Real t57 = M * t54;
+    const Real t58 = q_M * q_m;
+    const Real t59 = t58 * eps;
+    const Real t60 = q_m * eps;
+    const Real t61 = M * q_M;
+    const Real t62 = -q_M;
+    const Real t63 = -q_m;
+    const Real t64 = t61 * q_m;
+    const Real t65 = t58 + q_m;
+    const Real t66 = t65 - t58;
+    const Real t67 = t58 - (t65 - t66) + (q_m - t66) + std::fma(q_M, q_m, -t58);
+    const Real t68 = t65 + t67;
+    const Real t69 = t59 * mu;
+    const Real t70 = t69 * v_Mx;
+    const Real t71 = t70 * C_Mx;
+    const Real t72 = mu * v_Mx;
+    const Real t73 = t72 * C_Mx;
+    const Real t74 = t72 * C_mx;
+    const Real t75 = mu * v_mx;
+    const Real t76 = t75 * C_Mx;
+    const Real t77 = t75 * C_mx;
+    const Real t78 = mu * v_My;
+    const Real t79 = t78 * C_My;
+    const Real t80 = t78 * C_my;
+    const Real t81 = mu * v_my;
+    const Real t82 = t81 * C_My;
+    const Real t83 = t81 * C_my;
+    const Real t84 = eps * mu;
+    const Real t85 = t84 * v_Mx;
+    const Real t86 = t85 * C_Mx;
+    const Real t87 = t85 * C_mx;
+    const Real t88 = t84 * v_mx;
+    const Real t89 = t88 * C_Mx;
+    const Real t90 = t88 * C_mx;
+    const Real t91 = t84 * v_My;
+    const Real t92 = t91 * C_My;
+    const Real t93 = t91 * C_my;
+    const Real t94 = t84 * v_my;
+    const Real t95 = t94 * C_My;
+    const Real t96 = t94 * C_my;
+    const Real t97 = M * mu;
+    const Real t98 = t97 * t54;
+    const Real t99 = q_m * mu;
+    const Real t100 = t99 * v_Mx;
+    const Real t101 = t100 * C_Mx;
+    const Real t102 = t100 * C_mx;
+    const Real t103 = t99 * v_mx;
+    const Real t104 = t103 * C_Mx;
+    const Real t105 = t103 * C_mx;
+    const Real t106 = t99 * v_My;
+    const Real t107 = t106 * C_My;
+    const Real t108 = t106 * C_my;
+    const Real t109 = t99 * v_my;
+    const Real t110 = t109 * C_My;
+    const Real t111 = t109 * C_my;
+    const Real t112 = t60 * mu;
+    const Real t113 = t112 * v_Mx;
+    const Real t114 = t113 * C_mx;
+    const Real t115 = t112 * v_mx;
+    const Real t116 = t115 * C_Mx;
+    const Real t117 = t115 * C_mx;
+    const Real t118 = t112 * v_My;
+    const Real t119 = t118 * C_My;
+    const Real t120 = t118 * C_my;
+    const Real t121 = t112 * v_my;
+    const Real t122 = t121 * C_My;
+    const Real t123 = t121 * C_my;
+    const Real t124 = std::fma(t62, t114, t71);
+    const Real t125 = std::fma(q_M, t119, t124);
+    const Real t126 = std::fma(t62, t120, t125);
+    const Real t127 = std::fma(t62, t116, t126);
+    const Real t128 = std::fma(q_M, t117, t127);
+    const Real t129 = std::fma(t62, t122, t128);
+    const Real t130 = std::fma(q_M, t123, t129);
+    const Real t131 = q_m * b;
+    const Real t132 = b * v_Mx;
+    const Real t133 = t132 * t9;
+    const Real t134 = b * v_mx;
+    const Real t135 = t134 * t9;
+    const Real t136 = b * v_My;
+    const Real t137 = t136 * t1;
+    const Real t138 = b * v_my;
+    const Real t139 = t138 * t1;
+    const Real t140 = R_M * w_M;
+    const Real t141 = M * R_M;
+    const Real t142 = t141 * q_M;
+    const Real t143 = std::sqrt(t17);
+    const Real t144 = std::sqrt(t14 + t6 + t15);
+    const Real t145 = std::sqrt(t21);
+    const Real t146 = t68 * t145;
+    const Real t147 = R_M * b;
+    const Real t148 = t147 * w_M;
+    const Real t149 = t140 * t144;
+    const Real t150 = std::fma(R_M, w_M, -t140);
+    const Real t151 = t140 * t145;
+    const Real t152 = t140 * t143;
+    const Real t153 = std::fma(-t145, t145, t21) + (t20 - (t21 - t17));
+    const Real t154 = t145 + t145;
+    const Real t155 = t148 * t145;
+    const Real t156 = std::fma(t140, t145, -t151);
+    const Real t157 = t155 + t151;
+    const Real t158 = t157 - t155;
+    const Real t159 = w_m * t144;
+    const Real t160 = w_m * t143;
+    const Real t161 = std::fma(R_m, t159, t149);
+    const Real t162 = std::fma(v_Mx, C_My, t161);
+    const Real t163 = std::fma(t26, C_my, t162);
+    const Real t164 = std::fma(t38, C_Mx, t163);
+    const Real t165 = std::fma(v_My, C_mx, t164);
+    const Real t166 = std::fma(t27, C_My, t165);
+    const Real t167 = std::fma(v_mx, C_my, t166);
+    const Real t168 = std::fma(v_my, C_Mx, t167);
+    const Real t169 = std::fma(t39, C_mx, t168);
+    const Real t170 = R_m * b;
+    const Real t171 = std::fma(R_m, t160, t152);
+    const Real t172 = std::fma(v_Mx, t9, t171);
+    const Real t173 = std::fma(t38, t1, t172);
+    const Real t174 = std::fma(t27, t9, t173);
+    const Real t175 = std::fma(v_my, t1, t174);
+    const Real t176 = R_m * w_m;
+    const Real t177 = t176 * t145;
+    const Real t178 = t151 + t177;
+    const Real t179 = t178 - t151;
+    const Real t180 = t170 * w_m;
+    const Real t181 = t180 * t145;
+    const Real t182 = std::fabs(t169);
+    const Real t183 = q_m * t182;
+    const Real t184 = t131 * t182;
+    const Real t185 = std::fma(q_M, t184, t130);
+    const Real t186 = std::fma(q_M, t101, t185);
+    const Real t187 = std::fma(t62, t102, t186);
+    const Real t188 = std::fma(q_M, t107, t187);
+    const Real t189 = std::fma(t62, t108, t188);
+    const Real t190 = std::fma(t62, t104, t189);
+    const Real t191 = std::fma(q_M, t105, t190);
+    const Real t192 = std::fma(t62, t110, t191);
+    const Real t193 = std::fma(q_M, t111, t192);
+    const Real t194 = std::fma(q_M, t183, t193);
+    const Real t195 = std::fma(q_m, t86, t194);
+    const Real t196 = std::fma(t63, t87, t195);
+    const Real t197 = std::fma(q_m, t92, t196);
+    const Real t198 = std::fma(t63, t93, t197);
+    const Real t199 = std::fma(t63, t89, t198);
+    const Real t200 = std::fma(q_m, t90, t199);
+    const Real t201 = std::fma(t63, t95, t200);
+    const Real t202 = std::fma(q_m, t96, t201);
+    const Real t203 = std::fma(q_m, t73, t202);
+    const Real t204 = std::fma(t63, t74, t203);
+    const Real t205 = std::fma(q_m, t79, t204);
+    const Real t206 = std::fma(t63, t80, t205);
+    const Real t207 = std::fma(t63, t76, t206);
+    const Real t208 = std::fma(q_m, t77, t207);
+    const Real t209 = std::fma(t63, t82, t208);
+    const Real t210 = std::fma(q_m, t83, t209);
+    const Real t211 = (t210 > Real(0) ? Real(1) : t146);
+    const Real t212 = (t210 > Real(0) ? t154 : Real(1));
+    const Real t213 = (t210 > Real(0) ? Real(1) : t154);
+    const Real t214 = std::fabs(t175);
+    const Real t215 = t145 * t214;
+    const Real t216 = std::fma(R_m, w_m, -t176);
+    const Real t217 = std::fma(t176, t145, -t177);
+    const Real t218 = (t210 > Real(0) ? t215 : Real(1));
+    if (!(std::fabs(t145) >= detail::smallest_divisor<Real>) || !(std::fabs(t145) <= std::numeric_limits<Real>::max()) || !(std::fabs(t154) >= detail::smallest_divisor<Real>) || !(std::fabs(t154) <= std::numeric_limits<Real>::max()) || !(std::fabs(t212) >= detail::smallest_divisor<Real>) || !(std::fabs(t212) <= std::numeric_limits<Real>::max()) || !(std::fabs(t213) >= detail::smallest_divisor<Real>) || !(std::fabs(t213) <= std::numeric_limits<Real>::max()) || !(std::fabs(t218) >= detail::smallest_divisor<Real>) || !(std::fabs(t218) <= std::numeric_limits<Real>::max()) || !(std::fabs(t211) >= detail::smallest_divisor<Real>) || !(std::fabs(t211) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(t142) >= detail::smallest_divisor<Real>) || !(std::fabs(t142) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t219 = t22 / t145;
+    const Real t220 = t23 / t145;
+    const Real t221 = t34 / t145;
+    const Real t222 = t35 / t145;
+    const Real t223 = t153 / t154;
+    const Real t224 = t153 / t212;
+    const Real t225 = t153 / t213;
+    const Real t226 = -t219;
+    const Real t227 = t219 + t221;
+    const Real t228 = t227 - t219;
+    const Real t229 = -t220;
+    const Real t230 = -t221;
+    const Real t231 = -t222;
+    const Real t232 = t155 - (t157 - t158) + (t151 - t158) + (std::fma(std::fma(std::fma(R_M, b, -t147), w_M, std::fma(t147, w_M, -t148)), t145, std::fma(t148, t225, std::fma(t148, t145, -t155))) + std::fma(t150, t145, std::fma(t140, t225, t156)));
+    const Real t233 = t157 + t232;
+    const Real t234 = t233 + t181;
+    const Real t235 = t151 - (t178 - t179) + (t177 - t179) + (std::fma(t150, t145, std::fma(t140, t224, t156)) + std::fma(t216, t145, std::fma(t176, t224, t217)));
+    const Real t236 = t178 + t235;
+    const Real t237 = t236 + t24;
+    const Real t238 = t234 - t233;
+    const Real t239 = t237 - t236;
+    const Real t240 = t219 - (t227 - t228) + (t221 - t228) + (std::fma(t226, t223, std::fma(t226, t145, t22) + t28) / t145 + std::fma(t230, t223, std::fma(t230, t145, t34) + t42) / t145);
+    const Real t241 = t227 + t240;
+    const Real t242 = t241 - t220;
+    const Real t243 = t233 - (t234 - t238) + (t181 - t238) + (t232 - (t233 - t157) + std::fma(std::fma(std::fma(R_m, b, -t170), w_m, std::fma(t170, w_m, -t180)), t145, std::fma(t180, t225, std::fma(t180, t145, -t181))));
+    const Real t244 = t234 + t243;
+    const Real t245 = t244 + t177;
+    const Real t246 = t236 - (t237 - t239) + (t24 - t239) + (t235 - (t236 - t178) + t30);
+    const Real t247 = t237 + t246;
+    const Real t248 = t247 - t32;
+    const Real t249 = t242 - t241;
+    const Real t250 = t245 - t244;
+    const Real t251 = t248 - t247;
+    const Real t252 = t241 - (t242 - t249) - (t220 + t249) + (t240 - (t241 - t227) - std::fma(t229, t223, std::fma(t229, t145, t23) + t29) / t145);
+    const Real t253 = t242 + t252;
+    const Real t254 = t253 - t222;
+    const Real t255 = t244 - (t245 - t250) + (t177 - t250) + (t243 - (t244 - t234) + std::fma(t216, t145, std::fma(t176, t225, t217)));
+    const Real t256 = t245 + t255;
+    const Real t257 = t256 + t133;
+    const Real t258 = t247 - (t248 - t251) - (t32 + t251) + (t246 - (t247 - t237) - t40);
+    const Real t259 = t248 + t258;
+    const Real t260 = t259 - t25;
+    const Real t261 = t254 - t253;
+    const Real t262 = t257 - t256;
+    const Real t263 = t260 - t259;
+    const Real t264 = t253 - (t254 - t261) - (t222 + t261) + (t252 - (t253 - t242) - std::fma(t231, t223, std::fma(t231, t145, t35) + t43) / t145);
+    const Real t265 = t254 + t264;
+    const Real t266 = t57 * t265;
+    const Real t267 = t266 / t145;
+    const Real t268 = t256 - (t257 - t262) + (t133 - t262) + (t255 - (t256 - t245) + std::fma(std::fma(b, v_Mx, -t132), t9, std::fma(t132, t19, std::fma(t132, t9, -t133))));
+    const Real t269 = t257 + t268;
+    const Real t270 = t269 - t137;
+    const Real t271 = t259 - (t260 - t263) - (t25 + t263) + (t258 - (t259 - t248) - t31);
+    const Real t272 = t260 + t271;
+    const Real t273 = t272 + t33;
+    const Real t274 = -t267;
+    const Real t275 = t270 - t269;
+    const Real t276 = t273 - t272;
+    const Real t277 = t269 - (t270 - t275) - (t137 + t275) + (t268 - (t269 - t257) - std::fma(std::fma(b, v_My, -t136), t1, std::fma(t136, t8, std::fma(t136, t1, -t137))));
+    const Real t278 = t270 + t277;
+    const Real t279 = t278 - t135;
+    const Real t280 = t272 - (t273 - t276) + (t33 - t276) + (t271 - (t272 - t260) + t41);
+    const Real t281 = t273 + t280;
+    const Real t282 = t98 * t281;
+    const Real t283 = t282 * t53;
+    const Real t284 = t283 / t218;
+    const Real t285 = t274 + -(std::fma(t274, t223, std::fma(t274, t145, t266) + std::fma(std::fma(M, t56, std::fma(M, t54, -t57)), t265, std::fma(t57, t264 - (t265 - t254), std::fma(t57, t265, -t266)))) / t145);
+    const Real t286 = t285 * t1;
+    const Real t287 = t285 * t9;
+    const Real t288 = t279 - t278;
+    const Real t289 = -t284;
+    const Real t290 = t278 - (t279 - t288) - (t135 + t288) + (t277 - (t278 - t270) - std::fma(std::fma(b, v_mx, -t134), t9, std::fma(t134, t19, std::fma(t134, t9, -t135))));
+    const Real t291 = t279 + t290;
+    const Real t292 = t291 + t139;
+    const Real t293 = t292 - t291;
+    const Real t294 = t291 - (t292 - t293) + (t139 - t293) + (t290 - (t291 - t279) + std::fma(std::fma(b, v_my, -t138), t1, std::fma(t138, t8, std::fma(t138, t1, -t139))));
+    const Real t295 = t292 + t294;
+    const Real t296 = t295 + t24;
+    const Real t297 = t296 - t295;
+    const Real t298 = t295 - (t296 - t297) + (t24 - t297) + (t294 - (t295 - t292) + t30);
+    const Real t299 = t296 + t298;
+    const Real t300 = t299 - t32;
+    const Real t301 = t300 - t299;
+    const Real t302 = t299 - (t300 - t301) - (t32 + t301) + (t298 - (t299 - t296) - t40);
+    const Real t303 = t300 + t302;
+    const Real t304 = t303 - t25;
+    const Real t305 = t304 - t303;
+    const Real t306 = t303 - (t304 - t305) - (t25 + t305) + (t302 - (t303 - t300) - t31);
+    const Real t307 = t304 + t306;
+    const Real t308 = t307 + t33;
+    const Real t309 = t308 - t307;
+    const Real t310 = t307 - (t308 - t309) + (t33 - t309) + (t306 - (t307 - t304) + t41);
+    const Real t311 = t308 + t310;
+    const Real t312 = t64 * t311;
+    const Real t313 = t312 / t211;
+    const Real t314 = (t210 > Real(0) ? t289 : t313);
+    const Real t315 = t314 / t145;
+    const Real t316 = -t313;
+    const Real t317 = -t315;
+    const Real t318 = t315 + std::fma(t317, t223, std::fma(t317, t145, t314) + (t210 > Real(0) ? -(std::fma(t289, std::fma(t224, t214, std::fma(t145, t214, -t215)), std::fma(t289, t215, t283) + std::fma(std::fma(std::fma(std::fma(M, mu, -t97), t54, std::fma(t97, t56, std::fma(t97, t54, -t98))), t281, std::fma(t98, t280 - (t281 - t273), std::fma(t98, t281, -t282))), t53, std::fma(t282, t52 - (t53 - t50), std::fma(t282, t53, -t283)))) / t218) : std::fma(t316, std::fma(t67 - (t68 - t65), t145, std::fma(t68, t225, std::fma(t68, t145, -t146))), std::fma(t316, t146, t312) + std::fma(std::fma(std::fma(M, q_M, -t61), q_m, std::fma(t61, q_m, -t64)), t311, std::fma(t64, t310 - (t311 - t308), std::fma(t64, t311, -t312)))) / t211)) / t145;
+    const Real t319 = std::fma(t318, t1, t287);
+    const Real t320 = t319 / M;
+    const Real t321 = t318 * t143;
+    const Real t322 = t321 / t142;
+    const Real t323 = -t318;
+    const Real t324 = std::fma(t323, t9, t286);
+    const Real t325 = t324 / M;
+    const Real result0 = v_Mx + t325;
+    const Real result1 = v_My + t320;
+    const Real result2 = v_mx;
+    const Real result3 = v_my;
+    const Real result4 = w_M - t322;
+    const Real result5 = w_m;
+    if (!detail::finite(t169) || !detail::finite(t175) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && C_Mx != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t3 == Real(0) && t0 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
+        (std::fabs(t7) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && C_My != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && (t14 != Real(0) || (t12 == Real(0) && t0 != Real(0) && t13 != Real(0)))) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t9 != Real(0)) ||
+        (std::fabs(t22) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t23) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t24) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t25) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_My != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t33) < std::numeric_limits<Real>::min() && v_my != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t34) < std::numeric_limits<Real>::min() && v_My != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && v_my != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && M != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && eps != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t64) < std::numeric_limits<Real>::min() && t61 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t69) < std::numeric_limits<Real>::min() && t59 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t72) < std::numeric_limits<Real>::min() && mu != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t73) < std::numeric_limits<Real>::min() && t72 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t74) < std::numeric_limits<Real>::min() && t72 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t75) < std::numeric_limits<Real>::min() && mu != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t76) < std::numeric_limits<Real>::min() && t75 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t77) < std::numeric_limits<Real>::min() && t75 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t78) < std::numeric_limits<Real>::min() && mu != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t79) < std::numeric_limits<Real>::min() && t78 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && t78 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t81) < std::numeric_limits<Real>::min() && mu != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t82) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t84) < std::numeric_limits<Real>::min() && eps != Real(0) && mu != Real(0)) ||
+        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t87) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t88) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t89) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t90) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t91) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t92) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t93) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t95) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t96) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && t97 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t107) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t60 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && t113 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && (t124 != Real(0) || (t71 == Real(0) && t62 != Real(0) && t114 != Real(0)))) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && (t125 != Real(0) || (t124 == Real(0) && q_M != Real(0) && t119 != Real(0)))) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && (t126 != Real(0) || (t125 == Real(0) && t62 != Real(0) && t120 != Real(0)))) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && (t127 != Real(0) || (t126 == Real(0) && t62 != Real(0) && t116 != Real(0)))) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && (t128 != Real(0) || (t127 == Real(0) && q_M != Real(0) && t117 != Real(0)))) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && (t129 != Real(0) || (t128 == Real(0) && t62 != Real(0) && t122 != Real(0)))) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && (t130 != Real(0) || (t129 == Real(0) && q_M != Real(0) && t123 != Real(0)))) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && q_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t132) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t133) < std::numeric_limits<Real>::min() && t132 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && t134 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && t136 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t138) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t139) < std::numeric_limits<Real>::min() && t138 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t140) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
+        (std::fabs(t142) < std::numeric_limits<Real>::min() && t141 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t146) < std::numeric_limits<Real>::min() && t68 != Real(0) && t145 != Real(0)) ||
+        (std::fabs(t147) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t148) < std::numeric_limits<Real>::min() && t147 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t149) < std::numeric_limits<Real>::min() && t140 != Real(0) && t144 != Real(0)) ||
+        (std::fabs(t151) < std::numeric_limits<Real>::min() && t140 != Real(0) && t145 != Real(0)) ||
+        (std::fabs(t152) < std::numeric_limits<Real>::min() && t140 != Real(0) && t143 != Real(0)) ||
+        (std::fabs(t155) < std::numeric_limits<Real>::min() && t148 != Real(0) && t145 != Real(0)) ||
+        (std::fabs(t159) < std::numeric_limits<Real>::min() && w_m != Real(0) && t144 != Real(0)) ||
+        (std::fabs(t160) < std::numeric_limits<Real>::min() && w_m != Real(0) && t143 != Real(0)) ||
+        (std::fabs(t161) < std::numeric_limits<Real>::min() && (t161 != Real(0) || (t149 == Real(0) && R_m != Real(0) && t159 != Real(0)))) ||
+        (std::fabs(t162) < std::numeric_limits<Real>::min() && (t162 != Real(0) || (t161 == Real(0) && v_Mx != Real(0) && C_My != Real(0)))) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && (t163 != Real(0) || (t162 == Real(0) && t26 != Real(0) && C_my != Real(0)))) ||
+        (std::fabs(t164) < std::numeric_limits<Real>::min() && (t164 != Real(0) || (t163 == Real(0) && t38 != Real(0) && C_Mx != Real(0)))) ||
+        (std::fabs(t165) < std::numeric_limits<Real>::min() && (t165 != Real(0) || (t164 == Real(0) && v_My != Real(0) && C_mx != Real(0)))) ||
+        (std::fabs(t166) < std::numeric_limits<Real>::min() && (t166 != Real(0) || (t165 == Real(0) && t27 != Real(0) && C_My != Real(0)))) ||
+        (std::fabs(t167) < std::numeric_limits<Real>::min() && (t167 != Real(0) || (t166 == Real(0) && v_mx != Real(0) && C_my != Real(0)))) ||
+        (std::fabs(t168) < std::numeric_limits<Real>::min() && (t168 != Real(0) || (t167 == Real(0) && v_my != Real(0) && C_Mx != Real(0)))) ||
+        (std::fabs(t169) < std::numeric_limits<Real>::min() && (t169 != Real(0) || (t168 == Real(0) && t39 != Real(0) && C_mx != Real(0)))) ||
+        (std::fabs(t170) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t171) < std::numeric_limits<Real>::min() && (t171 != Real(0) || (t152 == Real(0) && R_m != Real(0) && t160 != Real(0)))) ||
+        (std::fabs(t172) < std::numeric_limits<Real>::min() && (t172 != Real(0) || (t171 == Real(0) && v_Mx != Real(0) && t9 != Real(0)))) ||
+        (std::fabs(t173) < std::numeric_limits<Real>::min() && (t173 != Real(0) || (t172 == Real(0) && t38 != Real(0) && t1 != Real(0)))) ||
+        (std::fabs(t174) < std::numeric_limits<Real>::min() && (t174 != Real(0) || (t173 == Real(0) && t27 != Real(0) && t9 != Real(0)))) ||
+        (std::fabs(t175) < std::numeric_limits<Real>::min() && (t175 != Real(0) || (t174 == Real(0) && v_my != Real(0) && t1 != Real(0)))) ||
+        (std::fabs(t176) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t177) < std::numeric_limits<Real>::min() && t176 != Real(0) && t145 != Real(0)) ||
+        (std::fabs(t180) < std::numeric_limits<Real>::min() && t170 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t181) < std::numeric_limits<Real>::min() && t180 != Real(0) && t145 != Real(0)) ||
+        (std::fabs(t182) < std::numeric_limits<Real>::min() && t182 != Real(0)) ||
+        (std::fabs(t183) < std::numeric_limits<Real>::min() && q_m != Real(0) && t182 != Real(0)) ||
+        (std::fabs(t184) < std::numeric_limits<Real>::min() && t131 != Real(0) && t182 != Real(0)) ||
+        (std::fabs(t185) < std::numeric_limits<Real>::min() && (t185 != Real(0) || (t130 == Real(0) && q_M != Real(0) && t184 != Real(0)))) ||
+        (std::fabs(t186) < std::numeric_limits<Real>::min() && (t186 != Real(0) || (t185 == Real(0) && q_M != Real(0) && t101 != Real(0)))) ||
+        (std::fabs(t187) < std::numeric_limits<Real>::min() && (t187 != Real(0) || (t186 == Real(0) && t62 != Real(0) && t102 != Real(0)))) ||
+        (std::fabs(t188) < std::numeric_limits<Real>::min() && (t188 != Real(0) || (t187 == Real(0) && q_M != Real(0) && t107 != Real(0)))) ||
+        (std::fabs(t189) < std::numeric_limits<Real>::min() && (t189 != Real(0) || (t188 == Real(0) && t62 != Real(0) && t108 != Real(0)))) ||
+        (std::fabs(t190) < std::numeric_limits<Real>::min() && (t190 != Real(0) || (t189 == Real(0) && t62 != Real(0) && t104 != Real(0)))) ||
+        (std::fabs(t191) < std::numeric_limits<Real>::min() && (t191 != Real(0) || (t190 == Real(0) && q_M != Real(0) && t105 != Real(0)))) ||
+        (std::fabs(t192) < std::numeric_limits<Real>::min() && (t192 != Real(0) || (t191 == Real(0) && t62 != Real(0) && t110 != Real(0)))) ||
+        (std::fabs(t193) < std::numeric_limits<Real>::min() && (t193 != Real(0) || (t192 == Real(0) && q_M != Real(0) && t111 != Real(0)))) ||
+        (std::fabs(t194) < std::numeric_limits<Real>::min() && (t194 != Real(0) || (t193 == Real(0) && q_M != Real(0) && t183 != Real(0)))) ||
+        (std::fabs(t195) < std::numeric_limits<Real>::min() && (t195 != Real(0) || (t194 == Real(0) && q_m != Real(0) && t86 != Real(0)))) ||
+        (std::fabs(t196) < std::numeric_limits<Real>::min() && (t196 != Real(0) || (t195 == Real(0) && t63 != Real(0) && t87 != Real(0)))) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && (t197 != Real(0) || (t196 == Real(0) && q_m != Real(0) && t92 != Real(0)))) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && (t198 != Real(0) || (t197 == Real(0) && t63 != Real(0) && t93 != Real(0)))) ||
+        (std::fabs(t199) < std::numeric_limits<Real>::min() && (t199 != Real(0) || (t198 == Real(0) && t63 != Real(0) && t89 != Real(0)))) ||
+        (std::fabs(t200) < std::numeric_limits<Real>::min() && (t200 != Real(0) || (t199 == Real(0) && q_m != Real(0) && t90 != Real(0)))) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && (t201 != Real(0) || (t200 == Real(0) && t63 != Real(0) && t95 != Real(0)))) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && (t202 != Real(0) || (t201 == Real(0) && q_m != Real(0) && t96 != Real(0)))) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && (t203 != Real(0) || (t202 == Real(0) && q_m != Real(0) && t73 != Real(0)))) ||
+        (std::fabs(t204) < std::numeric_limits<Real>::min() && (t204 != Real(0) || (t203 == Real(0) && t63 != Real(0) && t74 != Real(0)))) ||
+        (std::fabs(t205) < std::numeric_limits<Real>::min() && (t205 != Real(0) || (t204 == Real(0) && q_m != Real(0) && t79 != Real(0)))) ||
+        (std::fabs(t206) < std::numeric_limits<Real>::min() && (t206 != Real(0) || (t205 == Real(0) && t63 != Real(0) && t80 != Real(0)))) ||
+        (std::fabs(t207) < std::numeric_limits<Real>::min() && (t207 != Real(0) || (t206 == Real(0) && t63 != Real(0) && t76 != Real(0)))) ||
+        (std::fabs(t208) < std::numeric_limits<Real>::min() && (t208 != Real(0) || (t207 == Real(0) && q_m != Real(0) && t77 != Real(0)))) ||
+        (std::fabs(t209) < std::numeric_limits<Real>::min() && (t209 != Real(0) || (t208 == Real(0) && t63 != Real(0) && t82 != Real(0)))) ||
+        (std::fabs(t210) < std::numeric_limits<Real>::min() && (t210 != Real(0) || (t209 == Real(0) && q_m != Real(0) && t83 != Real(0)))) ||
+        (std::fabs(t214) < std::numeric_limits<Real>::min() && t214 != Real(0)) ||
+        (std::fabs(t215) < std::numeric_limits<Real>::min() && t145 != Real(0) && t214 != Real(0)) ||
+        (std::fabs(t219) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
+        (std::fabs(t220) < std::numeric_limits<Real>::min() && t23 != Real(0)) ||
+        (std::fabs(t221) < std::numeric_limits<Real>::min() && t34 != Real(0)) ||
+        (std::fabs(t222) < std::numeric_limits<Real>::min() && t35 != Real(0)) ||
+        (std::fabs(t266) < std::numeric_limits<Real>::min() && t57 != Real(0) && t265 != Real(0)) ||
+        (std::fabs(t267) < std::numeric_limits<Real>::min() && t266 != Real(0)) ||
+        (std::fabs(t282) < std::numeric_limits<Real>::min() && t98 != Real(0) && t281 != Real(0)) ||
+        (std::fabs(t283) < std::numeric_limits<Real>::min() && t282 != Real(0) && t53 != Real(0)) ||
+        (std::fabs(t284) < std::numeric_limits<Real>::min() && t283 != Real(0)) ||
+        (std::fabs(t286) < std::numeric_limits<Real>::min() && t285 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t287) < std::numeric_limits<Real>::min() && t285 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t312) < std::numeric_limits<Real>::min() && t64 != Real(0) && t311 != Real(0)) ||
+        (std::fabs(t313) < std::numeric_limits<Real>::min() && t312 != Real(0)) ||
+        (std::fabs(t315) < std::numeric_limits<Real>::min() && t314 != Real(0)) ||
+        (std::fabs(t319) < std::numeric_limits<Real>::min() && (t319 != Real(0) || (t287 == Real(0) && t318 != Real(0) && t1 != Real(0)))) ||
+        (std::fabs(t320) < std::numeric_limits<Real>::min() && t319 != Real(0)) ||
+        (std::fabs(t321) < std::numeric_limits<Real>::min() && t318 != Real(0) && t143 != Real(0)) ||
+        (std::fabs(t322) < std::numeric_limits<Real>::min() && t321 != Real(0)) ||
+        (std::fabs(t324) < std::numeric_limits<Real>::min() && (t324 != Real(0) || (t286 == Real(0) && t323 != Real(0) && t9 != Real(0)))) ||
+        (std::fabs(t325) < std::numeric_limits<Real>::min() && t324 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    out.w_M = result4;
+    out.w_m = result5;
+    return out;
+}
+
+} // namespace detail
+
+/// collide_rough(M, m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough, with the
+/// same guards and statuses, each output in its cheapest candidate form within its fast
+/// bound (verification.md): 631 operations, of them 25 divisions and 2 square roots
+/// (the accurate form: 996, 39 and 2).
+/// v_M[0] is computed in the form "v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 3.67 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My - (K_n*r_y + K_t*r_x)/M, fma, compensated let": at most 2.78 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + (K_n*r_x - K_t*r_y)/m, fma, compensated let": at most 3.13 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + (K_n*r_y + K_t*r_x)/m, fma, compensated let": at most 2.55 ulps in double on 4200 samples.
+/// w_M is computed in the form "w_M - K_t*d/(q_M*M*R_M), fma, compensated let": at most 6.17 ulps in double on 4200 samples.
+/// w_m is computed in the form "w_m - K_t*d/(q_m*m*R_m), fma, compensated let": at most 5.33 ulps in double on 4200 samples.
+template <class Real>
+inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu, fast_t) noexcept
+{
+    if (M == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_rough_fixed_M<Real>(m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, fast_t{});
+    }
+    if (m == std::numeric_limits<Real>::infinity()) {
+        return detail::collide_rough_fixed_m<Real>(M, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, fast_t{});
+    }
+    const Real C_Mx = C_M[0];
+    const Real C_My = C_M[1];
+    const Real C_mx = C_m[0];
+    const Real C_my = C_m[1];
+    const Real v_Mx = v_M[0];
+    const Real v_My = v_M[1];
+    const Real v_mx = v_m[0];
+    const Real v_my = v_m[1];
+    const Real b = beta;
+    collide_rough_result<Real, 2> out{v_M, v_m, w_M, w_m, status::ok};
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
+        out.status = status::invalid_mass;
+        return out;
+    }
+    if (!(R_M > Real(0)) || !detail::finite(R_M) || !(R_m > Real(0)) || !detail::finite(R_m)) {
+        out.status = status::invalid_radius;
+        return out;
+    }
+    if (!(q_M > Real(0)) || !(q_M <= Real(0.6666666666666666)) || !(q_m > Real(0)) || !(q_m <= Real(0.6666666666666666))) {
+        out.status = status::invalid_inertia;
+        return out;
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        out.status = status::invalid_restitution;
+        return out;
+    }
+    if (!(b >= Real(-1)) || !(b <= Real(1))) {
+        out.status = status::invalid_tangential_restitution;
+        return out;
+    }
+    if (!(mu >= Real(0))) {
+        out.status = status::invalid_friction;
+        return out;
+    }
+    if (!detail::finite(C_Mx) || !detail::finite(C_My) || !detail::finite(C_mx) || !detail::finite(C_my) || !detail::finite(v_Mx) || !detail::finite(v_My) || !detail::finite(v_mx) || !detail::finite(v_my) || !detail::finite(w_M) || !detail::finite(w_m)) {
+        out.status = status::non_finite;
+        return out;
+    }
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 - C_Mx;
+    const Real t2 = t0 * t0;
+    const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t4 = C_My - C_my;
+    const Real t5 = t4 - C_My;
+    const Real t6 = t4 * t4;
+    const Real t7 = t2 + t6;
+    const Real t8 = t7 - t2;
+    const Real t9 = C_My - (t4 - t5) - (C_my + t5);
+    const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
+    const Real t11 = t7 + t10;
+    const Real t12 = v_Mx - v_mx;
+    const Real t13 = t12 * t0;
+    const Real t14 = v_Mx * t0;
+    const Real t15 = v_mx * t0;
+    const Real t16 = v_Mx * t4;
+    const Real t17 = v_mx * t4;
+    const Real t18 = -v_mx;
+    const Real t19 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+    const Real t20 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+    const Real t21 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t16));
+    const Real t22 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t17));
+    const Real t23 = v_My - v_my;
+    const Real t24 = v_My * t0;
+    const Real t25 = v_my * t0;
+    const Real t26 = v_My * t4;
+    const Real t27 = v_my * t4;
+    const Real t28 = std::fma(t23, t4, t13);
+    const Real t29 = t14 + t26;
+    const Real t30 = t29 - t14;
+    if (!(t7 > Real(0))) {
+        out.status = status::coincident_centres;
+        return out;
+    }
+    if (!(-t13 - t23 * t4 > Real(0))) {
+        out.status = status::separating;
+        return out;
+    }
+    const Real t31 = -v_My;
+    const Real t32 = -t23;
+    const Real t33 = std::fma(v_My, t3, std::fma(v_My, t0, -t24));
+    const Real t34 = std::fma(v_my, t3, std::fma(v_my, t0, -t25));
+    const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t26));
+    const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t27));
+    const Real t37 = t14 - (t29 - t30) + (t26 - t30) + (t19 + t35);
+    const Real t38 = t29 + t37;
+    const Real t39 = t38 - t15;
+    const Real t40 = t39 - t38;
+    const Real t41 = t38 - (t39 - t40) - (t15 + t40) + (t37 - (t38 - t29) - t20);
+    const Real t42 = t39 + t41;
+    const Real t43 = t42 - t27;
+    const Real t44 = t43 - t42;
+    const Real t45 = t42 - (t43 - t44) - (t27 + t44) + (t41 - (t42 - t39) - t36);
+    const Real t46 = t43 + t45;
+    const Real t47 = M * m;
+    const Real t48 = M + m;
+    const Real t49 = t48 - M;
+    const Real t50 = std::fma(M, m, -t47);
+    const Real t51 = M - (t48 - t49) + (m - t49);
+    const Real t52 = Real(1) + eps;
+    const Real t53 = t47 * t52;
+    const Real t54 = t52 - Real(1);
+    const Real t55 = Real(1) - (t52 - t54) + (eps - t54);
+    const Real t56 = q_M * q_m;
+    const Real t57 = M * q_M;
+    const Real t58 = m * q_M;
+    const Real t59 = m * q_m;
+    const Real t60 = t47 * q_M;
+    const Real t61 = Real(1) + q_m;
+    const Real t62 = Real(1) + q_M;
+    const Real t63 = q_m * t62;
+    const Real t64 = t60 * q_m;
+    const Real t65 = t57 * q_m;
+    const Real t66 = t58 * q_m;
+    const Real t67 = t57 * t61;
+    const Real t68 = std::fma(m, t63, t67);
+    const Real t69 = t52 * t68;
+    const Real t70 = t69 * t28;
+    const Real t71 = std::fma(M, q_M, -t57);
+    const Real t72 = t57 + t65;
+    const Real t73 = t72 - t57;
+    const Real t74 = t57 - (t72 - t73) + (t65 - t73) + (t71 + std::fma(t71, q_m, std::fma(t57, q_m, -t65)));
+    const Real t75 = t72 + t74;
+    const Real t76 = t75 + t66;
+    const Real t77 = t76 - t75;
+    const Real t78 = t75 - (t76 - t77) + (t66 - t77) + (t74 - (t75 - t72) + std::fma(std::fma(m, q_M, -t58), q_m, std::fma(t58, q_m, -t66)));
+    const Real t79 = t76 + t78;
+    const Real t80 = t79 + t59;
+    const Real t81 = t80 - t79;
+    const Real t82 = t79 - (t80 - t81) + (t59 - t81) + (t78 - (t79 - t76) + std::fma(m, q_m, -t59));
+    const Real t83 = t80 + t82;
+    const Real t84 = Real(1) + b;
+    const Real t85 = b * v_Mx;
+    const Real t86 = t85 * t4;
+    const Real t87 = b * v_mx;
+    const Real t88 = t87 * t4;
+    const Real t89 = b * v_My;
+    const Real t90 = t89 * t0;
+    const Real t91 = b * v_my;
+    const Real t92 = t91 * t0;
+    const Real t93 = t56 * t84;
+    const Real t94 = t93 * t48;
+    const Real t95 = R_M * w_M;
+    const Real t96 = M * R_M;
+    const Real t97 = t96 * q_M;
+    const Real t98 = R_M * b;
+    const Real t99 = t98 * w_M;
+    const Real t100 = std::fma(R_M, w_M, -t95);
+    const Real t101 = std::fma(R_m, w_m, t95);
+    const Real t102 = m * R_m;
+    const Real t103 = t102 * q_m;
+    const Real t104 = std::sqrt(t7);
+    const Real t105 = std::sqrt(t11);
+    const Real t106 = t48 * t105;
+    const Real t107 = t83 * t105;
+    const Real t108 = R_m * b;
+    const Real t109 = t95 * t105;
+    const Real t110 = t95 * t104;
+    const Real t111 = t99 * t105;
+    const Real t112 = R_m * w_m;
+    const Real t113 = w_m * t104;
+    const Real t114 = std::fma(R_m, t113, t110);
+    const Real t115 = std::fma(v_Mx, t4, t114);
+    const Real t116 = std::fma(t31, t0, t115);
+    const Real t117 = std::fma(t18, t4, t116);
+    const Real t118 = std::fma(v_my, t0, t117);
+    const Real t119 = t108 * w_m;
+    const Real t120 = t101 * t104;
+    const Real t121 = std::fma(t12, t4, t120);
+    const Real t122 = std::fma(t32, t0, t121);
+    const Real t123 = std::fma(-t105, t105, t11) + (t10 - (t11 - t7));
+    const Real t124 = t105 + t105;
+    const Real t125 = t112 * t105;
+    const Real t126 = t119 * t105;
+    const Real t127 = std::fma(t48, t105, -t106);
+    const Real t128 = std::fma(t95, t105, -t109);
+    const Real t129 = t109 + t125;
+    const Real t130 = t129 - t109;
+    const Real t131 = t111 + t109;
+    const Real t132 = t131 - t111;
+    const Real t133 = std::fma(R_m, w_m, -t112);
+    const Real t134 = std::fabs(t118);
+    const Real t135 = t106 * t134;
+    const Real t136 = std::fabs(t122);
+    const Real t137 = t94 * t136;
+    const Real t138 = std::fma(t112, t105, -t125);
+    const Real t139 = std::fma(mu, t70, t137);
+    const Real t140 = t47 * mu;
+    const Real t141 = t140 * t52;
+    const Real t142 = (t139 > Real(0) ? Real(1) : t107);
+    const Real t143 = (t139 > Real(0) ? t124 : Real(1));
+    const Real t144 = (t139 > Real(0) ? Real(1) : t124);
+    const Real t145 = (t139 > Real(0) ? t135 : Real(1));
+    if (!(std::fabs(t105) >= detail::smallest_divisor<Real>) || !(std::fabs(t105) <= std::numeric_limits<Real>::max()) || !(std::fabs(t124) >= detail::smallest_divisor<Real>) || !(std::fabs(t124) <= std::numeric_limits<Real>::max()) || !(std::fabs(t143) >= detail::smallest_divisor<Real>) || !(std::fabs(t143) <= std::numeric_limits<Real>::max()) || !(std::fabs(t144) >= detail::smallest_divisor<Real>) || !(std::fabs(t144) <= std::numeric_limits<Real>::max()) || !(std::fabs(t106) >= detail::smallest_divisor<Real>) || !(std::fabs(t106) <= std::numeric_limits<Real>::max()) || !(std::fabs(t145) >= detail::smallest_divisor<Real>) || !(std::fabs(t145) <= std::numeric_limits<Real>::max()) || !(std::fabs(t142) >= detail::smallest_divisor<Real>) || !(std::fabs(t142) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max()) || !(std::fabs(t97) >= detail::smallest_divisor<Real>) || !(std::fabs(t97) <= std::numeric_limits<Real>::max()) || !(std::fabs(t103) >= detail::smallest_divisor<Real>) || !(std::fabs(t103) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t146 = t14 / t105;
+    const Real t147 = t15 / t105;
+    const Real t148 = t26 / t105;
+    const Real t149 = t27 / t105;
+    const Real t150 = t123 / t124;
+    const Real t151 = t123 / t143;
+    const Real t152 = t123 / t144;
+    const Real t153 = -t146;
+    const Real t154 = t146 + t148;
+    const Real t155 = t154 - t146;
+    const Real t156 = -t147;
+    const Real t157 = -t148;
+    const Real t158 = -t149;
+    const Real t159 = t109 - (t129 - t130) + (t125 - t130) + (std::fma(t100, t105, std::fma(t95, t151, t128)) + std::fma(t133, t105, std::fma(t112, t151, t138)));
+    const Real t160 = t129 + t159;
+    const Real t161 = t160 + t16;
+    const Real t162 = t111 - (t131 - t132) + (t109 - t132) + (std::fma(std::fma(std::fma(R_M, b, -t98), w_M, std::fma(t98, w_M, -t99)), t105, std::fma(t99, t152, std::fma(t99, t105, -t111))) + std::fma(t100, t105, std::fma(t95, t152, t128)));
+    const Real t163 = t131 + t162;
+    const Real t164 = t163 + t126;
+    const Real t165 = t161 - t160;
+    const Real t166 = t164 - t163;
+    const Real t167 = t146 - (t154 - t155) + (t148 - t155) + (std::fma(t153, t150, std::fma(t153, t105, t14) + t19) / t105 + std::fma(t157, t150, std::fma(t157, t105, t26) + t35) / t105);
+    const Real t168 = t154 + t167;
+    const Real t169 = t168 - t147;
+    const Real t170 = t160 - (t161 - t165) + (t16 - t165) + (t159 - (t160 - t129) + t21);
+    const Real t171 = t161 + t170;
+    const Real t172 = t171 - t24;
+    const Real t173 = t163 - (t164 - t166) + (t126 - t166) + (t162 - (t163 - t131) + std::fma(std::fma(std::fma(R_m, b, -t108), w_m, std::fma(t108, w_m, -t119)), t105, std::fma(t119, t152, std::fma(t119, t105, -t126))));
+    const Real t174 = t164 + t173;
+    const Real t175 = t174 + t125;
+    const Real t176 = t169 - t168;
+    const Real t177 = t172 - t171;
+    const Real t178 = t175 - t174;
+    const Real t179 = t168 - (t169 - t176) - (t147 + t176) + (t167 - (t168 - t154) - std::fma(t156, t150, std::fma(t156, t105, t15) + t20) / t105);
+    const Real t180 = t169 + t179;
+    const Real t181 = t180 - t149;
+    const Real t182 = t171 - (t172 - t177) - (t24 + t177) + (t170 - (t171 - t161) - t33);
+    const Real t183 = t172 + t182;
+    const Real t184 = t183 - t17;
+    const Real t185 = t174 - (t175 - t178) + (t125 - t178) + (t173 - (t174 - t164) + std::fma(t133, t105, std::fma(t112, t152, t138)));
+    const Real t186 = t175 + t185;
+    const Real t187 = t186 + t86;
+    const Real t188 = t181 - t180;
+    const Real t189 = t184 - t183;
+    const Real t190 = t187 - t186;
+    const Real t191 = t180 - (t181 - t188) - (t149 + t188) + (t179 - (t180 - t169) - std::fma(t158, t150, std::fma(t158, t105, t27) + t36) / t105);
+    const Real t192 = t181 + t191;
+    const Real t193 = t53 * t192;
+    const Real t194 = t193 / t106;
+    const Real t195 = t183 - (t184 - t189) - (t17 + t189) + (t182 - (t183 - t172) - t22);
+    const Real t196 = t184 + t195;
+    const Real t197 = t196 + t25;
+    const Real t198 = t186 - (t187 - t190) + (t86 - t190) + (t185 - (t186 - t175) + std::fma(std::fma(b, v_Mx, -t85), t4, std::fma(t85, t9, std::fma(t85, t4, -t86))));
+    const Real t199 = t187 + t198;
+    const Real t200 = t199 - t90;
+    const Real t201 = -t194;
+    const Real t202 = t197 - t196;
+    const Real t203 = t200 - t199;
+    const Real t204 = t196 - (t197 - t202) + (t25 - t202) + (t195 - (t196 - t184) + t34);
+    const Real t205 = t197 + t204;
+    const Real t206 = t141 * t205;
+    const Real t207 = t206 * t46;
+    const Real t208 = t207 / t145;
+    const Real t209 = t199 - (t200 - t203) - (t90 + t203) + (t198 - (t199 - t187) - std::fma(std::fma(b, v_My, -t89), t0, std::fma(t89, t3, std::fma(t89, t0, -t90))));
+    const Real t210 = t200 + t209;
+    const Real t211 = t210 - t88;
+    const Real t212 = t201 + -(std::fma(t201, std::fma(t51, t105, std::fma(t48, t150, t127)), std::fma(t201, t106, t193) + std::fma(std::fma(t50, t52, std::fma(t47, t55, std::fma(t47, t52, -t53))), t192, std::fma(t53, t191 - (t192 - t181), std::fma(t53, t192, -t193)))) / t106);
+    const Real t213 = t212 * t0;
+    const Real t214 = t212 * t4;
+    const Real t215 = -t208;
+    const Real t216 = t211 - t210;
+    const Real t217 = t210 - (t211 - t216) - (t88 + t216) + (t209 - (t210 - t200) - std::fma(std::fma(b, v_mx, -t87), t4, std::fma(t87, t9, std::fma(t87, t4, -t88))));
+    const Real t218 = t211 + t217;
+    const Real t219 = t218 + t92;
+    const Real t220 = t219 - t218;
+    const Real t221 = t218 - (t219 - t220) + (t92 - t220) + (t217 - (t218 - t211) + std::fma(std::fma(b, v_my, -t91), t0, std::fma(t91, t3, std::fma(t91, t0, -t92))));
+    const Real t222 = t219 + t221;
+    const Real t223 = t222 + t16;
+    const Real t224 = t223 - t222;
+    const Real t225 = t222 - (t223 - t224) + (t16 - t224) + (t221 - (t222 - t219) + t21);
+    const Real t226 = t223 + t225;
+    const Real t227 = t226 - t24;
+    const Real t228 = t227 - t226;
+    const Real t229 = t226 - (t227 - t228) - (t24 + t228) + (t225 - (t226 - t223) - t33);
+    const Real t230 = t227 + t229;
+    const Real t231 = t230 - t17;
+    const Real t232 = t231 - t230;
+    const Real t233 = t230 - (t231 - t232) - (t17 + t232) + (t229 - (t230 - t227) - t22);
+    const Real t234 = t231 + t233;
+    const Real t235 = t234 + t25;
+    const Real t236 = t235 - t234;
+    const Real t237 = t234 - (t235 - t236) + (t25 - t236) + (t233 - (t234 - t231) + t34);
+    const Real t238 = t235 + t237;
+    const Real t239 = t64 * t238;
+    const Real t240 = t239 / t142;
+    const Real t241 = (t139 > Real(0) ? t215 : t240);
+    const Real t242 = t241 / t105;
+    const Real t243 = -t240;
+    const Real t244 = -t242;
+    const Real t245 = t242 + std::fma(t244, t150, std::fma(t244, t105, t241) + (t139 > Real(0) ? -(std::fma(t215, std::fma(std::fma(t51, t105, std::fma(t48, t151, t127)), t134, std::fma(t106, t134, -t135)), std::fma(t215, t135, t207) + std::fma(std::fma(std::fma(std::fma(t50, mu, std::fma(t47, mu, -t140)), t52, std::fma(t140, t55, std::fma(t140, t52, -t141))), t205, std::fma(t141, t204 - (t205 - t197), std::fma(t141, t205, -t206))), t46, std::fma(t206, t45 - (t46 - t43), std::fma(t206, t46, -t207)))) / t145) : std::fma(t243, std::fma(t82 - (t83 - t80), t105, std::fma(t83, t152, std::fma(t83, t105, -t107))), std::fma(t243, t107, t239) + std::fma(std::fma(std::fma(t50, q_M, std::fma(t47, q_M, -t60)), q_m, std::fma(t60, q_m, -t64)), t238, std::fma(t64, t237 - (t238 - t235), std::fma(t64, t238, -t239)))) / t142)) / t105;
+    const Real t246 = std::fma(t245, t0, t214);
+    const Real t247 = t246 / M;
+    const Real t248 = t246 / m;
+    const Real t249 = t245 * t104;
+    const Real t250 = t249 / t97;
+    const Real t251 = t249 / t103;
+    const Real t252 = -t245;
+    const Real t253 = std::fma(t252, t4, t213);
+    const Real t254 = t253 / M;
+    const Real t255 = t253 / m;
+    const Real result0 = v_Mx + t254;
+    const Real result1 = v_My + t247;
+    const Real result2 = v_mx - t255;
+    const Real result3 = v_my - t248;
+    const Real result4 = w_M - t250;
+    const Real result5 = w_m - t251;
+    if (!detail::finite(t118) || !detail::finite(t122) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t4 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t12 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t24) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t25) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && (t28 != Real(0) || (t13 == Real(0) && t23 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t47) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && t47 != Real(0) && t52 != Real(0)) ||
+        (std::fabs(t56) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && m != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && t47 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t63) < std::numeric_limits<Real>::min() && q_m != Real(0) && t62 != Real(0)) ||
+        (std::fabs(t64) < std::numeric_limits<Real>::min() && t60 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t65) < std::numeric_limits<Real>::min() && t57 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t66) < std::numeric_limits<Real>::min() && t58 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t67) < std::numeric_limits<Real>::min() && t57 != Real(0) && t61 != Real(0)) ||
+        (std::fabs(t68) < std::numeric_limits<Real>::min() && (t68 != Real(0) || (t67 == Real(0) && m != Real(0) && t63 != Real(0)))) ||
+        (std::fabs(t69) < std::numeric_limits<Real>::min() && t52 != Real(0) && t68 != Real(0)) ||
+        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && t28 != Real(0)) ||
+        (std::fabs(t85) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t87) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t89) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t90) < std::numeric_limits<Real>::min() && t89 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t91) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t92) < std::numeric_limits<Real>::min() && t91 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t93) < std::numeric_limits<Real>::min() && t56 != Real(0) && t84 != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && t48 != Real(0)) ||
+        (std::fabs(t95) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t96) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && t98 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && (t101 != Real(0) || (t95 == Real(0) && R_m != Real(0) && w_m != Real(0)))) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t48 != Real(0) && t105 != Real(0)) ||
+        (std::fabs(t107) < std::numeric_limits<Real>::min() && t83 != Real(0) && t105 != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && t95 != Real(0) && t105 != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t95 != Real(0) && t104 != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && t99 != Real(0) && t105 != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && w_m != Real(0) && t104 != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && (t114 != Real(0) || (t110 == Real(0) && R_m != Real(0) && t113 != Real(0)))) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && (t115 != Real(0) || (t114 == Real(0) && v_Mx != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && (t116 != Real(0) || (t115 == Real(0) && t31 != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && (t117 != Real(0) || (t116 == Real(0) && t18 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && (t118 != Real(0) || (t117 == Real(0) && v_my != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t108 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t101 != Real(0) && t104 != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && (t121 != Real(0) || (t120 == Real(0) && t12 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && (t122 != Real(0) || (t121 == Real(0) && t32 != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t112 != Real(0) && t105 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t119 != Real(0) && t105 != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t134 != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && t106 != Real(0) && t134 != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && t136 != Real(0)) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && t94 != Real(0) && t136 != Real(0)) ||
+        (std::fabs(t139) < std::numeric_limits<Real>::min() && (t139 != Real(0) || (t137 == Real(0) && mu != Real(0) && t70 != Real(0)))) ||
+        (std::fabs(t140) < std::numeric_limits<Real>::min() && t47 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && t140 != Real(0) && t52 != Real(0)) ||
+        (std::fabs(t146) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t147) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t148) < std::numeric_limits<Real>::min() && t26 != Real(0)) ||
+        (std::fabs(t149) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
+        (std::fabs(t193) < std::numeric_limits<Real>::min() && t53 != Real(0) && t192 != Real(0)) ||
+        (std::fabs(t194) < std::numeric_limits<Real>::min() && t193 != Real(0)) ||
+        (std::fabs(t206) < std::numeric_limits<Real>::min() && t141 != Real(0) && t205 != Real(0)) ||
+        (std::fabs(t207) < std::numeric_limits<Real>::min() && t206 != Real(0) && t46 != Real(0)) ||
+        (std::fabs(t208) < std::numeric_limits<Real>::min() && t207 != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t212 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t214) < std::numeric_limits<Real>::min() && t212 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t239) < std::numeric_limits<Real>::min() && t64 != Real(0) && t238 != Real(0)) ||
+        (std::fabs(t240) < std::numeric_limits<Real>::min() && t239 != Real(0)) ||
+        (std::fabs(t242) < std::numeric_limits<Real>::min() && t241 != Real(0)) ||
+        (std::fabs(t246) < std::numeric_limits<Real>::min() && (t246 != Real(0) || (t214 == Real(0) && t245 != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t247) < std::numeric_limits<Real>::min() && t246 != Real(0)) ||
+        (std::fabs(t248) < std::numeric_limits<Real>::min() && t246 != Real(0)) ||
+        (std::fabs(t249) < std::numeric_limits<Real>::min() && t245 != Real(0) && t104 != Real(0)) ||
+        (std::fabs(t250) < std::numeric_limits<Real>::min() && t249 != Real(0)) ||
+        (std::fabs(t251) < std::numeric_limits<Real>::min() && t249 != Real(0)) ||
+        (std::fabs(t253) < std::numeric_limits<Real>::min() && (t253 != Real(0) || (t213 == Real(0) && t252 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t254) < std::numeric_limits<Real>::min() && t253 != Real(0)) ||
+        (std::fabs(t255) < std::numeric_limits<Real>::min() && t253 != Real(0))) {
+        out.status = status::underflow;
+        return out;
+    }
+    out.v_M = {result0, result1};
+    out.v_m = {result2, result3};
+    out.w_M = result4;
+    out.w_m = result5;
+    return out;
+}
+
+namespace detail {
+
+// The range of collide_rough_fast_batch_2d's inputs within which its arithmetic stays in the normal range: where
+// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
+// normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
+// the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
+// by Impact from the program, operation by operation, bounding each value not 0 by powers
+// of 2, 2^lo <= |v| <= 2^hi, and by the power of 2 it is a multiple of, 2^q (a number of
+// at least 2^lo is a multiple of its ulp, 2^(lo - digits + 1)): a product adds them; a sum,
+// difference or fused multiply-add is exactly a multiple of its terms' finest q, and so,
+// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
+// bounds crosswise, a square root halves them, atan2(y, x) lies within
+// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
+// quadruple long double): k = -1, -1, 452, 420; where it is -1, the loop tests the least magnitude of the values.
+template <class Real>
+constexpr int collide_rough_fast_batch_2d_k = input_k<Real>(-1, -1, 452, 420);
+
+// The loop of collide_rough_batch in 2D, without branches; inlined where it is called, so that a
+// block's call runs one pass of 8 pairs.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE void collide_rough_fast_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < count; ++i) {
+        // The status, as the scalar kernel decides it: the first guard that fails.
+        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
+        impact::status outcome = status::ok;
+        {
+            std::int64_t fails = !((((detail::zero_if_finite(C_Mx_[i], C_My_[i]) + detail::zero_if_finite(C_mx_[i], C_my_[i])) + (detail::zero_if_finite(v_Mx_[i], v_My_[i]) + detail::zero_if_finite(v_mx_[i], v_my_[i]))) + detail::zero_if_finite(w_M_[i], w_m_[i])) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
+            fails = !(mu_[i] >= Real(0));
+            outcome = detail::blend(fails, status::invalid_friction, outcome);
+            fails = !(b_[i] >= Real(-1));
+            fails |= !(b_[i] <= Real(1));
+            outcome = detail::blend(fails, status::invalid_tangential_restitution, outcome);
+            fails = !(eps_[i] >= Real(0));
+            fails |= !(eps_[i] <= Real(1));
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
+            fails = !(q_M_[i] > Real(0));
+            fails |= !(q_M_[i] <= Real(0.6666666666666666));
+            fails |= !(q_m_[i] > Real(0));
+            fails |= !(q_m_[i] <= Real(0.6666666666666666));
+            outcome = detail::blend(fails, status::invalid_inertia, outcome);
+            fails = !(R_M_[i] > Real(0));
+            fails |= !(R_m_[i] > Real(0));
+            fails |= !(detail::zero_if_finite(R_M_[i], R_m_[i]) == Real(0));
+            outcome = detail::blend(fails, status::invalid_radius, outcome);
+            fails = !(M_[i] > Real(0));
+            fails |= !(m_[i] > Real(0));
+            fails |= !(detail::zero_if_finite(M_[i], m_[i]) == Real(0));
+            outcome = detail::blend(fails, status::invalid_mass, outcome);
+            const std::int64_t admitted = outcome == status::ok;
+            impact::status condition = status::ok;
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t2 = t0 * t0;
+            const Real t4 = C_My_[i] - C_my_[i];
+            const Real t6 = t4 * t4;
+            const Real t7 = t2 + t6;
+            const Real t12 = v_Mx_[i] - v_mx_[i];
+            const Real t13 = t12 * t0;
+            const Real t22 = v_My_[i] - v_my_[i];
+            fails = !(-t13 - t22 * t4 > Real(0));
+            condition = detail::blend(fails, status::separating, condition);
+            fails = !(t7 > Real(0));
+            condition = detail::blend(fails, status::coincident_centres, condition);
+            outcome = detail::blend(admitted, condition, outcome);
+        }
+        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
+        outcome = detail::blend((M_[i] == std::numeric_limits<Real>::infinity()) | (m_[i] == std::numeric_limits<Real>::infinity()), status::underflow, outcome);
+        const std::int64_t resolved = outcome == status::ok;
+        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real R_M = R_M_[i];
+        const Real R_m = R_m_[i];
+        const Real q_M = q_M_[i];
+        const Real q_m = q_m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real w_M = w_M_[i];
+        const Real w_m = w_m_[i];
+        const Real eps = eps_[i];
+        const Real b = b_[i];
+        const Real mu = mu_[i];
+        const Real t0 = C_Mx - C_mx;
+        const Real t1 = t0 - C_Mx;
+        const Real t2 = t0 * t0;
+        const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
+        const Real t4 = C_My - C_my;
+        const Real t5 = t4 - C_My;
+        const Real t6 = t4 * t4;
+        const Real t7 = t2 + t6;
+        const Real t8 = t7 - t2;
+        const Real t9 = C_My - (t4 - t5) - (C_my + t5);
+        const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
+        const Real t11 = t7 + t10;
+        const Real t12 = v_Mx - v_mx;
+        const Real t13 = t12 * t0;
+        const Real t14 = v_Mx * t0;
+        const Real t15 = v_mx * t0;
+        const Real t16 = v_Mx * t4;
+        const Real t17 = v_mx * t4;
+        const Real t18 = -v_mx;
+        const Real t19 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+        const Real t20 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+        const Real t21 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t16));
+        const Real t22 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t17));
+        const Real t23 = v_My - v_my;
+        const Real t24 = v_My * t0;
+        const Real t25 = v_my * t0;
+        const Real t26 = v_My * t4;
+        const Real t27 = v_my * t4;
+        const Real t28 = std::fma(t23, t4, t13);
+        const Real t29 = t14 + t26;
+        const Real t30 = t29 - t14;
+        const Real t31 = -v_My;
+        const Real t32 = -t23;
+        const Real t33 = std::fma(v_My, t3, std::fma(v_My, t0, -t24));
+        const Real t34 = std::fma(v_my, t3, std::fma(v_my, t0, -t25));
+        const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t26));
+        const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t27));
+        const Real t37 = t14 - (t29 - t30) + (t26 - t30) + (t19 + t35);
+        const Real t38 = t29 + t37;
+        const Real t39 = t38 - t15;
+        const Real t40 = t39 - t38;
+        const Real t41 = t38 - (t39 - t40) - (t15 + t40) + (t37 - (t38 - t29) - t20);
+        const Real t42 = t39 + t41;
+        const Real t43 = t42 - t27;
+        const Real t44 = t43 - t42;
+        const Real t45 = t42 - (t43 - t44) - (t27 + t44) + (t41 - (t42 - t39) - t36);
+        const Real t46 = t43 + t45;
+        const Real t47 = M * m;
+        const Real t48 = M + m;
+        const Real t49 = t48 - M;
+        const Real t50 = std::fma(M, m, -t47);
+        const Real t51 = M - (t48 - t49) + (m - t49);
+        const Real t52 = Real(1) + eps;
+        const Real t53 = t47 * t52;
+        const Real t54 = t52 - Real(1);
+        const Real t55 = Real(1) - (t52 - t54) + (eps - t54);
+        const Real t56 = q_M * q_m;
+        const Real t57 = M * q_M;
+        const Real t58 = m * q_M;
+        const Real t59 = m * q_m;
+        const Real t60 = t47 * q_M;
+        const Real t61 = Real(1) + q_m;
+        const Real t62 = Real(1) + q_M;
+        const Real t63 = q_m * t62;
+        const Real t64 = t60 * q_m;
+        const Real t65 = t57 * q_m;
+        const Real t66 = t58 * q_m;
+        const Real t67 = t57 * t61;
+        const Real t68 = std::fma(m, t63, t67);
+        const Real t69 = t52 * t68;
+        const Real t70 = t69 * t28;
+        const Real t71 = std::fma(M, q_M, -t57);
+        const Real t72 = t57 + t65;
+        const Real t73 = t72 - t57;
+        const Real t74 = t57 - (t72 - t73) + (t65 - t73) + (t71 + std::fma(t71, q_m, std::fma(t57, q_m, -t65)));
+        const Real t75 = t72 + t74;
+        const Real t76 = t75 + t66;
+        const Real t77 = t76 - t75;
+        const Real t78 = t75 - (t76 - t77) + (t66 - t77) + (t74 - (t75 - t72) + std::fma(std::fma(m, q_M, -t58), q_m, std::fma(t58, q_m, -t66)));
+        const Real t79 = t76 + t78;
+        const Real t80 = t79 + t59;
+        const Real t81 = t80 - t79;
+        const Real t82 = t79 - (t80 - t81) + (t59 - t81) + (t78 - (t79 - t76) + std::fma(m, q_m, -t59));
+        const Real t83 = t80 + t82;
+        const Real t84 = Real(1) + b;
+        const Real t85 = b * v_Mx;
+        const Real t86 = t85 * t4;
+        const Real t87 = b * v_mx;
+        const Real t88 = t87 * t4;
+        const Real t89 = b * v_My;
+        const Real t90 = t89 * t0;
+        const Real t91 = b * v_my;
+        const Real t92 = t91 * t0;
+        const Real t93 = t56 * t84;
+        const Real t94 = t93 * t48;
+        const Real t95 = R_M * w_M;
+        const Real t96 = M * R_M;
+        const Real t97 = t96 * q_M;
+        const Real t98 = R_M * b;
+        const Real t99 = t98 * w_M;
+        const Real t100 = std::fma(R_M, w_M, -t95);
+        const Real t101 = std::fma(R_m, w_m, t95);
+        const Real t102 = m * R_m;
+        const Real t103 = t102 * q_m;
+        const Real t104 = std::sqrt(t7);
+        const Real t105 = std::sqrt(t11);
+        const Real t106 = t48 * t105;
+        const Real t107 = t83 * t105;
+        const Real t108 = R_m * b;
+        const Real t109 = t95 * t105;
+        const Real t110 = t95 * t104;
+        const Real t111 = t99 * t105;
+        const Real t112 = R_m * w_m;
+        const Real t113 = w_m * t104;
+        const Real t114 = std::fma(R_m, t113, t110);
+        const Real t115 = std::fma(v_Mx, t4, t114);
+        const Real t116 = std::fma(t31, t0, t115);
+        const Real t117 = std::fma(t18, t4, t116);
+        const Real t118 = std::fma(v_my, t0, t117);
+        const Real t119 = t108 * w_m;
+        const Real t120 = t101 * t104;
+        const Real t121 = std::fma(t12, t4, t120);
+        const Real t122 = std::fma(t32, t0, t121);
+        const Real t123 = std::fma(-t105, t105, t11) + (t10 - (t11 - t7));
+        const Real t124 = t105 + t105;
+        const Real t125 = t112 * t105;
+        const Real t126 = t119 * t105;
+        const Real t127 = std::fma(t48, t105, -t106);
+        const Real t128 = std::fma(t95, t105, -t109);
+        const Real t129 = t109 + t125;
+        const Real t130 = t129 - t109;
+        const Real t131 = t111 + t109;
+        const Real t132 = t131 - t111;
+        const Real t133 = std::fma(R_m, w_m, -t112);
+        const Real t134 = std::fabs(t118);
+        const Real t135 = t106 * t134;
+        const Real t136 = std::fabs(t122);
+        const Real t137 = t94 * t136;
+        const Real t138 = std::fma(t112, t105, -t125);
+        const Real t139 = std::fma(mu, t70, t137);
+        const Real t140 = t47 * mu;
+        const Real t141 = t140 * t52;
+        const Real t142 = detail::blend(t139 > Real(0), Real(1), t107);
+        const Real t143 = detail::blend(t139 > Real(0), t124, Real(1));
+        const Real t144 = detail::blend(t139 > Real(0), Real(1), t124);
+        const Real t145 = detail::blend(t139 > Real(0), t135, Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t105) >= detail::smallest_divisor<Real>) & (std::fabs(t105) <= std::numeric_limits<Real>::max()) & (std::fabs(t124) >= detail::smallest_divisor<Real>) & (std::fabs(t124) <= std::numeric_limits<Real>::max()) & (std::fabs(t143) >= detail::smallest_divisor<Real>) & (std::fabs(t143) <= std::numeric_limits<Real>::max()) & (std::fabs(t144) >= detail::smallest_divisor<Real>) & (std::fabs(t144) <= std::numeric_limits<Real>::max()) & (std::fabs(t106) >= detail::smallest_divisor<Real>) & (std::fabs(t106) <= std::numeric_limits<Real>::max()) & (std::fabs(t145) >= detail::smallest_divisor<Real>) & (std::fabs(t145) <= std::numeric_limits<Real>::max()) & (std::fabs(t142) >= detail::smallest_divisor<Real>) & (std::fabs(t142) <= std::numeric_limits<Real>::max()) & (std::fabs(M) >= detail::smallest_divisor<Real>) & (std::fabs(M) <= std::numeric_limits<Real>::max()) & (std::fabs(m) >= detail::smallest_divisor<Real>) & (std::fabs(m) <= std::numeric_limits<Real>::max()) & (std::fabs(t97) >= detail::smallest_divisor<Real>) & (std::fabs(t97) <= std::numeric_limits<Real>::max()) & (std::fabs(t103) >= detail::smallest_divisor<Real>) & (std::fabs(t103) <= std::numeric_limits<Real>::max());
+        const Real t146 = t14 / detail::blend(usable, t105, Real(1));
+        const Real t147 = t15 / detail::blend(usable, t105, Real(1));
+        const Real t148 = t26 / detail::blend(usable, t105, Real(1));
+        const Real t149 = t27 / detail::blend(usable, t105, Real(1));
+        const Real t150 = t123 / detail::blend(usable, t124, Real(1));
+        const Real t151 = t123 / detail::blend(usable, t143, Real(1));
+        const Real t152 = t123 / detail::blend(usable, t144, Real(1));
+        const Real t153 = -t146;
+        const Real t154 = t146 + t148;
+        const Real t155 = t154 - t146;
+        const Real t156 = -t147;
+        const Real t157 = -t148;
+        const Real t158 = -t149;
+        const Real t159 = t109 - (t129 - t130) + (t125 - t130) + (std::fma(t100, t105, std::fma(t95, t151, t128)) + std::fma(t133, t105, std::fma(t112, t151, t138)));
+        const Real t160 = t129 + t159;
+        const Real t161 = t160 + t16;
+        const Real t162 = t111 - (t131 - t132) + (t109 - t132) + (std::fma(std::fma(std::fma(R_M, b, -t98), w_M, std::fma(t98, w_M, -t99)), t105, std::fma(t99, t152, std::fma(t99, t105, -t111))) + std::fma(t100, t105, std::fma(t95, t152, t128)));
+        const Real t163 = t131 + t162;
+        const Real t164 = t163 + t126;
+        const Real t165 = t161 - t160;
+        const Real t166 = t164 - t163;
+        const Real t167 = t146 - (t154 - t155) + (t148 - t155) + (std::fma(t153, t150, std::fma(t153, t105, t14) + t19) / detail::blend(usable, t105, Real(1)) + std::fma(t157, t150, std::fma(t157, t105, t26) + t35) / detail::blend(usable, t105, Real(1)));
+        const Real t168 = t154 + t167;
+        const Real t169 = t168 - t147;
+        const Real t170 = t160 - (t161 - t165) + (t16 - t165) + (t159 - (t160 - t129) + t21);
+        const Real t171 = t161 + t170;
+        const Real t172 = t171 - t24;
+        const Real t173 = t163 - (t164 - t166) + (t126 - t166) + (t162 - (t163 - t131) + std::fma(std::fma(std::fma(R_m, b, -t108), w_m, std::fma(t108, w_m, -t119)), t105, std::fma(t119, t152, std::fma(t119, t105, -t126))));
+        const Real t174 = t164 + t173;
+        const Real t175 = t174 + t125;
+        const Real t176 = t169 - t168;
+        const Real t177 = t172 - t171;
+        const Real t178 = t175 - t174;
+        const Real t179 = t168 - (t169 - t176) - (t147 + t176) + (t167 - (t168 - t154) - std::fma(t156, t150, std::fma(t156, t105, t15) + t20) / detail::blend(usable, t105, Real(1)));
+        const Real t180 = t169 + t179;
+        const Real t181 = t180 - t149;
+        const Real t182 = t171 - (t172 - t177) - (t24 + t177) + (t170 - (t171 - t161) - t33);
+        const Real t183 = t172 + t182;
+        const Real t184 = t183 - t17;
+        const Real t185 = t174 - (t175 - t178) + (t125 - t178) + (t173 - (t174 - t164) + std::fma(t133, t105, std::fma(t112, t152, t138)));
+        const Real t186 = t175 + t185;
+        const Real t187 = t186 + t86;
+        const Real t188 = t181 - t180;
+        const Real t189 = t184 - t183;
+        const Real t190 = t187 - t186;
+        const Real t191 = t180 - (t181 - t188) - (t149 + t188) + (t179 - (t180 - t169) - std::fma(t158, t150, std::fma(t158, t105, t27) + t36) / detail::blend(usable, t105, Real(1)));
+        const Real t192 = t181 + t191;
+        const Real t193 = t53 * t192;
+        const Real t194 = t193 / detail::blend(usable, t106, Real(1));
+        const Real t195 = t183 - (t184 - t189) - (t17 + t189) + (t182 - (t183 - t172) - t22);
+        const Real t196 = t184 + t195;
+        const Real t197 = t196 + t25;
+        const Real t198 = t186 - (t187 - t190) + (t86 - t190) + (t185 - (t186 - t175) + std::fma(std::fma(b, v_Mx, -t85), t4, std::fma(t85, t9, std::fma(t85, t4, -t86))));
+        const Real t199 = t187 + t198;
+        const Real t200 = t199 - t90;
+        const Real t201 = -t194;
+        const Real t202 = t197 - t196;
+        const Real t203 = t200 - t199;
+        const Real t204 = t196 - (t197 - t202) + (t25 - t202) + (t195 - (t196 - t184) + t34);
+        const Real t205 = t197 + t204;
+        const Real t206 = t141 * t205;
+        const Real t207 = t206 * t46;
+        const Real t208 = t207 / detail::blend(usable, t145, Real(1));
+        const Real t209 = t199 - (t200 - t203) - (t90 + t203) + (t198 - (t199 - t187) - std::fma(std::fma(b, v_My, -t89), t0, std::fma(t89, t3, std::fma(t89, t0, -t90))));
+        const Real t210 = t200 + t209;
+        const Real t211 = t210 - t88;
+        const Real t212 = t201 + -(std::fma(t201, std::fma(t51, t105, std::fma(t48, t150, t127)), std::fma(t201, t106, t193) + std::fma(std::fma(t50, t52, std::fma(t47, t55, std::fma(t47, t52, -t53))), t192, std::fma(t53, t191 - (t192 - t181), std::fma(t53, t192, -t193)))) / detail::blend(usable, t106, Real(1)));
+        const Real t213 = t212 * t0;
+        const Real t214 = t212 * t4;
+        const Real t215 = -t208;
+        const Real t216 = t211 - t210;
+        const Real t217 = t210 - (t211 - t216) - (t88 + t216) + (t209 - (t210 - t200) - std::fma(std::fma(b, v_mx, -t87), t4, std::fma(t87, t9, std::fma(t87, t4, -t88))));
+        const Real t218 = t211 + t217;
+        const Real t219 = t218 + t92;
+        const Real t220 = t219 - t218;
+        const Real t221 = t218 - (t219 - t220) + (t92 - t220) + (t217 - (t218 - t211) + std::fma(std::fma(b, v_my, -t91), t0, std::fma(t91, t3, std::fma(t91, t0, -t92))));
+        const Real t222 = t219 + t221;
+        const Real t223 = t222 + t16;
+        const Real t224 = t223 - t222;
+        const Real t225 = t222 - (t223 - t224) + (t16 - t224) + (t221 - (t222 - t219) + t21);
+        const Real t226 = t223 + t225;
+        const Real t227 = t226 - t24;
+        const Real t228 = t227 - t226;
+        const Real t229 = t226 - (t227 - t228) - (t24 + t228) + (t225 - (t226 - t223) - t33);
+        const Real t230 = t227 + t229;
+        const Real t231 = t230 - t17;
+        const Real t232 = t231 - t230;
+        const Real t233 = t230 - (t231 - t232) - (t17 + t232) + (t229 - (t230 - t227) - t22);
+        const Real t234 = t231 + t233;
+        const Real t235 = t234 + t25;
+        const Real t236 = t235 - t234;
+        const Real t237 = t234 - (t235 - t236) + (t25 - t236) + (t233 - (t234 - t231) + t34);
+        const Real t238 = t235 + t237;
+        const Real t239 = t64 * t238;
+        const Real t240 = t239 / detail::blend(usable, t142, Real(1));
+        const Real t241 = detail::blend(t139 > Real(0), t215, t240);
+        const Real t242 = t241 / detail::blend(usable, t105, Real(1));
+        const Real t243 = -t240;
+        const Real t244 = -t242;
+        const Real t245 = t242 + std::fma(t244, t150, std::fma(t244, t105, t241) + detail::blend(t139 > Real(0), -(std::fma(t215, std::fma(std::fma(t51, t105, std::fma(t48, t151, t127)), t134, std::fma(t106, t134, -t135)), std::fma(t215, t135, t207) + std::fma(std::fma(std::fma(std::fma(t50, mu, std::fma(t47, mu, -t140)), t52, std::fma(t140, t55, std::fma(t140, t52, -t141))), t205, std::fma(t141, t204 - (t205 - t197), std::fma(t141, t205, -t206))), t46, std::fma(t206, t45 - (t46 - t43), std::fma(t206, t46, -t207)))) / detail::blend(usable, t145, Real(1))), std::fma(t243, std::fma(t82 - (t83 - t80), t105, std::fma(t83, t152, std::fma(t83, t105, -t107))), std::fma(t243, t107, t239) + std::fma(std::fma(std::fma(t50, q_M, std::fma(t47, q_M, -t60)), q_m, std::fma(t60, q_m, -t64)), t238, std::fma(t64, t237 - (t238 - t235), std::fma(t64, t238, -t239)))) / detail::blend(usable, t142, Real(1)))) / detail::blend(usable, t105, Real(1));
+        const Real t246 = std::fma(t245, t0, t214);
+        const Real t247 = t246 / detail::blend(usable, M, Real(1));
+        const Real t248 = t246 / detail::blend(usable, m, Real(1));
+        const Real t249 = t245 * t104;
+        const Real t250 = t249 / detail::blend(usable, t97, Real(1));
+        const Real t251 = t249 / detail::blend(usable, t103, Real(1));
+        const Real t252 = -t245;
+        const Real t253 = std::fma(t252, t4, t213);
+        const Real t254 = t253 / detail::blend(usable, M, Real(1));
+        const Real t255 = t253 / detail::blend(usable, m, Real(1));
+        const Real v_Mx_out = v_Mx + t254;
+        const Real v_My_out = v_My + t247;
+        const Real v_mx_out = v_mx - t255;
+        const Real v_my_out = v_my - t248;
+        const Real w_M_out = w_M - t250;
+        const Real w_m_out = w_m - t251;
+        const Real finite0 = detail::zero_if_finite(t118, t122);
+        const Real finite1 = detail::zero_if_finite(v_Mx_out, v_My_out);
+        const Real finite2 = detail::zero_if_finite(v_mx_out, v_my_out);
+        const Real finite3 = detail::zero_if_finite(w_M_out, w_m_out);
+        const Real finite4 = finite0 + finite1;
+        const Real finite5 = finite2 + finite3;
+        const Real finite6 = finite4 + finite5;
+        const std::int64_t finite = (finite6 == Real(0));
+        std::int64_t doubtful = 0;
+        if constexpr (collide_rough_fast_batch_2d_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_rough_fast_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_rough_fast_batch_2d_k<Real>);
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
+        }
+        if constexpr (collide_rough_fast_batch_2d_k<Real> < 0)
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t24), detail::zero_as_min(v_My)), detail::zero_as_min(t0))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t4)), std::fabs(t28))), detail::least(detail::least(detail::most(detail::most(std::fabs(t47), detail::zero_as_min(M)), detail::zero_as_min(m)), detail::most(std::fabs(t53), detail::zero_as_min(t52))), detail::least(detail::most(detail::most(std::fabs(t56), detail::zero_as_min(q_M)), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t57), detail::zero_as_min(M)), detail::zero_as_min(q_M)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t58), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t59), detail::zero_as_min(m)), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t60), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(q_m)), detail::zero_as_min(t62)))), detail::least(detail::least(detail::most(std::fabs(t64), detail::zero_as_min(q_m)), detail::most(std::fabs(t65), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t66), detail::zero_as_min(q_m)), detail::most(std::fabs(t67), detail::zero_as_min(t61))))), detail::least(detail::least(detail::least(std::fabs(t68), detail::most(std::fabs(t69), detail::zero_as_min(t52))), detail::least(std::fabs(t70), detail::most(detail::most(std::fabs(t85), detail::zero_as_min(b)), detail::zero_as_min(v_Mx)))), detail::least(detail::least(detail::most(std::fabs(t86), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t87), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t88), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t89), detail::zero_as_min(b)), detail::zero_as_min(v_My))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t90), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t91), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t92), detail::zero_as_min(t0)), detail::most(std::fabs(t93), detail::zero_as_min(t84)))), detail::least(detail::least(detail::most(std::fabs(t94), detail::zero_as_min(t48)), detail::most(detail::most(std::fabs(t95), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t96), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t97), detail::zero_as_min(q_M))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t98), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t99), detail::zero_as_min(w_M))), detail::least(std::fabs(t101), detail::most(detail::most(std::fabs(t102), detail::zero_as_min(m)), detail::zero_as_min(R_m)))), detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(q_m)), detail::most(std::fabs(t106), detail::zero_as_min(t48))), detail::least(detail::most(std::fabs(t107), detail::zero_as_min(t83)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_m)), detail::zero_as_min(b)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t109), std::fabs(t110)), detail::least(std::fabs(t111), detail::most(detail::most(std::fabs(t112), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)))), detail::least(detail::least(detail::most(std::fabs(t113), detail::zero_as_min(w_m)), std::fabs(t114)), detail::least(std::fabs(t115), std::fabs(t116)))), detail::least(detail::least(detail::least(std::fabs(t117), std::fabs(t118)), detail::least(detail::most(std::fabs(t119), detail::zero_as_min(w_m)), std::fabs(t120))), detail::least(detail::least(std::fabs(t121), std::fabs(t122)), detail::least(std::fabs(t125), std::fabs(t126))))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t134), std::fabs(t135)), detail::least(std::fabs(t136), std::fabs(t137))), detail::least(detail::least(std::fabs(t139), detail::most(std::fabs(t140), detail::zero_as_min(mu))), detail::least(detail::most(std::fabs(t141), detail::zero_as_min(t52)), std::fabs(t146)))), detail::least(detail::least(detail::least(std::fabs(t147), std::fabs(t148)), detail::least(std::fabs(t149), detail::most(std::fabs(t193), detail::zero_as_min(t192)))), detail::least(detail::least(std::fabs(t194), detail::most(std::fabs(t206), detail::zero_as_min(t205))), detail::least(detail::most(std::fabs(t207), detail::zero_as_min(t46)), std::fabs(t208))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t213), detail::zero_as_min(t212)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t214), detail::zero_as_min(t212)), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t239), detail::zero_as_min(t238)), std::fabs(t240))), detail::least(detail::least(detail::most(std::fabs(t242), detail::zero_as_min(t241)), std::fabs(t246)), detail::least(std::fabs(t247), std::fabs(t248)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t249), detail::zero_as_min(t245)), std::fabs(t250)), detail::least(std::fabs(t251), std::fabs(t253))), detail::least(std::fabs(t254), std::fabs(t255)))))), std::numeric_limits<Real>::min());
+        const std::int64_t written = usable & finite & !doubtful;
+        v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
+        v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
+        v_mx_[i] = detail::blend(written, v_mx_out, v_mx_[i]);
+        v_my_[i] = detail::blend(written, v_my_out, v_my_[i]);
+        w_M_[i] = detail::blend(written, w_M_out, w_M_[i]);
+        w_m_[i] = detail::blend(written, w_m_out, w_m_[i]);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
+    }
+}
+
+// The pairs collide_rough_fast_batch_2d left to the scalar collide_rough (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_rough_fast_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide_rough<Real>(M_[i], m_[i], R_M_[i], R_m_[i], q_M_[i], q_m_[i], std::array<Real, 2>{C_Mx_[i], C_My_[i]}, std::array<Real, 2>{C_mx_[i], C_my_[i]}, std::array<Real, 2>{v_Mx_[i], v_My_[i]}, std::array<Real, 2>{v_mx_[i], v_my_[i]}, w_M_[i], w_m_[i], eps_[i], b_[i], mu_[i], fast_t{});
+        v_Mx_[i] = out.v_M[0];
+        v_My_[i] = out.v_M[1];
+        v_mx_[i] = out.v_m[0];
+        v_my_[i] = out.v_m[1];
+        w_M_[i] = out.w_M;
+        w_m_[i] = out.w_m;
+        status_[i] = out.status;
+    }
+}
+
+// collide_rough_fast_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// processor's own prefetching, following so many arrays, falls behind.
+template <class Real, bool with_status>
+inline void collide_rough_fast_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64;
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t b = 0;
+    for (; b + block <= count; b += block) {
+        if (b + ahead < count) {
+            IMPACT_PREFETCH(M_ + b + ahead, 0);
+            IMPACT_PREFETCH(m_ + b + ahead, 0);
+            IMPACT_PREFETCH(R_M_ + b + ahead, 0);
+            IMPACT_PREFETCH(R_m_ + b + ahead, 0);
+            IMPACT_PREFETCH(q_M_ + b + ahead, 0);
+            IMPACT_PREFETCH(q_m_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_My_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
+            IMPACT_PREFETCH(C_my_ + b + ahead, 0);
+            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_M_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_m_ + b + ahead, 1);
+            IMPACT_PREFETCH(eps_ + b + ahead, 0);
+            IMPACT_PREFETCH(b_ + b + ahead, 0);
+            IMPACT_PREFETCH(mu_ + b + ahead, 0);
+            if constexpr (with_status)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        collide_rough_fast_batch_2d<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_fast_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    }
+    collide_rough_fast_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_fast_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+}
+
+// collide_rough_fast_batch_2d over blocks of 8 pairs for arrays that start at one offset within their pages:
+// pair i of every array then falls on the same cache sets. The read-only array k is read
+// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
+// at offsets 128 bytes apart, as if staggered.
+template <class Real, bool with_status>
+inline void collide_rough_fast_batch_2d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 13;
+    impact::status own[block];  // the statuses, where the caller wants none
+    const Real* const from[read_only] = {M_, m_, R_M_, R_m_, q_M_, q_m_, C_Mx_, C_My_, C_mx_, C_my_, eps_, b_, mu_};
+    alignas(64) Real stage[read_only][ring][block];
+    auto lead = [](std::size_t k) { return 2 * (k + 1); };
+    auto read = [&](std::size_t k, std::size_t j) {
+        for (std::size_t i = 0; i < block; ++i)
+            stage[k][j % ring][i] = from[k][j * block + i];
+    };
+    const std::size_t blocks = count / block;
+    for (std::size_t k = 0; k < read_only; ++k)
+        for (std::size_t j = 0; j < lead(k) && j < blocks; ++j)
+            read(k, j);
+    std::size_t b = 0;
+    for (std::size_t j = 0; j < blocks; ++j, b += block) {
+        if (b + ahead < count) {
+            if (b + ahead + block * lead(0) < count)
+                IMPACT_PREFETCH(M_ + b + ahead + block * lead(0), 0);
+            if (b + ahead + block * lead(1) < count)
+                IMPACT_PREFETCH(m_ + b + ahead + block * lead(1), 0);
+            if (b + ahead + block * lead(2) < count)
+                IMPACT_PREFETCH(R_M_ + b + ahead + block * lead(2), 0);
+            if (b + ahead + block * lead(3) < count)
+                IMPACT_PREFETCH(R_m_ + b + ahead + block * lead(3), 0);
+            if (b + ahead + block * lead(4) < count)
+                IMPACT_PREFETCH(q_M_ + b + ahead + block * lead(4), 0);
+            if (b + ahead + block * lead(5) < count)
+                IMPACT_PREFETCH(q_m_ + b + ahead + block * lead(5), 0);
+            if (b + ahead + block * lead(6) < count)
+                IMPACT_PREFETCH(C_Mx_ + b + ahead + block * lead(6), 0);
+            if (b + ahead + block * lead(7) < count)
+                IMPACT_PREFETCH(C_My_ + b + ahead + block * lead(7), 0);
+            if (b + ahead + block * lead(8) < count)
+                IMPACT_PREFETCH(C_mx_ + b + ahead + block * lead(8), 0);
+            if (b + ahead + block * lead(9) < count)
+                IMPACT_PREFETCH(C_my_ + b + ahead + block * lead(9), 0);
+            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_M_ + b + ahead, 1);
+            IMPACT_PREFETCH(w_m_ + b + ahead, 1);
+            if (b + ahead + block * lead(10) < count)
+                IMPACT_PREFETCH(eps_ + b + ahead + block * lead(10), 0);
+            if (b + ahead + block * lead(11) < count)
+                IMPACT_PREFETCH(b_ + b + ahead + block * lead(11), 0);
+            if (b + ahead + block * lead(12) < count)
+                IMPACT_PREFETCH(mu_ + b + ahead + block * lead(12), 0);
+            if constexpr (with_status)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        for (std::size_t k = 0; k < read_only; ++k)
+            if (j + lead(k) < blocks)
+                read(k, j + lead(k));
+        const std::size_t r = j % ring;
+        collide_rough_fast_batch_2d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], with_status ? status_ + b : own);
+        collide_rough_fast_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    }
+    collide_rough_fast_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_fast_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+}
+
+} // namespace detail
+
+/// collide_rough_batch(data, impact::fast): collide_rough_batch in the fast form, each result bit for bit
+/// the scalar collide_rough(..., impact::fast)'s (compiled alike, e.g. -ffp-contract=off).
+template <class Real>
+inline void collide_rough_batch(const collide_rough_batch_data<Real, 2>& data, fast_t) noexcept
+{
+    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the
+    // distances are a double's; other types keep the plain loop).
+    if constexpr (sizeof(Real) == sizeof(double))
+        if (detail::crowded(std::array<const void*, 13>{data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.eps, data.beta, data.mu})) {
+            if (data.status)
+                detail::collide_rough_fast_batch_2d_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
+            else
+                detail::collide_rough_fast_batch_2d_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+            return;
+        }
+    if (data.status)
+        detail::collide_rough_fast_batch_2d_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
+    else
+        detail::collide_rough_fast_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+}
+
 } // namespace impact
 
 IMPACT_PRECISE_END

@@ -88,6 +88,20 @@
 
 IMPACT_PRECISE_BEGIN  // closed at the end of impact/common.hpp
 
+namespace impact {
+
+/// The tag that asks for a kernel's fast form: `impact::collide(..., impact::fast)`,
+/// `impact::collide_batch(data, impact::fast)`, and alike for every kernel. The fast form
+/// has the accurate form's guards and statuses; each output is computed in its cheapest
+/// candidate form within its fast bound (16 ulps of its scale unless its derivation file
+/// sets another), measured and reported in verification.md beside the accurate form.
+struct fast_t {
+    explicit constexpr fast_t() = default;
+};
+inline constexpr fast_t fast{};
+
+} // namespace impact
+
 namespace impact::detail {
 
 /// Whether x is finite, read from its bits: an infinity or a NaN is a value whose exponent

@@ -75,6 +75,53 @@ inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
     return result0;
 }
 
+/// energy_loss(M, m, v_M, v_m, eps, impact::fast): the fast form of energy_loss, with the
+/// same guards and statuses, each output in its cheapest candidate form within its fast
+/// bound (verification.md): 12 operations, of them 1 divisions and 0 square roots
+/// (the accurate form: 59, 2 and 0).
+/// dE is computed in the form "-(1 - eps)*(1 + eps)*M*m*(v_M - v_m)^2/(2*(M + m))": at most 5.16 ulps in double on 4200 samples.
+template <class Real>
+inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps, fast_t) noexcept
+{
+    if (!(M > Real(0)) || !detail::finite(M) || !(m > Real(0)) || !detail::finite(m)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // invalid_mass
+    }
+    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
+        return std::numeric_limits<Real>::quiet_NaN();  // invalid_restitution
+    }
+    if (!detail::finite(v_M) || !detail::finite(v_m)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // non_finite
+    }
+    const Real t0 = M * m;
+    const Real t1 = Real(1) + eps;
+    const Real t2 = t0 * t1;
+    const Real t3 = Real(1) - eps;
+    const Real t4 = t2 * t3;
+    const Real t5 = v_M - v_m;
+    const Real t6 = t5 * t5;
+    const Real t7 = t4 * t6;
+    const Real t8 = M + m;
+    const Real t9 = Real(2) * t8;
+    if (!(std::fabs(t9) >= detail::smallest_divisor<Real>) || !(std::fabs(t9) <= std::numeric_limits<Real>::max())) {
+        return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
+    }
+    const Real t10 = t7 / t9;
+    const Real result0 = -t10;
+    if (!detail::finite(result0)) {
+        return std::numeric_limits<Real>::quiet_NaN();  // out_of_range
+    }
+    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
+        (std::fabs(t2) < std::numeric_limits<Real>::min() && t0 != Real(0) && t1 != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && t2 != Real(0) && t3 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
+        (std::fabs(t7) < std::numeric_limits<Real>::min() && t4 != Real(0) && t6 != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && t8 != Real(0)) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t7 != Real(0))) {
+        return std::numeric_limits<Real>::quiet_NaN();  // underflow
+    }
+    return result0;
+}
+
 } // namespace impact
 
 IMPACT_PRECISE_END

@@ -1,0 +1,113 @@
+// The choice of each kernel's forms (verify/choice.h): the fast form (impact::fast) beside
+// the accurate one. Its rule is checked as a property of the plans of two of the paper's
+// kernels, each candidate's cost counted here from its own program: every output in a
+// candidate within its fast bound, none within it cheaper; and the choice read back from
+// its cache entry as it was made.
+#define BOOST_TEST_MODULE test_choice
+#include <boost/test/unit_test.hpp>
+
+#include "compile/program.h"
+#include "engine/library.h"
+#include "verify/choice.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace impact;
+
+struct planned {
+    engine::library lib;
+    engine::term_order order;
+    verify::kernel_plan plan;
+};
+
+// The plan of derivation `id`'s first kernel, measured.
+const planned& plan_of(const std::string& id)
+{
+    static std::map<std::string, std::unique_ptr<planned>> plans;
+    auto& p = plans[id];
+    if (!p) {
+        engine::library lib = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"), id);
+        engine::term_order order = engine::declaration_order(lib.derived.at(id).symbols);
+        p.reset(new planned{std::move(lib), std::move(order), {}});
+        p->plan = verify::plan_kernel(p->lib.derived.at(id).kernels.front(), p->order);
+    }
+    return *p;
+}
+
+void check_fast_choice(const std::string& id)
+{
+    const planned& p = plan_of(id);
+    const engine::kernel& k = *p.plan.kernel;
+    const auto all = verify::components(k);
+    BOOST_REQUIRE_EQUAL(p.plan.components.size(), all.size());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const verify::component_plan& cp = p.plan.components[i];
+        const double bound = k.outputs[all[i].first].fast_bound_ulps[1];
+        BOOST_TEST(bound == 16.0);  // no bound set in the file: the default
+        const verify::candidate_result& fastest = cp.candidates.at(cp.fastest);
+        BOOST_TEST(fastest.double_accuracy.max_ulps <= bound, cp.name);
+        auto cost = [&](const verify::candidate_result& c) {
+            return compile::cost_of(compile::compile_program(
+                {c.value}, k.input_symbols(), p.order, {c.fma, c.compensated, c.compensated_lets}, k.lets));
+        };
+        for (const verify::candidate_result& c : cp.candidates)
+            if (c.compensated_lets == fastest.compensated_lets && c.double_accuracy.max_ulps <= bound)
+                BOOST_TEST(!compile::cheaper(cost(c), cost(fastest)), cp.name << ": " << c.label << " is cheaper than "
+                                                                              << fastest.label);
+        // Each type within the fast bound, as emitted.
+        BOOST_TEST(p.plan.fast_emitted[i].in_float.max_ulps <= 16.0, cp.name);
+        BOOST_TEST(p.plan.fast_emitted[i].in_double.max_ulps <= 16.0, cp.name);
+        BOOST_TEST(p.plan.fast_emitted[i].in_long_double.max_ulps <= 16.0, cp.name);
+    }
+    // These kernels' accurate forms compensate; their fast forms do not, and cost less.
+    for (const verify::component_plan& cp : p.plan.components) {
+        BOOST_TEST(!cp.candidates[cp.fastest].compensated, cp.name);
+        BOOST_TEST(!cp.candidates[cp.fastest].compensated_lets, cp.name);
+    }
+    const compile::cost fast = compile::cost_of(p.plan.fast_code), accurate = compile::cost_of(p.plan.code);
+    BOOST_TEST(fast.operations < accurate.operations);
+    BOOST_TEST(compile::cheaper(fast, accurate));
+    BOOST_TEST(verify::missed_bounds({p.plan}).empty());
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_fast_form_of_collide_line_is_its_cheapest_within_16_ulps)
+{
+    check_fast_choice("inelastic_line");
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_form_of_the_2d_collide_is_its_cheapest_within_16_ulps)
+{
+    check_fast_choice("inelastic_plane");
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_form_is_read_back_from_the_cache_as_it_was_chosen)
+{
+    const planned& p = plan_of("inelastic_plane");
+    const std::string text = verify::encode_choice(p.plan, p.order);
+    const auto back = verify::decode_choice(text, *p.plan.kernel, p.order);
+    BOOST_REQUIRE(back.has_value());
+    BOOST_REQUIRE_EQUAL(back->components.size(), p.plan.components.size());
+    for (std::size_t i = 0; i < p.plan.components.size(); ++i) {
+        BOOST_TEST(back->components[i].fastest == p.plan.components[i].fastest);
+        BOOST_TEST(back->fast_emitted[i].in_float.max_ulps == p.plan.fast_emitted[i].in_float.max_ulps);
+        BOOST_TEST(back->fast_emitted[i].in_long_double.max_ulps == p.plan.fast_emitted[i].in_long_double.max_ulps);
+    }
+    BOOST_TEST(back->fast_code.code.size() == p.plan.fast_code.code.size());
+    BOOST_TEST(back->fast_code.outputs == p.plan.fast_code.outputs);
+    // A fastest candidate past the candidates: not a choice for this kernel.
+    std::string damaged = text;
+    const std::string chosen_line = "\n" + std::to_string(p.plan.components[0].chosen) + "\n" +
+                                    std::to_string(p.plan.components[0].fastest) + "\n";
+    const auto at = damaged.find(chosen_line);
+    BOOST_REQUIRE(at != std::string::npos);
+    damaged.replace(at, chosen_line.size(),
+                    "\n" + std::to_string(p.plan.components[0].chosen) + "\n" +
+                        std::to_string(p.plan.components[0].candidates.size()) + "\n");
+    BOOST_TEST(!verify::decode_choice(damaged, *p.plan.kernel, p.order).has_value());
+}
