@@ -355,14 +355,16 @@ BOOST_AUTO_TEST_CASE(the_emitted_kernel_compiles_and_selects_each_case)
         fs::create_directories((dir / path).parent_path());
         std::ofstream(dir / path) << text;
     }
-    // Sticking (1.5 within 2), sliding (3 beyond 2: 2), sliding with mu = 1/4 (0.5), the edge (2).
+    // Sticking (1.5 within 2), sliding (3 beyond 2: 2), sliding with mu = 1/4 (0.5), the edge (2);
+    // its fast form (impact::fast) too.
     std::ofstream(dir / "main.cpp") << "#include \"impact/friction_impulse.hpp\"\n"
                                        "int main()\n{\n"
                                        "    using impact::friction_impulse;\n"
                                        "    return friction_impulse<double>(1, 1, 0.5, 1, 1, 1, 1) == 1.5 &&\n"
                                        "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1) == 2.0 &&\n"
                                        "           friction_impulse<double>(1, 1, 0.5, 0.25, 1, 1, 1) == 0.5 &&\n"
-                                       "           friction_impulse<float>(1, 1, 1, 1, 1, 1, 1) == 2.0f ? 0 : 1;\n"
+                                       "           friction_impulse<float>(1, 1, 1, 1, 1, 1, 1) == 2.0f &&\n"
+                                       "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1, impact::fast) == 2.0 ? 0 : 1;\n"
                                        "}\n";
     const std::string command = std::string(IMPACT_CXX) + " -std=c++17 -O2 -I" + (dir / "kernels").string() + " " +
                                 (dir / "main.cpp").string() + " -o " + (dir / "main").string() + " && " +

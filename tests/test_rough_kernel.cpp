@@ -30,10 +30,12 @@ struct collision {
     double w_M = 0, w_m = 0, eps = 0.8, beta = 0.5, mu = 0.3;
 };
 
-impact::collide_rough_result<double, 2> run(const collision& c)
+// `form`: nothing for the accurate form, impact::fast for the fast one.
+template <class... Form>
+impact::collide_rough_result<double, 2> run(const collision& c, Form... form)
 {
     return impact::collide_rough(c.M, c.m, c.R_M, c.R_m, c.q_M, c.q_m, c.C_M, c.C_m, c.v_M, c.v_m, c.w_M, c.w_m,
-                                 c.eps, c.beta, c.mu);
+                                 c.eps, c.beta, c.mu, form...);
 }
 
 // The model, in long double, from the formulas.
@@ -97,9 +99,10 @@ collision drawn(std::mt19937_64& random, double least, double most, double least
 
 // Every output against the model: v_M' = v_M - J/M, v_m' = v_m + J/m,
 // w' = w - J_t/(q mass R), within `ulps` of the collision's largest speed.
-void check_against_model(const collision& c, double ulps)
+template <class... Form>
+void check_against_model(const collision& c, double ulps, Form... form)
 {
-    const auto out = run(c);
+    const auto out = run(c, form...);
     BOOST_REQUIRE(out.status == impact::status::ok);
     const model e = expected(c);
     const double speed = std::max({std::fabs(c.v_M[0]), std::fabs(c.v_M[1]), std::fabs(c.v_m[0]),
@@ -220,7 +223,30 @@ BOOST_AUTO_TEST_CASE(perfectly_rough_elastic_spheres_keep_their_energy)
     BOOST_TEST(energy(c, out.v_M, out.v_m, out.w_M, out.w_m) == before, boost::test_tools::tolerance(1e-14));
 }
 
-BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_status)
+// The fast form (impact::fast) within twice its bound of 16 ulps (as the accurate form is
+// held to twice its 4 here).
+BOOST_AUTO_TEST_CASE(the_fast_form_follows_the_model_within_its_bound)
+{
+    collision c;
+    c.v_M = {1, 0.5};
+    c.w_M = 3;
+    c.w_m = -1;
+    for (double mu : {0.0, 0.05, 0.3, 2.0, std::numeric_limits<double>::infinity()})
+        for (double beta : {-1.0, -0.3, 0.5, 1.0}) {
+            c.mu = mu;
+            c.beta = beta;
+            BOOST_TEST_CONTEXT("mu = " << mu << ", beta = " << beta) check_against_model(c, 32, impact::fast);
+        }
+    std::mt19937_64 random(77);
+    for (int i = 0; i < 2000; ++i) {
+        const collision d = drawn(random, 0.01, 100, 0.01);
+        if (run(d, impact::fast).status == impact::status::ok)
+            BOOST_TEST_CONTEXT("drawn collision " << i) check_against_model(d, 32, impact::fast);
+    }
+}
+
+template <class... Form>
+void check_refusals(Form... form)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     struct bad {
@@ -251,7 +277,7 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_status)
         c.w_M = 2;
         c.w_m = -3;
         b.spoil(c);
-        const auto out = run(c);
+        const auto out = run(c, form...);
         BOOST_TEST((out.status == b.status), "status " << static_cast<int>(out.status));
         // Everything returned as given, bit for bit.
         BOOST_TEST(std::memcmp(&out.v_M, &c.v_M, sizeof c.v_M) == 0);
@@ -261,7 +287,18 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_status)
     }
 }
 
-BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
+BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_status)
+{
+    check_refusals();
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_form_refuses_bad_input_alike)
+{
+    check_refusals(impact::fast);
+}
+
+template <class... Form>
+void check_batch(Form... form)
 {
     // Ordinary, sticking, sliding, head-on (g_t = 0 with mu = 0), mu = +inf, and refused
     // pairs of every status, in one batch: each pair's velocities, spins and status are
@@ -306,10 +343,10 @@ BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
             batch.v_m(axis)[i] = c.v_m[axis];
         }
     }
-    impact::collide_rough_batch(batch.data());
+    impact::collide_rough_batch(batch.data(), form...);
     std::size_t resolved = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const auto out = run(pairs[i]);
+        const auto out = run(pairs[i], form...);
         resolved += out.status == impact::status::ok ? 1 : 0;
         BOOST_TEST_CONTEXT("pair " << i)
         {
@@ -323,4 +360,14 @@ BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
         }
     }
     BOOST_TEST(resolved > count / 4);
+}
+
+BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
+{
+    check_batch();
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_batch_gives_the_fast_scalar_results_bit_for_bit)
+{
+    check_batch(impact::fast);
 }

@@ -79,15 +79,16 @@ wall_hit<N> draw(std::mt19937_64& random)
     return h;
 }
 
-template <std::size_t N>
-void check_against_the_physics(std::uint64_t seed)
+// `form`: nothing for the accurate form (4 ulps), impact::fast for the fast one (its bound, 16).
+template <std::size_t N, class... Form>
+void check_against_the_physics(std::uint64_t seed, double bound, Form... form)
 {
     std::mt19937_64 random(seed);
     double worst = 0;
     int resolved = 0;
     for (int i = 0; i < 4000; ++i) {
         const wall_hit<N> h = draw<N>(random);
-        const auto out = impact::collide_wall(h.P, h.n, h.C, h.v, h.eps);
+        const auto out = impact::collide_wall(h.P, h.n, h.C, h.v, h.eps, form...);
         if (out.status == impact::status::separating || out.status == impact::status::behind_the_wall)
             continue;  // v.n or (C - P).n rounded to 0
         BOOST_TEST_REQUIRE((out.status == impact::status::ok));
@@ -114,13 +115,19 @@ void check_against_the_physics(std::uint64_t seed)
         BOOST_TEST(dot(out.v, out.v) <= dot(h.v, h.v) * (1 + 16 * std::numeric_limits<double>::epsilon()));
     }
     BOOST_TEST(resolved > 3900);
-    BOOST_TEST(worst <= 4.0, N << "D: worst " << worst << " ulps");
+    BOOST_TEST(worst <= bound, N << "D: worst " << worst << " ulps");
 }
 
 BOOST_AUTO_TEST_CASE(random_wall_hits_match_the_reflection_scaled_by_eps)
 {
-    check_against_the_physics<2>(5001);
-    check_against_the_physics<3>(5002);
+    check_against_the_physics<2>(5001, 4);
+    check_against_the_physics<3>(5002, 4);
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_form_matches_the_reflection_within_its_bound)
+{
+    check_against_the_physics<2>(5011, 16, impact::fast);
+    check_against_the_physics<3>(5012, 16, impact::fast);
 }
 
 BOOST_AUTO_TEST_CASE(a_ball_dropped_on_the_floor_bounces_at_eps_times_its_speed)
@@ -194,14 +201,17 @@ BOOST_AUTO_TEST_CASE(each_refusal_has_its_status_and_returns_the_velocity_bit_fo
         const auto out = impact::collide_wall(r.P, r.n, r.C, r.v, r.eps);
         BOOST_TEST((out.status == r.expected), "status " << static_cast<int>(out.status));
         BOOST_TEST(same_bits(out.v, r.v));
+        const auto fast = impact::collide_wall(r.P, r.n, r.C, r.v, r.eps, impact::fast);  // the same guards
+        BOOST_TEST((fast.status == r.expected), "fast form's status " << static_cast<int>(fast.status));
+        BOOST_TEST(same_bits(fast.v, r.v));
     }
     // The first guard that fails: eps before the velocity, the normal before the side.
     BOOST_TEST((impact::collide_wall(P, {0, 0}, vec<2>{0, -1}, v, 2.0).status == status::invalid_restitution));
     BOOST_TEST((impact::collide_wall(P, {0, 0}, vec<2>{0, -1}, v, 0.5).status == status::invalid_normal));
 }
 
-template <std::size_t N>
-void check_batch(std::uint64_t seed)
+template <std::size_t N, class... Form>
+void check_batch(std::uint64_t seed, Form... form)
 {
     std::mt19937_64 random(seed);
     const std::size_t count = 1003;
@@ -241,11 +251,11 @@ void check_batch(std::uint64_t seed)
     }
     data.eps = eps.data();
     data.status = statuses.data();
-    impact::collide_wall_batch(data);
+    impact::collide_wall_batch(data, form...);
     std::size_t resolved = 0;
     for (std::size_t i = 0; i < count; ++i) {
         const wall_hit<N>& h = hits[i];
-        const auto out = impact::collide_wall(h.P, h.n, h.C, h.v, h.eps);
+        const auto out = impact::collide_wall(h.P, h.n, h.C, h.v, h.eps, form...);
         resolved += out.status == impact::status::ok ? 1 : 0;
         BOOST_TEST_CONTEXT(N << "D, hit " << i)
         {
@@ -261,6 +271,12 @@ BOOST_AUTO_TEST_CASE(the_batch_gives_the_scalar_results_bit_for_bit)
 {
     check_batch<2>(7001);
     check_batch<3>(7002);
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_batch_gives_the_fast_scalar_results_bit_for_bit)
+{
+    check_batch<2>(7011, impact::fast);
+    check_batch<3>(7012, impact::fast);
 }
 
 } // namespace

@@ -51,8 +51,8 @@ inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
     return result0;
 }
 
-/// scatter_angle(v_par, v_perp, eps, impact::fast): the fast form of scatter_angle, which is its accurate form: no
-/// candidate form is cheaper within the fast bounds (verification.md).
+/// scatter_angle(v_par, v_perp, eps, impact::fast): the fast form of scatter_angle, which is
+/// its accurate form: no candidate form is cheaper within the fast bounds (verification.md).
 template <class Real>
 inline Real scatter_angle(Real v_par, Real v_perp, Real eps, fast_t) noexcept
 {
