@@ -351,6 +351,18 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
         BOOST_TEST(row.find("checked: ") != std::string::npos, row);
 }
 
+BOOST_AUTO_TEST_CASE(appendix_a_line_1_is_reconciled_by_two_edits)
+{
+    // Typed from the paper: Appendix A's first line prints E'_K = 1/2 m v'_m + 1/2 m v'_M,
+    // where 1/2 m v'_m^2 + 1/2 M v'_M^2 belongs: the squares, and M for m in its second term.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    const std::vector<std::string> rows = errata_rows_at(errata, "Appendix A, line 1");
+    BOOST_TEST_REQUIRE(rows.size() == 1u);
+    BOOST_TEST(rows[0].find("the squares of $v'_{M,\\parallel}$ and $v'_{m,\\parallel}$ missing, and write $M$ for "
+                            "$m$ in") != std::string::npos, rows[0]);
+    BOOST_TEST(rows[0].find("no edit") == std::string::npos, rows[0]);
+}
+
 BOOST_AUTO_TEST_CASE(a_limit_no_method_settles_is_undecided_never_disagrees)
 {
     // A fictional claim: lim_{x -> infinity} sin(x) = 0. No method (substitution, series,

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <sstream>
 
 namespace impact::engine {
 namespace {
@@ -138,6 +139,32 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
                   e.subs(GiNaC::lst{sa, sb}, GiNaC::lst{sb, sa}, GiNaC::subs_options::no_pattern)});
         }
     }
+    // The symbols of one dimension squared throughout (½ m v for ½ m v², in every term):
+    // the squares missing.
+    std::map<std::string, std::vector<std::string>> by_dimension;
+    for (const quantity& q : symbols.all())   // in the order of their declaration
+        if (present.count(q.name) && q.dim && !q.dim->is_pure_number())
+            by_dimension[q.dim->to_string()].push_back(q.name);
+    for (const auto& [dim, names] : by_dimension) {
+        GiNaC::exmap square;
+        std::vector<GiNaC::ex> squared;
+        for (const std::string& name : names) {
+            square[symbols.find(name)->symbol] = GiNaC::pow(symbols.find(name)->symbol, 2);
+            squared.push_back(symbols.find(name)->symbol);
+        }
+        emit({3,
+              [=] {
+                  finding f;
+                  f.say(side + "the squares of ");
+                  for (std::size_t i = 0; i < squared.size(); ++i) {
+                      if (i > 0)
+                          f.say(i + 1 == squared.size() ? " and " : ", ");
+                      f.math(squared[i]);
+                  }
+                  return f.say(" missing");
+              },
+              e.subs(square, GiNaC::subs_options::no_pattern)});
+    }
     // Every symbol of the expression that has a primed version, primed.
     GiNaC::exmap prime_all;
     for (const std::string& name : present)
@@ -193,8 +220,23 @@ std::set<std::string> names_in(const GiNaC::ex& e, const symbol_table& symbols)
     return names;
 }
 
+// The second edits of an edited form, `first` its first edit.
+using extender = std::function<void(const candidate& first, const std::function<void(candidate)>& emit)>;
+
+// At most this many forms of two edits are screened: beyond it the search stops at one
+// edit (the printed form is long, and a finding of two edits would be a guess among many).
+constexpr std::size_t two_edit_budget = 20000;
+
+finding joined(finding a, const finding& b)
+{
+    a.say(", and ");
+    a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
+    return a;
+}
+
 template <class Screen, class Confirm>
-std::vector<finding> search(std::vector<candidate> all, const symbol_table& symbols, Screen screen, Confirm confirm)
+std::vector<finding> search(std::vector<candidate> all, const symbol_table& symbols, Screen screen, Confirm confirm,
+                            const extender& extend)
 {
     // The smallest kind of change that works, every edit of that kind that does.
     std::stable_sort(all.begin(), all.end(),
@@ -210,6 +252,52 @@ std::vector<finding> search(std::vector<candidate> all, const symbol_table& symb
             found.emplace(plain_text(change, symbols), std::move(change));
             best = c.priority;
         }
+    }
+    // No single edit: two, the first of a kind a misprint makes (a sign, a symbol, the
+    // primes or squares missing; not a factor 2 or the reciprocal), the smallest pair of
+    // kinds that works, every pair of that kind that does. Two pairs that make the same
+    // form are one change (A then B is B then A), told in the fewer words: the one whose
+    // second edit names a term of the printed form, not of the form the first edit made.
+    if (found.empty()) {
+        std::map<std::string, std::pair<std::string, finding>> by_form;
+        std::vector<std::pair<const candidate*, candidate>> pairs;
+        for (const candidate& first : all) {
+            if (first.priority > 3 || pairs.size() > two_edit_budget)
+                continue;
+            extend(first, [&](candidate second) {
+                if (second.priority <= 3)
+                    pairs.emplace_back(&first, std::move(second));
+            });
+        }
+        if (pairs.size() <= two_edit_budget) {
+            std::stable_sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) {
+                return a.first->priority + a.second.priority < b.first->priority + b.second.priority;
+            });
+            for (const auto& [first, second] : pairs) {
+                const int priority = first->priority + second.priority;
+                if (best && priority > best)
+                    break;
+                if (screen(second.edited) && confirm(second.edited)) {
+                    finding a = first->change(), b = second.change();
+                    std::string ta = plain_text(a, symbols), tb = plain_text(b, symbols);
+                    if (tb < ta) {
+                        std::swap(a, b);
+                        std::swap(ta, tb);
+                    }
+                    std::string text = ta + ", and " + tb;
+                    std::ostringstream form;
+                    form << second.edited;
+                    finding both = joined(std::move(a), b);
+                    auto [at, inserted] = by_form.try_emplace(form.str(), text, both);
+                    if (!inserted && (text.size() < at->second.first.size() ||
+                                      (text.size() == at->second.first.size() && text < at->second.first)))
+                        at->second = {std::move(text), std::move(both)};
+                    best = priority;
+                }
+            }
+        }
+        for (auto& [form, change] : by_form)
+            found.emplace(std::move(change.first), std::move(change.second));
     }
     std::vector<finding> out;
     for (auto& [text, change] : found)
@@ -244,7 +332,10 @@ static std::vector<finding> reconcile_expression_search(const GiNaC::ex& printed
     auto confirm = [&](const GiNaC::ex& edited) {
         return prove_equal(resolve(edited), derived, symbols, run).what == verdict::status::proven;
     };
-    return search(all, symbols, screen, confirm);
+    auto extend = [&](const candidate& first, const std::function<void(candidate)>& emit) {
+        single_edits(first.edited, "", wanted, symbols, emit);
+    };
+    return search(all, symbols, screen, confirm, extend);
 }
 
 static std::vector<finding> reconcile_equation_search(const GiNaC::ex& printed, const GiNaC::ex& derived,
@@ -278,7 +369,14 @@ static std::vector<finding> reconcile_equation_search(const GiNaC::ex& printed, 
     auto confirm = [&](const GiNaC::ex& edited) {
         return prove_equivalent(resolve(edited), resolve(derived), symbols, run).what == verdict::status::proven;
     };
-    return search(all, symbols, screen, confirm);
+    auto extend = [&](const candidate& first, const std::function<void(candidate)>& emit) {
+        const GiNaC::ex lhs = first.edited.lhs(), rhs = first.edited.rhs();
+        single_edits(lhs, "on the left, ", wanted, symbols,
+                     [&](candidate c) { emit({c.priority, c.change, c.edited == rhs}); });
+        single_edits(rhs, "on the right, ", wanted, symbols,
+                     [&](candidate c) { emit({c.priority, c.change, lhs == c.edited}); });
+    };
+    return search(all, symbols, screen, confirm, extend);
 }
 
 std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,

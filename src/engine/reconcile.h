@@ -4,11 +4,13 @@
 // know the misprint, not only that there is one. Impact tries every single edit of
 // the printed form — the sign of the whole or of one term, one symbol written for
 // another (a swapped M and m, a missing prime), two symbols swapped throughout, the
-// primes missing from one side of an equation, a factor of 2, the reciprocal — and
-// reports each edit
-// after which the printed form is proven equal to (or, for an equation, equivalent to)
-// the derived one. Candidates are screened at exact rational points and confirmed with
-// normal(); the list is sorted, so the report is the same on every run.
+// primes missing from one side of an equation, the squares of the symbols of one
+// dimension missing, a factor of 2, the reciprocal — and reports each edit after which
+// the printed form is proven equal to (or, for an equation, equivalent to) the derived
+// one; when no single edit does, each pair of edits that does (Appendix A's first line:
+// the squares, and M for m), a pair that makes the same form as another said once.
+// Candidates are screened at exact rational points and confirmed with normal(); the list
+// is sorted, so the report is the same on every run.
 #pragma once
 
 #include "engine/finding.h"
