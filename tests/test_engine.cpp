@@ -302,6 +302,30 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
     BOOST_TEST(p.reconciliations == std::vector<std::string>{"write z for x in 2*x"}, boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(the_member_of_a_line_that_agrees_says_which_factor_is_misprinted)
+{
+    // Eq. 14's first line on a small scale: y z / z, then the values put in with the
+    // second factor of the numerator (1 - eps) x where z = (1 + eps) x belongs. Turning
+    // the sign of eps in either factor of the numerator, or in the denominator, reconciles
+    // it; the first member says which: the second factor of the numerator.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"c_1\"\n[[symbol]]\nname = \"c_2\"\n"
+        "[[step]]\ndefine = \"y\"\nas = \"(1 - eps)*x\"\n"
+        "[[step]]\ndefine = \"z\"\nas = \"(1 + eps)*x\"\n"
+        "[[step]]\ndefine = \"c_1\"\nas = \"y\"\n"
+        "[[step]]\ndefine = \"c_2\"\nas = \"y\"\n"
+        "[[result]]\nname = \"c_1\"\npaper = \"Line 1\"\nprinted = \"y*z/z\"\n"
+        "[[result]]\nname = \"c_2\"\npaper = \"Line 1\"\n"
+        "printed = \"(1 - eps)*x*(1 - eps)*x/((1 + eps)*x)\"\n"));
+    BOOST_TEST_REQUIRE(d.paper_checks.size() == 2u);
+    BOOST_TEST(d.paper_checks[0].agrees());
+    const engine::paper_comparison& p = d.paper_checks[1];
+    BOOST_TEST(!p.agrees());
+    BOOST_TEST_REQUIRE(p.reconciliations.size() == 1u);
+    BOOST_TEST(p.reconciliations[0].rfind("the second factor of the numerator, ", 0) == 0u, p.reconciliations[0]);
+    BOOST_TEST(p.reconciliations[0].find(", where z, that is ") != std::string::npos, p.reconciliations[0]);
+}
+
 // Two masses and two speeds, a kinetic energy E derived, and `printed` as the paper prints it.
 engine::derivation kinetic_energy_printed(const std::string& printed)
 {

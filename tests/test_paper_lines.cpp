@@ -363,6 +363,23 @@ BOOST_AUTO_TEST_CASE(appendix_a_line_1_is_reconciled_by_two_edits)
     BOOST_TEST(rows[0].find("no edit") == std::string::npos, rows[0]);
 }
 
+BOOST_AUTO_TEST_CASE(eq14_line_1_blames_the_second_factor_of_its_numerator)
+{
+    // Typed from the paper: Eq. 14's first line puts (1/2 - eps/2) v_1 for v'_2 in the
+    // second factor of the numerator of its second member, where the object ball's
+    // (1/2 + eps/2) v_1 belongs (its first member has v'_{2,par} there).
+    const std::string errata = emit::errata_markdown(library().in_order());
+    std::size_t equations = 0;
+    for (const std::string& row : errata_rows_at(errata, "Eq. 14, line 1")) {
+        if (row.find("| equation |") == std::string::npos || row.find("**disagrees**") == std::string::npos)
+            continue;
+        ++equations;
+        BOOST_TEST(row.find("the second factor of the numerator") != std::string::npos, row);
+        BOOST_TEST(row.find("where $v'_{2,\\parallel}$") != std::string::npos, row);
+    }
+    BOOST_TEST(equations == 1u);
+}
+
 BOOST_AUTO_TEST_CASE(a_limit_no_method_settles_is_undecided_never_disagrees)
 {
     // A fictional claim: lim_{x -> infinity} sin(x) = 0. No method (substitution, series,

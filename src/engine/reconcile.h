@@ -16,6 +16,7 @@
 #include "engine/finding.h"
 #include "engine/sign.h"
 #include "engine/symbols.h"
+#include "engine/written_form.h"
 
 #include <ginac/ginac.h>
 
@@ -39,5 +40,17 @@ std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC:
 std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                             const symbol_table& symbols, const resolver& resolve,
                                             proof_cache& run);
+
+/// Where a printed member of a line differs from another member of the same line that
+/// agrees (Eq. 14's first line: v'_1 v'_2 / (|v'_1| |v'_2|), then the same with the values
+/// put in): the factors of both, as written, matched in order (a run of the printed
+/// member's factors for each factor of the other's, numerator with numerator), and the one
+/// run that differs named, when exactly one does and putting the other's factor in its
+/// place reconciles the printed form with `derived`. This settles which of several edits
+/// of equal size is the misprint: the second (1/2 - eps/2) v_1 of Eq. 14's numerator,
+/// where v'_2 belongs, not the (1/2 + eps/2) v_1 of its denominator.
+std::optional<finding> locate_by_member(const written_form::node& printed, const written_form::node& other,
+                                        const GiNaC::ex& derived, const symbol_table& symbols,
+                                        const resolver& resolve, proof_cache& run);
 
 } // namespace impact::engine
