@@ -380,6 +380,26 @@ BOOST_AUTO_TEST_CASE(eq14_line_1_blames_the_second_factor_of_its_numerator)
     BOOST_TEST(equations == 1u);
 }
 
+BOOST_AUTO_TEST_CASE(a_term_a_finding_names_is_written_as_the_paper_prints_it)
+{
+    // Typed from the paper: Eq. 9 prints v'_m with + eps M (v_{m,par} - v_{M,par}), whose
+    // sign is the misprint; the term is named as printed, not as -eps M (...) nor in
+    // another order.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    const std::vector<std::string> rows = errata_rows_at(errata, "Eq. 9");
+    std::size_t named = 0;
+    for (const std::string& row : rows)
+        named += row.find("the sign of the term $\\epsilon M (v_{m,\\parallel} - v_{M,\\parallel})$") !=
+                         std::string::npos
+                     ? 1
+                     : 0;
+    BOOST_TEST(named == 1u);
+    // And the report: no term it names starts with a minus.
+    const std::string report = read(IMPACT_SOURCE_DIR "/output/report.tex");
+    BOOST_TEST(report.find("the sign of the term $-") == std::string::npos);
+    BOOST_TEST(report.find("The sign of the term $-") == std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(a_limit_no_method_settles_is_undecided_never_disagrees)
 {
     // A fictional claim: lim_{x -> infinity} sin(x) = 0. No method (substitution, series,

@@ -160,7 +160,7 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
             } else if (!p.agrees()) {
                 std::vector<std::string> said;
                 for (const engine::finding& f : p.findings)
-                    said.push_back(cell(finding_latex(f, order, nullptr, &p)));
+                    said.push_back(cell(finding_latex(f, order, &p.written, &p)));
                 if (said.empty() && p.test)
                     said.push_back("as checked, it does not hold");
                 change = said.empty() ? "no edit, or two, reconciles it; see the derived form" : fmt::format("{}", fmt::join(said, "; "));

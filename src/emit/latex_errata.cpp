@@ -61,6 +61,18 @@ std::string finding_latex(const engine::finding& f, const term_order& order, con
                 out += "$" + latex_as_written(*tree, order) + "$";
                 break;
             }
+            if (p.term) {
+                // A term named whatever its sign: as the paper writes it, without a minus
+                // its written order would put in front (-eps M (v_m - v_M) for M eps (v_M - v_m)).
+                std::string term = latex(p.value, order, written);
+                if (term.rfind("-", 0) == 0) {
+                    const std::string negated = latex(-p.value, order, written);
+                    if (negated.rfind("-", 0) != 0)
+                        term = negated;
+                }
+                out += "$" + term + "$";
+                break;
+            }
             out += "$" +
                    (GiNaC::is_a<GiNaC::relational>(p.value)
                         ? latex(p.value.lhs(), order, written) + " = " + latex(p.value.rhs(), order, written)

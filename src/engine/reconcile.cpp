@@ -102,7 +102,7 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
     std::set<std::string> present;
     for (const site& s : sites) {
         if (s.is_term && !s.path.empty()) {
-            emit({2, [=] { return finding().say(side + "the sign of the term ").math(magnitude(s.node)); },
+            emit({2, [=] { return finding().say(side + "the sign of the term ").term(magnitude(s.node)); },
                   replace_at(e, s.path, 0, -s.node)});
         }
         if (!GiNaC::is_a<GiNaC::symbol>(s.node))
@@ -111,7 +111,7 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
         if (!from)
             continue;
         present.insert(from->name);
-        emit({3, [=] { return finding().say(side + "a spurious ").math(from->symbol).say(" in ").math(magnitude(s.term)); },
+        emit({3, [=] { return finding().say(side + "a spurious ").math(from->symbol).say(" in ").term(magnitude(s.term)); },
               replace_at(e, s.path, 0, 1)});
         for (const quantity& to : symbols.all()) {
             if (to.name == from->name || !wanted.count(to.name))
@@ -126,7 +126,7 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
                           .say(" for ")
                           .math(from->symbol)
                           .say(" in ")
-                          .math(magnitude(s.term));
+                          .term(magnitude(s.term));
                   },
                   replace_at(e, s.path, 0, to.symbol)});
         }
