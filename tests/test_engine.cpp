@@ -302,6 +302,65 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
     BOOST_TEST(p.reconciliations == std::vector<std::string>{"write z for x in 2*x"}, boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(the_member_of_a_line_that_agrees_says_which_factor_is_misprinted)
+{
+    // Eq. 14's first line on a small scale: y z / z, then the values put in with the
+    // second factor of the numerator (1 - eps) x where z = (1 + eps) x belongs. Turning
+    // the sign of eps in either factor of the numerator, or in the denominator, reconciles
+    // it; the first member says which: the second factor of the numerator.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"c_1\"\n[[symbol]]\nname = \"c_2\"\n"
+        "[[step]]\ndefine = \"y\"\nas = \"(1 - eps)*x\"\n"
+        "[[step]]\ndefine = \"z\"\nas = \"(1 + eps)*x\"\n"
+        "[[step]]\ndefine = \"c_1\"\nas = \"y\"\n"
+        "[[step]]\ndefine = \"c_2\"\nas = \"y\"\n"
+        "[[result]]\nname = \"c_1\"\npaper = \"Line 1\"\nprinted = \"y*z/z\"\n"
+        "[[result]]\nname = \"c_2\"\npaper = \"Line 1\"\n"
+        "printed = \"(1 - eps)*x*(1 - eps)*x/((1 + eps)*x)\"\n"));
+    BOOST_TEST_REQUIRE(d.paper_checks.size() == 2u);
+    BOOST_TEST(d.paper_checks[0].agrees());
+    const engine::paper_comparison& p = d.paper_checks[1];
+    BOOST_TEST(!p.agrees());
+    BOOST_TEST_REQUIRE(p.reconciliations.size() == 1u);
+    BOOST_TEST(p.reconciliations[0].rfind("the second factor of the numerator, ", 0) == 0u, p.reconciliations[0]);
+    BOOST_TEST(p.reconciliations[0].find(", where z, that is ") != std::string::npos, p.reconciliations[0]);
+}
+
+// Two masses and two speeds, a kinetic energy E derived, and `printed` as the paper prints it.
+engine::derivation kinetic_energy_printed(const std::string& printed)
+{
+    return derive_text("id = \"kinetic\"\ntitle = \"test\"\n"
+                       "[[symbol]]\nname = \"M\"\ndimension = \"mass\"\ndomain = \"positive\"\n"
+                       "[[symbol]]\nname = \"m\"\ndimension = \"mass\"\ndomain = \"positive\"\n"
+                       "[[symbol]]\nname = \"u\"\ndimension = \"velocity\"\n"
+                       "[[symbol]]\nname = \"w\"\ndimension = \"velocity\"\n"
+                       "[[symbol]]\nname = \"E\"\ndimension = \"energy\"\n"
+                       "[[step]]\ndefine = \"E\"\nas = \"1/2*m*u^2 + 1/2*M*w^2\"\n"
+                       "[[result]]\nname = \"E\"\nprinted = \"" + printed + "\"\n");
+}
+
+BOOST_AUTO_TEST_CASE(the_squares_missing_are_one_edit)
+{
+    // 1/2 m u + 1/2 M w for 1/2 m u^2 + 1/2 M w^2: every speed squared, one edit.
+    const engine::derivation d = kinetic_energy_printed("1/2*m*u + 1/2*M*w");
+    const engine::paper_comparison& p = d.paper_checks.at(0);
+    BOOST_TEST(!p.agrees());
+    BOOST_TEST(p.reconciliations.back() == "the squares of u and w missing");
+}
+
+BOOST_AUTO_TEST_CASE(when_no_single_edit_reconciles_two_do_said_once)
+{
+    // Appendix A's first line on a small scale: 1/2 m u + 1/2 m w for 1/2 m u^2 + 1/2 M w^2,
+    // the squares missing and m for M in the second term: two edits, one finding (the
+    // squares then M, or M then the squares, make the same form), after the dimensions.
+    const engine::derivation d = kinetic_energy_printed("1/2*m*u + 1/2*m*w");
+    const engine::paper_comparison& p = d.paper_checks.at(0);
+    BOOST_TEST(!p.agrees());
+    BOOST_TEST_REQUIRE(p.reconciliations.size() == 2u);
+    BOOST_TEST(p.reconciliations[0].find("a momentum") != std::string::npos, p.reconciliations[0]);
+    BOOST_TEST(p.reconciliations[1] == "the squares of u and w missing, and write M for m in m*w/2");
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(proof_cache)

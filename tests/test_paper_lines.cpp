@@ -22,12 +22,15 @@
 #include <boost/test/unit_test.hpp>
 
 #include "emit/errata.h"
+#include "emit/json.h"
 #include "emit/latex.h"
+#include "emit/terminal.h"
 #include "engine/derive.h"
 #include "engine/library.h"
 #include "spec/derivation.h"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <map>
@@ -348,6 +351,55 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
         BOOST_TEST(row.find("checked: ") != std::string::npos, row);
 }
 
+BOOST_AUTO_TEST_CASE(appendix_a_line_1_is_reconciled_by_two_edits)
+{
+    // Typed from the paper: Appendix A's first line prints E'_K = 1/2 m v'_m + 1/2 m v'_M,
+    // where 1/2 m v'_m^2 + 1/2 M v'_M^2 belongs: the squares, and M for m in its second term.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    const std::vector<std::string> rows = errata_rows_at(errata, "Appendix A, line 1");
+    BOOST_TEST_REQUIRE(rows.size() == 1u);
+    BOOST_TEST(rows[0].find("the squares of $v'_{M,\\parallel}$ and $v'_{m,\\parallel}$ missing, and write $M$ for "
+                            "$m$ in") != std::string::npos, rows[0]);
+    BOOST_TEST(rows[0].find("no edit") == std::string::npos, rows[0]);
+}
+
+BOOST_AUTO_TEST_CASE(eq14_line_1_blames_the_second_factor_of_its_numerator)
+{
+    // Typed from the paper: Eq. 14's first line puts (1/2 - eps/2) v_1 for v'_2 in the
+    // second factor of the numerator of its second member, where the object ball's
+    // (1/2 + eps/2) v_1 belongs (its first member has v'_{2,par} there).
+    const std::string errata = emit::errata_markdown(library().in_order());
+    std::size_t equations = 0;
+    for (const std::string& row : errata_rows_at(errata, "Eq. 14, line 1")) {
+        if (row.find("| equation |") == std::string::npos || row.find("**disagrees**") == std::string::npos)
+            continue;
+        ++equations;
+        BOOST_TEST(row.find("the second factor of the numerator") != std::string::npos, row);
+        BOOST_TEST(row.find("where $v'_{2,\\parallel}$") != std::string::npos, row);
+    }
+    BOOST_TEST(equations == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_term_a_finding_names_is_written_as_the_paper_prints_it)
+{
+    // Typed from the paper: Eq. 9 prints v'_m with + eps M (v_{m,par} - v_{M,par}), whose
+    // sign is the misprint; the term is named as printed, not as -eps M (...) nor in
+    // another order.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    const std::vector<std::string> rows = errata_rows_at(errata, "Eq. 9");
+    std::size_t named = 0;
+    for (const std::string& row : rows)
+        named += row.find("the sign of the term $\\epsilon M (v_{m,\\parallel} - v_{M,\\parallel})$") !=
+                         std::string::npos
+                     ? 1
+                     : 0;
+    BOOST_TEST(named == 1u);
+    // And the report: no term it names starts with a minus.
+    const std::string report = read(IMPACT_SOURCE_DIR "/output/report.tex");
+    BOOST_TEST(report.find("the sign of the term $-") == std::string::npos);
+    BOOST_TEST(report.find("The sign of the term $-") == std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(a_limit_no_method_settles_is_undecided_never_disagrees)
 {
     // A fictional claim: lim_{x -> infinity} sin(x) = 0. No method (substitution, series,
@@ -391,3 +443,93 @@ limit = "x -> infinity"
     BOOST_TEST(errata.find("0 agree, 0 disagree, 1 undecided") != std::string::npos);
 }
 
+
+BOOST_AUTO_TEST_CASE(json_and_terminal_list_the_undecided_and_the_not_compared_as_the_errata_does)
+{
+    // A fictional derivation: a limit no method settles, a claim about experiment, and a
+    // line nothing compares. Each is listed in derivations.json and by `impact derive`,
+    // undecided or not compared, never as a disagreement.
+    const spec::derivation source = spec::parse_derivation(R"toml(id = "oscillating"
+title = "An oscillation"
+
+[[symbol]]
+name = "x"
+dimension = "1"
+latex = "x"
+domain = "positive"
+
+[[symbol]]
+name = "y"
+dimension = "1"
+latex = "y"
+
+[[step]]
+define = "y"
+as = "sin(x)"
+
+[[result]]
+name = "y"
+
+[[claim]]
+name = "dies_away"
+paper = "Sec. X"
+quote = "The oscillation dies away."
+claim = "y = 0"
+limit = "x -> infinity"
+
+[[claim]]
+name = "springs_tire"
+paper = "Sec. Y"
+quote = "Real springs tire."
+undecided = "a statement about real springs, which experiment decides"
+
+[[not_compared]]
+paper = "Footnote 1"
+because = "a reference"
+)toml", "oscillating.toml");
+    const engine::derivation d = engine::derive(source, {});
+    const nlohmann::json j = nlohmann::json::parse(emit::derivations_json({&d}));
+    const nlohmann::json& checks = j["derivations"][0]["paper_checks"];
+    BOOST_TEST_REQUIRE(checks.size() == 2u);
+    BOOST_TEST(checks[0]["paper"] == "Sec. X");
+    BOOST_TEST(checks[0]["verdict"] == "undecided");
+    BOOST_TEST(checks[1]["paper"] == "Sec. Y");
+    BOOST_TEST(checks[1]["verdict"] == "undecided");
+    BOOST_TEST(checks[1]["printed"] == "Real springs tire.");
+    BOOST_TEST(checks[1]["reason"] == "a statement about real springs, which experiment decides");
+    const nlohmann::json& uncompared = j["derivations"][0]["not_compared"];
+    BOOST_TEST_REQUIRE(uncompared.size() == 1u);
+    BOOST_TEST(uncompared[0]["paper"] == "Footnote 1");
+    BOOST_TEST(uncompared[0]["because"] == "a reference");
+
+    const std::string text = emit::terminal_text(d);
+    BOOST_TEST(text.find("DISAGREES") == std::string::npos, text);
+    BOOST_TEST(text.find("Sec. X: dies_away") != std::string::npos, text);
+    BOOST_TEST(text.find("Sec. Y: springs_tire (no derivation settles it): undecided") != std::string::npos, text);
+    BOOST_TEST(text.find("a statement about real springs, which experiment decides") != std::string::npos, text);
+    BOOST_TEST(text.find("Footnote 1: not compared") != std::string::npos, text);
+}
+
+BOOST_AUTO_TEST_CASE(derivations_json_gives_each_comparison_the_errata_s_verdict)
+{
+    // Typed from the paper: Sec. III's first paragraph speaks of experiment (undecided),
+    // Eq. 3's second line prints 2m v_M for 2M v_M (disagrees), and the references are
+    // not compared.
+    const nlohmann::json j = nlohmann::json::parse(emit::derivations_json(library().in_order()));
+    std::map<std::string, std::set<std::string>> verdicts;
+    std::set<std::string> uncompared;
+    for (const nlohmann::json& d : j["derivations"]) {
+        for (const nlohmann::json& p : d["paper_checks"])
+            verdicts[p["paper"].get<std::string>()].insert(p["verdict"].get<std::string>());
+        for (const nlohmann::json& line : d["not_compared"])
+            uncompared.insert(line["paper"].get<std::string>());
+    }
+    BOOST_TEST((verdicts["Sec. III, 1st paragraph"] == std::set<std::string>{"undecided"}));
+    BOOST_TEST((verdicts["Sec. I, assumptions 1 to 3"] == std::set<std::string>{"undecided"}));
+    BOOST_TEST((verdicts["Eq. 3, line 2"] == std::set<std::string>{"disagrees"}));
+    BOOST_TEST((uncompared == std::set<std::string>{"Footnotes 1 to 8, 12 and 13"}));
+    // Every line the list says is compared has a verdict in the JSON.
+    for (const printed_line& line : paper)
+        if (!line.not_compared)
+            BOOST_TEST(verdicts.count(line.where) == 1u, line.where << " has no verdict in derivations.json");
+}

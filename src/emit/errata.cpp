@@ -113,7 +113,7 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                       "paper's: proven equivalent); a claim agrees when it is proven, and is undecided when it can "
                       "be neither proven nor refuted, or when no derivation can settle it (a statement about "
                       "experiment, an assumption about real bodies), with the reason. For each disagreement the "
-                      "smallest change that reconciles the two is given, when a single edit does. Each row is one "
+                      "smallest change that reconciles the two is given, when one edit, or two, do. Each row is one "
                       "finding: a claim of the text, or a printed form; a misprint that one finding explains in "
                       "several components of one equation is one row. Mathematics is LaTeX between dollar signs.\n\n"
                       "Each row names its place in the paper: a line of a displayed equation (\"Eq. 12, line 2\"), "
@@ -160,10 +160,10 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
             } else if (!p.agrees()) {
                 std::vector<std::string> said;
                 for (const engine::finding& f : p.findings)
-                    said.push_back(cell(finding_latex(f, order, nullptr, &p)));
+                    said.push_back(cell(finding_latex(f, order, &p.written, &p)));
                 if (said.empty() && p.test)
                     said.push_back("as checked, it does not hold");
-                change = said.empty() ? "no single edit; see the derived form" : fmt::format("{}", fmt::join(said, "; "));
+                change = said.empty() ? "no edit, or two, reconciles it; see the derived form" : fmt::format("{}", fmt::join(said, "; "));
                 if (row.size() > 1)
                     change += fmt::format("; one misprint, in each of the {} components", row.size());
             }

@@ -1,5 +1,7 @@
 #include "emit/json.h"
 
+#include "emit/latex.h"
+
 #include "engine/cases.h"
 
 #include "engine/infix.h"
@@ -109,6 +111,9 @@ json derivation_json(const engine::derivation& d)
         pj["kind"] = kinds[static_cast<int>(p.what)];
         pj["subject"] = p.subject;
         pj["agrees"] = p.agrees();
+        // agrees, disagrees, or undecided (sampled only, or a limit no method settles): the
+        // errata's verdict, never "disagrees" for a claim that is not refuted.
+        pj["verdict"] = comparison_verdict(p);
         pj["status"] = engine::to_string(p.agreement);
         pj["printed"] = p.printed_text;
         pj["derived"] = p.derived.info(GiNaC::info_flags::relation)
@@ -120,6 +125,22 @@ json derivation_json(const engine::derivation& d)
         }
         j["paper_checks"].push_back(pj);
     }
+    // Claims no derivation can settle: compared, and undecided with the reason.
+    for (const spec::open_claim& c : d.source.open_claims) {
+        json pj;
+        pj["paper"] = c.paper.value;
+        pj["kind"] = "claim";
+        pj["subject"] = c.name.value;
+        pj["agrees"] = false;
+        pj["verdict"] = "undecided";
+        pj["printed"] = c.quote.value;
+        pj["reason"] = c.undecided.value;
+        j["paper_checks"].push_back(pj);
+    }
+    // Lines of the paper nothing compares, with why.
+    j["not_compared"] = json::array();
+    for (const spec::not_compared& line : d.source.uncompared)
+        j["not_compared"].push_back({{"paper", line.paper.value}, {"because", line.because.value}});
     j["kernels"] = json::array();
     for (const engine::kernel& k : d.kernels) {
         json kj;

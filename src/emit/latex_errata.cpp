@@ -61,6 +61,18 @@ std::string finding_latex(const engine::finding& f, const term_order& order, con
                 out += "$" + latex_as_written(*tree, order) + "$";
                 break;
             }
+            if (p.term) {
+                // A term named whatever its sign: as the paper writes it, without a minus
+                // its written order would put in front (-eps M (v_m - v_M) for M eps (v_M - v_m)).
+                std::string term = latex(p.value, order, written);
+                if (term.rfind("-", 0) == 0) {
+                    const std::string negated = latex(-p.value, order, written);
+                    if (negated.rfind("-", 0) != 0)
+                        term = negated;
+                }
+                out += "$" + term + "$";
+                break;
+            }
             out += "$" +
                    (GiNaC::is_a<GiNaC::relational>(p.value)
                         ? latex(p.value.lhs(), order, written) + " = " + latex(p.value.rhs(), order, written)
@@ -121,13 +133,13 @@ std::string fragment_writer::subject(const engine::paper_comparison& p) const
     return latex_text(name) + " (equation)";
 }
 
-// What to say of a disagreement no single edit reconciles: for a claim, the claim as
+// What to say of a disagreement no edit, or two, reconciles: for a claim, the claim as
 // checked (which the table does not show otherwise) does not hold; for a printed form,
 // the derived form beside it is what is right.
 std::string fragment_writer::unreconciled(const engine::paper_comparison& p, double width) const
 {
     if (p.what != engine::paper_comparison::kind::claim || !p.test)
-        return "no single edit; the derived form is what holds";
+        return "no edit, or two, reconciles it; the derived form is what holds";
     const engine::check_result& c = *p.test;
     const std::string checked = claim_math(c, order_, &c.written);
     // Too wide to set inline where it is said: refer to the claim's section instead.

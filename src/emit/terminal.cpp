@@ -1,5 +1,7 @@
 #include "emit/terminal.h"
 
+#include "emit/latex.h"
+
 #include "engine/cases.h"
 #include "engine/dimensional.h"
 #include "engine/infix.h"
@@ -69,16 +71,25 @@ std::string terminal_text(const engine::derivation& d)
     const std::vector<std::string> without = engine::symbols_without_dimension(d.symbols);
     if (!without.empty())
         out += fmt::format("\nwithout a dimension (not checked for consistent units): {}\n", fmt::join(without, ", "));
-    if (!d.paper_checks.empty()) {
+    if (!d.paper_checks.empty() || !d.source.open_claims.empty() || !d.source.uncompared.empty()) {
         out += "\nthe paper, held to account\n";
         for (const engine::paper_comparison& p : d.paper_checks) {
+            // The errata's verdict: a claim neither proven nor refuted is undecided.
+            const std::string verdict = comparison_verdict(p);
             out += fmt::format("  {}: {} ({}): {}\n", p.paper, p.subject, engine::to_string(p.agreement),
-                               p.agrees() ? "agrees" : "DISAGREES");
-            if (!p.agrees())
+                               verdict == "disagrees" ? "DISAGREES" : verdict);
+            if (verdict == "undecided")
+                out += fmt::format("      neither proven nor refuted: {}\n", p.agreement.method);
+            if (verdict == "disagrees")
                 out += fmt::format("      printed: {}\n      derived: {}\n", p.printed_text, text(p.derived));
             for (const std::string& change : p.reconciliations)
                 out += fmt::format("      reconciled by: {}\n", change);
         }
+        for (const spec::open_claim& c : d.source.open_claims)
+            out += fmt::format("  {}: {} (no derivation settles it): undecided\n      {}\n", c.paper.value,
+                               c.name.value, c.undecided.value);
+        for (const spec::not_compared& line : d.source.uncompared)
+            out += fmt::format("  {}: not compared\n      {}\n", line.paper.value, line.because.value);
     }
     return out;
 }

@@ -40,6 +40,7 @@ public:
             run_step(st);
         for (const spec::result& r : s.results)
             add_result(r);
+        locate_by_members();
         for (const spec::check& c : s.checks)
             out_.checks.push_back(run_check(c));
         for (const spec::claim& c : s.claims)
@@ -374,6 +375,36 @@ private:
             out_.paper_checks.push_back(std::move(p));
         }
         out_.results.push_back(std::move(r));
+    }
+
+    // A printed member of a line that disagrees, beside one of the same line that agrees:
+    // the factor where they part is the misprint, of the edits of equal size that reconcile
+    // it (Eq. 14's first line).
+    void locate_by_members()
+    {
+        using kind = paper_comparison::kind;
+        for (paper_comparison& p : out_.paper_checks) {
+            if (p.what != kind::result || p.agrees() || !p.written.tree())
+                continue;
+            for (const paper_comparison& q : out_.paper_checks) {
+                if (&q == &p || q.what != kind::result || q.paper != p.paper || !q.agrees() || !q.written.tree())
+                    continue;
+                const auto found =
+                    locate_by_member(*p.written.tree(), *q.written.tree(), p.derived, out_.symbols, resolver(), run_);
+                if (!found)
+                    continue;
+                // The dimensions stay said first; the edits give way to the factor.
+                std::vector<finding> kept;
+                for (const finding& f : p.findings)
+                    if (std::any_of(f.parts.begin(), f.parts.end(),
+                                    [](const finding::part& part) { return part.what == finding::part::kind::dimension; }))
+                        kept.push_back(f);
+                kept.push_back(*found);
+                p.findings = std::move(kept);
+                p.reconciliations = plain_texts(p.findings, out_.symbols);
+                break;
+            }
+        }
     }
 
     // A printed form of the wrong dimension says so first: it is often the clearest

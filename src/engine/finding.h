@@ -30,6 +30,9 @@ struct finding {
         GiNaC::ex value;
         std::optional<GiNaC::ex> point;
         engine::dimension dim;
+        /// math: a term of a sum, named whatever its sign ("the sign of the term ..."), so
+        /// that a printer may show it as the paper writes it, +x or -x.
+        bool term = false;
     };
     std::vector<part> parts;
 
@@ -41,6 +44,13 @@ struct finding {
     finding& math(const GiNaC::ex& e)
     {
         parts.push_back({part::kind::math, {}, e, {}, {}});
+        return *this;
+    }
+    /// A term of a sum, named whatever its sign.
+    finding& term(const GiNaC::ex& e)
+    {
+        math(e);
+        parts.back().term = true;
         return *this;
     }
     finding& tends(const GiNaC::ex& symbol, std::optional<GiNaC::ex> point)

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <sstream>
 
 namespace impact::engine {
 namespace {
@@ -101,7 +102,7 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
     std::set<std::string> present;
     for (const site& s : sites) {
         if (s.is_term && !s.path.empty()) {
-            emit({2, [=] { return finding().say(side + "the sign of the term ").math(magnitude(s.node)); },
+            emit({2, [=] { return finding().say(side + "the sign of the term ").term(magnitude(s.node)); },
                   replace_at(e, s.path, 0, -s.node)});
         }
         if (!GiNaC::is_a<GiNaC::symbol>(s.node))
@@ -110,7 +111,7 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
         if (!from)
             continue;
         present.insert(from->name);
-        emit({3, [=] { return finding().say(side + "a spurious ").math(from->symbol).say(" in ").math(magnitude(s.term)); },
+        emit({3, [=] { return finding().say(side + "a spurious ").math(from->symbol).say(" in ").term(magnitude(s.term)); },
               replace_at(e, s.path, 0, 1)});
         for (const quantity& to : symbols.all()) {
             if (to.name == from->name || !wanted.count(to.name))
@@ -125,7 +126,7 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
                           .say(" for ")
                           .math(from->symbol)
                           .say(" in ")
-                          .math(magnitude(s.term));
+                          .term(magnitude(s.term));
                   },
                   replace_at(e, s.path, 0, to.symbol)});
         }
@@ -137,6 +138,32 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
             emit({3, [=] { return finding().say(side).math(sa).say(" and ").math(sb).say(" swapped"); },
                   e.subs(GiNaC::lst{sa, sb}, GiNaC::lst{sb, sa}, GiNaC::subs_options::no_pattern)});
         }
+    }
+    // The symbols of one dimension squared throughout (½ m v for ½ m v², in every term):
+    // the squares missing.
+    std::map<std::string, std::vector<std::string>> by_dimension;
+    for (const quantity& q : symbols.all())   // in the order of their declaration
+        if (present.count(q.name) && q.dim && !q.dim->is_pure_number())
+            by_dimension[q.dim->to_string()].push_back(q.name);
+    for (const auto& [dim, names] : by_dimension) {
+        GiNaC::exmap square;
+        std::vector<GiNaC::ex> squared;
+        for (const std::string& name : names) {
+            square[symbols.find(name)->symbol] = GiNaC::pow(symbols.find(name)->symbol, 2);
+            squared.push_back(symbols.find(name)->symbol);
+        }
+        emit({3,
+              [=] {
+                  finding f;
+                  f.say(side + "the squares of ");
+                  for (std::size_t i = 0; i < squared.size(); ++i) {
+                      if (i > 0)
+                          f.say(i + 1 == squared.size() ? " and " : ", ");
+                      f.math(squared[i]);
+                  }
+                  return f.say(" missing");
+              },
+              e.subs(square, GiNaC::subs_options::no_pattern)});
     }
     // Every symbol of the expression that has a primed version, primed.
     GiNaC::exmap prime_all;
@@ -193,8 +220,23 @@ std::set<std::string> names_in(const GiNaC::ex& e, const symbol_table& symbols)
     return names;
 }
 
+// The second edits of an edited form, `first` its first edit.
+using extender = std::function<void(const candidate& first, const std::function<void(candidate)>& emit)>;
+
+// At most this many forms of two edits are screened: beyond it the search stops at one
+// edit (the printed form is long, and a finding of two edits would be a guess among many).
+constexpr std::size_t two_edit_budget = 20000;
+
+finding joined(finding a, const finding& b)
+{
+    a.say(", and ");
+    a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
+    return a;
+}
+
 template <class Screen, class Confirm>
-std::vector<finding> search(std::vector<candidate> all, const symbol_table& symbols, Screen screen, Confirm confirm)
+std::vector<finding> search(std::vector<candidate> all, const symbol_table& symbols, Screen screen, Confirm confirm,
+                            const extender& extend)
 {
     // The smallest kind of change that works, every edit of that kind that does.
     std::stable_sort(all.begin(), all.end(),
@@ -210,6 +252,52 @@ std::vector<finding> search(std::vector<candidate> all, const symbol_table& symb
             found.emplace(plain_text(change, symbols), std::move(change));
             best = c.priority;
         }
+    }
+    // No single edit: two, the first of a kind a misprint makes (a sign, a symbol, the
+    // primes or squares missing; not a factor 2 or the reciprocal), the smallest pair of
+    // kinds that works, every pair of that kind that does. Two pairs that make the same
+    // form are one change (A then B is B then A), told in the fewer words: the one whose
+    // second edit names a term of the printed form, not of the form the first edit made.
+    if (found.empty()) {
+        std::map<std::string, std::pair<std::string, finding>> by_form;
+        std::vector<std::pair<const candidate*, candidate>> pairs;
+        for (const candidate& first : all) {
+            if (first.priority > 3 || pairs.size() > two_edit_budget)
+                continue;
+            extend(first, [&](candidate second) {
+                if (second.priority <= 3)
+                    pairs.emplace_back(&first, std::move(second));
+            });
+        }
+        if (pairs.size() <= two_edit_budget) {
+            std::stable_sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) {
+                return a.first->priority + a.second.priority < b.first->priority + b.second.priority;
+            });
+            for (const auto& [first, second] : pairs) {
+                const int priority = first->priority + second.priority;
+                if (best && priority > best)
+                    break;
+                if (screen(second.edited) && confirm(second.edited)) {
+                    finding a = first->change(), b = second.change();
+                    std::string ta = plain_text(a, symbols), tb = plain_text(b, symbols);
+                    if (tb < ta) {
+                        std::swap(a, b);
+                        std::swap(ta, tb);
+                    }
+                    std::string text = ta + ", and " + tb;
+                    std::ostringstream form;
+                    form << second.edited;
+                    finding both = joined(std::move(a), b);
+                    auto [at, inserted] = by_form.try_emplace(form.str(), text, both);
+                    if (!inserted && (text.size() < at->second.first.size() ||
+                                      (text.size() == at->second.first.size() && text < at->second.first)))
+                        at->second = {std::move(text), std::move(both)};
+                    best = priority;
+                }
+            }
+        }
+        for (auto& [form, change] : by_form)
+            found.emplace(std::move(change.first), std::move(change.second));
     }
     std::vector<finding> out;
     for (auto& [text, change] : found)
@@ -244,7 +332,10 @@ static std::vector<finding> reconcile_expression_search(const GiNaC::ex& printed
     auto confirm = [&](const GiNaC::ex& edited) {
         return prove_equal(resolve(edited), derived, symbols, run).what == verdict::status::proven;
     };
-    return search(all, symbols, screen, confirm);
+    auto extend = [&](const candidate& first, const std::function<void(candidate)>& emit) {
+        single_edits(first.edited, "", wanted, symbols, emit);
+    };
+    return search(all, symbols, screen, confirm, extend);
 }
 
 static std::vector<finding> reconcile_equation_search(const GiNaC::ex& printed, const GiNaC::ex& derived,
@@ -278,7 +369,14 @@ static std::vector<finding> reconcile_equation_search(const GiNaC::ex& printed, 
     auto confirm = [&](const GiNaC::ex& edited) {
         return prove_equivalent(resolve(edited), resolve(derived), symbols, run).what == verdict::status::proven;
     };
-    return search(all, symbols, screen, confirm);
+    auto extend = [&](const candidate& first, const std::function<void(candidate)>& emit) {
+        const GiNaC::ex lhs = first.edited.lhs(), rhs = first.edited.rhs();
+        single_edits(lhs, "on the left, ", wanted, symbols,
+                     [&](candidate c) { emit({c.priority, c.change, c.edited == rhs}); });
+        single_edits(rhs, "on the right, ", wanted, symbols,
+                     [&](candidate c) { emit({c.priority, c.change, lhs == c.edited}); });
+    };
+    return search(all, symbols, screen, confirm, extend);
 }
 
 std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC::ex& derived,
@@ -308,6 +406,184 @@ std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::e
         throw;
     } catch (const std::exception&) {
         return {};
+    }
+}
+
+} // namespace impact::engine
+
+namespace impact::engine {
+namespace {
+
+// The value of a written node; nothing for a call it does not know.
+std::optional<GiNaC::ex> value_of(const written_form::node& n)
+{
+    using kind = written_form::node::kind;
+    std::vector<GiNaC::ex> parts;
+    for (const written_form::node& child : n.children) {
+        const auto v = value_of(child);
+        if (!v)
+            return std::nullopt;
+        parts.push_back(*v);
+    }
+    switch (n.what) {
+    case kind::atom: return n.value;
+    case kind::group: return parts.at(0);
+    case kind::negate: return -parts.at(0);
+    case kind::power: return GiNaC::pow(parts.at(0), parts.at(1));
+    case kind::sum: {
+        GiNaC::ex sum = 0;
+        for (std::size_t i = 0; i < parts.size(); ++i)
+            sum += i < n.flags.size() && n.flags[i] ? -parts[i] : parts[i];
+        return sum;
+    }
+    case kind::product: {
+        GiNaC::ex product = 1;
+        for (std::size_t i = 0; i < parts.size(); ++i)
+            product *= i < n.flags.size() && n.flags[i] ? 1 / parts[i] : parts[i];
+        return product;
+    }
+    case kind::call:
+        if (parts.size() == 1 && n.name == "sqrt")
+            return GiNaC::sqrt(parts[0]);
+        if (parts.size() == 1 && n.name == "abs")
+            return GiNaC::abs(parts[0]);
+        return std::nullopt;
+    case kind::relation: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+struct written_factor {
+    GiNaC::ex value;
+    bool divides;
+};
+
+// The factors of a written product, products within parentheses opened, each with whether
+// it divides.
+bool flatten(const written_form::node& n, bool divides, std::vector<written_factor>& out)
+{
+    using kind = written_form::node::kind;
+    if (n.what == kind::group)
+        return flatten(n.children.at(0), divides, out);
+    if (n.what == kind::product) {
+        for (std::size_t i = 0; i < n.children.size(); ++i)
+            if (!flatten(n.children[i], divides != (i < n.flags.size() && n.flags[i]), out))
+                return false;
+        return true;
+    }
+    const auto v = value_of(n);
+    if (!v)
+        return false;
+    out.push_back({*v, divides});
+    return true;
+}
+
+// Every way of cutting `n` factors into `k` runs, each run at least one factor: the ends
+// of the runs.
+void cuts(std::size_t n, std::size_t k, std::vector<std::size_t>& ends, std::vector<std::vector<std::size_t>>& out)
+{
+    const std::size_t from = ends.empty() ? 0 : ends.back();
+    if (ends.size() + 1 == k) {
+        if (from < n) {
+            ends.push_back(n);
+            out.push_back(ends);
+            ends.pop_back();
+        }
+        return;
+    }
+    for (std::size_t end = from + 1; end + (k - ends.size() - 1) <= n; ++end) {
+        ends.push_back(end);
+        cuts(n, k, ends, out);
+        ends.pop_back();
+    }
+}
+
+const char* ordinal(std::size_t i)
+{
+    static const char* const names[] = {"first", "second", "third", "fourth", "fifth", "sixth"};
+    return i < 6 ? names[i] : "next";
+}
+
+} // namespace
+
+std::optional<finding> locate_by_member(const written_form::node& printed, const written_form::node& other,
+                                        const GiNaC::ex& derived, const symbol_table& symbols,
+                                        const resolver& resolve, proof_cache& run)
+{
+    try {
+        std::vector<written_factor> p, q;
+        if (!flatten(printed, false, p) || !flatten(other, false, q))
+            return std::nullopt;
+        // Numerator and denominator apart, each in written order.
+        struct side {
+            std::vector<GiNaC::ex> printed, other;
+        } sides[2];
+        for (const written_factor& f : p)
+            sides[f.divides].printed.push_back(f.value);
+        for (const written_factor& f : q)
+            sides[f.divides].other.push_back(f.value);
+        if (q.size() < 2 || sides[0].other.empty())
+            return std::nullopt;
+        auto equal = [&](const GiNaC::ex& a, const GiNaC::ex& b) {
+            return prove_equal(resolve(a), resolve(b), symbols, run).what == verdict::status::proven;
+        };
+        // The one run of one side that differs, in the best cutting of each side.
+        struct differing {
+            bool divides;
+            std::size_t index;   ///< which factor of the other member
+            GiNaC::ex printed, other;
+        };
+        std::vector<differing> found;
+        for (int d = 0; d < 2; ++d) {
+            const side& s = sides[d];
+            if (s.other.empty() && s.printed.empty())
+                continue;
+            if (s.other.empty() || s.printed.size() < s.other.size())
+                return std::nullopt;
+            std::vector<std::vector<std::size_t>> all;
+            std::vector<std::size_t> ends;
+            cuts(s.printed.size(), s.other.size(), ends, all);
+            std::optional<std::vector<differing>> best;
+            for (const std::vector<std::size_t>& cut : all) {
+                std::vector<differing> here;
+                for (std::size_t i = 0, begin = 0; i < cut.size(); begin = cut[i], ++i) {
+                    GiNaC::ex run_value = 1;
+                    for (std::size_t j = begin; j < cut[i]; ++j)
+                        run_value *= s.printed[j];
+                    if (!equal(run_value, s.other[i]))
+                        here.push_back({d == 1, i, run_value, s.other[i]});
+                    if (best && here.size() >= best->size())
+                        break;
+                }
+                if (!best || here.size() < best->size())
+                    best = here;
+            }
+            if (!best)
+                return std::nullopt;
+            found.insert(found.end(), best->begin(), best->end());
+        }
+        if (found.size() != 1)
+            return std::nullopt;
+        const differing& at = found.front();
+        // The printed form with the other member's factor in place of the run reconciles?
+        const GiNaC::ex printed_value = *value_of(printed);
+        const GiNaC::ex edited = at.divides ? printed_value * at.printed / at.other
+                                            : printed_value / at.printed * at.other;
+        if (prove_equal(resolve(edited), derived, symbols, run).what != verdict::status::proven)
+            return std::nullopt;
+        finding f;
+        f.say(std::string("the ") + ordinal(at.index) + " factor of the " +
+              (at.divides ? "denominator" : "numerator") + ", ")
+            .math(at.printed)
+            .say(", where ")
+            .math(at.other);
+        if (!resolve(at.other).is_equal(at.other))
+            return f.say(", that is ").math(resolve(at.other)).say(", belongs");
+        return f.say(" belongs");
+    } catch (const error&) {
+        throw;
+    } catch (const std::exception&) {
+        return std::nullopt;
     }
 }
 

@@ -65,7 +65,7 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
                        "paper's: proven equivalent); a claim agrees when it is proven, and is undecided when it "
                        "can be neither proven nor refuted, or when no derivation can settle it (a statement about "
                        "experiment, an assumption about real bodies), with the reason. For each disagreement the "
-                       "smallest change that reconciles the two is given, when a single edit does. Each row is one "
+                       "smallest change that reconciles the two is given, when one edit, or two, do. Each row is one "
                        "finding: a claim of the text, or a printed form; a misprint that one finding explains in "
                        "several components of one equation is one row. Printed forms are set as the paper prints "
                        "them, term by term and factor by factor, nothing merged or simplified, beside the derived "
