@@ -368,10 +368,12 @@ struct rough_pair {
     double w_M = 0, w_m = 0, eps = 0.8, beta = 0.5, mu = 0.3;
 };
 
-impact::collide_rough_result<double, 2> run(const rough_pair& c)
+// `form`: nothing for the accurate form, impact::fast for the fast one.
+template <class... Form>
+impact::collide_rough_result<double, 2> run(const rough_pair& c, Form... form)
 {
     return impact::collide_rough(c.M, c.m, c.R_M, c.R_m, c.q_M, c.q_m, c.C_M, c.C_m, c.v_M, c.v_m, c.w_M, c.w_m,
-                                 c.eps, c.beta, c.mu);
+                                 c.eps, c.beta, c.mu, form...);
 }
 
 // Walton's model against a fixed sphere, in long double: the moving sphere's velocity and
@@ -429,9 +431,11 @@ rough_pair draw_rough(std::mt19937_64& random)
     return c;
 }
 
-BOOST_AUTO_TEST_CASE(random_rough_fixed_spheres_match_waltons_model_with_an_infinite_mass)
+// Within `bound` ulps: 4 for the accurate form, 16 (its bound) for the fast one.
+template <class... Form>
+void check_rough_fixed(std::uint64_t seed, double bound, Form... form)
 {
-    std::mt19937_64 random(4001);
+    std::mt19937_64 random(seed);
     double worst = 0;
     int sliding = 0, sticking = 0;
     for (int i = 0; i < 2000; ++i) {
@@ -440,7 +444,7 @@ BOOST_AUTO_TEST_CASE(random_rough_fixed_spheres_match_waltons_model_with_an_infi
             c.mu = inf;
         const bool M_fixed = i % 2 == 0;
         (M_fixed ? c.M : c.m) = inf;
-        const auto out = run(c);
+        const auto out = run(c, form...);
         if (out.status == impact::status::separating)
             continue;
         BOOST_TEST_REQUIRE((out.status == impact::status::ok));
@@ -462,9 +466,19 @@ BOOST_AUTO_TEST_CASE(random_rough_fixed_spheres_match_waltons_model_with_an_infi
         const bool slides = !std::isinf(c.mu) && std::fabs(a.J_t) == c.mu * a.J_n;
         (slides ? sliding : sticking) += 1;
     }
-    BOOST_TEST(worst <= 4.0, "worst " << worst << " ulps");
+    BOOST_TEST(worst <= bound, "worst " << worst << " ulps");
     BOOST_TEST(sliding > 100);
     BOOST_TEST(sticking > 100);
+}
+
+BOOST_AUTO_TEST_CASE(random_rough_fixed_spheres_match_waltons_model_with_an_infinite_mass)
+{
+    check_rough_fixed(4001, 4);
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_rough_form_matches_waltons_model_with_an_infinite_mass_within_its_bound)
+{
+    check_rough_fixed(4011, 16, impact::fast);
 }
 
 BOOST_AUTO_TEST_CASE(a_rough_sphere_hitting_a_fixed_one_head_on_rebounds_at_eps_times_the_approach)
@@ -541,9 +555,10 @@ BOOST_AUTO_TEST_CASE(rough_masses_that_are_no_fixed_sphere_stay_refused)
     BOOST_TEST((run(c).status == impact::status::invalid_friction));
 }
 
-BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_for_fixed_spheres_bit_for_bit)
+template <class... Form>
+void check_rough_batch(std::uint64_t seed, Form... form)
 {
-    std::mt19937_64 random(4003);
+    std::mt19937_64 random(seed);
     const std::size_t count = 1003;
     impact::collide_rough_batch_arrays<double, 2> batch(count);
     std::vector<rough_pair> pairs(count);
@@ -575,11 +590,11 @@ BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_for_fixed_spheres_
             batch.v_m(axis)[i] = c.v_m[axis];
         }
     }
-    impact::collide_rough_batch(batch.data());
+    impact::collide_rough_batch(batch.data(), form...);
     std::size_t fixed_resolved = 0;
     for (std::size_t i = 0; i < count; ++i) {
         const rough_pair& c = pairs[i];
-        const auto out = run(c);
+        const auto out = run(c, form...);
         fixed_resolved += out.status == impact::status::ok && (std::isinf(c.M) || std::isinf(c.m)) ? 1 : 0;
         BOOST_TEST_CONTEXT("pair " << i)
         {
@@ -593,6 +608,16 @@ BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_for_fixed_spheres_
         }
     }
     BOOST_TEST(fixed_resolved > count / 5);
+}
+
+BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_for_fixed_spheres_bit_for_bit)
+{
+    check_rough_batch(4003);
+}
+
+BOOST_AUTO_TEST_CASE(the_fast_rough_batch_gives_the_fast_scalar_results_for_fixed_spheres_bit_for_bit)
+{
+    check_rough_batch(4013, impact::fast);
 }
 
 } // namespace

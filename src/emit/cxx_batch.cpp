@@ -292,7 +292,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const std::size_t n = dimension(k);
     const std::vector<lane_input> inputs = lane_inputs(k);
     const bool fast = which == form::fast;
-    const std::string loop = fmt::format("{}{}_batch_{}d", k.name, fast ? "_fast" : "", n);
+    // The fast loop's name ends in `_fast`, which no accurate loop's (`_<n>d`) does.
+    const std::string loop = fmt::format("{}_batch_{}d{}", k.name, n, fast ? "_fast" : "");
 
     std::vector<std::string> element_names, plain_names, arguments;
     for (const lane_input& in : inputs) {

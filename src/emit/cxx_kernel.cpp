@@ -176,8 +176,8 @@ void print_fast_documentation(std::string& out, const kernel_plan& fast, const k
     const compile::cost cost = compile::cost_of(fast.code), accurate_cost = compile::cost_of(accurate.code);
     out += fmt::format("\n{0} {1}({2}, impact::fast): the fast form of {1}{3}, with the\n"
                        "{0} same guards and statuses, each output in its cheapest candidate form within its fast\n"
-                       "{0} bound (verification.md): {4} operations, of them {5} divisions and {6} square roots\n"
-                       "{0} (the accurate form: {7}, {8} and {9}).\n",
+                       "{0} bound (verification.md): {4} operations with the guards' conditions, of them {5}\n"
+                       "{0} division(s) and {6} square root(s) (the accurate form: {7}, {8} and {9}).\n",
                        comment, k.limit_of.empty() ? k.name : k.limit_of, fmt::join(parameter_names(k), ", "),
                        k.limit_of.empty() ? "" : fmt::format(" with {} = +infinity", k.fixed_mass), cost.operations,
                        cost.divisions, cost.square_roots, accurate_cost.operations, accurate_cost.divisions,

@@ -75,7 +75,8 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
                       "scale: its exact value, or the largest velocity magnitude among the inputs and the "
                       "exact outputs (times the reduced mass for the impulse J). Every output must stay "
                       "within its bound, 4 ulps unless its derivation file sets another with a reason, in "
-                      "every type, or the regeneration fails. The programs are measured "
+                      "every type, or the regeneration fails; in the fast form (`impact::fast`), its fast bound, "
+                      "16 ulps unless the file sets another. The programs are measured "
                       "exactly as emitted (one operation at a time, no FMA contraction: kernels are compiled "
                       "with -ffp-contract=off in the tests).\n";
     for (const verify::kernel_plan* plan : plans) {
@@ -104,7 +105,7 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
         out += "\nThe fast form (`impact::fast`): each output in its cheapest candidate within its fast bound (16 ulps "
                "unless the derivation file sets another), the same guards and statuses.";
         if (verify::fast_is_accurate(*plan)) {
-            out += " No candidate is cheaper within those bounds: the fast form is the accurate one.\n";
+            out += " Within those bounds in double no candidate is cheaper: the fast form is the accurate one.\n";
         } else {
             out += "\n\n";
             out += accuracy_table(*plan, plan->fast_emitted, &engine::kernel_output::fast_bound_ulps,

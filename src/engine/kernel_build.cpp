@@ -129,6 +129,12 @@ public:
         kernel k;
         k.name = spec_kernel.name.value;
         k.where = spec_kernel.name.where;
+        // The names the kernels' headers define in namespace impact beside the kernels.
+        for (const char* taken : {"fast", "fast_t", "status", "detail"})
+            if (k.name == taken)
+                throw error(k.where, fmt::format("a kernel cannot be named '{}': the kernels' headers define "
+                                                 "impact::{} (give the kernel another name)",
+                                                 k.name, k.name));
         k.batch = spec_kernel.batch;
         std::set<std::string> seen;
         auto add_input = [&](const spec::text& name) {

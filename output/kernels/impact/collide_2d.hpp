@@ -580,8 +580,8 @@ namespace detail {
 
 // collide(m, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 20 operations, of them 2 divisions and 0 square roots
-// (the accurate form: 126, 4 and 0).
+// bound (verification.md): 20 operations with the guards' conditions, of them 2
+// division(s) and 0 square root(s) (the accurate form: 126, 4 and 0).
 // v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display, fma": at most 4.98 ulps in double on 4200 samples.
@@ -666,8 +666,8 @@ inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>
 
 // collide(M, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with m = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 20 operations, of them 2 divisions and 0 square roots
-// (the accurate form: 105, 3 and 0).
+// bound (verification.md): 20 operations with the guards' conditions, of them 2
+// division(s) and 0 square root(s) (the accurate form: 105, 3 and 0).
 // v_M[0] is computed in the form "limit of display, fma": at most 4.58 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display, fma": at most 3.85 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
@@ -754,8 +754,8 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
 
 /// collide(M, m, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide, with the
 /// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 28 operations, of them 1 divisions and 0 square roots
-/// (the accurate form: 107, 2 and 0).
+/// bound (verification.md): 28 operations with the guards' conditions, of them 1
+/// division(s) and 0 square root(s) (the accurate form: 107, 2 and 0).
 /// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), fma": at most 6.53 ulps in double on 4200 samples.
 /// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), fma": at most 4.80 ulps in double on 4200 samples.
 /// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), fma": at most 6.23 ulps in double on 4200 samples.
@@ -853,7 +853,7 @@ inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>
 
 namespace detail {
 
-// The range of collide_fast_batch_2d's inputs within which its arithmetic stays in the normal range: where
+// The range of collide_batch_2d_fast's inputs within which its arithmetic stays in the normal range: where
 // every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
 // normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
 // the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
@@ -866,12 +866,12 @@ namespace detail {
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
 // quadruple long double): k = 3, 101, 2015, 1991; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_fast_batch_2d_k = input_k<Real>(3, 101, 2015, 1991);
+constexpr int collide_batch_2d_fast_k = input_k<Real>(3, 101, 2015, 1991);
 
 // The loop of collide_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE void collide_fast_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
@@ -943,11 +943,11 @@ IMPACT_ALWAYS_INLINE void collide_fast_batch_2d(std::size_t count, const Real* I
         const Real v_my_out = t19 + v_my;
         const std::int64_t finite = ((detail::zero_if_finite(v_Mx_out, v_My_out) + detail::zero_if_finite(v_mx_out, v_my_out)) == Real(0));
         std::int64_t doubtful = 0;
-        if constexpr (collide_fast_batch_2d_k<Real> >= 0) {
-            constexpr Real lowest = detail::power_of_2<Real>(-collide_fast_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_fast_batch_2d_k<Real>);
+        if constexpr (collide_batch_2d_fast_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_fast_k<Real>);
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My)))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), std::fabs(eps))), highest));
         }
-        if constexpr (collide_fast_batch_2d_k<Real> < 0)
+        if constexpr (collide_batch_2d_fast_k<Real> < 0)
             doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t0)), detail::zero_as_min(t5)), std::fabs(t9))), detail::least(detail::least(detail::most(std::fabs(t10), detail::zero_as_min(t8)), detail::most(detail::most(std::fabs(t12), detail::zero_as_min(t11)), detail::zero_as_min(t4))), detail::least(std::fabs(t13), detail::most(std::fabs(t14), detail::zero_as_min(m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t15), detail::zero_as_min(t0)), detail::most(std::fabs(t16), detail::zero_as_min(t2))), detail::least(detail::most(std::fabs(t17), detail::zero_as_min(M)), detail::most(std::fabs(t18), detail::zero_as_min(t0)))), detail::most(std::fabs(t19), detail::zero_as_min(t2)))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
@@ -958,10 +958,10 @@ IMPACT_ALWAYS_INLINE void collide_fast_batch_2d(std::size_t count, const Real* I
     }
 }
 
-// The pairs collide_fast_batch_2d left to the scalar collide (status underflow: a value it tests for underflow may be
+// The pairs collide_batch_2d_fast left to the scalar collide (status underflow: a value it tests for underflow may be
 // below the normal range), each resolved by it, which decides exactly.
 template <class Real>
-inline void collide_fast_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     bool doubtful = false;
     for (std::size_t i = 0; i < count; ++i)
@@ -980,10 +980,10 @@ inline void collide_fast_batch_2d_settle(std::size_t count, const Real* IMPACT_R
     }
 }
 
-// collide_fast_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// collide_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
-inline void collide_fast_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
@@ -1004,11 +1004,11 @@ inline void collide_fast_batch_2d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_fast_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_fast_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_fast_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_fast_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
@@ -1019,9 +1019,9 @@ template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 2>& data, fast_t) noexcept
 {
     if (data.status)
-        detail::collide_fast_batch_2d_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, data.status);
+        detail::collide_batch_2d_fast_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, data.status);
     else
-        detail::collide_fast_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, nullptr);
+        detail::collide_batch_2d_fast_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, nullptr);
 }
 
 } // namespace impact

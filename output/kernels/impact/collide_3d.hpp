@@ -799,8 +799,8 @@ namespace detail {
 
 // collide(m, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 31 operations, of them 3 divisions and 0 square roots
-// (the accurate form: 155, 4 and 0).
+// bound (verification.md): 31 operations with the guards' conditions, of them 3
+// division(s) and 0 square root(s) (the accurate form: 155, 4 and 0).
 // v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_M[2] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
@@ -905,8 +905,8 @@ inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>
 
 // collide(M, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with m = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 31 operations, of them 3 divisions and 0 square roots
-// (the accurate form: 202, 6 and 0).
+// bound (verification.md): 31 operations with the guards' conditions, of them 3
+// division(s) and 0 square root(s) (the accurate form: 202, 6 and 0).
 // v_M[0] is computed in the form "limit of display, fma": at most 4.35 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display, fma": at most 4.24 ulps in double on 4200 samples.
 // v_M[2] is computed in the form "limit of display, fma": at most 5.16 ulps in double on 4200 samples.
@@ -1013,8 +1013,8 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
 
 /// collide(M, m, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide, with the
 /// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 40 operations, of them 1 divisions and 0 square roots
-/// (the accurate form: 158, 2 and 0).
+/// bound (verification.md): 40 operations with the guards' conditions, of them 1
+/// division(s) and 0 square root(s) (the accurate form: 158, 2 and 0).
 /// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), fma": at most 4.13 ulps in double on 4200 samples.
 /// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), fma": at most 7.32 ulps in double on 4200 samples.
 /// v_M[2] is computed in the form "v_Mz - k_impulse*m*(C_Mz - C_mz), fma": at most 3.71 ulps in double on 4200 samples.
@@ -1130,7 +1130,7 @@ inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>
 
 namespace detail {
 
-// The range of collide_fast_batch_3d's inputs within which its arithmetic stays in the normal range: where
+// The range of collide_batch_3d_fast's inputs within which its arithmetic stays in the normal range: where
 // every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
 // normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
 // the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
@@ -1143,12 +1143,12 @@ namespace detail {
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
 // quadruple long double): k = 3, 101, 2015, 1991; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_fast_batch_3d_k = input_k<Real>(3, 101, 2015, 1991);
+constexpr int collide_batch_3d_fast_k = input_k<Real>(3, 101, 2015, 1991);
 
 // The loop of collide_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE void collide_fast_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_batch_3d_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
@@ -1234,11 +1234,11 @@ IMPACT_ALWAYS_INLINE void collide_fast_batch_3d(std::size_t count, const Real* I
         const Real v_mz_out = t25 + v_mz;
         const std::int64_t finite = (((detail::zero_if_finite(v_Mx_out, v_My_out) + detail::zero_if_finite(v_Mz_out, v_mx_out)) + detail::zero_if_finite(v_my_out, v_mz_out)) == Real(0));
         std::int64_t doubtful = 0;
-        if constexpr (collide_fast_batch_3d_k<Real> >= 0) {
-            constexpr Real lowest = detail::power_of_2<Real>(-collide_fast_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_fast_batch_3d_k<Real>);
+        if constexpr (collide_batch_3d_fast_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_fast_k<Real>);
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_Mz, lowest), detail::magnitude_or(C_mx, lowest)), detail::least(detail::magnitude_or(C_my, lowest), detail::magnitude_or(C_mz, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)), detail::least(detail::magnitude_or(v_Mz, lowest), detail::magnitude_or(v_mx, lowest))), detail::least(detail::least(detail::magnitude_or(v_my, lowest), detail::magnitude_or(v_mz, lowest)), detail::magnitude_or(eps, lowest)))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(C_Mx), std::fabs(C_My))), detail::most(detail::most(std::fabs(C_Mz), std::fabs(C_mx)), detail::most(std::fabs(C_my), std::fabs(C_mz)))), detail::most(detail::most(detail::most(std::fabs(v_Mx), std::fabs(v_My)), detail::most(std::fabs(v_Mz), std::fabs(v_mx))), detail::most(detail::most(std::fabs(v_my), std::fabs(v_mz)), std::fabs(eps)))), highest));
         }
-        if constexpr (collide_fast_batch_3d_k<Real> < 0)
+        if constexpr (collide_batch_3d_fast_k<Real> < 0)
             doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(t0)), detail::most(std::fabs(t3), detail::zero_as_min(t2))), detail::least(detail::most(std::fabs(t5), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t8), detail::zero_as_min(t0)), detail::zero_as_min(t7)))), detail::least(detail::least(std::fabs(t12), std::fabs(t13)), detail::least(detail::most(std::fabs(t14), detail::zero_as_min(t11)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t15)), detail::zero_as_min(t6))))), detail::least(detail::least(detail::least(std::fabs(t17), detail::most(std::fabs(t18), detail::zero_as_min(m))), detail::least(detail::most(std::fabs(t19), detail::zero_as_min(t0)), detail::most(std::fabs(t20), detail::zero_as_min(t2)))), detail::least(detail::least(detail::most(std::fabs(t21), detail::zero_as_min(t4)), detail::most(std::fabs(t22), detail::zero_as_min(M))), detail::least(detail::most(std::fabs(t23), detail::zero_as_min(t0)), detail::most(std::fabs(t24), detail::zero_as_min(t2)))))), detail::most(std::fabs(t25), detail::zero_as_min(t4))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
@@ -1251,10 +1251,10 @@ IMPACT_ALWAYS_INLINE void collide_fast_batch_3d(std::size_t count, const Real* I
     }
 }
 
-// The pairs collide_fast_batch_3d left to the scalar collide (status underflow: a value it tests for underflow may be
+// The pairs collide_batch_3d_fast left to the scalar collide (status underflow: a value it tests for underflow may be
 // below the normal range), each resolved by it, which decides exactly.
 template <class Real>
-inline void collide_fast_batch_3d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_3d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     bool doubtful = false;
     for (std::size_t i = 0; i < count; ++i)
@@ -1275,10 +1275,10 @@ inline void collide_fast_batch_3d_settle(std::size_t count, const Real* IMPACT_R
     }
 }
 
-// collide_fast_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// collide_batch_3d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
-inline void collide_fast_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
@@ -1303,19 +1303,19 @@ inline void collide_fast_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_fast_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_fast_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_3d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_fast_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_fast_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
-// collide_fast_batch_3d over blocks of 8 pairs for arrays that start at one offset within their pages:
+// collide_batch_3d_fast over blocks of 8 pairs for arrays that start at one offset within their pages:
 // pair i of every array then falls on the same cache sets. The read-only array k is read
 // 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
 // at offsets 128 bytes apart, as if staggered.
 template <class Real, bool with_status>
-inline void collide_fast_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_3d_fast_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 9;
     impact::status own[block];  // the statuses, where the caller wants none
@@ -1364,11 +1364,11 @@ inline void collide_fast_batch_3d_skewed(std::size_t count, const Real* IMPACT_R
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_fast_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
-        collide_fast_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_batch_3d_fast<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
+        collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_fast_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_fast_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
@@ -1383,15 +1383,15 @@ inline void collide_batch(const collide_batch_data<Real, 3>& data, fast_t) noexc
     if constexpr (sizeof(Real) == sizeof(double))
         if (detail::crowded(std::array<const void*, 9>{data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.eps})) {
             if (data.status)
-                detail::collide_fast_batch_3d_skewed<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
+                detail::collide_batch_3d_fast_skewed<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
             else
-                detail::collide_fast_batch_3d_skewed<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
+                detail::collide_batch_3d_fast_skewed<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
             return;
         }
     if (data.status)
-        detail::collide_fast_batch_3d_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
+        detail::collide_batch_3d_fast_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
     else
-        detail::collide_fast_batch_3d_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
+        detail::collide_batch_3d_fast_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
 }
 
 } // namespace impact

@@ -251,8 +251,8 @@ namespace detail {
 
 // collide_line(m, v_M, v_m, eps, impact::fast): the fast form of collide_line with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 7 operations, of them 0 divisions and 0 square roots
-// (the accurate form: 11, 0 and 0).
+// bound (verification.md): 7 operations with the guards' conditions, of them 0
+// division(s) and 0 square root(s) (the accurate form: 11, 0 and 0).
 // v_M is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_m is computed in the form "limit of display, fma": at most 1.46 ulps in double on 4200 samples.
 // J is computed in the form "limit of display": at most 3.55 ulps in double on 4200 samples.
@@ -305,8 +305,8 @@ inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m
 
 // collide_line(M, v_M, v_m, eps, impact::fast): the fast form of collide_line with m = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 8 operations, of them 0 divisions and 0 square roots
-// (the accurate form: 11, 0 and 0).
+// bound (verification.md): 8 operations with the guards' conditions, of them 0
+// division(s) and 0 square root(s) (the accurate form: 11, 0 and 0).
 // v_M is computed in the form "limit of display, fma": at most 1.23 ulps in double on 4200 samples.
 // v_m is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // J is computed in the form "limit of display": at most 3.66 ulps in double on 4200 samples.
@@ -361,8 +361,8 @@ inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m
 
 /// collide_line(M, m, v_M, v_m, eps, impact::fast): the fast form of collide_line, with the
 /// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 16 operations, of them 3 divisions and 0 square roots
-/// (the accurate form: 47, 4 and 0).
+/// bound (verification.md): 16 operations with the guards' conditions, of them 3
+/// division(s) and 0 square root(s) (the accurate form: 47, 4 and 0).
 /// v_M is computed in the form "display, fma": at most 2.30 ulps in double on 4200 samples.
 /// v_m is computed in the form "display, fma": at most 2.40 ulps in double on 4200 samples.
 /// J is computed in the form "display": at most 5.43 ulps in double on 4200 samples.

@@ -2956,8 +2956,8 @@ namespace detail {
 
 // collide_rough(m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 666 operations, of them 22 divisions and 3 square roots
-// (the accurate form: 1076, 33 and 4).
+// bound (verification.md): 666 operations with the guards' conditions, of them 22
+// division(s) and 3 square root(s) (the accurate form: 1076, 33 and 4).
 // v_M[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of v_mx + (K_n*r_x - K_t*r_y)/m, fma, compensated let": at most 2.80 ulps in double on 4200 samples.
@@ -3541,8 +3541,8 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
 
 // collide_rough(M, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with m = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 667 operations, of them 22 divisions and 3 square roots
-// (the accurate form: 1049, 33 and 4).
+// bound (verification.md): 667 operations with the guards' conditions, of them 22
+// division(s) and 3 square root(s) (the accurate form: 1049, 33 and 4).
 // v_M[0] is computed in the form "limit of v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 4.09 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of v_My - (K_n*r_y + K_t*r_x)/M, fma, compensated let": at most 2.94 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
@@ -4129,8 +4129,8 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
 
 /// collide_rough(M, m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough, with the
 /// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 631 operations, of them 25 divisions and 2 square roots
-/// (the accurate form: 996, 39 and 2).
+/// bound (verification.md): 631 operations with the guards' conditions, of them 25
+/// division(s) and 2 square root(s) (the accurate form: 996, 39 and 2).
 /// v_M[0] is computed in the form "v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 3.67 ulps in double on 4200 samples.
 /// v_M[1] is computed in the form "v_My - (K_n*r_y + K_t*r_x)/M, fma, compensated let": at most 2.78 ulps in double on 4200 samples.
 /// v_m[0] is computed in the form "v_mx + (K_n*r_x - K_t*r_y)/m, fma, compensated let": at most 3.13 ulps in double on 4200 samples.
@@ -4568,7 +4568,7 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
 
 namespace detail {
 
-// The range of collide_rough_fast_batch_2d's inputs within which its arithmetic stays in the normal range: where
+// The range of collide_rough_batch_2d_fast's inputs within which its arithmetic stays in the normal range: where
 // every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
 // normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
 // the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
@@ -4581,12 +4581,12 @@ namespace detail {
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
 // quadruple long double): k = -1, -1, 452, 420; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_rough_fast_batch_2d_k = input_k<Real>(-1, -1, 452, 420);
+constexpr int collide_rough_batch_2d_fast_k = input_k<Real>(-1, -1, 452, 420);
 
 // The loop of collide_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE void collide_rough_fast_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_rough_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
@@ -4928,11 +4928,11 @@ IMPACT_ALWAYS_INLINE void collide_rough_fast_batch_2d(std::size_t count, const R
         const Real finite6 = finite4 + finite5;
         const std::int64_t finite = (finite6 == Real(0));
         std::int64_t doubtful = 0;
-        if constexpr (collide_rough_fast_batch_2d_k<Real> >= 0) {
-            constexpr Real lowest = detail::power_of_2<Real>(-collide_rough_fast_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_rough_fast_batch_2d_k<Real>);
+        if constexpr (collide_rough_batch_2d_fast_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_rough_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_rough_batch_2d_fast_k<Real>);
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
         }
-        if constexpr (collide_rough_fast_batch_2d_k<Real> < 0)
+        if constexpr (collide_rough_batch_2d_fast_k<Real> < 0)
             doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t24), detail::zero_as_min(v_My)), detail::zero_as_min(t0))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t4)), std::fabs(t28))), detail::least(detail::least(detail::most(detail::most(std::fabs(t47), detail::zero_as_min(M)), detail::zero_as_min(m)), detail::most(std::fabs(t53), detail::zero_as_min(t52))), detail::least(detail::most(detail::most(std::fabs(t56), detail::zero_as_min(q_M)), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t57), detail::zero_as_min(M)), detail::zero_as_min(q_M)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t58), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t59), detail::zero_as_min(m)), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t60), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(q_m)), detail::zero_as_min(t62)))), detail::least(detail::least(detail::most(std::fabs(t64), detail::zero_as_min(q_m)), detail::most(std::fabs(t65), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t66), detail::zero_as_min(q_m)), detail::most(std::fabs(t67), detail::zero_as_min(t61))))), detail::least(detail::least(detail::least(std::fabs(t68), detail::most(std::fabs(t69), detail::zero_as_min(t52))), detail::least(std::fabs(t70), detail::most(detail::most(std::fabs(t85), detail::zero_as_min(b)), detail::zero_as_min(v_Mx)))), detail::least(detail::least(detail::most(std::fabs(t86), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t87), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t88), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t89), detail::zero_as_min(b)), detail::zero_as_min(v_My))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t90), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t91), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t92), detail::zero_as_min(t0)), detail::most(std::fabs(t93), detail::zero_as_min(t84)))), detail::least(detail::least(detail::most(std::fabs(t94), detail::zero_as_min(t48)), detail::most(detail::most(std::fabs(t95), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t96), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t97), detail::zero_as_min(q_M))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t98), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t99), detail::zero_as_min(w_M))), detail::least(std::fabs(t101), detail::most(detail::most(std::fabs(t102), detail::zero_as_min(m)), detail::zero_as_min(R_m)))), detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(q_m)), detail::most(std::fabs(t106), detail::zero_as_min(t48))), detail::least(detail::most(std::fabs(t107), detail::zero_as_min(t83)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_m)), detail::zero_as_min(b)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t109), std::fabs(t110)), detail::least(std::fabs(t111), detail::most(detail::most(std::fabs(t112), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)))), detail::least(detail::least(detail::most(std::fabs(t113), detail::zero_as_min(w_m)), std::fabs(t114)), detail::least(std::fabs(t115), std::fabs(t116)))), detail::least(detail::least(detail::least(std::fabs(t117), std::fabs(t118)), detail::least(detail::most(std::fabs(t119), detail::zero_as_min(w_m)), std::fabs(t120))), detail::least(detail::least(std::fabs(t121), std::fabs(t122)), detail::least(std::fabs(t125), std::fabs(t126))))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t134), std::fabs(t135)), detail::least(std::fabs(t136), std::fabs(t137))), detail::least(detail::least(std::fabs(t139), detail::most(std::fabs(t140), detail::zero_as_min(mu))), detail::least(detail::most(std::fabs(t141), detail::zero_as_min(t52)), std::fabs(t146)))), detail::least(detail::least(detail::least(std::fabs(t147), std::fabs(t148)), detail::least(std::fabs(t149), detail::most(std::fabs(t193), detail::zero_as_min(t192)))), detail::least(detail::least(std::fabs(t194), detail::most(std::fabs(t206), detail::zero_as_min(t205))), detail::least(detail::most(std::fabs(t207), detail::zero_as_min(t46)), std::fabs(t208))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t213), detail::zero_as_min(t212)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t214), detail::zero_as_min(t212)), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t239), detail::zero_as_min(t238)), std::fabs(t240))), detail::least(detail::least(detail::most(std::fabs(t242), detail::zero_as_min(t241)), std::fabs(t246)), detail::least(std::fabs(t247), std::fabs(t248)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t249), detail::zero_as_min(t245)), std::fabs(t250)), detail::least(std::fabs(t251), std::fabs(t253))), detail::least(std::fabs(t254), std::fabs(t255)))))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
@@ -4945,10 +4945,10 @@ IMPACT_ALWAYS_INLINE void collide_rough_fast_batch_2d(std::size_t count, const R
     }
 }
 
-// The pairs collide_rough_fast_batch_2d left to the scalar collide_rough (status underflow: a value it tests for underflow may be
+// The pairs collide_rough_batch_2d_fast left to the scalar collide_rough (status underflow: a value it tests for underflow may be
 // below the normal range), each resolved by it, which decides exactly.
 template <class Real>
-inline void collide_rough_fast_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_rough_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     bool doubtful = false;
     for (std::size_t i = 0; i < count; ++i)
@@ -4969,10 +4969,10 @@ inline void collide_rough_fast_batch_2d_settle(std::size_t count, const Real* IM
     }
 }
 
-// collide_rough_fast_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// collide_rough_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
-inline void collide_rough_fast_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_rough_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
@@ -5001,19 +5001,19 @@ inline void collide_rough_fast_batch_2d_ahead(std::size_t count, const Real* IMP
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_rough_fast_batch_2d<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_rough_fast_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
     }
-    collide_rough_fast_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_fast_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
 }
 
-// collide_rough_fast_batch_2d over blocks of 8 pairs for arrays that start at one offset within their pages:
+// collide_rough_batch_2d_fast over blocks of 8 pairs for arrays that start at one offset within their pages:
 // pair i of every array then falls on the same cache sets. The read-only array k is read
 // 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
 // at offsets 128 bytes apart, as if staggered.
 template <class Real, bool with_status>
-inline void collide_rough_fast_batch_2d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_rough_batch_2d_fast_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 13;
     impact::status own[block];  // the statuses, where the caller wants none
@@ -5070,11 +5070,11 @@ inline void collide_rough_fast_batch_2d_skewed(std::size_t count, const Real* IM
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_rough_fast_batch_2d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], with_status ? status_ + b : own);
-        collide_rough_fast_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d_fast<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], with_status ? status_ + b : own);
+        collide_rough_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
     }
-    collide_rough_fast_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_fast_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
@@ -5089,15 +5089,15 @@ inline void collide_rough_batch(const collide_rough_batch_data<Real, 2>& data, f
     if constexpr (sizeof(Real) == sizeof(double))
         if (detail::crowded(std::array<const void*, 13>{data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.eps, data.beta, data.mu})) {
             if (data.status)
-                detail::collide_rough_fast_batch_2d_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
+                detail::collide_rough_batch_2d_fast_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
             else
-                detail::collide_rough_fast_batch_2d_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+                detail::collide_rough_batch_2d_fast_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
             return;
         }
     if (data.status)
-        detail::collide_rough_fast_batch_2d_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
+        detail::collide_rough_batch_2d_fast_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
     else
-        detail::collide_rough_fast_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+        detail::collide_rough_batch_2d_fast_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
 }
 
 } // namespace impact

@@ -273,8 +273,8 @@ inline void collide_wall_batch(const collide_wall_batch_data<Real, 2>& data) noe
 
 /// collide_wall(P, n, C, v, eps, impact::fast): the fast form of collide_wall, with the
 /// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 21 operations, of them 1 divisions and 0 square roots
-/// (the accurate form: 63, 2 and 0).
+/// bound (verification.md): 21 operations with the guards' conditions, of them 1
+/// division(s) and 0 square root(s) (the accurate form: 63, 2 and 0).
 /// v[0] is computed in the form "v_x - k_wall*N_x, fma": at most 6.24 ulps in double on 4200 samples.
 /// v[1] is computed in the form "v_y - k_wall*N_y, fma": at most 4.47 ulps in double on 4200 samples.
 template <class Real>
@@ -346,7 +346,7 @@ inline collide_wall_result<Real, 2> collide_wall(const std::array<Real, 2>& P, c
 
 namespace detail {
 
-// The range of collide_wall_fast_batch_2d's inputs within which its arithmetic stays in the normal range: where
+// The range of collide_wall_batch_2d_fast's inputs within which its arithmetic stays in the normal range: where
 // every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
 // normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
 // the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
@@ -359,12 +359,12 @@ namespace detail {
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
 // quadruple long double): k = 9, 144, 2698, 2674; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_wall_fast_batch_2d_k = input_k<Real>(9, 144, 2698, 2674);
+constexpr int collide_wall_batch_2d_fast_k = input_k<Real>(9, 144, 2698, 2674);
 
 // The loop of collide_wall_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE void collide_wall_fast_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_wall_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
@@ -411,11 +411,11 @@ IMPACT_ALWAYS_INLINE void collide_wall_fast_batch_2d(std::size_t count, const Re
         const Real v_y_out = -t9 + v_y;
         const std::int64_t finite = (detail::zero_if_finite(v_x_out, v_y_out) == Real(0));
         std::int64_t doubtful = 0;
-        if constexpr (collide_wall_fast_batch_2d_k<Real> >= 0) {
-            constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_fast_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_fast_batch_2d_k<Real>);
+        if constexpr (collide_wall_batch_2d_fast_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_fast_k<Real>);
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
         }
-        if constexpr (collide_wall_fast_batch_2d_k<Real> < 0)
+        if constexpr (collide_wall_batch_2d_fast_k<Real> < 0)
             doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), std::fabs(t5))), detail::least(detail::least(detail::most(std::fabs(t6), detail::zero_as_min(t4)), std::fabs(t7)), detail::least(detail::most(std::fabs(t8), detail::zero_as_min(N_x)), detail::most(std::fabs(t9), detail::zero_as_min(N_y))))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
@@ -424,10 +424,10 @@ IMPACT_ALWAYS_INLINE void collide_wall_fast_batch_2d(std::size_t count, const Re
     }
 }
 
-// The pairs collide_wall_fast_batch_2d left to the scalar collide_wall (status underflow: a value it tests for underflow may be
+// The pairs collide_wall_batch_2d_fast left to the scalar collide_wall (status underflow: a value it tests for underflow may be
 // below the normal range), each resolved by it, which decides exactly.
 template <class Real>
-inline void collide_wall_fast_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_wall_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     bool doubtful = false;
     for (std::size_t i = 0; i < count; ++i)
@@ -444,10 +444,10 @@ inline void collide_wall_fast_batch_2d_settle(std::size_t count, const Real* IMP
     }
 }
 
-// collide_wall_fast_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
+// collide_wall_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
-inline void collide_wall_fast_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_wall_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
@@ -466,11 +466,11 @@ inline void collide_wall_fast_batch_2d_ahead(std::size_t count, const Real* IMPA
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_wall_fast_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_wall_fast_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    collide_wall_fast_batch_2d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_wall_fast_batch_2d_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_2d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_2d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
@@ -481,9 +481,9 @@ template <class Real>
 inline void collide_wall_batch(const collide_wall_batch_data<Real, 2>& data, fast_t) noexcept
 {
     if (data.status)
-        detail::collide_wall_fast_batch_2d_ahead<Real, true>(data.count, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.eps, data.status);
+        detail::collide_wall_batch_2d_fast_ahead<Real, true>(data.count, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.eps, data.status);
     else
-        detail::collide_wall_fast_batch_2d_ahead<Real, false>(data.count, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.eps, nullptr);
+        detail::collide_wall_batch_2d_fast_ahead<Real, false>(data.count, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.eps, nullptr);
 }
 
 } // namespace impact

@@ -77,8 +77,8 @@ inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps) noexcept
 
 /// energy_loss(M, m, v_M, v_m, eps, impact::fast): the fast form of energy_loss, with the
 /// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 12 operations, of them 1 divisions and 0 square roots
-/// (the accurate form: 59, 2 and 0).
+/// bound (verification.md): 12 operations with the guards' conditions, of them 1
+/// division(s) and 0 square root(s) (the accurate form: 59, 2 and 0).
 /// dE is computed in the form "-(1 - eps)*(1 + eps)*M*m*(v_M - v_m)^2/(2*(M + m))": at most 5.16 ulps in double on 4200 samples.
 template <class Real>
 inline Real energy_loss(Real M, Real m, Real v_M, Real v_m, Real eps, fast_t) noexcept
