@@ -301,13 +301,15 @@ BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_ke
     for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "derivations"))
         s.copy(entry.path().filename().string());
     const auto before = impact::testing::everything_under(s.root / "output");
-    // The first worker seen among Impact's children (pdflatex runs under a shell) is killed. The watch lasts as
-    // long as Impact runs: under the sanitizers the derivations alone take minutes before the first worker starts.
+    // The first worker seen among Impact's children is killed: a process named impact-worker (the shells of the
+    // report's pdflatex are forked from Impact too, and named impact until they run). The watch lasts as long as
+    // Impact runs: under the sanitizers the derivations alone take minutes before the first worker starts.
     const run_result r = impact::testing::run_command(
         "cd '" + s.root.string() + "' && { XDG_CACHE_HOME=xdg " + IMPACT_BINARY +
         " regenerate --no-cache --jobs 2 --derivations derivations --output output > log 2>&1 & p=$!; "
         "while kill -0 $p 2>/dev/null; do for c in $(cat /proc/$p/task/*/children 2>/dev/null); do "
-        "if [ \"$(cat /proc/$c/comm 2>/dev/null)\" = impact ]; then kill -KILL $c; echo killed; break 2; fi; done; "
+        "if [ \"$(cat /proc/$c/comm 2>/dev/null)\" = impact-worker ]; then kill -KILL $c; echo killed; break 2; fi; "
+        "done; "
         "sleep 0.01; done; wait $p; echo \"status $?\"; cat log; }");
     BOOST_TEST_REQUIRE(r.output.find("killed\n") == 0u, r.output);
     BOOST_TEST(r.output.find("status 2\n") != std::string::npos, r.output);

@@ -15,6 +15,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -160,6 +161,10 @@ std::optional<worker> start(const verify::text_task& task, std::size_t index)
     }
     if (pid == 0) {
         ::close(fds[0]);
+        // Named apart from Impact itself and from the report's pdflatex (whose shell is
+        // forked from Impact too, named `impact` until it runs): `ps` and `top` show
+        // `impact-worker`.
+        ::prctl(PR_SET_NAME, "impact-worker", 0, 0, 0);
         be_worker(task, fds[1]);
     }
     ::close(fds[1]);
