@@ -138,6 +138,25 @@ BOOST_AUTO_TEST_CASE(a_halved_sliding_impulse_fails_continuity)
     BOOST_TEST(proven(check_named(d, "never more than sticking needs").outcome));
 }
 
+BOOST_AUTO_TEST_CASE(continuity_solves_the_boundary_for_a_quantity_outside_its_radicals)
+{
+    // min(k sqrt(x), 1): the boundary k sqrt(x) = 1 is not a polynomial in x (GiNaC's
+    // degree() threw on it) and is solved for k.
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"k\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"y\"\n"
+        "[[step]]\ndefine = \"y\"\n"
+        "cases = [{ when = \"k*sqrt(x) <= 1\", as = \"k*sqrt(x)\" }, { when = \"k*sqrt(x) > 1\", as = \"1\" }]\n"
+        "[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"meets\"\ncontinuity = \"y\"\n");
+    const engine::check_result& meets = check_named(d, "meets");
+    BOOST_REQUIRE_EQUAL(meets.parts.size(), 1u);
+    BOOST_TEST(meets.parts[0].under.rfind("cases 1 and 2 at k = ", 0) == 0, meets.parts[0].under);
+    BOOST_TEST(proven(meets.outcome));
+}
+
 BOOST_AUTO_TEST_CASE(a_claim_false_in_one_case_fails_in_that_case_only)
 {
     const std::string text = by_cases(

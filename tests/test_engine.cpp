@@ -188,6 +188,21 @@ BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_funct
     const GiNaC::ex root = GiNaC::sqrt(a * a + b * b);
     BOOST_TEST((expand_numerator(root * (a - b) - root * a + root * b) == expansion::zero));
     BOOST_TEST((expand_numerator(GiNaC::sqrt(a) * GiNaC::sqrt(b) - GiNaC::sqrt(a * b)) == expansion::undecided));
+    // sqrt(x)^2 = x where the root's square arises in the expansion: the unit vector
+    // (a, b)/|(a, b)| has length 1, and 1/x^k meets sqrt(x) as 1/sqrt(x)^(2k).
+    const GiNaC::ex n_a = a / root, n_b = b / root;
+    BOOST_TEST((expand_numerator(n_a * n_a + n_b * n_b - 1) == expansion::zero));
+    BOOST_TEST((expand_numerator((a + b) * n_a * root - a * a - a * b) == expansion::zero));
+    BOOST_TEST((expand_numerator(1 / (a * a + b * b) - 1 / (root * root * root) * root) == expansion::zero));
+    BOOST_TEST((expand_numerator(-1 / (-a * a - b * b) - 1 / GiNaC::pow(root, 2)) == expansion::zero));
+    BOOST_TEST((expand_numerator(GiNaC::pow(a * a + b * b, GiNaC::numeric(-3, 2)) * (a * a + b * b) - 1 / root) ==
+                expansion::zero));
+    // A root of a root: sqrt(1 + sqrt(a^2 + b^2))^2 = 1 + sqrt(a^2 + b^2), squared again.
+    const GiNaC::ex nested = GiNaC::sqrt(1 + root);
+    BOOST_TEST((expand_numerator(GiNaC::pow(nested, 4) - 1 - 2 * root - a * a - b * b) == expansion::zero));
+    // A non-zero remainder with a root in it decides nothing.
+    BOOST_TEST((expand_numerator((a + root) * (a - root) + b * b + 1) == expansion::undecided));
+    BOOST_TEST((expand_numerator((a + root) * (a - root) + b * b) == expansion::zero));
     // The inverse of a sum with a denominator of its own: 1/(a + 1/b) = b/(a b + 1).
     BOOST_TEST((expand_numerator(1 / (a + 1 / b) - b / (a * b + 1)) == expansion::zero));
     BOOST_TEST((expand_numerator(1 / (a + 1 / b) - a / (a * b + 1)) == expansion::nonzero));

@@ -508,7 +508,9 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
             bool coefficient_proven = false;
             const assumptions given = declared_assumptions(symbols, run);
             for (const quantity& q : symbols.all()) {
-                if (q.definition || !top.has(q.symbol) || top.degree(q.symbol) != 1 || top.ldegree(q.symbol) < 0)
+                // Not under a radical (degree() throws on sqrt(x)): linear means polynomial first.
+                if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
+                    top.ldegree(q.symbol) < 0)
                     continue;
                 const GiNaC::ex a = top.coeff(q.symbol, 1);
                 if (a.has(q.symbol) || GiNaC::normal(a).is_zero())

@@ -68,7 +68,9 @@ std::optional<verdict> divided_by_condition(const GiNaC::ex& g, bool strict, con
             std::find_if(xs.begin(), xs.end(), [&it](const GiNaC::ex& y) { return y.is_equal(*it); }) == xs.end())
             xs.push_back(*it);
     for (const GiNaC::ex& x : xs) {
-        if (c_top.degree(x) != 1 || top.degree(x) < 1 || top.ldegree(x) < 0)
+        // Polynomials in x first: degree() throws on x under a radical.
+        if (!c_top.is_polynomial(x) || !top.is_polynomial(x) || c_top.degree(x) != 1 || top.degree(x) < 1 ||
+            top.ldegree(x) < 0)
             continue;
         const GiNaC::ex lead = c_top.coeff(x, 1);
         GiNaC::ex q = 0, r = top;

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <map>
+#include <optional>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -99,6 +101,15 @@ class expander {
 public:
     bool met_opaque() const { return opaque_; }
 
+    // The radicands of the square roots in `e` (of x^(p/2)).
+    void find_roots(const GiNaC::ex& e)
+    {
+        for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::power>(*it) && it->op(1).info(GiNaC::info_flags::rational) &&
+                GiNaC::ex_to<GiNaC::numeric>(it->op(1)).denom() == 2)
+                radicands_.insert(it->op(0));
+    }
+
     fraction read(const GiNaC::ex& e)
     {
         if (GiNaC::is_a<GiNaC::numeric>(e)) {
@@ -125,6 +136,20 @@ public:
         if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::integer)) {
             const int k = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int();
             fraction base = read(e.op(0));
+            if (k < 0 && base.denominator.empty()) {
+                // 1/x^k with sqrt(x) elsewhere (or sqrt(-x)): over sqrt(x)^(2k), so that a sum
+                // over it is brought to a common denominator by powers of the root alone,
+                // not of x.
+                for (const int sign : {1, -1}) {
+                    const GiNaC::ex radicand = sign * e.op(0);
+                    if (!radicands_.count(radicand))
+                        continue;
+                    const GiNaC::ex root = GiNaC::sqrt(radicand);
+                    if (!numerators_.count(root))
+                        numerators_.emplace(root, variable(root, true));
+                    return {constant(sign == 1 || k % 2 == 0 ? 1 : -1), {{root, -2 * k}}};
+                }
+            }
             if (k >= 0) {
                 for (auto& [b, j] : base.denominator)
                     j *= k;
@@ -141,6 +166,13 @@ public:
             GiNaC::ex_to<GiNaC::numeric>(e.op(1)).denom() == 2 && !e.op(1).is_equal(GiNaC::numeric(1, 2))) {
             // x^(p/2) = x^((p-1)/2) sqrt(x), as over_common_denominator takes it.
             const GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).numer();
+            if (p.is_negative()) {
+                // x^(-k/2) = 1/sqrt(x)^k: the root alone in the denominator.
+                const GiNaC::ex root = GiNaC::sqrt(e.op(0));
+                if (!numerators_.count(root))
+                    numerators_.emplace(root, variable(root, true));
+                return {constant(1), {{root, -p.to_int()}}};
+            }
             fraction whole = read(GiNaC::pow(e.op(0), (p - 1) / 2));
             whole.numerator = times(whole.numerator, variable(GiNaC::sqrt(e.op(0)), true));
             return whole;
@@ -170,6 +202,62 @@ public:
         return {variable(e, true), {}};
     }
 
+    static int exponent(const monomial& m, std::size_t i) { return int((m[i / 8] >> (8 * (i % 8))) & 0xff); }
+
+    // What the square of the root standing as variable i is, when its radicand is a
+    // polynomial (null otherwise: a radicand with a denominator stays opaque).
+    const polynomial* square_of(std::size_t i)
+    {
+        auto known = squares_.find(i);
+        if (known == squares_.end()) {
+            GiNaC::ex root;
+            for (const auto& [e, k] : variables_)
+                if (k == i)
+                    root = e;
+            fraction radicand = read(root.op(0));
+            std::optional<polynomial> square;
+            if (radicand.denominator.empty())
+                square = std::move(radicand.numerator);
+            known = squares_.emplace(i, std::move(square)).first;
+        }
+        return known->second ? &*known->second : nullptr;
+    }
+
+    // `p` with every square of a square root replaced by its radicand, sqrt(x)^2 = x: a
+    // numerator that vanishes only through x = sqrt(x)^2 (n = r/|r| a unit vector) is then
+    // seen to vanish here, without GiNaC expanding it. Sound whatever the roots are; a
+    // non-zero remainder decides nothing (sqrt(4 x) = 2 sqrt(x) is not seen).
+    polynomial reduced(polynomial p)
+    {
+        for (std::size_t r = 0; r < roots_.size(); ++r) {
+            const std::size_t i = roots_[r];
+            const bool squared = std::any_of(p.begin(), p.end(), [i](const term& t) { return exponent(t.exponents, i) >= 2; });
+            if (!squared)
+                continue;
+            const polynomial* square = square_of(i);   // may add roots: roots_ read by index
+            if (!square)
+                continue;
+            polynomial out;
+            std::map<int, polynomial> powers;
+            for (term& t : p) {
+                const int e = exponent(t.exponents, i);
+                if (e < 2) {
+                    out.push_back(std::move(t));
+                    continue;
+                }
+                t.exponents[i / 8] -= std::uint64_t(e - e % 2) << (8 * (i % 8));
+                auto known = powers.find(e / 2);
+                if (known == powers.end())
+                    known = powers.emplace(e / 2, power(*square, e / 2)).first;
+                const polynomial product = times({std::move(t)}, known->second);
+                out.insert(out.end(), product.begin(), product.end());
+            }
+            p = collected(std::move(out));
+            r = std::size_t(-1);   // the radicands may hold roots already gone through
+        }
+        return p;
+    }
+
 private:
     // The polynomial a factor of a denominator stands for.
     const polynomial& numerator_of(const GiNaC::ex& factor)
@@ -186,12 +274,17 @@ private:
         const auto [at, added] = variables_.emplace(e, variables_.size());
         if (at->second >= max_variables)
             throw too_large{};
+        if (added && GiNaC::is_a<GiNaC::power>(e) && e.op(1).is_equal(GiNaC::numeric(1, 2)))
+            roots_.push_back(at->second);
         monomial m{};
         m[at->second / 8] = std::uint64_t(1) << (8 * (at->second % 8));
         return {{m, 1}};
     }
 
     std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> variables_;
+    std::vector<std::size_t> roots_;
+    std::set<GiNaC::ex, GiNaC::ex_is_less> radicands_;
+    std::map<std::size_t, std::optional<polynomial>> squares_;
     std::map<GiNaC::ex, polynomial, GiNaC::ex_is_less> numerators_;
     bool opaque_ = false;
 };
@@ -202,8 +295,9 @@ expansion expand_numerator(const GiNaC::ex& e)
 {
     try {
         expander x;
+        x.find_roots(e);
         const fraction f = x.read(e);
-        if (f.numerator.empty())
+        if (x.reduced(f.numerator).empty())
             return expansion::zero;
         return x.met_opaque() ? expansion::undecided : expansion::nonzero;
     } catch (const too_large&) {
