@@ -400,11 +400,8 @@ BOOST_AUTO_TEST_CASE(a_term_a_finding_names_is_written_as_the_paper_prints_it)
     BOOST_TEST(report.find("The sign of the term $-") == std::string::npos);
 }
 
-BOOST_AUTO_TEST_CASE(a_limit_no_method_settles_is_undecided_never_disagrees)
-{
-    // A fictional claim: lim_{x -> infinity} sin(x) = 0. No method (substitution, series,
-    // leading term) establishes a limit that does not exist; the claim is not refuted.
-    const spec::derivation source = spec::parse_derivation(R"toml(id = "oscillating"
+// A fictional derivation whose one claim, lim_{x -> infinity} sin(x) = 0, no method settles.
+const char* const oscillation = R"toml(id = "oscillating"
 title = "An oscillation"
 
 [[symbol]]
@@ -431,7 +428,13 @@ paper = "Sec. X"
 quote = "The oscillation dies away."
 claim = "y = 0"
 limit = "x -> infinity"
-)toml", "oscillating.toml");
+)toml";
+
+BOOST_AUTO_TEST_CASE(a_limit_no_method_settles_is_undecided_never_disagrees)
+{
+    // A fictional claim: lim_{x -> infinity} sin(x) = 0. No method (substitution, series,
+    // leading term) establishes a limit that does not exist; the claim is not refuted.
+    const spec::derivation source = spec::parse_derivation(oscillation, "oscillating.toml");
     const engine::derivation d = engine::derive(source, {});
     BOOST_TEST_REQUIRE(d.paper_checks.size() == 1u);
     BOOST_TEST(emit::comparison_verdict(d.paper_checks[0]) == "undecided");
@@ -449,34 +452,7 @@ BOOST_AUTO_TEST_CASE(json_and_terminal_list_the_undecided_and_the_not_compared_a
     // A fictional derivation: a limit no method settles, a claim about experiment, and a
     // line nothing compares. Each is listed in derivations.json and by `impact derive`,
     // undecided or not compared, never as a disagreement.
-    const spec::derivation source = spec::parse_derivation(R"toml(id = "oscillating"
-title = "An oscillation"
-
-[[symbol]]
-name = "x"
-dimension = "1"
-latex = "x"
-domain = "positive"
-
-[[symbol]]
-name = "y"
-dimension = "1"
-latex = "y"
-
-[[step]]
-define = "y"
-as = "sin(x)"
-
-[[result]]
-name = "y"
-
-[[claim]]
-name = "dies_away"
-paper = "Sec. X"
-quote = "The oscillation dies away."
-claim = "y = 0"
-limit = "x -> infinity"
-
+    const spec::derivation source = spec::parse_derivation(std::string(oscillation) + R"toml(
 [[claim]]
 name = "springs_tire"
 paper = "Sec. Y"
