@@ -54,8 +54,13 @@ GiNaC::ex replace_at(const GiNaC::ex& e, const std::vector<std::size_t>& path, s
         operands[i] = child;
         return GiNaC::is_a<GiNaC::add>(e) ? GiNaC::ex(GiNaC::add(operands)) : GiNaC::ex(GiNaC::mul(operands));
     }
-    if (GiNaC::is_a<GiNaC::power>(e))
-        return i == 0 ? GiNaC::pow(child, e.op(1)) : GiNaC::pow(e.op(0), child);
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+        // Built here, not by GiNaC::pow: a power that cannot be evaluated (0 to a negative
+        // exponent, as an edit may make) throws pole_error, and the object GiNaC::pow
+        // allocates for it would never be freed (LeakSanitizer found it).
+        const GiNaC::power rebuilt = i == 0 ? GiNaC::power(child, e.op(1)) : GiNaC::power(e.op(0), child);
+        return GiNaC::ex(rebuilt);
+    }
     if (GiNaC::is_a<GiNaC::relational>(e))
         return i == 0 ? (child == e.rhs()) : (e.lhs() == child);
     GiNaC::ex copy = e;
@@ -429,7 +434,7 @@ std::optional<GiNaC::ex> value_of(const written_form::node& n)
     case kind::atom: return n.value;
     case kind::group: return parts.at(0);
     case kind::negate: return -parts.at(0);
-    case kind::power: return GiNaC::pow(parts.at(0), parts.at(1));
+    case kind::power: return GiNaC::ex(GiNaC::power(parts.at(0), parts.at(1)));  // as in replace_at
     case kind::sum: {
         GiNaC::ex sum = 0;
         for (std::size_t i = 0; i < parts.size(); ++i)
