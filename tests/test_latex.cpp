@@ -103,6 +103,18 @@ BOOST_AUTO_TEST_CASE(a_written_half_stays_a_half_in_front)
     BOOST_TEST(as_written("m*v_m_after^2/2") == "\\frac{m v'^{2}_{m,\\parallel}}{2}");
     BOOST_TEST(as_written("(v_m - v_M)*J + (1/(2*m) + 1/(2*M))*J^2") ==
                "(v_{m,\\parallel} - v_{M,\\parallel}) J + \\left(\\frac{1}{2 m} + \\frac{1}{2 M}\\right) J^{2}");
+    // A half carried into a quotient's numerator keeps the parentheses of the sum it
+    // multiplies: ½ (M + m)/(m M), never (½ M + m)/(m M) (Appendix A, line 6).
+    auto tree_of = [this](const std::string& text) {
+        const engine::written_form w =
+            engine::written_form::read(text, [this](const std::string& t) { return parse(t); });
+        return emit::latex_as_written(*w.tree(), order);
+    };
+    BOOST_TEST(tree_of("1/(2*m) + 1/(2*M) = 1/2*(M + m)/(m*M)") ==
+               "\\frac{1}{2 m} + \\frac{1}{2 M} = \\frac{\\frac{1}{2} (M + m)}{m M}");
+    BOOST_TEST(tree_of("1/2*(1 - eps)/M") == "\\frac{\\frac{1}{2} (1 - \\epsilon)}{M}");
+    BOOST_TEST(tree_of("1/2*M*(1 - eps)/m") == "\\frac{\\frac{1}{2} M (1 - \\epsilon)}{m}");
+    BOOST_TEST(as_written("1/2*(M + m)/(m*M)") == "\\frac{1}{2} \\frac{M + m}{m M}");
 }
 
 BOOST_AUTO_TEST_CASE(a_power_written_as_a_power_is_not_turned_into_a_fraction)

@@ -87,9 +87,11 @@ private:
                 runs.emplace_back();
             (n.flags[i] ? runs.back().under : runs.back().over).push_back(&n.children[i]);
         }
-        auto factors = [&](const std::vector<const node*>& items) {
+        // `alone`: nothing else stands beside them (a ½ carried in front does), so that a
+        // single factor needs no parentheses of its own.
+        auto factors = [&](const std::vector<const node*>& items, bool alone = true) {
             if (items.size() == 1)
-                return bare(*items[0]);
+                return alone ? bare(*items[0]) : print(*items[0]);
             // A number after another factor takes a \cdot; a factor after \cos\theta a thin
             // space (cos θ r, not cos θr).
             auto reads_like_function = [&](const node& n) {
@@ -126,8 +128,10 @@ private:
             if (r.under.empty())
                 out += carried + factors(r.over);
             else
-                out += "\\frac{" + carried + (r.over.empty() ? std::string("1") : factors(r.over)) + "}{" +
-                       factors(r.under) + "}";
+                out += "\\frac{" +
+                       (r.over.empty() ? (carried.empty() ? std::string("1") : carried.substr(0, carried.size() - 1))
+                                       : carried + factors(r.over, carried.empty())) +
+                       "}{" + factors(r.under) + "}";
             carried.clear();
         }
         return out;
