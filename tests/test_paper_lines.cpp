@@ -351,6 +351,29 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
         BOOST_TEST(row.find("checked: ") != std::string::npos, row);
 }
 
+BOOST_AUTO_TEST_CASE(the_claims_checked_of_one_quote_are_one_finding)
+{
+    const std::string errata = emit::errata_markdown(library().in_order());
+    // Typed from the paper: Fig. 2's caption gives eps as 3/3, 2/3, 1/3 from left to right
+    // and calls them "increasing"; checked panel against panel, neither step increases:
+    // one misprint, one row that disagrees, both checks shown.
+    const std::vector<std::string> caption = errata_rows_at(errata, "Fig. 2 caption");
+    BOOST_TEST_REQUIRE(caption.size() == 1u);
+    BOOST_TEST(caption[0].find("**disagrees**") != std::string::npos, caption[0]);
+    BOOST_TEST(caption[0].find("\\frac{2}{3} > 1") != std::string::npos, caption[0]);
+    BOOST_TEST(caption[0].find("\\frac{1}{3} > \\frac{2}{3}") != std::string::npos, caption[0]);
+    BOOST_TEST(caption[0].find("neither holds") != std::string::npos, caption[0]);
+    // Appendix A, line 6 prints 1/(2m) + 1/(2M) = (2M + 2m)/(4mM) = 1/2 (M + m)/(mM): each
+    // member checked against the first, one row, both proven, the quote shown once.
+    const std::vector<std::string> line_6 = errata_rows_at(errata, "Appendix A, line 6");
+    BOOST_TEST_REQUIRE(line_6.size() == 1u);
+    BOOST_TEST(line_6[0].find("both proven") != std::string::npos, line_6[0]);
+    BOOST_TEST(line_6[0].find("4 m M") != std::string::npos, line_6[0]);
+    BOOST_TEST(line_6[0].find("\\frac{1}{2} (M + m)") != std::string::npos, line_6[0]);
+    const std::string quote = "\\frac{2M + 2m}{4mM}";
+    BOOST_TEST(line_6[0].find(quote) == line_6[0].rfind(quote), line_6[0]);
+}
+
 BOOST_AUTO_TEST_CASE(appendix_a_line_1_is_reconciled_by_two_edits)
 {
     // Typed from the paper: Appendix A's first line prints E'_K = 1/2 m v'_m + 1/2 m v'_M,

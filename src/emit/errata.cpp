@@ -44,11 +44,19 @@ const char* kind_name(engine::paper_comparison::kind k)
     return "";
 }
 
+// "the 1st check", "the 2nd check", ... for the claims of one row.
+std::string ordinal_check(std::size_t i)
+{
+    static const char* const names[] = {"the 1st check", "the 2nd check", "the 3rd check"};
+    return i < 3 ? names[i] : fmt::format("the {}th check", i + 1);
+}
+
 } // namespace
 
-std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d)
+std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, bool claims_of_one_quote)
 {
     const auto& all = d.paper_checks;
+    constexpr auto claim = engine::paper_comparison::kind::claim;
     std::vector<std::vector<std::size_t>> rows;
     std::vector<bool> done(all.size(), false);
     for (std::size_t i = 0; i < all.size(); ++i) {
@@ -56,17 +64,34 @@ std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d)
             continue;
         const engine::paper_comparison& p = all[i];
         std::vector<std::size_t> row = {i};
-        // The components that share this row's misprint: the same equation, the same finding.
-        if (!p.agrees() && p.what != engine::paper_comparison::kind::claim && !p.reconciliations.empty())
-            for (std::size_t j = i + 1; j < all.size(); ++j)
-                if (!done[j] && !all[j].agrees() && all[j].paper == p.paper && all[j].what == p.what &&
-                    all[j].reconciliations == p.reconciliations) {
-                    row.push_back(j);
-                    done[j] = true;
-                }
+        for (std::size_t j = i + 1; j < all.size(); ++j) {
+            const engine::paper_comparison& q = all[j];
+            if (done[j] || q.paper != p.paper || q.what != p.what)
+                continue;
+            // The components that share this row's misprint: the same equation, the same finding.
+            const bool one_misprint = p.what != claim && !p.agrees() && !q.agrees() && !p.reconciliations.empty() &&
+                                      q.reconciliations == p.reconciliations;
+            // The claims checked of one quote: what the paper says there, one finding.
+            const bool one_quote = claims_of_one_quote && p.what == claim && q.printed_text == p.printed_text;
+            if (one_misprint || one_quote) {
+                row.push_back(j);
+                done[j] = true;
+            }
+        }
         rows.push_back(std::move(row));
     }
     return rows;
+}
+
+std::string row_verdict(const engine::derivation& d, const std::vector<std::size_t>& row)
+{
+    std::string worst = "agrees";
+    for (std::size_t k : row) {
+        const std::string v = comparison_verdict(d.paper_checks[k]);
+        if (v == "disagrees" || (v == "undecided" && worst == "agrees"))
+            worst = v;
+    }
+    return worst;
 }
 
 std::size_t compared_places(const std::vector<const engine::derivation*>& derivations)
@@ -88,7 +113,7 @@ paper_count count_paper(const std::vector<const engine::derivation*>& derivation
     std::set<std::string> not_compared;
     for (const engine::derivation* d : derivations) {
         for (const std::vector<std::size_t>& row : errata_rows(*d)) {
-            const std::string verdict = comparison_verdict(d->paper_checks[row.front()]);
+            const std::string verdict = row_verdict(*d, row);
             ++n.rows;
             ++(verdict == "agrees" ? n.agree : verdict == "undecided" ? n.undecided : n.disagree);
         }
@@ -114,12 +139,13 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                       "be neither proven nor refuted, or when no derivation can settle it (a statement about "
                       "experiment, an assumption about real bodies), with the reason. For each disagreement the "
                       "smallest change that reconciles the two is given, when one edit, or two, do. Each row is one "
-                      "finding: a claim of the text, or a printed form; a misprint that one finding explains in "
-                      "several components of one equation is one row. Mathematics is LaTeX between dollar signs.\n\n"
+                      "finding: a claim of the text (the claims checked of one quote together, each check shown), "
+                      "or a printed form; a misprint that one finding explains in several components of one "
+                      "equation is one row. Mathematics is LaTeX between dollar signs.\n\n"
                       "Each row names its place in the paper: a line of a displayed equation (\"Eq. 12, line 2\"), "
                       "an equation or a sentence of the text (\"Sec. III C, after Eq. 14, 5th sentence\"), a "
-                      "footnote. One place may be compared more than once (the components of a vector, two claims "
-                      "of one sentence). The paper's lines and claims are listed, typed from the paper, in "
+                      "footnote. One place may be compared in more than one row (the components of a vector, two "
+                      "claims of one sentence quoted apart). The paper's lines and claims are listed, typed from the paper, in "
                       "`tests/test_paper_lines.cpp`, which fails when one it lists as compared is not.\n\n";
     out += fmt::format("{} printed lines and claims of the paper, {} of them compared, in {} rows: {} agree, {} "
                        "disagree, {} undecided.",
@@ -152,25 +178,50 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                 std::replace(name.begin(), name.end(), '_', ' ');
                 items.push_back(claim ? "claim" : q && r ? math(q->symbol, order, nullptr) : name);
             }
-            std::string change = p.what == engine::paper_comparison::kind::claim    ? "proven"
-                                 : p.what == engine::paper_comparison::kind::given ? "proven equivalent"
-                                                                                   : "proven equal";
-            if (comparison_verdict(p) == "undecided") {
-                change = "neither proven nor refuted: " + cell(p.agreement.method);
-            } else if (!p.agrees()) {
+            // What was found, comparison by comparison.
+            auto change_of = [&](const engine::paper_comparison& c) -> std::string {
+                if (comparison_verdict(c) == "undecided")
+                    return "neither proven nor refuted: " + cell(c.agreement.method);
+                if (c.agrees())
+                    return c.what == engine::paper_comparison::kind::claim   ? "proven"
+                           : c.what == engine::paper_comparison::kind::given ? "proven equivalent"
+                                                                             : "proven equal";
                 std::vector<std::string> said;
-                for (const engine::finding& f : p.findings)
-                    said.push_back(cell(finding_latex(f, order, &p.written, &p)));
-                if (said.empty() && p.test)
+                for (const engine::finding& f : c.findings)
+                    said.push_back(cell(finding_latex(f, order, &c.written, &c)));
+                if (said.empty() && c.test)
                     said.push_back("as checked, it does not hold");
-                change = said.empty() ? "no edit, or two, reconciles it; see the derived form" : fmt::format("{}", fmt::join(said, "; "));
-                if (row.size() > 1)
-                    change += fmt::format("; one misprint, in each of the {} components", row.size());
+                return said.empty() ? "no edit, or two, reconciles it; see the derived form"
+                                    : fmt::format("{}", fmt::join(said, "; "));
+            };
+            std::string change = change_of(p);
+            if (claim && row.size() > 1) {
+                // The claims of one quote: one finding, each check's outcome where they differ.
+                std::vector<std::string> each;
+                for (std::size_t k : row)
+                    each.push_back(change_of(d->paper_checks[k]));
+                if (std::all_of(each.begin(), each.end(), [&](const std::string& e) { return e == each.front(); })) {
+                    change = each.front() == "as checked, it does not hold"
+                                 ? (row.size() == 2 ? "as checked, neither holds" : "as checked, none holds")
+                                 : each.front() == "proven" ? (row.size() == 2 ? "both proven" : "all proven")
+                                                            : each.front();
+                } else {
+                    change.clear();
+                    for (std::size_t i = 0; i < each.size(); ++i)
+                        change += fmt::format("{}{}: {}", i == 0 ? "" : "; ", ordinal_check(i), each[i]);
+                }
+                printed.resize(1);
+                for (std::size_t i = 1; i < derived.size(); ++i)
+                    if (derived[i].rfind("checked: ", 0) == 0)
+                        derived[i].erase(0, 9);
+            } else if (!p.agrees() && comparison_verdict(p) != "undecided" && row.size() > 1) {
+                change += fmt::format("; one misprint, in each of the {} components", row.size());
             }
-            const std::string verdict = comparison_verdict(p);
+            const std::string verdict = row_verdict(*d, row);
             out += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", cell(p.paper), kind_name(p.what),
-                               fmt::join(items, ", "), verdict == "agrees" ? verdict : "**" + verdict + "**",
-                               fmt::join(printed, "; "), fmt::join(derived, "; "), change);
+                               claim ? std::string("claim") : fmt::format("{}", fmt::join(items, ", ")),
+                               verdict == "agrees" ? verdict : "**" + verdict + "**", fmt::join(printed, "; "),
+                               fmt::join(derived, "; "), change);
         }
         for (const spec::open_claim& c : d->source.open_claims)
             out += fmt::format("| {} | claim | claim | **undecided** | {} | — | {} |\n", cell(c.paper.value),

@@ -15,10 +15,16 @@ namespace impact::emit {
 std::string errata_markdown(const std::vector<const engine::derivation*>& derivations);
 
 /// The rows of the errata for one derivation's comparisons (`paper_checks`), each the
-/// indices of the comparisons it shows: one comparison, or the consecutive components of
-/// one printed equation that disagree with the same finding (one misprint, Eq. 9's lab
-/// components). Claims are never grouped: each is a row of its own.
-std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d);
+/// indices of the comparisons it shows: one comparison, the components of one printed
+/// equation that disagree with the same finding (one misprint, Eq. 9's lab components),
+/// or, with `claims_of_one_quote`, the claims checked of one quote at one place (the Fig. 2
+/// caption's "increasing values", checked panel against panel; Appendix A's chains,
+/// member against member), one finding about what the paper says there.
+std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, bool claims_of_one_quote = true);
+
+/// The verdict of a row: "disagrees" when one of its comparisons disagrees, otherwise
+/// "undecided" when one is, otherwise "agrees".
+std::string row_verdict(const engine::derivation& d, const std::vector<std::size_t>& row);
 
 /// The paper's lines and claims as the derivation files account for them.
 struct paper_count {

@@ -323,7 +323,18 @@ std::string fragment_writer::paper() const
     std::string out = "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
     // One item per finding: a misprint that one finding explains in several components of
     // one equation (Eq. 9's v'_m) is shown once, the other components named.
+    // The claims checked of one quote are one item when all are proven (what was proven of
+    // each said beside it), and an item each otherwise, so that each failure is said.
+    std::vector<std::vector<std::size_t>> rows;
     for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
+        if (d_.paper_checks[row.front()].what == engine::paper_comparison::kind::claim && row.size() > 1 &&
+            row_verdict(d_, row) != "agrees")
+            for (std::size_t k : row)
+                rows.push_back({k});
+        else
+            rows.push_back(row);
+    }
+    for (const std::vector<std::size_t>& row : rows) {
         const engine::paper_comparison& p = d_.paper_checks[row.front()];
         const std::string what = subject(p);
         out += fmt::format("\\item {}, {}: ", paper_text(p.paper), what);
@@ -338,13 +349,16 @@ std::string fragment_writer::paper() const
         const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {
             // A claim: what was proven, so that two claims of one sentence read apart.
-            std::string checked;
-            if (p.what == engine::paper_comparison::kind::claim && p.test) {
-                const std::string c = checked_claim_latex(*p.test, order_);
-                checked = latex_width(c) < 260 && c.find("\\frac{\\frac") == std::string::npos
-                              ? " (proven: " + c + ")"
-                              : "";
-            }
+            std::vector<std::string> proven;
+            for (std::size_t k : row)
+                if (const engine::paper_comparison& c = d_.paper_checks[k];
+                    c.what == engine::paper_comparison::kind::claim && c.test) {
+                    const std::string shown = checked_claim_latex(*c.test, order_);
+                    if (latex_width(shown) < 260 && shown.find("\\frac{\\frac") == std::string::npos)
+                        proven.push_back(shown);
+                }
+            const std::string checked =
+                proven.empty() ? "" : " (proven: " + fmt::format("{}", fmt::join(proven, "; ")) + ")";
             out += after_display ? "It agrees" + checked + ".\n" : " --- agrees" + checked + ".\n";
             continue;
         }

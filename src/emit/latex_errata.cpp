@@ -216,8 +216,11 @@ void fragment_writer::errata_rows(errata_table& table) const
         const engine::paper_comparison& p = all[group.front()];
         std::vector<std::string> subjects;
         for (std::size_t k : group)
-            subjects.push_back(subject(all[k]));
-        const std::string verdict = comparison_verdict(p);
+            if (subjects.empty() || p.what != engine::paper_comparison::kind::claim)
+                subjects.push_back(subject(all[k]));
+        const std::string verdict = row_verdict(d_, group);
+        const bool agrees = verdict == "agrees";
+        const bool claim = p.what == engine::paper_comparison::kind::claim;
 
         std::string printed, printed_math;
         if (p.what == engine::paper_comparison::kind::claim)
@@ -230,36 +233,68 @@ void fragment_writer::errata_rows(errata_table& table) const
                                          : derived.info(GiNaC::info_flags::relation)
                                              ? relation_math(derived, derived_written)
                                              : math(derived, derived_written);
-        std::string change = p.agrees() ? (p.what == engine::paper_comparison::kind::claim ? "proven"
-                                           : p.what == engine::paper_comparison::kind::given
-                                               ? "proven equivalent"
-                                               : "proven equal")
-                                        : verdict == "undecided" ? "neither proven nor refuted"
-                                                                 : findings(p);
-        // A claim shows what was checked beside it: that it does not hold is then enough.
-        const bool claim_checked = p.what == engine::paper_comparison::kind::claim && p.test;
-        if (change.empty())
-            change = claim_checked ? "as checked, it does not hold" : unreconciled(p, change_pt);
-        if (group.size() > 1)
+        // What was found, comparison by comparison; a claim shows what was checked beside
+        // it, so that it does not hold is then enough.
+        auto change_of = [&](const engine::paper_comparison& c) {
+            if (c.agrees())
+                return std::string(c.what == engine::paper_comparison::kind::claim   ? "proven"
+                                   : c.what == engine::paper_comparison::kind::given ? "proven equivalent"
+                                                                                     : "proven equal");
+            if (comparison_verdict(c) == "undecided")
+                return std::string("neither proven nor refuted");
+            std::string found = findings(c);
+            if (found.empty())
+                found = c.what == engine::paper_comparison::kind::claim && c.test ? "as checked, it does not hold"
+                                                                                 : unreconciled(c, change_pt);
+            return found;
+        };
+        std::string change = change_of(p);
+        if (claim && group.size() > 1) {
+            // The claims of one quote: one finding, each check's outcome where they differ.
+            std::vector<std::string> each;
+            for (std::size_t k : group)
+                each.push_back(change_of(all[k]));
+            if (std::all_of(each.begin(), each.end(), [&](const std::string& e) { return e == each.front(); })) {
+                change = each.front() == "as checked, it does not hold"
+                             ? (group.size() == 2 ? "as checked, neither holds" : "as checked, none holds")
+                             : each.front() == "proven" ? (group.size() == 2 ? "both proven" : "all proven")
+                                                        : each.front();
+            } else {
+                change.clear();
+                for (std::size_t i = 0; i < each.size(); ++i)
+                    change += fmt::format("{}{}: {}", i == 0 ? "" : "; ",
+                                          i == 0 ? "the 1st check" : i == 1 ? "the 2nd check" : i == 2 ? "the 3rd check"
+                                                                                                  : "a later check",
+                                          each[i]);
+            }
+        } else if (!agrees && verdict == "disagrees" && group.size() > 1) {
             change += fmt::format("; one misprint, in each of the {} components", group.size());
+        }
 
         bool to_display = (!printed_math.empty() && !fits(printed_math, printed_pt)) ||
                           (!derived_math.empty() && !fits(derived_math, derived_pt));
-        for (const engine::finding& f : p.findings)
-            for (const engine::finding::part& part : f.parts)
-                if (part.what == engine::finding::part::kind::math &&
-                    !fits(part.value.info(GiNaC::info_flags::relation) ? relation_math(part.value)
-                                                                       : math(part.value),
-                          change_pt))
-                    to_display = true;
+        for (std::size_t k : group)
+            for (const engine::finding& f : all[k].findings)
+                for (const engine::finding::part& part : f.parts)
+                    if (part.what == engine::finding::part::kind::math &&
+                        !fits(part.value.info(GiNaC::info_flags::relation) ? relation_math(part.value)
+                                                                           : math(part.value),
+                              change_pt))
+                        to_display = true;
         std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;
         std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
         // A claim: what was checked (at its special values, or its limit), when it fits.
-        if (p.what == engine::paper_comparison::kind::claim && p.test) {
-            const std::string checked = checked_claim_latex(*p.test, order_);
-            derived_cell = fits(checked, derived_pt) && cell_width(checked) <= 2.5 * derived_pt
-                               ? "checked: " + checked
-                               : fmt::format("checked in Sect.~\\ref{{{}}}", latex_label(d_));
+        if (claim && p.test) {
+            std::vector<std::string> each;
+            for (std::size_t k : group)
+                if (all[k].test)
+                    each.push_back(checked_claim_latex(*all[k].test, order_));
+            // Each check on a line of its own in the cell, when each fits.
+            const bool each_fits = std::all_of(each.begin(), each.end(), [&](const std::string& c) {
+                return fits(c, derived_pt) && cell_width(c) <= 2.5 * derived_pt;
+            });
+            derived_cell = each_fits ? "checked: " + fmt::format("{}", fmt::join(each, ";\\newline "))
+                                     : fmt::format("checked in Sect.~\\ref{{{}}}", latex_label(d_));
         }
         std::string change_cell = change;
         if (to_display) {
@@ -276,7 +311,7 @@ void fragment_writer::errata_rows(errata_table& table) const
                 table.displays += "Derived" + shown(derived, derived_written);
                 derived_cell = see;
             }
-            if (!p.agrees()) {
+            if (!agrees) {
                 table.displays += (derived_math.empty() ? " " : "") + capitalised(change) + ".\n";
                 change_cell = see;
             } else {
@@ -285,7 +320,7 @@ void fragment_writer::errata_rows(errata_table& table) const
         }
         table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & {} & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
                                   latex_label(d_), listing(subjects),
-                                  p.agrees() ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
+                                  agrees ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
                                   change_cell);
     }
     for (const spec::open_claim& c : d_.source.open_claims)

@@ -66,8 +66,9 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
                        "can be neither proven nor refuted, or when no derivation can settle it (a statement about "
                        "experiment, an assumption about real bodies), with the reason. For each disagreement the "
                        "smallest change that reconciles the two is given, when one edit, or two, do. Each row is one "
-                       "finding: a claim of the text, or a printed form; a misprint that one finding explains in "
-                       "several components of one equation is one row. Printed forms are set as the paper prints "
+                       "finding: a claim of the text (the claims checked of one quote together, each check shown), or "
+                       "a printed form; a misprint that one finding explains in several components of one equation "
+                       "is one row. Printed forms are set as the paper prints "
                        "them, term by term and factor by factor, nothing merged or simplified, beside the derived "
                        "result in the same variables; forms too wide for the table are set under it.\n\n",
                        n.lines, n.compared, n.rows, n.agree, n.disagree, n.undecided, not_compared);
