@@ -7,6 +7,9 @@ if(NOT (IMPACT_SANITIZE OR IMPACT_FUZZ))
 endif()
 
 add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+# Line tables only (after the build type's -g, so this one counts): reports still name file
+# and line, and the sanitized build compiles and links in far less time than with -g.
+add_compile_options(-g1)
 add_link_options(-fsanitize=address,undefined)
 
 # tests/sanitizer.supp is compiled into every program of the build (tests, the build's own

@@ -4,7 +4,8 @@
 // end, a regeneration with two jobs writes the bytes of one with one, and a failure under
 // two jobs (a derivation, a kernel in its worker, a worker killed) is reported as under one
 // with the output folder left as it was; `impact kernels` takes its choices from the
-// cache; a number of jobs below one is refused.
+// cache; a number of jobs below one is refused. The report, compiled in a process beside
+// (pipeline::beside): its text, its error, how it died, and no process left behind.
 #define BOOST_TEST_MODULE test_jobs
 #include <boost/test/unit_test.hpp>
 
@@ -14,7 +15,10 @@
 
 #include "support.h"
 
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <csignal>
 #include <ctime>
@@ -225,6 +229,47 @@ BOOST_AUTO_TEST_CASE(a_worker_that_dies_is_an_error_at_its_task_naming_how)
                                              "its forms ended (status 7) without sending its result",
                                              0) == 0u,
                what_is_thrown(quit, 2));
+}
+
+BOOST_AUTO_TEST_CASE(a_task_beside_runs_in_a_process_of_its_own_and_gives_its_text_or_why_not)
+{
+    // Its text, larger than a pipe holds, from another process.
+    pipeline::beside big(task("the report", [] { return std::to_string(::getpid()) + " " + std::string(200000, 'x'); }));
+    const std::string text = big.get();
+    BOOST_TEST(text.substr(0, text.find(' ')) != std::to_string(::getpid()));
+    BOOST_TEST(text.substr(text.find(' ') + 1) == std::string(200000, 'x'));
+    // Its error, at its place.
+    pipeline::beside failing(task("the report", []() -> std::string {
+        throw error({"output/report.pdf", 0, 0}, "pdflatex stopped: Undefined control sequence");
+    }));
+    try {
+        failing.get();
+        BOOST_FAIL("nothing thrown");
+    } catch (const error& e) {
+        BOOST_TEST(e.where().file == "output/report.pdf");
+        BOOST_TEST(e.message() == "pdflatex stopped: Undefined control sequence");
+    }
+    // How it died.
+    pipeline::beside killed(task("the report", []() -> std::string {
+        ::raise(SIGKILL);
+        return "never";
+    }));
+    try {
+        killed.get();
+        BOOST_FAIL("nothing thrown");
+    } catch (const error& e) {
+        BOOST_TEST(e.message().rfind("the report: the process compiling it was killed by signal 9 (", 0) == 0u,
+                   e.message());
+    }
+    // Left running when the parent stops: killed and waited for, no process left behind.
+    {
+        pipeline::beside forgotten(task("the report", [] {
+            ::sleep(600);
+            return std::string("too late");
+        }));
+    }
+    BOOST_TEST(::waitpid(-1, nullptr, WNOHANG) == -1);
+    BOOST_TEST(errno == ECHILD);
 }
 
 BOOST_AUTO_TEST_CASE(regenerating_with_two_jobs_writes_the_bytes_of_one_job)

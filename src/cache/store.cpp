@@ -292,4 +292,13 @@ std::map<std::string, counts> store::statistics() const
     return counts_;
 }
 
+void store::add_counts(const std::string& kind, const counts& more)
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    counts& c = counts_[kind];
+    c.hits += more.hits;
+    c.misses += more.misses;
+    c.rejected += more.rejected;
+}
+
 } // namespace impact::cache

@@ -68,6 +68,10 @@ public:
     /// Counts by kind, for `--timings`.
     std::map<std::string, counts> statistics() const;
 
+    /// Adds `more` to the counts of `kind`: those of a process that used the same folder
+    /// on this one's behalf (the report's, pipeline::beside).
+    void add_counts(const std::string& kind, const counts& more);
+
     const std::filesystem::path& folder() const { return folder_; }
 
     /// The file an entry for `kind` and `key` is kept in (for tests that damage one).

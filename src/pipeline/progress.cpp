@@ -1,5 +1,7 @@
 #include "pipeline/progress.h"
 
+#include "pipeline/workers.h"
+
 #include <cstdio>
 
 namespace impact::pipeline {
@@ -45,6 +47,8 @@ void progress::show()
     std::unique_lock<std::mutex> lock(mutex_);
     while (!stop_) {
         wake_.wait_for(lock, std::chrono::milliseconds(200));
+        // No fork() while this thread allocates and prints (workers.h).
+        const std::lock_guard<std::mutex> still(fork_lock());
         const auto second_ago = std::chrono::steady_clock::now() - std::chrono::seconds(1);
         std::string line;
         for (const auto& [task, r] : tasks_)

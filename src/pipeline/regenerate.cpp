@@ -18,7 +18,8 @@
 #include <sstream>
 #include <algorithm>
 #include <chrono>
-#include <future>
+#include <cmath>
+#include <locale>
 
 namespace impact::pipeline {
 namespace fs = std::filesystem;
@@ -89,6 +90,60 @@ std::optional<file_set> unpacked(const std::string& text)
         at = line + 1 + path_size + contents_size;
     }
     return files;
+}
+
+// What the report's process sends back: the PDFs, the seconds it took, and the cache
+// entries it found and made (its time in microseconds, then a line per kind of entry, then
+// the packed files).
+struct report_result {
+    file_set files;
+    std::map<std::string, cache::counts> used;
+    double seconds = 0;
+
+    std::string text() const
+    {
+        std::string out = fmt::format("{}\n{}\n", std::llround(seconds * 1e6), used.size());
+        for (const auto& [kind, c] : used)
+            out += fmt::format("{} {} {} {}\n", kind, c.hits, c.misses, c.rejected);
+        return out + packed(files);
+    }
+
+    static report_result read(const std::string& text)
+    {
+        report_result r;
+        std::istringstream in(text);
+        in.imbue(std::locale::classic());
+        long long microseconds = 0;
+        std::size_t kinds = 0;
+        in >> microseconds >> kinds;
+        r.seconds = static_cast<double>(microseconds) * 1e-6;
+        for (std::size_t i = 0; i < kinds; ++i) {
+            std::string kind;
+            cache::counts c;
+            in >> kind >> c.hits >> c.misses >> c.rejected;
+            r.used[kind] = c;
+        }
+        in.get();   // the end of the last line
+        std::optional<file_set> files = unpacked(text.substr(in ? static_cast<std::size_t>(in.tellg()) : text.size()));
+        if (!in || !files)
+            throw std::runtime_error("the report's process sent back a result that is not whole");
+        r.files = std::move(*files);
+        return r;
+    }
+};
+
+// Counts by kind made between `before` and `after`.
+std::map<std::string, cache::counts> counts_since(const std::map<std::string, cache::counts>& before,
+                                                  const std::map<std::string, cache::counts>& after)
+{
+    std::map<std::string, cache::counts> made;
+    for (const auto& [kind, c] : after) {
+        const auto was = before.find(kind);
+        const cache::counts b = was == before.end() ? cache::counts{} : was->second;
+        if (c.hits != b.hits || c.misses != b.misses || c.rejected != b.rejected)
+            made[kind] = {c.hits - b.hits, c.misses - b.misses, c.rejected - b.rejected};
+    }
+    return made;
 }
 
 } // namespace
@@ -265,23 +320,32 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
         if (path.rfind("latex/", 0) == 0)
             sources[path] = contents;
     clock.lap("figures' tables, report.tex");
-    report::compile_options compiling;
-    compiling.store = store ? &*store : nullptr;
-    compiling.doing = [&shown](const std::string& what) { shown.say("report", what); };
-    double report_seconds = 0;
-    std::future<file_set> pdfs = std::async(std::launch::async, [&] {
+    // Compiled in a process beside this one (workers.h says why not a thread), which sends
+    // back the PDFs, its time and its use of the cache.
+    cache::store* const shared = store ? &*store : nullptr;
+    beside report_process(verify::text_task{"the report", {"output/report.pdf", 0, 0}, [&] {
         const auto began = std::chrono::steady_clock::now();
-        file_set made = report::compile_report(sources, compiling);
-        shown.done("report");
-        report_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-        return made;
-    });
+        const std::map<std::string, cache::counts> before = shared ? shared->statistics() : std::map<std::string, cache::counts>{};
+        report::compile_options compiling;
+        compiling.store = shared;
+        const file_set made = report::compile_report(sources, compiling);
+        return report_result{made, shared ? counts_since(before, shared->statistics()) : std::map<std::string, cache::counts>{},
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()}
+            .text();
+    }});
+    shown.say("report", "compiling the figures and the report");
     const std::vector<std::string> missed =
-        add_kernels(lib, files, clock, kernel_options{compiling.store, options.jobs}, &shown);
+        add_kernels(lib, files, clock, kernel_options{shared, options.jobs}, &shown);
+    const report_result compiled = report_result::read(report_process.get());
+    shown.done("report");
     for (auto& [path, contents] : report_files)
         files[path] = std::move(contents);
-    for (auto& [path, contents] : pdfs.get())
-        files[path] = std::move(contents);
+    for (const auto& [path, contents] : compiled.files)
+        files[path] = contents;
+    if (store)
+        for (const auto& [kind, more] : compiled.used)
+            store->add_counts(kind, more);
+    const double report_seconds = compiled.seconds;
     clock.lap("waiting for the figures and report");
     result.stages.emplace_back("figures and report PDFs (beside the kernel forms)", report_seconds);
     // A kernel that misses its accuracy bound fails the regeneration like a failed check.

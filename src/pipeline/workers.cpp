@@ -88,13 +88,14 @@ struct outcome {
     std::exception_ptr failed;
 };
 
-outcome read_outcome(const verify::text_task& task, const std::string& bytes, int status)
+// `process` names the child in a message about its death ("the worker process choosing
+// its forms"), and `advice` follows it.
+outcome read_outcome(const verify::text_task& task, const std::string& bytes, int status,
+                     const std::string& process, const std::string& advice = "")
 {
     auto died = [&](const std::string& how) {
-        return outcome{{}, std::make_exception_ptr(error(
-                               task.where, fmt::format("{}: the worker process choosing its forms {} (run again with "
-                                                       "--jobs 1 to choose them in Impact's own process)",
-                                                       task.what, how)))};
+        return outcome{{}, std::make_exception_ptr(
+                               error(task.where, fmt::format("{}: {} {}{}", task.what, process, how, advice)))};
     };
     if (WIFSIGNALED(status))
         return died(fmt::format("was killed by signal {} ({})", WTERMSIG(status), ::strsignal(WTERMSIG(status))));
@@ -145,6 +146,13 @@ struct crew {
     }
 };
 
+// fork() while no thread of Impact's holds a lock the child could need (workers.h).
+pid_t locked_fork()
+{
+    const std::lock_guard<std::mutex> still(fork_lock());
+    return ::fork();
+}
+
 // Forks a worker for `task`; nothing when the system refuses a process or a pipe.
 std::optional<worker> start(const verify::text_task& task, std::size_t index)
 {
@@ -153,7 +161,7 @@ std::optional<worker> start(const verify::text_task& task, std::size_t index)
     // pipe open (the parent would wait for it to see the worker's end).
     if (::pipe2(fds, O_CLOEXEC) != 0)
         return std::nullopt;
-    const pid_t pid = ::fork();
+    const pid_t pid = locked_fork();
     if (pid < 0) {
         ::close(fds[0]);
         ::close(fds[1]);
@@ -251,7 +259,9 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
             int status = 0;
             while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
             }
-            outcomes[w.task] = read_outcome(tasks[w.task], w.bytes, status);
+            outcomes[w.task] =
+                read_outcome(tasks[w.task], w.bytes, status, "the worker process choosing its forms",
+                             " (run again with --jobs 1 to choose them in Impact's own process)");
             if (outcomes[w.task].failed)
                 first_failure = std::min(first_failure, w.task);
             workers.running.erase(workers.running.begin() + static_cast<std::ptrdiff_t>(i));
@@ -280,6 +290,61 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
     for (std::size_t i = 0; i < tasks.size(); ++i)
         texts[i] = std::move(outcomes[i].text);
     return texts;
+}
+
+std::mutex& fork_lock()
+{
+    static std::mutex lock;
+    return lock;
+}
+
+beside::beside(verify::text_task task) : task_(std::move(task))
+{
+    result_ = std::tmpfile();
+    if (!result_)
+        return;
+    pid_ = locked_fork();
+    if (pid_ == 0) {
+        ::prctl(PR_SET_NAME, "impact-report", 0, 0, 0);
+        be_worker(task_, ::fileno(result_));
+    }
+    if (pid_ < 0) {
+        std::fclose(result_);
+        result_ = nullptr;
+    }
+}
+
+beside::~beside()
+{
+    if (pid_ > 0) {
+        ::kill(pid_, SIGKILL);
+        int status = 0;
+        while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+        }
+    }
+    if (result_)
+        std::fclose(result_);
+}
+
+std::string beside::get()
+{
+    if (pid_ <= 0)
+        return task_.run();   // no process to be had: run here
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = -1;
+    std::string bytes;
+    std::rewind(result_);
+    char buffer[1 << 16];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, result_)) > 0;)
+        bytes.append(buffer, n);
+    std::fclose(result_);
+    result_ = nullptr;
+    outcome o = read_outcome(task_, bytes, status, "the process compiling it");
+    if (o.failed)
+        std::rethrow_exception(o.failed);
+    return std::move(o.text);
 }
 
 verify::task_runner worker_runner(unsigned jobs)

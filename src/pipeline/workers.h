@@ -7,14 +7,24 @@
 // that what is written does not depend on which finished first.
 //
 // A child touches only what the task reads (the derived library, GiNaC's and CLN's
-// state, which only the pipeline's thread ever uses) and its pipe, and leaves with
-// _exit(): the report's thread and the progress line, running beside it in the parent,
-// do not exist in the child, and nothing of theirs is used there.
+// state) and its pipe, and leaves with _exit().
+//
+// Impact forks only while no thread of its own can hold a lock: a child gets a copy of
+// every lock as it was, and one held by another thread at that instant (the allocator's,
+// under AddressSanitizer, whose allocator GCC 12 does not make fork-safe) is held in the
+// child forever. So the report is compiled in a process of its own (`beside`), not in a
+// thread, and the progress line's painter, the one thread Impact starts, holds
+// `fork_lock()` while it prints.
 #pragma once
 
+#include "spec/error.h"
 #include "verify/choice.h"
 
+#include <sys/types.h>
+
+#include <cstdio>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -37,5 +47,32 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
 
 /// `run_in_workers` with `jobs`, as plan_kernels takes it.
 verify::task_runner worker_runner(unsigned jobs);
+
+/// Held by Impact's threads (the progress line's painter) while they run anything that
+/// could take a lock a forked child would need, and around every fork().
+std::mutex& fork_lock();
+
+/// `task` run in a process forked beside this one, its text collected by `get()`: the
+/// report's PDFs, compiled while the kernel forms are chosen on this thread. The child
+/// writes its result to an unnamed temporary file, so that it never waits for the parent
+/// to read. When no process is to be had, the task runs in `get()`. A child still running
+/// when this is destroyed (the parent stopped on an error) is killed and waited for.
+class beside {
+public:
+    beside(verify::text_task task);
+    ~beside();
+    beside(const beside&) = delete;
+    beside& operator=(const beside&) = delete;
+
+    /// Waits for the task: its text, or its `impact::error` (or another exception, as a
+    /// `std::runtime_error`) thrown here; a child that died is an `impact::error` at the
+    /// task's place naming how.
+    std::string get();
+
+private:
+    verify::text_task task_;
+    pid_t pid_ = -1;
+    std::FILE* result_ = nullptr;
+};
 
 } // namespace impact::pipeline
