@@ -292,6 +292,12 @@ BOOST_AUTO_TEST_CASE(one_quantity_in_two_forms_is_named_once)
     BOOST_TEST(contains(tex, "   &= -(1 + \\epsilon) (v_{M,\\parallel} - v_{m,\\parallel}) \\tag*{Eq.~(10), second line}"));
     // Its definition as the file writes it, the relative velocities in parentheses.
     BOOST_TEST(contains(tex, "\\Delta v_\\Delta &= (v'_{M,\\parallel} - v'_{m,\\parallel}) - (v_{M,\\parallel} - v_{m,\\parallel})"));
+    // The check `impulse_form` states the first result's display form: one item, its reason
+    // given there: the form typeset in the step, the result and the comparison with the
+    // paper, not a fourth time.
+    BOOST_TEST(count("-\\left(\\frac{1}{M} + \\frac{1}{m}\\right) J") == 3u);
+    BOOST_TEST(count("Impulse form") == 1u);
+    BOOST_TEST(contains(tex, "equals the derived result. Impulse form states the same: each velocity changes"));
 }
 
 BOOST_AUTO_TEST_CASE(givens_that_state_their_values_are_not_a_step_to_follow)

@@ -220,7 +220,22 @@ std::string fragment_writer::checks() const
     if (d_.checks.empty())
         return "";
     std::string out = "\n\\paragraph{Checks.}\n\\begin{itemize}\n";
+    // A check that states a result's display form, nothing more (no special values, limit
+    // or cases), is that result's display-form check: said once, with its reason.
+    auto restated = [&](const engine::check_result& c) -> const engine::result* {
+        if (!c.display_of.empty() || c.op != engine::relation::equal || !c.at.empty() || !c.left_at.empty() || c.limit ||
+            !c.assuming.empty() || !c.parts.empty() || c.continuity || !c.stated.info(GiNaC::info_flags::relation))
+            return nullptr;
+        for (const engine::result& r : d_.results)
+            if (r.cases.empty() && c.stated.lhs().is_equal(r.symbol) && c.stated.rhs().is_equal(r.display))
+                for (const engine::check_result& shown : d_.checks)
+                    if (shown.display_of == r.name && shown.outcome.what == c.outcome.what)
+                        return &r;
+        return nullptr;
+    };
     for (const engine::check_result& c : d_.checks) {
+        if (restated(c))
+            continue;
         // A display form is the result typeset above: say so, do not print it again.
         if (!c.display_of.empty()) {
             const std::string& name = c.display_of;
@@ -240,8 +255,14 @@ std::string fragment_writer::checks() const
             const std::string where = r && !r->paper.empty()
                                           ? fmt::format(", \\ref{{{}:result:{}}},", latex_label(d_), name)
                                           : "";
-            out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result.\n",
-                               status_text(c.outcome), q ? math(q->symbol) : latex_text(name), where);
+            out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result", status_text(c.outcome),
+                               q ? math(q->symbol) : latex_text(name), where);
+            std::string also;
+            for (const engine::check_result& same : d_.checks)
+                if (const engine::result* of = restated(same); of && of->name == name)
+                    also += fmt::format(". {} states the same{}", heading(same.name),
+                                        same.because.empty() ? "" : ": " + latex_prose(same.because));
+            out += also + (also.empty() || also.back() != '.' ? ".\n" : "\n");
             continue;
         }
         if (c.continuity) {
