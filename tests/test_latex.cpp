@@ -321,6 +321,11 @@ BOOST_AUTO_TEST_CASE(a_step_shows_its_value_collected_not_expanded)
     // |v'_1| = sqrt(v^2 (1 - eps)^2 + 4 v_perp^2)/2, not an expanded sum under the root.
     const std::string angle = emit::latex_fragment(derived("scatter_angle"));
     BOOST_TEST(contains(angle, "\\sqrt{v^{2}_{1,\\parallel} (1 - \\epsilon)^{2} + 4 v^{2}_{1,\\perp}}"));
+    // Nor in the proofs: the factors whose signs prove 0 <= cos(theta) <= 1, the root and one
+    // over it, are shown with that argument too, never v^2 - 2 v^2 eps + v^2 eps^2 + 4 v_perp^2.
+    BOOST_TEST(!contains(angle, "2 v^{2}_{1,\\parallel} \\epsilon"));
+    BOOST_TEST(contains(angle, "$\\frac{1}{\\sqrt{v^{2}_{1,\\parallel} (1 - \\epsilon)^{2} + 4 v^{2}_{1,\\perp}}} > 0$ "
+                               "(a square root)"));
 }
 
 BOOST_AUTO_TEST_CASE(checks_are_headed_in_words_not_identifiers)

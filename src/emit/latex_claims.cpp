@@ -179,7 +179,9 @@ std::string fragment_writer::sign_text(const engine::sign_step& step) const
     const std::string why = step.why.declared       ? "declared " + latex_text(step.why.domain)
                             : step.why.typeset.parts.empty() ? latex_text(step.why.words)
                                                              : finding_latex(step.why.typeset, order_);
-    return fmt::format("${} {} 0$ ({})", math(step.factor), relation, why);
+    // The factor as a textbook writes it (factored, or collected, a root's argument too),
+    // not as the proof expanded it.
+    return fmt::format("${} {} 0$ ({})", math(textbook_form(step.factor, order_).value), relation, why);
 }
 
 std::string fragment_writer::limit_text(const engine::limit_method& how) const

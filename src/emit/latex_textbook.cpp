@@ -74,8 +74,9 @@ GiNaC::ex factored(const GiNaC::ex& p, const term_order& order)
 
 textbook_value textbook_form(const GiNaC::ex& e, const term_order& order)
 {
-    // A square root: its argument as a textbook writes it.
-    if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).is_equal(GiNaC::numeric(1, 2))) {
+    // A square root, or one over a square root: its argument as a textbook writes it.
+    if (GiNaC::is_a<GiNaC::power>(e) &&
+        (e.op(1).is_equal(GiNaC::numeric(1, 2)) || e.op(1).is_equal(GiNaC::numeric(-1, 2)))) {
         const textbook_value inner = textbook_form(e.op(0), order);
         if (inner.how.empty())
             return {e, ""};
