@@ -1,0 +1,13 @@
+# Runs PROBE five times and fails unless it prints the same text every time.
+foreach(run RANGE 1 5)
+  execute_process(COMMAND ${PROBE} OUTPUT_VARIABLE printed RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${PROBE} failed (${status})")
+  endif()
+  if(run EQUAL 1)
+    set(first "${printed}")
+    message(STATUS "run 1:\n${printed}")
+  elseif(NOT printed STREQUAL first)
+    message(FATAL_ERROR "run ${run} printed another order:\n${printed}\nrun 1 printed:\n${first}")
+  endif()
+endforeach()
