@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "emit/cxx.h"
+#include "emit/errata.h"
 #include "compile/program.h"
 #include "compile/range.h"
 #include "emit/program_cxx.h"
@@ -238,3 +239,20 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(the_claims_of_one_quote_come_to_one_finding)
+{
+    using impact::emit::one_finding;
+    BOOST_TEST(one_finding({"proven", "proven"}) == "both proven");
+    BOOST_TEST(one_finding({"proven", "proven", "proven"}) == "all proven");
+    BOOST_TEST(one_finding({"as checked, it does not hold", "as checked, it does not hold"}) ==
+               "as checked, neither holds");
+    BOOST_TEST(one_finding({"as checked, it does not hold", "as checked, it does not hold",
+                            "as checked, it does not hold"}) == "as checked, none holds");
+    // Outcomes that differ are said check by check.
+    BOOST_TEST(one_finding({"proven", "neither proven nor refuted"}) ==
+               "the 1st check: proven; the 2nd check: neither proven nor refuted");
+    BOOST_TEST(one_finding({"proven", "proven", "proven", "as checked, it does not hold"}) ==
+               "the 1st check: proven; the 2nd check: proven; the 3rd check: proven; the 4th check: as checked, it "
+               "does not hold");
+}

@@ -44,13 +44,6 @@ const char* kind_name(engine::paper_comparison::kind k)
     return "";
 }
 
-// "the 1st check", "the 2nd check", ... for the claims of one row.
-std::string ordinal_check(std::size_t i)
-{
-    static const char* const names[] = {"the 1st check", "the 2nd check", "the 3rd check"};
-    return i < 3 ? names[i] : fmt::format("the {}th check", i + 1);
-}
-
 } // namespace
 
 std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, bool claims_of_one_quote)
@@ -81,6 +74,26 @@ std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, b
         rows.push_back(std::move(row));
     }
     return rows;
+}
+
+std::string one_finding(const std::vector<std::string>& each)
+{
+    if (each.empty())
+        return "";
+    const bool two = each.size() == 2;
+    if (std::all_of(each.begin(), each.end(), [&](const std::string& e) { return e == each.front(); })) {
+        if (each.front() == "as checked, it does not hold")
+            return two ? "as checked, neither holds" : "as checked, none holds";
+        if (each.front() == "proven")
+            return two ? "both proven" : "all proven";
+        return each.front();
+    }
+    static const char* const ordinals[] = {"1st", "2nd", "3rd"};
+    std::string out;
+    for (std::size_t i = 0; i < each.size(); ++i)
+        out += fmt::format("{}the {} check: {}", i == 0 ? "" : "; ",
+                           i < 3 ? std::string(ordinals[i]) : fmt::format("{}th", i + 1), each[i]);
+    return out;
 }
 
 std::string row_verdict(const engine::derivation& d, const std::vector<std::size_t>& row)
@@ -200,16 +213,7 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                 std::vector<std::string> each;
                 for (std::size_t k : row)
                     each.push_back(change_of(d->paper_checks[k]));
-                if (std::all_of(each.begin(), each.end(), [&](const std::string& e) { return e == each.front(); })) {
-                    change = each.front() == "as checked, it does not hold"
-                                 ? (row.size() == 2 ? "as checked, neither holds" : "as checked, none holds")
-                                 : each.front() == "proven" ? (row.size() == 2 ? "both proven" : "all proven")
-                                                            : each.front();
-                } else {
-                    change.clear();
-                    for (std::size_t i = 0; i < each.size(); ++i)
-                        change += fmt::format("{}{}: {}", i == 0 ? "" : "; ", ordinal_check(i), each[i]);
-                }
+                change = one_finding(each);
                 printed.resize(1);
                 for (std::size_t i = 1; i < derived.size(); ++i)
                     if (derived[i].rfind("checked: ", 0) == 0)

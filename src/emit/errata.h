@@ -22,6 +22,11 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
 /// member against member), one finding about what the paper says there.
 std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, bool claims_of_one_quote = true);
 
+/// What the claims checked of one quote come to, from what each check came to ("proven",
+/// "as checked, it does not hold", ...): said once when all are the same ("both proven",
+/// "as checked, neither holds"), else each in turn ("the 1st check: ...; the 2nd check: ...").
+std::string one_finding(const std::vector<std::string>& each);
+
 /// The verdict of a row: "disagrees" when one of its comparisons disagrees, otherwise
 /// "undecided" when one is, otherwise "agrees".
 std::string row_verdict(const engine::derivation& d, const std::vector<std::size_t>& row);

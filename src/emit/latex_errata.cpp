@@ -254,19 +254,7 @@ void fragment_writer::errata_rows(errata_table& table) const
             std::vector<std::string> each;
             for (std::size_t k : group)
                 each.push_back(change_of(all[k]));
-            if (std::all_of(each.begin(), each.end(), [&](const std::string& e) { return e == each.front(); })) {
-                change = each.front() == "as checked, it does not hold"
-                             ? (group.size() == 2 ? "as checked, neither holds" : "as checked, none holds")
-                             : each.front() == "proven" ? (group.size() == 2 ? "both proven" : "all proven")
-                                                        : each.front();
-            } else {
-                change.clear();
-                for (std::size_t i = 0; i < each.size(); ++i)
-                    change += fmt::format("{}{}: {}", i == 0 ? "" : "; ",
-                                          i == 0 ? "the 1st check" : i == 1 ? "the 2nd check" : i == 2 ? "the 3rd check"
-                                                                                                  : "a later check",
-                                          each[i]);
-            }
+            change = one_finding(each);
         } else if (!agrees && verdict == "disagrees" && group.size() > 1) {
             change += fmt::format("; one misprint, in each of the {} components", group.size());
         }
