@@ -317,6 +317,19 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
     BOOST_TEST(p.reconciliations == std::vector<std::string>{"write z for x in 2*x"}, boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(two_single_edits_that_make_the_same_form_are_one_change)
+{
+    // A share printed with its numerator the other's: y/(y + z) where z/(y + z) is derived.
+    // Swapping y and z throughout and writing z for y in the numerator make the same form:
+    // one change, told in the fewer words.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"s\"\n[[step]]\ndefine = \"s\"\nas = \"z/(y + z)\"\n"
+        "[[result]]\nname = \"s\"\nprinted = \"y/(y + z)\"\n"));
+    const engine::paper_comparison& p = d.paper_checks.at(0);
+    BOOST_TEST(!p.agrees());
+    BOOST_TEST(p.reconciliations == std::vector<std::string>{"y and z swapped"}, boost::test_tools::per_element());
+}
+
 BOOST_AUTO_TEST_CASE(the_member_of_a_line_that_agrees_says_which_factor_is_misprinted)
 {
     // Eq. 14's first line on a small scale: y z / z, then the values put in with the

@@ -248,13 +248,27 @@ std::vector<finding> search(std::vector<candidate> all, const symbol_table& symb
                      [](const candidate& a, const candidate& b) { return a.priority < b.priority; });
     // Sorted and told apart by their text, so that the report is the same on every run.
     std::map<std::string, finding> found;
+    // Two edits that make the same form are one change, told in the fewer words ("v'_1 and
+    // v'_2 swapped", not also "write v'_1 for v'_2 in v'_2/(v'_1 + v'_2)").
+    std::map<std::string, std::string> text_of_form;
     int best = 0;
     for (const candidate& c : all) {
         if (best && c.priority > best)
             break;
         if (screen(c.edited) && confirm(c.edited)) {
             finding change = c.change();
-            found.emplace(plain_text(change, symbols), std::move(change));
+            std::string text = plain_text(change, symbols);
+            std::ostringstream form;
+            form << c.edited;
+            auto [at, inserted] = text_of_form.try_emplace(form.str(), text);
+            if (!inserted) {
+                const std::string& kept = at->second;
+                if (text.size() > kept.size() || (text.size() == kept.size() && text >= kept))
+                    continue;
+                found.erase(kept);
+                at->second = text;
+            }
+            found.emplace(std::move(text), std::move(change));
             best = c.priority;
         }
     }
