@@ -93,8 +93,8 @@ std::optional<file_set> unpacked(const std::string& text)
 }
 
 // What the report's process sends back: the PDFs, the seconds it took, and the cache
-// entries it found and made (its time in microseconds, then a line per kind of entry, then
-// the packed files).
+// entries it found and made (its time in microseconds, then a line per kind of entry, its
+// counts before its name, which may hold spaces, then the packed files).
 struct report_result {
     file_set files;
     std::map<std::string, cache::counts> used;
@@ -104,7 +104,7 @@ struct report_result {
     {
         std::string out = fmt::format("{}\n{}\n", std::llround(seconds * 1e6), used.size());
         for (const auto& [kind, c] : used)
-            out += fmt::format("{} {} {} {}\n", kind, c.hits, c.misses, c.rejected);
+            out += fmt::format("{} {} {} {}\n", c.hits, c.misses, c.rejected, kind);
         return out + packed(files);
     }
 
@@ -117,13 +117,15 @@ struct report_result {
         std::size_t kinds = 0;
         in >> microseconds >> kinds;
         r.seconds = static_cast<double>(microseconds) * 1e-6;
+        in.get();   // the end of the line
         for (std::size_t i = 0; i < kinds; ++i) {
             std::string kind;
             cache::counts c;
-            in >> kind >> c.hits >> c.misses >> c.rejected;
+            in >> c.hits >> c.misses >> c.rejected;
+            in.get();   // the space before the name
+            std::getline(in, kind);
             r.used[kind] = c;
         }
-        in.get();   // the end of the last line
         std::optional<file_set> files = unpacked(text.substr(in ? static_cast<std::size_t>(in.tellg()) : text.size()));
         if (!in || !files)
             throw std::runtime_error("the report's process sent back a result that is not whole");
