@@ -306,15 +306,23 @@ BOOST_AUTO_TEST_CASE(a_claim_made_for_the_wrong_regime_is_reported_with_the_righ
     BOOST_TEST(d.all_hold());  // a wrong claim of the paper is a finding, not a failed check
 }
 
+// The smallest changes found for a result `name` derived `as` one form and printed as another.
+std::vector<std::string> smallest_changes(const std::string& name, const std::string& as, const std::string& printed)
+{
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"" + name + "\"\n[[step]]\ndefine = \"" + name + "\"\nas = \"" + as + "\"\n"
+        "[[result]]\nname = \"" + name + "\"\nprinted = \"" + printed + "\"\n"));
+    const engine::paper_comparison& p = d.paper_checks.at(0);
+    BOOST_TEST(!p.agrees());
+    return p.reconciliations;
+}
+
 BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
 {
     // Eq. 3's misprint, on a small scale: 2*x printed where 2*z is derived.
-    const engine::derivation d = derive_text(derivation_text(
-        "[[symbol]]\nname = \"w\"\n[[step]]\ndefine = \"w\"\nas = \"(x + 2*z)*y + 2*z\"\n"
-        "[[result]]\nname = \"w\"\nprinted = \"(x + 2*z)*y + 2*x\"\n"));
-    const engine::paper_comparison& p = d.paper_checks.at(0);
-    BOOST_TEST(!p.agrees());
-    BOOST_TEST(p.reconciliations == std::vector<std::string>{"write z for x in 2*x"}, boost::test_tools::per_element());
+    BOOST_TEST(smallest_changes("w", "(x + 2*z)*y + 2*z", "(x + 2*z)*y + 2*x") ==
+                   std::vector<std::string>{"write z for x in 2*x"},
+               boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(two_single_edits_that_make_the_same_form_are_one_change)
@@ -322,12 +330,8 @@ BOOST_AUTO_TEST_CASE(two_single_edits_that_make_the_same_form_are_one_change)
     // A share printed with its numerator the other's: y/(y + z) where z/(y + z) is derived.
     // Swapping y and z throughout and writing z for y in the numerator make the same form:
     // one change, told in the fewer words.
-    const engine::derivation d = derive_text(derivation_text(
-        "[[symbol]]\nname = \"s\"\n[[step]]\ndefine = \"s\"\nas = \"z/(y + z)\"\n"
-        "[[result]]\nname = \"s\"\nprinted = \"y/(y + z)\"\n"));
-    const engine::paper_comparison& p = d.paper_checks.at(0);
-    BOOST_TEST(!p.agrees());
-    BOOST_TEST(p.reconciliations == std::vector<std::string>{"y and z swapped"}, boost::test_tools::per_element());
+    BOOST_TEST(smallest_changes("s", "z/(y + z)", "y/(y + z)") == std::vector<std::string>{"y and z swapped"},
+               boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(the_member_of_a_line_that_agrees_says_which_factor_is_misprinted)
