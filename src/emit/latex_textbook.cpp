@@ -42,31 +42,9 @@ double width(const GiNaC::ex& e, const term_order& order)
 // A polynomial factored, each factor a flat sum whose first term in `order` is positive
 // (GiNaC nests a factor, and gives it either sign, differently between runs; the sign is
 // carried outside), so that a form, and its width, is the same on every run.
-// A polynomial that is of degree one in some symbol x, a x + b, with gcd(a, b) a number,
-// has no factor but numbers: any factor would divide both a and b. GiNaC's factor() takes
-// 15 to 60 ms to find that of a 20-term sum; gcd() takes a fraction of it.
-bool irreducible_by_degree_one(const GiNaC::ex& p, const std::vector<GiNaC::ex>& symbols)
-{
-    if (!GiNaC::is_a<GiNaC::add>(p))
-        return false;
-    for (const GiNaC::ex& x : symbols) {
-        if (p.degree(x) != 1 || p.ldegree(x) != 0)
-            continue;
-        const GiNaC::ex a = p.coeff(x, 1), b = p.coeff(x, 0);
-        if (GiNaC::is_a<GiNaC::numeric>(GiNaC::gcd(a, b)))
-            return true;
-    }
-    return false;
-}
-
 GiNaC::ex factored(const GiNaC::ex& p, const term_order& order)
 {
-    std::vector<GiNaC::ex> symbols;
-    const GiNaC::ex expanded = GiNaC::expand(p);
-    gather_symbols(expanded, symbols);
-    const GiNaC::ex f = irreducible_by_degree_one(expanded, symbols)
-                            ? expanded
-                            : engine::factor_reproducibly(p, GiNaC::factor_options::all);
+    const GiNaC::ex f = engine::factor_reproducibly(p, GiNaC::factor_options::all);
     const GiNaC::ex factors = GiNaC::is_a<GiNaC::mul>(f) ? f : GiNaC::ex(GiNaC::lst{f});
     GiNaC::ex out = 1;
     bool flip = false;

@@ -32,6 +32,8 @@ expansion expand_numerator(const GiNaC::ex& e);
 /// the factorizations before it in the process left: the same polynomial took a second
 /// in one run and a quarter of an hour in another, depending on what had been factored
 /// (or taken from a cache) before. The generator is seeded alike before every call.
+/// A sum that is of degree one in a symbol whose two coefficients have no common factor
+/// is irreducible, and returned expanded without calling factor().
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options = 0);
 
 } // namespace impact::engine
