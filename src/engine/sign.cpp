@@ -260,11 +260,14 @@ private:
     {
         if (depth > 6)
             return std::nullopt;
+        std::optional<GiNaC::ex> expanded;   // once, for the first symbol that may do
         for (const auto& [s, range] : by_name()) {
             const domain& d = *range;
             if (d.what != domain::kind::interval || !e.has(s) || !e.is_polynomial(s))
                 continue;
-            const GiNaC::ex p = GiNaC::expand(e);
+            if (!expanded)
+                expanded = GiNaC::expand(e);
+            const GiNaC::ex& p = *expanded;
             const int degree = p.degree(s);
             const bool squared = degree == 2 && p.coeff(s, 1).is_zero();
             if (degree != 1 && !squared)
