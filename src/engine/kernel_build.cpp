@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 namespace impact::engine {
@@ -18,12 +19,31 @@ namespace {
 // another expression named by a symbol while the expression's limit is taken, its own
 // limit put back after (the select is bounded: its cases' limits are finite). Nothing
 // when no method establishes a finite limit.
-std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given);
+// The limits one kernel's outputs, forms and lets need, by expression: they share their
+// parts (a select of J_t, J_n, m_t) many times over.
+using limit_memo = std::map<GiNaC::ex, std::optional<GiNaC::ex>, GiNaC::ex_is_less>;
 
-std::optional<GiNaC::ex> limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given)
+std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given,
+                                        limit_memo& memo);
+std::optional<GiNaC::ex> limit_taken(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given,
+                                     limit_memo& memo);
+
+// `memo` holds limits in this `s` under these assumptions only.
+std::optional<GiNaC::ex> limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given,
+                                           limit_memo& memo)
 {
     if (!e.has(s))
         return e;
+    if (const auto known = memo.find(e); known != memo.end())
+        return known->second;
+    std::optional<GiNaC::ex> l = limit_taken(e, s, given, memo);
+    memo.emplace(e, l);
+    return l;
+}
+
+std::optional<GiNaC::ex> limit_taken(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given,
+                                     limit_memo& memo)
+{
     if (is_select(e)) {
         std::optional<GiNaC::ex> condition;
         for (int power = 0; power <= 2 && !condition; ++power) {
@@ -31,8 +51,8 @@ std::optional<GiNaC::ex> limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& 
             if (r && !r->is_zero())
                 condition = *r;
         }
-        const auto taken = limit_at_infinity(e.op(1), s, given);
-        const auto otherwise = limit_at_infinity(e.op(2), s, given);
+        const auto taken = limit_at_infinity(e.op(1), s, given, memo);
+        const auto otherwise = limit_at_infinity(e.op(2), s, given, memo);
         if (!condition || !taken || !otherwise)
             return std::nullopt;
         if (GiNaC::is_a<GiNaC::numeric>(*condition))
@@ -56,7 +76,7 @@ std::optional<GiNaC::ex> limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& 
             }
             with = is_sum ? with + part : with * part;
             if (each) {
-                const auto l = limit_at_infinity(part, s, given);
+                const auto l = limit_at_infinity(part, s, given, memo);
                 if (l)
                     whole = is_sum ? whole + *l : whole * *l;
                 else
@@ -66,36 +86,38 @@ std::optional<GiNaC::ex> limit_at_infinity(const GiNaC::ex& e, const GiNaC::ex& 
         if (each)
             return is_sum ? free + whole : free * whole;
         if (with.is_equal(e))
-            return limit_of_whole(e, s, given);
-        const auto l = limit_at_infinity(with, s, given);
+            return limit_of_whole(e, s, given, memo);
+        const auto l = limit_at_infinity(with, s, given, memo);
         if (!l)
             return std::nullopt;
         return is_sum ? free + *l : free * *l;
     }
     if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1))) {
-        const auto base = limit_at_infinity(e.op(0), s, given);
+        const auto base = limit_at_infinity(e.op(0), s, given, memo);
         if (base && (!base->is_zero() || GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_positive()))
             return GiNaC::pow(*base, e.op(1));
     }
-    return limit_of_whole(e, s, given);
+    return limit_of_whole(e, s, given, memo);
 }
 
 // The limit of `e` taken at once (engine::limit), a select inside it named by a symbol.
-std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given)
+std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, const assumptions& given,
+                                        limit_memo& memo)
 {
     if (has_select(e)) {
         // Each outermost select named by a symbol of its own, its limit kept to put back.
         struct naming : GiNaC::map_function {
             const GiNaC::ex& s;
             const assumptions& given;
+            limit_memo& memo;
             GiNaC::exmap back;
             bool found = true;
-            naming(const GiNaC::ex& s, const assumptions& given) : s(s), given(given) {}
+            naming(const GiNaC::ex& s, const assumptions& given, limit_memo& memo) : s(s), given(given), memo(memo) {}
             GiNaC::ex operator()(const GiNaC::ex& x) override
             {
                 if (!is_select(x))
                     return x.nops() == 0 ? x : x.map(*this);
-                const auto l = limit_at_infinity(x, s, given);
+                const auto l = limit_at_infinity(x, s, given, memo);
                 if (!l) {
                     found = false;
                     return x;
@@ -104,7 +126,7 @@ std::optional<GiNaC::ex> limit_of_whole(const GiNaC::ex& e, const GiNaC::ex& s, 
                 back[z] = *l;
                 return z;
             }
-        } name(s, given);
+        } name(s, given, memo);
         GiNaC::exmap& back = name.back;
         const GiNaC::ex named = name(e);
         if (!name.found)
@@ -231,6 +253,7 @@ public:
                                                 k.name, mass.value));
         const GiNaC::ex M = p->components.front().symbol;
         const assumptions given = declared_assumptions(d_.symbols, run_);
+        limit_memo memo;
         kernel lk;
         lk.name = fmt::format("{}_fixed_{}", k.name, mass.value);
         lk.where = mass.where;
@@ -259,7 +282,7 @@ public:
                 lk.guards.push_back(std::move(g));
         }
         auto limit_of = [&](const GiNaC::ex& e, const std::string& what) {
-            const std::optional<GiNaC::ex> l = limit_at_infinity(e, M, given);
+            const std::optional<GiNaC::ex> l = limit_at_infinity(e, M, given, memo);
             if (!l)
                 throw error(mass.where, fmt::format("kernel '{}': no finite limit of {} as {} -> infinity", k.name,
                                                     what, mass.value));
@@ -292,7 +315,7 @@ public:
                 require_inputs(lk, value, o.member, mass.where);
                 // A form's limit, kept where it is proven equal to the value's.
                 auto limit_form = [&](const GiNaC::ex& written) -> std::optional<GiNaC::ex> {
-                    const std::optional<GiNaC::ex> l = limit_at_infinity(written, M, given);
+                    const std::optional<GiNaC::ex> l = limit_at_infinity(written, M, given, memo);
                     if (!l || l->has(M) ||
                         prove_form(l->subs(lets, GiNaC::subs_options::no_pattern), value).what !=
                             verdict::status::proven)
