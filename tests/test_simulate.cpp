@@ -1,6 +1,7 @@
 // Simulation and figures through the generated kernels, checked against physics laws
 // and closed forms typed here: contact times, exchanged velocities, right angles,
-// conserved momentum, the energy lost (Eq. 11), and Eq. 14 as an arctangent.
+// conserved momentum, the energy lost (Eq. 11), and Eq. 14 as an arctangent; rough spheres
+// by Walton's model (sticking, sliding, angular momentum about the contact point, energy).
 #define BOOST_TEST_MODULE test_simulate
 #include <boost/test/unit_test.hpp>
 
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 using namespace impact;
@@ -177,6 +179,156 @@ BOOST_AUTO_TEST_CASE(the_trajectory_table_has_the_contact_as_a_row)
     BOOST_TEST(text.find("\n2.5000 0.5000 0.0000 -1.0000 0.0000\n") != std::string::npos, text);
 }
 
+// m (spinning at 7 about z, counter-clockwise) hits M at rest head-on: n = (-1, 0) from M's
+// centre to m's, g = v_M - v_m + R_m w_m z x n = (-1, -3.5), g_n = 1, g_t = (0, -3.5);
+// m_r = 1/2, J_n = (1 + eps) m_r g_n = 1 (eps = 1), 1/m_t = 1 + 1 + 2.5 + 2.5 = 7.
+scenario spinning_head_on(double beta, std::optional<double> mu)
+{
+    scenario s = head_on(1);
+    s.m.spin = 7;
+    s.beta = beta;
+    s.mu = mu;
+    return s;
+}
+
+BOOST_AUTO_TEST_CASE(rough_spheres_stick_as_waltons_model_says)
+{
+    // Sticking, beta = 1: J_t = (1 + beta) m_t g_t = (0, -1) on m; v_m' = v_m + J_n n + J_t,
+    // v_M' = -(J_n n + J_t); w' = w - (R/(q mass R^2)) n x J_t with n x J_t = 1.
+    const trajectory path = run(spinning_head_on(1, std::nullopt));
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    const contact& c = *path.hit;
+    const double tol = 1e-14;
+    BOOST_TEST(std::abs(c.v_m_after[0]) < tol);
+    BOOST_TEST(c.v_m_after[1] == -1.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.v_M_after[0] == 1.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.v_M_after[1] == 1.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.w_m_after == 2.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.w_M_after == -5.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.J_t == 1.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(!c.slid);
+    // beta = 1: the contact points' tangential velocity reversed, g'_t = -g_t: its y-component
+    // g'_y = v'_My - v'_my - R (w'_M + w'_m) (z x n = (0, -1)) is 3.5, where g_y was -3.5.
+    BOOST_TEST(c.v_M_after[1] - c.v_m_after[1] - 0.5 * (c.w_M_after + c.w_m_after) == 3.5,
+               boost::test_tools::tolerance(1e-13));
+    const std::string text = summary(spinning_head_on(1, std::nullopt), path);
+    BOOST_TEST(text.find("rough: beta = 1.0000, mu = inf") != std::string::npos, text);
+    BOOST_TEST(text.find("w_m 7.0000 -> 2.0000") != std::string::npos, text);
+    BOOST_TEST(text.find("J_t = 1.0000, the contact stuck") != std::string::npos, text);
+}
+
+BOOST_AUTO_TEST_CASE(rough_spheres_slide_when_friction_caps_the_impulse)
+{
+    // mu J_n = 0.1 < |(1 + beta) m_t g_t| = 1: sliding, J_t = mu J_n g_t/|g_t| = (0, -0.1).
+    const trajectory path = run(spinning_head_on(1, 0.1));
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    const contact& c = *path.hit;
+    const double tol = 1e-14;
+    BOOST_TEST(c.v_m_after[1] == -0.1, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.v_M_after[0] == 1.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.v_M_after[1] == 0.1, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.w_m_after == 6.5, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.w_M_after == -0.5, boost::test_tools::tolerance(tol));
+    BOOST_TEST(c.slid);
+    BOOST_TEST(summary(spinning_head_on(1, 0.1), path).find("the contact slid") != std::string::npos);
+    // beta = -1 is the paper's smooth collision: spins kept, velocities as collide gives.
+    const trajectory smooth = run(spinning_head_on(-1, 0.3));
+    BOOST_TEST_REQUIRE(smooth.hit.has_value());
+    BOOST_TEST(smooth.hit->w_m_after == 7.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(std::abs(smooth.hit->w_M_after) < tol);
+    BOOST_TEST(smooth.hit->v_M_after[0] == 1.0, boost::test_tools::tolerance(tol));
+    BOOST_TEST(std::abs(smooth.hit->v_M_after[1]) < tol);
+}
+
+BOOST_AUTO_TEST_CASE(a_rough_collision_keeps_momentum_and_angular_momentum_and_loses_energy)
+{
+    for (const std::optional<double> mu : {std::optional<double>{}, std::optional<double>{0.05}}) {
+        scenario s = head_on(0.7, 2.5, 1.0);
+        s.M.radius = 0.8;
+        s.m.radius = 0.3;
+        s.M.q = 2.0 / 3;
+        s.m.position = {-4, 0.6};
+        s.M.velocity = {-0.1, 0.2};
+        s.m.velocity = {1.3, -0.1};
+        s.M.spin = -2;
+        s.m.spin = 5;
+        s.beta = 0.4;
+        s.mu = mu;
+        const trajectory path = run(s);
+        BOOST_TEST_REQUIRE(path.hit.has_value());
+        const contact& c = *path.hit;
+        BOOST_TEST(c.slid == mu.has_value());
+        const double tol = 1e-12;
+        for (int k = 0; k < 2; ++k)
+            BOOST_TEST(s.M.mass * c.v_M_after[k] + s.m.mass * c.v_m_after[k] ==
+                           s.M.mass * c.v_M_before[k] + s.m.mass * c.v_m_before[k],
+                       boost::test_tools::tolerance(tol));
+        // About the contact point P = C_M + R_M n: each impulse acts at P, so the angular
+        // momentum (C - P) x mass v + q mass R^2 w is kept.
+        const vec2 d{c.C_m[0] - c.C_M[0], c.C_m[1] - c.C_M[1]};
+        const double length = std::hypot(d[0], d[1]);
+        const vec2 n{d[0] / length, d[1] / length};
+        const vec2 P{c.C_M[0] + s.M.radius * n[0], c.C_M[1] + s.M.radius * n[1]};
+        auto cross = [](const vec2& a, const vec2& b) { return a[0] * b[1] - a[1] * b[0]; };
+        auto angular = [&](const vec2& vM, const vec2& vm, double wM, double wm) {
+            const vec2 rM{c.C_M[0] - P[0], c.C_M[1] - P[1]}, rm{c.C_m[0] - P[0], c.C_m[1] - P[1]};
+            return s.M.mass * cross(rM, vM) + s.m.mass * cross(rm, vm) +
+                   s.M.q * s.M.mass * s.M.radius * s.M.radius * wM + s.m.q * s.m.mass * s.m.radius * s.m.radius * wm;
+        };
+        BOOST_TEST(angular(c.v_M_after, c.v_m_after, c.w_M_after, c.w_m_after) ==
+                       angular(c.v_M_before, c.v_m_before, c.w_M_before, c.w_m_before),
+                   boost::test_tools::tolerance(tol));
+        // The energy, translational and rotational: sticking, dE = -(1 - eps^2) m_r g_n^2/2
+        // - (1 - beta^2) m_t |g_t|^2/2; sliding, the same normal part less |J_t| (|g_t| - |J_t|/(2 m_t)).
+        auto energy = [&](const vec2& vM, const vec2& vm, double wM, double wm) {
+            return 0.5 * s.M.mass * dot(vM, vM) + 0.5 * s.m.mass * dot(vm, vm) +
+                   0.5 * s.M.q * s.M.mass * s.M.radius * s.M.radius * wM * wM +
+                   0.5 * s.m.q * s.m.mass * s.m.radius * s.m.radius * wm * wm;
+        };
+        const double dE = energy(c.v_M_after, c.v_m_after, c.w_M_after, c.w_m_after) -
+                          energy(c.v_M_before, c.v_m_before, c.w_M_before, c.w_m_before);
+        const vec2 t{-n[1], n[0]};   // z x n
+        const double W = s.M.radius * c.w_M_before + s.m.radius * c.w_m_before;
+        const vec2 g{c.v_M_before[0] - c.v_m_before[0] + W * t[0], c.v_M_before[1] - c.v_m_before[1] + W * t[1]};
+        const double g_n = dot(g, n), g_t = dot(g, t);
+        const double m_r = s.M.mass * s.m.mass / (s.M.mass + s.m.mass);
+        const double m_t = 1 / (1 / s.M.mass + 1 / s.m.mass + 1 / (s.M.q * s.M.mass) + 1 / (s.m.q * s.m.mass));
+        const double normal = -(1 - 0.7 * 0.7) * m_r * g_n * g_n / 2;
+        if (!mu) {
+            BOOST_TEST(dE == normal - (1 - 0.4 * 0.4) * m_t * g_t * g_t / 2, boost::test_tools::tolerance(tol));
+        } else {
+            // |J_t| = mu J_n.
+            const double J_t = *mu * (1 + 0.7) * m_r * g_n;
+            BOOST_TEST(std::abs(c.J_t) == J_t, boost::test_tools::tolerance(tol));
+            BOOST_TEST(dE == normal - J_t * (std::abs(g_t) - J_t / (2 * m_t)), boost::test_tools::tolerance(tol));
+        }
+        BOOST_TEST(dE < 0);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(spins_turn_the_marks_of_the_table)
+{
+    // Before the contact at t = 2 m turns at 7, after it at 2 (sticking above): at t = 3
+    // it has turned 14 + 2 = 16 radians, M -5.
+    const scenario s = spinning_head_on(1, std::nullopt);
+    const std::string text = table(s, run(s));
+    BOOST_TEST(text.find("t x_M y_M x_m y_m a_M a_m\n") != std::string::npos, text);
+    const std::vector<double> at_3 = row_at(text, "3.0000");
+    BOOST_TEST_REQUIRE(at_3.size() == 7u);
+    BOOST_TEST(at_3[5] == -5.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(at_3[6] == 16.0, boost::test_tools::tolerance(1e-12));
+    // Smooth spheres spin on unchanged; spheres that do not spin keep the five columns.
+    scenario smooth = head_on(1);
+    smooth.M.spin = 1.5;
+    const std::vector<double> kept = row_at(table(smooth, run(smooth)), "3.0000");
+    BOOST_TEST_REQUIRE(kept.size() == 7u);
+    BOOST_TEST(kept[5] == 4.5, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(table(head_on(1), run(head_on(1))).find("a_M") == std::string::npos);
+    // The figure marks a point of each rim from the angle columns.
+    const std::string tex = figure(s, run(s), "spin.dat");
+    BOOST_TEST(tex.find("x expr={\\thisrow{x_m} + 0.5000*cos(deg(\\thisrow{a_m}))}") != std::string::npos, tex);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(scenarios)
@@ -208,6 +360,10 @@ BOOST_AUTO_TEST_CASE(bad_scenarios_are_refused_with_their_place)
         }
         BOOST_ERROR("accepted: " + text);
     };
+    // The scenario with its first `from` written `to`.
+    auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+        return text.replace(text.find(from), from.size(), to);
+    };
     refused("eps = 1.5\n" + spheres, "bad.toml:1:7: error: eps is 1.5, outside [0, 1]");
     refused("eps = nan\n" + spheres, "bad.toml:1:7: error: eps is nan, not a finite number");
     refused("eps = 1\nduration = -inf\n" + spheres, "bad.toml:2:12: error: the duration is -inf, not a finite number");
@@ -217,21 +373,28 @@ BOOST_AUTO_TEST_CASE(bad_scenarios_are_refused_with_their_place)
     refused("eps = 1\nsamples = 1e9\n" + spheres,
             "bad.toml:2:11: error: samples = 1000000000 must be a whole number from 2 to 10000");
     refused("eps = 1\nsamples = 2.5\n" + spheres, "samples = 2.5 must be a whole number");
-    std::string heavy = spheres;
-    heavy.replace(heavy.find("mass = 1"), 8, "mass = 1e-300");
-    refused("eps = 1\n" + heavy, "bad.toml:3:8: error: the mass of M is 1e-300, beyond what the simulation");
-    std::string far = spheres;
-    far.replace(far.find("[-3, 0]"), 7, "[-3e10, 0]");
-    refused("eps = 1\n" + far, "bad.toml:1:1: error: the spheres start 6e+10 radii apart (of the smaller sphere), "
+    refused("eps = 1\n" + replaced(spheres, "mass = 1", "mass = 1e-300"), "bad.toml:3:8: error: the mass of M is 1e-300, beyond what the simulation");
+    refused("eps = 1\n" + replaced(spheres, "[-3, 0]", "[-3e10, 0]"), "bad.toml:1:1: error: the spheres start 6e+10 radii apart (of the smaller sphere), "
                                 "more than the 1e+10 within which double precision places their contact");
     refused("eps = 1\nduration = 1e11\n" + spheres,
             "bad.toml:1:1: error: m travels 2e+11 radii (of the smaller sphere) in the duration 1e+11");
     refused("eps = 1\nspeed = 3\n" + spheres, "bad.toml:2:");
     refused("eps = 1\n" + spheres.substr(0, spheres.find("[m]")), "needs a table [m]");
     refused("eps = \"one\"\n" + spheres, "'eps' in the scenario must be a number");
-    std::string overlapping = spheres;
-    overlapping.replace(overlapping.find("[-3, 0]"), 7, "[-0.5, 0]");
-    refused("eps = 1\n" + overlapping, "the spheres overlap at the start");
+    refused("eps = 1\nbeta = 1.5\n" + spheres, "bad.toml:2:8: error: beta is 1.5, outside [-1, 1]");
+    refused("eps = 1\nbeta = 0\nmu = -0.5\n" + spheres, "bad.toml:3:6: error: mu is -0.5, negative");
+    refused("eps = 1\nbeta = 0\nmu = nan\n" + spheres, "bad.toml:3:6: error: mu is nan, not a number in [0, inf]");
+    refused("eps = 1\nmu = 0.5\n" + spheres, "bad.toml:2:6: error: mu is the friction of rough spheres: give beta too");
+    refused("eps = 1\n" + replaced(spheres, "velocity = [0, 0]", "velocity = [0, 0]\nq = 0.7"), "bad.toml:7:5: error: q of M is 0.7, outside (0, 2/3]");
+    refused("eps = 1\n" + replaced(spheres, "velocity = [1, 0]", "velocity = [1, 0]\nspin = inf"), "error: the spin of m is inf, not a finite number");
+    const scenario read = parse_scenario(
+        "eps = 1\nbeta = 0.5\nmu = inf\n" + replaced(spheres, "velocity = [1, 0]", "velocity = [1, 0]\nspin = -2"),
+        "good.toml");
+    BOOST_TEST(*read.beta == 0.5);
+    BOOST_TEST(std::isinf(*read.mu));
+    BOOST_TEST(read.m.spin == -2.0);
+    BOOST_TEST(read.M.q == 0.4);
+    refused("eps = 1\n" + replaced(spheres, "[-3, 0]", "[-0.5, 0]"), "the spheres overlap at the start");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
@@ -327,6 +490,25 @@ BOOST_AUTO_TEST_CASE(simulate_writes_a_table_and_a_figure)
     BOOST_TEST(tex.str().find("table[x=x_M, y=y_M] {shot.dat}") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(the_example_scenarios_run)
+{
+    // The scenarios the README shows: read, checked and run as users will.
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "tests" / "scenarios")) {
+        const scenario s = read_scenario(entry.path().string());
+        const trajectory path = run(s);
+        BOOST_TEST(path.hit.has_value(), entry.path());
+        ++count;
+    }
+    BOOST_TEST(count >= 2);
+    // The rough one slides: its tangential impulse is mu times the normal one.
+    const scenario rough = read_scenario(IMPACT_SOURCE_DIR "/tests/scenarios/rough_spin.toml");
+    const trajectory path = run(rough);
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    BOOST_TEST(path.hit->slid);
+    BOOST_TEST(std::abs(path.hit->J_t) == 0.3 * std::abs(path.hit->J), boost::test_tools::tolerance(1e-13));
+}
+
 BOOST_AUTO_TEST_CASE(simulate_says_when_the_spheres_never_touch)
 {
     const scratch s;
@@ -355,6 +537,11 @@ BOOST_AUTO_TEST_CASE(simulate_refuses_bad_options)
         {"--radius-m 1e101", "--radius-m: error: the radius of m is 1e+101, beyond"},
         {"--duration 1e12", "the command line: error: m travels 2e+12 radii (of the smaller sphere)"},
         {"--name ../x", "the command line: error: scenario name '../x' must be letters, digits, - and _"},
+        {"--beta 2", "--beta: error: beta is 2, outside [-1, 1]"},
+        {"--beta 0 --mu -1", "--mu: error: mu is -1, negative"},
+        {"--mu 0.5", "--mu: error: mu is the friction of rough spheres: give --beta too"},
+        {"--q-M 0", "--q-M: error: q of M is 0, outside (0, 2/3]"},
+        {"--spin-m nan", "--spin-m: error: the spin of m is nan, not a finite number"},
         // Mistakes the option parser finds are one line too, with exit status 2.
         {"--eps abc", "impact: error: Could not convert: --eps = abc (impact --help lists the commands"},
         {"--eps", "impact: error: --eps: 1 required FLOAT missing"},

@@ -267,7 +267,8 @@ int main(int argc, char** argv)
 
     simulate::command_options sim;
     CLI::App* simulation = app.add_subcommand(
-        "simulate", "move two spheres until they touch, collide them with the generated kernel, write trajectories");
+        "simulate", "move two spheres until they touch, collide them with the generated kernel (smooth, or rough with "
+                    "--beta), write trajectories");
     simulation->add_option("scenario", sim.file, "scenario file (TOML); without one, Fig. 2's billiard shot");
     simulation->add_option("--output", sim.output, "folder for <name>.dat and <name>.tex")->capture_default_str();
     simulation->add_flag("--force", sim.force, force_help);
@@ -282,6 +283,13 @@ int main(int argc, char** argv)
     simulation->add_option("--position-m", sim.position_m, "centre of m at t = 0, as x,y");
     simulation->add_option("--velocity-M", sim.velocity_M, "velocity of M, as x,y");
     simulation->add_option("--velocity-m", sim.velocity_m, "velocity of m, as x,y");
+    simulation->add_option("--spin-M", sim.spin_M, "angular velocity of M, counter-clockwise (default 0)");
+    simulation->add_option("--spin-m", sim.spin_m, "angular velocity of m, counter-clockwise (default 0)");
+    simulation->add_option("--q-M", sim.q_M, "M's moment of inertia over M R_M^2, in (0, 2/3] (default 0.4)");
+    simulation->add_option("--q-m", sim.q_m, "m's moment of inertia over m R_m^2, in (0, 2/3] (default 0.4)");
+    simulation->add_option("--beta", sim.beta,
+                           "rough spheres: the tangential restitution, in [-1, 1] (-1 smooth, 1 perfectly rough)");
+    simulation->add_option("--mu", sim.mu, "rough spheres: Coulomb's friction coefficient, >= 0 or inf (default inf)");
 
     CLI::App* list = app.add_subcommand("list", "list the derivations");
     add_derivations(list);

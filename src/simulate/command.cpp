@@ -79,6 +79,21 @@ scenario scenario_from(const command_options& o)
     take_pair(o.position_m, s.m.position, "position-m", "the position of m");
     take_pair(o.velocity_M, s.M.velocity, "velocity-M", "the velocity of M");
     take_pair(o.velocity_m, s.m.velocity, "velocity-m", "the velocity of m");
+    take(o.spin_M, s.M.spin, number_kind::coordinate, "--spin-M", "the spin of M");
+    take(o.spin_m, s.m.spin, number_kind::coordinate, "--spin-m", "the spin of m");
+    take(o.q_M, s.M.q, number_kind::inertia, "--q-M", "q of M");
+    take(o.q_m, s.m.q, number_kind::inertia, "--q-m", "q of m");
+    if (o.beta) {
+        check_number(*o.beta, number_kind::tangential, {"--beta", 0, 0}, "beta");
+        s.beta = o.beta;
+    }
+    if (o.mu) {
+        check_number(*o.mu, number_kind::friction, {"--mu", 0, 0}, "mu");
+        if (!s.beta)
+            throw error({"--mu", 0, 0}, "mu is the friction of rough spheres: give --beta too, the tangential "
+                                        "restitution in [-1, 1] (-1: smooth, 1: perfectly rough)");
+        s.mu = o.mu;
+    }
     // A name becomes a file name.
     for (char c : s.name)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))

@@ -18,6 +18,8 @@ struct command_options {
     std::optional<double> eps, duration;
     std::optional<double> mass_M, mass_m, radius_M, radius_m;
     std::optional<std::string> position_M, position_m, velocity_M, velocity_m;  ///< "x,y"
+    std::optional<double> spin_M, spin_m, q_M, q_m;   ///< spins, moments of inertia over mass radius^2
+    std::optional<double> beta, mu;                    ///< rough spheres: beta given
 };
 
 /// The scenario the options describe. Throws `impact::error` on bad input.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -120,6 +121,14 @@ sphere read_sphere(const toml::table& table, const std::string& file, const std:
         check_number(s.position[i], number_kind::coordinate, in.where("position"), "the position of " + name);
         check_number(s.velocity[i], number_kind::coordinate, in.where("velocity"), "the velocity of " + name);
     }
+    if (const auto spin = in.number("spin")) {
+        s.spin = *spin;
+        check_number(s.spin, number_kind::coordinate, in.where("spin"), "the spin of " + name);
+    }
+    if (const auto q = in.number("q")) {
+        s.q = *q;
+        check_number(s.q, number_kind::inertia, in.where("q"), "q of " + name);
+    }
     in.finish();
     return s;
 }
@@ -151,6 +160,16 @@ scenario parse_scenario(const std::string& text, const std::string& file)
         check_number(*s.duration, number_kind::positive, in.where("duration"), "the duration");
     if (const auto samples = in.number("samples"))
         s.samples = checked_samples(*samples, in.where("samples"));
+    s.beta = in.number("beta");
+    if (s.beta)
+        check_number(*s.beta, number_kind::tangential, in.where("beta"), "beta");
+    s.mu = in.number("mu");
+    if (s.mu) {
+        check_number(*s.mu, number_kind::friction, in.where("mu"), "mu");
+        if (!s.beta)
+            throw error(in.where("mu"), "mu is the friction of rough spheres: give beta too, the tangential "
+                                        "restitution in [-1, 1] (-1: smooth, 1: perfectly rough)");
+    }
     s.M = read_sphere(in.table("M"), file, "M");
     s.m = read_sphere(in.table("m"), file, "m");
     in.finish();
@@ -171,9 +190,25 @@ scenario read_scenario(const std::string& path)
 void check_number(double value, number_kind kind, const source_location& where, const std::string& what)
 {
     auto refuse = [&](const std::string& why) { throw error(where, fmt::format("{} is {}, {}", what, value, why)); };
+    if (kind == number_kind::friction && value == std::numeric_limits<double>::infinity())
+        return;   // a contact that never slides
     if (!std::isfinite(value))
-        refuse("not a finite number");
+        refuse(kind == number_kind::friction ? "not a number in [0, inf]" : "not a finite number");
     switch (kind) {
+    case number_kind::tangential:
+        if (!(value >= -1 && value <= 1))
+            refuse("outside [-1, 1] (-1 is smooth, 1 perfectly rough)");
+        return;
+    case number_kind::inertia:
+        if (!(value > 0 && value <= 2.0 / 3))
+            refuse("outside (0, 2/3] (2/5 is a solid sphere, 2/3 a hollow one)");
+        return;
+    case number_kind::friction:
+        if (!(value >= 0))
+            refuse("negative (0 is frictionless, inf a contact that never slides)");
+        if (value == 0)
+            return;
+        break;
     case number_kind::restitution:
         if (!(value >= 0 && value <= 1))
             refuse("outside [0, 1] (0 is perfectly inelastic, 1 perfectly elastic)");
@@ -213,8 +248,18 @@ void validate(const scenario& s)
             check_number(sp.position[i], number_kind::coordinate, s.where, fmt::format("the position of {}", name));
             check_number(sp.velocity[i], number_kind::coordinate, s.where, fmt::format("the velocity of {}", name));
         }
+        check_number(sp.spin, number_kind::coordinate, s.where, fmt::format("the spin of {}", name));
+        check_number(sp.q, number_kind::inertia, s.where, fmt::format("q of {}", name));
     }
     check_number(s.eps, number_kind::restitution, s.where, "eps");
+    if (s.beta)
+        check_number(*s.beta, number_kind::tangential, s.where, "beta");
+    if (s.mu) {
+        check_number(*s.mu, number_kind::friction, s.where, "mu");
+        if (!s.beta)
+            bad("mu is the friction of rough spheres: give beta too, the tangential restitution in [-1, 1] "
+                "(-1: smooth, 1: perfectly rough)");
+    }
     if (s.duration)
         check_number(*s.duration, number_kind::positive, s.where, "the duration");
     checked_samples(s.samples, s.where);

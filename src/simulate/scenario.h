@@ -1,4 +1,5 @@
-// A collision scenario: two smooth spheres in a plane, and how long to watch them.
+// A collision scenario: two spheres in a plane, smooth (the paper's) or rough (they grip
+// each other, spin and slide: Walton's model), and how long to watch them.
 //
 // Read from a small TOML file (`tests/scenarios/*.toml`) or built from command-line options.
 // This is plain data; `simulate` moves the spheres.
@@ -6,11 +7,15 @@
 //     name = "off_centre"
 //     eps = 0.5             # Newton's coefficient of restitution, in [0, 1]
 //     duration = 6          # optional: time simulated (default: twice the time to contact)
+//     beta = 0.5            # optional: rough spheres, the tangential restitution in [-1, 1]
+//     mu = 0.2              # optional with beta: Coulomb's friction coefficient (default inf)
 //     [M]
 //     mass = 1.0
 //     radius = 0.5
 //     position = [0.0, 0.0]
 //     velocity = [0.0, 0.0]
+//     spin = 3.0            # optional: angular velocity, counter-clockwise (default 0)
+//     q = 0.4               # optional: moment of inertia over mass radius^2 (default 2/5)
 //     [m]
 //     ...
 #pragma once
@@ -30,6 +35,8 @@ struct sphere {
     double radius = 0.5;
     vec2 position{0, 0};
     vec2 velocity{0, 0};
+    double spin = 0;       ///< angular velocity about the axis out of the plane (counter-clockwise > 0)
+    double q = 0.4;        ///< moment of inertia in units of mass radius^2 (2/5: a solid sphere)
 };
 
 struct scenario {
@@ -37,6 +44,10 @@ struct scenario {
     sphere M;                          ///< the paper's sphere M
     sphere m;                          ///< the paper's sphere m
     double eps = 1;                    ///< Newton's coefficient of restitution
+    /// Rough spheres when given: the tangential restitution (-1: smooth, 1: perfectly rough).
+    std::optional<double> beta;
+    /// Coulomb's coefficient of friction of rough spheres (+infinity: the contact never slides).
+    std::optional<double> mu;
     std::optional<double> duration;    ///< time simulated; by default twice the time to contact
     int samples = 101;                 ///< points of each trajectory (the contact is added)
     source_location where;             ///< the file it was read from, for messages
@@ -62,6 +73,9 @@ enum class number_kind {
     positive,      ///< a mass, a radius, a duration
     coordinate,    ///< a position or velocity component: any sign, or zero
     restitution,   ///< Newton's coefficient of restitution, in [0, 1]
+    tangential,    ///< the tangential restitution beta, in [-1, 1]
+    friction,      ///< Coulomb's coefficient mu, in [0, +infinity]
+    inertia,       ///< q, a moment of inertia over mass radius^2, in (0, 2/3]
 };
 
 /// Checks one number where it was given (`what` names it: "the mass of M", "--eps").
@@ -70,6 +84,19 @@ void check_number(double value, number_kind kind, const source_location& where, 
 
 /// The number of samples, a whole number in [fewest_samples, most_samples].
 int checked_samples(double value, const source_location& where);
+
+/// Whether the spheres are rough (`beta` given): then `collide_rough` resolves the contact.
+inline bool rough(const scenario& s)
+{
+    return s.beta.has_value();
+}
+
+/// Whether a sphere spins, before or (rough) after the contact: then the trajectories
+/// carry the angle each sphere has turned.
+inline bool spinning(const scenario& s)
+{
+    return rough(s) || s.M.spin != 0 || s.m.spin != 0;
+}
 
 /// Reads a scenario file. Throws `impact::error` (file:line:column) on bad input.
 scenario read_scenario(const std::string& path);

@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <tuple>
 
 namespace impact::simulate {
 namespace {
@@ -62,23 +64,46 @@ std::optional<double> time_of_contact(const scenario& s)
 
 contact resolve(const scenario& s, const vec2& C_M, const vec2& C_m, const vec2& v_M, const vec2& v_m)
 {
-    // Eq. 9 in the lab frame: the generated kernel turns the velocities into the collision
-    // frame, applies Eq. 8 along the line of action, keeps the perpendicular components
-    // and turns them back.
-    const auto out = impact::collide<double>(s.M.mass, s.m.mass, C_M, C_m, v_M, v_m, s.eps);
-    if (out.status != impact::status::ok)
-        throw std::logic_error("the generated kernel refused a collision of touching, approaching spheres");
     contact hit;
     hit.C_M = C_M;
     hit.C_m = C_m;
     hit.v_M_before = v_M;
     hit.v_m_before = v_m;
-    hit.v_M_after = out.v_M;
-    hit.v_m_after = out.v_m;
+    hit.w_M_before = hit.w_M_after = s.M.spin;
+    hit.w_m_before = hit.w_m_after = s.m.spin;
+    if (rough(s)) {
+        // Walton's model in the lab frame: the generated kernel gives the velocities and
+        // spins after, sticking or sliding.
+        const double mu = s.mu ? *s.mu : std::numeric_limits<double>::infinity();
+        const auto out = impact::collide_rough<double>(s.M.mass, s.m.mass, s.M.radius, s.m.radius, s.M.q, s.m.q, C_M,
+                                                       C_m, v_M, v_m, s.M.spin, s.m.spin, s.eps, *s.beta, mu);
+        if (out.status != impact::status::ok)
+            throw std::logic_error("the generated kernel refused a collision of touching, approaching spheres");
+        hit.v_M_after = out.v_M;
+        hit.v_m_after = out.v_m;
+        hit.w_M_after = out.w_M;
+        hit.w_m_after = out.w_m;
+    } else {
+        // Eq. 9 in the lab frame: the generated kernel turns the velocities into the collision
+        // frame, applies Eq. 8 along the line of action, keeps the perpendicular components
+        // and turns them back. Smooth spheres exert no torque: the spins are kept.
+        const auto out = impact::collide<double>(s.M.mass, s.m.mass, C_M, C_m, v_M, v_m, s.eps);
+        if (out.status != impact::status::ok)
+            throw std::logic_error("the generated kernel refused a collision of touching, approaching spheres");
+        hit.v_M_after = out.v_M;
+        hit.v_m_after = out.v_m;
+    }
     // The impulse along the line of action from M's change of momentum: v'_M = v_M - J/M (Eq. 6).
     const double rx = C_M[0] - C_m[0], ry = C_M[1] - C_m[1];
     const double r = std::hypot(rx, ry);
-    hit.J = s.M.mass * ((v_M[0] - out.v_M[0]) * rx + (v_M[1] - out.v_M[1]) * ry) / r;
+    hit.J = s.M.mass * ((v_M[0] - hit.v_M_after[0]) * rx + (v_M[1] - hit.v_M_after[1]) * ry) / r;
+    if (rough(s)) {
+        // The impulse across the line of action from M's change of spin: w'_M = w_M - (R_M/I_M) n x J_t
+        // with I_M = q_M M R_M^2, and n x J_t = J_t for J_t along z x n.
+        hit.J_t = (hit.w_M_before - hit.w_M_after) * s.M.q * s.M.mass * s.M.radius;
+        // Friction capped it when |J_t| is mu |J| (to rounding).
+        hit.slid = s.mu && std::fabs(hit.J_t) >= *s.mu * std::fabs(hit.J) * (1 - 1e-9);
+    }
     return hit;
 }
 
@@ -96,11 +121,17 @@ trajectory run(const scenario& s)
         path.later_contact = touch;
     }
 
+    // Each sphere turns at its spin until the contact, and at its new spin after it.
     auto positions = [&](double t) -> sample {
         if (!path.hit || t <= path.hit->t)
-            return {t, at_time(s.M, t), at_time(s.m, t)};
-        const double after = t - path.hit->t;
-        return {t, moved(path.hit->C_M, path.hit->v_M_after, after), moved(path.hit->C_m, path.hit->v_m_after, after)};
+            return {t, at_time(s.M, t), at_time(s.m, t), s.M.spin * t, s.m.spin * t};
+        const contact& c = *path.hit;
+        const double after = t - c.t;
+        return {t,
+                moved(c.C_M, c.v_M_after, after),
+                moved(c.C_m, c.v_m_after, after),
+                c.w_M_before * c.t + c.w_M_after * after,
+                c.w_m_before * c.t + c.w_m_after * after};
     };
     for (int i = 0; i < s.samples; ++i) {
         const double t = path.duration * i / (s.samples - 1);
@@ -130,10 +161,13 @@ std::string table(const scenario& s, const trajectory& path)
     auto fixed = [digits](double x) { return simulate::fixed(x, digits); };
     std::string out = fmt::format("# Trajectories of scenario '{}': centres of M and m; eps = {}.\n", s.name,
                                   fixed(s.eps));
-    out += "t x_M y_M x_m y_m\n";
-    for (const sample& p : path.samples)
-        out += fmt::format("{} {} {} {} {}\n", fixed(p.t), fixed(p.C_M[0]), fixed(p.C_M[1]), fixed(p.C_m[0]),
+    const bool turning = spinning(s);
+    out += turning ? "t x_M y_M x_m y_m a_M a_m\n" : "t x_M y_M x_m y_m\n";
+    for (const sample& p : path.samples) {
+        out += fmt::format("{} {} {} {} {}", fixed(p.t), fixed(p.C_M[0]), fixed(p.C_M[1]), fixed(p.C_m[0]),
                            fixed(p.C_m[1]));
+        out += turning ? fmt::format(" {} {}\n", fixed(p.a_M), fixed(p.a_m)) : "\n";
+    }
     return out;
 }
 
@@ -160,6 +194,17 @@ std::string figure(const scenario& s, const trajectory& path, const std::string&
     out += "  \\addlegendentry{$M$}\n";
     out += fmt::format("  \\addplot[red!70!black, thick, -stealth] table[x=x_m, y=y_m] {{{}}};\n", data);
     out += "  \\addlegendentry{$m$}\n";
+    if (spinning(s)) {
+        // A point fixed on each sphere's rim, every tenth sample: it turns with the sphere.
+        for (const auto& [x, y, a, radius, colour] :
+             {std::tuple<const char*, const char*, const char*, double, const char*>{"x_M", "y_M", "a_M", s.M.radius,
+                                                                                     "blue!70!black"},
+              {"x_m", "y_m", "a_m", s.m.radius, "red!70!black"}})
+            out += fmt::format("  \\addplot[{}, only marks, mark=*, mark size=1pt, each nth point=10, forget plot] "
+                               "table[x expr={{\\thisrow{{{}}} + {}*cos(deg(\\thisrow{{{}}}))}}, "
+                               "y expr={{\\thisrow{{{}}} + {}*sin(deg(\\thisrow{{{}}}))}}] {{{}}};\n",
+                               colour, x, fixed(radius, decimals(s)), a, y, fixed(radius, decimals(s)), a, data);
+    }
     out += circle(s.M.position, s.M.radius, "blue!70!black, densely dotted, forget plot", decimals(s));
     out += circle(s.m.position, s.m.radius, "red!70!black, densely dotted, forget plot", decimals(s));
     if (path.hit) {
@@ -175,8 +220,12 @@ std::string summary(const scenario& s, const trajectory& path)
     const int digits = decimals(s);
     auto fixed = [digits](double x) { return simulate::fixed(x, digits); };
     auto v = [&](const vec2& x) { return fmt::format("({}, {})", fixed(x[0]), fixed(x[1])); };
-    std::string out = fmt::format("scenario {}: M = {}, m = {}, eps = {}, simulated for t in [0, {}]\n", s.name,
-                                  fixed(s.M.mass), fixed(s.m.mass), fixed(s.eps), fixed(path.duration));
+    std::string out = fmt::format("scenario {}: M = {}, m = {}, eps = {}", s.name, fixed(s.M.mass), fixed(s.m.mass),
+                                  fixed(s.eps));
+    if (rough(s))
+        out += fmt::format(", rough: beta = {}, mu = {}", fixed(*s.beta),
+                           s.mu && std::isfinite(*s.mu) ? fixed(*s.mu) : std::string("inf"));
+    out += fmt::format(", simulated for t in [0, {}]\n", fixed(path.duration));
     if (!path.hit) {
         if (path.later_contact)
             out += fmt::format("the spheres do not touch before t = {} (they would at t = {})\n",
@@ -187,8 +236,15 @@ std::string summary(const scenario& s, const trajectory& path)
     }
     const contact& c = *path.hit;
     out += fmt::format("contact at t = {}: C_M = {}, C_m = {}\n", fixed(c.t), v(c.C_M), v(c.C_m));
-    out += fmt::format("  v_M {} -> {}\n  v_m {} -> {}\n  impulse along the line of action J = {}\n",
-                       v(c.v_M_before), v(c.v_M_after), v(c.v_m_before), v(c.v_m_after), fixed(c.J));
+    out += fmt::format("  v_M {} -> {}\n  v_m {} -> {}\n", v(c.v_M_before), v(c.v_M_after), v(c.v_m_before),
+                       v(c.v_m_after));
+    if (spinning(s))
+        out += fmt::format("  w_M {} -> {}\n  w_m {} -> {}\n", fixed(c.w_M_before), fixed(c.w_M_after),
+                           fixed(c.w_m_before), fixed(c.w_m_after));
+    out += fmt::format("  impulse along the line of action J = {}\n", fixed(c.J));
+    if (rough(s))
+        out += fmt::format("  impulse across it (on m, along z x n) J_t = {}, {}\n", fixed(c.J_t),
+                           c.slid ? "the contact slid (|J_t| = mu |J|)" : "the contact stuck");
     return out;
 }
 
