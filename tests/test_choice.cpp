@@ -2,7 +2,7 @@
 // the accurate one. Its rule is checked as a property of the plans of two of the paper's
 // kernels, each candidate's cost counted here from its own program: every output in a
 // candidate within its fast bound, none within it cheaper; and the choice read back from
-// its cache entry as it was made.
+// its cache entry as it was made; and every sample one the kernel's guards admit.
 #define BOOST_TEST_MODULE test_choice
 #include <boost/test/unit_test.hpp>
 
@@ -110,4 +110,21 @@ BOOST_AUTO_TEST_CASE(the_fast_form_is_read_back_from_the_cache_as_it_was_chosen)
                     "\n" + std::to_string(p.plan.components[0].chosen) + "\n" +
                         std::to_string(p.plan.components[0].candidates.size()) + "\n");
     BOOST_TEST(!verify::decode_choice(damaged, *p.plan.kernel, p.order).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(every_sample_is_one_the_kernel_computes)
+{
+    // A wall's kernel refuses a sphere behind the wall or moving away from it; its accuracy
+    // is measured where it computes: every sample in front of the wall ((C - P).n > 0) and
+    // approaching it (v.n < 0). Inputs: P, n, C, v, eps.
+    const planned& p = plan_of("wall_plane");
+    BOOST_REQUIRE_EQUAL(p.plan.samples.size(), 4200u);
+    std::size_t admitted = 0;
+    for (const verify::sample& s : p.plan.samples) {
+        const double* x = s.inputs.data();
+        const double in_front = (x[4] - x[0]) * x[2] + (x[5] - x[1]) * x[3];
+        const double approach = x[6] * x[2] + x[7] * x[3];
+        admitted += in_front > 0 && approach < 0;
+    }
+    BOOST_TEST(admitted == p.plan.samples.size());
 }

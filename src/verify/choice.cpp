@@ -140,6 +140,29 @@ kernel_plan fast_form(const kernel_plan& plan)
 
 namespace {
 
+// Whether the kernel's guards admit the inputs: each condition `lhs < 0` or `lhs > 0`
+// evaluated in double (the parameters' domains hold by how samples are drawn).
+verify::admission admission(const engine::kernel& k, const engine::term_order& order)
+{
+    std::vector<GiNaC::ex> conditions;
+    std::vector<engine::relation> relations;
+    for (const engine::kernel_guard& g : k.guards)
+        if (g.condition) {
+            conditions.push_back(*g.condition);
+            relations.push_back(g.op);
+        }
+    if (conditions.empty())
+        return {};
+    auto code = std::make_shared<compile::program>(compile::compile_program(conditions, k.input_symbols(), order));
+    return [code, relations](const std::vector<double>& inputs) {
+        const std::vector<double> values = compile::run<double>(*code, inputs);
+        for (std::size_t i = 0; i < relations.size(); ++i)
+            if (!(relations[i] == engine::relation::less ? values[i] < 0 : values[i] > 0))
+                return false;
+        return true;
+    };
+}
+
 // The choice of one kernel's forms: each output component's candidates measured on the
 // kernel's samples against the CLN reference, the best kept.
 class chooser {
@@ -147,7 +170,7 @@ public:
     chooser(const engine::kernel& k, const engine::term_order& order) : k_(k), order_(order), inputs_(k.input_symbols())
     {
         plan_.kernel = &k;
-        plan_.samples = verify::draw_samples(k, kernel_samples, seed_of(k));
+        plan_.samples = verify::draw_samples(k, kernel_samples, seed_of(k), admission(k, order));
         plan_.double_reference = verify::compute_reference(k, plan_.samples, 53);
         plan_.float_reference = verify::compute_reference(k, plan_.samples, 24);
     }

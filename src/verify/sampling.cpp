@@ -50,7 +50,8 @@ bool is_velocity(const engine::kernel& k, const engine::quantity& q)
 
 } // namespace
 
-std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std::uint64_t seed)
+std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std::uint64_t seed,
+                                 const admission& admitted)
 {
     const layout l = layout_of(k);
     engine::uniform_stream s(seed);
@@ -67,8 +68,18 @@ std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std
                 positive_slots.push_back(slot);
     }
 
+    // Two bodies, M and m: their first two velocities (and positions) are of one dimension.
+    // A wall's kernel has one body: its velocity and its spin, the wall's point and normal.
+    const auto same_size = [&](const std::vector<std::size_t>& parameters) {
+        return parameters.size() >= 2 && l.slots[parameters[0]].size() == l.slots[parameters[1]].size();
+    };
+    const bool two_velocities = same_size(velocity_parameters);
+    const bool two_bodies = two_velocities && same_size(position_parameters) &&
+                            l.slots[velocity_parameters[0]].size() == l.slots[position_parameters[0]].size();
+
     std::vector<sample> samples;
-    for (std::size_t n = 0; n < count; ++n) {
+    constexpr int most_draws = 64;
+    for (std::size_t n = 0, draws = 0; n < count; ++draws) {
         const std::size_t regime = n % std::size(regimes);
         sample x;
         x.regime = regimes[regime];
@@ -100,13 +111,13 @@ std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std
             x.inputs[small] *= decades(s, -12, -4);
         }
         // Nearly equal velocities: the second velocity a hair away from the first.
-        if (regime == 6 && velocity_parameters.size() >= 2) {
+        if (regime == 6 && two_velocities) {
             const auto& a = l.slots[velocity_parameters[0]];
             const auto& b = l.slots[velocity_parameters[1]];
             for (std::size_t c = 0; c < a.size() && c < b.size(); ++c)
                 x.inputs[b[c]] = x.inputs[a[c]] * (1 + signed_magnitude(s, -15, -6));
         }
-        if (velocity_parameters.size() >= 2 && position_parameters.size() >= 2) {
+        if (two_bodies) {
             const auto& va = l.slots[velocity_parameters[0]];
             const auto& vb = l.slots[velocity_parameters[1]];
             const auto& ca = l.slots[position_parameters[0]];
@@ -137,7 +148,11 @@ std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std
                     x.inputs[vb[c]] = -x.inputs[vb[c]];
                 }
         }
+        if (admitted && !admitted(x.inputs) && draws + 1 < most_draws)
+            continue;
         samples.push_back(std::move(x));
+        ++n;
+        draws = static_cast<std::size_t>(-1);   // the next sample's draws count from 0
     }
     return samples;
 }
