@@ -270,7 +270,7 @@ BOOST_AUTO_TEST_CASE(a_result_by_cases_is_typeset_as_a_cases_environment)
     // In the step, as written, and among the results.
     BOOST_TEST(tex.find("  y &= " + cases + "\n\\end{align*}") != std::string::npos, tex);
     BOOST_TEST(tex.find("  y &= " + cases + " \\notag\n") != std::string::npos, tex);
-    BOOST_TEST(tex.find("The cases of y cover every value: \\textbf{proven}.") != std::string::npos, tex);
+    BOOST_TEST(tex.find("The cases of $y$ cover every value: \\textbf{proven}.") != std::string::npos, tex);
     // A check proven case by case lists each case in mathematics.
     const engine::derivation checked = derive_text(by_cases(
         "cases = [{ when = \"x <= 1\", as = \"x\" }, { when = \"x > 1\", as = \"1\" }]",

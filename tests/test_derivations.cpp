@@ -162,7 +162,8 @@ const std::set<std::string> covered = {"elastic_line",      "inelastic_line",   
                                        "energy_loss",       "energy_loss_impulse", "billiard_transfer",
                                        "scatter_angle",     "elastic_plane",       "inelastic_plane",
                                        "inelastic_space",   "rough_sticking",      "rough_plane",
-                                       "wall_plane",        "wall_space",          "rough_space_impulse"};
+                                       "wall_plane",        "wall_space",          "rough_space_impulse",
+                                       "rough_wall_plane"};
 
 } // namespace
 
@@ -721,6 +722,40 @@ BOOST_AUTO_TEST_CASE(the_lab_frame_velocities_and_spins_stick_or_slide_as_walton
             BOOST_TEST(numerically_equal(in_case(value(d, "w_m_after")), -1 - J_t / (numeric(2, 3) * 3 * numeric(1, 4)), here));
         }
     }
+}
+
+BOOST_AUTO_TEST_CASE(a_rough_sphere_sticks_to_or_slides_on_a_wall_as_walton_s_model_says)
+{
+    // The wall is a body at rest of infinite mass: per unit mass of the sphere, the normal
+    // impulse is (1 + eps) g_n and the one that makes the contact stick (1 + beta) m_t/m g_t
+    // with m_t = q m/(1 + q) (1/m_t = 1/m + 1/(q m)), capped at mu (1 + eps) g_n; g_n = -v.u,
+    // g_t = R w - v.t (u = n/|n|, t = z x u). In exact numbers: n = (0, 2) (u = (0, 1),
+    // t = (-1, 0)), v = (1, -3), R = 1/2, q = 2/5, w = 4, eps = 1/2, beta = 1/3.
+    const engine::derivation& d = derived("rough_wall_plane");
+    const ex R = sym(d, "R"), q = sym(d, "q"), eps = sym(d, "eps"), b = sym(d, "b"), mu = sym(d, "mu"),
+             N_x = sym(d, "N_x"), N_y = sym(d, "N_y"), v_x = sym(d, "v_x"), v_y = sym(d, "v_y"), w = sym(d, "w"),
+             m = sym(d, "m");
+    for (const numeric& friction : {numeric(10), numeric(1, 10)}) {
+        const GiNaC::exmap at{{R, numeric(1, 2)}, {q, numeric(2, 5)}, {eps, numeric(1, 2)}, {b, numeric(1, 3)},
+                              {mu, friction}, {N_x, 0}, {N_y, 2}, {v_x, 1}, {v_y, -3}, {w, 4}};
+        const numeric g_n = 3, g_t = numeric(1, 2) * 4 - (1 * -1 + -3 * 0);  // R w - v.t = 2 + 1
+        const numeric j_n = numeric(3, 2) * g_n;
+        const numeric stick = numeric(4, 3) * numeric(2, 5) / numeric(7, 5) * g_t;
+        const numeric j_t = stick <= friction * j_n ? stick : friction * j_n;  // g_t > 0
+        const std::vector<GiNaC::exmap> here{at};
+        const auto in_case = [&](const ex& e) { return with_case_that_holds(d, e, at); };
+        BOOST_TEST_CONTEXT("mu = " << friction)
+        {
+            BOOST_TEST(numerically_equal(in_case(value(d, "v_x_after")), 1 - j_t, here));
+            BOOST_TEST(numerically_equal(in_case(value(d, "v_y_after")), -3 + j_n, here));
+            BOOST_TEST(numerically_equal(in_case(value(d, "w_after")), 4 - j_t / (numeric(2, 5) * numeric(1, 2)), here));
+        }
+    }
+    // The impulses, for any inputs: J_n = (1 + eps) m g_n, the sticking one (1 + beta) m_t g_t.
+    const ex length = sqrt(N_x * N_x + N_y * N_y);
+    const ex g_n = -(v_x * N_x + v_y * N_y) / length, g_t = R * w - (-v_x * N_y + v_y * N_x) / length;
+    BOOST_TEST(equal(value(d, "J_n"), (1 + eps) * m * g_n));
+    BOOST_TEST(equal(value(d, "J_stick"), (1 + b) * q * m / (1 + q) * g_t));
 }
 
 BOOST_AUTO_TEST_CASE(an_impulse_at_the_contact_point_in_space_moves_and_spins_the_spheres_as_newton_says)

@@ -6,7 +6,12 @@
 // velocity along the wall unchanged, the speed never gained; the sphere-sphere kernel
 // `collide` with the other sphere fixed (mass +infinity, at rest, the line of centres along
 // n) agrees; every refusal with its status and the velocity returned bit for bit; the batch
-// loop gives the scalar results bit for bit.
+// loop gives the scalar results bit for bit. And `impact::collide_wall_rough` (derivations/
+// rough_wall_plane.toml), a rough sphere that spins, against Walton's model typed here: the
+// contact sticks, reversing the wall's tangential velocity relative to it, R w - v.t, scaled
+// by beta, unless friction caps the tangential impulse at mu times the normal one; the
+// angular momentum about the contact point kept; the rough sphere-sphere kernel with the
+// other sphere fixed agrees.
 #define BOOST_TEST_MODULE test_wall_kernel
 #include <boost/test/unit_test.hpp>
 
@@ -14,6 +19,8 @@
 #include <impact/collide_3d.hpp>
 #include <impact/collide_wall_2d.hpp>
 #include <impact/collide_wall_3d.hpp>
+#include <impact/collide_rough_2d.hpp>
+#include <impact/collide_wall_rough_2d.hpp>
 
 #include <algorithm>
 #include <array>
@@ -277,6 +284,233 @@ BOOST_AUTO_TEST_CASE(the_fast_batch_gives_the_fast_scalar_results_bit_for_bit)
 {
     check_batch<2>(7011, impact::fast);
     check_batch<3>(7012, impact::fast);
+}
+
+// A rough sphere (radius R, q, spin w) hits a wall: Walton's model in the frame of the unit
+// normal u = n/|n| and t = z x u, in long double. The wall's velocity relative to the contact
+// point: g_n = -v.u (> 0 approaching), g_t = R w - v.t; per unit mass, the normal impulse
+// (1 + eps) g_n, the tangential one (1 + beta) q/(1 + q) g_t when it lies inside the friction
+// cone, mu (1 + eps) g_n sign(g_t) otherwise; v' = v + j_n u + j_t t, w' = w - j_t/(q R).
+struct rough_wall_hit {
+    vec<2> P, n, C, v;
+    double R, q, w, eps, beta, mu;
+};
+
+struct rough_after {
+    std::array<long double, 2> v;
+    long double w;
+    bool sliding;
+};
+
+rough_after walton(const rough_wall_hit& h)
+{
+    const long double length = std::sqrt(dot(h.n, h.n));
+    const long double ux = h.n[0] / length, uy = h.n[1] / length, tx = -uy, ty = ux;
+    const long double g_n = -(h.v[0] * ux + h.v[1] * uy);
+    const long double g_t = h.R * static_cast<long double>(h.w) - (h.v[0] * tx + h.v[1] * ty);
+    const long double j_n = (1 + static_cast<long double>(h.eps)) * g_n;
+    const long double stick = (1 + static_cast<long double>(h.beta)) * h.q / (1 + static_cast<long double>(h.q)) * g_t;
+    const bool sliding = std::fabs(stick) > h.mu * j_n;
+    const long double j_t = sliding ? h.mu * j_n * (g_t > 0 ? 1 : -1) : stick;
+    return {{h.v[0] + j_n * ux + j_t * tx, h.v[1] + j_n * uy + j_t * ty}, h.w - j_t / (h.q * h.R), sliding};
+}
+
+rough_wall_hit draw_rough(std::mt19937_64& random)
+{
+    const wall_hit<2> h = draw<2>(random);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1), decade(-2, 2);
+    rough_wall_hit r{h.P, h.n, h.C, h.v, std::pow(10.0, decade(random) / 2), 0.05 + 0.6 * fraction(random),
+                     unit(random) * std::pow(10.0, decade(random)), h.eps, unit(random),
+                     fraction(random) < 0.25 ? inf : std::pow(10.0, decade(random))};
+    return r;
+}
+
+BOOST_AUTO_TEST_CASE(a_rough_wall_follows_waltons_model)
+{
+    std::mt19937_64 random(8001);
+    double worst = 0;
+    int resolved = 0, slid = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const rough_wall_hit h = draw_rough(random);
+        const auto out = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu);
+        if (out.status == impact::status::separating || out.status == impact::status::behind_the_wall)
+            continue;
+        BOOST_TEST_REQUIRE((out.status == impact::status::ok));
+        ++resolved;
+        const rough_after want = walton(h);
+        slid += want.sliding;
+        // Errors in ulps of the largest velocity (R w counted as one; w' scaled by R).
+        long double scale = std::max({std::fabs(static_cast<long double>(h.v[0])), std::fabs(static_cast<long double>(h.v[1])),
+                                      std::fabs(h.R * static_cast<long double>(h.w)), std::fabs(want.v[0]),
+                                      std::fabs(want.v[1]), std::fabs(h.R * want.w)});
+        const long double ulp = scale * std::numeric_limits<double>::epsilon();
+        worst = std::max({worst, static_cast<double>(std::fabs(out.v[0] - want.v[0]) / ulp),
+                          static_cast<double>(std::fabs(out.v[1] - want.v[1]) / ulp),
+                          static_cast<double>(h.R * std::fabs(out.w - want.w) / ulp)});
+        // The angular momentum about the contact point, q m R^2 w + m R (u x v), kept (m = 1).
+        const long double length = std::sqrt(dot(h.n, h.n));
+        auto about_contact = [&](long double vx, long double vy, long double w) {
+            return h.q * h.R * h.R * w + h.R * (h.n[0] * vy - h.n[1] * vx) / length;
+        };
+        BOOST_TEST(std::fabs(about_contact(out.v[0], out.v[1], out.w) - about_contact(h.v[0], h.v[1], h.w)) <=
+                   64 * h.R * ulp);
+    }
+    BOOST_TEST(resolved > 3900);
+    BOOST_TEST(slid > 400);
+    BOOST_TEST(resolved - slid > 400);
+    BOOST_TEST(worst <= 4, "worst " << worst << " ulps");
+}
+
+BOOST_AUTO_TEST_CASE(a_spinning_ball_on_the_floor_sticks_or_slides)
+{
+    // The floor y = 0 with normal (0, 2); a solid ball (q = 2/5, R = 1/2) falling at (0, -1),
+    // spinning at w = 7: g_n = 1, g_t = R w - v.t = 3.5 with t = (-1, 0). Elastic and perfectly
+    // rough (eps = beta = 1), never sliding: j_t = 2 (2/7) 3.5 = 2, so v' = (0, 1) + 2 t = (-2, 1),
+    // w' = 7 - 2/(0.4 * 0.5) = -3.
+    const auto stuck = impact::collide_wall_rough(0.5, 0.4, vec<2>{0, 0}, vec<2>{0, 2}, vec<2>{0, 0.5},
+                                                  vec<2>{0, -1}, 7.0, 1.0, 1.0, inf);
+    BOOST_TEST((stuck.status == impact::status::ok));
+    BOOST_TEST(stuck.v[0] == -2.0, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(stuck.v[1] == 1.0, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(stuck.w == -3.0, boost::test_tools::tolerance(1e-15));
+    // mu = 1/4: mu (1 + eps) g_n = 1/2 < 2, the ball slides: j_t = 1/2, v' = (-1/2, 1), w' = 7 - 2.5 = 4.5.
+    const auto slid = impact::collide_wall_rough(0.5, 0.4, vec<2>{0, 0}, vec<2>{0, 2}, vec<2>{0, 0.5},
+                                                 vec<2>{0, -1}, 7.0, 1.0, 1.0, 0.25);
+    BOOST_TEST(slid.v[0] == -0.5, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(slid.v[1] == 1.0, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(slid.w == 4.5, boost::test_tools::tolerance(1e-15));
+    // A smooth contact (beta = -1, mu = 0) is collide_wall's reflection, the spin kept.
+    const auto smooth = impact::collide_wall_rough(0.5, 0.4, vec<2>{5, 0}, vec<2>{0, 2}, vec<2>{0, 1},
+                                                   vec<2>{3, -4}, 7.0, 0.5, -1.0, 0.0);
+    BOOST_TEST(smooth.v[0] == 3.0);
+    BOOST_TEST(smooth.v[1] == 2.0);
+    BOOST_TEST(smooth.w == 7.0);
+}
+
+BOOST_AUTO_TEST_CASE(the_rough_wall_is_a_fixed_rough_sphere_at_rest)
+{
+    // collide_rough with M = +infinity at rest and not spinning, its centre at -n from the
+    // sphere's: the line of centres along n (the other sphere's radius and q do not matter).
+    std::mt19937_64 random(8002);
+    int compared = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const rough_wall_hit h = draw_rough(random);
+        const auto wall = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu);
+        if (wall.status != impact::status::ok)
+            continue;
+        const vec<2> C_M{-h.n[0], -h.n[1]}, C_m{0, 0}, at_rest{0, 0};
+        const auto sphere = impact::collide_rough(inf, 1.0, 0.3, h.R, 0.4, h.q, C_M, C_m, at_rest, h.v, 0.0, h.w,
+                                                  h.eps, h.beta, h.mu);
+        BOOST_TEST_REQUIRE((sphere.status == impact::status::ok));
+        BOOST_TEST(same_bits(sphere.v_M, at_rest));
+        BOOST_TEST(sphere.w_M == 0.0);
+        const double scale = std::max({std::fabs(h.v[0]), std::fabs(h.v[1]), std::fabs(h.R * h.w),
+                                       std::fabs(wall.v[0]), std::fabs(wall.v[1]), std::fabs(h.R * wall.w)});
+        const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
+        BOOST_TEST(std::fabs(sphere.v_m[0] - wall.v[0]) <= tolerance);
+        BOOST_TEST(std::fabs(sphere.v_m[1] - wall.v[1]) <= tolerance);
+        BOOST_TEST(h.R * std::fabs(sphere.w_m - wall.w) <= tolerance);
+        ++compared;
+    }
+    BOOST_TEST(compared > 900);
+}
+
+BOOST_AUTO_TEST_CASE(each_rough_refusal_has_its_status_and_returns_the_velocity_and_spin_bit_for_bit)
+{
+    using impact::status;
+    struct refused {
+        double R, q, eps, beta, mu, w;
+        vec<2> n, C, v;
+        status expected;
+    };
+    const vec<2> n{0, 1}, C{0, 1}, v{1, -1};
+    for (const refused& r : {refused{0, 0.4, 0.5, 0, 1, 2, n, C, v, status::invalid_radius},
+                             refused{inf, 0.4, 0.5, 0, 1, 2, n, C, v, status::invalid_radius},
+                             refused{1, 0.7, 0.5, 0, 1, 2, n, C, v, status::invalid_inertia},
+                             refused{1, 0, 0.5, 0, 1, 2, n, C, v, status::invalid_inertia},
+                             refused{1, 0.4, 1.5, 0, 1, 2, n, C, v, status::invalid_restitution},
+                             refused{1, 0.4, 0.5, 1.5, 1, 2, n, C, v, status::invalid_tangential_restitution},
+                             refused{1, 0.4, 0.5, 0, -1, 2, n, C, v, status::invalid_friction},
+                             refused{1, 0.4, 0.5, 0, nan, 2, n, C, v, status::invalid_friction},
+                             refused{1, 0.4, 0.5, 0, 1, nan, n, C, v, status::non_finite},
+                             refused{1, 0.4, 0.5, 0, 1, 2, {0, 0}, C, v, status::invalid_normal},
+                             refused{1, 0.4, 0.5, 0, 1, 2, n, {0, -1}, v, status::behind_the_wall},
+                             refused{1, 0.4, 0.5, 0, 1, 2, n, C, {1, 1}, status::separating}}) {
+        for (const bool fast : {false, true}) {
+            const auto out = fast ? impact::collide_wall_rough(r.R, r.q, vec<2>{0, 0}, r.n, r.C, r.v, r.w, r.eps,
+                                                               r.beta, r.mu, impact::fast)
+                                  : impact::collide_wall_rough(r.R, r.q, vec<2>{0, 0}, r.n, r.C, r.v, r.w, r.eps,
+                                                               r.beta, r.mu);
+            BOOST_TEST((out.status == r.expected), "status " << static_cast<int>(out.status) << (fast ? " (fast)" : ""));
+            BOOST_TEST(same_bits(out.v, r.v));
+            BOOST_TEST(std::memcmp(&out.w, &r.w, sizeof(double)) == 0);
+        }
+    }
+}
+
+template <class... Form>
+void check_rough_batch(std::uint64_t seed, Form... form)
+{
+    std::mt19937_64 random(seed);
+    const std::size_t count = 1003;
+    std::vector<rough_wall_hit> hits(count);
+    std::array<std::vector<double>, 2> P, n, C, v;
+    for (std::size_t k = 0; k < 2; ++k)
+        for (auto* a : {&P[k], &n[k], &C[k], &v[k]})
+            a->resize(count);
+    std::vector<double> R(count), q(count), w(count), eps(count), beta(count), mu(count);
+    std::vector<impact::status> statuses(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        rough_wall_hit& h = hits[i];
+        h = draw_rough(random);
+        switch (i % 9) {
+        case 1: h.beta = 2; break;
+        case 2: h.n = vec<2>{}; break;
+        case 3: h.w = nan; break;
+        case 4: for (double& x : h.v) x = -x; break;
+        case 5: h.q = 1; break;
+        default: break;
+        }
+        for (std::size_t k = 0; k < 2; ++k) {
+            P[k][i] = h.P[k];
+            n[k][i] = h.n[k];
+            C[k][i] = h.C[k];
+            v[k][i] = h.v[k];
+        }
+        R[i] = h.R, q[i] = h.q, w[i] = h.w, eps[i] = h.eps, beta[i] = h.beta, mu[i] = h.mu;
+    }
+    impact::collide_wall_rough_batch_data<double, 2> data{};
+    data.count = count;
+    for (std::size_t k = 0; k < 2; ++k) {
+        data.P[k] = P[k].data();
+        data.n[k] = n[k].data();
+        data.C[k] = C[k].data();
+        data.v[k] = v[k].data();
+    }
+    data.R = R.data(), data.q = q.data(), data.w = w.data(), data.eps = eps.data(), data.beta = beta.data();
+    data.mu = mu.data();
+    data.status = statuses.data();
+    impact::collide_wall_rough_batch(data, form...);
+    std::size_t resolved = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const rough_wall_hit& h = hits[i];
+        const auto out = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu, form...);
+        resolved += out.status == impact::status::ok ? 1 : 0;
+        BOOST_TEST_CONTEXT("hit " << i)
+        {
+            BOOST_TEST((statuses[i] == out.status));
+            for (std::size_t k = 0; k < 2; ++k)
+                BOOST_TEST(std::memcmp(&v[k][i], &out.v[k], sizeof(double)) == 0);
+            BOOST_TEST(std::memcmp(&w[i], &out.w, sizeof(double)) == 0);
+        }
+    }
+    BOOST_TEST(resolved > count / 3);
+}
+
+BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_bit_for_bit)
+{
+    check_rough_batch(9001);
+    check_rough_batch(9011, impact::fast);
 }
 
 } // namespace

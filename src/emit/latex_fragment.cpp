@@ -238,8 +238,13 @@ std::string fragment_writer::givens() const
 std::string fragment_writer::step_checks(const engine::step_result& s) const
 {
     std::string out;
-    for (const engine::check_result& c : s.checks)
-        out += fmt::format("{}: {}.\n", capitalised(latex_text(c.name)), status_text(c.outcome));
+    for (const engine::check_result& c : s.checks) {
+        // A define by cases proves its cases cover every value: said of the quantity, typeset.
+        const bool covering = !s.cases.empty() && c.name.rfind("the cases of ", 0) == 0;
+        const std::string said = covering ? fmt::format("The cases of ${}$ cover every value", math(s.cases_of))
+                                          : capitalised(latex_text(c.name));
+        out += fmt::format("{}: {}.\n", said, status_text(c.outcome));
+    }
     return out;
 }
 

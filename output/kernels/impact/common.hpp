@@ -224,7 +224,7 @@ namespace impact {
 /// As wide as a double, so that a vectorised batch loop over doubles keeps one
 /// width in every lane: with a narrower status, compilers pack two vectors of
 /// doubles per vector of statuses, and the loop runs short of registers.
-enum class status : std::int64_t { ok, invalid_mass, invalid_restitution, non_finite, coincident_centres, separating, out_of_range, underflow, invalid_radius, invalid_inertia, invalid_tangential_restitution, invalid_friction, invalid_normal, behind_the_wall };
+enum class status : std::int64_t { ok, invalid_mass, invalid_radius, invalid_inertia, invalid_restitution, invalid_tangential_restitution, invalid_friction, non_finite, coincident_centres, separating, invalid_normal, behind_the_wall, out_of_range, underflow };
 
 namespace detail {
 
@@ -591,6 +591,138 @@ private:
         return block_ ? reinterpret_cast<T*>(block_ + first + a * stride_) : nullptr;
     }
     void swap(collide_rough_batch_arrays& other) noexcept
+    {
+        std::swap(count_, other.count_);
+        std::swap(stride_, other.stride_);
+        std::swap(block_, other.block_);
+    }
+
+    std::size_t count_ = 0;
+    std::size_t stride_ = 0;  // bytes from one array's start to the next
+    unsigned char* block_ = nullptr;
+};
+
+/// What collide_wall_rough returns in N dimensions.
+template <class Real, std::size_t N>
+struct collide_wall_rough_result {
+    std::array<Real, N> v;
+    Real w;
+    impact::status status;
+};
+
+/// Structure-of-arrays data for collide_wall_rough_batch: one array per scalar, N per vector.
+/// The arrays written (velocities, status) must not overlap any other.
+template <class Real, std::size_t N>
+struct collide_wall_rough_batch_data {
+    std::size_t count;
+    const Real* R;
+    const Real* q;
+    std::array<const Real*, N> P;
+    std::array<const Real*, N> n;
+    std::array<const Real*, N> C;
+    std::array<Real*, N> v;
+    Real* w;
+    const Real* eps;
+    const Real* beta;
+    const Real* mu;
+    impact::status* status;
+};
+
+/// The arrays of collide_wall_rough_batch_data, owned: one allocation holds them all, array k starting
+/// 64 + 256 k bytes (modulo 4 KiB) past a page boundary. Arrays allocated one by one all
+/// start at one offset within their pages: pair i of every array then falls on the same
+/// cache sets, and a large batch runs about a fifth slower. Each array holds `count`
+/// values, not initialised, and starts on a 64-byte boundary. The constructor throws
+/// std::bad_alloc, or std::bad_array_new_length for a count no allocation can hold.
+/// Move-only; an object moved from holds no arrays.
+template <class Real, std::size_t N>
+class collide_wall_rough_batch_arrays {
+public:
+    static_assert(std::is_floating_point_v<Real>, "collide_wall_rough_batch_arrays holds floating-point values");
+
+    explicit collide_wall_rough_batch_arrays(std::size_t count) : count_(count)
+    {
+        // Each array padded to whole pages plus `apart`; the bytes in all must not wrap around.
+        constexpr std::size_t most = (std::numeric_limits<std::size_t>::max() - first - reals * (page + apart)) / per_pair;
+        if (count > most)
+            throw std::bad_array_new_length();
+        stride_ = (count * sizeof(Real) + page - 1) / page * page + apart;
+        block_ = static_cast<unsigned char*>(::operator new(first + reals * stride_ + count * sizeof(impact::status), std::align_val_t{page}));
+        for (std::size_t a = 0; a < reals; ++a)
+            std::uninitialized_default_construct_n(at<Real>(a), count);
+        std::uninitialized_default_construct_n(at<impact::status>(reals), count);
+    }
+    collide_wall_rough_batch_arrays(collide_wall_rough_batch_arrays&& other) noexcept { swap(other); }
+    collide_wall_rough_batch_arrays& operator=(collide_wall_rough_batch_arrays&& other) noexcept
+    {
+        collide_wall_rough_batch_arrays(std::move(other)).swap(*this);
+        return *this;
+    }
+    collide_wall_rough_batch_arrays(const collide_wall_rough_batch_arrays&) = delete;
+    collide_wall_rough_batch_arrays& operator=(const collide_wall_rough_batch_arrays&) = delete;
+    ~collide_wall_rough_batch_arrays()
+    {
+        if (block_)
+            ::operator delete(block_, std::align_val_t{page});
+    }
+
+    std::size_t count() const noexcept { return count_; }
+    Real* R() noexcept { return at<Real>(0); }
+    const Real* R() const noexcept { return at<Real>(0); }
+    Real* q() noexcept { return at<Real>(1); }
+    const Real* q() const noexcept { return at<Real>(1); }
+    Real* P(std::size_t axis) noexcept { return at<Real>(2 + axis); }
+    const Real* P(std::size_t axis) const noexcept { return at<Real>(2 + axis); }
+    Real* n(std::size_t axis) noexcept { return at<Real>(2 + N + axis); }
+    const Real* n(std::size_t axis) const noexcept { return at<Real>(2 + N + axis); }
+    Real* C(std::size_t axis) noexcept { return at<Real>(2 + 2 * N + axis); }
+    const Real* C(std::size_t axis) const noexcept { return at<Real>(2 + 2 * N + axis); }
+    Real* v(std::size_t axis) noexcept { return at<Real>(2 + 3 * N + axis); }
+    const Real* v(std::size_t axis) const noexcept { return at<Real>(2 + 3 * N + axis); }
+    Real* w() noexcept { return at<Real>(2 + 4 * N); }
+    const Real* w() const noexcept { return at<Real>(2 + 4 * N); }
+    Real* eps() noexcept { return at<Real>(3 + 4 * N); }
+    const Real* eps() const noexcept { return at<Real>(3 + 4 * N); }
+    Real* beta() noexcept { return at<Real>(4 + 4 * N); }
+    const Real* beta() const noexcept { return at<Real>(4 + 4 * N); }
+    Real* mu() noexcept { return at<Real>(5 + 4 * N); }
+    const Real* mu() const noexcept { return at<Real>(5 + 4 * N); }
+    impact::status* status() noexcept { return at<impact::status>(reals); }
+    const impact::status* status() const noexcept { return at<impact::status>(reals); }
+
+    /// The arrays as collide_wall_rough_batch takes them.
+    collide_wall_rough_batch_data<Real, N> data() noexcept
+    {
+        collide_wall_rough_batch_data<Real, N> d{};
+        d.count = count_;
+        d.R = R();
+        d.q = q();
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.P[axis] = P(axis);
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.n[axis] = n(axis);
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.C[axis] = C(axis);
+        for (std::size_t axis = 0; axis < N; ++axis)
+            d.v[axis] = v(axis);
+        d.w = w();
+        d.eps = eps();
+        d.beta = beta();
+        d.mu = mu();
+        d.status = status();
+        return d;
+    }
+
+private:
+    static constexpr std::size_t reals = 6 + 4 * N;  // the arrays of Real, then the statuses
+    static constexpr std::size_t page = 4096, apart = 256, first = 64;
+    static constexpr std::size_t per_pair = reals * sizeof(Real) + sizeof(impact::status);  // bytes
+    template <class T>
+    T* at(std::size_t a) const noexcept
+    {
+        return block_ ? reinterpret_cast<T*>(block_ + first + a * stride_) : nullptr;
+    }
+    void swap(collide_wall_rough_batch_arrays& other) noexcept
     {
         std::swap(count_, other.count_);
         std::swap(stride_, other.stride_);
