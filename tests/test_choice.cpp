@@ -10,6 +10,7 @@
 #include "engine/library.h"
 #include "verify/choice.h"
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -127,4 +128,29 @@ BOOST_AUTO_TEST_CASE(every_sample_is_one_the_kernel_computes)
         admitted += in_front > 0 && approach < 0;
     }
     BOOST_TEST(admitted == p.plan.samples.size());
+}
+
+BOOST_AUTO_TEST_CASE(a_form_whose_divisors_need_a_division_is_passed_over)
+{
+    // The 3D rough wall's draft (tests/rough): its compensated forms divide by a compensated
+    // square root, whose correction divides. Its guards test every divisor before the first
+    // division, so such a form cannot be emitted: the choice gives it no accuracy and takes
+    // another, and the kernel's program computes every divisor before it divides.
+    engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/tests/rough"), "rough_wall_space");
+    const engine::derivation& d = lib.derived.at("rough_wall_space");
+    const engine::term_order order = engine::declaration_order(d.symbols);
+    const verify::kernel_plan plan = verify::plan_kernel(d.kernels.front(), order);
+    std::size_t passed_over = 0;
+    for (const verify::component_plan& cp : plan.components) {
+        for (const verify::candidate_result& c : cp.candidates)
+            if (std::isinf(c.double_accuracy.max_ulps)) {
+                ++passed_over;
+                BOOST_TEST(c.double_accuracy.worst_regime == "its divisors not computable before its divisions");
+                BOOST_TEST((c.compensated || c.compensated_lets), c.label);
+            }
+        BOOST_TEST(std::isfinite(cp.candidates[cp.chosen].double_accuracy.max_ulps), cp.name);
+    }
+    BOOST_TEST(passed_over > 0u);
+    BOOST_TEST(!compile::divides_early(plan.code));
 }

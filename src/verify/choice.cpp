@@ -308,6 +308,15 @@ private:
     {
         const compile::program p =
             compile::compile_program({r.value}, inputs_, order_, {r.fma, r.compensated, r.compensated_lets}, k_.lets);
+        // A kernel with guards tests every divisor before its first division: a form that
+        // divides by a value computed through a division (a compensated square root is
+        // corrected by one) cannot be guarded so, and is never chosen.
+        if (!k_.guards.empty() && compile::divides_early(p) && compile::divides_early(compile::ordered_for_registers(p))) {
+            r.double_accuracy.samples = on.size();
+            r.double_accuracy.max_ulps = r.double_accuracy.mean_ulps = std::numeric_limits<double>::infinity();
+            r.double_accuracy.worst_regime = "its divisors not computable before its divisions";
+            return r;
+        }
         r.double_accuracy = verify::measure<double>(p, {i}, on, ref).front();
         return r;
     }
