@@ -605,3 +605,25 @@ BOOST_AUTO_TEST_CASE(a_cycle_of_uses_and_a_repeated_id_are_refused)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(factoring)
+
+BOOST_AUTO_TEST_CASE(a_sum_of_degree_one_is_told_irreducible_and_others_are_factored)
+{
+    // a x + b with gcd(a, b) = 1 has no factor (Gauss's lemma): returned expanded, the value
+    // the same. A sum of degree one whose coefficients share a factor is factored; one with
+    // an irrational coefficient (gcd() takes rational coefficients only) is left to factor().
+    const GiNaC::symbol x("x"), y("y"), z("z");
+    const GiNaC::ex irreducible = x * (y + z) + y * z + 1;
+    BOOST_TEST(engine::factor_reproducibly(irreducible).is_equal(GiNaC::expand(irreducible)));
+    const GiNaC::ex shared = GiNaC::expand((y + z) * (x + 1));
+    const GiNaC::ex f = engine::factor_reproducibly(shared);
+    BOOST_TEST(GiNaC::is_a<GiNaC::mul>(f), f);
+    BOOST_TEST(GiNaC::expand(f - shared).is_zero());
+    const GiNaC::ex root = GiNaC::sqrt(GiNaC::ex(3)) * x + y;
+    GiNaC::ex r;
+    BOOST_CHECK_NO_THROW(r = engine::factor_reproducibly(root));
+    BOOST_TEST(GiNaC::expand(r - root).is_zero());
+}
+
+BOOST_AUTO_TEST_SUITE_END()

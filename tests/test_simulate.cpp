@@ -240,6 +240,21 @@ BOOST_AUTO_TEST_CASE(rough_spheres_slide_when_friction_caps_the_impulse)
     BOOST_TEST(std::abs(smooth.hit->v_M_after[1]) < tol);
 }
 
+BOOST_AUTO_TEST_CASE(a_heavy_spinning_sphere_is_reported_sliding)
+{
+    // M 1e8 times heavier, spinning at 10: its spin changes by about 1e-8, too little to
+    // read the tangential impulse from; the light sphere's change tells it. g_t = 5 - 0 = 5,
+    // the sticking impulse (1 + beta) m_t g_t is about 2.9, mu J_n about 0.2: it slides.
+    scenario s = head_on(1, 1e8, 1);
+    s.M.spin = 10;
+    s.beta = 1;
+    s.mu = 0.1;
+    const trajectory path = run(s);
+    BOOST_TEST_REQUIRE(path.hit.has_value());
+    BOOST_TEST(path.hit->slid);
+    BOOST_TEST(std::abs(path.hit->J_t) == 0.1 * std::abs(path.hit->J), boost::test_tools::tolerance(1e-12));
+}
+
 BOOST_AUTO_TEST_CASE(a_rough_collision_keeps_momentum_and_angular_momentum_and_loses_energy)
 {
     for (const std::optional<double> mu : {std::optional<double>{}, std::optional<double>{0.05}}) {

@@ -323,13 +323,11 @@ bool irreducible_by_degree_one(const GiNaC::ex& p)
 {
     if (!GiNaC::is_a<GiNaC::add>(p))
         return false;
+    // gcd() takes polynomials with rational coefficients only (not sqrt(3) x + y).
+    if (!p.info(GiNaC::info_flags::rational_polynomial))
+        return false;
     GiNaC::exset symbols;
     gather_symbols(p, symbols);
-    GiNaC::lst variables;
-    for (const GiNaC::ex& x : symbols)
-        variables.append(x);
-    if (!p.is_polynomial(variables))
-        return false;
     for (const GiNaC::ex& x : symbols) {
         if (p.degree(x) != 1 || p.ldegree(x) != 0)
             continue;

@@ -93,14 +93,22 @@ contact resolve(const scenario& s, const vec2& C_M, const vec2& C_m, const vec2&
         hit.v_M_after = out.v_M;
         hit.v_m_after = out.v_m;
     }
-    // The impulse along the line of action from M's change of momentum: v'_M = v_M - J/M (Eq. 6).
+    // The impulses from the lighter sphere's changes, which lose fewer digits to rounding
+    // (a heavy sphere's velocity and spin barely change). Along the line of action, from a
+    // change of momentum (Eq. 6), v'_M = v_M - J/M, v'_m = v_m + J/m along r = C_M - C_m:
     const double rx = C_M[0] - C_m[0], ry = C_M[1] - C_m[1];
     const double r = std::hypot(rx, ry);
-    hit.J = s.M.mass * ((v_M[0] - hit.v_M_after[0]) * rx + (v_M[1] - hit.v_M_after[1]) * ry) / r;
+    const bool M_lighter = s.M.mass <= s.m.mass;
+    hit.J = M_lighter ? s.M.mass * ((v_M[0] - hit.v_M_after[0]) * rx + (v_M[1] - hit.v_M_after[1]) * ry) / r
+                      : s.m.mass * ((hit.v_m_after[0] - v_m[0]) * rx + (hit.v_m_after[1] - v_m[1]) * ry) / r;
     if (rough(s)) {
-        // The impulse across the line of action from M's change of spin: w'_M = w_M - (R_M/I_M) n x J_t
-        // with I_M = q_M M R_M^2, and n x J_t = J_t for J_t along z x n.
-        hit.J_t = (hit.w_M_before - hit.w_M_after) * s.M.q * s.M.mass * s.M.radius;
+        // Across it, from the change of spin of the sphere with the least q mass R (whose spin
+        // changes most): w' = w - (R/I) n x J_t with I = q mass R^2 for both spheres, and
+        // n x J_t = J_t for J_t along z x n.
+        const sphere& lighter = s.M.q * s.M.mass * s.M.radius <= s.m.q * s.m.mass * s.m.radius ? s.M : s.m;
+        const double before = &lighter == &s.M ? hit.w_M_before : hit.w_m_before;
+        const double after = &lighter == &s.M ? hit.w_M_after : hit.w_m_after;
+        hit.J_t = (before - after) * lighter.q * lighter.mass * lighter.radius;
         // Friction capped it when |J_t| is mu |J| (to rounding).
         hit.slid = s.mu && std::fabs(hit.J_t) >= *s.mu * std::fabs(hit.J) * (1 - 1e-9);
     }

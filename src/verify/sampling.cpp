@@ -148,9 +148,13 @@ std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std
                     x.inputs[vb[c]] = -x.inputs[vb[c]];
                 }
         }
-        if (admitted && !admitted(x.inputs) && draws + 1 < most_draws)
-            continue;
-        samples.push_back(std::move(x));
+        if (admitted && !admitted(x.inputs)) {
+            if (draws + 1 < most_draws)
+                continue;
+            // Refused 64 times in this regime: no sample here (verification.md counts them).
+        } else {
+            samples.push_back(std::move(x));
+        }
         ++n;
         draws = static_cast<std::size_t>(-1);   // the next sample's draws count from 0
     }

@@ -28,7 +28,8 @@ using admission = std::function<bool(const std::vector<double>& inputs)>;
 
 /// `count` samples for `k`, from the seed; where `admitted` is given, each one it admits
 /// (a sample it refuses, e.g. a sphere moving away from a wall, is drawn again in its
-/// regime, up to 64 times): the accuracy is the kernel's where it computes.
+/// regime, in up to 64 draws, and left out when all 64 are refused, so that fewer samples
+/// are measured): the accuracy is the kernel's where it computes.
 std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std::uint64_t seed,
                                  const admission& admitted = {});
 
