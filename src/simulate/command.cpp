@@ -90,8 +90,7 @@ scenario scenario_from(const command_options& o)
     if (o.mu) {
         check_number(*o.mu, number_kind::friction, {"--mu", 0, 0}, "mu");
         if (!s.beta)
-            throw error({"--mu", 0, 0}, "mu is the friction of rough spheres: give --beta too, the tangential "
-                                        "restitution in [-1, 1] (-1: smooth, 1: perfectly rough)");
+            throw error({"--mu", 0, 0}, mu_needs_beta("--beta"));
         s.mu = o.mu;
     }
     // A name becomes a file name.

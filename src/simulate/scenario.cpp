@@ -167,8 +167,7 @@ scenario parse_scenario(const std::string& text, const std::string& file)
     if (s.mu) {
         check_number(*s.mu, number_kind::friction, in.where("mu"), "mu");
         if (!s.beta)
-            throw error(in.where("mu"), "mu is the friction of rough spheres: give beta too, the tangential "
-                                        "restitution in [-1, 1] (-1: smooth, 1: perfectly rough)");
+            throw error(in.where("mu"), mu_needs_beta("beta"));
     }
     s.M = read_sphere(in.table("M"), file, "M");
     s.m = read_sphere(in.table("m"), file, "m");
@@ -185,6 +184,13 @@ scenario read_scenario(const std::string& path)
     std::ostringstream text;
     text << in.rdbuf();
     return parse_scenario(text.str(), path);
+}
+
+std::string mu_needs_beta(const std::string& beta)
+{
+    return fmt::format("mu is the friction of rough spheres: give {} too, the tangential restitution in [-1, 1] "
+                       "(-1: smooth, 1: perfectly rough)",
+                       beta);
 }
 
 void check_number(double value, number_kind kind, const source_location& where, const std::string& what)
@@ -257,8 +263,7 @@ void validate(const scenario& s)
     if (s.mu) {
         check_number(*s.mu, number_kind::friction, s.where, "mu");
         if (!s.beta)
-            bad("mu is the friction of rough spheres: give beta too, the tangential restitution in [-1, 1] "
-                "(-1: smooth, 1: perfectly rough)");
+            bad(mu_needs_beta("beta"));
     }
     if (s.duration)
         check_number(*s.duration, number_kind::positive, s.where, "the duration");

@@ -82,6 +82,9 @@ enum class number_kind {
 /// Throws `impact::error` at `where` saying the limit and what to do instead.
 void check_number(double value, number_kind kind, const source_location& where, const std::string& what);
 
+/// The message for a friction `mu` given without `beta` (named as given: "beta", "--beta").
+std::string mu_needs_beta(const std::string& beta);
+
 /// The number of samples, a whole number in [fewest_samples, most_samples].
 int checked_samples(double value, const source_location& where);
 

@@ -105,10 +105,9 @@ contact resolve(const scenario& s, const vec2& C_M, const vec2& C_m, const vec2&
         // Across it, from the change of spin of the sphere with the least q mass R (whose spin
         // changes most): w' = w - (R/I) n x J_t with I = q mass R^2 for both spheres, and
         // n x J_t = J_t for J_t along z x n.
-        const sphere& lighter = s.M.q * s.M.mass * s.M.radius <= s.m.q * s.m.mass * s.m.radius ? s.M : s.m;
-        const double before = &lighter == &s.M ? hit.w_M_before : hit.w_m_before;
-        const double after = &lighter == &s.M ? hit.w_M_after : hit.w_m_after;
-        hit.J_t = (before - after) * lighter.q * lighter.mass * lighter.radius;
+        const double inertia_M = s.M.q * s.M.mass * s.M.radius, inertia_m = s.m.q * s.m.mass * s.m.radius;
+        hit.J_t = inertia_M <= inertia_m ? (hit.w_M_before - hit.w_M_after) * inertia_M
+                                         : (hit.w_m_before - hit.w_m_after) * inertia_m;
         // Friction capped it when |J_t| is mu |J| (to rounding).
         hit.slid = s.mu && std::fabs(hit.J_t) >= *s.mu * std::fabs(hit.J) * (1 - 1e-9);
     }

@@ -10,6 +10,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
@@ -79,6 +80,19 @@ std::optional<engine::form> derived_form(const engine::kernel_output& o, std::si
 
 namespace {
 
+// A kernel with guards tests every divisor before its first division: `code` as it is when
+// it does, else in the order that computes the divisors first (the same operations on the
+// same values, so the same results); none when a divisor needs a division.
+std::optional<compile::program> divisors_first(const engine::kernel& k, compile::program code)
+{
+    if (k.guards.empty() || !compile::divides_early(code))
+        return code;
+    code = compile::ordered_for_registers(code);
+    if (compile::divides_early(code))
+        return std::nullopt;
+    return code;
+}
+
 // One program: the guards' conditions first (checked before anything is computed from
 // them), then the form `which` names of every component, sharing what they can.
 compile::program compile_forms(const kernel_plan& plan, const engine::kernel& k, const engine::term_order& order,
@@ -92,19 +106,14 @@ compile::program compile_forms(const kernel_plan& plan, const engine::kernel& k,
         const candidate_result& form = cp.candidates[cp.*which];
         outputs.emplace_back(form.value, compile::compile_options{form.fma, form.compensated, form.compensated_lets});
     }
-    compile::program code = compile::compile_program(outputs, k.input_symbols(), order, k.lets);
-    // A kernel with guards tests every divisor before its first division: where the order
-    // compiled in divides earlier, the order that computes the divisors first (the same
-    // operations on the same values, so the same results).
-    if (!k.guards.empty() && compile::divides_early(code)) {
-        code = compile::ordered_for_registers(code);
-        if (compile::divides_early(code))
-            throw error(k.where, fmt::format("kernel '{}' divides by a value that another division computes, so no "
-                                             "order has every divisor before the first division, as its guards "
-                                             "need; give forms (forms = [...]) or a let that divide once",
-                                             k.name));
-    }
-    return code;
+    std::optional<compile::program> code =
+        divisors_first(k, compile::compile_program(outputs, k.input_symbols(), order, k.lets));
+    if (!code)
+        throw error(k.where, fmt::format("kernel '{}' divides by a value that another division computes, so no "
+                                         "order has every divisor before the first division, as its guards "
+                                         "need; give forms (forms = [...]) or a let that divide once",
+                                         k.name));
+    return *code;
 }
 
 } // namespace
@@ -308,10 +317,9 @@ private:
     {
         const compile::program p =
             compile::compile_program({r.value}, inputs_, order_, {r.fma, r.compensated, r.compensated_lets}, k_.lets);
-        // A kernel with guards tests every divisor before its first division: a form that
-        // divides by a value computed through a division (a compensated square root is
-        // corrected by one) cannot be guarded so, and is never chosen.
-        if (!k_.guards.empty() && compile::divides_early(p) && compile::divides_early(compile::ordered_for_registers(p))) {
+        // A form that divides by a value computed through a division (a compensated square
+        // root is corrected by one) cannot be guarded (divisors_first), and is never chosen.
+        if (!divisors_first(k_, p)) {
             r.double_accuracy.samples = on.size();
             r.double_accuracy.max_ulps = r.double_accuracy.mean_ulps = std::numeric_limits<double>::infinity();
             r.double_accuracy.worst_regime = "its divisors not computable before its divisions";
