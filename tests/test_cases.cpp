@@ -111,6 +111,31 @@ BOOST_AUTO_TEST_CASE(friction_checks_are_proven_case_by_case_under_each_conditio
     BOOST_TEST(method.find("a factor > 0 times the condition's") != std::string::npos, method);
 }
 
+BOOST_AUTO_TEST_CASE(a_sum_is_proven_a_term_at_a_time_the_signed_terms_set_aside)
+{
+    // -(1 - e^2) m_n v_n^2/2 - J_t (g_t - J_t/(2 m_t)) <= 0: the first term is <= 0 by
+    // the domains alone; sliding, the second is <= 0 because mu J_n < (1 + b) m_t g_t
+    // <= 2 m_t g_t, which only the condition gives.
+    const engine::derivation d = derive_file("tests/cases/friction.toml");
+    const engine::check_result& c = check_named(d, "energy never gained");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(proven(c.parts[0].outcome));
+    BOOST_TEST(proven(c.parts[1].outcome));
+    BOOST_TEST(proven(c.outcome));
+    const std::string& sliding = c.parts[1].outcome.method;
+    BOOST_TEST(sliding.rfind("the term ", 0) == 0, sliding);
+    BOOST_TEST(sliding.find("under g_t*m_t*(1+b) > mu*m_n*v_n*(1+e)") != std::string::npos, sliding);
+    // Without the condition the tangential term alone is not signed: its sign is the
+    // condition's to give, and at a sliding impulse twice the sticking one it fails.
+    std::ifstream in(IMPACT_SOURCE_DIR "/tests/cases/friction.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string sliding_value = "as = \"mu*J_n\"";
+    BOOST_REQUIRE(text.find(sliding_value) != std::string::npos);
+    text.replace(text.find(sliding_value), sliding_value.size(), "as = \"3*(1 + b)*m_t*g_t\"");
+    const engine::derivation wrong = derive_text(text);
+    BOOST_TEST(!proven(check_named(wrong, "energy never gained").outcome));
+}
+
 BOOST_AUTO_TEST_CASE(sticking_and_sliding_meet_at_the_edge_of_the_cone)
 {
     const engine::derivation d = derive_file("tests/cases/friction.toml");
