@@ -136,6 +136,33 @@ BOOST_AUTO_TEST_CASE(a_sum_is_proven_a_term_at_a_time_the_signed_terms_set_aside
     BOOST_TEST(!proven(check_named(wrong, "energy never gained").outcome));
 }
 
+BOOST_AUTO_TEST_CASE(a_symmetry_of_a_quantity_by_cases_is_proven_in_each_case)
+{
+    // J_t depends on m_t and g_t through their product only, in its values and its
+    // conditions: doubling g_t and halving m_t changes nothing, case by case.
+    std::ifstream in(IMPACT_SOURCE_DIR "/tests/cases/friction.toml");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto with_check = [&](const std::string& claim, const std::string& left_at) {
+        return text + "\n[[check]]\nname = \"scaled\"\nclaim = \"" + claim + "\"\nleft_at = { " + left_at +
+               " }\nbecause = \"b\"\n";
+    };
+    const engine::derivation d = derive_text(with_check("J_t = J_t", "g_t = \"2*g_t\", m_t = \"m_t/2\""));
+    const engine::check_result& c = check_named(d, "scaled");
+    BOOST_TEST(c.cases_of == "J_t");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(proven(c.parts[0].outcome));
+    BOOST_TEST(proven(c.parts[1].outcome));
+    BOOST_TEST(proven(c.outcome));
+    // A false claim fails; a change that moves the conditions (g_t doubled alone) is
+    // refused at the check's place: the two sides could fall in different cases.
+    const engine::derivation wrong = derive_text(with_check("J_t = 2*J_t", "g_t = \"2*g_t\", m_t = \"m_t/2\""));
+    BOOST_TEST(!proven(check_named(wrong, "scaled").outcome));
+    const std::string refused = message_for(with_check("J_t = 2*J_t", "g_t = \"2*g_t\""));
+    BOOST_TEST(refused.find("error: check 'scaled': left_at changes the conditions of the cases of 'J_t'") !=
+                   std::string::npos,
+               refused);
+}
+
 BOOST_AUTO_TEST_CASE(sticking_and_sliding_meet_at_the_edge_of_the_cone)
 {
     const engine::derivation d = derive_file("tests/cases/friction.toml");
@@ -307,6 +334,23 @@ BOOST_AUTO_TEST_CASE(a_result_by_cases_is_typeset_as_a_cases_environment)
     BOOST_TEST(tex.find("\\item \\textbf{proven} --- Meets: $y$ is continuous where its cases meet. Where the "
                         "cases meet: cases 1 and 2 at $x = 1$: \\textbf{proven}.") != std::string::npos,
                tex);
+}
+
+BOOST_AUTO_TEST_CASE(a_case_as_long_as_a_line_is_referred_to_by_its_number)
+{
+    // The cases are displayed where y is defined; a check lists a long one by number.
+    std::string sum = "x";
+    for (int k = 2; k <= 40; ++k)
+        sum += " + x^" + std::to_string(k) + "/" + std::to_string(k);
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"" + sum + "\" }, { when = \"x > 1\", as = \"" + sum + "\" }]",
+        "[[check]]\nname = \"positive\"\nclaim = \"y > 0\"\n[[check]]\nname = \"meets\"\ncontinuity = \"y\"\n"));
+    const std::string tex = emit::latex_fragment(d);
+    BOOST_TEST(tex.find("Case by case: case 1 of $y$: \\textbf{proven} and case 2 of $y$: \\textbf{proven}.") !=
+                   std::string::npos,
+               tex);
+    // The boundary x = 1 is short: it is shown.
+    BOOST_TEST(tex.find("cases 1 and 2 at $x = 1$: \\textbf{proven}") != std::string::npos, tex);
 }
 
 BOOST_AUTO_TEST_CASE(json_and_terminal_list_the_cases)

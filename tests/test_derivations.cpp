@@ -163,7 +163,7 @@ const std::set<std::string> covered = {"elastic_line",      "inelastic_line",   
                                        "scatter_angle",     "elastic_plane",       "inelastic_plane",
                                        "inelastic_space",   "rough_sticking",      "rough_plane",
                                        "wall_plane",        "wall_space",          "rough_space_impulse",
-                                       "rough_wall_plane"};
+                                       "rough_wall_plane",  "rough_collision_frame"};
 
 } // namespace
 
@@ -678,6 +678,31 @@ BOOST_AUTO_TEST_CASE(sticking_impulses_match_walton_s_model)
     BOOST_TEST(equal(value(d, "v_Mt_after"), sym(d, "v_Mt") - (1 + b) * m_t * g_t / M));
     // The spin changes by the moment R_M J_t over the moment of inertia q_M M R_M^2.
     BOOST_TEST(equal(value(d, "w_M_after"), sym(d, "w_M") - (1 + b) * m_t * g_t / (q_M * M * R_M)));
+}
+
+BOOST_AUTO_TEST_CASE(coulomb_friction_caps_the_tangential_impulse_as_walton_s_model_says)
+{
+    const engine::derivation& d = derived("rough_collision_frame");
+    const ex M = sym(d, "M"), m = sym(d, "m"), q_M = sym(d, "q_M"), q_m = sym(d, "q_m"), eps = sym(d, "eps"),
+             b = sym(d, "b"), mu = sym(d, "mu"), g_n = sym(d, "g_n"), g_t = sym(d, "g_t");
+    const ex m_r = M * m / (M + m);
+    const ex m_t = 1 / (1 / M + 1 / m + 1 / (q_M * M) + 1 / (q_m * m));
+    const ex J_n = (1 + eps) * m_r * g_n;
+    // J_t sticks at (1 + b) m_t g_t while that is inside the cone mu J_n, and slides on
+    // the cone's edge against the slip otherwise.
+    const engine::result* J_t = d.find_result("J_t");
+    BOOST_REQUIRE(J_t);
+    BOOST_REQUIRE_EQUAL(J_t->cases.size(), 2u);
+    BOOST_TEST(equal(J_t->cases[0].value, (1 + b) * m_t * g_t));
+    BOOST_TEST(equal(J_t->cases[1].value, mu * J_n * g_t / abs(g_t)));
+    BOOST_TEST((J_t->cases[0].op == engine::relation::less_equal));
+    BOOST_TEST(equal(J_t->cases[0].lhs - J_t->cases[0].rhs, (1 + b) * m_t * abs(g_t) - mu * J_n));
+    // g_t' = -b_eff g_t: b when sticking, -1 + mu J_n/(m_t |g_t|) when sliding.
+    const engine::result* b_eff = d.find_result("b_eff");
+    BOOST_REQUIRE(b_eff);
+    BOOST_REQUIRE_EQUAL(b_eff->cases.size(), 2u);
+    BOOST_TEST(equal(b_eff->cases[0].value, b));
+    BOOST_TEST(equal(b_eff->cases[1].value, -1 + mu * (1 + eps) * (m_r / m_t) * g_n / abs(g_t)));
 }
 
 BOOST_AUTO_TEST_CASE(the_lab_frame_velocities_and_spins_stick_or_slide_as_walton_s_model_says)

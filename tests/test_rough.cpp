@@ -1,6 +1,6 @@
 // Rough spheres (issue 21, the paper's "future research"), derived in the collision frame
 // with every check proven: derivations/rough_sticking.toml solves the impulse, spin and
-// restitution equations of a contact that sticks; tests/rough/rough_collision_frame.toml
+// restitution equations of a contact that sticks; derivations/rough_collision_frame.toml
 // caps the tangential impulse by Coulomb friction, by cases (sticking and sliding), and
 // proves momentum, angular momentum about the contact point, the energy change and its
 // sign, the friction cone, the effective restitution and continuity at the cone's edge.
@@ -31,7 +31,7 @@ engine::derivation rough_collision_frame()
 {
     engine::derived_by_id done;
     done.emplace("rough_sticking", rough_sticking());
-    return engine::derive(spec::read_derivation(IMPACT_SOURCE_DIR "/tests/rough/rough_collision_frame.toml"), done);
+    return engine::derive(spec::read_derivation(IMPACT_SOURCE_DIR "/derivations/rough_collision_frame.toml"), done);
 }
 
 bool proven(const engine::verdict& v)

@@ -5,6 +5,7 @@
 #include "emit/latex_parts.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -150,19 +151,41 @@ std::string fragment_writer::cases_text(const engine::check_result& c) const
         return "";
     std::vector<std::string> parts;
     const engine::quantity* q = d_.symbols.find(c.cases_of);
+    // The case as proven when it is short; else as the file writes it (its value in the
+    // declared quantities is displayed where the quantity is defined).
+    const auto case_value_text = [this](const GiNaC::ex& symbol, const engine::case_value& one) {
+        std::string value = math(one.value);
+        if (latex_width(value) > 0.4 * content_width)
+            value = math(one.as_written, &one.written);
+        return fmt::format("${} = {}$", math(symbol), value);
+    };
+    // A case as long as a line is referred to by its number: it is displayed where its
+    // quantity is defined, and a check repeating it would only repeat it (at special
+    // values, where the case's value changes, it is short again).
+    const auto too_long = [](const std::string& text) { return latex_width(text) > 0.8 * content_width; };
     for (const engine::check_result::part& p : c.parts) {
-        if (p.in_case && q) {
-            // The case as proven when it is short; else as the file writes it (its value
-            // in the declared quantities is displayed where the quantity is defined).
-            const engine::case_value& one = *p.in_case;
-            std::string value = math(one.value);
-            if (latex_width(value) > 0.4 * content_width)
-                value = math(one.as_written, &one.written);
-            parts.push_back(fmt::format("case {} (${} = {}$ where ${}$): {}", p.first, math(q->symbol), value,
-                                        case_condition(one), status_text(p.outcome)));
+        if (p.in_case && (!p.in_cases.empty() || q)) {
+            std::vector<std::string> values;
+            if (!p.in_cases.empty())
+                for (const auto& [symbol, one] : p.in_cases)
+                    values.push_back(case_value_text(symbol, one));
+            else
+                values.push_back(case_value_text(q->symbol, *p.in_case));
+            const std::string text = fmt::format("{} where ${}$", fmt::join(values, ", "), case_condition(*p.in_case));
+            if (too_long(text))
+                parts.push_back(fmt::format("case {} of ${}$: {}", p.first,
+                                            q ? math(q->symbol) : math(p.in_cases.front().first),
+                                            status_text(p.outcome)));
+            else
+                parts.push_back(fmt::format("case {} ({}): {}", p.first, text, status_text(p.outcome)));
         } else if (p.boundary) {
-            parts.push_back(fmt::format("cases {} and {} at ${} = {}$: {}", p.first, p.second,
-                                        math(p.boundary->first), math(p.boundary->second), status_text(p.outcome)));
+            const std::string value = math(p.boundary->second);
+            if (latex_width(value) > 0.4 * content_width)
+                parts.push_back(fmt::format("cases {} and {} where their conditions meet, solved for ${}$: {}",
+                                            p.first, p.second, math(p.boundary->first), status_text(p.outcome)));
+            else
+                parts.push_back(fmt::format("cases {} and {} at ${} = {}$: {}", p.first, p.second,
+                                            math(p.boundary->first), value, status_text(p.outcome)));
         } else {
             parts.push_back(fmt::format("{}: {}", latex_text(p.under), status_text(p.outcome)));
         }

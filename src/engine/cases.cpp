@@ -479,7 +479,8 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
     std::vector<std::string> names;
     for (const GiNaC::ex& s : split.symbols)
         names.push_back(ginac_syntax(s, symbols.order()));
-    c.cases_of = fmt::format("{}", fmt::join(names, " and "));
+    const std::size_t named = std::min(split.named, names.size());
+    c.cases_of = fmt::format("{}", fmt::join(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(named), " and "));
     const std::size_t count = split.pieces.front().size();
     for (std::size_t i = 0; i < count; ++i) {
         case_value one = split.pieces.front()[i];
@@ -502,7 +503,16 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
                 value = split.pieces[k][i].value;
             }
             in_case[split.symbols[k]] = value;
+            if (k >= named)
+                continue;
             values.push_back(fmt::format("{} = {}", names[k], given.text(value)));
+            if (named > 1) {
+                case_value each = split.pieces[k][i];
+                each.value = value;
+                each.lhs = one.lhs;
+                each.rhs = one.rhs;
+                part.in_cases.emplace_back(split.symbols[k], std::move(each));
+            }
         }
         one.value = in_case[split.symbols.front()];
         part.in_case = one;

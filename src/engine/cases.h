@@ -67,6 +67,9 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
 struct case_split {
     std::vector<GiNaC::ex> symbols;
     std::vector<std::vector<case_value>> pieces;   ///< each symbol's cases, in its order
+    /// How many of `symbols` are named in each case's text; those after them are the same
+    /// quantities at a symmetry's changed inputs (`left_at`), in the same case.
+    std::size_t named = static_cast<std::size_t>(-1);
 };
 
 /// True when the two lists of cases have the same conditions, in the same order.

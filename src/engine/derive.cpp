@@ -443,8 +443,34 @@ private:
             left_at[symbol] = out_.symbols.parse(b.expression);
             c.left_at.emplace_back(symbol, left_at[symbol]);
         }
-        if (!left_at.empty())
-            lhs = lhs.subs(left_at, GiNaC::subs_options::no_pattern);
+        // A quantity defined by cases on the left stands for its cases at the changed
+        // inputs: a copy of it whose cases have `left_at` substituted, conditions and values.
+        std::map<GiNaC::ex, std::vector<case_value>, GiNaC::ex_is_less> moved;
+        if (!left_at.empty()) {
+            GiNaC::exmap to = left_at;
+            for (const auto& [symbol, pieces] : cases_)
+                if (lhs.has(symbol)) {
+                    const GiNaC::symbol& named = GiNaC::ex_to<GiNaC::symbol>(symbol);
+                    const GiNaC::symbol copy(named.get_name() + "_at_left", named.get_TeX_name());
+                    std::vector<case_value> shifted = pieces;
+                    for (case_value& one : shifted) {
+                        one.lhs = one.lhs.subs(left_at, GiNaC::subs_options::no_pattern);
+                        one.rhs = one.rhs.subs(left_at, GiNaC::subs_options::no_pattern);
+                        one.value = one.value.subs(left_at, GiNaC::subs_options::no_pattern);
+                    }
+                    // Both sides are compared in one case only when the change leaves its
+                    // conditions as they were (a Galilean boost, the spheres exchanged).
+                    if (!same_conditions(pieces, shifted))
+                        throw error(c.where, fmt::format("check '{}': left_at changes the conditions of the cases of "
+                                                         "'{}', so the two sides may fall in different cases; a "
+                                                         "symmetry of a quantity defined by cases must leave its "
+                                                         "conditions unchanged",
+                                                         c.name, named.get_name()));
+                    to[symbol] = copy;
+                    moved.emplace(copy, std::move(shifted));
+                }
+            lhs = lhs.subs(to, GiNaC::subs_options::no_pattern);
+        }
 
         GiNaC::exmap at;
         for (const spec::binding& b : spec_check.at) {
@@ -477,10 +503,15 @@ private:
 
         c.lhs = lhs;
         c.rhs = rhs;
-        if (const auto split = cases_in(lhs, rhs, c.where)) {
-            if (!spec_check.left_at.empty())
-                throw error(c.where, fmt::format("check '{}' on '{}', defined by cases, may have no 'left_at'",
-                                                 c.name, ginac_syntax(split->symbols.front(), out_.symbols.order())));
+        std::optional<case_split> split = cases_in(lhs, rhs, c.where);
+        if (!split && !moved.empty())
+            split.emplace();   // only the left side is defined by cases: its copies are named
+        if (split) {
+            split->named = split->symbols.empty() ? moved.size() : split->symbols.size();
+            for (const auto& [copy, pieces] : moved) {
+                split->symbols.push_back(copy);
+                split->pieces.push_back(pieces);
+            }
             if (spec_check.limit) {
                 // The limit in every case, whatever its condition: a quantity that takes one
                 // case's value or another's has the limit they share (a fixed sphere's

@@ -81,6 +81,9 @@ struct check_result {
         std::size_t first = 0;        ///< the case (from 1), or the first of the two that meet
         std::size_t second = 0;       ///< continuity: the second case
         std::optional<case_value> in_case;                          ///< the case, as proven (after `at`)
+        /// A check split on several quantities with the same conditions (J_t and b_eff):
+        /// each quantity and its case, as proven; empty when it splits on one.
+        std::vector<std::pair<GiNaC::ex, case_value>> in_cases;
         std::optional<std::pair<GiNaC::ex, GiNaC::ex>> boundary;    ///< continuity: symbol = value there
     };
     std::vector<part> parts;
