@@ -246,7 +246,23 @@ std::optional<verdict> prove_by_terms(const GiNaC::ex& lhs, relation op, const G
 {
     const bool upper = op == relation::less_equal || op == relation::less;
     const bool strict = op == relation::less || op == relation::greater;
-    const GiNaC::ex difference = upper ? rhs - lhs : lhs - rhs;
+    // The sum's terms as written: -(a + b) and 2 (a + b) are sums too.
+    GiNaC::ex difference = upper ? rhs - lhs : lhs - rhs;
+    if (GiNaC::is_a<GiNaC::mul>(difference)) {
+        GiNaC::ex sum, factor = 1;
+        for (const GiNaC::ex& f : difference) {
+            if (GiNaC::is_a<GiNaC::add>(f) && sum.is_zero())
+                sum = f;
+            else
+                factor *= f;
+        }
+        if (!sum.is_zero() && GiNaC::is_a<GiNaC::numeric>(factor)) {
+            GiNaC::ex spread = 0;
+            for (const GiNaC::ex& term : sum)
+                spread += factor * term;
+            difference = spread;
+        }
+    }
     if (!GiNaC::is_a<GiNaC::add>(difference))
         return std::nullopt;
     const GiNaC::exmap abbreviations = symbols.abbreviations();

@@ -107,8 +107,10 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
                "points' tangential velocity $g_t$ stick with a tangential restitution $\\beta$ ($\\beta = -1$: "
                "smooth spheres, the paper's case; $\\beta = 1$: perfectly rough), $J_t = (1 + \\beta) m_t g_t$ with "
                "$1/m_t = 1/M + 1/m + 1/(q_M M) + 1/(q_m m)$, unless Coulomb friction caps it at $\\mu J_n$, where "
-               "the contact slides. Impact derives it (derivation files \\texttt{rough\\_sticking.toml} and "
-               "\\texttt{rough\\_plane.toml}, checked as the paper's are) and emits the kernel "
+               "the contact slides. Impact derives it (derivation files \\texttt{rough\\_sticking.toml}, "
+               "\\texttt{rough\\_collision\\_frame.toml}, where the friction cone, the energy never gained and the "
+               "two cases meeting at the cone's edge are proven, and \\texttt{rough\\_plane.toml}, checked as the "
+               "paper's are) and emits the kernel "
                "\\texttt{impact::collide\\_rough}, with which Fig.~\\ref{fig:rough-beta-eff} plots the effective "
                "tangential restitution. The derivations below are those of the derivation files that have no "
                "place in the paper.\n";
