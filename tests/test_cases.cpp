@@ -163,6 +163,38 @@ BOOST_AUTO_TEST_CASE(a_symmetry_of_a_quantity_by_cases_is_proven_in_each_case)
                refused);
 }
 
+BOOST_AUTO_TEST_CASE(a_symmetry_never_compares_quantities_whose_cases_differ)
+{
+    // J and K change at x = 1 and x = 2: at x = 3/2, J = 2 and K = 1, so J = K is false,
+    // whatever left_at changes (y, which neither uses).
+    const std::string two = "id = \"t\"\ntitle = \"t\"\n"
+                            "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+                            "[[symbol]]\nname = \"y\"\ndomain = \"positive\"\n"
+                            "[[symbol]]\nname = \"J\"\n[[symbol]]\nname = \"K\"\n"
+                            "[[step]]\ndefine = \"J\"\ncases = [{ when = \"x <= 1\", as = \"1\" }, "
+                            "{ when = \"x > 1\", as = \"2\" }]\n"
+                            "[[step]]\ndefine = \"K\"\ncases = [{ when = \"x <= 2\", as = \"1\" }, "
+                            "{ when = \"x > 2\", as = \"2\" }, ]\n"
+                            "[[result]]\nname = \"J\"\n";
+    const auto check = [&](const std::string& claim, const std::string& left_at) {
+        return two + "[[check]]\nname = \"c\"\nclaim = \"" + claim + "\"\nleft_at = { " + left_at + " }\n";
+    };
+    for (const std::string claim : {"J = K", "J - K = 0", "K = J"}) {
+        const std::string refused = message_for(check(claim, "y = \"2*y\""));
+        BOOST_TEST(refused.find("defined by cases with different conditions") != std::string::npos, refused);
+    }
+    // A derived quantity is no input: left_at may not give it a value.
+    const std::string derived = message_for(check("J = J", "J = \"5\""));
+    BOOST_TEST(derived.find("left_at gives 'J' a value, but a step derives it") != std::string::npos, derived);
+    // With no quantity by cases on the right, the left's cases are named as the quantity.
+    const engine::derivation d = derive_text(check("J >= 1", "y = \"2*y\""));
+    const engine::check_result& c = check_named(d, "c");
+    BOOST_TEST(c.cases_of == "J");
+    BOOST_TEST(proven(c.outcome));
+    BOOST_TEST(c.parts.at(0).under.rfind("case 1 (J = 1, where x <= 1)", 0) == 0, c.parts.at(0).under);
+    BOOST_TEST(emit::latex_fragment(d).find("at\\_left") == std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(sticking_and_sliding_meet_at_the_edge_of_the_cone)
 {
     const engine::derivation d = derive_file("tests/cases/friction.toml");

@@ -270,10 +270,16 @@ std::optional<verdict> prove_by_terms(const GiNaC::ex& lhs, relation op, const G
     std::vector<std::string> aside;
     std::vector<sign_step> steps;
     bool some_positive = false;
-    for (const GiNaC::ex& term : difference) {
+    // In the order of their text: GiNaC's order of terms may change from one build to the next.
+    std::vector<std::pair<std::string, GiNaC::ex>> terms;
+    for (const GiNaC::ex& term : difference)
+        terms.emplace_back(given.text(term), term);
+    std::sort(terms.begin(), terms.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [text, term] : terms) {
         const sign_proof p = prove_sign(GiNaC::normal(term.subs(abbreviations)), given);
         if (p.sign.is_nonnegative()) {
-            aside.push_back(given.text(term));
+            aside.push_back(text);
             steps.insert(steps.end(), p.steps.begin(), p.steps.end());
             some_positive = some_positive || p.sign.is_positive();
         } else {

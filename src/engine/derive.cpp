@@ -440,6 +440,11 @@ private:
         GiNaC::exmap left_at;
         for (const spec::binding& b : spec_check.left_at) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
+            // A derived quantity is not an input: its value follows from theirs.
+            if (values_.count(symbol) || cases_.count(symbol))
+                throw error(b.name.where, fmt::format("check '{}': left_at gives '{}' a value, but a step derives it; "
+                                                      "change the quantities it is derived from",
+                                                      c.name, b.name.value));
             left_at[symbol] = out_.symbols.parse(b.expression);
             c.left_at.emplace_back(symbol, left_at[symbol]);
         }
@@ -451,7 +456,8 @@ private:
             for (const auto& [symbol, pieces] : cases_)
                 if (lhs.has(symbol)) {
                     const GiNaC::symbol& named = GiNaC::ex_to<GiNaC::symbol>(symbol);
-                    const GiNaC::symbol copy(named.get_name() + "_at_left", named.get_TeX_name());
+                    // Named as the quantity: the same quantity, at other inputs.
+                    const GiNaC::symbol copy(named.get_name(), named.get_TeX_name());
                     std::vector<case_value> shifted = pieces;
                     for (case_value& one : shifted) {
                         one.lhs = one.lhs.subs(left_at, GiNaC::subs_options::no_pattern);
@@ -509,6 +515,13 @@ private:
         if (split) {
             split->named = split->symbols.empty() ? moved.size() : split->symbols.size();
             for (const auto& [copy, pieces] : moved) {
+                // Split together only with quantities whose cases have the same conditions.
+                if (!split->pieces.empty() && !same_conditions(split->pieces.front(), pieces))
+                    throw error(c.where, fmt::format("the check uses '{}' (at the changed inputs) and '{}', defined "
+                                                     "by cases with different conditions: a check may split on the "
+                                                     "cases of quantities whose conditions are the same",
+                                                     GiNaC::ex_to<GiNaC::symbol>(copy).get_name(),
+                                                     ginac_syntax(split->symbols.front(), out_.symbols.order())));
                 split->symbols.push_back(copy);
                 split->pieces.push_back(pieces);
             }
