@@ -155,6 +155,14 @@ BOOST_AUTO_TEST_CASE(a_symmetry_of_a_quantity_by_cases_is_proven_in_each_case)
     BOOST_TEST(proven(c.outcome));
     // A false claim fails; a change that moves the conditions (g_t doubled alone) is
     // refused at the check's place: the two sides could fall in different cases.
+    // A second check at the same changed inputs says them, and its cases, once.
+    const std::string twice = with_check("J_t = J_t", "g_t = \"2*g_t\", m_t = \"m_t/2\"") +
+                              "\n[[check]]\nname = \"scaled again\"\nclaim = \"2*J_t = 2*J_t\"\n"
+                              "left_at = { g_t = \"2*g_t\", m_t = \"m_t/2\" }\nbecause = \"c\"\n";
+    const std::string tex = emit::latex_fragment(derive_text(twice));
+    BOOST_TEST(tex.find("Scaled again: $2 J_t = 2 J_t$, the left side taken at the same changed inputs. C. Case by "
+                        "case, as the check above.") != std::string::npos,
+               tex);
     const engine::derivation wrong = derive_text(with_check("J_t = 2*J_t", "g_t = \"2*g_t\", m_t = \"m_t/2\""));
     BOOST_TEST(!proven(check_named(wrong, "scaled").outcome));
     const std::string refused = message_for(with_check("J_t = 2*J_t", "g_t = \"2*g_t\""));

@@ -258,6 +258,9 @@ std::string fragment_writer::checks() const
                         return &r;
         return nullptr;
     };
+    // What the check before said of its changed inputs and of its cases: a run of symmetry
+    // checks (Galilean invariance component by component) says them once.
+    std::string previous_left, previous_cases;
     for (const engine::check_result& c : d_.checks) {
         if (restated(c))
             continue;
@@ -330,7 +333,9 @@ std::string fragment_writer::checks() const
         for (const auto& [symbol, value] : c.left_at)
             left.push_back(fmt::format("${} \\to {}$", math(symbol), math(value)));
         if (!left.empty())
-            conditions.push_back("the left side taken at " + listing(left));
+            conditions.push_back(listing(left) == previous_left ? "the left side taken at the same changed inputs"
+                                                                : "the left side taken at " + listing(left));
+        previous_left = listing(left);
         // After a displayed claim the text starts a new sentence.
         if (!conditions.empty())
             out += shown ? capitalised(listing(conditions)) + "."
@@ -339,7 +344,10 @@ std::string fragment_writer::checks() const
             out += ".";
         if (!c.because.empty())
             out += (shown && conditions.empty() ? "" : " ") + sentence_end(capitalised(latex_prose(c.because)));
-        out += how(c) + cases_text(c) + "\n";
+        const std::string by_cases = cases_text(c);
+        out += how(c) + (!by_cases.empty() && by_cases == previous_cases ? " Case by case, as the check above." : by_cases) +
+               "\n";
+        previous_cases = by_cases;
     }
     return out + "\\end{itemize}\n";
 }
