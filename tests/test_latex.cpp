@@ -218,6 +218,17 @@ BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(fragments)
 
+BOOST_AUTO_TEST_CASE(special_values_the_reason_states_are_said_once)
+{
+    // Eq. 11's check at eps = 0, whose reason opens "at eps = 0": said once, by the reason.
+    const std::string tex = emit::latex_fragment(derived("energy_loss"));
+    BOOST_TEST(!contains(tex, "At $\\epsilon = 0$. At $\\epsilon = 0$"));
+    BOOST_TEST(contains(tex, "At $\\epsilon = 0$ all the kinetic energy of the relative motion is lost."));
+    // A reason that does not say them keeps them with the claim.
+    const std::string bounce = emit::latex_fragment(derived("inelastic_line"));
+    BOOST_TEST(contains(bounce, " at $\\epsilon = "), bounce);
+}
+
 BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
 {
     const std::string tex = emit::latex_fragment(derived("inelastic_line"));

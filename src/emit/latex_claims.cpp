@@ -336,6 +336,11 @@ std::string fragment_writer::checks() const
             conditions.push_back(listing(left) == previous_left ? "the left side taken at the same changed inputs"
                                                                 : "the left side taken at " + listing(left));
         previous_left = listing(left);
+        // A reason that opens with the check's special values says them: not twice ("At
+        // $\epsilon = 0$. At $\epsilon = 0$ all the kinetic energy ... is lost").
+        if (conditions.size() == 1 && !c.because.empty() &&
+            capitalised(latex_prose(c.because)).rfind(capitalised(conditions.front()) + " ", 0) == 0)
+            conditions.clear();
         // After a displayed claim the text starts a new sentence.
         if (!conditions.empty())
             out += shown ? capitalised(listing(conditions)) + "."
