@@ -7,6 +7,7 @@
 #include "derivation_support.h"
 #include "engine/derive.h"
 #include "engine/polynomial.h"
+#include "engine/sign.h"
 #include "engine/library.h"
 
 #include <string>
@@ -627,3 +628,18 @@ BOOST_AUTO_TEST_CASE(a_sum_of_degree_one_is_told_irreducible_and_others_are_fact
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// A try's effort (assumptions::effort) bounds the signs it works out: a sign it cuts short
+// is unknown and not remembered, so that the next proof, with all the effort it needs,
+// finds it.
+BOOST_AUTO_TEST_CASE(a_try_s_effort_cuts_a_sign_short_and_forgets_it)
+{
+    const GiNaC::symbol x("x"), y("y");
+    engine::assumptions given;
+    given.domains[x] = engine::domain{engine::domain::kind::positive};
+    given.domains[y] = engine::domain{engine::domain::kind::positive};
+    const GiNaC::ex e = x * x + 2 * x * y + y + 1;   // > 0 for positive x and y
+    BOOST_TEST(!engine::prove_sign(e, engine::with_effort(given, 0)).sign.is_positive());
+    BOOST_TEST(engine::prove_sign(e, given).sign.is_positive());
+    BOOST_TEST(engine::prove_sign(e, engine::with_effort(given, 1000)).sign.is_positive());
+}

@@ -235,6 +235,9 @@ namespace {
 std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
                                    const symbol_table& symbols, const assumptions& given);
 
+// The signs one try under a case's condition may work out (assumptions::effort).
+constexpr std::size_t try_effort = 40000;
+
 // A claim G >= 0 whose G is written as a sum, argued as a textbook does: the terms whose
 // sign the domains alone settle (-(1 - eps^2) m_r g_n^2/2 <= 0) set aside, and the rest
 // proven under the condition. The whole sum spelled out over a common denominator makes
@@ -277,7 +280,7 @@ std::optional<verdict> prove_by_terms(const GiNaC::ex& lhs, relation op, const G
     std::sort(terms.begin(), terms.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [text, term] : terms) {
-        const sign_proof p = prove_sign(GiNaC::normal(term.subs(abbreviations)), given);
+        const sign_proof p = prove_sign(GiNaC::normal(term.subs(abbreviations)), with_effort(given, try_effort));
         if (p.sign.is_nonnegative()) {
             aside.push_back(text);
             steps.insert(steps.end(), p.steps.begin(), p.steps.end());
@@ -311,13 +314,15 @@ std::optional<verdict> prove_by_terms(const GiNaC::ex& lhs, relation op, const G
     return v;
 }
 
-// The claim proven under the case's condition, or none (nothing sampled).
+// The claim proven under the case's condition, or none (nothing sampled). Each argument
+// is a try with an effort of its own: one that would search for minutes in one order of
+// GiNaC's terms gives way to the next.
 std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
                                    const symbol_table& symbols, const assumptions& given)
 {
     if (auto by_terms = prove_by_terms(lhs, op, rhs, c, symbols, given))
         return by_terms;
-    if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, given))
+    if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, with_effort(given, try_effort)))
         return alone;
 
     const GiNaC::exmap abbreviations = symbols.abbreviations();
@@ -332,7 +337,7 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     // G = q C with q >= 0 (q > 0 and C > 0 for a strict claim).
     if (!condition.value.is_zero()) {
         const GiNaC::ex q = GiNaC::normal(g / condition.value);
-        const sign_proof p = prove_sign(q, given);
+        const sign_proof p = prove_sign(q, with_effort(given, try_effort));
         if (strict ? (p.sign.is_positive() && condition.strict) : p.sign.is_nonnegative()) {
             verdict v;
             v.what = verdict::status::proven;
@@ -346,7 +351,7 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     // G = C + r with r >= 0 (and one of them > 0 for a strict claim).
     {
         const GiNaC::ex r = GiNaC::normal(g - condition.value);
-        const sign_proof p = prove_sign(r, given);
+        const sign_proof p = prove_sign(r, with_effort(given, try_effort));
         if (p.sign.is_nonnegative() && (!strict || p.sign.is_positive() || condition.strict)) {
             verdict v;
             v.what = verdict::status::proven;
@@ -363,14 +368,14 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
         assumptions narrowed = given;
         narrowed.domains[bound->first] = bound->second;
         narrowed.known = std::make_shared<worked_out>();
-        if (auto v = prove_inequality_by_signs(lhs, op, rhs, symbols, narrowed)) {
+        if (auto v = prove_inequality_by_signs(lhs, op, rhs, symbols, with_effort(narrowed, try_effort))) {
             v->method = fmt::format("{}, {} in {}: {}", under, ginac_syntax(bound->first, symbols.order()),
                                     bound->second.to_string(), v->method);
             return v;
         }
     }
     if (!condition.value.is_zero())
-        if (auto v = divided_by_condition(g, strict, condition.value, condition.strict, given)) {
+        if (auto v = divided_by_condition(g, strict, condition.value, condition.strict, with_effort(given, try_effort))) {
             v->method = fmt::format("{}: {}", under, v->method);
             return *v;
         }

@@ -79,7 +79,14 @@ public:
         const auto known = signs.find(e);
         if (known != signs.end())
             return known->second;
+        if (given_.effort) {
+            if (*given_.effort == 0)
+                return {sign_set::any(), "not worked out within the effort of a try"};
+            --*given_.effort;
+        }
         auto decided = decide(e, depth);
+        if (given_.effort && *given_.effort == 0)
+            return decided;   // perhaps cut short: not remembered
         if (signs.size() >= 4096)  // bounded, as the factor cache
             signs.clear();
         signs.emplace(e, decided);
@@ -368,6 +375,13 @@ private:
 };
 
 } // namespace
+
+assumptions with_effort(const assumptions& given, std::size_t signs)
+{
+    assumptions trial = given;
+    trial.effort = std::make_shared<std::size_t>(signs);
+    return trial;
+}
 
 bool has_radical(const GiNaC::ex& e)
 {

@@ -92,7 +92,15 @@ struct assumptions {
     std::shared_ptr<worked_out> known = std::make_shared<worked_out>();
     /// The run's polynomials factored; none, and each is factored again.
     proof_cache* run = nullptr;
+    /// For a try that another argument may replace: how many more signs it may work out
+    /// (none: as many as it takes). A sign not worked out within it is unknown, and is not
+    /// remembered. It keeps a search whose length depends on the order GiNaC gives the
+    /// terms, which changes with the program's build, from running for minutes.
+    std::shared_ptr<std::size_t> effort;
 };
+
+/// `given` with an effort of `signs` for a try (see assumptions::effort).
+assumptions with_effort(const assumptions& given, std::size_t signs);
 
 /// The declared domains of a derivation's symbols, with what `run` has worked out under them.
 assumptions declared_assumptions(const symbol_table& symbols, proof_cache& run);
