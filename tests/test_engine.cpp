@@ -635,11 +635,12 @@ BOOST_AUTO_TEST_SUITE_END()
 BOOST_AUTO_TEST_CASE(a_try_s_effort_cuts_a_sign_short_and_forgets_it)
 {
     const GiNaC::symbol x("x"), y("y");
-    engine::assumptions given;
+    engine::assumptions given{{}, engine::term_order({x, y})};
     given.domains[x] = engine::domain{engine::domain::kind::positive};
     given.domains[y] = engine::domain{engine::domain::kind::positive};
     const GiNaC::ex e = x * x + 2 * x * y + y + 1;   // > 0 for positive x and y
     BOOST_TEST(!engine::prove_sign(e, engine::with_effort(given, 0)).sign.is_positive());
+    BOOST_TEST(!engine::prove_sign(e, engine::with_effort(given, 1)).sign.is_positive());
     BOOST_TEST(engine::prove_sign(e, given).sign.is_positive());
     BOOST_TEST(engine::prove_sign(e, engine::with_effort(given, 1000)).sign.is_positive());
 }
