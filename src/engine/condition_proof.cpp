@@ -67,6 +67,11 @@ std::optional<verdict> divided_by_condition(const GiNaC::ex& g, bool strict, con
         if (GiNaC::is_a<GiNaC::symbol>(*it) &&
             std::find_if(xs.begin(), xs.end(), [&it](const GiNaC::ex& y) { return y.is_equal(*it); }) == xs.end())
             xs.push_back(*it);
+    // In the order of their names: the order GiNaC meets them in changes with the build, and
+    // the first that divides is the one the proof tells.
+    std::sort(xs.begin(), xs.end(), [](const GiNaC::ex& a, const GiNaC::ex& b) {
+        return GiNaC::ex_to<GiNaC::symbol>(a).get_name() < GiNaC::ex_to<GiNaC::symbol>(b).get_name();
+    });
     for (const GiNaC::ex& x : xs) {
         // Polynomials in x first: degree() throws on x under a radical.
         if (!c_top.is_polynomial(x) || !top.is_polynomial(x) || c_top.degree(x) != 1 || top.degree(x) < 1 ||
