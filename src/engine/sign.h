@@ -96,7 +96,7 @@ struct assumptions {
     /// (none: as many as it takes). A sign not worked out within it is unknown, and is not
     /// remembered. It keeps a search whose length depends on the order GiNaC gives the
     /// terms, which changes with the program's build, from running for minutes.
-    std::shared_ptr<std::size_t> effort;
+    std::shared_ptr<std::size_t> effort{};
 };
 
 /// `given` with an effort of `signs` for a try (see assumptions::effort).
