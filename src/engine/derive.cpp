@@ -517,11 +517,8 @@ private:
             for (const auto& [copy, pieces] : moved) {
                 // Split together only with quantities whose cases have the same conditions.
                 if (!split->pieces.empty() && !same_conditions(split->pieces.front(), pieces))
-                    throw error(c.where, fmt::format("the check uses '{}' (at the changed inputs) and '{}', defined "
-                                                     "by cases with different conditions: a check may split on the "
-                                                     "cases of quantities whose conditions are the same",
-                                                     GiNaC::ex_to<GiNaC::symbol>(copy).get_name(),
-                                                     ginac_syntax(split->symbols.front(), out_.symbols.order())));
+                    throw different_conditions(c.where, GiNaC::ex_to<GiNaC::symbol>(copy).get_name(),
+                                               ginac_syntax(split->symbols.front(), out_.symbols.order()));
                 split->symbols.push_back(copy);
                 split->pieces.push_back(pieces);
             }
@@ -575,6 +572,14 @@ private:
         return identities;
     }
 
+    // A check that would split on two quantities whose cases have different conditions.
+    static error different_conditions(const source_location& where, const std::string& one, const std::string& other)
+    {
+        return error(where, fmt::format("the check uses '{}' and '{}', both defined by cases with different conditions: "
+                                        "a check may split on the cases of quantities whose conditions are the same",
+                                        one, other));
+    }
+
     // The quantities defined by cases that a check's sides use, if any: one, or several
     // whose cases have the same conditions (split together, case by case).
     std::optional<case_split> cases_in(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const source_location& where) const
@@ -585,11 +590,8 @@ private:
                 if (!found) {
                     found.emplace();
                 } else if (!same_conditions(found->pieces.front(), pieces)) {
-                    throw error(where, fmt::format("the check uses '{}' and '{}', both defined by cases with different "
-                                                   "conditions: a check may split on the cases of quantities whose "
-                                                   "conditions are the same",
-                                                   ginac_syntax(found->symbols.front(), out_.symbols.order()),
-                                                   ginac_syntax(symbol, out_.symbols.order())));
+                    throw different_conditions(where, ginac_syntax(found->symbols.front(), out_.symbols.order()),
+                                               ginac_syntax(symbol, out_.symbols.order()));
                 }
                 found->symbols.push_back(symbol);
                 found->pieces.push_back(pieces);
