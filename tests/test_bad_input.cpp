@@ -13,6 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -592,6 +593,38 @@ BOOST_AUTO_TEST_CASE(a_file_larger_than_a_megabyte)
 {
     expect_refused(prefix + std::string(2000000, '#'),
                    "derivations/bad.toml: error: file is 2000124 bytes, larger than the limit of 1048576 bytes");
+}
+
+// The paper's order of places (derivations/paper_order.txt) orders the errata: a place a
+// comparison names must be listed, once.
+std::string with_claim_at(const std::string& place)
+{
+    return good("a") + "[[claim]]\nname = \"doubles\"\npaper = \"" + place +
+           "\"\nquote = \"y is twice x\"\nclaim = \"y = 2*x\"\n";
+}
+
+BOOST_AUTO_TEST_CASE(a_compared_place_the_paper_order_does_not_list)
+{
+    const std::string text = with_claim_at("Sec. I");
+    const auto claim_line = std::count(text.begin(), text.end(), '\n');   // the last line
+    expect_refused({{"a.toml", text}, {"paper_order.txt", "# the paper\nAbstract\n"}},
+                   "derivations/a.toml:" + std::to_string(claim_line) +
+                       ":9: error: the paper's place 'Sec. I' is not listed in derivations/paper_order.txt, which "
+                       "gives the order of the errata: add it there, where the paper prints it");
+}
+
+BOOST_AUTO_TEST_CASE(a_place_listed_twice_in_the_paper_order)
+{
+    expect_refused({{"a.toml", with_claim_at("Sec. I")}, {"paper_order.txt", "Sec. I\nAbstract\n  Sec. I\n"}},
+                   "derivations/paper_order.txt:3:3: error: the place 'Sec. I' is listed twice (first at line 1): "
+                   "each place of the paper has one position in its order");
+}
+
+BOOST_AUTO_TEST_CASE(a_paper_order_that_lists_nothing)
+{
+    expect_refused({{"a.toml", with_claim_at("Sec. I")}, {"paper_order.txt", "# nothing yet\n\n"}},
+                   "derivations/paper_order.txt: error: lists no place of the paper (a place per line, in the "
+                   "order the paper prints them; # starts a comment)");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -310,6 +310,19 @@ BOOST_AUTO_TEST_CASE(a_comment_changes_nothing_and_a_changed_title_recomputes_on
     BOOST_TEST_REQUIRE(commented.status == 0, commented.output);
     BOOST_TEST(said(commented.output, "output: 1 reused, 0 computed"), commented.output);
     BOOST_TEST((snapshot(s.root / "commented") == snapshot(s.root / "cold")));
+    // The paper's order of places: a comment in it changes nothing either; a place moved
+    // reorders the errata, so the output is made again (its kernels' choice reused).
+    const fs::path order = derivations / "paper_order.txt";
+    write(order, read(order) + "# A comment a user added.\n");
+    const run_result order_commented = run("order_commented", at);
+    BOOST_TEST(said(order_commented.output, "output: 1 reused, 0 computed"), order_commented.output);
+    write(order, "Sec. IV\n" + std::regex_replace(read(order), std::regex("\nSec\\. IV\n"), "\n"));
+    const run_result reordered = run("reordered", at);
+    BOOST_TEST_REQUIRE(reordered.status == 0, reordered.output);
+    BOOST_TEST(said(reordered.output, "output: 0 reused, 1 computed"), reordered.output);
+    BOOST_TEST(said(reordered.output, "kernel choice: [1-9][0-9]* reused, 0 computed"), reordered.output);
+    const std::string errata = read(s.root / "reordered" / "errata.md");
+    BOOST_TEST(errata.find("| Sec. IV |") < errata.find("| Abstract |"));
     // A new title: derived again, the kernels' choice and the figures reused, the report
     // compiled again; what is written is what a regeneration without a cache writes.
     std::string text = read(file);

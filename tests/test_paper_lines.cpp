@@ -28,6 +28,7 @@
 #include "engine/derive.h"
 #include "engine/library.h"
 #include "spec/derivation.h"
+#include "spec/outline.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -190,9 +191,17 @@ constexpr std::size_t compared = 110;
 
 const engine::library& library()
 {
-    static const engine::library lib =
-        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+    static const engine::library lib = [] {
+        engine::library l = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+        l.outline = spec::read_paper_outline(IMPACT_SOURCE_DIR "/derivations");
+        return l;
+    }();
     return lib;
+}
+
+const spec::paper_outline* outline()
+{
+    return library().outline ? &*library().outline : nullptr;
 }
 
 // Every place the derivations' comparisons and undecided claims name, with how many name it.
@@ -282,7 +291,7 @@ BOOST_AUTO_TEST_CASE(the_errata_and_the_report_state_the_count)
 {
     const std::vector<const engine::derivation*> all = library().in_order();
     BOOST_TEST(emit::compared_places(all) == compared);
-    const std::string errata = emit::errata_markdown(all);
+    const std::string errata = emit::errata_markdown(all, outline());
     BOOST_TEST(errata.find(fmt::format("{} printed lines and claims of the paper, {} of them compared",
                                        printed_lines_and_claims, compared)) != std::string::npos);
     const emit::paper_count n = emit::count_paper(all);
@@ -295,6 +304,43 @@ BOOST_AUTO_TEST_CASE(the_errata_and_the_report_state_the_count)
     BOOST_TEST(readme.find(fmt::format("{} printed lines and claims", printed_lines_and_claims)) !=
                std::string::npos);
     BOOST_TEST(readme.find(fmt::format("{} of them are compared", compared)) != std::string::npos);
+}
+
+// derivations/paper_order.txt orders the errata as the paper prints its lines. It lists
+// the places of the list above, in its order (two transcriptions of the paper agree), and
+// the rows of errata.md, and of the report's table, follow it.
+BOOST_AUTO_TEST_CASE(the_errata_lists_its_rows_in_the_paper_s_order)
+{
+    BOOST_REQUIRE(outline());
+    std::vector<std::string> in_file, typed;
+    for (const spec::text& place : outline()->places)
+        in_file.push_back(place.value);
+    std::map<std::string, std::size_t> position;
+    for (const printed_line& line : paper) {
+        position.emplace(line.where, typed.size());
+        typed.push_back(line.where);
+    }
+    BOOST_TEST(in_file == typed, boost::test_tools::per_element());
+
+    const std::string errata = emit::errata_markdown(library().in_order(), outline());
+    std::istringstream rows(errata.substr(errata.find("| --- |")));
+    std::string row;
+    std::getline(rows, row);
+    std::size_t count = 0, last = 0;
+    std::string last_place;
+    while (std::getline(rows, row) && row.rfind("| ", 0) == 0) {
+        const std::string place = row.substr(2, row.find(" | ") - 2);
+        BOOST_REQUIRE_MESSAGE(position.count(place) == 1, "a row at \"" << place << "\", not in the paper's list");
+        BOOST_TEST(position[place] >= last, "\"" << place << "\" comes after \"" << last_place << "\"");
+        last = position[place];
+        last_place = place;
+        ++count;
+    }
+    BOOST_TEST(count == emit::count_paper(library().in_order()).rows);
+    // The report's table starts where the paper does, with the abstract (whose claim is
+    // compared by a derivation that comes late in the library's order).
+    BOOST_TEST(emit::latex_errata(library().in_order(), outline()).rows.rfind("Abstract (Sect.", 0) == 0u);
+    BOOST_TEST(emit::latex_errata(library().in_order()).rows.rfind("Abstract (Sect.", 0) != 0u);
 }
 
 BOOST_AUTO_TEST_CASE(every_comparison_s_verdict_is_settled)

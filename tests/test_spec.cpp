@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "spec/derivation.h"
+#include "spec/outline.h"
 
 #include <string>
 
@@ -237,3 +238,20 @@ BOOST_AUTO_TEST_CASE(an_undecided_claim_says_why_and_has_nothing_to_check)
     BOOST_TEST(e.message() == "'Footnote 1' is not compared: 'because' must say why");
 }
 
+// The paper's order of places: a place per line, comments and blank lines skipped, spaces
+// around a place (and a Windows line end) not part of it; each place keeps its line.
+BOOST_AUTO_TEST_CASE(the_paper_s_order_of_places_is_read_a_place_per_line)
+{
+    const impact::spec::paper_outline o =
+        impact::spec::parse_paper_outline("# the paper\n\nAbstract\r\n  Eq. 1a  \n# II B\nSec. II B, 1st paragraph\n", "order.txt");
+    BOOST_TEST(o.places.size() == 3u);
+    BOOST_TEST(o.places[0].value == "Abstract");
+    BOOST_TEST(o.places[1].value == "Eq. 1a");
+    BOOST_TEST(o.places[1].where.line == 4u);
+    BOOST_TEST(o.places[1].where.column == 3u);
+    BOOST_TEST(o.places[2].value == "Sec. II B, 1st paragraph");
+    BOOST_TEST(*o.position("Sec. II B, 1st paragraph") == 2u);
+    BOOST_TEST(!o.position("Eq. 1"));
+    // Not a place of the paper's: nothing read from a folder without the file.
+    BOOST_TEST(!impact::spec::read_paper_outline(IMPACT_SOURCE_DIR "/tests"));
+}

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "engine/derive.h"
+#include "spec/outline.h"
 
 #include <string>
 #include <vector>
@@ -11,8 +12,28 @@ namespace impact::emit {
 
 /// The errata table in Markdown: a row per finding, that is per claim of the text and
 /// per printed form, the components of one equation that one misprint explains together
-/// in one row (`errata_rows`), and a row per claim no derivation settles (undecided).
-std::string errata_markdown(const std::vector<const engine::derivation*>& derivations);
+/// in one row (`errata_rows`), and a row per claim no derivation settles (undecided); in
+/// the paper's order when `outline` gives it (errata_entries).
+std::string errata_markdown(const std::vector<const engine::derivation*>& derivations,
+                            const spec::paper_outline* outline = nullptr);
+
+/// One row of the errata: comparisons of one derivation shown together (`errata_rows`),
+/// or one of its claims that no derivation settles.
+struct errata_entry {
+    const engine::derivation* derivation = nullptr;
+    std::vector<std::size_t> comparisons;   ///< into `paper_checks`; empty for `open`
+    const spec::open_claim* open = nullptr;
+
+    /// Its place in the paper ("Eq. 8, right, line 1").
+    const std::string& place() const;
+};
+
+/// Every row of the errata. With an outline, in the order of the places it lists, as the
+/// paper prints them (rows at one place in derivation order); a row at a place the outline
+/// does not list is an error at its comparison in the derivation file. Without one,
+/// derivation by derivation, each's comparisons then its undecided claims.
+std::vector<errata_entry> errata_entries(const std::vector<const engine::derivation*>& derivations,
+                                         const spec::paper_outline* outline);
 
 /// The rows of the errata for one derivation's comparisons (`paper_checks`), each the
 /// indices of the comparisons it shows: one comparison, the components of one printed

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "engine/derive.h"
+#include "spec/outline.h"
 #include "engine/order.h"
 #include "engine/written_form.h"
 
@@ -105,12 +106,14 @@ std::string latex_label(const engine::derivation& d);
 /// verdict, printed, derived or what a claim was checked as, finding; one row for a
 /// misprint shared by the components of one equation, `errata_rows`; a row per claim no
 /// derivation settles, undecided with why), and the forms too wide for a cell as numbered
-/// items (`\item[(T1)] ...`) of a list to set under the table.
+/// items (`\item[(T1)] ...`) of a list to set under the table. The rows in the paper's order when
+/// `outline` gives it (emit::errata_entries).
 struct errata_table {
     std::string rows;
     std::string displays;
     std::size_t displayed = 0;
 };
-errata_table latex_errata(const std::vector<const engine::derivation*>& derivations);
+errata_table latex_errata(const std::vector<const engine::derivation*>& derivations,
+                          const spec::paper_outline* outline = nullptr);
 
 } // namespace impact::emit

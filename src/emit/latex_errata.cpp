@@ -203,127 +203,134 @@ std::string fragment_writer::shown_as_printed(const engine::paper_comparison& p)
     return out + "\n\\end{align*}\n";
 }
 
-// The paper comparisons as rows of the report's errata table, one per finding
-// (emit::errata_rows): a claim, a printed form, or the consecutive components of one
-// line that one misprint explains (Eq. 9's lab-frame components); then the claims no
-// derivation settles, undecided with the reason. Forms wider than their column are set
-// under the table as numbered displays (T1), (T2), ...
-void fragment_writer::errata_rows(errata_table& table) const
+// A row of the report's errata table, one finding (emit::errata_rows): a claim, a printed
+// form, or the consecutive components of one line that one misprint explains (Eq. 9's
+// lab-frame components). Forms wider than their column are set under the table as
+// numbered displays (T1), (T2), ...
+void fragment_writer::errata_row(errata_table& table, const std::vector<std::size_t>& group) const
 {
     constexpr double printed_pt = 122, derived_pt = 99, change_pt = 78;
     const auto& all = d_.paper_checks;
-    for (const std::vector<std::size_t>& group : emit::errata_rows(d_)) {
-        const engine::paper_comparison& p = all[group.front()];
-        std::vector<std::string> subjects;
-        for (std::size_t k : group)
-            if (subjects.empty() || p.what != engine::paper_comparison::kind::claim)
-                subjects.push_back(subject(all[k]));
-        const std::string verdict = row_verdict(d_, group);
-        const bool agrees = verdict == "agrees";
-        const bool claim = p.what == engine::paper_comparison::kind::claim;
+    const engine::paper_comparison& p = all[group.front()];
+    std::vector<std::string> subjects;
+    for (std::size_t k : group)
+        if (subjects.empty() || p.what != engine::paper_comparison::kind::claim)
+            subjects.push_back(subject(all[k]));
+    const std::string verdict = row_verdict(d_, group);
+    const bool agrees = verdict == "agrees";
+    const bool claim = p.what == engine::paper_comparison::kind::claim;
 
-        std::string printed, printed_math;
-        if (p.what == engine::paper_comparison::kind::claim)
-            printed = "``" + latex_prose(p.printed_text) + "''";
-        else
-            printed_math = as_printed(p);
-        const auto [derived, derived_written] = derived_form(p);
-        const bool show_derived = !p.agrees() && p.what != engine::paper_comparison::kind::claim;
-        const std::string derived_math = !show_derived ? ""
-                                         : derived.info(GiNaC::info_flags::relation)
-                                             ? relation_math(derived, derived_written)
-                                             : math(derived, derived_written);
-        // What was found, comparison by comparison; a claim shows what was checked beside
-        // it, so that it does not hold is then enough.
-        auto change_of = [&](const engine::paper_comparison& c) {
-            if (c.agrees())
-                return std::string(c.what == engine::paper_comparison::kind::claim   ? "proven"
-                                   : c.what == engine::paper_comparison::kind::given ? "proven equivalent"
-                                                                                     : "proven equal");
-            if (comparison_verdict(c) == "undecided")
-                return std::string("neither proven nor refuted");
-            std::string found = findings(c);
-            if (found.empty())
-                found = c.what == engine::paper_comparison::kind::claim && c.test ? "as checked, it does not hold"
-                                                                                 : unreconciled(c, change_pt);
-            return found;
-        };
-        std::string change = change_of(p);
-        if (claim && group.size() > 1) {
-            // The claims of one quote: one finding, each check's outcome where they differ.
-            std::vector<std::string> each;
-            for (std::size_t k : group)
-                each.push_back(change_of(all[k]));
-            change = one_finding(each);
-        } else if (!agrees && verdict == "disagrees" && group.size() > 1) {
-            change += fmt::format("; one misprint, in each of the {} components", group.size());
-        }
-
-        bool to_display = (!printed_math.empty() && !fits(printed_math, printed_pt)) ||
-                          (!derived_math.empty() && !fits(derived_math, derived_pt));
+    std::string printed, printed_math;
+    if (p.what == engine::paper_comparison::kind::claim)
+        printed = "``" + latex_prose(p.printed_text) + "''";
+    else
+        printed_math = as_printed(p);
+    const auto [derived, derived_written] = derived_form(p);
+    const bool show_derived = !p.agrees() && p.what != engine::paper_comparison::kind::claim;
+    const std::string derived_math = !show_derived ? ""
+                                     : derived.info(GiNaC::info_flags::relation)
+                                         ? relation_math(derived, derived_written)
+                                         : math(derived, derived_written);
+    // What was found, comparison by comparison; a claim shows what was checked beside
+    // it, so that it does not hold is then enough.
+    auto change_of = [&](const engine::paper_comparison& c) {
+        if (c.agrees())
+            return std::string(c.what == engine::paper_comparison::kind::claim   ? "proven"
+                               : c.what == engine::paper_comparison::kind::given ? "proven equivalent"
+                                                                                 : "proven equal");
+        if (comparison_verdict(c) == "undecided")
+            return std::string("neither proven nor refuted");
+        std::string found = findings(c);
+        if (found.empty())
+            found = c.what == engine::paper_comparison::kind::claim && c.test ? "as checked, it does not hold"
+                                                                             : unreconciled(c, change_pt);
+        return found;
+    };
+    std::string change = change_of(p);
+    if (claim && group.size() > 1) {
+        // The claims of one quote: one finding, each check's outcome where they differ.
+        std::vector<std::string> each;
         for (std::size_t k : group)
-            for (const engine::finding& f : all[k].findings)
-                for (const engine::finding::part& part : f.parts)
-                    if (part.what == engine::finding::part::kind::math &&
-                        !fits(part.value.info(GiNaC::info_flags::relation) ? relation_math(part.value)
-                                                                           : math(part.value),
-                              change_pt))
-                        to_display = true;
-        std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;
-        std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
-        // A claim: what was checked (at its special values, or its limit), when it fits.
-        if (claim && p.test) {
-            std::vector<std::string> each;
-            for (std::size_t k : group)
-                if (all[k].test)
-                    each.push_back(checked_claim_latex(*all[k].test, order_));
-            // Each check on a line of its own in the cell, when each fits.
-            const bool each_fits = std::all_of(each.begin(), each.end(), [&](const std::string& c) {
-                return fits(c, derived_pt) && cell_width(c) <= 2.5 * derived_pt;
-            });
-            derived_cell = each_fits ? "checked: " + fmt::format("{}", fmt::join(each, ";\\newline "))
-                                     : fmt::format("checked in Sect.~\\ref{{{}}}", latex_label(d_));
-        }
-        std::string change_cell = change;
-        if (to_display) {
-            const std::string mark = fmt::format("(T{})", ++table.displayed);
-            const std::string see = "display " + mark + " below";
-            table.displays += fmt::format("\\item[{}] {}, {}: ", mark, paper_text(p.paper), listing(subjects));
-            if (!printed_math.empty()) {
-                table.displays += "printed" + shown_as_printed(p);
-                printed_cell = see;
-            } else {
-                table.displays += "the paper says " + printed + ".";
-            }
-            if (!derived_math.empty()) {
-                table.displays += "Derived" + shown(derived, derived_written);
-                derived_cell = see;
-            }
-            if (!agrees) {
-                table.displays += (derived_math.empty() ? " " : "") + capitalised(change) + ".\n";
-                change_cell = see;
-            } else {
-                table.displays += "It agrees (" + change + ").\n";
-            }
-        }
-        table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & {} & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
-                                  latex_label(d_), listing(subjects),
-                                  agrees ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
-                                  change_cell);
+            each.push_back(change_of(all[k]));
+        change = one_finding(each);
+    } else if (!agrees && verdict == "disagrees" && group.size() > 1) {
+        change += fmt::format("; one misprint, in each of the {} components", group.size());
     }
-    for (const spec::open_claim& c : d_.source.open_claims)
-        table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & claim & \\textbf{{undecided}} & ``{}'' & & {} \\\\\n",
-                                  paper_text(c.paper.value), latex_label(d_), latex_prose(c.quote.value),
-                                  capitalised(latex_prose(c.undecided.value)));
+
+    bool to_display = (!printed_math.empty() && !fits(printed_math, printed_pt)) ||
+                      (!derived_math.empty() && !fits(derived_math, derived_pt));
+    for (std::size_t k : group)
+        for (const engine::finding& f : all[k].findings)
+            for (const engine::finding::part& part : f.parts)
+                if (part.what == engine::finding::part::kind::math &&
+                    !fits(part.value.info(GiNaC::info_flags::relation) ? relation_math(part.value)
+                                                                       : math(part.value),
+                          change_pt))
+                    to_display = true;
+    std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;
+    std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
+    // A claim: what was checked (at its special values, or its limit), when it fits.
+    if (claim && p.test) {
+        std::vector<std::string> each;
+        for (std::size_t k : group)
+            if (all[k].test)
+                each.push_back(checked_claim_latex(*all[k].test, order_));
+        // Each check on a line of its own in the cell, when each fits.
+        const bool each_fits = std::all_of(each.begin(), each.end(), [&](const std::string& c) {
+            return fits(c, derived_pt) && cell_width(c) <= 2.5 * derived_pt;
+        });
+        derived_cell = each_fits ? "checked: " + fmt::format("{}", fmt::join(each, ";\\newline "))
+                                 : fmt::format("checked in Sect.~\\ref{{{}}}", latex_label(d_));
+    }
+    std::string change_cell = change;
+    if (to_display) {
+        const std::string mark = fmt::format("(T{})", ++table.displayed);
+        const std::string see = "display " + mark + " below";
+        table.displays += fmt::format("\\item[{}] {}, {}: ", mark, paper_text(p.paper), listing(subjects));
+        if (!printed_math.empty()) {
+            table.displays += "printed" + shown_as_printed(p);
+            printed_cell = see;
+        } else {
+            table.displays += "the paper says " + printed + ".";
+        }
+        if (!derived_math.empty()) {
+            table.displays += "Derived" + shown(derived, derived_written);
+            derived_cell = see;
+        }
+        if (!agrees) {
+            table.displays += (derived_math.empty() ? " " : "") + capitalised(change) + ".\n";
+            change_cell = see;
+        } else {
+            table.displays += "It agrees (" + change + ").\n";
+        }
+    }
+    table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & {} & {} & {} & {} & {} \\\\\n", paper_text(p.paper),
+                              latex_label(d_), listing(subjects),
+                              agrees ? verdict : "\\textbf{" + verdict + "}", printed_cell, derived_cell,
+                              change_cell);
+}
+
+// A claim no derivation settles: undecided, with the reason.
+void fragment_writer::errata_row(errata_table& table, const spec::open_claim& c) const
+{
+    table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & claim & \\textbf{{undecided}} & ``{}'' & & {} \\\\\n",
+                              paper_text(c.paper.value), latex_label(d_), latex_prose(c.quote.value),
+                              capitalised(latex_prose(c.undecided.value)));
 }
 
 } // namespace detail
 
-errata_table latex_errata(const std::vector<const engine::derivation*>& derivations)
+errata_table latex_errata(const std::vector<const engine::derivation*>& derivations,
+                          const spec::paper_outline* outline)
 {
     errata_table table;
-    for (const engine::derivation* d : derivations)
-        detail::fragment_writer(*d).errata_rows(table);
+    for (const errata_entry& e : errata_entries(derivations, outline)) {
+        const detail::fragment_writer writer(*e.derivation);
+        if (e.open)
+            writer.errata_row(table, *e.open);
+        else
+            writer.errata_row(table, e.comparisons);
+    }
     return table;
 }
 

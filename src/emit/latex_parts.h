@@ -103,8 +103,10 @@ public:
 
     /// The whole fragment.
     std::string write();
-    /// The paper comparisons as rows (and displays) of the report's errata table.
-    void errata_rows(errata_table& table) const;
+    /// A row (and its displays) of the report's errata table: comparisons shown together
+    /// (emit::errata_rows), or a claim no derivation settles.
+    void errata_row(errata_table& table, const std::vector<std::size_t>& group) const;
+    void errata_row(errata_table& table, const spec::open_claim& undecided) const;
 
 private:
     // latex_fragment.cpp: the printing shared by every part, and the derivation itself.

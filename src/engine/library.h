@@ -7,8 +7,10 @@
 
 #include "engine/derive.h"
 #include "spec/derivation.h"
+#include "spec/outline.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,9 @@ namespace impact::engine {
 struct library {
     derived_by_id derived;            ///< by id
     std::vector<std::string> order;   ///< ids in the order they were derived
+    /// The paper's places in print order (spec/outline.h), when the folder has them: the
+    /// errata's order. Set by whoever reads the folder; none: derivation by derivation.
+    std::optional<spec::paper_outline> outline;
 
     /// The derivations in derivation order.
     std::vector<const engine::derivation*> in_order() const;

@@ -10,6 +10,7 @@
 #include "pipeline/workers.h"
 #include "report/pdf.h"
 #include "report/report.h"
+#include "spec/outline.h"
 #include "verify/choice.h"
 
 #include <fmt/format.h>
@@ -61,6 +62,17 @@ std::optional<std::string> output_key(const fs::path& derivations)
         if (!in || !content)
             return std::nullopt;
         key += fmt::format("{} {}\n{}\n", path.filename().string(), content->size(), *content);
+    }
+    // The paper's order of places orders the errata: its places, not its comments.
+    try {
+        if (const std::optional<spec::paper_outline> outline = spec::read_paper_outline(derivations)) {
+            key += spec::paper_outline_name;
+            for (const spec::text& place : outline->places)
+                key += fmt::format("\n{} {}", place.value.size(), place.value);
+            key += "\n";
+        }
+    } catch (const error&) {
+        return std::nullopt;   // reported by the regeneration itself
     }
     return key;
 }
@@ -187,7 +199,7 @@ void add_documents(const library& lib, file_set& files)
         }
     }
     files["derivations.json"] = emit::derivations_json(lib.in_order());
-    files["errata.md"] = emit::errata_markdown(lib.in_order());
+    files["errata.md"] = emit::errata_markdown(lib.in_order(), lib.outline ? &*lib.outline : nullptr);
 }
 
 // The kernel headers and verification.md, the choice of forms taken from `store` where it
@@ -302,7 +314,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
                 return result;
             }
     shown.say("derivations", "deriving and proving");
-    const library lib = engine::derive_all(engine::read_directory(derivations));
+    library lib = engine::derive_all(engine::read_directory(derivations));
+    lib.outline = spec::read_paper_outline(derivations);
     shown.done("derivations");
     clock.lap("derivations with their checks");
     result.failures = failed_checks(lib);

@@ -66,7 +66,7 @@ file_map report_sources(const engine::library& lib)
 {
     file_map files = figure_files();
     files["report.tex"] = report::report_tex(lib.in_order(), {"figures/billiard", "figures/scatter_angle"},
-                                              {"figures/rough_beta_eff"});
+                                              {"figures/rough_beta_eff"}, lib.outline ? &*lib.outline : nullptr);
     return files;
 }
 

@@ -25,7 +25,8 @@ std::string report_preamble()
 }
 
 std::string report_tex(const std::vector<const engine::derivation*>& derivations,
-                       const std::vector<std::string>& figures, const std::vector<std::string>& beyond_figures)
+                       const std::vector<std::string>& figures, const std::vector<std::string>& beyond_figures,
+                       const spec::paper_outline* outline)
 {
     const emit::paper_count n = emit::count_paper(derivations);
 
@@ -81,7 +82,7 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
            ">{\\raggedright\\arraybackslash}p{2.8cm}@{}}\n"
            "\\toprule\nWhere & What & Verdict & Printed & Derived & Finding \\\\\n"
            "\\midrule\n\\endhead\n\\bottomrule\n\\endfoot\n";
-    const emit::errata_table table = emit::latex_errata(derivations);
+    const emit::errata_table table = emit::latex_errata(derivations, outline);
     out += table.rows;
     out += "\\end{longtable}}\n";
     if (!table.displays.empty())
