@@ -376,8 +376,15 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
 {
     const std::string errata = emit::errata_markdown(library().in_order());
     // Typed from the paper: the 5th sentence after Eq. 14 makes two claims (90 degrees for
-    // v_par >> v_perp, 0 degrees for v_par << v_perp), each a row of its own.
-    BOOST_TEST(errata_rows_at(errata, "Sec. III C, after Eq. 14, 5th sentence").size() == 2u);
+    // v_par >> v_perp, 0 degrees for v_par << v_perp) with its two limits swapped: one
+    // misprint, one row that disagrees, each limit found to hold at the other end.
+    const std::vector<std::string> swapped = errata_rows_at(errata, "Sec. III C, after Eq. 14, 5th sentence");
+    BOOST_TEST_REQUIRE(swapped.size() == 1u);
+    BOOST_TEST(swapped.front().find("**disagrees**") != std::string::npos, swapped.front());
+    BOOST_TEST(swapped.front().find("it holds for $v_{1,\\perp} \\to \\infty$ instead") != std::string::npos,
+               swapped.front());
+    BOOST_TEST(swapped.front().find("it holds for $v_{1,\\perp} \\to 0$ instead") != std::string::npos,
+               swapped.front());
     // Claims about the angle in degrees (90 and 0 degrees) are answered in the angle, not
     // its cosine.
     for (const char* place : {"Sec. III C, after Eq. 14, 5th sentence", "Sec. III C, after Eq. 14, 2nd sentence"})

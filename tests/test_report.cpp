@@ -277,10 +277,15 @@ BOOST_AUTO_TEST_CASE(the_errata_table_has_a_row_per_claim_and_says_undecided_wit
             rows.push_back(table.substr(at + 1, table.find("\\\\\n", at) - at));
         return rows;
     };
-    // Claims are never grouped ("2 claims"): the 5th sentence after Eq. 14 makes two
-    // claims (90 degrees when v_par >> v_perp, 0 degrees when v_par << v_perp), two rows.
+    // Claims are never counted ("2 claims"). The 5th sentence after Eq. 14 makes two claims
+    // (90 degrees when v_par >> v_perp, 0 degrees when v_par << v_perp) with the limits
+    // swapped: one finding, one row that disagrees, each check said.
     BOOST_TEST(table.find(" claims &") == std::string::npos);
-    BOOST_TEST(rows_at("Sec. III C, after Eq.~(14), 5th sentence").size() == 2u);
+    const std::vector<std::string> swapped = rows_at("Sec. III C, after Eq.~(14), 5th sentence");
+    BOOST_TEST_REQUIRE(swapped.size() == 1u);
+    BOOST_TEST(swapped[0].find("\\textbf{disagrees}") != std::string::npos, swapped[0]);
+    BOOST_TEST(swapped[0].find("the 1st check") != std::string::npos, swapped[0]);
+    BOOST_TEST(swapped[0].find("the 2nd check") != std::string::npos, swapped[0]);
     // What no derivation can settle, typed from the paper: Sec. III's opening about
     // experiment, undecided with the reason; never "disagrees".
     const std::vector<std::string> opening = rows_at("Sec. III, 1st paragraph");

@@ -218,4 +218,19 @@ BOOST_AUTO_TEST_CASE(what_no_rule_settles_is_sampled_and_says_so)
     BOOST_TEST(engine::to_string(v) == "sampled (200 points)");
 }
 
+// A sum beside a radical is not factored with it (factoring under a root may leave I
+// behind): the product's factors are taken apart, and the sum, a square here, is factored
+// on its own to find its sign.
+BOOST_AUTO_TEST_CASE(a_sum_beside_a_radical_is_factored_on_its_own)
+{
+    BOOST_TEST(proven("sqrt(x)*(y^2 - 2*y*z + z^2) >= 0"));
+    BOOST_TEST(proven("-(y^2 - 2*y*z + z^2)/sqrt(x) <= 0"));
+    const engine::verdict v = verdict_of("sqrt(x)*(y^2 - 2*y*z + z^2) >= 0");
+    std::string words;
+    for (const std::string& w : proof_words(v))
+        words += w + "\n";
+    BOOST_TEST(words.find("factored, (") != std::string::npos, words);
+    BOOST_TEST(words.find(")^2 >= 0 (an even power)") != std::string::npos, words);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

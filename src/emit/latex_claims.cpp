@@ -383,23 +383,32 @@ std::string fragment_writer::paper() const
     // One item per finding: a misprint that one finding explains in several components of
     // one equation (Eq. 9's v'_m) is shown once, the other components named.
     // The claims checked of one quote are one item when all are proven (what was proven of
-    // each said beside it), and an item each otherwise, so that each failure is said.
-    std::vector<std::vector<std::size_t>> rows;
+    // each said beside it), and an item each otherwise, so that each failure is said: the
+    // quote in the first, each saying what it checked.
+    struct item {
+        std::vector<std::size_t> row;
+        bool checked_apart = false;   // one of several checks of one quote that do not all hold
+        bool same_quote = false;      // ... and not the first: the quote is not repeated
+    };
+    std::vector<item> items;
     for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
         if (d_.paper_checks[row.front()].what == engine::paper_comparison::kind::claim && row.size() > 1 &&
             row_verdict(d_, row) != "agrees")
             for (std::size_t k : row)
-                rows.push_back({k});
+                items.push_back({{k}, true, k != row.front()});
         else
-            rows.push_back(row);
+            items.push_back({row});
     }
-    for (const std::vector<std::size_t>& row : rows) {
+    for (const item& it : items) {
+        const std::vector<std::size_t>& row = it.row;
         const engine::paper_comparison& p = d_.paper_checks[row.front()];
         const std::string what = subject(p);
         out += fmt::format("\\item {}, {}: ", paper_text(p.paper), what);
         bool after_display = false;
         if (p.what == engine::paper_comparison::kind::claim) {
-            out += fmt::format("``{}''", latex_prose(p.printed_text));
+            out += it.same_quote ? std::string("the same words") : fmt::format("``{}''", latex_prose(p.printed_text));
+            if (it.checked_apart && p.test)
+                out += ", checked as " + checked_claim_latex(*p.test, order_);
         } else {
             const std::string printed = as_printed(p);
             after_display = wants_display(printed);

@@ -181,13 +181,31 @@ private:
             return *argued;
         const bool radical = has_radical(e);
 
+        // A sum without a radical that factors (one that came here as a factor of a product
+        // with a radical, which is not factored whole: sqrt(k) (a^2 - 2 a b + b^2)): the
+        // signs of its factors.
+        if (!radical && depth < 3) {
+            const GiNaC::ex f = factored(e);
+            if (!f.is_equal(e) && (GiNaC::is_a<GiNaC::mul>(f) || GiNaC::is_a<GiNaC::power>(f))) {
+                const auto [s, why] = sign(f, depth + 1);
+                if (s.is_known()) {
+                    sign_reason reason(fmt::format("factored, {} {} ({})", text(f), s.describe(), why.words));
+                    reason.typeset.say("factored, ").math(f).say(s.negative ? (s.zero ? ", which is not positive"
+                                                                                      : ", which is negative")
+                                                                            : (s.zero ? ", which is not negative"
+                                                                                      : ", which is positive"));
+                    return {s, reason};
+                }
+            }
+        }
         // A - B with A, B >= 0 has the sign of A^2 - B^2, which has no radical where A - B
         // had one. The terms with radicals form one side and the rest the other (each
         // factored to find its sign), or else the terms are grouped by their own signs.
-        // Without a radical it gains nothing: the sum comes here factored, and A^2 - B^2
-        // factors back into A - B and A + B, the question asked again. Expanding and
-        // factoring it was most of the time of the sign proofs of rough spheres with
-        // Coulomb's cases (factor() on 33 to 39 terms, 0.15 to 0.25 s each, seventy times).
+        // Without a radical it gains nothing: the sum is factored (above, or before it came
+        // here), and A^2 - B^2 factors back into A - B and A + B, the question asked again.
+        // Expanding and factoring it was most of the time of the sign proofs of rough
+        // spheres with Coulomb's cases (factor() on 33 to 39 terms, 0.15 to 0.25 s each,
+        // seventy times).
         if (depth < 3 && radical) {
             GiNaC::ex a = 0, b = 0;
             GiNaC::ex radicals = 0, rest = 0;
@@ -449,10 +467,25 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
     const auto known = factored.find(e);
     if (known != factored.end())
         return known->second;
-    const GiNaC::ex f = worth_factoring(e) ? flattened(factor_reproducibly(e)) : e;
+    const bool worth = worth_factoring(e);
+    const GiNaC::ex f = worth ? flattened(factor_reproducibly(e)) : e;
     if (factored.size() >= 4096)  // bounded: a long run (the fuzzer) meets ever new polynomials
         factored.clear();
     factored.emplace(e, f);
+    // Its factors are irreducible: asked again (a sign proof asks of each factor), each is
+    // its own factorization, not another call of factor().
+    if (worth && !f.is_equal(e)) {
+        const auto irreducible = [&factored](const GiNaC::ex& part) {
+            const GiNaC::ex base = GiNaC::is_a<GiNaC::power>(part) ? part.op(0) : part;
+            if (GiNaC::is_a<GiNaC::add>(base))
+                factored.emplace(base, base);
+        };
+        if (GiNaC::is_a<GiNaC::mul>(f))
+            for (const GiNaC::ex& part : f)
+                irreducible(part);
+        else
+            irreducible(f);
+    }
     return f;
 }
 
