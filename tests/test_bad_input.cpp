@@ -624,7 +624,7 @@ BOOST_AUTO_TEST_CASE(a_paper_order_that_lists_nothing)
 {
     expect_refused({{"a.toml", with_claim_at("Sec. I")}, {"paper_order.txt", "# nothing yet\n\n"}},
                    "derivations/paper_order.txt: error: lists no place of the paper (a place per line, in the "
-                   "order the paper prints them; # starts a comment)");
+                   "order the paper prints them; a line starting with # is a comment)");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -191,11 +191,7 @@ constexpr std::size_t compared = 110;
 
 const engine::library& library()
 {
-    static const engine::library lib = [] {
-        engine::library l = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
-        l.outline = spec::read_paper_outline(IMPACT_SOURCE_DIR "/derivations");
-        return l;
-    }();
+    static const engine::library lib = engine::derive_folder(IMPACT_SOURCE_DIR "/derivations");
     return lib;
 }
 

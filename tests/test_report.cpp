@@ -27,7 +27,7 @@ struct generated {
     pipeline::file_set files;
     generated()
     {
-        lib = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
+        lib = engine::derive_folder(IMPACT_SOURCE_DIR "/derivations");
         files = pipeline::generate(lib);
         for (auto& [path, contents] : report::figures_and_report(lib, files))
             files[path] = contents;
@@ -119,7 +119,7 @@ BOOST_AUTO_TEST_CASE(a_folder_without_derivations_beyond_the_paper_compiles)
     const impact::testing::temporary_folder folder("impact-test-report");
     std::filesystem::copy_file(IMPACT_SOURCE_DIR "/derivations/eq08_inelastic_line.toml",
                                folder.root / "eq08_inelastic_line.toml");
-    const engine::library lib = engine::derive_all(engine::read_directory(folder.root.string()));
+    const engine::library lib = engine::derive_folder(folder.root.string());
     const pipeline::file_set files = pipeline::generate(lib);
     std::map<std::string, std::string> pdfs;
     BOOST_CHECK_NO_THROW(pdfs = report::figures_and_report(lib, files));

@@ -5,7 +5,10 @@
 #include "spec/derivation.h"
 #include "spec/outline.h"
 
+#include <filesystem>
 #include <string>
+
+#include <unistd.h>
 
 using impact::spec::parse_derivation;
 
@@ -252,6 +255,19 @@ BOOST_AUTO_TEST_CASE(the_paper_s_order_of_places_is_read_a_place_per_line)
     BOOST_TEST(o.places[2].value == "Sec. II B, 1st paragraph");
     BOOST_TEST(*o.position("Sec. II B, 1st paragraph") == 2u);
     BOOST_TEST(!o.position("Eq. 1"));
-    // Not a place of the paper's: nothing read from a folder without the file.
+    BOOST_TEST(*o.position("  Eq. 1a ") == 1u);
+    // A byte order mark is not part of the first place.
+    BOOST_TEST(impact::spec::parse_paper_outline("\xEF\xBB\xBF" "Abstract\n", "o.txt").places[0].value == "Abstract");
+    // Nothing read from a folder without the file; a folder of that name is refused.
     BOOST_TEST(!impact::spec::read_paper_outline(IMPACT_SOURCE_DIR "/tests"));
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("impact-test-spec-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder / impact::spec::paper_outline_name);
+    try {
+        impact::spec::read_paper_outline(folder);
+        BOOST_ERROR("a folder named paper_order.txt was read");
+    } catch (const impact::error& e) {
+        BOOST_TEST(e.message() == "not a file: the paper's order of places is read from a text file of this name");
+    }
+    std::filesystem::remove_all(folder);
 }

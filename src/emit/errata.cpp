@@ -196,6 +196,9 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                       "footnote. One place may be compared in more than one row (the components of a vector, two "
                       "claims of one sentence quoted apart). The paper's lines and claims are listed, typed from the paper, in "
                       "`tests/test_paper_lines.cpp`, which fails when one it lists as compared is not.\n\n";
+    out += outline ? "The rows follow the paper, in the order it prints their places (`derivations/" +
+                         std::string(spec::paper_outline_name) + "`).\n\n"
+                   : std::string("The rows go derivation by derivation.\n\n");
     out += fmt::format("{} printed lines and claims of the paper, {} of them compared, in {} rows: {} agree, {} "
                        "disagree, {} undecided.",
                        n.lines, n.compared, n.rows, n.agree, n.disagree, n.undecided);

@@ -12,9 +12,9 @@
 #pragma once
 
 #include "engine/derive.h"
-#include "spec/outline.h"
 #include "engine/order.h"
 #include "engine/written_form.h"
+#include "spec/outline.h"
 
 #include <ginac/ginac.h>
 

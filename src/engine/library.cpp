@@ -48,6 +48,13 @@ std::vector<spec::derivation> read_directory(const std::filesystem::path& direct
     return sources;
 }
 
+library derive_folder(const std::filesystem::path& directory)
+{
+    library lib = derive_all(read_directory(directory));
+    lib.outline = spec::read_paper_outline(directory);
+    return lib;
+}
+
 library derive_all(const std::vector<spec::derivation>& sources, const std::string& only)
 {
     std::map<std::string, const spec::derivation*> by_id;

@@ -20,7 +20,8 @@ struct library {
     derived_by_id derived;            ///< by id
     std::vector<std::string> order;   ///< ids in the order they were derived
     /// The paper's places in print order (spec/outline.h), when the folder has them: the
-    /// errata's order. Set by whoever reads the folder; none: derivation by derivation.
+    /// errata's order. Set by derive_folder and by the regeneration (which reads it once,
+    /// for its cache's key too); none: derivation by derivation.
     std::optional<spec::paper_outline> outline;
 
     /// The derivations in derivation order.
@@ -37,6 +38,10 @@ std::vector<std::filesystem::path> derivation_files(const std::filesystem::path&
 
 /// Derives `sources` in dependency order; with `only`, just that id and what it uses.
 library derive_all(const std::vector<spec::derivation>& sources, const std::string& only = "");
+
+/// Every derivation of a folder (read_directory, derive_all), with the paper's order of
+/// places that the folder's `paper_order.txt` gives (spec::read_paper_outline).
+library derive_folder(const std::filesystem::path& directory);
 
 /// The id of the derivation that `name` names: an id, or the path of one of the files.
 std::string resolve_id(const std::vector<spec::derivation>& sources, const std::string& name);

@@ -48,7 +48,7 @@ private:
 // derivation file's name and meaningful content. A comment changes nothing Impact writes
 // (no file it writes names a line of a derivation file), so a regeneration after one is
 // the one before it. None when a file is not TOML: deriving reports it.
-std::optional<std::string> output_key(const fs::path& derivations)
+std::optional<std::string> output_key(const fs::path& derivations, const std::optional<spec::paper_outline>& outline)
 {
     if (!fs::is_directory(derivations))
         return std::nullopt;
@@ -64,15 +64,11 @@ std::optional<std::string> output_key(const fs::path& derivations)
         key += fmt::format("{} {}\n{}\n", path.filename().string(), content->size(), *content);
     }
     // The paper's order of places orders the errata: its places, not its comments.
-    try {
-        if (const std::optional<spec::paper_outline> outline = spec::read_paper_outline(derivations)) {
-            key += spec::paper_outline_name;
-            for (const spec::text& place : outline->places)
-                key += fmt::format("\n{} {}", place.value.size(), place.value);
-            key += "\n";
-        }
-    } catch (const error&) {
-        return std::nullopt;   // reported by the regeneration itself
+    if (outline) {
+        key += spec::paper_outline_name;
+        for (const spec::text& place : outline->places)
+            key += fmt::format("\n{} {}", place.value.size(), place.value);
+        key += "\n";
     }
     return key;
 }
@@ -298,7 +294,10 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     stopwatch clock(&result.stages);
     // Nothing that changes what Impact writes: the output of the last regeneration of
     // these files (the cache checks the entry's length and SHA-256).
-    const std::optional<std::string> key = store ? output_key(derivations) : std::nullopt;
+    // The paper's order of places, read once, before anything is derived: for the cache's
+    // key and for the errata.
+    const std::optional<spec::paper_outline> outline = spec::read_paper_outline(derivations);
+    const std::optional<std::string> key = store ? output_key(derivations, outline) : std::nullopt;
     if (key)
         if (const std::optional<std::string> entry = store->get("output", *key))
             if (const std::optional<file_set> cached = unpacked(*entry)) {
@@ -315,7 +314,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
             }
     shown.say("derivations", "deriving and proving");
     library lib = engine::derive_all(engine::read_directory(derivations));
-    lib.outline = spec::read_paper_outline(derivations);
+    lib.outline = outline;
     shown.done("derivations");
     clock.lap("derivations with their checks");
     result.failures = failed_checks(lib);

@@ -71,8 +71,10 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
                        "a printed form; a misprint that one finding explains in several components of one equation "
                        "is one row. Printed forms are set as the paper prints "
                        "them, term by term and factor by factor, nothing merged or simplified, beside the derived "
-                       "result in the same variables; forms too wide for the table are set under it.\n\n",
-                       n.lines, n.compared, n.rows, n.agree, n.disagree, n.undecided, not_compared);
+                       "result in the same variables; forms too wide for the table are set under it. {}\n\n",
+                       n.lines, n.compared, n.rows, n.agree, n.disagree, n.undecided, not_compared,
+                       outline ? "The rows follow the paper, in the order it prints their places."
+                               : "The rows go derivation by derivation.");
     out += "{\\footnotesize\\setlength{\\tabcolsep}{3pt}\\renewcommand{\\arraystretch}{1.3}\n"
            "\\begin{longtable}{@{}>{\\raggedright\\arraybackslash}p{1.9cm}"
            ">{\\raggedright\\arraybackslash}p{1.8cm}"

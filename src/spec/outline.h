@@ -18,7 +18,8 @@ struct paper_outline {
     std::string file;
     std::vector<text> places;
 
-    /// The position of `place` in print order; none when the outline does not list it.
+    /// The position of `place` (spaces around it ignored) in print order; none when the
+    /// outline does not list it.
     std::optional<std::size_t> position(const std::string& place) const;
 };
 
@@ -26,12 +27,14 @@ struct paper_outline {
 inline constexpr const char* paper_outline_name = "paper_order.txt";
 
 /// Reads an outline from text, `file` naming it in messages: a place per line, blank lines
-/// and lines starting with `#` skipped, spaces around a place ignored. A place listed
-/// twice is an error at its second line. Throws `impact::error`.
+/// and lines starting with `#` (after any spaces) skipped, spaces around a place and a byte
+/// order mark ignored. A place listed twice is an error at its second line; an outline
+/// with no place, an error at the file. Throws `impact::error`.
 paper_outline parse_paper_outline(const std::string& contents, const std::string& file);
 
 /// The outline of a folder of derivation files (`paper_order.txt`), none when it has no
-/// such file. Throws `impact::error` when it cannot be read or is malformed.
+/// such file. Throws `impact::error` when it is not a file, cannot be read, is larger than
+/// a megabyte or is malformed.
 std::optional<paper_outline> read_paper_outline(const std::filesystem::path& folder);
 
 } // namespace impact::spec
