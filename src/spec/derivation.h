@@ -214,6 +214,10 @@ struct derivation {
     std::vector<kernel> kernels;
 };
 
+/// The bytes of a file Impact reads (a derivation file, the paper's order of places): at
+/// most a megabyte, anything larger being a mistake. Throws `impact::error`.
+std::string read_input_file(const std::string& path);
+
 /// Reads and validates the structure of one derivation file. Throws `impact::error`.
 derivation read_derivation(const std::string& path);
 

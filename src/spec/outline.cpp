@@ -1,28 +1,15 @@
 #include "spec/outline.h"
 
+#include "spec/table_reader.h"
+
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 namespace impact::spec {
 
-namespace {
-
-// The file's size limit, as a derivation file's.
-constexpr std::uintmax_t max_outline_bytes = 1 << 20;
-
-std::string trimmed(const std::string& s)
-{
-    const std::size_t begin = s.find_first_not_of(" \t");
-    if (begin == std::string::npos)
-        return "";
-    return s.substr(begin, s.find_last_not_of(" \t") - begin + 1);
-}
-
-} // namespace
+using detail::trimmed;
 
 std::optional<std::size_t> paper_outline::position(const std::string& place) const
 {
@@ -44,11 +31,10 @@ paper_outline parse_paper_outline(const std::string& contents, const std::string
     for (std::uint32_t number = 1; std::getline(in, line); ++number) {
         if (!line.empty() && line.back() == '\r')
             line.pop_back();
-        const std::size_t begin = line.find_first_not_of(" \t");
-        if (begin == std::string::npos || line[begin] == '#')
+        const std::string place = trimmed(line);
+        if (place.empty() || place.front() == '#')
             continue;
-        const std::size_t end = line.find_last_not_of(" \t");
-        const std::string place = line.substr(begin, end - begin + 1);
+        const std::size_t begin = line.find_first_not_of(" \t");
         const source_location where{file, number, static_cast<std::uint32_t>(begin + 1)};
         const auto [seen, inserted] = first_line.emplace(place, number);
         if (!inserted)
@@ -75,16 +61,7 @@ std::optional<paper_outline> read_paper_outline(const std::filesystem::path& fol
         throw error({name, 0, 0}, "cannot read the paper's order of places: " + failed.message());
     if (status.type() != std::filesystem::file_type::regular)
         throw error({name, 0, 0}, "not a file: the paper's order of places is read from a text file of this name");
-    const std::uintmax_t size = std::filesystem::file_size(path, failed);
-    if (!failed && size > max_outline_bytes)
-        throw error({name, 0, 0}, fmt::format("file is {} bytes, larger than the limit of {} bytes", size,
-                                              max_outline_bytes));
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw error({name, 0, 0}, "cannot open the file: " + std::error_code(errno, std::generic_category()).message());
-    std::ostringstream contents;
-    contents << in.rdbuf();
-    return parse_paper_outline(contents.str(), name);
+    return parse_paper_outline(read_input_file(name), name);
 }
 
 } // namespace impact::spec

@@ -9,9 +9,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <system_error>
 
 #include "spec/table_reader.h"
 
@@ -499,11 +501,11 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     return d;
 }
 
-derivation read_derivation(const std::string& path)
+std::string read_input_file(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw error({path, 0, 0}, "cannot open the file");
+        throw error({path, 0, 0}, "cannot open the file: " + std::error_code(errno, std::generic_category()).message());
     in.seekg(0, std::ios::end);
     const auto size = static_cast<std::size_t>(in.tellg());
     if (size > max_file_bytes)
@@ -512,7 +514,12 @@ derivation read_derivation(const std::string& path)
     in.seekg(0);
     std::ostringstream contents;
     contents << in.rdbuf();
-    return parse_derivation(contents.str(), path);
+    return contents.str();
+}
+
+derivation read_derivation(const std::string& path)
+{
+    return parse_derivation(read_input_file(path), path);
 }
 
 } // namespace impact::spec
