@@ -6,11 +6,15 @@
 
 #include "derivation_support.h"
 #include "engine/derive.h"
+#include "engine/forked.h"
 #include "engine/polynomial.h"
 #include "engine/sign.h"
 #include "engine/library.h"
 
 #include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -644,3 +648,81 @@ BOOST_AUTO_TEST_CASE(a_try_s_effort_cuts_a_sign_short_and_forgets_it)
     BOOST_TEST(engine::prove_sign(e, given).sign.is_positive());
     BOOST_TEST(engine::prove_sign(e, engine::with_effort(given, 1000)).sign.is_positive());
 }
+
+// GiNaC's factor() may never return (engine/forked.h): polynomials in several symbols are
+// factored in a child process with a limit of CPU time.
+BOOST_AUTO_TEST_SUITE(factoring_in_a_child)
+
+// The factors of p that are not numbers.
+std::size_t factors(const GiNaC::ex& p)
+{
+    if (!GiNaC::is_a<GiNaC::mul>(p))
+        return GiNaC::is_a<GiNaC::numeric>(p) ? 0 : 1;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < p.nops(); ++i)
+        count += GiNaC::is_a<GiNaC::numeric>(p.op(i)) ? 0 : 1;
+    return count;
+}
+
+BOOST_AUTO_TEST_CASE(gives_the_factors_in_the_same_symbols)
+{
+    const GiNaC::symbol x("x"), y("y"), z("z");
+    // x^2 y - y^3 + x^2 z - y^2 z = (x - y)(x + y)(y + z)
+    const GiNaC::ex p = x * x * y - y * y * y + x * x * z - y * y * z;
+    const std::optional<GiNaC::ex> f = engine::factor_in_child(p, 0, 20);
+    BOOST_REQUIRE(f);
+    BOOST_TEST(factors(*f) == 3u);
+    BOOST_TEST(GiNaC::expand(*f - p).is_zero());
+    BOOST_TEST(GiNaC::expand(engine::factor_reproducibly(p) - p).is_zero());
+}
+
+BOOST_AUTO_TEST_CASE(keeps_apart_symbols_that_share_a_name)
+{
+    const GiNaC::symbol x("x"), other_x("x");
+    const GiNaC::ex p = x * x - other_x * other_x;  // (x - x')(x + x')
+    const std::optional<GiNaC::ex> f = engine::factor_in_child(p, 0, 20);
+    BOOST_REQUIRE(f);
+    BOOST_TEST(factors(*f) == 2u);
+    BOOST_TEST(GiNaC::expand(*f - p).is_zero());
+}
+
+BOOST_AUTO_TEST_CASE(abandons_a_factorization_past_its_limit_and_goes_on)
+{
+    // The Swinnerton-Dyer polynomial of degree 32, the product of x +- sqrt(2) +- sqrt(3)
+    // +- sqrt(5) +- sqrt(7) +- sqrt(11): irreducible, but of 16 factors modulo every prime,
+    // whose combinations factor() tries in turn; it takes 47 s here, past a limit of 1 s.
+    const GiNaC::symbol x("x");
+    GiNaC::ex slow = x;
+    for (int prime : {2, 3, 5, 7, 11}) {
+        const GiNaC::ex root = GiNaC::sqrt(GiNaC::ex(prime));
+        slow = GiNaC::expand(slow.subs(x == x - root) * slow.subs(x == x + root));
+    }
+    BOOST_REQUIRE(slow.degree(x) == 32);
+    BOOST_TEST(!engine::factor_in_child(slow, 0, 1));
+    // The next one is factored by a new child.
+    const GiNaC::symbol a("a"), b("b");
+    const std::optional<GiNaC::ex> again = engine::factor_in_child(a * a - b * b, 0, 20);
+    BOOST_REQUIRE(again);
+    BOOST_TEST(factors(*again) == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(a_forked_process_factors_with_a_child_of_its_own)
+{
+    const GiNaC::symbol x("x"), y("y");
+    BOOST_REQUIRE(engine::factor_in_child(x * x - y * y, 0, 20));  // this process's child started
+    const pid_t pid = ::fork();
+    BOOST_REQUIRE(pid >= 0);
+    if (pid == 0) {
+        const std::optional<GiNaC::ex> f = engine::factor_in_child(x * x - 4 * y * y, 0, 20);
+        ::_exit(f && factors(*f) == 2 && GiNaC::expand(*f - (x * x - 4 * y * y)).is_zero() ? 0 : 1);
+    }
+    int status = 0;
+    BOOST_REQUIRE(::waitpid(pid, &status, 0) == pid);
+    BOOST_TEST((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    // This process's own child still answers.
+    const std::optional<GiNaC::ex> f = engine::factor_in_child(x * x - 9 * y * y, 0, 20);
+    BOOST_REQUIRE(f);
+    BOOST_TEST(factors(*f) == 2u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,7 @@
 #include "engine/polynomial.h"
 
+#include "engine/forked.h"
+
 #include <cln/rational.h>
 
 #include <algorithm>
@@ -342,8 +344,17 @@ bool irreducible_by_degree_one(const GiNaC::ex& p)
 // Not for threads: std::rand()'s state is the process's (Impact's workers are processes).
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
 {
-    if (const GiNaC::ex expanded = GiNaC::expand(e); irreducible_by_degree_one(expanded))
+    const GiNaC::ex expanded = GiNaC::expand(e);
+    if (irreducible_by_degree_one(expanded))
         return expanded;
+    GiNaC::exset symbols;
+    gather_symbols(expanded, symbols);
+    if (symbols.size() > 1) {
+        // In several symbols factor() may never return (engine/forked.h): it runs in a
+        // child, and a polynomial it does not factor within the limit is left as it is.
+        constexpr unsigned cpu_seconds = 20;
+        return factor_in_child(e, options, cpu_seconds).value_or(e);
+    }
     std::srand(1);
     return GiNaC::factor(e, options);
 }

@@ -33,7 +33,9 @@ expansion expand_numerator(const GiNaC::ex& e);
 /// in one run and a quarter of an hour in another, depending on what had been factored
 /// (or taken from a cache) before. The generator is seeded alike before every call.
 /// A sum that is of degree one in a symbol whose two coefficients have no common factor
-/// is irreducible, and returned expanded without calling factor().
+/// is irreducible, and returned expanded without calling factor(). A polynomial in more
+/// than one symbol is factored in a child process, given 20 s of CPU time (factor() may
+/// never return: engine/forked.h), and returned as it is if it takes longer.
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options = 0);
 
 } // namespace impact::engine

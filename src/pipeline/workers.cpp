@@ -146,13 +146,6 @@ struct crew {
     }
 };
 
-// fork() while no thread of Impact's holds a lock the child could need (workers.h).
-pid_t locked_fork()
-{
-    const std::lock_guard<std::mutex> still(fork_lock());
-    return ::fork();
-}
-
 // Forks a worker for `task`; nothing when the system refuses a process or a pipe.
 std::optional<worker> start(const verify::text_task& task, std::size_t index)
 {
@@ -161,7 +154,7 @@ std::optional<worker> start(const verify::text_task& task, std::size_t index)
     // pipe open (the parent would wait for it to see the worker's end).
     if (::pipe2(fds, O_CLOEXEC) != 0)
         return std::nullopt;
-    const pid_t pid = locked_fork();
+    const pid_t pid = engine::locked_fork();
     if (pid < 0) {
         ::close(fds[0]);
         ::close(fds[1]);
@@ -292,18 +285,12 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
     return texts;
 }
 
-std::mutex& fork_lock()
-{
-    static std::mutex lock;
-    return lock;
-}
-
 beside::beside(verify::text_task task) : task_(std::move(task))
 {
     result_ = std::tmpfile();
     if (!result_)
         return;
-    pid_ = locked_fork();
+    pid_ = engine::locked_fork();
     if (pid_ == 0) {
         ::prctl(PR_SET_NAME, "impact-report", 0, 0, 0);
         be_worker(task_, ::fileno(result_));

@@ -17,6 +17,7 @@
 // `fork_lock()` while it prints.
 #pragma once
 
+#include "engine/forked.h"
 #include "spec/error.h"
 #include "verify/choice.h"
 
@@ -49,8 +50,9 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
 verify::task_runner worker_runner(unsigned jobs);
 
 /// Held by Impact's threads (the progress line's painter) while they run anything that
-/// could take a lock a forked child would need, and around every fork().
-std::mutex& fork_lock();
+/// could take a lock a forked child would need, and around every fork() (the engine's
+/// factorizations fork too).
+using engine::fork_lock;
 
 /// `task` run in a process forked beside this one, its text collected by `get()`: the
 /// report's PDFs, compiled while the kernel forms are chosen on this thread. The child
