@@ -118,8 +118,7 @@ std::vector<std::string> block_arguments(const std::vector<lane_input>& inputs, 
 
 // The pairs a batch loop left to the scalar kernel, found by their status `underflow` (a value
 // its underflow test tests may be below the normal range, or 0): each resolved by the scalar
-// kernel, as one collision, which decides its status exactly. Called after a block whose
-// loop says it left a pair.
+// kernel, as one collision, which decides its status exactly. Called after each block.
 void print_settle(std::string& out, const engine::kernel& k, const std::string& loop,
                   const std::vector<lane_input>& inputs, form which)
 {
@@ -142,24 +141,16 @@ void print_settle(std::string& out, const engine::kernel& k, const std::string& 
     out += fmt::format("\n// The pairs {0} left to the scalar {1} (status {2}: a value it tests for underflow may be\n"
                        "// below the normal range), each resolved by it, which decides exactly.\n"
                        "template <class Real>\ninline void {0}_settle(std::size_t count, {3}) noexcept\n{{\n"
+                       "    bool doubtful = false;\n"
+                       "    for (std::size_t i = 0; i < count; ++i)\n"
+                       "        doubtful |= status_[i] == status::{2};\n"
+                       "    if (!doubtful)\n        return;\n"
                        "    for (std::size_t i = 0; i < count; ++i) {{\n"
                        "        if (status_[i] != status::{2})\n            continue;\n"
                        "        const auto out = {1}<Real>({4});\n{5}"
                        "        status_[i] = out.status;\n    }}\n}}\n",
                        loop, k.name, underflow, loop_parameters(inputs, true), fmt::join(arguments, ", "),
                        fmt::join(writes, ""));
-}
-
-// The call of a batch loop on `count` pairs (a block, or the pairs after the last), and of
-// `settle` on them where the loop left a pair to the scalar kernel.
-std::string block_call(const std::string& call, const std::string& loop, const std::string& count,
-                       const std::string& arguments, const std::string& settle_arguments, bool settles,
-                       const std::string& indent)
-{
-    if (!settles)
-        return fmt::format("{}{}({}, {});\n", indent, call, count, arguments);
-    return fmt::format("{0}if ({1}({2}, {3}))\n{0}    {4}_settle<Real>({2}, {5});\n", indent, call, count, arguments,
-                       loop, settle_arguments);
 }
 
 constexpr const char* status_ahead = "            if constexpr (with_status)\n"
@@ -178,16 +169,17 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
         ahead.push_back(status_ahead);
     const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
     const std::string arguments = fmt::format("{}", fmt::join(block_arguments(inputs, with_status, settles), ", "));
+    const std::string settle = settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, arguments) : "";
     out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
                        "// processor's own prefetching, following so many arrays, falls behind.\n"
                        "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
-                       "    constexpr std::size_t block = 8, ahead = 64;\n{5}    std::size_t b = 0;\n"
+                       "    constexpr std::size_t block = 8, ahead = 64;\n{6}    std::size_t b = 0;\n"
                        "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
-                       "{4}    }}\n{6}}}\n",
+                       "        {4}(block, {5});\n{7}    }}\n    {4}(count - b, {5});\n{8}}}\n",
                        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
-                       fmt::join(ahead, ""), block_call(call, loop, "block", arguments, arguments, settles, "        "),
+                       fmt::join(ahead, ""), call, arguments,
                        settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "",
-                       block_call(call, loop, "count - b", arguments, arguments, settles, "    "));
+                       settle, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "");
 }
 
 
@@ -247,7 +239,7 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read\n"
         "// at offsets 128 bytes apart, as if staggered.\n"
         "template <class Real{1}>\ninline void {0}_skewed(std::size_t count, {2}) noexcept\n{{\n"
-        "    constexpr std::size_t block = 8, ahead = 64, ring = {3}, read_only = {4};\n{9}"
+        "    constexpr std::size_t block = 8, ahead = 64, ring = {3}, read_only = {4};\n{12}"
         "    const Real* const from[read_only] = {{{5}}};\n"
         "    alignas(64) Real stage[read_only][ring][block];\n"
         "    auto lead = [](std::size_t k) {{ return 2 * (k + 1); }};\n"
@@ -266,15 +258,13 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "            if (j + lead(k) < blocks)\n"
         "                read(k, j + lead(k));\n"
         "        const std::size_t r = j % ring;\n"
-        "{7}"
+        "        {7}(block, {8});\n{10}"
         "    }}\n"
-        "{8}}}\n",
+        "    {7}(count - b, {9});\n{11}}}\n",
         loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, starts.size(),
-        fmt::join(starts, ", "), fmt::join(ahead, ""),
-        block_call(call, loop, "block", fmt::format("{}", fmt::join(from_block, ", ")),
-                   fmt::format("{}", fmt::join(at_end, ", ")), settles, "        "),
-        block_call(call, loop, "count - b", fmt::format("{}", fmt::join(at_end, ", ")),
-                   fmt::format("{}", fmt::join(at_end, ", ")), settles, "    "),
+        fmt::join(starts, ", "), fmt::join(ahead, ""), call, fmt::join(from_block, ", "), fmt::join(at_end, ", "),
+        settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, fmt::join(at_end, ", ")) : "",
+        settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, fmt::join(at_end, ", ")) : "",
         settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "");
 }
 
@@ -316,8 +306,11 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     out += "\nnamespace detail {\n\n";
     if (with_status)
         print_input_k(out, loop, plan);
-    // The loop's head is printed once its body is known (whether it leaves pairs to `settle`).
-    const std::size_t head_at = out.size();
+    out += fmt::format("// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
+                       "// block's call runs one pass of 8 pairs.\n", k.name, n);
+    out += fmt::format("template <class Real{}>\nIMPACT_ALWAYS_INLINE void {}(std::size_t count, {}) noexcept\n{{\n"
+                       "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
+                       with_status ? ", bool with_status" : "", loop, loop_parameters(inputs, with_status));
 
     // The status, from the guards on the values as given.
     const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
@@ -481,33 +474,16 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                                "            status_[i] = detail::blend(resolved & !written, status::{}, outcome);\n",
                                out_of_range);
         else if (code.underflows.empty())  // always: a fixed sphere is found by its status (`settle`)
-            out += fmt::format("        const impact::status decided = detail::blend(resolved & !written, status::{}, outcome);\n",
-                               out_of_range);
+            out += fmt::format("        status_[i] = detail::blend(resolved & !written, status::{}, outcome);\n", out_of_range);
         else  // always: a doubtful pair is found by its status (`settle`)
-            out += fmt::format("        const impact::status decided = detail::blend(resolved & !written, detail::blend(usable & finite, status::{}, status::{}), outcome);\n",
+            out += fmt::format("        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::{}, status::{}), outcome);\n",
                                underflow, out_of_range);
-        if (!code.underflows.empty() || !k.limits.empty())
-            out += fmt::format("        status_[i] = decided;\n        left |= std::int64_t(decided == status::{});\n", underflow);
     } else {
         for (const auto& [target, result] : writes)
             out += fmt::format("        {}_[i] = {};\n", target, result);
     }
-    // A loop that may leave pairs to the scalar kernel (print_settle) says whether it did:
-    // an int64 OR over its pairs, which compilers vectorise. A scan of the block's statuses
-    // after the loop, as `settle` makes, GCC 12 made lane by lane: a fifth of the fast 2D loop.
+    out += "    }\n}\n";
     const bool settles = with_status && (!code.underflows.empty() || !k.limits.empty());
-    out += settles ? "    }\n    return left;\n}\n" : "    }\n}\n";
-    out.insert(head_at,
-               fmt::format("// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
-                           "// block's call runs one pass of 8 pairs.{}\n"
-                           "template <class Real{}>\nIMPACT_ALWAYS_INLINE {} {}(std::size_t count, {}) noexcept\n{{\n{}"
-                           "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
-                           k.name, n,
-                           settles ? " It returns whether it left a pair to the scalar kernel (status\n"
-                                     "// underflow), for `settle` to resolve."
-                                   : "",
-                           with_status ? ", bool with_status" : "", settles ? "std::int64_t" : "void", loop,
-                           loop_parameters(inputs, with_status), settles ? "    std::int64_t left = 0;\n" : ""));
     if (settles)
         print_settle(out, k, loop, inputs, which);
     print_blocks(out, loop, inputs, with_status, settles);

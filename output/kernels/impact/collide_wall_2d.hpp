@@ -130,12 +130,10 @@ template <class Real>
 constexpr int collide_wall_batch_2d_k = input_k<Real>(-1, 64, 1592, 1558);
 
 // The loop of collide_wall_batch in 2D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs. It returns whether it left a pair to the scalar kernel (status
-// underflow), for `settle` to resolve.
+// block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_wall_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    std::int64_t left = 0;
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
         // The status, as the scalar kernel decides it: the first guard that fails.
@@ -204,11 +202,8 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_2d(std::size_t count, const
         const std::int64_t written = usable & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
-        const impact::status decided = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-        status_[i] = decided;
-        left |= std::int64_t(decided == status::underflow);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
-    return left;
 }
 
 // The pairs collide_wall_batch_2d left to the scalar collide_wall (status underflow: a value it tests for underflow may be
@@ -216,6 +211,11 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_2d(std::size_t count, const
 template <class Real>
 inline void collide_wall_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
     for (std::size_t i = 0; i < count; ++i) {
         if (status_[i] != status::underflow)
             continue;
@@ -248,11 +248,11 @@ inline void collide_wall_batch_2d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (collide_wall_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own))
-            collide_wall_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    if (collide_wall_batch_2d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own))
-        collide_wall_batch_2d_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_2d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_2d_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
@@ -362,12 +362,10 @@ template <class Real>
 constexpr int collide_wall_batch_2d_fast_k = input_k<Real>(9, 144, 2698, 2674);
 
 // The loop of collide_wall_batch in 2D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs. It returns whether it left a pair to the scalar kernel (status
-// underflow), for `settle` to resolve.
+// block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_wall_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    std::int64_t left = 0;
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
         // The status, as the scalar kernel decides it: the first guard that fails.
@@ -422,11 +420,8 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_2d_fast(std::size_t count, 
         const std::int64_t written = usable & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
-        const impact::status decided = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-        status_[i] = decided;
-        left |= std::int64_t(decided == status::underflow);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
-    return left;
 }
 
 // The pairs collide_wall_batch_2d_fast left to the scalar collide_wall (status underflow: a value it tests for underflow may be
@@ -434,6 +429,11 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_2d_fast(std::size_t count, 
 template <class Real>
 inline void collide_wall_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
     for (std::size_t i = 0; i < count; ++i) {
         if (status_[i] != status::underflow)
             continue;
@@ -466,11 +466,11 @@ inline void collide_wall_batch_2d_fast_ahead(std::size_t count, const Real* IMPA
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own))
-            collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    if (collide_wall_batch_2d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own))
-        collide_wall_batch_2d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_2d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_2d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail

@@ -154,12 +154,10 @@ template <class Real>
 constexpr int collide_wall_batch_3d_k = input_k<Real>(-1, 63, 1591, 1557);
 
 // The loop of collide_wall_batch in 3D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs. It returns whether it left a pair to the scalar kernel (status
-// underflow), for `settle` to resolve.
+// block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_wall_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    std::int64_t left = 0;
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
         // The status, as the scalar kernel decides it: the first guard that fails.
@@ -245,11 +243,8 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_3d(std::size_t count, const
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
         v_z_[i] = detail::blend(written, v_z_out, v_z_[i]);
-        const impact::status decided = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-        status_[i] = decided;
-        left |= std::int64_t(decided == status::underflow);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
-    return left;
 }
 
 // The pairs collide_wall_batch_3d left to the scalar collide_wall (status underflow: a value it tests for underflow may be
@@ -257,6 +252,11 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_3d(std::size_t count, const
 template <class Real>
 inline void collide_wall_batch_3d_settle(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
     for (std::size_t i = 0; i < count; ++i) {
         if (status_[i] != status::underflow)
             continue;
@@ -294,11 +294,11 @@ inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (collide_wall_batch_3d<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own))
-            collide_wall_batch_3d_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_3d<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_3d_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    if (collide_wall_batch_3d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own))
-        collide_wall_batch_3d_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_3d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_3d_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
@@ -420,12 +420,10 @@ template <class Real>
 constexpr int collide_wall_batch_3d_fast_k = input_k<Real>(9, 144, 2698, 2674);
 
 // The loop of collide_wall_batch in 3D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs. It returns whether it left a pair to the scalar kernel (status
-// underflow), for `settle` to resolve.
+// block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_3d_fast(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_wall_batch_3d_fast(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    std::int64_t left = 0;
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
         // The status, as the scalar kernel decides it: the first guard that fails.
@@ -487,11 +485,8 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_3d_fast(std::size_t count, 
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
         v_z_[i] = detail::blend(written, v_z_out, v_z_[i]);
-        const impact::status decided = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-        status_[i] = decided;
-        left |= std::int64_t(decided == status::underflow);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
-    return left;
 }
 
 // The pairs collide_wall_batch_3d_fast left to the scalar collide_wall (status underflow: a value it tests for underflow may be
@@ -499,6 +494,11 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_batch_3d_fast(std::size_t count, 
 template <class Real>
 inline void collide_wall_batch_3d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
     for (std::size_t i = 0; i < count; ++i) {
         if (status_[i] != status::underflow)
             continue;
@@ -536,11 +536,11 @@ inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPA
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (collide_wall_batch_3d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own))
-            collide_wall_batch_3d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_3d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        collide_wall_batch_3d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
     }
-    if (collide_wall_batch_3d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own))
-        collide_wall_batch_3d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_3d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_3d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail

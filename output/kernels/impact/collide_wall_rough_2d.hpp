@@ -287,12 +287,10 @@ template <class Real>
 constexpr int collide_wall_rough_batch_2d_k = input_k<Real>(-1, -1, 561, 526);
 
 // The loop of collide_wall_rough_batch in 2D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs. It returns whether it left a pair to the scalar kernel (status
-// underflow), for `settle` to resolve.
+// block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE std::int64_t collide_wall_rough_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    std::int64_t left = 0;
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
         // The status, as the scalar kernel decides it: the first guard that fails.
@@ -475,11 +473,8 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_rough_batch_2d(std::size_t count,
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
         w_[i] = detail::blend(written, w_out, w_[i]);
-        const impact::status decided = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-        status_[i] = decided;
-        left |= std::int64_t(decided == status::underflow);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
-    return left;
 }
 
 // The pairs collide_wall_rough_batch_2d left to the scalar collide_wall_rough (status underflow: a value it tests for underflow may be
@@ -487,6 +482,11 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_rough_batch_2d(std::size_t count,
 template <class Real>
 inline void collide_wall_rough_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
     for (std::size_t i = 0; i < count; ++i) {
         if (status_[i] != status::underflow)
             continue;
@@ -525,11 +525,11 @@ inline void collide_wall_rough_batch_2d_ahead(std::size_t count, const Real* IMP
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (collide_wall_rough_batch_2d<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own))
-            collide_wall_rough_batch_2d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_wall_rough_batch_2d<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_wall_rough_batch_2d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
     }
-    if (collide_wall_rough_batch_2d<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own))
-        collide_wall_rough_batch_2d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_wall_rough_batch_2d<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_wall_rough_batch_2d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
@@ -741,12 +741,10 @@ template <class Real>
 constexpr int collide_wall_rough_batch_2d_fast_k = input_k<Real>(-1, 50, 1070, 1054);
 
 // The loop of collide_wall_rough_batch in 2D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs. It returns whether it left a pair to the scalar kernel (status
-// underflow), for `settle` to resolve.
+// block's call runs one pass of 8 pairs.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE std::int64_t collide_wall_rough_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
+IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    std::int64_t left = 0;
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < count; ++i) {
         // The status, as the scalar kernel decides it: the first guard that fails.
@@ -870,11 +868,8 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_rough_batch_2d_fast(std::size_t c
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
         w_[i] = detail::blend(written, w_out, w_[i]);
-        const impact::status decided = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-        status_[i] = decided;
-        left |= std::int64_t(decided == status::underflow);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
     }
-    return left;
 }
 
 // The pairs collide_wall_rough_batch_2d_fast left to the scalar collide_wall_rough (status underflow: a value it tests for underflow may be
@@ -882,6 +877,11 @@ IMPACT_ALWAYS_INLINE std::int64_t collide_wall_rough_batch_2d_fast(std::size_t c
 template <class Real>
 inline void collide_wall_rough_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
     for (std::size_t i = 0; i < count; ++i) {
         if (status_[i] != status::underflow)
             continue;
@@ -920,11 +920,11 @@ inline void collide_wall_rough_batch_2d_fast_ahead(std::size_t count, const Real
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (collide_wall_rough_batch_2d_fast<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own))
-            collide_wall_rough_batch_2d_fast_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_wall_rough_batch_2d_fast<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_wall_rough_batch_2d_fast_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
     }
-    if (collide_wall_rough_batch_2d_fast<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own))
-        collide_wall_rough_batch_2d_fast_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_wall_rough_batch_2d_fast<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_wall_rough_batch_2d_fast_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
 }
 
 } // namespace detail
