@@ -11,6 +11,7 @@
 #include "report/report.h"
 #include "support.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <unistd.h>
 #include <filesystem>
@@ -203,6 +204,85 @@ std::vector<std::string> code_tokens(const std::string& text)
 }
 
 } // namespace
+
+// The report looked at as a reader sees it: each page rendered (pdftoppm, grey, 40 dots an
+// inch). A page must have something on it, and nothing may be drawn in the outer 1.5 cm of
+// either side (the text block starts 2 cm in): a line, table, display or picture too wide
+// for the page shows there, whatever the log says.
+namespace {
+
+struct rendered_page {
+    std::size_t ink = 0;         // pixels darker than mid-grey
+    std::size_t in_margins = 0;  // ... within 1.5 cm of the left or right edge
+};
+
+std::vector<rendered_page> rendered_pages(const std::string& pdf)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("impact-test-render-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    {
+        std::ofstream(dir / "report.pdf", std::ios::binary) << pdf;
+    }
+    constexpr int dpi = 40;
+    const std::string command = "pdftoppm -q -gray -r " + std::to_string(dpi) + " '" + (dir / "report.pdf").string() +
+                                "' '" + (dir / "page").string() + "'";
+    BOOST_TEST_REQUIRE(std::system(command.c_str()) == 0, "pdftoppm failed (poppler-utils)");
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        if (entry.path().extension() == ".pgm")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());  // page-01.pgm, page-02.pgm, ...: one width of number
+    std::vector<rendered_page> pages;
+    for (const std::filesystem::path& file : files) {
+        std::ifstream in(file, std::ios::binary);
+        std::string magic;
+        std::size_t width = 0, height = 0, most = 0;
+        in >> magic >> width >> height >> most;
+        in.get();  // the one whitespace before the pixels
+        BOOST_TEST_REQUIRE((magic == "P5" && most == 255 && width > 0 && height > 0), file.string());
+        std::string pixels(width * height, '\0');
+        in.read(pixels.data(), static_cast<std::streamsize>(pixels.size()));
+        BOOST_TEST_REQUIRE(static_cast<std::size_t>(in.gcount()) == pixels.size(), file.string());
+        const std::size_t band = static_cast<std::size_t>(1.5 * dpi / 2.54);
+        rendered_page page;
+        for (std::size_t y = 0; y < height; ++y)
+            for (std::size_t x = 0; x < width; ++x)
+                if (static_cast<unsigned char>(pixels[y * width + x]) < 128) {
+                    ++page.ink;
+                    page.in_margins += x < band || x >= width - band;
+                }
+        pages.push_back(page);
+    }
+    std::filesystem::remove_all(dir);
+    return pages;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(every_page_of_the_report_has_ink_and_none_in_its_margins)
+{
+    const std::vector<rendered_page> pages = rendered_pages(output().files.at("report.pdf"));
+    BOOST_TEST_REQUIRE(pages.size() > 10u);
+    for (std::size_t i = 0; i < pages.size(); ++i) {
+        BOOST_TEST(pages[i].ink > 100u, "page " << i + 1 << " is blank");
+        BOOST_TEST(pages[i].in_margins == 0u, "page " << i + 1 << ": " << pages[i].in_margins << " pixels in the margins");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_render_check_finds_a_picture_in_the_margin)
+{
+    BOOST_TEST_REQUIRE(report::have_pdflatex());
+    // A rule 25 cm wide on an A4 page with the report's margins: it reaches past both edges' bands.
+    const report::pdf_build wide = report::compile_latex(
+        {{"main.tex", "\\documentclass[a4paper]{article}\n\\usepackage[a4paper,margin=2cm]{geometry}\n"
+                      "\\begin{document}\n\\noindent\\hspace*{-3cm}\\rule{25cm}{2mm}\n\\end{document}\n"}},
+        "main.tex");
+    BOOST_TEST_REQUIRE(!wide.pdf.empty());
+    const std::vector<rendered_page> pages = rendered_pages(wide.pdf);
+    BOOST_TEST_REQUIRE(pages.size() == 1u);
+    BOOST_TEST(pages[0].in_margins > 0u);
+}
 
 BOOST_AUTO_TEST_CASE(the_typeset_report_has_no_code_in_its_text)
 {
