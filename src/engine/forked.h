@@ -37,9 +37,13 @@ pid_t locked_fork();
 
 /// GiNaC::factor(e, options) computed by this process's factoring child within
 /// `cpu_seconds` of CPU time; nothing when it took longer (the child is then replaced at
-/// the next call), or when no process or socket is to be had. An exception factor() throws
-/// is thrown here as a std::runtime_error with its message. The factorization is in `e`'s
-/// own symbols. Not for threads.
+/// the next call), when `e` holds a number that is not rational or more than 256 symbols,
+/// or when no process or socket is to be had. An error factor() throws, a child that ends
+/// otherwise, or an answer that cannot be read back is thrown as a std::runtime_error.
+/// The factorization is in `e`'s own symbols. Not for threads.
 std::optional<GiNaC::ex> factor_in_child(const GiNaC::ex& e, unsigned options, unsigned cpu_seconds);
+
+/// The process id of this process's factoring child, or -1 when it has none.
+pid_t factoring_process();
 
 } // namespace impact::engine

@@ -7,7 +7,8 @@
 // that what is written does not depend on which finished first.
 //
 // A child touches only what the task reads (the derived library, GiNaC's and CLN's
-// state) and its pipe, and leaves with _exit().
+// state) and its pipe, and leaves with _exit(). It may start a factoring child of its own
+// (engine/forked.h), which closes the pipe and dies with it.
 //
 // Impact forks only while no thread of its own can hold a lock: a child gets a copy of
 // every lock as it was, and one held by another thread at that instant (the allocator's,
