@@ -30,13 +30,13 @@ pid_t locked_fork()
 
 namespace {
 
-// Sends all of `text`; false if the socket failed (MSG_NOSIGNAL: a closed peer is an
-// error here, not a SIGPIPE).
-bool send_all(int fd, const std::string& text)
+// Moves `size` bytes, `step(done)` moving some of what is left (a send or a recv) and
+// retried when a signal interrupts it; false when it fails or the stream ends.
+template <class Step>
+bool all_of(std::size_t size, Step step)
 {
-    std::size_t done = 0;
-    while (done < text.size()) {
-        const ssize_t n = ::send(fd, text.data() + done, text.size() - done, MSG_NOSIGNAL);
+    for (std::size_t done = 0; done < size;) {
+        const ssize_t n = step(done);
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0)
@@ -46,20 +46,19 @@ bool send_all(int fd, const std::string& text)
     return true;
 }
 
-// Receives exactly `size` bytes; false at the end of the stream or on an error.
+// Sends all of `text` (MSG_NOSIGNAL: a closed peer is an error here, not a SIGPIPE).
+bool send_all(int fd, const std::string& text)
+{
+    return all_of(text.size(), [&](std::size_t done) {
+        return ::send(fd, text.data() + done, text.size() - done, MSG_NOSIGNAL);
+    });
+}
+
+// Receives exactly `size` bytes into `text`.
 bool receive_all(int fd, std::string& text, std::size_t size)
 {
     text.resize(size);
-    std::size_t done = 0;
-    while (done < size) {
-        const ssize_t n = ::recv(fd, text.data() + done, size - done, 0);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return false;
-        done += static_cast<std::size_t>(n);
-    }
-    return true;
+    return all_of(size, [&](std::size_t done) { return ::recv(fd, text.data() + done, size - done, 0); });
 }
 
 // A message: its length in decimal, a newline, the text.
