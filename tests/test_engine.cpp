@@ -311,6 +311,56 @@ BOOST_AUTO_TEST_CASE(a_claim_made_for_the_wrong_regime_is_reported_with_the_righ
     BOOST_TEST(d.all_hold());  // a wrong claim of the paper is a finding, not a failed check
 }
 
+BOOST_AUTO_TEST_CASE(an_inequality_claimed_the_wrong_way_round_is_reported_reversed)
+{
+    // "Increasing" said of values that decrease: x/(1 + x) < 1 for every positive x, claimed > 1;
+    // and x^2 + 1 > 0 claimed <= 0, which holds reversed and strictly.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n"
+        "[[claim]]\nname = \"above\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x/(1 + x) > 1\"\n"
+        "[[claim]]\nname = \"never_positive\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x^2 + 1 <= 0\"\n"
+        "[[claim]]\nname = \"neither_way\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x > 1\"\n"));
+    BOOST_TEST(!d.paper_checks.at(0).agrees());
+    BOOST_TEST(d.paper_checks.at(0).reconciliations == std::vector<std::string>{"the reverse holds: x/(1+x) < 1"},
+               boost::test_tools::per_element());
+    BOOST_TEST(d.paper_checks.at(1).reconciliations == std::vector<std::string>{"the reverse holds: 1+x^2 >= 0"},
+               boost::test_tools::per_element());
+    // x > 1 fails for x = 1/2 and x < 1 for x = 2: no reverse to offer.
+    BOOST_TEST(!d.paper_checks.at(2).agrees());
+    BOOST_TEST(d.paper_checks.at(2).reconciliations.empty());
+}
+
+BOOST_AUTO_TEST_CASE(an_angle_printed_for_its_cosine_is_reported_as_such)
+{
+    // An angle defined through its cosine, then claimed equal to the cosine itself (Eq. 14's
+    // first line prints theta = its cosine); the sine and the tangent too.
+    const std::string angle = "[[symbol]]\nname = \"theta\"\n[[step]]\ndefine = \"theta\"\nas = \"acos(x/(1 + x))\"\n"
+                              "[[step]]\ndefine = \"y\"\nas = \"asin(x/(1 + x))\"\n[[result]]\nname = \"theta\"\n";
+    const engine::derivation d = derive_text(derivation_text(
+        angle + "[[claim]]\nname = \"cosine\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"theta = x/(1 + x)\"\n"
+                "[[claim]]\nname = \"sine\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = x/(x + 1)\"\n"
+                "[[claim]]\nname = \"other\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"theta = x/(2 + x)\"\n"));
+    BOOST_TEST(d.paper_checks.at(0).reconciliations ==
+                   std::vector<std::string>{"it holds with cos(theta) for theta: the right side is the cosine of theta"},
+               boost::test_tools::per_element());
+    BOOST_TEST(d.paper_checks.at(1).reconciliations ==
+                   std::vector<std::string>{"it holds with sin(y) for y: the right side is the sine of y"},
+               boost::test_tools::per_element());
+    for (const std::string& said : d.paper_checks.at(2).reconciliations)
+        BOOST_TEST(said.find("holds with") == std::string::npos, said);
+}
+
+BOOST_AUTO_TEST_CASE(a_proven_verdict_says_how_it_was_proven)
+{
+    using basis = engine::verdict::basis;
+    const engine::derivation d = derive_text(derivation_text(
+        "[[step]]\ndefine = \"y\"\nas = \"x/(1 + x)\"\n[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"equal\"\nclaim = \"y = 1 - 1/(1 + x)\"\n"
+        "[[check]]\nname = \"below_one\"\nclaim = \"y < 1\"\n"));
+    BOOST_TEST((check_named(d, "equal").outcome.how == basis::zero_difference));
+    BOOST_TEST((check_named(d, "below_one").outcome.how == basis::signs));
+}
+
 // The smallest changes found for a result `name` derived `as` one form and printed as another.
 std::vector<std::string> smallest_changes(const std::string& name, const std::string& as, const std::string& printed)
 {

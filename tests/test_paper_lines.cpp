@@ -404,14 +404,16 @@ BOOST_AUTO_TEST_CASE(the_claims_checked_of_one_quote_are_one_finding)
 {
     const std::string errata = emit::errata_markdown(library().in_order());
     // Typed from the paper: Fig. 2's caption gives eps as 3/3, 2/3, 1/3 from left to right
-    // and calls them "increasing"; checked panel against panel, neither step increases:
-    // one misprint, one row that disagrees, both checks shown.
+    // and calls them "increasing"; checked panel against panel, neither step increases, each
+    // decreases: one misprint, one row that disagrees, both checks shown, each reversed.
     const std::vector<std::string> caption = errata_rows_at(errata, "Fig. 2 caption");
     BOOST_TEST_REQUIRE(caption.size() == 1u);
     BOOST_TEST(caption[0].find("**disagrees**") != std::string::npos, caption[0]);
     BOOST_TEST(caption[0].find("\\frac{2}{3} > 1") != std::string::npos, caption[0]);
     BOOST_TEST(caption[0].find("\\frac{1}{3} > \\frac{2}{3}") != std::string::npos, caption[0]);
-    BOOST_TEST(caption[0].find("neither holds") != std::string::npos, caption[0]);
+    BOOST_TEST(caption[0].find("the 1st check: the reverse holds: $\\frac{2}{3} < 1$; the 2nd check: the reverse "
+                               "holds: $\\frac{1}{3} < \\frac{2}{3}$") != std::string::npos,
+               caption[0]);
     // Appendix A, line 6 prints 1/(2m) + 1/(2M) = (2M + 2m)/(4mM) = 1/2 (M + m)/(mM): each
     // member checked against the first, one row, both proven, the quote shown once.
     const std::vector<std::string> line_6 = errata_rows_at(errata, "Appendix A, line 6");
@@ -421,6 +423,51 @@ BOOST_AUTO_TEST_CASE(the_claims_checked_of_one_quote_are_one_finding)
     BOOST_TEST(line_6[0].find("\\frac{1}{2} (M + m)") != std::string::npos, line_6[0]);
     const std::string quote = "\\frac{2M + 2m}{4mM}";
     BOOST_TEST(line_6[0].find(quote) == line_6[0].rfind(quote), line_6[0]);
+}
+
+BOOST_AUTO_TEST_CASE(eq14_prints_the_angle_where_its_cosine_belongs)
+{
+    // Typed from the paper: Eq. 14's first line sets theta equal to v'_1 . v'_2 / (|v'_1| |v'_2|),
+    // which Eq. 13 gives as its cosine; the sentence after it calls Eq. 14 the scatter angle.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    for (const std::string& place : {"Eq. 14, line 1", "Sec. III C, after Eq. 14, 1st sentence"}) {
+        bool found = false;
+        for (const std::string& row : errata_rows_at(errata, place))
+            found = found || row.find("| **disagrees** |") != std::string::npos &&
+                                 row.find("it holds with $\\cos\\theta$ for $\\theta$") != std::string::npos;
+        BOOST_TEST(found, place);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(each_agreeing_row_says_how_agreement_was_established)
+{
+    const std::string errata = emit::errata_markdown(library().in_order());
+    std::size_t agreeing = 0;
+    std::istringstream rows(errata);
+    for (std::string row; std::getline(rows, row);) {
+        if (row.find("| agrees |") == std::string::npos)
+            continue;
+        ++agreeing;
+        const std::string finding = row.substr(row.rfind(" | ", row.size() - 3) + 3);
+        // "proven ...: how", never a bare "proven".
+        BOOST_TEST((finding.find("proven") != std::string::npos && finding.find(": ") != std::string::npos), row);
+    }
+    BOOST_TEST(agreeing > 50u);
+    // Eq. 1a prints M v_M + m v_m = M v'_M + m v'_m; derived, m (v_m - v'_m) = -M (v_M - v'_M):
+    // the same difference of sides, so one is the other times 1.
+    BOOST_TEST(errata_rows_at(errata, "Eq. 1a").at(0).find(
+                   "proven equivalent: one equation is the other multiplied by a constant") != std::string::npos);
+    // Eq. 14's last member is the derived cosine itself: their difference is 0.
+    bool difference = false;
+    for (const std::string& row : errata_rows_at(errata, "Eq. 14, line 2"))
+        difference = difference ||
+                     row.find("proven equal: the difference of the sides simplifies to $0$") != std::string::npos;
+    BOOST_TEST(difference);
+    // 0 <= cos theta <= 1: inequalities, proven from the signs of factors.
+    BOOST_TEST(errata_rows_at(errata, "Sec. III C, after Eq. 14, 4th sentence")
+                   .at(0)
+                   .find("the sign of each factor of the difference of the sides follows from the domains") !=
+               std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(appendix_a_line_1_is_reconciled_by_two_edits)

@@ -84,8 +84,8 @@ std::string one_finding(const std::vector<std::string>& each)
     if (std::all_of(each.begin(), each.end(), [&](const std::string& e) { return e == each.front(); })) {
         if (each.front() == "as checked, it does not hold")
             return two ? "as checked, neither holds" : "as checked, none holds";
-        if (each.front() == "proven")
-            return two ? "both proven" : "all proven";
+        if (each.front().rfind("proven", 0) == 0)
+            return (two ? "both " : "all ") + each.front();
         return each.front();
     }
     static const char* const ordinals[] = {"1st", "2nd", "3rd"};
@@ -238,12 +238,8 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
         }
         // What was found, comparison by comparison.
         auto change_of = [&](const engine::paper_comparison& c) -> std::string {
-            if (comparison_verdict(c) == "undecided")
-                return "neither proven nor refuted: " + cell(c.agreement.method);
-            if (c.agrees())
-                return c.what == engine::paper_comparison::kind::claim   ? "proven"
-                       : c.what == engine::paper_comparison::kind::given ? "proven equivalent"
-                                                                         : "proven equal";
+            if (std::string said = agreement_text(c); !said.empty())
+                return cell(said);
             std::vector<std::string> said;
             for (const engine::finding& f : c.findings)
                 said.push_back(cell(finding_latex(f, order, &c.written, &c)));

@@ -336,9 +336,13 @@ void print_add(const GiNaC::add& sum, const print_tex& c, unsigned level)
 std::string symbol_power(const std::string& name, const std::string& exponent);
 void print_power_term(const power_term& p, const print_tex& c, unsigned level);
 
-// Whether a symbol reads like a function (\cos\theta): what follows it is set apart.
+bool is_trigonometric_of_symbol(const GiNaC::ex& e);
+
+// Whether a symbol reads like a function (\cos\theta), or is one: what follows it is set apart.
 bool reads_like_function(const GiNaC::ex& base)
 {
+    if (is_trigonometric_of_symbol(base))
+        return true;
     if (!GiNaC::is_a<GiNaC::symbol>(base))
         return false;
     const std::string name = symbol_latex(GiNaC::ex_to<GiNaC::symbol>(base));
@@ -397,6 +401,25 @@ void print_mul(const GiNaC::mul& product, const print_tex& c, unsigned level)
     print_parts(split(product, c), c, level);
 }
 
+// cos, sin or tan of a symbol, which a textbook writes without parentheses: \cos\theta.
+bool is_trigonometric_of_symbol(const GiNaC::ex& e)
+{
+    if (!GiNaC::is_a<GiNaC::function>(e) || e.nops() != 1 || !GiNaC::is_a<GiNaC::symbol>(e.op(0)))
+        return false;
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    return name == "cos" || name == "sin" || name == "tan";
+}
+
+// A function's argument: in parentheses, or for cos, sin and tan of a symbol set after
+// the name as a textbook does (\cos\theta, \sin x); a symbol whose name is two words
+// (\Delta E_K) keeps its parentheses.
+std::string function_argument(const GiNaC::ex& f, const std::string& rendered)
+{
+    if (!is_trigonometric_of_symbol(f) || rendered.find(' ') != std::string::npos)
+        return parenthesised(rendered);
+    return rendered.rfind("\\", 0) == 0 ? rendered : " " + rendered;
+}
+
 const std::map<std::string, std::string>& function_names()
 {
     static const std::map<std::string, std::string> names = {
@@ -439,7 +462,7 @@ void print_power_term(const power_term& p, const print_tex& c, unsigned level)
         // \cos^{2}\theta, as a textbook writes it.
         const auto known = function_names().find(GiNaC::ex_to<GiNaC::function>(base).get_name());
         if (known != function_names().end() && base.nops() == 1) {
-            c.s << known->second << "^{" << power << "}" << parenthesised(render(base.op(0), c, 0));
+            c.s << known->second << "^{" << power << "}" << function_argument(base, render(base.op(0), c, 0));
             return;
         }
     }
@@ -472,7 +495,7 @@ void print_function(const GiNaC::function& f, const print_tex& c)
     for (std::size_t i = 0; i < f.nops(); ++i)
         args += (i > 0 ? ", " : "") + render(f.op(i), c, 0);
     c.s << (known != function_names().end() ? known->second : "\\operatorname{" + name + "}")
-        << parenthesised(args);
+        << function_argument(f, args);
 }
 
 void print_operand(const GiNaC::ex& e, const print_tex& c, unsigned level)

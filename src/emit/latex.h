@@ -90,6 +90,13 @@ std::string finding_latex(const engine::finding& f, const term_order& order, con
 /// refuted (only sampled, or a limit that no method established).
 std::string comparison_verdict(const engine::paper_comparison& p);
 
+/// What an agreeing or undecided comparison came to, and how, as the errata's finding:
+/// "proven equal: the difference of the sides simplifies to $0$", "proven: the limit by
+/// substitution, ...", "proven case by case", "neither proven nor refuted: it holds at 200
+/// sampled points ...". Words, with mathematics between dollar signs; empty for a
+/// disagreement, whose findings say what is wrong.
+std::string agreement_text(const engine::paper_comparison& p);
+
 /// The LaTeX fragment of one derivation, typeset as a derivation: its quantities, the
 /// given equations with their justifications, each step and what it yields, the results
 /// numbered as in the paper, the checks with their status and how each was

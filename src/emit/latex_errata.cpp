@@ -75,7 +75,8 @@ std::string finding_latex(const engine::finding& f, const term_order& order, con
             }
             out += "$" +
                    (GiNaC::is_a<GiNaC::relational>(p.value)
-                        ? latex(p.value.lhs(), order, written) + " = " + latex(p.value.rhs(), order, written)
+                        ? latex(p.value.lhs(), order, written) + " " + detail::latex_relation(p.op) + " " +
+                              latex(p.value.rhs(), order, written)
                         : latex(p.value, order, written)) +
                    "$";
             break;
@@ -99,6 +100,73 @@ std::string comparison_verdict(const engine::paper_comparison& p)
     if (p.test && p.test->limit && !p.test->value)
         return "undecided";
     return "disagrees";
+}
+
+namespace {
+
+// How a proven verdict was reached (verdict::basis), in words.
+std::string proven_by(const engine::verdict& v)
+{
+    using basis = engine::verdict::basis;
+    switch (v.how) {
+    case basis::zero_difference: return "the difference of the sides simplifies to $0$";
+    case basis::signs:
+        return GiNaC::is_a<GiNaC::numeric>(v.residual) ? "by arithmetic"
+                                                       : "the sign of each factor of the difference of the sides "
+                                                         "follows from the domains";
+    case basis::identity:
+        return "through an identity proven before it, one of whose sides is the difference of the sides, and "
+               "the other's sign follows from the domains";
+    case basis::constant_factor: return "one equation is the other multiplied by a constant";
+    case basis::same_difference: return "the two equations have the same difference of sides";
+    case basis::angles:
+        return "both angles lie in $[0, \\pi]$, where $\\cos$ is one-to-one, and their cosines are proven equal";
+    case basis::none: break;
+    }
+    return "";
+}
+
+// How a limit was established, in words.
+std::string limit_by(const engine::limit_method& how)
+{
+    if (how.at_infinity)
+        return "the limit from the leading term in $1/t$, with $t \\to 0^+$ the reciprocal of the growing quantity";
+    return how.how == engine::limit_method::kind::substitution
+               ? "the limit by substitution, the expression being continuous there"
+               : "the limit from the leading term of the series at the point";
+}
+
+} // namespace
+
+std::string agreement_text(const engine::paper_comparison& p)
+{
+    const std::string verdict = comparison_verdict(p);
+    if (verdict == "undecided") {
+        if (p.agreement.what == engine::verdict::status::sampled)
+            return fmt::format("neither proven nor refuted: no proof was found, and it holds at each of {} sampled "
+                               "points of the declared domains (40 digits)",
+                               p.agreement.samples);
+        return "neither proven nor refuted: no method established the limit";
+    }
+    if (verdict != "agrees")
+        return "";
+    using kind = engine::paper_comparison::kind;
+    const std::string head = p.what == kind::claim ? "proven" : p.what == kind::given ? "proven equivalent"
+                                                                                     : "proven equal";
+    std::string how;
+    if (p.what == kind::claim && p.test) {
+        const engine::check_result& c = *p.test;
+        if (!c.parts.empty())
+            how = c.continuity ? "the cases agree where they meet"
+                               : fmt::format("case by case, in each of its {} cases", c.parts.size());
+        else if (c.limit_by)
+            how = limit_by(*c.limit_by) + "; then " + proven_by(c.outcome);
+        else
+            how = proven_by(c.outcome);
+    } else {
+        how = proven_by(p.agreement);
+    }
+    return how.empty() ? head : head + ": " + how;
 }
 
 namespace detail {
@@ -234,12 +302,8 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
     // What was found, comparison by comparison; a claim shows what was checked beside
     // it, so that it does not hold is then enough.
     auto change_of = [&](const engine::paper_comparison& c) {
-        if (c.agrees())
-            return std::string(c.what == engine::paper_comparison::kind::claim   ? "proven"
-                               : c.what == engine::paper_comparison::kind::given ? "proven equivalent"
-                                                                                 : "proven equal");
-        if (comparison_verdict(c) == "undecided")
-            return std::string("neither proven nor refuted");
+        if (std::string said = agreement_text(c); !said.empty())
+            return said;
         std::string found = findings(c);
         if (found.empty())
             found = c.what == engine::paper_comparison::kind::claim && c.test ? "as checked, it does not hold"

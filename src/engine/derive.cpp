@@ -498,13 +498,10 @@ private:
             c.statement += fmt::format(" at {}", fmt::join(values, ", "));
         }
 
-        assumptions given = declared_assumptions(out_.symbols, run_);
-        if (!spec_check.assuming.empty())
-            given.known = std::make_shared<worked_out>();
+        const assumptions given = assumptions_of(spec_check);
         for (const spec::binding& b : spec_check.assuming) {
-            const quantity& q = out_.symbols.at(b.name);
-            given.domains[q.symbol] = narrowed_domain(q, b.expression);
-            c.assuming.emplace_back(q.symbol, given.domains[q.symbol].to_string());
+            const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
+            c.assuming.emplace_back(symbol, given.domains.at(symbol).to_string());
         }
 
         c.lhs = lhs;
@@ -616,6 +613,19 @@ private:
         return found;
     }
 
+    // The declared domains, narrowed by the check's `assuming`.
+    assumptions assumptions_of(const spec::check& spec_check) const
+    {
+        assumptions given = declared_assumptions(out_.symbols, run_);
+        if (!spec_check.assuming.empty())
+            given.known = std::make_shared<worked_out>();
+        for (const spec::binding& b : spec_check.assuming) {
+            const quantity& q = out_.symbols.at(b.name);
+            given.domains[q.symbol] = narrowed_domain(q, b.expression);
+        }
+        return given;
+    }
+
     // `continuity = "J_t"`: the cases of J_t agree where their conditions meet.
     check_result run_continuity(const spec::check& spec_check)
     {
@@ -652,11 +662,49 @@ private:
             p.findings = other_regimes(claim.test, c);
         else if (!p.agrees() && c.op == relation::equal)
             p.findings = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
+        if (!p.agrees() && p.findings.empty() && c.parts.empty() && !c.limit)
+            p.findings = what_holds_instead(claim.test, c);
         if (const auto found = printed_dimension_finding(out_.symbols, p.printed, p.printed))
             p.findings.insert(p.findings.begin(), *found);
         p.reconciliations = plain_texts(p.findings, out_.symbols);
         p.test = std::move(c);
         return p;
+    }
+
+    // A failed claim without a finding: the relation reversed (a > b where a < b holds:
+    // "increasing" for decreasing values), or, for an equation, a function of its left
+    // side that the right side is (the cosine of an angle printed as the angle).
+    std::vector<finding> what_holds_instead(const spec::check& original, const check_result& failed)
+    {
+        if (failed.op != relation::equal) {
+            static const std::map<relation, relation> mirrored = {{relation::less, relation::greater},
+                                                                  {relation::less_equal, relation::greater_equal},
+                                                                  {relation::greater, relation::less},
+                                                                  {relation::greater_equal, relation::less_equal}};
+            const relation reversed = mirrored.at(failed.op);
+            if (prove_inequality_by_signs(failed.lhs, reversed, failed.rhs, out_.symbols, assumptions_of(original)))
+                return {finding().say("the reverse holds: ").states(failed.stated.lhs(), reversed,
+                                                                   failed.stated.rhs())};
+            return {};
+        }
+        const GiNaC::ex left = failed.stated.lhs();
+        if (!GiNaC::is_a<GiNaC::symbol>(left))
+            return {};
+        const std::pair<GiNaC::ex, const char*> functions[] = {
+            {GiNaC::cos(failed.lhs), "cosine"}, {GiNaC::sin(failed.lhs), "sine"}, {GiNaC::tan(failed.lhs), "tangent"}};
+        const GiNaC::ex written[] = {GiNaC::cos(left), GiNaC::sin(left), GiNaC::tan(left)};
+        for (std::size_t i = 0; i < 3; ++i) {
+            if (prove_equal(functions[i].first, failed.rhs, out_.symbols, run_).what != verdict::status::proven)
+                continue;
+            return {finding()
+                        .say("it holds with ")
+                        .math(written[i])
+                        .say(" for ")
+                        .math(left)
+                        .say(fmt::format(": the right side is the {} of ", functions[i].second))
+                        .math(left)};
+        }
+        return {};
     }
 
     std::vector<finding> other_regimes(const spec::check& original, const check_result& failed)

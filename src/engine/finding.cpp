@@ -12,7 +12,7 @@ std::string plain_text(const finding& f, const symbol_table& symbols)
         case finding::part::kind::words: out += p.words; break;
         case finding::part::kind::math:
             out += GiNaC::is_a<GiNaC::relational>(p.value)
-                       ? symbols.text(p.value.lhs()) + " = " + symbols.text(p.value.rhs())
+                       ? symbols.text(p.value.lhs()) + " " + to_string(p.op) + " " + symbols.text(p.value.rhs())
                        : symbols.text(p.value);
             break;
         case finding::part::kind::tends:

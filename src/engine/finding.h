@@ -6,6 +6,7 @@
 #pragma once
 
 #include "engine/dimension.h"
+#include "engine/symbols.h"
 
 #include <ginac/ginac.h>
 
@@ -14,8 +15,6 @@
 #include <vector>
 
 namespace impact::engine {
-
-class symbol_table;
 
 struct finding {
     struct part {
@@ -33,6 +32,9 @@ struct finding {
         /// math: a term of a sum, named whatever its sign ("the sign of the term ..."), so
         /// that a printer may show it as the paper writes it, +x or -x.
         bool term = false;
+        /// math: when `value` is lhs == rhs, the relation it stands for (an inequality
+        /// keeps its sides in `value` and its relation here).
+        relation op = relation::equal;
     };
     std::vector<part> parts;
 
@@ -44,6 +46,13 @@ struct finding {
     finding& math(const GiNaC::ex& e)
     {
         parts.push_back({part::kind::math, {}, e, {}, {}});
+        return *this;
+    }
+    /// `lhs op rhs`: an equation, or an inequality.
+    finding& states(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs)
+    {
+        math(lhs == rhs);
+        parts.back().op = op;
         return *this;
     }
     /// A term of a sum, named whatever its sign.

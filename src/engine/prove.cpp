@@ -236,6 +236,7 @@ std::optional<verdict> prove_equal_angles(const GiNaC::ex& a, const GiNaC::ex& b
     if (v.what != verdict::status::proven)
         return std::nullopt;
     v.method = "both angles lie in [0, pi], where cos is one-to-one, and their cosines are proven equal";
+    v.how = verdict::basis::angles;
     return v;
 }
 
@@ -275,6 +276,7 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
         v.what = verdict::status::proven;
         v.residual = 0;
         v.method = "difference normalises to zero";
+        v.how = verdict::basis::zero_difference;
         return v;
     }
     // normal() brings the difference over one denominator; its numerator may still hold
@@ -290,6 +292,7 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
         v.what = verdict::status::proven;
         v.residual = residual;
         v.method = "difference normalises to zero";
+        v.how = verdict::basis::zero_difference;
         return v;
     }
     // A rational function with no radicals or functions left is decided by normal():
@@ -328,6 +331,7 @@ std::optional<verdict> prove_inequality_by_signs(const GiNaC::ex& lhs, relation 
     v.proof = proof.steps;
     v.what = verdict::status::proven;
     v.method = fmt::format("the sign of each factor of {} follows from the domains", given.text(v.residual));
+    v.how = verdict::basis::signs;
     return v;
 }
 
@@ -417,6 +421,7 @@ std::optional<verdict> prove_inequality_through(const GiNaC::ex& lhs, relation o
                 v.method = fmt::format("by {} the difference of the sides is {}, and the sign of each factor of "
                                        "that follows from the domains",
                                        identity.name, given.text(other));
+                v.how = verdict::basis::identity;
                 return v;
             }
         }
@@ -435,11 +440,14 @@ verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, cons
         v.what = verdict::status::proven;
         v.residual = 0;
         v.method = "the two equations differ by a constant factor";
+        v.how = verdict::basis::constant_factor;
         return v;
     }
     verdict v = prove_equal(d1, d2, symbols, run);
-    if (v.what == verdict::status::proven)
+    if (v.what == verdict::status::proven) {
         v.method = "the two equations have the same difference of sides";
+        v.how = verdict::basis::same_difference;
+    }
     return v;
 }
 

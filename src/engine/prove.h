@@ -22,6 +22,18 @@ namespace impact::engine {
 struct verdict {
     enum class status { proven, sampled, failed };
     status what = status::failed;
+    /// How a `proven` verdict was reached, for a reader (`method` says it with the
+    /// expressions): what the errata's agreeing rows say.
+    enum class basis {
+        none,             ///< not proven, or proven some other way (case by case: see the check's parts)
+        zero_difference,  ///< the difference of the sides normalises to zero
+        signs,            ///< the sign of each factor of the difference follows from the domains
+        identity,         ///< the difference is a side of an identity proven before it
+        constant_factor,  ///< two equations whose differences of sides differ by a constant factor
+        same_difference,  ///< two equations with the same difference of sides
+        angles,           ///< two angles in [0, pi] whose cosines are proven equal
+    };
+    basis how = basis::none;
     std::size_t samples = 0;     ///< points tested when not proven symbolically
     GiNaC::ex residual;          ///< the normalised difference; zero when proven
     std::string method;          ///< how the verdict was reached, in words
