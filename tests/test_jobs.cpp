@@ -56,6 +56,18 @@ struct scratch : impact::testing::temporary_folder {
     {
         fs::copy_file(fs::path(IMPACT_SOURCE_DIR) / "derivations" / name, root / "derivations" / name);
     }
+    // The derivations of the paper's smooth spheres (every file but the rough spheres'),
+    // with the paper's order of places: a dozen kernels, for two workers to share, at
+    // half the cost of the whole folder (the rough spheres' proofs take minutes under the
+    // sanitizers).
+    void copy_smooth_spheres() const
+    {
+        for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "derivations")) {
+            const std::string name = entry.path().filename().string();
+            if (name.rfind("rough_", 0) != 0)
+                copy(name);
+        }
+    }
     run_result impact(const std::string& arguments) const
     {
         return impact::testing::run_command("cd '" + root.string() + "' && XDG_CACHE_HOME='" + (root / "xdg").string() +
@@ -275,8 +287,7 @@ BOOST_AUTO_TEST_CASE(a_task_beside_runs_in_a_process_of_its_own_and_gives_its_te
 BOOST_AUTO_TEST_CASE(regenerating_with_two_jobs_writes_the_bytes_of_one_job)
 {
     const scratch s;
-    for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "derivations"))
-        s.copy(entry.path().filename().string());
+    s.copy_smooth_spheres();
     const run_result one = s.impact("regenerate --no-cache --timings --jobs 1 --output one");
     BOOST_TEST_REQUIRE(one.status == 0, one.output);
     const run_result two = s.impact("regenerate --no-cache --timings --jobs 2 --output two");
@@ -343,8 +354,7 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_fails_in_its_worker_is_reported_as_without_wo
 BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_kernel_and_the_output_kept)
 {
     const scratch s;
-    for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "derivations"))
-        s.copy(entry.path().filename().string());
+    s.copy_smooth_spheres();
     const auto before = impact::testing::everything_under(s.root / "output");
     // The first worker seen among Impact's children is killed: a process named impact-worker (the shells of the
     // report's pdflatex are forked from Impact too, and named impact until they run). The watch lasts as long as
