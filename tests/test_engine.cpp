@@ -316,18 +316,22 @@ BOOST_AUTO_TEST_CASE(an_inequality_claimed_the_wrong_way_round_is_reported_rever
     // "Increasing" said of values that decrease: x/(1 + x) < 1 for every positive x, claimed > 1;
     // and x^2 + 1 > 0 claimed <= 0, which holds reversed and strictly.
     const engine::derivation d = derive_text(derivation_text(
-        "[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n"
+        "[[step]]\ndefine = \"y\"\nas = \"x\"\n[[step]]\ndefine = \"z\"\nas = \"0\"\n[[result]]\nname = \"y\"\n"
         "[[claim]]\nname = \"above\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x/(1 + x) > 1\"\n"
         "[[claim]]\nname = \"never_positive\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x^2 + 1 <= 0\"\n"
-        "[[claim]]\nname = \"neither_way\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x > 1\"\n"));
+        "[[claim]]\nname = \"neither_way\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x > 1\"\n"
+        "[[claim]]\nname = \"at_rest\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z > 0\"\n"));
     BOOST_TEST(!d.paper_checks.at(0).agrees());
     BOOST_TEST(d.paper_checks.at(0).reconciliations == std::vector<std::string>{"the reverse holds: x/(1+x) < 1"},
                boost::test_tools::per_element());
     BOOST_TEST(d.paper_checks.at(1).reconciliations == std::vector<std::string>{"the reverse holds: 1+x^2 >= 0"},
                boost::test_tools::per_element());
-    // x > 1 fails for x = 1/2 and x < 1 for x = 2: no reverse to offer.
+    // x > 1 fails for x = 1/2 and x < 1 for x = 2: no reverse to offer, and x is an input.
     BOOST_TEST(!d.paper_checks.at(2).agrees());
     BOOST_TEST(d.paper_checks.at(2).reconciliations.empty());
+    // z, derived 0, claimed positive (an object ball at rest said to have a velocity): its value.
+    BOOST_TEST(d.paper_checks.at(3).reconciliations == std::vector<std::string>{"derived, z = 0"},
+               boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(an_angle_printed_for_its_cosine_is_reported_as_such)

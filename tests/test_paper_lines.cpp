@@ -439,6 +439,18 @@ BOOST_AUTO_TEST_CASE(eq14_prints_the_angle_where_its_cosine_belongs)
     }
 }
 
+BOOST_AUTO_TEST_CASE(the_angle_of_eq13_is_between_the_final_velocities_not_the_incident_ones)
+{
+    // Typed from the paper: "Rewritten, the angle between the incident velocities follows as"
+    // Eq. 13, whose velocities are primed (final); the object ball is at rest before the
+    // collision, so its incident velocity makes no angle.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    const std::vector<std::string> rows = errata_rows_at(errata, "Sec. III C, before Eq. 13");
+    BOOST_TEST_REQUIRE(rows.size() == 1u);
+    BOOST_TEST(rows[0].find("| **disagrees** |") != std::string::npos, rows[0]);
+    BOOST_TEST(rows[0].find("derived, $\\|\\mathbf{v}_2\\| = 0$") != std::string::npos, rows[0]);
+}
+
 BOOST_AUTO_TEST_CASE(each_agreeing_row_says_how_agreement_was_established)
 {
     const std::string errata = emit::errata_markdown(library().in_order());

@@ -672,8 +672,9 @@ private:
     }
 
     // A failed claim without a finding: the relation reversed (a > b where a < b holds:
-    // "increasing" for decreasing values), or, for an equation, a function of its left
-    // side that the right side is (the cosine of an angle printed as the angle).
+    // "increasing" for decreasing values), else the derived value of the quantity on its
+    // left (an object ball's incident speed, 0); or, for an equation, a function of its
+    // left side that the right side is (the cosine of an angle printed as the angle).
     std::vector<finding> what_holds_instead(const spec::check& original, const check_result& failed)
     {
         if (failed.op != relation::equal) {
@@ -685,6 +686,10 @@ private:
             if (prove_inequality_by_signs(failed.lhs, reversed, failed.rhs, out_.symbols, assumptions_of(original)))
                 return {finding().say("the reverse holds: ").states(failed.stated.lhs(), reversed,
                                                                    failed.stated.rhs())};
+            // Neither way round: what a derived quantity on the left comes to.
+            const GiNaC::ex left = failed.stated.lhs();
+            if (GiNaC::is_a<GiNaC::symbol>(left) && !(failed.lhs - left).is_zero())
+                return {finding().say("derived, ").states(left, relation::equal, failed.lhs)};
             return {};
         }
         const GiNaC::ex left = failed.stated.lhs();
