@@ -384,6 +384,19 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
                boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(a_smallest_change_carries_the_printed_form_it_mends)
+{
+    // 2*x printed where 2*z is derived: the mended form is the printed one with 2*z.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"w\"\n[[step]]\ndefine = \"w\"\nas = \"(x + 2*z)*y + 2*z\"\n"
+        "[[result]]\nname = \"w\"\nprinted = \"(x + 2*z)*y + 2*x\"\n"));
+    const engine::paper_comparison& p = d.paper_checks.at(0);
+    BOOST_TEST_REQUIRE(p.findings.size() == 1u);
+    BOOST_TEST_REQUIRE(p.findings[0].corrected.has_value());
+    const GiNaC::ex x = d.symbols.find("x")->symbol, y = d.symbols.find("y")->symbol, z = d.symbols.find("z")->symbol;
+    BOOST_TEST(GiNaC::expand(*p.findings[0].corrected - ((x + 2 * z) * y + 2 * z)).is_zero());
+}
+
 BOOST_AUTO_TEST_CASE(two_single_edits_that_make_the_same_form_are_one_change)
 {
     // A share printed with its numerator the other's: y/(y + z) where z/(y + z) is derived.

@@ -511,6 +511,33 @@ BOOST_AUTO_TEST_CASE(eq14_line_1_blames_the_second_factor_of_its_numerator)
     BOOST_TEST(equations == 1u);
 }
 
+BOOST_AUTO_TEST_CASE(eq9_s_lab_components_are_mended_in_the_paper_s_own_variables)
+{
+    // Typed from the paper: Eq. 9 prints v'_{m,x} as r_x/|r| times the collision-frame
+    // v'_{m,par} (with the misprinted sign of eps M (v_{m,par} - v_{M,par})) minus r_y/|r|
+    // v_{m,perp}. Beside it the derived column shows the same form mended, in v_par, v_perp and
+    // |r|, not Impact's lab-frame form in v_x, v_y and r_x^2 + r_y^2.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    std::size_t mended = 0;
+    for (const std::string& row : errata_rows_at(errata, "Eq. 9")) {
+        if (row.find("**disagrees**") == std::string::npos)
+            continue;
+        ++mended;
+        // | where | kind | item | verdict | printed | derived | finding |
+        std::vector<std::string> cells;
+        for (std::size_t from = 0, at; (at = row.find(" | ", from)) != std::string::npos; from = at + 3)
+            cells.push_back(row.substr(from, at - from));
+        BOOST_TEST_REQUIRE(cells.size() == 6u, row);
+        const std::string& derived = cells[5];
+        BOOST_TEST(derived.find("-\\epsilon M (v_{m,\\parallel} - v_{M,\\parallel})") != std::string::npos, derived);
+        BOOST_TEST(derived.find("v_{m,\\perp}") != std::string::npos, derived);
+        BOOST_TEST(derived.find("\\|r_{mM}\\|") != std::string::npos, derived);
+        BOOST_TEST(derived.find("v_{m,x}") == std::string::npos, derived);
+        BOOST_TEST(derived.find("r^{2}_{mM,x}") == std::string::npos, derived);
+    }
+    BOOST_TEST(mended == 1u);
+}
+
 BOOST_AUTO_TEST_CASE(a_term_a_finding_names_is_written_as_the_paper_prints_it)
 {
     // Typed from the paper: Eq. 9 prints v'_m with + eps M (v_{m,par} - v_{M,par}), whose

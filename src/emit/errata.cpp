@@ -220,11 +220,15 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
         std::vector<std::string> items, printed, derived;
         for (std::size_t k : row) {
             const engine::paper_comparison& c = d->paper_checks[k];
-            // The derived form in the variables the paper prints: the result as its file displays it.
+            // The derived form in the variables the paper prints: the printed form mended, or the
+            // result as its file displays it.
             const engine::result* r =
                 c.what == engine::paper_comparison::kind::result ? d->find_result(c.subject) : nullptr;
             // A claim: what was checked (its special values or limit), which its words state.
+            // A printed form that one change mends: mended, in the paper's own variables.
+            const auto corrected = r ? corrected_form(c, r->display) : std::nullopt;
             derived.push_back(claim && c.test ? "checked: " + cell(checked_claim_latex(*c.test, order))
+                              : corrected ? math(*corrected, order, &c.written)
                               : r         ? math(r->display, order, &r->written)
                                           : math(c.derived, order, nullptr));
             // As the paper prints it: the transcription's terms and factors, nothing merged.

@@ -97,6 +97,14 @@ std::string comparison_verdict(const engine::paper_comparison& p);
 /// disagreement, whose findings say what is wrong.
 std::string agreement_text(const engine::paper_comparison& p);
 
+/// The printed form of a disagreeing comparison with its smallest change made, when the
+/// derived form the report would show, `shown`, is in variables that form does not use:
+/// the derived form in the printed form's own variables, to set beside it (Eq. 9's lab
+/// components through the collision frame, as the paper prints them, rather than Impact's
+/// lab-frame form). Nothing when `shown` is in its variables, or when no change, or more
+/// than one, reconciles the two.
+std::optional<GiNaC::ex> corrected_form(const engine::paper_comparison& p, const GiNaC::ex& shown);
+
 /// The LaTeX fragment of one derivation, typeset as a derivation: its quantities, the
 /// given equations with their justifications, each step and what it yields, the results
 /// numbered as in the paper, the checks with their status and how each was

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <set>
 
 namespace impact::emit {
 namespace {
@@ -169,6 +170,36 @@ std::string agreement_text(const engine::paper_comparison& p)
     return how.empty() ? head : head + ": " + how;
 }
 
+std::optional<GiNaC::ex> corrected_form(const engine::paper_comparison& p, const GiNaC::ex& shown)
+{
+    if (p.agrees() || p.what == engine::paper_comparison::kind::claim)
+        return std::nullopt;
+    const auto symbols_of = [](const GiNaC::ex& e) {
+        std::set<GiNaC::ex, GiNaC::ex_is_less> found;
+        for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it))
+                found.insert(*it);
+        return found;
+    };
+    std::optional<GiNaC::ex> found;
+    for (const engine::finding& f : p.findings) {
+        if (!f.corrected)
+            continue;
+        if (found)
+            return std::nullopt;   // several changes reconcile it: no one form is the derived
+        found = f.corrected;
+    }
+    if (!found)
+        return std::nullopt;
+    // The shown form in the variables of the printed form mended (Appendix A's M, which the
+    // misprint lost) is in the paper's variables already.
+    const auto mended = symbols_of(*found);
+    const auto in_shown = symbols_of(shown);
+    if (std::includes(mended.begin(), mended.end(), in_shown.begin(), in_shown.end(), GiNaC::ex_is_less()))
+        return std::nullopt;
+    return found;
+}
+
 namespace detail {
 
 // The words of a comparison's findings, in LaTeX, joined by semicolons: `which` of them,
@@ -227,8 +258,12 @@ std::string fragment_writer::unreconciled(const engine::paper_comparison& p, dou
 std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const engine::paper_comparison& p) const
 {
     if (p.what == engine::paper_comparison::kind::result)
-        if (const engine::result* r = d_.find_result(p.subject))
+        if (const engine::result* r = d_.find_result(p.subject)) {
+            // The printed form mended, in the paper's variables, where the display is not in them.
+            if (const auto corrected = corrected_form(p, r->display))
+                return {*corrected, &p.written};
             return {r->display, &r->written};
+        }
     // Else as a textbook shows it: factored, or collected (a root's argument likewise).
     return {textbook_form(p.derived, order_).value, nullptr};
 }

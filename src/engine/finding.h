@@ -37,6 +37,9 @@ struct finding {
         relation op = relation::equal;
     };
     std::vector<part> parts;
+    /// A smallest change: the printed form with the change made, in the printed form's own
+    /// variables, proven equal to the derived value (an equation: equivalent to the derived one).
+    std::optional<GiNaC::ex> corrected;
 
     finding& say(std::string text)
     {

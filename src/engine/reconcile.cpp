@@ -257,6 +257,7 @@ std::vector<finding> search(std::vector<candidate> all, const symbol_table& symb
             break;
         if (screen(c.edited) && confirm(c.edited)) {
             finding change = c.change();
+            change.corrected = c.edited;
             std::string text = plain_text(change, symbols);
             std::ostringstream form;
             form << c.edited;
@@ -307,6 +308,7 @@ std::vector<finding> search(std::vector<candidate> all, const symbol_table& symb
                     std::ostringstream form;
                     form << second.edited;
                     finding both = joined(std::move(a), b);
+                    both.corrected = second.edited;
                     auto [at, inserted] = by_form.try_emplace(form.str(), text, both);
                     if (!inserted && (text.size() < at->second.first.size() ||
                                       (text.size() == at->second.first.size() && text < at->second.first)))
