@@ -320,7 +320,9 @@ BOOST_AUTO_TEST_CASE(an_inequality_claimed_the_wrong_way_round_is_reported_rever
         "[[claim]]\nname = \"above\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x/(1 + x) > 1\"\n"
         "[[claim]]\nname = \"never_positive\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x^2 + 1 <= 0\"\n"
         "[[claim]]\nname = \"neither_way\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x > 1\"\n"
-        "[[claim]]\nname = \"at_rest\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z > 0\"\n"));
+        "[[claim]]\nname = \"at_rest\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z > 0\"\n"
+        "[[claim]]\nname = \"at_one\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x/(1 + x) > 1\"\n"
+        "at = { x = \"1\" }\n"));
     BOOST_TEST(!d.paper_checks.at(0).agrees());
     BOOST_TEST(d.paper_checks.at(0).reconciliations == std::vector<std::string>{"the reverse holds: x/(1+x) < 1"},
                boost::test_tools::per_element());
@@ -330,8 +332,12 @@ BOOST_AUTO_TEST_CASE(an_inequality_claimed_the_wrong_way_round_is_reported_rever
     BOOST_TEST(!d.paper_checks.at(2).agrees());
     BOOST_TEST(d.paper_checks.at(2).reconciliations.empty());
     // z, derived 0, claimed positive (an object ball at rest said to have a velocity): its value.
+    // At special values, nothing is said of the claim in general.
     BOOST_TEST(d.paper_checks.at(3).reconciliations == std::vector<std::string>{"derived, z = 0"},
                boost::test_tools::per_element());
+    BOOST_TEST(!d.paper_checks.at(4).agrees());
+    for (const std::string& said : d.paper_checks.at(4).reconciliations)
+        BOOST_TEST(said.find("reverse") == std::string::npos, said);
 }
 
 BOOST_AUTO_TEST_CASE(an_angle_printed_for_its_cosine_is_reported_as_such)
@@ -352,6 +358,18 @@ BOOST_AUTO_TEST_CASE(an_angle_printed_for_its_cosine_is_reported_as_such)
                boost::test_tools::per_element());
     for (const std::string& said : d.paper_checks.at(2).reconciliations)
         BOOST_TEST(said.find("holds with") == std::string::npos, said);
+    // Not an angle: z derived 0 and claimed 1 is not "cos z" (cos 0 = 1), nor is an angle
+    // of pi/2 (acos(0), where tan has a pole) an error.
+    const engine::derivation other = derive_text(derivation_text(
+        "[[symbol]]\nname = \"theta\"\n[[step]]\ndefine = \"theta\"\nas = \"acos(0)\"\n"
+        "[[step]]\ndefine = \"z\"\nas = \"0\"\n[[result]]\nname = \"theta\"\n"
+        "[[claim]]\nname = \"zero\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z = 1\"\n"
+        "[[claim]]\nname = \"right\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"theta = 1\"\n"));
+    for (const engine::paper_comparison& p : other.paper_checks) {
+        BOOST_TEST(!p.agrees());
+        for (const std::string& said : p.reconciliations)
+            BOOST_TEST(said.find("holds with") == std::string::npos, said);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_proven_verdict_says_how_it_was_proven)

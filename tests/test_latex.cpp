@@ -164,6 +164,18 @@ BOOST_AUTO_TEST_CASE(primes_greek_letters_and_functions)
     BOOST_TEST(emit::latex(GiNaC::pow(m_eff, -1), order) == "\\frac{1}{m_{\\mathrm{eff}}}");
 }
 
+BOOST_AUTO_TEST_CASE(cosine_sine_and_tangent_of_a_symbol_as_a_textbook_writes_them)
+{
+    const GiNaC::realsymbol theta("theta", "\\theta"), x("x"), dE("dE", "\\Delta E_K");
+    const engine::term_order by{{theta, x, dE}};
+    BOOST_TEST(emit::latex(GiNaC::cos(theta), by) == "\\cos\\theta");
+    BOOST_TEST(emit::latex(GiNaC::sin(x), by) == "\\sin x");
+    BOOST_TEST(emit::latex(GiNaC::pow(GiNaC::tan(theta), 2), by) == "\\tan^{2}\\theta");
+    // A symbol named in two words keeps its parentheses, and so does anything but a symbol.
+    BOOST_TEST(emit::latex(GiNaC::cos(dE), by) == "\\cos(\\Delta E_K)");
+    BOOST_TEST(emit::latex(GiNaC::cos(2 * theta), by) == "\\cos(2 \\theta)");
+}
+
 BOOST_AUTO_TEST_CASE(no_parentheses_where_precedence_does_not_need_them)
 {
     BOOST_TEST(emit::latex(vM - J / M, order) == "v_{M,\\parallel} - \\frac{J}{M}");

@@ -455,8 +455,14 @@ std::string fragment_writer::paper() const
         std::string tail;
         if (!dimensions.empty())
             tail += after_display ? capitalised(dimensions) : "; it is " + dimensions;
+        // Findings that say what holds instead ("the reverse holds: ...", "it holds for ... instead")
+        // are no edit: "smallest change" names only an edit of the printed form.
+        const bool edit = p.what != engine::paper_comparison::kind::claim ||
+                          std::any_of(p.findings.begin(), p.findings.end(),
+                                      [](const engine::finding& f) { return f.corrected.has_value(); });
         if (!changes.empty())
-            tail += after_display && tail.empty() ? "Smallest change: " + changes : "; smallest change: " + changes;
+            tail += after_display && tail.empty() ? (edit ? "Smallest change: " + changes : capitalised(changes))
+                                                  : (edit ? "; smallest change: " + changes : "; " + changes);
         else if (p.what == engine::paper_comparison::kind::claim && p.test)
             tail += after_display && tail.empty() ? capitalised(unreconciled(p, 250)) : "; " + unreconciled(p, 250);
         if (row.size() > 1) {

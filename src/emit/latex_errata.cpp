@@ -253,8 +253,9 @@ std::string fragment_writer::unreconciled(const engine::paper_comparison& p, dou
     return out + ", it does not hold";
 }
 
-// The derived form to set beside a printed one: the result as its file displays it
-// (in the variables the paper prints it in), else as derived.
+// The derived form to set beside a printed one: the result as its file displays it, or
+// the printed form mended when that display is in variables the printed form does not use
+// (corrected_form), else as derived.
 std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const engine::paper_comparison& p) const
 {
     if (p.what == engine::paper_comparison::kind::result)
@@ -362,8 +363,9 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
         for (const engine::finding& f : all[k].findings)
             for (const engine::finding::part& part : f.parts)
                 if (part.what == engine::finding::part::kind::math &&
-                    !fits(part.value.info(GiNaC::info_flags::relation) ? relation_math(part.value)
-                                                                       : math(part.value),
+                    !fits(part.value.info(GiNaC::info_flags::relation)
+                              ? math(part.value.lhs()) + " " + latex_relation(part.op) + " " + math(part.value.rhs())
+                              : math(part.value),
                           change_pt))
                     to_display = true;
     std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;

@@ -82,8 +82,13 @@ std::string terminal_text(const engine::derivation& d)
                 out += fmt::format("      neither proven nor refuted: {}\n", p.agreement.method);
             if (verdict == "disagrees")
                 out += fmt::format("      printed: {}\n      derived: {}\n", p.printed_text, text(p.derived));
-            for (const std::string& change : p.reconciliations)
-                out += fmt::format("      reconciled by: {}\n", change);
+            // An edit of the printed form reconciles it; a claim's other findings say what holds instead.
+            for (std::size_t i = 0; i < p.reconciliations.size(); ++i)
+                out += fmt::format(i < p.findings.size() && !p.findings[i].corrected &&
+                                           p.what == engine::paper_comparison::kind::claim
+                                       ? "      found: {}\n"
+                                       : "      reconciled by: {}\n",
+                                   p.reconciliations[i]);
         }
         for (const spec::open_claim& c : d.source.open_claims)
             out += fmt::format("  {}: {} (no derivation settles it): undecided\n      {}\n", c.paper.value,

@@ -662,7 +662,7 @@ private:
             p.findings = other_regimes(claim.test, c);
         else if (!p.agrees() && c.op == relation::equal)
             p.findings = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
-        if (!p.agrees() && p.findings.empty() && c.parts.empty() && !c.limit)
+        if (p.agreement.what == verdict::status::failed && p.findings.empty() && c.parts.empty() && !c.limit)
             p.findings = what_holds_instead(claim.test, c);
         if (const auto found = printed_dimension_finding(out_.symbols, p.printed, p.printed))
             p.findings.insert(p.findings.begin(), *found);
@@ -677,6 +677,23 @@ private:
     // left side that the right side is (the cosine of an angle printed as the angle).
     std::vector<finding> what_holds_instead(const spec::check& original, const check_result& failed)
     {
+        // Said of the claim as written: not of one at special values or changed inputs.
+        if (!failed.at.empty() || !failed.left_at.empty())
+            return {};
+        // A search that meets arithmetic it cannot do (tan at a pole) finds nothing; it never
+        // stops the derivation.
+        try {
+            return what_holds_instead_search(original, failed);
+        } catch (const error&) {
+            throw;
+        } catch (const std::exception&) {
+            return {};
+        }
+    }
+
+    std::vector<finding> what_holds_instead_search(const spec::check& original, const check_result& failed)
+    {
+        const GiNaC::ex left = failed.stated.lhs();
         if (failed.op != relation::equal) {
             static const std::map<relation, relation> mirrored = {{relation::less, relation::greater},
                                                                   {relation::less_equal, relation::greater_equal},
@@ -684,32 +701,34 @@ private:
                                                                   {relation::greater_equal, relation::less_equal}};
             const relation reversed = mirrored.at(failed.op);
             if (prove_inequality_by_signs(failed.lhs, reversed, failed.rhs, out_.symbols, assumptions_of(original)))
-                return {finding().say("the reverse holds: ").states(failed.stated.lhs(), reversed,
-                                                                   failed.stated.rhs())};
+                return {finding().say("the reverse holds: ").states(left, reversed, failed.stated.rhs())};
             // Neither way round: what a derived quantity on the left comes to.
-            const GiNaC::ex left = failed.stated.lhs();
             if (GiNaC::is_a<GiNaC::symbol>(left) && !(failed.lhs - left).is_zero())
                 return {finding().say("derived, ").states(left, relation::equal, failed.lhs)};
             return {};
         }
-        const GiNaC::ex left = failed.stated.lhs();
-        if (!GiNaC::is_a<GiNaC::symbol>(left))
+        // An angle (derived as an arccosine, arcsine or arctangent) set equal to its cosine,
+        // sine or tangent.
+        if (!GiNaC::is_a<GiNaC::symbol>(left) || !GiNaC::is_a<GiNaC::function>(failed.lhs))
             return {};
-        const std::pair<GiNaC::ex, const char*> functions[] = {
-            {GiNaC::cos(failed.lhs), "cosine"}, {GiNaC::sin(failed.lhs), "sine"}, {GiNaC::tan(failed.lhs), "tangent"}};
-        const GiNaC::ex written[] = {GiNaC::cos(left), GiNaC::sin(left), GiNaC::tan(left)};
-        for (std::size_t i = 0; i < 3; ++i) {
-            if (prove_equal(functions[i].first, failed.rhs, out_.symbols, run_).what != verdict::status::proven)
-                continue;
-            return {finding()
-                        .say("it holds with ")
-                        .math(written[i])
-                        .say(" for ")
-                        .math(left)
-                        .say(fmt::format(": the right side is the {} of ", functions[i].second))
-                        .math(left)};
-        }
-        return {};
+        const std::string inverse = GiNaC::ex_to<GiNaC::function>(failed.lhs).get_name();
+        const std::map<std::string, std::pair<GiNaC::ex (*)(const GiNaC::ex&), const char*>> of = {
+            {"acos", {[](const GiNaC::ex& x) -> GiNaC::ex { return GiNaC::cos(x); }, "cosine"}},
+            {"asin", {[](const GiNaC::ex& x) -> GiNaC::ex { return GiNaC::sin(x); }, "sine"}},
+            {"atan", {[](const GiNaC::ex& x) -> GiNaC::ex { return GiNaC::tan(x); }, "tangent"}}};
+        const auto function = of.find(inverse);
+        if (function == of.end())
+            return {};
+        const auto [apply, name] = function->second;
+        if (prove_equal(apply(failed.lhs), failed.rhs, out_.symbols, run_).what != verdict::status::proven)
+            return {};
+        return {finding()
+                    .say("it holds with ")
+                    .math(apply(left))
+                    .say(" for ")
+                    .math(left)
+                    .say(fmt::format(": the right side is the {} of ", name))
+                    .math(left)};
     }
 
     std::vector<finding> other_regimes(const spec::check& original, const check_result& failed)
