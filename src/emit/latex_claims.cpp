@@ -416,18 +416,36 @@ std::string fragment_writer::paper() const
         }
         const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {
-            // A claim: what was proven, so that two claims of one sentence read apart.
+            // A claim: what was proven, so that two claims of one sentence read apart; one
+            // too wide for the line displayed after the item's words (the errata table,
+            // which has no room for it, refers here).
             std::vector<std::string> proven;
+            std::string displays;
             for (std::size_t k : row)
                 if (const engine::paper_comparison& c = d_.paper_checks[k];
                     c.what == engine::paper_comparison::kind::claim && c.test) {
                     const std::string shown = checked_claim_latex(*c.test, order_);
-                    if (latex_width(shown) < 260 && shown.find("\\frac{\\frac") == std::string::npos)
+                    if (latex_width(shown) < 260 && shown.find("\\frac{\\frac") == std::string::npos) {
                         proven.push_back(shown);
+                        continue;
+                    }
+                    const engine::check_result& t = *c.test;
+                    const std::string lhs = claim_lhs(t, &t.written);
+                    displays += latex_width(lhs) > content_width - 40
+                                    ? "\n\\begin{align*}\n" + rows("", t.stated.lhs(), &t.written, "", "") +
+                                          " \\\\\n" + rows("", t.stated.rhs(), &t.written, "", latex_relation(t.op)) +
+                                          "\n\\end{align*}\n"
+                                    : display(lhs, latex_relation(t.op), t.stated.rhs(), &t.written);
+                    // Its special values, domains or changed inputs, after the display.
+                    const std::string conditions = shown.substr(shown.find('$', 1) + 1);
+                    if (conditions.size() > 2)
+                        displays += capitalised(conditions.substr(2)) + ".\n";
                 }
             const std::string checked =
                 proven.empty() ? "" : " (proven: " + fmt::format("{}", fmt::join(proven, "; ")) + ")";
-            out += after_display ? "It agrees" + checked + ".\n" : " --- agrees" + checked + ".\n";
+            const std::string also = displays.empty() ? "" : (proven.empty() ? "; proven:" : "; and proven:") + displays;
+            out += after_display ? "It agrees" + checked + (also.empty() ? ".\n" : also)
+                                 : " --- agrees" + checked + (also.empty() ? ".\n" : also);
             continue;
         }
         out += fmt::format(after_display ? (verdict == "disagrees" ? "It \\textbf{{{}}}" : "It is \\textbf{{{}}}")
