@@ -15,6 +15,9 @@
 
 #include <sys/wait.h>
 #include <unistd.h>
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
 
 namespace {
 
@@ -821,6 +824,35 @@ BOOST_AUTO_TEST_CASE(a_forked_process_factors_with_a_child_of_its_own)
     BOOST_REQUIRE(f);
     BOOST_TEST(factors(*f) == 2u);
     BOOST_TEST(engine::factoring_process() == ours);
+}
+
+BOOST_AUTO_TEST_CASE(a_process_that_exits_leaves_no_factoring_child_behind)
+{
+    // A forked process starts its own child, then exits normally: its child is stopped and
+    // reaped on the way out, so that its pid no longer names a process (not even a zombie).
+    const GiNaC::symbol x("x"), y("y");
+    int pipe_fds[2];
+    BOOST_REQUIRE(::pipe(pipe_fds) == 0);
+    const pid_t pid = ::fork();
+    BOOST_REQUIRE(pid >= 0);
+    if (pid == 0) {
+        ::close(pipe_fds[0]);
+        const std::optional<GiNaC::ex> f = engine::factor_in_child(x * x - y * y, 0, 20);
+        const pid_t child = f ? engine::factoring_process() : -1;
+        if (::write(pipe_fds[1], &child, sizeof child) != sizeof child)
+            std::_Exit(2);
+        std::exit(0);  // normal exit: destructors run
+    }
+    ::close(pipe_fds[1]);
+    pid_t child = -1;
+    BOOST_REQUIRE(::read(pipe_fds[0], &child, sizeof child) == sizeof child);
+    ::close(pipe_fds[0]);
+    int status = 0;
+    BOOST_REQUIRE(::waitpid(pid, &status, 0) == pid);
+    BOOST_TEST((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    BOOST_REQUIRE(child > 0);
+    BOOST_TEST(::kill(child, 0) == -1);
+    BOOST_TEST(errno == ESRCH);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

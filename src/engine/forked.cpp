@@ -182,6 +182,17 @@ int stop(server& s, bool ours)
     return status;
 }
 
+// At exit, this process's own child is stopped and reaped: none is left behind (without it
+// the child, killed as its parent dies, lingers a moment, or as a zombie where nothing reaps).
+struct stop_at_exit {
+    ~stop_at_exit()
+    {
+        if (factorer.fd >= 0 && factorer.owner == ::getpid())
+            stop(factorer, true);
+    }
+};
+const stop_at_exit stopper;
+
 bool start(server& s)
 {
     int fds[2];
