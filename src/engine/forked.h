@@ -9,8 +9,9 @@
 // GiNaC cannot be stopped within a call, so these factorizations run in a child process,
 // started at the first and kept for the next, which factors each within a limit of CPU time;
 // the polynomial is sent and the factorization returned as text. One past its limit ends the
-// child (the polynomial is then taken as not factored), and the next starts another. A child
-// costs a fork() once; one fork() a factorization, each copying Impact's pages as it went on
+// child (the polynomial is then taken as not factored), and the next starts another. When the
+// process that started it exits, the child is stopped and reaped (and were that process
+// killed instead, the child dies with it, by PR_SET_PDEATHSIG). A child costs a fork() once; one fork() a factorization, each copying Impact's pages as it went on
 // writing them, took the LaTeX stage from 0.56 s to 4.6 s.
 //
 // Forks happen only while no thread of Impact's holds a lock the child could need: a
