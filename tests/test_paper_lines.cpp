@@ -434,8 +434,8 @@ BOOST_AUTO_TEST_CASE(eq14_prints_the_angle_where_its_cosine_belongs)
     const std::string errata = emit::errata_markdown(library().in_order());
     bool found = false;
     for (const std::string& row : errata_rows_at(errata, "Eq. 14, line 1"))
-        found = found || row.find("| **disagrees** |") != std::string::npos &&
-                             row.find("it holds with $\\cos\\theta$ for $\\theta$") != std::string::npos;
+        found = found || (row.find("| **disagrees** |") != std::string::npos &&
+                          row.find("it holds with $\\cos\\theta$ for $\\theta$") != std::string::npos);
     BOOST_TEST(found);
     for (const std::string& row : errata_rows_at(errata, "Sec. III C, after Eq. 14, 1st sentence")) {
         BOOST_TEST(row.find("| agrees |") != std::string::npos, row);

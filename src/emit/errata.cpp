@@ -225,12 +225,13 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
             const engine::result* r =
                 c.what == engine::paper_comparison::kind::result ? d->find_result(c.subject) : nullptr;
             // A claim: what was checked (its special values or limit), which its words state.
-            // A printed form that one change mends: mended, in the paper's own variables.
-            const auto corrected = r ? corrected_form(c, r->display) : std::nullopt;
+            const auto beside = [&] {
+                const auto [form, written] = result_beside(c, *r);
+                return math(form, order, written);
+            };
             derived.push_back(claim && c.test ? "checked: " + cell(checked_claim_latex(*c.test, order))
-                              : corrected ? math(*corrected, order, &c.written)
-                              : r         ? math(r->display, order, &r->written)
-                                          : math(c.derived, order, nullptr));
+                              : r             ? beside()
+                                              : math(c.derived, order, nullptr));
             // As the paper prints it: the transcription's terms and factors, nothing merged.
             printed.push_back(claim              ? cell(c.printed_text)
                               : c.written.tree() ? "$" + latex_as_written(*c.written.tree(), order) + "$"

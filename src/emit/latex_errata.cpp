@@ -170,6 +170,14 @@ std::string agreement_text(const engine::paper_comparison& p)
     return how.empty() ? head : head + ": " + how;
 }
 
+std::pair<GiNaC::ex, const written_form*> result_beside(const engine::paper_comparison& p,
+                                                        const engine::result& r)
+{
+    if (const auto corrected = corrected_form(p, r.display))
+        return {*corrected, &p.written};
+    return {r.display, &r.written};
+}
+
 std::optional<GiNaC::ex> corrected_form(const engine::paper_comparison& p, const GiNaC::ex& shown)
 {
     if (p.agrees() || p.what == engine::paper_comparison::kind::claim)
@@ -259,12 +267,8 @@ std::string fragment_writer::unreconciled(const engine::paper_comparison& p, dou
 std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const engine::paper_comparison& p) const
 {
     if (p.what == engine::paper_comparison::kind::result)
-        if (const engine::result* r = d_.find_result(p.subject)) {
-            // The printed form mended, in the paper's variables, where the display is not in them.
-            if (const auto corrected = corrected_form(p, r->display))
-                return {*corrected, &p.written};
-            return {r->display, &r->written};
-        }
+        if (const engine::result* r = d_.find_result(p.subject))
+            return result_beside(p, *r);
     // Else as a textbook shows it: factored, or collected (a root's argument likewise).
     return {textbook_form(p.derived, order_).value, nullptr};
 }
@@ -363,9 +367,8 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
         for (const engine::finding& f : all[k].findings)
             for (const engine::finding::part& part : f.parts)
                 if (part.what == engine::finding::part::kind::math &&
-                    !fits(part.value.info(GiNaC::info_flags::relation)
-                              ? math(part.value.lhs()) + " " + latex_relation(part.op) + " " + math(part.value.rhs())
-                              : math(part.value),
+                    !fits(part.value.info(GiNaC::info_flags::relation) ? relation_math(part.value, nullptr, part.op)
+                                                                       : math(part.value),
                           change_pt))
                     to_display = true;
     std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;

@@ -133,9 +133,9 @@ std::string fragment_writer::math(const GiNaC::ex& e, const written_form* w) con
     return latex(e, order_, w);
 }
 
-std::string fragment_writer::relation_math(const GiNaC::ex& r, const written_form* w) const
+std::string fragment_writer::relation_math(const GiNaC::ex& r, const written_form* w, engine::relation op) const
 {
-    return math(r.lhs(), w) + " = " + math(r.rhs(), w);
+    return math(r.lhs(), w) + " " + latex_relation(op) + " " + math(r.rhs(), w);
 }
 
 // `lhs &= rhs` rows of an align, the right side broken over lines when long; the last

@@ -111,7 +111,8 @@ public:
 private:
     // latex_fragment.cpp: the printing shared by every part, and the derivation itself.
     std::string math(const GiNaC::ex& e, const written_form* w = nullptr) const;
-    std::string relation_math(const GiNaC::ex& r, const written_form* w = nullptr) const;
+    std::string relation_math(const GiNaC::ex& r, const written_form* w = nullptr,
+                              engine::relation op = engine::relation::equal) const;
     std::string rows(const std::string& lhs, const GiNaC::ex& rhs, const written_form* w, const std::string& tag,
                      const char* relation = "=", double align_at = -1) const;
     std::string ref(const std::string& equation) const;
