@@ -10,6 +10,8 @@
 #include "engine/library.h"
 #include "spec/derivation.h"
 
+#include <fmt/format.h>
+
 #include <string>
 
 using namespace impact;
@@ -429,4 +431,32 @@ BOOST_AUTO_TEST_CASE(one_misprint_in_several_components_is_one_item_of_the_fragm
     BOOST_TEST(contains(paper, "The same misprint, with the same smallest change, is in $v'_{m,x}$ and $v'_{m,y}$."));
     // No empty sentence left behind.
     BOOST_TEST(!contains(emit::latex_fragment(derived("elastic_plane")), "\n.\n"));
+}
+
+BOOST_AUTO_TEST_CASE(a_result_by_cases_too_long_to_write_out_is_shown_as_written)
+{
+    // A result defined by cases whose values, written out in the declared quantities, would
+    // take pages (the 3D rough spheres' |J_t| spells out the radicand of |G_t|): the results
+    // show the cases as the file writes them, the quantity G kept by name.
+    std::string radicand;
+    for (int i = 1; i <= 24; ++i)
+        radicand += fmt::format("{}a{}*b{}*c{}", i > 1 ? " + " : "", i, i, i);
+    std::string symbols;
+    for (int i = 1; i <= 24; ++i)
+        for (const char* s : {"a", "b", "c"})
+            symbols += fmt::format("[[symbol]]\nname = \"{}{}\"\ndomain = \"positive\"\n", s, i);
+    const std::string text = "id = \"long_cases\"\ntitle = \"Long cases\"\n" + symbols +
+                             "[[symbol]]\nname = \"k\"\ndomain = \"positive\"\n"
+                             "[[symbol]]\nname = \"G\"\ndefinition = \"sqrt(" + radicand + ")\"\n"
+                             "[[symbol]]\nname = \"y\"\n"
+                             "[[step]]\ndefine = \"y\"\n"
+                             "cases = [{ when = \"G <= k\", as = \"G/2\" }, { when = \"G > k\", as = \"k/2\" }]\n"
+                             "because = \"half the smaller\"\n"
+                             "[[result]]\nname = \"y\"\n";
+    const engine::derivation d = engine::derive(spec::parse_derivation(text, "long_cases.toml"), {});
+    const std::string tex = emit::latex_fragment(d);
+    const std::string results = tex.substr(tex.find("\\paragraph{Results.}"));
+    BOOST_TEST(contains(results, "\\text{if } G \\leq k"), results);
+    BOOST_TEST(contains(results, "y &= \\frac{G}{2}"), results);
+    BOOST_TEST(!contains(results, "a_{24}"), results);
 }

@@ -120,28 +120,54 @@ private:
 
     // q1 = a/b, corrected by the remainder a - q1 b over b. The remainder's leading part
     // a.hi - q1 b.hi is exact through fma (q1 being a.hi/b.hi rounded). Two divisions, not
-    // one through 1/b: a reciprocal overflows where the quotient need not.
-    pair dd_div(pair a, pair b)
+    // one through 1/b: a reciprocal overflows where the quotient need not. `by` is what
+    // both divide by: b.hi, or b computed plainly where b.hi needs a division (see
+    // `divisor`); q1 + lo is then still a/b to about the square of the plain value's error.
+    pair dd_div(pair a, pair b, int by)
     {
-        const int q1 = op(opcode::div, a.hi, b.hi);
+        const int q1 = op(opcode::div, a.hi, by);
         correcting_ = true;
         const int minus_q1 = op(opcode::neg, q1);
         int r = add_lo(op(opcode::fma, minus_q1, b.hi, a.hi), a.lo);
         if (b.lo >= 0)
             r = op(opcode::fma, minus_q1, b.lo, r);
-        const int lo = op(opcode::div, r, b.hi);
+        const int lo = op(opcode::div, r, by);
         correcting_ = false;
         return {q1, lo};
     }
 
-    pair dd_sqrt(pair a)
+    // sqrt(a) = h + (a - h^2)/(2h); the correction divides by the plain square root where
+    // h needs a division (see `divisor`), `radicand` being a's expression.
+    pair dd_sqrt(pair a, const GiNaC::ex& radicand)
     {
         const int h = op(opcode::sqrt, a.hi);
         correcting_ = true;
         const int r = add_lo(op(opcode::fma, op(opcode::neg, h), h, a.hi), a.lo);
-        const int lo = op(opcode::div, r, op(opcode::add, h, h));
+        const int root = divisor(h, [&] { return op(opcode::sqrt, value(radicand)); });
+        const int lo = op(opcode::div, r, op(opcode::add, root, root));
         correcting_ = false;
         return {h, lo};
+    }
+
+    // What to divide by where a compensated value `hi` is the divisor. A kernel tests every
+    // divisor before its first division, so no divisor may need a division; a compensated
+    // value's leading part needs one where a correction that divides (a square root's, a
+    // quotient's) was renormalised into it: |G_t| = sqrt(G_t . G_t), where G_t is built on
+    // the distance of the centres, compensated. There the divisor is the same quantity
+    // computed plainly (`plain`, under the options without compensation), which needs none.
+    template <class Plain>
+    int divisor(int hi, Plain plain)
+    {
+        if (!after_division_[static_cast<std::size_t>(hi)])
+            return hi;
+        const compile_options saved = options_;
+        const bool was_correcting = correcting_;
+        options_.compensated = options_.compensated_lets = false;
+        correcting_ = false;
+        const int v = plain();
+        options_ = saved;
+        correcting_ = was_correcting;
+        return v;
     }
 
     pair dd_constant(const GiNaC::numeric& n)
@@ -197,7 +223,13 @@ private:
                 top = {constant(1), -1};
             for (const auto& t : f.denominator)
                 bottom = bottom.hi < 0 ? compensated_factor(t) : dd_mul(bottom, compensated_factor(t));
-            const pair v = bottom.hi < 0 ? top : dd_div(top, bottom);
+            const pair v = bottom.hi < 0 ? top
+                                         : dd_div(top, bottom, divisor(bottom.hi, [&] {
+                                               int plain = -1;
+                                               for (const auto& t : f.denominator)
+                                                   plain = plain < 0 ? factor(t) : op(opcode::mul, plain, factor(t));
+                                               return plain;
+                                           }));
             return f.negated ? dd_neg(v) : v;
         }
         if (GiNaC::is_a<GiNaC::power>(e)) {
@@ -229,8 +261,10 @@ private:
             return compensated(t.base);
         if (GiNaC::is_a<GiNaC::numeric>(t.exponent)) {
             const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(t.exponent);
-            if (n.is_negative())
-                return dd_div({constant(1), -1}, compensated_factor({t.base, -n}));
+            if (n.is_negative()) {
+                const pair b = compensated_factor({t.base, -n});
+                return dd_div({constant(1), -1}, b, divisor(b.hi, [&] { return power({t.base, -n}); }));
+            }
             if (n.is_integer() && n <= 4) {
                 const pair x = compensated(t.base);
                 pair r = x;
@@ -239,7 +273,7 @@ private:
                 return r;
             }
             if (n == GiNaC::numeric(1, 2))
-                return dd_sqrt(compensated(t.base));
+                return dd_sqrt(compensated(t.base), t.base);
         }
         return {power(t), -1};
     }
@@ -278,6 +312,10 @@ private:
 
     int emit(instruction in)
     {
+        bool after_division = divides(p_, in);
+        for (const int operand : operands(in))
+            after_division = after_division || after_division_[static_cast<std::size_t>(operand)];
+        after_division_.push_back(after_division);
         p_.code.push_back(std::move(in));
         return static_cast<int>(p_.code.size()) - 1;
     }
@@ -468,6 +506,7 @@ private:
     std::map<GiNaC::numeric, int, std::less<>> constants_;
     std::map<std::tuple<int, int, int, int>, int> ops_;
     bool correcting_ = false;  // the operations made now are corrections
+    std::vector<bool> after_division_;  // whether value i needs a division (not by a constant)
     std::vector<std::pair<int, bool>> branch_;  // the branches being compiled: condition, taken where positive
     std::map<std::vector<std::pair<int, bool>>, int> branch_keys_;
     int branch_key_ = 0;       // 0 outside every branch

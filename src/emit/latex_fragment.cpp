@@ -390,26 +390,32 @@ std::optional<std::string> fragment_writer::derived_cases_rows(const std::string
     if (latex_width(lhs) + latex_width(whole) < content_width - 40)
         return fmt::format("  {} &= {}{}", lhs, whole, tag.empty() ? "" : " " + tag);
     const std::string notag = tag.empty() ? "" : " \\notag";
-    std::string out;
-    if (!must) {
-        // Shown only when every case reads in at most three lines that fit.
-        for (const engine::case_value& c : cases) {
-            const std::vector<std::string> lines =
-                latex_lines(textbook_form(c.value, order_).value, order_, nullptr, content_width - 60);
-            if (lines.size() > 3)
-                return std::nullopt;
-            for (const std::string& line : lines)
-                if (latex_width(line) > content_width - 40)
-                    return std::nullopt;
-        }
+    // Every case in at most three lines that fit, or the cases as the file writes them
+    // (|J_t| = (1 + beta) m_t G_t / d^2 rather than G_t's radicand spelled out over pages).
+    bool fits = true;
+    for (const engine::case_value& c : cases) {
+        const std::vector<std::string> lines =
+            latex_lines(textbook_form(c.value, order_).value, order_, nullptr, content_width - 60);
+        fits = fits && lines.size() <= 3 &&
+               std::all_of(lines.begin(), lines.end(),
+                           [](const std::string& line) { return latex_width(line) <= content_width - 40; });
     }
+    if (!fits && !must)
+        return std::nullopt;
+    std::string out;
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const engine::case_value& c = cases[i];
         if (i > 0)
             out += " \\\\\n";
-        out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", case_condition(c), notag);
-        const textbook_value shown = textbook_form(c.value, order_);
-        out += rows(lhs, shown.value, nullptr, i + 1 == cases.size() ? tag : "");
+        const std::string condition = fits ? case_condition(c)
+                                           : fmt::format("{} {} {}", math(c.written_lhs), latex_relation(c.op),
+                                                         math(c.written_rhs));
+        out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", condition, notag);
+        const std::string last = i + 1 == cases.size() ? tag : "";
+        if (fits)
+            out += rows(lhs, textbook_form(c.value, order_).value, nullptr, last);
+        else
+            out += rows(lhs, c.as_written, &c.written, last);
     }
     return out;
 }

@@ -576,6 +576,37 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
     c.outcome = combine_cases(c.parts);
 }
 
+// The boundary `top` = 0 of two cases solved for the declared quantity it is linear in
+// whose value there is the shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass),
+// its coefficient proven non-zero where one can be; none if it is linear in none.
+std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& top, const symbol_table& symbols,
+                                                               proof_cache& run)
+{
+    std::optional<std::pair<GiNaC::ex, GiNaC::ex>> at;
+    std::size_t shortest = 0;
+    bool coefficient_proven = false;
+    const assumptions given = declared_assumptions(symbols, run);
+    for (const quantity& q : symbols.all()) {
+        // Not under a radical (degree() throws on sqrt(x)): linear means polynomial first.
+        if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
+            top.ldegree(q.symbol) < 0)
+            continue;
+        const GiNaC::ex a = top.coeff(q.symbol, 1);
+        if (a.has(q.symbol) || GiNaC::normal(a).is_zero())
+            continue;
+        const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / a);
+        const sign_set s = prove_sign(a, given).sign;
+        const bool non_zero = !s.zero && (!s.positive || !s.negative);
+        const std::size_t length = ginac_syntax(value, symbols.order()).size();
+        if (at && (coefficient_proven > non_zero || (coefficient_proven == non_zero && length >= shortest)))
+            continue;
+        at.emplace(q.symbol, value);
+        shortest = length;
+        coefficient_proven = non_zero;
+    }
+    return at;
+}
+
 check_result prove_continuity(const std::string& name, const std::vector<case_value>& cases,
                               const symbol_table& symbols, proof_cache& run, const source_location& where)
 {
@@ -594,33 +625,12 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
             check_result::part part;
             part.first = i + 1;
             part.second = j + 1;
-            // The boundary C_i = 0, solved for the first declared quantity it is linear in.
+            // The boundary C_i = 0, solved once for all the cases that share it.
             const GiNaC::ex top = GiNaC::expand(ci.numer());
-            // Of the declared quantities it is linear in, the one whose value there is the
-            // shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass), its coefficient
-            // proven non-zero where one can be.
-            std::optional<std::pair<GiNaC::ex, GiNaC::ex>> at;
-            std::size_t shortest = 0;
-            bool coefficient_proven = false;
-            const assumptions given = declared_assumptions(symbols, run);
-            for (const quantity& q : symbols.all()) {
-                // Not under a radical (degree() throws on sqrt(x)): linear means polynomial first.
-                if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
-                    top.ldegree(q.symbol) < 0)
-                    continue;
-                const GiNaC::ex a = top.coeff(q.symbol, 1);
-                if (a.has(q.symbol) || GiNaC::normal(a).is_zero())
-                    continue;
-                const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / a);
-                const sign_set s = prove_sign(a, given).sign;
-                const bool non_zero = !s.zero && (!s.positive || !s.negative);
-                const std::size_t length = ginac_syntax(value, symbols.order()).size();
-                if (at && (coefficient_proven > non_zero || (coefficient_proven == non_zero && length >= shortest)))
-                    continue;
-                at.emplace(q.symbol, value);
-                shortest = length;
-                coefficient_proven = non_zero;
-            }
+            const auto known = run.boundaries.find(top);
+            const std::optional<std::pair<GiNaC::ex, GiNaC::ex>> at =
+                known != run.boundaries.end() ? known->second
+                                              : run.boundaries.emplace(top, solved_boundary(top, symbols, run)).first->second;
             if (!at) {
                 part.under = fmt::format("cases {} and {} at {} = 0", i + 1, j + 1, ginac_syntax(ci, symbols.order()));
                 part.outcome.what = verdict::status::failed;

@@ -76,6 +76,10 @@ struct proof_cache {
     /// by the sign of x writes (engine/cases.cpp): one per x, so that what is worked out
     /// about y is kept.
     std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> magnitudes;
+    /// For the boundary of two cases (the numerator of their condition, expanded), the
+    /// quantity it is solved for and its value there (engine/cases.cpp, prove_continuity),
+    /// or none: the components of one vector meet on the same boundary.
+    std::map<GiNaC::ex, std::optional<std::pair<GiNaC::ex, GiNaC::ex>>, GiNaC::ex_is_less> boundaries;
 
     /// Nothing worked out yet.
     bool empty() const;
