@@ -531,21 +531,31 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
 
 // The arrays of `<name>_batch_data`, owned, in a layout that keeps a large batch fast: one
 // allocation, array k starting 64 + 256 k bytes (modulo 4 KiB) past a page boundary.
-void print_batch_arrays(std::string& out, const engine::kernel& k)
+void print_batch_arrays(std::string& out, const engine::kernel& k, const member_shapes& shapes)
 {
-    // Each parameter's first array among all, as C++ in N: the scalars before it, and N
-    // arrays for each array parameter before it.
+    // Each parameter's first array among all, as C++ in N: the scalars before it, N arrays
+    // for each vector before it, and as many as a member shaped by the dimension has there.
     std::vector<std::string> first;
     std::size_t scalars = 0, arrays = 0;
+    std::vector<std::string> shaped;
     auto index = [&] {
-        if (arrays == 0)
-            return std::to_string(scalars);
-        return fmt::format("{}{}N", scalars == 0 ? "" : std::to_string(scalars) + " + ",
-                           arrays == 1 ? "" : std::to_string(arrays) + " * ");
+        std::vector<std::string> terms;
+        if (scalars != 0 || (arrays == 0 && shaped.empty()))
+            terms.push_back(std::to_string(scalars));
+        if (arrays != 0)
+            terms.push_back(arrays == 1 ? "N" : std::to_string(arrays) + " * N");
+        terms.insert(terms.end(), shaped.begin(), shaped.end());
+        return fmt::format("{}", fmt::join(terms, " + "));
     };
     for (const engine::kernel_parameter& p : k.parameters) {
         first.push_back(index());
-        ++(p.is_array ? arrays : scalars);
+        const member_shape& shape = shapes.at(p.name);
+        if (shape.scalar())
+            ++scalars;
+        else if (shape.follows_dimension())
+            ++arrays;
+        else
+            shaped.push_back(shape.count());
     }
     const std::string reals = index();
     const bool with_status = !k.guards.empty();
@@ -585,8 +595,12 @@ void print_batch_arrays(std::string& out, const engine::kernel& k)
         k.name);
     for (std::size_t i = 0; i < k.parameters.size(); ++i) {
         const engine::kernel_parameter& p = k.parameters[i];
-        const std::string axis = p.is_array ? "std::size_t axis" : "";
-        const std::string where = first[i] + (p.is_array ? " + axis" : "");
+        const member_shape& shape = shapes.at(p.name);
+        // A member that is a scalar in one dimension and a vector in another: axis 0 by default.
+        const std::string axis = shape.scalar()              ? ""
+                                 : shape.follows_dimension() ? "std::size_t axis"
+                                                             : "std::size_t axis = 0";
+        const std::string where = first[i] + (shape.scalar() ? "" : " + axis");
         out += fmt::format("    Real* {0}({1}) noexcept {{ return at<Real>({2}); }}\n"
                            "    const Real* {0}({1}) const noexcept {{ return at<Real>({2}); }}\n",
                            p.name, axis, where);
@@ -599,12 +613,32 @@ void print_batch_arrays(std::string& out, const engine::kernel& k)
                        "        {0}_batch_data<Real, N> d{{}};\n        d.count = count_;\n",
                        k.name);
     for (const engine::kernel_parameter& p : k.parameters) {
-        if (p.is_array)
-            out += fmt::format("        for (std::size_t axis = 0; axis < N; ++axis)\n"
-                               "            d.{0}[axis] = {0}(axis);\n",
-                               p.name);
-        else
-            out += fmt::format("        d.{0} = {0}();\n", p.name);
+        const member_shape& shape = shapes.at(p.name);
+        auto assigned = [&](const std::string& components) {
+            return components == "0" ? fmt::format("d.{0} = {0}();", p.name)
+                                     : fmt::format("for (std::size_t axis = 0; axis < {1}; ++axis)\n"
+                                                   "            d.{0}[axis] = {0}(axis);",
+                                                   p.name, components);
+        };
+        if (shape.scalar())
+            out += "        " + assigned("0") + "\n";
+        else if (shape.follows_dimension())
+            out += "        " + assigned("N") + "\n";
+        else {
+            // if constexpr (N == 2) { d.w = w(); } else { for (axis < 3) d.w[axis] = w(axis); }
+            std::string chain = "        ";
+            for (auto c = shape.components.begin(); c != shape.components.end(); ++c) {
+                if (c != shape.components.begin())
+                    chain += " else ";
+                if (std::next(c) != shape.components.end())
+                    chain += fmt::format("if constexpr (N == {}) ", c->first);
+                std::string body = assigned(std::to_string(c->second));
+                if (const auto line = body.find("\n"); line != std::string::npos)
+                    body.insert(line + 1, "    ");
+                chain += "{\n            " + body + "\n        }";
+            }
+            out += chain + "\n";
+        }
     }
     if (with_status)
         out += "        d.status = status();\n";

@@ -7,6 +7,7 @@
 #include "emit/program_cxx.h"
 #include "compile/range.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -84,8 +85,26 @@ std::string least_magnitude(const cxx_code& code);
 /// The formats a batch loop's input range is derived for, in the order of detail::input_k's
 /// arguments (common.hpp): float, double, x87's and IEEE's quadruple long double.
 inline constexpr compile::float_format batch_formats[] = {{24, -125, 128}, {53, -1021, 1024}, {64, -16381, 16384}, {113, -16381, 16384}};
-/// The arrays of `<name>_batch_data`, owned, in one allocation laid out for speed.
-void print_batch_arrays(std::string& out, const engine::kernel& k);
+/// How a member of a kernel's shared structures is shaped in each dimension the kernel is
+/// emitted in: its components there, 0 for a scalar. A spin is one (a scalar) in 2D and a
+/// vector of three in 3D; a velocity has N components in N dimensions.
+struct member_shape {
+    std::map<std::size_t, std::size_t> components;  ///< dimension -> components (0: a scalar)
+
+    /// The member's C++ type in N dimensions, `element` its scalar type ("Real", "Real*").
+    std::string type(const std::string& element) const;
+    /// Its number of `element`s in N dimensions, as C++: "1", "N", "(N == 2 ? 1 : 3)".
+    std::string count() const;
+    /// Whether it is one value in every dimension.
+    bool scalar() const;
+    /// Whether it has N components in N dimensions.
+    bool follows_dimension() const;
+};
+/// The shapes of a kernel's parameters by name, over the plans of every dimension it has.
+using member_shapes = std::map<std::string, member_shape>;
+/// The arrays of `<name>_batch_data`, owned, in one allocation laid out for speed; `shapes`
+/// are its parameters' (member_shape).
+void print_batch_arrays(std::string& out, const engine::kernel& k, const member_shapes& shapes);
 /// Whether a batch kernel gets a skewed block loop too (and common.hpp detail::crowded).
 bool skews(const engine::kernel& k);
 
