@@ -132,15 +132,19 @@ BOOST_AUTO_TEST_CASE(every_sample_is_one_the_kernel_computes)
 
 BOOST_AUTO_TEST_CASE(a_compensated_divisor_that_needs_a_division_is_divided_by_plainly)
 {
-    // The 3D rough wall (derivations/rough_wall_space.toml): in its sliding case it divides by the size of
-    // the slip, sqrt(G_t . G_t), where G_t is built on the distance of the centres d. Compensated,
-    // d's correction (a division) is renormalised into G_t's leading part, and a kernel's
+    // The 3D rough wall's draft (tests/rough): in its sliding case it divides by
+    // the slip's G_t . G_t, where G_t is built on the normal's length |n|. Compensated, the
+    // correction of |n| (a division) is renormalised into G_t's leading part, and a kernel's
     // guards test every divisor before the first division: the compensated forms divide by
     // the same divisor computed plainly (the correction then carries the rest). Each is
     // measured (none passed over), the compensated ones are chosen, better than every plain
     // form and within the kernel's 4 ulps of the largest velocity (the plain forms miss it:
     // up to 12 ulps), and the program computes every divisor before it divides.
-    const verify::kernel_plan& plan = plan_of("rough_wall_space").plan;
+    engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/tests/rough"), "rough_wall_space");
+    const engine::derivation& d = lib.derived.at("rough_wall_space");
+    const engine::term_order order = engine::declaration_order(d.symbols);
+    const verify::kernel_plan plan = verify::plan_kernel(d.kernels.front(), order);
     std::size_t compensated_chosen = 0;
     for (const verify::component_plan& cp : plan.components) {
         for (const verify::candidate_result& c : cp.candidates)
@@ -155,4 +159,20 @@ BOOST_AUTO_TEST_CASE(a_compensated_divisor_that_needs_a_division_is_divided_by_p
     }
     BOOST_TEST(compensated_chosen > 0u);
     BOOST_TEST(!compile::divides_early(plan.code));
+}
+
+BOOST_AUTO_TEST_CASE(a_power_of_three_halves_is_a_square_root_and_a_product)
+{
+    // |n|^3 = (n.n)^(3/2): x sqrt(x), which compilers vectorise, not a call of pow (which GCC
+    // does not vectorise, and which is not correctly rounded); plainly and compensated.
+    const GiNaC::symbol x("x");
+    const engine::term_order order({x});
+    for (const bool compensated : {false, true}) {
+        const compile::program p =
+            compile::compile_program({GiNaC::pow(x, GiNaC::numeric(3, 2))}, {x}, order, {false, compensated});
+        BOOST_TEST(compile::count(p, compile::opcode::call) == 0u, compensated);
+        BOOST_TEST(compile::count(p, compile::opcode::sqrt) == 1u, compensated);
+        // 2.25^(3/2) = 2.25 * 1.5 = 3.375, exactly.
+        BOOST_TEST(compile::run<double>(p, {2.25}).front() == 3.375, compensated);
+    }
 }

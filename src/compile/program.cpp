@@ -118,11 +118,12 @@ private:
         return {p, e};
     }
 
-    // q1 = a/b, corrected by the remainder a - q1 b over b. The remainder's leading part
-    // a.hi - q1 b.hi is exact through fma (q1 being a.hi/b.hi rounded). Two divisions, not
-    // one through 1/b: a reciprocal overflows where the quotient need not. `by` is what
-    // both divide by: b.hi, or b computed plainly where b.hi needs a division (see
-    // `divisor`); q1 + lo is then still a/b to about the square of the plain value's error.
+    // q1 = a/b, corrected by the remainder a - q1 b over b. Where `by`, what both divide by,
+    // is b.hi, the remainder's leading part a.hi - q1 b.hi is exact through fma (q1 being
+    // a.hi/b.hi rounded). Two divisions, not one through 1/b: a reciprocal overflows where
+    // the quotient need not. Where b.hi needs a division, `by` is b computed plainly (see
+    // `divisor`): the remainder is then rounded once, and q1 + lo is still a/b to about the
+    // square of the plain value's relative error (a few ulps: it must be well below 1).
     pair dd_div(pair a, pair b, int by)
     {
         const int q1 = op(opcode::div, a.hi, by);
@@ -152,9 +153,13 @@ private:
     // What to divide by where a compensated value `hi` is the divisor. A kernel tests every
     // divisor before its first division, so no divisor may need a division; a compensated
     // value's leading part needs one where a correction that divides (a square root's, a
-    // quotient's) was renormalised into it: |G_t| = sqrt(G_t . G_t), where G_t is built on
-    // the distance of the centres, compensated. There the divisor is the same quantity
-    // computed plainly (`plain`, under the options without compensation), which needs none.
+    // quotient's) was renormalised into it: a rough wall's slip G_t is built on |n|, whose
+    // square root is corrected by a division, and the sliding impulse divides by G_t . G_t.
+    // There the divisor is the same quantity computed plainly (`plain`, under the options
+    // without compensation), which needs none. The plain value must be close to the
+    // compensated one: a divisor that cancels can be far off plainly (even of the other
+    // sign), so a form dividing by one is only as good as its measured accuracy shows; the
+    // divisors met so far are sums of squares and their roots.
     template <class Plain>
     int divisor(int hi, Plain plain)
     {
@@ -274,6 +279,8 @@ private:
             }
             if (n == GiNaC::numeric(1, 2))
                 return dd_sqrt(compensated(t.base), t.base);
+            if (n == GiNaC::numeric(3, 2))   // x sqrt(x), as `power` computes it
+                return dd_mul(compensated(t.base), dd_sqrt(compensated(t.base), t.base));
         }
         return {power(t), -1};
     }
@@ -492,6 +499,12 @@ private:
             }
             if (n == GiNaC::numeric(1, 2))
                 return op(opcode::sqrt, value(t.base));
+            // |n|^3 = (n.n)^(3/2) as n.n sqrt(n.n): a square root and a product, which every
+            // compiler vectorises, not a call of pow, which GCC does not (nor is it exact).
+            if (n == GiNaC::numeric(3, 2)) {
+                const int x = value(t.base);
+                return op(opcode::mul, x, op(opcode::sqrt, x));
+            }
         }
         return call("pow", {value(t.base), value(t.exponent)});
     }

@@ -182,35 +182,45 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
         const engine::kernel& k = *plan->kernel;
         if (dimension(k) == 0 || !written.insert(k.name).second)
             continue;
+        // The members of every dimension (in the order they first come), each shaped as its
+        // dimensions need; the batch structures as the dimensions with a batch form need them.
         member_shapes outputs, parameters;
+        std::vector<std::string> members;
+        const engine::kernel* batched = nullptr;
         for (const engine::kernel* each : by_name[k.name]) {
             const std::size_t n = dimension(*each);
-            for (const engine::kernel_output& o : each->outputs)
+            for (const engine::kernel_output& o : each->outputs) {
+                if (outputs.find(o.member) == outputs.end())
+                    members.push_back(o.member);
                 outputs[o.member].components[n] = o.is_array ? o.values.size() : 0;
-            if (each->batch)   // the batch structures as the dimensions with a batch need them
-                for (const engine::kernel_parameter& p : each->parameters)
-                    parameters[p.name].components[n] = p.is_array ? p.components.size() : 0;
+            }
+            if (!each->batch)
+                continue;
+            batched = batched ? batched : each;
+            for (const engine::kernel_parameter& p : each->parameters)
+                parameters[p.name].components[n] = p.is_array ? p.components.size() : 0;
         }
         out += fmt::format("\n/// What {} returns in N dimensions.\ntemplate <class Real, std::size_t N>\nstruct {}_result {{\n",
                            k.name, k.name);
-        for (const engine::kernel_output& o : k.outputs)
-            out += fmt::format("    {} {};\n", outputs[o.member].type("Real"), o.member);
+        for (const std::string& member : members)
+            out += fmt::format("    {} {};\n", outputs[member].type("Real"), member);
         if (!k.guards.empty())
             out += "    impact::status status;\n";
         out += "};\n";
-        if (!k.batch)
+        if (!batched)
             continue;
+        const engine::kernel& b = *batched;
         out += fmt::format("\n/// Structure-of-arrays data for {}_batch: one array per scalar, N per vector.\n"
                            "/// The arrays written (velocities, status) must not overlap any other.\n"
                            "template <class Real, std::size_t N>\nstruct {}_batch_data {{\n    std::size_t count;\n",
-                           k.name, k.name);
-        for (const engine::kernel_parameter& p : k.parameters)
-            out += fmt::format("    {} {};\n", parameters[p.name].type(is_output(k, p.name) ? "Real*" : "const Real*"),
+                           b.name, b.name);
+        for (const engine::kernel_parameter& p : b.parameters)
+            out += fmt::format("    {} {};\n", parameters[p.name].type(is_output(b, p.name) ? "Real*" : "const Real*"),
                                p.name);
-        if (!k.guards.empty())
+        if (!b.guards.empty())
             out += "    impact::status* status;\n";
         out += "};\n";
-        print_batch_arrays(out, k, parameters);
+        print_batch_arrays(out, b, parameters);
     }
     out += "\n} // namespace impact\n\nIMPACT_PRECISE_END\n";
     return out;

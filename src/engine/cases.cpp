@@ -576,6 +576,8 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
     c.outcome = combine_cases(c.parts);
 }
 
+namespace {
+
 // The boundary `top` = 0 of two cases solved for the declared quantity it is linear in
 // whose value there is the shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass),
 // its coefficient proven non-zero where one can be; none if it is linear in none.
@@ -606,6 +608,8 @@ std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& 
     }
     return at;
 }
+
+} // namespace
 
 check_result prove_continuity(const std::string& name, const std::vector<case_value>& cases,
                               const symbol_table& symbols, proof_cache& run, const source_location& where)

@@ -606,7 +606,7 @@ private:
 template <class Real, std::size_t N>
 struct collide_wall_rough_result {
     std::array<Real, N> v;
-    std::conditional_t<N == 2, Real, std::array<Real, 3>> w;
+    Real w;
     impact::status status;
 };
 
