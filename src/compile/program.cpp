@@ -229,12 +229,8 @@ private:
             for (const auto& t : f.denominator)
                 bottom = bottom.hi < 0 ? compensated_factor(t) : dd_mul(bottom, compensated_factor(t));
             const pair v = bottom.hi < 0 ? top
-                                         : dd_div(top, bottom, divisor(bottom.hi, [&] {
-                                               int plain = -1;
-                                               for (const auto& t : f.denominator)
-                                                   plain = plain < 0 ? factor(t) : op(opcode::mul, plain, factor(t));
-                                               return plain;
-                                           }));
+                                         : dd_div(top, bottom,
+                                                  divisor(bottom.hi, [&] { return product_of(f.denominator); }));
             return f.negated ? dd_neg(v) : v;
         }
         if (GiNaC::is_a<GiNaC::power>(e)) {
@@ -460,16 +456,21 @@ private:
     int product(const GiNaC::ex& e)
     {
         const engine::term_order::fraction f = order_.split(e);
-        int top = -1;
-        for (const auto& t : f.numerator)
-            top = top < 0 ? factor(t) : op(opcode::mul, top, factor(t));
+        int top = product_of(f.numerator);
         if (top < 0)
             top = constant(1);
-        int bottom = -1;
-        for (const auto& t : f.denominator)
-            bottom = bottom < 0 ? factor(t) : op(opcode::mul, bottom, factor(t));
+        const int bottom = product_of(f.denominator);
         int v = bottom < 0 ? top : op(opcode::div, top, bottom);
         return f.negated ? op(opcode::neg, v) : v;
+    }
+
+    // The product of `factors` left to right; none (-1) for no factor.
+    int product_of(const std::vector<engine::term_order::power_term>& factors)
+    {
+        int v = -1;
+        for (const auto& t : factors)
+            v = v < 0 ? factor(t) : op(opcode::mul, v, factor(t));
+        return v;
     }
 
     int factor(const engine::term_order::power_term& t)

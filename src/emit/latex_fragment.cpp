@@ -379,6 +379,11 @@ std::string fragment_writer::case_condition(const engine::case_value& c) const
     const std::string derived = fmt::format("{} {} {}", math(c.lhs), latex_relation(c.op), math(c.rhs));
     if (latex_width(derived) < 0.6 * content_width)
         return derived;
+    return written_condition(c);
+}
+
+std::string fragment_writer::written_condition(const engine::case_value& c) const
+{
     return fmt::format("{} {} {}", math(c.written_lhs), latex_relation(c.op), math(c.written_rhs));
 }
 
@@ -407,10 +412,7 @@ std::optional<std::string> fragment_writer::derived_cases_rows(const std::string
         const engine::case_value& c = cases[i];
         if (i > 0)
             out += " \\\\\n";
-        const std::string condition = fits ? case_condition(c)
-                                           : fmt::format("{} {} {}", math(c.written_lhs), latex_relation(c.op),
-                                                         math(c.written_rhs));
-        out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", condition, notag);
+        out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", fits ? case_condition(c) : written_condition(c), notag);
         const std::string last = i + 1 == cases.size() ? tag : "";
         if (fits)
             out += rows(lhs, textbook_form(c.value, order_).value, nullptr, last);

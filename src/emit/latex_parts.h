@@ -131,13 +131,16 @@ private:
     std::string cases_math(const std::vector<engine::case_value>& cases, bool derived) const;
     /// `lhs &= \begin{cases} ... \end{cases}` in the declared quantities when it fits the
     /// line; else each case on rows of its own under its condition, its value as a textbook
-    /// shows it and broken over lines. The last row gets `tag`. Unless it `must` be shown,
-    /// none when a case takes more than three lines or does not fit.
+    /// shows it and broken over lines. The last row gets `tag`. When a case takes more than
+    /// three lines or does not fit: none, or, if it `must` be shown, the cases as the file
+    /// writes them.
     std::optional<std::string> derived_cases_rows(const std::string& lhs, const std::vector<engine::case_value>& cases,
                                                   const std::string& tag, bool must) const;
     /// A case's condition, `lhs \leq rhs`: in the declared quantities when short, else as
     /// the file writes it.
     std::string case_condition(const engine::case_value& c) const;
+    /// A case's condition as the file writes it.
+    std::string written_condition(const engine::case_value& c) const;
     std::string yields(const engine::step_result& s) const;
     std::string quotient_step(const engine::step_result& s, const spec::step* source,
                               const std::string& because) const;
