@@ -132,7 +132,7 @@ BOOST_AUTO_TEST_CASE(every_sample_is_one_the_kernel_computes)
 
 BOOST_AUTO_TEST_CASE(a_compensated_divisor_that_needs_a_division_is_divided_by_plainly)
 {
-    // The 3D rough wall's draft (tests/rough): in its sliding case it divides by
+    // The 3D rough wall (derivations/rough_wall_space.toml): in its sliding case it divides by
     // the slip's G_t . G_t, where G_t is built on the normal's length |n|. Compensated, the
     // correction of |n| (a division) is renormalised into G_t's leading part, and a kernel's
     // guards test every divisor before the first division: the compensated forms divide by
@@ -140,11 +140,7 @@ BOOST_AUTO_TEST_CASE(a_compensated_divisor_that_needs_a_division_is_divided_by_p
     // measured (none passed over), the compensated ones are chosen, better than every plain
     // form and within the kernel's 4 ulps of the largest velocity (the plain forms miss it:
     // up to 12 ulps), and the program computes every divisor before it divides.
-    engine::library lib =
-        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/tests/rough"), "rough_wall_space");
-    const engine::derivation& d = lib.derived.at("rough_wall_space");
-    const engine::term_order order = engine::declaration_order(d.symbols);
-    const verify::kernel_plan plan = verify::plan_kernel(d.kernels.front(), order);
+    const verify::kernel_plan& plan = plan_of("rough_wall_space").plan;
     std::size_t compensated_chosen = 0;
     for (const verify::component_plan& cp : plan.components) {
         for (const verify::candidate_result& c : cp.candidates)

@@ -163,7 +163,7 @@ const std::set<std::string> covered = {"elastic_line",      "inelastic_line",   
                                        "scatter_angle",     "elastic_plane",       "inelastic_plane",
                                        "inelastic_space",   "rough_sticking",      "rough_plane",
                                        "wall_plane",        "wall_space",          "rough_space_impulse",
-                                       "rough_wall_plane",  "rough_collision_frame"};
+                                       "rough_wall_plane",  "rough_collision_frame", "rough_wall_space"};
 
 } // namespace
 
@@ -781,6 +781,46 @@ BOOST_AUTO_TEST_CASE(a_rough_sphere_sticks_to_or_slides_on_a_wall_as_walton_s_mo
     const ex g_n = -(v_x * N_x + v_y * N_y) / length, g_t = R * w - (-v_x * N_y + v_y * N_x) / length;
     BOOST_TEST(equal(value(d, "J_n"), (1 + eps) * m * g_n));
     BOOST_TEST(equal(value(d, "J_stick"), (1 + b) * q * m / (1 + q) * g_t));
+}
+
+BOOST_AUTO_TEST_CASE(a_rough_wall_in_space_sticks_or_slides_as_waltons_model_says)
+{
+    // A rough sphere against a wall in space: u = n/|n|, the wall's velocity relative to the
+    // contact point g = -v + R w x u, g_n = g.u, g_t = g - g_n u; per unit mass the normal
+    // impulse (1 + eps) g_n, the sticking one (1 + beta) q/(1 + q) g_t, capped at
+    // mu (1 + eps) g_n along g_t; v' = v + j_n u + j_t, w' = w - u x j_t/(q R). In exact
+    // numbers: n = (0, 0, 2), v = (1, -2, -3), w = (4, -1, 2), R = 1/2, q = 2/5, eps = 1/2,
+    // beta = 1/3: w x u = (-1, -4, 0), g = (-3/2, 0, 3), g_n = 3, g_t = (-3/2, 0, 0),
+    // j_n = 9/2, the sticking impulse (8/21) g_t = (-4/7, 0, 0); u x j_t = (0, j_tx, 0).
+    const engine::derivation& d = derived("rough_wall_space");
+    const ex R = sym(d, "R"), q = sym(d, "q"), eps = sym(d, "eps"), b = sym(d, "b"), mu = sym(d, "mu");
+    GiNaC::exmap at{{R, numeric(1, 2)}, {q, numeric(2, 5)}, {eps, numeric(1, 2)}, {b, numeric(1, 3)}};
+    const char* axes[3] = {"x", "y", "z"};
+    const numeric N[3] = {0, 0, 2}, v[3] = {1, -2, -3}, w[3] = {4, -1, 2};
+    for (int k = 0; k < 3; ++k) {
+        at[sym(d, std::string("N_") + axes[k])] = N[k];
+        at[sym(d, std::string("v_") + axes[k])] = v[k];
+        at[sym(d, std::string("w_") + axes[k])] = w[k];
+    }
+    // mu = 10: mu j_n = 45 > 4/7, the contact sticks; mu = 1/10: 9/20 < 4/7, it slides.
+    for (const numeric& friction : {numeric(10), numeric(1, 10)}) {
+        at[mu] = friction;
+        const numeric j_n = numeric(9, 2), stick = numeric(-4, 7);
+        const numeric j_tx = -stick <= friction * j_n ? stick : -friction * j_n;
+        const numeric v_after[3] = {1 + j_tx, -2, -3 + j_n};
+        const numeric w_after[3] = {4, -1 - j_tx / (numeric(2, 5) * numeric(1, 2)), 2};
+        const std::vector<GiNaC::exmap> here{at};
+        BOOST_TEST_CONTEXT("mu = " << friction)
+        {
+            for (int k = 0; k < 3; ++k) {
+                const std::string axis = axes[k];
+                BOOST_TEST(numerically_equal(with_case_that_holds(d, value(d, "v_" + axis + "_after"), at), v_after[k], here),
+                           axis);
+                BOOST_TEST(numerically_equal(with_case_that_holds(d, value(d, "w_" + axis + "_after"), at), w_after[k], here),
+                           axis);
+            }
+        }
+    }
 }
 
 BOOST_AUTO_TEST_CASE(an_impulse_at_the_contact_point_in_space_moves_and_spins_the_spheres_as_newton_says)

@@ -306,6 +306,36 @@ BOOST_AUTO_TEST_CASE(a_quartic_in_y_squared_is_solved_as_a_quadratic)
     BOOST_TEST(every_step_check_proven(d.steps.front()));
 }
 
+BOOST_AUTO_TEST_CASE(a_value_with_a_square_root_is_written_one_way)
+{
+    // A sphere's velocity after it hits a rough wall in the plane, its normal (a, b) of any
+    // length: u = (a, b)/|(a, b)| holds a square root. The value is written one way whatever
+    // order GiNaC gives the terms in this build (normal() alone leaves some products of
+    // a^2 + b^2 multiplied out and others not, and which follows that order): the numerator
+    // multiplied out, the square root to its first power, over a^2 + b^2.
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"test\"\n"
+        "[[symbol]]\nname = \"a\"\n[[symbol]]\nname = \"b\"\n"
+        "[[symbol]]\nname = \"v_a\"\n[[symbol]]\nname = \"v_b\"\n"
+        "[[symbol]]\nname = \"w\"\n[[symbol]]\nname = \"R\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"eps\"\ndomain = \"nonnegative\"\n[[symbol]]\nname = \"c\"\n"
+        "[[symbol]]\nname = \"n_norm\"\ndefinition = \"sqrt(a^2 + b^2)\"\n"
+        "[[symbol]]\nname = \"g_n\"\ndefinition = \"-(v_a*a + v_b*b)/n_norm\"\n"
+        "[[symbol]]\nname = \"g_t\"\ndefinition = \"-v_a - g_n*a/n_norm - R*w*b/n_norm\"\n"
+        "[[symbol]]\nname = \"v_a_after\"\n"
+        "[[step]]\ndefine = \"v_a_after\"\nas = \"v_a + (1 + eps)*g_n*a/n_norm + c*g_t\"\nbecause = \"the impulse\"\n"
+        "[[result]]\nname = \"v_a_after\"\n");
+    const GiNaC::ex a = sym(d, "a"), b = sym(d, "b"), v_a = sym(d, "v_a"), v_b = sym(d, "v_b");
+    const GiNaC::ex w = sym(d, "w"), R = sym(d, "R"), eps = sym(d, "eps"), c = sym(d, "c");
+    // (v_a (a^2 + b^2) - (1 + eps)(v_a a + v_b b) a + c (-v_a b^2 + v_b a b - R w b sqrt(a^2 + b^2)))/(a^2 + b^2),
+    // multiplied out (v_a a^2 cancels).
+    const GiNaC::ex numerator = v_a * pow(b, 2) - eps * v_a * pow(a, 2) - v_b * a * b - eps * v_b * a * b -
+                                c * v_a * pow(b, 2) + c * v_b * a * b - c * R * w * b * GiNaC::sqrt(pow(a, 2) + pow(b, 2));
+    const GiNaC::ex value = value_of(d, "v_a_after");
+    BOOST_TEST(equal(value, numerator / (pow(a, 2) + pow(b, 2))));
+    BOOST_TEST(value.is_equal(numerator / (pow(a, 2) + pow(b, 2))), value);
+}
+
 BOOST_AUTO_TEST_CASE(a_linear_system_is_solved_as_before)
 {
     const engine::derivation d = derive_text(with_x_and_y(

@@ -11,7 +11,9 @@
 // contact sticks, reversing the wall's tangential velocity relative to it, R w - v.t, scaled
 // by beta, unless friction caps the tangential impulse at mu times the normal one; the
 // angular momentum about the contact point kept; the rough sphere-sphere kernel with the
-// other sphere fixed agrees.
+// other sphere fixed agrees. In space (derivations/rough_wall_space.toml) the spin is a vector:
+// the same model with g = -v + R w x u, against the model typed here, the floor's closed
+// forms, the plane's kernel for a hit in the plane, and every refusal.
 #define BOOST_TEST_MODULE test_wall_kernel
 #include <boost/test/unit_test.hpp>
 
@@ -21,6 +23,7 @@
 #include <impact/collide_wall_3d.hpp>
 #include <impact/collide_rough_2d.hpp>
 #include <impact/collide_wall_rough_2d.hpp>
+#include <impact/collide_wall_rough_3d.hpp>
 
 #include <algorithm>
 #include <array>
@@ -511,6 +514,277 @@ BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_bit_for_bit)
 {
     check_rough_batch(9001);
     check_rough_batch(9011, impact::fast);
+}
+
+
+// A rough sphere hits a wall in space: Walton's model with vector spins, in long double.
+// u = n/|n|; the wall's velocity relative to the sphere's contact point (at -R u from its
+// centre): g = -v + R w x u, g_n = g.u (> 0 approaching), g_t = g - g_n u; per unit mass the
+// normal impulse (1 + eps) g_n along u, the tangential one (1 + beta) q/(1 + q) g_t inside
+// the friction cone, mu (1 + eps) g_n g_t/|g_t| outside it; v' = v + j_n u + j_t,
+// w' = w - u x j_t/(q R) (the impulse's moment at -R u over q m R^2).
+struct rough_wall_hit_3d {
+    vec<3> P, n, C, v, w;
+    double R, q, eps, beta, mu;
+};
+
+struct rough_after_3d {
+    std::array<long double, 3> v, w;
+    bool sliding;
+};
+
+std::array<long double, 3> cross(const std::array<long double, 3>& a, const std::array<long double, 3>& b)
+{
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+rough_after_3d walton_3d(const rough_wall_hit_3d& h)
+{
+    const long double length = std::sqrt(dot(h.n, h.n));
+    std::array<long double, 3> u, w, g, g_t;
+    for (std::size_t k = 0; k < 3; ++k)
+        u[k] = h.n[k] / length, w[k] = h.w[k];
+    const std::array<long double, 3> w_x_u = cross(w, u);
+    for (std::size_t k = 0; k < 3; ++k)
+        g[k] = -static_cast<long double>(h.v[k]) + h.R * w_x_u[k];
+    const long double g_n = g[0] * u[0] + g[1] * u[1] + g[2] * u[2];
+    for (std::size_t k = 0; k < 3; ++k)
+        g_t[k] = g[k] - g_n * u[k];
+    const long double slip = std::sqrt(g_t[0] * g_t[0] + g_t[1] * g_t[1] + g_t[2] * g_t[2]);
+    const long double j_n = (1 + static_cast<long double>(h.eps)) * g_n;
+    const long double stick = (1 + static_cast<long double>(h.beta)) * h.q / (1 + static_cast<long double>(h.q));
+    const bool sliding = stick * slip > h.mu * j_n;
+    std::array<long double, 3> j_t;
+    for (std::size_t k = 0; k < 3; ++k)
+        j_t[k] = sliding ? h.mu * j_n * g_t[k] / slip : stick * g_t[k];
+    const std::array<long double, 3> moment = cross(u, j_t);
+    rough_after_3d after{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        after.v[k] = h.v[k] + j_n * u[k] + j_t[k];
+        after.w[k] = h.w[k] - moment[k] / (h.q * h.R);
+    }
+    after.sliding = sliding;
+    return after;
+}
+
+rough_wall_hit_3d draw_rough_3d(std::mt19937_64& random)
+{
+    const wall_hit<3> h = draw<3>(random);
+    std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1), decade(-2, 2);
+    rough_wall_hit_3d r{h.P, h.n, h.C, h.v, {}, std::pow(10.0, decade(random) / 2), 0.05 + 0.6 * fraction(random),
+                        h.eps, unit(random), 0};
+    const double spin = std::pow(10.0, decade(random));
+    for (double& x : r.w)
+        x = unit(random) * spin;
+    r.mu = fraction(random) < 0.25 ? inf : std::pow(10.0, decade(random));
+    return r;
+}
+
+BOOST_AUTO_TEST_CASE(a_rough_wall_in_space_follows_waltons_model)
+{
+    std::mt19937_64 random(8101);
+    double worst = 0;
+    int resolved = 0, slid = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const rough_wall_hit_3d h = draw_rough_3d(random);
+        const auto out = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu);
+        if (out.status == impact::status::separating || out.status == impact::status::behind_the_wall)
+            continue;
+        BOOST_TEST_REQUIRE((out.status == impact::status::ok));
+        ++resolved;
+        const rough_after_3d want = walton_3d(h);
+        slid += want.sliding;
+        // Errors in ulps of the largest velocity (R w counted as one; w' scaled by R).
+        long double scale = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            scale = std::max({scale, std::fabs(static_cast<long double>(h.v[k])), std::fabs(h.R * static_cast<long double>(h.w[k])),
+                              std::fabs(want.v[k]), std::fabs(h.R * want.w[k])});
+        const long double ulp = scale * std::numeric_limits<double>::epsilon();
+        for (std::size_t k = 0; k < 3; ++k)
+            worst = std::max({worst, static_cast<double>(std::fabs(out.v[k] - want.v[k]) / ulp),
+                              static_cast<double>(h.R * std::fabs(out.w[k] - want.w[k]) / ulp)});
+        // The angular momentum about the contact point, q m R^2 w + R u x m v, kept (m = 1).
+        const long double length = std::sqrt(dot(h.n, h.n));
+        const std::array<long double, 3> u{h.n[0] / length, h.n[1] / length, h.n[2] / length};
+        auto about_contact = [&](const std::array<long double, 3>& v, const std::array<long double, 3>& w) {
+            const std::array<long double, 3> u_x_v = cross(u, v);
+            std::array<long double, 3> L;
+            for (std::size_t k = 0; k < 3; ++k)
+                L[k] = h.q * h.R * h.R * w[k] + h.R * u_x_v[k];
+            return L;
+        };
+        const auto before = about_contact({h.v[0], h.v[1], h.v[2]}, {h.w[0], h.w[1], h.w[2]});
+        const auto after = about_contact({out.v[0], out.v[1], out.v[2]}, {out.w[0], out.w[1], out.w[2]});
+        for (std::size_t k = 0; k < 3; ++k)
+            BOOST_TEST(std::fabs(after[k] - before[k]) <= 64 * h.R * ulp);
+    }
+    BOOST_TEST(resolved > 3900);
+    BOOST_TEST(slid > 400);
+    BOOST_TEST(resolved - slid > 400);
+    BOOST_TEST(worst <= 4, "worst " << worst << " ulps");
+}
+
+BOOST_AUTO_TEST_CASE(a_spinning_ball_on_the_floor_in_space_sticks_or_slides)
+{
+    // The floor z = 0 with normal (0, 0, 2); a solid ball (q = 2/5, R = 1/2) falling at
+    // (0, 0, -1), spinning at w = (0, 7, 0): w x u = (7, 0, 0), g = (3.5, 0, 1), g_n = 1,
+    // g_t = (3.5, 0, 0). Elastic and perfectly rough (eps = beta = 1), never sliding:
+    // j_t = 2 (2/7) (3.5, 0, 0) = (2, 0, 0), v' = (0, 0, -1) + 2 (0, 0, 1) + (2, 0, 0) = (2, 0, 1),
+    // w' = w - u x j_t/(q R) = (0, 7, 0) - (0, 2, 0)/0.2 = (0, -3, 0).
+    const vec<3> floor{0, 0, 0}, up{0, 0, 2}, centre{0, 0, 0.5}, falling{0, 0, -1}, spin{0, 7, 0};
+    const auto stuck = impact::collide_wall_rough(0.5, 0.4, floor, up, centre, falling, spin, 1.0, 1.0, inf);
+    BOOST_TEST((stuck.status == impact::status::ok));
+    const vec<3> stuck_v{2, 0, 1}, stuck_w{0, -3, 0};
+    for (std::size_t k = 0; k < 3; ++k) {
+        BOOST_TEST(stuck.v[k] == stuck_v[k], boost::test_tools::tolerance(1e-15));
+        BOOST_TEST(stuck.w[k] == stuck_w[k], boost::test_tools::tolerance(1e-15));
+    }
+    // mu = 1/4: mu (1 + eps) g_n = 1/2 < 2, the ball slides: j_t = (1/2, 0, 0),
+    // v' = (1/2, 0, 1), w' = (0, 7 - 2.5, 0) = (0, 4.5, 0).
+    const auto slid = impact::collide_wall_rough(0.5, 0.4, floor, up, centre, falling, spin, 1.0, 1.0, 0.25);
+    const vec<3> slid_v{0.5, 0, 1}, slid_w{0, 4.5, 0};
+    for (std::size_t k = 0; k < 3; ++k) {
+        BOOST_TEST(slid.v[k] == slid_v[k], boost::test_tools::tolerance(1e-15));
+        BOOST_TEST(slid.w[k] == slid_w[k], boost::test_tools::tolerance(1e-15));
+    }
+    // A smooth contact (beta = -1, mu = 0) is collide_wall's reflection, the spin kept.
+    const vec<3> v{3, 1, -4}, w{1, 7, -2};
+    const auto smooth = impact::collide_wall_rough(0.5, 0.4, vec<3>{5, 0, 0}, up, vec<3>{0, 2, 1}, v, w, 0.5, -1.0, 0.0);
+    BOOST_TEST(smooth.v[0] == 3.0);
+    BOOST_TEST(smooth.v[1] == 1.0);
+    BOOST_TEST(smooth.v[2] == 2.0);
+    BOOST_TEST(same_bits(smooth.w, w));
+}
+
+BOOST_AUTO_TEST_CASE(a_rough_hit_in_the_plane_is_the_planes)
+{
+    // Everything in the x-y plane and the spin about z: the 3D kernel gives the 2D kernel's
+    // velocity (z component 0) and spin (about z), derived separately (rough_wall_plane).
+    std::mt19937_64 random(8102);
+    int compared = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const rough_wall_hit h = draw_rough(random);
+        const auto plane = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu);
+        if (plane.status != impact::status::ok)
+            continue;
+        const auto space = impact::collide_wall_rough(h.R, h.q, vec<3>{h.P[0], h.P[1], 0}, vec<3>{h.n[0], h.n[1], 0},
+                                                      vec<3>{h.C[0], h.C[1], 0}, vec<3>{h.v[0], h.v[1], 0},
+                                                      vec<3>{0, 0, h.w}, h.eps, h.beta, h.mu);
+        BOOST_TEST_REQUIRE((space.status == impact::status::ok));
+        const double scale = std::max({std::fabs(h.v[0]), std::fabs(h.v[1]), std::fabs(h.R * h.w), std::fabs(plane.v[0]),
+                                       std::fabs(plane.v[1]), std::fabs(h.R * plane.w)});
+        const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
+        BOOST_TEST(std::fabs(space.v[0] - plane.v[0]) <= tolerance);
+        BOOST_TEST(std::fabs(space.v[1] - plane.v[1]) <= tolerance);
+        BOOST_TEST(std::fabs(space.v[2]) <= tolerance);
+        BOOST_TEST(h.R * std::fabs(space.w[2] - plane.w) <= tolerance);
+        BOOST_TEST(h.R * std::fabs(space.w[0]) <= tolerance);
+        BOOST_TEST(h.R * std::fabs(space.w[1]) <= tolerance);
+        ++compared;
+    }
+    BOOST_TEST(compared > 900);
+}
+
+BOOST_AUTO_TEST_CASE(each_rough_refusal_in_space_has_its_status_and_returns_velocity_and_spin_bit_for_bit)
+{
+    using impact::status;
+    struct refused {
+        double R, q, eps, beta, mu;
+        vec<3> w, n, C, v;
+        status expected;
+    };
+    const vec<3> w{2, -1, 3}, n{0, 0, 1}, C{0, 0, 1}, v{1, 0.5, -1};
+    for (const refused& r : {refused{0, 0.4, 0.5, 0, 1, w, n, C, v, status::invalid_radius},
+                             refused{inf, 0.4, 0.5, 0, 1, w, n, C, v, status::invalid_radius},
+                             refused{1, 0.7, 0.5, 0, 1, w, n, C, v, status::invalid_inertia},
+                             refused{1, 0, 0.5, 0, 1, w, n, C, v, status::invalid_inertia},
+                             refused{1, 0.4, 1.5, 0, 1, w, n, C, v, status::invalid_restitution},
+                             refused{1, 0.4, 0.5, 1.5, 1, w, n, C, v, status::invalid_tangential_restitution},
+                             refused{1, 0.4, 0.5, 0, -1, w, n, C, v, status::invalid_friction},
+                             refused{1, 0.4, 0.5, 0, nan, w, n, C, v, status::invalid_friction},
+                             refused{1, 0.4, 0.5, 0, 1, {2, nan, 3}, n, C, v, status::non_finite},
+                             refused{1, 0.4, 0.5, 0, 1, w, {0, 0, 0}, C, v, status::invalid_normal},
+                             refused{1, 0.4, 0.5, 0, 1, w, n, {0, 0, -1}, v, status::behind_the_wall},
+                             refused{1, 0.4, 0.5, 0, 1, w, n, C, {1, 0.5, 1}, status::separating}}) {
+        for (const bool fast : {false, true}) {
+            const auto out = fast ? impact::collide_wall_rough(r.R, r.q, vec<3>{0, 0, 0}, r.n, r.C, r.v, r.w, r.eps,
+                                                               r.beta, r.mu, impact::fast)
+                                  : impact::collide_wall_rough(r.R, r.q, vec<3>{0, 0, 0}, r.n, r.C, r.v, r.w, r.eps,
+                                                               r.beta, r.mu);
+            BOOST_TEST((out.status == r.expected), "status " << static_cast<int>(out.status) << (fast ? " (fast)" : ""));
+            BOOST_TEST(same_bits(out.v, r.v));
+            BOOST_TEST(same_bits(out.w, r.w));
+        }
+    }
+}
+
+// The batch in space: every hit, refused ones among them, gives the scalar kernel's velocity,
+// spin and status bit for bit.
+template <class... Form>
+void check_rough_batch_3d(std::uint64_t seed, Form... form)
+{
+    std::mt19937_64 random(seed);
+    const std::size_t count = 1003;
+    std::vector<rough_wall_hit_3d> hits(count);
+    std::array<std::vector<double>, 3> P, n, C, v, w;
+    for (std::size_t k = 0; k < 3; ++k)
+        for (auto* a : {&P[k], &n[k], &C[k], &v[k], &w[k]})
+            a->resize(count);
+    std::vector<double> R(count), q(count), eps(count), beta(count), mu(count);
+    std::vector<impact::status> statuses(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        rough_wall_hit_3d& h = hits[i];
+        h = draw_rough_3d(random);
+        switch (i % 9) {
+        case 1: h.beta = 2; break;
+        case 2: h.n = vec<3>{}; break;
+        case 3: h.w[1] = nan; break;
+        case 4: for (double& x : h.v) x = -x; break;
+        case 5: h.q = 1; break;
+        default: break;
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            P[k][i] = h.P[k];
+            n[k][i] = h.n[k];
+            C[k][i] = h.C[k];
+            v[k][i] = h.v[k];
+            w[k][i] = h.w[k];
+        }
+        R[i] = h.R, q[i] = h.q, eps[i] = h.eps, beta[i] = h.beta, mu[i] = h.mu;
+    }
+    impact::collide_wall_rough_batch_data<double, 3> data{};
+    data.count = count;
+    for (std::size_t k = 0; k < 3; ++k) {
+        data.P[k] = P[k].data();
+        data.n[k] = n[k].data();
+        data.C[k] = C[k].data();
+        data.v[k] = v[k].data();
+        data.w[k] = w[k].data();
+    }
+    data.R = R.data(), data.q = q.data(), data.eps = eps.data(), data.beta = beta.data(), data.mu = mu.data();
+    data.status = statuses.data();
+    impact::collide_wall_rough_batch(data, form...);
+    std::size_t resolved = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const rough_wall_hit_3d& h = hits[i];
+        const auto out = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu, form...);
+        resolved += out.status == impact::status::ok ? 1 : 0;
+        BOOST_TEST_CONTEXT("hit " << i)
+        {
+            BOOST_TEST((statuses[i] == out.status));
+            for (std::size_t k = 0; k < 3; ++k) {
+                BOOST_TEST(std::memcmp(&v[k][i], &out.v[k], sizeof(double)) == 0);
+                BOOST_TEST(std::memcmp(&w[k][i], &out.w[k], sizeof(double)) == 0);
+            }
+        }
+    }
+    BOOST_TEST(resolved > count / 3);
+}
+
+BOOST_AUTO_TEST_CASE(the_rough_batch_in_space_gives_the_scalar_results_bit_for_bit)
+{
+    check_rough_batch_3d(9101);
+    check_rough_batch_3d(9111, impact::fast);
 }
 
 } // namespace

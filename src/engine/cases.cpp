@@ -2,6 +2,7 @@
 
 #include "engine/condition_proof.h"
 #include "engine/infix.h"
+#include "engine/solve.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -189,7 +190,7 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
     // distance sqrt(r.r)) may normalise to forms normal() cannot compare, though it is the
     // first's, turned.
     const GiNaC::ex first = condition_form(cases.front()).value;
-    const GiNaC::ex d = GiNaC::normal(first);
+    const GiNaC::ex d = normal_written_once(first, symbols.order());
     sign_set covered{false, false, false};
     std::vector<std::string> signs;
     for (const case_value& one : cases) {

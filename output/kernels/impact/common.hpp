@@ -606,7 +606,7 @@ private:
 template <class Real, std::size_t N>
 struct collide_wall_rough_result {
     std::array<Real, N> v;
-    Real w;
+    std::conditional_t<N == 2, Real, std::array<Real, 3>> w;
     impact::status status;
 };
 
@@ -621,7 +621,7 @@ struct collide_wall_rough_batch_data {
     std::array<const Real*, N> n;
     std::array<const Real*, N> C;
     std::array<Real*, N> v;
-    Real* w;
+    std::conditional_t<N == 2, Real*, std::array<Real*, 3>> w;
     const Real* eps;
     const Real* beta;
     const Real* mu;
@@ -679,14 +679,14 @@ public:
     const Real* C(std::size_t axis) const noexcept { return at<Real>(2 + 2 * N + axis); }
     Real* v(std::size_t axis) noexcept { return at<Real>(2 + 3 * N + axis); }
     const Real* v(std::size_t axis) const noexcept { return at<Real>(2 + 3 * N + axis); }
-    Real* w() noexcept { return at<Real>(2 + 4 * N); }
-    const Real* w() const noexcept { return at<Real>(2 + 4 * N); }
-    Real* eps() noexcept { return at<Real>(3 + 4 * N); }
-    const Real* eps() const noexcept { return at<Real>(3 + 4 * N); }
-    Real* beta() noexcept { return at<Real>(4 + 4 * N); }
-    const Real* beta() const noexcept { return at<Real>(4 + 4 * N); }
-    Real* mu() noexcept { return at<Real>(5 + 4 * N); }
-    const Real* mu() const noexcept { return at<Real>(5 + 4 * N); }
+    Real* w(std::size_t axis = 0) noexcept { return at<Real>(2 + 4 * N + axis); }
+    const Real* w(std::size_t axis = 0) const noexcept { return at<Real>(2 + 4 * N + axis); }
+    Real* eps() noexcept { return at<Real>(2 + 4 * N + (N == 2 ? 1 : 3)); }
+    const Real* eps() const noexcept { return at<Real>(2 + 4 * N + (N == 2 ? 1 : 3)); }
+    Real* beta() noexcept { return at<Real>(3 + 4 * N + (N == 2 ? 1 : 3)); }
+    const Real* beta() const noexcept { return at<Real>(3 + 4 * N + (N == 2 ? 1 : 3)); }
+    Real* mu() noexcept { return at<Real>(4 + 4 * N + (N == 2 ? 1 : 3)); }
+    const Real* mu() const noexcept { return at<Real>(4 + 4 * N + (N == 2 ? 1 : 3)); }
     impact::status* status() noexcept { return at<impact::status>(reals); }
     const impact::status* status() const noexcept { return at<impact::status>(reals); }
 
@@ -705,7 +705,12 @@ public:
             d.C[axis] = C(axis);
         for (std::size_t axis = 0; axis < N; ++axis)
             d.v[axis] = v(axis);
-        d.w = w();
+        if constexpr (N == 2) {
+            d.w = w();
+        } else {
+            for (std::size_t axis = 0; axis < 3; ++axis)
+                d.w[axis] = w(axis);
+        }
         d.eps = eps();
         d.beta = beta();
         d.mu = mu();
@@ -714,7 +719,7 @@ public:
     }
 
 private:
-    static constexpr std::size_t reals = 6 + 4 * N;  // the arrays of Real, then the statuses
+    static constexpr std::size_t reals = 5 + 4 * N + (N == 2 ? 1 : 3);  // the arrays of Real, then the statuses
     static constexpr std::size_t page = 4096, apart = 256, first = 64;
     static constexpr std::size_t per_pair = reals * sizeof(Real) + sizeof(impact::status);  // bytes
     template <class T>

@@ -10,5 +10,6 @@
 #include "collide_3d.hpp"
 #include "collide_rough_2d.hpp"
 #include "collide_wall_rough_2d.hpp"
+#include "collide_wall_rough_3d.hpp"
 #include "collide_wall_2d.hpp"
 #include "collide_wall_3d.hpp"
