@@ -9,7 +9,9 @@
 # vectorise with -fno-math-errno, and nothing else.
 # cmake -DGXX=<g++> -DCLANGXX=<clang++> -DAARCH64_GXX=<aarch64-linux-gnu-g++>
 #       -DKERNELS=<folder holding impact/> -DSOURCE=<batch_loops.cpp> -P vectorised.cmake
-# (GXX is required; CLANGXX and AARCH64_GXX may be empty or NOTFOUND.)
+# (GXX is required; CLANGXX and AARCH64_GXX may be empty or NOTFOUND.) -DONLY=<target>
+# checks one of the targets below (a compiler and its flags), so that a test each can run
+# beside the others: each compiles every batch kernel twice at -O3.
 cmake_minimum_required(VERSION 3.20)
 
 # The batch loops, as header:line of the `for`, and those that take a square root. (Read
@@ -53,8 +55,12 @@ endif()
 set(gcc_said ": optimized: loop vectorized")
 set(clang_said ": remark: vectorized loop")
 set(targets "")
+set(known "")
 macro(add_target label compiler flags said)
-  if(NOT "${compiler}" STREQUAL "" AND NOT "${compiler}" MATCHES "NOTFOUND$")
+  list(APPEND known ${label})
+  if(DEFINED ONLY AND NOT "${ONLY}" STREQUAL "${label}")
+    # another test checks it
+  elseif(NOT "${compiler}" STREQUAL "" AND NOT "${compiler}" MATCHES "NOTFOUND$")
     list(APPEND targets ${label})
     set(compiler_${label} ${compiler})
     set(flags_${label} ${flags})
@@ -71,6 +77,9 @@ add_target(gcc-aarch64 "${AARCH64_GXX}" "-fopt-info-vec-optimized" "${gcc_said}"
 # The flags games are built with: the kernels' precise pragmas (common.hpp) must keep the vectors.
 add_target(gcc-x86-64-v3-fast-math "${GXX}" "-march=x86-64-v3;-ffast-math;-fopt-info-vec-optimized" "${gcc_said}")
 add_target(clang-x86-64-v3-fast-math "${CLANGXX}" "-march=x86-64-v3;-ffast-math;-Rpass=loop-vectorize" "${clang_said}")
+if(DEFINED ONLY AND NOT ONLY IN_LIST known)
+  message(FATAL_ERROR "ONLY=${ONLY}: no such target (${known})")
+endif()
 
 function(report_of target extra out)
   execute_process(

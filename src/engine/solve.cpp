@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -55,12 +56,16 @@ public:
         if (GiNaC::is_a<GiNaC::power>(part) && part.op(1).info(GiNaC::info_flags::rational) &&
             !part.op(1).info(GiNaC::info_flags::integer) && GiNaC::ex_to<GiNaC::numeric>(part.op(1)).denom() == 2) {
             const GiNaC::numeric k = GiNaC::ex_to<GiNaC::numeric>(part.op(1));
-            const GiNaC::ex radicand = GiNaC::expand(part.op(0));
+            auto expanded = expanded_.find(part.op(0));
+            if (expanded == expanded_.end())
+                expanded = expanded_.emplace(part.op(0), GiNaC::expand(part.op(0))).first;
+            const GiNaC::ex& radicand = expanded->second;
             auto found =
                 std::find_if(roots_.begin(), roots_.end(), [&](const root& r) { return r.radicand.is_equal(radicand); });
             if (found == roots_.end()) {
                 part.op(0).map(*this);   // its inner radicals first
-                roots_.push_back({GiNaC::realsymbol(), radicand, part.op(0)});
+                // Not a realsymbol: a radicand may be negative, and conjugate(t) = t would be wrong.
+                roots_.push_back({GiNaC::symbol(), radicand, part.op(0)});
                 found = std::prev(roots_.end());
             } else if (!found->written.is_equal(part.op(0))) {
                 found->written = radicand;   // written two ways: which came first is GiNaC's order
@@ -115,18 +120,25 @@ private:
         GiNaC::ex written;    ///< as the expression writes it, or expanded if written two ways
     };
     std::vector<root> roots_;   // in the order met, inner radicals before the outer ones
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> expanded_;   // radicands as written, expanded
 };
 
-// e's numerator and denominator, each unique for the value e has (given the radicals it
-// holds): the radicals stand as symbols, their powers past the first are reduced by
-// t^2 = radicand, common factors cancelled, and the sign put where `order` writes the
-// denominator's first term positive.
+// e's numerator and denominator in a form GiNaC's order of terms does not choose: the
+// radicals stand as symbols, their powers standing as factors past the first are reduced
+// by t^2 = radicand (a power of a sum that holds t, as (a + t)^3, is left as it is), common
+// factors cancelled, and the sign put where `order` writes the denominator's first term
+// positive. Restored, a radicand beside its root merges with it (S sqrt(S) = S^(3/2)).
 std::pair<GiNaC::ex, GiNaC::ex> unique_numer_denom(const GiNaC::ex& e, const term_order& order)
 {
     if (!has_radical(e)) {
         const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
         return {nd.op(0), nd.op(1)};
     }
+    // Not yet one form in every case: where fractions whose denominators share a factor are
+    // added, normal() builds the common denominator factor by factor in GiNaC's order
+    // ((x - 1)(x + 1) or x^2 - 1). Multiplying it out would settle that, but changes the
+    // denominators the kernels' limit forms are built on (rough_plane's fixed spheres then
+    // miss their bounds).
     radicals_as_symbols roots;
     GiNaC::ex nd = GiNaC::normal(roots.in_symbols(e)).numer_denom();
     const GiNaC::ex reduced = roots.reduced(nd);
