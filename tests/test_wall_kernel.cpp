@@ -31,6 +31,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -451,70 +452,6 @@ BOOST_AUTO_TEST_CASE(each_rough_refusal_has_its_status_and_returns_the_velocity_
     }
 }
 
-template <class... Form>
-void check_rough_batch(std::uint64_t seed, Form... form)
-{
-    std::mt19937_64 random(seed);
-    const std::size_t count = 1003;
-    std::vector<rough_wall_hit> hits(count);
-    std::array<std::vector<double>, 2> P, n, C, v;
-    for (std::size_t k = 0; k < 2; ++k)
-        for (auto* a : {&P[k], &n[k], &C[k], &v[k]})
-            a->resize(count);
-    std::vector<double> R(count), q(count), w(count), eps(count), beta(count), mu(count);
-    std::vector<impact::status> statuses(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        rough_wall_hit& h = hits[i];
-        h = draw_rough(random);
-        switch (i % 9) {
-        case 1: h.beta = 2; break;
-        case 2: h.n = vec<2>{}; break;
-        case 3: h.w = nan; break;
-        case 4: for (double& x : h.v) x = -x; break;
-        case 5: h.q = 1; break;
-        default: break;
-        }
-        for (std::size_t k = 0; k < 2; ++k) {
-            P[k][i] = h.P[k];
-            n[k][i] = h.n[k];
-            C[k][i] = h.C[k];
-            v[k][i] = h.v[k];
-        }
-        R[i] = h.R, q[i] = h.q, w[i] = h.w, eps[i] = h.eps, beta[i] = h.beta, mu[i] = h.mu;
-    }
-    impact::collide_wall_rough_batch_data<double, 2> data{};
-    data.count = count;
-    for (std::size_t k = 0; k < 2; ++k) {
-        data.P[k] = P[k].data();
-        data.n[k] = n[k].data();
-        data.C[k] = C[k].data();
-        data.v[k] = v[k].data();
-    }
-    data.R = R.data(), data.q = q.data(), data.w = w.data(), data.eps = eps.data(), data.beta = beta.data();
-    data.mu = mu.data();
-    data.status = statuses.data();
-    impact::collide_wall_rough_batch(data, form...);
-    std::size_t resolved = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const rough_wall_hit& h = hits[i];
-        const auto out = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu, form...);
-        resolved += out.status == impact::status::ok ? 1 : 0;
-        BOOST_TEST_CONTEXT("hit " << i)
-        {
-            BOOST_TEST((statuses[i] == out.status));
-            for (std::size_t k = 0; k < 2; ++k)
-                BOOST_TEST(std::memcmp(&v[k][i], &out.v[k], sizeof(double)) == 0);
-            BOOST_TEST(std::memcmp(&w[i], &out.w, sizeof(double)) == 0);
-        }
-    }
-    BOOST_TEST(resolved > count / 3);
-}
-
-BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_bit_for_bit)
-{
-    check_rough_batch(9001);
-    check_rough_batch(9011, impact::fast);
-}
 
 
 // A rough sphere hits a wall in space: Walton's model with vector spins, in long double.
@@ -718,73 +655,96 @@ BOOST_AUTO_TEST_CASE(each_rough_refusal_in_space_has_its_status_and_returns_velo
     }
 }
 
-// The batch in space: every hit, refused ones among them, gives the scalar kernel's velocity,
-// spin and status bit for bit.
-template <class... Form>
-void check_rough_batch_3d(std::uint64_t seed, Form... form)
+// A spin's component k: the 2D spin is one number, the 3D spin a vector.
+template <class Spin>
+auto& spin(Spin& w, std::size_t k)
 {
+    if constexpr (std::is_scalar_v<Spin>)   // a number, or a pointer to the batch's array
+        return w;
+    else
+        return w[k];
+}
+
+// The batch, in the plane or in space: every hit, refused ones among them, gives the scalar
+// kernel's velocity, spin and status bit for bit.
+template <class Hit, class... Form>
+void check_rough_batch(std::uint64_t seed, Hit (*draw_hit)(std::mt19937_64&), Form... form)
+{
+    constexpr std::size_t N = std::tuple_size_v<decltype(Hit::P)>;
+    constexpr std::size_t spins = N == 2 ? 1 : 3;
     std::mt19937_64 random(seed);
     const std::size_t count = 1003;
-    std::vector<rough_wall_hit_3d> hits(count);
-    std::array<std::vector<double>, 3> P, n, C, v, w;
-    for (std::size_t k = 0; k < 3; ++k)
-        for (auto* a : {&P[k], &n[k], &C[k], &v[k], &w[k]})
+    std::vector<Hit> hits(count);
+    std::array<std::vector<double>, N> P, n, C, v;
+    std::array<std::vector<double>, spins> w;
+    for (std::size_t k = 0; k < N; ++k)
+        for (auto* a : {&P[k], &n[k], &C[k], &v[k]})
             a->resize(count);
+    for (std::vector<double>& a : w)
+        a.resize(count);
     std::vector<double> R(count), q(count), eps(count), beta(count), mu(count);
     std::vector<impact::status> statuses(count);
     for (std::size_t i = 0; i < count; ++i) {
-        rough_wall_hit_3d& h = hits[i];
-        h = draw_rough_3d(random);
+        Hit& h = hits[i];
+        h = draw_hit(random);
         switch (i % 9) {
         case 1: h.beta = 2; break;
-        case 2: h.n = vec<3>{}; break;
-        case 3: h.w[1] = nan; break;
+        case 2: h.n = vec<N>{}; break;
+        case 3: spin(h.w, spins == 1 ? 0 : 1) = nan; break;
         case 4: for (double& x : h.v) x = -x; break;
         case 5: h.q = 1; break;
         default: break;
         }
-        for (std::size_t k = 0; k < 3; ++k) {
+        for (std::size_t k = 0; k < N; ++k) {
             P[k][i] = h.P[k];
             n[k][i] = h.n[k];
             C[k][i] = h.C[k];
             v[k][i] = h.v[k];
-            w[k][i] = h.w[k];
         }
+        for (std::size_t k = 0; k < spins; ++k)
+            w[k][i] = spin(h.w, k);
         R[i] = h.R, q[i] = h.q, eps[i] = h.eps, beta[i] = h.beta, mu[i] = h.mu;
     }
-    impact::collide_wall_rough_batch_data<double, 3> data{};
+    impact::collide_wall_rough_batch_data<double, N> data{};
     data.count = count;
-    for (std::size_t k = 0; k < 3; ++k) {
+    for (std::size_t k = 0; k < N; ++k) {
         data.P[k] = P[k].data();
         data.n[k] = n[k].data();
         data.C[k] = C[k].data();
         data.v[k] = v[k].data();
-        data.w[k] = w[k].data();
     }
+    for (std::size_t k = 0; k < spins; ++k)
+        spin(data.w, k) = w[k].data();
     data.R = R.data(), data.q = q.data(), data.eps = eps.data(), data.beta = beta.data(), data.mu = mu.data();
     data.status = statuses.data();
     impact::collide_wall_rough_batch(data, form...);
     std::size_t resolved = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const rough_wall_hit_3d& h = hits[i];
-        const auto out = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu, form...);
+        const Hit& h = hits[i];
+        auto out = impact::collide_wall_rough(h.R, h.q, h.P, h.n, h.C, h.v, h.w, h.eps, h.beta, h.mu, form...);
         resolved += out.status == impact::status::ok ? 1 : 0;
         BOOST_TEST_CONTEXT("hit " << i)
         {
             BOOST_TEST((statuses[i] == out.status));
-            for (std::size_t k = 0; k < 3; ++k) {
+            for (std::size_t k = 0; k < N; ++k)
                 BOOST_TEST(std::memcmp(&v[k][i], &out.v[k], sizeof(double)) == 0);
-                BOOST_TEST(std::memcmp(&w[k][i], &out.w[k], sizeof(double)) == 0);
-            }
+            for (std::size_t k = 0; k < spins; ++k)
+                BOOST_TEST(std::memcmp(&w[k][i], &spin(out.w, k), sizeof(double)) == 0);
         }
     }
     BOOST_TEST(resolved > count / 3);
 }
 
+BOOST_AUTO_TEST_CASE(the_rough_batch_gives_the_scalar_results_bit_for_bit)
+{
+    check_rough_batch(9001, draw_rough);
+    check_rough_batch(9011, draw_rough, impact::fast);
+}
+
 BOOST_AUTO_TEST_CASE(the_rough_batch_in_space_gives_the_scalar_results_bit_for_bit)
 {
-    check_rough_batch_3d(9101);
-    check_rough_batch_3d(9111, impact::fast);
+    check_rough_batch(9101, draw_rough_3d);
+    check_rough_batch(9111, draw_rough_3d, impact::fast);
 }
 
 } // namespace
