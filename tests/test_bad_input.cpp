@@ -436,6 +436,25 @@ std::string gap_kernel(const std::string& bound)
            "[[kernel.bound]]\noutput = \"y\"\nulps = " + bound + "\nbecause = \"correctly rounded\"\n";
 }
 
+BOOST_AUTO_TEST_CASE(a_sampling_regime_that_is_not_understood_is_refused_at_its_place)
+{
+    // gap_kernel's 24 lines, then a [[kernel.regime]] from line 25.
+    const std::string gap = gap_kernel("1") + "[[kernel.regime]]\nname = \"r\"\n";
+    expect_refused(gap + "set = \"x\"\nstart = \"grazing\"\nboundary = \"x = 2\"\nwithin = 1e-12\n",
+                   "derivations/bad.toml:28:9: error: regime 'r' starts from 'grazing': give \"nearly head-on\" or "
+                   "\"nearly grazing\" (or no start: an ordinary draw)");
+    expect_refused(gap + "set = \"x\"\n",
+                   "derivations/bad.toml:25:1: error: regime 'r' needs either ratio = [\"A\", \"B\"] or boundary = "
+                   "\"lhs = rhs\", not neither");
+    // The input it sets must enter the quantity affinely: one value of it then gives the
+    // quantity the value asked.
+    expect_refused(gap + "set = \"x\"\nboundary = \"x^2 = 2\"\nwithin = 1e-12\n",
+                   "derivations/bad.toml:28:12: error: regime 'r': 'x' must enter 'x^2 = 2' as a multiple of it plus "
+                   "what does not depend on it, so that one value of it gives the quantity its value");
+    expect_refused(gap + "set = \"z\"\nratio = [\"x\", \"1\"]\nfrom = 1\nto = 10\n",
+                   "derivations/bad.toml:27:7: error: kernel 'gap' has no input 'z'");
+}
+
 BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regeneration)
 {
     const scratch s;

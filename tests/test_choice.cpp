@@ -7,6 +7,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "compile/program.h"
+#include "engine/cases.h"
 #include "engine/library.h"
 #include "verify/choice.h"
 
@@ -170,5 +171,25 @@ BOOST_AUTO_TEST_CASE(a_power_of_three_halves_is_a_square_root_and_a_product)
         BOOST_TEST(compile::count(p, compile::opcode::sqrt) == 1u, compensated);
         // 2.25^(3/2) = 2.25 * 1.5 = 3.375, exactly.
         BOOST_TEST(compile::run<double>(p, {2.25}).front() == 3.375, compensated);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_condition_of_cases_is_compensated_with_its_branches)
+{
+    // a b - c d at a = b = 1 + 2^-30, c = 1, d = 1 + 2^-29 is 2^-60 > 0, exactly; in double
+    // a b rounds to 1 + 2^-29 and the plain difference is 0, the other case. Near a
+    // boundary between cases (a rough contact on the edge of sticking) the case taken is
+    // the exact one only if the condition is compensated with the branches; |x| too.
+    const GiNaC::symbol a("a"), b("b"), c("c"), d("d");
+    const engine::term_order order({a, b, c, d});
+    const GiNaC::ex gap = a * b - c * d;
+    const std::vector<GiNaC::ex> cases = {engine::select_positive(gap, 1, -1),
+                                          engine::select_positive(GiNaC::abs(gap) - GiNaC::pow(2, -61), 1, -1)};
+    const std::vector<double> x = {1 + std::ldexp(1.0, -30), 1 + std::ldexp(1.0, -30), 1, 1 + std::ldexp(1.0, -29)};
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const compile::program plain = compile::compile_program({cases[i]}, {a, b, c, d}, order);
+        const compile::program compensated = compile::compile_program({cases[i]}, {a, b, c, d}, order, {false, true});
+        BOOST_TEST(compile::run<double>(plain, x).front() == -1.0, i);
+        BOOST_TEST(compile::run<double>(compensated, x).front() == 1.0, i);
     }
 }

@@ -339,7 +339,7 @@ BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
 
 // Every key reader.cpp accepts, by table, typed from reading it (src/spec/reader.cpp:
 // parse_derivation, read_symbol, read_dimension, read_given, read_step, read_result,
-// read_check_fields, read_claim, read_open_claim, read_not_compared, read_kernel, read_use). A field added there fails this
+// read_check_fields, read_claim, read_open_claim, read_not_compared, read_kernel, read_sampling_regime, read_use). A field added there fails this
 // test until the README documents it.
 const std::map<std::string, std::set<std::string>> fields_read = {
     {"top level", {"id", "title", "paper", "summary"}},
@@ -356,6 +356,7 @@ const std::map<std::string, std::set<std::string>> fields_read = {
     {"[[kernel]]", {"name", "inputs", "outputs", "velocities", "error", "forms", "guards", "substitute", "let",
                     "batch", "fixed"}},
     {"[[kernel.bound]]", {"output", "type", "form", "ulps", "because"}},
+    {"[[kernel.regime]]", {"name", "set", "ratio", "boundary", "from", "to", "within", "start"}},
 };
 
 // The README's "## Derivation files" section: a `### ` heading per TOML table (its name in

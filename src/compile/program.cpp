@@ -56,7 +56,7 @@ public:
     int options_key() const
     {
         return (options_.fma ? 1 : 0) | (options_.compensated ? 2 : 0) | (options_.compensated_lets ? 4 : 0) |
-               (branch_key_ << 3);
+               (in_condition_ ? 8 : 0) | (branch_key_ << 4);
     }
 
 private:
@@ -142,6 +142,10 @@ private:
     pair dd_sqrt(pair a, const GiNaC::ex& radicand)
     {
         const int h = op(opcode::sqrt, a.hi);
+        // In a condition of cases, no division: the kernel's divisors there are selected by
+        // the condition, and must all come before its first division.
+        if (in_condition_)
+            return {h, -1};
         correcting_ = true;
         const int r = add_lo(op(opcode::fma, op(opcode::neg, h), h, a.hi), a.lo);
         const int root = divisor(h, [&] { return op(opcode::sqrt, value(radicand)); });
@@ -239,8 +243,15 @@ private:
             return negated ? dd_neg(v) : v;
         }
         if (engine::is_select(e)) {
-            // A quantity defined by cases: each branch compensated, the pair selected.
-            const int condition = value(e.op(0));
+            // A quantity defined by cases: each branch compensated, the pair selected, and
+            // the condition compensated too: near the cases' boundary its plain value can
+            // take the wrong sign, and the case taken would then be off by the rounding of
+            // the condition (several ulps of the output where the cases meet). Its square
+            // roots are not corrected (that needs a division, see dd_sqrt).
+            const bool outer = in_condition_;
+            in_condition_ = true;
+            const int condition = rounded(compensated(e.op(0)));
+            in_condition_ = outer;
             const pair taken = compensated_in_branch(condition, true, e.op(1));
             const pair discarded = compensated_in_branch(condition, false, e.op(2));
             const int hi = op(opcode::select, condition, taken.hi, discarded.hi);
@@ -252,7 +263,19 @@ private:
             correcting_ = false;
             return {hi, lo};
         }
-        // Functions: evaluated on the leading part.
+        // |x|: the pair's sign is its leading part's.
+        if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
+            const pair x = compensated(e.op(0));
+            const pair negated = dd_neg(x);
+            const int hi = op(opcode::select, x.hi, x.hi, negated.hi);
+            if (x.lo < 0)
+                return {hi, -1};
+            correcting_ = true;
+            const int lo = op(opcode::select, x.hi, x.lo, negated.lo);
+            correcting_ = false;
+            return {hi, lo};
+        }
+        // Other functions: evaluated on the leading part.
         return {value(e), -1};
     }
 
@@ -520,6 +543,7 @@ private:
     std::map<GiNaC::numeric, int, std::less<>> constants_;
     std::map<std::tuple<int, int, int, int>, int> ops_;
     bool correcting_ = false;  // the operations made now are corrections
+    bool in_condition_ = false;  // compiling the condition of cases, compensated without divisions
     std::vector<bool> after_division_;  // whether value i needs a division (not by a constant)
     std::vector<std::pair<int, bool>> branch_;  // the branches being compiled: condition, taken where positive
     std::map<std::vector<std::pair<int, bool>>, int> branch_keys_;

@@ -198,6 +198,26 @@ struct kernel_guard {
     relation op = relation::less;
 };
 
+/// A hard region of a kernel's inputs declared by its file (`[[kernel.regime]]`): a
+/// sample drawn in `start` (ordinary when empty) has its input `input` set so that the
+/// quantity `offset + slope*input`, affine in it, is ±10^u times `denominator` (`ratio`,
+/// |quantity/denominator| from `from` to `to`), or zero to within a relative `to` of the
+/// input (`boundary`). Everything is written in the kernel's inputs; `offset`, `slope` and
+/// `denominator` are free of `input`.
+struct sampling_regime {
+    enum class kind { ratio, boundary };
+    std::string name;
+    source_location where;
+    kind what = kind::ratio;
+    std::string start;
+    GiNaC::ex input;
+    GiNaC::ex offset;
+    GiNaC::ex slope;
+    GiNaC::ex denominator = 1;
+    double from = 0;
+    double to = 0;
+};
+
 struct kernel {
     std::string name;
     source_location where;                 ///< its name in the derivation file
@@ -209,6 +229,7 @@ struct kernel {
     /// the largest magnitude among these and `velocities` scales velocity errors.
     std::vector<GiNaC::ex> speeds;
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> lets;  ///< symbol = value in the inputs, computed once
+    std::vector<sampling_regime> regimes;  ///< where its accuracy is measured, beyond the built-in regimes
     bool batch = false;
     /// A fixed sphere's kernel (`fixed = ["M"]`): the kernel `limit_of` as its input
     /// `fixed_mass` grows without bound, that mass left out of its parameters. Every output

@@ -208,6 +208,8 @@ public:
         }
         for (const spec::kernel_guard& g : spec_kernel.guards)
             k.guards.push_back(make_guard(k, g));
+        for (const spec::sampling_regime& r : spec_kernel.regimes)
+            k.regimes.push_back(make_regime(k, r));
         if (k.batch)
             for (const kernel_output& o : k.outputs) {
                 const kernel_parameter* same = k.find_parameter(o.member);
@@ -288,6 +290,18 @@ public:
                                                     what, mass.value));
             return *l;
         };
+        // The regimes of the kernel's file in the limit: what they set the input to depends
+        // on the quotients by the slope (the quantity may grow with the mass, as a friction
+        // cone's sides do), so those are taken to their limits, the slope then 1.
+        for (sampling_regime r : k.regimes) {
+            if (r.input.is_equal(M))
+                continue;   // the input it sets is no longer one
+            const std::string what = fmt::format("regime '{}'", r.name);
+            r.offset = limit_of(r.offset / r.slope, what);
+            r.denominator = limit_of(r.denominator / r.slope, what);
+            r.slope = 1;
+            lk.regimes.push_back(std::move(r));
+        }
         GiNaC::exmap numbers;  // lets whose limit is a number
         for (const auto& [symbol, value] : k.lets) {
             const GiNaC::ex l = limit_of(value.subs(numbers, GiNaC::subs_options::no_pattern),
@@ -515,6 +529,63 @@ private:
             guard.parameters.push_back(find_parameter(k, name)->name);
         return guard;
     }
+    // `[[kernel.regime]]`: the quantity that the input `set` makes take its value, written
+    // in the kernel's inputs as offset + slope*input (the input must enter it so).
+    sampling_regime make_regime(const kernel& k, const spec::sampling_regime& r)
+    {
+        sampling_regime regime;
+        regime.name = r.name.value;
+        regime.where = r.name.where;
+        regime.start = r.start ? r.start->value : "";
+        const kernel_parameter* p = find_parameter(k, r.set);
+        if (p->is_array || p->components.front().range.what == domain::kind::interval)
+            throw error(r.set.where, fmt::format("regime '{}' sets '{}': give a scalar input of the real line or "
+                                                 "the positive numbers (an interval's ends have regimes of "
+                                                 "their own)",
+                                                 regime.name, r.set.value));
+        regime.input = p->components.front().symbol;
+        auto same_dimension = [&](const GiNaC::ex& a, const GiNaC::ex& b, const spec::text& where) {
+            const auto da = check_expression(d_.symbols, a, where.where);
+            const auto db = check_expression(d_.symbols, b, where.where);
+            if (da && db && *da != *db)
+                throw error(where.where, fmt::format("regime '{}': {} is {}, {} is {}", regime.name,
+                                                     d_.symbols.text(a), da->describe(), d_.symbols.text(b),
+                                                     db->describe()));
+        };
+        GiNaC::ex quantity;
+        const spec::text& written = r.boundary ? *r.boundary : r.ratio.front();
+        if (r.boundary) {
+            const claim_sides sides = d_.symbols.parse_claim(*r.boundary);
+            if (sides.op != relation::equal)
+                throw error(r.boundary->where, "a regime's boundary reads 'lhs = rhs'");
+            same_dimension(sides.lhs, sides.rhs, *r.boundary);
+            regime.what = sampling_regime::kind::boundary;
+            quantity = in_kernel(sides.lhs - sides.rhs);
+            regime.to = r.within;
+        } else {
+            const GiNaC::ex a = d_.symbols.parse(r.ratio[0]);
+            const GiNaC::ex b = d_.symbols.parse(r.ratio[1]);
+            same_dimension(a, b, r.ratio[1]);
+            quantity = in_kernel(a);
+            regime.denominator = in_kernel(b);
+            require_inputs(k, regime.denominator, "regime " + regime.name, r.ratio[1].where);
+            if (regime.denominator.has(regime.input))
+                throw error(r.ratio[1].where, fmt::format("regime '{}': '{}' depends on '{}', which the regime sets",
+                                                          regime.name, r.ratio[1].value, r.set.value));
+            regime.from = r.from;
+            regime.to = r.to;
+        }
+        require_inputs(k, quantity, "regime " + regime.name, written.where);
+        regime.slope = quantity.diff(GiNaC::ex_to<GiNaC::symbol>(regime.input));
+        if (regime.slope.is_zero() || regime.slope.has(regime.input))
+            throw error(written.where, fmt::format("regime '{}': '{}' must enter '{}' as a multiple of it plus what "
+                                                   "does not depend on it, so that one value of it gives the "
+                                                   "quantity its value",
+                                                   regime.name, r.set.value, written.value));
+        regime.offset = quantity.subs(regime.input == 0, GiNaC::subs_options::no_pattern);
+        return regime;
+    }
+
     const derivation& d_;
     const resolver& resolve_;
     proof_cache& run_;

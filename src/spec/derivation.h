@@ -171,6 +171,22 @@ struct error_bound {
     text because;
 };
 
+/// A hard region of the inputs where the kernel's accuracy is also measured
+/// (`[[kernel.regime]]`), beside the regimes every kernel gets: each sample is drawn as in
+/// the regime `start` (ordinary without it), then the input `set` is given the value that
+/// makes `ratio`'s two quantities A = ±10^u B, |A/B| from `from` to `to` (u uniform), or
+/// that puts the sample within a relative `within` of where `boundary` (`lhs = rhs`) holds.
+struct sampling_regime {
+    text name;
+    text set;
+    std::vector<text> ratio;
+    std::optional<text> boundary;
+    double from = 0;
+    double to = 0;
+    double within = 0;
+    std::optional<text> start;
+};
+
 struct kernel {
     text name;
     std::vector<kernel_value> inputs;
@@ -186,6 +202,7 @@ struct kernel {
     /// computed by the limit of every output as that mass grows without bound.
     std::vector<text> fixed;
     bool batch = false;            ///< also emit `<name>_batch` over structure-of-arrays data
+    std::vector<sampling_regime> regimes;
 };
 
 /// Results taken from another derivation, renamed for use in this one.

@@ -339,6 +339,44 @@ not_compared read_not_compared(table_reader& in)
     return n;
 }
 
+// `[[kernel.regime]]`: a ratio of two quantities over decades, or a boundary approached.
+sampling_regime read_sampling_regime(table_reader r)
+{
+    sampling_regime regime;
+    regime.name = r.required_string("name");
+    regime.set = r.required_string("set");
+    regime.ratio = r.string_array("ratio", false);
+    regime.boundary = r.optional_string("boundary");
+    regime.start = r.optional_string("start");
+    if (regime.start && regime.start->value != "nearly head-on" && regime.start->value != "nearly grazing")
+        throw error(regime.start->where, fmt::format("regime '{}' starts from '{}': give \"nearly head-on\" or "
+                                                     "\"nearly grazing\" (or no start: an ordinary draw)",
+                                                     regime.name.value, regime.start->value));
+    if (regime.ratio.empty() == !regime.boundary)
+        throw error(r.where(), fmt::format("regime '{}' needs either ratio = [\"A\", \"B\"] or boundary = "
+                                           "\"lhs = rhs\", not {}",
+                                           regime.name.value, regime.boundary ? "both" : "neither"));
+    if (!regime.ratio.empty()) {
+        if (regime.ratio.size() != 2)
+            throw error(r.where_of("ratio"), fmt::format("regime '{}': ratio = [\"A\", \"B\"] names two "
+                                                         "quantities, A set to ±10^u B",
+                                                         regime.name.value));
+        regime.from = r.required_number("from");
+        regime.to = r.required_number("to");
+        if (!(regime.from > 0 && regime.from <= regime.to && regime.to < 1e300))
+            throw error(r.where_of("from"), fmt::format("regime '{}': |A/B| from {} to {}: give 0 < from <= to",
+                                                        regime.name.value, regime.from, regime.to));
+    } else {
+        regime.within = r.required_number("within");
+        if (!(regime.within > 0 && regime.within < 1))
+            throw error(r.where_of("within"), fmt::format("regime '{}': within {} of the boundary: give a "
+                                                          "relative distance between 0 and 1",
+                                                          regime.name.value, regime.within));
+    }
+    r.finish();
+    return regime;
+}
+
 kernel read_kernel(table_reader& in)
 {
     kernel k;
@@ -384,6 +422,8 @@ kernel read_kernel(table_reader& in)
                                                       bound.ulps));
         k.bounds.push_back(std::move(bound));
     }
+    for (const toml::table* table : in.table_array("regime"))
+        k.regimes.push_back(read_sampling_regime(in.nested(*table, "[[kernel.regime]]")));
     in.finish();
     return k;
 }

@@ -179,7 +179,7 @@ public:
     chooser(const engine::kernel& k, const engine::term_order& order) : k_(k), order_(order), inputs_(k.input_symbols())
     {
         plan_.kernel = &k;
-        plan_.samples = verify::draw_samples(k, kernel_samples, seed_of(k), admission(k, order));
+        plan_.samples = verify::draw_samples(k, kernel_samples, seed_of(k), order, admission(k, order));
         plan_.double_reference = verify::compute_reference(k, plan_.samples, 53);
         plan_.float_reference = verify::compute_reference(k, plan_.samples, 24);
     }
@@ -192,6 +192,14 @@ public:
         compensate_lets_everywhere();
         choose_fastest();
         compile_chosen(plan_, k_, order_);
+        // A fast form no cheaper than the accurate one (its candidates each cheapest alone,
+        // the accurate form's sharing more) is the accurate one.
+        if (!fast_is_accurate(plan_) &&
+            !compile::cheaper(compile::cost_of(plan_.fast_code), compile::cost_of(plan_.code))) {
+            for (component_plan& cp : plan_.components)
+                cp.fastest = cp.chosen;
+            compile_chosen(plan_, k_, order_);
+        }
         plan_.emitted = measure_emitted(plan_.code);
         plan_.fast_emitted = fast_is_accurate(plan_) ? plan_.emitted : measure_emitted(plan_.fast_code);
         return std::move(plan_);

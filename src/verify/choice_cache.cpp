@@ -90,7 +90,7 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
     // Everything plan_kernel reads of the kernel, printed in the derivation's term order
     // (GiNaC's own printing changes from run to run), and the build that measures.
     writer w;
-    w.text("kernel choice, format 2");
+    w.text("kernel choice, format 3");
     w.text(cache::program_fingerprint());
     w.count(kernel_samples);
     w.number(target_ulps);
@@ -138,6 +138,15 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
     for (const auto& [symbol, value] : k.lets) {
         w.text(order.text(symbol));
         w.text(order.text(value));
+    }
+    for (const engine::sampling_regime& r : k.regimes) {
+        w.text(r.name);
+        w.count(static_cast<std::size_t>(r.what));
+        w.text(r.start);
+        for (const GiNaC::ex& e : {r.input, r.offset, r.slope, r.denominator})
+            w.text(order.text(e));
+        w.number(r.from);
+        w.number(r.to);
     }
     return w.out;
 }

@@ -1,12 +1,17 @@
 #include "verify/sampling.h"
 
+#include "compile/program.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 
 namespace impact::verify {
 namespace {
-
-const char* const regimes[] = {"ordinary",        "mass ratio up to 1e12", "eps near 0", "eps near 1",
-                               "nearly grazing",  "nearly head-on",        "nearly equal velocities"};
 
 // 10^u for u uniform in [lo, hi].
 double decades(engine::uniform_stream& s, double lo, double hi)
@@ -48,117 +53,338 @@ bool is_velocity(const engine::kernel& k, const engine::quantity& q)
     return false;
 }
 
-} // namespace
+// What a regime does to an ordinary draw.
+enum class shape {
+    ordinary,
+    spread,          // positive inputs over 12 decades, not 4
+    near_lower,      // one interval input within 10^-12 .. 10^-1 of its lower end
+    near_upper,      // ... of its upper end
+    grazing,         // the approach speed a tiny fraction of the relative velocity
+    head_on,         // the relative velocity nearly along the direction of approach
+    one_tiny,        // one positive input 10^-12 .. 10^-4 of its draw
+    equal_velocities,
+    declared,        // a regime of the kernel's file
+};
 
-std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std::uint64_t seed,
-                                 const admission& admitted)
-{
-    const layout l = layout_of(k);
-    engine::uniform_stream s(seed);
-    // Parameters by role: velocity arrays (or scalars) and the other real arrays (positions).
-    std::vector<std::size_t> velocity_parameters, position_parameters, positive_slots;
-    for (std::size_t p = 0; p < k.parameters.size(); ++p) {
-        const engine::quantity& first = k.parameters[p].components.front();
-        if (is_velocity(k, first))
-            velocity_parameters.push_back(p);
-        else if (first.range.what == engine::domain::kind::real)
-            position_parameters.push_back(p);
-        for (std::size_t slot : l.slots[p])
-            if (l.quantities[slot]->range.is_positive())
-                positive_slots.push_back(slot);
+struct regime {
+    regime(std::string l, shape w = shape::ordinary, std::size_t s = 0) : label(std::move(l)), what(w), slot(s) {}
+    std::string label;
+    shape what = shape::ordinary;
+    std::size_t slot = 0;                            // near_lower, near_upper: the input
+    const engine::sampling_regime* file = nullptr;   // declared
+    shape start = shape::ordinary;                   // declared: drawn first as in this
+    std::shared_ptr<compile::program> values;        // declared: offset, slope, denominator
+};
+
+// How a kernel's samples are drawn: its inputs' roles and its regimes, in the order they
+// take turns.
+class sampler {
+public:
+    sampler(const engine::kernel& k, const engine::term_order& order) : k_(k), l_(layout_of(k))
+    {
+        find_roles(order);
+        regimes_.emplace_back("ordinary");
+        if (!positive_slots_.empty()) {
+            std::vector<std::string> names;
+            for (std::size_t i : positive_slots_)
+                names.push_back(parameter_name(i));
+            regimes_.emplace_back(fmt::format("{} over 12 decades", fmt::join(names, ", ")), shape::spread);
+        }
+        // Each interval input near each end: one input at a time where there are several
+        // (the restitution near 1 with the tangential restitution anywhere).
+        for (std::size_t i = 0; i < l_.quantities.size(); ++i) {
+            const engine::domain& d = l_.quantities[i]->range;
+            if (d.what != engine::domain::kind::interval)
+                continue;
+            const std::string name = parameter_name(i);
+            regimes_.emplace_back(fmt::format("{} near {}", name, d.lower_text), shape::near_lower, i);
+            regimes_.emplace_back(fmt::format("{} near {}", name, d.upper_text), shape::near_upper, i);
+        }
+        if (has_geometry()) {
+            regimes_.emplace_back("nearly grazing", shape::grazing);
+            regimes_.emplace_back("nearly head-on", shape::head_on);
+        } else if (!two_velocities_ && positive_slots_.size() >= 2) {
+            // No bodies, positive inputs (a velocity's parts along and across the line of
+            // centres): one tiny next to the others.
+            std::vector<std::string> names;
+            for (std::size_t i : positive_slots_)
+                names.push_back(parameter_name(i));
+            regimes_.emplace_back(fmt::format("one of {} 1e-12 to 1e-4 of its draw", fmt::join(names, ", ")),
+                                  shape::one_tiny);
+        }
+        if (two_velocities_)
+            regimes_.emplace_back("nearly equal velocities", shape::equal_velocities);
+        for (const engine::sampling_regime& r : k.regimes) {
+            regime x{r.name, shape::declared};
+            x.file = &r;
+            if (r.start == "nearly head-on" || r.start == "nearly grazing") {
+                if (!has_geometry())
+                    throw error(r.where, fmt::format("regime '{}' starts {}, but kernel '{}' has no line of "
+                                                     "approach (two bodies' positions, or a guard on the "
+                                                     "velocity's approach) to draw it along",
+                                                     r.name, r.start, k.name));
+                x.start = r.start == "nearly head-on" ? shape::head_on : shape::grazing;
+            }
+            x.values = std::make_shared<compile::program>(
+                compile::compile_program({r.offset, r.slope, r.denominator}, k.input_symbols(), order));
+            input_of_[&r] = slot_of(r.input);
+            regimes_.push_back(std::move(x));
+        }
     }
 
-    // Two bodies, M and m: their first two velocities (and positions) are of one dimension.
-    // A wall's kernel has one body: its velocity and its spin, the wall's point and normal.
-    const auto same_size = [&](const std::vector<std::size_t>& parameters) {
-        return parameters.size() >= 2 && l.slots[parameters[0]].size() == l.slots[parameters[1]].size();
-    };
-    const bool two_velocities = same_size(velocity_parameters);
-    const bool two_bodies = two_velocities && same_size(position_parameters) &&
-                            l.slots[velocity_parameters[0]].size() == l.slots[position_parameters[0]].size();
+    std::vector<std::string> names() const
+    {
+        std::vector<std::string> out;
+        for (const regime& r : regimes_)
+            out.push_back(r.label);
+        return out;
+    }
 
-    std::vector<sample> samples;
-    constexpr int most_draws = 64;
-    for (std::size_t n = 0, draws = 0; n < count; ++draws) {
-        const std::size_t regime = n % std::size(regimes);
-        sample x;
-        x.regime = regimes[regime];
-        x.inputs.resize(l.quantities.size());
-        for (std::size_t i = 0; i < l.quantities.size(); ++i) {
-            const engine::domain& d = l.quantities[i]->range;
+    std::vector<sample> draw(std::size_t count, std::uint64_t seed, const admission& admitted)
+    {
+        engine::uniform_stream s(seed);
+        std::vector<sample> samples;
+        constexpr int most_draws = 64;
+        for (std::size_t n = 0, draws = 0; n < count; ++draws) {
+            const regime& r = regimes_[n % regimes_.size()];
+            sample x;
+            x.regime = r.label;
+            x.inputs = ordinary(s, r);
+            bool drawn = true;
+            if (r.what == shape::declared) {
+                reshape(s, x.inputs, r.start);
+                approaching(x.inputs);
+                drawn = set_declared(s, x.inputs, r);
+            } else {
+                reshape(s, x.inputs, r.what);
+                approaching(x.inputs);
+            }
+            if (!drawn || (admitted && !admitted(x.inputs))) {
+                if (draws + 1 < most_draws)
+                    continue;
+                // Refused 64 times in this regime: no sample here (verification.md counts them).
+            } else {
+                samples.push_back(std::move(x));
+            }
+            ++n;
+            draws = static_cast<std::size_t>(-1);   // the next sample's draws count from 0
+        }
+        return samples;
+    }
+
+private:
+    // Velocities (or scalars), positions, positive inputs; whether the kernel has two bodies
+    // (two velocities and two positions of one dimension), or one body whose approach a
+    // guard tests (a sphere and a wall: `v . N < 0`).
+    void find_roles(const engine::term_order& order)
+    {
+        for (std::size_t p = 0; p < k_.parameters.size(); ++p) {
+            const engine::quantity& first = k_.parameters[p].components.front();
+            if (is_velocity(k_, first))
+                velocity_parameters_.push_back(p);
+            else if (first.range.what == engine::domain::kind::real)
+                position_parameters_.push_back(p);
+            // Positive (or non-negative) inputs of no bounded interval: masses, radii, μ.
+            for (std::size_t slot : l_.slots[p]) {
+                const engine::domain::kind what = l_.quantities[slot]->range.what;
+                if (what == engine::domain::kind::positive || what == engine::domain::kind::nonnegative)
+                    positive_slots_.push_back(slot);
+            }
+        }
+        const auto same_size = [&](const std::vector<std::size_t>& parameters) {
+            return parameters.size() >= 2 && l_.slots[parameters[0]].size() == l_.slots[parameters[1]].size();
+        };
+        two_velocities_ = same_size(velocity_parameters_);
+        two_bodies_ = two_velocities_ && same_size(position_parameters_) &&
+                      l_.slots[velocity_parameters_[0]].size() == l_.slots[position_parameters_[0]].size();
+        if (two_bodies_ || velocity_parameters_.empty())
+            return;
+        // One body: the guard on its velocity's approach, a linear function of it.
+        const auto& v = l_.slots[velocity_parameters_[0]];
+        const std::vector<GiNaC::ex> inputs = k_.input_symbols();
+        for (const engine::kernel_guard& g : k_.guards) {
+            if (!g.condition || v.size() < 2)
+                continue;
+            std::vector<GiNaC::ex> gradient;
+            bool linear = true;
+            for (std::size_t slot : v) {
+                const GiNaC::ex d = g.condition->diff(GiNaC::ex_to<GiNaC::symbol>(inputs[slot]));
+                linear = linear && !d.has(inputs[slot]);
+                for (std::size_t other : v)
+                    linear = linear && !d.has(inputs[other]);
+                gradient.push_back(d);
+            }
+            if (!linear || std::all_of(gradient.begin(), gradient.end(), [](const GiNaC::ex& d) { return d.is_zero(); }))
+                continue;
+            std::vector<GiNaC::ex> values{*g.condition};
+            values.insert(values.end(), gradient.begin(), gradient.end());
+            approach_ = std::make_shared<compile::program>(compile::compile_program(values, inputs, order));
+            return;
+        }
+    }
+
+    bool has_geometry() const { return (two_bodies_ && l_.slots[velocity_parameters_[0]].size() >= 2) || approach_; }
+
+    std::string parameter_name(std::size_t slot) const
+    {
+        for (std::size_t p = 0; p < l_.slots.size(); ++p)
+            for (std::size_t c = 0; c < l_.slots[p].size(); ++c)
+                if (l_.slots[p][c] == slot)
+                    return k_.parameters[p].is_array ? fmt::format("{}[{}]", k_.parameters[p].name, c)
+                                                     : k_.parameters[p].name;
+        return l_.quantities[slot]->name;
+    }
+
+    std::size_t slot_of(const GiNaC::ex& symbol) const
+    {
+        for (std::size_t i = 0; i < l_.quantities.size(); ++i)
+            if (l_.quantities[i]->symbol.is_equal(symbol))
+                return i;
+        return 0;   // the engine checked that the regime sets an input
+    }
+
+    // Every input drawn from its domain, as the regime asks.
+    std::vector<double> ordinary(engine::uniform_stream& s, const regime& r) const
+    {
+        std::vector<double> inputs(l_.quantities.size());
+        for (std::size_t i = 0; i < l_.quantities.size(); ++i) {
+            const engine::domain& d = l_.quantities[i]->range;
             switch (d.what) {
             case engine::domain::kind::positive:
             case engine::domain::kind::nonnegative:
-                x.inputs[i] = decades(s, regime == 1 ? -6 : -2, regime == 1 ? 6 : 2);
+                inputs[i] = r.what == shape::spread ? decades(s, -6, 6) : decades(s, -2, 2);
                 break;
             case engine::domain::kind::interval: {
-                // ε in [0, 1]: within 10^-12 of an end in the regimes that ask for it.
+                // Within 10^-12 of an end in the regimes that ask for it.
                 const double width = d.upper - d.lower;
-                if (regime == 2)
-                    x.inputs[i] = d.lower + width * decades(s, -12, -1);
-                else if (regime == 3)
-                    x.inputs[i] = d.upper - width * decades(s, -12, -1);
+                if (r.what == shape::near_lower && r.slot == i)
+                    inputs[i] = d.lower + width * decades(s, -12, -1);
+                else if (r.what == shape::near_upper && r.slot == i)
+                    inputs[i] = d.upper - width * decades(s, -12, -1);
                 else
-                    x.inputs[i] = d.lower + width * s.next();
+                    inputs[i] = d.lower + width * s.next();
                 break;
             }
-            case engine::domain::kind::real: x.inputs[i] = signed_magnitude(s, -2, 2); break;
+            case engine::domain::kind::real: inputs[i] = signed_magnitude(s, -2, 2); break;
             }
         }
-        // Nearly head-on: one positive input tiny next to another (v_perp << v_par).
-        if (regime == 5 && positive_slots.size() >= 2) {
-            const std::size_t small = positive_slots[static_cast<std::size_t>(s.next() * positive_slots.size())];
-            x.inputs[small] *= decades(s, -12, -4);
-        }
-        // Nearly equal velocities: the second velocity a hair away from the first.
-        if (regime == 6 && two_velocities) {
-            const auto& a = l.slots[velocity_parameters[0]];
-            const auto& b = l.slots[velocity_parameters[1]];
-            for (std::size_t c = 0; c < a.size() && c < b.size(); ++c)
-                x.inputs[b[c]] = x.inputs[a[c]] * (1 + signed_magnitude(s, -15, -6));
-        }
-        if (two_bodies) {
-            const auto& va = l.slots[velocity_parameters[0]];
-            const auto& vb = l.slots[velocity_parameters[1]];
-            const auto& ca = l.slots[position_parameters[0]];
-            const auto& cb = l.slots[position_parameters[1]];
-            const std::size_t dim = va.size();
-            auto closing = [&] {
-                double dot = 0;
-                for (std::size_t c = 0; c < dim; ++c)
-                    dot += (x.inputs[va[c]] - x.inputs[vb[c]]) * (x.inputs[ca[c]] - x.inputs[cb[c]]);
-                return dot;
-            };
-            if (regime == 4) {
-                // Nearly grazing: the relative velocity nearly perpendicular to the line of
-                // centres (its component along the line a tiny fraction of it).
-                double rr = 0, dot = closing();
-                for (std::size_t c = 0; c < dim; ++c)
-                    rr += (x.inputs[ca[c]] - x.inputs[cb[c]]) * (x.inputs[ca[c]] - x.inputs[cb[c]]);
-                const double keep = decades(s, -12, -3);
-                for (std::size_t c = 0; c < dim; ++c) {
-                    const double r = x.inputs[ca[c]] - x.inputs[cb[c]];
-                    x.inputs[va[c]] -= (1 - keep) * dot / rr * r;
-                }
-            }
-            // Every sample is a collision that happens: M approaches m.
-            if (closing() > 0)
-                for (std::size_t c = 0; c < dim; ++c) {
-                    x.inputs[va[c]] = -x.inputs[va[c]];
-                    x.inputs[vb[c]] = -x.inputs[vb[c]];
-                }
-        }
-        if (admitted && !admitted(x.inputs)) {
-            if (draws + 1 < most_draws)
-                continue;
-            // Refused 64 times in this regime: no sample here (verification.md counts them).
-        } else {
-            samples.push_back(std::move(x));
-        }
-        ++n;
-        draws = static_cast<std::size_t>(-1);   // the next sample's draws count from 0
+        return inputs;
     }
-    return samples;
+
+    // The geometric regimes, on an ordinary draw.
+    void reshape(engine::uniform_stream& s, std::vector<double>& x, shape what) const
+    {
+        if (what == shape::one_tiny)
+            x[positive_slots_[static_cast<std::size_t>(s.next() * positive_slots_.size())]] *= decades(s, -12, -4);
+        if (what == shape::equal_velocities) {
+            // The second velocity a hair away from the first.
+            const auto& a = l_.slots[velocity_parameters_[0]];
+            const auto& b = l_.slots[velocity_parameters_[1]];
+            for (std::size_t c = 0; c < a.size() && c < b.size(); ++c)
+                x[b[c]] = x[a[c]] * (1 + signed_magnitude(s, -15, -6));
+        }
+        if (what != shape::grazing && what != shape::head_on)
+            return;
+        // The relative velocity u (of M to m, or of the body) and the direction a of approach.
+        const auto& va = l_.slots[velocity_parameters_[0]];
+        const std::size_t dim = va.size();
+        std::vector<double> u(dim), a(dim);
+        if (two_bodies_) {
+            const auto& vb = l_.slots[velocity_parameters_[1]];
+            const auto& ca = l_.slots[position_parameters_[0]];
+            const auto& cb = l_.slots[position_parameters_[1]];
+            for (std::size_t c = 0; c < dim; ++c) {
+                u[c] = x[va[c]] - x[vb[c]];
+                a[c] = x[ca[c]] - x[cb[c]];
+            }
+        } else {
+            const std::vector<double> g = compile::run<double>(*approach_, x);
+            for (std::size_t c = 0; c < dim; ++c) {
+                u[c] = x[va[c]];
+                a[c] = g[1 + c];
+            }
+        }
+        double ua = 0, aa = 0;
+        for (std::size_t c = 0; c < dim; ++c) {
+            ua += u[c] * a[c];
+            aa += a[c] * a[c];
+        }
+        const double keep = decades(s, -12, -3);
+        for (std::size_t c = 0; c < dim; ++c) {
+            const double along = ua / aa * a[c];
+            // Nearly grazing: the part along the line of approach a tiny fraction of it;
+            // nearly head-on: the part across it.
+            x[va[c]] -= what == shape::grazing ? (1 - keep) * along : (1 - keep) * (u[c] - along);
+        }
+    }
+
+    // Every sample of two bodies is a collision that happens: M approaches m (a pair drawn
+    // separating has its velocities reversed). A body's approach is left to the guards.
+    void approaching(std::vector<double>& x) const
+    {
+        if (!two_bodies_)
+            return;
+        const auto& va = l_.slots[velocity_parameters_[0]];
+        const auto& vb = l_.slots[velocity_parameters_[1]];
+        const auto& ca = l_.slots[position_parameters_[0]];
+        const auto& cb = l_.slots[position_parameters_[1]];
+        double dot = 0;
+        for (std::size_t c = 0; c < va.size(); ++c)
+            dot += (x[va[c]] - x[vb[c]]) * (x[ca[c]] - x[cb[c]]);
+        if (dot > 0)
+            for (std::size_t c = 0; c < va.size(); ++c) {
+                x[va[c]] = -x[va[c]];
+                x[vb[c]] = -x[vb[c]];
+            }
+    }
+
+    // A regime of the kernel's file: its input given the value that makes its quantity
+    // offset + slope*input take the value asked. False when that value is outside the
+    // input's domain (the sample is drawn again).
+    bool set_declared(engine::uniform_stream& s, std::vector<double>& x, const regime& r) const
+    {
+        const engine::sampling_regime& f = *r.file;
+        const std::size_t slot = input_of_.at(&f);
+        const std::vector<double> v = compile::run<double>(*r.values, x);
+        double value = 0;
+        if (f.what == engine::sampling_regime::kind::ratio) {
+            // quantity = ±10^u denominator
+            const double ratio = s.next() < 0.5 ? -1 : 1;
+            value = (ratio * decades(s, std::log10(f.from), std::log10(f.to)) * v[2] - v[0]) / v[1];
+        } else {
+            // quantity = 0, then the input moved by a relative 10^-4 .. 1 of `within`
+            const double to = std::log10(f.to);
+            value = -v[0] / v[1] * (1 + signed_magnitude(s, to - 4, to));
+        }
+        const engine::domain& d = l_.quantities[slot]->range;
+        if (!std::isfinite(value) || (d.what == engine::domain::kind::positive && !(value > 0)) ||
+            (d.what == engine::domain::kind::nonnegative && !(value >= 0)))
+            return false;
+        x[slot] = value;
+        return true;
+    }
+
+    const engine::kernel& k_;
+    const layout l_;
+    std::vector<std::size_t> velocity_parameters_, position_parameters_, positive_slots_;
+    bool two_velocities_ = false;
+    bool two_bodies_ = false;
+    std::shared_ptr<compile::program> approach_;
+    std::vector<regime> regimes_;
+    std::map<const engine::sampling_regime*, std::size_t> input_of_;
+};
+
+} // namespace
+
+std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std::uint64_t seed,
+                                 const engine::term_order& order, const admission& admitted)
+{
+    return sampler(k, order).draw(count, seed, admitted);
+}
+
+std::vector<std::string> regime_names(const engine::kernel& k, const engine::term_order& order)
+{
+    return sampler(k, order).names();
 }
 
 } // namespace impact::verify

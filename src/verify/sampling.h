@@ -1,15 +1,21 @@
 // Inputs for measuring a kernel's accuracy, drawn where collisions are hard to compute.
 //
 // Uniform draws miss the inputs that break naive formulas, so each sample is drawn in
-// one of several regimes: ordinary values; masses up to 10^±12 apart; ε within 10^-12
-// of 0 or of 1; nearly grazing contacts (the relative velocity almost perpendicular to
-// the line of centres); nearly head-on hits (one positive input tiny next to another);
-// nearly equal velocities. Every sample is a collision that happens: a pair drawn
-// separating has its velocities reversed, and a sample the kernel's guards refuse is
-// drawn again. The draws are seeded, so a run is repeatable.
+// one of several regimes, taking turns, each named by what it does to the kernel at hand:
+// ordinary values; the positive inputs (masses, radii) over 12 decades instead of 4; each
+// input of an interval (ε, β, q) within 10^-12 of each end, one at a time; where the
+// kernel has a line of approach (two bodies' centres, or a guard on a body's velocity
+// towards a wall, v . N < 0), nearly grazing hits (the relative velocity almost across it)
+// and nearly head-on ones (almost along it); with two velocities, nearly equal ones; and
+// the regimes its file declares (`[[kernel.regime]]`: an input set so that a ratio of two
+// quantities spans decades, or so that a case boundary is within a hair). Every sample is
+// a collision that happens: a pair drawn separating has its velocities reversed, and a
+// sample the kernel's guards refuse is drawn again. The draws are seeded, so a run is
+// repeatable.
 #pragma once
 
 #include "engine/derive.h"
+#include "engine/order.h"
 
 #include <cstdint>
 #include <functional>
@@ -31,6 +37,9 @@ using admission = std::function<bool(const std::vector<double>& inputs)>;
 /// regime, in up to 64 draws, and left out when all 64 are refused, so that fewer samples
 /// are measured): the accuracy is the kernel's where it computes.
 std::vector<sample> draw_samples(const engine::kernel& k, std::size_t count, std::uint64_t seed,
-                                 const admission& admitted = {});
+                                 const engine::term_order& order, const admission& admitted = {});
+
+/// The names of the regimes `k`'s samples are drawn in, in the order they take turns.
+std::vector<std::string> regime_names(const engine::kernel& k, const engine::term_order& order);
 
 } // namespace impact::verify

@@ -125,7 +125,7 @@ inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>
 // collide with m = +infinity, a fixed sphere: every output the limit of collide's as m grows
 // without bound (derived by the engine, each form proven equal to the limit).
 // v_M[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
-// v_M[1] is computed in the form "limit of display, fma": at most 3.85 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 template <class Real>
@@ -172,36 +172,43 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
     }
     const Real t10 = Real(1) + eps;
     const Real t11 = t10 - Real(1);
-    const Real t12 = t0 - C_Mx;
-    const Real t13 = C_Mx - (t0 - t12) - (C_mx + t12);
-    const Real t14 = t10 * t0;
-    const Real t15 = t5 - v_Mx;
-    const Real t16 = t2 - C_My;
-    const Real t17 = C_My - (t2 - t16) - (C_my + t16);
-    const Real t18 = t7 - v_My;
-    const Real t19 = t9 - t6;
-    const Real t20 = t6 - (t9 - t19) + (t8 - t19) + (std::fma(t13, t5, std::fma(t0, v_Mx - (t5 - t15) - (v_mx + t15), std::fma(t0, t5, -t6))) + std::fma(t17, t7, std::fma(t2, v_My - (t7 - t18) - (v_my + t18), std::fma(t2, t7, -t8))));
-    const Real t21 = t9 + t20;
-    const Real t22 = t14 * t21;
-    const Real t23 = t4 - t1;
-    const Real t24 = t1 - (t4 - t23) + (t3 - t23) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t17, t2, std::fma(t2, t17, std::fma(t2, t2, -t3))));
-    const Real t25 = t4 + t24;
-    if (!(std::fabs(t25) >= detail::smallest_divisor<Real>) || !(std::fabs(t25) <= std::numeric_limits<Real>::max()) || !(std::fabs(t4) >= detail::smallest_divisor<Real>) || !(std::fabs(t4) <= std::numeric_limits<Real>::max())) {
+    const Real t12 = Real(1) - (t10 - t11) + (eps - t11);
+    const Real t13 = t0 - C_Mx;
+    const Real t14 = C_Mx - (t0 - t13) - (C_mx + t13);
+    const Real t15 = t10 * t0;
+    const Real t16 = t5 - v_Mx;
+    const Real t17 = t2 - C_My;
+    const Real t18 = C_My - (t2 - t17) - (C_my + t17);
+    const Real t19 = t7 - v_My;
+    const Real t20 = t9 - t6;
+    const Real t21 = t6 - (t9 - t20) + (t8 - t20) + (std::fma(t14, t5, std::fma(t0, v_Mx - (t5 - t16) - (v_mx + t16), std::fma(t0, t5, -t6))) + std::fma(t18, t7, std::fma(t2, v_My - (t7 - t19) - (v_my + t19), std::fma(t2, t7, -t8))));
+    const Real t22 = t9 + t21;
+    const Real t23 = t21 - (t22 - t9);
+    const Real t24 = t15 * t22;
+    const Real t25 = t4 - t1;
+    const Real t26 = t1 - (t4 - t25) + (t3 - t25) + (std::fma(t14, t0, std::fma(t0, t14, std::fma(t0, t0, -t1))) + std::fma(t18, t2, std::fma(t2, t18, std::fma(t2, t2, -t3))));
+    const Real t27 = t4 + t26;
+    if (!(std::fabs(t27) >= detail::smallest_divisor<Real>) || !(std::fabs(t27) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t26 = t22 / t25;
-    const Real t27 = -t26;
-    const Real t28 = v_Mx - t26;
-    const Real t29 = t28 - v_Mx;
-    const Real t30 = v_Mx - (t28 - t29) - (t26 + t29) + -(std::fma(t27, t24 - (t25 - t4), std::fma(t27, t25, t22) + std::fma(std::fma(Real(1) - (t10 - t11) + (eps - t11), t0, std::fma(t10, t13, std::fma(t10, t0, -t14))), t21, std::fma(t14, t20 - (t21 - t9), std::fma(t14, t21, -t22)))) / t25);
-    const Real t31 = t28 + t30;
-    const Real t32 = t10 * t2;
-    const Real t33 = std::fma(t2, t7, t6);
-    const Real t34 = t32 * t33;
-    const Real t35 = t34 / t4;
-    const Real result0 = t31 + (t30 - (t31 - t28));
-    const Real result1 = v_My - t35;
+    const Real t28 = t26 - (t27 - t4);
+    const Real t29 = t24 / t27;
+    const Real t30 = -t29;
+    const Real t31 = v_Mx - t29;
+    const Real t32 = t31 - v_Mx;
+    const Real t33 = v_Mx - (t31 - t32) - (t29 + t32) + -(std::fma(t30, t28, std::fma(t30, t27, t24) + std::fma(std::fma(t12, t0, std::fma(t10, t14, std::fma(t10, t0, -t15))), t22, std::fma(t15, t23, std::fma(t15, t22, -t24)))) / t27);
+    const Real t34 = t31 + t33;
+    const Real t35 = t10 * t2;
+    const Real t36 = t35 * t22;
+    const Real t37 = t36 / t27;
+    const Real t38 = -t37;
+    const Real t39 = v_My - t37;
+    const Real t40 = t39 - v_My;
+    const Real t41 = v_My - (t39 - t40) - (t37 + t40) + -(std::fma(t38, t28, std::fma(t38, t27, t36) + std::fma(std::fma(t12, t2, std::fma(t10, t18, std::fma(t10, t2, -t35))), t22, std::fma(t35, t23, std::fma(t35, t22, -t36)))) / t27);
+    const Real t42 = t39 + t41;
+    const Real result0 = t34 + (t33 - (t34 - t31));
+    const Real result1 = t42 + (t41 - (t42 - t39));
     const Real result2 = v_mx;
     const Real result3 = v_my;
     if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3)) {
@@ -212,13 +219,12 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
         (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
         (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0) && t5 != Real(0)) ||
         (std::fabs(t8) < std::numeric_limits<Real>::min() && t2 != Real(0) && t7 != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && t10 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t22) < std::numeric_limits<Real>::min() && t14 != Real(0) && t21 != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
-        (std::fabs(t32) < std::numeric_limits<Real>::min() && t10 != Real(0) && t2 != Real(0)) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && (t33 != Real(0) || (t6 == Real(0) && t2 != Real(0) && t7 != Real(0)))) ||
-        (std::fabs(t34) < std::numeric_limits<Real>::min() && t32 != Real(0) && t33 != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && t34 != Real(0))) {
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && t10 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t24) < std::numeric_limits<Real>::min() && t15 != Real(0) && t22 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && t24 != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && t10 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t36) < std::numeric_limits<Real>::min() && t35 != Real(0) && t22 != Real(0)) ||
+        (std::fabs(t37) < std::numeric_limits<Real>::min() && t36 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -241,10 +247,10 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
 ///   v_m: v_mx: \f$x\f$-component of m's velocity before the collision (lab frame) (real, in m s^-1)
 ///   v_m: v_my: \f$y\f$-component of m's velocity before the collision (lab frame) (real, in m s^-1)
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
-/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), compensated let": at most 2.61 ulps in double on 4200 samples.
-/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 2.68 ulps in double on 4200 samples.
-/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 2.75 ulps in double on 4200 samples.
-/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 2.74 ulps in double on 4200 samples.
+/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), compensated let": at most 3.48 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 3.38 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 2.67 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 3.20 ulps in double on 4200 samples.
 /// M or m may be +infinity, one at a time: a fixed sphere, an obstacle the impulse does not move. Every
 /// output is then its limit as that mass grows without bound, derived and proven
 /// (momentum is not conserved: the obstacle takes the impulse).
@@ -253,7 +259,7 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
 /// With M = +infinity, v_m[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
 /// With M = +infinity, v_m[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
 /// With m = +infinity, v_M[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
-/// With m = +infinity, v_M[1] is computed in the form "limit of display, fma": at most 3.85 ulps in double.
+/// With m = +infinity, v_M[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
 /// With m = +infinity, v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// With m = +infinity, v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// When the inputs allow no collision, `status` says why, the first of these that
@@ -584,8 +590,8 @@ namespace detail {
 // division(s) and 0 square root(s) (the accurate form: 126, 4 and 0).
 // v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
-// v_m[0] is computed in the form "limit of display, fma": at most 4.98 ulps in double on 4200 samples.
-// v_m[1] is computed in the form "limit of display, fma": at most 5.07 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display, fma": at most 4.88 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display, fma": at most 4.61 ulps in double on 4200 samples.
 template <class Real>
 inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps, fast_t) noexcept
 {
@@ -667,9 +673,9 @@ inline collide_result<Real, 2> collide_fixed_M(Real m, const std::array<Real, 2>
 // collide(M, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with m = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
 // bound (verification.md): 20 operations with the guards' conditions, of them 2
-// division(s) and 0 square root(s) (the accurate form: 105, 3 and 0).
-// v_M[0] is computed in the form "limit of display, fma": at most 4.58 ulps in double on 4200 samples.
-// v_M[1] is computed in the form "limit of display, fma": at most 3.85 ulps in double on 4200 samples.
+// division(s) and 0 square root(s) (the accurate form: 128, 4 and 0).
+// v_M[0] is computed in the form "limit of display, fma": at most 4.95 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display, fma": at most 5.15 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 template <class Real>
@@ -756,10 +762,10 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
 /// same guards and statuses, each output in its cheapest candidate form within its fast
 /// bound (verification.md): 28 operations with the guards' conditions, of them 1
 /// division(s) and 0 square root(s) (the accurate form: 107, 2 and 0).
-/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), fma": at most 6.53 ulps in double on 4200 samples.
-/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), fma": at most 4.80 ulps in double on 4200 samples.
-/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), fma": at most 6.23 ulps in double on 4200 samples.
-/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), fma": at most 4.57 ulps in double on 4200 samples.
+/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), fma": at most 6.24 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), fma": at most 5.20 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), fma": at most 4.21 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), fma": at most 6.16 ulps in double on 4200 samples.
 template <class Real>
 inline collide_result<Real, 2> collide(Real M, Real m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real eps, fast_t) noexcept
 {

@@ -17,8 +17,8 @@ namespace detail {
 // v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_M[2] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
-// v_m[1] is computed in the form "limit of display": at most 3.43 ulps in double on 4200 samples.
-// v_m[2] is computed in the form "limit of display, fma": at most 3.74 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
+// v_m[2] is computed in the form "limit of display, compensated": at most 0.50 ulps in double on 4200 samples.
 template <class Real>
 inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps) noexcept
 {
@@ -54,74 +54,83 @@ inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>
     const Real t4 = t1 + t3;
     const Real t5 = C_Mz - C_mz;
     const Real t6 = t5 * t5;
-    const Real t7 = t4 + t6;
-    const Real t8 = v_Mx - v_mx;
-    const Real t9 = t0 * t8;
-    const Real t10 = v_My - v_my;
-    const Real t11 = t2 * t10;
-    const Real t12 = t9 + t11;
-    const Real t13 = v_Mz - v_mz;
-    const Real t14 = t5 * t13;
-    const Real t15 = t12 + t14;
-    if (!(t7 > Real(0))) {
+    const Real t7 = v_Mx - v_mx;
+    const Real t8 = t0 * t7;
+    const Real t9 = v_My - v_my;
+    const Real t10 = t2 * t9;
+    const Real t11 = t8 + t10;
+    const Real t12 = v_Mz - v_mz;
+    const Real t13 = t5 * t12;
+    if (!(t4 + t6 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(t15 < Real(0))) {
+    if (!(t11 + t13 < Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t16 = Real(1) + eps;
-    const Real t17 = t16 - Real(1);
-    const Real t18 = t0 - C_Mx;
-    const Real t19 = C_Mx - (t0 - t18) - (C_mx + t18);
-    const Real t20 = t16 * t0;
-    const Real t21 = t8 - v_Mx;
-    const Real t22 = t2 - C_My;
-    const Real t23 = C_My - (t2 - t22) - (C_my + t22);
-    const Real t24 = t10 - v_My;
-    const Real t25 = t12 - t9;
-    const Real t26 = t9 - (t12 - t25) + (t11 - t25) + (std::fma(t19, t8, std::fma(t0, v_Mx - (t8 - t21) - (v_mx + t21), std::fma(t0, t8, -t9))) + std::fma(t23, t10, std::fma(t2, v_My - (t10 - t24) - (v_my + t24), std::fma(t2, t10, -t11))));
-    const Real t27 = t12 + t26;
-    const Real t28 = t5 - C_Mz;
-    const Real t29 = C_Mz - (t5 - t28) - (C_mz + t28);
-    const Real t30 = t13 - v_Mz;
-    const Real t31 = t27 + t14;
-    const Real t32 = t31 - t27;
-    const Real t33 = t27 - (t31 - t32) + (t14 - t32) + (t26 - (t27 - t12) + std::fma(t29, t13, std::fma(t5, v_Mz - (t13 - t30) - (v_mz + t30), std::fma(t5, t13, -t14))));
-    const Real t34 = t31 + t33;
-    const Real t35 = t20 * t34;
+    const Real t14 = Real(1) + eps;
+    const Real t15 = t14 - Real(1);
+    const Real t16 = Real(1) - (t14 - t15) + (eps - t15);
+    const Real t17 = t0 - C_Mx;
+    const Real t18 = C_Mx - (t0 - t17) - (C_mx + t17);
+    const Real t19 = t14 * t0;
+    const Real t20 = t7 - v_Mx;
+    const Real t21 = t2 - C_My;
+    const Real t22 = C_My - (t2 - t21) - (C_my + t21);
+    const Real t23 = t9 - v_My;
+    const Real t24 = t11 - t8;
+    const Real t25 = t8 - (t11 - t24) + (t10 - t24) + (std::fma(t18, t7, std::fma(t0, v_Mx - (t7 - t20) - (v_mx + t20), std::fma(t0, t7, -t8))) + std::fma(t22, t9, std::fma(t2, v_My - (t9 - t23) - (v_my + t23), std::fma(t2, t9, -t10))));
+    const Real t26 = t11 + t25;
+    const Real t27 = t5 - C_Mz;
+    const Real t28 = C_Mz - (t5 - t27) - (C_mz + t27);
+    const Real t29 = t12 - v_Mz;
+    const Real t30 = t26 + t13;
+    const Real t31 = t30 - t26;
+    const Real t32 = t26 - (t30 - t31) + (t13 - t31) + (t25 - (t26 - t11) + std::fma(t28, t12, std::fma(t5, v_Mz - (t12 - t29) - (v_mz + t29), std::fma(t5, t12, -t13))));
+    const Real t33 = t30 + t32;
+    const Real t34 = t32 - (t33 - t30);
+    const Real t35 = t19 * t33;
     const Real t36 = t4 - t1;
-    const Real t37 = t1 - (t4 - t36) + (t3 - t36) + (std::fma(t19, t0, std::fma(t0, t19, std::fma(t0, t0, -t1))) + std::fma(t23, t2, std::fma(t2, t23, std::fma(t2, t2, -t3))));
+    const Real t37 = t1 - (t4 - t36) + (t3 - t36) + (std::fma(t18, t0, std::fma(t0, t18, std::fma(t0, t0, -t1))) + std::fma(t22, t2, std::fma(t2, t22, std::fma(t2, t2, -t3))));
     const Real t38 = t4 + t37;
     const Real t39 = t38 + t6;
     const Real t40 = t39 - t38;
-    const Real t41 = t38 - (t39 - t40) + (t6 - t40) + (t37 - (t38 - t4) + std::fma(t29, t5, std::fma(t5, t29, std::fma(t5, t5, -t6))));
+    const Real t41 = t38 - (t39 - t40) + (t6 - t40) + (t37 - (t38 - t4) + std::fma(t28, t5, std::fma(t5, t28, std::fma(t5, t5, -t6))));
     const Real t42 = t39 + t41;
-    if (!(std::fabs(t42) >= detail::smallest_divisor<Real>) || !(std::fabs(t42) <= std::numeric_limits<Real>::max()) || !(std::fabs(t7) >= detail::smallest_divisor<Real>) || !(std::fabs(t7) <= std::numeric_limits<Real>::max())) {
+    if (!(std::fabs(t42) >= detail::smallest_divisor<Real>) || !(std::fabs(t42) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t43 = t35 / t42;
-    const Real t44 = -t43;
-    const Real t45 = v_mx + t43;
-    const Real t46 = t45 - v_mx;
-    const Real t47 = v_mx - (t45 - t46) + (t43 - t46) + std::fma(t44, t41 - (t42 - t39), std::fma(t44, t42, t35) + std::fma(std::fma(Real(1) - (t16 - t17) + (eps - t17), t0, std::fma(t16, t19, std::fma(t16, t0, -t20))), t34, std::fma(t20, t33 - (t34 - t31), std::fma(t20, t34, -t35)))) / t42;
-    const Real t48 = t45 + t47;
-    const Real t49 = t16 * t2;
-    const Real t50 = t49 * t15;
-    const Real t51 = t50 / t7;
-    const Real t52 = t16 * t5;
-    const Real t53 = std::fma(t2, t10, t9);
-    const Real t54 = std::fma(t5, t13, t53);
-    const Real t55 = t52 * t54;
-    const Real t56 = t55 / t7;
+    const Real t43 = t41 - (t42 - t39);
+    const Real t44 = t35 / t42;
+    const Real t45 = -t44;
+    const Real t46 = v_mx + t44;
+    const Real t47 = t46 - v_mx;
+    const Real t48 = v_mx - (t46 - t47) + (t44 - t47) + std::fma(t45, t43, std::fma(t45, t42, t35) + std::fma(std::fma(t16, t0, std::fma(t14, t18, std::fma(t14, t0, -t19))), t33, std::fma(t19, t34, std::fma(t19, t33, -t35)))) / t42;
+    const Real t49 = t46 + t48;
+    const Real t50 = t14 * t2;
+    const Real t51 = t50 * t33;
+    const Real t52 = t51 / t42;
+    const Real t53 = -t52;
+    const Real t54 = v_my + t52;
+    const Real t55 = t54 - v_my;
+    const Real t56 = v_my - (t54 - t55) + (t52 - t55) + std::fma(t53, t43, std::fma(t53, t42, t51) + std::fma(std::fma(t16, t2, std::fma(t14, t22, std::fma(t14, t2, -t50))), t33, std::fma(t50, t34, std::fma(t50, t33, -t51)))) / t42;
+    const Real t57 = t54 + t56;
+    const Real t58 = t14 * t5;
+    const Real t59 = t58 * t33;
+    const Real t60 = t59 / t42;
+    const Real t61 = -t60;
+    const Real t62 = v_mz + t60;
+    const Real t63 = t62 - v_mz;
+    const Real t64 = v_mz - (t62 - t63) + (t60 - t63) + std::fma(t61, t43, std::fma(t61, t42, t59) + std::fma(std::fma(t16, t5, std::fma(t14, t28, std::fma(t14, t5, -t58))), t33, std::fma(t58, t34, std::fma(t58, t33, -t59)))) / t42;
+    const Real t65 = t62 + t64;
     const Real result0 = v_Mx;
     const Real result1 = v_My;
     const Real result2 = v_Mz;
-    const Real result3 = t48 + (t47 - (t48 - t45));
-    const Real result4 = v_my + t51;
-    const Real result5 = v_mz + t56;
+    const Real result3 = t49 + (t48 - (t49 - t46));
+    const Real result4 = t57 + (t56 - (t57 - t54));
+    const Real result5 = t65 + (t64 - (t65 - t62));
     if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
@@ -129,20 +138,18 @@ inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>
     if ((std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
         (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
         (std::fabs(t6) < std::numeric_limits<Real>::min() && t5 != Real(0)) ||
-        (std::fabs(t9) < std::numeric_limits<Real>::min() && t0 != Real(0) && t8 != Real(0)) ||
-        (std::fabs(t11) < std::numeric_limits<Real>::min() && t2 != Real(0) && t10 != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && t5 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t16 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && t20 != Real(0) && t34 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && t35 != Real(0)) ||
-        (std::fabs(t49) < std::numeric_limits<Real>::min() && t16 != Real(0) && t2 != Real(0)) ||
-        (std::fabs(t50) < std::numeric_limits<Real>::min() && t49 != Real(0) && t15 != Real(0)) ||
-        (std::fabs(t51) < std::numeric_limits<Real>::min() && t50 != Real(0)) ||
-        (std::fabs(t52) < std::numeric_limits<Real>::min() && t16 != Real(0) && t5 != Real(0)) ||
-        (std::fabs(t53) < std::numeric_limits<Real>::min() && (t53 != Real(0) || (t9 == Real(0) && t2 != Real(0) && t10 != Real(0)))) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && (t54 != Real(0) || (t53 == Real(0) && t5 != Real(0) && t13 != Real(0)))) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && t52 != Real(0) && t54 != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && t55 != Real(0))) {
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && t0 != Real(0) && t7 != Real(0)) ||
+        (std::fabs(t10) < std::numeric_limits<Real>::min() && t2 != Real(0) && t9 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t5 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t19) < std::numeric_limits<Real>::min() && t14 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && t19 != Real(0) && t33 != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && t35 != Real(0)) ||
+        (std::fabs(t50) < std::numeric_limits<Real>::min() && t14 != Real(0) && t2 != Real(0)) ||
+        (std::fabs(t51) < std::numeric_limits<Real>::min() && t50 != Real(0) && t33 != Real(0)) ||
+        (std::fabs(t52) < std::numeric_limits<Real>::min() && t51 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && t14 != Real(0) && t5 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && t33 != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && t59 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -316,12 +323,12 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
 ///   v_m: v_my: \f$y\f$-component of m's velocity before the collision (real, in m s^-1)
 ///   v_m: v_mz: \f$z\f$-component of m's velocity before the collision (real, in m s^-1)
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
-/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), compensated let": at most 2.36 ulps in double on 4200 samples.
-/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 2.57 ulps in double on 4200 samples.
-/// v_M[2] is computed in the form "v_Mz - k_impulse*m*(C_Mz - C_mz), compensated let": at most 2.47 ulps in double on 4200 samples.
-/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 3.08 ulps in double on 4200 samples.
-/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 3.30 ulps in double on 4200 samples.
-/// v_m[2] is computed in the form "v_mz + k_impulse*M*(C_Mz - C_mz), compensated let": at most 2.28 ulps in double on 4200 samples.
+/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), compensated let": at most 2.06 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), compensated let": at most 2.01 ulps in double on 4200 samples.
+/// v_M[2] is computed in the form "v_Mz - k_impulse*m*(C_Mz - C_mz), compensated let": at most 2.21 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), compensated let": at most 2.64 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), compensated let": at most 1.99 ulps in double on 4200 samples.
+/// v_m[2] is computed in the form "v_mz + k_impulse*M*(C_Mz - C_mz), compensated let": at most 2.20 ulps in double on 4200 samples.
 /// M or m may be +infinity, one at a time: a fixed sphere, an obstacle the impulse does not move. Every
 /// output is then its limit as that mass grows without bound, derived and proven
 /// (momentum is not conserved: the obstacle takes the impulse).
@@ -329,8 +336,8 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
 /// With M = +infinity, v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// With M = +infinity, v_M[2] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// With M = +infinity, v_m[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
-/// With M = +infinity, v_m[1] is computed in the form "limit of display": at most 3.43 ulps in double.
-/// With M = +infinity, v_m[2] is computed in the form "limit of display, fma": at most 3.74 ulps in double.
+/// With M = +infinity, v_m[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
+/// With M = +infinity, v_m[2] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
 /// With m = +infinity, v_M[0] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
 /// With m = +infinity, v_M[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
 /// With m = +infinity, v_M[2] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
@@ -800,13 +807,13 @@ namespace detail {
 // collide(m, C_M, C_m, v_M, v_m, eps, impact::fast): the fast form of collide with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
 // bound (verification.md): 31 operations with the guards' conditions, of them 3
-// division(s) and 0 square root(s) (the accurate form: 155, 4 and 0).
+// division(s) and 0 square root(s) (the accurate form: 199, 6 and 0).
 // v_M[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_M[2] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
-// v_m[0] is computed in the form "limit of display, fma": at most 4.47 ulps in double on 4200 samples.
-// v_m[1] is computed in the form "limit of display, fma": at most 3.64 ulps in double on 4200 samples.
-// v_m[2] is computed in the form "limit of display, fma": at most 3.74 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of display, fma": at most 6.70 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of display, fma": at most 4.49 ulps in double on 4200 samples.
+// v_m[2] is computed in the form "limit of display, fma": at most 4.39 ulps in double on 4200 samples.
 template <class Real>
 inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps, fast_t) noexcept
 {
@@ -907,9 +914,9 @@ inline collide_result<Real, 3> collide_fixed_M(Real m, const std::array<Real, 3>
 // same guards and statuses, each output in its cheapest candidate form within its fast
 // bound (verification.md): 31 operations with the guards' conditions, of them 3
 // division(s) and 0 square root(s) (the accurate form: 202, 6 and 0).
-// v_M[0] is computed in the form "limit of display, fma": at most 4.35 ulps in double on 4200 samples.
-// v_M[1] is computed in the form "limit of display, fma": at most 4.24 ulps in double on 4200 samples.
-// v_M[2] is computed in the form "limit of display, fma": at most 5.16 ulps in double on 4200 samples.
+// v_M[0] is computed in the form "limit of display, fma": at most 4.41 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of display, fma": at most 6.23 ulps in double on 4200 samples.
+// v_M[2] is computed in the form "limit of display, fma": at most 4.02 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
 // v_m[2] is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
@@ -1015,12 +1022,12 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
 /// same guards and statuses, each output in its cheapest candidate form within its fast
 /// bound (verification.md): 40 operations with the guards' conditions, of them 1
 /// division(s) and 0 square root(s) (the accurate form: 158, 2 and 0).
-/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), fma": at most 4.13 ulps in double on 4200 samples.
-/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), fma": at most 7.32 ulps in double on 4200 samples.
-/// v_M[2] is computed in the form "v_Mz - k_impulse*m*(C_Mz - C_mz), fma": at most 3.71 ulps in double on 4200 samples.
-/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), fma": at most 4.77 ulps in double on 4200 samples.
-/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), fma": at most 4.49 ulps in double on 4200 samples.
-/// v_m[2] is computed in the form "v_mz + k_impulse*M*(C_Mz - C_mz), fma": at most 6.27 ulps in double on 4200 samples.
+/// v_M[0] is computed in the form "v_Mx - k_impulse*m*(C_Mx - C_mx), fma": at most 4.91 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My - k_impulse*m*(C_My - C_my), fma": at most 3.79 ulps in double on 4200 samples.
+/// v_M[2] is computed in the form "v_Mz - k_impulse*m*(C_Mz - C_mz), fma": at most 4.44 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + k_impulse*M*(C_Mx - C_mx), fma": at most 3.61 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + k_impulse*M*(C_My - C_my), fma": at most 4.43 ulps in double on 4200 samples.
+/// v_m[2] is computed in the form "v_mz + k_impulse*M*(C_Mz - C_mz), fma": at most 4.03 ulps in double on 4200 samples.
 template <class Real>
 inline collide_result<Real, 3> collide(Real M, Real m, const std::array<Real, 3>& C_M, const std::array<Real, 3>& C_m, const std::array<Real, 3>& v_M, const std::array<Real, 3>& v_m, Real eps, fast_t) noexcept
 {

@@ -23,8 +23,8 @@ namespace detail {
 // collide_line with M = +infinity, a fixed sphere: every output the limit of collide_line's as M grows
 // without bound (derived by the engine, each form proven equal to the limit).
 // v_M is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
-// v_m is computed in the form "limit of display, fma": at most 1.40 ulps in double on 4200 samples.
-// J is computed in the form "expanded, fma": at most 2.09 ulps in double on 4200 samples.
+// v_m is computed in the form "limit of display, fma": at most 1.43 ulps in double on 4200 samples.
+// J is computed in the form "expanded, fma": at most 2.53 ulps in double on 4200 samples.
 template <class Real>
 inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m, Real eps) noexcept
 {
@@ -81,9 +81,9 @@ inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m
 
 // collide_line with m = +infinity, a fixed sphere: every output the limit of collide_line's as m grows
 // without bound (derived by the engine, each form proven equal to the limit).
-// v_M is computed in the form "limit of display, fma": at most 1.29 ulps in double on 4200 samples.
+// v_M is computed in the form "limit of display, fma": at most 1.33 ulps in double on 4200 samples.
 // v_m is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
-// J is computed in the form "expanded, fma": at most 3.12 ulps in double on 4200 samples.
+// J is computed in the form "expanded, fma": at most 2.97 ulps in double on 4200 samples.
 template <class Real>
 inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m, Real eps) noexcept
 {
@@ -144,18 +144,18 @@ inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m
 ///   v_M: velocity of M along the line of action before the collision (real, in m s^-1)
 ///   v_m: velocity of m along the line of action before the collision (real, in m s^-1)
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
-/// v_M is computed in the form "display, fma": at most 2.47 ulps in double on 4200 samples.
-/// v_m is computed in the form "display, fma": at most 2.74 ulps in double on 4200 samples.
-/// J is computed in the form "display, compensated": at most 1.96 ulps in double on 4200 samples.
+/// v_M is computed in the form "display, fma": at most 2.31 ulps in double on 4200 samples.
+/// v_m is computed in the form "display, fma": at most 2.58 ulps in double on 4200 samples.
+/// J is computed in the form "display, compensated": at most 1.94 ulps in double on 4200 samples.
 /// M or m may be +infinity, one at a time: a fixed sphere, an obstacle the impulse does not move. Every
 /// output is then its limit as that mass grows without bound, derived and proven
 /// (momentum is not conserved: the obstacle takes the impulse).
 /// With M = +infinity, v_M is computed in the form "limit of display": at most 0.00 ulps in double.
-/// With M = +infinity, v_m is computed in the form "limit of display, fma": at most 1.40 ulps in double.
-/// With M = +infinity, J is computed in the form "expanded, fma": at most 2.09 ulps in double.
-/// With m = +infinity, v_M is computed in the form "limit of display, fma": at most 1.29 ulps in double.
+/// With M = +infinity, v_m is computed in the form "limit of display, fma": at most 1.43 ulps in double.
+/// With M = +infinity, J is computed in the form "expanded, fma": at most 2.53 ulps in double.
+/// With m = +infinity, v_M is computed in the form "limit of display, fma": at most 1.33 ulps in double.
 /// With m = +infinity, v_m is computed in the form "limit of display": at most 0.00 ulps in double.
-/// With m = +infinity, J is computed in the form "expanded, fma": at most 3.12 ulps in double.
+/// With m = +infinity, J is computed in the form "expanded, fma": at most 2.97 ulps in double.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged (the other outputs 0):
 ///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
@@ -254,8 +254,8 @@ namespace detail {
 // bound (verification.md): 7 operations with the guards' conditions, of them 0
 // division(s) and 0 square root(s) (the accurate form: 11, 0 and 0).
 // v_M is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
-// v_m is computed in the form "limit of display, fma": at most 1.40 ulps in double on 4200 samples.
-// J is computed in the form "limit of display": at most 4.90 ulps in double on 4200 samples.
+// v_m is computed in the form "limit of display, fma": at most 1.43 ulps in double on 4200 samples.
+// J is computed in the form "limit of display": at most 3.70 ulps in double on 4200 samples.
 template <class Real>
 inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m, Real eps, fast_t) noexcept
 {
@@ -307,9 +307,9 @@ inline collide_line_result<Real> collide_line_fixed_M(Real m, Real v_M, Real v_m
 // same guards and statuses, each output in its cheapest candidate form within its fast
 // bound (verification.md): 8 operations with the guards' conditions, of them 0
 // division(s) and 0 square root(s) (the accurate form: 11, 0 and 0).
-// v_M is computed in the form "limit of display, fma": at most 1.29 ulps in double on 4200 samples.
+// v_M is computed in the form "limit of display, fma": at most 1.33 ulps in double on 4200 samples.
 // v_m is computed in the form "limit of display": at most 0.00 ulps in double on 4200 samples.
-// J is computed in the form "limit of display": at most 3.47 ulps in double on 4200 samples.
+// J is computed in the form "limit of display": at most 3.73 ulps in double on 4200 samples.
 template <class Real>
 inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m, Real eps, fast_t) noexcept
 {
@@ -363,9 +363,9 @@ inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m
 /// same guards and statuses, each output in its cheapest candidate form within its fast
 /// bound (verification.md): 16 operations with the guards' conditions, of them 3
 /// division(s) and 0 square root(s) (the accurate form: 47, 4 and 0).
-/// v_M is computed in the form "display, fma": at most 2.47 ulps in double on 4200 samples.
-/// v_m is computed in the form "display, fma": at most 2.74 ulps in double on 4200 samples.
-/// J is computed in the form "display": at most 6.81 ulps in double on 4200 samples.
+/// v_M is computed in the form "display, fma": at most 2.31 ulps in double on 4200 samples.
+/// v_m is computed in the form "display, fma": at most 2.58 ulps in double on 4200 samples.
+/// J is computed in the form "display": at most 5.83 ulps in double on 4200 samples.
 template <class Real>
 inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m, Real eps, fast_t) noexcept
 {

@@ -15,10 +15,10 @@ namespace detail {
 // without bound (derived by the engine, each form proven equal to the limit).
 // v_M[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
-// v_m[0] is computed in the form "limit of v_mx + dv_mx, fma, compensated let": at most 1.38 ulps in double on 4200 samples.
-// v_m[1] is computed in the form "limit of v_my + dv_my, compensated let": at most 1.46 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of v_mx + dv_mx, compensated let": at most 0.98 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of v_my + dv_my, compensated let": at most 0.99 ulps in double on 4200 samples.
 // w_M is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
-// w_m is computed in the form "limit of w_m + dw_m, compensated let": at most 1.98 ulps in double on 4200 samples.
+// w_m is computed in the form "limit of w_m + dw_m, compensated let": at most 2.01 ulps in double on 4200 samples.
 template <class Real>
 inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu) noexcept
 {
@@ -60,783 +60,669 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
         out.status = status::non_finite;
         return out;
     }
-    const Real t0 = -Real(2);
-    const Real t1 = C_Mx - C_mx;
-    const Real t2 = t1 - C_Mx;
-    const Real t3 = C_Mx * C_Mx;
-    const Real t4 = C_Mx * C_mx;
-    const Real t5 = std::fma(t0, t4, t3);
-    const Real t6 = C_mx * C_mx;
-    const Real t7 = Real(2) * C_Mx;
-    const Real t8 = t7 * C_mx;
-    const Real t9 = t1 * t1;
-    const Real t10 = C_Mx - (t1 - t2) - (C_mx + t2);
-    const Real t11 = C_My - C_my;
-    const Real t12 = t11 - C_My;
-    const Real t13 = C_My * C_My;
-    const Real t14 = t5 + t13;
-    const Real t15 = C_My * C_my;
-    const Real t16 = std::fma(t0, t15, t14);
-    const Real t17 = C_my * C_my;
-    const Real t18 = Real(2) * C_My;
-    const Real t19 = t18 * C_my;
-    const Real t20 = t11 * t11;
-    const Real t21 = t9 + t20;
-    const Real t22 = t21 - t9;
-    const Real t23 = C_My - (t11 - t12) - (C_my + t12);
-    const Real t24 = t9 - (t21 - t22) + (t20 - t22) + (std::fma(t10, t1, std::fma(t1, t10, std::fma(t1, t1, -t9))) + std::fma(t23, t11, std::fma(t11, t23, std::fma(t11, t11, -t20))));
-    const Real t25 = t21 + t24;
-    const Real t26 = v_Mx * t1;
-    const Real t27 = v_mx * t1;
-    const Real t28 = v_Mx * C_My;
-    const Real t29 = v_Mx * C_my;
-    const Real t30 = v_mx * C_My;
-    const Real t31 = v_mx * C_my;
-    const Real t32 = v_Mx * t11;
-    const Real t33 = v_mx * t11;
-    const Real t34 = -v_Mx;
-    const Real t35 = -v_mx;
-    const Real t36 = std::fma(v_Mx, t10, std::fma(v_Mx, t1, -t26));
-    const Real t37 = std::fma(v_mx, t10, std::fma(v_mx, t1, -t27));
-    const Real t38 = std::fma(v_Mx, t23, std::fma(v_Mx, t11, -t32));
-    const Real t39 = std::fma(v_mx, t23, std::fma(v_mx, t11, -t33));
-    const Real t40 = v_My * C_Mx;
-    const Real t41 = v_My * C_mx;
-    const Real t42 = v_my * C_Mx;
-    const Real t43 = v_my * C_mx;
-    const Real t44 = v_My * t1;
-    const Real t45 = v_my * t1;
-    const Real t46 = v_My * t11;
-    const Real t47 = v_my * t11;
-    const Real t48 = t26 + t46;
-    const Real t49 = t48 - t26;
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 - C_Mx;
+    const Real t2 = C_Mx * C_Mx;
+    const Real t3 = Real(2) * C_Mx;
+    const Real t4 = t3 * C_mx;
+    const Real t5 = C_mx * C_mx;
+    const Real t6 = t0 * t0;
+    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t8 = t2 - t4;
+    const Real t9 = t8 - t2;
+    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
+    const Real t11 = t8 + t10;
+    const Real t12 = C_My - C_my;
+    const Real t13 = t12 - C_My;
+    const Real t14 = C_My * C_My;
+    const Real t15 = t11 + t14;
+    const Real t16 = t15 - t11;
+    const Real t17 = Real(2) * C_My;
+    const Real t18 = t17 * C_my;
+    const Real t19 = C_my * C_my;
+    const Real t20 = t12 * t12;
+    const Real t21 = t6 + t20;
+    const Real t22 = t21 - t6;
+    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
+    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
+    const Real t25 = t15 + t24;
+    const Real t26 = t25 - t18;
+    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
+    const Real t28 = t21 + t27;
+    const Real t29 = t26 - t25;
+    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
+    const Real t31 = t26 + t30;
+    const Real t32 = t31 + t5;
+    const Real t33 = t32 - t31;
+    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
+    const Real t35 = t32 + t34;
+    const Real t36 = t35 + t19;
+    const Real t37 = t36 - t35;
+    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
+    const Real t39 = t36 + t38;
+    const Real t40 = v_Mx * t0;
+    const Real t41 = v_mx * t0;
+    const Real t42 = v_Mx * C_My;
+    const Real t43 = v_Mx * C_my;
+    const Real t44 = v_mx * C_My;
+    const Real t45 = v_mx * C_my;
+    const Real t46 = v_Mx * t12;
+    const Real t47 = v_mx * t12;
+    const Real t48 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t40));
+    const Real t49 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t41));
+    const Real t50 = std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t46));
+    const Real t51 = std::fma(v_mx, t23, std::fma(v_mx, t12, -t47));
+    const Real t52 = v_My * C_Mx;
+    const Real t53 = v_My * C_mx;
+    const Real t54 = v_my * C_Mx;
+    const Real t55 = v_my * C_mx;
+    const Real t56 = v_My * t0;
+    const Real t57 = v_my * t0;
+    const Real t58 = v_My * t12;
+    const Real t59 = v_my * t12;
+    const Real t60 = t40 + t58;
+    const Real t61 = t60 - t40;
     if (!(t21 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-((v_Mx - v_mx) * t1) - (v_My - v_my) * t11 > Real(0))) {
+    if (!(-((v_Mx - v_mx) * t0) - (v_My - v_my) * t12 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t50 = -v_My;
-    const Real t51 = -v_my;
-    const Real t52 = std::fma(v_My, t10, std::fma(v_My, t1, -t44));
-    const Real t53 = std::fma(v_my, t10, std::fma(v_my, t1, -t45));
-    const Real t54 = std::fma(v_My, t23, std::fma(v_My, t11, -t46));
-    const Real t55 = std::fma(v_my, t23, std::fma(v_my, t11, -t47));
-    const Real t56 = t26 - (t48 - t49) + (t46 - t49) + (t36 + t54);
-    const Real t57 = t48 + t56;
-    const Real t58 = t57 - t27;
-    const Real t59 = t58 - t57;
-    const Real t60 = t57 - (t58 - t59) - (t27 + t59) + (t56 - (t57 - t48) - t37);
-    const Real t61 = t58 + t60;
-    const Real t62 = t61 - t47;
-    const Real t63 = t62 - t61;
-    const Real t64 = t61 - (t62 - t63) - (t47 + t63) + (t60 - (t61 - t58) - t55);
-    const Real t65 = t62 + t64;
-    const Real t66 = t64 - (t65 - t62);
-    const Real t67 = Real(1) + eps;
-    const Real t68 = t67 - Real(1);
-    const Real t69 = Real(1) - (t67 - t68) + (eps - t68);
-    const Real t70 = m * t67;
-    const Real t71 = q_M * q_m;
-    const Real t72 = t71 * eps;
-    const Real t73 = q_m * eps;
-    const Real t74 = q_M * eps;
-    const Real t75 = m * q_M;
-    const Real t76 = -q_M;
-    const Real t77 = t75 * q_m;
-    const Real t78 = q_M + t71;
-    const Real t79 = t78 - q_M;
-    const Real t80 = std::fma(std::fma(m, q_M, -t75), q_m, std::fma(t75, q_m, -t77));
-    const Real t81 = q_M - (t78 - t79) + (t71 - t79) + std::fma(q_M, q_m, -t71);
-    const Real t82 = t78 + t81;
-    const Real t83 = t81 - (t82 - t78);
-    const Real t84 = t72 * mu;
-    const Real t85 = t84 * v_Mx;
-    const Real t86 = t85 * C_Mx;
-    const Real t87 = t85 * C_mx;
-    const Real t88 = mu * v_Mx;
-    const Real t89 = t88 * C_Mx;
-    const Real t90 = t88 * C_mx;
-    const Real t91 = mu * v_mx;
+    const Real t62 = std::fma(v_My, t7, std::fma(v_My, t0, -t56));
+    const Real t63 = std::fma(v_my, t7, std::fma(v_my, t0, -t57));
+    const Real t64 = std::fma(v_My, t23, std::fma(v_My, t12, -t58));
+    const Real t65 = std::fma(v_my, t23, std::fma(v_my, t12, -t59));
+    const Real t66 = t40 - (t60 - t61) + (t58 - t61) + (t48 + t64);
+    const Real t67 = t60 + t66;
+    const Real t68 = t67 - t41;
+    const Real t69 = t68 - t67;
+    const Real t70 = t67 - (t68 - t69) - (t41 + t69) + (t66 - (t67 - t60) - t49);
+    const Real t71 = t68 + t70;
+    const Real t72 = t71 - t59;
+    const Real t73 = t72 - t71;
+    const Real t74 = t71 - (t72 - t73) - (t59 + t73) + (t70 - (t71 - t68) - t65);
+    const Real t75 = t72 + t74;
+    const Real t76 = Real(1) + eps;
+    const Real t77 = t76 - Real(1);
+    const Real t78 = Real(1) - (t76 - t77) + (eps - t77);
+    const Real t79 = m * t76;
+    const Real t80 = q_M * q_m;
+    const Real t81 = t80 * eps;
+    const Real t82 = q_M * eps;
+    const Real t83 = m * q_M;
+    const Real t84 = t83 * q_m;
+    const Real t85 = q_M + t80;
+    const Real t86 = t85 - q_M;
+    const Real t87 = std::fma(q_M, q_m, -t80);
+    const Real t88 = q_M - (t85 - t86) + (t80 - t86) + t87;
+    const Real t89 = t85 + t88;
+    const Real t90 = t81 * mu;
+    const Real t91 = t90 * v_Mx;
     const Real t92 = t91 * C_Mx;
     const Real t93 = t91 * C_mx;
-    const Real t94 = t84 * v_mx;
+    const Real t94 = t90 * v_mx;
     const Real t95 = t94 * C_Mx;
     const Real t96 = t94 * C_mx;
-    const Real t97 = mu * v_My;
+    const Real t97 = t90 * v_My;
     const Real t98 = t97 * C_My;
     const Real t99 = t97 * C_my;
-    const Real t100 = mu * v_my;
+    const Real t100 = t90 * v_my;
     const Real t101 = t100 * C_My;
     const Real t102 = t100 * C_my;
-    const Real t103 = t84 * v_My;
-    const Real t104 = t103 * C_My;
-    const Real t105 = t103 * C_my;
-    const Real t106 = t84 * v_my;
-    const Real t107 = t106 * C_My;
-    const Real t108 = t106 * C_my;
-    const Real t109 = eps * mu;
-    const Real t110 = t109 * v_Mx;
-    const Real t111 = t110 * C_Mx;
-    const Real t112 = t110 * C_mx;
-    const Real t113 = t109 * v_mx;
-    const Real t114 = t113 * C_Mx;
-    const Real t115 = t113 * C_mx;
-    const Real t116 = t109 * v_My;
-    const Real t117 = t116 * C_My;
-    const Real t118 = t116 * C_my;
-    const Real t119 = t109 * v_my;
-    const Real t120 = t119 * C_My;
-    const Real t121 = t119 * C_my;
-    const Real t122 = m * mu;
-    const Real t123 = t122 * t67;
-    const Real t124 = q_m * mu;
-    const Real t125 = t124 * v_Mx;
-    const Real t126 = t125 * C_Mx;
-    const Real t127 = t125 * C_mx;
-    const Real t128 = t124 * v_mx;
-    const Real t129 = t128 * C_Mx;
-    const Real t130 = t128 * C_mx;
-    const Real t131 = t124 * v_My;
-    const Real t132 = t131 * C_My;
-    const Real t133 = t131 * C_my;
-    const Real t134 = t124 * v_my;
-    const Real t135 = t134 * C_My;
-    const Real t136 = t134 * C_my;
-    const Real t137 = q_M * mu;
-    const Real t138 = t137 * v_Mx;
-    const Real t139 = t138 * C_Mx;
-    const Real t140 = t138 * C_mx;
-    const Real t141 = t137 * v_mx;
-    const Real t142 = t141 * C_Mx;
-    const Real t143 = t141 * C_mx;
-    const Real t144 = t137 * v_My;
-    const Real t145 = t144 * C_My;
-    const Real t146 = t144 * C_my;
-    const Real t147 = t137 * v_my;
-    const Real t148 = t147 * C_My;
-    const Real t149 = t147 * C_my;
-    const Real t150 = t71 * mu;
-    const Real t151 = t150 * v_Mx;
-    const Real t152 = t151 * C_Mx;
-    const Real t153 = t151 * C_mx;
-    const Real t154 = t150 * v_mx;
-    const Real t155 = t154 * C_Mx;
-    const Real t156 = t154 * C_mx;
-    const Real t157 = t150 * v_My;
-    const Real t158 = t157 * C_My;
-    const Real t159 = t157 * C_my;
-    const Real t160 = t150 * v_my;
-    const Real t161 = t160 * C_My;
-    const Real t162 = t160 * C_my;
-    const Real t163 = t73 * mu;
-    const Real t164 = t163 * v_Mx;
-    const Real t165 = t164 * C_mx;
-    const Real t166 = t163 * v_mx;
-    const Real t167 = t166 * C_Mx;
-    const Real t168 = t166 * C_mx;
-    const Real t169 = t163 * v_My;
-    const Real t170 = t169 * C_My;
-    const Real t171 = t169 * C_my;
-    const Real t172 = t163 * v_my;
-    const Real t173 = t172 * C_My;
-    const Real t174 = t172 * C_my;
-    const Real t175 = t74 * mu;
-    const Real t176 = t175 * v_Mx;
-    const Real t177 = t176 * C_Mx;
-    const Real t178 = t176 * C_mx;
-    const Real t179 = t175 * v_mx;
-    const Real t180 = t179 * C_Mx;
-    const Real t181 = t179 * C_mx;
-    const Real t182 = t175 * v_My;
-    const Real t183 = t182 * C_My;
-    const Real t184 = t182 * C_my;
-    const Real t185 = t175 * v_my;
-    const Real t186 = t185 * C_My;
-    const Real t187 = t185 * C_my;
-    const Real t188 = std::fma(t76, t165, t86);
-    const Real t189 = std::fma(q_M, t170, t188);
-    const Real t190 = std::fma(t76, t171, t189);
-    const Real t191 = std::fma(t76, t167, t190);
-    const Real t192 = std::fma(q_M, t168, t191);
-    const Real t193 = std::fma(t76, t173, t192);
-    const Real t194 = std::fma(q_M, t174, t193);
-    const Real t195 = std::fma(std::fma(m, mu, -t122), t67, std::fma(t122, t69, std::fma(t122, t67, -t123)));
-    const Real t196 = q_m * b;
-    const Real t197 = b * v_Mx;
-    const Real t198 = t197 * t11;
-    const Real t199 = b * v_mx;
-    const Real t200 = t199 * t11;
-    const Real t201 = b * v_My;
-    const Real t202 = t201 * t1;
-    const Real t203 = b * v_my;
-    const Real t204 = t203 * t1;
-    const Real t205 = t71 * b;
-    const Real t206 = std::fma(std::fma(b, v_Mx, -t197), t11, std::fma(t197, t23, std::fma(t197, t11, -t198)));
-    const Real t207 = std::fma(std::fma(b, v_mx, -t199), t11, std::fma(t199, t23, std::fma(t199, t11, -t200)));
-    const Real t208 = std::fma(std::fma(b, v_My, -t201), t1, std::fma(t201, t10, std::fma(t201, t1, -t202)));
-    const Real t209 = std::fma(std::fma(b, v_my, -t203), t1, std::fma(t203, t10, std::fma(t203, t1, -t204)));
-    const Real t210 = R_M * w_M;
-    const Real t211 = R_M * b;
-    const Real t212 = t211 * w_M;
-    const Real t213 = std::fma(R_M, w_M, -t210);
-    const Real t214 = std::fma(std::fma(R_M, b, -t211), w_M, std::fma(t211, w_M, -t212));
-    const Real t215 = R_m * w_m;
-    const Real t216 = m * R_m;
-    const Real t217 = t216 * q_m;
-    const Real t218 = std::sqrt(t21);
-    const Real t219 = std::sqrt(t16 + t6 + t17);
-    const Real t220 = std::sqrt(t3 - t8 + t13 - t19 + t6 + t17);
-    const Real t221 = std::sqrt(t25);
-    const Real t222 = t82 * t221;
-    const Real t223 = R_m * b;
-    const Real t224 = t210 * t219;
-    const Real t225 = t210 * t221;
-    const Real t226 = t210 * t218;
-    const Real t227 = t210 * t220;
-    const Real t228 = t212 * t221;
-    const Real t229 = w_m * t219;
-    const Real t230 = std::fma(R_m, t229, t224);
-    const Real t231 = std::fma(v_Mx, C_My, t230);
-    const Real t232 = std::fma(t34, C_my, t231);
-    const Real t233 = std::fma(t50, C_Mx, t232);
-    const Real t234 = std::fma(v_My, C_mx, t233);
-    const Real t235 = std::fma(t35, C_My, t234);
-    const Real t236 = std::fma(v_mx, C_my, t235);
-    const Real t237 = std::fma(v_my, C_Mx, t236);
-    const Real t238 = std::fma(t51, C_mx, t237);
-    const Real t239 = w_m * t218;
-    const Real t240 = std::fma(R_m, t239, t226);
-    const Real t241 = std::fma(v_Mx, t11, t240);
-    const Real t242 = std::fma(t50, t1, t241);
-    const Real t243 = std::fma(t35, t11, t242);
-    const Real t244 = std::fma(v_my, t1, t243);
-    const Real t245 = t223 * w_m;
-    const Real t246 = std::fma(R_m, w_m, -t215);
-    const Real t247 = t215 * t221;
-    const Real t248 = t215 * t220;
-    const Real t249 = t215 * t218;
-    const Real t250 = std::fma(-t221, t221, t25) + (t24 - (t25 - t21));
-    const Real t251 = t221 + t221;
-    const Real t252 = t245 * t221;
-    const Real t253 = std::fma(t82, t221, -t222);
-    const Real t254 = std::fma(t210, t221, -t225);
-    const Real t255 = t225 + t247;
-    const Real t256 = t255 - t225;
-    const Real t257 = t228 + t225;
-    const Real t258 = t226 + t249 + t32 - t44 - t33 + t45;
-    const Real t259 = t227 + t248 + t28 - t29 - t40 + t41 - t30 + t31 + t42 - t43;
-    const Real t260 = std::fma(t212, t221, -t228);
-    const Real t261 = t257 - t228;
-    const Real t262 = std::fabs(t238);
-    const Real t263 = q_m * t262;
-    const Real t264 = t196 * t262;
-    const Real t265 = std::fma(q_M, t264, t194);
-    const Real t266 = std::fma(q_M, t126, t265);
-    const Real t267 = std::fma(t76, t127, t266);
-    const Real t268 = std::fma(q_M, t132, t267);
-    const Real t269 = std::fma(t76, t133, t268);
-    const Real t270 = std::fma(t76, t129, t269);
-    const Real t271 = std::fma(q_M, t130, t270);
-    const Real t272 = std::fma(t76, t135, t271);
-    const Real t273 = std::fma(q_M, t136, t272);
-    const Real t274 = std::fma(q_M, t263, t273);
-    const Real t275 = std::fma(q_M, t111, t274);
-    const Real t276 = std::fma(t76, t112, t275);
-    const Real t277 = std::fma(q_M, t117, t276);
-    const Real t278 = std::fma(t76, t118, t277);
-    const Real t279 = std::fma(t76, t114, t278);
-    const Real t280 = std::fma(q_M, t115, t279);
-    const Real t281 = std::fma(t76, t120, t280);
-    const Real t282 = std::fma(q_M, t121, t281);
-    const Real t283 = std::fma(q_M, t89, t282);
-    const Real t284 = std::fma(t76, t90, t283);
-    const Real t285 = std::fma(q_M, t98, t284);
-    const Real t286 = std::fma(t76, t99, t285);
-    const Real t287 = std::fma(t76, t92, t286);
-    const Real t288 = std::fma(q_M, t93, t287);
-    const Real t289 = std::fma(t76, t101, t288);
-    const Real t290 = std::fma(q_M, t102, t289);
-    const Real t291 = (t290 > Real(0) ? Real(1) : t222);
-    const Real t292 = std::fabs(t244);
-    const Real t293 = t221 * t292;
-    const Real t294 = std::fma(std::fma(R_m, b, -t223), w_m, std::fma(t223, w_m, -t245));
-    const Real t295 = std::fma(t215, t221, -t247);
-    const Real t296 = (t290 > Real(0) ? t251 : Real(1));
-    const Real t297 = (t290 > Real(0) ? Real(1) : t251);
-    const Real t298 = std::fma(t245, t221, -t252);
-    const Real t299 = std::fabs(t258);
-    const Real t300 = t221 * t299;
-    const Real t301 = std::fabs(t259);
-    const Real t302 = t71 * t301;
-    const Real t303 = t205 * t301;
-    const Real t304 = t228 - (t257 - t261) + (t225 - t261);
-    const Real t305 = (t290 > Real(0) ? t293 : Real(1));
-    const Real t306 = t225 - (t255 - t256) + (t247 - t256);
-    const Real t307 = t86 - t87 + t104 - t105 - t95 + t96 - t107 + t108 + t303 + t152 - t153 + t158 - t159 - t155 + t156 - t161 + t162 + t302 + t177 - t178 + t183 - t184 - t180 + t181 - t186 + t187 + t139 - t140 + t145 - t146 - t142 + t143 - t148 + t149;
-    const Real t308 = (t307 > Real(0) ? Real(1) : t222);
-    const Real t309 = (t307 > Real(0) ? t251 : Real(1));
-    const Real t310 = (t307 > Real(0) ? Real(1) : t251);
-    const Real t311 = (t307 > Real(0) ? t300 : Real(1));
-    if (!(std::fabs(t221) >= detail::smallest_divisor<Real>) || !(std::fabs(t221) <= std::numeric_limits<Real>::max()) || !(std::fabs(t251) >= detail::smallest_divisor<Real>) || !(std::fabs(t251) <= std::numeric_limits<Real>::max()) || !(std::fabs(t296) >= detail::smallest_divisor<Real>) || !(std::fabs(t296) <= std::numeric_limits<Real>::max()) || !(std::fabs(t297) >= detail::smallest_divisor<Real>) || !(std::fabs(t297) <= std::numeric_limits<Real>::max()) || !(std::fabs(t309) >= detail::smallest_divisor<Real>) || !(std::fabs(t309) <= std::numeric_limits<Real>::max()) || !(std::fabs(t310) >= detail::smallest_divisor<Real>) || !(std::fabs(t310) <= std::numeric_limits<Real>::max()) || !(std::fabs(t305) >= detail::smallest_divisor<Real>) || !(std::fabs(t305) <= std::numeric_limits<Real>::max()) || !(std::fabs(t311) >= detail::smallest_divisor<Real>) || !(std::fabs(t311) <= std::numeric_limits<Real>::max()) || !(std::fabs(t291) >= detail::smallest_divisor<Real>) || !(std::fabs(t291) <= std::numeric_limits<Real>::max()) || !(std::fabs(t308) >= detail::smallest_divisor<Real>) || !(std::fabs(t308) <= std::numeric_limits<Real>::max()) || !(std::fabs(t217) >= detail::smallest_divisor<Real>) || !(std::fabs(t217) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
+    const Real t103 = m * mu;
+    const Real t104 = t103 * t76;
+    const Real t105 = q_M * mu;
+    const Real t106 = t105 * v_Mx;
+    const Real t107 = t106 * C_Mx;
+    const Real t108 = t106 * C_mx;
+    const Real t109 = t105 * v_mx;
+    const Real t110 = t109 * C_Mx;
+    const Real t111 = t109 * C_mx;
+    const Real t112 = t105 * v_My;
+    const Real t113 = t112 * C_My;
+    const Real t114 = t112 * C_my;
+    const Real t115 = t105 * v_my;
+    const Real t116 = t115 * C_My;
+    const Real t117 = t115 * C_my;
+    const Real t118 = t80 * mu;
+    const Real t119 = t118 * v_Mx;
+    const Real t120 = t119 * C_Mx;
+    const Real t121 = t119 * C_mx;
+    const Real t122 = t118 * v_mx;
+    const Real t123 = t122 * C_Mx;
+    const Real t124 = t122 * C_mx;
+    const Real t125 = t118 * v_My;
+    const Real t126 = t125 * C_My;
+    const Real t127 = t125 * C_my;
+    const Real t128 = t118 * v_my;
+    const Real t129 = t128 * C_My;
+    const Real t130 = t128 * C_my;
+    const Real t131 = t82 * mu;
+    const Real t132 = t131 * v_Mx;
+    const Real t133 = t132 * C_Mx;
+    const Real t134 = t132 * C_mx;
+    const Real t135 = t131 * v_mx;
+    const Real t136 = t135 * C_Mx;
+    const Real t137 = t135 * C_mx;
+    const Real t138 = t131 * v_My;
+    const Real t139 = t138 * C_My;
+    const Real t140 = t138 * C_my;
+    const Real t141 = t131 * v_my;
+    const Real t142 = t141 * C_My;
+    const Real t143 = t141 * C_my;
+    const Real t144 = std::fma(std::fma(t87, eps, std::fma(t80, eps, -t81)), mu, std::fma(t81, mu, -t90));
+    const Real t145 = std::fma(t144, v_Mx, std::fma(t90, v_Mx, -t91));
+    const Real t146 = t92 - t93;
+    const Real t147 = t146 - t92;
+    const Real t148 = std::fma(t144, v_mx, std::fma(t90, v_mx, -t94));
+    const Real t149 = std::fma(t144, v_My, std::fma(t90, v_My, -t97));
+    const Real t150 = std::fma(t144, v_my, std::fma(t90, v_my, -t100));
+    const Real t151 = std::fma(q_M, mu, -t105);
+    const Real t152 = std::fma(t151, v_Mx, std::fma(t105, v_Mx, -t106));
+    const Real t153 = std::fma(t151, v_mx, std::fma(t105, v_mx, -t109));
+    const Real t154 = std::fma(t151, v_My, std::fma(t105, v_My, -t112));
+    const Real t155 = std::fma(t151, v_my, std::fma(t105, v_my, -t115));
+    const Real t156 = std::fma(t87, mu, std::fma(t80, mu, -t118));
+    const Real t157 = std::fma(t156, v_Mx, std::fma(t118, v_Mx, -t119));
+    const Real t158 = std::fma(t156, v_mx, std::fma(t118, v_mx, -t122));
+    const Real t159 = std::fma(t156, v_My, std::fma(t118, v_My, -t125));
+    const Real t160 = std::fma(t156, v_my, std::fma(t118, v_my, -t128));
+    const Real t161 = std::fma(std::fma(q_M, eps, -t82), mu, std::fma(t82, mu, -t131));
+    const Real t162 = std::fma(t161, v_Mx, std::fma(t131, v_Mx, -t132));
+    const Real t163 = std::fma(t161, v_mx, std::fma(t131, v_mx, -t135));
+    const Real t164 = std::fma(t161, v_My, std::fma(t131, v_My, -t138));
+    const Real t165 = std::fma(t161, v_my, std::fma(t131, v_my, -t141));
+    const Real t166 = t92 - (t146 - t147) - (t93 + t147) + (std::fma(t145, C_Mx, std::fma(t91, C_Mx, -t92)) - std::fma(t145, C_mx, std::fma(t91, C_mx, -t93)));
+    const Real t167 = t146 + t166;
+    const Real t168 = t167 + t98;
+    const Real t169 = t168 - t167;
+    const Real t170 = t167 - (t168 - t169) + (t98 - t169) + (t166 - (t167 - t146) + std::fma(t149, C_My, std::fma(t97, C_My, -t98)));
+    const Real t171 = t168 + t170;
+    const Real t172 = t171 - t99;
+    const Real t173 = t172 - t171;
+    const Real t174 = t171 - (t172 - t173) - (t99 + t173) + (t170 - (t171 - t168) - std::fma(t149, C_my, std::fma(t97, C_my, -t99)));
+    const Real t175 = t172 + t174;
+    const Real t176 = t175 - t95;
+    const Real t177 = t176 - t175;
+    const Real t178 = t175 - (t176 - t177) - (t95 + t177) + (t174 - (t175 - t172) - std::fma(t148, C_Mx, std::fma(t94, C_Mx, -t95)));
+    const Real t179 = t176 + t178;
+    const Real t180 = t179 + t96;
+    const Real t181 = t180 - t179;
+    const Real t182 = t179 - (t180 - t181) + (t96 - t181) + (t178 - (t179 - t176) + std::fma(t148, C_mx, std::fma(t94, C_mx, -t96)));
+    const Real t183 = t180 + t182;
+    const Real t184 = t183 - t101;
+    const Real t185 = t184 - t183;
+    const Real t186 = t183 - (t184 - t185) - (t101 + t185) + (t182 - (t183 - t180) - std::fma(t150, C_My, std::fma(t100, C_My, -t101)));
+    const Real t187 = t184 + t186;
+    const Real t188 = t187 + t102;
+    const Real t189 = t188 - t187;
+    const Real t190 = t187 - (t188 - t189) + (t102 - t189) + (t186 - (t187 - t184) + std::fma(t150, C_my, std::fma(t100, C_my, -t102)));
+    const Real t191 = t188 + t190;
+    const Real t192 = t80 * b;
+    const Real t193 = b * v_Mx;
+    const Real t194 = t193 * t12;
+    const Real t195 = b * v_mx;
+    const Real t196 = t195 * t12;
+    const Real t197 = b * v_My;
+    const Real t198 = t197 * t0;
+    const Real t199 = b * v_my;
+    const Real t200 = t199 * t0;
+    const Real t201 = R_M * w_M;
+    const Real t202 = R_M * b;
+    const Real t203 = t202 * w_M;
+    const Real t204 = std::fma(R_M, w_M, -t201);
+    const Real t205 = R_m * w_m;
+    const Real t206 = m * R_m;
+    const Real t207 = t206 * q_m;
+    const Real t208 = std::sqrt(t21);
+    const Real t209 = std::sqrt(t28);
+    const Real t210 = std::sqrt(t39);
+    const Real t211 = t89 * t209;
+    const Real t212 = R_m * b;
+    const Real t213 = t201 * t210;
+    const Real t214 = t201 * t209;
+    const Real t215 = t201 * t208;
+    const Real t216 = t203 * t209;
+    const Real t217 = t212 * w_m;
+    const Real t218 = std::fma(R_m, w_m, -t205);
+    const Real t219 = t205 * t210;
+    const Real t220 = t205 * t209;
+    const Real t221 = t205 * t208;
+    const Real t222 = std::fma(-t209, t209, t28) + (t27 - (t28 - t21));
+    const Real t223 = t209 + t209;
+    const Real t224 = t217 * t209;
+    const Real t225 = t213 + t219;
+    const Real t226 = t225 - t213;
+    const Real t227 = std::fma(t201, t209, -t214);
+    const Real t228 = t214 + t220;
+    const Real t229 = t228 - t214;
+    const Real t230 = t216 + t214;
+    const Real t231 = t215 + t221 + t46 - t56 - t47 + t57;
+    const Real t232 = t230 - t216;
+    const Real t233 = std::fma(t205, t209, -t220);
+    const Real t234 = std::fabs(t231);
+    const Real t235 = t208 * t234;
+    const Real t236 = t213 - (t225 - t226) + (t219 - t226) + (std::fma(t204, t210, std::fma(t201, t210, -t213)) + std::fma(t218, t210, std::fma(t205, t210, -t219)));
+    const Real t237 = t225 + t236;
+    const Real t238 = t237 + t42;
+    const Real t239 = t238 - t237;
+    const Real t240 = t237 - (t238 - t239) + (t42 - t239) + (t236 - (t237 - t225) + std::fma(v_Mx, C_My, -t42));
+    const Real t241 = t238 + t240;
+    const Real t242 = t241 - t43;
+    const Real t243 = t242 - t241;
+    const Real t244 = t241 - (t242 - t243) - (t43 + t243) + (t240 - (t241 - t238) - std::fma(v_Mx, C_my, -t43));
+    const Real t245 = t242 + t244;
+    const Real t246 = t245 - t52;
+    const Real t247 = t246 - t245;
+    const Real t248 = t245 - (t246 - t247) - (t52 + t247) + (t244 - (t245 - t242) - std::fma(v_My, C_Mx, -t52));
+    const Real t249 = t246 + t248;
+    const Real t250 = t249 + t53;
+    const Real t251 = t250 - t249;
+    const Real t252 = t249 - (t250 - t251) + (t53 - t251) + (t248 - (t249 - t246) + std::fma(v_My, C_mx, -t53));
+    const Real t253 = t250 + t252;
+    const Real t254 = t253 - t44;
+    const Real t255 = t254 - t253;
+    const Real t256 = t253 - (t254 - t255) - (t44 + t255) + (t252 - (t253 - t250) - std::fma(v_mx, C_My, -t44));
+    const Real t257 = t254 + t256;
+    const Real t258 = t257 + t45;
+    const Real t259 = t258 - t257;
+    const Real t260 = t257 - (t258 - t259) + (t45 - t259) + (t256 - (t257 - t254) + std::fma(v_mx, C_my, -t45));
+    const Real t261 = t258 + t260;
+    const Real t262 = t261 + t54;
+    const Real t263 = t262 - t261;
+    const Real t264 = t261 - (t262 - t263) + (t54 - t263) + (t260 - (t261 - t258) + std::fma(v_my, C_Mx, -t54));
+    const Real t265 = t262 + t264;
+    const Real t266 = t265 - t55;
+    const Real t267 = t266 - t265;
+    const Real t268 = t265 - (t266 - t267) - (t55 + t267) + (t264 - (t265 - t262) - std::fma(v_my, C_mx, -t55));
+    const Real t269 = t266 + t268;
+    const Real t270 = t268 - (t269 - t266);
+    const Real t271 = (t269 > Real(0) ? t269 : -t269);
+    const Real t272 = t80 * t271;
+    const Real t273 = t192 * t271;
+    const Real t274 = t191 + t273;
+    const Real t275 = t274 - t191;
+    const Real t276 = (t269 > Real(0) ? t270 : -t270);
+    const Real t277 = t191 - (t274 - t275) + (t273 - t275) + (t190 - (t191 - t188) + std::fma(std::fma(t87, b, std::fma(t80, b, -t192)), t271, std::fma(t192, t276, std::fma(t192, t271, -t273))));
+    const Real t278 = t274 + t277;
+    const Real t279 = t278 + t120;
+    const Real t280 = t279 - t278;
+    const Real t281 = t278 - (t279 - t280) + (t120 - t280) + (t277 - (t278 - t274) + std::fma(t157, C_Mx, std::fma(t119, C_Mx, -t120)));
+    const Real t282 = t279 + t281;
+    const Real t283 = t282 - t121;
+    const Real t284 = t283 - t282;
+    const Real t285 = t282 - (t283 - t284) - (t121 + t284) + (t281 - (t282 - t279) - std::fma(t157, C_mx, std::fma(t119, C_mx, -t121)));
+    const Real t286 = t283 + t285;
+    const Real t287 = t286 + t126;
+    const Real t288 = t287 - t286;
+    const Real t289 = t286 - (t287 - t288) + (t126 - t288) + (t285 - (t286 - t283) + std::fma(t159, C_My, std::fma(t125, C_My, -t126)));
+    const Real t290 = t287 + t289;
+    const Real t291 = t290 - t127;
+    const Real t292 = t291 - t290;
+    const Real t293 = t290 - (t291 - t292) - (t127 + t292) + (t289 - (t290 - t287) - std::fma(t159, C_my, std::fma(t125, C_my, -t127)));
+    const Real t294 = t291 + t293;
+    const Real t295 = t294 - t123;
+    const Real t296 = t295 - t294;
+    const Real t297 = t294 - (t295 - t296) - (t123 + t296) + (t293 - (t294 - t291) - std::fma(t158, C_Mx, std::fma(t122, C_Mx, -t123)));
+    const Real t298 = t295 + t297;
+    const Real t299 = t298 + t124;
+    const Real t300 = t299 - t298;
+    const Real t301 = t298 - (t299 - t300) + (t124 - t300) + (t297 - (t298 - t295) + std::fma(t158, C_mx, std::fma(t122, C_mx, -t124)));
+    const Real t302 = t299 + t301;
+    const Real t303 = t302 - t129;
+    const Real t304 = t303 - t302;
+    const Real t305 = t302 - (t303 - t304) - (t129 + t304) + (t301 - (t302 - t299) - std::fma(t160, C_My, std::fma(t128, C_My, -t129)));
+    const Real t306 = t303 + t305;
+    const Real t307 = t306 + t130;
+    const Real t308 = t307 - t306;
+    const Real t309 = t306 - (t307 - t308) + (t130 - t308) + (t305 - (t306 - t303) + std::fma(t160, C_my, std::fma(t128, C_my, -t130)));
+    const Real t310 = t307 + t309;
+    const Real t311 = t310 + t272;
+    const Real t312 = t311 - t310;
+    const Real t313 = t310 - (t311 - t312) + (t272 - t312) + (t309 - (t310 - t307) + std::fma(t87, t271, std::fma(t80, t276, std::fma(t80, t271, -t272))));
+    const Real t314 = t311 + t313;
+    const Real t315 = t314 + t133;
+    const Real t316 = t315 - t314;
+    const Real t317 = t314 - (t315 - t316) + (t133 - t316) + (t313 - (t314 - t311) + std::fma(t162, C_Mx, std::fma(t132, C_Mx, -t133)));
+    const Real t318 = t315 + t317;
+    const Real t319 = t318 - t134;
+    const Real t320 = t319 - t318;
+    const Real t321 = t318 - (t319 - t320) - (t134 + t320) + (t317 - (t318 - t315) - std::fma(t162, C_mx, std::fma(t132, C_mx, -t134)));
+    const Real t322 = t319 + t321;
+    const Real t323 = t322 + t139;
+    const Real t324 = t323 - t322;
+    const Real t325 = t322 - (t323 - t324) + (t139 - t324) + (t321 - (t322 - t319) + std::fma(t164, C_My, std::fma(t138, C_My, -t139)));
+    const Real t326 = t323 + t325;
+    const Real t327 = t326 - t140;
+    const Real t328 = t327 - t326;
+    const Real t329 = t326 - (t327 - t328) - (t140 + t328) + (t325 - (t326 - t323) - std::fma(t164, C_my, std::fma(t138, C_my, -t140)));
+    const Real t330 = t327 + t329;
+    const Real t331 = t330 - t136;
+    const Real t332 = t331 - t330;
+    const Real t333 = t330 - (t331 - t332) - (t136 + t332) + (t329 - (t330 - t327) - std::fma(t163, C_Mx, std::fma(t135, C_Mx, -t136)));
+    const Real t334 = t331 + t333;
+    const Real t335 = t334 + t137;
+    const Real t336 = t335 - t334;
+    const Real t337 = t334 - (t335 - t336) + (t137 - t336) + (t333 - (t334 - t331) + std::fma(t163, C_mx, std::fma(t135, C_mx, -t137)));
+    const Real t338 = t335 + t337;
+    const Real t339 = t338 - t142;
+    const Real t340 = t339 - t338;
+    const Real t341 = t338 - (t339 - t340) - (t142 + t340) + (t337 - (t338 - t335) - std::fma(t165, C_My, std::fma(t141, C_My, -t142)));
+    const Real t342 = t339 + t341;
+    const Real t343 = t342 + t143;
+    const Real t344 = t343 - t342;
+    const Real t345 = t342 - (t343 - t344) + (t143 - t344) + (t341 - (t342 - t339) + std::fma(t165, C_my, std::fma(t141, C_my, -t143)));
+    const Real t346 = t343 + t345;
+    const Real t347 = t346 + t107;
+    const Real t348 = t347 - t346;
+    const Real t349 = t346 - (t347 - t348) + (t107 - t348) + (t345 - (t346 - t343) + std::fma(t152, C_Mx, std::fma(t106, C_Mx, -t107)));
+    const Real t350 = t347 + t349;
+    const Real t351 = t350 - t108;
+    const Real t352 = t351 - t350;
+    const Real t353 = t350 - (t351 - t352) - (t108 + t352) + (t349 - (t350 - t347) - std::fma(t152, C_mx, std::fma(t106, C_mx, -t108)));
+    const Real t354 = t351 + t353;
+    const Real t355 = t354 + t113;
+    const Real t356 = t355 - t354;
+    const Real t357 = t354 - (t355 - t356) + (t113 - t356) + (t353 - (t354 - t351) + std::fma(t154, C_My, std::fma(t112, C_My, -t113)));
+    const Real t358 = t355 + t357;
+    const Real t359 = t358 - t114;
+    const Real t360 = t359 - t358;
+    const Real t361 = t358 - (t359 - t360) - (t114 + t360) + (t357 - (t358 - t355) - std::fma(t154, C_my, std::fma(t112, C_my, -t114)));
+    const Real t362 = t359 + t361;
+    const Real t363 = t362 - t110;
+    const Real t364 = t363 - t362;
+    const Real t365 = t362 - (t363 - t364) - (t110 + t364) + (t361 - (t362 - t359) - std::fma(t153, C_Mx, std::fma(t109, C_Mx, -t110)));
+    const Real t366 = t363 + t365;
+    const Real t367 = t366 + t111;
+    const Real t368 = t367 - t366;
+    const Real t369 = t366 - (t367 - t368) + (t111 - t368) + (t365 - (t366 - t363) + std::fma(t153, C_mx, std::fma(t109, C_mx, -t111)));
+    const Real t370 = t367 + t369;
+    const Real t371 = t370 - t116;
+    const Real t372 = t371 - t370;
+    const Real t373 = t370 - (t371 - t372) - (t116 + t372) + (t369 - (t370 - t367) - std::fma(t155, C_My, std::fma(t115, C_My, -t116)));
+    const Real t374 = t371 + t373;
+    const Real t375 = t374 + t117;
+    const Real t376 = t375 - t374;
+    const Real t377 = t374 - (t375 - t376) + (t117 - t376) + (t373 - (t374 - t371) + std::fma(t155, C_my, std::fma(t115, C_my, -t117)));
+    const Real t378 = t375 + t377;
+    const Real t379 = t378 + (t377 - (t378 - t375));
+    const Real t380 = (t379 > Real(0) ? Real(1) : t211);
+    const Real t381 = (t379 > Real(0) ? t223 : Real(1));
+    const Real t382 = (t379 > Real(0) ? Real(1) : t223);
+    const Real t383 = (t379 > Real(0) ? t235 : Real(1));
+    if (!(std::fabs(t209) >= detail::smallest_divisor<Real>) || !(std::fabs(t209) <= std::numeric_limits<Real>::max()) || !(std::fabs(t223) >= detail::smallest_divisor<Real>) || !(std::fabs(t223) <= std::numeric_limits<Real>::max()) || !(std::fabs(t381) >= detail::smallest_divisor<Real>) || !(std::fabs(t381) <= std::numeric_limits<Real>::max()) || !(std::fabs(t382) >= detail::smallest_divisor<Real>) || !(std::fabs(t382) <= std::numeric_limits<Real>::max()) || !(std::fabs(t383) >= detail::smallest_divisor<Real>) || !(std::fabs(t383) <= std::numeric_limits<Real>::max()) || !(std::fabs(t380) >= detail::smallest_divisor<Real>) || !(std::fabs(t380) <= std::numeric_limits<Real>::max()) || !(std::fabs(t207) >= detail::smallest_divisor<Real>) || !(std::fabs(t207) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t312 = t26 / t221;
-    const Real t313 = t27 / t221;
-    const Real t314 = t46 / t221;
-    const Real t315 = t47 / t221;
-    const Real t316 = t250 / t251;
-    const Real t317 = t250 / t296;
-    const Real t318 = t250 / t297;
-    const Real t319 = t250 / t309;
-    const Real t320 = t250 / t310;
-    const Real t321 = -t312;
-    const Real t322 = t312 + t314;
-    const Real t323 = t322 - t312;
-    const Real t324 = -t313;
-    const Real t325 = -t314;
-    const Real t326 = -t315;
-    const Real t327 = t306 + (std::fma(t213, t221, std::fma(t210, t317, t254)) + std::fma(t246, t221, std::fma(t215, t317, t295)));
-    const Real t328 = t255 + t327;
-    const Real t329 = t328 + t32;
-    const Real t330 = t304 + (std::fma(t214, t221, std::fma(t212, t318, t260)) + std::fma(t213, t221, std::fma(t210, t318, t254)));
-    const Real t331 = t257 + t330;
-    const Real t332 = t331 + t252;
-    const Real t333 = t306 + (std::fma(t213, t221, std::fma(t210, t319, t254)) + std::fma(t246, t221, std::fma(t215, t319, t295)));
-    const Real t334 = t255 + t333;
-    const Real t335 = t334 + t32;
-    const Real t336 = t304 + (std::fma(t214, t221, std::fma(t212, t320, t260)) + std::fma(t213, t221, std::fma(t210, t320, t254)));
-    const Real t337 = t257 + t336;
-    const Real t338 = t337 + t252;
-    const Real t339 = t329 - t328;
-    const Real t340 = t332 - t331;
-    const Real t341 = t335 - t334;
-    const Real t342 = t338 - t337;
-    const Real t343 = t312 - (t322 - t323) + (t314 - t323) + (std::fma(t321, t316, std::fma(t321, t221, t26) + t36) / t221 + std::fma(t325, t316, std::fma(t325, t221, t46) + t54) / t221);
-    const Real t344 = t322 + t343;
-    const Real t345 = t344 - t313;
-    const Real t346 = t328 - (t329 - t339) + (t32 - t339) + (t327 - (t328 - t255) + t38);
-    const Real t347 = t329 + t346;
-    const Real t348 = t347 - t44;
-    const Real t349 = t331 - (t332 - t340) + (t252 - t340) + (t330 - (t331 - t257) + std::fma(t294, t221, std::fma(t245, t318, t298)));
-    const Real t350 = t332 + t349;
-    const Real t351 = t350 + t247;
-    const Real t352 = t334 - (t335 - t341) + (t32 - t341) + (t333 - (t334 - t255) + t38);
-    const Real t353 = t335 + t352;
-    const Real t354 = t353 - t44;
-    const Real t355 = t337 - (t338 - t342) + (t252 - t342) + (t336 - (t337 - t257) + std::fma(t294, t221, std::fma(t245, t320, t298)));
-    const Real t356 = t338 + t355;
-    const Real t357 = t356 + t247;
-    const Real t358 = t345 - t344;
-    const Real t359 = t348 - t347;
-    const Real t360 = t351 - t350;
-    const Real t361 = t354 - t353;
-    const Real t362 = t357 - t356;
-    const Real t363 = t344 - (t345 - t358) - (t313 + t358) + (t343 - (t344 - t322) - std::fma(t324, t316, std::fma(t324, t221, t27) + t37) / t221);
-    const Real t364 = t345 + t363;
-    const Real t365 = t364 - t315;
-    const Real t366 = t347 - (t348 - t359) - (t44 + t359) + (t346 - (t347 - t329) - t52);
-    const Real t367 = t348 + t366;
-    const Real t368 = t367 - t33;
-    const Real t369 = t350 - (t351 - t360) + (t247 - t360) + (t349 - (t350 - t332) + std::fma(t246, t221, std::fma(t215, t318, t295)));
-    const Real t370 = t351 + t369;
-    const Real t371 = t370 + t198;
-    const Real t372 = t353 - (t354 - t361) - (t44 + t361) + (t352 - (t353 - t335) - t52);
-    const Real t373 = t354 + t372;
-    const Real t374 = t373 - t33;
-    const Real t375 = t356 - (t357 - t362) + (t247 - t362) + (t355 - (t356 - t338) + std::fma(t246, t221, std::fma(t215, t320, t295)));
-    const Real t376 = t357 + t375;
-    const Real t377 = t376 + t198;
-    const Real t378 = t365 - t364;
-    const Real t379 = t368 - t367;
-    const Real t380 = t371 - t370;
-    const Real t381 = t374 - t373;
-    const Real t382 = t377 - t376;
-    const Real t383 = t364 - (t365 - t378) - (t315 + t378) + (t363 - (t364 - t345) - std::fma(t326, t316, std::fma(t326, t221, t47) + t55) / t221);
-    const Real t384 = t365 + t383;
-    const Real t385 = t70 * t384;
-    const Real t386 = t385 / t221;
-    const Real t387 = t367 - (t368 - t379) - (t33 + t379) + (t366 - (t367 - t348) - t39);
-    const Real t388 = t368 + t387;
-    const Real t389 = t388 + t45;
-    const Real t390 = t370 - (t371 - t380) + (t198 - t380) + (t369 - (t370 - t351) + t206);
-    const Real t391 = t371 + t390;
-    const Real t392 = t391 - t202;
-    const Real t393 = t373 - (t374 - t381) - (t33 + t381) + (t372 - (t373 - t354) - t39);
-    const Real t394 = t374 + t393;
-    const Real t395 = t394 + t45;
-    const Real t396 = t376 - (t377 - t382) + (t198 - t382) + (t375 - (t376 - t357) + t206);
-    const Real t397 = t377 + t396;
-    const Real t398 = t397 - t202;
-    const Real t399 = -t386;
-    const Real t400 = t399 * t1;
-    const Real t401 = t399 * t11;
-    const Real t402 = t389 - t388;
-    const Real t403 = t392 - t391;
-    const Real t404 = t395 - t394;
-    const Real t405 = t398 - t397;
-    const Real t406 = t388 - (t389 - t402) + (t45 - t402) + (t387 - (t388 - t368) + t53);
-    const Real t407 = t389 + t406;
-    const Real t408 = t123 * t407;
-    const Real t409 = t408 * t65;
-    const Real t410 = t409 / t305;
-    const Real t411 = t391 - (t392 - t403) - (t202 + t403) + (t390 - (t391 - t371) - t208);
-    const Real t412 = t392 + t411;
-    const Real t413 = t412 - t200;
-    const Real t414 = t394 - (t395 - t404) + (t45 - t404) + (t393 - (t394 - t374) + t53);
-    const Real t415 = t395 + t414;
-    const Real t416 = t123 * t415;
-    const Real t417 = t416 * t65;
-    const Real t418 = t417 / t311;
-    const Real t419 = t397 - (t398 - t405) - (t202 + t405) + (t396 - (t397 - t377) - t208);
-    const Real t420 = t398 + t419;
-    const Real t421 = t420 - t200;
-    const Real t422 = -(std::fma(t399, t316, std::fma(t399, t221, t385) + std::fma(std::fma(m, t69, std::fma(m, t67, -t70)), t384, std::fma(t70, t383 - (t384 - t365), std::fma(t70, t384, -t385)))) / t221);
-    const Real t423 = -t410;
-    const Real t424 = t413 - t412;
-    const Real t425 = -t418;
-    const Real t426 = t421 - t420;
-    const Real t427 = t412 - (t413 - t424) - (t200 + t424) + (t411 - (t412 - t392) - t207);
-    const Real t428 = t413 + t427;
-    const Real t429 = t428 + t204;
-    const Real t430 = t420 - (t421 - t426) - (t200 + t426) + (t419 - (t420 - t398) - t207);
-    const Real t431 = t421 + t430;
-    const Real t432 = t431 + t204;
-    const Real t433 = t429 - t428;
-    const Real t434 = t432 - t431;
-    const Real t435 = t428 - (t429 - t433) + (t204 - t433) + (t427 - (t428 - t413) + t209);
-    const Real t436 = t429 + t435;
-    const Real t437 = t436 + t32;
-    const Real t438 = t431 - (t432 - t434) + (t204 - t434) + (t430 - (t431 - t421) + t209);
-    const Real t439 = t432 + t438;
-    const Real t440 = t439 + t32;
-    const Real t441 = t437 - t436;
-    const Real t442 = t440 - t439;
-    const Real t443 = t436 - (t437 - t441) + (t32 - t441) + (t435 - (t436 - t429) + t38);
-    const Real t444 = t437 + t443;
-    const Real t445 = t444 - t44;
-    const Real t446 = t439 - (t440 - t442) + (t32 - t442) + (t438 - (t439 - t432) + t38);
-    const Real t447 = t440 + t446;
-    const Real t448 = t447 - t44;
-    const Real t449 = t445 - t444;
-    const Real t450 = t448 - t447;
-    const Real t451 = t444 - (t445 - t449) - (t44 + t449) + (t443 - (t444 - t437) - t52);
-    const Real t452 = t445 + t451;
-    const Real t453 = t452 - t33;
-    const Real t454 = t447 - (t448 - t450) - (t44 + t450) + (t446 - (t447 - t440) - t52);
-    const Real t455 = t448 + t454;
-    const Real t456 = t455 - t33;
-    const Real t457 = t453 - t452;
-    const Real t458 = t456 - t455;
-    const Real t459 = t452 - (t453 - t457) - (t33 + t457) + (t451 - (t452 - t445) - t39);
-    const Real t460 = t453 + t459;
-    const Real t461 = t460 + t45;
-    const Real t462 = t455 - (t456 - t458) - (t33 + t458) + (t454 - (t455 - t448) - t39);
-    const Real t463 = t456 + t462;
-    const Real t464 = t463 + t45;
-    const Real t465 = t461 - t460;
-    const Real t466 = t464 - t463;
-    const Real t467 = t460 - (t461 - t465) + (t45 - t465) + (t459 - (t460 - t453) + t53);
-    const Real t468 = t461 + t467;
-    const Real t469 = t77 * t468;
-    const Real t470 = t469 / t291;
-    const Real t471 = (t290 > Real(0) ? t423 : t470);
-    const Real t472 = t471 / t221;
-    const Real t473 = t472 * t11;
-    const Real t474 = t400 - t473;
-    const Real t475 = t474 - t400;
-    const Real t476 = t463 - (t464 - t466) + (t45 - t466) + (t462 - (t463 - t456) + t53);
-    const Real t477 = t464 + t476;
-    const Real t478 = t77 * t477;
-    const Real t479 = t478 / t308;
-    const Real t480 = (t307 > Real(0) ? t425 : t479);
-    const Real t481 = t480 / t221;
-    const Real t482 = t481 * t1;
-    const Real t483 = t481 * t221;
-    const Real t484 = t483 / t217;
-    const Real t485 = t401 + t482;
-    const Real t486 = t485 - t401;
-    const Real t487 = -t470;
-    const Real t488 = -t472;
-    const Real t489 = -t479;
-    const Real t490 = -t481;
-    const Real t491 = -t484;
-    const Real t492 = std::fma(t490, t316, std::fma(t490, t221, t480) + (t307 > Real(0) ? -(std::fma(t425, std::fma(t319, t299, std::fma(t221, t299, -t300)), std::fma(t425, t300, t417) + std::fma(std::fma(t195, t415, std::fma(t123, t414 - (t415 - t395), std::fma(t123, t415, -t416))), t65, std::fma(t416, t66, std::fma(t416, t65, -t417)))) / t311) : std::fma(t489, std::fma(t83, t221, std::fma(t82, t320, t253)), std::fma(t489, t222, t478) + std::fma(t80, t477, std::fma(t77, t476 - (t477 - t464), std::fma(t77, t477, -t478)))) / t308)) / t221;
-    const Real t493 = t400 - (t474 - t475) - (t473 + t475) + (std::fma(t422, t1, std::fma(t399, t10, std::fma(t399, t1, -t400))) - std::fma(std::fma(t488, t316, std::fma(t488, t221, t471) + (t290 > Real(0) ? -(std::fma(t423, std::fma(t317, t292, std::fma(t221, t292, -t293)), std::fma(t423, t293, t409) + std::fma(std::fma(t195, t407, std::fma(t123, t406 - (t407 - t389), std::fma(t123, t407, -t408))), t65, std::fma(t408, t66, std::fma(t408, t65, -t409)))) / t305) : std::fma(t487, std::fma(t83, t221, std::fma(t82, t318, t253)), std::fma(t487, t222, t469) + std::fma(t80, t468, std::fma(t77, t467 - (t468 - t461), std::fma(t77, t468, -t469)))) / t291)) / t221, t11, std::fma(t472, t23, std::fma(t472, t11, -t473))));
-    const Real t494 = t474 + t493;
-    const Real t495 = t494 / m;
-    const Real t496 = t401 - (t485 - t486) + (t482 - t486) + (std::fma(t422, t11, std::fma(t399, t23, std::fma(t399, t11, -t401))) + std::fma(t492, t1, std::fma(t481, t10, std::fma(t481, t1, -t482))));
-    const Real t497 = t485 + t496;
+    const Real t384 = t40 / t209;
+    const Real t385 = t41 / t209;
+    const Real t386 = t58 / t209;
+    const Real t387 = t59 / t209;
+    const Real t388 = t222 / t223;
+    const Real t389 = t222 / t381;
+    const Real t390 = t222 / t382;
+    const Real t391 = -t384;
+    const Real t392 = t384 + t386;
+    const Real t393 = t392 - t384;
+    const Real t394 = -t385;
+    const Real t395 = -t386;
+    const Real t396 = -t387;
+    const Real t397 = t214 - (t228 - t229) + (t220 - t229) + (std::fma(t204, t209, std::fma(t201, t389, t227)) + std::fma(t218, t209, std::fma(t205, t389, t233)));
+    const Real t398 = t228 + t397;
+    const Real t399 = t398 + t46;
+    const Real t400 = t216 - (t230 - t232) + (t214 - t232) + (std::fma(std::fma(std::fma(R_M, b, -t202), w_M, std::fma(t202, w_M, -t203)), t209, std::fma(t203, t390, std::fma(t203, t209, -t216))) + std::fma(t204, t209, std::fma(t201, t390, t227)));
+    const Real t401 = t230 + t400;
+    const Real t402 = t401 + t224;
+    const Real t403 = t399 - t398;
+    const Real t404 = t402 - t401;
+    const Real t405 = t384 - (t392 - t393) + (t386 - t393) + (std::fma(t391, t388, std::fma(t391, t209, t40) + t48) / t209 + std::fma(t395, t388, std::fma(t395, t209, t58) + t64) / t209);
+    const Real t406 = t392 + t405;
+    const Real t407 = t406 - t385;
+    const Real t408 = t398 - (t399 - t403) + (t46 - t403) + (t397 - (t398 - t228) + t50);
+    const Real t409 = t399 + t408;
+    const Real t410 = t409 - t56;
+    const Real t411 = t401 - (t402 - t404) + (t224 - t404) + (t400 - (t401 - t230) + std::fma(std::fma(std::fma(R_m, b, -t212), w_m, std::fma(t212, w_m, -t217)), t209, std::fma(t217, t390, std::fma(t217, t209, -t224))));
+    const Real t412 = t402 + t411;
+    const Real t413 = t412 + t220;
+    const Real t414 = t407 - t406;
+    const Real t415 = t410 - t409;
+    const Real t416 = t413 - t412;
+    const Real t417 = t406 - (t407 - t414) - (t385 + t414) + (t405 - (t406 - t392) - std::fma(t394, t388, std::fma(t394, t209, t41) + t49) / t209);
+    const Real t418 = t407 + t417;
+    const Real t419 = t418 - t387;
+    const Real t420 = t409 - (t410 - t415) - (t56 + t415) + (t408 - (t409 - t399) - t62);
+    const Real t421 = t410 + t420;
+    const Real t422 = t421 - t47;
+    const Real t423 = t412 - (t413 - t416) + (t220 - t416) + (t411 - (t412 - t402) + std::fma(t218, t209, std::fma(t205, t390, t233)));
+    const Real t424 = t413 + t423;
+    const Real t425 = t424 + t194;
+    const Real t426 = t419 - t418;
+    const Real t427 = t422 - t421;
+    const Real t428 = t425 - t424;
+    const Real t429 = t418 - (t419 - t426) - (t387 + t426) + (t417 - (t418 - t407) - std::fma(t396, t388, std::fma(t396, t209, t59) + t65) / t209);
+    const Real t430 = t419 + t429;
+    const Real t431 = t79 * t430;
+    const Real t432 = t431 / t209;
+    const Real t433 = t421 - (t422 - t427) - (t47 + t427) + (t420 - (t421 - t410) - t51);
+    const Real t434 = t422 + t433;
+    const Real t435 = t434 + t57;
+    const Real t436 = t424 - (t425 - t428) + (t194 - t428) + (t423 - (t424 - t413) + std::fma(std::fma(b, v_Mx, -t193), t12, std::fma(t193, t23, std::fma(t193, t12, -t194))));
+    const Real t437 = t425 + t436;
+    const Real t438 = t437 - t198;
+    const Real t439 = -t432;
+    const Real t440 = t439 * t0;
+    const Real t441 = t439 * t12;
+    const Real t442 = t435 - t434;
+    const Real t443 = t438 - t437;
+    const Real t444 = t434 - (t435 - t442) + (t57 - t442) + (t433 - (t434 - t422) + t63);
+    const Real t445 = t435 + t444;
+    const Real t446 = t104 * t445;
+    const Real t447 = t446 * t75;
+    const Real t448 = t447 / t383;
+    const Real t449 = t437 - (t438 - t443) - (t198 + t443) + (t436 - (t437 - t425) - std::fma(std::fma(b, v_My, -t197), t0, std::fma(t197, t7, std::fma(t197, t0, -t198))));
+    const Real t450 = t438 + t449;
+    const Real t451 = t450 - t196;
+    const Real t452 = -(std::fma(t439, t388, std::fma(t439, t209, t431) + std::fma(std::fma(m, t78, std::fma(m, t76, -t79)), t430, std::fma(t79, t429 - (t430 - t419), std::fma(t79, t430, -t431)))) / t209);
+    const Real t453 = t444 - (t445 - t435);
+    const Real t454 = (t445 > Real(0) ? t445 : -t445);
+    const Real t455 = t209 * t454;
+    const Real t456 = -t448;
+    const Real t457 = t451 - t450;
+    const Real t458 = t450 - (t451 - t457) - (t196 + t457) + (t449 - (t450 - t438) - std::fma(std::fma(b, v_mx, -t195), t12, std::fma(t195, t23, std::fma(t195, t12, -t196))));
+    const Real t459 = t451 + t458;
+    const Real t460 = t459 + t200;
+    const Real t461 = t460 - t459;
+    const Real t462 = t459 - (t460 - t461) + (t200 - t461) + (t458 - (t459 - t451) + std::fma(std::fma(b, v_my, -t199), t0, std::fma(t199, t7, std::fma(t199, t0, -t200))));
+    const Real t463 = t460 + t462;
+    const Real t464 = t463 + t46;
+    const Real t465 = t464 - t463;
+    const Real t466 = t463 - (t464 - t465) + (t46 - t465) + (t462 - (t463 - t460) + t50);
+    const Real t467 = t464 + t466;
+    const Real t468 = t467 - t56;
+    const Real t469 = t468 - t467;
+    const Real t470 = t467 - (t468 - t469) - (t56 + t469) + (t466 - (t467 - t464) - t62);
+    const Real t471 = t468 + t470;
+    const Real t472 = t471 - t47;
+    const Real t473 = t472 - t471;
+    const Real t474 = t471 - (t472 - t473) - (t47 + t473) + (t470 - (t471 - t468) - t51);
+    const Real t475 = t472 + t474;
+    const Real t476 = t475 + t57;
+    const Real t477 = t476 - t475;
+    const Real t478 = t475 - (t476 - t477) + (t57 - t477) + (t474 - (t475 - t472) + t63);
+    const Real t479 = t476 + t478;
+    const Real t480 = t84 * t479;
+    const Real t481 = t480 / t380;
+    const Real t482 = (t379 > Real(0) ? t456 : t481);
+    const Real t483 = t482 / t209;
+    const Real t484 = t483 * t0;
+    const Real t485 = t483 * t12;
+    const Real t486 = t483 * t209;
+    const Real t487 = t486 / t207;
+    const Real t488 = t440 - t485;
+    const Real t489 = t488 - t440;
+    const Real t490 = t441 + t484;
+    const Real t491 = t490 - t441;
+    const Real t492 = -t481;
+    const Real t493 = -t483;
+    const Real t494 = -t487;
+    const Real t495 = std::fma(t493, t388, std::fma(t493, t209, t482) + (t379 > Real(0) ? -(std::fma(t456, std::fma(t389, t454, std::fma(t209, (t445 > Real(0) ? t453 : -t453), std::fma(t209, t454, -t455))), std::fma(t456, t455, t447) + std::fma(std::fma(std::fma(std::fma(m, mu, -t103), t76, std::fma(t103, t78, std::fma(t103, t76, -t104))), t445, std::fma(t104, t453, std::fma(t104, t445, -t446))), t75, std::fma(t446, t74 - (t75 - t72), std::fma(t446, t75, -t447)))) / t383) : std::fma(t492, std::fma(t88 - (t89 - t85), t209, std::fma(t89, t390, std::fma(t89, t209, -t211))), std::fma(t492, t211, t480) + std::fma(std::fma(std::fma(m, q_M, -t83), q_m, std::fma(t83, q_m, -t84)), t479, std::fma(t84, t478 - (t479 - t476), std::fma(t84, t479, -t480)))) / t380)) / t209;
+    const Real t496 = t440 - (t488 - t489) - (t485 + t489) + (std::fma(t452, t0, std::fma(t439, t7, std::fma(t439, t0, -t440))) - std::fma(t495, t12, std::fma(t483, t23, std::fma(t483, t12, -t485))));
+    const Real t497 = t488 + t496;
     const Real t498 = t497 / m;
-    const Real t499 = -t495;
-    const Real t500 = -t498;
+    const Real t499 = t441 - (t490 - t491) + (t484 - t491) + (std::fma(t452, t12, std::fma(t439, t23, std::fma(t439, t12, -t441))) + std::fma(t495, t0, std::fma(t483, t7, std::fma(t483, t0, -t484))));
+    const Real t500 = t490 + t499;
+    const Real t501 = t500 / m;
+    const Real t502 = -t498;
+    const Real t503 = -t501;
     const Real result0 = v_Mx;
     const Real result1 = v_My;
-    const Real result2 = v_mx + (t499 + -((std::fma(t499, m, t494) + (t493 - (t494 - t474))) / m));
-    const Real result3 = v_my + (t500 + -((std::fma(t500, m, t497) + (t496 - (t497 - t485))) / m));
+    const Real result2 = v_mx + (t502 + -((std::fma(t502, m, t497) + (t496 - (t497 - t488))) / m));
+    const Real result3 = v_my + (t503 + -((std::fma(t503, m, t500) + (t499 - (t500 - t490))) / m));
     const Real result4 = w_M;
-    const Real result5 = w_m + (t491 + -(std::fma(t491, std::fma(std::fma(m, R_m, -t216), q_m, std::fma(t216, q_m, -t217)), std::fma(t491, t217, t483) + std::fma(t492, t221, std::fma(t481, t316, std::fma(t481, t221, -t483)))) / t217));
-    if (!detail::finite(t238) || !detail::finite(t244) || !detail::finite(t258) || !detail::finite(t259) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+    const Real result5 = w_m + (t494 + -(std::fma(t494, std::fma(std::fma(m, R_m, -t206), q_m, std::fma(t206, q_m, -t207)), std::fma(t494, t207, t486) + std::fma(t495, t209, std::fma(t483, t388, std::fma(t483, t209, -t486)))) / t207));
+    if (!detail::finite(t231) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && C_Mx != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t3 == Real(0) && t0 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t7) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t8) < std::numeric_limits<Real>::min() && t7 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t9) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
-        (std::fabs(t13) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t15) < std::numeric_limits<Real>::min() && C_My != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && (t16 != Real(0) || (t14 == Real(0) && t0 != Real(0) && t15 != Real(0)))) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && t18 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t11 != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t29) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t30) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t40) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_My != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_my != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_My != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && v_my != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && m != Real(0) && t67 != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && t71 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && q_M != Real(0) && eps != Real(0)) ||
-        (std::fabs(t75) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t77) < std::numeric_limits<Real>::min() && t75 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t72 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && mu != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && mu != Real(0) && v_mx != Real(0)) ||
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
+        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
+        (std::fabs(t40) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t47) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t52) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t79) < std::numeric_limits<Real>::min() && m != Real(0) && t76 != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && eps != Real(0)) ||
+        (std::fabs(t82) < std::numeric_limits<Real>::min() && q_M != Real(0) && eps != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t84) < std::numeric_limits<Real>::min() && t83 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t90) < std::numeric_limits<Real>::min() && t81 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_Mx != Real(0)) ||
         (std::fabs(t92) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_Mx != Real(0)) ||
         (std::fabs(t93) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_mx != Real(0)) ||
         (std::fabs(t95) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_Mx != Real(0)) ||
         (std::fabs(t96) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && mu != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_My != Real(0)) ||
         (std::fabs(t98) < std::numeric_limits<Real>::min() && t97 != Real(0) && C_My != Real(0)) ||
         (std::fabs(t99) < std::numeric_limits<Real>::min() && t97 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && mu != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_my != Real(0)) ||
         (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_My != Real(0)) ||
         (std::fabs(t102) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && eps != Real(0) && mu != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t110 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t110 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t113 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t113 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t116 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t116 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && t67 != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t134) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t135) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && q_M != Real(0) && mu != Real(0)) ||
-        (std::fabs(t138) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t139) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t141) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t142) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t143) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t144) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t145) < std::numeric_limits<Real>::min() && t144 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t146) < std::numeric_limits<Real>::min() && t144 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t147) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t148) < std::numeric_limits<Real>::min() && t147 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t149) < std::numeric_limits<Real>::min() && t147 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t150) < std::numeric_limits<Real>::min() && t71 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t151) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t152) < std::numeric_limits<Real>::min() && t151 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t153) < std::numeric_limits<Real>::min() && t151 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t154) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t155) < std::numeric_limits<Real>::min() && t154 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t156) < std::numeric_limits<Real>::min() && t154 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t157) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t158) < std::numeric_limits<Real>::min() && t157 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t159) < std::numeric_limits<Real>::min() && t157 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t160) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t161) < std::numeric_limits<Real>::min() && t160 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t162) < std::numeric_limits<Real>::min() && t160 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t163) < std::numeric_limits<Real>::min() && t73 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t164) < std::numeric_limits<Real>::min() && t163 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t165) < std::numeric_limits<Real>::min() && t164 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t166) < std::numeric_limits<Real>::min() && t163 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t167) < std::numeric_limits<Real>::min() && t166 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t168) < std::numeric_limits<Real>::min() && t166 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t169) < std::numeric_limits<Real>::min() && t163 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t170) < std::numeric_limits<Real>::min() && t169 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t171) < std::numeric_limits<Real>::min() && t169 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t172) < std::numeric_limits<Real>::min() && t163 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t173) < std::numeric_limits<Real>::min() && t172 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t174) < std::numeric_limits<Real>::min() && t172 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t175) < std::numeric_limits<Real>::min() && t74 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t176) < std::numeric_limits<Real>::min() && t175 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t177) < std::numeric_limits<Real>::min() && t176 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t178) < std::numeric_limits<Real>::min() && t176 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t179) < std::numeric_limits<Real>::min() && t175 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t180) < std::numeric_limits<Real>::min() && t179 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t181) < std::numeric_limits<Real>::min() && t179 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t175 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && t182 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && t182 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && t175 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t186) < std::numeric_limits<Real>::min() && t185 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t187) < std::numeric_limits<Real>::min() && t185 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t188) < std::numeric_limits<Real>::min() && (t188 != Real(0) || (t86 == Real(0) && t76 != Real(0) && t165 != Real(0)))) ||
-        (std::fabs(t189) < std::numeric_limits<Real>::min() && (t189 != Real(0) || (t188 == Real(0) && q_M != Real(0) && t170 != Real(0)))) ||
-        (std::fabs(t190) < std::numeric_limits<Real>::min() && (t190 != Real(0) || (t189 == Real(0) && t76 != Real(0) && t171 != Real(0)))) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && (t191 != Real(0) || (t190 == Real(0) && t76 != Real(0) && t167 != Real(0)))) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && (t192 != Real(0) || (t191 == Real(0) && q_M != Real(0) && t168 != Real(0)))) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && (t193 != Real(0) || (t192 == Real(0) && t76 != Real(0) && t173 != Real(0)))) ||
-        (std::fabs(t194) < std::numeric_limits<Real>::min() && (t194 != Real(0) || (t193 == Real(0) && q_M != Real(0) && t174 != Real(0)))) ||
-        (std::fabs(t196) < std::numeric_limits<Real>::min() && q_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t200) < std::numeric_limits<Real>::min() && t199 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t201) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && t201 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t203) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t204) < std::numeric_limits<Real>::min() && t203 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t205) < std::numeric_limits<Real>::min() && t71 != Real(0) && b != Real(0)) ||
-        (std::fabs(t210) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t212) < std::numeric_limits<Real>::min() && t211 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t215) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t216) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
-        (std::fabs(t217) < std::numeric_limits<Real>::min() && t216 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t222) < std::numeric_limits<Real>::min() && t82 != Real(0) && t221 != Real(0)) ||
-        (std::fabs(t223) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t224) < std::numeric_limits<Real>::min() && t210 != Real(0) && t219 != Real(0)) ||
-        (std::fabs(t225) < std::numeric_limits<Real>::min() && t210 != Real(0) && t221 != Real(0)) ||
-        (std::fabs(t226) < std::numeric_limits<Real>::min() && t210 != Real(0) && t218 != Real(0)) ||
-        (std::fabs(t227) < std::numeric_limits<Real>::min() && t210 != Real(0) && t220 != Real(0)) ||
-        (std::fabs(t228) < std::numeric_limits<Real>::min() && t212 != Real(0) && t221 != Real(0)) ||
-        (std::fabs(t229) < std::numeric_limits<Real>::min() && w_m != Real(0) && t219 != Real(0)) ||
-        (std::fabs(t230) < std::numeric_limits<Real>::min() && (t230 != Real(0) || (t224 == Real(0) && R_m != Real(0) && t229 != Real(0)))) ||
-        (std::fabs(t231) < std::numeric_limits<Real>::min() && (t231 != Real(0) || (t230 == Real(0) && v_Mx != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t232) < std::numeric_limits<Real>::min() && (t232 != Real(0) || (t231 == Real(0) && t34 != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t233) < std::numeric_limits<Real>::min() && (t233 != Real(0) || (t232 == Real(0) && t50 != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t234) < std::numeric_limits<Real>::min() && (t234 != Real(0) || (t233 == Real(0) && v_My != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t235) < std::numeric_limits<Real>::min() && (t235 != Real(0) || (t234 == Real(0) && t35 != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t236) < std::numeric_limits<Real>::min() && (t236 != Real(0) || (t235 == Real(0) && v_mx != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t237) < std::numeric_limits<Real>::min() && (t237 != Real(0) || (t236 == Real(0) && v_my != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t238) < std::numeric_limits<Real>::min() && (t238 != Real(0) || (t237 == Real(0) && t51 != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t239) < std::numeric_limits<Real>::min() && w_m != Real(0) && t218 != Real(0)) ||
-        (std::fabs(t240) < std::numeric_limits<Real>::min() && (t240 != Real(0) || (t226 == Real(0) && R_m != Real(0) && t239 != Real(0)))) ||
-        (std::fabs(t241) < std::numeric_limits<Real>::min() && (t241 != Real(0) || (t240 == Real(0) && v_Mx != Real(0) && t11 != Real(0)))) ||
-        (std::fabs(t242) < std::numeric_limits<Real>::min() && (t242 != Real(0) || (t241 == Real(0) && t50 != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t243) < std::numeric_limits<Real>::min() && (t243 != Real(0) || (t242 == Real(0) && t35 != Real(0) && t11 != Real(0)))) ||
-        (std::fabs(t244) < std::numeric_limits<Real>::min() && (t244 != Real(0) || (t243 == Real(0) && v_my != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t245) < std::numeric_limits<Real>::min() && t223 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t247) < std::numeric_limits<Real>::min() && t215 != Real(0) && t221 != Real(0)) ||
-        (std::fabs(t248) < std::numeric_limits<Real>::min() && t215 != Real(0) && t220 != Real(0)) ||
-        (std::fabs(t249) < std::numeric_limits<Real>::min() && t215 != Real(0) && t218 != Real(0)) ||
-        (std::fabs(t252) < std::numeric_limits<Real>::min() && t245 != Real(0) && t221 != Real(0)) ||
-        (std::fabs(t262) < std::numeric_limits<Real>::min() && t262 != Real(0)) ||
-        (std::fabs(t263) < std::numeric_limits<Real>::min() && q_m != Real(0) && t262 != Real(0)) ||
-        (std::fabs(t264) < std::numeric_limits<Real>::min() && t196 != Real(0) && t262 != Real(0)) ||
-        (std::fabs(t265) < std::numeric_limits<Real>::min() && (t265 != Real(0) || (t194 == Real(0) && q_M != Real(0) && t264 != Real(0)))) ||
-        (std::fabs(t266) < std::numeric_limits<Real>::min() && (t266 != Real(0) || (t265 == Real(0) && q_M != Real(0) && t126 != Real(0)))) ||
-        (std::fabs(t267) < std::numeric_limits<Real>::min() && (t267 != Real(0) || (t266 == Real(0) && t76 != Real(0) && t127 != Real(0)))) ||
-        (std::fabs(t268) < std::numeric_limits<Real>::min() && (t268 != Real(0) || (t267 == Real(0) && q_M != Real(0) && t132 != Real(0)))) ||
-        (std::fabs(t269) < std::numeric_limits<Real>::min() && (t269 != Real(0) || (t268 == Real(0) && t76 != Real(0) && t133 != Real(0)))) ||
-        (std::fabs(t270) < std::numeric_limits<Real>::min() && (t270 != Real(0) || (t269 == Real(0) && t76 != Real(0) && t129 != Real(0)))) ||
-        (std::fabs(t271) < std::numeric_limits<Real>::min() && (t271 != Real(0) || (t270 == Real(0) && q_M != Real(0) && t130 != Real(0)))) ||
-        (std::fabs(t272) < std::numeric_limits<Real>::min() && (t272 != Real(0) || (t271 == Real(0) && t76 != Real(0) && t135 != Real(0)))) ||
-        (std::fabs(t273) < std::numeric_limits<Real>::min() && (t273 != Real(0) || (t272 == Real(0) && q_M != Real(0) && t136 != Real(0)))) ||
-        (std::fabs(t274) < std::numeric_limits<Real>::min() && (t274 != Real(0) || (t273 == Real(0) && q_M != Real(0) && t263 != Real(0)))) ||
-        (std::fabs(t275) < std::numeric_limits<Real>::min() && (t275 != Real(0) || (t274 == Real(0) && q_M != Real(0) && t111 != Real(0)))) ||
-        (std::fabs(t276) < std::numeric_limits<Real>::min() && (t276 != Real(0) || (t275 == Real(0) && t76 != Real(0) && t112 != Real(0)))) ||
-        (std::fabs(t277) < std::numeric_limits<Real>::min() && (t277 != Real(0) || (t276 == Real(0) && q_M != Real(0) && t117 != Real(0)))) ||
-        (std::fabs(t278) < std::numeric_limits<Real>::min() && (t278 != Real(0) || (t277 == Real(0) && t76 != Real(0) && t118 != Real(0)))) ||
-        (std::fabs(t279) < std::numeric_limits<Real>::min() && (t279 != Real(0) || (t278 == Real(0) && t76 != Real(0) && t114 != Real(0)))) ||
-        (std::fabs(t280) < std::numeric_limits<Real>::min() && (t280 != Real(0) || (t279 == Real(0) && q_M != Real(0) && t115 != Real(0)))) ||
-        (std::fabs(t281) < std::numeric_limits<Real>::min() && (t281 != Real(0) || (t280 == Real(0) && t76 != Real(0) && t120 != Real(0)))) ||
-        (std::fabs(t282) < std::numeric_limits<Real>::min() && (t282 != Real(0) || (t281 == Real(0) && q_M != Real(0) && t121 != Real(0)))) ||
-        (std::fabs(t283) < std::numeric_limits<Real>::min() && (t283 != Real(0) || (t282 == Real(0) && q_M != Real(0) && t89 != Real(0)))) ||
-        (std::fabs(t284) < std::numeric_limits<Real>::min() && (t284 != Real(0) || (t283 == Real(0) && t76 != Real(0) && t90 != Real(0)))) ||
-        (std::fabs(t285) < std::numeric_limits<Real>::min() && (t285 != Real(0) || (t284 == Real(0) && q_M != Real(0) && t98 != Real(0)))) ||
-        (std::fabs(t286) < std::numeric_limits<Real>::min() && (t286 != Real(0) || (t285 == Real(0) && t76 != Real(0) && t99 != Real(0)))) ||
-        (std::fabs(t287) < std::numeric_limits<Real>::min() && (t287 != Real(0) || (t286 == Real(0) && t76 != Real(0) && t92 != Real(0)))) ||
-        (std::fabs(t288) < std::numeric_limits<Real>::min() && (t288 != Real(0) || (t287 == Real(0) && q_M != Real(0) && t93 != Real(0)))) ||
-        (std::fabs(t289) < std::numeric_limits<Real>::min() && (t289 != Real(0) || (t288 == Real(0) && t76 != Real(0) && t101 != Real(0)))) ||
-        (std::fabs(t290) < std::numeric_limits<Real>::min() && (t290 != Real(0) || (t289 == Real(0) && q_M != Real(0) && t102 != Real(0)))) ||
-        (std::fabs(t292) < std::numeric_limits<Real>::min() && t292 != Real(0)) ||
-        (std::fabs(t293) < std::numeric_limits<Real>::min() && t221 != Real(0) && t292 != Real(0)) ||
-        (std::fabs(t299) < std::numeric_limits<Real>::min() && t299 != Real(0)) ||
-        (std::fabs(t300) < std::numeric_limits<Real>::min() && t221 != Real(0) && t299 != Real(0)) ||
-        (std::fabs(t301) < std::numeric_limits<Real>::min() && t301 != Real(0)) ||
-        (std::fabs(t302) < std::numeric_limits<Real>::min() && t71 != Real(0) && t301 != Real(0)) ||
-        (std::fabs(t303) < std::numeric_limits<Real>::min() && t205 != Real(0) && t301 != Real(0)) ||
-        (std::fabs(t312) < std::numeric_limits<Real>::min() && t26 != Real(0)) ||
-        (std::fabs(t313) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
-        (std::fabs(t314) < std::numeric_limits<Real>::min() && t46 != Real(0)) ||
-        (std::fabs(t315) < std::numeric_limits<Real>::min() && t47 != Real(0)) ||
-        (std::fabs(t385) < std::numeric_limits<Real>::min() && t70 != Real(0) && t384 != Real(0)) ||
-        (std::fabs(t386) < std::numeric_limits<Real>::min() && t385 != Real(0)) ||
-        (std::fabs(t400) < std::numeric_limits<Real>::min() && t399 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t401) < std::numeric_limits<Real>::min() && t399 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t408) < std::numeric_limits<Real>::min() && t123 != Real(0) && t407 != Real(0)) ||
-        (std::fabs(t409) < std::numeric_limits<Real>::min() && t408 != Real(0) && t65 != Real(0)) ||
-        (std::fabs(t410) < std::numeric_limits<Real>::min() && t409 != Real(0)) ||
-        (std::fabs(t416) < std::numeric_limits<Real>::min() && t123 != Real(0) && t415 != Real(0)) ||
-        (std::fabs(t417) < std::numeric_limits<Real>::min() && t416 != Real(0) && t65 != Real(0)) ||
-        (std::fabs(t418) < std::numeric_limits<Real>::min() && t417 != Real(0)) ||
-        (std::fabs(t469) < std::numeric_limits<Real>::min() && t77 != Real(0) && t468 != Real(0)) ||
-        (std::fabs(t470) < std::numeric_limits<Real>::min() && t469 != Real(0)) ||
-        (std::fabs(t472) < std::numeric_limits<Real>::min() && t471 != Real(0)) ||
-        (std::fabs(t473) < std::numeric_limits<Real>::min() && t472 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t478) < std::numeric_limits<Real>::min() && t77 != Real(0) && t477 != Real(0)) ||
-        (std::fabs(t479) < std::numeric_limits<Real>::min() && t478 != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && t76 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && q_M != Real(0) && mu != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t107) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t80 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && t82 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t133) < std::numeric_limits<Real>::min() && t132 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t132 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && t135 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && t135 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t138) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t139) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t140) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t142) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t143) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t192) < std::numeric_limits<Real>::min() && t80 != Real(0) && b != Real(0)) ||
+        (std::fabs(t193) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t194) < std::numeric_limits<Real>::min() && t193 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t195) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t196) < std::numeric_limits<Real>::min() && t195 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t199) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t200) < std::numeric_limits<Real>::min() && t199 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && t202 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t205) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t206) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t207) < std::numeric_limits<Real>::min() && t206 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t211) < std::numeric_limits<Real>::min() && t89 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t212) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t201 != Real(0) && t210 != Real(0)) ||
+        (std::fabs(t214) < std::numeric_limits<Real>::min() && t201 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t215) < std::numeric_limits<Real>::min() && t201 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t216) < std::numeric_limits<Real>::min() && t203 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t217) < std::numeric_limits<Real>::min() && t212 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t219) < std::numeric_limits<Real>::min() && t205 != Real(0) && t210 != Real(0)) ||
+        (std::fabs(t220) < std::numeric_limits<Real>::min() && t205 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t221) < std::numeric_limits<Real>::min() && t205 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && t217 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t234) < std::numeric_limits<Real>::min() && t234 != Real(0)) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && t208 != Real(0) && t234 != Real(0)) ||
+        (std::fabs(t272) < std::numeric_limits<Real>::min() && t80 != Real(0) && t271 != Real(0)) ||
+        (std::fabs(t273) < std::numeric_limits<Real>::min() && t192 != Real(0) && t271 != Real(0)) ||
+        (std::fabs(t384) < std::numeric_limits<Real>::min() && t40 != Real(0)) ||
+        (std::fabs(t385) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
+        (std::fabs(t386) < std::numeric_limits<Real>::min() && t58 != Real(0)) ||
+        (std::fabs(t387) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
+        (std::fabs(t431) < std::numeric_limits<Real>::min() && t79 != Real(0) && t430 != Real(0)) ||
+        (std::fabs(t432) < std::numeric_limits<Real>::min() && t431 != Real(0)) ||
+        (std::fabs(t440) < std::numeric_limits<Real>::min() && t439 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t441) < std::numeric_limits<Real>::min() && t439 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t446) < std::numeric_limits<Real>::min() && t104 != Real(0) && t445 != Real(0)) ||
+        (std::fabs(t447) < std::numeric_limits<Real>::min() && t446 != Real(0) && t75 != Real(0)) ||
+        (std::fabs(t448) < std::numeric_limits<Real>::min() && t447 != Real(0)) ||
+        (std::fabs(t455) < std::numeric_limits<Real>::min() && t209 != Real(0) && t454 != Real(0)) ||
+        (std::fabs(t480) < std::numeric_limits<Real>::min() && t84 != Real(0) && t479 != Real(0)) ||
         (std::fabs(t481) < std::numeric_limits<Real>::min() && t480 != Real(0)) ||
-        (std::fabs(t482) < std::numeric_limits<Real>::min() && t481 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t483) < std::numeric_limits<Real>::min() && t481 != Real(0) && t221 != Real(0)) ||
-        (std::fabs(t484) < std::numeric_limits<Real>::min() && t483 != Real(0)) ||
-        (std::fabs(t495) < std::numeric_limits<Real>::min() && t494 != Real(0)) ||
-        (std::fabs(t498) < std::numeric_limits<Real>::min() && t497 != Real(0))) {
+        (std::fabs(t483) < std::numeric_limits<Real>::min() && t482 != Real(0)) ||
+        (std::fabs(t484) < std::numeric_limits<Real>::min() && t483 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t485) < std::numeric_limits<Real>::min() && t483 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t486) < std::numeric_limits<Real>::min() && t483 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t487) < std::numeric_limits<Real>::min() && t486 != Real(0)) ||
+        (std::fabs(t498) < std::numeric_limits<Real>::min() && t497 != Real(0)) ||
+        (std::fabs(t501) < std::numeric_limits<Real>::min() && t500 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -849,11 +735,11 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
 
 // collide_rough with m = +infinity, a fixed sphere: every output the limit of collide_rough's as m grows
 // without bound (derived by the engine, each form proven equal to the limit).
-// v_M[0] is computed in the form "limit of v_Mx + dv_Mx, compensated let": at most 1.21 ulps in double on 4200 samples.
-// v_M[1] is computed in the form "limit of v_My + dv_My, fma, compensated let": at most 1.41 ulps in double on 4200 samples.
+// v_M[0] is computed in the form "limit of v_Mx + dv_Mx, fma, compensated let": at most 1.39 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of v_My + dv_My, compensated let": at most 1.18 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_m[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
-// w_M is computed in the form "limit of w_M + dw_M, compensated let": at most 2.00 ulps in double on 4200 samples.
+// w_M is computed in the form "limit of w_M + dw_M, compensated let": at most 3.76 ulps in double on 4200 samples.
 // w_m is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 template <class Real>
 inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu) noexcept
@@ -896,730 +782,696 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
         out.status = status::non_finite;
         return out;
     }
-    const Real t0 = -Real(2);
-    const Real t1 = C_Mx - C_mx;
-    const Real t2 = t1 - C_Mx;
-    const Real t3 = C_Mx * C_Mx;
-    const Real t4 = Real(2) * C_Mx;
-    const Real t5 = t4 * C_mx;
-    const Real t6 = C_mx * C_mx;
-    const Real t7 = C_Mx * C_mx;
-    const Real t8 = std::fma(t0, t7, t3);
-    const Real t9 = t1 * t1;
-    const Real t10 = C_Mx - (t1 - t2) - (C_mx + t2);
-    const Real t11 = C_My - C_my;
-    const Real t12 = t11 - C_My;
-    const Real t13 = C_My * C_My;
-    const Real t14 = t8 + t13;
-    const Real t15 = Real(2) * C_My;
-    const Real t16 = t15 * C_my;
-    const Real t17 = C_my * C_my;
-    const Real t18 = C_My * C_my;
-    const Real t19 = std::fma(t0, t18, t14);
-    const Real t20 = t11 * t11;
-    const Real t21 = t9 + t20;
-    const Real t22 = t21 - t9;
-    const Real t23 = C_My - (t11 - t12) - (C_my + t12);
-    const Real t24 = t9 - (t21 - t22) + (t20 - t22) + (std::fma(t10, t1, std::fma(t1, t10, std::fma(t1, t1, -t9))) + std::fma(t23, t11, std::fma(t11, t23, std::fma(t11, t11, -t20))));
-    const Real t25 = t21 + t24;
-    const Real t26 = v_Mx * t1;
-    const Real t27 = v_mx * t1;
-    const Real t28 = v_Mx * C_My;
-    const Real t29 = v_Mx * C_my;
-    const Real t30 = v_mx * C_My;
-    const Real t31 = v_mx * C_my;
-    const Real t32 = v_Mx * t11;
-    const Real t33 = v_mx * t11;
-    const Real t34 = -v_Mx;
-    const Real t35 = -v_mx;
-    const Real t36 = std::fma(v_Mx, t10, std::fma(v_Mx, t1, -t26));
-    const Real t37 = std::fma(v_mx, t10, std::fma(v_mx, t1, -t27));
-    const Real t38 = std::fma(v_Mx, t23, std::fma(v_Mx, t11, -t32));
-    const Real t39 = std::fma(v_mx, t23, std::fma(v_mx, t11, -t33));
-    const Real t40 = v_My * C_Mx;
-    const Real t41 = v_My * C_mx;
-    const Real t42 = v_my * C_Mx;
-    const Real t43 = v_my * C_mx;
-    const Real t44 = v_My * t1;
-    const Real t45 = v_my * t1;
-    const Real t46 = v_My * t11;
-    const Real t47 = v_my * t11;
-    const Real t48 = t26 + t46;
-    const Real t49 = t48 - t26;
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 - C_Mx;
+    const Real t2 = C_Mx * C_Mx;
+    const Real t3 = Real(2) * C_Mx;
+    const Real t4 = t3 * C_mx;
+    const Real t5 = C_mx * C_mx;
+    const Real t6 = t0 * t0;
+    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t8 = t2 - t4;
+    const Real t9 = t8 - t2;
+    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
+    const Real t11 = t8 + t10;
+    const Real t12 = C_My - C_my;
+    const Real t13 = t12 - C_My;
+    const Real t14 = C_My * C_My;
+    const Real t15 = t11 + t14;
+    const Real t16 = t15 - t11;
+    const Real t17 = Real(2) * C_My;
+    const Real t18 = t17 * C_my;
+    const Real t19 = C_my * C_my;
+    const Real t20 = t12 * t12;
+    const Real t21 = t6 + t20;
+    const Real t22 = t21 - t6;
+    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
+    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
+    const Real t25 = t15 + t24;
+    const Real t26 = t25 - t18;
+    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
+    const Real t28 = t21 + t27;
+    const Real t29 = t26 - t25;
+    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
+    const Real t31 = t26 + t30;
+    const Real t32 = t31 + t5;
+    const Real t33 = t32 - t31;
+    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
+    const Real t35 = t32 + t34;
+    const Real t36 = t35 + t19;
+    const Real t37 = t36 - t35;
+    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
+    const Real t39 = t36 + t38;
+    const Real t40 = v_Mx * t0;
+    const Real t41 = v_mx * t0;
+    const Real t42 = v_Mx * C_My;
+    const Real t43 = v_Mx * C_my;
+    const Real t44 = v_mx * C_My;
+    const Real t45 = v_mx * C_my;
+    const Real t46 = v_Mx * t12;
+    const Real t47 = v_mx * t12;
+    const Real t48 = -v_mx;
+    const Real t49 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t40));
+    const Real t50 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t41));
+    const Real t51 = std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t46));
+    const Real t52 = std::fma(v_mx, t23, std::fma(v_mx, t12, -t47));
+    const Real t53 = v_My * C_Mx;
+    const Real t54 = v_My * C_mx;
+    const Real t55 = v_my * C_Mx;
+    const Real t56 = v_my * C_mx;
+    const Real t57 = v_My * t0;
+    const Real t58 = v_my * t0;
+    const Real t59 = v_My * t12;
+    const Real t60 = v_my * t12;
+    const Real t61 = t40 + t59;
+    const Real t62 = t61 - t40;
     if (!(t21 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-((v_Mx - v_mx) * t1) - (v_My - v_my) * t11 > Real(0))) {
+    if (!(-((v_Mx - v_mx) * t0) - (v_My - v_my) * t12 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t50 = -v_My;
-    const Real t51 = -v_my;
-    const Real t52 = std::fma(v_My, t10, std::fma(v_My, t1, -t44));
-    const Real t53 = std::fma(v_my, t10, std::fma(v_my, t1, -t45));
-    const Real t54 = std::fma(v_My, t23, std::fma(v_My, t11, -t46));
-    const Real t55 = std::fma(v_my, t23, std::fma(v_my, t11, -t47));
-    const Real t56 = t26 - (t48 - t49) + (t46 - t49) + (t36 + t54);
-    const Real t57 = t48 + t56;
-    const Real t58 = t57 - t27;
-    const Real t59 = t58 - t57;
-    const Real t60 = t57 - (t58 - t59) - (t27 + t59) + (t56 - (t57 - t48) - t37);
-    const Real t61 = t58 + t60;
-    const Real t62 = t61 - t47;
-    const Real t63 = t62 - t61;
-    const Real t64 = t61 - (t62 - t63) - (t47 + t63) + (t60 - (t61 - t58) - t55);
-    const Real t65 = t62 + t64;
-    const Real t66 = t64 - (t65 - t62);
-    const Real t67 = Real(1) + eps;
-    const Real t68 = t67 - Real(1);
-    const Real t69 = Real(1) - (t67 - t68) + (eps - t68);
-    const Real t70 = M * t67;
-    const Real t71 = q_M * q_m;
-    const Real t72 = t71 * eps;
-    const Real t73 = q_m * eps;
-    const Real t74 = M * q_M;
-    const Real t75 = t74 * q_m;
-    const Real t76 = t71 + q_m;
-    const Real t77 = -q_M;
-    const Real t78 = -q_m;
-    const Real t79 = t76 - t71;
-    const Real t80 = std::fma(std::fma(M, q_M, -t74), q_m, std::fma(t74, q_m, -t75));
-    const Real t81 = t71 - (t76 - t79) + (q_m - t79) + std::fma(q_M, q_m, -t71);
-    const Real t82 = t76 + t81;
-    const Real t83 = t81 - (t82 - t76);
-    const Real t84 = t72 * mu;
-    const Real t85 = t84 * v_Mx;
-    const Real t86 = t85 * C_Mx;
-    const Real t87 = t85 * C_mx;
-    const Real t88 = t84 * v_mx;
-    const Real t89 = t88 * C_Mx;
-    const Real t90 = t88 * C_mx;
-    const Real t91 = mu * v_Mx;
-    const Real t92 = t91 * C_Mx;
-    const Real t93 = t91 * C_mx;
-    const Real t94 = mu * v_mx;
-    const Real t95 = t94 * C_Mx;
-    const Real t96 = t94 * C_mx;
-    const Real t97 = t84 * v_My;
-    const Real t98 = t97 * C_My;
-    const Real t99 = t97 * C_my;
-    const Real t100 = t84 * v_my;
-    const Real t101 = t100 * C_My;
-    const Real t102 = t100 * C_my;
-    const Real t103 = mu * v_My;
-    const Real t104 = t103 * C_My;
-    const Real t105 = t103 * C_my;
-    const Real t106 = mu * v_my;
-    const Real t107 = t106 * C_My;
-    const Real t108 = t106 * C_my;
-    const Real t109 = eps * mu;
-    const Real t110 = t109 * v_Mx;
-    const Real t111 = t110 * C_Mx;
-    const Real t112 = t110 * C_mx;
-    const Real t113 = t109 * v_mx;
-    const Real t114 = t113 * C_Mx;
-    const Real t115 = t113 * C_mx;
-    const Real t116 = t109 * v_My;
-    const Real t117 = t116 * C_My;
-    const Real t118 = t116 * C_my;
-    const Real t119 = t109 * v_my;
-    const Real t120 = t119 * C_My;
-    const Real t121 = t119 * C_my;
-    const Real t122 = M * mu;
-    const Real t123 = t122 * t67;
-    const Real t124 = q_m * mu;
-    const Real t125 = t124 * v_Mx;
-    const Real t126 = t125 * C_Mx;
-    const Real t127 = t125 * C_mx;
-    const Real t128 = t124 * v_mx;
-    const Real t129 = t128 * C_Mx;
-    const Real t130 = t128 * C_mx;
-    const Real t131 = t124 * v_My;
-    const Real t132 = t131 * C_My;
-    const Real t133 = t131 * C_my;
-    const Real t134 = t124 * v_my;
-    const Real t135 = t134 * C_My;
-    const Real t136 = t134 * C_my;
-    const Real t137 = t71 * mu;
-    const Real t138 = t137 * v_Mx;
-    const Real t139 = t138 * C_Mx;
-    const Real t140 = t138 * C_mx;
-    const Real t141 = t137 * v_mx;
-    const Real t142 = t141 * C_Mx;
-    const Real t143 = t141 * C_mx;
-    const Real t144 = t137 * v_My;
-    const Real t145 = t144 * C_My;
-    const Real t146 = t144 * C_my;
-    const Real t147 = t137 * v_my;
-    const Real t148 = t147 * C_My;
-    const Real t149 = t147 * C_my;
-    const Real t150 = t73 * mu;
-    const Real t151 = t150 * v_Mx;
-    const Real t152 = t151 * C_Mx;
-    const Real t153 = t151 * C_mx;
-    const Real t154 = t150 * v_mx;
-    const Real t155 = t154 * C_Mx;
-    const Real t156 = t154 * C_mx;
-    const Real t157 = t150 * v_My;
-    const Real t158 = t157 * C_My;
-    const Real t159 = t157 * C_my;
-    const Real t160 = t150 * v_my;
-    const Real t161 = t160 * C_My;
-    const Real t162 = t160 * C_my;
-    const Real t163 = std::fma(t77, t153, t86);
-    const Real t164 = std::fma(q_M, t158, t163);
-    const Real t165 = std::fma(t77, t159, t164);
-    const Real t166 = std::fma(t77, t155, t165);
-    const Real t167 = std::fma(q_M, t156, t166);
-    const Real t168 = std::fma(t77, t161, t167);
-    const Real t169 = std::fma(q_M, t162, t168);
-    const Real t170 = std::fma(std::fma(M, mu, -t122), t67, std::fma(t122, t69, std::fma(t122, t67, -t123)));
-    const Real t171 = t71 * b;
-    const Real t172 = b * v_Mx;
-    const Real t173 = t172 * t11;
-    const Real t174 = b * v_mx;
-    const Real t175 = t174 * t11;
-    const Real t176 = b * v_My;
-    const Real t177 = t176 * t1;
-    const Real t178 = b * v_my;
-    const Real t179 = t178 * t1;
-    const Real t180 = q_m * b;
-    const Real t181 = std::fma(std::fma(b, v_Mx, -t172), t11, std::fma(t172, t23, std::fma(t172, t11, -t173)));
-    const Real t182 = std::fma(std::fma(b, v_mx, -t174), t11, std::fma(t174, t23, std::fma(t174, t11, -t175)));
-    const Real t183 = std::fma(std::fma(b, v_My, -t176), t1, std::fma(t176, t10, std::fma(t176, t1, -t177)));
-    const Real t184 = std::fma(std::fma(b, v_my, -t178), t1, std::fma(t178, t10, std::fma(t178, t1, -t179)));
-    const Real t185 = R_M * w_M;
-    const Real t186 = M * R_M;
-    const Real t187 = t186 * q_M;
-    const Real t188 = std::sqrt(t21);
-    const Real t189 = std::sqrt(t3 - t5 + t13 - t16 + t6 + t17);
-    const Real t190 = std::sqrt(t19 + t6 + t17);
-    const Real t191 = std::sqrt(t25);
-    const Real t192 = t82 * t191;
-    const Real t193 = R_M * b;
-    const Real t194 = t193 * w_M;
-    const Real t195 = t185 * t189;
-    const Real t196 = std::fma(R_M, w_M, -t185);
-    const Real t197 = t185 * t191;
-    const Real t198 = t185 * t188;
-    const Real t199 = t185 * t190;
-    const Real t200 = std::fma(-t191, t191, t25) + (t24 - (t25 - t21));
-    const Real t201 = t191 + t191;
-    const Real t202 = t194 * t191;
-    const Real t203 = std::fma(t82, t191, -t192);
-    const Real t204 = std::fma(std::fma(R_M, b, -t193), w_M, std::fma(t193, w_M, -t194));
-    const Real t205 = std::fma(t185, t191, -t197);
-    const Real t206 = t202 + t197;
-    const Real t207 = std::fma(t194, t191, -t202);
-    const Real t208 = t206 - t202;
-    const Real t209 = t202 - (t206 - t208) + (t197 - t208);
-    const Real t210 = R_m * w_m;
-    const Real t211 = R_m * b;
-    const Real t212 = t210 * t188;
-    const Real t213 = w_m * t188;
-    const Real t214 = t210 * t189;
-    const Real t215 = w_m * t190;
-    const Real t216 = t210 * t191;
-    const Real t217 = t195 + t214 + t28 - t29 - t40 + t41 - t30 + t31 + t42 - t43;
-    const Real t218 = t197 + t216;
-    const Real t219 = t218 - t197;
-    const Real t220 = t198 + t212 + t32 - t44 - t33 + t45;
-    const Real t221 = std::fma(R_m, t213, t198);
-    const Real t222 = std::fma(v_Mx, t11, t221);
-    const Real t223 = std::fma(t50, t1, t222);
-    const Real t224 = std::fma(t35, t11, t223);
-    const Real t225 = std::fma(v_my, t1, t224);
-    const Real t226 = std::fma(R_m, t215, t199);
-    const Real t227 = std::fma(v_Mx, C_My, t226);
-    const Real t228 = std::fma(t34, C_my, t227);
-    const Real t229 = std::fma(t50, C_Mx, t228);
-    const Real t230 = std::fma(v_My, C_mx, t229);
-    const Real t231 = std::fma(t35, C_My, t230);
-    const Real t232 = std::fma(v_mx, C_my, t231);
-    const Real t233 = std::fma(v_my, C_Mx, t232);
-    const Real t234 = std::fma(t51, C_mx, t233);
-    const Real t235 = t211 * w_m;
-    const Real t236 = t235 * t191;
-    const Real t237 = std::fma(R_m, w_m, -t210);
-    const Real t238 = std::fma(t210, t191, -t216);
-    const Real t239 = std::fabs(t217);
-    const Real t240 = t71 * t239;
-    const Real t241 = t171 * t239;
-    const Real t242 = std::fabs(t220);
-    const Real t243 = t191 * t242;
-    const Real t244 = std::fabs(t225);
-    const Real t245 = t191 * t244;
-    const Real t246 = std::fabs(t234);
-    const Real t247 = q_m * t246;
-    const Real t248 = t180 * t246;
-    const Real t249 = std::fma(q_M, t248, t169);
-    const Real t250 = std::fma(q_M, t126, t249);
-    const Real t251 = std::fma(t77, t127, t250);
-    const Real t252 = std::fma(q_M, t132, t251);
-    const Real t253 = std::fma(t77, t133, t252);
-    const Real t254 = std::fma(t77, t129, t253);
-    const Real t255 = std::fma(q_M, t130, t254);
-    const Real t256 = std::fma(t77, t135, t255);
-    const Real t257 = std::fma(q_M, t136, t256);
-    const Real t258 = std::fma(q_M, t247, t257);
-    const Real t259 = std::fma(q_m, t111, t258);
-    const Real t260 = std::fma(t78, t112, t259);
-    const Real t261 = std::fma(q_m, t117, t260);
-    const Real t262 = std::fma(t78, t118, t261);
-    const Real t263 = std::fma(t78, t114, t262);
-    const Real t264 = std::fma(q_m, t115, t263);
-    const Real t265 = std::fma(t78, t120, t264);
-    const Real t266 = std::fma(q_m, t121, t265);
-    const Real t267 = std::fma(q_m, t92, t266);
-    const Real t268 = std::fma(t78, t93, t267);
-    const Real t269 = std::fma(q_m, t104, t268);
-    const Real t270 = std::fma(t78, t105, t269);
-    const Real t271 = std::fma(t78, t95, t270);
-    const Real t272 = std::fma(q_m, t96, t271);
-    const Real t273 = std::fma(t78, t107, t272);
-    const Real t274 = std::fma(q_m, t108, t273);
-    const Real t275 = (t274 > Real(0) ? Real(1) : t192);
-    const Real t276 = (t274 > Real(0) ? t201 : Real(1));
-    const Real t277 = (t274 > Real(0) ? Real(1) : t201);
-    const Real t278 = std::fma(std::fma(R_m, b, -t211), w_m, std::fma(t211, w_m, -t235));
-    const Real t279 = std::fma(t235, t191, -t236);
-    const Real t280 = t197 - (t218 - t219) + (t216 - t219);
-    const Real t281 = t86 - t87 + t98 - t99 - t89 + t90 - t101 + t102 + t241 + t139 - t140 + t145 - t146 - t142 + t143 - t148 + t149 + t240 + t152 - t153 + t158 - t159 - t155 + t156 - t161 + t162 + t126 - t127 + t132 - t133 - t129 + t130 - t135 + t136;
-    const Real t282 = (t281 > Real(0) ? Real(1) : t192);
-    const Real t283 = (t281 > Real(0) ? t201 : Real(1));
-    const Real t284 = (t281 > Real(0) ? Real(1) : t201);
-    const Real t285 = (t281 > Real(0) ? t243 : Real(1));
-    const Real t286 = (t274 > Real(0) ? t245 : Real(1));
-    if (!(std::fabs(t191) >= detail::smallest_divisor<Real>) || !(std::fabs(t191) <= std::numeric_limits<Real>::max()) || !(std::fabs(t201) >= detail::smallest_divisor<Real>) || !(std::fabs(t201) <= std::numeric_limits<Real>::max()) || !(std::fabs(t283) >= detail::smallest_divisor<Real>) || !(std::fabs(t283) <= std::numeric_limits<Real>::max()) || !(std::fabs(t284) >= detail::smallest_divisor<Real>) || !(std::fabs(t284) <= std::numeric_limits<Real>::max()) || !(std::fabs(t276) >= detail::smallest_divisor<Real>) || !(std::fabs(t276) <= std::numeric_limits<Real>::max()) || !(std::fabs(t277) >= detail::smallest_divisor<Real>) || !(std::fabs(t277) <= std::numeric_limits<Real>::max()) || !(std::fabs(t285) >= detail::smallest_divisor<Real>) || !(std::fabs(t285) <= std::numeric_limits<Real>::max()) || !(std::fabs(t286) >= detail::smallest_divisor<Real>) || !(std::fabs(t286) <= std::numeric_limits<Real>::max()) || !(std::fabs(t282) >= detail::smallest_divisor<Real>) || !(std::fabs(t282) <= std::numeric_limits<Real>::max()) || !(std::fabs(t187) >= detail::smallest_divisor<Real>) || !(std::fabs(t187) <= std::numeric_limits<Real>::max()) || !(std::fabs(t275) >= detail::smallest_divisor<Real>) || !(std::fabs(t275) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max())) {
+    const Real t63 = -v_My;
+    const Real t64 = std::fma(v_My, t7, std::fma(v_My, t0, -t57));
+    const Real t65 = std::fma(v_my, t7, std::fma(v_my, t0, -t58));
+    const Real t66 = std::fma(v_My, t23, std::fma(v_My, t12, -t59));
+    const Real t67 = std::fma(v_my, t23, std::fma(v_my, t12, -t60));
+    const Real t68 = t40 - (t61 - t62) + (t59 - t62) + (t49 + t66);
+    const Real t69 = t61 + t68;
+    const Real t70 = t69 - t41;
+    const Real t71 = t70 - t69;
+    const Real t72 = t69 - (t70 - t71) - (t41 + t71) + (t68 - (t69 - t61) - t50);
+    const Real t73 = t70 + t72;
+    const Real t74 = t73 - t60;
+    const Real t75 = t74 - t73;
+    const Real t76 = t73 - (t74 - t75) - (t60 + t75) + (t72 - (t73 - t70) - t67);
+    const Real t77 = t74 + t76;
+    const Real t78 = Real(1) + eps;
+    const Real t79 = t78 - Real(1);
+    const Real t80 = Real(1) - (t78 - t79) + (eps - t79);
+    const Real t81 = M * t78;
+    const Real t82 = q_M * q_m;
+    const Real t83 = t82 * eps;
+    const Real t84 = q_m * eps;
+    const Real t85 = M * q_M;
+    const Real t86 = t85 * q_m;
+    const Real t87 = t82 + q_m;
+    const Real t88 = std::fma(q_M, q_m, -t82);
+    const Real t89 = t87 - t82;
+    const Real t90 = t82 - (t87 - t89) + (q_m - t89) + t88;
+    const Real t91 = t87 + t90;
+    const Real t92 = t83 * mu;
+    const Real t93 = t92 * v_Mx;
+    const Real t94 = t93 * C_Mx;
+    const Real t95 = t93 * C_mx;
+    const Real t96 = t92 * v_mx;
+    const Real t97 = t96 * C_Mx;
+    const Real t98 = t96 * C_mx;
+    const Real t99 = t92 * v_My;
+    const Real t100 = t99 * C_My;
+    const Real t101 = t99 * C_my;
+    const Real t102 = t92 * v_my;
+    const Real t103 = t102 * C_My;
+    const Real t104 = t102 * C_my;
+    const Real t105 = M * mu;
+    const Real t106 = t105 * t78;
+    const Real t107 = q_m * mu;
+    const Real t108 = t107 * v_Mx;
+    const Real t109 = t108 * C_Mx;
+    const Real t110 = t108 * C_mx;
+    const Real t111 = t107 * v_mx;
+    const Real t112 = t111 * C_Mx;
+    const Real t113 = t111 * C_mx;
+    const Real t114 = t107 * v_My;
+    const Real t115 = t114 * C_My;
+    const Real t116 = t114 * C_my;
+    const Real t117 = t107 * v_my;
+    const Real t118 = t117 * C_My;
+    const Real t119 = t117 * C_my;
+    const Real t120 = t82 * mu;
+    const Real t121 = t120 * v_Mx;
+    const Real t122 = t121 * C_Mx;
+    const Real t123 = t121 * C_mx;
+    const Real t124 = t120 * v_mx;
+    const Real t125 = t124 * C_Mx;
+    const Real t126 = t124 * C_mx;
+    const Real t127 = t120 * v_My;
+    const Real t128 = t127 * C_My;
+    const Real t129 = t127 * C_my;
+    const Real t130 = t120 * v_my;
+    const Real t131 = t130 * C_My;
+    const Real t132 = t130 * C_my;
+    const Real t133 = t84 * mu;
+    const Real t134 = t133 * v_Mx;
+    const Real t135 = t134 * C_Mx;
+    const Real t136 = t134 * C_mx;
+    const Real t137 = t133 * v_mx;
+    const Real t138 = t137 * C_Mx;
+    const Real t139 = t137 * C_mx;
+    const Real t140 = t133 * v_My;
+    const Real t141 = t140 * C_My;
+    const Real t142 = t140 * C_my;
+    const Real t143 = t133 * v_my;
+    const Real t144 = t143 * C_My;
+    const Real t145 = t143 * C_my;
+    const Real t146 = std::fma(std::fma(t88, eps, std::fma(t82, eps, -t83)), mu, std::fma(t83, mu, -t92));
+    const Real t147 = std::fma(t146, v_Mx, std::fma(t92, v_Mx, -t93));
+    const Real t148 = t94 - t95;
+    const Real t149 = t148 - t94;
+    const Real t150 = std::fma(t146, v_mx, std::fma(t92, v_mx, -t96));
+    const Real t151 = std::fma(t146, v_My, std::fma(t92, v_My, -t99));
+    const Real t152 = std::fma(t146, v_my, std::fma(t92, v_my, -t102));
+    const Real t153 = std::fma(q_m, mu, -t107);
+    const Real t154 = std::fma(t153, v_Mx, std::fma(t107, v_Mx, -t108));
+    const Real t155 = std::fma(t153, v_mx, std::fma(t107, v_mx, -t111));
+    const Real t156 = std::fma(t153, v_My, std::fma(t107, v_My, -t114));
+    const Real t157 = std::fma(t153, v_my, std::fma(t107, v_my, -t117));
+    const Real t158 = std::fma(t88, mu, std::fma(t82, mu, -t120));
+    const Real t159 = std::fma(t158, v_Mx, std::fma(t120, v_Mx, -t121));
+    const Real t160 = std::fma(t158, v_mx, std::fma(t120, v_mx, -t124));
+    const Real t161 = std::fma(t158, v_My, std::fma(t120, v_My, -t127));
+    const Real t162 = std::fma(t158, v_my, std::fma(t120, v_my, -t130));
+    const Real t163 = std::fma(std::fma(q_m, eps, -t84), mu, std::fma(t84, mu, -t133));
+    const Real t164 = std::fma(t163, v_Mx, std::fma(t133, v_Mx, -t134));
+    const Real t165 = std::fma(t163, v_mx, std::fma(t133, v_mx, -t137));
+    const Real t166 = std::fma(t163, v_My, std::fma(t133, v_My, -t140));
+    const Real t167 = std::fma(t163, v_my, std::fma(t133, v_my, -t143));
+    const Real t168 = t94 - (t148 - t149) - (t95 + t149) + (std::fma(t147, C_Mx, std::fma(t93, C_Mx, -t94)) - std::fma(t147, C_mx, std::fma(t93, C_mx, -t95)));
+    const Real t169 = t148 + t168;
+    const Real t170 = t169 + t100;
+    const Real t171 = t170 - t169;
+    const Real t172 = t169 - (t170 - t171) + (t100 - t171) + (t168 - (t169 - t148) + std::fma(t151, C_My, std::fma(t99, C_My, -t100)));
+    const Real t173 = t170 + t172;
+    const Real t174 = t173 - t101;
+    const Real t175 = t174 - t173;
+    const Real t176 = t173 - (t174 - t175) - (t101 + t175) + (t172 - (t173 - t170) - std::fma(t151, C_my, std::fma(t99, C_my, -t101)));
+    const Real t177 = t174 + t176;
+    const Real t178 = t177 - t97;
+    const Real t179 = t178 - t177;
+    const Real t180 = t177 - (t178 - t179) - (t97 + t179) + (t176 - (t177 - t174) - std::fma(t150, C_Mx, std::fma(t96, C_Mx, -t97)));
+    const Real t181 = t178 + t180;
+    const Real t182 = t181 + t98;
+    const Real t183 = t182 - t181;
+    const Real t184 = t181 - (t182 - t183) + (t98 - t183) + (t180 - (t181 - t178) + std::fma(t150, C_mx, std::fma(t96, C_mx, -t98)));
+    const Real t185 = t182 + t184;
+    const Real t186 = t185 - t103;
+    const Real t187 = t186 - t185;
+    const Real t188 = t185 - (t186 - t187) - (t103 + t187) + (t184 - (t185 - t182) - std::fma(t152, C_My, std::fma(t102, C_My, -t103)));
+    const Real t189 = t186 + t188;
+    const Real t190 = t189 + t104;
+    const Real t191 = t190 - t189;
+    const Real t192 = t189 - (t190 - t191) + (t104 - t191) + (t188 - (t189 - t186) + std::fma(t152, C_my, std::fma(t102, C_my, -t104)));
+    const Real t193 = t190 + t192;
+    const Real t194 = t82 * b;
+    const Real t195 = b * v_Mx;
+    const Real t196 = t195 * t12;
+    const Real t197 = b * v_mx;
+    const Real t198 = t197 * t12;
+    const Real t199 = b * v_My;
+    const Real t200 = t199 * t0;
+    const Real t201 = b * v_my;
+    const Real t202 = t201 * t0;
+    const Real t203 = R_M * w_M;
+    const Real t204 = M * R_M;
+    const Real t205 = t204 * q_M;
+    const Real t206 = std::sqrt(t21);
+    const Real t207 = std::sqrt(t28);
+    const Real t208 = std::sqrt(t39);
+    const Real t209 = t91 * t207;
+    const Real t210 = R_M * b;
+    const Real t211 = t210 * w_M;
+    const Real t212 = std::fma(R_M, w_M, -t203);
+    const Real t213 = t203 * t208;
+    const Real t214 = t203 * t207;
+    const Real t215 = t203 * t206;
+    const Real t216 = std::fma(-t207, t207, t28) + (t27 - (t28 - t21));
+    const Real t217 = t207 + t207;
+    const Real t218 = t211 * t207;
+    const Real t219 = std::fma(t203, t207, -t214);
+    const Real t220 = t218 + t214;
+    const Real t221 = t220 - t218;
+    const Real t222 = R_m * w_m;
+    const Real t223 = R_m * b;
+    const Real t224 = w_m * t206;
+    const Real t225 = t222 * t206;
+    const Real t226 = t222 * t207;
+    const Real t227 = t222 * t208;
+    const Real t228 = t213 + t227;
+    const Real t229 = t228 - t213;
+    const Real t230 = t214 + t226;
+    const Real t231 = t230 - t214;
+    const Real t232 = std::fma(R_m, t224, t215);
+    const Real t233 = std::fma(v_Mx, t12, t232);
+    const Real t234 = std::fma(t63, t0, t233);
+    const Real t235 = std::fma(t48, t12, t234);
+    const Real t236 = std::fma(v_my, t0, t235);
+    const Real t237 = t215 + t225 + t46 - t57 - t47 + t58;
+    const Real t238 = t223 * w_m;
+    const Real t239 = t238 * t207;
+    const Real t240 = std::fma(R_m, w_m, -t222);
+    const Real t241 = std::fma(t222, t207, -t226);
+    const Real t242 = std::fabs(t236);
+    const Real t243 = t206 * t242;
+    const Real t244 = std::fabs(t237);
+    const Real t245 = t206 * t244;
+    const Real t246 = t213 - (t228 - t229) + (t227 - t229) + (std::fma(t212, t208, std::fma(t203, t208, -t213)) + std::fma(t240, t208, std::fma(t222, t208, -t227)));
+    const Real t247 = t228 + t246;
+    const Real t248 = t247 + t42;
+    const Real t249 = t248 - t247;
+    const Real t250 = t247 - (t248 - t249) + (t42 - t249) + (t246 - (t247 - t228) + std::fma(v_Mx, C_My, -t42));
+    const Real t251 = t248 + t250;
+    const Real t252 = t251 - t43;
+    const Real t253 = t252 - t251;
+    const Real t254 = t251 - (t252 - t253) - (t43 + t253) + (t250 - (t251 - t248) - std::fma(v_Mx, C_my, -t43));
+    const Real t255 = t252 + t254;
+    const Real t256 = t255 - t53;
+    const Real t257 = t256 - t255;
+    const Real t258 = t255 - (t256 - t257) - (t53 + t257) + (t254 - (t255 - t252) - std::fma(v_My, C_Mx, -t53));
+    const Real t259 = t256 + t258;
+    const Real t260 = t259 + t54;
+    const Real t261 = t260 - t259;
+    const Real t262 = t259 - (t260 - t261) + (t54 - t261) + (t258 - (t259 - t256) + std::fma(v_My, C_mx, -t54));
+    const Real t263 = t260 + t262;
+    const Real t264 = t263 - t44;
+    const Real t265 = t264 - t263;
+    const Real t266 = t263 - (t264 - t265) - (t44 + t265) + (t262 - (t263 - t260) - std::fma(v_mx, C_My, -t44));
+    const Real t267 = t264 + t266;
+    const Real t268 = t267 + t45;
+    const Real t269 = t268 - t267;
+    const Real t270 = t267 - (t268 - t269) + (t45 - t269) + (t266 - (t267 - t264) + std::fma(v_mx, C_my, -t45));
+    const Real t271 = t268 + t270;
+    const Real t272 = t271 + t55;
+    const Real t273 = t272 - t271;
+    const Real t274 = t271 - (t272 - t273) + (t55 - t273) + (t270 - (t271 - t268) + std::fma(v_my, C_Mx, -t55));
+    const Real t275 = t272 + t274;
+    const Real t276 = t275 - t56;
+    const Real t277 = t276 - t275;
+    const Real t278 = t275 - (t276 - t277) - (t56 + t277) + (t274 - (t275 - t272) - std::fma(v_my, C_mx, -t56));
+    const Real t279 = t276 + t278;
+    const Real t280 = t278 - (t279 - t276);
+    const Real t281 = (t279 > Real(0) ? t279 : -t279);
+    const Real t282 = t82 * t281;
+    const Real t283 = t194 * t281;
+    const Real t284 = t193 + t283;
+    const Real t285 = t284 - t193;
+    const Real t286 = (t279 > Real(0) ? t280 : -t280);
+    const Real t287 = t193 - (t284 - t285) + (t283 - t285) + (t192 - (t193 - t190) + std::fma(std::fma(t88, b, std::fma(t82, b, -t194)), t281, std::fma(t194, t286, std::fma(t194, t281, -t283))));
+    const Real t288 = t284 + t287;
+    const Real t289 = t288 + t122;
+    const Real t290 = t289 - t288;
+    const Real t291 = t288 - (t289 - t290) + (t122 - t290) + (t287 - (t288 - t284) + std::fma(t159, C_Mx, std::fma(t121, C_Mx, -t122)));
+    const Real t292 = t289 + t291;
+    const Real t293 = t292 - t123;
+    const Real t294 = t293 - t292;
+    const Real t295 = t292 - (t293 - t294) - (t123 + t294) + (t291 - (t292 - t289) - std::fma(t159, C_mx, std::fma(t121, C_mx, -t123)));
+    const Real t296 = t293 + t295;
+    const Real t297 = t296 + t128;
+    const Real t298 = t297 - t296;
+    const Real t299 = t296 - (t297 - t298) + (t128 - t298) + (t295 - (t296 - t293) + std::fma(t161, C_My, std::fma(t127, C_My, -t128)));
+    const Real t300 = t297 + t299;
+    const Real t301 = t300 - t129;
+    const Real t302 = t301 - t300;
+    const Real t303 = t300 - (t301 - t302) - (t129 + t302) + (t299 - (t300 - t297) - std::fma(t161, C_my, std::fma(t127, C_my, -t129)));
+    const Real t304 = t301 + t303;
+    const Real t305 = t304 - t125;
+    const Real t306 = t305 - t304;
+    const Real t307 = t304 - (t305 - t306) - (t125 + t306) + (t303 - (t304 - t301) - std::fma(t160, C_Mx, std::fma(t124, C_Mx, -t125)));
+    const Real t308 = t305 + t307;
+    const Real t309 = t308 + t126;
+    const Real t310 = t309 - t308;
+    const Real t311 = t308 - (t309 - t310) + (t126 - t310) + (t307 - (t308 - t305) + std::fma(t160, C_mx, std::fma(t124, C_mx, -t126)));
+    const Real t312 = t309 + t311;
+    const Real t313 = t312 - t131;
+    const Real t314 = t313 - t312;
+    const Real t315 = t312 - (t313 - t314) - (t131 + t314) + (t311 - (t312 - t309) - std::fma(t162, C_My, std::fma(t130, C_My, -t131)));
+    const Real t316 = t313 + t315;
+    const Real t317 = t316 + t132;
+    const Real t318 = t317 - t316;
+    const Real t319 = t316 - (t317 - t318) + (t132 - t318) + (t315 - (t316 - t313) + std::fma(t162, C_my, std::fma(t130, C_my, -t132)));
+    const Real t320 = t317 + t319;
+    const Real t321 = t320 + t282;
+    const Real t322 = t321 - t320;
+    const Real t323 = t320 - (t321 - t322) + (t282 - t322) + (t319 - (t320 - t317) + std::fma(t88, t281, std::fma(t82, t286, std::fma(t82, t281, -t282))));
+    const Real t324 = t321 + t323;
+    const Real t325 = t324 + t135;
+    const Real t326 = t325 - t324;
+    const Real t327 = t324 - (t325 - t326) + (t135 - t326) + (t323 - (t324 - t321) + std::fma(t164, C_Mx, std::fma(t134, C_Mx, -t135)));
+    const Real t328 = t325 + t327;
+    const Real t329 = t328 - t136;
+    const Real t330 = t329 - t328;
+    const Real t331 = t328 - (t329 - t330) - (t136 + t330) + (t327 - (t328 - t325) - std::fma(t164, C_mx, std::fma(t134, C_mx, -t136)));
+    const Real t332 = t329 + t331;
+    const Real t333 = t332 + t141;
+    const Real t334 = t333 - t332;
+    const Real t335 = t332 - (t333 - t334) + (t141 - t334) + (t331 - (t332 - t329) + std::fma(t166, C_My, std::fma(t140, C_My, -t141)));
+    const Real t336 = t333 + t335;
+    const Real t337 = t336 - t142;
+    const Real t338 = t337 - t336;
+    const Real t339 = t336 - (t337 - t338) - (t142 + t338) + (t335 - (t336 - t333) - std::fma(t166, C_my, std::fma(t140, C_my, -t142)));
+    const Real t340 = t337 + t339;
+    const Real t341 = t340 - t138;
+    const Real t342 = t341 - t340;
+    const Real t343 = t340 - (t341 - t342) - (t138 + t342) + (t339 - (t340 - t337) - std::fma(t165, C_Mx, std::fma(t137, C_Mx, -t138)));
+    const Real t344 = t341 + t343;
+    const Real t345 = t344 + t139;
+    const Real t346 = t345 - t344;
+    const Real t347 = t344 - (t345 - t346) + (t139 - t346) + (t343 - (t344 - t341) + std::fma(t165, C_mx, std::fma(t137, C_mx, -t139)));
+    const Real t348 = t345 + t347;
+    const Real t349 = t348 - t144;
+    const Real t350 = t349 - t348;
+    const Real t351 = t348 - (t349 - t350) - (t144 + t350) + (t347 - (t348 - t345) - std::fma(t167, C_My, std::fma(t143, C_My, -t144)));
+    const Real t352 = t349 + t351;
+    const Real t353 = t352 + t145;
+    const Real t354 = t353 - t352;
+    const Real t355 = t352 - (t353 - t354) + (t145 - t354) + (t351 - (t352 - t349) + std::fma(t167, C_my, std::fma(t143, C_my, -t145)));
+    const Real t356 = t353 + t355;
+    const Real t357 = t356 + t109;
+    const Real t358 = t357 - t356;
+    const Real t359 = t356 - (t357 - t358) + (t109 - t358) + (t355 - (t356 - t353) + std::fma(t154, C_Mx, std::fma(t108, C_Mx, -t109)));
+    const Real t360 = t357 + t359;
+    const Real t361 = t360 - t110;
+    const Real t362 = t361 - t360;
+    const Real t363 = t360 - (t361 - t362) - (t110 + t362) + (t359 - (t360 - t357) - std::fma(t154, C_mx, std::fma(t108, C_mx, -t110)));
+    const Real t364 = t361 + t363;
+    const Real t365 = t364 + t115;
+    const Real t366 = t365 - t364;
+    const Real t367 = t364 - (t365 - t366) + (t115 - t366) + (t363 - (t364 - t361) + std::fma(t156, C_My, std::fma(t114, C_My, -t115)));
+    const Real t368 = t365 + t367;
+    const Real t369 = t368 - t116;
+    const Real t370 = t369 - t368;
+    const Real t371 = t368 - (t369 - t370) - (t116 + t370) + (t367 - (t368 - t365) - std::fma(t156, C_my, std::fma(t114, C_my, -t116)));
+    const Real t372 = t369 + t371;
+    const Real t373 = t372 - t112;
+    const Real t374 = t373 - t372;
+    const Real t375 = t372 - (t373 - t374) - (t112 + t374) + (t371 - (t372 - t369) - std::fma(t155, C_Mx, std::fma(t111, C_Mx, -t112)));
+    const Real t376 = t373 + t375;
+    const Real t377 = t376 + t113;
+    const Real t378 = t377 - t376;
+    const Real t379 = t376 - (t377 - t378) + (t113 - t378) + (t375 - (t376 - t373) + std::fma(t155, C_mx, std::fma(t111, C_mx, -t113)));
+    const Real t380 = t377 + t379;
+    const Real t381 = t380 - t118;
+    const Real t382 = t381 - t380;
+    const Real t383 = t380 - (t381 - t382) - (t118 + t382) + (t379 - (t380 - t377) - std::fma(t157, C_My, std::fma(t117, C_My, -t118)));
+    const Real t384 = t381 + t383;
+    const Real t385 = t384 + t119;
+    const Real t386 = t385 - t384;
+    const Real t387 = t384 - (t385 - t386) + (t119 - t386) + (t383 - (t384 - t381) + std::fma(t157, C_my, std::fma(t117, C_my, -t119)));
+    const Real t388 = t385 + t387;
+    const Real t389 = t388 + (t387 - (t388 - t385));
+    const Real t390 = (t389 > Real(0) ? Real(1) : t209);
+    const Real t391 = (t389 > Real(0) ? t217 : Real(1));
+    const Real t392 = (t389 > Real(0) ? Real(1) : t217);
+    const Real t393 = (t389 > Real(0) ? t243 : Real(1));
+    const Real t394 = (t389 > Real(0) ? t245 : Real(1));
+    if (!(std::fabs(t207) >= detail::smallest_divisor<Real>) || !(std::fabs(t207) <= std::numeric_limits<Real>::max()) || !(std::fabs(t217) >= detail::smallest_divisor<Real>) || !(std::fabs(t217) <= std::numeric_limits<Real>::max()) || !(std::fabs(t391) >= detail::smallest_divisor<Real>) || !(std::fabs(t391) <= std::numeric_limits<Real>::max()) || !(std::fabs(t392) >= detail::smallest_divisor<Real>) || !(std::fabs(t392) <= std::numeric_limits<Real>::max()) || !(std::fabs(t393) >= detail::smallest_divisor<Real>) || !(std::fabs(t393) <= std::numeric_limits<Real>::max()) || !(std::fabs(t394) >= detail::smallest_divisor<Real>) || !(std::fabs(t394) <= std::numeric_limits<Real>::max()) || !(std::fabs(t390) >= detail::smallest_divisor<Real>) || !(std::fabs(t390) <= std::numeric_limits<Real>::max()) || !(std::fabs(t205) >= detail::smallest_divisor<Real>) || !(std::fabs(t205) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t287 = t26 / t191;
-    const Real t288 = t27 / t191;
-    const Real t289 = t46 / t191;
-    const Real t290 = t47 / t191;
-    const Real t291 = t200 / t201;
-    const Real t292 = t200 / t283;
-    const Real t293 = t200 / t284;
-    const Real t294 = t200 / t276;
-    const Real t295 = t200 / t277;
-    const Real t296 = -t287;
-    const Real t297 = t287 + t289;
-    const Real t298 = t297 - t287;
-    const Real t299 = -t288;
-    const Real t300 = -t289;
-    const Real t301 = -t290;
-    const Real t302 = t280 + (std::fma(t196, t191, std::fma(t185, t292, t205)) + std::fma(t237, t191, std::fma(t210, t292, t238)));
-    const Real t303 = t218 + t302;
-    const Real t304 = t303 + t32;
-    const Real t305 = t209 + (std::fma(t204, t191, std::fma(t194, t293, t207)) + std::fma(t196, t191, std::fma(t185, t293, t205)));
-    const Real t306 = t206 + t305;
-    const Real t307 = t306 + t236;
-    const Real t308 = t280 + (std::fma(t196, t191, std::fma(t185, t294, t205)) + std::fma(t237, t191, std::fma(t210, t294, t238)));
-    const Real t309 = t218 + t308;
-    const Real t310 = t309 + t32;
-    const Real t311 = t209 + (std::fma(t204, t191, std::fma(t194, t295, t207)) + std::fma(t196, t191, std::fma(t185, t295, t205)));
-    const Real t312 = t206 + t311;
-    const Real t313 = t312 + t236;
-    const Real t314 = t304 - t303;
-    const Real t315 = t307 - t306;
-    const Real t316 = t310 - t309;
-    const Real t317 = t313 - t312;
-    const Real t318 = t287 - (t297 - t298) + (t289 - t298) + (std::fma(t296, t291, std::fma(t296, t191, t26) + t36) / t191 + std::fma(t300, t291, std::fma(t300, t191, t46) + t54) / t191);
-    const Real t319 = t297 + t318;
-    const Real t320 = t319 - t288;
-    const Real t321 = t303 - (t304 - t314) + (t32 - t314) + (t302 - (t303 - t218) + t38);
-    const Real t322 = t304 + t321;
-    const Real t323 = t322 - t44;
-    const Real t324 = t306 - (t307 - t315) + (t236 - t315) + (t305 - (t306 - t206) + std::fma(t278, t191, std::fma(t235, t293, t279)));
-    const Real t325 = t307 + t324;
-    const Real t326 = t325 + t216;
-    const Real t327 = t309 - (t310 - t316) + (t32 - t316) + (t308 - (t309 - t218) + t38);
-    const Real t328 = t310 + t327;
-    const Real t329 = t328 - t44;
-    const Real t330 = t312 - (t313 - t317) + (t236 - t317) + (t311 - (t312 - t206) + std::fma(t278, t191, std::fma(t235, t295, t279)));
-    const Real t331 = t313 + t330;
-    const Real t332 = t331 + t216;
-    const Real t333 = t320 - t319;
-    const Real t334 = t323 - t322;
-    const Real t335 = t326 - t325;
-    const Real t336 = t329 - t328;
-    const Real t337 = t332 - t331;
-    const Real t338 = t319 - (t320 - t333) - (t288 + t333) + (t318 - (t319 - t297) - std::fma(t299, t291, std::fma(t299, t191, t27) + t37) / t191);
-    const Real t339 = t320 + t338;
-    const Real t340 = t339 - t290;
-    const Real t341 = t322 - (t323 - t334) - (t44 + t334) + (t321 - (t322 - t304) - t52);
-    const Real t342 = t323 + t341;
-    const Real t343 = t342 - t33;
-    const Real t344 = t325 - (t326 - t335) + (t216 - t335) + (t324 - (t325 - t307) + std::fma(t237, t191, std::fma(t210, t293, t238)));
-    const Real t345 = t326 + t344;
-    const Real t346 = t345 + t173;
-    const Real t347 = t328 - (t329 - t336) - (t44 + t336) + (t327 - (t328 - t310) - t52);
-    const Real t348 = t329 + t347;
-    const Real t349 = t348 - t33;
-    const Real t350 = t331 - (t332 - t337) + (t216 - t337) + (t330 - (t331 - t313) + std::fma(t237, t191, std::fma(t210, t295, t238)));
-    const Real t351 = t332 + t350;
-    const Real t352 = t351 + t173;
-    const Real t353 = t340 - t339;
-    const Real t354 = t343 - t342;
-    const Real t355 = t346 - t345;
-    const Real t356 = t349 - t348;
-    const Real t357 = t352 - t351;
-    const Real t358 = t339 - (t340 - t353) - (t290 + t353) + (t338 - (t339 - t320) - std::fma(t301, t291, std::fma(t301, t191, t47) + t55) / t191);
-    const Real t359 = t340 + t358;
-    const Real t360 = t70 * t359;
-    const Real t361 = t360 / t191;
-    const Real t362 = t342 - (t343 - t354) - (t33 + t354) + (t341 - (t342 - t323) - t39);
-    const Real t363 = t343 + t362;
-    const Real t364 = t363 + t45;
-    const Real t365 = t345 - (t346 - t355) + (t173 - t355) + (t344 - (t345 - t326) + t181);
-    const Real t366 = t346 + t365;
-    const Real t367 = t366 - t177;
-    const Real t368 = t348 - (t349 - t356) - (t33 + t356) + (t347 - (t348 - t329) - t39);
-    const Real t369 = t349 + t368;
-    const Real t370 = t369 + t45;
-    const Real t371 = t351 - (t352 - t357) + (t173 - t357) + (t350 - (t351 - t332) + t181);
-    const Real t372 = t352 + t371;
-    const Real t373 = t372 - t177;
-    const Real t374 = -t361;
-    const Real t375 = t374 * t1;
-    const Real t376 = t374 * t11;
-    const Real t377 = t364 - t363;
-    const Real t378 = t367 - t366;
-    const Real t379 = t370 - t369;
-    const Real t380 = t373 - t372;
-    const Real t381 = t363 - (t364 - t377) + (t45 - t377) + (t362 - (t363 - t343) + t53);
-    const Real t382 = t364 + t381;
-    const Real t383 = t123 * t382;
-    const Real t384 = t383 * t65;
-    const Real t385 = t384 / t285;
-    const Real t386 = t366 - (t367 - t378) - (t177 + t378) + (t365 - (t366 - t346) - t183);
-    const Real t387 = t367 + t386;
-    const Real t388 = t387 - t175;
-    const Real t389 = t369 - (t370 - t379) + (t45 - t379) + (t368 - (t369 - t349) + t53);
-    const Real t390 = t370 + t389;
-    const Real t391 = t123 * t390;
-    const Real t392 = t391 * t65;
-    const Real t393 = t392 / t286;
-    const Real t394 = t372 - (t373 - t380) - (t177 + t380) + (t371 - (t372 - t352) - t183);
-    const Real t395 = t373 + t394;
-    const Real t396 = t395 - t175;
-    const Real t397 = -(std::fma(t374, t291, std::fma(t374, t191, t360) + std::fma(std::fma(M, t69, std::fma(M, t67, -t70)), t359, std::fma(t70, t358 - (t359 - t340), std::fma(t70, t359, -t360)))) / t191);
-    const Real t398 = -t385;
-    const Real t399 = t388 - t387;
-    const Real t400 = -t393;
-    const Real t401 = t396 - t395;
-    const Real t402 = t387 - (t388 - t399) - (t175 + t399) + (t386 - (t387 - t367) - t182);
-    const Real t403 = t388 + t402;
-    const Real t404 = t403 + t179;
-    const Real t405 = t395 - (t396 - t401) - (t175 + t401) + (t394 - (t395 - t373) - t182);
-    const Real t406 = t396 + t405;
-    const Real t407 = t406 + t179;
-    const Real t408 = t404 - t403;
-    const Real t409 = t407 - t406;
-    const Real t410 = t403 - (t404 - t408) + (t179 - t408) + (t402 - (t403 - t388) + t184);
-    const Real t411 = t404 + t410;
-    const Real t412 = t411 + t32;
-    const Real t413 = t406 - (t407 - t409) + (t179 - t409) + (t405 - (t406 - t396) + t184);
-    const Real t414 = t407 + t413;
-    const Real t415 = t414 + t32;
-    const Real t416 = t412 - t411;
-    const Real t417 = t415 - t414;
-    const Real t418 = t411 - (t412 - t416) + (t32 - t416) + (t410 - (t411 - t404) + t38);
-    const Real t419 = t412 + t418;
-    const Real t420 = t419 - t44;
-    const Real t421 = t414 - (t415 - t417) + (t32 - t417) + (t413 - (t414 - t407) + t38);
-    const Real t422 = t415 + t421;
-    const Real t423 = t422 - t44;
-    const Real t424 = t420 - t419;
-    const Real t425 = t423 - t422;
-    const Real t426 = t419 - (t420 - t424) - (t44 + t424) + (t418 - (t419 - t412) - t52);
-    const Real t427 = t420 + t426;
-    const Real t428 = t427 - t33;
-    const Real t429 = t422 - (t423 - t425) - (t44 + t425) + (t421 - (t422 - t415) - t52);
-    const Real t430 = t423 + t429;
-    const Real t431 = t430 - t33;
-    const Real t432 = t428 - t427;
-    const Real t433 = t431 - t430;
-    const Real t434 = t427 - (t428 - t432) - (t33 + t432) + (t426 - (t427 - t420) - t39);
-    const Real t435 = t428 + t434;
-    const Real t436 = t435 + t45;
-    const Real t437 = t430 - (t431 - t433) - (t33 + t433) + (t429 - (t430 - t423) - t39);
-    const Real t438 = t431 + t437;
-    const Real t439 = t438 + t45;
-    const Real t440 = t436 - t435;
-    const Real t441 = t439 - t438;
-    const Real t442 = t435 - (t436 - t440) + (t45 - t440) + (t434 - (t435 - t428) + t53);
-    const Real t443 = t436 + t442;
-    const Real t444 = t75 * t443;
-    const Real t445 = t444 / t282;
-    const Real t446 = (t281 > Real(0) ? t398 : t445);
-    const Real t447 = t446 / t191;
-    const Real t448 = t447 * t11;
-    const Real t449 = t447 * t191;
-    const Real t450 = t449 / t187;
-    const Real t451 = t375 - t448;
-    const Real t452 = t451 - t375;
-    const Real t453 = t438 - (t439 - t441) + (t45 - t441) + (t437 - (t438 - t431) + t53);
-    const Real t454 = t439 + t453;
-    const Real t455 = t75 * t454;
-    const Real t456 = t455 / t275;
-    const Real t457 = (t274 > Real(0) ? t400 : t456);
-    const Real t458 = t457 / t191;
-    const Real t459 = t458 * t1;
-    const Real t460 = t376 + t459;
-    const Real t461 = t460 - t376;
-    const Real t462 = -t445;
-    const Real t463 = -t447;
-    const Real t464 = -t450;
-    const Real t465 = -t456;
-    const Real t466 = -t458;
-    const Real t467 = std::fma(t463, t291, std::fma(t463, t191, t446) + (t281 > Real(0) ? -(std::fma(t398, std::fma(t292, t242, std::fma(t191, t242, -t243)), std::fma(t398, t243, t384) + std::fma(std::fma(t170, t382, std::fma(t123, t381 - (t382 - t364), std::fma(t123, t382, -t383))), t65, std::fma(t383, t66, std::fma(t383, t65, -t384)))) / t285) : std::fma(t462, std::fma(t83, t191, std::fma(t82, t293, t203)), std::fma(t462, t192, t444) + std::fma(t80, t443, std::fma(t75, t442 - (t443 - t436), std::fma(t75, t443, -t444)))) / t282)) / t191;
-    const Real t468 = t375 - (t451 - t452) - (t448 + t452) + (std::fma(t397, t1, std::fma(t374, t10, std::fma(t374, t1, -t375))) - std::fma(t467, t11, std::fma(t447, t23, std::fma(t447, t11, -t448))));
-    const Real t469 = t451 + t468;
-    const Real t470 = t469 / M;
-    const Real t471 = t376 - (t460 - t461) + (t459 - t461) + (std::fma(t397, t11, std::fma(t374, t23, std::fma(t374, t11, -t376))) + std::fma(std::fma(t466, t291, std::fma(t466, t191, t457) + (t274 > Real(0) ? -(std::fma(t400, std::fma(t294, t244, std::fma(t191, t244, -t245)), std::fma(t400, t245, t392) + std::fma(std::fma(t170, t390, std::fma(t123, t389 - (t390 - t370), std::fma(t123, t390, -t391))), t65, std::fma(t391, t66, std::fma(t391, t65, -t392)))) / t286) : std::fma(t465, std::fma(t83, t191, std::fma(t82, t295, t203)), std::fma(t465, t192, t455) + std::fma(t80, t454, std::fma(t75, t453 - (t454 - t439), std::fma(t75, t454, -t455)))) / t275)) / t191, t1, std::fma(t458, t10, std::fma(t458, t1, -t459))));
-    const Real t472 = t460 + t471;
-    const Real t473 = t472 / M;
-    const Real result0 = v_Mx + (t470 + (std::fma(-t470, M, t469) + (t468 - (t469 - t451))) / M);
-    const Real result1 = v_My + (t473 + (std::fma(-t473, M, t472) + (t471 - (t472 - t460))) / M);
+    const Real t395 = t40 / t207;
+    const Real t396 = t41 / t207;
+    const Real t397 = t59 / t207;
+    const Real t398 = t60 / t207;
+    const Real t399 = t216 / t217;
+    const Real t400 = t216 / t391;
+    const Real t401 = t216 / t392;
+    const Real t402 = -t395;
+    const Real t403 = t395 + t397;
+    const Real t404 = t403 - t395;
+    const Real t405 = -t396;
+    const Real t406 = -t397;
+    const Real t407 = -t398;
+    const Real t408 = t214 - (t230 - t231) + (t226 - t231) + (std::fma(t212, t207, std::fma(t203, t400, t219)) + std::fma(t240, t207, std::fma(t222, t400, t241)));
+    const Real t409 = t230 + t408;
+    const Real t410 = t409 + t46;
+    const Real t411 = t218 - (t220 - t221) + (t214 - t221) + (std::fma(std::fma(std::fma(R_M, b, -t210), w_M, std::fma(t210, w_M, -t211)), t207, std::fma(t211, t401, std::fma(t211, t207, -t218))) + std::fma(t212, t207, std::fma(t203, t401, t219)));
+    const Real t412 = t220 + t411;
+    const Real t413 = t412 + t239;
+    const Real t414 = t410 - t409;
+    const Real t415 = t413 - t412;
+    const Real t416 = t395 - (t403 - t404) + (t397 - t404) + (std::fma(t402, t399, std::fma(t402, t207, t40) + t49) / t207 + std::fma(t406, t399, std::fma(t406, t207, t59) + t66) / t207);
+    const Real t417 = t403 + t416;
+    const Real t418 = t417 - t396;
+    const Real t419 = t409 - (t410 - t414) + (t46 - t414) + (t408 - (t409 - t230) + t51);
+    const Real t420 = t410 + t419;
+    const Real t421 = t420 - t57;
+    const Real t422 = t412 - (t413 - t415) + (t239 - t415) + (t411 - (t412 - t220) + std::fma(std::fma(std::fma(R_m, b, -t223), w_m, std::fma(t223, w_m, -t238)), t207, std::fma(t238, t401, std::fma(t238, t207, -t239))));
+    const Real t423 = t413 + t422;
+    const Real t424 = t423 + t226;
+    const Real t425 = t418 - t417;
+    const Real t426 = t421 - t420;
+    const Real t427 = t424 - t423;
+    const Real t428 = t417 - (t418 - t425) - (t396 + t425) + (t416 - (t417 - t403) - std::fma(t405, t399, std::fma(t405, t207, t41) + t50) / t207);
+    const Real t429 = t418 + t428;
+    const Real t430 = t429 - t398;
+    const Real t431 = t420 - (t421 - t426) - (t57 + t426) + (t419 - (t420 - t410) - t64);
+    const Real t432 = t421 + t431;
+    const Real t433 = t432 - t47;
+    const Real t434 = t423 - (t424 - t427) + (t226 - t427) + (t422 - (t423 - t413) + std::fma(t240, t207, std::fma(t222, t401, t241)));
+    const Real t435 = t424 + t434;
+    const Real t436 = t435 + t196;
+    const Real t437 = t430 - t429;
+    const Real t438 = t433 - t432;
+    const Real t439 = t436 - t435;
+    const Real t440 = t429 - (t430 - t437) - (t398 + t437) + (t428 - (t429 - t418) - std::fma(t407, t399, std::fma(t407, t207, t60) + t67) / t207);
+    const Real t441 = t430 + t440;
+    const Real t442 = t81 * t441;
+    const Real t443 = t442 / t207;
+    const Real t444 = t432 - (t433 - t438) - (t47 + t438) + (t431 - (t432 - t421) - t52);
+    const Real t445 = t433 + t444;
+    const Real t446 = t445 + t58;
+    const Real t447 = t435 - (t436 - t439) + (t196 - t439) + (t434 - (t435 - t424) + std::fma(std::fma(b, v_Mx, -t195), t12, std::fma(t195, t23, std::fma(t195, t12, -t196))));
+    const Real t448 = t436 + t447;
+    const Real t449 = t448 - t200;
+    const Real t450 = -t443;
+    const Real t451 = t450 * t0;
+    const Real t452 = t450 * t12;
+    const Real t453 = t446 - t445;
+    const Real t454 = t449 - t448;
+    const Real t455 = t445 - (t446 - t453) + (t58 - t453) + (t444 - (t445 - t433) + t65);
+    const Real t456 = t446 + t455;
+    const Real t457 = t106 * t456;
+    const Real t458 = t457 * t77;
+    const Real t459 = t458 / t393;
+    const Real t460 = t458 / t394;
+    const Real t461 = t448 - (t449 - t454) - (t200 + t454) + (t447 - (t448 - t436) - std::fma(std::fma(b, v_My, -t199), t0, std::fma(t199, t7, std::fma(t199, t0, -t200))));
+    const Real t462 = t449 + t461;
+    const Real t463 = t462 - t198;
+    const Real t464 = -(std::fma(t450, t399, std::fma(t450, t207, t442) + std::fma(std::fma(M, t80, std::fma(M, t78, -t81)), t441, std::fma(t81, t440 - (t441 - t430), std::fma(t81, t441, -t442)))) / t207);
+    const Real t465 = t455 - (t456 - t446);
+    const Real t466 = (t456 > Real(0) ? t456 : -t456);
+    const Real t467 = t207 * t466;
+    const Real t468 = std::fma(std::fma(std::fma(std::fma(M, mu, -t105), t78, std::fma(t105, t80, std::fma(t105, t78, -t106))), t456, std::fma(t106, t465, std::fma(t106, t456, -t457))), t77, std::fma(t457, t76 - (t77 - t74), std::fma(t457, t77, -t458)));
+    const Real t469 = -t459;
+    const Real t470 = -t460;
+    const Real t471 = t463 - t462;
+    const Real t472 = std::fma(t400, t466, std::fma(t207, (t456 > Real(0) ? t465 : -t465), std::fma(t207, t466, -t467)));
+    const Real t473 = t462 - (t463 - t471) - (t198 + t471) + (t461 - (t462 - t449) - std::fma(std::fma(b, v_mx, -t197), t12, std::fma(t197, t23, std::fma(t197, t12, -t198))));
+    const Real t474 = t463 + t473;
+    const Real t475 = t474 + t202;
+    const Real t476 = t475 - t474;
+    const Real t477 = t474 - (t475 - t476) + (t202 - t476) + (t473 - (t474 - t463) + std::fma(std::fma(b, v_my, -t201), t0, std::fma(t201, t7, std::fma(t201, t0, -t202))));
+    const Real t478 = t475 + t477;
+    const Real t479 = t478 + t46;
+    const Real t480 = t479 - t478;
+    const Real t481 = t478 - (t479 - t480) + (t46 - t480) + (t477 - (t478 - t475) + t51);
+    const Real t482 = t479 + t481;
+    const Real t483 = t482 - t57;
+    const Real t484 = t483 - t482;
+    const Real t485 = t482 - (t483 - t484) - (t57 + t484) + (t481 - (t482 - t479) - t64);
+    const Real t486 = t483 + t485;
+    const Real t487 = t486 - t47;
+    const Real t488 = t487 - t486;
+    const Real t489 = t486 - (t487 - t488) - (t47 + t488) + (t485 - (t486 - t483) - t52);
+    const Real t490 = t487 + t489;
+    const Real t491 = t490 + t58;
+    const Real t492 = t491 - t490;
+    const Real t493 = t490 - (t491 - t492) + (t58 - t492) + (t489 - (t490 - t487) + t65);
+    const Real t494 = t491 + t493;
+    const Real t495 = t86 * t494;
+    const Real t496 = t495 / t390;
+    const Real t497 = (t389 > Real(0) ? t469 : t496);
+    const Real t498 = t497 / t207;
+    const Real t499 = t498 * t12;
+    const Real t500 = (t389 > Real(0) ? t470 : t496);
+    const Real t501 = t500 / t207;
+    const Real t502 = t501 * t0;
+    const Real t503 = t501 * t207;
+    const Real t504 = t503 / t205;
+    const Real t505 = t451 - t499;
+    const Real t506 = t505 - t451;
+    const Real t507 = t452 + t502;
+    const Real t508 = t507 - t452;
+    const Real t509 = -t496;
+    const Real t510 = -t498;
+    const Real t511 = -t501;
+    const Real t512 = -t504;
+    const Real t513 = std::fma(t509, std::fma(t90 - (t91 - t87), t207, std::fma(t91, t401, std::fma(t91, t207, -t209))), std::fma(t509, t209, t495) + std::fma(std::fma(std::fma(M, q_M, -t85), q_m, std::fma(t85, q_m, -t86)), t494, std::fma(t86, t493 - (t494 - t491), std::fma(t86, t494, -t495)))) / t390;
+    const Real t514 = std::fma(t511, t399, std::fma(t511, t207, t500) + (t389 > Real(0) ? -(std::fma(t470, t472, std::fma(t470, t467, t458) + t468) / t394) : t513)) / t207;
+    const Real t515 = t451 - (t505 - t506) - (t499 + t506) + (std::fma(t464, t0, std::fma(t450, t7, std::fma(t450, t0, -t451))) - std::fma(std::fma(t510, t399, std::fma(t510, t207, t497) + (t389 > Real(0) ? -(std::fma(t469, t472, std::fma(t469, t467, t458) + t468) / t393) : t513)) / t207, t12, std::fma(t498, t23, std::fma(t498, t12, -t499))));
+    const Real t516 = t505 + t515;
+    const Real t517 = t516 / M;
+    const Real t518 = t452 - (t507 - t508) + (t502 - t508) + (std::fma(t464, t12, std::fma(t450, t23, std::fma(t450, t12, -t452))) + std::fma(t514, t0, std::fma(t501, t7, std::fma(t501, t0, -t502))));
+    const Real t519 = t507 + t518;
+    const Real t520 = t519 / M;
+    const Real result0 = v_Mx + (t517 + (std::fma(-t517, M, t516) + (t515 - (t516 - t505))) / M);
+    const Real result1 = v_My + (t520 + (std::fma(-t520, M, t519) + (t518 - (t519 - t507))) / M);
     const Real result2 = v_mx;
     const Real result3 = v_my;
-    const Real result4 = w_M + (t464 + -(std::fma(t464, std::fma(std::fma(M, R_M, -t186), q_M, std::fma(t186, q_M, -t187)), std::fma(t464, t187, t449) + std::fma(t467, t191, std::fma(t447, t291, std::fma(t447, t191, -t449)))) / t187));
+    const Real result4 = w_M + (t512 + -(std::fma(t512, std::fma(std::fma(M, R_M, -t204), q_M, std::fma(t204, q_M, -t205)), std::fma(t512, t205, t503) + std::fma(t514, t207, std::fma(t501, t399, std::fma(t501, t207, -t503)))) / t205));
     const Real result5 = w_m;
-    if (!detail::finite(t217) || !detail::finite(t220) || !detail::finite(t225) || !detail::finite(t234) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+    if (!detail::finite(t236) || !detail::finite(t237) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && t4 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t7) < std::numeric_limits<Real>::min() && C_Mx != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t8) < std::numeric_limits<Real>::min() && (t8 != Real(0) || (t3 == Real(0) && t0 != Real(0) && t7 != Real(0)))) ||
-        (std::fabs(t9) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
-        (std::fabs(t13) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t15) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && t15 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && C_My != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && (t19 != Real(0) || (t14 == Real(0) && t0 != Real(0) && t18 != Real(0)))) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t11 != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t29) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t30) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t40) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_My != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_my != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_My != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && v_my != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && M != Real(0) && t67 != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && t71 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t75) < std::numeric_limits<Real>::min() && t74 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t72 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && mu != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && mu != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && t97 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t97 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && mu != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && mu != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && eps != Real(0) && mu != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t110 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t110 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t113 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t113 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t116 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t116 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && t67 != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t134) < std::numeric_limits<Real>::min() && t124 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t135) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && t71 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t138) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t139) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t141) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t142) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t143) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t144) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t145) < std::numeric_limits<Real>::min() && t144 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t146) < std::numeric_limits<Real>::min() && t144 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t147) < std::numeric_limits<Real>::min() && t137 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t148) < std::numeric_limits<Real>::min() && t147 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t149) < std::numeric_limits<Real>::min() && t147 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t150) < std::numeric_limits<Real>::min() && t73 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t151) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t152) < std::numeric_limits<Real>::min() && t151 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t153) < std::numeric_limits<Real>::min() && t151 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t154) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t155) < std::numeric_limits<Real>::min() && t154 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t156) < std::numeric_limits<Real>::min() && t154 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t157) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t158) < std::numeric_limits<Real>::min() && t157 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t159) < std::numeric_limits<Real>::min() && t157 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t160) < std::numeric_limits<Real>::min() && t150 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t161) < std::numeric_limits<Real>::min() && t160 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t162) < std::numeric_limits<Real>::min() && t160 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t163) < std::numeric_limits<Real>::min() && (t163 != Real(0) || (t86 == Real(0) && t77 != Real(0) && t153 != Real(0)))) ||
-        (std::fabs(t164) < std::numeric_limits<Real>::min() && (t164 != Real(0) || (t163 == Real(0) && q_M != Real(0) && t158 != Real(0)))) ||
-        (std::fabs(t165) < std::numeric_limits<Real>::min() && (t165 != Real(0) || (t164 == Real(0) && t77 != Real(0) && t159 != Real(0)))) ||
-        (std::fabs(t166) < std::numeric_limits<Real>::min() && (t166 != Real(0) || (t165 == Real(0) && t77 != Real(0) && t155 != Real(0)))) ||
-        (std::fabs(t167) < std::numeric_limits<Real>::min() && (t167 != Real(0) || (t166 == Real(0) && q_M != Real(0) && t156 != Real(0)))) ||
-        (std::fabs(t168) < std::numeric_limits<Real>::min() && (t168 != Real(0) || (t167 == Real(0) && t77 != Real(0) && t161 != Real(0)))) ||
-        (std::fabs(t169) < std::numeric_limits<Real>::min() && (t169 != Real(0) || (t168 == Real(0) && q_M != Real(0) && t162 != Real(0)))) ||
-        (std::fabs(t171) < std::numeric_limits<Real>::min() && t71 != Real(0) && b != Real(0)) ||
-        (std::fabs(t172) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t173) < std::numeric_limits<Real>::min() && t172 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t174) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t175) < std::numeric_limits<Real>::min() && t174 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t176) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t177) < std::numeric_limits<Real>::min() && t176 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t178) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t179) < std::numeric_limits<Real>::min() && t178 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t180) < std::numeric_limits<Real>::min() && q_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t186) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
-        (std::fabs(t187) < std::numeric_limits<Real>::min() && t186 != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && t82 != Real(0) && t191 != Real(0)) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t194) < std::numeric_limits<Real>::min() && t193 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t195) < std::numeric_limits<Real>::min() && t185 != Real(0) && t189 != Real(0)) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && t185 != Real(0) && t191 != Real(0)) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && t185 != Real(0) && t188 != Real(0)) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && t185 != Real(0) && t190 != Real(0)) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && t194 != Real(0) && t191 != Real(0)) ||
-        (std::fabs(t210) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t212) < std::numeric_limits<Real>::min() && t210 != Real(0) && t188 != Real(0)) ||
-        (std::fabs(t213) < std::numeric_limits<Real>::min() && w_m != Real(0) && t188 != Real(0)) ||
-        (std::fabs(t214) < std::numeric_limits<Real>::min() && t210 != Real(0) && t189 != Real(0)) ||
-        (std::fabs(t215) < std::numeric_limits<Real>::min() && w_m != Real(0) && t190 != Real(0)) ||
-        (std::fabs(t216) < std::numeric_limits<Real>::min() && t210 != Real(0) && t191 != Real(0)) ||
-        (std::fabs(t221) < std::numeric_limits<Real>::min() && (t221 != Real(0) || (t198 == Real(0) && R_m != Real(0) && t213 != Real(0)))) ||
-        (std::fabs(t222) < std::numeric_limits<Real>::min() && (t222 != Real(0) || (t221 == Real(0) && v_Mx != Real(0) && t11 != Real(0)))) ||
-        (std::fabs(t223) < std::numeric_limits<Real>::min() && (t223 != Real(0) || (t222 == Real(0) && t50 != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t224) < std::numeric_limits<Real>::min() && (t224 != Real(0) || (t223 == Real(0) && t35 != Real(0) && t11 != Real(0)))) ||
-        (std::fabs(t225) < std::numeric_limits<Real>::min() && (t225 != Real(0) || (t224 == Real(0) && v_my != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t226) < std::numeric_limits<Real>::min() && (t226 != Real(0) || (t199 == Real(0) && R_m != Real(0) && t215 != Real(0)))) ||
-        (std::fabs(t227) < std::numeric_limits<Real>::min() && (t227 != Real(0) || (t226 == Real(0) && v_Mx != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t228) < std::numeric_limits<Real>::min() && (t228 != Real(0) || (t227 == Real(0) && t34 != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t229) < std::numeric_limits<Real>::min() && (t229 != Real(0) || (t228 == Real(0) && t50 != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t230) < std::numeric_limits<Real>::min() && (t230 != Real(0) || (t229 == Real(0) && v_My != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t231) < std::numeric_limits<Real>::min() && (t231 != Real(0) || (t230 == Real(0) && t35 != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t232) < std::numeric_limits<Real>::min() && (t232 != Real(0) || (t231 == Real(0) && v_mx != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t233) < std::numeric_limits<Real>::min() && (t233 != Real(0) || (t232 == Real(0) && v_my != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t234) < std::numeric_limits<Real>::min() && (t234 != Real(0) || (t233 == Real(0) && t51 != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t235) < std::numeric_limits<Real>::min() && t211 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t236) < std::numeric_limits<Real>::min() && t235 != Real(0) && t191 != Real(0)) ||
-        (std::fabs(t239) < std::numeric_limits<Real>::min() && t239 != Real(0)) ||
-        (std::fabs(t240) < std::numeric_limits<Real>::min() && t71 != Real(0) && t239 != Real(0)) ||
-        (std::fabs(t241) < std::numeric_limits<Real>::min() && t171 != Real(0) && t239 != Real(0)) ||
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
+        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
+        (std::fabs(t40) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t47) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t81) < std::numeric_limits<Real>::min() && M != Real(0) && t78 != Real(0)) ||
+        (std::fabs(t82) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && t82 != Real(0) && eps != Real(0)) ||
+        (std::fabs(t84) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
+        (std::fabs(t85) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t92) < std::numeric_limits<Real>::min() && t83 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t93) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t95) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t96) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && t78 != Real(0)) ||
+        (std::fabs(t107) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t111 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && t111 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t82 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t124 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t124 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && t127 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && t127 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && t130 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t132) < std::numeric_limits<Real>::min() && t130 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t133) < std::numeric_limits<Real>::min() && t84 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t138) < std::numeric_limits<Real>::min() && t137 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t139) < std::numeric_limits<Real>::min() && t137 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t140) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && t140 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t142) < std::numeric_limits<Real>::min() && t140 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t143) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t144) < std::numeric_limits<Real>::min() && t143 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t145) < std::numeric_limits<Real>::min() && t143 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t194) < std::numeric_limits<Real>::min() && t82 != Real(0) && b != Real(0)) ||
+        (std::fabs(t195) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t196) < std::numeric_limits<Real>::min() && t195 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t199) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t200) < std::numeric_limits<Real>::min() && t199 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && t201 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t204) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
+        (std::fabs(t205) < std::numeric_limits<Real>::min() && t204 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t209) < std::numeric_limits<Real>::min() && t91 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t210) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t211) < std::numeric_limits<Real>::min() && t210 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t203 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t214) < std::numeric_limits<Real>::min() && t203 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t215) < std::numeric_limits<Real>::min() && t203 != Real(0) && t206 != Real(0)) ||
+        (std::fabs(t218) < std::numeric_limits<Real>::min() && t211 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t222) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t223) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && w_m != Real(0) && t206 != Real(0)) ||
+        (std::fabs(t225) < std::numeric_limits<Real>::min() && t222 != Real(0) && t206 != Real(0)) ||
+        (std::fabs(t226) < std::numeric_limits<Real>::min() && t222 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t227) < std::numeric_limits<Real>::min() && t222 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t232) < std::numeric_limits<Real>::min() && (t232 != Real(0) || (t215 == Real(0) && R_m != Real(0) && t224 != Real(0)))) ||
+        (std::fabs(t233) < std::numeric_limits<Real>::min() && (t233 != Real(0) || (t232 == Real(0) && v_Mx != Real(0) && t12 != Real(0)))) ||
+        (std::fabs(t234) < std::numeric_limits<Real>::min() && (t234 != Real(0) || (t233 == Real(0) && t63 != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && (t235 != Real(0) || (t234 == Real(0) && t48 != Real(0) && t12 != Real(0)))) ||
+        (std::fabs(t236) < std::numeric_limits<Real>::min() && (t236 != Real(0) || (t235 == Real(0) && v_my != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t238) < std::numeric_limits<Real>::min() && t223 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t239) < std::numeric_limits<Real>::min() && t238 != Real(0) && t207 != Real(0)) ||
         (std::fabs(t242) < std::numeric_limits<Real>::min() && t242 != Real(0)) ||
-        (std::fabs(t243) < std::numeric_limits<Real>::min() && t191 != Real(0) && t242 != Real(0)) ||
+        (std::fabs(t243) < std::numeric_limits<Real>::min() && t206 != Real(0) && t242 != Real(0)) ||
         (std::fabs(t244) < std::numeric_limits<Real>::min() && t244 != Real(0)) ||
-        (std::fabs(t245) < std::numeric_limits<Real>::min() && t191 != Real(0) && t244 != Real(0)) ||
-        (std::fabs(t246) < std::numeric_limits<Real>::min() && t246 != Real(0)) ||
-        (std::fabs(t247) < std::numeric_limits<Real>::min() && q_m != Real(0) && t246 != Real(0)) ||
-        (std::fabs(t248) < std::numeric_limits<Real>::min() && t180 != Real(0) && t246 != Real(0)) ||
-        (std::fabs(t249) < std::numeric_limits<Real>::min() && (t249 != Real(0) || (t169 == Real(0) && q_M != Real(0) && t248 != Real(0)))) ||
-        (std::fabs(t250) < std::numeric_limits<Real>::min() && (t250 != Real(0) || (t249 == Real(0) && q_M != Real(0) && t126 != Real(0)))) ||
-        (std::fabs(t251) < std::numeric_limits<Real>::min() && (t251 != Real(0) || (t250 == Real(0) && t77 != Real(0) && t127 != Real(0)))) ||
-        (std::fabs(t252) < std::numeric_limits<Real>::min() && (t252 != Real(0) || (t251 == Real(0) && q_M != Real(0) && t132 != Real(0)))) ||
-        (std::fabs(t253) < std::numeric_limits<Real>::min() && (t253 != Real(0) || (t252 == Real(0) && t77 != Real(0) && t133 != Real(0)))) ||
-        (std::fabs(t254) < std::numeric_limits<Real>::min() && (t254 != Real(0) || (t253 == Real(0) && t77 != Real(0) && t129 != Real(0)))) ||
-        (std::fabs(t255) < std::numeric_limits<Real>::min() && (t255 != Real(0) || (t254 == Real(0) && q_M != Real(0) && t130 != Real(0)))) ||
-        (std::fabs(t256) < std::numeric_limits<Real>::min() && (t256 != Real(0) || (t255 == Real(0) && t77 != Real(0) && t135 != Real(0)))) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && (t257 != Real(0) || (t256 == Real(0) && q_M != Real(0) && t136 != Real(0)))) ||
-        (std::fabs(t258) < std::numeric_limits<Real>::min() && (t258 != Real(0) || (t257 == Real(0) && q_M != Real(0) && t247 != Real(0)))) ||
-        (std::fabs(t259) < std::numeric_limits<Real>::min() && (t259 != Real(0) || (t258 == Real(0) && q_m != Real(0) && t111 != Real(0)))) ||
-        (std::fabs(t260) < std::numeric_limits<Real>::min() && (t260 != Real(0) || (t259 == Real(0) && t78 != Real(0) && t112 != Real(0)))) ||
-        (std::fabs(t261) < std::numeric_limits<Real>::min() && (t261 != Real(0) || (t260 == Real(0) && q_m != Real(0) && t117 != Real(0)))) ||
-        (std::fabs(t262) < std::numeric_limits<Real>::min() && (t262 != Real(0) || (t261 == Real(0) && t78 != Real(0) && t118 != Real(0)))) ||
-        (std::fabs(t263) < std::numeric_limits<Real>::min() && (t263 != Real(0) || (t262 == Real(0) && t78 != Real(0) && t114 != Real(0)))) ||
-        (std::fabs(t264) < std::numeric_limits<Real>::min() && (t264 != Real(0) || (t263 == Real(0) && q_m != Real(0) && t115 != Real(0)))) ||
-        (std::fabs(t265) < std::numeric_limits<Real>::min() && (t265 != Real(0) || (t264 == Real(0) && t78 != Real(0) && t120 != Real(0)))) ||
-        (std::fabs(t266) < std::numeric_limits<Real>::min() && (t266 != Real(0) || (t265 == Real(0) && q_m != Real(0) && t121 != Real(0)))) ||
-        (std::fabs(t267) < std::numeric_limits<Real>::min() && (t267 != Real(0) || (t266 == Real(0) && q_m != Real(0) && t92 != Real(0)))) ||
-        (std::fabs(t268) < std::numeric_limits<Real>::min() && (t268 != Real(0) || (t267 == Real(0) && t78 != Real(0) && t93 != Real(0)))) ||
-        (std::fabs(t269) < std::numeric_limits<Real>::min() && (t269 != Real(0) || (t268 == Real(0) && q_m != Real(0) && t104 != Real(0)))) ||
-        (std::fabs(t270) < std::numeric_limits<Real>::min() && (t270 != Real(0) || (t269 == Real(0) && t78 != Real(0) && t105 != Real(0)))) ||
-        (std::fabs(t271) < std::numeric_limits<Real>::min() && (t271 != Real(0) || (t270 == Real(0) && t78 != Real(0) && t95 != Real(0)))) ||
-        (std::fabs(t272) < std::numeric_limits<Real>::min() && (t272 != Real(0) || (t271 == Real(0) && q_m != Real(0) && t96 != Real(0)))) ||
-        (std::fabs(t273) < std::numeric_limits<Real>::min() && (t273 != Real(0) || (t272 == Real(0) && t78 != Real(0) && t107 != Real(0)))) ||
-        (std::fabs(t274) < std::numeric_limits<Real>::min() && (t274 != Real(0) || (t273 == Real(0) && q_m != Real(0) && t108 != Real(0)))) ||
-        (std::fabs(t287) < std::numeric_limits<Real>::min() && t26 != Real(0)) ||
-        (std::fabs(t288) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
-        (std::fabs(t289) < std::numeric_limits<Real>::min() && t46 != Real(0)) ||
-        (std::fabs(t290) < std::numeric_limits<Real>::min() && t47 != Real(0)) ||
-        (std::fabs(t360) < std::numeric_limits<Real>::min() && t70 != Real(0) && t359 != Real(0)) ||
-        (std::fabs(t361) < std::numeric_limits<Real>::min() && t360 != Real(0)) ||
-        (std::fabs(t375) < std::numeric_limits<Real>::min() && t374 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t376) < std::numeric_limits<Real>::min() && t374 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t383) < std::numeric_limits<Real>::min() && t123 != Real(0) && t382 != Real(0)) ||
-        (std::fabs(t384) < std::numeric_limits<Real>::min() && t383 != Real(0) && t65 != Real(0)) ||
-        (std::fabs(t385) < std::numeric_limits<Real>::min() && t384 != Real(0)) ||
-        (std::fabs(t391) < std::numeric_limits<Real>::min() && t123 != Real(0) && t390 != Real(0)) ||
-        (std::fabs(t392) < std::numeric_limits<Real>::min() && t391 != Real(0) && t65 != Real(0)) ||
-        (std::fabs(t393) < std::numeric_limits<Real>::min() && t392 != Real(0)) ||
-        (std::fabs(t444) < std::numeric_limits<Real>::min() && t75 != Real(0) && t443 != Real(0)) ||
-        (std::fabs(t445) < std::numeric_limits<Real>::min() && t444 != Real(0)) ||
-        (std::fabs(t447) < std::numeric_limits<Real>::min() && t446 != Real(0)) ||
-        (std::fabs(t448) < std::numeric_limits<Real>::min() && t447 != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t449) < std::numeric_limits<Real>::min() && t447 != Real(0) && t191 != Real(0)) ||
-        (std::fabs(t450) < std::numeric_limits<Real>::min() && t449 != Real(0)) ||
-        (std::fabs(t455) < std::numeric_limits<Real>::min() && t75 != Real(0) && t454 != Real(0)) ||
-        (std::fabs(t456) < std::numeric_limits<Real>::min() && t455 != Real(0)) ||
-        (std::fabs(t458) < std::numeric_limits<Real>::min() && t457 != Real(0)) ||
-        (std::fabs(t459) < std::numeric_limits<Real>::min() && t458 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t470) < std::numeric_limits<Real>::min() && t469 != Real(0)) ||
-        (std::fabs(t473) < std::numeric_limits<Real>::min() && t472 != Real(0))) {
+        (std::fabs(t245) < std::numeric_limits<Real>::min() && t206 != Real(0) && t244 != Real(0)) ||
+        (std::fabs(t282) < std::numeric_limits<Real>::min() && t82 != Real(0) && t281 != Real(0)) ||
+        (std::fabs(t283) < std::numeric_limits<Real>::min() && t194 != Real(0) && t281 != Real(0)) ||
+        (std::fabs(t395) < std::numeric_limits<Real>::min() && t40 != Real(0)) ||
+        (std::fabs(t396) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
+        (std::fabs(t397) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
+        (std::fabs(t398) < std::numeric_limits<Real>::min() && t60 != Real(0)) ||
+        (std::fabs(t442) < std::numeric_limits<Real>::min() && t81 != Real(0) && t441 != Real(0)) ||
+        (std::fabs(t443) < std::numeric_limits<Real>::min() && t442 != Real(0)) ||
+        (std::fabs(t451) < std::numeric_limits<Real>::min() && t450 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t452) < std::numeric_limits<Real>::min() && t450 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t457) < std::numeric_limits<Real>::min() && t106 != Real(0) && t456 != Real(0)) ||
+        (std::fabs(t458) < std::numeric_limits<Real>::min() && t457 != Real(0) && t77 != Real(0)) ||
+        (std::fabs(t459) < std::numeric_limits<Real>::min() && t458 != Real(0)) ||
+        (std::fabs(t460) < std::numeric_limits<Real>::min() && t458 != Real(0)) ||
+        (std::fabs(t467) < std::numeric_limits<Real>::min() && t207 != Real(0) && t466 != Real(0)) ||
+        (std::fabs(t495) < std::numeric_limits<Real>::min() && t86 != Real(0) && t494 != Real(0)) ||
+        (std::fabs(t496) < std::numeric_limits<Real>::min() && t495 != Real(0)) ||
+        (std::fabs(t498) < std::numeric_limits<Real>::min() && t497 != Real(0)) ||
+        (std::fabs(t499) < std::numeric_limits<Real>::min() && t498 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t501) < std::numeric_limits<Real>::min() && t500 != Real(0)) ||
+        (std::fabs(t502) < std::numeric_limits<Real>::min() && t501 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t503) < std::numeric_limits<Real>::min() && t501 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t504) < std::numeric_limits<Real>::min() && t503 != Real(0)) ||
+        (std::fabs(t517) < std::numeric_limits<Real>::min() && t516 != Real(0)) ||
+        (std::fabs(t520) < std::numeric_limits<Real>::min() && t519 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -1652,26 +1504,26 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 ///   b: tangential restitution: \f$-1\f$ for smooth spheres, \f$1\f$ for perfectly rough ones ([-1, 1], a pure number)
 ///   mu: Coulomb's coefficient of friction (\f$+\infty\f$: the contact never slides) ([0, +inf], a pure number)
-/// v_M[0] is computed in the form "v_Mx + dv_Mx, compensated let": at most 0.97 ulps in double on 4200 samples.
-/// v_M[1] is computed in the form "v_My + dv_My, compensated let": at most 1.08 ulps in double on 4200 samples.
-/// v_m[0] is computed in the form "v_mx + dv_mx, fma, compensated let": at most 1.13 ulps in double on 4200 samples.
-/// v_m[1] is computed in the form "v_my + dv_my, fma, compensated let": at most 0.99 ulps in double on 4200 samples.
-/// w_M is computed in the form "w_M + dw_M, fma, compensated let": at most 3.53 ulps in double on 4200 samples.
-/// w_m is computed in the form "w_m + dw_m, fma, compensated let": at most 2.76 ulps in double on 4200 samples.
+/// v_M[0] is computed in the form "v_Mx + dv_Mx, compensated let": at most 1.31 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My + dv_My, compensated let": at most 1.27 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + dv_mx, compensated let": at most 0.97 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + dv_my, compensated let": at most 1.37 ulps in double on 4200 samples.
+/// w_M is computed in the form "w_M + dw_M, compensated let": at most 2.38 ulps in double on 4200 samples.
+/// w_m is computed in the form "w_m + dw_m, compensated let": at most 1.73 ulps in double on 4200 samples.
 /// M or m may be +infinity, one at a time: a fixed sphere, an obstacle the impulse does not move. Every
 /// output is then its limit as that mass grows without bound, derived and proven
 /// (momentum is not conserved: the obstacle takes the impulse).
 /// With M = +infinity, v_M[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double.
 /// With M = +infinity, v_M[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double.
-/// With M = +infinity, v_m[0] is computed in the form "limit of v_mx + dv_mx, fma, compensated let": at most 1.38 ulps in double.
-/// With M = +infinity, v_m[1] is computed in the form "limit of v_my + dv_my, compensated let": at most 1.46 ulps in double.
+/// With M = +infinity, v_m[0] is computed in the form "limit of v_mx + dv_mx, compensated let": at most 0.98 ulps in double.
+/// With M = +infinity, v_m[1] is computed in the form "limit of v_my + dv_my, compensated let": at most 0.99 ulps in double.
 /// With M = +infinity, w_M is computed in the form "limit of display, compensated let": at most 0.00 ulps in double.
-/// With M = +infinity, w_m is computed in the form "limit of w_m + dw_m, compensated let": at most 1.98 ulps in double.
-/// With m = +infinity, v_M[0] is computed in the form "limit of v_Mx + dv_Mx, compensated let": at most 1.21 ulps in double.
-/// With m = +infinity, v_M[1] is computed in the form "limit of v_My + dv_My, fma, compensated let": at most 1.41 ulps in double.
+/// With M = +infinity, w_m is computed in the form "limit of w_m + dw_m, compensated let": at most 2.01 ulps in double.
+/// With m = +infinity, v_M[0] is computed in the form "limit of v_Mx + dv_Mx, fma, compensated let": at most 1.39 ulps in double.
+/// With m = +infinity, v_M[1] is computed in the form "limit of v_My + dv_My, compensated let": at most 1.18 ulps in double.
 /// With m = +infinity, v_m[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double.
 /// With m = +infinity, v_m[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double.
-/// With m = +infinity, w_M is computed in the form "limit of w_M + dw_M, compensated let": at most 2.00 ulps in double.
+/// With m = +infinity, w_M is computed in the form "limit of w_M + dw_M, compensated let": at most 3.76 ulps in double.
 /// With m = +infinity, w_m is computed in the form "limit of display, compensated let": at most 0.00 ulps in double.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged:
@@ -1758,397 +1610,306 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
     const Real t16 = t12 * t4;
     const Real t17 = v_Mx * t4;
     const Real t18 = v_mx * t4;
-    const Real t19 = -v_mx;
-    const Real t20 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
-    const Real t21 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
-    const Real t22 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17));
-    const Real t23 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t18));
-    const Real t24 = v_My - v_my;
-    const Real t25 = t24 * t0;
-    const Real t26 = v_My * t0;
-    const Real t27 = v_my * t0;
-    const Real t28 = t24 * t4;
-    const Real t29 = v_My * t4;
-    const Real t30 = v_my * t4;
-    const Real t31 = std::fma(t24, t4, t13);
-    const Real t32 = t13 + t28;
-    const Real t33 = t14 + t29;
-    const Real t34 = t33 - t14;
+    const Real t19 = t12 - v_Mx;
+    const Real t20 = -t13;
+    const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+    const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+    const Real t23 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17));
+    const Real t24 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t18));
+    const Real t25 = v_Mx - (t12 - t19) - (v_mx + t19);
+    const Real t26 = v_My - v_my;
+    const Real t27 = t26 * t0;
+    const Real t28 = v_My * t0;
+    const Real t29 = v_my * t0;
+    const Real t30 = t26 * t4;
+    const Real t31 = v_My * t4;
+    const Real t32 = v_my * t4;
+    const Real t33 = t13 + t30;
+    const Real t34 = t33 - t13;
+    const Real t35 = t14 + t31;
+    const Real t36 = t35 - t14;
     if (!(t7 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-t13 - t28 > Real(0))) {
+    if (!(t20 - t30 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t35 = -v_My;
-    const Real t36 = -t24;
-    const Real t37 = std::fma(v_My, t3, std::fma(v_My, t0, -t26));
-    const Real t38 = std::fma(v_my, t3, std::fma(v_my, t0, -t27));
-    const Real t39 = std::fma(v_My, t9, std::fma(v_My, t4, -t29));
-    const Real t40 = std::fma(v_my, t9, std::fma(v_my, t4, -t30));
-    const Real t41 = t14 - (t33 - t34) + (t29 - t34) + (t20 + t39);
-    const Real t42 = t33 + t41;
-    const Real t43 = t42 - t15;
-    const Real t44 = t43 - t42;
-    const Real t45 = t42 - (t43 - t44) - (t15 + t44) + (t41 - (t42 - t33) - t21);
-    const Real t46 = t43 + t45;
-    const Real t47 = t46 - t30;
-    const Real t48 = t47 - t46;
-    const Real t49 = t46 - (t47 - t48) - (t30 + t48) + (t45 - (t46 - t43) - t40);
-    const Real t50 = t47 + t49;
-    const Real t51 = t49 - (t50 - t47);
-    const Real t52 = M * m;
-    const Real t53 = M + m;
-    const Real t54 = t53 - M;
-    const Real t55 = std::fma(M, m, -t52);
-    const Real t56 = M - (t53 - t54) + (m - t54);
-    const Real t57 = Real(1) + eps;
-    const Real t58 = t52 * t57;
-    const Real t59 = t57 - Real(1);
-    const Real t60 = Real(1) - (t57 - t59) + (eps - t59);
-    const Real t61 = q_M * q_m;
-    const Real t62 = M * q_M;
-    const Real t63 = m * q_m;
-    const Real t64 = m * q_M;
-    const Real t65 = t52 * q_M;
-    const Real t66 = Real(1) + q_m;
-    const Real t67 = Real(1) + q_M;
-    const Real t68 = t65 * q_m;
-    const Real t69 = t62 * q_m;
-    const Real t70 = t64 * q_m;
-    const Real t71 = q_m * t67;
-    const Real t72 = t62 * t66;
-    const Real t73 = std::fma(m, t71, t72);
-    const Real t74 = t57 * t73;
-    const Real t75 = t74 * t31;
-    const Real t76 = std::fma(M, q_M, -t62);
-    const Real t77 = t62 + t69;
-    const Real t78 = t77 - t62;
-    const Real t79 = t63 * t67;
-    const Real t80 = std::fma(std::fma(t55, q_M, std::fma(t52, q_M, -t65)), q_m, std::fma(t65, q_m, -t68));
-    const Real t81 = t72 + t79;
-    const Real t82 = t62 - (t77 - t78) + (t69 - t78) + (t76 + std::fma(t76, q_m, std::fma(t62, q_m, -t69)));
-    const Real t83 = t77 + t82;
-    const Real t84 = t83 + t70;
-    const Real t85 = t84 - t83;
-    const Real t86 = t83 - (t84 - t85) + (t70 - t85) + (t82 - (t83 - t77) + std::fma(std::fma(m, q_M, -t64), q_m, std::fma(t64, q_m, -t70)));
-    const Real t87 = t84 + t86;
-    const Real t88 = t87 + t63;
-    const Real t89 = t88 - t87;
-    const Real t90 = t87 - (t88 - t89) + (t63 - t89) + (t86 - (t87 - t84) + std::fma(m, q_m, -t63));
-    const Real t91 = t88 + t90;
-    const Real t92 = t90 - (t91 - t88);
-    const Real t93 = Real(1) + b;
-    const Real t94 = b * v_Mx;
-    const Real t95 = t94 * t4;
-    const Real t96 = b * v_mx;
-    const Real t97 = t96 * t4;
-    const Real t98 = b * v_My;
-    const Real t99 = t98 * t0;
-    const Real t100 = b * v_my;
-    const Real t101 = t100 * t0;
-    const Real t102 = t61 * t93;
-    const Real t103 = t102 * t53;
-    const Real t104 = std::fma(std::fma(b, v_Mx, -t94), t4, std::fma(t94, t9, std::fma(t94, t4, -t95)));
-    const Real t105 = std::fma(std::fma(b, v_mx, -t96), t4, std::fma(t96, t9, std::fma(t96, t4, -t97)));
-    const Real t106 = std::fma(std::fma(b, v_My, -t98), t0, std::fma(t98, t3, std::fma(t98, t0, -t99)));
-    const Real t107 = std::fma(std::fma(b, v_my, -t100), t0, std::fma(t100, t3, std::fma(t100, t0, -t101)));
+    const Real t37 = t26 - v_My;
+    const Real t38 = std::fma(v_My, t3, std::fma(v_My, t0, -t28));
+    const Real t39 = std::fma(v_my, t3, std::fma(v_my, t0, -t29));
+    const Real t40 = std::fma(v_My, t9, std::fma(v_My, t4, -t31));
+    const Real t41 = std::fma(v_my, t9, std::fma(v_my, t4, -t32));
+    const Real t42 = v_My - (t26 - t37) - (v_my + t37);
+    const Real t43 = t14 - (t35 - t36) + (t31 - t36) + (t21 + t40);
+    const Real t44 = t35 + t43;
+    const Real t45 = t44 - t15;
+    const Real t46 = t13 - (t33 - t34) + (t30 - t34) + (std::fma(t25, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t42, t4, std::fma(t26, t9, std::fma(t26, t4, -t30))));
+    const Real t47 = t33 + t46;
+    const Real t48 = t45 - t44;
+    const Real t49 = t44 - (t45 - t48) - (t15 + t48) + (t43 - (t44 - t35) - t22);
+    const Real t50 = t45 + t49;
+    const Real t51 = t50 - t32;
+    const Real t52 = t51 - t50;
+    const Real t53 = t50 - (t51 - t52) - (t32 + t52) + (t49 - (t50 - t45) - t41);
+    const Real t54 = t51 + t53;
+    const Real t55 = M * m;
+    const Real t56 = M + m;
+    const Real t57 = t56 - M;
+    const Real t58 = std::fma(M, m, -t55);
+    const Real t59 = M - (t56 - t57) + (m - t57);
+    const Real t60 = Real(1) + eps;
+    const Real t61 = t55 * t60;
+    const Real t62 = t60 - Real(1);
+    const Real t63 = Real(1) - (t60 - t62) + (eps - t62);
+    const Real t64 = q_M * q_m;
+    const Real t65 = M * q_M;
+    const Real t66 = m * q_m;
+    const Real t67 = m * q_M;
+    const Real t68 = t55 * q_M;
+    const Real t69 = Real(1) + q_m;
+    const Real t70 = Real(1) + q_M;
+    const Real t71 = t68 * q_m;
+    const Real t72 = t65 * q_m;
+    const Real t73 = t67 * q_m;
+    const Real t74 = std::fma(M, q_M, -t65);
+    const Real t75 = t65 * t69;
+    const Real t76 = t65 + t72;
+    const Real t77 = t76 - t65;
+    const Real t78 = std::fma(m, q_m, -t66);
+    const Real t79 = t66 * t70;
+    const Real t80 = t69 - Real(1);
+    const Real t81 = t70 - Real(1);
+    const Real t82 = t75 + t79;
+    const Real t83 = t82 - t75;
+    const Real t84 = t65 - (t76 - t77) + (t72 - t77) + (t74 + std::fma(t74, q_m, std::fma(t65, q_m, -t72)));
+    const Real t85 = t76 + t84;
+    const Real t86 = t85 + t73;
+    const Real t87 = t86 - t85;
+    const Real t88 = t75 - (t82 - t83) + (t79 - t83) + (std::fma(t74, t69, std::fma(t65, Real(1) - (t69 - t80) + (q_m - t80), std::fma(t65, t69, -t75))) + std::fma(t78, t70, std::fma(t66, Real(1) - (t70 - t81) + (q_M - t81), std::fma(t66, t70, -t79))));
+    const Real t89 = t82 + t88;
+    const Real t90 = t85 - (t86 - t87) + (t73 - t87) + (t84 - (t85 - t76) + std::fma(std::fma(m, q_M, -t67), q_m, std::fma(t67, q_m, -t73)));
+    const Real t91 = t86 + t90;
+    const Real t92 = t91 + t66;
+    const Real t93 = t92 - t91;
+    const Real t94 = t91 - (t92 - t93) + (t66 - t93) + (t90 - (t91 - t86) + t78);
+    const Real t95 = t92 + t94;
+    const Real t96 = Real(1) + b;
+    const Real t97 = b * v_Mx;
+    const Real t98 = t97 * t4;
+    const Real t99 = b * v_mx;
+    const Real t100 = t99 * t4;
+    const Real t101 = b * v_My;
+    const Real t102 = t101 * t0;
+    const Real t103 = b * v_my;
+    const Real t104 = t103 * t0;
+    const Real t105 = t64 * t96;
+    const Real t106 = t105 * t56;
+    const Real t107 = t96 - Real(1);
     const Real t108 = R_M * w_M;
     const Real t109 = M * R_M;
     const Real t110 = t109 * q_M;
     const Real t111 = R_M * b;
     const Real t112 = t111 * w_M;
     const Real t113 = std::fma(R_M, w_M, -t108);
-    const Real t114 = std::fma(std::fma(R_M, b, -t111), w_M, std::fma(t111, w_M, -t112));
-    const Real t115 = R_m * w_m;
-    const Real t116 = m * R_m;
-    const Real t117 = t116 * q_m;
-    const Real t118 = std::sqrt(t7);
-    const Real t119 = std::sqrt(t11);
-    const Real t120 = t53 * t119;
-    const Real t121 = t91 * t119;
+    const Real t114 = R_m * w_m;
+    const Real t115 = m * R_m;
+    const Real t116 = t115 * q_m;
+    const Real t117 = std::sqrt(t7);
+    const Real t118 = std::sqrt(t11);
+    const Real t119 = t56 * t118;
+    const Real t120 = t56 * t117;
+    const Real t121 = t95 * t118;
     const Real t122 = R_m * b;
-    const Real t123 = t108 + t115;
-    const Real t124 = t108 * t119;
+    const Real t123 = t108 + t114;
+    const Real t124 = t123 - t108;
     const Real t125 = t108 * t118;
-    const Real t126 = std::fma(R_m, w_m, t108);
-    const Real t127 = t112 * t119;
+    const Real t126 = t108 * t117;
+    const Real t127 = t112 * t118;
     const Real t128 = t122 * w_m;
-    const Real t129 = w_m * t118;
-    const Real t130 = std::fma(R_m, t129, t125);
-    const Real t131 = std::fma(v_Mx, t4, t130);
-    const Real t132 = std::fma(t35, t0, t131);
-    const Real t133 = std::fma(t19, t4, t132);
-    const Real t134 = std::fma(v_my, t0, t133);
-    const Real t135 = std::fma(R_m, w_m, -t115);
-    const Real t136 = t115 * t119;
-    const Real t137 = t115 * t118;
-    const Real t138 = t123 * t118;
-    const Real t139 = t138 + t16 - t25;
-    const Real t140 = t126 * t118;
-    const Real t141 = std::fma(t12, t4, t140);
-    const Real t142 = std::fma(t36, t0, t141);
-    const Real t143 = std::fma(-t119, t119, t11) + (t10 - (t11 - t7));
-    const Real t144 = t119 + t119;
-    const Real t145 = t128 * t119;
-    const Real t146 = std::fma(t53, t119, -t120);
-    const Real t147 = std::fma(t91, t119, -t121);
-    const Real t148 = std::fma(t108, t119, -t124);
-    const Real t149 = t124 + t136;
-    const Real t150 = t149 - t124;
-    const Real t151 = t127 + t124;
-    const Real t152 = t125 + t137 + t17 - t26 - t18 + t27;
-    const Real t153 = std::fma(t112, t119, -t127);
-    const Real t154 = t151 - t127;
-    const Real t155 = std::fma(std::fma(R_m, b, -t122), w_m, std::fma(t122, w_m, -t128));
-    const Real t156 = std::fabs(t134);
-    const Real t157 = t120 * t156;
-    const Real t158 = std::fma(t115, t119, -t136);
-    const Real t159 = std::fabs(t139);
-    const Real t160 = t103 * t159;
-    const Real t161 = std::fabs(t142);
-    const Real t162 = t103 * t161;
-    const Real t163 = std::fma(t128, t119, -t145);
-    const Real t164 = std::fabs(t152);
-    const Real t165 = t120 * t164;
-    const Real t166 = t127 - (t151 - t154) + (t124 - t154);
-    const Real t167 = t124 - (t149 - t150) + (t136 - t150);
-    const Real t168 = mu * t57;
-    const Real t169 = t52 * mu;
-    const Real t170 = t169 * t57;
-    const Real t171 = std::fma(mu, t75, t162);
-    const Real t172 = t168 * t81;
-    const Real t173 = t172 * t32;
-    const Real t174 = (t171 > Real(0) ? Real(1) : t121);
-    const Real t175 = (t171 > Real(0) ? t144 : Real(1));
-    const Real t176 = (t171 > Real(0) ? Real(1) : t144);
-    const Real t177 = (t171 > Real(0) ? t157 : Real(1));
-    const Real t178 = t160 + t173;
-    const Real t179 = (t178 > Real(0) ? Real(1) : t121);
-    const Real t180 = (t178 > Real(0) ? t144 : Real(1));
-    const Real t181 = (t178 > Real(0) ? Real(1) : t144);
-    const Real t182 = (t178 > Real(0) ? t165 : Real(1));
-    if (!(std::fabs(t119) >= detail::smallest_divisor<Real>) || !(std::fabs(t119) <= std::numeric_limits<Real>::max()) || !(std::fabs(t144) >= detail::smallest_divisor<Real>) || !(std::fabs(t144) <= std::numeric_limits<Real>::max()) || !(std::fabs(t180) >= detail::smallest_divisor<Real>) || !(std::fabs(t180) <= std::numeric_limits<Real>::max()) || !(std::fabs(t181) >= detail::smallest_divisor<Real>) || !(std::fabs(t181) <= std::numeric_limits<Real>::max()) || !(std::fabs(t175) >= detail::smallest_divisor<Real>) || !(std::fabs(t175) <= std::numeric_limits<Real>::max()) || !(std::fabs(t176) >= detail::smallest_divisor<Real>) || !(std::fabs(t176) <= std::numeric_limits<Real>::max()) || !(std::fabs(t120) >= detail::smallest_divisor<Real>) || !(std::fabs(t120) <= std::numeric_limits<Real>::max()) || !(std::fabs(t182) >= detail::smallest_divisor<Real>) || !(std::fabs(t182) <= std::numeric_limits<Real>::max()) || !(std::fabs(t177) >= detail::smallest_divisor<Real>) || !(std::fabs(t177) <= std::numeric_limits<Real>::max()) || !(std::fabs(t179) >= detail::smallest_divisor<Real>) || !(std::fabs(t179) <= std::numeric_limits<Real>::max()) || !(std::fabs(t174) >= detail::smallest_divisor<Real>) || !(std::fabs(t174) <= std::numeric_limits<Real>::max()) || !(std::fabs(t110) >= detail::smallest_divisor<Real>) || !(std::fabs(t110) <= std::numeric_limits<Real>::max()) || !(std::fabs(t117) >= detail::smallest_divisor<Real>) || !(std::fabs(t117) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
+    const Real t129 = std::fma(R_m, w_m, -t114);
+    const Real t130 = t114 * t118;
+    const Real t131 = t114 * t117;
+    const Real t132 = std::fma(-t118, t118, t11) + (t10 - (t11 - t7));
+    const Real t133 = t118 + t118;
+    const Real t134 = t128 * t118;
+    const Real t135 = std::fma(t56, t118, -t119);
+    const Real t136 = std::fma(t108, t118, -t125);
+    const Real t137 = t125 + t130;
+    const Real t138 = t137 - t125;
+    const Real t139 = t127 + t125;
+    const Real t140 = t126 + t131 + t17 - t28 - t18 + t29;
+    const Real t141 = t139 - t127;
+    const Real t142 = t108 - (t123 - t124) + (t114 - t124) + (t113 + t129);
+    const Real t143 = t123 + t142;
+    const Real t144 = t143 * t118;
+    const Real t145 = t144 + t16;
+    const Real t146 = std::fma(t114, t118, -t130);
+    const Real t147 = std::fabs(t140);
+    const Real t148 = t120 * t147;
+    const Real t149 = t145 - t144;
+    const Real t150 = t144 - (t145 - t149) + (t16 - t149) + (std::fma(t142 - (t143 - t123), t118, std::fma(t143, t118, -t144)) + std::fma(t25, t4, std::fma(t12, t9, std::fma(t12, t4, -t16))));
+    const Real t151 = t145 + t150;
+    const Real t152 = t151 - t27;
+    const Real t153 = t152 - t151;
+    const Real t154 = t151 - (t152 - t153) - (t27 + t153) + (t150 - (t151 - t145) - std::fma(t42, t0, std::fma(t26, t3, std::fma(t26, t0, -t27))));
+    const Real t155 = t152 + t154;
+    const Real t156 = t154 - (t155 - t152);
+    const Real t157 = (t155 > Real(0) ? t155 : -t155);
+    const Real t158 = t106 * t157;
+    const Real t159 = mu * t60;
+    const Real t160 = t55 * mu;
+    const Real t161 = t160 * t60;
+    const Real t162 = t159 * t89;
+    const Real t163 = t162 * t47;
+    const Real t164 = t158 + t163;
+    const Real t165 = t164 - t158;
+    const Real t166 = t158 - (t164 - t165) + (t163 - t165) + (std::fma(std::fma(std::fma(std::fma(q_M, q_m, -t64), t96, std::fma(t64, Real(1) - (t96 - t107) + (b - t107), std::fma(t64, t96, -t105))), t56, std::fma(t105, t59, std::fma(t105, t56, -t106))), t157, std::fma(t106, (t155 > Real(0) ? t156 : -t156), std::fma(t106, t157, -t158))) + std::fma(std::fma(std::fma(mu, t63, std::fma(mu, t60, -t159)), t89, std::fma(t159, t88 - (t89 - t82), std::fma(t159, t89, -t162))), t47, std::fma(t162, t46 - (t47 - t33), std::fma(t162, t47, -t163))));
+    const Real t167 = t164 + t166;
+    const Real t168 = t167 + (t166 - (t167 - t164));
+    const Real t169 = (t168 > Real(0) ? Real(1) : t121);
+    const Real t170 = (t168 > Real(0) ? t133 : Real(1));
+    const Real t171 = (t168 > Real(0) ? Real(1) : t133);
+    const Real t172 = (t168 > Real(0) ? t148 : Real(1));
+    if (!(std::fabs(t118) >= detail::smallest_divisor<Real>) || !(std::fabs(t118) <= std::numeric_limits<Real>::max()) || !(std::fabs(t133) >= detail::smallest_divisor<Real>) || !(std::fabs(t133) <= std::numeric_limits<Real>::max()) || !(std::fabs(t170) >= detail::smallest_divisor<Real>) || !(std::fabs(t170) <= std::numeric_limits<Real>::max()) || !(std::fabs(t171) >= detail::smallest_divisor<Real>) || !(std::fabs(t171) <= std::numeric_limits<Real>::max()) || !(std::fabs(t119) >= detail::smallest_divisor<Real>) || !(std::fabs(t119) <= std::numeric_limits<Real>::max()) || !(std::fabs(t172) >= detail::smallest_divisor<Real>) || !(std::fabs(t172) <= std::numeric_limits<Real>::max()) || !(std::fabs(t169) >= detail::smallest_divisor<Real>) || !(std::fabs(t169) <= std::numeric_limits<Real>::max()) || !(std::fabs(t110) >= detail::smallest_divisor<Real>) || !(std::fabs(t110) <= std::numeric_limits<Real>::max()) || !(std::fabs(t116) >= detail::smallest_divisor<Real>) || !(std::fabs(t116) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t183 = t14 / t119;
-    const Real t184 = t15 / t119;
-    const Real t185 = t29 / t119;
-    const Real t186 = t30 / t119;
-    const Real t187 = t143 / t144;
-    const Real t188 = t143 / t180;
-    const Real t189 = t143 / t181;
-    const Real t190 = t143 / t175;
-    const Real t191 = t143 / t176;
-    const Real t192 = std::fma(std::fma(t55, mu, std::fma(t52, mu, -t169)), t57, std::fma(t169, t60, std::fma(t169, t57, -t170)));
-    const Real t193 = -t183;
-    const Real t194 = t183 + t185;
-    const Real t195 = t194 - t183;
-    const Real t196 = -t184;
-    const Real t197 = -t185;
-    const Real t198 = -t186;
-    const Real t199 = t167 + (std::fma(t113, t119, std::fma(t108, t188, t148)) + std::fma(t135, t119, std::fma(t115, t188, t158)));
-    const Real t200 = t149 + t199;
-    const Real t201 = t200 + t17;
-    const Real t202 = t166 + (std::fma(t114, t119, std::fma(t112, t189, t153)) + std::fma(t113, t119, std::fma(t108, t189, t148)));
-    const Real t203 = t151 + t202;
-    const Real t204 = t203 + t145;
-    const Real t205 = t167 + (std::fma(t113, t119, std::fma(t108, t190, t148)) + std::fma(t135, t119, std::fma(t115, t190, t158)));
-    const Real t206 = t149 + t205;
-    const Real t207 = t206 + t17;
-    const Real t208 = t166 + (std::fma(t114, t119, std::fma(t112, t191, t153)) + std::fma(t113, t119, std::fma(t108, t191, t148)));
-    const Real t209 = t151 + t208;
-    const Real t210 = t209 + t145;
-    const Real t211 = t201 - t200;
-    const Real t212 = t204 - t203;
-    const Real t213 = t207 - t206;
-    const Real t214 = t210 - t209;
-    const Real t215 = t183 - (t194 - t195) + (t185 - t195) + (std::fma(t193, t187, std::fma(t193, t119, t14) + t20) / t119 + std::fma(t197, t187, std::fma(t197, t119, t29) + t39) / t119);
-    const Real t216 = t194 + t215;
-    const Real t217 = t216 - t184;
-    const Real t218 = t200 - (t201 - t211) + (t17 - t211) + (t199 - (t200 - t149) + t22);
-    const Real t219 = t201 + t218;
-    const Real t220 = t219 - t26;
-    const Real t221 = t203 - (t204 - t212) + (t145 - t212) + (t202 - (t203 - t151) + std::fma(t155, t119, std::fma(t128, t189, t163)));
-    const Real t222 = t204 + t221;
-    const Real t223 = t222 + t136;
-    const Real t224 = t206 - (t207 - t213) + (t17 - t213) + (t205 - (t206 - t149) + t22);
-    const Real t225 = t207 + t224;
-    const Real t226 = t225 - t26;
-    const Real t227 = t209 - (t210 - t214) + (t145 - t214) + (t208 - (t209 - t151) + std::fma(t155, t119, std::fma(t128, t191, t163)));
-    const Real t228 = t210 + t227;
-    const Real t229 = t228 + t136;
-    const Real t230 = t217 - t216;
-    const Real t231 = t220 - t219;
-    const Real t232 = t223 - t222;
-    const Real t233 = t226 - t225;
-    const Real t234 = t229 - t228;
-    const Real t235 = t216 - (t217 - t230) - (t184 + t230) + (t215 - (t216 - t194) - std::fma(t196, t187, std::fma(t196, t119, t15) + t21) / t119);
-    const Real t236 = t217 + t235;
-    const Real t237 = t236 - t186;
-    const Real t238 = t219 - (t220 - t231) - (t26 + t231) + (t218 - (t219 - t201) - t37);
-    const Real t239 = t220 + t238;
-    const Real t240 = t239 - t18;
-    const Real t241 = t222 - (t223 - t232) + (t136 - t232) + (t221 - (t222 - t204) + std::fma(t135, t119, std::fma(t115, t189, t158)));
-    const Real t242 = t223 + t241;
-    const Real t243 = t242 + t95;
-    const Real t244 = t225 - (t226 - t233) - (t26 + t233) + (t224 - (t225 - t207) - t37);
-    const Real t245 = t226 + t244;
-    const Real t246 = t245 - t18;
-    const Real t247 = t228 - (t229 - t234) + (t136 - t234) + (t227 - (t228 - t210) + std::fma(t135, t119, std::fma(t115, t191, t158)));
-    const Real t248 = t229 + t247;
-    const Real t249 = t248 + t95;
-    const Real t250 = t237 - t236;
-    const Real t251 = t240 - t239;
-    const Real t252 = t243 - t242;
-    const Real t253 = t246 - t245;
-    const Real t254 = t249 - t248;
-    const Real t255 = t236 - (t237 - t250) - (t186 + t250) + (t235 - (t236 - t217) - std::fma(t198, t187, std::fma(t198, t119, t30) + t40) / t119);
-    const Real t256 = t237 + t255;
-    const Real t257 = t58 * t256;
-    const Real t258 = t257 / t120;
-    const Real t259 = t239 - (t240 - t251) - (t18 + t251) + (t238 - (t239 - t220) - t23);
-    const Real t260 = t240 + t259;
-    const Real t261 = t260 + t27;
-    const Real t262 = t242 - (t243 - t252) + (t95 - t252) + (t241 - (t242 - t223) + t104);
-    const Real t263 = t243 + t262;
-    const Real t264 = t263 - t99;
-    const Real t265 = t245 - (t246 - t253) - (t18 + t253) + (t244 - (t245 - t226) - t23);
-    const Real t266 = t246 + t265;
-    const Real t267 = t266 + t27;
-    const Real t268 = t248 - (t249 - t254) + (t95 - t254) + (t247 - (t248 - t229) + t104);
-    const Real t269 = t249 + t268;
-    const Real t270 = t269 - t99;
-    const Real t271 = -t258;
-    const Real t272 = t271 * t0;
-    const Real t273 = t271 * t4;
-    const Real t274 = t261 - t260;
-    const Real t275 = t264 - t263;
-    const Real t276 = t267 - t266;
-    const Real t277 = t270 - t269;
-    const Real t278 = t260 - (t261 - t274) + (t27 - t274) + (t259 - (t260 - t240) + t38);
-    const Real t279 = t261 + t278;
-    const Real t280 = t170 * t279;
-    const Real t281 = t280 * t50;
-    const Real t282 = t281 / t182;
-    const Real t283 = t263 - (t264 - t275) - (t99 + t275) + (t262 - (t263 - t243) - t106);
-    const Real t284 = t264 + t283;
-    const Real t285 = t284 - t97;
-    const Real t286 = t266 - (t267 - t276) + (t27 - t276) + (t265 - (t266 - t246) + t38);
-    const Real t287 = t267 + t286;
-    const Real t288 = t170 * t287;
-    const Real t289 = t288 * t50;
-    const Real t290 = t289 / t177;
-    const Real t291 = t269 - (t270 - t277) - (t99 + t277) + (t268 - (t269 - t249) - t106);
-    const Real t292 = t270 + t291;
-    const Real t293 = t292 - t97;
-    const Real t294 = -(std::fma(t271, std::fma(t56, t119, std::fma(t53, t187, t146)), std::fma(t271, t120, t257) + std::fma(std::fma(t55, t57, std::fma(t52, t60, std::fma(t52, t57, -t58))), t256, std::fma(t58, t255 - (t256 - t237), std::fma(t58, t256, -t257)))) / t120);
-    const Real t295 = std::fma(t294, t0, std::fma(t271, t3, std::fma(t271, t0, -t272)));
-    const Real t296 = std::fma(t294, t4, std::fma(t271, t9, std::fma(t271, t4, -t273)));
-    const Real t297 = -t282;
-    const Real t298 = t285 - t284;
-    const Real t299 = -t290;
-    const Real t300 = t293 - t292;
-    const Real t301 = t284 - (t285 - t298) - (t97 + t298) + (t283 - (t284 - t264) - t105);
-    const Real t302 = t285 + t301;
-    const Real t303 = t302 + t101;
-    const Real t304 = t292 - (t293 - t300) - (t97 + t300) + (t291 - (t292 - t270) - t105);
-    const Real t305 = t293 + t304;
-    const Real t306 = t305 + t101;
-    const Real t307 = t303 - t302;
-    const Real t308 = t306 - t305;
-    const Real t309 = t302 - (t303 - t307) + (t101 - t307) + (t301 - (t302 - t285) + t107);
-    const Real t310 = t303 + t309;
-    const Real t311 = t310 + t17;
-    const Real t312 = t305 - (t306 - t308) + (t101 - t308) + (t304 - (t305 - t293) + t107);
-    const Real t313 = t306 + t312;
-    const Real t314 = t313 + t17;
-    const Real t315 = t311 - t310;
-    const Real t316 = t314 - t313;
-    const Real t317 = t310 - (t311 - t315) + (t17 - t315) + (t309 - (t310 - t303) + t22);
-    const Real t318 = t311 + t317;
-    const Real t319 = t318 - t26;
-    const Real t320 = t313 - (t314 - t316) + (t17 - t316) + (t312 - (t313 - t306) + t22);
-    const Real t321 = t314 + t320;
-    const Real t322 = t321 - t26;
-    const Real t323 = t319 - t318;
-    const Real t324 = t322 - t321;
-    const Real t325 = t318 - (t319 - t323) - (t26 + t323) + (t317 - (t318 - t311) - t37);
-    const Real t326 = t319 + t325;
-    const Real t327 = t326 - t18;
-    const Real t328 = t321 - (t322 - t324) - (t26 + t324) + (t320 - (t321 - t314) - t37);
-    const Real t329 = t322 + t328;
-    const Real t330 = t329 - t18;
-    const Real t331 = t327 - t326;
-    const Real t332 = t330 - t329;
-    const Real t333 = t326 - (t327 - t331) - (t18 + t331) + (t325 - (t326 - t319) - t23);
-    const Real t334 = t327 + t333;
-    const Real t335 = t334 + t27;
-    const Real t336 = t329 - (t330 - t332) - (t18 + t332) + (t328 - (t329 - t322) - t23);
-    const Real t337 = t330 + t336;
-    const Real t338 = t337 + t27;
-    const Real t339 = t335 - t334;
-    const Real t340 = t338 - t337;
-    const Real t341 = t334 - (t335 - t339) + (t27 - t339) + (t333 - (t334 - t327) + t38);
-    const Real t342 = t335 + t341;
-    const Real t343 = t68 * t342;
-    const Real t344 = t343 / t179;
-    const Real t345 = (t178 > Real(0) ? t297 : t344);
-    const Real t346 = t345 / t119;
-    const Real t347 = t346 * t0;
-    const Real t348 = t346 * t4;
-    const Real t349 = t272 - t348;
-    const Real t350 = t349 - t272;
-    const Real t351 = t273 + t347;
-    const Real t352 = t351 - t273;
-    const Real t353 = t337 - (t338 - t340) + (t27 - t340) + (t336 - (t337 - t330) + t38);
-    const Real t354 = t338 + t353;
-    const Real t355 = t68 * t354;
-    const Real t356 = t355 / t174;
-    const Real t357 = (t171 > Real(0) ? t299 : t356);
-    const Real t358 = t357 / t119;
-    const Real t359 = t358 * t0;
-    const Real t360 = t358 * t4;
-    const Real t361 = t358 * t119;
-    const Real t362 = t361 / t110;
-    const Real t363 = t361 / t117;
-    const Real t364 = t272 - t360;
-    const Real t365 = t364 - t272;
-    const Real t366 = t273 + t359;
-    const Real t367 = t366 - t273;
-    const Real t368 = -t344;
-    const Real t369 = -t346;
-    const Real t370 = -t356;
-    const Real t371 = -t358;
-    const Real t372 = -t362;
-    const Real t373 = -t363;
-    const Real t374 = std::fma(t369, t187, std::fma(t369, t119, t345) + (t178 > Real(0) ? -(std::fma(t297, std::fma(std::fma(t56, t119, std::fma(t53, t188, t146)), t164, std::fma(t120, t164, -t165)), std::fma(t297, t165, t281) + std::fma(std::fma(t192, t279, std::fma(t170, t278 - (t279 - t261), std::fma(t170, t279, -t280))), t50, std::fma(t280, t51, std::fma(t280, t50, -t281)))) / t182) : std::fma(t368, std::fma(t92, t119, std::fma(t91, t189, t147)), std::fma(t368, t121, t343) + std::fma(t80, t342, std::fma(t68, t341 - (t342 - t335), std::fma(t68, t342, -t343)))) / t179)) / t119;
-    const Real t375 = std::fma(t371, t187, std::fma(t371, t119, t357) + (t171 > Real(0) ? -(std::fma(t299, std::fma(std::fma(t56, t119, std::fma(t53, t190, t146)), t156, std::fma(t120, t156, -t157)), std::fma(t299, t157, t289) + std::fma(std::fma(t192, t287, std::fma(t170, t286 - (t287 - t267), std::fma(t170, t287, -t288))), t50, std::fma(t288, t51, std::fma(t288, t50, -t289)))) / t177) : std::fma(t370, std::fma(t92, t119, std::fma(t91, t191, t147)), std::fma(t370, t121, t355) + std::fma(t80, t354, std::fma(t68, t353 - (t354 - t338), std::fma(t68, t354, -t355)))) / t174)) / t119;
-    const Real t376 = std::fma(t375, t119, std::fma(t358, t187, std::fma(t358, t119, -t361)));
-    const Real t377 = t272 - (t349 - t350) - (t348 + t350) + (t295 - std::fma(t374, t4, std::fma(t346, t9, std::fma(t346, t4, -t348))));
-    const Real t378 = t349 + t377;
-    const Real t379 = t378 / M;
-    const Real t380 = t273 - (t351 - t352) + (t347 - t352) + (t296 + std::fma(t374, t0, std::fma(t346, t3, std::fma(t346, t0, -t347))));
-    const Real t381 = t351 + t380;
-    const Real t382 = t381 / M;
-    const Real t383 = t272 - (t364 - t365) - (t360 + t365) + (t295 - std::fma(t375, t4, std::fma(t358, t9, std::fma(t358, t4, -t360))));
-    const Real t384 = t364 + t383;
-    const Real t385 = t384 / m;
-    const Real t386 = t273 - (t366 - t367) + (t359 - t367) + (t296 + std::fma(t375, t0, std::fma(t358, t3, std::fma(t358, t0, -t359))));
-    const Real t387 = t366 + t386;
-    const Real t388 = t387 / m;
-    const Real t389 = -t385;
-    const Real t390 = -t388;
-    const Real result0 = v_Mx + (t379 + (std::fma(-t379, M, t378) + (t377 - (t378 - t349))) / M);
-    const Real result1 = v_My + (t382 + (std::fma(-t382, M, t381) + (t380 - (t381 - t351))) / M);
-    const Real result2 = v_mx + (t389 + -((std::fma(t389, m, t384) + (t383 - (t384 - t364))) / m));
-    const Real result3 = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t366))) / m));
-    const Real result4 = w_M + (t372 + -(std::fma(t372, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t372, t110, t361) + t376) / t110));
-    const Real result5 = w_m + (t373 + -(std::fma(t373, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t373, t117, t361) + t376) / t117));
-    if (!detail::finite(t134) || !detail::finite(t139) || !detail::finite(t142) || !detail::finite(t152) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+    const Real t173 = t14 / t118;
+    const Real t174 = t15 / t118;
+    const Real t175 = t31 / t118;
+    const Real t176 = t32 / t118;
+    const Real t177 = t132 / t133;
+    const Real t178 = t132 / t170;
+    const Real t179 = t132 / t171;
+    const Real t180 = -t173;
+    const Real t181 = t173 + t175;
+    const Real t182 = t181 - t173;
+    const Real t183 = -t174;
+    const Real t184 = -t175;
+    const Real t185 = -t176;
+    const Real t186 = t125 - (t137 - t138) + (t130 - t138) + (std::fma(t113, t118, std::fma(t108, t178, t136)) + std::fma(t129, t118, std::fma(t114, t178, t146)));
+    const Real t187 = t137 + t186;
+    const Real t188 = t187 + t17;
+    const Real t189 = t127 - (t139 - t141) + (t125 - t141) + (std::fma(std::fma(std::fma(R_M, b, -t111), w_M, std::fma(t111, w_M, -t112)), t118, std::fma(t112, t179, std::fma(t112, t118, -t127))) + std::fma(t113, t118, std::fma(t108, t179, t136)));
+    const Real t190 = t139 + t189;
+    const Real t191 = t190 + t134;
+    const Real t192 = t188 - t187;
+    const Real t193 = t191 - t190;
+    const Real t194 = t173 - (t181 - t182) + (t175 - t182) + (std::fma(t180, t177, std::fma(t180, t118, t14) + t21) / t118 + std::fma(t184, t177, std::fma(t184, t118, t31) + t40) / t118);
+    const Real t195 = t181 + t194;
+    const Real t196 = t195 - t174;
+    const Real t197 = t187 - (t188 - t192) + (t17 - t192) + (t186 - (t187 - t137) + t23);
+    const Real t198 = t188 + t197;
+    const Real t199 = t198 - t28;
+    const Real t200 = t190 - (t191 - t193) + (t134 - t193) + (t189 - (t190 - t139) + std::fma(std::fma(std::fma(R_m, b, -t122), w_m, std::fma(t122, w_m, -t128)), t118, std::fma(t128, t179, std::fma(t128, t118, -t134))));
+    const Real t201 = t191 + t200;
+    const Real t202 = t201 + t130;
+    const Real t203 = t196 - t195;
+    const Real t204 = t199 - t198;
+    const Real t205 = t202 - t201;
+    const Real t206 = t195 - (t196 - t203) - (t174 + t203) + (t194 - (t195 - t181) - std::fma(t183, t177, std::fma(t183, t118, t15) + t22) / t118);
+    const Real t207 = t196 + t206;
+    const Real t208 = t207 - t176;
+    const Real t209 = t198 - (t199 - t204) - (t28 + t204) + (t197 - (t198 - t188) - t38);
+    const Real t210 = t199 + t209;
+    const Real t211 = t210 - t18;
+    const Real t212 = t201 - (t202 - t205) + (t130 - t205) + (t200 - (t201 - t191) + std::fma(t129, t118, std::fma(t114, t179, t146)));
+    const Real t213 = t202 + t212;
+    const Real t214 = t213 + t98;
+    const Real t215 = t208 - t207;
+    const Real t216 = t211 - t210;
+    const Real t217 = t214 - t213;
+    const Real t218 = t207 - (t208 - t215) - (t176 + t215) + (t206 - (t207 - t196) - std::fma(t185, t177, std::fma(t185, t118, t32) + t41) / t118);
+    const Real t219 = t208 + t218;
+    const Real t220 = t61 * t219;
+    const Real t221 = t220 / t119;
+    const Real t222 = t210 - (t211 - t216) - (t18 + t216) + (t209 - (t210 - t199) - t24);
+    const Real t223 = t211 + t222;
+    const Real t224 = t223 + t29;
+    const Real t225 = t213 - (t214 - t217) + (t98 - t217) + (t212 - (t213 - t202) + std::fma(std::fma(b, v_Mx, -t97), t4, std::fma(t97, t9, std::fma(t97, t4, -t98))));
+    const Real t226 = t214 + t225;
+    const Real t227 = t226 - t102;
+    const Real t228 = -t221;
+    const Real t229 = t228 * t0;
+    const Real t230 = t228 * t4;
+    const Real t231 = t224 - t223;
+    const Real t232 = t227 - t226;
+    const Real t233 = t223 - (t224 - t231) + (t29 - t231) + (t222 - (t223 - t211) + t39);
+    const Real t234 = t224 + t233;
+    const Real t235 = t161 * t234;
+    const Real t236 = t235 * t54;
+    const Real t237 = t236 / t172;
+    const Real t238 = t226 - (t227 - t232) - (t102 + t232) + (t225 - (t226 - t214) - std::fma(std::fma(b, v_My, -t101), t0, std::fma(t101, t3, std::fma(t101, t0, -t102))));
+    const Real t239 = t227 + t238;
+    const Real t240 = t239 - t100;
+    const Real t241 = -(std::fma(t228, std::fma(t59, t118, std::fma(t56, t177, t135)), std::fma(t228, t119, t220) + std::fma(std::fma(t58, t60, std::fma(t55, t63, std::fma(t55, t60, -t61))), t219, std::fma(t61, t218 - (t219 - t208), std::fma(t61, t219, -t220)))) / t119);
+    const Real t242 = t233 - (t234 - t224);
+    const Real t243 = (t234 > Real(0) ? t234 : -t234);
+    const Real t244 = t119 * t243;
+    const Real t245 = -t237;
+    const Real t246 = t240 - t239;
+    const Real t247 = t239 - (t240 - t246) - (t100 + t246) + (t238 - (t239 - t227) - std::fma(std::fma(b, v_mx, -t99), t4, std::fma(t99, t9, std::fma(t99, t4, -t100))));
+    const Real t248 = t240 + t247;
+    const Real t249 = t248 + t104;
+    const Real t250 = t249 - t248;
+    const Real t251 = t248 - (t249 - t250) + (t104 - t250) + (t247 - (t248 - t240) + std::fma(std::fma(b, v_my, -t103), t0, std::fma(t103, t3, std::fma(t103, t0, -t104))));
+    const Real t252 = t249 + t251;
+    const Real t253 = t252 + t17;
+    const Real t254 = t253 - t252;
+    const Real t255 = t252 - (t253 - t254) + (t17 - t254) + (t251 - (t252 - t249) + t23);
+    const Real t256 = t253 + t255;
+    const Real t257 = t256 - t28;
+    const Real t258 = t257 - t256;
+    const Real t259 = t256 - (t257 - t258) - (t28 + t258) + (t255 - (t256 - t253) - t38);
+    const Real t260 = t257 + t259;
+    const Real t261 = t260 - t18;
+    const Real t262 = t261 - t260;
+    const Real t263 = t260 - (t261 - t262) - (t18 + t262) + (t259 - (t260 - t257) - t24);
+    const Real t264 = t261 + t263;
+    const Real t265 = t264 + t29;
+    const Real t266 = t265 - t264;
+    const Real t267 = t264 - (t265 - t266) + (t29 - t266) + (t263 - (t264 - t261) + t39);
+    const Real t268 = t265 + t267;
+    const Real t269 = t71 * t268;
+    const Real t270 = t269 / t169;
+    const Real t271 = (t168 > Real(0) ? t245 : t270);
+    const Real t272 = t271 / t118;
+    const Real t273 = t272 * t0;
+    const Real t274 = t272 * t4;
+    const Real t275 = t272 * t118;
+    const Real t276 = t275 / t110;
+    const Real t277 = t275 / t116;
+    const Real t278 = t229 - t274;
+    const Real t279 = t278 - t229;
+    const Real t280 = t230 + t273;
+    const Real t281 = t280 - t230;
+    const Real t282 = -t270;
+    const Real t283 = -t272;
+    const Real t284 = -t276;
+    const Real t285 = -t277;
+    const Real t286 = std::fma(t283, t177, std::fma(t283, t118, t271) + (t168 > Real(0) ? -(std::fma(t245, std::fma(std::fma(t59, t118, std::fma(t56, t178, t135)), t243, std::fma(t119, (t234 > Real(0) ? t242 : -t242), std::fma(t119, t243, -t244))), std::fma(t245, t244, t236) + std::fma(std::fma(std::fma(std::fma(t58, mu, std::fma(t55, mu, -t160)), t60, std::fma(t160, t63, std::fma(t160, t60, -t161))), t234, std::fma(t161, t242, std::fma(t161, t234, -t235))), t54, std::fma(t235, t53 - (t54 - t51), std::fma(t235, t54, -t236)))) / t172) : std::fma(t282, std::fma(t94 - (t95 - t92), t118, std::fma(t95, t179, std::fma(t95, t118, -t121))), std::fma(t282, t121, t269) + std::fma(std::fma(std::fma(t58, q_M, std::fma(t55, q_M, -t68)), q_m, std::fma(t68, q_m, -t71)), t268, std::fma(t71, t267 - (t268 - t265), std::fma(t71, t268, -t269)))) / t169)) / t118;
+    const Real t287 = std::fma(t286, t118, std::fma(t272, t177, std::fma(t272, t118, -t275)));
+    const Real t288 = t229 - (t278 - t279) - (t274 + t279) + (std::fma(t241, t0, std::fma(t228, t3, std::fma(t228, t0, -t229))) - std::fma(t286, t4, std::fma(t272, t9, std::fma(t272, t4, -t274))));
+    const Real t289 = t278 + t288;
+    const Real t290 = t289 / M;
+    const Real t291 = t289 / m;
+    const Real t292 = t230 - (t280 - t281) + (t273 - t281) + (std::fma(t241, t4, std::fma(t228, t9, std::fma(t228, t4, -t230))) + std::fma(t286, t0, std::fma(t272, t3, std::fma(t272, t0, -t273))));
+    const Real t293 = t280 + t292;
+    const Real t294 = t293 / M;
+    const Real t295 = t293 / m;
+    const Real t296 = t288 - (t289 - t278);
+    const Real t297 = -t291;
+    const Real t298 = t292 - (t293 - t280);
+    const Real t299 = -t295;
+    const Real result0 = v_Mx + (t290 + (std::fma(-t290, M, t289) + t296) / M);
+    const Real result1 = v_My + (t294 + (std::fma(-t294, M, t293) + t298) / M);
+    const Real result2 = v_mx + (t297 + -((std::fma(t297, m, t289) + t296) / m));
+    const Real result3 = v_my + (t299 + -((std::fma(t299, m, t293) + t298) / m));
+    const Real result4 = w_M + (t284 + -(std::fma(t284, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t284, t110, t275) + t287) / t110));
+    const Real result5 = w_m + (t285 + -(std::fma(t285, std::fma(std::fma(m, R_m, -t115), q_m, std::fma(t115, q_m, -t116)), std::fma(t285, t116, t275) + t287) / t116));
+    if (!detail::finite(t140) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -2160,113 +1921,86 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
         (std::fabs(t16) < std::numeric_limits<Real>::min() && t12 != Real(0) && t4 != Real(0)) ||
         (std::fabs(t17) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
         (std::fabs(t18) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && t24 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && t24 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t29) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t30) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t31) < std::numeric_limits<Real>::min() && (t31 != Real(0) || (t13 == Real(0) && t24 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t52) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && t52 != Real(0) && t57 != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t62) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t63) < std::numeric_limits<Real>::min() && m != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t64) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t65) < std::numeric_limits<Real>::min() && t52 != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t68) < std::numeric_limits<Real>::min() && t65 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && t62 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && t64 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && q_m != Real(0) && t67 != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && t62 != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && (t73 != Real(0) || (t72 == Real(0) && m != Real(0) && t71 != Real(0)))) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && t57 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t75) < std::numeric_limits<Real>::min() && t74 != Real(0) && t31 != Real(0)) ||
-        (std::fabs(t79) < std::numeric_limits<Real>::min() && t63 != Real(0) && t67 != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && t94 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t98 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t61 != Real(0) && t93 != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && t53 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && t26 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t30) < std::numeric_limits<Real>::min() && t26 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && t55 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t64) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t65) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t66) < std::numeric_limits<Real>::min() && m != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t67) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t68) < std::numeric_limits<Real>::min() && t55 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && t68 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t72) < std::numeric_limits<Real>::min() && t65 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t73) < std::numeric_limits<Real>::min() && t67 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t75) < std::numeric_limits<Real>::min() && t65 != Real(0) && t69 != Real(0)) ||
+        (std::fabs(t79) < std::numeric_limits<Real>::min() && t66 != Real(0) && t70 != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && t97 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t101 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t64 != Real(0) && t96 != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && t56 != Real(0)) ||
         (std::fabs(t108) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
         (std::fabs(t109) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
         (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && q_M != Real(0)) ||
         (std::fabs(t111) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
         (std::fabs(t112) < std::numeric_limits<Real>::min() && t111 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t116 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t53 != Real(0) && t119 != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t91 != Real(0) && t119 != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t56 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t56 != Real(0) && t117 != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t95 != Real(0) && t118 != Real(0)) ||
         (std::fabs(t122) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && t108 != Real(0) && t119 != Real(0)) ||
         (std::fabs(t125) < std::numeric_limits<Real>::min() && t108 != Real(0) && t118 != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && (t126 != Real(0) || (t108 == Real(0) && R_m != Real(0) && w_m != Real(0)))) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t112 != Real(0) && t119 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t108 != Real(0) && t117 != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t112 != Real(0) && t118 != Real(0)) ||
         (std::fabs(t128) < std::numeric_limits<Real>::min() && t122 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && w_m != Real(0) && t118 != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && (t130 != Real(0) || (t125 == Real(0) && R_m != Real(0) && t129 != Real(0)))) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && (t131 != Real(0) || (t130 == Real(0) && v_Mx != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && (t132 != Real(0) || (t131 == Real(0) && t35 != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && (t133 != Real(0) || (t132 == Real(0) && t19 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t134) < std::numeric_limits<Real>::min() && (t134 != Real(0) || (t133 == Real(0) && v_my != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && t115 != Real(0) && t119 != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && t115 != Real(0) && t118 != Real(0)) ||
-        (std::fabs(t138) < std::numeric_limits<Real>::min() && t123 != Real(0) && t118 != Real(0)) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && t126 != Real(0) && t118 != Real(0)) ||
-        (std::fabs(t141) < std::numeric_limits<Real>::min() && (t141 != Real(0) || (t140 == Real(0) && t12 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t142) < std::numeric_limits<Real>::min() && (t142 != Real(0) || (t141 == Real(0) && t36 != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t145) < std::numeric_limits<Real>::min() && t128 != Real(0) && t119 != Real(0)) ||
-        (std::fabs(t156) < std::numeric_limits<Real>::min() && t156 != Real(0)) ||
-        (std::fabs(t157) < std::numeric_limits<Real>::min() && t120 != Real(0) && t156 != Real(0)) ||
-        (std::fabs(t159) < std::numeric_limits<Real>::min() && t159 != Real(0)) ||
-        (std::fabs(t160) < std::numeric_limits<Real>::min() && t103 != Real(0) && t159 != Real(0)) ||
-        (std::fabs(t161) < std::numeric_limits<Real>::min() && t161 != Real(0)) ||
-        (std::fabs(t162) < std::numeric_limits<Real>::min() && t103 != Real(0) && t161 != Real(0)) ||
-        (std::fabs(t164) < std::numeric_limits<Real>::min() && t164 != Real(0)) ||
-        (std::fabs(t165) < std::numeric_limits<Real>::min() && t120 != Real(0) && t164 != Real(0)) ||
-        (std::fabs(t168) < std::numeric_limits<Real>::min() && mu != Real(0) && t57 != Real(0)) ||
-        (std::fabs(t169) < std::numeric_limits<Real>::min() && t52 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t170) < std::numeric_limits<Real>::min() && t169 != Real(0) && t57 != Real(0)) ||
-        (std::fabs(t171) < std::numeric_limits<Real>::min() && (t171 != Real(0) || (t162 == Real(0) && mu != Real(0) && t75 != Real(0)))) ||
-        (std::fabs(t172) < std::numeric_limits<Real>::min() && t168 != Real(0) && t81 != Real(0)) ||
-        (std::fabs(t173) < std::numeric_limits<Real>::min() && t172 != Real(0) && t32 != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && t29 != Real(0)) ||
-        (std::fabs(t186) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && t58 != Real(0) && t256 != Real(0)) ||
-        (std::fabs(t258) < std::numeric_limits<Real>::min() && t257 != Real(0)) ||
-        (std::fabs(t272) < std::numeric_limits<Real>::min() && t271 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t273) < std::numeric_limits<Real>::min() && t271 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t280) < std::numeric_limits<Real>::min() && t170 != Real(0) && t279 != Real(0)) ||
-        (std::fabs(t281) < std::numeric_limits<Real>::min() && t280 != Real(0) && t50 != Real(0)) ||
-        (std::fabs(t282) < std::numeric_limits<Real>::min() && t281 != Real(0)) ||
-        (std::fabs(t288) < std::numeric_limits<Real>::min() && t170 != Real(0) && t287 != Real(0)) ||
-        (std::fabs(t289) < std::numeric_limits<Real>::min() && t288 != Real(0) && t50 != Real(0)) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && t114 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && t114 != Real(0) && t117 != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t128 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t144) < std::numeric_limits<Real>::min() && t143 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t147) < std::numeric_limits<Real>::min() && t147 != Real(0)) ||
+        (std::fabs(t148) < std::numeric_limits<Real>::min() && t120 != Real(0) && t147 != Real(0)) ||
+        (std::fabs(t158) < std::numeric_limits<Real>::min() && t106 != Real(0) && t157 != Real(0)) ||
+        (std::fabs(t159) < std::numeric_limits<Real>::min() && mu != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t160) < std::numeric_limits<Real>::min() && t55 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t161) < std::numeric_limits<Real>::min() && t160 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t162) < std::numeric_limits<Real>::min() && t159 != Real(0) && t89 != Real(0)) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && t162 != Real(0) && t47 != Real(0)) ||
+        (std::fabs(t173) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t174) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t175) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t176) < std::numeric_limits<Real>::min() && t32 != Real(0)) ||
+        (std::fabs(t220) < std::numeric_limits<Real>::min() && t61 != Real(0) && t219 != Real(0)) ||
+        (std::fabs(t221) < std::numeric_limits<Real>::min() && t220 != Real(0)) ||
+        (std::fabs(t229) < std::numeric_limits<Real>::min() && t228 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t230) < std::numeric_limits<Real>::min() && t228 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && t161 != Real(0) && t234 != Real(0)) ||
+        (std::fabs(t236) < std::numeric_limits<Real>::min() && t235 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t237) < std::numeric_limits<Real>::min() && t236 != Real(0)) ||
+        (std::fabs(t244) < std::numeric_limits<Real>::min() && t119 != Real(0) && t243 != Real(0)) ||
+        (std::fabs(t269) < std::numeric_limits<Real>::min() && t71 != Real(0) && t268 != Real(0)) ||
+        (std::fabs(t270) < std::numeric_limits<Real>::min() && t269 != Real(0)) ||
+        (std::fabs(t272) < std::numeric_limits<Real>::min() && t271 != Real(0)) ||
+        (std::fabs(t273) < std::numeric_limits<Real>::min() && t272 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t274) < std::numeric_limits<Real>::min() && t272 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t275) < std::numeric_limits<Real>::min() && t272 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t276) < std::numeric_limits<Real>::min() && t275 != Real(0)) ||
+        (std::fabs(t277) < std::numeric_limits<Real>::min() && t275 != Real(0)) ||
         (std::fabs(t290) < std::numeric_limits<Real>::min() && t289 != Real(0)) ||
-        (std::fabs(t343) < std::numeric_limits<Real>::min() && t68 != Real(0) && t342 != Real(0)) ||
-        (std::fabs(t344) < std::numeric_limits<Real>::min() && t343 != Real(0)) ||
-        (std::fabs(t346) < std::numeric_limits<Real>::min() && t345 != Real(0)) ||
-        (std::fabs(t347) < std::numeric_limits<Real>::min() && t346 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t348) < std::numeric_limits<Real>::min() && t346 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t355) < std::numeric_limits<Real>::min() && t68 != Real(0) && t354 != Real(0)) ||
-        (std::fabs(t356) < std::numeric_limits<Real>::min() && t355 != Real(0)) ||
-        (std::fabs(t358) < std::numeric_limits<Real>::min() && t357 != Real(0)) ||
-        (std::fabs(t359) < std::numeric_limits<Real>::min() && t358 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t360) < std::numeric_limits<Real>::min() && t358 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t361) < std::numeric_limits<Real>::min() && t358 != Real(0) && t119 != Real(0)) ||
-        (std::fabs(t362) < std::numeric_limits<Real>::min() && t361 != Real(0)) ||
-        (std::fabs(t363) < std::numeric_limits<Real>::min() && t361 != Real(0)) ||
-        (std::fabs(t379) < std::numeric_limits<Real>::min() && t378 != Real(0)) ||
-        (std::fabs(t382) < std::numeric_limits<Real>::min() && t381 != Real(0)) ||
-        (std::fabs(t385) < std::numeric_limits<Real>::min() && t384 != Real(0)) ||
-        (std::fabs(t388) < std::numeric_limits<Real>::min() && t387 != Real(0))) {
+        (std::fabs(t291) < std::numeric_limits<Real>::min() && t289 != Real(0)) ||
+        (std::fabs(t294) < std::numeric_limits<Real>::min() && t293 != Real(0)) ||
+        (std::fabs(t295) < std::numeric_limits<Real>::min() && t293 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -2290,9 +2024,9 @@ namespace detail {
 // rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
 // bounds crosswise, a square root halves them, atan2(y, x) lies within
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, -1, 464, 442; where it is -1, the loop tests the least magnitude of the values.
+// quadruple long double): k = -1, -1, 436, 410; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_rough_batch_2d_k = input_k<Real>(-1, -1, 464, 442);
+constexpr int collide_rough_batch_2d_k = input_k<Real>(-1, -1, 436, 410);
 
 // The loop of collide_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
@@ -2337,9 +2071,10 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
             const Real t7 = t2 + t6;
             const Real t12 = v_Mx_[i] - v_mx_[i];
             const Real t13 = t12 * t0;
-            const Real t22 = v_My_[i] - v_my_[i];
-            const Real t25 = t22 * t4;
-            fails = !(-t13 - t25 > Real(0));
+            const Real t20 = -t13;
+            const Real t26 = v_My_[i] - v_my_[i];
+            const Real t30 = t26 * t4;
+            fails = !(t20 - t30 > Real(0));
             condition = detail::blend(fails, status::separating, condition);
             fails = !(t7 > Real(0));
             condition = detail::blend(fails, status::coincident_centres, condition);
@@ -2387,402 +2122,309 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* 
         const Real t16 = t12 * t4;
         const Real t17 = v_Mx * t4;
         const Real t18 = v_mx * t4;
-        const Real t19 = -v_mx;
-        const Real t20 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
-        const Real t21 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
-        const Real t22 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17));
-        const Real t23 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t18));
-        const Real t24 = v_My - v_my;
-        const Real t25 = t24 * t0;
-        const Real t26 = v_My * t0;
-        const Real t27 = v_my * t0;
-        const Real t28 = t24 * t4;
-        const Real t29 = v_My * t4;
-        const Real t30 = v_my * t4;
-        const Real t31 = std::fma(t24, t4, t13);
-        const Real t32 = t13 + t28;
-        const Real t33 = t14 + t29;
-        const Real t34 = t33 - t14;
-        const Real t35 = -v_My;
-        const Real t36 = -t24;
-        const Real t37 = std::fma(v_My, t3, std::fma(v_My, t0, -t26));
-        const Real t38 = std::fma(v_my, t3, std::fma(v_my, t0, -t27));
-        const Real t39 = std::fma(v_My, t9, std::fma(v_My, t4, -t29));
-        const Real t40 = std::fma(v_my, t9, std::fma(v_my, t4, -t30));
-        const Real t41 = t14 - (t33 - t34) + (t29 - t34) + (t20 + t39);
-        const Real t42 = t33 + t41;
-        const Real t43 = t42 - t15;
-        const Real t44 = t43 - t42;
-        const Real t45 = t42 - (t43 - t44) - (t15 + t44) + (t41 - (t42 - t33) - t21);
-        const Real t46 = t43 + t45;
-        const Real t47 = t46 - t30;
-        const Real t48 = t47 - t46;
-        const Real t49 = t46 - (t47 - t48) - (t30 + t48) + (t45 - (t46 - t43) - t40);
-        const Real t50 = t47 + t49;
-        const Real t51 = t49 - (t50 - t47);
-        const Real t52 = M * m;
-        const Real t53 = M + m;
-        const Real t54 = t53 - M;
-        const Real t55 = std::fma(M, m, -t52);
-        const Real t56 = M - (t53 - t54) + (m - t54);
-        const Real t57 = Real(1) + eps;
-        const Real t58 = t52 * t57;
-        const Real t59 = t57 - Real(1);
-        const Real t60 = Real(1) - (t57 - t59) + (eps - t59);
-        const Real t61 = q_M * q_m;
-        const Real t62 = M * q_M;
-        const Real t63 = m * q_m;
-        const Real t64 = m * q_M;
-        const Real t65 = t52 * q_M;
-        const Real t66 = Real(1) + q_m;
-        const Real t67 = Real(1) + q_M;
-        const Real t68 = t65 * q_m;
-        const Real t69 = t62 * q_m;
-        const Real t70 = t64 * q_m;
-        const Real t71 = q_m * t67;
-        const Real t72 = t62 * t66;
-        const Real t73 = std::fma(m, t71, t72);
-        const Real t74 = t57 * t73;
-        const Real t75 = t74 * t31;
-        const Real t76 = std::fma(M, q_M, -t62);
-        const Real t77 = t62 + t69;
-        const Real t78 = t77 - t62;
-        const Real t79 = t63 * t67;
-        const Real t80 = std::fma(std::fma(t55, q_M, std::fma(t52, q_M, -t65)), q_m, std::fma(t65, q_m, -t68));
-        const Real t81 = t72 + t79;
-        const Real t82 = t62 - (t77 - t78) + (t69 - t78) + (t76 + std::fma(t76, q_m, std::fma(t62, q_m, -t69)));
-        const Real t83 = t77 + t82;
-        const Real t84 = t83 + t70;
-        const Real t85 = t84 - t83;
-        const Real t86 = t83 - (t84 - t85) + (t70 - t85) + (t82 - (t83 - t77) + std::fma(std::fma(m, q_M, -t64), q_m, std::fma(t64, q_m, -t70)));
-        const Real t87 = t84 + t86;
-        const Real t88 = t87 + t63;
-        const Real t89 = t88 - t87;
-        const Real t90 = t87 - (t88 - t89) + (t63 - t89) + (t86 - (t87 - t84) + std::fma(m, q_m, -t63));
-        const Real t91 = t88 + t90;
-        const Real t92 = t90 - (t91 - t88);
-        const Real t93 = Real(1) + b;
-        const Real t94 = b * v_Mx;
-        const Real t95 = t94 * t4;
-        const Real t96 = b * v_mx;
-        const Real t97 = t96 * t4;
-        const Real t98 = b * v_My;
-        const Real t99 = t98 * t0;
-        const Real t100 = b * v_my;
-        const Real t101 = t100 * t0;
-        const Real t102 = t61 * t93;
-        const Real t103 = t102 * t53;
-        const Real t104 = std::fma(std::fma(b, v_Mx, -t94), t4, std::fma(t94, t9, std::fma(t94, t4, -t95)));
-        const Real t105 = std::fma(std::fma(b, v_mx, -t96), t4, std::fma(t96, t9, std::fma(t96, t4, -t97)));
-        const Real t106 = std::fma(std::fma(b, v_My, -t98), t0, std::fma(t98, t3, std::fma(t98, t0, -t99)));
-        const Real t107 = std::fma(std::fma(b, v_my, -t100), t0, std::fma(t100, t3, std::fma(t100, t0, -t101)));
+        const Real t19 = t12 - v_Mx;
+        const Real t20 = -t13;
+        const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+        const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+        const Real t23 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17));
+        const Real t24 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t18));
+        const Real t25 = v_Mx - (t12 - t19) - (v_mx + t19);
+        const Real t26 = v_My - v_my;
+        const Real t27 = t26 * t0;
+        const Real t28 = v_My * t0;
+        const Real t29 = v_my * t0;
+        const Real t30 = t26 * t4;
+        const Real t31 = v_My * t4;
+        const Real t32 = v_my * t4;
+        const Real t33 = t13 + t30;
+        const Real t34 = t33 - t13;
+        const Real t35 = t14 + t31;
+        const Real t36 = t35 - t14;
+        const Real t37 = t26 - v_My;
+        const Real t38 = std::fma(v_My, t3, std::fma(v_My, t0, -t28));
+        const Real t39 = std::fma(v_my, t3, std::fma(v_my, t0, -t29));
+        const Real t40 = std::fma(v_My, t9, std::fma(v_My, t4, -t31));
+        const Real t41 = std::fma(v_my, t9, std::fma(v_my, t4, -t32));
+        const Real t42 = v_My - (t26 - t37) - (v_my + t37);
+        const Real t43 = t14 - (t35 - t36) + (t31 - t36) + (t21 + t40);
+        const Real t44 = t35 + t43;
+        const Real t45 = t44 - t15;
+        const Real t46 = t13 - (t33 - t34) + (t30 - t34) + (std::fma(t25, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t42, t4, std::fma(t26, t9, std::fma(t26, t4, -t30))));
+        const Real t47 = t33 + t46;
+        const Real t48 = t45 - t44;
+        const Real t49 = t44 - (t45 - t48) - (t15 + t48) + (t43 - (t44 - t35) - t22);
+        const Real t50 = t45 + t49;
+        const Real t51 = t50 - t32;
+        const Real t52 = t51 - t50;
+        const Real t53 = t50 - (t51 - t52) - (t32 + t52) + (t49 - (t50 - t45) - t41);
+        const Real t54 = t51 + t53;
+        const Real t55 = M * m;
+        const Real t56 = M + m;
+        const Real t57 = t56 - M;
+        const Real t58 = std::fma(M, m, -t55);
+        const Real t59 = M - (t56 - t57) + (m - t57);
+        const Real t60 = Real(1) + eps;
+        const Real t61 = t55 * t60;
+        const Real t62 = t60 - Real(1);
+        const Real t63 = Real(1) - (t60 - t62) + (eps - t62);
+        const Real t64 = q_M * q_m;
+        const Real t65 = M * q_M;
+        const Real t66 = m * q_m;
+        const Real t67 = m * q_M;
+        const Real t68 = t55 * q_M;
+        const Real t69 = Real(1) + q_m;
+        const Real t70 = Real(1) + q_M;
+        const Real t71 = t68 * q_m;
+        const Real t72 = t65 * q_m;
+        const Real t73 = t67 * q_m;
+        const Real t74 = std::fma(M, q_M, -t65);
+        const Real t75 = t65 * t69;
+        const Real t76 = t65 + t72;
+        const Real t77 = t76 - t65;
+        const Real t78 = std::fma(m, q_m, -t66);
+        const Real t79 = t66 * t70;
+        const Real t80 = t69 - Real(1);
+        const Real t81 = t70 - Real(1);
+        const Real t82 = t75 + t79;
+        const Real t83 = t82 - t75;
+        const Real t84 = t65 - (t76 - t77) + (t72 - t77) + (t74 + std::fma(t74, q_m, std::fma(t65, q_m, -t72)));
+        const Real t85 = t76 + t84;
+        const Real t86 = t85 + t73;
+        const Real t87 = t86 - t85;
+        const Real t88 = t75 - (t82 - t83) + (t79 - t83) + (std::fma(t74, t69, std::fma(t65, Real(1) - (t69 - t80) + (q_m - t80), std::fma(t65, t69, -t75))) + std::fma(t78, t70, std::fma(t66, Real(1) - (t70 - t81) + (q_M - t81), std::fma(t66, t70, -t79))));
+        const Real t89 = t82 + t88;
+        const Real t90 = t85 - (t86 - t87) + (t73 - t87) + (t84 - (t85 - t76) + std::fma(std::fma(m, q_M, -t67), q_m, std::fma(t67, q_m, -t73)));
+        const Real t91 = t86 + t90;
+        const Real t92 = t91 + t66;
+        const Real t93 = t92 - t91;
+        const Real t94 = t91 - (t92 - t93) + (t66 - t93) + (t90 - (t91 - t86) + t78);
+        const Real t95 = t92 + t94;
+        const Real t96 = Real(1) + b;
+        const Real t97 = b * v_Mx;
+        const Real t98 = t97 * t4;
+        const Real t99 = b * v_mx;
+        const Real t100 = t99 * t4;
+        const Real t101 = b * v_My;
+        const Real t102 = t101 * t0;
+        const Real t103 = b * v_my;
+        const Real t104 = t103 * t0;
+        const Real t105 = t64 * t96;
+        const Real t106 = t105 * t56;
+        const Real t107 = t96 - Real(1);
         const Real t108 = R_M * w_M;
         const Real t109 = M * R_M;
         const Real t110 = t109 * q_M;
         const Real t111 = R_M * b;
         const Real t112 = t111 * w_M;
         const Real t113 = std::fma(R_M, w_M, -t108);
-        const Real t114 = std::fma(std::fma(R_M, b, -t111), w_M, std::fma(t111, w_M, -t112));
-        const Real t115 = R_m * w_m;
-        const Real t116 = m * R_m;
-        const Real t117 = t116 * q_m;
-        const Real t118 = std::sqrt(t7);
-        const Real t119 = std::sqrt(t11);
-        const Real t120 = t53 * t119;
-        const Real t121 = t91 * t119;
+        const Real t114 = R_m * w_m;
+        const Real t115 = m * R_m;
+        const Real t116 = t115 * q_m;
+        const Real t117 = std::sqrt(t7);
+        const Real t118 = std::sqrt(t11);
+        const Real t119 = t56 * t118;
+        const Real t120 = t56 * t117;
+        const Real t121 = t95 * t118;
         const Real t122 = R_m * b;
-        const Real t123 = t108 + t115;
-        const Real t124 = t108 * t119;
+        const Real t123 = t108 + t114;
+        const Real t124 = t123 - t108;
         const Real t125 = t108 * t118;
-        const Real t126 = std::fma(R_m, w_m, t108);
-        const Real t127 = t112 * t119;
+        const Real t126 = t108 * t117;
+        const Real t127 = t112 * t118;
         const Real t128 = t122 * w_m;
-        const Real t129 = w_m * t118;
-        const Real t130 = std::fma(R_m, t129, t125);
-        const Real t131 = std::fma(v_Mx, t4, t130);
-        const Real t132 = std::fma(t35, t0, t131);
-        const Real t133 = std::fma(t19, t4, t132);
-        const Real t134 = std::fma(v_my, t0, t133);
-        const Real t135 = std::fma(R_m, w_m, -t115);
-        const Real t136 = t115 * t119;
-        const Real t137 = t115 * t118;
-        const Real t138 = t123 * t118;
-        const Real t139 = t138 + t16 - t25;
-        const Real t140 = t126 * t118;
-        const Real t141 = std::fma(t12, t4, t140);
-        const Real t142 = std::fma(t36, t0, t141);
-        const Real t143 = std::fma(-t119, t119, t11) + (t10 - (t11 - t7));
-        const Real t144 = t119 + t119;
-        const Real t145 = t128 * t119;
-        const Real t146 = std::fma(t53, t119, -t120);
-        const Real t147 = std::fma(t91, t119, -t121);
-        const Real t148 = std::fma(t108, t119, -t124);
-        const Real t149 = t124 + t136;
-        const Real t150 = t149 - t124;
-        const Real t151 = t127 + t124;
-        const Real t152 = t125 + t137 + t17 - t26 - t18 + t27;
-        const Real t153 = std::fma(t112, t119, -t127);
-        const Real t154 = t151 - t127;
-        const Real t155 = std::fma(std::fma(R_m, b, -t122), w_m, std::fma(t122, w_m, -t128));
-        const Real t156 = std::fabs(t134);
-        const Real t157 = t120 * t156;
-        const Real t158 = std::fma(t115, t119, -t136);
-        const Real t159 = std::fabs(t139);
-        const Real t160 = t103 * t159;
-        const Real t161 = std::fabs(t142);
-        const Real t162 = t103 * t161;
-        const Real t163 = std::fma(t128, t119, -t145);
-        const Real t164 = std::fabs(t152);
-        const Real t165 = t120 * t164;
-        const Real t166 = t127 - (t151 - t154) + (t124 - t154);
-        const Real t167 = t124 - (t149 - t150) + (t136 - t150);
-        const Real t168 = mu * t57;
-        const Real t169 = t52 * mu;
-        const Real t170 = t169 * t57;
-        const Real t171 = std::fma(mu, t75, t162);
-        const Real t172 = t168 * t81;
-        const Real t173 = t172 * t32;
-        const Real t174 = detail::blend(t171 > Real(0), Real(1), t121);
-        const Real t175 = detail::blend(t171 > Real(0), t144, Real(1));
-        const Real t176 = detail::blend(t171 > Real(0), Real(1), t144);
-        const Real t177 = detail::blend(t171 > Real(0), t157, Real(1));
-        const Real t178 = t160 + t173;
-        const Real t179 = detail::blend(t178 > Real(0), Real(1), t121);
-        const Real t180 = detail::blend(t178 > Real(0), t144, Real(1));
-        const Real t181 = detail::blend(t178 > Real(0), Real(1), t144);
-        const Real t182 = detail::blend(t178 > Real(0), t165, Real(1));
-        const std::int64_t usable = resolved & (std::fabs(t119) >= detail::smallest_divisor<Real>) & (std::fabs(t119) <= std::numeric_limits<Real>::max()) & (std::fabs(t144) >= detail::smallest_divisor<Real>) & (std::fabs(t144) <= std::numeric_limits<Real>::max()) & (std::fabs(t180) >= detail::smallest_divisor<Real>) & (std::fabs(t180) <= std::numeric_limits<Real>::max()) & (std::fabs(t181) >= detail::smallest_divisor<Real>) & (std::fabs(t181) <= std::numeric_limits<Real>::max()) & (std::fabs(t175) >= detail::smallest_divisor<Real>) & (std::fabs(t175) <= std::numeric_limits<Real>::max()) & (std::fabs(t176) >= detail::smallest_divisor<Real>) & (std::fabs(t176) <= std::numeric_limits<Real>::max()) & (std::fabs(t120) >= detail::smallest_divisor<Real>) & (std::fabs(t120) <= std::numeric_limits<Real>::max()) & (std::fabs(t182) >= detail::smallest_divisor<Real>) & (std::fabs(t182) <= std::numeric_limits<Real>::max()) & (std::fabs(t177) >= detail::smallest_divisor<Real>) & (std::fabs(t177) <= std::numeric_limits<Real>::max()) & (std::fabs(t179) >= detail::smallest_divisor<Real>) & (std::fabs(t179) <= std::numeric_limits<Real>::max()) & (std::fabs(t174) >= detail::smallest_divisor<Real>) & (std::fabs(t174) <= std::numeric_limits<Real>::max()) & (std::fabs(t110) >= detail::smallest_divisor<Real>) & (std::fabs(t110) <= std::numeric_limits<Real>::max()) & (std::fabs(t117) >= detail::smallest_divisor<Real>) & (std::fabs(t117) <= std::numeric_limits<Real>::max()) & (std::fabs(M) >= detail::smallest_divisor<Real>) & (std::fabs(M) <= std::numeric_limits<Real>::max()) & (std::fabs(m) >= detail::smallest_divisor<Real>) & (std::fabs(m) <= std::numeric_limits<Real>::max());
-        const Real t183 = t14 / detail::blend(usable, t119, Real(1));
-        const Real t184 = t15 / detail::blend(usable, t119, Real(1));
-        const Real t185 = t29 / detail::blend(usable, t119, Real(1));
-        const Real t186 = t30 / detail::blend(usable, t119, Real(1));
-        const Real t187 = t143 / detail::blend(usable, t144, Real(1));
-        const Real t188 = t143 / detail::blend(usable, t180, Real(1));
-        const Real t189 = t143 / detail::blend(usable, t181, Real(1));
-        const Real t190 = t143 / detail::blend(usable, t175, Real(1));
-        const Real t191 = t143 / detail::blend(usable, t176, Real(1));
-        const Real t192 = std::fma(std::fma(t55, mu, std::fma(t52, mu, -t169)), t57, std::fma(t169, t60, std::fma(t169, t57, -t170)));
-        const Real t193 = -t183;
-        const Real t194 = t183 + t185;
-        const Real t195 = t194 - t183;
-        const Real t196 = -t184;
-        const Real t197 = -t185;
-        const Real t198 = -t186;
-        const Real t199 = t167 + (std::fma(t113, t119, std::fma(t108, t188, t148)) + std::fma(t135, t119, std::fma(t115, t188, t158)));
-        const Real t200 = t149 + t199;
-        const Real t201 = t200 + t17;
-        const Real t202 = t166 + (std::fma(t114, t119, std::fma(t112, t189, t153)) + std::fma(t113, t119, std::fma(t108, t189, t148)));
-        const Real t203 = t151 + t202;
-        const Real t204 = t203 + t145;
-        const Real t205 = t167 + (std::fma(t113, t119, std::fma(t108, t190, t148)) + std::fma(t135, t119, std::fma(t115, t190, t158)));
-        const Real t206 = t149 + t205;
-        const Real t207 = t206 + t17;
-        const Real t208 = t166 + (std::fma(t114, t119, std::fma(t112, t191, t153)) + std::fma(t113, t119, std::fma(t108, t191, t148)));
-        const Real t209 = t151 + t208;
-        const Real t210 = t209 + t145;
-        const Real t211 = t201 - t200;
-        const Real t212 = t204 - t203;
-        const Real t213 = t207 - t206;
-        const Real t214 = t210 - t209;
-        const Real t215 = t183 - (t194 - t195) + (t185 - t195) + (std::fma(t193, t187, std::fma(t193, t119, t14) + t20) / detail::blend(usable, t119, Real(1)) + std::fma(t197, t187, std::fma(t197, t119, t29) + t39) / detail::blend(usable, t119, Real(1)));
-        const Real t216 = t194 + t215;
-        const Real t217 = t216 - t184;
-        const Real t218 = t200 - (t201 - t211) + (t17 - t211) + (t199 - (t200 - t149) + t22);
-        const Real t219 = t201 + t218;
-        const Real t220 = t219 - t26;
-        const Real t221 = t203 - (t204 - t212) + (t145 - t212) + (t202 - (t203 - t151) + std::fma(t155, t119, std::fma(t128, t189, t163)));
-        const Real t222 = t204 + t221;
-        const Real t223 = t222 + t136;
-        const Real t224 = t206 - (t207 - t213) + (t17 - t213) + (t205 - (t206 - t149) + t22);
-        const Real t225 = t207 + t224;
-        const Real t226 = t225 - t26;
-        const Real t227 = t209 - (t210 - t214) + (t145 - t214) + (t208 - (t209 - t151) + std::fma(t155, t119, std::fma(t128, t191, t163)));
-        const Real t228 = t210 + t227;
-        const Real t229 = t228 + t136;
-        const Real t230 = t217 - t216;
-        const Real t231 = t220 - t219;
-        const Real t232 = t223 - t222;
-        const Real t233 = t226 - t225;
-        const Real t234 = t229 - t228;
-        const Real t235 = t216 - (t217 - t230) - (t184 + t230) + (t215 - (t216 - t194) - std::fma(t196, t187, std::fma(t196, t119, t15) + t21) / detail::blend(usable, t119, Real(1)));
-        const Real t236 = t217 + t235;
-        const Real t237 = t236 - t186;
-        const Real t238 = t219 - (t220 - t231) - (t26 + t231) + (t218 - (t219 - t201) - t37);
-        const Real t239 = t220 + t238;
-        const Real t240 = t239 - t18;
-        const Real t241 = t222 - (t223 - t232) + (t136 - t232) + (t221 - (t222 - t204) + std::fma(t135, t119, std::fma(t115, t189, t158)));
-        const Real t242 = t223 + t241;
-        const Real t243 = t242 + t95;
-        const Real t244 = t225 - (t226 - t233) - (t26 + t233) + (t224 - (t225 - t207) - t37);
-        const Real t245 = t226 + t244;
-        const Real t246 = t245 - t18;
-        const Real t247 = t228 - (t229 - t234) + (t136 - t234) + (t227 - (t228 - t210) + std::fma(t135, t119, std::fma(t115, t191, t158)));
-        const Real t248 = t229 + t247;
-        const Real t249 = t248 + t95;
-        const Real t250 = t237 - t236;
-        const Real t251 = t240 - t239;
-        const Real t252 = t243 - t242;
-        const Real t253 = t246 - t245;
-        const Real t254 = t249 - t248;
-        const Real t255 = t236 - (t237 - t250) - (t186 + t250) + (t235 - (t236 - t217) - std::fma(t198, t187, std::fma(t198, t119, t30) + t40) / detail::blend(usable, t119, Real(1)));
-        const Real t256 = t237 + t255;
-        const Real t257 = t58 * t256;
-        const Real t258 = t257 / detail::blend(usable, t120, Real(1));
-        const Real t259 = t239 - (t240 - t251) - (t18 + t251) + (t238 - (t239 - t220) - t23);
-        const Real t260 = t240 + t259;
-        const Real t261 = t260 + t27;
-        const Real t262 = t242 - (t243 - t252) + (t95 - t252) + (t241 - (t242 - t223) + t104);
-        const Real t263 = t243 + t262;
-        const Real t264 = t263 - t99;
-        const Real t265 = t245 - (t246 - t253) - (t18 + t253) + (t244 - (t245 - t226) - t23);
-        const Real t266 = t246 + t265;
-        const Real t267 = t266 + t27;
-        const Real t268 = t248 - (t249 - t254) + (t95 - t254) + (t247 - (t248 - t229) + t104);
-        const Real t269 = t249 + t268;
-        const Real t270 = t269 - t99;
-        const Real t271 = -t258;
-        const Real t272 = t271 * t0;
-        const Real t273 = t271 * t4;
-        const Real t274 = t261 - t260;
-        const Real t275 = t264 - t263;
-        const Real t276 = t267 - t266;
-        const Real t277 = t270 - t269;
-        const Real t278 = t260 - (t261 - t274) + (t27 - t274) + (t259 - (t260 - t240) + t38);
-        const Real t279 = t261 + t278;
-        const Real t280 = t170 * t279;
-        const Real t281 = t280 * t50;
-        const Real t282 = t281 / detail::blend(usable, t182, Real(1));
-        const Real t283 = t263 - (t264 - t275) - (t99 + t275) + (t262 - (t263 - t243) - t106);
-        const Real t284 = t264 + t283;
-        const Real t285 = t284 - t97;
-        const Real t286 = t266 - (t267 - t276) + (t27 - t276) + (t265 - (t266 - t246) + t38);
-        const Real t287 = t267 + t286;
-        const Real t288 = t170 * t287;
-        const Real t289 = t288 * t50;
-        const Real t290 = t289 / detail::blend(usable, t177, Real(1));
-        const Real t291 = t269 - (t270 - t277) - (t99 + t277) + (t268 - (t269 - t249) - t106);
-        const Real t292 = t270 + t291;
-        const Real t293 = t292 - t97;
-        const Real t294 = -(std::fma(t271, std::fma(t56, t119, std::fma(t53, t187, t146)), std::fma(t271, t120, t257) + std::fma(std::fma(t55, t57, std::fma(t52, t60, std::fma(t52, t57, -t58))), t256, std::fma(t58, t255 - (t256 - t237), std::fma(t58, t256, -t257)))) / detail::blend(usable, t120, Real(1)));
-        const Real t295 = std::fma(t294, t0, std::fma(t271, t3, std::fma(t271, t0, -t272)));
-        const Real t296 = std::fma(t294, t4, std::fma(t271, t9, std::fma(t271, t4, -t273)));
-        const Real t297 = -t282;
-        const Real t298 = t285 - t284;
-        const Real t299 = -t290;
-        const Real t300 = t293 - t292;
-        const Real t301 = t284 - (t285 - t298) - (t97 + t298) + (t283 - (t284 - t264) - t105);
-        const Real t302 = t285 + t301;
-        const Real t303 = t302 + t101;
-        const Real t304 = t292 - (t293 - t300) - (t97 + t300) + (t291 - (t292 - t270) - t105);
-        const Real t305 = t293 + t304;
-        const Real t306 = t305 + t101;
-        const Real t307 = t303 - t302;
-        const Real t308 = t306 - t305;
-        const Real t309 = t302 - (t303 - t307) + (t101 - t307) + (t301 - (t302 - t285) + t107);
-        const Real t310 = t303 + t309;
-        const Real t311 = t310 + t17;
-        const Real t312 = t305 - (t306 - t308) + (t101 - t308) + (t304 - (t305 - t293) + t107);
-        const Real t313 = t306 + t312;
-        const Real t314 = t313 + t17;
-        const Real t315 = t311 - t310;
-        const Real t316 = t314 - t313;
-        const Real t317 = t310 - (t311 - t315) + (t17 - t315) + (t309 - (t310 - t303) + t22);
-        const Real t318 = t311 + t317;
-        const Real t319 = t318 - t26;
-        const Real t320 = t313 - (t314 - t316) + (t17 - t316) + (t312 - (t313 - t306) + t22);
-        const Real t321 = t314 + t320;
-        const Real t322 = t321 - t26;
-        const Real t323 = t319 - t318;
-        const Real t324 = t322 - t321;
-        const Real t325 = t318 - (t319 - t323) - (t26 + t323) + (t317 - (t318 - t311) - t37);
-        const Real t326 = t319 + t325;
-        const Real t327 = t326 - t18;
-        const Real t328 = t321 - (t322 - t324) - (t26 + t324) + (t320 - (t321 - t314) - t37);
-        const Real t329 = t322 + t328;
-        const Real t330 = t329 - t18;
-        const Real t331 = t327 - t326;
-        const Real t332 = t330 - t329;
-        const Real t333 = t326 - (t327 - t331) - (t18 + t331) + (t325 - (t326 - t319) - t23);
-        const Real t334 = t327 + t333;
-        const Real t335 = t334 + t27;
-        const Real t336 = t329 - (t330 - t332) - (t18 + t332) + (t328 - (t329 - t322) - t23);
-        const Real t337 = t330 + t336;
-        const Real t338 = t337 + t27;
-        const Real t339 = t335 - t334;
-        const Real t340 = t338 - t337;
-        const Real t341 = t334 - (t335 - t339) + (t27 - t339) + (t333 - (t334 - t327) + t38);
-        const Real t342 = t335 + t341;
-        const Real t343 = t68 * t342;
-        const Real t344 = t343 / detail::blend(usable, t179, Real(1));
-        const Real t345 = detail::blend(t178 > Real(0), t297, t344);
-        const Real t346 = t345 / detail::blend(usable, t119, Real(1));
-        const Real t347 = t346 * t0;
-        const Real t348 = t346 * t4;
-        const Real t349 = t272 - t348;
-        const Real t350 = t349 - t272;
-        const Real t351 = t273 + t347;
-        const Real t352 = t351 - t273;
-        const Real t353 = t337 - (t338 - t340) + (t27 - t340) + (t336 - (t337 - t330) + t38);
-        const Real t354 = t338 + t353;
-        const Real t355 = t68 * t354;
-        const Real t356 = t355 / detail::blend(usable, t174, Real(1));
-        const Real t357 = detail::blend(t171 > Real(0), t299, t356);
-        const Real t358 = t357 / detail::blend(usable, t119, Real(1));
-        const Real t359 = t358 * t0;
-        const Real t360 = t358 * t4;
-        const Real t361 = t358 * t119;
-        const Real t362 = t361 / detail::blend(usable, t110, Real(1));
-        const Real t363 = t361 / detail::blend(usable, t117, Real(1));
-        const Real t364 = t272 - t360;
-        const Real t365 = t364 - t272;
-        const Real t366 = t273 + t359;
-        const Real t367 = t366 - t273;
-        const Real t368 = -t344;
-        const Real t369 = -t346;
-        const Real t370 = -t356;
-        const Real t371 = -t358;
-        const Real t372 = -t362;
-        const Real t373 = -t363;
-        const Real t374 = std::fma(t369, t187, std::fma(t369, t119, t345) + detail::blend(t178 > Real(0), -(std::fma(t297, std::fma(std::fma(t56, t119, std::fma(t53, t188, t146)), t164, std::fma(t120, t164, -t165)), std::fma(t297, t165, t281) + std::fma(std::fma(t192, t279, std::fma(t170, t278 - (t279 - t261), std::fma(t170, t279, -t280))), t50, std::fma(t280, t51, std::fma(t280, t50, -t281)))) / detail::blend(usable, t182, Real(1))), std::fma(t368, std::fma(t92, t119, std::fma(t91, t189, t147)), std::fma(t368, t121, t343) + std::fma(t80, t342, std::fma(t68, t341 - (t342 - t335), std::fma(t68, t342, -t343)))) / detail::blend(usable, t179, Real(1)))) / detail::blend(usable, t119, Real(1));
-        const Real t375 = std::fma(t371, t187, std::fma(t371, t119, t357) + detail::blend(t171 > Real(0), -(std::fma(t299, std::fma(std::fma(t56, t119, std::fma(t53, t190, t146)), t156, std::fma(t120, t156, -t157)), std::fma(t299, t157, t289) + std::fma(std::fma(t192, t287, std::fma(t170, t286 - (t287 - t267), std::fma(t170, t287, -t288))), t50, std::fma(t288, t51, std::fma(t288, t50, -t289)))) / detail::blend(usable, t177, Real(1))), std::fma(t370, std::fma(t92, t119, std::fma(t91, t191, t147)), std::fma(t370, t121, t355) + std::fma(t80, t354, std::fma(t68, t353 - (t354 - t338), std::fma(t68, t354, -t355)))) / detail::blend(usable, t174, Real(1)))) / detail::blend(usable, t119, Real(1));
-        const Real t376 = std::fma(t375, t119, std::fma(t358, t187, std::fma(t358, t119, -t361)));
-        const Real t377 = t272 - (t349 - t350) - (t348 + t350) + (t295 - std::fma(t374, t4, std::fma(t346, t9, std::fma(t346, t4, -t348))));
-        const Real t378 = t349 + t377;
-        const Real t379 = t378 / detail::blend(usable, M, Real(1));
-        const Real t380 = t273 - (t351 - t352) + (t347 - t352) + (t296 + std::fma(t374, t0, std::fma(t346, t3, std::fma(t346, t0, -t347))));
-        const Real t381 = t351 + t380;
-        const Real t382 = t381 / detail::blend(usable, M, Real(1));
-        const Real t383 = t272 - (t364 - t365) - (t360 + t365) + (t295 - std::fma(t375, t4, std::fma(t358, t9, std::fma(t358, t4, -t360))));
-        const Real t384 = t364 + t383;
-        const Real t385 = t384 / detail::blend(usable, m, Real(1));
-        const Real t386 = t273 - (t366 - t367) + (t359 - t367) + (t296 + std::fma(t375, t0, std::fma(t358, t3, std::fma(t358, t0, -t359))));
-        const Real t387 = t366 + t386;
-        const Real t388 = t387 / detail::blend(usable, m, Real(1));
-        const Real t389 = -t385;
-        const Real t390 = -t388;
-        const Real v_Mx_out = v_Mx + (t379 + (std::fma(-t379, M, t378) + (t377 - (t378 - t349))) / detail::blend(usable, M, Real(1)));
-        const Real v_My_out = v_My + (t382 + (std::fma(-t382, M, t381) + (t380 - (t381 - t351))) / detail::blend(usable, M, Real(1)));
-        const Real v_mx_out = v_mx + (t389 + -((std::fma(t389, m, t384) + (t383 - (t384 - t364))) / detail::blend(usable, m, Real(1))));
-        const Real v_my_out = v_my + (t390 + -((std::fma(t390, m, t387) + (t386 - (t387 - t366))) / detail::blend(usable, m, Real(1))));
-        const Real w_M_out = w_M + (t372 + -(std::fma(t372, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t372, t110, t361) + t376) / detail::blend(usable, t110, Real(1))));
-        const Real w_m_out = w_m + (t373 + -(std::fma(t373, std::fma(std::fma(m, R_m, -t116), q_m, std::fma(t116, q_m, -t117)), std::fma(t373, t117, t361) + t376) / detail::blend(usable, t117, Real(1))));
-        const Real finite0 = detail::zero_if_finite(t134, t139);
-        const Real finite1 = detail::zero_if_finite(t142, t152);
-        const Real finite2 = detail::zero_if_finite(v_Mx_out, v_My_out);
-        const Real finite3 = detail::zero_if_finite(v_mx_out, v_my_out);
-        const Real finite4 = detail::zero_if_finite(w_M_out, w_m_out);
-        const Real finite5 = finite0 + finite1;
-        const Real finite6 = finite2 + finite3;
-        const Real finite7 = finite5 + finite6;
-        const Real finite8 = finite7 + finite4;
-        const std::int64_t finite = (finite8 == Real(0));
+        const Real t129 = std::fma(R_m, w_m, -t114);
+        const Real t130 = t114 * t118;
+        const Real t131 = t114 * t117;
+        const Real t132 = std::fma(-t118, t118, t11) + (t10 - (t11 - t7));
+        const Real t133 = t118 + t118;
+        const Real t134 = t128 * t118;
+        const Real t135 = std::fma(t56, t118, -t119);
+        const Real t136 = std::fma(t108, t118, -t125);
+        const Real t137 = t125 + t130;
+        const Real t138 = t137 - t125;
+        const Real t139 = t127 + t125;
+        const Real t140 = t126 + t131 + t17 - t28 - t18 + t29;
+        const Real t141 = t139 - t127;
+        const Real t142 = t108 - (t123 - t124) + (t114 - t124) + (t113 + t129);
+        const Real t143 = t123 + t142;
+        const Real t144 = t143 * t118;
+        const Real t145 = t144 + t16;
+        const Real t146 = std::fma(t114, t118, -t130);
+        const Real t147 = std::fabs(t140);
+        const Real t148 = t120 * t147;
+        const Real t149 = t145 - t144;
+        const Real t150 = t144 - (t145 - t149) + (t16 - t149) + (std::fma(t142 - (t143 - t123), t118, std::fma(t143, t118, -t144)) + std::fma(t25, t4, std::fma(t12, t9, std::fma(t12, t4, -t16))));
+        const Real t151 = t145 + t150;
+        const Real t152 = t151 - t27;
+        const Real t153 = t152 - t151;
+        const Real t154 = t151 - (t152 - t153) - (t27 + t153) + (t150 - (t151 - t145) - std::fma(t42, t0, std::fma(t26, t3, std::fma(t26, t0, -t27))));
+        const Real t155 = t152 + t154;
+        const Real t156 = t154 - (t155 - t152);
+        const Real t157 = detail::blend(t155 > Real(0), t155, -t155);
+        const Real t158 = t106 * t157;
+        const Real t159 = mu * t60;
+        const Real t160 = t55 * mu;
+        const Real t161 = t160 * t60;
+        const Real t162 = t159 * t89;
+        const Real t163 = t162 * t47;
+        const Real t164 = t158 + t163;
+        const Real t165 = t164 - t158;
+        const Real t166 = t158 - (t164 - t165) + (t163 - t165) + (std::fma(std::fma(std::fma(std::fma(q_M, q_m, -t64), t96, std::fma(t64, Real(1) - (t96 - t107) + (b - t107), std::fma(t64, t96, -t105))), t56, std::fma(t105, t59, std::fma(t105, t56, -t106))), t157, std::fma(t106, detail::blend(t155 > Real(0), t156, -t156), std::fma(t106, t157, -t158))) + std::fma(std::fma(std::fma(mu, t63, std::fma(mu, t60, -t159)), t89, std::fma(t159, t88 - (t89 - t82), std::fma(t159, t89, -t162))), t47, std::fma(t162, t46 - (t47 - t33), std::fma(t162, t47, -t163))));
+        const Real t167 = t164 + t166;
+        const Real t168 = t167 + (t166 - (t167 - t164));
+        const Real t169 = detail::blend(t168 > Real(0), Real(1), t121);
+        const Real t170 = detail::blend(t168 > Real(0), t133, Real(1));
+        const Real t171 = detail::blend(t168 > Real(0), Real(1), t133);
+        const Real t172 = detail::blend(t168 > Real(0), t148, Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t118) >= detail::smallest_divisor<Real>) & (std::fabs(t118) <= std::numeric_limits<Real>::max()) & (std::fabs(t133) >= detail::smallest_divisor<Real>) & (std::fabs(t133) <= std::numeric_limits<Real>::max()) & (std::fabs(t170) >= detail::smallest_divisor<Real>) & (std::fabs(t170) <= std::numeric_limits<Real>::max()) & (std::fabs(t171) >= detail::smallest_divisor<Real>) & (std::fabs(t171) <= std::numeric_limits<Real>::max()) & (std::fabs(t119) >= detail::smallest_divisor<Real>) & (std::fabs(t119) <= std::numeric_limits<Real>::max()) & (std::fabs(t172) >= detail::smallest_divisor<Real>) & (std::fabs(t172) <= std::numeric_limits<Real>::max()) & (std::fabs(t169) >= detail::smallest_divisor<Real>) & (std::fabs(t169) <= std::numeric_limits<Real>::max()) & (std::fabs(t110) >= detail::smallest_divisor<Real>) & (std::fabs(t110) <= std::numeric_limits<Real>::max()) & (std::fabs(t116) >= detail::smallest_divisor<Real>) & (std::fabs(t116) <= std::numeric_limits<Real>::max()) & (std::fabs(M) >= detail::smallest_divisor<Real>) & (std::fabs(M) <= std::numeric_limits<Real>::max()) & (std::fabs(m) >= detail::smallest_divisor<Real>) & (std::fabs(m) <= std::numeric_limits<Real>::max());
+        const Real t173 = t14 / detail::blend(usable, t118, Real(1));
+        const Real t174 = t15 / detail::blend(usable, t118, Real(1));
+        const Real t175 = t31 / detail::blend(usable, t118, Real(1));
+        const Real t176 = t32 / detail::blend(usable, t118, Real(1));
+        const Real t177 = t132 / detail::blend(usable, t133, Real(1));
+        const Real t178 = t132 / detail::blend(usable, t170, Real(1));
+        const Real t179 = t132 / detail::blend(usable, t171, Real(1));
+        const Real t180 = -t173;
+        const Real t181 = t173 + t175;
+        const Real t182 = t181 - t173;
+        const Real t183 = -t174;
+        const Real t184 = -t175;
+        const Real t185 = -t176;
+        const Real t186 = t125 - (t137 - t138) + (t130 - t138) + (std::fma(t113, t118, std::fma(t108, t178, t136)) + std::fma(t129, t118, std::fma(t114, t178, t146)));
+        const Real t187 = t137 + t186;
+        const Real t188 = t187 + t17;
+        const Real t189 = t127 - (t139 - t141) + (t125 - t141) + (std::fma(std::fma(std::fma(R_M, b, -t111), w_M, std::fma(t111, w_M, -t112)), t118, std::fma(t112, t179, std::fma(t112, t118, -t127))) + std::fma(t113, t118, std::fma(t108, t179, t136)));
+        const Real t190 = t139 + t189;
+        const Real t191 = t190 + t134;
+        const Real t192 = t188 - t187;
+        const Real t193 = t191 - t190;
+        const Real t194 = t173 - (t181 - t182) + (t175 - t182) + (std::fma(t180, t177, std::fma(t180, t118, t14) + t21) / detail::blend(usable, t118, Real(1)) + std::fma(t184, t177, std::fma(t184, t118, t31) + t40) / detail::blend(usable, t118, Real(1)));
+        const Real t195 = t181 + t194;
+        const Real t196 = t195 - t174;
+        const Real t197 = t187 - (t188 - t192) + (t17 - t192) + (t186 - (t187 - t137) + t23);
+        const Real t198 = t188 + t197;
+        const Real t199 = t198 - t28;
+        const Real t200 = t190 - (t191 - t193) + (t134 - t193) + (t189 - (t190 - t139) + std::fma(std::fma(std::fma(R_m, b, -t122), w_m, std::fma(t122, w_m, -t128)), t118, std::fma(t128, t179, std::fma(t128, t118, -t134))));
+        const Real t201 = t191 + t200;
+        const Real t202 = t201 + t130;
+        const Real t203 = t196 - t195;
+        const Real t204 = t199 - t198;
+        const Real t205 = t202 - t201;
+        const Real t206 = t195 - (t196 - t203) - (t174 + t203) + (t194 - (t195 - t181) - std::fma(t183, t177, std::fma(t183, t118, t15) + t22) / detail::blend(usable, t118, Real(1)));
+        const Real t207 = t196 + t206;
+        const Real t208 = t207 - t176;
+        const Real t209 = t198 - (t199 - t204) - (t28 + t204) + (t197 - (t198 - t188) - t38);
+        const Real t210 = t199 + t209;
+        const Real t211 = t210 - t18;
+        const Real t212 = t201 - (t202 - t205) + (t130 - t205) + (t200 - (t201 - t191) + std::fma(t129, t118, std::fma(t114, t179, t146)));
+        const Real t213 = t202 + t212;
+        const Real t214 = t213 + t98;
+        const Real t215 = t208 - t207;
+        const Real t216 = t211 - t210;
+        const Real t217 = t214 - t213;
+        const Real t218 = t207 - (t208 - t215) - (t176 + t215) + (t206 - (t207 - t196) - std::fma(t185, t177, std::fma(t185, t118, t32) + t41) / detail::blend(usable, t118, Real(1)));
+        const Real t219 = t208 + t218;
+        const Real t220 = t61 * t219;
+        const Real t221 = t220 / detail::blend(usable, t119, Real(1));
+        const Real t222 = t210 - (t211 - t216) - (t18 + t216) + (t209 - (t210 - t199) - t24);
+        const Real t223 = t211 + t222;
+        const Real t224 = t223 + t29;
+        const Real t225 = t213 - (t214 - t217) + (t98 - t217) + (t212 - (t213 - t202) + std::fma(std::fma(b, v_Mx, -t97), t4, std::fma(t97, t9, std::fma(t97, t4, -t98))));
+        const Real t226 = t214 + t225;
+        const Real t227 = t226 - t102;
+        const Real t228 = -t221;
+        const Real t229 = t228 * t0;
+        const Real t230 = t228 * t4;
+        const Real t231 = t224 - t223;
+        const Real t232 = t227 - t226;
+        const Real t233 = t223 - (t224 - t231) + (t29 - t231) + (t222 - (t223 - t211) + t39);
+        const Real t234 = t224 + t233;
+        const Real t235 = t161 * t234;
+        const Real t236 = t235 * t54;
+        const Real t237 = t236 / detail::blend(usable, t172, Real(1));
+        const Real t238 = t226 - (t227 - t232) - (t102 + t232) + (t225 - (t226 - t214) - std::fma(std::fma(b, v_My, -t101), t0, std::fma(t101, t3, std::fma(t101, t0, -t102))));
+        const Real t239 = t227 + t238;
+        const Real t240 = t239 - t100;
+        const Real t241 = -(std::fma(t228, std::fma(t59, t118, std::fma(t56, t177, t135)), std::fma(t228, t119, t220) + std::fma(std::fma(t58, t60, std::fma(t55, t63, std::fma(t55, t60, -t61))), t219, std::fma(t61, t218 - (t219 - t208), std::fma(t61, t219, -t220)))) / detail::blend(usable, t119, Real(1)));
+        const Real t242 = t233 - (t234 - t224);
+        const Real t243 = detail::blend(t234 > Real(0), t234, -t234);
+        const Real t244 = t119 * t243;
+        const Real t245 = -t237;
+        const Real t246 = t240 - t239;
+        const Real t247 = t239 - (t240 - t246) - (t100 + t246) + (t238 - (t239 - t227) - std::fma(std::fma(b, v_mx, -t99), t4, std::fma(t99, t9, std::fma(t99, t4, -t100))));
+        const Real t248 = t240 + t247;
+        const Real t249 = t248 + t104;
+        const Real t250 = t249 - t248;
+        const Real t251 = t248 - (t249 - t250) + (t104 - t250) + (t247 - (t248 - t240) + std::fma(std::fma(b, v_my, -t103), t0, std::fma(t103, t3, std::fma(t103, t0, -t104))));
+        const Real t252 = t249 + t251;
+        const Real t253 = t252 + t17;
+        const Real t254 = t253 - t252;
+        const Real t255 = t252 - (t253 - t254) + (t17 - t254) + (t251 - (t252 - t249) + t23);
+        const Real t256 = t253 + t255;
+        const Real t257 = t256 - t28;
+        const Real t258 = t257 - t256;
+        const Real t259 = t256 - (t257 - t258) - (t28 + t258) + (t255 - (t256 - t253) - t38);
+        const Real t260 = t257 + t259;
+        const Real t261 = t260 - t18;
+        const Real t262 = t261 - t260;
+        const Real t263 = t260 - (t261 - t262) - (t18 + t262) + (t259 - (t260 - t257) - t24);
+        const Real t264 = t261 + t263;
+        const Real t265 = t264 + t29;
+        const Real t266 = t265 - t264;
+        const Real t267 = t264 - (t265 - t266) + (t29 - t266) + (t263 - (t264 - t261) + t39);
+        const Real t268 = t265 + t267;
+        const Real t269 = t71 * t268;
+        const Real t270 = t269 / detail::blend(usable, t169, Real(1));
+        const Real t271 = detail::blend(t168 > Real(0), t245, t270);
+        const Real t272 = t271 / detail::blend(usable, t118, Real(1));
+        const Real t273 = t272 * t0;
+        const Real t274 = t272 * t4;
+        const Real t275 = t272 * t118;
+        const Real t276 = t275 / detail::blend(usable, t110, Real(1));
+        const Real t277 = t275 / detail::blend(usable, t116, Real(1));
+        const Real t278 = t229 - t274;
+        const Real t279 = t278 - t229;
+        const Real t280 = t230 + t273;
+        const Real t281 = t280 - t230;
+        const Real t282 = -t270;
+        const Real t283 = -t272;
+        const Real t284 = -t276;
+        const Real t285 = -t277;
+        const Real t286 = std::fma(t283, t177, std::fma(t283, t118, t271) + detail::blend(t168 > Real(0), -(std::fma(t245, std::fma(std::fma(t59, t118, std::fma(t56, t178, t135)), t243, std::fma(t119, detail::blend(t234 > Real(0), t242, -t242), std::fma(t119, t243, -t244))), std::fma(t245, t244, t236) + std::fma(std::fma(std::fma(std::fma(t58, mu, std::fma(t55, mu, -t160)), t60, std::fma(t160, t63, std::fma(t160, t60, -t161))), t234, std::fma(t161, t242, std::fma(t161, t234, -t235))), t54, std::fma(t235, t53 - (t54 - t51), std::fma(t235, t54, -t236)))) / detail::blend(usable, t172, Real(1))), std::fma(t282, std::fma(t94 - (t95 - t92), t118, std::fma(t95, t179, std::fma(t95, t118, -t121))), std::fma(t282, t121, t269) + std::fma(std::fma(std::fma(t58, q_M, std::fma(t55, q_M, -t68)), q_m, std::fma(t68, q_m, -t71)), t268, std::fma(t71, t267 - (t268 - t265), std::fma(t71, t268, -t269)))) / detail::blend(usable, t169, Real(1)))) / detail::blend(usable, t118, Real(1));
+        const Real t287 = std::fma(t286, t118, std::fma(t272, t177, std::fma(t272, t118, -t275)));
+        const Real t288 = t229 - (t278 - t279) - (t274 + t279) + (std::fma(t241, t0, std::fma(t228, t3, std::fma(t228, t0, -t229))) - std::fma(t286, t4, std::fma(t272, t9, std::fma(t272, t4, -t274))));
+        const Real t289 = t278 + t288;
+        const Real t290 = t289 / detail::blend(usable, M, Real(1));
+        const Real t291 = t289 / detail::blend(usable, m, Real(1));
+        const Real t292 = t230 - (t280 - t281) + (t273 - t281) + (std::fma(t241, t4, std::fma(t228, t9, std::fma(t228, t4, -t230))) + std::fma(t286, t0, std::fma(t272, t3, std::fma(t272, t0, -t273))));
+        const Real t293 = t280 + t292;
+        const Real t294 = t293 / detail::blend(usable, M, Real(1));
+        const Real t295 = t293 / detail::blend(usable, m, Real(1));
+        const Real t296 = t288 - (t289 - t278);
+        const Real t297 = -t291;
+        const Real t298 = t292 - (t293 - t280);
+        const Real t299 = -t295;
+        const Real v_Mx_out = v_Mx + (t290 + (std::fma(-t290, M, t289) + t296) / detail::blend(usable, M, Real(1)));
+        const Real v_My_out = v_My + (t294 + (std::fma(-t294, M, t293) + t298) / detail::blend(usable, M, Real(1)));
+        const Real v_mx_out = v_mx + (t297 + -((std::fma(t297, m, t289) + t296) / detail::blend(usable, m, Real(1))));
+        const Real v_my_out = v_my + (t299 + -((std::fma(t299, m, t293) + t298) / detail::blend(usable, m, Real(1))));
+        const Real w_M_out = w_M + (t284 + -(std::fma(t284, std::fma(std::fma(M, R_M, -t109), q_M, std::fma(t109, q_M, -t110)), std::fma(t284, t110, t275) + t287) / detail::blend(usable, t110, Real(1))));
+        const Real w_m_out = w_m + (t285 + -(std::fma(t285, std::fma(std::fma(m, R_m, -t115), q_m, std::fma(t115, q_m, -t116)), std::fma(t285, t116, t275) + t287) / detail::blend(usable, t116, Real(1))));
+        const Real finite0 = detail::zero_if_finite(t140, v_Mx_out);
+        const Real finite1 = detail::zero_if_finite(v_My_out, v_mx_out);
+        const Real finite2 = detail::zero_if_finite(v_my_out, w_M_out);
+        const Real finite3 = detail::zero_if_finite(w_m_out);
+        const Real finite4 = finite0 + finite1;
+        const Real finite5 = finite2 + finite3;
+        const Real finite6 = finite4 + finite5;
+        const std::int64_t finite = (finite6 == Real(0));
         std::int64_t doubtful = 0;
         if constexpr (collide_rough_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_rough_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_rough_batch_2d_k<Real>);
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
         }
         if constexpr (collide_rough_batch_2d_k<Real> < 0)
-            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(t24)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(t24)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(std::fabs(t31), detail::most(detail::most(std::fabs(t52), detail::zero_as_min(M)), detail::zero_as_min(m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t58), detail::zero_as_min(t57)), detail::most(detail::most(std::fabs(t61), detail::zero_as_min(q_M)), detail::zero_as_min(q_m))), detail::least(detail::most(detail::most(std::fabs(t62), detail::zero_as_min(M)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(m)), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(std::fabs(t65), detail::zero_as_min(q_M))), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_m)), detail::most(std::fabs(t69), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t71), detail::zero_as_min(q_m)), detail::zero_as_min(t67))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(t66)), std::fabs(t73))), detail::least(detail::least(detail::most(std::fabs(t74), detail::zero_as_min(t57)), std::fabs(t75)), detail::least(detail::most(std::fabs(t79), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t94), detail::zero_as_min(b)), detail::zero_as_min(v_Mx))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t95), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t96), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t97), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t98), detail::zero_as_min(b)), detail::zero_as_min(v_My)))), detail::least(detail::least(detail::most(std::fabs(t99), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t100), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t101), detail::zero_as_min(t0)), detail::most(std::fabs(t102), detail::zero_as_min(t93))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(t53)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t110), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t112), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)), detail::most(detail::most(std::fabs(t116), detail::zero_as_min(m)), detail::zero_as_min(R_m)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t117), detail::zero_as_min(q_m)), detail::most(std::fabs(t120), detail::zero_as_min(t53))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t91)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))), detail::least(detail::least(std::fabs(t124), std::fabs(t125)), detail::least(std::fabs(t126), std::fabs(t127)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t128), detail::zero_as_min(w_m)), detail::most(std::fabs(t129), detail::zero_as_min(w_m))), detail::least(std::fabs(t130), std::fabs(t131))), detail::least(detail::least(std::fabs(t132), std::fabs(t133)), detail::least(std::fabs(t134), std::fabs(t136))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t137), detail::most(std::fabs(t138), detail::zero_as_min(t123))), detail::least(std::fabs(t140), std::fabs(t141))), detail::least(detail::least(std::fabs(t142), std::fabs(t145)), detail::least(std::fabs(t156), std::fabs(t157)))), detail::least(detail::least(detail::least(std::fabs(t159), std::fabs(t160)), detail::least(std::fabs(t161), std::fabs(t162))), detail::least(detail::least(std::fabs(t164), std::fabs(t165)), detail::least(detail::most(detail::most(std::fabs(t168), detail::zero_as_min(mu)), detail::zero_as_min(t57)), detail::most(std::fabs(t169), detail::zero_as_min(mu)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t170), detail::zero_as_min(t57)), std::fabs(t171)), detail::least(detail::most(std::fabs(t172), detail::zero_as_min(t81)), detail::most(std::fabs(t173), detail::zero_as_min(t32)))), detail::least(detail::least(std::fabs(t183), std::fabs(t184)), detail::least(std::fabs(t185), std::fabs(t186)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t257), detail::zero_as_min(t256)), std::fabs(t258)), detail::least(detail::most(std::fabs(t272), detail::zero_as_min(t0)), detail::most(std::fabs(t273), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(std::fabs(t280), detail::zero_as_min(t279)), detail::most(std::fabs(t281), detail::zero_as_min(t50))), detail::least(std::fabs(t282), detail::most(std::fabs(t288), detail::zero_as_min(t287))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t289), detail::zero_as_min(t50)), std::fabs(t290)), detail::least(detail::most(std::fabs(t343), detail::zero_as_min(t342)), std::fabs(t344))), detail::least(detail::least(detail::most(std::fabs(t346), detail::zero_as_min(t345)), detail::most(std::fabs(t347), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t348), detail::zero_as_min(t4)), detail::most(std::fabs(t355), detail::zero_as_min(t354))))), detail::least(detail::least(detail::least(std::fabs(t356), detail::most(std::fabs(t358), detail::zero_as_min(t357))), detail::least(detail::most(std::fabs(t359), detail::zero_as_min(t0)), detail::most(std::fabs(t360), detail::zero_as_min(t4)))), detail::least(detail::least(std::fabs(t361), std::fabs(t362)), detail::least(std::fabs(t363), detail::most(std::fabs(t379), detail::zero_as_min(t378)))))), detail::least(detail::least(detail::most(std::fabs(t382), detail::zero_as_min(t381)), detail::most(std::fabs(t385), detail::zero_as_min(t384))), detail::most(std::fabs(t388), detail::zero_as_min(t387)))))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t26)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(t26)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t31), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t32), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t55), detail::zero_as_min(M)), detail::zero_as_min(m)), detail::most(std::fabs(t61), detail::zero_as_min(t60)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(q_M)), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t65), detail::zero_as_min(M)), detail::zero_as_min(q_M))), detail::least(detail::most(detail::most(std::fabs(t66), detail::zero_as_min(m)), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t67), detail::zero_as_min(m)), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_M)), detail::most(std::fabs(t71), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(q_m)), detail::most(std::fabs(t73), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t75), detail::zero_as_min(t69)), detail::most(std::fabs(t79), detail::zero_as_min(t70))), detail::least(detail::most(detail::most(std::fabs(t97), detail::zero_as_min(b)), detail::zero_as_min(v_Mx)), detail::most(std::fabs(t98), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t99), detail::zero_as_min(b)), detail::zero_as_min(v_mx)), detail::most(std::fabs(t100), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t101), detail::zero_as_min(b)), detail::zero_as_min(v_My)), detail::most(std::fabs(t102), detail::zero_as_min(t0))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t103), detail::zero_as_min(b)), detail::zero_as_min(v_my)), detail::most(std::fabs(t104), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t105), detail::zero_as_min(t96)), detail::most(std::fabs(t106), detail::zero_as_min(t56)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M)), detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M))), detail::least(detail::most(std::fabs(t110), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t112), detail::zero_as_min(w_M)), detail::most(detail::most(std::fabs(t114), detail::zero_as_min(R_m)), detail::zero_as_min(w_m))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(m)), detail::zero_as_min(R_m)), detail::most(std::fabs(t116), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(std::fabs(t119), detail::zero_as_min(t56)), detail::most(std::fabs(t120), detail::zero_as_min(t56))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t95)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t125), std::fabs(t126)), detail::least(std::fabs(t127), detail::most(std::fabs(t128), detail::zero_as_min(w_m)))), detail::least(detail::least(std::fabs(t130), std::fabs(t131)), detail::least(std::fabs(t134), detail::most(std::fabs(t144), detail::zero_as_min(t143))))), detail::least(detail::least(detail::least(std::fabs(t147), std::fabs(t148)), detail::least(detail::most(std::fabs(t158), detail::zero_as_min(t157)), detail::most(detail::most(std::fabs(t159), detail::zero_as_min(mu)), detail::zero_as_min(t60)))), detail::least(detail::least(detail::most(std::fabs(t160), detail::zero_as_min(mu)), detail::most(std::fabs(t161), detail::zero_as_min(t60))), detail::least(detail::most(std::fabs(t162), detail::zero_as_min(t89)), detail::most(std::fabs(t163), detail::zero_as_min(t47)))))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t173), std::fabs(t174)), detail::least(std::fabs(t175), std::fabs(t176))), detail::least(detail::least(detail::most(std::fabs(t220), detail::zero_as_min(t219)), std::fabs(t221)), detail::least(detail::most(std::fabs(t229), detail::zero_as_min(t0)), detail::most(std::fabs(t230), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t235), detail::zero_as_min(t234)), detail::most(std::fabs(t236), detail::zero_as_min(t54))), detail::least(std::fabs(t237), detail::most(std::fabs(t244), detail::zero_as_min(t243)))), detail::least(detail::least(detail::most(std::fabs(t269), detail::zero_as_min(t268)), std::fabs(t270)), detail::least(detail::most(std::fabs(t272), detail::zero_as_min(t271)), detail::most(std::fabs(t273), detail::zero_as_min(t0)))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t274), detail::zero_as_min(t4)), std::fabs(t275)), detail::least(std::fabs(t276), std::fabs(t277))), detail::least(detail::least(detail::most(std::fabs(t290), detail::zero_as_min(t289)), detail::most(std::fabs(t291), detail::zero_as_min(t289))), detail::least(detail::most(std::fabs(t294), detail::zero_as_min(t293)), detail::most(std::fabs(t295), detail::zero_as_min(t293))))))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
         v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
@@ -2956,14 +2598,14 @@ namespace detail {
 
 // collide_rough(m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 666 operations with the guards' conditions, of them 22
-// division(s) and 3 square root(s) (the accurate form: 1076, 33 and 4).
+// bound (verification.md): 1361 operations with the guards' conditions, of them 22
+// division(s) and 3 square root(s) (the accurate form: 1423, 25 and 3).
 // v_M[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
-// v_m[0] is computed in the form "limit of v_mx + (K_n*r_x - K_t*r_y)/m, fma, compensated let": at most 2.80 ulps in double on 4200 samples.
-// v_m[1] is computed in the form "limit of v_my + (K_n*r_y + K_t*r_x)/m, fma, compensated let": at most 4.29 ulps in double on 4200 samples.
+// v_m[0] is computed in the form "limit of v_mx + (K_n*r_x - K_t*r_y)/m, compensated let": at most 3.24 ulps in double on 4200 samples.
+// v_m[1] is computed in the form "limit of v_my + (K_n*r_y + K_t*r_x)/m, compensated let": at most 3.48 ulps in double on 4200 samples.
 // w_M is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
-// w_m is computed in the form "limit of w_m - K_t*d/(q_m*m*R_m), fma, compensated let": at most 5.71 ulps in double on 4200 samples.
+// w_m is computed in the form "limit of w_m - K_t*d/(q_m*m*R_m), compensated let": at most 5.71 ulps in double on 4200 samples.
 template <class Real>
 inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu, fast_t) noexcept
 {
@@ -3005,530 +2647,660 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
         out.status = status::non_finite;
         return out;
     }
-    const Real t0 = -Real(2);
-    const Real t1 = C_Mx - C_mx;
-    const Real t2 = t1 - C_Mx;
-    const Real t3 = C_Mx * C_Mx;
-    const Real t4 = C_Mx * C_mx;
-    const Real t5 = std::fma(t0, t4, t3);
-    const Real t6 = C_mx * C_mx;
-    const Real t7 = t1 * t1;
-    const Real t8 = C_Mx - (t1 - t2) - (C_mx + t2);
-    const Real t9 = C_My - C_my;
-    const Real t10 = t9 - C_My;
-    const Real t11 = C_My * C_My;
-    const Real t12 = t5 + t11;
-    const Real t13 = C_My * C_my;
-    const Real t14 = std::fma(t0, t13, t12);
-    const Real t15 = C_my * C_my;
-    const Real t16 = t9 * t9;
-    const Real t17 = t7 + t16;
-    const Real t18 = t17 - t7;
-    const Real t19 = C_My - (t9 - t10) - (C_my + t10);
-    const Real t20 = t7 - (t17 - t18) + (t16 - t18) + (std::fma(t8, t1, std::fma(t1, t8, std::fma(t1, t1, -t7))) + std::fma(t19, t9, std::fma(t9, t19, std::fma(t9, t9, -t16))));
-    const Real t21 = t17 + t20;
-    const Real t22 = v_Mx * t1;
-    const Real t23 = v_mx * t1;
-    const Real t24 = v_Mx * t9;
-    const Real t25 = v_mx * t9;
-    const Real t26 = -v_Mx;
-    const Real t27 = -v_mx;
-    const Real t28 = std::fma(v_Mx, t8, std::fma(v_Mx, t1, -t22));
-    const Real t29 = std::fma(v_mx, t8, std::fma(v_mx, t1, -t23));
-    const Real t30 = std::fma(v_Mx, t19, std::fma(v_Mx, t9, -t24));
-    const Real t31 = std::fma(v_mx, t19, std::fma(v_mx, t9, -t25));
-    const Real t32 = v_My * t1;
-    const Real t33 = v_my * t1;
-    const Real t34 = v_My * t9;
-    const Real t35 = v_my * t9;
-    const Real t36 = t22 + t34;
-    const Real t37 = t36 - t22;
-    if (!(t17 > Real(0))) {
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 - C_Mx;
+    const Real t2 = C_Mx * C_Mx;
+    const Real t3 = Real(2) * C_Mx;
+    const Real t4 = t3 * C_mx;
+    const Real t5 = C_mx * C_mx;
+    const Real t6 = t0 * t0;
+    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t8 = t2 - t4;
+    const Real t9 = t8 - t2;
+    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
+    const Real t11 = t8 + t10;
+    const Real t12 = C_My - C_my;
+    const Real t13 = t12 - C_My;
+    const Real t14 = C_My * C_My;
+    const Real t15 = t11 + t14;
+    const Real t16 = t15 - t11;
+    const Real t17 = Real(2) * C_My;
+    const Real t18 = t17 * C_my;
+    const Real t19 = C_my * C_my;
+    const Real t20 = t12 * t12;
+    const Real t21 = t6 + t20;
+    const Real t22 = t21 - t6;
+    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
+    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
+    const Real t25 = t15 + t24;
+    const Real t26 = t25 - t18;
+    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
+    const Real t28 = t21 + t27;
+    const Real t29 = t26 - t25;
+    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
+    const Real t31 = t26 + t30;
+    const Real t32 = t31 + t5;
+    const Real t33 = t32 - t31;
+    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
+    const Real t35 = t32 + t34;
+    const Real t36 = t35 + t19;
+    const Real t37 = t36 - t35;
+    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
+    const Real t39 = t36 + t38;
+    const Real t40 = v_Mx * t0;
+    const Real t41 = v_mx * t0;
+    const Real t42 = v_Mx * C_My;
+    const Real t43 = v_Mx * C_my;
+    const Real t44 = v_mx * C_My;
+    const Real t45 = v_mx * C_my;
+    const Real t46 = v_Mx * t12;
+    const Real t47 = v_mx * t12;
+    const Real t48 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t40));
+    const Real t49 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t41));
+    const Real t50 = std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t46));
+    const Real t51 = std::fma(v_mx, t23, std::fma(v_mx, t12, -t47));
+    const Real t52 = v_My * C_Mx;
+    const Real t53 = v_My * C_mx;
+    const Real t54 = v_my * C_Mx;
+    const Real t55 = v_my * C_mx;
+    const Real t56 = v_My * t0;
+    const Real t57 = v_my * t0;
+    const Real t58 = v_My * t12;
+    const Real t59 = v_my * t12;
+    const Real t60 = t40 + t58;
+    const Real t61 = t60 - t40;
+    if (!(t21 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-((v_Mx - v_mx) * t1) - (v_My - v_my) * t9 > Real(0))) {
+    if (!(-((v_Mx - v_mx) * t0) - (v_My - v_my) * t12 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t38 = -v_My;
-    const Real t39 = -v_my;
-    const Real t40 = std::fma(v_My, t8, std::fma(v_My, t1, -t32));
-    const Real t41 = std::fma(v_my, t8, std::fma(v_my, t1, -t33));
-    const Real t42 = std::fma(v_My, t19, std::fma(v_My, t9, -t34));
-    const Real t43 = std::fma(v_my, t19, std::fma(v_my, t9, -t35));
-    const Real t44 = t22 - (t36 - t37) + (t34 - t37) + (t28 + t42);
-    const Real t45 = t36 + t44;
-    const Real t46 = t45 - t23;
-    const Real t47 = t46 - t45;
-    const Real t48 = t45 - (t46 - t47) - (t23 + t47) + (t44 - (t45 - t36) - t29);
-    const Real t49 = t46 + t48;
-    const Real t50 = t49 - t35;
-    const Real t51 = t50 - t49;
-    const Real t52 = t49 - (t50 - t51) - (t35 + t51) + (t48 - (t49 - t46) - t43);
-    const Real t53 = t50 + t52;
-    const Real t54 = Real(1) + eps;
-    const Real t55 = t54 - Real(1);
-    const Real t56 = Real(1) - (t54 - t55) + (eps - t55);
-    const Real t57 = m * t54;
-    const Real t58 = q_M * q_m;
-    const Real t59 = t58 * eps;
-    const Real t60 = q_m * eps;
-    const Real t61 = m * q_M;
-    const Real t62 = -q_M;
-    const Real t63 = t61 * q_m;
-    const Real t64 = q_M + t58;
-    const Real t65 = t64 - q_M;
-    const Real t66 = q_M - (t64 - t65) + (t58 - t65) + std::fma(q_M, q_m, -t58);
-    const Real t67 = t64 + t66;
-    const Real t68 = t59 * mu;
-    const Real t69 = t68 * v_Mx;
-    const Real t70 = t69 * C_Mx;
-    const Real t71 = mu * v_Mx;
-    const Real t72 = t71 * C_Mx;
-    const Real t73 = t71 * C_mx;
-    const Real t74 = mu * v_mx;
-    const Real t75 = t74 * C_Mx;
-    const Real t76 = t74 * C_mx;
-    const Real t77 = mu * v_My;
-    const Real t78 = t77 * C_My;
-    const Real t79 = t77 * C_my;
-    const Real t80 = mu * v_my;
-    const Real t81 = t80 * C_My;
-    const Real t82 = t80 * C_my;
-    const Real t83 = eps * mu;
-    const Real t84 = t83 * v_Mx;
-    const Real t85 = t84 * C_Mx;
-    const Real t86 = t84 * C_mx;
-    const Real t87 = t83 * v_mx;
-    const Real t88 = t87 * C_Mx;
-    const Real t89 = t87 * C_mx;
-    const Real t90 = t83 * v_My;
-    const Real t91 = t90 * C_My;
-    const Real t92 = t90 * C_my;
-    const Real t93 = t83 * v_my;
-    const Real t94 = t93 * C_My;
-    const Real t95 = t93 * C_my;
-    const Real t96 = m * mu;
-    const Real t97 = t96 * t54;
-    const Real t98 = q_m * mu;
-    const Real t99 = t98 * v_Mx;
-    const Real t100 = t99 * C_Mx;
-    const Real t101 = t99 * C_mx;
-    const Real t102 = t98 * v_mx;
-    const Real t103 = t102 * C_Mx;
-    const Real t104 = t102 * C_mx;
-    const Real t105 = t98 * v_My;
-    const Real t106 = t105 * C_My;
-    const Real t107 = t105 * C_my;
-    const Real t108 = t98 * v_my;
-    const Real t109 = t108 * C_My;
-    const Real t110 = t108 * C_my;
-    const Real t111 = t60 * mu;
-    const Real t112 = t111 * v_Mx;
-    const Real t113 = t112 * C_mx;
-    const Real t114 = t111 * v_mx;
-    const Real t115 = t114 * C_Mx;
-    const Real t116 = t114 * C_mx;
-    const Real t117 = t111 * v_My;
-    const Real t118 = t117 * C_My;
-    const Real t119 = t117 * C_my;
-    const Real t120 = t111 * v_my;
-    const Real t121 = t120 * C_My;
-    const Real t122 = t120 * C_my;
-    const Real t123 = std::fma(t62, t113, t70);
-    const Real t124 = std::fma(q_M, t118, t123);
-    const Real t125 = std::fma(t62, t119, t124);
-    const Real t126 = std::fma(t62, t115, t125);
-    const Real t127 = std::fma(q_M, t116, t126);
-    const Real t128 = std::fma(t62, t121, t127);
-    const Real t129 = std::fma(q_M, t122, t128);
-    const Real t130 = q_m * b;
-    const Real t131 = b * v_Mx;
-    const Real t132 = t131 * t9;
-    const Real t133 = b * v_mx;
-    const Real t134 = t133 * t9;
-    const Real t135 = b * v_My;
-    const Real t136 = t135 * t1;
-    const Real t137 = b * v_my;
-    const Real t138 = t137 * t1;
-    const Real t139 = R_M * w_M;
-    const Real t140 = R_M * b;
-    const Real t141 = t140 * w_M;
-    const Real t142 = std::fma(R_M, w_M, -t139);
-    const Real t143 = R_m * w_m;
-    const Real t144 = m * R_m;
-    const Real t145 = t144 * q_m;
-    const Real t146 = std::sqrt(t17);
-    const Real t147 = std::sqrt(t14 + t6 + t15);
-    const Real t148 = std::sqrt(t21);
-    const Real t149 = t67 * t148;
-    const Real t150 = R_m * b;
-    const Real t151 = t139 * t147;
-    const Real t152 = t139 * t148;
-    const Real t153 = t139 * t146;
-    const Real t154 = t141 * t148;
-    const Real t155 = w_m * t147;
-    const Real t156 = std::fma(R_m, t155, t151);
-    const Real t157 = std::fma(v_Mx, C_My, t156);
-    const Real t158 = std::fma(t26, C_my, t157);
-    const Real t159 = std::fma(t38, C_Mx, t158);
-    const Real t160 = std::fma(v_My, C_mx, t159);
-    const Real t161 = std::fma(t27, C_My, t160);
-    const Real t162 = std::fma(v_mx, C_my, t161);
-    const Real t163 = std::fma(v_my, C_Mx, t162);
-    const Real t164 = std::fma(t39, C_mx, t163);
-    const Real t165 = w_m * t146;
-    const Real t166 = std::fma(R_m, t165, t153);
-    const Real t167 = std::fma(v_Mx, t9, t166);
-    const Real t168 = std::fma(t38, t1, t167);
-    const Real t169 = std::fma(t27, t9, t168);
-    const Real t170 = std::fma(v_my, t1, t169);
-    const Real t171 = t150 * w_m;
-    const Real t172 = std::fma(R_m, w_m, -t143);
-    const Real t173 = t143 * t148;
-    const Real t174 = std::fma(-t148, t148, t21) + (t20 - (t21 - t17));
-    const Real t175 = t148 + t148;
-    const Real t176 = t171 * t148;
-    const Real t177 = std::fma(t139, t148, -t152);
-    const Real t178 = t152 + t173;
-    const Real t179 = t178 - t152;
-    const Real t180 = t154 + t152;
-    const Real t181 = t180 - t154;
-    const Real t182 = std::fabs(t164);
-    const Real t183 = q_m * t182;
-    const Real t184 = t130 * t182;
-    const Real t185 = std::fma(q_M, t184, t129);
-    const Real t186 = std::fma(q_M, t100, t185);
-    const Real t187 = std::fma(t62, t101, t186);
-    const Real t188 = std::fma(q_M, t106, t187);
-    const Real t189 = std::fma(t62, t107, t188);
-    const Real t190 = std::fma(t62, t103, t189);
-    const Real t191 = std::fma(q_M, t104, t190);
-    const Real t192 = std::fma(t62, t109, t191);
-    const Real t193 = std::fma(q_M, t110, t192);
-    const Real t194 = std::fma(q_M, t183, t193);
-    const Real t195 = std::fma(q_M, t85, t194);
-    const Real t196 = std::fma(t62, t86, t195);
-    const Real t197 = std::fma(q_M, t91, t196);
-    const Real t198 = std::fma(t62, t92, t197);
-    const Real t199 = std::fma(t62, t88, t198);
-    const Real t200 = std::fma(q_M, t89, t199);
-    const Real t201 = std::fma(t62, t94, t200);
-    const Real t202 = std::fma(q_M, t95, t201);
-    const Real t203 = std::fma(q_M, t72, t202);
-    const Real t204 = std::fma(t62, t73, t203);
-    const Real t205 = std::fma(q_M, t78, t204);
-    const Real t206 = std::fma(t62, t79, t205);
-    const Real t207 = std::fma(t62, t75, t206);
-    const Real t208 = std::fma(q_M, t76, t207);
-    const Real t209 = std::fma(t62, t81, t208);
-    const Real t210 = std::fma(q_M, t82, t209);
-    const Real t211 = (t210 > Real(0) ? Real(1) : t149);
-    const Real t212 = std::fabs(t170);
-    const Real t213 = t148 * t212;
-    const Real t214 = std::fma(t143, t148, -t173);
-    const Real t215 = (t210 > Real(0) ? t175 : Real(1));
-    const Real t216 = (t210 > Real(0) ? Real(1) : t175);
-    const Real t217 = (t210 > Real(0) ? t213 : Real(1));
-    if (!(std::fabs(t148) >= detail::smallest_divisor<Real>) || !(std::fabs(t148) <= std::numeric_limits<Real>::max()) || !(std::fabs(t175) >= detail::smallest_divisor<Real>) || !(std::fabs(t175) <= std::numeric_limits<Real>::max()) || !(std::fabs(t215) >= detail::smallest_divisor<Real>) || !(std::fabs(t215) <= std::numeric_limits<Real>::max()) || !(std::fabs(t216) >= detail::smallest_divisor<Real>) || !(std::fabs(t216) <= std::numeric_limits<Real>::max()) || !(std::fabs(t217) >= detail::smallest_divisor<Real>) || !(std::fabs(t217) <= std::numeric_limits<Real>::max()) || !(std::fabs(t211) >= detail::smallest_divisor<Real>) || !(std::fabs(t211) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max()) || !(std::fabs(t145) >= detail::smallest_divisor<Real>) || !(std::fabs(t145) <= std::numeric_limits<Real>::max())) {
+    const Real t62 = std::fma(v_My, t7, std::fma(v_My, t0, -t56));
+    const Real t63 = std::fma(v_my, t7, std::fma(v_my, t0, -t57));
+    const Real t64 = std::fma(v_My, t23, std::fma(v_My, t12, -t58));
+    const Real t65 = std::fma(v_my, t23, std::fma(v_my, t12, -t59));
+    const Real t66 = t40 - (t60 - t61) + (t58 - t61) + (t48 + t64);
+    const Real t67 = t60 + t66;
+    const Real t68 = t67 - t41;
+    const Real t69 = t68 - t67;
+    const Real t70 = t67 - (t68 - t69) - (t41 + t69) + (t66 - (t67 - t60) - t49);
+    const Real t71 = t68 + t70;
+    const Real t72 = t71 - t59;
+    const Real t73 = t72 - t71;
+    const Real t74 = t71 - (t72 - t73) - (t59 + t73) + (t70 - (t71 - t68) - t65);
+    const Real t75 = t72 + t74;
+    const Real t76 = Real(1) + eps;
+    const Real t77 = t76 - Real(1);
+    const Real t78 = Real(1) - (t76 - t77) + (eps - t77);
+    const Real t79 = m * t76;
+    const Real t80 = q_M * q_m;
+    const Real t81 = t80 * eps;
+    const Real t82 = q_M * eps;
+    const Real t83 = m * q_M;
+    const Real t84 = t83 * q_m;
+    const Real t85 = q_M + t80;
+    const Real t86 = t85 - q_M;
+    const Real t87 = std::fma(q_M, q_m, -t80);
+    const Real t88 = q_M - (t85 - t86) + (t80 - t86) + t87;
+    const Real t89 = t85 + t88;
+    const Real t90 = t81 * mu;
+    const Real t91 = t90 * v_Mx;
+    const Real t92 = t91 * C_Mx;
+    const Real t93 = t91 * C_mx;
+    const Real t94 = t90 * v_mx;
+    const Real t95 = t94 * C_Mx;
+    const Real t96 = t94 * C_mx;
+    const Real t97 = t90 * v_My;
+    const Real t98 = t97 * C_My;
+    const Real t99 = t97 * C_my;
+    const Real t100 = t90 * v_my;
+    const Real t101 = t100 * C_My;
+    const Real t102 = t100 * C_my;
+    const Real t103 = m * mu;
+    const Real t104 = t103 * t76;
+    const Real t105 = q_M * mu;
+    const Real t106 = t105 * v_Mx;
+    const Real t107 = t106 * C_Mx;
+    const Real t108 = t106 * C_mx;
+    const Real t109 = t105 * v_mx;
+    const Real t110 = t109 * C_Mx;
+    const Real t111 = t109 * C_mx;
+    const Real t112 = t105 * v_My;
+    const Real t113 = t112 * C_My;
+    const Real t114 = t112 * C_my;
+    const Real t115 = t105 * v_my;
+    const Real t116 = t115 * C_My;
+    const Real t117 = t115 * C_my;
+    const Real t118 = t80 * mu;
+    const Real t119 = t118 * v_Mx;
+    const Real t120 = t119 * C_Mx;
+    const Real t121 = t119 * C_mx;
+    const Real t122 = t118 * v_mx;
+    const Real t123 = t122 * C_Mx;
+    const Real t124 = t122 * C_mx;
+    const Real t125 = t118 * v_My;
+    const Real t126 = t125 * C_My;
+    const Real t127 = t125 * C_my;
+    const Real t128 = t118 * v_my;
+    const Real t129 = t128 * C_My;
+    const Real t130 = t128 * C_my;
+    const Real t131 = t82 * mu;
+    const Real t132 = t131 * v_Mx;
+    const Real t133 = t132 * C_Mx;
+    const Real t134 = t132 * C_mx;
+    const Real t135 = t131 * v_mx;
+    const Real t136 = t135 * C_Mx;
+    const Real t137 = t135 * C_mx;
+    const Real t138 = t131 * v_My;
+    const Real t139 = t138 * C_My;
+    const Real t140 = t138 * C_my;
+    const Real t141 = t131 * v_my;
+    const Real t142 = t141 * C_My;
+    const Real t143 = t141 * C_my;
+    const Real t144 = std::fma(std::fma(t87, eps, std::fma(t80, eps, -t81)), mu, std::fma(t81, mu, -t90));
+    const Real t145 = std::fma(t144, v_Mx, std::fma(t90, v_Mx, -t91));
+    const Real t146 = t92 - t93;
+    const Real t147 = t146 - t92;
+    const Real t148 = std::fma(t144, v_mx, std::fma(t90, v_mx, -t94));
+    const Real t149 = std::fma(t144, v_My, std::fma(t90, v_My, -t97));
+    const Real t150 = std::fma(t144, v_my, std::fma(t90, v_my, -t100));
+    const Real t151 = std::fma(q_M, mu, -t105);
+    const Real t152 = std::fma(t151, v_Mx, std::fma(t105, v_Mx, -t106));
+    const Real t153 = std::fma(t151, v_mx, std::fma(t105, v_mx, -t109));
+    const Real t154 = std::fma(t151, v_My, std::fma(t105, v_My, -t112));
+    const Real t155 = std::fma(t151, v_my, std::fma(t105, v_my, -t115));
+    const Real t156 = std::fma(t87, mu, std::fma(t80, mu, -t118));
+    const Real t157 = std::fma(t156, v_Mx, std::fma(t118, v_Mx, -t119));
+    const Real t158 = std::fma(t156, v_mx, std::fma(t118, v_mx, -t122));
+    const Real t159 = std::fma(t156, v_My, std::fma(t118, v_My, -t125));
+    const Real t160 = std::fma(t156, v_my, std::fma(t118, v_my, -t128));
+    const Real t161 = std::fma(std::fma(q_M, eps, -t82), mu, std::fma(t82, mu, -t131));
+    const Real t162 = std::fma(t161, v_Mx, std::fma(t131, v_Mx, -t132));
+    const Real t163 = std::fma(t161, v_mx, std::fma(t131, v_mx, -t135));
+    const Real t164 = std::fma(t161, v_My, std::fma(t131, v_My, -t138));
+    const Real t165 = std::fma(t161, v_my, std::fma(t131, v_my, -t141));
+    const Real t166 = t92 - (t146 - t147) - (t93 + t147) + (std::fma(t145, C_Mx, std::fma(t91, C_Mx, -t92)) - std::fma(t145, C_mx, std::fma(t91, C_mx, -t93)));
+    const Real t167 = t146 + t166;
+    const Real t168 = t167 + t98;
+    const Real t169 = t168 - t167;
+    const Real t170 = t167 - (t168 - t169) + (t98 - t169) + (t166 - (t167 - t146) + std::fma(t149, C_My, std::fma(t97, C_My, -t98)));
+    const Real t171 = t168 + t170;
+    const Real t172 = t171 - t99;
+    const Real t173 = t172 - t171;
+    const Real t174 = t171 - (t172 - t173) - (t99 + t173) + (t170 - (t171 - t168) - std::fma(t149, C_my, std::fma(t97, C_my, -t99)));
+    const Real t175 = t172 + t174;
+    const Real t176 = t175 - t95;
+    const Real t177 = t176 - t175;
+    const Real t178 = t175 - (t176 - t177) - (t95 + t177) + (t174 - (t175 - t172) - std::fma(t148, C_Mx, std::fma(t94, C_Mx, -t95)));
+    const Real t179 = t176 + t178;
+    const Real t180 = t179 + t96;
+    const Real t181 = t180 - t179;
+    const Real t182 = t179 - (t180 - t181) + (t96 - t181) + (t178 - (t179 - t176) + std::fma(t148, C_mx, std::fma(t94, C_mx, -t96)));
+    const Real t183 = t180 + t182;
+    const Real t184 = t183 - t101;
+    const Real t185 = t184 - t183;
+    const Real t186 = t183 - (t184 - t185) - (t101 + t185) + (t182 - (t183 - t180) - std::fma(t150, C_My, std::fma(t100, C_My, -t101)));
+    const Real t187 = t184 + t186;
+    const Real t188 = t187 + t102;
+    const Real t189 = t188 - t187;
+    const Real t190 = t187 - (t188 - t189) + (t102 - t189) + (t186 - (t187 - t184) + std::fma(t150, C_my, std::fma(t100, C_my, -t102)));
+    const Real t191 = t188 + t190;
+    const Real t192 = t80 * b;
+    const Real t193 = b * v_Mx;
+    const Real t194 = t193 * t12;
+    const Real t195 = b * v_mx;
+    const Real t196 = t195 * t12;
+    const Real t197 = b * v_My;
+    const Real t198 = t197 * t0;
+    const Real t199 = b * v_my;
+    const Real t200 = t199 * t0;
+    const Real t201 = R_M * w_M;
+    const Real t202 = R_M * b;
+    const Real t203 = t202 * w_M;
+    const Real t204 = std::fma(R_M, w_M, -t201);
+    const Real t205 = R_m * w_m;
+    const Real t206 = m * R_m;
+    const Real t207 = t206 * q_m;
+    const Real t208 = std::sqrt(t21);
+    const Real t209 = std::sqrt(t28);
+    const Real t210 = std::sqrt(t39);
+    const Real t211 = t89 * t209;
+    const Real t212 = R_m * b;
+    const Real t213 = t201 * t210;
+    const Real t214 = t201 * t209;
+    const Real t215 = t201 * t208;
+    const Real t216 = t203 * t209;
+    const Real t217 = t212 * w_m;
+    const Real t218 = std::fma(R_m, w_m, -t205);
+    const Real t219 = t205 * t210;
+    const Real t220 = t205 * t209;
+    const Real t221 = t205 * t208;
+    const Real t222 = std::fma(-t209, t209, t28) + (t27 - (t28 - t21));
+    const Real t223 = t209 + t209;
+    const Real t224 = t217 * t209;
+    const Real t225 = t213 + t219;
+    const Real t226 = t225 - t213;
+    const Real t227 = std::fma(t201, t209, -t214);
+    const Real t228 = t214 + t220;
+    const Real t229 = t228 - t214;
+    const Real t230 = t216 + t214;
+    const Real t231 = t215 + t221 + t46 - t56 - t47 + t57;
+    const Real t232 = t230 - t216;
+    const Real t233 = std::fma(t205, t209, -t220);
+    const Real t234 = std::fabs(t231);
+    const Real t235 = t208 * t234;
+    const Real t236 = t213 - (t225 - t226) + (t219 - t226) + (std::fma(t204, t210, std::fma(t201, t210, -t213)) + std::fma(t218, t210, std::fma(t205, t210, -t219)));
+    const Real t237 = t225 + t236;
+    const Real t238 = t237 + t42;
+    const Real t239 = t238 - t237;
+    const Real t240 = t237 - (t238 - t239) + (t42 - t239) + (t236 - (t237 - t225) + std::fma(v_Mx, C_My, -t42));
+    const Real t241 = t238 + t240;
+    const Real t242 = t241 - t43;
+    const Real t243 = t242 - t241;
+    const Real t244 = t241 - (t242 - t243) - (t43 + t243) + (t240 - (t241 - t238) - std::fma(v_Mx, C_my, -t43));
+    const Real t245 = t242 + t244;
+    const Real t246 = t245 - t52;
+    const Real t247 = t246 - t245;
+    const Real t248 = t245 - (t246 - t247) - (t52 + t247) + (t244 - (t245 - t242) - std::fma(v_My, C_Mx, -t52));
+    const Real t249 = t246 + t248;
+    const Real t250 = t249 + t53;
+    const Real t251 = t250 - t249;
+    const Real t252 = t249 - (t250 - t251) + (t53 - t251) + (t248 - (t249 - t246) + std::fma(v_My, C_mx, -t53));
+    const Real t253 = t250 + t252;
+    const Real t254 = t253 - t44;
+    const Real t255 = t254 - t253;
+    const Real t256 = t253 - (t254 - t255) - (t44 + t255) + (t252 - (t253 - t250) - std::fma(v_mx, C_My, -t44));
+    const Real t257 = t254 + t256;
+    const Real t258 = t257 + t45;
+    const Real t259 = t258 - t257;
+    const Real t260 = t257 - (t258 - t259) + (t45 - t259) + (t256 - (t257 - t254) + std::fma(v_mx, C_my, -t45));
+    const Real t261 = t258 + t260;
+    const Real t262 = t261 + t54;
+    const Real t263 = t262 - t261;
+    const Real t264 = t261 - (t262 - t263) + (t54 - t263) + (t260 - (t261 - t258) + std::fma(v_my, C_Mx, -t54));
+    const Real t265 = t262 + t264;
+    const Real t266 = t265 - t55;
+    const Real t267 = t266 - t265;
+    const Real t268 = t265 - (t266 - t267) - (t55 + t267) + (t264 - (t265 - t262) - std::fma(v_my, C_mx, -t55));
+    const Real t269 = t266 + t268;
+    const Real t270 = t268 - (t269 - t266);
+    const Real t271 = (t269 > Real(0) ? t269 : -t269);
+    const Real t272 = t80 * t271;
+    const Real t273 = t192 * t271;
+    const Real t274 = t191 + t273;
+    const Real t275 = t274 - t191;
+    const Real t276 = (t269 > Real(0) ? t270 : -t270);
+    const Real t277 = t191 - (t274 - t275) + (t273 - t275) + (t190 - (t191 - t188) + std::fma(std::fma(t87, b, std::fma(t80, b, -t192)), t271, std::fma(t192, t276, std::fma(t192, t271, -t273))));
+    const Real t278 = t274 + t277;
+    const Real t279 = t278 + t120;
+    const Real t280 = t279 - t278;
+    const Real t281 = t278 - (t279 - t280) + (t120 - t280) + (t277 - (t278 - t274) + std::fma(t157, C_Mx, std::fma(t119, C_Mx, -t120)));
+    const Real t282 = t279 + t281;
+    const Real t283 = t282 - t121;
+    const Real t284 = t283 - t282;
+    const Real t285 = t282 - (t283 - t284) - (t121 + t284) + (t281 - (t282 - t279) - std::fma(t157, C_mx, std::fma(t119, C_mx, -t121)));
+    const Real t286 = t283 + t285;
+    const Real t287 = t286 + t126;
+    const Real t288 = t287 - t286;
+    const Real t289 = t286 - (t287 - t288) + (t126 - t288) + (t285 - (t286 - t283) + std::fma(t159, C_My, std::fma(t125, C_My, -t126)));
+    const Real t290 = t287 + t289;
+    const Real t291 = t290 - t127;
+    const Real t292 = t291 - t290;
+    const Real t293 = t290 - (t291 - t292) - (t127 + t292) + (t289 - (t290 - t287) - std::fma(t159, C_my, std::fma(t125, C_my, -t127)));
+    const Real t294 = t291 + t293;
+    const Real t295 = t294 - t123;
+    const Real t296 = t295 - t294;
+    const Real t297 = t294 - (t295 - t296) - (t123 + t296) + (t293 - (t294 - t291) - std::fma(t158, C_Mx, std::fma(t122, C_Mx, -t123)));
+    const Real t298 = t295 + t297;
+    const Real t299 = t298 + t124;
+    const Real t300 = t299 - t298;
+    const Real t301 = t298 - (t299 - t300) + (t124 - t300) + (t297 - (t298 - t295) + std::fma(t158, C_mx, std::fma(t122, C_mx, -t124)));
+    const Real t302 = t299 + t301;
+    const Real t303 = t302 - t129;
+    const Real t304 = t303 - t302;
+    const Real t305 = t302 - (t303 - t304) - (t129 + t304) + (t301 - (t302 - t299) - std::fma(t160, C_My, std::fma(t128, C_My, -t129)));
+    const Real t306 = t303 + t305;
+    const Real t307 = t306 + t130;
+    const Real t308 = t307 - t306;
+    const Real t309 = t306 - (t307 - t308) + (t130 - t308) + (t305 - (t306 - t303) + std::fma(t160, C_my, std::fma(t128, C_my, -t130)));
+    const Real t310 = t307 + t309;
+    const Real t311 = t310 + t272;
+    const Real t312 = t311 - t310;
+    const Real t313 = t310 - (t311 - t312) + (t272 - t312) + (t309 - (t310 - t307) + std::fma(t87, t271, std::fma(t80, t276, std::fma(t80, t271, -t272))));
+    const Real t314 = t311 + t313;
+    const Real t315 = t314 + t133;
+    const Real t316 = t315 - t314;
+    const Real t317 = t314 - (t315 - t316) + (t133 - t316) + (t313 - (t314 - t311) + std::fma(t162, C_Mx, std::fma(t132, C_Mx, -t133)));
+    const Real t318 = t315 + t317;
+    const Real t319 = t318 - t134;
+    const Real t320 = t319 - t318;
+    const Real t321 = t318 - (t319 - t320) - (t134 + t320) + (t317 - (t318 - t315) - std::fma(t162, C_mx, std::fma(t132, C_mx, -t134)));
+    const Real t322 = t319 + t321;
+    const Real t323 = t322 + t139;
+    const Real t324 = t323 - t322;
+    const Real t325 = t322 - (t323 - t324) + (t139 - t324) + (t321 - (t322 - t319) + std::fma(t164, C_My, std::fma(t138, C_My, -t139)));
+    const Real t326 = t323 + t325;
+    const Real t327 = t326 - t140;
+    const Real t328 = t327 - t326;
+    const Real t329 = t326 - (t327 - t328) - (t140 + t328) + (t325 - (t326 - t323) - std::fma(t164, C_my, std::fma(t138, C_my, -t140)));
+    const Real t330 = t327 + t329;
+    const Real t331 = t330 - t136;
+    const Real t332 = t331 - t330;
+    const Real t333 = t330 - (t331 - t332) - (t136 + t332) + (t329 - (t330 - t327) - std::fma(t163, C_Mx, std::fma(t135, C_Mx, -t136)));
+    const Real t334 = t331 + t333;
+    const Real t335 = t334 + t137;
+    const Real t336 = t335 - t334;
+    const Real t337 = t334 - (t335 - t336) + (t137 - t336) + (t333 - (t334 - t331) + std::fma(t163, C_mx, std::fma(t135, C_mx, -t137)));
+    const Real t338 = t335 + t337;
+    const Real t339 = t338 - t142;
+    const Real t340 = t339 - t338;
+    const Real t341 = t338 - (t339 - t340) - (t142 + t340) + (t337 - (t338 - t335) - std::fma(t165, C_My, std::fma(t141, C_My, -t142)));
+    const Real t342 = t339 + t341;
+    const Real t343 = t342 + t143;
+    const Real t344 = t343 - t342;
+    const Real t345 = t342 - (t343 - t344) + (t143 - t344) + (t341 - (t342 - t339) + std::fma(t165, C_my, std::fma(t141, C_my, -t143)));
+    const Real t346 = t343 + t345;
+    const Real t347 = t346 + t107;
+    const Real t348 = t347 - t346;
+    const Real t349 = t346 - (t347 - t348) + (t107 - t348) + (t345 - (t346 - t343) + std::fma(t152, C_Mx, std::fma(t106, C_Mx, -t107)));
+    const Real t350 = t347 + t349;
+    const Real t351 = t350 - t108;
+    const Real t352 = t351 - t350;
+    const Real t353 = t350 - (t351 - t352) - (t108 + t352) + (t349 - (t350 - t347) - std::fma(t152, C_mx, std::fma(t106, C_mx, -t108)));
+    const Real t354 = t351 + t353;
+    const Real t355 = t354 + t113;
+    const Real t356 = t355 - t354;
+    const Real t357 = t354 - (t355 - t356) + (t113 - t356) + (t353 - (t354 - t351) + std::fma(t154, C_My, std::fma(t112, C_My, -t113)));
+    const Real t358 = t355 + t357;
+    const Real t359 = t358 - t114;
+    const Real t360 = t359 - t358;
+    const Real t361 = t358 - (t359 - t360) - (t114 + t360) + (t357 - (t358 - t355) - std::fma(t154, C_my, std::fma(t112, C_my, -t114)));
+    const Real t362 = t359 + t361;
+    const Real t363 = t362 - t110;
+    const Real t364 = t363 - t362;
+    const Real t365 = t362 - (t363 - t364) - (t110 + t364) + (t361 - (t362 - t359) - std::fma(t153, C_Mx, std::fma(t109, C_Mx, -t110)));
+    const Real t366 = t363 + t365;
+    const Real t367 = t366 + t111;
+    const Real t368 = t367 - t366;
+    const Real t369 = t366 - (t367 - t368) + (t111 - t368) + (t365 - (t366 - t363) + std::fma(t153, C_mx, std::fma(t109, C_mx, -t111)));
+    const Real t370 = t367 + t369;
+    const Real t371 = t370 - t116;
+    const Real t372 = t371 - t370;
+    const Real t373 = t370 - (t371 - t372) - (t116 + t372) + (t369 - (t370 - t367) - std::fma(t155, C_My, std::fma(t115, C_My, -t116)));
+    const Real t374 = t371 + t373;
+    const Real t375 = t374 + t117;
+    const Real t376 = t375 - t374;
+    const Real t377 = t374 - (t375 - t376) + (t117 - t376) + (t373 - (t374 - t371) + std::fma(t155, C_my, std::fma(t115, C_my, -t117)));
+    const Real t378 = t375 + t377;
+    const Real t379 = t378 + (t377 - (t378 - t375));
+    const Real t380 = (t379 > Real(0) ? Real(1) : t211);
+    const Real t381 = (t379 > Real(0) ? t223 : Real(1));
+    const Real t382 = (t379 > Real(0) ? Real(1) : t223);
+    const Real t383 = (t379 > Real(0) ? t235 : Real(1));
+    if (!(std::fabs(t209) >= detail::smallest_divisor<Real>) || !(std::fabs(t209) <= std::numeric_limits<Real>::max()) || !(std::fabs(t223) >= detail::smallest_divisor<Real>) || !(std::fabs(t223) <= std::numeric_limits<Real>::max()) || !(std::fabs(t381) >= detail::smallest_divisor<Real>) || !(std::fabs(t381) <= std::numeric_limits<Real>::max()) || !(std::fabs(t382) >= detail::smallest_divisor<Real>) || !(std::fabs(t382) <= std::numeric_limits<Real>::max()) || !(std::fabs(t383) >= detail::smallest_divisor<Real>) || !(std::fabs(t383) <= std::numeric_limits<Real>::max()) || !(std::fabs(t380) >= detail::smallest_divisor<Real>) || !(std::fabs(t380) <= std::numeric_limits<Real>::max()) || !(std::fabs(t207) >= detail::smallest_divisor<Real>) || !(std::fabs(t207) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t218 = t22 / t148;
-    const Real t219 = t23 / t148;
-    const Real t220 = t34 / t148;
-    const Real t221 = t35 / t148;
-    const Real t222 = t174 / t175;
-    const Real t223 = t174 / t215;
-    const Real t224 = t174 / t216;
-    const Real t225 = -t218;
-    const Real t226 = t218 + t220;
-    const Real t227 = t226 - t218;
-    const Real t228 = -t219;
-    const Real t229 = -t220;
-    const Real t230 = -t221;
-    const Real t231 = t154 - (t180 - t181) + (t152 - t181) + (std::fma(std::fma(std::fma(R_M, b, -t140), w_M, std::fma(t140, w_M, -t141)), t148, std::fma(t141, t224, std::fma(t141, t148, -t154))) + std::fma(t142, t148, std::fma(t139, t224, t177)));
-    const Real t232 = t180 + t231;
-    const Real t233 = t232 + t176;
-    const Real t234 = t152 - (t178 - t179) + (t173 - t179) + (std::fma(t142, t148, std::fma(t139, t223, t177)) + std::fma(t172, t148, std::fma(t143, t223, t214)));
-    const Real t235 = t178 + t234;
-    const Real t236 = t235 + t24;
-    const Real t237 = t233 - t232;
-    const Real t238 = t236 - t235;
-    const Real t239 = t218 - (t226 - t227) + (t220 - t227) + (std::fma(t225, t222, std::fma(t225, t148, t22) + t28) / t148 + std::fma(t229, t222, std::fma(t229, t148, t34) + t42) / t148);
-    const Real t240 = t226 + t239;
-    const Real t241 = t240 - t219;
-    const Real t242 = t232 - (t233 - t237) + (t176 - t237) + (t231 - (t232 - t180) + std::fma(std::fma(std::fma(R_m, b, -t150), w_m, std::fma(t150, w_m, -t171)), t148, std::fma(t171, t224, std::fma(t171, t148, -t176))));
-    const Real t243 = t233 + t242;
-    const Real t244 = t243 + t173;
-    const Real t245 = t235 - (t236 - t238) + (t24 - t238) + (t234 - (t235 - t178) + t30);
-    const Real t246 = t236 + t245;
-    const Real t247 = t246 - t32;
-    const Real t248 = t241 - t240;
-    const Real t249 = t244 - t243;
-    const Real t250 = t247 - t246;
-    const Real t251 = t240 - (t241 - t248) - (t219 + t248) + (t239 - (t240 - t226) - std::fma(t228, t222, std::fma(t228, t148, t23) + t29) / t148);
-    const Real t252 = t241 + t251;
-    const Real t253 = t252 - t221;
-    const Real t254 = t243 - (t244 - t249) + (t173 - t249) + (t242 - (t243 - t233) + std::fma(t172, t148, std::fma(t143, t224, t214)));
-    const Real t255 = t244 + t254;
-    const Real t256 = t255 + t132;
-    const Real t257 = t246 - (t247 - t250) - (t32 + t250) + (t245 - (t246 - t236) - t40);
-    const Real t258 = t247 + t257;
-    const Real t259 = t258 - t25;
-    const Real t260 = t253 - t252;
-    const Real t261 = t256 - t255;
-    const Real t262 = t259 - t258;
-    const Real t263 = t252 - (t253 - t260) - (t221 + t260) + (t251 - (t252 - t241) - std::fma(t230, t222, std::fma(t230, t148, t35) + t43) / t148);
-    const Real t264 = t253 + t263;
-    const Real t265 = t57 * t264;
-    const Real t266 = t265 / t148;
-    const Real t267 = t255 - (t256 - t261) + (t132 - t261) + (t254 - (t255 - t244) + std::fma(std::fma(b, v_Mx, -t131), t9, std::fma(t131, t19, std::fma(t131, t9, -t132))));
-    const Real t268 = t256 + t267;
-    const Real t269 = t268 - t136;
-    const Real t270 = t258 - (t259 - t262) - (t25 + t262) + (t257 - (t258 - t247) - t31);
-    const Real t271 = t259 + t270;
-    const Real t272 = t271 + t33;
-    const Real t273 = -t266;
-    const Real t274 = t269 - t268;
-    const Real t275 = t272 - t271;
-    const Real t276 = t268 - (t269 - t274) - (t136 + t274) + (t267 - (t268 - t256) - std::fma(std::fma(b, v_My, -t135), t1, std::fma(t135, t8, std::fma(t135, t1, -t136))));
-    const Real t277 = t269 + t276;
-    const Real t278 = t277 - t134;
-    const Real t279 = t271 - (t272 - t275) + (t33 - t275) + (t270 - (t271 - t259) + t41);
-    const Real t280 = t272 + t279;
-    const Real t281 = t97 * t280;
-    const Real t282 = t281 * t53;
-    const Real t283 = t282 / t217;
-    const Real t284 = t273 + -(std::fma(t273, t222, std::fma(t273, t148, t265) + std::fma(std::fma(m, t56, std::fma(m, t54, -t57)), t264, std::fma(t57, t263 - (t264 - t253), std::fma(t57, t264, -t265)))) / t148);
-    const Real t285 = t284 * t1;
-    const Real t286 = t284 * t9;
-    const Real t287 = t278 - t277;
-    const Real t288 = -t283;
-    const Real t289 = t277 - (t278 - t287) - (t134 + t287) + (t276 - (t277 - t269) - std::fma(std::fma(b, v_mx, -t133), t9, std::fma(t133, t19, std::fma(t133, t9, -t134))));
-    const Real t290 = t278 + t289;
-    const Real t291 = t290 + t138;
-    const Real t292 = t291 - t290;
-    const Real t293 = t290 - (t291 - t292) + (t138 - t292) + (t289 - (t290 - t278) + std::fma(std::fma(b, v_my, -t137), t1, std::fma(t137, t8, std::fma(t137, t1, -t138))));
-    const Real t294 = t291 + t293;
-    const Real t295 = t294 + t24;
-    const Real t296 = t295 - t294;
-    const Real t297 = t294 - (t295 - t296) + (t24 - t296) + (t293 - (t294 - t291) + t30);
-    const Real t298 = t295 + t297;
-    const Real t299 = t298 - t32;
-    const Real t300 = t299 - t298;
-    const Real t301 = t298 - (t299 - t300) - (t32 + t300) + (t297 - (t298 - t295) - t40);
-    const Real t302 = t299 + t301;
-    const Real t303 = t302 - t25;
-    const Real t304 = t303 - t302;
-    const Real t305 = t302 - (t303 - t304) - (t25 + t304) + (t301 - (t302 - t299) - t31);
-    const Real t306 = t303 + t305;
-    const Real t307 = t306 + t33;
-    const Real t308 = t307 - t306;
-    const Real t309 = t306 - (t307 - t308) + (t33 - t308) + (t305 - (t306 - t303) + t41);
-    const Real t310 = t307 + t309;
-    const Real t311 = t63 * t310;
-    const Real t312 = t311 / t211;
-    const Real t313 = (t210 > Real(0) ? t288 : t312);
-    const Real t314 = t313 / t148;
-    const Real t315 = -t312;
-    const Real t316 = -t314;
-    const Real t317 = t314 + std::fma(t316, t222, std::fma(t316, t148, t313) + (t210 > Real(0) ? -(std::fma(t288, std::fma(t223, t212, std::fma(t148, t212, -t213)), std::fma(t288, t213, t282) + std::fma(std::fma(std::fma(std::fma(m, mu, -t96), t54, std::fma(t96, t56, std::fma(t96, t54, -t97))), t280, std::fma(t97, t279 - (t280 - t272), std::fma(t97, t280, -t281))), t53, std::fma(t281, t52 - (t53 - t50), std::fma(t281, t53, -t282)))) / t217) : std::fma(t315, std::fma(t66 - (t67 - t64), t148, std::fma(t67, t224, std::fma(t67, t148, -t149))), std::fma(t315, t149, t311) + std::fma(std::fma(std::fma(m, q_M, -t61), q_m, std::fma(t61, q_m, -t63)), t310, std::fma(t63, t309 - (t310 - t307), std::fma(t63, t310, -t311)))) / t211)) / t148;
-    const Real t318 = std::fma(t317, t1, t286);
-    const Real t319 = t318 / m;
-    const Real t320 = t317 * t146;
-    const Real t321 = t320 / t145;
-    const Real t322 = -t317;
-    const Real t323 = std::fma(t322, t9, t285);
-    const Real t324 = t323 / m;
+    const Real t384 = t40 / t209;
+    const Real t385 = t41 / t209;
+    const Real t386 = t58 / t209;
+    const Real t387 = t59 / t209;
+    const Real t388 = t222 / t223;
+    const Real t389 = t222 / t381;
+    const Real t390 = t222 / t382;
+    const Real t391 = -t384;
+    const Real t392 = t384 + t386;
+    const Real t393 = t392 - t384;
+    const Real t394 = -t385;
+    const Real t395 = -t386;
+    const Real t396 = -t387;
+    const Real t397 = t214 - (t228 - t229) + (t220 - t229) + (std::fma(t204, t209, std::fma(t201, t389, t227)) + std::fma(t218, t209, std::fma(t205, t389, t233)));
+    const Real t398 = t228 + t397;
+    const Real t399 = t398 + t46;
+    const Real t400 = t216 - (t230 - t232) + (t214 - t232) + (std::fma(std::fma(std::fma(R_M, b, -t202), w_M, std::fma(t202, w_M, -t203)), t209, std::fma(t203, t390, std::fma(t203, t209, -t216))) + std::fma(t204, t209, std::fma(t201, t390, t227)));
+    const Real t401 = t230 + t400;
+    const Real t402 = t401 + t224;
+    const Real t403 = t399 - t398;
+    const Real t404 = t402 - t401;
+    const Real t405 = t384 - (t392 - t393) + (t386 - t393) + (std::fma(t391, t388, std::fma(t391, t209, t40) + t48) / t209 + std::fma(t395, t388, std::fma(t395, t209, t58) + t64) / t209);
+    const Real t406 = t392 + t405;
+    const Real t407 = t406 - t385;
+    const Real t408 = t398 - (t399 - t403) + (t46 - t403) + (t397 - (t398 - t228) + t50);
+    const Real t409 = t399 + t408;
+    const Real t410 = t409 - t56;
+    const Real t411 = t401 - (t402 - t404) + (t224 - t404) + (t400 - (t401 - t230) + std::fma(std::fma(std::fma(R_m, b, -t212), w_m, std::fma(t212, w_m, -t217)), t209, std::fma(t217, t390, std::fma(t217, t209, -t224))));
+    const Real t412 = t402 + t411;
+    const Real t413 = t412 + t220;
+    const Real t414 = t407 - t406;
+    const Real t415 = t410 - t409;
+    const Real t416 = t413 - t412;
+    const Real t417 = t406 - (t407 - t414) - (t385 + t414) + (t405 - (t406 - t392) - std::fma(t394, t388, std::fma(t394, t209, t41) + t49) / t209);
+    const Real t418 = t407 + t417;
+    const Real t419 = t418 - t387;
+    const Real t420 = t409 - (t410 - t415) - (t56 + t415) + (t408 - (t409 - t399) - t62);
+    const Real t421 = t410 + t420;
+    const Real t422 = t421 - t47;
+    const Real t423 = t412 - (t413 - t416) + (t220 - t416) + (t411 - (t412 - t402) + std::fma(t218, t209, std::fma(t205, t390, t233)));
+    const Real t424 = t413 + t423;
+    const Real t425 = t424 + t194;
+    const Real t426 = t419 - t418;
+    const Real t427 = t422 - t421;
+    const Real t428 = t425 - t424;
+    const Real t429 = t418 - (t419 - t426) - (t387 + t426) + (t417 - (t418 - t407) - std::fma(t396, t388, std::fma(t396, t209, t59) + t65) / t209);
+    const Real t430 = t419 + t429;
+    const Real t431 = t79 * t430;
+    const Real t432 = t431 / t209;
+    const Real t433 = t421 - (t422 - t427) - (t47 + t427) + (t420 - (t421 - t410) - t51);
+    const Real t434 = t422 + t433;
+    const Real t435 = t434 + t57;
+    const Real t436 = t424 - (t425 - t428) + (t194 - t428) + (t423 - (t424 - t413) + std::fma(std::fma(b, v_Mx, -t193), t12, std::fma(t193, t23, std::fma(t193, t12, -t194))));
+    const Real t437 = t425 + t436;
+    const Real t438 = t437 - t198;
+    const Real t439 = -t432;
+    const Real t440 = t435 - t434;
+    const Real t441 = t438 - t437;
+    const Real t442 = t434 - (t435 - t440) + (t57 - t440) + (t433 - (t434 - t422) + t63);
+    const Real t443 = t435 + t442;
+    const Real t444 = t104 * t443;
+    const Real t445 = t444 * t75;
+    const Real t446 = t445 / t383;
+    const Real t447 = t437 - (t438 - t441) - (t198 + t441) + (t436 - (t437 - t425) - std::fma(std::fma(b, v_My, -t197), t0, std::fma(t197, t7, std::fma(t197, t0, -t198))));
+    const Real t448 = t438 + t447;
+    const Real t449 = t448 - t196;
+    const Real t450 = t439 + -(std::fma(t439, t388, std::fma(t439, t209, t431) + std::fma(std::fma(m, t78, std::fma(m, t76, -t79)), t430, std::fma(t79, t429 - (t430 - t419), std::fma(t79, t430, -t431)))) / t209);
+    const Real t451 = t450 * t0;
+    const Real t452 = t450 * t12;
+    const Real t453 = t442 - (t443 - t435);
+    const Real t454 = (t443 > Real(0) ? t443 : -t443);
+    const Real t455 = t209 * t454;
+    const Real t456 = -t446;
+    const Real t457 = t449 - t448;
+    const Real t458 = t448 - (t449 - t457) - (t196 + t457) + (t447 - (t448 - t438) - std::fma(std::fma(b, v_mx, -t195), t12, std::fma(t195, t23, std::fma(t195, t12, -t196))));
+    const Real t459 = t449 + t458;
+    const Real t460 = t459 + t200;
+    const Real t461 = t460 - t459;
+    const Real t462 = t459 - (t460 - t461) + (t200 - t461) + (t458 - (t459 - t449) + std::fma(std::fma(b, v_my, -t199), t0, std::fma(t199, t7, std::fma(t199, t0, -t200))));
+    const Real t463 = t460 + t462;
+    const Real t464 = t463 + t46;
+    const Real t465 = t464 - t463;
+    const Real t466 = t463 - (t464 - t465) + (t46 - t465) + (t462 - (t463 - t460) + t50);
+    const Real t467 = t464 + t466;
+    const Real t468 = t467 - t56;
+    const Real t469 = t468 - t467;
+    const Real t470 = t467 - (t468 - t469) - (t56 + t469) + (t466 - (t467 - t464) - t62);
+    const Real t471 = t468 + t470;
+    const Real t472 = t471 - t47;
+    const Real t473 = t472 - t471;
+    const Real t474 = t471 - (t472 - t473) - (t47 + t473) + (t470 - (t471 - t468) - t51);
+    const Real t475 = t472 + t474;
+    const Real t476 = t475 + t57;
+    const Real t477 = t476 - t475;
+    const Real t478 = t475 - (t476 - t477) + (t57 - t477) + (t474 - (t475 - t472) + t63);
+    const Real t479 = t476 + t478;
+    const Real t480 = t84 * t479;
+    const Real t481 = t480 / t380;
+    const Real t482 = (t379 > Real(0) ? t456 : t481);
+    const Real t483 = t482 / t209;
+    const Real t484 = -t481;
+    const Real t485 = -t483;
+    const Real t486 = t483 + std::fma(t485, t388, std::fma(t485, t209, t482) + (t379 > Real(0) ? -(std::fma(t456, std::fma(t389, t454, std::fma(t209, (t443 > Real(0) ? t453 : -t453), std::fma(t209, t454, -t455))), std::fma(t456, t455, t445) + std::fma(std::fma(std::fma(std::fma(m, mu, -t103), t76, std::fma(t103, t78, std::fma(t103, t76, -t104))), t443, std::fma(t104, t453, std::fma(t104, t443, -t444))), t75, std::fma(t444, t74 - (t75 - t72), std::fma(t444, t75, -t445)))) / t383) : std::fma(t484, std::fma(t88 - (t89 - t85), t209, std::fma(t89, t390, std::fma(t89, t209, -t211))), std::fma(t484, t211, t480) + std::fma(std::fma(std::fma(m, q_M, -t83), q_m, std::fma(t83, q_m, -t84)), t479, std::fma(t84, t478 - (t479 - t476), std::fma(t84, t479, -t480)))) / t380)) / t209;
+    const Real t487 = t486 * t0;
+    const Real t488 = t486 * t12;
+    const Real t489 = t486 * t208;
+    const Real t490 = t489 / t207;
+    const Real t491 = t451 - t488;
+    const Real t492 = t491 / m;
+    const Real t493 = t452 + t487;
+    const Real t494 = t493 / m;
     const Real result0 = v_Mx;
     const Real result1 = v_My;
-    const Real result2 = v_mx - t324;
-    const Real result3 = v_my - t319;
+    const Real result2 = v_mx - t492;
+    const Real result3 = v_my - t494;
     const Real result4 = w_M;
-    const Real result5 = w_m - t321;
-    if (!detail::finite(t164) || !detail::finite(t170) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+    const Real result5 = w_m - t490;
+    if (!detail::finite(t231) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && C_Mx != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t3 == Real(0) && t0 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t7) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
-        (std::fabs(t11) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t13) < std::numeric_limits<Real>::min() && C_My != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && (t14 != Real(0) || (t12 == Real(0) && t0 != Real(0) && t13 != Real(0)))) ||
-        (std::fabs(t15) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && t9 != Real(0)) ||
-        (std::fabs(t22) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t23) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t24) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_My != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && v_my != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t34) < std::numeric_limits<Real>::min() && v_My != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && v_my != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && m != Real(0) && t54 != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t63) < std::numeric_limits<Real>::min() && t61 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t68) < std::numeric_limits<Real>::min() && t59 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && t68 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && mu != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && t71 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && t71 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && mu != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t75) < std::numeric_limits<Real>::min() && t74 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t76) < std::numeric_limits<Real>::min() && t74 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t77) < std::numeric_limits<Real>::min() && mu != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t78) < std::numeric_limits<Real>::min() && t77 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t79) < std::numeric_limits<Real>::min() && t77 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && mu != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t80 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && eps != Real(0) && mu != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && t54 != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t98 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t60 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t120 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && t120 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && (t123 != Real(0) || (t70 == Real(0) && t62 != Real(0) && t113 != Real(0)))) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && (t124 != Real(0) || (t123 == Real(0) && q_M != Real(0) && t118 != Real(0)))) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && (t125 != Real(0) || (t124 == Real(0) && t62 != Real(0) && t119 != Real(0)))) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && (t126 != Real(0) || (t125 == Real(0) && t62 != Real(0) && t115 != Real(0)))) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && (t127 != Real(0) || (t126 == Real(0) && q_M != Real(0) && t116 != Real(0)))) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && (t128 != Real(0) || (t127 == Real(0) && t62 != Real(0) && t121 != Real(0)))) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && (t129 != Real(0) || (t128 == Real(0) && q_M != Real(0) && t122 != Real(0)))) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && q_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t134) < std::numeric_limits<Real>::min() && t133 != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t135) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && t135 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t138) < std::numeric_limits<Real>::min() && t137 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t139) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t141) < std::numeric_limits<Real>::min() && t140 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t143) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t144) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
-        (std::fabs(t145) < std::numeric_limits<Real>::min() && t144 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t149) < std::numeric_limits<Real>::min() && t67 != Real(0) && t148 != Real(0)) ||
-        (std::fabs(t150) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t151) < std::numeric_limits<Real>::min() && t139 != Real(0) && t147 != Real(0)) ||
-        (std::fabs(t152) < std::numeric_limits<Real>::min() && t139 != Real(0) && t148 != Real(0)) ||
-        (std::fabs(t153) < std::numeric_limits<Real>::min() && t139 != Real(0) && t146 != Real(0)) ||
-        (std::fabs(t154) < std::numeric_limits<Real>::min() && t141 != Real(0) && t148 != Real(0)) ||
-        (std::fabs(t155) < std::numeric_limits<Real>::min() && w_m != Real(0) && t147 != Real(0)) ||
-        (std::fabs(t156) < std::numeric_limits<Real>::min() && (t156 != Real(0) || (t151 == Real(0) && R_m != Real(0) && t155 != Real(0)))) ||
-        (std::fabs(t157) < std::numeric_limits<Real>::min() && (t157 != Real(0) || (t156 == Real(0) && v_Mx != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t158) < std::numeric_limits<Real>::min() && (t158 != Real(0) || (t157 == Real(0) && t26 != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t159) < std::numeric_limits<Real>::min() && (t159 != Real(0) || (t158 == Real(0) && t38 != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t160) < std::numeric_limits<Real>::min() && (t160 != Real(0) || (t159 == Real(0) && v_My != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t161) < std::numeric_limits<Real>::min() && (t161 != Real(0) || (t160 == Real(0) && t27 != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t162) < std::numeric_limits<Real>::min() && (t162 != Real(0) || (t161 == Real(0) && v_mx != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t163) < std::numeric_limits<Real>::min() && (t163 != Real(0) || (t162 == Real(0) && v_my != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t164) < std::numeric_limits<Real>::min() && (t164 != Real(0) || (t163 == Real(0) && t39 != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t165) < std::numeric_limits<Real>::min() && w_m != Real(0) && t146 != Real(0)) ||
-        (std::fabs(t166) < std::numeric_limits<Real>::min() && (t166 != Real(0) || (t153 == Real(0) && R_m != Real(0) && t165 != Real(0)))) ||
-        (std::fabs(t167) < std::numeric_limits<Real>::min() && (t167 != Real(0) || (t166 == Real(0) && v_Mx != Real(0) && t9 != Real(0)))) ||
-        (std::fabs(t168) < std::numeric_limits<Real>::min() && (t168 != Real(0) || (t167 == Real(0) && t38 != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t169) < std::numeric_limits<Real>::min() && (t169 != Real(0) || (t168 == Real(0) && t27 != Real(0) && t9 != Real(0)))) ||
-        (std::fabs(t170) < std::numeric_limits<Real>::min() && (t170 != Real(0) || (t169 == Real(0) && v_my != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t171) < std::numeric_limits<Real>::min() && t150 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t173) < std::numeric_limits<Real>::min() && t143 != Real(0) && t148 != Real(0)) ||
-        (std::fabs(t176) < std::numeric_limits<Real>::min() && t171 != Real(0) && t148 != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t182 != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && q_m != Real(0) && t182 != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && t130 != Real(0) && t182 != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && (t185 != Real(0) || (t129 == Real(0) && q_M != Real(0) && t184 != Real(0)))) ||
-        (std::fabs(t186) < std::numeric_limits<Real>::min() && (t186 != Real(0) || (t185 == Real(0) && q_M != Real(0) && t100 != Real(0)))) ||
-        (std::fabs(t187) < std::numeric_limits<Real>::min() && (t187 != Real(0) || (t186 == Real(0) && t62 != Real(0) && t101 != Real(0)))) ||
-        (std::fabs(t188) < std::numeric_limits<Real>::min() && (t188 != Real(0) || (t187 == Real(0) && q_M != Real(0) && t106 != Real(0)))) ||
-        (std::fabs(t189) < std::numeric_limits<Real>::min() && (t189 != Real(0) || (t188 == Real(0) && t62 != Real(0) && t107 != Real(0)))) ||
-        (std::fabs(t190) < std::numeric_limits<Real>::min() && (t190 != Real(0) || (t189 == Real(0) && t62 != Real(0) && t103 != Real(0)))) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && (t191 != Real(0) || (t190 == Real(0) && q_M != Real(0) && t104 != Real(0)))) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && (t192 != Real(0) || (t191 == Real(0) && t62 != Real(0) && t109 != Real(0)))) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && (t193 != Real(0) || (t192 == Real(0) && q_M != Real(0) && t110 != Real(0)))) ||
-        (std::fabs(t194) < std::numeric_limits<Real>::min() && (t194 != Real(0) || (t193 == Real(0) && q_M != Real(0) && t183 != Real(0)))) ||
-        (std::fabs(t195) < std::numeric_limits<Real>::min() && (t195 != Real(0) || (t194 == Real(0) && q_M != Real(0) && t85 != Real(0)))) ||
-        (std::fabs(t196) < std::numeric_limits<Real>::min() && (t196 != Real(0) || (t195 == Real(0) && t62 != Real(0) && t86 != Real(0)))) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && (t197 != Real(0) || (t196 == Real(0) && q_M != Real(0) && t91 != Real(0)))) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && (t198 != Real(0) || (t197 == Real(0) && t62 != Real(0) && t92 != Real(0)))) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && (t199 != Real(0) || (t198 == Real(0) && t62 != Real(0) && t88 != Real(0)))) ||
-        (std::fabs(t200) < std::numeric_limits<Real>::min() && (t200 != Real(0) || (t199 == Real(0) && q_M != Real(0) && t89 != Real(0)))) ||
-        (std::fabs(t201) < std::numeric_limits<Real>::min() && (t201 != Real(0) || (t200 == Real(0) && t62 != Real(0) && t94 != Real(0)))) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && (t202 != Real(0) || (t201 == Real(0) && q_M != Real(0) && t95 != Real(0)))) ||
-        (std::fabs(t203) < std::numeric_limits<Real>::min() && (t203 != Real(0) || (t202 == Real(0) && q_M != Real(0) && t72 != Real(0)))) ||
-        (std::fabs(t204) < std::numeric_limits<Real>::min() && (t204 != Real(0) || (t203 == Real(0) && t62 != Real(0) && t73 != Real(0)))) ||
-        (std::fabs(t205) < std::numeric_limits<Real>::min() && (t205 != Real(0) || (t204 == Real(0) && q_M != Real(0) && t78 != Real(0)))) ||
-        (std::fabs(t206) < std::numeric_limits<Real>::min() && (t206 != Real(0) || (t205 == Real(0) && t62 != Real(0) && t79 != Real(0)))) ||
-        (std::fabs(t207) < std::numeric_limits<Real>::min() && (t207 != Real(0) || (t206 == Real(0) && t62 != Real(0) && t75 != Real(0)))) ||
-        (std::fabs(t208) < std::numeric_limits<Real>::min() && (t208 != Real(0) || (t207 == Real(0) && q_M != Real(0) && t76 != Real(0)))) ||
-        (std::fabs(t209) < std::numeric_limits<Real>::min() && (t209 != Real(0) || (t208 == Real(0) && t62 != Real(0) && t81 != Real(0)))) ||
-        (std::fabs(t210) < std::numeric_limits<Real>::min() && (t210 != Real(0) || (t209 == Real(0) && q_M != Real(0) && t82 != Real(0)))) ||
-        (std::fabs(t212) < std::numeric_limits<Real>::min() && t212 != Real(0)) ||
-        (std::fabs(t213) < std::numeric_limits<Real>::min() && t148 != Real(0) && t212 != Real(0)) ||
-        (std::fabs(t218) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
-        (std::fabs(t219) < std::numeric_limits<Real>::min() && t23 != Real(0)) ||
-        (std::fabs(t220) < std::numeric_limits<Real>::min() && t34 != Real(0)) ||
-        (std::fabs(t221) < std::numeric_limits<Real>::min() && t35 != Real(0)) ||
-        (std::fabs(t265) < std::numeric_limits<Real>::min() && t57 != Real(0) && t264 != Real(0)) ||
-        (std::fabs(t266) < std::numeric_limits<Real>::min() && t265 != Real(0)) ||
-        (std::fabs(t281) < std::numeric_limits<Real>::min() && t97 != Real(0) && t280 != Real(0)) ||
-        (std::fabs(t282) < std::numeric_limits<Real>::min() && t281 != Real(0) && t53 != Real(0)) ||
-        (std::fabs(t283) < std::numeric_limits<Real>::min() && t282 != Real(0)) ||
-        (std::fabs(t285) < std::numeric_limits<Real>::min() && t284 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t286) < std::numeric_limits<Real>::min() && t284 != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t311) < std::numeric_limits<Real>::min() && t63 != Real(0) && t310 != Real(0)) ||
-        (std::fabs(t312) < std::numeric_limits<Real>::min() && t311 != Real(0)) ||
-        (std::fabs(t314) < std::numeric_limits<Real>::min() && t313 != Real(0)) ||
-        (std::fabs(t318) < std::numeric_limits<Real>::min() && (t318 != Real(0) || (t286 == Real(0) && t317 != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t319) < std::numeric_limits<Real>::min() && t318 != Real(0)) ||
-        (std::fabs(t320) < std::numeric_limits<Real>::min() && t317 != Real(0) && t146 != Real(0)) ||
-        (std::fabs(t321) < std::numeric_limits<Real>::min() && t320 != Real(0)) ||
-        (std::fabs(t323) < std::numeric_limits<Real>::min() && (t323 != Real(0) || (t285 == Real(0) && t322 != Real(0) && t9 != Real(0)))) ||
-        (std::fabs(t324) < std::numeric_limits<Real>::min() && t323 != Real(0))) {
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
+        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
+        (std::fabs(t40) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t47) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t52) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t79) < std::numeric_limits<Real>::min() && m != Real(0) && t76 != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && eps != Real(0)) ||
+        (std::fabs(t82) < std::numeric_limits<Real>::min() && q_M != Real(0) && eps != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t84) < std::numeric_limits<Real>::min() && t83 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t90) < std::numeric_limits<Real>::min() && t81 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t92) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t93) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t95) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t96) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && t97 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && t97 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && t76 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && q_M != Real(0) && mu != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t107) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && t105 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t80 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t119 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && t118 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && t82 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t133) < std::numeric_limits<Real>::min() && t132 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t132 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && t135 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && t135 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t138) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t139) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t140) < std::numeric_limits<Real>::min() && t138 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && t131 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t142) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t143) < std::numeric_limits<Real>::min() && t141 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t192) < std::numeric_limits<Real>::min() && t80 != Real(0) && b != Real(0)) ||
+        (std::fabs(t193) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t194) < std::numeric_limits<Real>::min() && t193 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t195) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t196) < std::numeric_limits<Real>::min() && t195 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t199) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t200) < std::numeric_limits<Real>::min() && t199 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && t202 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t205) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t206) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t207) < std::numeric_limits<Real>::min() && t206 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t211) < std::numeric_limits<Real>::min() && t89 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t212) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t201 != Real(0) && t210 != Real(0)) ||
+        (std::fabs(t214) < std::numeric_limits<Real>::min() && t201 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t215) < std::numeric_limits<Real>::min() && t201 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t216) < std::numeric_limits<Real>::min() && t203 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t217) < std::numeric_limits<Real>::min() && t212 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t219) < std::numeric_limits<Real>::min() && t205 != Real(0) && t210 != Real(0)) ||
+        (std::fabs(t220) < std::numeric_limits<Real>::min() && t205 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t221) < std::numeric_limits<Real>::min() && t205 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && t217 != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t234) < std::numeric_limits<Real>::min() && t234 != Real(0)) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && t208 != Real(0) && t234 != Real(0)) ||
+        (std::fabs(t272) < std::numeric_limits<Real>::min() && t80 != Real(0) && t271 != Real(0)) ||
+        (std::fabs(t273) < std::numeric_limits<Real>::min() && t192 != Real(0) && t271 != Real(0)) ||
+        (std::fabs(t384) < std::numeric_limits<Real>::min() && t40 != Real(0)) ||
+        (std::fabs(t385) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
+        (std::fabs(t386) < std::numeric_limits<Real>::min() && t58 != Real(0)) ||
+        (std::fabs(t387) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
+        (std::fabs(t431) < std::numeric_limits<Real>::min() && t79 != Real(0) && t430 != Real(0)) ||
+        (std::fabs(t432) < std::numeric_limits<Real>::min() && t431 != Real(0)) ||
+        (std::fabs(t444) < std::numeric_limits<Real>::min() && t104 != Real(0) && t443 != Real(0)) ||
+        (std::fabs(t445) < std::numeric_limits<Real>::min() && t444 != Real(0) && t75 != Real(0)) ||
+        (std::fabs(t446) < std::numeric_limits<Real>::min() && t445 != Real(0)) ||
+        (std::fabs(t451) < std::numeric_limits<Real>::min() && t450 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t452) < std::numeric_limits<Real>::min() && t450 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t455) < std::numeric_limits<Real>::min() && t209 != Real(0) && t454 != Real(0)) ||
+        (std::fabs(t480) < std::numeric_limits<Real>::min() && t84 != Real(0) && t479 != Real(0)) ||
+        (std::fabs(t481) < std::numeric_limits<Real>::min() && t480 != Real(0)) ||
+        (std::fabs(t483) < std::numeric_limits<Real>::min() && t482 != Real(0)) ||
+        (std::fabs(t487) < std::numeric_limits<Real>::min() && t486 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t488) < std::numeric_limits<Real>::min() && t486 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t489) < std::numeric_limits<Real>::min() && t486 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t490) < std::numeric_limits<Real>::min() && t489 != Real(0)) ||
+        (std::fabs(t492) < std::numeric_limits<Real>::min() && t491 != Real(0)) ||
+        (std::fabs(t494) < std::numeric_limits<Real>::min() && t493 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -3541,13 +3313,13 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
 
 // collide_rough(M, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with m = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 667 operations with the guards' conditions, of them 22
-// division(s) and 3 square root(s) (the accurate form: 1049, 33 and 4).
-// v_M[0] is computed in the form "limit of v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 4.09 ulps in double on 4200 samples.
-// v_M[1] is computed in the form "limit of v_My - (K_n*r_y + K_t*r_x)/M, fma, compensated let": at most 2.94 ulps in double on 4200 samples.
+// bound (verification.md): 1388 operations with the guards' conditions, of them 26
+// division(s) and 3 square root(s) (the accurate form: 1447, 29 and 3).
+// v_M[0] is computed in the form "limit of v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 3.45 ulps in double on 4200 samples.
+// v_M[1] is computed in the form "limit of v_My - (K_n*r_y + K_t*r_x)/M, compensated let": at most 3.74 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_m[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
-// w_M is computed in the form "limit of w_M - K_t*d/(q_M*M*R_M), fma, compensated let": at most 4.46 ulps in double on 4200 samples.
+// w_M is computed in the form "limit of w_M - K_t*d/(q_M*M*R_M), compensated let": at most 4.86 ulps in double on 4200 samples.
 // w_m is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 template <class Real>
 inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu, fast_t) noexcept
@@ -3590,531 +3362,689 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
         out.status = status::non_finite;
         return out;
     }
-    const Real t0 = -Real(2);
-    const Real t1 = C_Mx - C_mx;
-    const Real t2 = t1 - C_Mx;
-    const Real t3 = C_Mx * C_Mx;
-    const Real t4 = C_Mx * C_mx;
-    const Real t5 = std::fma(t0, t4, t3);
-    const Real t6 = C_mx * C_mx;
-    const Real t7 = t1 * t1;
-    const Real t8 = C_Mx - (t1 - t2) - (C_mx + t2);
-    const Real t9 = C_My - C_my;
-    const Real t10 = t9 - C_My;
-    const Real t11 = C_My * C_My;
-    const Real t12 = t5 + t11;
-    const Real t13 = C_My * C_my;
-    const Real t14 = std::fma(t0, t13, t12);
-    const Real t15 = C_my * C_my;
-    const Real t16 = t9 * t9;
-    const Real t17 = t7 + t16;
-    const Real t18 = t17 - t7;
-    const Real t19 = C_My - (t9 - t10) - (C_my + t10);
-    const Real t20 = t7 - (t17 - t18) + (t16 - t18) + (std::fma(t8, t1, std::fma(t1, t8, std::fma(t1, t1, -t7))) + std::fma(t19, t9, std::fma(t9, t19, std::fma(t9, t9, -t16))));
-    const Real t21 = t17 + t20;
-    const Real t22 = v_Mx * t1;
-    const Real t23 = v_mx * t1;
-    const Real t24 = v_Mx * t9;
-    const Real t25 = v_mx * t9;
-    const Real t26 = -v_Mx;
-    const Real t27 = -v_mx;
-    const Real t28 = std::fma(v_Mx, t8, std::fma(v_Mx, t1, -t22));
-    const Real t29 = std::fma(v_mx, t8, std::fma(v_mx, t1, -t23));
-    const Real t30 = std::fma(v_Mx, t19, std::fma(v_Mx, t9, -t24));
-    const Real t31 = std::fma(v_mx, t19, std::fma(v_mx, t9, -t25));
-    const Real t32 = v_My * t1;
-    const Real t33 = v_my * t1;
-    const Real t34 = v_My * t9;
-    const Real t35 = v_my * t9;
-    const Real t36 = t22 + t34;
-    const Real t37 = t36 - t22;
-    if (!(t17 > Real(0))) {
+    const Real t0 = C_Mx - C_mx;
+    const Real t1 = t0 - C_Mx;
+    const Real t2 = C_Mx * C_Mx;
+    const Real t3 = Real(2) * C_Mx;
+    const Real t4 = t3 * C_mx;
+    const Real t5 = C_mx * C_mx;
+    const Real t6 = t0 * t0;
+    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t8 = t2 - t4;
+    const Real t9 = t8 - t2;
+    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
+    const Real t11 = t8 + t10;
+    const Real t12 = C_My - C_my;
+    const Real t13 = t12 - C_My;
+    const Real t14 = C_My * C_My;
+    const Real t15 = t11 + t14;
+    const Real t16 = t15 - t11;
+    const Real t17 = Real(2) * C_My;
+    const Real t18 = t17 * C_my;
+    const Real t19 = C_my * C_my;
+    const Real t20 = t12 * t12;
+    const Real t21 = t6 + t20;
+    const Real t22 = t21 - t6;
+    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
+    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
+    const Real t25 = t15 + t24;
+    const Real t26 = t25 - t18;
+    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
+    const Real t28 = t21 + t27;
+    const Real t29 = t26 - t25;
+    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
+    const Real t31 = t26 + t30;
+    const Real t32 = t31 + t5;
+    const Real t33 = t32 - t31;
+    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
+    const Real t35 = t32 + t34;
+    const Real t36 = t35 + t19;
+    const Real t37 = t36 - t35;
+    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
+    const Real t39 = t36 + t38;
+    const Real t40 = v_Mx * t0;
+    const Real t41 = v_mx * t0;
+    const Real t42 = v_Mx * C_My;
+    const Real t43 = v_Mx * C_my;
+    const Real t44 = v_mx * C_My;
+    const Real t45 = v_mx * C_my;
+    const Real t46 = v_Mx * t12;
+    const Real t47 = v_mx * t12;
+    const Real t48 = -v_mx;
+    const Real t49 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t40));
+    const Real t50 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t41));
+    const Real t51 = std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t46));
+    const Real t52 = std::fma(v_mx, t23, std::fma(v_mx, t12, -t47));
+    const Real t53 = v_My * C_Mx;
+    const Real t54 = v_My * C_mx;
+    const Real t55 = v_my * C_Mx;
+    const Real t56 = v_my * C_mx;
+    const Real t57 = v_My * t0;
+    const Real t58 = v_my * t0;
+    const Real t59 = v_My * t12;
+    const Real t60 = v_my * t12;
+    const Real t61 = t40 + t59;
+    const Real t62 = t61 - t40;
+    if (!(t21 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-((v_Mx - v_mx) * t1) - (v_My - v_my) * t9 > Real(0))) {
+    if (!(-((v_Mx - v_mx) * t0) - (v_My - v_my) * t12 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t38 = -v_My;
-    const Real t39 = -v_my;
-    const Real t40 = std::fma(v_My, t8, std::fma(v_My, t1, -t32));
-    const Real t41 = std::fma(v_my, t8, std::fma(v_my, t1, -t33));
-    const Real t42 = std::fma(v_My, t19, std::fma(v_My, t9, -t34));
-    const Real t43 = std::fma(v_my, t19, std::fma(v_my, t9, -t35));
-    const Real t44 = t22 - (t36 - t37) + (t34 - t37) + (t28 + t42);
-    const Real t45 = t36 + t44;
-    const Real t46 = t45 - t23;
-    const Real t47 = t46 - t45;
-    const Real t48 = t45 - (t46 - t47) - (t23 + t47) + (t44 - (t45 - t36) - t29);
-    const Real t49 = t46 + t48;
-    const Real t50 = t49 - t35;
-    const Real t51 = t50 - t49;
-    const Real t52 = t49 - (t50 - t51) - (t35 + t51) + (t48 - (t49 - t46) - t43);
-    const Real t53 = t50 + t52;
-    const Real t54 = Real(1) + eps;
-    const Real t55 = t54 - Real(1);
-    const Real t56 = Real(1) - (t54 - t55) + (eps - t55);
-    const Real t57 = M * t54;
-    const Real t58 = q_M * q_m;
-    const Real t59 = t58 * eps;
-    const Real t60 = q_m * eps;
-    const Real t61 = M * q_M;
-    const Real t62 = -q_M;
-    const Real t63 = -q_m;
-    const Real t64 = t61 * q_m;
-    const Real t65 = t58 + q_m;
-    const Real t66 = t65 - t58;
-    const Real t67 = t58 - (t65 - t66) + (q_m - t66) + std::fma(q_M, q_m, -t58);
-    const Real t68 = t65 + t67;
-    const Real t69 = t59 * mu;
-    const Real t70 = t69 * v_Mx;
-    const Real t71 = t70 * C_Mx;
-    const Real t72 = mu * v_Mx;
-    const Real t73 = t72 * C_Mx;
-    const Real t74 = t72 * C_mx;
-    const Real t75 = mu * v_mx;
-    const Real t76 = t75 * C_Mx;
-    const Real t77 = t75 * C_mx;
-    const Real t78 = mu * v_My;
-    const Real t79 = t78 * C_My;
-    const Real t80 = t78 * C_my;
-    const Real t81 = mu * v_my;
-    const Real t82 = t81 * C_My;
-    const Real t83 = t81 * C_my;
-    const Real t84 = eps * mu;
-    const Real t85 = t84 * v_Mx;
-    const Real t86 = t85 * C_Mx;
-    const Real t87 = t85 * C_mx;
-    const Real t88 = t84 * v_mx;
-    const Real t89 = t88 * C_Mx;
-    const Real t90 = t88 * C_mx;
-    const Real t91 = t84 * v_My;
-    const Real t92 = t91 * C_My;
-    const Real t93 = t91 * C_my;
-    const Real t94 = t84 * v_my;
-    const Real t95 = t94 * C_My;
-    const Real t96 = t94 * C_my;
-    const Real t97 = M * mu;
-    const Real t98 = t97 * t54;
-    const Real t99 = q_m * mu;
-    const Real t100 = t99 * v_Mx;
-    const Real t101 = t100 * C_Mx;
-    const Real t102 = t100 * C_mx;
-    const Real t103 = t99 * v_mx;
-    const Real t104 = t103 * C_Mx;
-    const Real t105 = t103 * C_mx;
-    const Real t106 = t99 * v_My;
-    const Real t107 = t106 * C_My;
-    const Real t108 = t106 * C_my;
-    const Real t109 = t99 * v_my;
-    const Real t110 = t109 * C_My;
-    const Real t111 = t109 * C_my;
-    const Real t112 = t60 * mu;
-    const Real t113 = t112 * v_Mx;
-    const Real t114 = t113 * C_mx;
-    const Real t115 = t112 * v_mx;
-    const Real t116 = t115 * C_Mx;
-    const Real t117 = t115 * C_mx;
-    const Real t118 = t112 * v_My;
-    const Real t119 = t118 * C_My;
-    const Real t120 = t118 * C_my;
-    const Real t121 = t112 * v_my;
-    const Real t122 = t121 * C_My;
-    const Real t123 = t121 * C_my;
-    const Real t124 = std::fma(t62, t114, t71);
-    const Real t125 = std::fma(q_M, t119, t124);
-    const Real t126 = std::fma(t62, t120, t125);
-    const Real t127 = std::fma(t62, t116, t126);
-    const Real t128 = std::fma(q_M, t117, t127);
-    const Real t129 = std::fma(t62, t122, t128);
-    const Real t130 = std::fma(q_M, t123, t129);
-    const Real t131 = q_m * b;
-    const Real t132 = b * v_Mx;
-    const Real t133 = t132 * t9;
-    const Real t134 = b * v_mx;
-    const Real t135 = t134 * t9;
-    const Real t136 = b * v_My;
-    const Real t137 = t136 * t1;
-    const Real t138 = b * v_my;
-    const Real t139 = t138 * t1;
-    const Real t140 = R_M * w_M;
-    const Real t141 = M * R_M;
-    const Real t142 = t141 * q_M;
-    const Real t143 = std::sqrt(t17);
-    const Real t144 = std::sqrt(t14 + t6 + t15);
-    const Real t145 = std::sqrt(t21);
-    const Real t146 = t68 * t145;
-    const Real t147 = R_M * b;
-    const Real t148 = t147 * w_M;
-    const Real t149 = t140 * t144;
-    const Real t150 = std::fma(R_M, w_M, -t140);
-    const Real t151 = t140 * t145;
-    const Real t152 = t140 * t143;
-    const Real t153 = std::fma(-t145, t145, t21) + (t20 - (t21 - t17));
-    const Real t154 = t145 + t145;
-    const Real t155 = t148 * t145;
-    const Real t156 = std::fma(t140, t145, -t151);
-    const Real t157 = t155 + t151;
-    const Real t158 = t157 - t155;
-    const Real t159 = w_m * t144;
-    const Real t160 = w_m * t143;
-    const Real t161 = std::fma(R_m, t159, t149);
-    const Real t162 = std::fma(v_Mx, C_My, t161);
-    const Real t163 = std::fma(t26, C_my, t162);
-    const Real t164 = std::fma(t38, C_Mx, t163);
-    const Real t165 = std::fma(v_My, C_mx, t164);
-    const Real t166 = std::fma(t27, C_My, t165);
-    const Real t167 = std::fma(v_mx, C_my, t166);
-    const Real t168 = std::fma(v_my, C_Mx, t167);
-    const Real t169 = std::fma(t39, C_mx, t168);
-    const Real t170 = R_m * b;
-    const Real t171 = std::fma(R_m, t160, t152);
-    const Real t172 = std::fma(v_Mx, t9, t171);
-    const Real t173 = std::fma(t38, t1, t172);
-    const Real t174 = std::fma(t27, t9, t173);
-    const Real t175 = std::fma(v_my, t1, t174);
-    const Real t176 = R_m * w_m;
-    const Real t177 = t176 * t145;
-    const Real t178 = t151 + t177;
-    const Real t179 = t178 - t151;
-    const Real t180 = t170 * w_m;
-    const Real t181 = t180 * t145;
-    const Real t182 = std::fabs(t169);
-    const Real t183 = q_m * t182;
-    const Real t184 = t131 * t182;
-    const Real t185 = std::fma(q_M, t184, t130);
-    const Real t186 = std::fma(q_M, t101, t185);
-    const Real t187 = std::fma(t62, t102, t186);
-    const Real t188 = std::fma(q_M, t107, t187);
-    const Real t189 = std::fma(t62, t108, t188);
-    const Real t190 = std::fma(t62, t104, t189);
-    const Real t191 = std::fma(q_M, t105, t190);
-    const Real t192 = std::fma(t62, t110, t191);
-    const Real t193 = std::fma(q_M, t111, t192);
-    const Real t194 = std::fma(q_M, t183, t193);
-    const Real t195 = std::fma(q_m, t86, t194);
-    const Real t196 = std::fma(t63, t87, t195);
-    const Real t197 = std::fma(q_m, t92, t196);
-    const Real t198 = std::fma(t63, t93, t197);
-    const Real t199 = std::fma(t63, t89, t198);
-    const Real t200 = std::fma(q_m, t90, t199);
-    const Real t201 = std::fma(t63, t95, t200);
-    const Real t202 = std::fma(q_m, t96, t201);
-    const Real t203 = std::fma(q_m, t73, t202);
-    const Real t204 = std::fma(t63, t74, t203);
-    const Real t205 = std::fma(q_m, t79, t204);
-    const Real t206 = std::fma(t63, t80, t205);
-    const Real t207 = std::fma(t63, t76, t206);
-    const Real t208 = std::fma(q_m, t77, t207);
-    const Real t209 = std::fma(t63, t82, t208);
-    const Real t210 = std::fma(q_m, t83, t209);
-    const Real t211 = (t210 > Real(0) ? Real(1) : t146);
-    const Real t212 = (t210 > Real(0) ? t154 : Real(1));
-    const Real t213 = (t210 > Real(0) ? Real(1) : t154);
-    const Real t214 = std::fabs(t175);
-    const Real t215 = t145 * t214;
-    const Real t216 = std::fma(R_m, w_m, -t176);
-    const Real t217 = std::fma(t176, t145, -t177);
-    const Real t218 = (t210 > Real(0) ? t215 : Real(1));
-    if (!(std::fabs(t145) >= detail::smallest_divisor<Real>) || !(std::fabs(t145) <= std::numeric_limits<Real>::max()) || !(std::fabs(t154) >= detail::smallest_divisor<Real>) || !(std::fabs(t154) <= std::numeric_limits<Real>::max()) || !(std::fabs(t212) >= detail::smallest_divisor<Real>) || !(std::fabs(t212) <= std::numeric_limits<Real>::max()) || !(std::fabs(t213) >= detail::smallest_divisor<Real>) || !(std::fabs(t213) <= std::numeric_limits<Real>::max()) || !(std::fabs(t218) >= detail::smallest_divisor<Real>) || !(std::fabs(t218) <= std::numeric_limits<Real>::max()) || !(std::fabs(t211) >= detail::smallest_divisor<Real>) || !(std::fabs(t211) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(t142) >= detail::smallest_divisor<Real>) || !(std::fabs(t142) <= std::numeric_limits<Real>::max())) {
+    const Real t63 = -v_My;
+    const Real t64 = std::fma(v_My, t7, std::fma(v_My, t0, -t57));
+    const Real t65 = std::fma(v_my, t7, std::fma(v_my, t0, -t58));
+    const Real t66 = std::fma(v_My, t23, std::fma(v_My, t12, -t59));
+    const Real t67 = std::fma(v_my, t23, std::fma(v_my, t12, -t60));
+    const Real t68 = t40 - (t61 - t62) + (t59 - t62) + (t49 + t66);
+    const Real t69 = t61 + t68;
+    const Real t70 = t69 - t41;
+    const Real t71 = t70 - t69;
+    const Real t72 = t69 - (t70 - t71) - (t41 + t71) + (t68 - (t69 - t61) - t50);
+    const Real t73 = t70 + t72;
+    const Real t74 = t73 - t60;
+    const Real t75 = t74 - t73;
+    const Real t76 = t73 - (t74 - t75) - (t60 + t75) + (t72 - (t73 - t70) - t67);
+    const Real t77 = t74 + t76;
+    const Real t78 = Real(1) + eps;
+    const Real t79 = t78 - Real(1);
+    const Real t80 = Real(1) - (t78 - t79) + (eps - t79);
+    const Real t81 = M * t78;
+    const Real t82 = q_M * q_m;
+    const Real t83 = t82 * eps;
+    const Real t84 = q_m * eps;
+    const Real t85 = M * q_M;
+    const Real t86 = t85 * q_m;
+    const Real t87 = t82 + q_m;
+    const Real t88 = std::fma(q_M, q_m, -t82);
+    const Real t89 = t87 - t82;
+    const Real t90 = t82 - (t87 - t89) + (q_m - t89) + t88;
+    const Real t91 = t87 + t90;
+    const Real t92 = t83 * mu;
+    const Real t93 = t92 * v_Mx;
+    const Real t94 = t93 * C_Mx;
+    const Real t95 = t93 * C_mx;
+    const Real t96 = t92 * v_mx;
+    const Real t97 = t96 * C_Mx;
+    const Real t98 = t96 * C_mx;
+    const Real t99 = t92 * v_My;
+    const Real t100 = t99 * C_My;
+    const Real t101 = t99 * C_my;
+    const Real t102 = t92 * v_my;
+    const Real t103 = t102 * C_My;
+    const Real t104 = t102 * C_my;
+    const Real t105 = M * mu;
+    const Real t106 = t105 * t78;
+    const Real t107 = q_m * mu;
+    const Real t108 = t107 * v_Mx;
+    const Real t109 = t108 * C_Mx;
+    const Real t110 = t108 * C_mx;
+    const Real t111 = t107 * v_mx;
+    const Real t112 = t111 * C_Mx;
+    const Real t113 = t111 * C_mx;
+    const Real t114 = t107 * v_My;
+    const Real t115 = t114 * C_My;
+    const Real t116 = t114 * C_my;
+    const Real t117 = t107 * v_my;
+    const Real t118 = t117 * C_My;
+    const Real t119 = t117 * C_my;
+    const Real t120 = t82 * mu;
+    const Real t121 = t120 * v_Mx;
+    const Real t122 = t121 * C_Mx;
+    const Real t123 = t121 * C_mx;
+    const Real t124 = t120 * v_mx;
+    const Real t125 = t124 * C_Mx;
+    const Real t126 = t124 * C_mx;
+    const Real t127 = t120 * v_My;
+    const Real t128 = t127 * C_My;
+    const Real t129 = t127 * C_my;
+    const Real t130 = t120 * v_my;
+    const Real t131 = t130 * C_My;
+    const Real t132 = t130 * C_my;
+    const Real t133 = t84 * mu;
+    const Real t134 = t133 * v_Mx;
+    const Real t135 = t134 * C_Mx;
+    const Real t136 = t134 * C_mx;
+    const Real t137 = t133 * v_mx;
+    const Real t138 = t137 * C_Mx;
+    const Real t139 = t137 * C_mx;
+    const Real t140 = t133 * v_My;
+    const Real t141 = t140 * C_My;
+    const Real t142 = t140 * C_my;
+    const Real t143 = t133 * v_my;
+    const Real t144 = t143 * C_My;
+    const Real t145 = t143 * C_my;
+    const Real t146 = std::fma(std::fma(t88, eps, std::fma(t82, eps, -t83)), mu, std::fma(t83, mu, -t92));
+    const Real t147 = std::fma(t146, v_Mx, std::fma(t92, v_Mx, -t93));
+    const Real t148 = t94 - t95;
+    const Real t149 = t148 - t94;
+    const Real t150 = std::fma(t146, v_mx, std::fma(t92, v_mx, -t96));
+    const Real t151 = std::fma(t146, v_My, std::fma(t92, v_My, -t99));
+    const Real t152 = std::fma(t146, v_my, std::fma(t92, v_my, -t102));
+    const Real t153 = std::fma(q_m, mu, -t107);
+    const Real t154 = std::fma(t153, v_Mx, std::fma(t107, v_Mx, -t108));
+    const Real t155 = std::fma(t153, v_mx, std::fma(t107, v_mx, -t111));
+    const Real t156 = std::fma(t153, v_My, std::fma(t107, v_My, -t114));
+    const Real t157 = std::fma(t153, v_my, std::fma(t107, v_my, -t117));
+    const Real t158 = std::fma(t88, mu, std::fma(t82, mu, -t120));
+    const Real t159 = std::fma(t158, v_Mx, std::fma(t120, v_Mx, -t121));
+    const Real t160 = std::fma(t158, v_mx, std::fma(t120, v_mx, -t124));
+    const Real t161 = std::fma(t158, v_My, std::fma(t120, v_My, -t127));
+    const Real t162 = std::fma(t158, v_my, std::fma(t120, v_my, -t130));
+    const Real t163 = std::fma(std::fma(q_m, eps, -t84), mu, std::fma(t84, mu, -t133));
+    const Real t164 = std::fma(t163, v_Mx, std::fma(t133, v_Mx, -t134));
+    const Real t165 = std::fma(t163, v_mx, std::fma(t133, v_mx, -t137));
+    const Real t166 = std::fma(t163, v_My, std::fma(t133, v_My, -t140));
+    const Real t167 = std::fma(t163, v_my, std::fma(t133, v_my, -t143));
+    const Real t168 = t94 - (t148 - t149) - (t95 + t149) + (std::fma(t147, C_Mx, std::fma(t93, C_Mx, -t94)) - std::fma(t147, C_mx, std::fma(t93, C_mx, -t95)));
+    const Real t169 = t148 + t168;
+    const Real t170 = t169 + t100;
+    const Real t171 = t170 - t169;
+    const Real t172 = t169 - (t170 - t171) + (t100 - t171) + (t168 - (t169 - t148) + std::fma(t151, C_My, std::fma(t99, C_My, -t100)));
+    const Real t173 = t170 + t172;
+    const Real t174 = t173 - t101;
+    const Real t175 = t174 - t173;
+    const Real t176 = t173 - (t174 - t175) - (t101 + t175) + (t172 - (t173 - t170) - std::fma(t151, C_my, std::fma(t99, C_my, -t101)));
+    const Real t177 = t174 + t176;
+    const Real t178 = t177 - t97;
+    const Real t179 = t178 - t177;
+    const Real t180 = t177 - (t178 - t179) - (t97 + t179) + (t176 - (t177 - t174) - std::fma(t150, C_Mx, std::fma(t96, C_Mx, -t97)));
+    const Real t181 = t178 + t180;
+    const Real t182 = t181 + t98;
+    const Real t183 = t182 - t181;
+    const Real t184 = t181 - (t182 - t183) + (t98 - t183) + (t180 - (t181 - t178) + std::fma(t150, C_mx, std::fma(t96, C_mx, -t98)));
+    const Real t185 = t182 + t184;
+    const Real t186 = t185 - t103;
+    const Real t187 = t186 - t185;
+    const Real t188 = t185 - (t186 - t187) - (t103 + t187) + (t184 - (t185 - t182) - std::fma(t152, C_My, std::fma(t102, C_My, -t103)));
+    const Real t189 = t186 + t188;
+    const Real t190 = t189 + t104;
+    const Real t191 = t190 - t189;
+    const Real t192 = t189 - (t190 - t191) + (t104 - t191) + (t188 - (t189 - t186) + std::fma(t152, C_my, std::fma(t102, C_my, -t104)));
+    const Real t193 = t190 + t192;
+    const Real t194 = t82 * b;
+    const Real t195 = b * v_Mx;
+    const Real t196 = t195 * t12;
+    const Real t197 = b * v_mx;
+    const Real t198 = t197 * t12;
+    const Real t199 = b * v_My;
+    const Real t200 = t199 * t0;
+    const Real t201 = b * v_my;
+    const Real t202 = t201 * t0;
+    const Real t203 = R_M * w_M;
+    const Real t204 = M * R_M;
+    const Real t205 = t204 * q_M;
+    const Real t206 = std::sqrt(t21);
+    const Real t207 = std::sqrt(t28);
+    const Real t208 = std::sqrt(t39);
+    const Real t209 = t91 * t207;
+    const Real t210 = R_M * b;
+    const Real t211 = t210 * w_M;
+    const Real t212 = std::fma(R_M, w_M, -t203);
+    const Real t213 = t203 * t208;
+    const Real t214 = t203 * t207;
+    const Real t215 = t203 * t206;
+    const Real t216 = std::fma(-t207, t207, t28) + (t27 - (t28 - t21));
+    const Real t217 = t207 + t207;
+    const Real t218 = t211 * t207;
+    const Real t219 = std::fma(t203, t207, -t214);
+    const Real t220 = t218 + t214;
+    const Real t221 = t220 - t218;
+    const Real t222 = R_m * w_m;
+    const Real t223 = R_m * b;
+    const Real t224 = w_m * t206;
+    const Real t225 = t222 * t206;
+    const Real t226 = t222 * t207;
+    const Real t227 = t222 * t208;
+    const Real t228 = t213 + t227;
+    const Real t229 = t228 - t213;
+    const Real t230 = t214 + t226;
+    const Real t231 = t230 - t214;
+    const Real t232 = std::fma(R_m, t224, t215);
+    const Real t233 = std::fma(v_Mx, t12, t232);
+    const Real t234 = std::fma(t63, t0, t233);
+    const Real t235 = std::fma(t48, t12, t234);
+    const Real t236 = std::fma(v_my, t0, t235);
+    const Real t237 = t215 + t225 + t46 - t57 - t47 + t58;
+    const Real t238 = t223 * w_m;
+    const Real t239 = t238 * t207;
+    const Real t240 = std::fma(R_m, w_m, -t222);
+    const Real t241 = std::fma(t222, t207, -t226);
+    const Real t242 = std::fabs(t236);
+    const Real t243 = t206 * t242;
+    const Real t244 = std::fabs(t237);
+    const Real t245 = t206 * t244;
+    const Real t246 = t213 - (t228 - t229) + (t227 - t229) + (std::fma(t212, t208, std::fma(t203, t208, -t213)) + std::fma(t240, t208, std::fma(t222, t208, -t227)));
+    const Real t247 = t228 + t246;
+    const Real t248 = t247 + t42;
+    const Real t249 = t248 - t247;
+    const Real t250 = t247 - (t248 - t249) + (t42 - t249) + (t246 - (t247 - t228) + std::fma(v_Mx, C_My, -t42));
+    const Real t251 = t248 + t250;
+    const Real t252 = t251 - t43;
+    const Real t253 = t252 - t251;
+    const Real t254 = t251 - (t252 - t253) - (t43 + t253) + (t250 - (t251 - t248) - std::fma(v_Mx, C_my, -t43));
+    const Real t255 = t252 + t254;
+    const Real t256 = t255 - t53;
+    const Real t257 = t256 - t255;
+    const Real t258 = t255 - (t256 - t257) - (t53 + t257) + (t254 - (t255 - t252) - std::fma(v_My, C_Mx, -t53));
+    const Real t259 = t256 + t258;
+    const Real t260 = t259 + t54;
+    const Real t261 = t260 - t259;
+    const Real t262 = t259 - (t260 - t261) + (t54 - t261) + (t258 - (t259 - t256) + std::fma(v_My, C_mx, -t54));
+    const Real t263 = t260 + t262;
+    const Real t264 = t263 - t44;
+    const Real t265 = t264 - t263;
+    const Real t266 = t263 - (t264 - t265) - (t44 + t265) + (t262 - (t263 - t260) - std::fma(v_mx, C_My, -t44));
+    const Real t267 = t264 + t266;
+    const Real t268 = t267 + t45;
+    const Real t269 = t268 - t267;
+    const Real t270 = t267 - (t268 - t269) + (t45 - t269) + (t266 - (t267 - t264) + std::fma(v_mx, C_my, -t45));
+    const Real t271 = t268 + t270;
+    const Real t272 = t271 + t55;
+    const Real t273 = t272 - t271;
+    const Real t274 = t271 - (t272 - t273) + (t55 - t273) + (t270 - (t271 - t268) + std::fma(v_my, C_Mx, -t55));
+    const Real t275 = t272 + t274;
+    const Real t276 = t275 - t56;
+    const Real t277 = t276 - t275;
+    const Real t278 = t275 - (t276 - t277) - (t56 + t277) + (t274 - (t275 - t272) - std::fma(v_my, C_mx, -t56));
+    const Real t279 = t276 + t278;
+    const Real t280 = t278 - (t279 - t276);
+    const Real t281 = (t279 > Real(0) ? t279 : -t279);
+    const Real t282 = t82 * t281;
+    const Real t283 = t194 * t281;
+    const Real t284 = t193 + t283;
+    const Real t285 = t284 - t193;
+    const Real t286 = (t279 > Real(0) ? t280 : -t280);
+    const Real t287 = t193 - (t284 - t285) + (t283 - t285) + (t192 - (t193 - t190) + std::fma(std::fma(t88, b, std::fma(t82, b, -t194)), t281, std::fma(t194, t286, std::fma(t194, t281, -t283))));
+    const Real t288 = t284 + t287;
+    const Real t289 = t288 + t122;
+    const Real t290 = t289 - t288;
+    const Real t291 = t288 - (t289 - t290) + (t122 - t290) + (t287 - (t288 - t284) + std::fma(t159, C_Mx, std::fma(t121, C_Mx, -t122)));
+    const Real t292 = t289 + t291;
+    const Real t293 = t292 - t123;
+    const Real t294 = t293 - t292;
+    const Real t295 = t292 - (t293 - t294) - (t123 + t294) + (t291 - (t292 - t289) - std::fma(t159, C_mx, std::fma(t121, C_mx, -t123)));
+    const Real t296 = t293 + t295;
+    const Real t297 = t296 + t128;
+    const Real t298 = t297 - t296;
+    const Real t299 = t296 - (t297 - t298) + (t128 - t298) + (t295 - (t296 - t293) + std::fma(t161, C_My, std::fma(t127, C_My, -t128)));
+    const Real t300 = t297 + t299;
+    const Real t301 = t300 - t129;
+    const Real t302 = t301 - t300;
+    const Real t303 = t300 - (t301 - t302) - (t129 + t302) + (t299 - (t300 - t297) - std::fma(t161, C_my, std::fma(t127, C_my, -t129)));
+    const Real t304 = t301 + t303;
+    const Real t305 = t304 - t125;
+    const Real t306 = t305 - t304;
+    const Real t307 = t304 - (t305 - t306) - (t125 + t306) + (t303 - (t304 - t301) - std::fma(t160, C_Mx, std::fma(t124, C_Mx, -t125)));
+    const Real t308 = t305 + t307;
+    const Real t309 = t308 + t126;
+    const Real t310 = t309 - t308;
+    const Real t311 = t308 - (t309 - t310) + (t126 - t310) + (t307 - (t308 - t305) + std::fma(t160, C_mx, std::fma(t124, C_mx, -t126)));
+    const Real t312 = t309 + t311;
+    const Real t313 = t312 - t131;
+    const Real t314 = t313 - t312;
+    const Real t315 = t312 - (t313 - t314) - (t131 + t314) + (t311 - (t312 - t309) - std::fma(t162, C_My, std::fma(t130, C_My, -t131)));
+    const Real t316 = t313 + t315;
+    const Real t317 = t316 + t132;
+    const Real t318 = t317 - t316;
+    const Real t319 = t316 - (t317 - t318) + (t132 - t318) + (t315 - (t316 - t313) + std::fma(t162, C_my, std::fma(t130, C_my, -t132)));
+    const Real t320 = t317 + t319;
+    const Real t321 = t320 + t282;
+    const Real t322 = t321 - t320;
+    const Real t323 = t320 - (t321 - t322) + (t282 - t322) + (t319 - (t320 - t317) + std::fma(t88, t281, std::fma(t82, t286, std::fma(t82, t281, -t282))));
+    const Real t324 = t321 + t323;
+    const Real t325 = t324 + t135;
+    const Real t326 = t325 - t324;
+    const Real t327 = t324 - (t325 - t326) + (t135 - t326) + (t323 - (t324 - t321) + std::fma(t164, C_Mx, std::fma(t134, C_Mx, -t135)));
+    const Real t328 = t325 + t327;
+    const Real t329 = t328 - t136;
+    const Real t330 = t329 - t328;
+    const Real t331 = t328 - (t329 - t330) - (t136 + t330) + (t327 - (t328 - t325) - std::fma(t164, C_mx, std::fma(t134, C_mx, -t136)));
+    const Real t332 = t329 + t331;
+    const Real t333 = t332 + t141;
+    const Real t334 = t333 - t332;
+    const Real t335 = t332 - (t333 - t334) + (t141 - t334) + (t331 - (t332 - t329) + std::fma(t166, C_My, std::fma(t140, C_My, -t141)));
+    const Real t336 = t333 + t335;
+    const Real t337 = t336 - t142;
+    const Real t338 = t337 - t336;
+    const Real t339 = t336 - (t337 - t338) - (t142 + t338) + (t335 - (t336 - t333) - std::fma(t166, C_my, std::fma(t140, C_my, -t142)));
+    const Real t340 = t337 + t339;
+    const Real t341 = t340 - t138;
+    const Real t342 = t341 - t340;
+    const Real t343 = t340 - (t341 - t342) - (t138 + t342) + (t339 - (t340 - t337) - std::fma(t165, C_Mx, std::fma(t137, C_Mx, -t138)));
+    const Real t344 = t341 + t343;
+    const Real t345 = t344 + t139;
+    const Real t346 = t345 - t344;
+    const Real t347 = t344 - (t345 - t346) + (t139 - t346) + (t343 - (t344 - t341) + std::fma(t165, C_mx, std::fma(t137, C_mx, -t139)));
+    const Real t348 = t345 + t347;
+    const Real t349 = t348 - t144;
+    const Real t350 = t349 - t348;
+    const Real t351 = t348 - (t349 - t350) - (t144 + t350) + (t347 - (t348 - t345) - std::fma(t167, C_My, std::fma(t143, C_My, -t144)));
+    const Real t352 = t349 + t351;
+    const Real t353 = t352 + t145;
+    const Real t354 = t353 - t352;
+    const Real t355 = t352 - (t353 - t354) + (t145 - t354) + (t351 - (t352 - t349) + std::fma(t167, C_my, std::fma(t143, C_my, -t145)));
+    const Real t356 = t353 + t355;
+    const Real t357 = t356 + t109;
+    const Real t358 = t357 - t356;
+    const Real t359 = t356 - (t357 - t358) + (t109 - t358) + (t355 - (t356 - t353) + std::fma(t154, C_Mx, std::fma(t108, C_Mx, -t109)));
+    const Real t360 = t357 + t359;
+    const Real t361 = t360 - t110;
+    const Real t362 = t361 - t360;
+    const Real t363 = t360 - (t361 - t362) - (t110 + t362) + (t359 - (t360 - t357) - std::fma(t154, C_mx, std::fma(t108, C_mx, -t110)));
+    const Real t364 = t361 + t363;
+    const Real t365 = t364 + t115;
+    const Real t366 = t365 - t364;
+    const Real t367 = t364 - (t365 - t366) + (t115 - t366) + (t363 - (t364 - t361) + std::fma(t156, C_My, std::fma(t114, C_My, -t115)));
+    const Real t368 = t365 + t367;
+    const Real t369 = t368 - t116;
+    const Real t370 = t369 - t368;
+    const Real t371 = t368 - (t369 - t370) - (t116 + t370) + (t367 - (t368 - t365) - std::fma(t156, C_my, std::fma(t114, C_my, -t116)));
+    const Real t372 = t369 + t371;
+    const Real t373 = t372 - t112;
+    const Real t374 = t373 - t372;
+    const Real t375 = t372 - (t373 - t374) - (t112 + t374) + (t371 - (t372 - t369) - std::fma(t155, C_Mx, std::fma(t111, C_Mx, -t112)));
+    const Real t376 = t373 + t375;
+    const Real t377 = t376 + t113;
+    const Real t378 = t377 - t376;
+    const Real t379 = t376 - (t377 - t378) + (t113 - t378) + (t375 - (t376 - t373) + std::fma(t155, C_mx, std::fma(t111, C_mx, -t113)));
+    const Real t380 = t377 + t379;
+    const Real t381 = t380 - t118;
+    const Real t382 = t381 - t380;
+    const Real t383 = t380 - (t381 - t382) - (t118 + t382) + (t379 - (t380 - t377) - std::fma(t157, C_My, std::fma(t117, C_My, -t118)));
+    const Real t384 = t381 + t383;
+    const Real t385 = t384 + t119;
+    const Real t386 = t385 - t384;
+    const Real t387 = t384 - (t385 - t386) + (t119 - t386) + (t383 - (t384 - t381) + std::fma(t157, C_my, std::fma(t117, C_my, -t119)));
+    const Real t388 = t385 + t387;
+    const Real t389 = t388 + (t387 - (t388 - t385));
+    const Real t390 = (t389 > Real(0) ? Real(1) : t209);
+    const Real t391 = (t389 > Real(0) ? t217 : Real(1));
+    const Real t392 = (t389 > Real(0) ? Real(1) : t217);
+    const Real t393 = (t389 > Real(0) ? t243 : Real(1));
+    const Real t394 = (t389 > Real(0) ? t245 : Real(1));
+    if (!(std::fabs(t207) >= detail::smallest_divisor<Real>) || !(std::fabs(t207) <= std::numeric_limits<Real>::max()) || !(std::fabs(t217) >= detail::smallest_divisor<Real>) || !(std::fabs(t217) <= std::numeric_limits<Real>::max()) || !(std::fabs(t391) >= detail::smallest_divisor<Real>) || !(std::fabs(t391) <= std::numeric_limits<Real>::max()) || !(std::fabs(t392) >= detail::smallest_divisor<Real>) || !(std::fabs(t392) <= std::numeric_limits<Real>::max()) || !(std::fabs(t393) >= detail::smallest_divisor<Real>) || !(std::fabs(t393) <= std::numeric_limits<Real>::max()) || !(std::fabs(t394) >= detail::smallest_divisor<Real>) || !(std::fabs(t394) <= std::numeric_limits<Real>::max()) || !(std::fabs(t390) >= detail::smallest_divisor<Real>) || !(std::fabs(t390) <= std::numeric_limits<Real>::max()) || !(std::fabs(t205) >= detail::smallest_divisor<Real>) || !(std::fabs(t205) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t219 = t22 / t145;
-    const Real t220 = t23 / t145;
-    const Real t221 = t34 / t145;
-    const Real t222 = t35 / t145;
-    const Real t223 = t153 / t154;
-    const Real t224 = t153 / t212;
-    const Real t225 = t153 / t213;
-    const Real t226 = -t219;
-    const Real t227 = t219 + t221;
-    const Real t228 = t227 - t219;
-    const Real t229 = -t220;
-    const Real t230 = -t221;
-    const Real t231 = -t222;
-    const Real t232 = t155 - (t157 - t158) + (t151 - t158) + (std::fma(std::fma(std::fma(R_M, b, -t147), w_M, std::fma(t147, w_M, -t148)), t145, std::fma(t148, t225, std::fma(t148, t145, -t155))) + std::fma(t150, t145, std::fma(t140, t225, t156)));
-    const Real t233 = t157 + t232;
-    const Real t234 = t233 + t181;
-    const Real t235 = t151 - (t178 - t179) + (t177 - t179) + (std::fma(t150, t145, std::fma(t140, t224, t156)) + std::fma(t216, t145, std::fma(t176, t224, t217)));
-    const Real t236 = t178 + t235;
-    const Real t237 = t236 + t24;
-    const Real t238 = t234 - t233;
-    const Real t239 = t237 - t236;
-    const Real t240 = t219 - (t227 - t228) + (t221 - t228) + (std::fma(t226, t223, std::fma(t226, t145, t22) + t28) / t145 + std::fma(t230, t223, std::fma(t230, t145, t34) + t42) / t145);
-    const Real t241 = t227 + t240;
-    const Real t242 = t241 - t220;
-    const Real t243 = t233 - (t234 - t238) + (t181 - t238) + (t232 - (t233 - t157) + std::fma(std::fma(std::fma(R_m, b, -t170), w_m, std::fma(t170, w_m, -t180)), t145, std::fma(t180, t225, std::fma(t180, t145, -t181))));
-    const Real t244 = t234 + t243;
-    const Real t245 = t244 + t177;
-    const Real t246 = t236 - (t237 - t239) + (t24 - t239) + (t235 - (t236 - t178) + t30);
-    const Real t247 = t237 + t246;
-    const Real t248 = t247 - t32;
-    const Real t249 = t242 - t241;
-    const Real t250 = t245 - t244;
-    const Real t251 = t248 - t247;
-    const Real t252 = t241 - (t242 - t249) - (t220 + t249) + (t240 - (t241 - t227) - std::fma(t229, t223, std::fma(t229, t145, t23) + t29) / t145);
-    const Real t253 = t242 + t252;
-    const Real t254 = t253 - t222;
-    const Real t255 = t244 - (t245 - t250) + (t177 - t250) + (t243 - (t244 - t234) + std::fma(t216, t145, std::fma(t176, t225, t217)));
-    const Real t256 = t245 + t255;
-    const Real t257 = t256 + t133;
-    const Real t258 = t247 - (t248 - t251) - (t32 + t251) + (t246 - (t247 - t237) - t40);
-    const Real t259 = t248 + t258;
-    const Real t260 = t259 - t25;
-    const Real t261 = t254 - t253;
-    const Real t262 = t257 - t256;
-    const Real t263 = t260 - t259;
-    const Real t264 = t253 - (t254 - t261) - (t222 + t261) + (t252 - (t253 - t242) - std::fma(t231, t223, std::fma(t231, t145, t35) + t43) / t145);
-    const Real t265 = t254 + t264;
-    const Real t266 = t57 * t265;
-    const Real t267 = t266 / t145;
-    const Real t268 = t256 - (t257 - t262) + (t133 - t262) + (t255 - (t256 - t245) + std::fma(std::fma(b, v_Mx, -t132), t9, std::fma(t132, t19, std::fma(t132, t9, -t133))));
-    const Real t269 = t257 + t268;
-    const Real t270 = t269 - t137;
-    const Real t271 = t259 - (t260 - t263) - (t25 + t263) + (t258 - (t259 - t248) - t31);
-    const Real t272 = t260 + t271;
-    const Real t273 = t272 + t33;
-    const Real t274 = -t267;
-    const Real t275 = t270 - t269;
-    const Real t276 = t273 - t272;
-    const Real t277 = t269 - (t270 - t275) - (t137 + t275) + (t268 - (t269 - t257) - std::fma(std::fma(b, v_My, -t136), t1, std::fma(t136, t8, std::fma(t136, t1, -t137))));
-    const Real t278 = t270 + t277;
-    const Real t279 = t278 - t135;
-    const Real t280 = t272 - (t273 - t276) + (t33 - t276) + (t271 - (t272 - t260) + t41);
-    const Real t281 = t273 + t280;
-    const Real t282 = t98 * t281;
-    const Real t283 = t282 * t53;
-    const Real t284 = t283 / t218;
-    const Real t285 = t274 + -(std::fma(t274, t223, std::fma(t274, t145, t266) + std::fma(std::fma(M, t56, std::fma(M, t54, -t57)), t265, std::fma(t57, t264 - (t265 - t254), std::fma(t57, t265, -t266)))) / t145);
-    const Real t286 = t285 * t1;
-    const Real t287 = t285 * t9;
-    const Real t288 = t279 - t278;
-    const Real t289 = -t284;
-    const Real t290 = t278 - (t279 - t288) - (t135 + t288) + (t277 - (t278 - t270) - std::fma(std::fma(b, v_mx, -t134), t9, std::fma(t134, t19, std::fma(t134, t9, -t135))));
-    const Real t291 = t279 + t290;
-    const Real t292 = t291 + t139;
-    const Real t293 = t292 - t291;
-    const Real t294 = t291 - (t292 - t293) + (t139 - t293) + (t290 - (t291 - t279) + std::fma(std::fma(b, v_my, -t138), t1, std::fma(t138, t8, std::fma(t138, t1, -t139))));
-    const Real t295 = t292 + t294;
-    const Real t296 = t295 + t24;
-    const Real t297 = t296 - t295;
-    const Real t298 = t295 - (t296 - t297) + (t24 - t297) + (t294 - (t295 - t292) + t30);
-    const Real t299 = t296 + t298;
-    const Real t300 = t299 - t32;
-    const Real t301 = t300 - t299;
-    const Real t302 = t299 - (t300 - t301) - (t32 + t301) + (t298 - (t299 - t296) - t40);
-    const Real t303 = t300 + t302;
-    const Real t304 = t303 - t25;
-    const Real t305 = t304 - t303;
-    const Real t306 = t303 - (t304 - t305) - (t25 + t305) + (t302 - (t303 - t300) - t31);
-    const Real t307 = t304 + t306;
-    const Real t308 = t307 + t33;
-    const Real t309 = t308 - t307;
-    const Real t310 = t307 - (t308 - t309) + (t33 - t309) + (t306 - (t307 - t304) + t41);
-    const Real t311 = t308 + t310;
-    const Real t312 = t64 * t311;
-    const Real t313 = t312 / t211;
-    const Real t314 = (t210 > Real(0) ? t289 : t313);
-    const Real t315 = t314 / t145;
-    const Real t316 = -t313;
-    const Real t317 = -t315;
-    const Real t318 = t315 + std::fma(t317, t223, std::fma(t317, t145, t314) + (t210 > Real(0) ? -(std::fma(t289, std::fma(t224, t214, std::fma(t145, t214, -t215)), std::fma(t289, t215, t283) + std::fma(std::fma(std::fma(std::fma(M, mu, -t97), t54, std::fma(t97, t56, std::fma(t97, t54, -t98))), t281, std::fma(t98, t280 - (t281 - t273), std::fma(t98, t281, -t282))), t53, std::fma(t282, t52 - (t53 - t50), std::fma(t282, t53, -t283)))) / t218) : std::fma(t316, std::fma(t67 - (t68 - t65), t145, std::fma(t68, t225, std::fma(t68, t145, -t146))), std::fma(t316, t146, t312) + std::fma(std::fma(std::fma(M, q_M, -t61), q_m, std::fma(t61, q_m, -t64)), t311, std::fma(t64, t310 - (t311 - t308), std::fma(t64, t311, -t312)))) / t211)) / t145;
-    const Real t319 = std::fma(t318, t1, t287);
-    const Real t320 = t319 / M;
-    const Real t321 = t318 * t143;
-    const Real t322 = t321 / t142;
-    const Real t323 = -t318;
-    const Real t324 = std::fma(t323, t9, t286);
-    const Real t325 = t324 / M;
-    const Real result0 = v_Mx + t325;
-    const Real result1 = v_My + t320;
+    const Real t395 = t40 / t207;
+    const Real t396 = t41 / t207;
+    const Real t397 = t59 / t207;
+    const Real t398 = t60 / t207;
+    const Real t399 = t216 / t217;
+    const Real t400 = t216 / t391;
+    const Real t401 = t216 / t392;
+    const Real t402 = -t395;
+    const Real t403 = t395 + t397;
+    const Real t404 = t403 - t395;
+    const Real t405 = -t396;
+    const Real t406 = -t397;
+    const Real t407 = -t398;
+    const Real t408 = t214 - (t230 - t231) + (t226 - t231) + (std::fma(t212, t207, std::fma(t203, t400, t219)) + std::fma(t240, t207, std::fma(t222, t400, t241)));
+    const Real t409 = t230 + t408;
+    const Real t410 = t409 + t46;
+    const Real t411 = t218 - (t220 - t221) + (t214 - t221) + (std::fma(std::fma(std::fma(R_M, b, -t210), w_M, std::fma(t210, w_M, -t211)), t207, std::fma(t211, t401, std::fma(t211, t207, -t218))) + std::fma(t212, t207, std::fma(t203, t401, t219)));
+    const Real t412 = t220 + t411;
+    const Real t413 = t412 + t239;
+    const Real t414 = t410 - t409;
+    const Real t415 = t413 - t412;
+    const Real t416 = t395 - (t403 - t404) + (t397 - t404) + (std::fma(t402, t399, std::fma(t402, t207, t40) + t49) / t207 + std::fma(t406, t399, std::fma(t406, t207, t59) + t66) / t207);
+    const Real t417 = t403 + t416;
+    const Real t418 = t417 - t396;
+    const Real t419 = t409 - (t410 - t414) + (t46 - t414) + (t408 - (t409 - t230) + t51);
+    const Real t420 = t410 + t419;
+    const Real t421 = t420 - t57;
+    const Real t422 = t412 - (t413 - t415) + (t239 - t415) + (t411 - (t412 - t220) + std::fma(std::fma(std::fma(R_m, b, -t223), w_m, std::fma(t223, w_m, -t238)), t207, std::fma(t238, t401, std::fma(t238, t207, -t239))));
+    const Real t423 = t413 + t422;
+    const Real t424 = t423 + t226;
+    const Real t425 = t418 - t417;
+    const Real t426 = t421 - t420;
+    const Real t427 = t424 - t423;
+    const Real t428 = t417 - (t418 - t425) - (t396 + t425) + (t416 - (t417 - t403) - std::fma(t405, t399, std::fma(t405, t207, t41) + t50) / t207);
+    const Real t429 = t418 + t428;
+    const Real t430 = t429 - t398;
+    const Real t431 = t420 - (t421 - t426) - (t57 + t426) + (t419 - (t420 - t410) - t64);
+    const Real t432 = t421 + t431;
+    const Real t433 = t432 - t47;
+    const Real t434 = t423 - (t424 - t427) + (t226 - t427) + (t422 - (t423 - t413) + std::fma(t240, t207, std::fma(t222, t401, t241)));
+    const Real t435 = t424 + t434;
+    const Real t436 = t435 + t196;
+    const Real t437 = t430 - t429;
+    const Real t438 = t433 - t432;
+    const Real t439 = t436 - t435;
+    const Real t440 = t429 - (t430 - t437) - (t398 + t437) + (t428 - (t429 - t418) - std::fma(t407, t399, std::fma(t407, t207, t60) + t67) / t207);
+    const Real t441 = t430 + t440;
+    const Real t442 = t81 * t441;
+    const Real t443 = t442 / t207;
+    const Real t444 = t432 - (t433 - t438) - (t47 + t438) + (t431 - (t432 - t421) - t52);
+    const Real t445 = t433 + t444;
+    const Real t446 = t445 + t58;
+    const Real t447 = t435 - (t436 - t439) + (t196 - t439) + (t434 - (t435 - t424) + std::fma(std::fma(b, v_Mx, -t195), t12, std::fma(t195, t23, std::fma(t195, t12, -t196))));
+    const Real t448 = t436 + t447;
+    const Real t449 = t448 - t200;
+    const Real t450 = -t443;
+    const Real t451 = t446 - t445;
+    const Real t452 = t449 - t448;
+    const Real t453 = t445 - (t446 - t451) + (t58 - t451) + (t444 - (t445 - t433) + t65);
+    const Real t454 = t446 + t453;
+    const Real t455 = t106 * t454;
+    const Real t456 = t455 * t77;
+    const Real t457 = t456 / t393;
+    const Real t458 = t456 / t394;
+    const Real t459 = t448 - (t449 - t452) - (t200 + t452) + (t447 - (t448 - t436) - std::fma(std::fma(b, v_My, -t199), t0, std::fma(t199, t7, std::fma(t199, t0, -t200))));
+    const Real t460 = t449 + t459;
+    const Real t461 = t460 - t198;
+    const Real t462 = t450 + -(std::fma(t450, t399, std::fma(t450, t207, t442) + std::fma(std::fma(M, t80, std::fma(M, t78, -t81)), t441, std::fma(t81, t440 - (t441 - t430), std::fma(t81, t441, -t442)))) / t207);
+    const Real t463 = t462 * t0;
+    const Real t464 = t462 * t12;
+    const Real t465 = t453 - (t454 - t446);
+    const Real t466 = (t454 > Real(0) ? t454 : -t454);
+    const Real t467 = t207 * t466;
+    const Real t468 = std::fma(std::fma(std::fma(std::fma(M, mu, -t105), t78, std::fma(t105, t80, std::fma(t105, t78, -t106))), t454, std::fma(t106, t465, std::fma(t106, t454, -t455))), t77, std::fma(t455, t76 - (t77 - t74), std::fma(t455, t77, -t456)));
+    const Real t469 = -t457;
+    const Real t470 = -t458;
+    const Real t471 = t461 - t460;
+    const Real t472 = std::fma(t400, t466, std::fma(t207, (t454 > Real(0) ? t465 : -t465), std::fma(t207, t466, -t467)));
+    const Real t473 = t460 - (t461 - t471) - (t198 + t471) + (t459 - (t460 - t449) - std::fma(std::fma(b, v_mx, -t197), t12, std::fma(t197, t23, std::fma(t197, t12, -t198))));
+    const Real t474 = t461 + t473;
+    const Real t475 = t474 + t202;
+    const Real t476 = t475 - t474;
+    const Real t477 = t474 - (t475 - t476) + (t202 - t476) + (t473 - (t474 - t461) + std::fma(std::fma(b, v_my, -t201), t0, std::fma(t201, t7, std::fma(t201, t0, -t202))));
+    const Real t478 = t475 + t477;
+    const Real t479 = t478 + t46;
+    const Real t480 = t479 - t478;
+    const Real t481 = t478 - (t479 - t480) + (t46 - t480) + (t477 - (t478 - t475) + t51);
+    const Real t482 = t479 + t481;
+    const Real t483 = t482 - t57;
+    const Real t484 = t483 - t482;
+    const Real t485 = t482 - (t483 - t484) - (t57 + t484) + (t481 - (t482 - t479) - t64);
+    const Real t486 = t483 + t485;
+    const Real t487 = t486 - t47;
+    const Real t488 = t487 - t486;
+    const Real t489 = t486 - (t487 - t488) - (t47 + t488) + (t485 - (t486 - t483) - t52);
+    const Real t490 = t487 + t489;
+    const Real t491 = t490 + t58;
+    const Real t492 = t491 - t490;
+    const Real t493 = t490 - (t491 - t492) + (t58 - t492) + (t489 - (t490 - t487) + t65);
+    const Real t494 = t491 + t493;
+    const Real t495 = t86 * t494;
+    const Real t496 = t495 / t390;
+    const Real t497 = (t389 > Real(0) ? t469 : t496);
+    const Real t498 = t497 / t207;
+    const Real t499 = (t389 > Real(0) ? t470 : t496);
+    const Real t500 = t499 / t207;
+    const Real t501 = -t496;
+    const Real t502 = -t498;
+    const Real t503 = -t500;
+    const Real t504 = std::fma(t501, std::fma(t90 - (t91 - t87), t207, std::fma(t91, t401, std::fma(t91, t207, -t209))), std::fma(t501, t209, t495) + std::fma(std::fma(std::fma(M, q_M, -t85), q_m, std::fma(t85, q_m, -t86)), t494, std::fma(t86, t493 - (t494 - t491), std::fma(t86, t494, -t495)))) / t390;
+    const Real t505 = t500 + std::fma(t503, t399, std::fma(t503, t207, t499) + (t389 > Real(0) ? -(std::fma(t470, t472, std::fma(t470, t467, t456) + t468) / t394) : t504)) / t207;
+    const Real t506 = t505 * t0;
+    const Real t507 = t505 * t206;
+    const Real t508 = t507 / t205;
+    const Real t509 = t464 + t506;
+    const Real t510 = t509 / M;
+    const Real t511 = -(t498 + std::fma(t502, t399, std::fma(t502, t207, t497) + (t389 > Real(0) ? -(std::fma(t469, t472, std::fma(t469, t467, t456) + t468) / t393) : t504)) / t207);
+    const Real t512 = std::fma(t511, t12, t463);
+    const Real t513 = t512 / M;
+    const Real result0 = v_Mx + t513;
+    const Real result1 = v_My + t510;
     const Real result2 = v_mx;
     const Real result3 = v_my;
-    const Real result4 = w_M - t322;
+    const Real result4 = w_M - t508;
     const Real result5 = w_m;
-    if (!detail::finite(t169) || !detail::finite(t175) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+    if (!detail::finite(t236) || !detail::finite(t237) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && C_Mx != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && (t5 != Real(0) || (t3 == Real(0) && t0 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t7) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
-        (std::fabs(t11) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t13) < std::numeric_limits<Real>::min() && C_My != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && (t14 != Real(0) || (t12 == Real(0) && t0 != Real(0) && t13 != Real(0)))) ||
-        (std::fabs(t15) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && t9 != Real(0)) ||
-        (std::fabs(t22) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t23) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t24) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_My != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && v_my != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t34) < std::numeric_limits<Real>::min() && v_My != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && v_my != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && M != Real(0) && t54 != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t64) < std::numeric_limits<Real>::min() && t61 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && t59 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && mu != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && t72 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && t72 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t75) < std::numeric_limits<Real>::min() && mu != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t76) < std::numeric_limits<Real>::min() && t75 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t77) < std::numeric_limits<Real>::min() && t75 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t78) < std::numeric_limits<Real>::min() && mu != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t79) < std::numeric_limits<Real>::min() && t78 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && t78 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && mu != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && eps != Real(0) && mu != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t85 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t88 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && t91 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t94 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && t97 != Real(0) && t54 != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t100 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t103 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t106 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t99 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t60 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t113 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t112 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && (t124 != Real(0) || (t71 == Real(0) && t62 != Real(0) && t114 != Real(0)))) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && (t125 != Real(0) || (t124 == Real(0) && q_M != Real(0) && t119 != Real(0)))) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && (t126 != Real(0) || (t125 == Real(0) && t62 != Real(0) && t120 != Real(0)))) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && (t127 != Real(0) || (t126 == Real(0) && t62 != Real(0) && t116 != Real(0)))) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && (t128 != Real(0) || (t127 == Real(0) && q_M != Real(0) && t117 != Real(0)))) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && (t129 != Real(0) || (t128 == Real(0) && t62 != Real(0) && t122 != Real(0)))) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && (t130 != Real(0) || (t129 == Real(0) && q_M != Real(0) && t123 != Real(0)))) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && q_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && t132 != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t134) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t135) < std::numeric_limits<Real>::min() && t134 != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && t136 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t138) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t139) < std::numeric_limits<Real>::min() && t138 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t141) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
-        (std::fabs(t142) < std::numeric_limits<Real>::min() && t141 != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t146) < std::numeric_limits<Real>::min() && t68 != Real(0) && t145 != Real(0)) ||
-        (std::fabs(t147) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t148) < std::numeric_limits<Real>::min() && t147 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t149) < std::numeric_limits<Real>::min() && t140 != Real(0) && t144 != Real(0)) ||
-        (std::fabs(t151) < std::numeric_limits<Real>::min() && t140 != Real(0) && t145 != Real(0)) ||
-        (std::fabs(t152) < std::numeric_limits<Real>::min() && t140 != Real(0) && t143 != Real(0)) ||
-        (std::fabs(t155) < std::numeric_limits<Real>::min() && t148 != Real(0) && t145 != Real(0)) ||
-        (std::fabs(t159) < std::numeric_limits<Real>::min() && w_m != Real(0) && t144 != Real(0)) ||
-        (std::fabs(t160) < std::numeric_limits<Real>::min() && w_m != Real(0) && t143 != Real(0)) ||
-        (std::fabs(t161) < std::numeric_limits<Real>::min() && (t161 != Real(0) || (t149 == Real(0) && R_m != Real(0) && t159 != Real(0)))) ||
-        (std::fabs(t162) < std::numeric_limits<Real>::min() && (t162 != Real(0) || (t161 == Real(0) && v_Mx != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t163) < std::numeric_limits<Real>::min() && (t163 != Real(0) || (t162 == Real(0) && t26 != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t164) < std::numeric_limits<Real>::min() && (t164 != Real(0) || (t163 == Real(0) && t38 != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t165) < std::numeric_limits<Real>::min() && (t165 != Real(0) || (t164 == Real(0) && v_My != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t166) < std::numeric_limits<Real>::min() && (t166 != Real(0) || (t165 == Real(0) && t27 != Real(0) && C_My != Real(0)))) ||
-        (std::fabs(t167) < std::numeric_limits<Real>::min() && (t167 != Real(0) || (t166 == Real(0) && v_mx != Real(0) && C_my != Real(0)))) ||
-        (std::fabs(t168) < std::numeric_limits<Real>::min() && (t168 != Real(0) || (t167 == Real(0) && v_my != Real(0) && C_Mx != Real(0)))) ||
-        (std::fabs(t169) < std::numeric_limits<Real>::min() && (t169 != Real(0) || (t168 == Real(0) && t39 != Real(0) && C_mx != Real(0)))) ||
-        (std::fabs(t170) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t171) < std::numeric_limits<Real>::min() && (t171 != Real(0) || (t152 == Real(0) && R_m != Real(0) && t160 != Real(0)))) ||
-        (std::fabs(t172) < std::numeric_limits<Real>::min() && (t172 != Real(0) || (t171 == Real(0) && v_Mx != Real(0) && t9 != Real(0)))) ||
-        (std::fabs(t173) < std::numeric_limits<Real>::min() && (t173 != Real(0) || (t172 == Real(0) && t38 != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t174) < std::numeric_limits<Real>::min() && (t174 != Real(0) || (t173 == Real(0) && t27 != Real(0) && t9 != Real(0)))) ||
-        (std::fabs(t175) < std::numeric_limits<Real>::min() && (t175 != Real(0) || (t174 == Real(0) && v_my != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t176) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t177) < std::numeric_limits<Real>::min() && t176 != Real(0) && t145 != Real(0)) ||
-        (std::fabs(t180) < std::numeric_limits<Real>::min() && t170 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t181) < std::numeric_limits<Real>::min() && t180 != Real(0) && t145 != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t182 != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && q_m != Real(0) && t182 != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && t131 != Real(0) && t182 != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && (t185 != Real(0) || (t130 == Real(0) && q_M != Real(0) && t184 != Real(0)))) ||
-        (std::fabs(t186) < std::numeric_limits<Real>::min() && (t186 != Real(0) || (t185 == Real(0) && q_M != Real(0) && t101 != Real(0)))) ||
-        (std::fabs(t187) < std::numeric_limits<Real>::min() && (t187 != Real(0) || (t186 == Real(0) && t62 != Real(0) && t102 != Real(0)))) ||
-        (std::fabs(t188) < std::numeric_limits<Real>::min() && (t188 != Real(0) || (t187 == Real(0) && q_M != Real(0) && t107 != Real(0)))) ||
-        (std::fabs(t189) < std::numeric_limits<Real>::min() && (t189 != Real(0) || (t188 == Real(0) && t62 != Real(0) && t108 != Real(0)))) ||
-        (std::fabs(t190) < std::numeric_limits<Real>::min() && (t190 != Real(0) || (t189 == Real(0) && t62 != Real(0) && t104 != Real(0)))) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && (t191 != Real(0) || (t190 == Real(0) && q_M != Real(0) && t105 != Real(0)))) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && (t192 != Real(0) || (t191 == Real(0) && t62 != Real(0) && t110 != Real(0)))) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && (t193 != Real(0) || (t192 == Real(0) && q_M != Real(0) && t111 != Real(0)))) ||
-        (std::fabs(t194) < std::numeric_limits<Real>::min() && (t194 != Real(0) || (t193 == Real(0) && q_M != Real(0) && t183 != Real(0)))) ||
-        (std::fabs(t195) < std::numeric_limits<Real>::min() && (t195 != Real(0) || (t194 == Real(0) && q_m != Real(0) && t86 != Real(0)))) ||
-        (std::fabs(t196) < std::numeric_limits<Real>::min() && (t196 != Real(0) || (t195 == Real(0) && t63 != Real(0) && t87 != Real(0)))) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && (t197 != Real(0) || (t196 == Real(0) && q_m != Real(0) && t92 != Real(0)))) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && (t198 != Real(0) || (t197 == Real(0) && t63 != Real(0) && t93 != Real(0)))) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && (t199 != Real(0) || (t198 == Real(0) && t63 != Real(0) && t89 != Real(0)))) ||
-        (std::fabs(t200) < std::numeric_limits<Real>::min() && (t200 != Real(0) || (t199 == Real(0) && q_m != Real(0) && t90 != Real(0)))) ||
-        (std::fabs(t201) < std::numeric_limits<Real>::min() && (t201 != Real(0) || (t200 == Real(0) && t63 != Real(0) && t95 != Real(0)))) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && (t202 != Real(0) || (t201 == Real(0) && q_m != Real(0) && t96 != Real(0)))) ||
-        (std::fabs(t203) < std::numeric_limits<Real>::min() && (t203 != Real(0) || (t202 == Real(0) && q_m != Real(0) && t73 != Real(0)))) ||
-        (std::fabs(t204) < std::numeric_limits<Real>::min() && (t204 != Real(0) || (t203 == Real(0) && t63 != Real(0) && t74 != Real(0)))) ||
-        (std::fabs(t205) < std::numeric_limits<Real>::min() && (t205 != Real(0) || (t204 == Real(0) && q_m != Real(0) && t79 != Real(0)))) ||
-        (std::fabs(t206) < std::numeric_limits<Real>::min() && (t206 != Real(0) || (t205 == Real(0) && t63 != Real(0) && t80 != Real(0)))) ||
-        (std::fabs(t207) < std::numeric_limits<Real>::min() && (t207 != Real(0) || (t206 == Real(0) && t63 != Real(0) && t76 != Real(0)))) ||
-        (std::fabs(t208) < std::numeric_limits<Real>::min() && (t208 != Real(0) || (t207 == Real(0) && q_m != Real(0) && t77 != Real(0)))) ||
-        (std::fabs(t209) < std::numeric_limits<Real>::min() && (t209 != Real(0) || (t208 == Real(0) && t63 != Real(0) && t82 != Real(0)))) ||
-        (std::fabs(t210) < std::numeric_limits<Real>::min() && (t210 != Real(0) || (t209 == Real(0) && q_m != Real(0) && t83 != Real(0)))) ||
-        (std::fabs(t214) < std::numeric_limits<Real>::min() && t214 != Real(0)) ||
-        (std::fabs(t215) < std::numeric_limits<Real>::min() && t145 != Real(0) && t214 != Real(0)) ||
-        (std::fabs(t219) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
-        (std::fabs(t220) < std::numeric_limits<Real>::min() && t23 != Real(0)) ||
-        (std::fabs(t221) < std::numeric_limits<Real>::min() && t34 != Real(0)) ||
-        (std::fabs(t222) < std::numeric_limits<Real>::min() && t35 != Real(0)) ||
-        (std::fabs(t266) < std::numeric_limits<Real>::min() && t57 != Real(0) && t265 != Real(0)) ||
-        (std::fabs(t267) < std::numeric_limits<Real>::min() && t266 != Real(0)) ||
-        (std::fabs(t282) < std::numeric_limits<Real>::min() && t98 != Real(0) && t281 != Real(0)) ||
-        (std::fabs(t283) < std::numeric_limits<Real>::min() && t282 != Real(0) && t53 != Real(0)) ||
-        (std::fabs(t284) < std::numeric_limits<Real>::min() && t283 != Real(0)) ||
-        (std::fabs(t286) < std::numeric_limits<Real>::min() && t285 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t287) < std::numeric_limits<Real>::min() && t285 != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t312) < std::numeric_limits<Real>::min() && t64 != Real(0) && t311 != Real(0)) ||
-        (std::fabs(t313) < std::numeric_limits<Real>::min() && t312 != Real(0)) ||
-        (std::fabs(t315) < std::numeric_limits<Real>::min() && t314 != Real(0)) ||
-        (std::fabs(t319) < std::numeric_limits<Real>::min() && (t319 != Real(0) || (t287 == Real(0) && t318 != Real(0) && t1 != Real(0)))) ||
-        (std::fabs(t320) < std::numeric_limits<Real>::min() && t319 != Real(0)) ||
-        (std::fabs(t321) < std::numeric_limits<Real>::min() && t318 != Real(0) && t143 != Real(0)) ||
-        (std::fabs(t322) < std::numeric_limits<Real>::min() && t321 != Real(0)) ||
-        (std::fabs(t324) < std::numeric_limits<Real>::min() && (t324 != Real(0) || (t286 == Real(0) && t323 != Real(0) && t9 != Real(0)))) ||
-        (std::fabs(t325) < std::numeric_limits<Real>::min() && t324 != Real(0))) {
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
+        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
+        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
+        (std::fabs(t40) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t47) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t81) < std::numeric_limits<Real>::min() && M != Real(0) && t78 != Real(0)) ||
+        (std::fabs(t82) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && t82 != Real(0) && eps != Real(0)) ||
+        (std::fabs(t84) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
+        (std::fabs(t85) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t92) < std::numeric_limits<Real>::min() && t83 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t93) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t95) < std::numeric_limits<Real>::min() && t93 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t96) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t92 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && t78 != Real(0)) ||
+        (std::fabs(t107) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t108 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t111 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && t111 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t114 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t117 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t82 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t121 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t124 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t124 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && t127 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && t127 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && t120 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && t130 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t132) < std::numeric_limits<Real>::min() && t130 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t133) < std::numeric_limits<Real>::min() && t84 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && t134 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t138) < std::numeric_limits<Real>::min() && t137 != Real(0) && C_Mx != Real(0)) ||
+        (std::fabs(t139) < std::numeric_limits<Real>::min() && t137 != Real(0) && C_mx != Real(0)) ||
+        (std::fabs(t140) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && t140 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t142) < std::numeric_limits<Real>::min() && t140 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t143) < std::numeric_limits<Real>::min() && t133 != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t144) < std::numeric_limits<Real>::min() && t143 != Real(0) && C_My != Real(0)) ||
+        (std::fabs(t145) < std::numeric_limits<Real>::min() && t143 != Real(0) && C_my != Real(0)) ||
+        (std::fabs(t194) < std::numeric_limits<Real>::min() && t82 != Real(0) && b != Real(0)) ||
+        (std::fabs(t195) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t196) < std::numeric_limits<Real>::min() && t195 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t199) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t200) < std::numeric_limits<Real>::min() && t199 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && t201 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t204) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
+        (std::fabs(t205) < std::numeric_limits<Real>::min() && t204 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t209) < std::numeric_limits<Real>::min() && t91 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t210) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t211) < std::numeric_limits<Real>::min() && t210 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t203 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t214) < std::numeric_limits<Real>::min() && t203 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t215) < std::numeric_limits<Real>::min() && t203 != Real(0) && t206 != Real(0)) ||
+        (std::fabs(t218) < std::numeric_limits<Real>::min() && t211 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t222) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t223) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && w_m != Real(0) && t206 != Real(0)) ||
+        (std::fabs(t225) < std::numeric_limits<Real>::min() && t222 != Real(0) && t206 != Real(0)) ||
+        (std::fabs(t226) < std::numeric_limits<Real>::min() && t222 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t227) < std::numeric_limits<Real>::min() && t222 != Real(0) && t208 != Real(0)) ||
+        (std::fabs(t232) < std::numeric_limits<Real>::min() && (t232 != Real(0) || (t215 == Real(0) && R_m != Real(0) && t224 != Real(0)))) ||
+        (std::fabs(t233) < std::numeric_limits<Real>::min() && (t233 != Real(0) || (t232 == Real(0) && v_Mx != Real(0) && t12 != Real(0)))) ||
+        (std::fabs(t234) < std::numeric_limits<Real>::min() && (t234 != Real(0) || (t233 == Real(0) && t63 != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && (t235 != Real(0) || (t234 == Real(0) && t48 != Real(0) && t12 != Real(0)))) ||
+        (std::fabs(t236) < std::numeric_limits<Real>::min() && (t236 != Real(0) || (t235 == Real(0) && v_my != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t238) < std::numeric_limits<Real>::min() && t223 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t239) < std::numeric_limits<Real>::min() && t238 != Real(0) && t207 != Real(0)) ||
+        (std::fabs(t242) < std::numeric_limits<Real>::min() && t242 != Real(0)) ||
+        (std::fabs(t243) < std::numeric_limits<Real>::min() && t206 != Real(0) && t242 != Real(0)) ||
+        (std::fabs(t244) < std::numeric_limits<Real>::min() && t244 != Real(0)) ||
+        (std::fabs(t245) < std::numeric_limits<Real>::min() && t206 != Real(0) && t244 != Real(0)) ||
+        (std::fabs(t282) < std::numeric_limits<Real>::min() && t82 != Real(0) && t281 != Real(0)) ||
+        (std::fabs(t283) < std::numeric_limits<Real>::min() && t194 != Real(0) && t281 != Real(0)) ||
+        (std::fabs(t395) < std::numeric_limits<Real>::min() && t40 != Real(0)) ||
+        (std::fabs(t396) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
+        (std::fabs(t397) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
+        (std::fabs(t398) < std::numeric_limits<Real>::min() && t60 != Real(0)) ||
+        (std::fabs(t442) < std::numeric_limits<Real>::min() && t81 != Real(0) && t441 != Real(0)) ||
+        (std::fabs(t443) < std::numeric_limits<Real>::min() && t442 != Real(0)) ||
+        (std::fabs(t455) < std::numeric_limits<Real>::min() && t106 != Real(0) && t454 != Real(0)) ||
+        (std::fabs(t456) < std::numeric_limits<Real>::min() && t455 != Real(0) && t77 != Real(0)) ||
+        (std::fabs(t457) < std::numeric_limits<Real>::min() && t456 != Real(0)) ||
+        (std::fabs(t458) < std::numeric_limits<Real>::min() && t456 != Real(0)) ||
+        (std::fabs(t463) < std::numeric_limits<Real>::min() && t462 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t464) < std::numeric_limits<Real>::min() && t462 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t467) < std::numeric_limits<Real>::min() && t207 != Real(0) && t466 != Real(0)) ||
+        (std::fabs(t495) < std::numeric_limits<Real>::min() && t86 != Real(0) && t494 != Real(0)) ||
+        (std::fabs(t496) < std::numeric_limits<Real>::min() && t495 != Real(0)) ||
+        (std::fabs(t498) < std::numeric_limits<Real>::min() && t497 != Real(0)) ||
+        (std::fabs(t500) < std::numeric_limits<Real>::min() && t499 != Real(0)) ||
+        (std::fabs(t506) < std::numeric_limits<Real>::min() && t505 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t507) < std::numeric_limits<Real>::min() && t505 != Real(0) && t206 != Real(0)) ||
+        (std::fabs(t508) < std::numeric_limits<Real>::min() && t507 != Real(0)) ||
+        (std::fabs(t510) < std::numeric_limits<Real>::min() && t509 != Real(0)) ||
+        (std::fabs(t512) < std::numeric_limits<Real>::min() && (t512 != Real(0) || (t463 == Real(0) && t511 != Real(0) && t12 != Real(0)))) ||
+        (std::fabs(t513) < std::numeric_limits<Real>::min() && t512 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -4129,14 +4059,14 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
 
 /// collide_rough(M, m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough, with the
 /// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 631 operations with the guards' conditions, of them 25
-/// division(s) and 2 square root(s) (the accurate form: 996, 39 and 2).
-/// v_M[0] is computed in the form "v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 3.67 ulps in double on 4200 samples.
-/// v_M[1] is computed in the form "v_My - (K_n*r_y + K_t*r_x)/M, fma, compensated let": at most 2.78 ulps in double on 4200 samples.
-/// v_m[0] is computed in the form "v_mx + (K_n*r_x - K_t*r_y)/m, fma, compensated let": at most 3.13 ulps in double on 4200 samples.
-/// v_m[1] is computed in the form "v_my + (K_n*r_y + K_t*r_x)/m, fma, compensated let": at most 2.55 ulps in double on 4200 samples.
-/// w_M is computed in the form "w_M - K_t*d/(q_M*M*R_M), fma, compensated let": at most 6.17 ulps in double on 4200 samples.
-/// w_m is computed in the form "w_m - K_t*d/(q_m*m*R_m), fma, compensated let": at most 5.33 ulps in double on 4200 samples.
+/// bound (verification.md): 779 operations with the guards' conditions, of them 25
+/// division(s) and 2 square root(s) (the accurate form: 863, 31 and 2).
+/// v_M[0] is computed in the form "v_Mx - (K_n*r_x - K_t*r_y)/M, compensated let": at most 3.03 ulps in double on 4200 samples.
+/// v_M[1] is computed in the form "v_My - (K_n*r_y + K_t*r_x)/M, compensated let": at most 3.13 ulps in double on 4200 samples.
+/// v_m[0] is computed in the form "v_mx + (K_n*r_x - K_t*r_y)/m, compensated let": at most 3.20 ulps in double on 4200 samples.
+/// v_m[1] is computed in the form "v_my + (K_n*r_y + K_t*r_x)/m, compensated let": at most 3.17 ulps in double on 4200 samples.
+/// w_M is computed in the form "w_M - K_t*d/(q_M*M*R_M), compensated let": at most 4.86 ulps in double on 4200 samples.
+/// w_m is computed in the form "w_m - K_t*d/(q_m*m*R_m), compensated let": at most 4.51 ulps in double on 4200 samples.
 template <class Real>
 inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Real R_m, Real q_M, Real q_m, const std::array<Real, 2>& C_M, const std::array<Real, 2>& C_m, const std::array<Real, 2>& v_M, const std::array<Real, 2>& v_m, Real w_M, Real w_m, Real eps, Real beta, Real mu, fast_t) noexcept
 {
@@ -4200,265 +4130,296 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
     const Real t13 = t12 * t0;
     const Real t14 = v_Mx * t0;
     const Real t15 = v_mx * t0;
-    const Real t16 = v_Mx * t4;
-    const Real t17 = v_mx * t4;
-    const Real t18 = -v_mx;
-    const Real t19 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
-    const Real t20 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
-    const Real t21 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t16));
-    const Real t22 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t17));
-    const Real t23 = v_My - v_my;
-    const Real t24 = v_My * t0;
-    const Real t25 = v_my * t0;
-    const Real t26 = v_My * t4;
-    const Real t27 = v_my * t4;
-    const Real t28 = std::fma(t23, t4, t13);
-    const Real t29 = t14 + t26;
-    const Real t30 = t29 - t14;
+    const Real t16 = t12 * t4;
+    const Real t17 = v_Mx * t4;
+    const Real t18 = v_mx * t4;
+    const Real t19 = t12 - v_Mx;
+    const Real t20 = -t13;
+    const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+    const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+    const Real t23 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17));
+    const Real t24 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t18));
+    const Real t25 = v_Mx - (t12 - t19) - (v_mx + t19);
+    const Real t26 = v_My - v_my;
+    const Real t27 = t26 * t0;
+    const Real t28 = v_My * t0;
+    const Real t29 = v_my * t0;
+    const Real t30 = t26 * t4;
+    const Real t31 = v_My * t4;
+    const Real t32 = v_my * t4;
+    const Real t33 = t13 + t30;
+    const Real t34 = t33 - t13;
+    const Real t35 = t14 + t31;
+    const Real t36 = t35 - t14;
     if (!(t7 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-t13 - t23 * t4 > Real(0))) {
+    if (!(t20 - t30 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t31 = -v_My;
-    const Real t32 = -t23;
-    const Real t33 = std::fma(v_My, t3, std::fma(v_My, t0, -t24));
-    const Real t34 = std::fma(v_my, t3, std::fma(v_my, t0, -t25));
-    const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t26));
-    const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t27));
-    const Real t37 = t14 - (t29 - t30) + (t26 - t30) + (t19 + t35);
-    const Real t38 = t29 + t37;
-    const Real t39 = t38 - t15;
-    const Real t40 = t39 - t38;
-    const Real t41 = t38 - (t39 - t40) - (t15 + t40) + (t37 - (t38 - t29) - t20);
-    const Real t42 = t39 + t41;
-    const Real t43 = t42 - t27;
-    const Real t44 = t43 - t42;
-    const Real t45 = t42 - (t43 - t44) - (t27 + t44) + (t41 - (t42 - t39) - t36);
-    const Real t46 = t43 + t45;
-    const Real t47 = M * m;
-    const Real t48 = M + m;
-    const Real t49 = t48 - M;
-    const Real t50 = std::fma(M, m, -t47);
-    const Real t51 = M - (t48 - t49) + (m - t49);
-    const Real t52 = Real(1) + eps;
-    const Real t53 = t47 * t52;
-    const Real t54 = t52 - Real(1);
-    const Real t55 = Real(1) - (t52 - t54) + (eps - t54);
-    const Real t56 = q_M * q_m;
-    const Real t57 = M * q_M;
-    const Real t58 = m * q_M;
-    const Real t59 = m * q_m;
-    const Real t60 = t47 * q_M;
-    const Real t61 = Real(1) + q_m;
-    const Real t62 = Real(1) + q_M;
-    const Real t63 = q_m * t62;
-    const Real t64 = t60 * q_m;
-    const Real t65 = t57 * q_m;
-    const Real t66 = t58 * q_m;
-    const Real t67 = t57 * t61;
-    const Real t68 = std::fma(m, t63, t67);
-    const Real t69 = t52 * t68;
-    const Real t70 = t69 * t28;
-    const Real t71 = std::fma(M, q_M, -t57);
-    const Real t72 = t57 + t65;
-    const Real t73 = t72 - t57;
-    const Real t74 = t57 - (t72 - t73) + (t65 - t73) + (t71 + std::fma(t71, q_m, std::fma(t57, q_m, -t65)));
-    const Real t75 = t72 + t74;
-    const Real t76 = t75 + t66;
-    const Real t77 = t76 - t75;
-    const Real t78 = t75 - (t76 - t77) + (t66 - t77) + (t74 - (t75 - t72) + std::fma(std::fma(m, q_M, -t58), q_m, std::fma(t58, q_m, -t66)));
-    const Real t79 = t76 + t78;
-    const Real t80 = t79 + t59;
-    const Real t81 = t80 - t79;
-    const Real t82 = t79 - (t80 - t81) + (t59 - t81) + (t78 - (t79 - t76) + std::fma(m, q_m, -t59));
-    const Real t83 = t80 + t82;
-    const Real t84 = Real(1) + b;
-    const Real t85 = b * v_Mx;
-    const Real t86 = t85 * t4;
-    const Real t87 = b * v_mx;
-    const Real t88 = t87 * t4;
-    const Real t89 = b * v_My;
-    const Real t90 = t89 * t0;
-    const Real t91 = b * v_my;
-    const Real t92 = t91 * t0;
-    const Real t93 = t56 * t84;
-    const Real t94 = t93 * t48;
-    const Real t95 = R_M * w_M;
-    const Real t96 = M * R_M;
-    const Real t97 = t96 * q_M;
-    const Real t98 = R_M * b;
-    const Real t99 = t98 * w_M;
-    const Real t100 = std::fma(R_M, w_M, -t95);
-    const Real t101 = std::fma(R_m, w_m, t95);
-    const Real t102 = m * R_m;
-    const Real t103 = t102 * q_m;
-    const Real t104 = std::sqrt(t7);
-    const Real t105 = std::sqrt(t11);
-    const Real t106 = t48 * t105;
-    const Real t107 = t83 * t105;
-    const Real t108 = R_m * b;
-    const Real t109 = t95 * t105;
-    const Real t110 = t95 * t104;
-    const Real t111 = t99 * t105;
-    const Real t112 = R_m * w_m;
-    const Real t113 = w_m * t104;
-    const Real t114 = std::fma(R_m, t113, t110);
-    const Real t115 = std::fma(v_Mx, t4, t114);
-    const Real t116 = std::fma(t31, t0, t115);
-    const Real t117 = std::fma(t18, t4, t116);
-    const Real t118 = std::fma(v_my, t0, t117);
-    const Real t119 = t108 * w_m;
-    const Real t120 = t101 * t104;
-    const Real t121 = std::fma(t12, t4, t120);
-    const Real t122 = std::fma(t32, t0, t121);
-    const Real t123 = std::fma(-t105, t105, t11) + (t10 - (t11 - t7));
-    const Real t124 = t105 + t105;
-    const Real t125 = t112 * t105;
-    const Real t126 = t119 * t105;
-    const Real t127 = std::fma(t48, t105, -t106);
-    const Real t128 = std::fma(t95, t105, -t109);
-    const Real t129 = t109 + t125;
-    const Real t130 = t129 - t109;
-    const Real t131 = t111 + t109;
-    const Real t132 = t131 - t111;
-    const Real t133 = std::fma(R_m, w_m, -t112);
-    const Real t134 = std::fabs(t118);
-    const Real t135 = t106 * t134;
-    const Real t136 = std::fabs(t122);
-    const Real t137 = t94 * t136;
-    const Real t138 = std::fma(t112, t105, -t125);
-    const Real t139 = std::fma(mu, t70, t137);
-    const Real t140 = t47 * mu;
-    const Real t141 = t140 * t52;
-    const Real t142 = (t139 > Real(0) ? Real(1) : t107);
-    const Real t143 = (t139 > Real(0) ? t124 : Real(1));
-    const Real t144 = (t139 > Real(0) ? Real(1) : t124);
-    const Real t145 = (t139 > Real(0) ? t135 : Real(1));
-    if (!(std::fabs(t105) >= detail::smallest_divisor<Real>) || !(std::fabs(t105) <= std::numeric_limits<Real>::max()) || !(std::fabs(t124) >= detail::smallest_divisor<Real>) || !(std::fabs(t124) <= std::numeric_limits<Real>::max()) || !(std::fabs(t143) >= detail::smallest_divisor<Real>) || !(std::fabs(t143) <= std::numeric_limits<Real>::max()) || !(std::fabs(t144) >= detail::smallest_divisor<Real>) || !(std::fabs(t144) <= std::numeric_limits<Real>::max()) || !(std::fabs(t106) >= detail::smallest_divisor<Real>) || !(std::fabs(t106) <= std::numeric_limits<Real>::max()) || !(std::fabs(t145) >= detail::smallest_divisor<Real>) || !(std::fabs(t145) <= std::numeric_limits<Real>::max()) || !(std::fabs(t142) >= detail::smallest_divisor<Real>) || !(std::fabs(t142) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max()) || !(std::fabs(t97) >= detail::smallest_divisor<Real>) || !(std::fabs(t97) <= std::numeric_limits<Real>::max()) || !(std::fabs(t103) >= detail::smallest_divisor<Real>) || !(std::fabs(t103) <= std::numeric_limits<Real>::max())) {
+    const Real t37 = t26 - v_My;
+    const Real t38 = std::fma(v_My, t3, std::fma(v_My, t0, -t28));
+    const Real t39 = std::fma(v_my, t3, std::fma(v_my, t0, -t29));
+    const Real t40 = std::fma(v_My, t9, std::fma(v_My, t4, -t31));
+    const Real t41 = std::fma(v_my, t9, std::fma(v_my, t4, -t32));
+    const Real t42 = v_My - (t26 - t37) - (v_my + t37);
+    const Real t43 = t14 - (t35 - t36) + (t31 - t36) + (t21 + t40);
+    const Real t44 = t35 + t43;
+    const Real t45 = t44 - t15;
+    const Real t46 = t13 - (t33 - t34) + (t30 - t34) + (std::fma(t25, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t42, t4, std::fma(t26, t9, std::fma(t26, t4, -t30))));
+    const Real t47 = t33 + t46;
+    const Real t48 = t45 - t44;
+    const Real t49 = t44 - (t45 - t48) - (t15 + t48) + (t43 - (t44 - t35) - t22);
+    const Real t50 = t45 + t49;
+    const Real t51 = t50 - t32;
+    const Real t52 = t51 - t50;
+    const Real t53 = t50 - (t51 - t52) - (t32 + t52) + (t49 - (t50 - t45) - t41);
+    const Real t54 = t51 + t53;
+    const Real t55 = M * m;
+    const Real t56 = M + m;
+    const Real t57 = t56 - M;
+    const Real t58 = std::fma(M, m, -t55);
+    const Real t59 = M - (t56 - t57) + (m - t57);
+    const Real t60 = Real(1) + eps;
+    const Real t61 = t55 * t60;
+    const Real t62 = t60 - Real(1);
+    const Real t63 = Real(1) - (t60 - t62) + (eps - t62);
+    const Real t64 = q_M * q_m;
+    const Real t65 = M * q_M;
+    const Real t66 = m * q_m;
+    const Real t67 = m * q_M;
+    const Real t68 = t55 * q_M;
+    const Real t69 = Real(1) + q_m;
+    const Real t70 = Real(1) + q_M;
+    const Real t71 = t68 * q_m;
+    const Real t72 = t65 * q_m;
+    const Real t73 = t67 * q_m;
+    const Real t74 = std::fma(M, q_M, -t65);
+    const Real t75 = t65 * t69;
+    const Real t76 = t65 + t72;
+    const Real t77 = t76 - t65;
+    const Real t78 = std::fma(m, q_m, -t66);
+    const Real t79 = t66 * t70;
+    const Real t80 = t69 - Real(1);
+    const Real t81 = t70 - Real(1);
+    const Real t82 = t75 + t79;
+    const Real t83 = t82 - t75;
+    const Real t84 = t65 - (t76 - t77) + (t72 - t77) + (t74 + std::fma(t74, q_m, std::fma(t65, q_m, -t72)));
+    const Real t85 = t76 + t84;
+    const Real t86 = t85 + t73;
+    const Real t87 = t86 - t85;
+    const Real t88 = t75 - (t82 - t83) + (t79 - t83) + (std::fma(t74, t69, std::fma(t65, Real(1) - (t69 - t80) + (q_m - t80), std::fma(t65, t69, -t75))) + std::fma(t78, t70, std::fma(t66, Real(1) - (t70 - t81) + (q_M - t81), std::fma(t66, t70, -t79))));
+    const Real t89 = t82 + t88;
+    const Real t90 = t85 - (t86 - t87) + (t73 - t87) + (t84 - (t85 - t76) + std::fma(std::fma(m, q_M, -t67), q_m, std::fma(t67, q_m, -t73)));
+    const Real t91 = t86 + t90;
+    const Real t92 = t91 + t66;
+    const Real t93 = t92 - t91;
+    const Real t94 = t91 - (t92 - t93) + (t66 - t93) + (t90 - (t91 - t86) + t78);
+    const Real t95 = t92 + t94;
+    const Real t96 = Real(1) + b;
+    const Real t97 = b * v_Mx;
+    const Real t98 = t97 * t4;
+    const Real t99 = b * v_mx;
+    const Real t100 = t99 * t4;
+    const Real t101 = b * v_My;
+    const Real t102 = t101 * t0;
+    const Real t103 = b * v_my;
+    const Real t104 = t103 * t0;
+    const Real t105 = t64 * t96;
+    const Real t106 = t105 * t56;
+    const Real t107 = t96 - Real(1);
+    const Real t108 = R_M * w_M;
+    const Real t109 = M * R_M;
+    const Real t110 = t109 * q_M;
+    const Real t111 = R_M * b;
+    const Real t112 = t111 * w_M;
+    const Real t113 = std::fma(R_M, w_M, -t108);
+    const Real t114 = R_m * w_m;
+    const Real t115 = m * R_m;
+    const Real t116 = t115 * q_m;
+    const Real t117 = std::sqrt(t7);
+    const Real t118 = std::sqrt(t11);
+    const Real t119 = t56 * t118;
+    const Real t120 = t56 * t117;
+    const Real t121 = t95 * t118;
+    const Real t122 = R_m * b;
+    const Real t123 = t108 + t114;
+    const Real t124 = t123 - t108;
+    const Real t125 = t108 * t118;
+    const Real t126 = t108 * t117;
+    const Real t127 = t112 * t118;
+    const Real t128 = t122 * w_m;
+    const Real t129 = std::fma(R_m, w_m, -t114);
+    const Real t130 = t114 * t118;
+    const Real t131 = t114 * t117;
+    const Real t132 = std::fma(-t118, t118, t11) + (t10 - (t11 - t7));
+    const Real t133 = t118 + t118;
+    const Real t134 = t128 * t118;
+    const Real t135 = std::fma(t56, t118, -t119);
+    const Real t136 = std::fma(t108, t118, -t125);
+    const Real t137 = t125 + t130;
+    const Real t138 = t137 - t125;
+    const Real t139 = t127 + t125;
+    const Real t140 = t126 + t131 + t17 - t28 - t18 + t29;
+    const Real t141 = t139 - t127;
+    const Real t142 = t108 - (t123 - t124) + (t114 - t124) + (t113 + t129);
+    const Real t143 = t123 + t142;
+    const Real t144 = t143 * t118;
+    const Real t145 = t144 + t16;
+    const Real t146 = std::fma(t114, t118, -t130);
+    const Real t147 = std::fabs(t140);
+    const Real t148 = t120 * t147;
+    const Real t149 = t145 - t144;
+    const Real t150 = t144 - (t145 - t149) + (t16 - t149) + (std::fma(t142 - (t143 - t123), t118, std::fma(t143, t118, -t144)) + std::fma(t25, t4, std::fma(t12, t9, std::fma(t12, t4, -t16))));
+    const Real t151 = t145 + t150;
+    const Real t152 = t151 - t27;
+    const Real t153 = t152 - t151;
+    const Real t154 = t151 - (t152 - t153) - (t27 + t153) + (t150 - (t151 - t145) - std::fma(t42, t0, std::fma(t26, t3, std::fma(t26, t0, -t27))));
+    const Real t155 = t152 + t154;
+    const Real t156 = t154 - (t155 - t152);
+    const Real t157 = (t155 > Real(0) ? t155 : -t155);
+    const Real t158 = t106 * t157;
+    const Real t159 = mu * t60;
+    const Real t160 = t55 * mu;
+    const Real t161 = t160 * t60;
+    const Real t162 = t159 * t89;
+    const Real t163 = t162 * t47;
+    const Real t164 = t158 + t163;
+    const Real t165 = t164 - t158;
+    const Real t166 = t158 - (t164 - t165) + (t163 - t165) + (std::fma(std::fma(std::fma(std::fma(q_M, q_m, -t64), t96, std::fma(t64, Real(1) - (t96 - t107) + (b - t107), std::fma(t64, t96, -t105))), t56, std::fma(t105, t59, std::fma(t105, t56, -t106))), t157, std::fma(t106, (t155 > Real(0) ? t156 : -t156), std::fma(t106, t157, -t158))) + std::fma(std::fma(std::fma(mu, t63, std::fma(mu, t60, -t159)), t89, std::fma(t159, t88 - (t89 - t82), std::fma(t159, t89, -t162))), t47, std::fma(t162, t46 - (t47 - t33), std::fma(t162, t47, -t163))));
+    const Real t167 = t164 + t166;
+    const Real t168 = t167 + (t166 - (t167 - t164));
+    const Real t169 = (t168 > Real(0) ? Real(1) : t121);
+    const Real t170 = (t168 > Real(0) ? t133 : Real(1));
+    const Real t171 = (t168 > Real(0) ? Real(1) : t133);
+    const Real t172 = (t168 > Real(0) ? t148 : Real(1));
+    if (!(std::fabs(t118) >= detail::smallest_divisor<Real>) || !(std::fabs(t118) <= std::numeric_limits<Real>::max()) || !(std::fabs(t133) >= detail::smallest_divisor<Real>) || !(std::fabs(t133) <= std::numeric_limits<Real>::max()) || !(std::fabs(t170) >= detail::smallest_divisor<Real>) || !(std::fabs(t170) <= std::numeric_limits<Real>::max()) || !(std::fabs(t171) >= detail::smallest_divisor<Real>) || !(std::fabs(t171) <= std::numeric_limits<Real>::max()) || !(std::fabs(t119) >= detail::smallest_divisor<Real>) || !(std::fabs(t119) <= std::numeric_limits<Real>::max()) || !(std::fabs(t172) >= detail::smallest_divisor<Real>) || !(std::fabs(t172) <= std::numeric_limits<Real>::max()) || !(std::fabs(t169) >= detail::smallest_divisor<Real>) || !(std::fabs(t169) <= std::numeric_limits<Real>::max()) || !(std::fabs(t110) >= detail::smallest_divisor<Real>) || !(std::fabs(t110) <= std::numeric_limits<Real>::max()) || !(std::fabs(t116) >= detail::smallest_divisor<Real>) || !(std::fabs(t116) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t146 = t14 / t105;
-    const Real t147 = t15 / t105;
-    const Real t148 = t26 / t105;
-    const Real t149 = t27 / t105;
-    const Real t150 = t123 / t124;
-    const Real t151 = t123 / t143;
-    const Real t152 = t123 / t144;
-    const Real t153 = -t146;
-    const Real t154 = t146 + t148;
-    const Real t155 = t154 - t146;
-    const Real t156 = -t147;
-    const Real t157 = -t148;
-    const Real t158 = -t149;
-    const Real t159 = t109 - (t129 - t130) + (t125 - t130) + (std::fma(t100, t105, std::fma(t95, t151, t128)) + std::fma(t133, t105, std::fma(t112, t151, t138)));
-    const Real t160 = t129 + t159;
-    const Real t161 = t160 + t16;
-    const Real t162 = t111 - (t131 - t132) + (t109 - t132) + (std::fma(std::fma(std::fma(R_M, b, -t98), w_M, std::fma(t98, w_M, -t99)), t105, std::fma(t99, t152, std::fma(t99, t105, -t111))) + std::fma(t100, t105, std::fma(t95, t152, t128)));
-    const Real t163 = t131 + t162;
-    const Real t164 = t163 + t126;
-    const Real t165 = t161 - t160;
-    const Real t166 = t164 - t163;
-    const Real t167 = t146 - (t154 - t155) + (t148 - t155) + (std::fma(t153, t150, std::fma(t153, t105, t14) + t19) / t105 + std::fma(t157, t150, std::fma(t157, t105, t26) + t35) / t105);
-    const Real t168 = t154 + t167;
-    const Real t169 = t168 - t147;
-    const Real t170 = t160 - (t161 - t165) + (t16 - t165) + (t159 - (t160 - t129) + t21);
-    const Real t171 = t161 + t170;
-    const Real t172 = t171 - t24;
-    const Real t173 = t163 - (t164 - t166) + (t126 - t166) + (t162 - (t163 - t131) + std::fma(std::fma(std::fma(R_m, b, -t108), w_m, std::fma(t108, w_m, -t119)), t105, std::fma(t119, t152, std::fma(t119, t105, -t126))));
-    const Real t174 = t164 + t173;
-    const Real t175 = t174 + t125;
-    const Real t176 = t169 - t168;
-    const Real t177 = t172 - t171;
-    const Real t178 = t175 - t174;
-    const Real t179 = t168 - (t169 - t176) - (t147 + t176) + (t167 - (t168 - t154) - std::fma(t156, t150, std::fma(t156, t105, t15) + t20) / t105);
-    const Real t180 = t169 + t179;
-    const Real t181 = t180 - t149;
-    const Real t182 = t171 - (t172 - t177) - (t24 + t177) + (t170 - (t171 - t161) - t33);
-    const Real t183 = t172 + t182;
-    const Real t184 = t183 - t17;
-    const Real t185 = t174 - (t175 - t178) + (t125 - t178) + (t173 - (t174 - t164) + std::fma(t133, t105, std::fma(t112, t152, t138)));
-    const Real t186 = t175 + t185;
-    const Real t187 = t186 + t86;
-    const Real t188 = t181 - t180;
-    const Real t189 = t184 - t183;
-    const Real t190 = t187 - t186;
-    const Real t191 = t180 - (t181 - t188) - (t149 + t188) + (t179 - (t180 - t169) - std::fma(t158, t150, std::fma(t158, t105, t27) + t36) / t105);
-    const Real t192 = t181 + t191;
-    const Real t193 = t53 * t192;
-    const Real t194 = t193 / t106;
-    const Real t195 = t183 - (t184 - t189) - (t17 + t189) + (t182 - (t183 - t172) - t22);
-    const Real t196 = t184 + t195;
-    const Real t197 = t196 + t25;
-    const Real t198 = t186 - (t187 - t190) + (t86 - t190) + (t185 - (t186 - t175) + std::fma(std::fma(b, v_Mx, -t85), t4, std::fma(t85, t9, std::fma(t85, t4, -t86))));
-    const Real t199 = t187 + t198;
-    const Real t200 = t199 - t90;
-    const Real t201 = -t194;
-    const Real t202 = t197 - t196;
-    const Real t203 = t200 - t199;
-    const Real t204 = t196 - (t197 - t202) + (t25 - t202) + (t195 - (t196 - t184) + t34);
-    const Real t205 = t197 + t204;
-    const Real t206 = t141 * t205;
-    const Real t207 = t206 * t46;
-    const Real t208 = t207 / t145;
-    const Real t209 = t199 - (t200 - t203) - (t90 + t203) + (t198 - (t199 - t187) - std::fma(std::fma(b, v_My, -t89), t0, std::fma(t89, t3, std::fma(t89, t0, -t90))));
-    const Real t210 = t200 + t209;
-    const Real t211 = t210 - t88;
-    const Real t212 = t201 + -(std::fma(t201, std::fma(t51, t105, std::fma(t48, t150, t127)), std::fma(t201, t106, t193) + std::fma(std::fma(t50, t52, std::fma(t47, t55, std::fma(t47, t52, -t53))), t192, std::fma(t53, t191 - (t192 - t181), std::fma(t53, t192, -t193)))) / t106);
-    const Real t213 = t212 * t0;
-    const Real t214 = t212 * t4;
-    const Real t215 = -t208;
+    const Real t173 = t14 / t118;
+    const Real t174 = t15 / t118;
+    const Real t175 = t31 / t118;
+    const Real t176 = t32 / t118;
+    const Real t177 = t132 / t133;
+    const Real t178 = t132 / t170;
+    const Real t179 = t132 / t171;
+    const Real t180 = -t173;
+    const Real t181 = t173 + t175;
+    const Real t182 = t181 - t173;
+    const Real t183 = -t174;
+    const Real t184 = -t175;
+    const Real t185 = -t176;
+    const Real t186 = t125 - (t137 - t138) + (t130 - t138) + (std::fma(t113, t118, std::fma(t108, t178, t136)) + std::fma(t129, t118, std::fma(t114, t178, t146)));
+    const Real t187 = t137 + t186;
+    const Real t188 = t187 + t17;
+    const Real t189 = t127 - (t139 - t141) + (t125 - t141) + (std::fma(std::fma(std::fma(R_M, b, -t111), w_M, std::fma(t111, w_M, -t112)), t118, std::fma(t112, t179, std::fma(t112, t118, -t127))) + std::fma(t113, t118, std::fma(t108, t179, t136)));
+    const Real t190 = t139 + t189;
+    const Real t191 = t190 + t134;
+    const Real t192 = t188 - t187;
+    const Real t193 = t191 - t190;
+    const Real t194 = t173 - (t181 - t182) + (t175 - t182) + (std::fma(t180, t177, std::fma(t180, t118, t14) + t21) / t118 + std::fma(t184, t177, std::fma(t184, t118, t31) + t40) / t118);
+    const Real t195 = t181 + t194;
+    const Real t196 = t195 - t174;
+    const Real t197 = t187 - (t188 - t192) + (t17 - t192) + (t186 - (t187 - t137) + t23);
+    const Real t198 = t188 + t197;
+    const Real t199 = t198 - t28;
+    const Real t200 = t190 - (t191 - t193) + (t134 - t193) + (t189 - (t190 - t139) + std::fma(std::fma(std::fma(R_m, b, -t122), w_m, std::fma(t122, w_m, -t128)), t118, std::fma(t128, t179, std::fma(t128, t118, -t134))));
+    const Real t201 = t191 + t200;
+    const Real t202 = t201 + t130;
+    const Real t203 = t196 - t195;
+    const Real t204 = t199 - t198;
+    const Real t205 = t202 - t201;
+    const Real t206 = t195 - (t196 - t203) - (t174 + t203) + (t194 - (t195 - t181) - std::fma(t183, t177, std::fma(t183, t118, t15) + t22) / t118);
+    const Real t207 = t196 + t206;
+    const Real t208 = t207 - t176;
+    const Real t209 = t198 - (t199 - t204) - (t28 + t204) + (t197 - (t198 - t188) - t38);
+    const Real t210 = t199 + t209;
+    const Real t211 = t210 - t18;
+    const Real t212 = t201 - (t202 - t205) + (t130 - t205) + (t200 - (t201 - t191) + std::fma(t129, t118, std::fma(t114, t179, t146)));
+    const Real t213 = t202 + t212;
+    const Real t214 = t213 + t98;
+    const Real t215 = t208 - t207;
     const Real t216 = t211 - t210;
-    const Real t217 = t210 - (t211 - t216) - (t88 + t216) + (t209 - (t210 - t200) - std::fma(std::fma(b, v_mx, -t87), t4, std::fma(t87, t9, std::fma(t87, t4, -t88))));
-    const Real t218 = t211 + t217;
-    const Real t219 = t218 + t92;
-    const Real t220 = t219 - t218;
-    const Real t221 = t218 - (t219 - t220) + (t92 - t220) + (t217 - (t218 - t211) + std::fma(std::fma(b, v_my, -t91), t0, std::fma(t91, t3, std::fma(t91, t0, -t92))));
-    const Real t222 = t219 + t221;
-    const Real t223 = t222 + t16;
-    const Real t224 = t223 - t222;
-    const Real t225 = t222 - (t223 - t224) + (t16 - t224) + (t221 - (t222 - t219) + t21);
-    const Real t226 = t223 + t225;
-    const Real t227 = t226 - t24;
-    const Real t228 = t227 - t226;
-    const Real t229 = t226 - (t227 - t228) - (t24 + t228) + (t225 - (t226 - t223) - t33);
-    const Real t230 = t227 + t229;
-    const Real t231 = t230 - t17;
-    const Real t232 = t231 - t230;
-    const Real t233 = t230 - (t231 - t232) - (t17 + t232) + (t229 - (t230 - t227) - t22);
-    const Real t234 = t231 + t233;
-    const Real t235 = t234 + t25;
-    const Real t236 = t235 - t234;
-    const Real t237 = t234 - (t235 - t236) + (t25 - t236) + (t233 - (t234 - t231) + t34);
-    const Real t238 = t235 + t237;
-    const Real t239 = t64 * t238;
-    const Real t240 = t239 / t142;
-    const Real t241 = (t139 > Real(0) ? t215 : t240);
-    const Real t242 = t241 / t105;
-    const Real t243 = -t240;
-    const Real t244 = -t242;
-    const Real t245 = t242 + std::fma(t244, t150, std::fma(t244, t105, t241) + (t139 > Real(0) ? -(std::fma(t215, std::fma(std::fma(t51, t105, std::fma(t48, t151, t127)), t134, std::fma(t106, t134, -t135)), std::fma(t215, t135, t207) + std::fma(std::fma(std::fma(std::fma(t50, mu, std::fma(t47, mu, -t140)), t52, std::fma(t140, t55, std::fma(t140, t52, -t141))), t205, std::fma(t141, t204 - (t205 - t197), std::fma(t141, t205, -t206))), t46, std::fma(t206, t45 - (t46 - t43), std::fma(t206, t46, -t207)))) / t145) : std::fma(t243, std::fma(t82 - (t83 - t80), t105, std::fma(t83, t152, std::fma(t83, t105, -t107))), std::fma(t243, t107, t239) + std::fma(std::fma(std::fma(t50, q_M, std::fma(t47, q_M, -t60)), q_m, std::fma(t60, q_m, -t64)), t238, std::fma(t64, t237 - (t238 - t235), std::fma(t64, t238, -t239)))) / t142)) / t105;
-    const Real t246 = std::fma(t245, t0, t214);
-    const Real t247 = t246 / M;
-    const Real t248 = t246 / m;
-    const Real t249 = t245 * t104;
-    const Real t250 = t249 / t97;
-    const Real t251 = t249 / t103;
-    const Real t252 = -t245;
-    const Real t253 = std::fma(t252, t4, t213);
-    const Real t254 = t253 / M;
-    const Real t255 = t253 / m;
-    const Real result0 = v_Mx + t254;
-    const Real result1 = v_My + t247;
-    const Real result2 = v_mx - t255;
-    const Real result3 = v_my - t248;
-    const Real result4 = w_M - t250;
-    const Real result5 = w_m - t251;
-    if (!detail::finite(t118) || !detail::finite(t122) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
+    const Real t217 = t214 - t213;
+    const Real t218 = t207 - (t208 - t215) - (t176 + t215) + (t206 - (t207 - t196) - std::fma(t185, t177, std::fma(t185, t118, t32) + t41) / t118);
+    const Real t219 = t208 + t218;
+    const Real t220 = t61 * t219;
+    const Real t221 = t220 / t119;
+    const Real t222 = t210 - (t211 - t216) - (t18 + t216) + (t209 - (t210 - t199) - t24);
+    const Real t223 = t211 + t222;
+    const Real t224 = t223 + t29;
+    const Real t225 = t213 - (t214 - t217) + (t98 - t217) + (t212 - (t213 - t202) + std::fma(std::fma(b, v_Mx, -t97), t4, std::fma(t97, t9, std::fma(t97, t4, -t98))));
+    const Real t226 = t214 + t225;
+    const Real t227 = t226 - t102;
+    const Real t228 = -t221;
+    const Real t229 = t224 - t223;
+    const Real t230 = t227 - t226;
+    const Real t231 = t223 - (t224 - t229) + (t29 - t229) + (t222 - (t223 - t211) + t39);
+    const Real t232 = t224 + t231;
+    const Real t233 = t161 * t232;
+    const Real t234 = t233 * t54;
+    const Real t235 = t234 / t172;
+    const Real t236 = t226 - (t227 - t230) - (t102 + t230) + (t225 - (t226 - t214) - std::fma(std::fma(b, v_My, -t101), t0, std::fma(t101, t3, std::fma(t101, t0, -t102))));
+    const Real t237 = t227 + t236;
+    const Real t238 = t237 - t100;
+    const Real t239 = t228 + -(std::fma(t228, std::fma(t59, t118, std::fma(t56, t177, t135)), std::fma(t228, t119, t220) + std::fma(std::fma(t58, t60, std::fma(t55, t63, std::fma(t55, t60, -t61))), t219, std::fma(t61, t218 - (t219 - t208), std::fma(t61, t219, -t220)))) / t119);
+    const Real t240 = t239 * t0;
+    const Real t241 = t239 * t4;
+    const Real t242 = t231 - (t232 - t224);
+    const Real t243 = (t232 > Real(0) ? t232 : -t232);
+    const Real t244 = t119 * t243;
+    const Real t245 = -t235;
+    const Real t246 = t238 - t237;
+    const Real t247 = t237 - (t238 - t246) - (t100 + t246) + (t236 - (t237 - t227) - std::fma(std::fma(b, v_mx, -t99), t4, std::fma(t99, t9, std::fma(t99, t4, -t100))));
+    const Real t248 = t238 + t247;
+    const Real t249 = t248 + t104;
+    const Real t250 = t249 - t248;
+    const Real t251 = t248 - (t249 - t250) + (t104 - t250) + (t247 - (t248 - t238) + std::fma(std::fma(b, v_my, -t103), t0, std::fma(t103, t3, std::fma(t103, t0, -t104))));
+    const Real t252 = t249 + t251;
+    const Real t253 = t252 + t17;
+    const Real t254 = t253 - t252;
+    const Real t255 = t252 - (t253 - t254) + (t17 - t254) + (t251 - (t252 - t249) + t23);
+    const Real t256 = t253 + t255;
+    const Real t257 = t256 - t28;
+    const Real t258 = t257 - t256;
+    const Real t259 = t256 - (t257 - t258) - (t28 + t258) + (t255 - (t256 - t253) - t38);
+    const Real t260 = t257 + t259;
+    const Real t261 = t260 - t18;
+    const Real t262 = t261 - t260;
+    const Real t263 = t260 - (t261 - t262) - (t18 + t262) + (t259 - (t260 - t257) - t24);
+    const Real t264 = t261 + t263;
+    const Real t265 = t264 + t29;
+    const Real t266 = t265 - t264;
+    const Real t267 = t264 - (t265 - t266) + (t29 - t266) + (t263 - (t264 - t261) + t39);
+    const Real t268 = t265 + t267;
+    const Real t269 = t71 * t268;
+    const Real t270 = t269 / t169;
+    const Real t271 = (t168 > Real(0) ? t245 : t270);
+    const Real t272 = t271 / t118;
+    const Real t273 = -t270;
+    const Real t274 = -t272;
+    const Real t275 = t272 + std::fma(t274, t177, std::fma(t274, t118, t271) + (t168 > Real(0) ? -(std::fma(t245, std::fma(std::fma(t59, t118, std::fma(t56, t178, t135)), t243, std::fma(t119, (t232 > Real(0) ? t242 : -t242), std::fma(t119, t243, -t244))), std::fma(t245, t244, t234) + std::fma(std::fma(std::fma(std::fma(t58, mu, std::fma(t55, mu, -t160)), t60, std::fma(t160, t63, std::fma(t160, t60, -t161))), t232, std::fma(t161, t242, std::fma(t161, t232, -t233))), t54, std::fma(t233, t53 - (t54 - t51), std::fma(t233, t54, -t234)))) / t172) : std::fma(t273, std::fma(t94 - (t95 - t92), t118, std::fma(t95, t179, std::fma(t95, t118, -t121))), std::fma(t273, t121, t269) + std::fma(std::fma(std::fma(t58, q_M, std::fma(t55, q_M, -t68)), q_m, std::fma(t68, q_m, -t71)), t268, std::fma(t71, t267 - (t268 - t265), std::fma(t71, t268, -t269)))) / t169)) / t118;
+    const Real t276 = t275 * t0;
+    const Real t277 = t275 * t4;
+    const Real t278 = t275 * t117;
+    const Real t279 = t278 / t110;
+    const Real t280 = t278 / t116;
+    const Real t281 = t240 - t277;
+    const Real t282 = t281 / M;
+    const Real t283 = t281 / m;
+    const Real t284 = t241 + t276;
+    const Real t285 = t284 / M;
+    const Real t286 = t284 / m;
+    const Real result0 = v_Mx + t282;
+    const Real result1 = v_My + t285;
+    const Real result2 = v_mx - t283;
+    const Real result3 = v_my - t286;
+    const Real result4 = w_M - t279;
+    const Real result5 = w_m - t280;
+    if (!detail::finite(t140) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -4467,95 +4428,89 @@ inline collide_rough_result<Real, 2> collide_rough(Real M, Real m, Real R_M, Rea
         (std::fabs(t13) < std::numeric_limits<Real>::min() && t12 != Real(0) && t0 != Real(0)) ||
         (std::fabs(t14) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
         (std::fabs(t15) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t24) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && (t28 != Real(0) || (t13 == Real(0) && t23 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
-        (std::fabs(t53) < std::numeric_limits<Real>::min() && t47 != Real(0) && t52 != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && m != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && t47 != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t63) < std::numeric_limits<Real>::min() && q_m != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t64) < std::numeric_limits<Real>::min() && t60 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t65) < std::numeric_limits<Real>::min() && t57 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t66) < std::numeric_limits<Real>::min() && t58 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t67) < std::numeric_limits<Real>::min() && t57 != Real(0) && t61 != Real(0)) ||
-        (std::fabs(t68) < std::numeric_limits<Real>::min() && (t68 != Real(0) || (t67 == Real(0) && m != Real(0) && t63 != Real(0)))) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && t52 != Real(0) && t68 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && t28 != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t85 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t89 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t91 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && t56 != Real(0) && t84 != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && t48 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t98 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && (t101 != Real(0) || (t95 == Real(0) && R_m != Real(0) && w_m != Real(0)))) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t48 != Real(0) && t105 != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t83 != Real(0) && t105 != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t95 != Real(0) && t105 != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t95 != Real(0) && t104 != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t99 != Real(0) && t105 != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && w_m != Real(0) && t104 != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && (t114 != Real(0) || (t110 == Real(0) && R_m != Real(0) && t113 != Real(0)))) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && (t115 != Real(0) || (t114 == Real(0) && v_Mx != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && (t116 != Real(0) || (t115 == Real(0) && t31 != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && (t117 != Real(0) || (t116 == Real(0) && t18 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && (t118 != Real(0) || (t117 == Real(0) && v_my != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t108 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t101 != Real(0) && t104 != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && (t121 != Real(0) || (t120 == Real(0) && t12 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && (t122 != Real(0) || (t121 == Real(0) && t32 != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t112 != Real(0) && t105 != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t119 != Real(0) && t105 != Real(0)) ||
-        (std::fabs(t134) < std::numeric_limits<Real>::min() && t134 != Real(0)) ||
-        (std::fabs(t135) < std::numeric_limits<Real>::min() && t106 != Real(0) && t134 != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && t136 != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && t94 != Real(0) && t136 != Real(0)) ||
-        (std::fabs(t139) < std::numeric_limits<Real>::min() && (t139 != Real(0) || (t137 == Real(0) && mu != Real(0) && t70 != Real(0)))) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && t47 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t141) < std::numeric_limits<Real>::min() && t140 != Real(0) && t52 != Real(0)) ||
-        (std::fabs(t146) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
-        (std::fabs(t147) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
-        (std::fabs(t148) < std::numeric_limits<Real>::min() && t26 != Real(0)) ||
-        (std::fabs(t149) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && t53 != Real(0) && t192 != Real(0)) ||
-        (std::fabs(t194) < std::numeric_limits<Real>::min() && t193 != Real(0)) ||
-        (std::fabs(t206) < std::numeric_limits<Real>::min() && t141 != Real(0) && t205 != Real(0)) ||
-        (std::fabs(t207) < std::numeric_limits<Real>::min() && t206 != Real(0) && t46 != Real(0)) ||
-        (std::fabs(t208) < std::numeric_limits<Real>::min() && t207 != Real(0)) ||
-        (std::fabs(t213) < std::numeric_limits<Real>::min() && t212 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t214) < std::numeric_limits<Real>::min() && t212 != Real(0) && t4 != Real(0)) ||
-        (std::fabs(t239) < std::numeric_limits<Real>::min() && t64 != Real(0) && t238 != Real(0)) ||
-        (std::fabs(t240) < std::numeric_limits<Real>::min() && t239 != Real(0)) ||
-        (std::fabs(t242) < std::numeric_limits<Real>::min() && t241 != Real(0)) ||
-        (std::fabs(t246) < std::numeric_limits<Real>::min() && (t246 != Real(0) || (t214 == Real(0) && t245 != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t247) < std::numeric_limits<Real>::min() && t246 != Real(0)) ||
-        (std::fabs(t248) < std::numeric_limits<Real>::min() && t246 != Real(0)) ||
-        (std::fabs(t249) < std::numeric_limits<Real>::min() && t245 != Real(0) && t104 != Real(0)) ||
-        (std::fabs(t250) < std::numeric_limits<Real>::min() && t249 != Real(0)) ||
-        (std::fabs(t251) < std::numeric_limits<Real>::min() && t249 != Real(0)) ||
-        (std::fabs(t253) < std::numeric_limits<Real>::min() && (t253 != Real(0) || (t213 == Real(0) && t252 != Real(0) && t4 != Real(0)))) ||
-        (std::fabs(t254) < std::numeric_limits<Real>::min() && t253 != Real(0)) ||
-        (std::fabs(t255) < std::numeric_limits<Real>::min() && t253 != Real(0))) {
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t12 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && t26 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t30) < std::numeric_limits<Real>::min() && t26 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && M != Real(0) && m != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && t55 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t64) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t65) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t66) < std::numeric_limits<Real>::min() && m != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t67) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t68) < std::numeric_limits<Real>::min() && t55 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && t68 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t72) < std::numeric_limits<Real>::min() && t65 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t73) < std::numeric_limits<Real>::min() && t67 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t75) < std::numeric_limits<Real>::min() && t65 != Real(0) && t69 != Real(0)) ||
+        (std::fabs(t79) < std::numeric_limits<Real>::min() && t66 != Real(0) && t70 != Real(0)) ||
+        (std::fabs(t97) < std::numeric_limits<Real>::min() && b != Real(0) && v_Mx != Real(0)) ||
+        (std::fabs(t98) < std::numeric_limits<Real>::min() && t97 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && b != Real(0) && v_mx != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && b != Real(0) && v_My != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t101 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && b != Real(0) && v_my != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t103 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t64 != Real(0) && t96 != Real(0)) ||
+        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && t56 != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t111) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t111 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t115) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t56 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t56 != Real(0) && t117 != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t95 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t108 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t108 != Real(0) && t117 != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t112 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && t122 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && t114 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && t114 != Real(0) && t117 != Real(0)) ||
+        (std::fabs(t134) < std::numeric_limits<Real>::min() && t128 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t144) < std::numeric_limits<Real>::min() && t143 != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t147) < std::numeric_limits<Real>::min() && t147 != Real(0)) ||
+        (std::fabs(t148) < std::numeric_limits<Real>::min() && t120 != Real(0) && t147 != Real(0)) ||
+        (std::fabs(t158) < std::numeric_limits<Real>::min() && t106 != Real(0) && t157 != Real(0)) ||
+        (std::fabs(t159) < std::numeric_limits<Real>::min() && mu != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t160) < std::numeric_limits<Real>::min() && t55 != Real(0) && mu != Real(0)) ||
+        (std::fabs(t161) < std::numeric_limits<Real>::min() && t160 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t162) < std::numeric_limits<Real>::min() && t159 != Real(0) && t89 != Real(0)) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && t162 != Real(0) && t47 != Real(0)) ||
+        (std::fabs(t173) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t174) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t175) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t176) < std::numeric_limits<Real>::min() && t32 != Real(0)) ||
+        (std::fabs(t220) < std::numeric_limits<Real>::min() && t61 != Real(0) && t219 != Real(0)) ||
+        (std::fabs(t221) < std::numeric_limits<Real>::min() && t220 != Real(0)) ||
+        (std::fabs(t233) < std::numeric_limits<Real>::min() && t161 != Real(0) && t232 != Real(0)) ||
+        (std::fabs(t234) < std::numeric_limits<Real>::min() && t233 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && t234 != Real(0)) ||
+        (std::fabs(t240) < std::numeric_limits<Real>::min() && t239 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t241) < std::numeric_limits<Real>::min() && t239 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t244) < std::numeric_limits<Real>::min() && t119 != Real(0) && t243 != Real(0)) ||
+        (std::fabs(t269) < std::numeric_limits<Real>::min() && t71 != Real(0) && t268 != Real(0)) ||
+        (std::fabs(t270) < std::numeric_limits<Real>::min() && t269 != Real(0)) ||
+        (std::fabs(t272) < std::numeric_limits<Real>::min() && t271 != Real(0)) ||
+        (std::fabs(t276) < std::numeric_limits<Real>::min() && t275 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t277) < std::numeric_limits<Real>::min() && t275 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t278) < std::numeric_limits<Real>::min() && t275 != Real(0) && t117 != Real(0)) ||
+        (std::fabs(t279) < std::numeric_limits<Real>::min() && t278 != Real(0)) ||
+        (std::fabs(t280) < std::numeric_limits<Real>::min() && t278 != Real(0)) ||
+        (std::fabs(t282) < std::numeric_limits<Real>::min() && t281 != Real(0)) ||
+        (std::fabs(t283) < std::numeric_limits<Real>::min() && t281 != Real(0)) ||
+        (std::fabs(t285) < std::numeric_limits<Real>::min() && t284 != Real(0)) ||
+        (std::fabs(t286) < std::numeric_limits<Real>::min() && t284 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -4579,9 +4534,9 @@ namespace detail {
 // rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
 // bounds crosswise, a square root halves them, atan2(y, x) lies within
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, -1, 452, 420; where it is -1, the loop tests the least magnitude of the values.
+// quadruple long double): k = -1, -1, 421, 386; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_rough_batch_2d_fast_k = input_k<Real>(-1, -1, 452, 420);
+constexpr int collide_rough_batch_2d_fast_k = input_k<Real>(-1, -1, 421, 386);
 
 // The loop of collide_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
@@ -4626,8 +4581,10 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d_fast(std::size_t count, const R
             const Real t7 = t2 + t6;
             const Real t12 = v_Mx_[i] - v_mx_[i];
             const Real t13 = t12 * t0;
-            const Real t22 = v_My_[i] - v_my_[i];
-            fails = !(-t13 - t22 * t4 > Real(0));
+            const Real t20 = -t13;
+            const Real t26 = v_My_[i] - v_my_[i];
+            const Real t30 = t26 * t4;
+            fails = !(t20 - t30 > Real(0));
             condition = detail::blend(fails, status::separating, condition);
             fails = !(t7 > Real(0));
             condition = detail::blend(fails, status::coincident_centres, condition);
@@ -4672,257 +4629,288 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d_fast(std::size_t count, const R
         const Real t13 = t12 * t0;
         const Real t14 = v_Mx * t0;
         const Real t15 = v_mx * t0;
-        const Real t16 = v_Mx * t4;
-        const Real t17 = v_mx * t4;
-        const Real t18 = -v_mx;
-        const Real t19 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
-        const Real t20 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
-        const Real t21 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t16));
-        const Real t22 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t17));
-        const Real t23 = v_My - v_my;
-        const Real t24 = v_My * t0;
-        const Real t25 = v_my * t0;
-        const Real t26 = v_My * t4;
-        const Real t27 = v_my * t4;
-        const Real t28 = std::fma(t23, t4, t13);
-        const Real t29 = t14 + t26;
-        const Real t30 = t29 - t14;
-        const Real t31 = -v_My;
-        const Real t32 = -t23;
-        const Real t33 = std::fma(v_My, t3, std::fma(v_My, t0, -t24));
-        const Real t34 = std::fma(v_my, t3, std::fma(v_my, t0, -t25));
-        const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t26));
-        const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t27));
-        const Real t37 = t14 - (t29 - t30) + (t26 - t30) + (t19 + t35);
-        const Real t38 = t29 + t37;
-        const Real t39 = t38 - t15;
-        const Real t40 = t39 - t38;
-        const Real t41 = t38 - (t39 - t40) - (t15 + t40) + (t37 - (t38 - t29) - t20);
-        const Real t42 = t39 + t41;
-        const Real t43 = t42 - t27;
-        const Real t44 = t43 - t42;
-        const Real t45 = t42 - (t43 - t44) - (t27 + t44) + (t41 - (t42 - t39) - t36);
-        const Real t46 = t43 + t45;
-        const Real t47 = M * m;
-        const Real t48 = M + m;
-        const Real t49 = t48 - M;
-        const Real t50 = std::fma(M, m, -t47);
-        const Real t51 = M - (t48 - t49) + (m - t49);
-        const Real t52 = Real(1) + eps;
-        const Real t53 = t47 * t52;
-        const Real t54 = t52 - Real(1);
-        const Real t55 = Real(1) - (t52 - t54) + (eps - t54);
-        const Real t56 = q_M * q_m;
-        const Real t57 = M * q_M;
-        const Real t58 = m * q_M;
-        const Real t59 = m * q_m;
-        const Real t60 = t47 * q_M;
-        const Real t61 = Real(1) + q_m;
-        const Real t62 = Real(1) + q_M;
-        const Real t63 = q_m * t62;
-        const Real t64 = t60 * q_m;
-        const Real t65 = t57 * q_m;
-        const Real t66 = t58 * q_m;
-        const Real t67 = t57 * t61;
-        const Real t68 = std::fma(m, t63, t67);
-        const Real t69 = t52 * t68;
-        const Real t70 = t69 * t28;
-        const Real t71 = std::fma(M, q_M, -t57);
-        const Real t72 = t57 + t65;
-        const Real t73 = t72 - t57;
-        const Real t74 = t57 - (t72 - t73) + (t65 - t73) + (t71 + std::fma(t71, q_m, std::fma(t57, q_m, -t65)));
-        const Real t75 = t72 + t74;
-        const Real t76 = t75 + t66;
-        const Real t77 = t76 - t75;
-        const Real t78 = t75 - (t76 - t77) + (t66 - t77) + (t74 - (t75 - t72) + std::fma(std::fma(m, q_M, -t58), q_m, std::fma(t58, q_m, -t66)));
-        const Real t79 = t76 + t78;
-        const Real t80 = t79 + t59;
-        const Real t81 = t80 - t79;
-        const Real t82 = t79 - (t80 - t81) + (t59 - t81) + (t78 - (t79 - t76) + std::fma(m, q_m, -t59));
-        const Real t83 = t80 + t82;
-        const Real t84 = Real(1) + b;
-        const Real t85 = b * v_Mx;
-        const Real t86 = t85 * t4;
-        const Real t87 = b * v_mx;
-        const Real t88 = t87 * t4;
-        const Real t89 = b * v_My;
-        const Real t90 = t89 * t0;
-        const Real t91 = b * v_my;
-        const Real t92 = t91 * t0;
-        const Real t93 = t56 * t84;
-        const Real t94 = t93 * t48;
-        const Real t95 = R_M * w_M;
-        const Real t96 = M * R_M;
-        const Real t97 = t96 * q_M;
-        const Real t98 = R_M * b;
-        const Real t99 = t98 * w_M;
-        const Real t100 = std::fma(R_M, w_M, -t95);
-        const Real t101 = std::fma(R_m, w_m, t95);
-        const Real t102 = m * R_m;
-        const Real t103 = t102 * q_m;
-        const Real t104 = std::sqrt(t7);
-        const Real t105 = std::sqrt(t11);
-        const Real t106 = t48 * t105;
-        const Real t107 = t83 * t105;
-        const Real t108 = R_m * b;
-        const Real t109 = t95 * t105;
-        const Real t110 = t95 * t104;
-        const Real t111 = t99 * t105;
-        const Real t112 = R_m * w_m;
-        const Real t113 = w_m * t104;
-        const Real t114 = std::fma(R_m, t113, t110);
-        const Real t115 = std::fma(v_Mx, t4, t114);
-        const Real t116 = std::fma(t31, t0, t115);
-        const Real t117 = std::fma(t18, t4, t116);
-        const Real t118 = std::fma(v_my, t0, t117);
-        const Real t119 = t108 * w_m;
-        const Real t120 = t101 * t104;
-        const Real t121 = std::fma(t12, t4, t120);
-        const Real t122 = std::fma(t32, t0, t121);
-        const Real t123 = std::fma(-t105, t105, t11) + (t10 - (t11 - t7));
-        const Real t124 = t105 + t105;
-        const Real t125 = t112 * t105;
-        const Real t126 = t119 * t105;
-        const Real t127 = std::fma(t48, t105, -t106);
-        const Real t128 = std::fma(t95, t105, -t109);
-        const Real t129 = t109 + t125;
-        const Real t130 = t129 - t109;
-        const Real t131 = t111 + t109;
-        const Real t132 = t131 - t111;
-        const Real t133 = std::fma(R_m, w_m, -t112);
-        const Real t134 = std::fabs(t118);
-        const Real t135 = t106 * t134;
-        const Real t136 = std::fabs(t122);
-        const Real t137 = t94 * t136;
-        const Real t138 = std::fma(t112, t105, -t125);
-        const Real t139 = std::fma(mu, t70, t137);
-        const Real t140 = t47 * mu;
-        const Real t141 = t140 * t52;
-        const Real t142 = detail::blend(t139 > Real(0), Real(1), t107);
-        const Real t143 = detail::blend(t139 > Real(0), t124, Real(1));
-        const Real t144 = detail::blend(t139 > Real(0), Real(1), t124);
-        const Real t145 = detail::blend(t139 > Real(0), t135, Real(1));
-        const std::int64_t usable = resolved & (std::fabs(t105) >= detail::smallest_divisor<Real>) & (std::fabs(t105) <= std::numeric_limits<Real>::max()) & (std::fabs(t124) >= detail::smallest_divisor<Real>) & (std::fabs(t124) <= std::numeric_limits<Real>::max()) & (std::fabs(t143) >= detail::smallest_divisor<Real>) & (std::fabs(t143) <= std::numeric_limits<Real>::max()) & (std::fabs(t144) >= detail::smallest_divisor<Real>) & (std::fabs(t144) <= std::numeric_limits<Real>::max()) & (std::fabs(t106) >= detail::smallest_divisor<Real>) & (std::fabs(t106) <= std::numeric_limits<Real>::max()) & (std::fabs(t145) >= detail::smallest_divisor<Real>) & (std::fabs(t145) <= std::numeric_limits<Real>::max()) & (std::fabs(t142) >= detail::smallest_divisor<Real>) & (std::fabs(t142) <= std::numeric_limits<Real>::max()) & (std::fabs(M) >= detail::smallest_divisor<Real>) & (std::fabs(M) <= std::numeric_limits<Real>::max()) & (std::fabs(m) >= detail::smallest_divisor<Real>) & (std::fabs(m) <= std::numeric_limits<Real>::max()) & (std::fabs(t97) >= detail::smallest_divisor<Real>) & (std::fabs(t97) <= std::numeric_limits<Real>::max()) & (std::fabs(t103) >= detail::smallest_divisor<Real>) & (std::fabs(t103) <= std::numeric_limits<Real>::max());
-        const Real t146 = t14 / detail::blend(usable, t105, Real(1));
-        const Real t147 = t15 / detail::blend(usable, t105, Real(1));
-        const Real t148 = t26 / detail::blend(usable, t105, Real(1));
-        const Real t149 = t27 / detail::blend(usable, t105, Real(1));
-        const Real t150 = t123 / detail::blend(usable, t124, Real(1));
-        const Real t151 = t123 / detail::blend(usable, t143, Real(1));
-        const Real t152 = t123 / detail::blend(usable, t144, Real(1));
-        const Real t153 = -t146;
-        const Real t154 = t146 + t148;
-        const Real t155 = t154 - t146;
-        const Real t156 = -t147;
-        const Real t157 = -t148;
-        const Real t158 = -t149;
-        const Real t159 = t109 - (t129 - t130) + (t125 - t130) + (std::fma(t100, t105, std::fma(t95, t151, t128)) + std::fma(t133, t105, std::fma(t112, t151, t138)));
-        const Real t160 = t129 + t159;
-        const Real t161 = t160 + t16;
-        const Real t162 = t111 - (t131 - t132) + (t109 - t132) + (std::fma(std::fma(std::fma(R_M, b, -t98), w_M, std::fma(t98, w_M, -t99)), t105, std::fma(t99, t152, std::fma(t99, t105, -t111))) + std::fma(t100, t105, std::fma(t95, t152, t128)));
-        const Real t163 = t131 + t162;
-        const Real t164 = t163 + t126;
-        const Real t165 = t161 - t160;
-        const Real t166 = t164 - t163;
-        const Real t167 = t146 - (t154 - t155) + (t148 - t155) + (std::fma(t153, t150, std::fma(t153, t105, t14) + t19) / detail::blend(usable, t105, Real(1)) + std::fma(t157, t150, std::fma(t157, t105, t26) + t35) / detail::blend(usable, t105, Real(1)));
-        const Real t168 = t154 + t167;
-        const Real t169 = t168 - t147;
-        const Real t170 = t160 - (t161 - t165) + (t16 - t165) + (t159 - (t160 - t129) + t21);
-        const Real t171 = t161 + t170;
-        const Real t172 = t171 - t24;
-        const Real t173 = t163 - (t164 - t166) + (t126 - t166) + (t162 - (t163 - t131) + std::fma(std::fma(std::fma(R_m, b, -t108), w_m, std::fma(t108, w_m, -t119)), t105, std::fma(t119, t152, std::fma(t119, t105, -t126))));
-        const Real t174 = t164 + t173;
-        const Real t175 = t174 + t125;
-        const Real t176 = t169 - t168;
-        const Real t177 = t172 - t171;
-        const Real t178 = t175 - t174;
-        const Real t179 = t168 - (t169 - t176) - (t147 + t176) + (t167 - (t168 - t154) - std::fma(t156, t150, std::fma(t156, t105, t15) + t20) / detail::blend(usable, t105, Real(1)));
-        const Real t180 = t169 + t179;
-        const Real t181 = t180 - t149;
-        const Real t182 = t171 - (t172 - t177) - (t24 + t177) + (t170 - (t171 - t161) - t33);
-        const Real t183 = t172 + t182;
-        const Real t184 = t183 - t17;
-        const Real t185 = t174 - (t175 - t178) + (t125 - t178) + (t173 - (t174 - t164) + std::fma(t133, t105, std::fma(t112, t152, t138)));
-        const Real t186 = t175 + t185;
-        const Real t187 = t186 + t86;
-        const Real t188 = t181 - t180;
-        const Real t189 = t184 - t183;
-        const Real t190 = t187 - t186;
-        const Real t191 = t180 - (t181 - t188) - (t149 + t188) + (t179 - (t180 - t169) - std::fma(t158, t150, std::fma(t158, t105, t27) + t36) / detail::blend(usable, t105, Real(1)));
-        const Real t192 = t181 + t191;
-        const Real t193 = t53 * t192;
-        const Real t194 = t193 / detail::blend(usable, t106, Real(1));
-        const Real t195 = t183 - (t184 - t189) - (t17 + t189) + (t182 - (t183 - t172) - t22);
-        const Real t196 = t184 + t195;
-        const Real t197 = t196 + t25;
-        const Real t198 = t186 - (t187 - t190) + (t86 - t190) + (t185 - (t186 - t175) + std::fma(std::fma(b, v_Mx, -t85), t4, std::fma(t85, t9, std::fma(t85, t4, -t86))));
-        const Real t199 = t187 + t198;
-        const Real t200 = t199 - t90;
-        const Real t201 = -t194;
-        const Real t202 = t197 - t196;
-        const Real t203 = t200 - t199;
-        const Real t204 = t196 - (t197 - t202) + (t25 - t202) + (t195 - (t196 - t184) + t34);
-        const Real t205 = t197 + t204;
-        const Real t206 = t141 * t205;
-        const Real t207 = t206 * t46;
-        const Real t208 = t207 / detail::blend(usable, t145, Real(1));
-        const Real t209 = t199 - (t200 - t203) - (t90 + t203) + (t198 - (t199 - t187) - std::fma(std::fma(b, v_My, -t89), t0, std::fma(t89, t3, std::fma(t89, t0, -t90))));
-        const Real t210 = t200 + t209;
-        const Real t211 = t210 - t88;
-        const Real t212 = t201 + -(std::fma(t201, std::fma(t51, t105, std::fma(t48, t150, t127)), std::fma(t201, t106, t193) + std::fma(std::fma(t50, t52, std::fma(t47, t55, std::fma(t47, t52, -t53))), t192, std::fma(t53, t191 - (t192 - t181), std::fma(t53, t192, -t193)))) / detail::blend(usable, t106, Real(1)));
-        const Real t213 = t212 * t0;
-        const Real t214 = t212 * t4;
-        const Real t215 = -t208;
+        const Real t16 = t12 * t4;
+        const Real t17 = v_Mx * t4;
+        const Real t18 = v_mx * t4;
+        const Real t19 = t12 - v_Mx;
+        const Real t20 = -t13;
+        const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+        const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+        const Real t23 = std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17));
+        const Real t24 = std::fma(v_mx, t9, std::fma(v_mx, t4, -t18));
+        const Real t25 = v_Mx - (t12 - t19) - (v_mx + t19);
+        const Real t26 = v_My - v_my;
+        const Real t27 = t26 * t0;
+        const Real t28 = v_My * t0;
+        const Real t29 = v_my * t0;
+        const Real t30 = t26 * t4;
+        const Real t31 = v_My * t4;
+        const Real t32 = v_my * t4;
+        const Real t33 = t13 + t30;
+        const Real t34 = t33 - t13;
+        const Real t35 = t14 + t31;
+        const Real t36 = t35 - t14;
+        const Real t37 = t26 - v_My;
+        const Real t38 = std::fma(v_My, t3, std::fma(v_My, t0, -t28));
+        const Real t39 = std::fma(v_my, t3, std::fma(v_my, t0, -t29));
+        const Real t40 = std::fma(v_My, t9, std::fma(v_My, t4, -t31));
+        const Real t41 = std::fma(v_my, t9, std::fma(v_my, t4, -t32));
+        const Real t42 = v_My - (t26 - t37) - (v_my + t37);
+        const Real t43 = t14 - (t35 - t36) + (t31 - t36) + (t21 + t40);
+        const Real t44 = t35 + t43;
+        const Real t45 = t44 - t15;
+        const Real t46 = t13 - (t33 - t34) + (t30 - t34) + (std::fma(t25, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t42, t4, std::fma(t26, t9, std::fma(t26, t4, -t30))));
+        const Real t47 = t33 + t46;
+        const Real t48 = t45 - t44;
+        const Real t49 = t44 - (t45 - t48) - (t15 + t48) + (t43 - (t44 - t35) - t22);
+        const Real t50 = t45 + t49;
+        const Real t51 = t50 - t32;
+        const Real t52 = t51 - t50;
+        const Real t53 = t50 - (t51 - t52) - (t32 + t52) + (t49 - (t50 - t45) - t41);
+        const Real t54 = t51 + t53;
+        const Real t55 = M * m;
+        const Real t56 = M + m;
+        const Real t57 = t56 - M;
+        const Real t58 = std::fma(M, m, -t55);
+        const Real t59 = M - (t56 - t57) + (m - t57);
+        const Real t60 = Real(1) + eps;
+        const Real t61 = t55 * t60;
+        const Real t62 = t60 - Real(1);
+        const Real t63 = Real(1) - (t60 - t62) + (eps - t62);
+        const Real t64 = q_M * q_m;
+        const Real t65 = M * q_M;
+        const Real t66 = m * q_m;
+        const Real t67 = m * q_M;
+        const Real t68 = t55 * q_M;
+        const Real t69 = Real(1) + q_m;
+        const Real t70 = Real(1) + q_M;
+        const Real t71 = t68 * q_m;
+        const Real t72 = t65 * q_m;
+        const Real t73 = t67 * q_m;
+        const Real t74 = std::fma(M, q_M, -t65);
+        const Real t75 = t65 * t69;
+        const Real t76 = t65 + t72;
+        const Real t77 = t76 - t65;
+        const Real t78 = std::fma(m, q_m, -t66);
+        const Real t79 = t66 * t70;
+        const Real t80 = t69 - Real(1);
+        const Real t81 = t70 - Real(1);
+        const Real t82 = t75 + t79;
+        const Real t83 = t82 - t75;
+        const Real t84 = t65 - (t76 - t77) + (t72 - t77) + (t74 + std::fma(t74, q_m, std::fma(t65, q_m, -t72)));
+        const Real t85 = t76 + t84;
+        const Real t86 = t85 + t73;
+        const Real t87 = t86 - t85;
+        const Real t88 = t75 - (t82 - t83) + (t79 - t83) + (std::fma(t74, t69, std::fma(t65, Real(1) - (t69 - t80) + (q_m - t80), std::fma(t65, t69, -t75))) + std::fma(t78, t70, std::fma(t66, Real(1) - (t70 - t81) + (q_M - t81), std::fma(t66, t70, -t79))));
+        const Real t89 = t82 + t88;
+        const Real t90 = t85 - (t86 - t87) + (t73 - t87) + (t84 - (t85 - t76) + std::fma(std::fma(m, q_M, -t67), q_m, std::fma(t67, q_m, -t73)));
+        const Real t91 = t86 + t90;
+        const Real t92 = t91 + t66;
+        const Real t93 = t92 - t91;
+        const Real t94 = t91 - (t92 - t93) + (t66 - t93) + (t90 - (t91 - t86) + t78);
+        const Real t95 = t92 + t94;
+        const Real t96 = Real(1) + b;
+        const Real t97 = b * v_Mx;
+        const Real t98 = t97 * t4;
+        const Real t99 = b * v_mx;
+        const Real t100 = t99 * t4;
+        const Real t101 = b * v_My;
+        const Real t102 = t101 * t0;
+        const Real t103 = b * v_my;
+        const Real t104 = t103 * t0;
+        const Real t105 = t64 * t96;
+        const Real t106 = t105 * t56;
+        const Real t107 = t96 - Real(1);
+        const Real t108 = R_M * w_M;
+        const Real t109 = M * R_M;
+        const Real t110 = t109 * q_M;
+        const Real t111 = R_M * b;
+        const Real t112 = t111 * w_M;
+        const Real t113 = std::fma(R_M, w_M, -t108);
+        const Real t114 = R_m * w_m;
+        const Real t115 = m * R_m;
+        const Real t116 = t115 * q_m;
+        const Real t117 = std::sqrt(t7);
+        const Real t118 = std::sqrt(t11);
+        const Real t119 = t56 * t118;
+        const Real t120 = t56 * t117;
+        const Real t121 = t95 * t118;
+        const Real t122 = R_m * b;
+        const Real t123 = t108 + t114;
+        const Real t124 = t123 - t108;
+        const Real t125 = t108 * t118;
+        const Real t126 = t108 * t117;
+        const Real t127 = t112 * t118;
+        const Real t128 = t122 * w_m;
+        const Real t129 = std::fma(R_m, w_m, -t114);
+        const Real t130 = t114 * t118;
+        const Real t131 = t114 * t117;
+        const Real t132 = std::fma(-t118, t118, t11) + (t10 - (t11 - t7));
+        const Real t133 = t118 + t118;
+        const Real t134 = t128 * t118;
+        const Real t135 = std::fma(t56, t118, -t119);
+        const Real t136 = std::fma(t108, t118, -t125);
+        const Real t137 = t125 + t130;
+        const Real t138 = t137 - t125;
+        const Real t139 = t127 + t125;
+        const Real t140 = t126 + t131 + t17 - t28 - t18 + t29;
+        const Real t141 = t139 - t127;
+        const Real t142 = t108 - (t123 - t124) + (t114 - t124) + (t113 + t129);
+        const Real t143 = t123 + t142;
+        const Real t144 = t143 * t118;
+        const Real t145 = t144 + t16;
+        const Real t146 = std::fma(t114, t118, -t130);
+        const Real t147 = std::fabs(t140);
+        const Real t148 = t120 * t147;
+        const Real t149 = t145 - t144;
+        const Real t150 = t144 - (t145 - t149) + (t16 - t149) + (std::fma(t142 - (t143 - t123), t118, std::fma(t143, t118, -t144)) + std::fma(t25, t4, std::fma(t12, t9, std::fma(t12, t4, -t16))));
+        const Real t151 = t145 + t150;
+        const Real t152 = t151 - t27;
+        const Real t153 = t152 - t151;
+        const Real t154 = t151 - (t152 - t153) - (t27 + t153) + (t150 - (t151 - t145) - std::fma(t42, t0, std::fma(t26, t3, std::fma(t26, t0, -t27))));
+        const Real t155 = t152 + t154;
+        const Real t156 = t154 - (t155 - t152);
+        const Real t157 = detail::blend(t155 > Real(0), t155, -t155);
+        const Real t158 = t106 * t157;
+        const Real t159 = mu * t60;
+        const Real t160 = t55 * mu;
+        const Real t161 = t160 * t60;
+        const Real t162 = t159 * t89;
+        const Real t163 = t162 * t47;
+        const Real t164 = t158 + t163;
+        const Real t165 = t164 - t158;
+        const Real t166 = t158 - (t164 - t165) + (t163 - t165) + (std::fma(std::fma(std::fma(std::fma(q_M, q_m, -t64), t96, std::fma(t64, Real(1) - (t96 - t107) + (b - t107), std::fma(t64, t96, -t105))), t56, std::fma(t105, t59, std::fma(t105, t56, -t106))), t157, std::fma(t106, detail::blend(t155 > Real(0), t156, -t156), std::fma(t106, t157, -t158))) + std::fma(std::fma(std::fma(mu, t63, std::fma(mu, t60, -t159)), t89, std::fma(t159, t88 - (t89 - t82), std::fma(t159, t89, -t162))), t47, std::fma(t162, t46 - (t47 - t33), std::fma(t162, t47, -t163))));
+        const Real t167 = t164 + t166;
+        const Real t168 = t167 + (t166 - (t167 - t164));
+        const Real t169 = detail::blend(t168 > Real(0), Real(1), t121);
+        const Real t170 = detail::blend(t168 > Real(0), t133, Real(1));
+        const Real t171 = detail::blend(t168 > Real(0), Real(1), t133);
+        const Real t172 = detail::blend(t168 > Real(0), t148, Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t118) >= detail::smallest_divisor<Real>) & (std::fabs(t118) <= std::numeric_limits<Real>::max()) & (std::fabs(t133) >= detail::smallest_divisor<Real>) & (std::fabs(t133) <= std::numeric_limits<Real>::max()) & (std::fabs(t170) >= detail::smallest_divisor<Real>) & (std::fabs(t170) <= std::numeric_limits<Real>::max()) & (std::fabs(t171) >= detail::smallest_divisor<Real>) & (std::fabs(t171) <= std::numeric_limits<Real>::max()) & (std::fabs(t119) >= detail::smallest_divisor<Real>) & (std::fabs(t119) <= std::numeric_limits<Real>::max()) & (std::fabs(t172) >= detail::smallest_divisor<Real>) & (std::fabs(t172) <= std::numeric_limits<Real>::max()) & (std::fabs(t169) >= detail::smallest_divisor<Real>) & (std::fabs(t169) <= std::numeric_limits<Real>::max()) & (std::fabs(t110) >= detail::smallest_divisor<Real>) & (std::fabs(t110) <= std::numeric_limits<Real>::max()) & (std::fabs(t116) >= detail::smallest_divisor<Real>) & (std::fabs(t116) <= std::numeric_limits<Real>::max()) & (std::fabs(M) >= detail::smallest_divisor<Real>) & (std::fabs(M) <= std::numeric_limits<Real>::max()) & (std::fabs(m) >= detail::smallest_divisor<Real>) & (std::fabs(m) <= std::numeric_limits<Real>::max());
+        const Real t173 = t14 / detail::blend(usable, t118, Real(1));
+        const Real t174 = t15 / detail::blend(usable, t118, Real(1));
+        const Real t175 = t31 / detail::blend(usable, t118, Real(1));
+        const Real t176 = t32 / detail::blend(usable, t118, Real(1));
+        const Real t177 = t132 / detail::blend(usable, t133, Real(1));
+        const Real t178 = t132 / detail::blend(usable, t170, Real(1));
+        const Real t179 = t132 / detail::blend(usable, t171, Real(1));
+        const Real t180 = -t173;
+        const Real t181 = t173 + t175;
+        const Real t182 = t181 - t173;
+        const Real t183 = -t174;
+        const Real t184 = -t175;
+        const Real t185 = -t176;
+        const Real t186 = t125 - (t137 - t138) + (t130 - t138) + (std::fma(t113, t118, std::fma(t108, t178, t136)) + std::fma(t129, t118, std::fma(t114, t178, t146)));
+        const Real t187 = t137 + t186;
+        const Real t188 = t187 + t17;
+        const Real t189 = t127 - (t139 - t141) + (t125 - t141) + (std::fma(std::fma(std::fma(R_M, b, -t111), w_M, std::fma(t111, w_M, -t112)), t118, std::fma(t112, t179, std::fma(t112, t118, -t127))) + std::fma(t113, t118, std::fma(t108, t179, t136)));
+        const Real t190 = t139 + t189;
+        const Real t191 = t190 + t134;
+        const Real t192 = t188 - t187;
+        const Real t193 = t191 - t190;
+        const Real t194 = t173 - (t181 - t182) + (t175 - t182) + (std::fma(t180, t177, std::fma(t180, t118, t14) + t21) / detail::blend(usable, t118, Real(1)) + std::fma(t184, t177, std::fma(t184, t118, t31) + t40) / detail::blend(usable, t118, Real(1)));
+        const Real t195 = t181 + t194;
+        const Real t196 = t195 - t174;
+        const Real t197 = t187 - (t188 - t192) + (t17 - t192) + (t186 - (t187 - t137) + t23);
+        const Real t198 = t188 + t197;
+        const Real t199 = t198 - t28;
+        const Real t200 = t190 - (t191 - t193) + (t134 - t193) + (t189 - (t190 - t139) + std::fma(std::fma(std::fma(R_m, b, -t122), w_m, std::fma(t122, w_m, -t128)), t118, std::fma(t128, t179, std::fma(t128, t118, -t134))));
+        const Real t201 = t191 + t200;
+        const Real t202 = t201 + t130;
+        const Real t203 = t196 - t195;
+        const Real t204 = t199 - t198;
+        const Real t205 = t202 - t201;
+        const Real t206 = t195 - (t196 - t203) - (t174 + t203) + (t194 - (t195 - t181) - std::fma(t183, t177, std::fma(t183, t118, t15) + t22) / detail::blend(usable, t118, Real(1)));
+        const Real t207 = t196 + t206;
+        const Real t208 = t207 - t176;
+        const Real t209 = t198 - (t199 - t204) - (t28 + t204) + (t197 - (t198 - t188) - t38);
+        const Real t210 = t199 + t209;
+        const Real t211 = t210 - t18;
+        const Real t212 = t201 - (t202 - t205) + (t130 - t205) + (t200 - (t201 - t191) + std::fma(t129, t118, std::fma(t114, t179, t146)));
+        const Real t213 = t202 + t212;
+        const Real t214 = t213 + t98;
+        const Real t215 = t208 - t207;
         const Real t216 = t211 - t210;
-        const Real t217 = t210 - (t211 - t216) - (t88 + t216) + (t209 - (t210 - t200) - std::fma(std::fma(b, v_mx, -t87), t4, std::fma(t87, t9, std::fma(t87, t4, -t88))));
-        const Real t218 = t211 + t217;
-        const Real t219 = t218 + t92;
-        const Real t220 = t219 - t218;
-        const Real t221 = t218 - (t219 - t220) + (t92 - t220) + (t217 - (t218 - t211) + std::fma(std::fma(b, v_my, -t91), t0, std::fma(t91, t3, std::fma(t91, t0, -t92))));
-        const Real t222 = t219 + t221;
-        const Real t223 = t222 + t16;
-        const Real t224 = t223 - t222;
-        const Real t225 = t222 - (t223 - t224) + (t16 - t224) + (t221 - (t222 - t219) + t21);
-        const Real t226 = t223 + t225;
-        const Real t227 = t226 - t24;
-        const Real t228 = t227 - t226;
-        const Real t229 = t226 - (t227 - t228) - (t24 + t228) + (t225 - (t226 - t223) - t33);
-        const Real t230 = t227 + t229;
-        const Real t231 = t230 - t17;
-        const Real t232 = t231 - t230;
-        const Real t233 = t230 - (t231 - t232) - (t17 + t232) + (t229 - (t230 - t227) - t22);
-        const Real t234 = t231 + t233;
-        const Real t235 = t234 + t25;
-        const Real t236 = t235 - t234;
-        const Real t237 = t234 - (t235 - t236) + (t25 - t236) + (t233 - (t234 - t231) + t34);
-        const Real t238 = t235 + t237;
-        const Real t239 = t64 * t238;
-        const Real t240 = t239 / detail::blend(usable, t142, Real(1));
-        const Real t241 = detail::blend(t139 > Real(0), t215, t240);
-        const Real t242 = t241 / detail::blend(usable, t105, Real(1));
-        const Real t243 = -t240;
-        const Real t244 = -t242;
-        const Real t245 = t242 + std::fma(t244, t150, std::fma(t244, t105, t241) + detail::blend(t139 > Real(0), -(std::fma(t215, std::fma(std::fma(t51, t105, std::fma(t48, t151, t127)), t134, std::fma(t106, t134, -t135)), std::fma(t215, t135, t207) + std::fma(std::fma(std::fma(std::fma(t50, mu, std::fma(t47, mu, -t140)), t52, std::fma(t140, t55, std::fma(t140, t52, -t141))), t205, std::fma(t141, t204 - (t205 - t197), std::fma(t141, t205, -t206))), t46, std::fma(t206, t45 - (t46 - t43), std::fma(t206, t46, -t207)))) / detail::blend(usable, t145, Real(1))), std::fma(t243, std::fma(t82 - (t83 - t80), t105, std::fma(t83, t152, std::fma(t83, t105, -t107))), std::fma(t243, t107, t239) + std::fma(std::fma(std::fma(t50, q_M, std::fma(t47, q_M, -t60)), q_m, std::fma(t60, q_m, -t64)), t238, std::fma(t64, t237 - (t238 - t235), std::fma(t64, t238, -t239)))) / detail::blend(usable, t142, Real(1)))) / detail::blend(usable, t105, Real(1));
-        const Real t246 = std::fma(t245, t0, t214);
-        const Real t247 = t246 / detail::blend(usable, M, Real(1));
-        const Real t248 = t246 / detail::blend(usable, m, Real(1));
-        const Real t249 = t245 * t104;
-        const Real t250 = t249 / detail::blend(usable, t97, Real(1));
-        const Real t251 = t249 / detail::blend(usable, t103, Real(1));
-        const Real t252 = -t245;
-        const Real t253 = std::fma(t252, t4, t213);
-        const Real t254 = t253 / detail::blend(usable, M, Real(1));
-        const Real t255 = t253 / detail::blend(usable, m, Real(1));
-        const Real v_Mx_out = v_Mx + t254;
-        const Real v_My_out = v_My + t247;
-        const Real v_mx_out = v_mx - t255;
-        const Real v_my_out = v_my - t248;
-        const Real w_M_out = w_M - t250;
-        const Real w_m_out = w_m - t251;
-        const Real finite0 = detail::zero_if_finite(t118, t122);
-        const Real finite1 = detail::zero_if_finite(v_Mx_out, v_My_out);
-        const Real finite2 = detail::zero_if_finite(v_mx_out, v_my_out);
-        const Real finite3 = detail::zero_if_finite(w_M_out, w_m_out);
+        const Real t217 = t214 - t213;
+        const Real t218 = t207 - (t208 - t215) - (t176 + t215) + (t206 - (t207 - t196) - std::fma(t185, t177, std::fma(t185, t118, t32) + t41) / detail::blend(usable, t118, Real(1)));
+        const Real t219 = t208 + t218;
+        const Real t220 = t61 * t219;
+        const Real t221 = t220 / detail::blend(usable, t119, Real(1));
+        const Real t222 = t210 - (t211 - t216) - (t18 + t216) + (t209 - (t210 - t199) - t24);
+        const Real t223 = t211 + t222;
+        const Real t224 = t223 + t29;
+        const Real t225 = t213 - (t214 - t217) + (t98 - t217) + (t212 - (t213 - t202) + std::fma(std::fma(b, v_Mx, -t97), t4, std::fma(t97, t9, std::fma(t97, t4, -t98))));
+        const Real t226 = t214 + t225;
+        const Real t227 = t226 - t102;
+        const Real t228 = -t221;
+        const Real t229 = t224 - t223;
+        const Real t230 = t227 - t226;
+        const Real t231 = t223 - (t224 - t229) + (t29 - t229) + (t222 - (t223 - t211) + t39);
+        const Real t232 = t224 + t231;
+        const Real t233 = t161 * t232;
+        const Real t234 = t233 * t54;
+        const Real t235 = t234 / detail::blend(usable, t172, Real(1));
+        const Real t236 = t226 - (t227 - t230) - (t102 + t230) + (t225 - (t226 - t214) - std::fma(std::fma(b, v_My, -t101), t0, std::fma(t101, t3, std::fma(t101, t0, -t102))));
+        const Real t237 = t227 + t236;
+        const Real t238 = t237 - t100;
+        const Real t239 = t228 + -(std::fma(t228, std::fma(t59, t118, std::fma(t56, t177, t135)), std::fma(t228, t119, t220) + std::fma(std::fma(t58, t60, std::fma(t55, t63, std::fma(t55, t60, -t61))), t219, std::fma(t61, t218 - (t219 - t208), std::fma(t61, t219, -t220)))) / detail::blend(usable, t119, Real(1)));
+        const Real t240 = t239 * t0;
+        const Real t241 = t239 * t4;
+        const Real t242 = t231 - (t232 - t224);
+        const Real t243 = detail::blend(t232 > Real(0), t232, -t232);
+        const Real t244 = t119 * t243;
+        const Real t245 = -t235;
+        const Real t246 = t238 - t237;
+        const Real t247 = t237 - (t238 - t246) - (t100 + t246) + (t236 - (t237 - t227) - std::fma(std::fma(b, v_mx, -t99), t4, std::fma(t99, t9, std::fma(t99, t4, -t100))));
+        const Real t248 = t238 + t247;
+        const Real t249 = t248 + t104;
+        const Real t250 = t249 - t248;
+        const Real t251 = t248 - (t249 - t250) + (t104 - t250) + (t247 - (t248 - t238) + std::fma(std::fma(b, v_my, -t103), t0, std::fma(t103, t3, std::fma(t103, t0, -t104))));
+        const Real t252 = t249 + t251;
+        const Real t253 = t252 + t17;
+        const Real t254 = t253 - t252;
+        const Real t255 = t252 - (t253 - t254) + (t17 - t254) + (t251 - (t252 - t249) + t23);
+        const Real t256 = t253 + t255;
+        const Real t257 = t256 - t28;
+        const Real t258 = t257 - t256;
+        const Real t259 = t256 - (t257 - t258) - (t28 + t258) + (t255 - (t256 - t253) - t38);
+        const Real t260 = t257 + t259;
+        const Real t261 = t260 - t18;
+        const Real t262 = t261 - t260;
+        const Real t263 = t260 - (t261 - t262) - (t18 + t262) + (t259 - (t260 - t257) - t24);
+        const Real t264 = t261 + t263;
+        const Real t265 = t264 + t29;
+        const Real t266 = t265 - t264;
+        const Real t267 = t264 - (t265 - t266) + (t29 - t266) + (t263 - (t264 - t261) + t39);
+        const Real t268 = t265 + t267;
+        const Real t269 = t71 * t268;
+        const Real t270 = t269 / detail::blend(usable, t169, Real(1));
+        const Real t271 = detail::blend(t168 > Real(0), t245, t270);
+        const Real t272 = t271 / detail::blend(usable, t118, Real(1));
+        const Real t273 = -t270;
+        const Real t274 = -t272;
+        const Real t275 = t272 + std::fma(t274, t177, std::fma(t274, t118, t271) + detail::blend(t168 > Real(0), -(std::fma(t245, std::fma(std::fma(t59, t118, std::fma(t56, t178, t135)), t243, std::fma(t119, detail::blend(t232 > Real(0), t242, -t242), std::fma(t119, t243, -t244))), std::fma(t245, t244, t234) + std::fma(std::fma(std::fma(std::fma(t58, mu, std::fma(t55, mu, -t160)), t60, std::fma(t160, t63, std::fma(t160, t60, -t161))), t232, std::fma(t161, t242, std::fma(t161, t232, -t233))), t54, std::fma(t233, t53 - (t54 - t51), std::fma(t233, t54, -t234)))) / detail::blend(usable, t172, Real(1))), std::fma(t273, std::fma(t94 - (t95 - t92), t118, std::fma(t95, t179, std::fma(t95, t118, -t121))), std::fma(t273, t121, t269) + std::fma(std::fma(std::fma(t58, q_M, std::fma(t55, q_M, -t68)), q_m, std::fma(t68, q_m, -t71)), t268, std::fma(t71, t267 - (t268 - t265), std::fma(t71, t268, -t269)))) / detail::blend(usable, t169, Real(1)))) / detail::blend(usable, t118, Real(1));
+        const Real t276 = t275 * t0;
+        const Real t277 = t275 * t4;
+        const Real t278 = t275 * t117;
+        const Real t279 = t278 / detail::blend(usable, t110, Real(1));
+        const Real t280 = t278 / detail::blend(usable, t116, Real(1));
+        const Real t281 = t240 - t277;
+        const Real t282 = t281 / detail::blend(usable, M, Real(1));
+        const Real t283 = t281 / detail::blend(usable, m, Real(1));
+        const Real t284 = t241 + t276;
+        const Real t285 = t284 / detail::blend(usable, M, Real(1));
+        const Real t286 = t284 / detail::blend(usable, m, Real(1));
+        const Real v_Mx_out = v_Mx + t282;
+        const Real v_My_out = v_My + t285;
+        const Real v_mx_out = v_mx - t283;
+        const Real v_my_out = v_my - t286;
+        const Real w_M_out = w_M - t279;
+        const Real w_m_out = w_m - t280;
+        const Real finite0 = detail::zero_if_finite(t140, v_Mx_out);
+        const Real finite1 = detail::zero_if_finite(v_My_out, v_mx_out);
+        const Real finite2 = detail::zero_if_finite(v_my_out, w_M_out);
+        const Real finite3 = detail::zero_if_finite(w_m_out);
         const Real finite4 = finite0 + finite1;
         const Real finite5 = finite2 + finite3;
         const Real finite6 = finite4 + finite5;
@@ -4933,7 +4921,7 @@ IMPACT_ALWAYS_INLINE void collide_rough_batch_2d_fast(std::size_t count, const R
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(R_M, lowest), detail::magnitude_or(R_m, lowest))), detail::least(detail::least(detail::magnitude_or(q_M, lowest), detail::magnitude_or(q_m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::least(detail::magnitude_or(w_M, lowest), detail::magnitude_or(w_m, lowest))))), detail::least(detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or(b, lowest)), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(R_M), std::fabs(R_m))), detail::most(detail::most(std::fabs(q_M), std::fabs(q_m)), detail::most(std::fabs(C_Mx), std::fabs(C_My)))), detail::most(detail::most(detail::most(std::fabs(C_mx), std::fabs(C_my)), detail::most(std::fabs(v_Mx), std::fabs(v_My))), detail::most(detail::most(std::fabs(v_mx), std::fabs(v_my)), detail::most(std::fabs(w_M), std::fabs(w_m))))), detail::most(detail::most(std::fabs(eps), std::fabs(b)), std::fabs(mu))), highest));
         }
         if constexpr (collide_rough_batch_2d_fast_k<Real> < 0)
-            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t24), detail::zero_as_min(v_My)), detail::zero_as_min(t0))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_My)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(v_my)), detail::zero_as_min(t4)), std::fabs(t28))), detail::least(detail::least(detail::most(detail::most(std::fabs(t47), detail::zero_as_min(M)), detail::zero_as_min(m)), detail::most(std::fabs(t53), detail::zero_as_min(t52))), detail::least(detail::most(detail::most(std::fabs(t56), detail::zero_as_min(q_M)), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t57), detail::zero_as_min(M)), detail::zero_as_min(q_M)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t58), detail::zero_as_min(m)), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t59), detail::zero_as_min(m)), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t60), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t63), detail::zero_as_min(q_m)), detail::zero_as_min(t62)))), detail::least(detail::least(detail::most(std::fabs(t64), detail::zero_as_min(q_m)), detail::most(std::fabs(t65), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t66), detail::zero_as_min(q_m)), detail::most(std::fabs(t67), detail::zero_as_min(t61))))), detail::least(detail::least(detail::least(std::fabs(t68), detail::most(std::fabs(t69), detail::zero_as_min(t52))), detail::least(std::fabs(t70), detail::most(detail::most(std::fabs(t85), detail::zero_as_min(b)), detail::zero_as_min(v_Mx)))), detail::least(detail::least(detail::most(std::fabs(t86), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t87), detail::zero_as_min(b)), detail::zero_as_min(v_mx))), detail::least(detail::most(std::fabs(t88), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t89), detail::zero_as_min(b)), detail::zero_as_min(v_My))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t90), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t91), detail::zero_as_min(b)), detail::zero_as_min(v_my))), detail::least(detail::most(std::fabs(t92), detail::zero_as_min(t0)), detail::most(std::fabs(t93), detail::zero_as_min(t84)))), detail::least(detail::least(detail::most(std::fabs(t94), detail::zero_as_min(t48)), detail::most(detail::most(std::fabs(t95), detail::zero_as_min(R_M)), detail::zero_as_min(w_M))), detail::least(detail::most(detail::most(std::fabs(t96), detail::zero_as_min(M)), detail::zero_as_min(R_M)), detail::most(std::fabs(t97), detail::zero_as_min(q_M))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t98), detail::zero_as_min(R_M)), detail::zero_as_min(b)), detail::most(std::fabs(t99), detail::zero_as_min(w_M))), detail::least(std::fabs(t101), detail::most(detail::most(std::fabs(t102), detail::zero_as_min(m)), detail::zero_as_min(R_m)))), detail::least(detail::least(detail::most(std::fabs(t103), detail::zero_as_min(q_m)), detail::most(std::fabs(t106), detail::zero_as_min(t48))), detail::least(detail::most(std::fabs(t107), detail::zero_as_min(t83)), detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_m)), detail::zero_as_min(b)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t109), std::fabs(t110)), detail::least(std::fabs(t111), detail::most(detail::most(std::fabs(t112), detail::zero_as_min(R_m)), detail::zero_as_min(w_m)))), detail::least(detail::least(detail::most(std::fabs(t113), detail::zero_as_min(w_m)), std::fabs(t114)), detail::least(std::fabs(t115), std::fabs(t116)))), detail::least(detail::least(detail::least(std::fabs(t117), std::fabs(t118)), detail::least(detail::most(std::fabs(t119), detail::zero_as_min(w_m)), std::fabs(t120))), detail::least(detail::least(std::fabs(t121), std::fabs(t122)), detail::least(std::fabs(t125), std::fabs(t126))))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t134), std::fabs(t135)), detail::least(std::fabs(t136), std::fabs(t137))), detail::least(detail::least(std::fabs(t139), detail::most(std::fabs(t140), detail::zero_as_min(mu))), detail::least(detail::most(std::fabs(t141), detail::zero_as_min(t52)), std::fabs(t146)))), detail::least(detail::least(detail::least(std::fabs(t147), std::fabs(t148)), detail::least(std::fabs(t149), detail::most(std::fabs(t193), detail::zero_as_min(t192)))), detail::least(detail::least(std::fabs(t194), detail::most(std::fabs(t206), detail::zero_as_min(t205))), detail::least(detail::most(std::fabs(t207), detail::zero_as_min(t46)), std::fabs(t208))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t213), detail::zero_as_min(t212)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t214), detail::zero_as_min(t212)), detail::zero_as_min(t4))), detail::least(detail::most(std::fabs(t239), detail::zero_as_min(t238)), std::fabs(t240))), detail::least(detail::least(detail::most(std::fabs(t242), detail::zero_as_min(t241)), std::fabs(t246)), detail::least(std::fabs(t247), std::fabs(t248)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t249), detail::zero_as_min(t245)), std::fabs(t250)), detail::least(std::fabs(t251), std::fabs(t253))), detail::least(std::fabs(t254), std::fabs(t255)))))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t2), detail::zero_as_min(t0)), detail::most(std::fabs(t6), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t12)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(v_Mx)), detail::zero_as_min(t0)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(v_mx)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t12)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(v_Mx)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(v_mx)), detail::zero_as_min(t4))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t27), detail::zero_as_min(t26)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t28), detail::zero_as_min(v_My)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t29), detail::zero_as_min(v_my)), detail::zero_as_min(t0)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(t26)), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t31), detail::zero_as_min(v_My)), detail::zero_as_min(t4)), detail::most(detail::most(std::fabs(t32), detail::zero_as_min(v_my)), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t55), detail::zero_as_min(M)), detail::zero_as_min(m)), detail::most(std::fabs(t61), detail::zero_as_min(t60)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t64), detail::zero_as_min(q_M)), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t65), detail::zero_as_min(M)), detail::zero_as_min(q_M))), detail::least(detail::most(detail::most(std::fabs(t66), detail::zero_as_min(m)), detail::zero_as_min(q_m)), detail::most(detail::most(std::fabs(t67), detail::zero_as_min(m)), detail::zero_as_min(q_M)))), detail::least(detail::least(detail::most(std::fabs(t68), detail::zero_as_min(q_M)), detail::most(std::fabs(t71), detail::zero_as_min(q_m))), detail::least(detail::most(std::fabs(t72), detail::zero_as_min(q_m)), detail::most(std::fabs(t73), detail::zero_as_min(q_m))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t75), detail::zero_as_min(t69)), detail::most(std::fabs(t79), detail::zero_as_min(t70))), detail::least(detail::most(detail::most(std::fabs(t97), detail::zero_as_min(b)), detail::zero_as_min(v_Mx)), detail::most(std::fabs(t98), detail::zero_as_min(t4)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t99), detail::zero_as_min(b)), detail::zero_as_min(v_mx)), detail::most(std::fabs(t100), detail::zero_as_min(t4))), detail::least(detail::most(detail::most(std::fabs(t101), detail::zero_as_min(b)), detail::zero_as_min(v_My)), detail::most(std::fabs(t102), detail::zero_as_min(t0))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t103), detail::zero_as_min(b)), detail::zero_as_min(v_my)), detail::most(std::fabs(t104), detail::zero_as_min(t0))), detail::least(detail::most(std::fabs(t105), detail::zero_as_min(t96)), detail::most(std::fabs(t106), detail::zero_as_min(t56)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t108), detail::zero_as_min(R_M)), detail::zero_as_min(w_M)), detail::most(detail::most(std::fabs(t109), detail::zero_as_min(M)), detail::zero_as_min(R_M))), detail::least(detail::most(std::fabs(t110), detail::zero_as_min(q_M)), detail::most(detail::most(std::fabs(t111), detail::zero_as_min(R_M)), detail::zero_as_min(b))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t112), detail::zero_as_min(w_M)), detail::most(detail::most(std::fabs(t114), detail::zero_as_min(R_m)), detail::zero_as_min(w_m))), detail::least(detail::most(detail::most(std::fabs(t115), detail::zero_as_min(m)), detail::zero_as_min(R_m)), detail::most(std::fabs(t116), detail::zero_as_min(q_m)))), detail::least(detail::least(detail::most(std::fabs(t119), detail::zero_as_min(t56)), detail::most(std::fabs(t120), detail::zero_as_min(t56))), detail::least(detail::most(std::fabs(t121), detail::zero_as_min(t95)), detail::most(detail::most(std::fabs(t122), detail::zero_as_min(R_m)), detail::zero_as_min(b)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t125), std::fabs(t126)), detail::least(std::fabs(t127), detail::most(std::fabs(t128), detail::zero_as_min(w_m)))), detail::least(detail::least(std::fabs(t130), std::fabs(t131)), detail::least(std::fabs(t134), detail::most(std::fabs(t144), detail::zero_as_min(t143))))), detail::least(detail::least(detail::least(std::fabs(t147), std::fabs(t148)), detail::least(detail::most(std::fabs(t158), detail::zero_as_min(t157)), detail::most(detail::most(std::fabs(t159), detail::zero_as_min(mu)), detail::zero_as_min(t60)))), detail::least(detail::least(detail::most(std::fabs(t160), detail::zero_as_min(mu)), detail::most(std::fabs(t161), detail::zero_as_min(t60))), detail::least(detail::most(std::fabs(t162), detail::zero_as_min(t89)), detail::most(std::fabs(t163), detail::zero_as_min(t47)))))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t173), std::fabs(t174)), detail::least(std::fabs(t175), std::fabs(t176))), detail::least(detail::least(detail::most(std::fabs(t220), detail::zero_as_min(t219)), std::fabs(t221)), detail::least(detail::most(std::fabs(t233), detail::zero_as_min(t232)), detail::most(std::fabs(t234), detail::zero_as_min(t54))))), detail::least(detail::least(detail::least(std::fabs(t235), detail::most(detail::most(std::fabs(t240), detail::zero_as_min(t239)), detail::zero_as_min(t0))), detail::least(detail::most(detail::most(std::fabs(t241), detail::zero_as_min(t239)), detail::zero_as_min(t4)), detail::most(std::fabs(t244), detail::zero_as_min(t243)))), detail::least(detail::least(detail::most(std::fabs(t269), detail::zero_as_min(t268)), std::fabs(t270)), detail::least(detail::most(std::fabs(t272), detail::zero_as_min(t271)), detail::most(detail::most(std::fabs(t276), detail::zero_as_min(t275)), detail::zero_as_min(t0)))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t277), detail::zero_as_min(t275)), detail::zero_as_min(t4)), detail::most(std::fabs(t278), detail::zero_as_min(t275))), detail::least(std::fabs(t279), std::fabs(t280))), detail::least(detail::least(detail::most(std::fabs(t282), detail::zero_as_min(t281)), detail::most(std::fabs(t283), detail::zero_as_min(t281))), detail::least(detail::most(std::fabs(t285), detail::zero_as_min(t284)), detail::most(std::fabs(t286), detail::zero_as_min(t284))))))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_Mx_[i] = detail::blend(written, v_Mx_out, v_Mx_[i]);
         v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);

@@ -23,9 +23,9 @@ namespace impact {
 ///   v: v_y: the sphere's velocity along \f$y\f$ before the collision (real, in m s^-1)
 ///   v: v_z: the sphere's velocity along \f$z\f$ before the collision (real, in m s^-1)
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
-/// v[0] is computed in the form "v_x - k_wall*N_x, compensated let": at most 1.84 ulps in double on 4200 samples.
-/// v[1] is computed in the form "v_y - k_wall*N_y, compensated let": at most 2.21 ulps in double on 4200 samples.
-/// v[2] is computed in the form "v_z - k_wall*N_z, compensated let": at most 1.99 ulps in double on 4200 samples.
+/// v[0] is computed in the form "v_x - k_wall*N_x, compensated let": at most 2.27 ulps in double on 4200 samples.
+/// v[1] is computed in the form "v_y - k_wall*N_y, compensated let": at most 1.88 ulps in double on 4200 samples.
+/// v[2] is computed in the form "v_z - k_wall*N_z, compensated let": at most 2.00 ulps in double on 4200 samples.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged:
 ///   invalid_restitution: eps outside [0, 1]
@@ -321,9 +321,9 @@ inline void collide_wall_batch(const collide_wall_batch_data<Real, 3>& data) noe
 /// same guards and statuses, each output in its cheapest candidate form within its fast
 /// bound (verification.md): 32 operations with the guards' conditions, of them 1
 /// division(s) and 0 square root(s) (the accurate form: 99, 2 and 0).
-/// v[0] is computed in the form "v_x - k_wall*N_x, fma": at most 7.05 ulps in double on 4200 samples.
-/// v[1] is computed in the form "v_y - k_wall*N_y, fma": at most 4.30 ulps in double on 4200 samples.
-/// v[2] is computed in the form "v_z - k_wall*N_z, fma": at most 4.72 ulps in double on 4200 samples.
+/// v[0] is computed in the form "v_x - k_wall*N_x, fma": at most 5.88 ulps in double on 4200 samples.
+/// v[1] is computed in the form "v_y - k_wall*N_y, fma": at most 4.98 ulps in double on 4200 samples.
+/// v[2] is computed in the form "v_z - k_wall*N_z, fma": at most 5.49 ulps in double on 4200 samples.
 template <class Real>
 inline collide_wall_result<Real, 3> collide_wall(const std::array<Real, 3>& P, const std::array<Real, 3>& n, const std::array<Real, 3>& C, const std::array<Real, 3>& v, Real eps, fast_t) noexcept
 {

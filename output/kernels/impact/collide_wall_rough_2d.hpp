@@ -24,9 +24,9 @@ namespace impact {
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 ///   b: tangential restitution: \f$-1\f$ for a smooth contact, \f$1\f$ for a perfectly rough one ([-1, 1], a pure number)
 ///   mu: Coulomb's coefficient of friction (\f$+\infty\f$: the contact never slides) ([0, +inf], a pure number)
-/// v[0] is computed in the form "v_x + K_n*N_x - K_t*N_y, fma, compensated let": at most 2.80 ulps in double on 4200 samples.
-/// v[1] is computed in the form "v_y + K_n*N_y + K_t*N_x, fma, compensated let": at most 2.00 ulps in double on 4200 samples.
-/// w is computed in the form "w - K_t*n_norm/(q*R), fma, compensated let": at most 3.72 ulps in double on 4200 samples.
+/// v[0] is computed in the form "v_x + K_n*N_x - K_t*N_y, fma, compensated let": at most 2.82 ulps in double on 4200 samples.
+/// v[1] is computed in the form "v_y + K_n*N_y + K_t*N_x, fma, compensated let": at most 2.25 ulps in double on 4200 samples.
+/// w is computed in the form "w + dw, compensated let": at most 2.10 ulps in double on 4200 samples.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged:
 ///   invalid_radius: R not positive and finite
@@ -97,8 +97,7 @@ inline collide_wall_rough_result<Real, 2> collide_wall_rough(Real R, Real q, con
     const Real t11 = std::fma(N_y, v_x, -t10);
     const Real t12 = N_y * v_y;
     const Real t13 = N_x * v_y;
-    const Real t14 = std::fma(N_y, v_y, t9);
-    const Real t15 = t9 + t12;
+    const Real t14 = t9 + t12;
     if (!(t3 > Real(0))) {
         out.status = status::invalid_normal;
         return out;
@@ -107,113 +106,141 @@ inline collide_wall_rough_result<Real, 2> collide_wall_rough(Real R, Real q, con
         out.status = status::behind_the_wall;
         return out;
     }
-    if (!(t15 < Real(0))) {
+    if (!(t14 < Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t16 = t15 - t9;
-    const Real t17 = std::fma(N_x, v_y, -t13);
-    const Real t18 = t9 - (t15 - t16) + (t12 - t16) + (std::fma(N_x, v_x, -t9) + std::fma(N_y, v_y, -t12));
-    const Real t19 = t15 + t18;
-    const Real t20 = t18 - (t19 - t15);
-    const Real t21 = Real(1) + eps;
-    const Real t22 = t21 * t19;
-    const Real t23 = t21 - Real(1);
-    const Real t24 = Real(1) - (t21 - t23) + (eps - t23);
-    const Real t25 = Real(1) + b;
-    const Real t26 = b * N_x;
-    const Real t27 = b * N_y;
-    const Real t28 = t27 * v_x;
-    const Real t29 = t26 * v_y;
-    const Real t30 = q * t25;
+    const Real t15 = t14 - t9;
+    const Real t16 = std::fma(N_x, v_y, -t13);
+    const Real t17 = t9 - (t14 - t15) + (t12 - t15) + (std::fma(N_x, v_x, -t9) + std::fma(N_y, v_y, -t12));
+    const Real t18 = t14 + t17;
+    const Real t19 = t17 - (t18 - t14);
+    const Real t20 = Real(1) + eps;
+    const Real t21 = t20 * t18;
+    const Real t22 = t20 - Real(1);
+    const Real t23 = Real(1) - (t20 - t22) + (eps - t22);
+    const Real t24 = Real(1) + b;
+    const Real t25 = b * N_x;
+    const Real t26 = b * N_y;
+    const Real t27 = t26 * v_x;
+    const Real t28 = t25 * v_y;
+    const Real t29 = t24 - Real(1);
+    const Real t30 = q * t24;
     const Real t31 = Real(1) + q;
-    const Real t32 = t31 * t21;
-    const Real t33 = t32 * t14;
-    const Real t34 = t31 - Real(1);
-    const Real t35 = R * w;
-    const Real t36 = R * b;
-    const Real t37 = R * q;
-    const Real t38 = std::sqrt(t3);
-    const Real t39 = std::sqrt(t7);
-    const Real t40 = t31 * t39;
-    const Real t41 = t36 * w;
-    const Real t42 = t35 * t38;
-    const Real t43 = std::fma(t1, v_y, t42);
-    const Real t44 = std::fma(N_y, v_x, t43);
-    const Real t45 = std::fma(R, w, -t35);
-    const Real t46 = t35 * t39;
-    const Real t47 = t46 - t13;
-    const Real t48 = std::fma(-t39, t39, t7) + t8;
-    const Real t49 = t39 + t39;
-    const Real t50 = t41 * t39;
-    const Real t51 = std::fabs(t44);
-    const Real t52 = t30 * t51;
-    const Real t53 = std::fabs(t44);
-    const Real t54 = t39 * t53;
-    const Real t55 = std::fma(t35, t39, -t46);
-    const Real t56 = t47 - t46;
-    const Real t57 = t50 + t46;
-    const Real t58 = t57 - t50;
-    const Real t59 = std::fma(mu, t33, t52);
-    const Real t60 = mu * t21;
-    const Real t61 = (t59 > Real(0) ? Real(1) : t40);
-    const Real t62 = (t59 > Real(0) ? t49 : Real(1));
-    const Real t63 = (t59 > Real(0) ? Real(1) : t49);
-    const Real t64 = (t59 > Real(0) ? t54 : Real(1));
-    if (!(std::fabs(t7) >= detail::smallest_divisor<Real>) || !(std::fabs(t7) <= std::numeric_limits<Real>::max()) || !(std::fabs(t62) >= detail::smallest_divisor<Real>) || !(std::fabs(t62) <= std::numeric_limits<Real>::max()) || !(std::fabs(t63) >= detail::smallest_divisor<Real>) || !(std::fabs(t63) <= std::numeric_limits<Real>::max()) || !(std::fabs(t49) >= detail::smallest_divisor<Real>) || !(std::fabs(t49) <= std::numeric_limits<Real>::max()) || !(std::fabs(t64) >= detail::smallest_divisor<Real>) || !(std::fabs(t64) <= std::numeric_limits<Real>::max()) || !(std::fabs(t61) >= detail::smallest_divisor<Real>) || !(std::fabs(t61) <= std::numeric_limits<Real>::max()) || !(std::fabs(t39) >= detail::smallest_divisor<Real>) || !(std::fabs(t39) <= std::numeric_limits<Real>::max()) || !(std::fabs(t37) >= detail::smallest_divisor<Real>) || !(std::fabs(t37) <= std::numeric_limits<Real>::max())) {
+    const Real t32 = t31 - Real(1);
+    const Real t33 = Real(1) - (t31 - t32) + (q - t32);
+    const Real t34 = R * w;
+    const Real t35 = R * b;
+    const Real t36 = R * q;
+    const Real t37 = std::sqrt(t3);
+    const Real t38 = std::sqrt(t7);
+    const Real t39 = t31 * t38;
+    const Real t40 = t35 * w;
+    const Real t41 = std::fma(R, w, -t34);
+    const Real t42 = t34 * t38;
+    const Real t43 = t42 - t13;
+    const Real t44 = t34 * t37;
+    const Real t45 = std::fma(t1, v_y, t44);
+    const Real t46 = std::fma(N_y, v_x, t45);
+    const Real t47 = t44 - t13 + t10;
+    const Real t48 = std::fma(-t38, t38, t7) + t8;
+    const Real t49 = t38 + t38;
+    const Real t50 = t40 * t38;
+    const Real t51 = std::fma(t34, t38, -t42);
+    const Real t52 = t43 - t42;
+    const Real t53 = t50 + t42;
+    const Real t54 = std::fabs(t46);
+    const Real t55 = t37 * t54;
+    const Real t56 = std::fabs(t47);
+    const Real t57 = t37 * t56;
+    const Real t58 = t53 - t50;
+    const Real t59 = t42 - (t43 - t52) - (t13 + t52);
+    const Real t60 = t59 + (std::fma(t41, t38, t51) - t16);
+    const Real t61 = t43 + t60;
+    const Real t62 = t61 + t10;
+    const Real t63 = t62 - t61;
+    const Real t64 = t61 - (t62 - t63) + (t10 - t63) + (t60 - (t61 - t43) + t11);
+    const Real t65 = t62 + t64;
+    const Real t66 = t64 - (t65 - t62);
+    const Real t67 = (t65 > Real(0) ? t65 : -t65);
+    const Real t68 = t30 * t67;
+    const Real t69 = mu * t31;
+    const Real t70 = t69 * t20;
+    const Real t71 = t70 * t18;
+    const Real t72 = mu * t20;
+    const Real t73 = t68 + t71;
+    const Real t74 = t73 - t68;
+    const Real t75 = t68 - (t73 - t74) + (t71 - t74) + (std::fma(std::fma(q, Real(1) - (t24 - t29) + (b - t29), std::fma(q, t24, -t30)), t67, std::fma(t30, (t65 > Real(0) ? t66 : -t66), std::fma(t30, t67, -t68))) + std::fma(std::fma(std::fma(mu, t33, std::fma(mu, t31, -t69)), t20, std::fma(t69, t23, std::fma(t69, t20, -t70))), t18, std::fma(t70, t19, std::fma(t70, t18, -t71))));
+    const Real t76 = t73 + t75;
+    const Real t77 = t76 + (t75 - (t76 - t73));
+    const Real t78 = (t77 > Real(0) ? Real(1) : t39);
+    const Real t79 = (t77 > Real(0) ? t49 : Real(1));
+    const Real t80 = (t77 > Real(0) ? Real(1) : t49);
+    const Real t81 = (t77 > Real(0) ? t55 : Real(1));
+    const Real t82 = (t77 > Real(0) ? t57 : Real(1));
+    if (!(std::fabs(t7) >= detail::smallest_divisor<Real>) || !(std::fabs(t7) <= std::numeric_limits<Real>::max()) || !(std::fabs(t79) >= detail::smallest_divisor<Real>) || !(std::fabs(t79) <= std::numeric_limits<Real>::max()) || !(std::fabs(t80) >= detail::smallest_divisor<Real>) || !(std::fabs(t80) <= std::numeric_limits<Real>::max()) || !(std::fabs(t49) >= detail::smallest_divisor<Real>) || !(std::fabs(t49) <= std::numeric_limits<Real>::max()) || !(std::fabs(t81) >= detail::smallest_divisor<Real>) || !(std::fabs(t81) <= std::numeric_limits<Real>::max()) || !(std::fabs(t82) >= detail::smallest_divisor<Real>) || !(std::fabs(t82) <= std::numeric_limits<Real>::max()) || !(std::fabs(t78) >= detail::smallest_divisor<Real>) || !(std::fabs(t78) <= std::numeric_limits<Real>::max()) || !(std::fabs(t38) >= detail::smallest_divisor<Real>) || !(std::fabs(t38) <= std::numeric_limits<Real>::max()) || !(std::fabs(t36) >= detail::smallest_divisor<Real>) || !(std::fabs(t36) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t65 = t22 / t7;
-    const Real t66 = t48 / t62;
-    const Real t67 = t48 / t63;
-    const Real t68 = t46 - (t47 - t56) - (t13 + t56) + (std::fma(t45, t39, std::fma(t35, t66, t55)) - t17);
-    const Real t69 = t47 + t68;
-    const Real t70 = t69 + t10;
-    const Real t71 = -t65;
-    const Real t72 = t50 - (t57 - t58) + (t46 - t58) + (std::fma(std::fma(std::fma(R, b, -t36), w, std::fma(t36, w, -t41)), t39, std::fma(t41, t67, std::fma(t41, t39, -t50))) + std::fma(t45, t39, std::fma(t35, t67, t55)));
-    const Real t73 = t57 + t72;
-    const Real t74 = t73 - t29;
-    const Real t75 = t70 - t69;
-    const Real t76 = t71 + -(std::fma(t71, t8, std::fma(t71, t7, t22) + std::fma(t24, t19, std::fma(t21, t20, std::fma(t21, t19, -t22)))) / t7);
-    const Real t77 = N_x * t76;
-    const Real t78 = t74 - t73;
-    const Real t79 = t69 - (t70 - t75) + (t10 - t75) + (t68 - (t69 - t47) + t11);
-    const Real t80 = t70 + t79;
-    const Real t81 = t60 * t80;
-    const Real t82 = t81 * t19;
-    const Real t83 = t82 / t64;
-    const Real t84 = t73 - (t74 - t78) - (t29 + t78) + (t72 - (t73 - t57) - std::fma(std::fma(b, N_x, -t26), v_y, std::fma(t26, v_y, -t29)));
-    const Real t85 = t74 + t84;
-    const Real t86 = t85 + t28;
-    const Real t87 = -t83;
-    const Real t88 = t86 - t85;
-    const Real t89 = t85 - (t86 - t88) + (t28 - t88) + (t84 - (t85 - t74) + std::fma(std::fma(b, N_y, -t27), v_x, std::fma(t27, v_x, -t28)));
-    const Real t90 = t86 + t89;
-    const Real t91 = t90 - t13;
-    const Real t92 = t91 - t90;
-    const Real t93 = t90 - (t91 - t92) - (t13 + t92) + (t89 - (t90 - t86) - t17);
-    const Real t94 = t91 + t93;
-    const Real t95 = t94 + t10;
-    const Real t96 = t95 - t94;
-    const Real t97 = t94 - (t95 - t96) + (t10 - t96) + (t93 - (t94 - t91) + t11);
-    const Real t98 = t95 + t97;
-    const Real t99 = q * t98;
-    const Real t100 = t99 / t61;
-    const Real t101 = (t59 > Real(0) ? t87 : t100);
-    const Real t102 = t101 / t39;
-    const Real t103 = -t100;
-    const Real t104 = -t102;
-    const Real t105 = t102 + std::fma(t104, t48 / t49, std::fma(t104, t39, t101) + (t59 > Real(0) ? -(std::fma(t87, std::fma(t66, t53, std::fma(t39, t53, -t54)), std::fma(t87, t54, t82) + std::fma(std::fma(std::fma(mu, t24, std::fma(mu, t21, -t60)), t80, std::fma(t60, t79 - (t80 - t70), std::fma(t60, t80, -t81))), t19, std::fma(t81, t20, std::fma(t81, t19, -t82)))) / t64) : std::fma(t103, std::fma(Real(1) - (t31 - t34) + (q - t34), t39, std::fma(t31, t67, std::fma(t31, t39, -t40))), std::fma(t103, t40, t99) + std::fma(q, t97 - (t98 - t95), std::fma(q, t98, -t99))) / t61)) / t39;
-    const Real t106 = N_x * t105;
-    const Real t107 = std::fma(N_y, t76, t106);
-    const Real t108 = std::fma(t5, t105, t77);
-    const Real t109 = t105 * t38;
-    const Real t110 = t109 / t37;
-    const Real result0 = t108 + v_x;
-    const Real result1 = t107 + v_y;
-    const Real result2 = w - t110;
-    if (!detail::finite(t44) || !detail::finite(t44) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
+    const Real t83 = t21 / t7;
+    const Real t84 = t48 / t79;
+    const Real t85 = t48 / t80;
+    const Real t86 = t59 + (std::fma(t41, t38, std::fma(t34, t84, t51)) - t16);
+    const Real t87 = t43 + t86;
+    const Real t88 = t87 + t10;
+    const Real t89 = -t83;
+    const Real t90 = t50 - (t53 - t58) + (t42 - t58) + (std::fma(std::fma(std::fma(R, b, -t35), w, std::fma(t35, w, -t40)), t38, std::fma(t40, t85, std::fma(t40, t38, -t50))) + std::fma(t41, t38, std::fma(t34, t85, t51)));
+    const Real t91 = t53 + t90;
+    const Real t92 = t91 - t28;
+    const Real t93 = t88 - t87;
+    const Real t94 = t89 + -(std::fma(t89, t8, std::fma(t89, t7, t21) + std::fma(t23, t18, std::fma(t20, t19, std::fma(t20, t18, -t21)))) / t7);
+    const Real t95 = N_x * t94;
+    const Real t96 = t92 - t91;
+    const Real t97 = t87 - (t88 - t93) + (t10 - t93) + (t86 - (t87 - t43) + t11);
+    const Real t98 = t88 + t97;
+    const Real t99 = t72 * t98;
+    const Real t100 = t99 * t18;
+    const Real t101 = t100 / t81;
+    const Real t102 = t100 / t82;
+    const Real t103 = t91 - (t92 - t96) - (t28 + t96) + (t90 - (t91 - t53) - std::fma(std::fma(b, N_x, -t25), v_y, std::fma(t25, v_y, -t28)));
+    const Real t104 = t92 + t103;
+    const Real t105 = t104 + t27;
+    const Real t106 = t97 - (t98 - t88);
+    const Real t107 = (t98 > Real(0) ? t98 : -t98);
+    const Real t108 = t38 * t107;
+    const Real t109 = std::fma(std::fma(std::fma(mu, t23, std::fma(mu, t20, -t72)), t98, std::fma(t72, t106, std::fma(t72, t98, -t99))), t18, std::fma(t99, t19, std::fma(t99, t18, -t100)));
+    const Real t110 = -t101;
+    const Real t111 = -t102;
+    const Real t112 = t105 - t104;
+    const Real t113 = std::fma(t84, t107, std::fma(t38, (t98 > Real(0) ? t106 : -t106), std::fma(t38, t107, -t108)));
+    const Real t114 = t104 - (t105 - t112) + (t27 - t112) + (t103 - (t104 - t92) + std::fma(std::fma(b, N_y, -t26), v_x, std::fma(t26, v_x, -t27)));
+    const Real t115 = t105 + t114;
+    const Real t116 = t115 - t13;
+    const Real t117 = t116 - t115;
+    const Real t118 = t115 - (t116 - t117) - (t13 + t117) + (t114 - (t115 - t105) - t16);
+    const Real t119 = t116 + t118;
+    const Real t120 = t119 + t10;
+    const Real t121 = t120 - t119;
+    const Real t122 = t119 - (t120 - t121) + (t10 - t121) + (t118 - (t119 - t116) + t11);
+    const Real t123 = t120 + t122;
+    const Real t124 = q * t123;
+    const Real t125 = t124 / t78;
+    const Real t126 = (t77 > Real(0) ? t110 : t125);
+    const Real t127 = t126 / t38;
+    const Real t128 = (t77 > Real(0) ? t111 : t125);
+    const Real t129 = t128 / t36;
+    const Real t130 = -t125;
+    const Real t131 = -t127;
+    const Real t132 = -t129;
+    const Real t133 = std::fma(t130, std::fma(t33, t38, std::fma(t31, t85, std::fma(t31, t38, -t39))), std::fma(t130, t39, t124) + std::fma(q, t122 - (t123 - t120), std::fma(q, t123, -t124))) / t78;
+    const Real t134 = t127 + std::fma(t131, t48 / t49, std::fma(t131, t38, t126) + (t77 > Real(0) ? -(std::fma(t110, t113, std::fma(t110, t108, t100) + t109) / t81) : t133)) / t38;
+    const Real t135 = N_x * t134;
+    const Real t136 = std::fma(N_y, t94, t135);
+    const Real t137 = std::fma(t5, t134, t95);
+    const Real result0 = t137 + v_x;
+    const Real result1 = t136 + v_y;
+    const Real result2 = w + (t132 + -(std::fma(t132, std::fma(R, q, -t36), std::fma(t132, t36, t128) + (t77 > Real(0) ? -(std::fma(t111, t113, std::fma(t111, t108, t100) + t109) / t82) : t133)) / t36));
+    if (!detail::finite(t46) || !detail::finite(t47) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
         out.status = status::out_of_range;
         return out;
     }
@@ -223,44 +250,45 @@ inline collide_wall_rough_result<Real, 2> collide_wall_rough(Real R, Real q, con
         (std::fabs(t10) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_x != Real(0)) ||
         (std::fabs(t12) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_y != Real(0)) ||
         (std::fabs(t13) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && (t14 != Real(0) || (t9 == Real(0) && N_y != Real(0) && v_y != Real(0)))) ||
-        (std::fabs(t22) < std::numeric_limits<Real>::min() && t21 != Real(0) && t19 != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && b != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && b != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && t27 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t29) < std::numeric_limits<Real>::min() && t26 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t30) < std::numeric_limits<Real>::min() && q != Real(0) && t25 != Real(0)) ||
-        (std::fabs(t32) < std::numeric_limits<Real>::min() && t31 != Real(0) && t21 != Real(0)) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && t32 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && R != Real(0) && w != Real(0)) ||
-        (std::fabs(t36) < std::numeric_limits<Real>::min() && R != Real(0) && b != Real(0)) ||
-        (std::fabs(t37) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
-        (std::fabs(t40) < std::numeric_limits<Real>::min() && t31 != Real(0) && t39 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && t36 != Real(0) && w != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && t35 != Real(0) && t38 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && (t43 != Real(0) || (t42 == Real(0) && t1 != Real(0) && v_y != Real(0)))) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && (t44 != Real(0) || (t43 == Real(0) && N_y != Real(0) && v_x != Real(0)))) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && t35 != Real(0) && t39 != Real(0)) ||
-        (std::fabs(t50) < std::numeric_limits<Real>::min() && t41 != Real(0) && t39 != Real(0)) ||
-        (std::fabs(t51) < std::numeric_limits<Real>::min() && t51 != Real(0)) ||
-        (std::fabs(t52) < std::numeric_limits<Real>::min() && t30 != Real(0) && t51 != Real(0)) ||
-        (std::fabs(t53) < std::numeric_limits<Real>::min() && t53 != Real(0)) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && t39 != Real(0) && t53 != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && (t59 != Real(0) || (t52 == Real(0) && mu != Real(0) && t33 != Real(0)))) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && mu != Real(0) && t21 != Real(0)) ||
-        (std::fabs(t65) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
-        (std::fabs(t77) < std::numeric_limits<Real>::min() && N_x != Real(0) && t76 != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t60 != Real(0) && t80 != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t81 != Real(0) && t19 != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t82 != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && q != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t101 != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && N_x != Real(0) && t105 != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && (t107 != Real(0) || (t106 == Real(0) && N_y != Real(0) && t76 != Real(0)))) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && (t108 != Real(0) || (t77 == Real(0) && t5 != Real(0) && t105 != Real(0)))) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t105 != Real(0) && t38 != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0))) {
+        (std::fabs(t21) < std::numeric_limits<Real>::min() && t20 != Real(0) && t18 != Real(0)) ||
+        (std::fabs(t25) < std::numeric_limits<Real>::min() && b != Real(0) && N_x != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && b != Real(0) && N_y != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && t26 != Real(0) && v_x != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && t25 != Real(0) && v_y != Real(0)) ||
+        (std::fabs(t30) < std::numeric_limits<Real>::min() && q != Real(0) && t24 != Real(0)) ||
+        (std::fabs(t34) < std::numeric_limits<Real>::min() && R != Real(0) && w != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && R != Real(0) && b != Real(0)) ||
+        (std::fabs(t36) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
+        (std::fabs(t39) < std::numeric_limits<Real>::min() && t31 != Real(0) && t38 != Real(0)) ||
+        (std::fabs(t40) < std::numeric_limits<Real>::min() && t35 != Real(0) && w != Real(0)) ||
+        (std::fabs(t42) < std::numeric_limits<Real>::min() && t34 != Real(0) && t38 != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && t34 != Real(0) && t37 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && (t45 != Real(0) || (t44 == Real(0) && t1 != Real(0) && v_y != Real(0)))) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && (t46 != Real(0) || (t45 == Real(0) && N_y != Real(0) && v_x != Real(0)))) ||
+        (std::fabs(t50) < std::numeric_limits<Real>::min() && t40 != Real(0) && t38 != Real(0)) ||
+        (std::fabs(t54) < std::numeric_limits<Real>::min() && t54 != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && t37 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t56) < std::numeric_limits<Real>::min() && t56 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && t37 != Real(0) && t56 != Real(0)) ||
+        (std::fabs(t68) < std::numeric_limits<Real>::min() && t30 != Real(0) && t67 != Real(0)) ||
+        (std::fabs(t69) < std::numeric_limits<Real>::min() && mu != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && t20 != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && t18 != Real(0)) ||
+        (std::fabs(t72) < std::numeric_limits<Real>::min() && mu != Real(0) && t20 != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && t21 != Real(0)) ||
+        (std::fabs(t95) < std::numeric_limits<Real>::min() && N_x != Real(0) && t94 != Real(0)) ||
+        (std::fabs(t99) < std::numeric_limits<Real>::min() && t72 != Real(0) && t98 != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && t18 != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && t100 != Real(0)) ||
+        (std::fabs(t108) < std::numeric_limits<Real>::min() && t38 != Real(0) && t107 != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && q != Real(0) && t123 != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t124 != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t126 != Real(0)) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0)) ||
+        (std::fabs(t135) < std::numeric_limits<Real>::min() && N_x != Real(0) && t134 != Real(0)) ||
+        (std::fabs(t136) < std::numeric_limits<Real>::min() && (t136 != Real(0) || (t135 == Real(0) && N_y != Real(0) && t94 != Real(0)))) ||
+        (std::fabs(t137) < std::numeric_limits<Real>::min() && (t137 != Real(0) || (t95 == Real(0) && t5 != Real(0) && t134 != Real(0))))) {
         out.status = status::underflow;
         return out;
     }
@@ -282,9 +310,9 @@ namespace detail {
 // rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
 // bounds crosswise, a square root halves them, atan2(y, x) lies within
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, -1, 561, 526; where it is -1, the loop tests the least magnitude of the values.
+// quadruple long double): k = -1, -1, 549, 506; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_wall_rough_batch_2d_k = input_k<Real>(-1, -1, 561, 526);
+constexpr int collide_wall_rough_batch_2d_k = input_k<Real>(-1, -1, 549, 506);
 
 // The loop of collide_wall_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
@@ -355,108 +383,135 @@ IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_2d(std::size_t count, const R
         const Real t11 = std::fma(N_y, v_x, -t10);
         const Real t12 = N_y * v_y;
         const Real t13 = N_x * v_y;
-        const Real t14 = std::fma(N_y, v_y, t9);
-        const Real t15 = t9 + t12;
-        const Real t16 = t15 - t9;
-        const Real t17 = std::fma(N_x, v_y, -t13);
-        const Real t18 = t9 - (t15 - t16) + (t12 - t16) + (std::fma(N_x, v_x, -t9) + std::fma(N_y, v_y, -t12));
-        const Real t19 = t15 + t18;
-        const Real t20 = t18 - (t19 - t15);
-        const Real t21 = Real(1) + eps;
-        const Real t22 = t21 * t19;
-        const Real t23 = t21 - Real(1);
-        const Real t24 = Real(1) - (t21 - t23) + (eps - t23);
-        const Real t25 = Real(1) + b;
-        const Real t26 = b * N_x;
-        const Real t27 = b * N_y;
-        const Real t28 = t27 * v_x;
-        const Real t29 = t26 * v_y;
-        const Real t30 = q * t25;
+        const Real t14 = t9 + t12;
+        const Real t15 = t14 - t9;
+        const Real t16 = std::fma(N_x, v_y, -t13);
+        const Real t17 = t9 - (t14 - t15) + (t12 - t15) + (std::fma(N_x, v_x, -t9) + std::fma(N_y, v_y, -t12));
+        const Real t18 = t14 + t17;
+        const Real t19 = t17 - (t18 - t14);
+        const Real t20 = Real(1) + eps;
+        const Real t21 = t20 * t18;
+        const Real t22 = t20 - Real(1);
+        const Real t23 = Real(1) - (t20 - t22) + (eps - t22);
+        const Real t24 = Real(1) + b;
+        const Real t25 = b * N_x;
+        const Real t26 = b * N_y;
+        const Real t27 = t26 * v_x;
+        const Real t28 = t25 * v_y;
+        const Real t29 = t24 - Real(1);
+        const Real t30 = q * t24;
         const Real t31 = Real(1) + q;
-        const Real t32 = t31 * t21;
-        const Real t33 = t32 * t14;
-        const Real t34 = t31 - Real(1);
-        const Real t35 = R * w;
-        const Real t36 = R * b;
-        const Real t37 = R * q;
-        const Real t38 = std::sqrt(t3);
-        const Real t39 = std::sqrt(t7);
-        const Real t40 = t31 * t39;
-        const Real t41 = t36 * w;
-        const Real t42 = t35 * t38;
-        const Real t43 = std::fma(t1, v_y, t42);
-        const Real t44 = std::fma(N_y, v_x, t43);
-        const Real t45 = std::fma(R, w, -t35);
-        const Real t46 = t35 * t39;
-        const Real t47 = t46 - t13;
-        const Real t48 = std::fma(-t39, t39, t7) + t8;
-        const Real t49 = t39 + t39;
-        const Real t50 = t41 * t39;
-        const Real t51 = std::fabs(t44);
-        const Real t52 = t30 * t51;
-        const Real t53 = std::fabs(t44);
-        const Real t54 = t39 * t53;
-        const Real t55 = std::fma(t35, t39, -t46);
-        const Real t56 = t47 - t46;
-        const Real t57 = t50 + t46;
-        const Real t58 = t57 - t50;
-        const Real t59 = std::fma(mu, t33, t52);
-        const Real t60 = mu * t21;
-        const Real t61 = detail::blend(t59 > Real(0), Real(1), t40);
-        const Real t62 = detail::blend(t59 > Real(0), t49, Real(1));
-        const Real t63 = detail::blend(t59 > Real(0), Real(1), t49);
-        const Real t64 = detail::blend(t59 > Real(0), t54, Real(1));
-        const std::int64_t usable = resolved & (std::fabs(t7) >= detail::smallest_divisor<Real>) & (std::fabs(t7) <= std::numeric_limits<Real>::max()) & (std::fabs(t62) >= detail::smallest_divisor<Real>) & (std::fabs(t62) <= std::numeric_limits<Real>::max()) & (std::fabs(t63) >= detail::smallest_divisor<Real>) & (std::fabs(t63) <= std::numeric_limits<Real>::max()) & (std::fabs(t49) >= detail::smallest_divisor<Real>) & (std::fabs(t49) <= std::numeric_limits<Real>::max()) & (std::fabs(t64) >= detail::smallest_divisor<Real>) & (std::fabs(t64) <= std::numeric_limits<Real>::max()) & (std::fabs(t61) >= detail::smallest_divisor<Real>) & (std::fabs(t61) <= std::numeric_limits<Real>::max()) & (std::fabs(t39) >= detail::smallest_divisor<Real>) & (std::fabs(t39) <= std::numeric_limits<Real>::max()) & (std::fabs(t37) >= detail::smallest_divisor<Real>) & (std::fabs(t37) <= std::numeric_limits<Real>::max());
-        const Real t65 = t22 / detail::blend(usable, t7, Real(1));
-        const Real t66 = t48 / detail::blend(usable, t62, Real(1));
-        const Real t67 = t48 / detail::blend(usable, t63, Real(1));
-        const Real t68 = t46 - (t47 - t56) - (t13 + t56) + (std::fma(t45, t39, std::fma(t35, t66, t55)) - t17);
-        const Real t69 = t47 + t68;
-        const Real t70 = t69 + t10;
-        const Real t71 = -t65;
-        const Real t72 = t50 - (t57 - t58) + (t46 - t58) + (std::fma(std::fma(std::fma(R, b, -t36), w, std::fma(t36, w, -t41)), t39, std::fma(t41, t67, std::fma(t41, t39, -t50))) + std::fma(t45, t39, std::fma(t35, t67, t55)));
-        const Real t73 = t57 + t72;
-        const Real t74 = t73 - t29;
-        const Real t75 = t70 - t69;
-        const Real t76 = t71 + -(std::fma(t71, t8, std::fma(t71, t7, t22) + std::fma(t24, t19, std::fma(t21, t20, std::fma(t21, t19, -t22)))) / detail::blend(usable, t7, Real(1)));
-        const Real t77 = N_x * t76;
-        const Real t78 = t74 - t73;
-        const Real t79 = t69 - (t70 - t75) + (t10 - t75) + (t68 - (t69 - t47) + t11);
-        const Real t80 = t70 + t79;
-        const Real t81 = t60 * t80;
-        const Real t82 = t81 * t19;
-        const Real t83 = t82 / detail::blend(usable, t64, Real(1));
-        const Real t84 = t73 - (t74 - t78) - (t29 + t78) + (t72 - (t73 - t57) - std::fma(std::fma(b, N_x, -t26), v_y, std::fma(t26, v_y, -t29)));
-        const Real t85 = t74 + t84;
-        const Real t86 = t85 + t28;
-        const Real t87 = -t83;
-        const Real t88 = t86 - t85;
-        const Real t89 = t85 - (t86 - t88) + (t28 - t88) + (t84 - (t85 - t74) + std::fma(std::fma(b, N_y, -t27), v_x, std::fma(t27, v_x, -t28)));
-        const Real t90 = t86 + t89;
-        const Real t91 = t90 - t13;
-        const Real t92 = t91 - t90;
-        const Real t93 = t90 - (t91 - t92) - (t13 + t92) + (t89 - (t90 - t86) - t17);
-        const Real t94 = t91 + t93;
-        const Real t95 = t94 + t10;
-        const Real t96 = t95 - t94;
-        const Real t97 = t94 - (t95 - t96) + (t10 - t96) + (t93 - (t94 - t91) + t11);
-        const Real t98 = t95 + t97;
-        const Real t99 = q * t98;
-        const Real t100 = t99 / detail::blend(usable, t61, Real(1));
-        const Real t101 = detail::blend(t59 > Real(0), t87, t100);
-        const Real t102 = t101 / detail::blend(usable, t39, Real(1));
-        const Real t103 = -t100;
-        const Real t104 = -t102;
-        const Real t105 = t102 + std::fma(t104, t48 / detail::blend(usable, t49, Real(1)), std::fma(t104, t39, t101) + detail::blend(t59 > Real(0), -(std::fma(t87, std::fma(t66, t53, std::fma(t39, t53, -t54)), std::fma(t87, t54, t82) + std::fma(std::fma(std::fma(mu, t24, std::fma(mu, t21, -t60)), t80, std::fma(t60, t79 - (t80 - t70), std::fma(t60, t80, -t81))), t19, std::fma(t81, t20, std::fma(t81, t19, -t82)))) / detail::blend(usable, t64, Real(1))), std::fma(t103, std::fma(Real(1) - (t31 - t34) + (q - t34), t39, std::fma(t31, t67, std::fma(t31, t39, -t40))), std::fma(t103, t40, t99) + std::fma(q, t97 - (t98 - t95), std::fma(q, t98, -t99))) / detail::blend(usable, t61, Real(1)))) / detail::blend(usable, t39, Real(1));
-        const Real t106 = N_x * t105;
-        const Real t107 = std::fma(N_y, t76, t106);
-        const Real t108 = std::fma(t5, t105, t77);
-        const Real t109 = t105 * t38;
-        const Real t110 = t109 / detail::blend(usable, t37, Real(1));
-        const Real v_x_out = t108 + v_x;
-        const Real v_y_out = t107 + v_y;
-        const Real w_out = w - t110;
-        const Real finite0 = detail::zero_if_finite(t44, t44);
+        const Real t32 = t31 - Real(1);
+        const Real t33 = Real(1) - (t31 - t32) + (q - t32);
+        const Real t34 = R * w;
+        const Real t35 = R * b;
+        const Real t36 = R * q;
+        const Real t37 = std::sqrt(t3);
+        const Real t38 = std::sqrt(t7);
+        const Real t39 = t31 * t38;
+        const Real t40 = t35 * w;
+        const Real t41 = std::fma(R, w, -t34);
+        const Real t42 = t34 * t38;
+        const Real t43 = t42 - t13;
+        const Real t44 = t34 * t37;
+        const Real t45 = std::fma(t1, v_y, t44);
+        const Real t46 = std::fma(N_y, v_x, t45);
+        const Real t47 = t44 - t13 + t10;
+        const Real t48 = std::fma(-t38, t38, t7) + t8;
+        const Real t49 = t38 + t38;
+        const Real t50 = t40 * t38;
+        const Real t51 = std::fma(t34, t38, -t42);
+        const Real t52 = t43 - t42;
+        const Real t53 = t50 + t42;
+        const Real t54 = std::fabs(t46);
+        const Real t55 = t37 * t54;
+        const Real t56 = std::fabs(t47);
+        const Real t57 = t37 * t56;
+        const Real t58 = t53 - t50;
+        const Real t59 = t42 - (t43 - t52) - (t13 + t52);
+        const Real t60 = t59 + (std::fma(t41, t38, t51) - t16);
+        const Real t61 = t43 + t60;
+        const Real t62 = t61 + t10;
+        const Real t63 = t62 - t61;
+        const Real t64 = t61 - (t62 - t63) + (t10 - t63) + (t60 - (t61 - t43) + t11);
+        const Real t65 = t62 + t64;
+        const Real t66 = t64 - (t65 - t62);
+        const Real t67 = detail::blend(t65 > Real(0), t65, -t65);
+        const Real t68 = t30 * t67;
+        const Real t69 = mu * t31;
+        const Real t70 = t69 * t20;
+        const Real t71 = t70 * t18;
+        const Real t72 = mu * t20;
+        const Real t73 = t68 + t71;
+        const Real t74 = t73 - t68;
+        const Real t75 = t68 - (t73 - t74) + (t71 - t74) + (std::fma(std::fma(q, Real(1) - (t24 - t29) + (b - t29), std::fma(q, t24, -t30)), t67, std::fma(t30, detail::blend(t65 > Real(0), t66, -t66), std::fma(t30, t67, -t68))) + std::fma(std::fma(std::fma(mu, t33, std::fma(mu, t31, -t69)), t20, std::fma(t69, t23, std::fma(t69, t20, -t70))), t18, std::fma(t70, t19, std::fma(t70, t18, -t71))));
+        const Real t76 = t73 + t75;
+        const Real t77 = t76 + (t75 - (t76 - t73));
+        const Real t78 = detail::blend(t77 > Real(0), Real(1), t39);
+        const Real t79 = detail::blend(t77 > Real(0), t49, Real(1));
+        const Real t80 = detail::blend(t77 > Real(0), Real(1), t49);
+        const Real t81 = detail::blend(t77 > Real(0), t55, Real(1));
+        const Real t82 = detail::blend(t77 > Real(0), t57, Real(1));
+        const std::int64_t usable = resolved & (std::fabs(t7) >= detail::smallest_divisor<Real>) & (std::fabs(t7) <= std::numeric_limits<Real>::max()) & (std::fabs(t79) >= detail::smallest_divisor<Real>) & (std::fabs(t79) <= std::numeric_limits<Real>::max()) & (std::fabs(t80) >= detail::smallest_divisor<Real>) & (std::fabs(t80) <= std::numeric_limits<Real>::max()) & (std::fabs(t49) >= detail::smallest_divisor<Real>) & (std::fabs(t49) <= std::numeric_limits<Real>::max()) & (std::fabs(t81) >= detail::smallest_divisor<Real>) & (std::fabs(t81) <= std::numeric_limits<Real>::max()) & (std::fabs(t82) >= detail::smallest_divisor<Real>) & (std::fabs(t82) <= std::numeric_limits<Real>::max()) & (std::fabs(t78) >= detail::smallest_divisor<Real>) & (std::fabs(t78) <= std::numeric_limits<Real>::max()) & (std::fabs(t38) >= detail::smallest_divisor<Real>) & (std::fabs(t38) <= std::numeric_limits<Real>::max()) & (std::fabs(t36) >= detail::smallest_divisor<Real>) & (std::fabs(t36) <= std::numeric_limits<Real>::max());
+        const Real t83 = t21 / detail::blend(usable, t7, Real(1));
+        const Real t84 = t48 / detail::blend(usable, t79, Real(1));
+        const Real t85 = t48 / detail::blend(usable, t80, Real(1));
+        const Real t86 = t59 + (std::fma(t41, t38, std::fma(t34, t84, t51)) - t16);
+        const Real t87 = t43 + t86;
+        const Real t88 = t87 + t10;
+        const Real t89 = -t83;
+        const Real t90 = t50 - (t53 - t58) + (t42 - t58) + (std::fma(std::fma(std::fma(R, b, -t35), w, std::fma(t35, w, -t40)), t38, std::fma(t40, t85, std::fma(t40, t38, -t50))) + std::fma(t41, t38, std::fma(t34, t85, t51)));
+        const Real t91 = t53 + t90;
+        const Real t92 = t91 - t28;
+        const Real t93 = t88 - t87;
+        const Real t94 = t89 + -(std::fma(t89, t8, std::fma(t89, t7, t21) + std::fma(t23, t18, std::fma(t20, t19, std::fma(t20, t18, -t21)))) / detail::blend(usable, t7, Real(1)));
+        const Real t95 = N_x * t94;
+        const Real t96 = t92 - t91;
+        const Real t97 = t87 - (t88 - t93) + (t10 - t93) + (t86 - (t87 - t43) + t11);
+        const Real t98 = t88 + t97;
+        const Real t99 = t72 * t98;
+        const Real t100 = t99 * t18;
+        const Real t101 = t100 / detail::blend(usable, t81, Real(1));
+        const Real t102 = t100 / detail::blend(usable, t82, Real(1));
+        const Real t103 = t91 - (t92 - t96) - (t28 + t96) + (t90 - (t91 - t53) - std::fma(std::fma(b, N_x, -t25), v_y, std::fma(t25, v_y, -t28)));
+        const Real t104 = t92 + t103;
+        const Real t105 = t104 + t27;
+        const Real t106 = t97 - (t98 - t88);
+        const Real t107 = detail::blend(t98 > Real(0), t98, -t98);
+        const Real t108 = t38 * t107;
+        const Real t109 = std::fma(std::fma(std::fma(mu, t23, std::fma(mu, t20, -t72)), t98, std::fma(t72, t106, std::fma(t72, t98, -t99))), t18, std::fma(t99, t19, std::fma(t99, t18, -t100)));
+        const Real t110 = -t101;
+        const Real t111 = -t102;
+        const Real t112 = t105 - t104;
+        const Real t113 = std::fma(t84, t107, std::fma(t38, detail::blend(t98 > Real(0), t106, -t106), std::fma(t38, t107, -t108)));
+        const Real t114 = t104 - (t105 - t112) + (t27 - t112) + (t103 - (t104 - t92) + std::fma(std::fma(b, N_y, -t26), v_x, std::fma(t26, v_x, -t27)));
+        const Real t115 = t105 + t114;
+        const Real t116 = t115 - t13;
+        const Real t117 = t116 - t115;
+        const Real t118 = t115 - (t116 - t117) - (t13 + t117) + (t114 - (t115 - t105) - t16);
+        const Real t119 = t116 + t118;
+        const Real t120 = t119 + t10;
+        const Real t121 = t120 - t119;
+        const Real t122 = t119 - (t120 - t121) + (t10 - t121) + (t118 - (t119 - t116) + t11);
+        const Real t123 = t120 + t122;
+        const Real t124 = q * t123;
+        const Real t125 = t124 / detail::blend(usable, t78, Real(1));
+        const Real t126 = detail::blend(t77 > Real(0), t110, t125);
+        const Real t127 = t126 / detail::blend(usable, t38, Real(1));
+        const Real t128 = detail::blend(t77 > Real(0), t111, t125);
+        const Real t129 = t128 / detail::blend(usable, t36, Real(1));
+        const Real t130 = -t125;
+        const Real t131 = -t127;
+        const Real t132 = -t129;
+        const Real t133 = std::fma(t130, std::fma(t33, t38, std::fma(t31, t85, std::fma(t31, t38, -t39))), std::fma(t130, t39, t124) + std::fma(q, t122 - (t123 - t120), std::fma(q, t123, -t124))) / detail::blend(usable, t78, Real(1));
+        const Real t134 = t127 + std::fma(t131, t48 / detail::blend(usable, t49, Real(1)), std::fma(t131, t38, t126) + detail::blend(t77 > Real(0), -(std::fma(t110, t113, std::fma(t110, t108, t100) + t109) / detail::blend(usable, t81, Real(1))), t133)) / detail::blend(usable, t38, Real(1));
+        const Real t135 = N_x * t134;
+        const Real t136 = std::fma(N_y, t94, t135);
+        const Real t137 = std::fma(t5, t134, t95);
+        const Real v_x_out = t137 + v_x;
+        const Real v_y_out = t136 + v_y;
+        const Real w_out = w + (t132 + -(std::fma(t132, std::fma(R, q, -t36), std::fma(t132, t36, t128) + detail::blend(t77 > Real(0), -(std::fma(t111, t113, std::fma(t111, t108, t100) + t109) / detail::blend(usable, t82, Real(1))), t133)) / detail::blend(usable, t36, Real(1))));
+        const Real finite0 = detail::zero_if_finite(t46, t47);
         const Real finite1 = detail::zero_if_finite(v_x_out, v_y_out);
         const Real finite2 = detail::zero_if_finite(w_out);
         const Real finite3 = finite0 + finite1;
@@ -468,7 +523,7 @@ IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_2d(std::size_t count, const R
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(R, lowest), detail::magnitude_or(q, lowest)), detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest))), detail::least(detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest)), detail::least(detail::magnitude_or(w, lowest), detail::magnitude_or(eps, lowest)))), detail::least(detail::magnitude_or(b, lowest), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(R), std::fabs(q)), detail::most(std::fabs(N_x), std::fabs(N_y))), detail::most(detail::most(std::fabs(v_x), std::fabs(v_y)), detail::most(std::fabs(w), std::fabs(eps)))), detail::most(std::fabs(b), std::fabs(mu))), highest));
         }
         if constexpr (collide_wall_rough_batch_2d_k<Real> < 0)
-            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t2), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t9), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t10), detail::zero_as_min(N_y)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t12), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t13), detail::zero_as_min(N_x)), detail::zero_as_min(v_y))), detail::least(std::fabs(t14), detail::most(detail::most(std::fabs(t22), detail::zero_as_min(t21)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t26), detail::zero_as_min(b)), detail::zero_as_min(N_x)), detail::most(detail::most(std::fabs(t27), detail::zero_as_min(b)), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t28), detail::zero_as_min(v_x)), detail::most(std::fabs(t29), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t30), detail::zero_as_min(q)), detail::zero_as_min(t25)), detail::most(detail::most(std::fabs(t32), detail::zero_as_min(t31)), detail::zero_as_min(t21))), detail::least(std::fabs(t33), detail::most(detail::most(std::fabs(t35), detail::zero_as_min(R)), detail::zero_as_min(w)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t36), detail::zero_as_min(R)), detail::zero_as_min(b)), detail::most(detail::most(std::fabs(t37), detail::zero_as_min(R)), detail::zero_as_min(q))), detail::least(detail::most(std::fabs(t40), detail::zero_as_min(t31)), detail::most(std::fabs(t41), detail::zero_as_min(w)))), detail::least(detail::least(std::fabs(t42), std::fabs(t43)), detail::least(std::fabs(t44), std::fabs(t46)))), detail::least(detail::least(detail::least(std::fabs(t50), std::fabs(t51)), detail::least(std::fabs(t52), std::fabs(t53))), detail::least(detail::least(std::fabs(t54), std::fabs(t59)), detail::least(detail::most(detail::most(std::fabs(t60), detail::zero_as_min(mu)), detail::zero_as_min(t21)), std::fabs(t65)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t77), detail::zero_as_min(N_x)), detail::zero_as_min(t76)), detail::most(std::fabs(t81), detail::zero_as_min(t80))), detail::least(detail::most(std::fabs(t82), detail::zero_as_min(t19)), std::fabs(t83))), detail::least(detail::least(detail::most(detail::most(std::fabs(t99), detail::zero_as_min(q)), detail::zero_as_min(t98)), std::fabs(t100)), detail::least(detail::most(std::fabs(t102), detail::zero_as_min(t101)), detail::most(detail::most(std::fabs(t106), detail::zero_as_min(N_x)), detail::zero_as_min(t105))))), detail::least(detail::least(std::fabs(t107), std::fabs(t108)), detail::least(detail::most(std::fabs(t109), detail::zero_as_min(t105)), std::fabs(t110))))), std::numeric_limits<Real>::min());
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t2), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t9), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t10), detail::zero_as_min(N_y)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t12), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t13), detail::zero_as_min(N_x)), detail::zero_as_min(v_y))), detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t20)), detail::zero_as_min(t18)), detail::most(detail::most(std::fabs(t25), detail::zero_as_min(b)), detail::zero_as_min(N_x))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t26), detail::zero_as_min(b)), detail::zero_as_min(N_y)), detail::most(std::fabs(t27), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t28), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(q)), detail::zero_as_min(t24)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(R)), detail::zero_as_min(w)), detail::most(detail::most(std::fabs(t35), detail::zero_as_min(R)), detail::zero_as_min(b))), detail::least(detail::most(detail::most(std::fabs(t36), detail::zero_as_min(R)), detail::zero_as_min(q)), detail::most(std::fabs(t39), detail::zero_as_min(t31)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t40), detail::zero_as_min(w)), std::fabs(t42)), detail::least(std::fabs(t44), std::fabs(t45))), detail::least(detail::least(std::fabs(t46), std::fabs(t50)), detail::least(std::fabs(t54), std::fabs(t55)))), detail::least(detail::least(detail::least(std::fabs(t56), std::fabs(t57)), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t69), detail::zero_as_min(mu)), detail::zero_as_min(t31)))), detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(t20)), detail::most(std::fabs(t71), detail::zero_as_min(t18))), detail::least(detail::most(detail::most(std::fabs(t72), detail::zero_as_min(mu)), detail::zero_as_min(t20)), std::fabs(t83)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t95), detail::zero_as_min(N_x)), detail::zero_as_min(t94)), detail::most(std::fabs(t99), detail::zero_as_min(t98))), detail::least(detail::most(std::fabs(t100), detail::zero_as_min(t18)), std::fabs(t101))), detail::least(detail::least(std::fabs(t102), detail::most(std::fabs(t108), detail::zero_as_min(t107))), detail::least(detail::most(detail::most(std::fabs(t124), detail::zero_as_min(q)), detail::zero_as_min(t123)), std::fabs(t125)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t127), detail::zero_as_min(t126)), detail::most(std::fabs(t129), detail::zero_as_min(t128))), detail::least(detail::most(detail::most(std::fabs(t135), detail::zero_as_min(N_x)), detail::zero_as_min(t134)), std::fabs(t136))), std::fabs(t137)))), std::numeric_limits<Real>::min());
         const std::int64_t written = usable & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
@@ -548,396 +603,19 @@ inline void collide_wall_rough_batch(const collide_wall_rough_batch_data<Real, 2
         detail::collide_wall_rough_batch_2d_ahead<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.w, data.eps, data.beta, data.mu, nullptr);
 }
 
-/// collide_wall_rough(R, q, P, n, C, v, w, eps, beta, mu, impact::fast): the fast form of collide_wall_rough, with the
-/// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 67 operations with the guards' conditions, of them 5
-/// division(s) and 1 square root(s) (the accurate form: 269, 12 and 2).
-/// v[0] is computed in the form "v_x + K_n*N_x - K_t*N_y, fma": at most 7.79 ulps in double on 4200 samples.
-/// v[1] is computed in the form "v_y + K_n*N_y + K_t*N_x, fma": at most 5.41 ulps in double on 4200 samples.
-/// w is computed in the form "w - K_t*n_norm/(q*R), fma": at most 6.91 ulps in double on 4200 samples.
+/// collide_wall_rough(R, q, P, n, C, v, w, eps, beta, mu, impact::fast): the fast form of collide_wall_rough, which is
+/// its accurate form: no candidate form is cheaper within the fast bounds (verification.md).
 template <class Real>
 inline collide_wall_rough_result<Real, 2> collide_wall_rough(Real R, Real q, const std::array<Real, 2>& P, const std::array<Real, 2>& n, const std::array<Real, 2>& C, const std::array<Real, 2>& v, Real w, Real eps, Real beta, Real mu, fast_t) noexcept
 {
-    const Real P_x = P[0];
-    const Real P_y = P[1];
-    const Real N_x = n[0];
-    const Real N_y = n[1];
-    const Real C_x = C[0];
-    const Real C_y = C[1];
-    const Real v_x = v[0];
-    const Real v_y = v[1];
-    const Real b = beta;
-    collide_wall_rough_result<Real, 2> out{v, w, status::ok};
-    if (!(R > Real(0)) || !detail::finite(R)) {
-        out.status = status::invalid_radius;
-        return out;
-    }
-    if (!(q > Real(0)) || !(q <= Real(0.6666666666666666))) {
-        out.status = status::invalid_inertia;
-        return out;
-    }
-    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
-        out.status = status::invalid_restitution;
-        return out;
-    }
-    if (!(b >= Real(-1)) || !(b <= Real(1))) {
-        out.status = status::invalid_tangential_restitution;
-        return out;
-    }
-    if (!(mu >= Real(0))) {
-        out.status = status::invalid_friction;
-        return out;
-    }
-    if (!detail::finite(P_x) || !detail::finite(P_y) || !detail::finite(N_x) || !detail::finite(N_y) || !detail::finite(C_x) || !detail::finite(C_y) || !detail::finite(v_x) || !detail::finite(v_y) || !detail::finite(w)) {
-        out.status = status::non_finite;
-        return out;
-    }
-    const Real t0 = N_x * N_x;
-    const Real t1 = -N_x;
-    const Real t2 = N_y * N_y;
-    const Real t3 = t0 + t2;
-    const Real t4 = -N_y;
-    const Real t5 = N_x * v_x;
-    const Real t6 = N_y * v_x;
-    const Real t7 = N_x * v_y;
-    const Real t8 = std::fma(N_y, v_y, t5);
-    if (!(t3 > Real(0))) {
-        out.status = status::invalid_normal;
-        return out;
-    }
-    if (!(N_x * (C_x - P_x) + N_y * (C_y - P_y) > Real(0))) {
-        out.status = status::behind_the_wall;
-        return out;
-    }
-    if (!(t5 + N_y * v_y < Real(0))) {
-        out.status = status::separating;
-        return out;
-    }
-    const Real t9 = Real(1) + eps;
-    const Real t10 = t9 * t8;
-    const Real t11 = Real(1) + b;
-    const Real t12 = -b;
-    const Real t13 = q * t11;
-    const Real t14 = Real(1) + q;
-    const Real t15 = t14 * t9;
-    const Real t16 = t15 * t8;
-    const Real t17 = R * w;
-    const Real t18 = R * b;
-    const Real t19 = R * q;
-    const Real t20 = std::sqrt(t3);
-    const Real t21 = t14 * t20;
-    const Real t22 = t18 * w;
-    const Real t23 = w * t20;
-    const Real t24 = t17 * t20;
-    const Real t25 = std::fma(t1, v_y, t24);
-    const Real t26 = std::fma(N_y, v_x, t25);
-    const Real t27 = t22 * t20;
-    const Real t28 = std::fma(R, t23, t27);
-    const Real t29 = std::fma(t12, t7, t28);
-    const Real t30 = std::fma(b, t6, t29);
-    const Real t31 = std::fma(t1, v_y, t30);
-    const Real t32 = std::fma(N_y, v_x, t31);
-    const Real t33 = q * t32;
-    const Real t34 = std::fabs(t26);
-    const Real t35 = t13 * t34;
-    const Real t36 = std::fabs(t26);
-    const Real t37 = t20 * t36;
-    const Real t38 = std::fma(mu, t16, t35);
-    const Real t39 = mu * t9;
-    const Real t40 = (t38 > Real(0) ? Real(1) : t21);
-    const Real t41 = t39 * t26;
-    const Real t42 = t41 * t8;
-    const Real t43 = (t38 > Real(0) ? t37 : Real(1));
-    if (!(std::fabs(t3) >= detail::smallest_divisor<Real>) || !(std::fabs(t3) <= std::numeric_limits<Real>::max()) || !(std::fabs(t40) >= detail::smallest_divisor<Real>) || !(std::fabs(t40) <= std::numeric_limits<Real>::max()) || !(std::fabs(t43) >= detail::smallest_divisor<Real>) || !(std::fabs(t43) <= std::numeric_limits<Real>::max()) || !(std::fabs(t20) >= detail::smallest_divisor<Real>) || !(std::fabs(t20) <= std::numeric_limits<Real>::max()) || !(std::fabs(t19) >= detail::smallest_divisor<Real>) || !(std::fabs(t19) <= std::numeric_limits<Real>::max())) {
-        out.status = status::out_of_range;
-        return out;
-    }
-    const Real t44 = t10 / t3;
-    const Real t45 = t33 / t40;
-    const Real t46 = t42 / t43;
-    const Real t47 = -t44;
-    const Real t48 = N_x * t47;
-    const Real t49 = (t38 > Real(0) ? -t46 : t45);
-    const Real t50 = t49 / t20;
-    const Real t51 = N_x * t50;
-    const Real t52 = std::fma(N_y, t47, t51);
-    const Real t53 = std::fma(t4, t50, t48);
-    const Real t54 = t50 * t20;
-    const Real t55 = t54 / t19;
-    const Real result0 = t53 + v_x;
-    const Real result1 = t52 + v_y;
-    const Real result2 = w - t55;
-    if (!detail::finite(t26) || !detail::finite(t26) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
-        out.status = status::out_of_range;
-        return out;
-    }
-    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && N_x != Real(0)) ||
-        (std::fabs(t2) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t7) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t8) < std::numeric_limits<Real>::min() && (t8 != Real(0) || (t5 == Real(0) && N_y != Real(0) && v_y != Real(0)))) ||
-        (std::fabs(t10) < std::numeric_limits<Real>::min() && t9 != Real(0) && t8 != Real(0)) ||
-        (std::fabs(t13) < std::numeric_limits<Real>::min() && q != Real(0) && t11 != Real(0)) ||
-        (std::fabs(t15) < std::numeric_limits<Real>::min() && t14 != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && t15 != Real(0) && t8 != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && R != Real(0) && w != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && R != Real(0) && b != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
-        (std::fabs(t21) < std::numeric_limits<Real>::min() && t14 != Real(0) && t20 != Real(0)) ||
-        (std::fabs(t22) < std::numeric_limits<Real>::min() && t18 != Real(0) && w != Real(0)) ||
-        (std::fabs(t23) < std::numeric_limits<Real>::min() && w != Real(0) && t20 != Real(0)) ||
-        (std::fabs(t24) < std::numeric_limits<Real>::min() && t17 != Real(0) && t20 != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && (t25 != Real(0) || (t24 == Real(0) && t1 != Real(0) && v_y != Real(0)))) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && (t26 != Real(0) || (t25 == Real(0) && N_y != Real(0) && v_x != Real(0)))) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && t22 != Real(0) && t20 != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && (t28 != Real(0) || (t27 == Real(0) && R != Real(0) && t23 != Real(0)))) ||
-        (std::fabs(t29) < std::numeric_limits<Real>::min() && (t29 != Real(0) || (t28 == Real(0) && t12 != Real(0) && t7 != Real(0)))) ||
-        (std::fabs(t30) < std::numeric_limits<Real>::min() && (t30 != Real(0) || (t29 == Real(0) && b != Real(0) && t6 != Real(0)))) ||
-        (std::fabs(t31) < std::numeric_limits<Real>::min() && (t31 != Real(0) || (t30 == Real(0) && t1 != Real(0) && v_y != Real(0)))) ||
-        (std::fabs(t32) < std::numeric_limits<Real>::min() && (t32 != Real(0) || (t31 == Real(0) && N_y != Real(0) && v_x != Real(0)))) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && q != Real(0) && t32 != Real(0)) ||
-        (std::fabs(t34) < std::numeric_limits<Real>::min() && t34 != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && t13 != Real(0) && t34 != Real(0)) ||
-        (std::fabs(t36) < std::numeric_limits<Real>::min() && t36 != Real(0)) ||
-        (std::fabs(t37) < std::numeric_limits<Real>::min() && t20 != Real(0) && t36 != Real(0)) ||
-        (std::fabs(t38) < std::numeric_limits<Real>::min() && (t38 != Real(0) || (t35 == Real(0) && mu != Real(0) && t16 != Real(0)))) ||
-        (std::fabs(t39) < std::numeric_limits<Real>::min() && mu != Real(0) && t9 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && t39 != Real(0) && t26 != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && t41 != Real(0) && t8 != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && t10 != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && t33 != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t48) < std::numeric_limits<Real>::min() && N_x != Real(0) && t47 != Real(0)) ||
-        (std::fabs(t50) < std::numeric_limits<Real>::min() && t49 != Real(0)) ||
-        (std::fabs(t51) < std::numeric_limits<Real>::min() && N_x != Real(0) && t50 != Real(0)) ||
-        (std::fabs(t52) < std::numeric_limits<Real>::min() && (t52 != Real(0) || (t51 == Real(0) && N_y != Real(0) && t47 != Real(0)))) ||
-        (std::fabs(t53) < std::numeric_limits<Real>::min() && (t53 != Real(0) || (t48 == Real(0) && t4 != Real(0) && t50 != Real(0)))) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && t50 != Real(0) && t20 != Real(0)) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && t54 != Real(0))) {
-        out.status = status::underflow;
-        return out;
-    }
-    out.v = {result0, result1};
-    out.w = result2;
-    return out;
+    return collide_wall_rough<Real>(R, q, P, n, C, v, w, eps, beta, mu);
 }
 
-namespace detail {
-
-// The range of collide_wall_rough_batch_2d_fast's inputs within which its arithmetic stays in the normal range: where
-// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
-// normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
-// the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
-// by Impact from the program, operation by operation, bounding each value not 0 by powers
-// of 2, 2^lo <= |v| <= 2^hi, and by the power of 2 it is a multiple of, 2^q (a number of
-// at least 2^lo is a multiple of its ulp, 2^(lo - digits + 1)): a product adds them; a sum,
-// difference or fused multiply-add is exactly a multiple of its terms' finest q, and so,
-// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
-// bounds crosswise, a square root halves them, atan2(y, x) lies within
-// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, 50, 1070, 1054; where it is -1, the loop tests the least magnitude of the values.
-template <class Real>
-constexpr int collide_wall_rough_batch_2d_fast_k = input_k<Real>(-1, 50, 1070, 1054);
-
-// The loop of collide_wall_rough_batch in 2D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < count; ++i) {
-        // The status, as the scalar kernel decides it: the first guard that fails.
-        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
-        impact::status outcome = status::ok;
-        {
-            std::int64_t fails = !((((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(N_x_[i], N_y_[i])) + (detail::zero_if_finite(C_x_[i], C_y_[i]) + detail::zero_if_finite(v_x_[i], v_y_[i]))) + detail::zero_if_finite(w_[i])) == Real(0));
-            outcome = detail::blend(fails, status::non_finite, outcome);
-            fails = !(mu_[i] >= Real(0));
-            outcome = detail::blend(fails, status::invalid_friction, outcome);
-            fails = !(b_[i] >= Real(-1));
-            fails |= !(b_[i] <= Real(1));
-            outcome = detail::blend(fails, status::invalid_tangential_restitution, outcome);
-            fails = !(eps_[i] >= Real(0));
-            fails |= !(eps_[i] <= Real(1));
-            outcome = detail::blend(fails, status::invalid_restitution, outcome);
-            fails = !(q_[i] > Real(0));
-            fails |= !(q_[i] <= Real(0.6666666666666666));
-            outcome = detail::blend(fails, status::invalid_inertia, outcome);
-            fails = !(R_[i] > Real(0));
-            fails |= !detail::finite(R_[i]);
-            outcome = detail::blend(fails, status::invalid_radius, outcome);
-            const std::int64_t admitted = outcome == status::ok;
-            impact::status condition = status::ok;
-            const Real t1 = N_x_[i] * N_x_[i] + N_y_[i] * N_y_[i];
-            const Real t2 = N_x_[i] * v_x_[i];
-            fails = !(t2 + N_y_[i] * v_y_[i] < Real(0));
-            condition = detail::blend(fails, status::separating, condition);
-            fails = !(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) > Real(0));
-            condition = detail::blend(fails, status::behind_the_wall, condition);
-            fails = !(t1 > Real(0));
-            condition = detail::blend(fails, status::invalid_normal, condition);
-            outcome = detail::blend(admitted, condition, outcome);
-        }
-        const std::int64_t resolved = outcome == status::ok;
-        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
-        const Real R = R_[i];
-        const Real q = q_[i];
-        const Real N_x = N_x_[i];
-        const Real N_y = N_y_[i];
-        const Real v_x = v_x_[i];
-        const Real v_y = v_y_[i];
-        const Real w = w_[i];
-        const Real eps = eps_[i];
-        const Real b = b_[i];
-        const Real mu = mu_[i];
-        const Real t0 = N_x * N_x;
-        const Real t1 = -N_x;
-        const Real t2 = N_y * N_y;
-        const Real t3 = t0 + t2;
-        const Real t4 = -N_y;
-        const Real t5 = N_x * v_x;
-        const Real t6 = N_y * v_x;
-        const Real t7 = N_x * v_y;
-        const Real t8 = std::fma(N_y, v_y, t5);
-        const Real t9 = Real(1) + eps;
-        const Real t10 = t9 * t8;
-        const Real t11 = Real(1) + b;
-        const Real t12 = -b;
-        const Real t13 = q * t11;
-        const Real t14 = Real(1) + q;
-        const Real t15 = t14 * t9;
-        const Real t16 = t15 * t8;
-        const Real t17 = R * w;
-        const Real t18 = R * b;
-        const Real t19 = R * q;
-        const Real t20 = std::sqrt(t3);
-        const Real t21 = t14 * t20;
-        const Real t22 = t18 * w;
-        const Real t23 = w * t20;
-        const Real t24 = t17 * t20;
-        const Real t25 = std::fma(t1, v_y, t24);
-        const Real t26 = std::fma(N_y, v_x, t25);
-        const Real t27 = t22 * t20;
-        const Real t28 = std::fma(R, t23, t27);
-        const Real t29 = std::fma(t12, t7, t28);
-        const Real t30 = std::fma(b, t6, t29);
-        const Real t31 = std::fma(t1, v_y, t30);
-        const Real t32 = std::fma(N_y, v_x, t31);
-        const Real t33 = q * t32;
-        const Real t34 = std::fabs(t26);
-        const Real t35 = t13 * t34;
-        const Real t36 = std::fabs(t26);
-        const Real t37 = t20 * t36;
-        const Real t38 = std::fma(mu, t16, t35);
-        const Real t39 = mu * t9;
-        const Real t40 = detail::blend(t38 > Real(0), Real(1), t21);
-        const Real t41 = t39 * t26;
-        const Real t42 = t41 * t8;
-        const Real t43 = detail::blend(t38 > Real(0), t37, Real(1));
-        const std::int64_t usable = resolved & (std::fabs(t3) >= detail::smallest_divisor<Real>) & (std::fabs(t3) <= std::numeric_limits<Real>::max()) & (std::fabs(t40) >= detail::smallest_divisor<Real>) & (std::fabs(t40) <= std::numeric_limits<Real>::max()) & (std::fabs(t43) >= detail::smallest_divisor<Real>) & (std::fabs(t43) <= std::numeric_limits<Real>::max()) & (std::fabs(t20) >= detail::smallest_divisor<Real>) & (std::fabs(t20) <= std::numeric_limits<Real>::max()) & (std::fabs(t19) >= detail::smallest_divisor<Real>) & (std::fabs(t19) <= std::numeric_limits<Real>::max());
-        const Real t44 = t10 / detail::blend(usable, t3, Real(1));
-        const Real t45 = t33 / detail::blend(usable, t40, Real(1));
-        const Real t46 = t42 / detail::blend(usable, t43, Real(1));
-        const Real t47 = -t44;
-        const Real t48 = N_x * t47;
-        const Real t49 = detail::blend(t38 > Real(0), -t46, t45);
-        const Real t50 = t49 / detail::blend(usable, t20, Real(1));
-        const Real t51 = N_x * t50;
-        const Real t52 = std::fma(N_y, t47, t51);
-        const Real t53 = std::fma(t4, t50, t48);
-        const Real t54 = t50 * t20;
-        const Real t55 = t54 / detail::blend(usable, t19, Real(1));
-        const Real v_x_out = t53 + v_x;
-        const Real v_y_out = t52 + v_y;
-        const Real w_out = w - t55;
-        const Real finite0 = detail::zero_if_finite(t26, t26);
-        const Real finite1 = detail::zero_if_finite(v_x_out, v_y_out);
-        const Real finite2 = detail::zero_if_finite(w_out);
-        const Real finite3 = finite0 + finite1;
-        const Real finite4 = finite3 + finite2;
-        const std::int64_t finite = (finite4 == Real(0));
-        std::int64_t doubtful = 0;
-        if constexpr (collide_wall_rough_batch_2d_fast_k<Real> >= 0) {
-            constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_rough_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_rough_batch_2d_fast_k<Real>);
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(R, lowest), detail::magnitude_or(q, lowest)), detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest))), detail::least(detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest)), detail::least(detail::magnitude_or(w, lowest), detail::magnitude_or(eps, lowest)))), detail::least(detail::magnitude_or(b, lowest), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(R), std::fabs(q)), detail::most(std::fabs(N_x), std::fabs(N_y))), detail::most(detail::most(std::fabs(v_x), std::fabs(v_y)), detail::most(std::fabs(w), std::fabs(eps)))), detail::most(std::fabs(b), std::fabs(mu))), highest));
-        }
-        if constexpr (collide_wall_rough_batch_2d_fast_k<Real> < 0)
-            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t2), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t5), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t6), detail::zero_as_min(N_y)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t7), detail::zero_as_min(N_x)), detail::zero_as_min(v_y)), std::fabs(t8)), detail::least(detail::most(std::fabs(t10), detail::zero_as_min(t9)), detail::most(detail::most(std::fabs(t13), detail::zero_as_min(q)), detail::zero_as_min(t11))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t15), detail::zero_as_min(t14)), detail::zero_as_min(t9)), std::fabs(t16)), detail::least(detail::most(detail::most(std::fabs(t17), detail::zero_as_min(R)), detail::zero_as_min(w)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(R)), detail::zero_as_min(b)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t19), detail::zero_as_min(R)), detail::zero_as_min(q)), detail::most(std::fabs(t21), detail::zero_as_min(t14))), detail::least(detail::most(std::fabs(t22), detail::zero_as_min(w)), detail::most(std::fabs(t23), detail::zero_as_min(w)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t24), std::fabs(t25)), detail::least(std::fabs(t26), std::fabs(t27))), detail::least(detail::least(std::fabs(t28), std::fabs(t29)), detail::least(std::fabs(t30), std::fabs(t31)))), detail::least(detail::least(detail::least(std::fabs(t32), detail::most(std::fabs(t33), detail::zero_as_min(q))), detail::least(std::fabs(t34), std::fabs(t35))), detail::least(detail::least(std::fabs(t36), std::fabs(t37)), detail::least(std::fabs(t38), detail::most(detail::most(std::fabs(t39), detail::zero_as_min(mu)), detail::zero_as_min(t9))))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t41), std::fabs(t42)), detail::least(std::fabs(t44), std::fabs(t45))), detail::least(detail::least(std::fabs(t46), detail::most(std::fabs(t48), detail::zero_as_min(N_x))), detail::least(detail::most(std::fabs(t50), detail::zero_as_min(t49)), detail::most(std::fabs(t51), detail::zero_as_min(N_x))))), detail::least(detail::least(std::fabs(t52), std::fabs(t53)), detail::least(std::fabs(t54), std::fabs(t55))))), std::numeric_limits<Real>::min());
-        const std::int64_t written = usable & finite & !doubtful;
-        v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
-        v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
-        w_[i] = detail::blend(written, w_out, w_[i]);
-        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-    }
-}
-
-// The pairs collide_wall_rough_batch_2d_fast left to the scalar collide_wall_rough (status underflow: a value it tests for underflow may be
-// below the normal range), each resolved by it, which decides exactly.
-template <class Real>
-inline void collide_wall_rough_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    bool doubtful = false;
-    for (std::size_t i = 0; i < count; ++i)
-        doubtful |= status_[i] == status::underflow;
-    if (!doubtful)
-        return;
-    for (std::size_t i = 0; i < count; ++i) {
-        if (status_[i] != status::underflow)
-            continue;
-        const auto out = collide_wall_rough<Real>(R_[i], q_[i], std::array<Real, 2>{P_x_[i], P_y_[i]}, std::array<Real, 2>{N_x_[i], N_y_[i]}, std::array<Real, 2>{C_x_[i], C_y_[i]}, std::array<Real, 2>{v_x_[i], v_y_[i]}, w_[i], eps_[i], b_[i], mu_[i], fast_t{});
-        v_x_[i] = out.v[0];
-        v_y_[i] = out.v[1];
-        w_[i] = out.w;
-        status_[i] = out.status;
-    }
-}
-
-// collide_wall_rough_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
-// processor's own prefetching, following so many arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_wall_rough_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t b = 0;
-    for (; b + block <= count; b += block) {
-        if (b + ahead < count) {
-            IMPACT_PREFETCH(R_ + b + ahead, 0);
-            IMPACT_PREFETCH(q_ + b + ahead, 0);
-            IMPACT_PREFETCH(P_x_ + b + ahead, 0);
-            IMPACT_PREFETCH(P_y_ + b + ahead, 0);
-            IMPACT_PREFETCH(N_x_ + b + ahead, 0);
-            IMPACT_PREFETCH(N_y_ + b + ahead, 0);
-            IMPACT_PREFETCH(C_x_ + b + ahead, 0);
-            IMPACT_PREFETCH(C_y_ + b + ahead, 0);
-            IMPACT_PREFETCH(v_x_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_y_ + b + ahead, 1);
-            IMPACT_PREFETCH(w_ + b + ahead, 1);
-            IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            IMPACT_PREFETCH(b_ + b + ahead, 0);
-            IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
-                IMPACT_PREFETCH(status_ + b + ahead, 1);
-        }
-        collide_wall_rough_batch_2d_fast<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_wall_rough_batch_2d_fast_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    }
-    collide_wall_rough_batch_2d_fast<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_wall_rough_batch_2d_fast_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-}
-
-} // namespace detail
-
-/// collide_wall_rough_batch(data, impact::fast): collide_wall_rough_batch in the fast form, each result bit for bit
-/// the scalar collide_wall_rough(..., impact::fast)'s (compiled alike, e.g. -ffp-contract=off).
+/// collide_wall_rough_batch(data, impact::fast): the fast form of collide_wall_rough_batch, which is its accurate form.
 template <class Real>
 inline void collide_wall_rough_batch(const collide_wall_rough_batch_data<Real, 2>& data, fast_t) noexcept
 {
-    if (data.status)
-        detail::collide_wall_rough_batch_2d_fast_ahead<Real, true>(data.count, data.R, data.q, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.w, data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_wall_rough_batch_2d_fast_ahead<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.w, data.eps, data.beta, data.mu, nullptr);
+    collide_wall_rough_batch(data);
 }
 
 } // namespace impact

@@ -13,7 +13,7 @@ namespace impact {
 ///   v_1par: speed of the cue ball along the line of action before the collision (positive, in m s^-1)
 ///   v_1perp: speed of the cue ball across the line of action (an off-centre hit) (positive, in m s^-1)
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
-/// theta is computed in the form "atan2(2*v_1perp, (1 - eps)*v_1par)": at most 1.29 ulps in double on 4200 samples.
+/// theta is computed in the form "atan2(2*v_1perp, (1 - eps)*v_1par)": at most 1.39 ulps in double on 4200 samples.
 /// A quiet NaN when the inputs are refused, for the first of these reasons that applies:
 ///   invalid_restitution: eps outside [0, 1]
 ///   invalid_speed: v_par, v_perp not positive and finite
