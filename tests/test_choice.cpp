@@ -184,7 +184,8 @@ BOOST_AUTO_TEST_CASE(the_condition_of_cases_is_compensated_with_its_branches)
     const engine::term_order order({a, b, c, d});
     const GiNaC::ex gap = a * b - c * d;
     const std::vector<GiNaC::ex> cases = {engine::select_positive(gap, 1, -1),
-                                          engine::select_positive(GiNaC::abs(gap) - GiNaC::pow(2, -61), 1, -1)};
+                                          engine::select_positive(GiNaC::abs(gap) - GiNaC::pow(2, -61), 1, -1),
+                                          engine::select_positive(GiNaC::abs(c * d - a * b) - GiNaC::pow(2, -61), 1, -1)};
     const std::vector<double> x = {1 + std::ldexp(1.0, -30), 1 + std::ldexp(1.0, -30), 1, 1 + std::ldexp(1.0, -29)};
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const compile::program plain = compile::compile_program({cases[i]}, {a, b, c, d}, order);

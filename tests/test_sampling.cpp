@@ -234,8 +234,46 @@ BOOST_AUTO_TEST_CASE(kernels_without_a_line_of_approach_get_no_grazing_regime)
                    (std::vector<std::string>{"ordinary", "v_par, v_perp over 12 decades", "eps near 0", "eps near 1",
                                              "one of v_par, v_perp 1e-12 to 1e-4 of its draw"}),
                boost::test_tools::per_element());
-    for (const verify::sample* s : scatter.in("one of v_par, v_perp 1e-12 to 1e-4 of its draw")) {
-        const double small = std::min(s->inputs[0], s->inputs[1]), large = std::max(s->inputs[0], s->inputs[1]);
-        BOOST_TEST(small <= 1e-4 * 100 * 100 * large);   // 1e-4 of a draw within 1e-2 .. 1e2 of the other's
+    // Each drawn over 1e-2 .. 1e2, one then scaled by 1e-12 .. 1e-4: on most samples under
+    // 1e-4 of the other (in an ordinary draw, never: two draws are at most 1e4 apart).
+    auto share_tiny = [&](const std::string& regime) {
+        std::size_t n = 0;
+        const auto in = scatter.in(regime);
+        for (const verify::sample* s : in)
+            n += std::min(s->inputs[0], s->inputs[1]) < 1e-4 * std::max(s->inputs[0], s->inputs[1]);
+        return static_cast<double>(n) / static_cast<double>(in.size());
+    };
+    BOOST_TEST(share_tiny("one of v_par, v_perp 1e-12 to 1e-4 of its draw") >= 0.8);
+    BOOST_TEST(share_tiny("ordinary") == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_fixed_sphere_s_kernel_keeps_the_file_s_regimes_in_the_limit)
+{
+    // collide_rough with M = +infinity: inputs m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M,
+    // w_m, eps, beta, mu. As M grows, m_r -> m and 1/m_t -> 1/m + 1/(q_m m): the sticking
+    // boundary is (1 + beta) q_m m |g_t| / (1 + q_m) = mu (1 + eps) m g_n.
+    const drawn& d = samples_of("rough_plane");
+    const engine::kernel& fixed = d.kernel->limits.front();
+    BOOST_REQUIRE_EQUAL(fixed.fixed_mass, "M");
+    const std::vector<verify::sample> samples = verify::draw_samples(fixed, 4200, 777, d.order);
+    std::size_t boundary = 0, ratio = 0;
+    for (const verify::sample& s : samples) {
+        std::vector<double> x = s.inputs;
+        x.insert(x.begin(), 1.0);   // M's slot, unused below
+        const rough_pair p(x);
+        if (s.regime == "at the sticking boundary") {
+            const long double stick = (1 + p.beta) * p.q_m * p.m / (1 + p.q_m) * std::fabs(p.g_t());
+            const long double gap = p.mu * (1 + p.eps) * p.m * p.g_n() / stick - 1;
+            BOOST_TEST(std::fabs(gap) <= 1.01e-12L, "mu J_n / J_stick - 1 = " << static_cast<double>(gap));
+            ++boundary;
+        }
+        if (s.regime == "|g_t|/g_n from 1e-8 to 1e8") {
+            const long double r = std::fabs(p.g_t() / p.g_n());
+            BOOST_TEST(r >= 1e-8L * (1 - 1e-4L));
+            BOOST_TEST(r <= 1e8L * (1 + 1e-4L));
+            ++ratio;
+        }
     }
+    BOOST_TEST(boundary > 200u);
+    BOOST_TEST(ratio > 200u);
 }

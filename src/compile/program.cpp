@@ -143,7 +143,9 @@ private:
     {
         const int h = op(opcode::sqrt, a.hi);
         // In a condition of cases, no division: the kernel's divisors there are selected by
-        // the condition, and must all come before its first division.
+        // the condition, and must all come before its first division. The root of the leading
+        // part, uncorrected: the one the rest of the kernel takes too (rounding the radicand
+        // first would cost a square root of its own, for no better figure in verification.md).
         if (in_condition_)
             return {h, -1};
         correcting_ = true;
@@ -247,7 +249,9 @@ private:
             // the condition compensated too: near the cases' boundary its plain value can
             // take the wrong sign, and the case taken would then be off by the rounding of
             // the condition (several ulps of the output where the cases meet). Its square
-            // roots are not corrected (that needs a division, see dd_sqrt).
+            // roots are not corrected (that needs a division, see dd_sqrt). An output of the
+            // same kernel compiled plainly tests the plain condition, and may take the other
+            // case a hair from the boundary: the cases meet there, so that costs ulps only.
             const bool outer = in_condition_;
             in_condition_ = true;
             const int condition = rounded(compensated(e.op(0)));
@@ -263,7 +267,10 @@ private:
             correcting_ = false;
             return {hi, lo};
         }
-        // |x|: the pair's sign is its leading part's.
+        // |x|: the pair's sign is its leading part's. As a select, |+0| is -0 (std::fabs gives
+        // +0, but a call costs more where it is a divisor: the plain one is then computed
+        // apart); |x| is compared and divided by, where a zero's sign changes nothing taken
+        // (a zero slip sticks, and the sliding case that divides by it is discarded).
         if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
             const pair x = compensated(e.op(0));
             const pair negated = dd_neg(x);

@@ -196,7 +196,7 @@ void print_fast_forwarding(std::string& out, const kernel_plan& plan)
     const engine::kernel& k = *plan.kernel;
     const char* comment = k.limit_of.empty() ? "///" : "//";
     out += fmt::format("\n{0} {1}({2}, impact::fast): the fast form of {1}, which is\n"
-                       "{0} its accurate form: no candidate form is cheaper within the fast bounds (verification.md).\n",
+                       "{0} its accurate form: no form within the fast bounds is cheaper than it (verification.md).\n",
                        comment, k.name, fmt::join(parameter_names(k), ", "));
     out += fmt::format("template <class Real>\ninline {} {}({}, fast_t) noexcept\n{{\n    return {}<Real>({});\n}}\n",
                        result_type(k), k.name, fmt::join(parameter_list(k), ", "), k.name,

@@ -52,7 +52,8 @@ std::string accuracy_table(const verify::kernel_plan& plan, const std::vector<ve
             const verify::accuracy& a = *in_type[t];
             out += fmt::format("| `{}` | {} | {} | {:.3f} | {:.2f} | {:g}{} | {} | {} | {} |\n", cp.name, types[t],
                                a.samples, a.mean_ulps, a.max_ulps, (o.*bound)[t], (o.*because)[t].empty() ? "" : " (set)",
-                               table_cell(a.worst_regime), scale_text(o, order), cp.candidates[cp.*form].label);
+                               table_cell(a.worst_regime), table_cell(scale_text(o, order)),
+                               table_cell(cp.candidates[cp.*form].label));
         }
     }
     return out;

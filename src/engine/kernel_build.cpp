@@ -208,8 +208,15 @@ public:
         }
         for (const spec::kernel_guard& g : spec_kernel.guards)
             k.guards.push_back(make_guard(k, g));
-        for (const spec::sampling_regime& r : spec_kernel.regimes)
+        // Each regime's name names it alone in verification.md, beside the built-in ones.
+        std::set<std::string> regime_names = {"ordinary", "nearly grazing", "nearly head-on", "nearly equal velocities"};
+        for (const spec::sampling_regime& r : spec_kernel.regimes) {
+            if (!regime_names.insert(r.name.value).second)
+                throw error(r.name.where, fmt::format("kernel '{}' has a regime named '{}' already: give it a name "
+                                                      "of its own",
+                                                      k.name, r.name.value));
             k.regimes.push_back(make_regime(k, r));
+        }
         if (k.batch)
             for (const kernel_output& o : k.outputs) {
                 const kernel_parameter* same = k.find_parameter(o.member);
@@ -296,9 +303,18 @@ public:
         for (sampling_regime r : k.regimes) {
             if (r.input.is_equal(M))
                 continue;   // the input it sets is no longer one
-            const std::string what = fmt::format("regime '{}'", r.name);
-            r.offset = limit_of(r.offset / r.slope, what);
-            r.denominator = limit_of(r.denominator / r.slope, what);
+            auto regime_limit = [&](const GiNaC::ex& e) {
+                const std::optional<GiNaC::ex> l = limit_at_infinity(e, M, given, memo);
+                if (!l)
+                    throw error(r.where, fmt::format("kernel '{}': regime '{}' has no finite limit as {} -> "
+                                                     "infinity (fixed = [\"{}\"]): what it sets its input to grows "
+                                                     "without bound",
+                                                     k.name, r.name, mass.value, mass.value));
+                return *l;
+            };
+            r.offset = regime_limit(r.offset / r.slope);
+            if (r.what == sampling_regime::kind::ratio)
+                r.denominator = regime_limit(r.denominator / r.slope);
             r.slope = 1;
             lk.regimes.push_back(std::move(r));
         }
@@ -496,7 +512,7 @@ private:
     }
 
     void require_inputs(const kernel& k, const GiNaC::ex& value, const std::string& member,
-                        const source_location& where) const
+                        const source_location& where, const char* what = "output") const
     {
         // The symbols in `value`, gathered in one walk of it (not one walk a quantity).
         std::set<GiNaC::ex, GiNaC::ex_is_less> present;
@@ -506,8 +522,8 @@ private:
         for (const quantity& q : d_.symbols.all()) {
             if (!present.count(q.symbol) || k.find_input(q.name))
                 continue;
-            throw error(where, fmt::format("kernel '{}': output '{}' depends on '{}', which is not among its inputs",
-                                           k.name, member, q.name));
+            throw error(where, fmt::format("kernel '{}': {} '{}' depends on '{}', which is not among its inputs",
+                                           k.name, what, member, q.name));
         }
     }
 
@@ -568,14 +584,14 @@ private:
             same_dimension(a, b, r.ratio[1]);
             quantity = in_kernel(a);
             regime.denominator = in_kernel(b);
-            require_inputs(k, regime.denominator, "regime " + regime.name, r.ratio[1].where);
+            require_inputs(k, regime.denominator, regime.name, r.ratio[1].where, "regime");
             if (regime.denominator.has(regime.input))
                 throw error(r.ratio[1].where, fmt::format("regime '{}': '{}' depends on '{}', which the regime sets",
                                                           regime.name, r.ratio[1].value, r.set.value));
             regime.from = r.from;
             regime.to = r.to;
         }
-        require_inputs(k, quantity, "regime " + regime.name, written.where);
+        require_inputs(k, quantity, regime.name, written.where, "regime");
         regime.slope = quantity.diff(GiNaC::ex_to<GiNaC::symbol>(regime.input));
         if (regime.slope.is_zero() || regime.slope.has(regime.input))
             throw error(written.where, fmt::format("regime '{}': '{}' must enter '{}' as a multiple of it plus what "

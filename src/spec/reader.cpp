@@ -356,6 +356,14 @@ sampling_regime read_sampling_regime(table_reader r)
         throw error(r.where(), fmt::format("regime '{}' needs either ratio = [\"A\", \"B\"] or boundary = "
                                            "\"lhs = rhs\", not {}",
                                            regime.name.value, regime.boundary ? "both" : "neither"));
+    // A field of the other kind of regime does not apply.
+    const std::vector<std::string> others =
+        regime.boundary ? std::vector<std::string>{"from", "to"} : std::vector<std::string>{"within"};
+    for (const std::string& other : others)
+        if (r.has(other))
+            throw error(r.where_of(other), fmt::format("regime '{}' {}: '{}' does not apply (give {})", regime.name.value,
+                                                       regime.boundary ? "approaches a boundary" : "spans a ratio",
+                                                       other, regime.boundary ? "within" : "from and to"));
     if (!regime.ratio.empty()) {
         if (regime.ratio.size() != 2)
             throw error(r.where_of("ratio"), fmt::format("regime '{}': ratio = [\"A\", \"B\"] names two "

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 namespace impact::verify {
 namespace {
@@ -240,7 +241,7 @@ private:
         for (std::size_t i = 0; i < l_.quantities.size(); ++i)
             if (l_.quantities[i]->symbol.is_equal(symbol))
                 return i;
-        return 0;   // the engine checked that the regime sets an input
+        throw std::logic_error("a kernel's regime sets no input of it");   // the engine checks it does
     }
 
     // Every input drawn from its domain, as the regime asks.

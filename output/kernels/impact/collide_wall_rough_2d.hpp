@@ -604,7 +604,7 @@ inline void collide_wall_rough_batch(const collide_wall_rough_batch_data<Real, 2
 }
 
 /// collide_wall_rough(R, q, P, n, C, v, w, eps, beta, mu, impact::fast): the fast form of collide_wall_rough, which is
-/// its accurate form: no candidate form is cheaper within the fast bounds (verification.md).
+/// its accurate form: no form within the fast bounds is cheaper than it (verification.md).
 template <class Real>
 inline collide_wall_rough_result<Real, 2> collide_wall_rough(Real R, Real q, const std::array<Real, 2>& P, const std::array<Real, 2>& n, const std::array<Real, 2>& C, const std::array<Real, 2>& v, Real w, Real eps, Real beta, Real mu, fast_t) noexcept
 {

@@ -52,7 +52,7 @@ inline Real scatter_angle(Real v_par, Real v_perp, Real eps) noexcept
 }
 
 /// scatter_angle(v_par, v_perp, eps, impact::fast): the fast form of scatter_angle, which is
-/// its accurate form: no candidate form is cheaper within the fast bounds (verification.md).
+/// its accurate form: no form within the fast bounds is cheaper than it (verification.md).
 template <class Real>
 inline Real scatter_angle(Real v_par, Real v_perp, Real eps, fast_t) noexcept
 {
