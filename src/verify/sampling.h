@@ -3,7 +3,7 @@
 // Uniform draws miss the inputs that break naive formulas, so each sample is drawn in
 // one of several regimes, taking turns, each named by what it does to the kernel at hand:
 // ordinary values; the positive inputs (masses, radii) over 12 decades instead of 4; each
-// input of an interval (ε, β, q) within 10^-12 of each end, one at a time; where the
+// input of an interval (ε, β, q) near each end (10^-12 to 10^-1 of its width from it), one at a time; where the
 // kernel has a line of approach (two bodies' centres, or a guard on a body's velocity
 // towards a wall, v . N < 0), nearly grazing hits (the relative velocity almost across it)
 // and nearly head-on ones (almost along it); with two velocities, nearly equal ones; and
