@@ -85,12 +85,12 @@ public:
     {
         find_roles(order);
         regimes_.emplace_back("ordinary");
-        if (!positive_slots_.empty()) {
-            std::vector<std::string> names;
-            for (std::size_t i : positive_slots_)
-                names.push_back(parameter_name(i));
-            regimes_.emplace_back(fmt::format("{} over 12 decades", fmt::join(names, ", ")), shape::spread);
-        }
+        std::vector<std::string> positive_names;   // "M, m, R_M, R_m, mu"
+        for (std::size_t i : positive_slots_)
+            positive_names.push_back(parameter_name(i));
+        const std::string positive = fmt::format("{}", fmt::join(positive_names, ", "));
+        if (!positive_slots_.empty())
+            regimes_.emplace_back(positive + " over 12 decades", shape::spread);
         // Each interval input near each end: one input at a time where there are several
         // (the restitution near 1 with the tangential restitution anywhere).
         for (std::size_t i = 0; i < l_.quantities.size(); ++i) {
@@ -107,11 +107,7 @@ public:
         } else if (!two_velocities_ && positive_slots_.size() >= 2) {
             // No bodies, positive inputs (a velocity's parts along and across the line of
             // centres): one tiny next to the others.
-            std::vector<std::string> names;
-            for (std::size_t i : positive_slots_)
-                names.push_back(parameter_name(i));
-            regimes_.emplace_back(fmt::format("one of {} 1e-12 to 1e-4 of its draw", fmt::join(names, ", ")),
-                                  shape::one_tiny);
+            regimes_.emplace_back("one of " + positive + " 1e-12 to 1e-4 of its draw", shape::one_tiny);
         }
         if (two_velocities_)
             regimes_.emplace_back("nearly equal velocities", shape::equal_velocities);
