@@ -617,12 +617,12 @@ bool is_leaf(const instruction& in)
     return in.op == opcode::input || in.op == opcode::constant;
 }
 
-std::vector<int> operands(const instruction& in)
+operand_list operands(const instruction& in)
 {
-    std::vector<int> of;
+    operand_list of;
     for (int operand : {in.a, in.b, in.c})
         if (operand >= 0)
-            of.push_back(operand);
+            of.value[of.count++] = operand;
     return of;
 }
 

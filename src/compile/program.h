@@ -98,8 +98,16 @@ program ordered_for_registers(const program& p);
 /// Whether `in` is an input or a constant (nothing computed).
 bool is_leaf(const instruction& in);
 
+/// The values an instruction reads (at most three), iterable without allocating.
+struct operand_list {
+    int value[3] = {-1, -1, -1};
+    int count = 0;
+    const int* begin() const { return value; }
+    const int* end() const { return value + count; }
+};
+
 /// The values `in` reads.
-std::vector<int> operands(const instruction& in);
+operand_list operands(const instruction& in);
 
 /// Whether `in`'s result can fall below the normal range where its operands are within it,
 /// losing precision: a product, quotient, fused multiply-add or function that is not a

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
+#include <tuple>
 
 namespace impact::compile {
 
@@ -67,47 +69,76 @@ program ordered_for_registers(const program& p)
                 waits[d].push_back(divisor);
     }
 
+    // The scheduler: a value is ready when its operands and what it waits for are done. Of
+    // the ready ones, the first (in the original order) of those that read no input not yet
+    // read and whose oldest operand is oldest, or else the first of those that read one.
+    // A ready value's key changes only when an input it reads is first read.
     constexpr double never = std::numeric_limits<double>::infinity();
     std::vector<bool> done(n, false);
     std::vector<double> since(n, never);  // when a value was computed, or an input first read
     std::vector<int> order;               // the leaves first, as they were
-    for (std::size_t i = 0; i < n; ++i)
+    std::vector<int> pending(n, 0);       // operands and waits not yet done
+    std::vector<std::vector<int>> unblocks(n), readers(n);
+    for (std::size_t i = 0; i < n; ++i) {
         if (is_leaf(p.code[i])) {
             done[i] = true;
             order.push_back(static_cast<int>(i));
+            continue;
         }
-    for (double step = 0; order.size() < n; ++step) {
-        int best = -1;
-        bool best_reads = true;  // reads an input not yet read
-        double best_since = never;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (done[i])
+        for (int operand : operands(p.code[i])) {
+            if (p.code[operand].op == opcode::input)
+                readers[operand].push_back(static_cast<int>(i));
+            if (!is_leaf(p.code[operand])) {
+                ++pending[i];
+                unblocks[operand].push_back(static_cast<int>(i));
+            }
+        }
+        for (int w : waits[i]) {
+            if (is_leaf(p.code[w]))
                 continue;
-            bool ready = true, reads = false;
-            double oldest = never;
-            for (int operand : operands(p.code[i])) {
-                ready = ready && done[operand];
-                if (p.code[operand].op == opcode::input && since[operand] == never)
-                    reads = true;
-                else if (p.code[operand].op != opcode::constant)
-                    oldest = std::min(oldest, since[operand]);
-            }
-            for (int w : waits[i])
-                ready = ready && done[w];
-            if (ready && (best < 0 || (best_reads && !reads) || (!best_reads && !reads && oldest < best_since))) {
-                best = static_cast<int>(i);
-                best_reads = reads;
-                best_since = oldest;
-            }
+            ++pending[i];
+            unblocks[w].push_back(static_cast<int>(i));
         }
-        if (best < 0)
-            return p;  // divisions whose quotients make each other's divisors: no such order
-        for (int operand : operands(p.code[best]))
+    }
+    using key = std::tuple<bool, double, int>;  // reads a new input, oldest operand, index
+    const auto key_of = [&](int i) {
+        bool reads = false;
+        double oldest = never;
+        for (int operand : operands(p.code[i])) {
             if (p.code[operand].op == opcode::input && since[operand] == never)
+                reads = true;
+            else if (p.code[operand].op != opcode::constant)
+                oldest = std::min(oldest, since[operand]);
+        }
+        return reads ? key{true, 0.0, i} : key{false, oldest, i};
+    };
+    std::set<key> ready;
+    std::vector<key> key_now(n);
+    const auto make_ready = [&](int i) {
+        key_now[i] = key_of(i);
+        ready.insert(key_now[i]);
+    };
+    for (std::size_t i = 0; i < n; ++i)
+        if (!done[i] && pending[i] == 0)
+            make_ready(static_cast<int>(i));
+    for (double step = 0; order.size() < n; ++step) {
+        if (ready.empty())
+            return p;  // divisions whose quotients make each other's divisors: no such order
+        const int best = std::get<2>(*ready.begin());
+        ready.erase(ready.begin());
+        for (int operand : operands(p.code[best]))
+            if (p.code[operand].op == opcode::input && since[operand] == never) {
                 since[operand] = step - 0.5;  // read just before the value is computed
+                for (int reader : readers[operand])
+                    if (!done[reader] && reader != best && ready.erase(key_now[reader]) > 0)
+                        make_ready(reader);
+            }
         since[best] = step;
         done[best] = true;
         order.push_back(best);
+        for (int next : unblocks[best])
+            if (--pending[next] == 0)
+                make_ready(next);
     }
 
     std::vector<int> renumbered(n);

@@ -1,8 +1,9 @@
 // The accuracy of a compiled kernel, measured against CLN.
 //
 // For a floating-point type, each sample's inputs are first rounded to that type; the
-// exact outputs at those inputs are computed from the derived results with CLN (exact
-// rational arithmetic, and 60 digits where a root or a function makes them irrational);
+// exact outputs at those inputs are computed from the derived results with CLN to 60
+// significant digits (about 199 bits, in which the inputs and their products are exact:
+// far more than the 64 bits of a long double's ulp, even after a cancellation of 30 digits);
 // the compiled program is run in the type; the difference is counted in ulps of the
 // output's scale: its own exact value (relative), or the largest velocity of the
 // collision, among the inputs and the exact outputs, times a factor (for J, the reduced
