@@ -455,6 +455,27 @@ BOOST_AUTO_TEST_CASE(a_sampling_regime_that_is_not_understood_is_refused_at_its_
                    "derivations/bad.toml:27:7: error: kernel 'gap' has no input 'z'");
 }
 
+BOOST_AUTO_TEST_CASE(a_regime_that_sets_a_vector_is_refused_at_its_place_when_not_understood)
+{
+    // A kernel of a vector input a, then a [[kernel.regime]] from line 22 that sets it.
+    const std::string vec = "id = \"bad\"\ntitle = \"a vector\"\n[[symbol]]\nname = \"a_x\"\n[[symbol]]\n"
+                            "name = \"a_y\"\n[[symbol]]\nname = \"y\"\n[[given]]\nname = \"g\"\n"
+                            "equation = \"y = a_x + 2*a_y\"\nbecause = \"b\"\n[[step]]\nsolve = [\"g\"]\n"
+                            "for = [\"y\"]\n[[result]]\nname = \"y\"\n[[kernel]]\nname = \"vec\"\n"
+                            "inputs = [\"a = [a_x, a_y]\"]\noutputs = [\"y = y\"]\n[[kernel.regime]]\n"
+                            "name = \"r\"\nset = \"a\"\n";
+    // A boundary is approached by one scalar input.
+    expect_refused(vec + "boundary = \"a_x = 2\"\nwithin = 1e-12\n",
+                   "derivations/bad.toml:24:7: error: regime 'r' sets the vector 'a': a boundary is approached by "
+                   "setting one scalar input; a vector input is set by a ratio (ratio = [\"[A_x, A_y, A_z]\", \"B\"])");
+    // Each component of the quantity must be affine in the vector's components.
+    expect_refused(vec + "ratio = [\"[a_x^2, a_y]\", \"1\"]\nfrom = 1\nto = 10\n",
+                   "derivations/bad.toml:25:10: error: regime 'r': 'a' must enter '[a_x^2, a_y]' as a multiple of it "
+                   "plus what does not depend on it, so that one value of it gives the quantity its value");
+    expect_refused(vec + "ratio = [\"[a_x, ]\", \"1\"]\nfrom = 1\nto = 10\n",
+                   "derivations/bad.toml:25:10: error: '[a_x, ]' has an empty component");
+}
+
 BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regeneration)
 {
     const scratch s;

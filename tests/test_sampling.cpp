@@ -12,9 +12,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -51,6 +55,28 @@ const drawn& samples_of(const std::string& id)
         d->samples = verify::draw_samples(*d->kernel, 4200, 12345, d->order);
     }
     return *d;
+}
+
+// The samples of derivation `id`'s first kernel with `regimes` appended to its file (the
+// kernel is the file's last table), derived from a folder of its own.
+drawn samples_with(const std::string& id, const std::string& file, const std::string& regimes)
+{
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::temp_directory_path() / ("impact-test-sampling-" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    {
+        std::ifstream in(std::string(IMPACT_SOURCE_DIR "/derivations/") + file);
+        std::ofstream out(folder / file);
+        out << in.rdbuf() << "\n" << regimes;
+    }
+    engine::library lib = engine::derive_all(engine::read_directory(folder), id);
+    fs::remove_all(folder);
+    engine::term_order order = engine::declaration_order(lib.derived.at(id).symbols);
+    drawn d{std::move(lib), std::move(order), nullptr, {}};
+    d.kernel = &d.lib.derived.at(id).kernels.front();
+    d.samples = verify::draw_samples(*d.kernel, 4200, 12345, d.order);
+    return d;
 }
 
 // The 2D rough kernel's inputs, in its order: M, m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m,
@@ -109,6 +135,66 @@ BOOST_AUTO_TEST_CASE(the_slip_spans_sixteen_decades_of_the_normal_speed)
     }
     BOOST_TEST(smallest < 1e-6L);
     BOOST_TEST(largest > 1e6L);
+}
+
+BOOST_AUTO_TEST_CASE(a_vector_input_sets_a_vector_quantity_s_length)
+{
+    // The 3D rough wall: its spin vector w sets the contact point's slip g_t, a vector in
+    // the wall's plane, to 1e-8 .. 1e8 of the normal speed g_n, along a direction drawn
+    // at random; the quantity is written as its components, G_t = d^2 g_t (d = |N|).
+    const drawn d = samples_with("rough_wall_space", "rough_wall_space.toml",
+                                 "[[kernel.regime]]\nname = \"slip\"\nset = \"w\"\n"
+                                 "ratio = [\"[G_tx, G_ty, G_tz]\", \"s_n*n_norm\"]\nfrom = 1e-8\nto = 1e8\n");
+    // Inputs R, q, P, n, C, v, w, eps, beta, mu. The contact point, -R n from the centre
+    // (n = N/|N|, out of the wall), moves at g = v + w x (-R n); g_n = -g.n (> 0 when
+    // approaching), g_t = g + g_n n.
+    struct parts {
+        long double g_n, g_t[3];
+    };
+    auto slip = [](const verify::sample& s) {
+        const std::vector<double>& x = s.inputs;
+        const long double R = x[0], N[3] = {x[5], x[6], x[7]}, v[3] = {x[11], x[12], x[13]},
+                          w[3] = {x[14], x[15], x[16]};
+        const long double d = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+        const long double n[3] = {N[0] / d, N[1] / d, N[2] / d};
+        const long double g[3] = {v[0] - R * (w[1] * n[2] - w[2] * n[1]), v[1] - R * (w[2] * n[0] - w[0] * n[2]),
+                                  v[2] - R * (w[0] * n[1] - w[1] * n[0])};
+        parts p;
+        p.g_n = -(g[0] * n[0] + g[1] * n[1] + g[2] * n[2]);
+        for (int i = 0; i < 3; ++i)
+            p.g_t[i] = g[i] + p.g_n * n[i];
+        return p;
+    };
+    const auto in = d.in("slip");
+    BOOST_REQUIRE(in.size() > 200u);
+    long double smallest = 1e300L, largest = 0;
+    int z_positive = 0;
+    for (const verify::sample* s : in) {
+        const parts p = slip(*s);   // approaching or not (drawn without the guards' admission)
+        const long double ratio = std::hypot(p.g_t[0], p.g_t[1], p.g_t[2]) / std::fabs(p.g_n);
+        BOOST_TEST(ratio >= 1e-8L * (1 - 1e-3L));
+        BOOST_TEST(ratio <= 1e8L * (1 + 1e-3L));
+        smallest = std::min(smallest, ratio);
+        largest = std::max(largest, ratio);
+        z_positive += p.g_t[2] > 0;
+    }
+    BOOST_TEST(smallest < 1e-6L);
+    BOOST_TEST(largest > 1e6L);
+    // The direction is drawn, not fixed: either sign of a component, about as often.
+    BOOST_TEST(z_positive > static_cast<int>(in.size()) / 4);
+    BOOST_TEST(z_positive < 3 * static_cast<int>(in.size()) / 4);
+    // The spin is changed as little as it can be: its part along n, which leaves g_t as it
+    // is, stays as drawn (a spin across n alone, the smallest that gives g_t, would have
+    // none).
+    int along_n = 0;
+    for (const verify::sample* s : in) {
+        const std::vector<double>& x = s->inputs;
+        const long double N[3] = {x[5], x[6], x[7]}, w[3] = {x[14], x[15], x[16]};
+        const long double along = (w[0] * N[0] + w[1] * N[1] + w[2] * N[2]) / std::hypot(N[0], N[1], N[2]);
+        along_n += std::fabs(along) > 1e-3L * std::hypot(w[0], w[1], w[2]);
+    }
+    BOOST_TEST(along_n > static_cast<int>(in.size()) / 2);
+    BOOST_TEST(verify::regime_names(*d.kernel, d.order).back() == "slip");
 }
 
 BOOST_AUTO_TEST_CASE(a_nearly_central_hit_with_large_spin)

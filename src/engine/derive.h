@@ -199,20 +199,22 @@ struct kernel_guard {
 };
 
 /// A hard region of a kernel's inputs declared by its file (`[[kernel.regime]]`): a
-/// sample drawn in `start` (ordinary when empty) has its input `input` set so that the
-/// quantity `offset + slope*input`, affine in it, is ±10^u times `denominator` (`ratio`,
-/// |quantity/denominator| from `from` to `to`), or zero to within a relative `to` of the
-/// input (`boundary`). Everything is written in the kernel's inputs; `offset`, `slope` and
-/// `denominator` are free of `input`.
+/// sample drawn in `start` (ordinary when empty) has its input set (the components
+/// `inputs`: one for a scalar, a vector's for a vector) so that the quantity, affine in
+/// them (`offsets` + `slopes` times the inputs, one row of slopes per component of the
+/// quantity), is ±10^u times `denominator` (`ratio`, |quantity|/|denominator| from `from`
+/// to `to`; a vector quantity along a direction it can take), or zero to within a relative
+/// `to` of the input (`boundary`, a scalar). Everything is written in the kernel's inputs;
+/// `offsets`, `slopes` and `denominator` are free of the inputs set.
 struct sampling_regime {
     enum class kind { ratio, boundary };
     std::string name;
     source_location where;
     kind what = kind::ratio;
     std::string start;
-    GiNaC::ex input;
-    GiNaC::ex offset;
-    GiNaC::ex slope;
+    std::vector<GiNaC::ex> inputs;
+    std::vector<GiNaC::ex> offsets;
+    std::vector<GiNaC::ex> slopes;   ///< row by row: d quantity_i / d input_j
     GiNaC::ex denominator = 1;
     double from = 0;
     double to = 0;

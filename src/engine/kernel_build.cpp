@@ -301,7 +301,7 @@ public:
         // on the quotients by the slope (the quantity may grow with the mass, as a friction
         // cone's sides do), so those are taken to their limits, the slope then 1.
         for (sampling_regime r : k.regimes) {
-            if (r.input.is_equal(M))
+            if (r.inputs.front().is_equal(M))
                 continue;   // the input it sets is no longer one
             auto regime_limit = [&](const GiNaC::ex& e) {
                 const std::optional<GiNaC::ex> l = limit_at_infinity(e, M, given, memo);
@@ -312,10 +312,20 @@ public:
                                                      k.name, r.name, mass.value, mass.value));
                 return *l;
             };
-            r.offset = regime_limit(r.offset / r.slope);
-            if (r.what == sampling_regime::kind::ratio)
-                r.denominator = regime_limit(r.denominator / r.slope);
-            r.slope = 1;
+            if (r.slopes.size() == 1) {
+                r.offsets.front() = regime_limit(r.offsets.front() / r.slopes.front());
+                if (r.what == sampling_regime::kind::ratio)
+                    r.denominator = regime_limit(r.denominator / r.slopes.front());
+                r.slopes.front() = 1;
+            } else {
+                // A vector: what it sets the inputs to is unchanged when the quantity and
+                // the denominator are divided by the denominator.
+                for (GiNaC::ex& e : r.offsets)
+                    e = regime_limit(e / r.denominator);
+                for (GiNaC::ex& e : r.slopes)
+                    e = regime_limit(e / r.denominator);
+                r.denominator = 1;
+            }
             lk.regimes.push_back(std::move(r));
         }
         GiNaC::exmap numbers;  // lets whose limit is a number
@@ -546,7 +556,8 @@ private:
         return guard;
     }
     // `[[kernel.regime]]`: the quantity that the input `set` makes take its value, written
-    // in the kernel's inputs as offset + slope*input (the input must enter it so).
+    // in the kernel's inputs as offsets + slopes times the input's components (the input
+    // must enter it so). A vector quantity is written "[A_x, A_y, A_z]"; its length is set.
     sampling_regime make_regime(const kernel& k, const spec::sampling_regime& r)
     {
         sampling_regime regime;
@@ -554,12 +565,18 @@ private:
         regime.where = r.name.where;
         regime.start = r.start ? r.start->value : "";
         const kernel_parameter* p = find_parameter(k, r.set);
-        if (p->is_array || p->components.front().range.what == domain::kind::interval)
+        if (!p->is_array && p->components.front().range.what == domain::kind::interval)
             throw error(r.set.where, fmt::format("regime '{}' sets '{}': give a scalar input of the real line or "
                                                  "the positive numbers (an interval's ends have regimes of "
-                                                 "their own)",
+                                                 "their own), or a vector",
                                                  regime.name, r.set.value));
-        regime.input = p->components.front().symbol;
+        if (p->is_array && r.boundary)
+            throw error(r.set.where, fmt::format("regime '{}' sets the vector '{}': a boundary is approached by "
+                                                 "setting one scalar input; a vector input is set by a ratio "
+                                                 "(ratio = [\"[A_x, A_y, A_z]\", \"B\"])",
+                                                 regime.name, r.set.value));
+        for (const quantity& c : p->components)
+            regime.inputs.push_back(c.symbol);
         auto same_dimension = [&](const GiNaC::ex& a, const GiNaC::ex& b, const spec::text& where) {
             const auto da = check_expression(d_.symbols, a, where.where);
             const auto db = check_expression(d_.symbols, b, where.where);
@@ -568,7 +585,7 @@ private:
                                                      d_.symbols.text(a), da->describe(), d_.symbols.text(b),
                                                      db->describe()));
         };
-        GiNaC::ex quantity;
+        std::vector<GiNaC::ex> quantities;
         const spec::text& written = r.boundary ? *r.boundary : r.ratio.front();
         if (r.boundary) {
             const claim_sides sides = d_.symbols.parse_claim(*r.boundary);
@@ -576,30 +593,79 @@ private:
                 throw error(r.boundary->where, "a regime's boundary reads 'lhs = rhs'");
             same_dimension(sides.lhs, sides.rhs, *r.boundary);
             regime.what = sampling_regime::kind::boundary;
-            quantity = in_kernel(sides.lhs - sides.rhs);
+            quantities.push_back(in_kernel(sides.lhs - sides.rhs));
             regime.to = r.within;
         } else {
-            const GiNaC::ex a = d_.symbols.parse(r.ratio[0]);
             const GiNaC::ex b = d_.symbols.parse(r.ratio[1]);
-            same_dimension(a, b, r.ratio[1]);
-            quantity = in_kernel(a);
+            for (const spec::text& component : vector_components(r.ratio[0])) {
+                const GiNaC::ex a = d_.symbols.parse(component);
+                same_dimension(a, b, r.ratio[1]);
+                quantities.push_back(in_kernel(a));
+            }
             regime.denominator = in_kernel(b);
             require_inputs(k, regime.denominator, regime.name, r.ratio[1].where, "regime");
-            if (regime.denominator.has(regime.input))
-                throw error(r.ratio[1].where, fmt::format("regime '{}': '{}' depends on '{}', which the regime sets",
-                                                          regime.name, r.ratio[1].value, r.set.value));
+            for (const GiNaC::ex& input : regime.inputs)
+                if (regime.denominator.has(input))
+                    throw error(r.ratio[1].where, fmt::format("regime '{}': '{}' depends on '{}', which the regime sets",
+                                                              regime.name, r.ratio[1].value, r.set.value));
             regime.from = r.from;
             regime.to = r.to;
         }
-        require_inputs(k, quantity, regime.name, written.where, "regime");
-        regime.slope = quantity.diff(GiNaC::ex_to<GiNaC::symbol>(regime.input));
-        if (regime.slope.is_zero() || regime.slope.has(regime.input))
-            throw error(written.where, fmt::format("regime '{}': '{}' must enter '{}' as a multiple of it plus what "
-                                                   "does not depend on it, so that one value of it gives the "
-                                                   "quantity its value",
-                                                   regime.name, r.set.value, written.value));
-        regime.offset = quantity.subs(regime.input == 0, GiNaC::subs_options::no_pattern);
+        GiNaC::exmap at_zero;
+        for (const GiNaC::ex& input : regime.inputs)
+            at_zero[input] = 0;
+        bool moves = false;
+        for (const GiNaC::ex& quantity : quantities) {
+            require_inputs(k, quantity, regime.name, written.where, "regime");
+            for (const GiNaC::ex& input : regime.inputs) {
+                const GiNaC::ex slope = quantity.diff(GiNaC::ex_to<GiNaC::symbol>(input));
+                bool constant = true;
+                for (const GiNaC::ex& other : regime.inputs)
+                    constant = constant && !slope.has(other);
+                if (!constant)
+                    throw error(written.where, fmt::format("regime '{}': '{}' must enter '{}' as a multiple of it "
+                                                           "plus what does not depend on it, so that one value of "
+                                                           "it gives the quantity its value",
+                                                           regime.name, r.set.value, written.value));
+                moves = moves || !slope.is_zero();
+                regime.slopes.push_back(slope);
+            }
+            regime.offsets.push_back(quantity.subs(at_zero, GiNaC::subs_options::no_pattern));
+        }
+        if (!moves)
+            throw error(written.where, fmt::format("regime '{}': '{}' does not depend on '{}', which the regime sets",
+                                                   regime.name, written.value, r.set.value));
         return regime;
+    }
+
+    // The components of a regime's quantity: "[a, b, c]" (commas between brackets and
+    // parentheses left alone), or the one expression written.
+    static std::vector<spec::text> vector_components(const spec::text& written)
+    {
+        const std::string& s = written.value;
+        const std::size_t open = s.find_first_not_of(' ');
+        const std::size_t close = s.find_last_not_of(' ');
+        if (open == std::string::npos || s[open] != '[' || s[close] != ']')
+            return {written};
+        std::vector<spec::text> parts;
+        int depth = 0;
+        std::size_t start = open + 1;
+        for (std::size_t i = open + 1; i <= close; ++i) {
+            const char c = s[i];
+            if (c == '(' || c == '[')
+                ++depth;
+            else if ((c == ')' || c == ']') && depth > 0)
+                --depth;
+            else if ((c == ',' && depth == 0) || i == close) {
+                spec::text part = written;
+                part.value = s.substr(start, i - start);
+                if (part.value.find_first_not_of(' ') == std::string::npos)
+                    throw error(written.where, fmt::format("'{}' has an empty component", s));
+                parts.push_back(std::move(part));
+                start = i + 1;
+            }
+        }
+        return parts;
     }
 
     const derivation& d_;

@@ -90,7 +90,7 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
     // Everything plan_kernel reads of the kernel, printed in the derivation's term order
     // (GiNaC's own printing changes from run to run), and the build that measures.
     writer w;
-    w.text("kernel choice, format 3");
+    w.text("kernel choice, format 4");
     w.text(cache::program_fingerprint());
     w.count(kernel_samples);
     w.number(target_ulps);
@@ -143,8 +143,12 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
         w.text(r.name);
         w.count(static_cast<std::size_t>(r.what));
         w.text(r.start);
-        for (const GiNaC::ex& e : {r.input, r.offset, r.slope, r.denominator})
-            w.text(order.text(e));
+        for (const std::vector<GiNaC::ex>* part : {&r.inputs, &r.offsets, &r.slopes}) {
+            w.count(part->size());
+            for (const GiNaC::ex& e : *part)
+                w.text(order.text(e));
+        }
+        w.text(order.text(r.denominator));
         w.number(r.from);
         w.number(r.to);
     }

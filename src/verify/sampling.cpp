@@ -74,7 +74,7 @@ struct regime {
     std::size_t slot = 0;                            // near_lower, near_upper: the input
     const engine::sampling_regime* file = nullptr;   // declared
     shape start = shape::ordinary;                   // declared: drawn first as in this
-    std::shared_ptr<compile::program> values;        // declared: offset, slope, denominator
+    std::shared_ptr<compile::program> values;        // declared: offsets, slopes, denominator
 };
 
 // How a kernel's samples are drawn: its inputs' roles and its regimes, in the order they
@@ -122,9 +122,12 @@ public:
                                                      r.name, r.start, k.name));
                 x.start = r.start == "nearly head-on" ? shape::head_on : shape::grazing;
             }
-            x.values = std::make_shared<compile::program>(
-                compile::compile_program({r.offset, r.slope, r.denominator}, k.input_symbols(), order));
-            input_of_[&r] = slot_of(r.input);
+            std::vector<GiNaC::ex> values = r.offsets;
+            values.insert(values.end(), r.slopes.begin(), r.slopes.end());
+            values.push_back(r.denominator);
+            x.values = std::make_shared<compile::program>(compile::compile_program(values, k.input_symbols(), order));
+            for (const GiNaC::ex& input : r.inputs)
+                inputs_of_[&r].push_back(slot_of(input));
             regimes_.push_back(std::move(x));
         }
     }
@@ -341,7 +344,9 @@ private:
     bool set_declared(engine::uniform_stream& s, std::vector<double>& x, const regime& r) const
     {
         const engine::sampling_regime& f = *r.file;
-        const std::size_t slot = input_of_.at(&f);
+        if (f.slopes.size() > 1)
+            return set_vector(s, x, r);
+        const std::size_t slot = inputs_of_.at(&f).front();
         const std::vector<double> v = compile::run<double>(*r.values, x);
         double value = 0;
         if (f.what == engine::sampling_regime::kind::ratio) {
@@ -361,6 +366,115 @@ private:
         return true;
     }
 
+    // A quantity of several components, or an input of several (a spin vector): the inputs
+    // set so that the quantity has the length ±10^u |denominator|, along a direction drawn
+    // among those the inputs can give it, changed as little as they can be from their
+    // draw (the part that does not change the quantity, such as a spin along the normal,
+    // kept). The slopes' columns are made orthonormal (Gram-Schmidt, the inputs'
+    // combinations carried along, a column that adds no direction giving one that changes
+    // nothing); the inputs first cancel the quantity's offset, then add the length asked
+    // along the direction.
+    bool set_vector(engine::uniform_stream& s, std::vector<double>& x, const regime& r) const
+    {
+        const engine::sampling_regime& f = *r.file;
+        const std::vector<std::size_t>& slots = inputs_of_.at(&f);
+        const std::size_t m = f.offsets.size(), n = slots.size();
+        const std::vector<double> v = compile::run<double>(*r.values, x);
+        const auto dot = [](const std::vector<double>& a, const std::vector<double>& b) {
+            double sum = 0;
+            for (std::size_t i = 0; i < a.size(); ++i)
+                sum += a[i] * b[i];
+            return sum;
+        };
+        std::vector<std::vector<double>> basis, inputs;   // basis[k] = slopes times inputs[k]
+        std::vector<std::vector<double>> unseen;          // orthonormal: slopes times each = 0
+        double largest = 0;
+        for (std::size_t j = 0; j < n; ++j) {
+            std::vector<double> column(m);
+            for (std::size_t i = 0; i < m; ++i)
+                column[i] = v[m + i * n + j];
+            largest = std::max(largest, std::sqrt(dot(column, column)));
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+            std::vector<double> w(m), z(n, 0.0);
+            for (std::size_t i = 0; i < m; ++i)
+                w[i] = v[m + i * n + j];
+            z[j] = 1;
+            for (int pass = 0; pass < 2; ++pass)   // twice: orthogonal to the rounding too
+                for (std::size_t k = 0; k < basis.size(); ++k) {
+                    const double c = dot(basis[k], w);
+                    for (std::size_t i = 0; i < m; ++i)
+                        w[i] -= c * basis[k][i];
+                    for (std::size_t i = 0; i < n; ++i)
+                        z[i] -= c * inputs[k][i];
+                }
+            const double size = std::sqrt(dot(w, w));
+            if (!(size > 1e-9 * largest)) {
+                for (int pass = 0; pass < 2; ++pass)
+                    for (const std::vector<double>& u : unseen) {
+                        const double c = dot(u, z);
+                        for (std::size_t i = 0; i < n; ++i)
+                            z[i] -= c * u[i];
+                    }
+                const double length = std::sqrt(dot(z, z));
+                if (length > 0) {
+                    for (double& e : z)
+                        e /= length;
+                    unseen.push_back(std::move(z));
+                }
+                continue;
+            }
+            for (double& e : w)
+                e /= size;
+            for (double& e : z)
+                e /= size;
+            basis.push_back(std::move(w));
+            inputs.push_back(std::move(z));
+        }
+        if (basis.empty())
+            return false;
+        const std::vector<double> offset(v.begin(), v.begin() + static_cast<long>(m));
+        std::vector<double> left = offset;   // what the inputs cannot cancel
+        std::vector<double> set(n, 0.0);
+        for (std::size_t k = 0; k < basis.size(); ++k) {
+            const double c = dot(basis[k], offset);
+            for (std::size_t i = 0; i < m; ++i)
+                left[i] -= c * basis[k][i];
+            for (std::size_t i = 0; i < n; ++i)
+                set[i] -= c * inputs[k][i];
+        }
+        const double length = decades(s, std::log10(f.from), std::log10(f.to)) * std::abs(v[m + m * n]);
+        if (std::sqrt(dot(left, left)) > 1e-3 * length)
+            return false;   // a part of the quantity the inputs cannot change is larger than asked
+        std::vector<double> direction(basis.size());
+        double norm = 0;
+        while (!(norm > 0.1)) {   // uniform over the directions the inputs reach
+            for (double& e : direction)
+                e = 2 * s.next() - 1;
+            norm = std::sqrt(dot(direction, direction));
+            norm = norm <= 1 ? norm : 0;
+        }
+        for (std::size_t k = 0; k < basis.size(); ++k)
+            for (std::size_t i = 0; i < n; ++i)
+                set[i] += length * direction[k] / norm * inputs[k][i];
+        // The drawn inputs' part that changes nothing, in place of the one found.
+        for (const std::vector<double>& u : unseen) {
+            double drawn = 0, found = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                drawn += u[i] * x[slots[i]];
+                found += u[i] * set[i];
+            }
+            for (std::size_t i = 0; i < n; ++i)
+                set[i] += (drawn - found) * u[i];
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!std::isfinite(set[i]))
+                return false;
+            x[slots[i]] = set[i];
+        }
+        return true;
+    }
+
     const engine::kernel& k_;
     const layout l_;
     std::vector<std::size_t> velocity_parameters_, position_parameters_, positive_slots_;
@@ -368,7 +482,7 @@ private:
     bool two_bodies_ = false;
     std::shared_ptr<compile::program> approach_;
     std::vector<regime> regimes_;
-    std::map<const engine::sampling_regime*, std::size_t> input_of_;
+    std::map<const engine::sampling_regime*, std::vector<std::size_t>> inputs_of_;
 };
 
 } // namespace
