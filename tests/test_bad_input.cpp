@@ -474,6 +474,8 @@ BOOST_AUTO_TEST_CASE(a_regime_that_sets_a_vector_is_refused_at_its_place_when_no
                    "plus what does not depend on it, so that one value of it gives the quantity its value");
     expect_refused(vec + "ratio = [\"[a_x, ]\", \"1\"]\nfrom = 1\nto = 10\n",
                    "derivations/bad.toml:25:10: error: '[a_x, ]' has an empty component");
+    expect_refused(vec + "ratio = [\"[(a_x, a_y]\", \"1\"]\nfrom = 1\nto = 10\n",
+                   "derivations/bad.toml:25:10: error: '[(a_x, a_y]' has unbalanced brackets");
 }
 
 BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regeneration)

@@ -114,9 +114,11 @@ program ordered_for_registers(const program& p)
     };
     std::set<key> ready;
     std::vector<key> key_now(n);
+    std::vector<bool> is_ready(n, false);
     const auto make_ready = [&](int i) {
         key_now[i] = key_of(i);
         ready.insert(key_now[i]);
+        is_ready[i] = true;
     };
     for (std::size_t i = 0; i < n; ++i)
         if (!done[i] && pending[i] == 0)
@@ -126,12 +128,15 @@ program ordered_for_registers(const program& p)
             return p;  // divisions whose quotients make each other's divisors: no such order
         const int best = std::get<2>(*ready.begin());
         ready.erase(ready.begin());
+        is_ready[best] = false;
         for (int operand : operands(p.code[best]))
             if (p.code[operand].op == opcode::input && since[operand] == never) {
                 since[operand] = step - 0.5;  // read just before the value is computed
                 for (int reader : readers[operand])
-                    if (!done[reader] && reader != best && ready.erase(key_now[reader]) > 0)
+                    if (is_ready[reader]) {
+                        ready.erase(key_now[reader]);
                         make_ready(reader);
+                    }
             }
         since[best] = step;
         done[best] = true;

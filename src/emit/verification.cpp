@@ -90,7 +90,7 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
                       "velocities where it has two, and the regimes its derivation file declares (a ratio "
                       "over decades, a boundary between cases approached within a hair); compared with "
                       "the derived result evaluated by CLN to 60 significant digits (about 199 bits: the "
-                      "inputs are exact in it, and so are their products) at the same inputs rounded "
+                      "inputs are exact in it, and so are products of two or three of them) at the same inputs rounded "
                       "to the type. Errors are in ulps of the output's "
                       "scale: its exact value, or the largest velocity magnitude among the inputs and the "
                       "exact outputs (times the reduced mass for the impulse J). Every output must stay "

@@ -325,6 +325,11 @@ public:
                 for (GiNaC::ex& e : r.slopes)
                     e = regime_limit(e / r.denominator);
                 r.denominator = 1;
+                if (std::all_of(r.slopes.begin(), r.slopes.end(), [](const GiNaC::ex& e) { return e.is_zero(); }))
+                    throw error(r.where, fmt::format("kernel '{}': regime '{}' sets nothing as {} -> infinity "
+                                                     "(fixed = [\"{}\"]): its quantity grows more slowly than "
+                                                     "its denominator",
+                                                     k.name, r.name, mass.value, mass.value));
             }
             lk.regimes.push_back(std::move(r));
         }
@@ -565,7 +570,8 @@ private:
         regime.where = r.name.where;
         regime.start = r.start ? r.start->value : "";
         const kernel_parameter* p = find_parameter(k, r.set);
-        if (!p->is_array && p->components.front().range.what == domain::kind::interval)
+        if (std::any_of(p->components.begin(), p->components.end(),
+                        [](const quantity& c) { return c.range.what == domain::kind::interval; }))
             throw error(r.set.where, fmt::format("regime '{}' sets '{}': give a scalar input of the real line or "
                                                  "the positive numbers (an interval's ends have regimes of "
                                                  "their own), or a vector",
@@ -652,6 +658,8 @@ private:
         std::size_t start = open + 1;
         for (std::size_t i = open + 1; i <= close; ++i) {
             const char c = s[i];
+            if (i == close && depth != 0)
+                throw error(written.where, fmt::format("'{}' has unbalanced brackets", s));
             if (c == '(' || c == '[')
                 ++depth;
             else if ((c == ')' || c == ']') && depth > 0)

@@ -26,7 +26,8 @@ std::vector<GiNaC::numeric> run_exact(const compile::program& p, const std::vect
         case compile::opcode::neg: v[i] = -v[in.a]; break;
         case compile::opcode::fma: v[i] = v[in.a] * v[in.b] + v[in.c]; break;
         case compile::opcode::sqrt: v[i] = GiNaC::sqrt(v[in.a]); break;
-        // Exact: the case whose condition holds at the point.
+        // The case whose condition holds at the point (to 60 digits; where it is 0, the
+        // cases agree, and either gives the value).
         case compile::opcode::select: v[i] = v[in.a].is_positive() ? v[in.b] : v[in.c]; break;
         case compile::opcode::call:
             if (in.function == "acos")

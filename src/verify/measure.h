@@ -2,7 +2,7 @@
 //
 // For a floating-point type, each sample's inputs are first rounded to that type; the
 // exact outputs at those inputs are computed from the derived results with CLN to 60
-// significant digits (about 199 bits, in which the inputs and their products are exact:
+// significant digits (about 199 bits, in which the inputs and products of two or three are exact:
 // far more than the 64 bits of a long double's ulp, even after a cancellation of 30 digits);
 // the compiled program is run in the type; the difference is counted in ulps of the
 // output's scale: its own exact value (relative), or the largest velocity of the

@@ -448,7 +448,9 @@ private:
             return false;   // a part of the quantity the inputs cannot change is larger than asked
         std::vector<double> direction(basis.size());
         double norm = 0;
-        while (!(norm > 0.1)) {   // uniform over the directions the inputs reach
+        for (int tries = 0; !(norm > 0.1); ++tries) {   // uniform over the directions the inputs reach
+            if (tries == 64)
+                return false;
             for (double& e : direction)
                 e = 2 * s.next() - 1;
             norm = std::sqrt(dot(direction, direction));
@@ -467,11 +469,22 @@ private:
             for (std::size_t i = 0; i < n; ++i)
                 set[i] += (drawn - found) * u[i];
         }
+        // The quantity as set: the length asked, to 1e-3 (a column that added no direction
+        // still moves it a hair), and the inputs in their domains.
+        std::vector<double> quantity = offset;
+        for (std::size_t i = 0; i < m; ++i)
+            for (std::size_t j = 0; j < n; ++j)
+                quantity[i] += v[m + i * n + j] * set[j];
+        if (!(std::abs(std::sqrt(dot(quantity, quantity)) / length - 1) <= 1e-3))
+            return false;
         for (std::size_t i = 0; i < n; ++i) {
-            if (!std::isfinite(set[i]))
+            const engine::domain& d = l_.quantities[slots[i]]->range;
+            if (!std::isfinite(set[i]) || (d.what == engine::domain::kind::positive && !(set[i] > 0)) ||
+                (d.what == engine::domain::kind::nonnegative && !(set[i] >= 0)))
                 return false;
-            x[slots[i]] = set[i];
         }
+        for (std::size_t i = 0; i < n; ++i)
+            x[slots[i]] = set[i];
         return true;
     }
 
