@@ -386,6 +386,10 @@ private:
                 sum += a[i] * b[i];
             return sum;
         };
+        const auto take = [](std::vector<double>& a, double c, const std::vector<double>& b) {   // a -= c b
+            for (std::size_t i = 0; i < a.size(); ++i)
+                a[i] -= c * b[i];
+        };
         std::vector<std::vector<double>> basis, inputs;   // basis[k] = slopes times inputs[k]
         std::vector<std::vector<double>> unseen;          // orthonormal: slopes times each = 0
         double largest = 0;
@@ -403,19 +407,14 @@ private:
             for (int pass = 0; pass < 2; ++pass)   // twice: orthogonal to the rounding too
                 for (std::size_t k = 0; k < basis.size(); ++k) {
                     const double c = dot(basis[k], w);
-                    for (std::size_t i = 0; i < m; ++i)
-                        w[i] -= c * basis[k][i];
-                    for (std::size_t i = 0; i < n; ++i)
-                        z[i] -= c * inputs[k][i];
+                    take(w, c, basis[k]);
+                    take(z, c, inputs[k]);
                 }
             const double size = std::sqrt(dot(w, w));
             if (!(size > 1e-9 * largest)) {
                 for (int pass = 0; pass < 2; ++pass)
-                    for (const std::vector<double>& u : unseen) {
-                        const double c = dot(u, z);
-                        for (std::size_t i = 0; i < n; ++i)
-                            z[i] -= c * u[i];
-                    }
+                    for (const std::vector<double>& u : unseen)
+                        take(z, dot(u, z), u);
                 const double length = std::sqrt(dot(z, z));
                 if (length > 0) {
                     for (double& e : z)
@@ -438,10 +437,8 @@ private:
         std::vector<double> set(n, 0.0);
         for (std::size_t k = 0; k < basis.size(); ++k) {
             const double c = dot(basis[k], offset);
-            for (std::size_t i = 0; i < m; ++i)
-                left[i] -= c * basis[k][i];
-            for (std::size_t i = 0; i < n; ++i)
-                set[i] -= c * inputs[k][i];
+            take(left, c, basis[k]);
+            take(set, c, inputs[k]);
         }
         const double length = decades(s, std::log10(f.from), std::log10(f.to)) * std::abs(v[m + m * n]);
         if (std::sqrt(dot(left, left)) > 1e-3 * length)
