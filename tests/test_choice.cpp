@@ -10,6 +10,7 @@
 #include "engine/cases.h"
 #include "engine/library.h"
 #include "verify/choice.h"
+#include "verify/measure.h"
 
 #include <cmath>
 #include <map>
@@ -131,16 +132,18 @@ BOOST_AUTO_TEST_CASE(every_sample_is_one_the_kernel_computes)
     BOOST_TEST(admitted == p.plan.samples.size());
 }
 
-BOOST_AUTO_TEST_CASE(a_compensated_divisor_that_needs_a_division_is_divided_by_plainly)
+BOOST_AUTO_TEST_CASE(a_compensated_divisor_that_needs_a_division_is_tested_after_it)
 {
     // The 3D rough wall (derivations/rough_wall_space.toml): in its sliding case it divides by
-    // the slip's G_t . G_t, where G_t is built on the normal's length |n|. Compensated, the
-    // correction of |n| (a division) is renormalised into G_t's leading part, and a kernel's
-    // guards test every divisor before the first division: the compensated forms divide by
-    // the same divisor computed plainly (the correction then carries the rest). Each is
-    // measured (none passed over), the compensated ones are chosen, better than every plain
-    // form and within the kernel's 4 ulps of the largest velocity (the plain forms miss it:
-    // up to 12 ulps), and the program computes every divisor before it divides.
+    // the slip's length |G_t|, where G_t is built on the normal's length |n|. Compensated, the
+    // correction of |n| (a division) is renormalised into G_t's leading part: that divisor
+    // needs a division, and the kernel tests it once it is computed, after its first
+    // divisions (compile::grouped_divisors), not computed again plainly (G_t . G_t
+    // multiplied out, which cancels to nothing, even below 0, when the sphere spins fast about
+    // the normal). Each candidate is measured (none passed over), the compensated ones are
+    // chosen, better than every plain form and within the kernel's 4 ulps of the largest
+    // velocity (the plain forms miss it: up to 90 ulps), and the program divides by each
+    // group of divisors only once the group is computed.
     const verify::kernel_plan& plan = plan_of("rough_wall_space").plan;
     std::size_t compensated_chosen = 0;
     for (const verify::component_plan& cp : plan.components) {
@@ -155,7 +158,48 @@ BOOST_AUTO_TEST_CASE(a_compensated_divisor_that_needs_a_division_is_divided_by_p
         compensated_chosen += chosen.compensated || chosen.compensated_lets;
     }
     BOOST_TEST(compensated_chosen > 0u);
+    BOOST_TEST(!compile::grouped_divisors(plan.code).late.empty());
     BOOST_TEST(!compile::divides_early(plan.code));
+}
+
+BOOST_AUTO_TEST_CASE(divisors_are_tested_in_two_groups_and_a_refusal_is_measured_as_one)
+{
+    // x/(y + 1/y): y is divided by first (an early divisor, computed without a division),
+    // y + 1/y after (a late one: it needs the division by y).
+    const GiNaC::symbol x("x"), y("y");
+    const engine::term_order order({x, y});
+    const compile::program p = compile::compile_program({x / (y + 1 / y)}, {x, y}, order, {});
+    const compile::divisor_groups groups = compile::grouped_divisors(p);
+    BOOST_TEST_REQUIRE(groups.early.size() == 1u);
+    BOOST_TEST_REQUIRE(groups.late.size() == 1u);
+    BOOST_TEST((p.code[groups.early.front()].op == compile::opcode::input));
+    BOOST_TEST((p.code[groups.late.front()].op == compile::opcode::add));
+    BOOST_TEST(!compile::divides_early(p));
+    // 1/x, then 1/(y y): the division by x comes before y y, an early divisor, is computed;
+    // ordered for registers, both divisors come first.
+    const compile::program early = compile::compile_program({1 / x, 1 / (y * y)}, {x, y}, order, {});
+    BOOST_TEST(compile::divides_early(early));
+    BOOST_TEST(!compile::divides_early(compile::ordered_for_registers(early)));
+    // Two late divisors, y + 1/y and x + 1/x: each division by one waits for both.
+    const compile::program late =
+        compile::ordered_for_registers(compile::compile_program({x / (y + 1 / y), y / (x + 1 / x)}, {x, y}, order, {}));
+    BOOST_TEST(compile::grouped_divisors(late).late.size() == 2u);
+    BOOST_TEST(!compile::divides_early(late));
+    // A kernel refuses a collision where a divisor is below the least normal number over the
+    // type's epsilon (about 9.9e-32 in float): measured, that sample is refused (an infinite
+    // error), not the accurate quotient the program's arithmetic gives (1e-35 here).
+    const std::vector<verify::sample> samples{{"ordinary", {1, 2}}, {"tiny", {1, 1e-35}}};
+    verify::reference ref;
+    ref.mantissa_bits = 24;
+    ref.outputs = {{{0.4, 0}}, {{1e-35, 0}}};
+    ref.scales = {{1}, {1}};
+    const verify::accuracy in_float = verify::measure<float>(p, {0}, samples, ref).front();
+    BOOST_TEST(in_float.refused == 1u);
+    BOOST_TEST(std::isinf(in_float.max_ulps));
+    BOOST_TEST(in_float.worst_regime == "tiny");
+    const verify::accuracy in_double = verify::measure<double>(p, {0}, samples, ref).front();
+    BOOST_TEST(in_double.refused == 0u);
+    BOOST_TEST(in_double.max_ulps < 1);
 }
 
 BOOST_AUTO_TEST_CASE(a_power_of_three_halves_is_a_square_root_and_a_product)

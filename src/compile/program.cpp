@@ -118,28 +118,27 @@ private:
         return {p, e};
     }
 
-    // q1 = a/b, corrected by the remainder a - q1 b over b. Where `by`, what both divide by,
-    // is b.hi, the remainder's leading part a.hi - q1 b.hi is exact through fma (q1 being
-    // a.hi/b.hi rounded). Two divisions, not one through 1/b: a reciprocal overflows where
-    // the quotient need not. Where b.hi needs a division, `by` is b computed plainly (see
-    // `divisor`): the remainder is then rounded once, and q1 + lo is still a/b to about the
-    // square of the plain value's relative error (a few ulps: it must be well below 1).
-    pair dd_div(pair a, pair b, int by)
+    // q1 = a/b, corrected by the remainder a - q1 b over b: its leading part a.hi - q1 b.hi
+    // is exact through fma (q1 being a.hi/b.hi rounded). Two divisions, not one through 1/b:
+    // a reciprocal overflows where the quotient need not. b.hi may itself need a division
+    // (a compensated |g_t| built on |n|, whose root is corrected by one): a kernel then tests
+    // it after its first divisions (compile::grouped_divisors), not before them all, for
+    // that value computed plainly can be far off (of the other sign, where a sum cancels).
+    pair dd_div(pair a, pair b)
     {
-        const int q1 = op(opcode::div, a.hi, by);
+        const int q1 = op(opcode::div, a.hi, b.hi);
         correcting_ = true;
         const int minus_q1 = op(opcode::neg, q1);
         int r = add_lo(op(opcode::fma, minus_q1, b.hi, a.hi), a.lo);
         if (b.lo >= 0)
             r = op(opcode::fma, minus_q1, b.lo, r);
-        const int lo = op(opcode::div, r, by);
+        const int lo = op(opcode::div, r, b.hi);
         correcting_ = false;
         return {q1, lo};
     }
 
-    // sqrt(a) = h + (a - h^2)/(2h); the correction divides by the plain square root where
-    // h needs a division (see `divisor`), `radicand` being a's expression.
-    pair dd_sqrt(pair a, const GiNaC::ex& radicand)
+    // sqrt(a) = h + (a - h^2)/(2h).
+    pair dd_sqrt(pair a)
     {
         const int h = op(opcode::sqrt, a.hi);
         // In a condition of cases, no division: the kernel's divisors there are selected by
@@ -150,35 +149,9 @@ private:
             return {h, -1};
         correcting_ = true;
         const int r = add_lo(op(opcode::fma, op(opcode::neg, h), h, a.hi), a.lo);
-        const int root = divisor(h, [&] { return op(opcode::sqrt, value(radicand)); });
-        const int lo = op(opcode::div, r, op(opcode::add, root, root));
+        const int lo = op(opcode::div, r, op(opcode::add, h, h));
         correcting_ = false;
         return {h, lo};
-    }
-
-    // What to divide by where a compensated value `hi` is the divisor. A kernel tests every
-    // divisor before its first division, so no divisor may need a division; a compensated
-    // value's leading part needs one where a correction that divides (a square root's, a
-    // quotient's) was renormalised into it: a rough wall's slip G_t is built on |n|, whose
-    // square root is corrected by a division, and the sliding impulse divides by G_t . G_t.
-    // There the divisor is the same quantity computed plainly (`plain`, under the options
-    // without compensation), which needs none. The plain value must be close to the
-    // compensated one: a divisor that cancels can be far off plainly (even of the other
-    // sign), so a form dividing by one is only as good as its measured accuracy shows; the
-    // divisors met so far are sums of squares and their roots.
-    template <class Plain>
-    int divisor(int hi, Plain plain)
-    {
-        if (!after_division_[static_cast<std::size_t>(hi)])
-            return hi;
-        const compile_options saved = options_;
-        const bool was_correcting = correcting_;
-        options_.compensated = options_.compensated_lets = false;
-        correcting_ = false;
-        const int v = plain();
-        options_ = saved;
-        correcting_ = was_correcting;
-        return v;
     }
 
     pair dd_constant(const GiNaC::numeric& n)
@@ -235,8 +208,7 @@ private:
             for (const auto& t : f.denominator)
                 bottom = bottom.hi < 0 ? compensated_factor(t) : dd_mul(bottom, compensated_factor(t));
             const pair v = bottom.hi < 0 ? top
-                                         : dd_div(top, bottom,
-                                                  divisor(bottom.hi, [&] { return product_of(f.denominator); }));
+                                         : dd_div(top, bottom);
             return f.negated ? dd_neg(v) : v;
         }
         if (GiNaC::is_a<GiNaC::power>(e)) {
@@ -294,7 +266,7 @@ private:
             const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(t.exponent);
             if (n.is_negative()) {
                 const pair b = compensated_factor({t.base, -n});
-                return dd_div({constant(1), -1}, b, divisor(b.hi, [&] { return power({t.base, -n}); }));
+                return dd_div({constant(1), -1}, b);
             }
             if (n.is_integer() && n <= 4) {
                 const pair x = compensated(t.base);
@@ -304,9 +276,9 @@ private:
                 return r;
             }
             if (n == GiNaC::numeric(1, 2))
-                return dd_sqrt(compensated(t.base), t.base);
+                return dd_sqrt(compensated(t.base));
             if (n == GiNaC::numeric(3, 2))   // x sqrt(x), as `power` computes it
-                return dd_mul(compensated(t.base), dd_sqrt(compensated(t.base), t.base));
+                return dd_mul(compensated(t.base), dd_sqrt(compensated(t.base)));
         }
         return {power(t), -1};
     }
@@ -345,10 +317,6 @@ private:
 
     int emit(instruction in)
     {
-        bool after_division = divides(p_, in);
-        for (const int operand : operands(in))
-            after_division = after_division || after_division_[static_cast<std::size_t>(operand)];
-        after_division_.push_back(after_division);
         p_.code.push_back(std::move(in));
         return static_cast<int>(p_.code.size()) - 1;
     }
@@ -551,7 +519,6 @@ private:
     std::map<std::tuple<int, int, int, int>, int> ops_;
     bool correcting_ = false;  // the operations made now are corrections
     bool in_condition_ = false;  // compiling the condition of cases, compensated without divisions
-    std::vector<bool> after_division_;  // whether value i needs a division (not by a constant)
     std::vector<std::pair<int, bool>> branch_;  // the branches being compiled: condition, taken where positive
     std::map<std::vector<std::pair<int, bool>>, int> branch_keys_;
     int branch_key_ = 0;       // 0 outside every branch
@@ -637,16 +604,33 @@ bool divides(const program& p, const instruction& in)
     return in.op == opcode::div && p.code[in.b].op != opcode::constant;
 }
 
-// The values p divides by that are not constants, each once, in the order of their divisions.
+divisor_groups grouped_divisors(const program& p)
+{
+    std::vector<bool> needs_division(p.code.size(), false);
+    for (std::size_t i = 0; i < p.code.size(); ++i) {
+        needs_division[i] = divides(p, p.code[i]);
+        for (int operand : operands(p.code[i]))
+            needs_division[i] = needs_division[i] || needs_division[operand];
+    }
+    divisor_groups groups;
+    for (int d : divisors(p))
+        (needs_division[static_cast<std::size_t>(d)] ? groups.late : groups.early).push_back(d);
+    return groups;
+}
+
 bool divides_early(const program& p)
 {
-    const std::vector<int> by = divisors(p);
-    if (by.empty())
-        return false;
-    const int last_divisor = *std::max_element(by.begin(), by.end());
-    for (std::size_t i = 0; i < p.code.size(); ++i)
-        if (divides(p, p.code[i]))
-            return static_cast<int>(i) < last_divisor;
+    const divisor_groups groups = grouped_divisors(p);
+    const auto last = [](const std::vector<int>& of) { return of.empty() ? -1 : *std::max_element(of.begin(), of.end()); };
+    const int last_early = last(groups.early), last_late = last(groups.late);
+    for (std::size_t i = 0; i < p.code.size(); ++i) {
+        if (!divides(p, p.code[i]))
+            continue;
+        const int at = static_cast<int>(i);
+        const bool by_late = std::find(groups.late.begin(), groups.late.end(), p.code[i].b) != groups.late.end();
+        if (at < last_early || (by_late && at < last_late))
+            return true;
+    }
     return false;
 }
 

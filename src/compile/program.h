@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -89,10 +90,11 @@ std::size_t most_live(const program& p);
 /// instructions in an order that keeps fewer values live at once: every step continues
 /// the oldest unfinished work (the ready instruction whose oldest operand was computed or
 /// first read earliest), and reads an input not yet read only when nothing else is
-/// ready, for the first such instruction of the original order. A division or square
-/// root waits until every divisor that does not need it is computed (see
-/// `cxx_code::divisors_known`); where the divisions need each other's divisors, so that
-/// no order allows that, the program is returned as it is.
+/// ready, for the first such instruction of the original order. A division by an early
+/// divisor, or a square root, waits until every early divisor that does not need it is
+/// computed, and a division by a late divisor until every divisor that does not need it is
+/// (`grouped_divisors`, `cxx_code::divisors_known`); where the divisions need each other's
+/// divisors, so that no order allows that, the program is returned as it is.
 program ordered_for_registers(const program& p);
 
 /// Whether `in` is an input or a constant (nothing computed).
@@ -117,16 +119,29 @@ bool can_underflow(const instruction& in);
 /// Whether `in` divides by a value that is not a constant (one a kernel names and tests).
 bool divides(const program& p, const instruction& in);
 
-/// Whether `p` divides before it has computed every value it divides by (a kernel with
-/// guards tests its divisors before its first division, and so needs them all first).
-bool divides_early(const program& p);
-
 /// The values `p` divides by that are not constants, each once, in the order of their divisions.
 std::vector<int> divisors(const program& p);
 
-/// Runs `p` in the floating-point type `Real`, exactly as the printed C++ does.
+/// A kernel's divisors in the two groups it tests: `early`, those computed without a
+/// division (tested before its first division), and `late`, those that need one (a
+/// compensated |g_t| built on |n|, whose square root is corrected by a division), tested
+/// once all are computed, before the first division by any of them. Each in the order of
+/// their divisions.
+struct divisor_groups {
+    std::vector<int> early;
+    std::vector<int> late;
+};
+divisor_groups grouped_divisors(const program& p);
+
+/// Whether `p` divides before it has computed the values it divides by, as a kernel with
+/// guards tests them (`divisor_groups`): a division before the last early divisor, or a
+/// division by a late divisor before the last late one.
+bool divides_early(const program& p);
+
+/// Every value of `p` run in the floating-point type `Real`, exactly as the printed C++
+/// computes it (`run` keeps the outputs).
 template <class Real>
-std::vector<Real> run(const program& p, const std::vector<Real>& inputs)
+std::vector<Real> run_values(const program& p, const std::vector<Real>& inputs)
 {
     std::vector<Real> v(p.code.size());
     for (std::size_t i = 0; i < p.code.size(); ++i) {
@@ -162,10 +177,34 @@ std::vector<Real> run(const program& p, const std::vector<Real>& inputs)
             break;
         }
     }
+    return v;
+}
+
+/// Runs `p` in the floating-point type `Real`, exactly as the printed C++ does.
+template <class Real>
+std::vector<Real> run(const program& p, const std::vector<Real>& inputs)
+{
+    const std::vector<Real> v = run_values(p, inputs);
     std::vector<Real> out;
     for (int o : p.outputs)
         out.push_back(v[o]);
     return out;
+}
+
+/// Whether a kernel emitted from `p` refuses the inputs whose values (`run_values`) are `v`
+/// as out of range: a divisor below `smallest_divisor` (the least normal number over the
+/// type's epsilon, common.hpp's `detail::smallest_divisor`) or infinite, as its emitted
+/// test decides (`divisors` lists them).
+template <class Real>
+bool divisor_out_of_range(const std::vector<int>& divisors, const std::vector<Real>& v)
+{
+    constexpr Real smallest = std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();
+    for (int d : divisors) {
+        const Real x = std::fabs(v[static_cast<std::size_t>(d)]);
+        if (!(x >= smallest) || !(x <= std::numeric_limits<Real>::max()))
+            return true;
+    }
+    return false;
 }
 
 } // namespace impact::compile

@@ -46,8 +46,14 @@ program ordered_for_registers(const program& p)
 {
     const std::size_t n = p.code.size();
     // What each division or square root waits for: the divisors that do not need it (a
-    // square root: that need no square root, so that two roots never wait for each other).
+    // square root: that need no square root, so that two roots never wait for each other);
+    // a division by an early divisor, or a root, only the early ones (compile::grouped_divisors:
+    // a late divisor needs divisions by early ones, which must not wait for it).
+    const divisor_groups groups = grouped_divisors(p);
     const std::vector<int> divided_by = divisors(p);
+    std::vector<bool> late(n, false);
+    for (int d : groups.late)
+        late[static_cast<std::size_t>(d)] = true;
     std::vector<bool> needs_a_root(n, false);
     for (std::size_t i = 0; i < n; ++i) {
         needs_a_root[i] = p.code[i].op == opcode::sqrt;
@@ -64,7 +70,8 @@ program ordered_for_registers(const program& p)
         for (std::size_t i = d + 1; i < n; ++i)
             for (int operand : operands(p.code[i]))
                 needs_d[i] = needs_d[i] || needs_d[operand];
-        for (int divisor : divided_by)
+        const bool by_late = !root && late[static_cast<std::size_t>(p.code[d].b)];
+        for (int divisor : by_late ? divided_by : groups.early)
             if (!needs_d[divisor] && !(root && needs_a_root[divisor]))
                 waits[d].push_back(divisor);
     }

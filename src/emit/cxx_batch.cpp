@@ -408,19 +408,28 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     // written only if finite (`written`), as the scalar kernel decides. (`&`, not `&&`: with
     // `&&`, GCC tested a divisor's range only where the tests before it held, a comparison
     // that may trap made conditional, and did not vectorise without -fno-trapping-math.)
-    const auto declare_usable = [&] {
-        std::vector<std::string> in_range{"resolved"};
-        for (const std::string& test : divisors_in_range(code))
-            in_range.push_back(test);
-        out += fmt::format("        const std::int64_t usable = {};\n", fmt::join(in_range, " & "));
+    // Divisors that need a division (compile::grouped_divisors) are tested once all are
+    // computed, in `usable_late`, which is `usable` from there on.
+    const bool late = !code.late_divisors.empty();
+    const std::string usable = late ? "usable_late" : "usable";
+    const auto declare_usable = [&](std::size_t known) {
+        if (known == code.divisors_known) {
+            std::vector<std::string> in_range{"resolved"};
+            for (const std::string& test : divisors_in_range(code))
+                in_range.push_back(test);
+            out += fmt::format("        const std::int64_t usable = {};\n", fmt::join(in_range, " & "));
+        }
+        if (late && known == code.late_divisors_known)
+            out += fmt::format("        const std::int64_t usable_late = usable & {};\n",
+                               fmt::join(divisors_in_range(code, true), " & "));
     };
-    if (with_status && code.divisors_known == 0)
-        declare_usable();
+    if (with_status)
+        declare_usable(0);
     for (std::size_t s = 0; s < code.statements.size(); ++s) {
         if (for_outputs[code.statement_values[s]])
             out += "        " + code.statements[s] + "\n";
-        if (with_status && s + 1 == code.divisors_known)
-            declare_usable();
+        if (with_status)
+            declare_usable(s + 1);
     }
     std::vector<std::pair<std::string, std::string>> writes;  // target, value
     std::size_t value = 0;
@@ -454,7 +463,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // Written only in range and where nothing underflowed, as the scalar kernel decides:
         // out_of_range first, then underflow.
         if (code.underflows.empty()) {
-            out += fmt::format("        const std::int64_t written = usable & {};\n", finite);
+            out += fmt::format("        const std::int64_t written = {} & {};\n", usable, finite);
         } else {
             out += fmt::format("        const std::int64_t finite = {};\n", finite);
             out += range_test;
@@ -462,7 +471,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             out += fmt::format("        if constexpr ({}_k<Real> < 0)\n"
                                "            doubtful = !detail::at_least({}, std::numeric_limits<Real>::min());\n",
                                loop, least_magnitude(code));
-            out += "        const std::int64_t written = usable & finite & !doubtful;\n";
+            out += fmt::format("        const std::int64_t written = {} & finite & !doubtful;\n", usable);
         }
         // Every pair's velocities stored, the old ones where not written: a store only
         // where `written` held needs a masked store (AArch64 has none), and GCC made one of
@@ -476,8 +485,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         else if (code.underflows.empty())  // always: a fixed sphere is found by its status (`settle`)
             out += fmt::format("        status_[i] = detail::blend(resolved & !written, status::{}, outcome);\n", out_of_range);
         else  // always: a doubtful pair is found by its status (`settle`)
-            out += fmt::format("        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::{}, status::{}), outcome);\n",
-                               underflow, out_of_range);
+            out += fmt::format("        status_[i] = detail::blend(resolved & !written, detail::blend({} & finite, status::{}, status::{}), outcome);\n",
+                               usable, underflow, out_of_range);
     } else {
         for (const auto& [target, result] : writes)
             out += fmt::format("        {}_[i] = {};\n", target, result);

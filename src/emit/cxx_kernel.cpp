@@ -329,19 +329,25 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
             continue;
         print_refusal(out, k, {condition_failure(code.outputs[condition++], g)}, g.status);
     }
-    const auto refuse_divisors_out_of_range = [&] {
+    // Divisors computed without a division tested before the first division; those that
+    // need one, once all are computed (compile::grouped_divisors).
+    const auto refuse_divisors_out_of_range = [&](bool late) {
         std::vector<std::string> failures;
-        for (const std::string& test : with_status ? divisors_in_range(code) : std::vector<std::string>{})
+        for (const std::string& test : with_status ? divisors_in_range(code, late) : std::vector<std::string>{})
             failures.push_back("!" + test);
         if (!failures.empty())
             print_refusal(out, k, failures, out_of_range);
     };
-    if (s >= code.divisors_known)
-        refuse_divisors_out_of_range();
+    const auto refuse_known = [&](std::size_t known) {
+        for (const bool late : {false, true})
+            if (known == (late ? code.late_divisors_known : code.divisors_known))
+                refuse_divisors_out_of_range(late);
+    };
+    for (std::size_t known = 0; known <= s; ++known)
+        refuse_known(known);
     for (; s < code.statements.size(); ++s) {
         out += "    " + code.statements[s] + "\n";
-        if (s + 1 == code.divisors_known)
-            refuse_divisors_out_of_range();
+        refuse_known(s + 1);
     }
     std::vector<std::string> results(code.outputs.begin() + static_cast<long>(plan.guard_values), code.outputs.end());
     if (with_status) {

@@ -53,9 +53,10 @@ inline constexpr const char* out_of_range = "out_of_range";
 /// `underflow` and the velocities are unchanged: a value below the normal range has lost
 /// digits, and the result could be far from the exact one.
 inline constexpr const char* underflow = "underflow";
-/// What must hold of every divisor, as tests; the scalar kernel refuses a pair where one
-/// fails, the batch loop divides by 1 instead.
-std::vector<std::string> divisors_in_range(const cxx_code& code);
+/// What must hold of every divisor of a group (`late`: those that need a division, see
+/// cxx_code), as tests; the scalar kernel refuses a pair where one fails, the batch loop
+/// divides by 1 instead.
+std::vector<std::string> divisors_in_range(const cxx_code& code, bool late = false);
 /// A guard's condition (the value compared with 0), written as the test that fails.
 std::string condition_failure(const std::string& value, const engine::kernel_guard& g);
 

@@ -97,9 +97,10 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                 for (int o : operands(p.code[v]))
                     uses[o] += 2;
         }
-    const auto first = std::find_if(p.code.begin(), p.code.end(), [&](const instruction& in) { return divides(p, in); });
-    const int first_division = first == p.code.end() ? -1 : static_cast<int>(first - p.code.begin());
-    const int last_divisor = divided_by.empty() ? -1 : *std::max_element(divided_by.begin(), divided_by.end());
+    const compile::divisor_groups groups = compile::grouped_divisors(p);
+    const auto last_of = [](const std::vector<int>& of) { return of.empty() ? -1 : *std::max_element(of.begin(), of.end()); };
+    const int last_divisor = last_of(groups.early), last_late_divisor = last_of(groups.late);
+    const auto is_late = [&](int d) { return std::find(groups.late.begin(), groups.late.end(), d) != groups.late.end(); };
 
     constexpr int sum = 1, product = 2, unary = 3, atom = 4;
     std::vector<std::string> text(p.code.size());
@@ -126,7 +127,8 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             expression = operand(in.a, product) + " / " +
                          (kept_if.empty() || !divides(p, in)
                               ? operand(in.b, unary)
-                              : "detail::blend(" + kept_if + ", " + text[in.b] + ", Real(1))");
+                              : "detail::blend(" + kept_if + (is_late(in.b) ? "_late" : "") + ", " + text[in.b] +
+                                    ", Real(1))");
             own = product;
             break;
         case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
@@ -185,12 +187,19 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                 if (p.code[o].op != opcode::constant)
                     code.arguments.push_back(text[o]);
     }
-    for (int d : divided_by)
+    for (int d : groups.early)
         code.divisors.push_back(text[d]);
-    code.divides_early = first_division >= 0 && first_division < last_divisor;
-    while (code.divisors_known < code.statements.size() &&
-           code.statement_values[code.divisors_known] <= last_divisor)
-        ++code.divisors_known;
+    for (int d : groups.late)
+        code.late_divisors.push_back(text[d]);
+    code.divides_early = compile::divides_early(p);
+    const auto known_after = [&](int last) {
+        std::size_t s = 0;
+        while (s < code.statements.size() && code.statement_values[s] <= last)
+            ++s;
+        return s;
+    };
+    code.divisors_known = known_after(last_divisor);
+    code.late_divisors_known = known_after(last_late_divisor);
     return code;
 }
 

@@ -19,9 +19,12 @@ namespace impact::emit {
 /// `detail::blend(kept_if, x, Real(0))`: a batch loop computes every lane, and one whose
 /// results it discards neither divides by zero nor takes a root of a negative number.
 /// Selects are blends too (no branch a compiler could divide in).
-/// Every divisor that is not a constant is named (`divisors`), so that a kernel can test
-/// their range before dividing: all are computed by the first `divisors_known` statements,
-/// and no division is made before them unless `divides_early`.
+/// Every divisor that is not a constant is named, so that a kernel can test their range
+/// before dividing (compile::grouped_divisors): those computed without a division
+/// (`divisors`) by the first `divisors_known` statements, before any division; those that
+/// need one (`late_divisors`, written `detail::blend(kept_if_late, d, Real(1))` with
+/// `kept_if`) by the first `late_divisors_known`, before any division by one of them; no
+/// division is made before its group is known unless `divides_early`.
 /// With `watched` (a flag per value of p), every watched value that can fall below the
 /// normal range (compile::can_underflow) is named, with its operands, and `underflows`
 /// holds for each the test that it did: a non-zero value below
@@ -38,6 +41,8 @@ struct cxx_code {
     std::vector<std::string> outputs;
     std::vector<std::string> divisors;
     std::size_t divisors_known = 0;
+    std::vector<std::string> late_divisors;
+    std::size_t late_divisors_known = 0;
     bool divides_early = false;
     std::vector<std::string> underflows;
     std::vector<std::string> watched_values;  ///< the values `underflows` tests (named), but inputs

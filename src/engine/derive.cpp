@@ -45,10 +45,18 @@ public:
             out_.checks.push_back(run_check(c));
         for (const spec::claim& c : s.claims)
             out_.paper_checks.push_back(hold_to_account(c));
-        // A kernel computes a quantity defined by cases as a select of its cases' values.
+        // A kernel computes a quantity defined by cases as a select of its cases' values,
+        // each as the file writes it (its quantities replaced by their values), not as
+        // simplified: normal() multiplies a radicand out (|G_t| = sqrt(G_t . G_t) as about
+        // fifty terms, which cancel to nothing in float when the sphere spins fast about the
+        // normal), where the file writes a sum of squares. Its condition is as written already.
         GiNaC::exmap selects;
-        for (const auto& [symbol, pieces] : cases_)
-            selects[symbol] = select_of(pieces);
+        for (const auto& [symbol, pieces] : cases_) {
+            std::vector<case_value> computed = pieces;
+            for (case_value& c : computed)
+                c.value = resolve(c.as_written);
+            selects[symbol] = select_of(computed);
+        }
         const engine::resolver in_kernels = [this, &selects](const GiNaC::ex& e) {
             return resolve(e).subs(selects, GiNaC::subs_options::no_pattern);
         };

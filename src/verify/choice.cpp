@@ -80,9 +80,10 @@ std::optional<engine::form> derived_form(const engine::kernel_output& o, std::si
 
 namespace {
 
-// A kernel with guards tests every divisor before its first division: `code` as it is when
-// it does, else in the order that computes the divisors first (the same operations on the
-// same values, so the same results); none when a divisor needs a division.
+// A kernel with guards tests its divisors before it divides by them, in two groups
+// (compile::grouped_divisors): `code` as it is when it can, else in the order that computes
+// them first (the same operations on the same values, so the same results); none when no
+// order can (divisions by late divisors that compute each other).
 std::optional<compile::program> divisors_first(const engine::kernel& k, compile::program code)
 {
     if (k.guards.empty() || !compile::divides_early(code))
@@ -109,8 +110,8 @@ compile::program compile_forms(const kernel_plan& plan, const engine::kernel& k,
     std::optional<compile::program> code =
         divisors_first(k, compile::compile_program(outputs, k.input_symbols(), order, k.lets));
     if (!code)
-        throw error(k.where, fmt::format("kernel '{}' divides by a value that another division computes, so no "
-                                         "order has every divisor before the first division, as its guards "
+        throw error(k.where, fmt::format("kernel '{}' divides by values that divisions by each other compute, so "
+                                         "no order computes its divisors before it divides by them, as its guards "
                                          "need; give forms (forms = [...]) or a let that divide once",
                                          k.name));
     return *code;
@@ -325,8 +326,8 @@ private:
     {
         const compile::program p =
             compile::compile_program({r.value}, inputs_, order_, {r.fma, r.compensated, r.compensated_lets}, k_.lets);
-        // A form that divides by a value computed through a division (a compensated square
-        // root is corrected by one) cannot be guarded (divisors_first), and is never chosen.
+        // A form whose divisions compute each other's divisors cannot be guarded
+        // (divisors_first), and is never chosen.
         if (!divisors_first(k_, p)) {
             r.double_accuracy.samples = on.size();
             r.double_accuracy.max_ulps = r.double_accuracy.mean_ulps = std::numeric_limits<double>::infinity();
@@ -464,6 +465,20 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
     }
 }
 
+namespace {
+
+// How far a measured form is from its bound: its largest error, or the collisions it refuses.
+std::string worst_of(const accuracy& a)
+{
+    if (a.refused > 0)
+        return fmt::format("it refuses {} of {} samples as out_of_range (a divisor below "
+                           "detail::smallest_divisor or infinite; first in the regime '{}')",
+                           a.refused, a.samples, a.worst_regime);
+    return fmt::format("{:.3g} ulps at worst ({})", a.max_ulps, a.worst_regime);
+}
+
+} // namespace
+
 std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
 {
     std::vector<std::string> missed;
@@ -490,24 +505,24 @@ std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
                     continue;
                 if (fast)
                     missed.push_back(fmt::format(
-                        "{}: error: kernel '{}': output '{}' misses its fast bound of {:g} ulps in {}: {:.3g} ulps at "
-                        "worst ({}), in the fast form's candidate ({}, {}); give a cheaper form that is accurate "
+                        "{}: error: kernel '{}': output '{}' misses its fast bound of {:g} ulps in {}: {}, in the "
+                        "fast form's candidate ({}, {}); give a cheaper form that is accurate "
                         "enough (forms = [...]) or raise the fast bound with [[kernel.bound]] output = \"{}\", "
                         "form = \"fast\", type, ulps, because",
-                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], measured[worst]->max_ulps,
-                        measured[worst]->worst_regime, cp.candidates[cp.fastest].label,
+                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], worst_of(*measured[worst]),
+                        cp.candidates[cp.fastest].label,
                         cp.candidates[cp.fastest].double_accuracy.max_ulps <= bound[1]
                             ? "the cheapest within the bound in double"
                             : "the accurate form's: none is within the bound in double",
                         o.member));
                 else
                     missed.push_back(fmt::format(
-                        "{}: error: kernel '{}': output '{}' misses its bound of {:g} ulps in {}: {:.3g} ulps at worst "
-                        "({}), with the best of {} candidate forms ({}); give a more accurate form (forms = [...]) "
+                        "{}: error: kernel '{}': output '{}' misses its bound of {:g} ulps in {}: {}, with the best "
+                        "of {} candidate forms ({}); give a more accurate form (forms = [...]) "
                         "or, if this is the best it can do, raise the bound with [[kernel.bound]] output = \"{}\", "
                         "type, ulps, because",
-                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], measured[worst]->max_ulps,
-                        measured[worst]->worst_regime, cp.candidates.size(), cp.candidates[cp.chosen].label, o.member));
+                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], worst_of(*measured[worst]),
+                        cp.candidates.size(), cp.candidates[cp.chosen].label, o.member));
             }
         }
     }

@@ -24,6 +24,7 @@ struct writer {
         number(a.mean_ulps);
         number(a.max_ulps);
         text(a.worst_regime);
+        count(a.refused);
     }
 };
 
@@ -79,6 +80,7 @@ struct reader {
         a.mean_ulps = number();
         a.max_ulps = number();
         a.worst_regime = text();
+        a.refused = count();
         return a;
     }
 };
@@ -90,7 +92,7 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
     // Everything plan_kernel reads of the kernel, printed in the derivation's term order
     // (GiNaC's own printing changes from run to run), and the build that measures.
     writer w;
-    w.text("kernel choice, format 4");
+    w.text("kernel choice, format 5");
     w.text(cache::program_fingerprint());
     w.count(kernel_samples);
     w.number(target_ulps);

@@ -171,11 +171,18 @@ std::vector<accuracy> measure(const compile::program& p, const std::vector<std::
 {
     std::vector<accuracy> result(which.size());
     std::vector<double> total(which.size(), 0);
+    const std::vector<int> divisors = compile::divisors(p);
     for (std::size_t n = 0; n < samples.size(); ++n) {
         std::vector<Real> x;
         for (double value : samples[n].inputs)
             x.push_back(static_cast<Real>(value));
-        const std::vector<Real> y = compile::run<Real>(p, x);
+        const std::vector<Real> values = compile::run_values<Real>(p, x);
+        // A collision the kernel would refuse as out of range (its velocities returned
+        // unchanged) is no result at all: an infinite error, counted apart.
+        const bool refused = compile::divisor_out_of_range(divisors, values);
+        std::vector<Real> y;
+        for (int o : p.outputs)
+            y.push_back(values[static_cast<std::size_t>(o)]);
         for (std::size_t i = 0; i < which.size(); ++i) {
             const double_double& want = ref.outputs[n][which[i]];
             const double scale = ref.scales[n][which[i]];
@@ -183,7 +190,9 @@ std::vector<accuracy> measure(const compile::program& p, const std::vector<std::
             const long double gap =
                 std::fabs((static_cast<long double>(y[i]) - want.hi) - static_cast<long double>(want.lo));
             double e = 0;
-            if (!std::isfinite(static_cast<double>(y[i])))
+            if (refused)
+                e = std::numeric_limits<double>::infinity();
+            else if (!std::isfinite(static_cast<double>(y[i])))
                 e = std::numeric_limits<double>::infinity();
             else if (gap == 0)
                 e = 0;
@@ -192,6 +201,7 @@ std::vector<accuracy> measure(const compile::program& p, const std::vector<std::
             else
                 e = static_cast<double>(gap / unit_in_last_place<Real>(scale));
             total[i] += e;
+            result[i].refused += refused ? 1 : 0;
             if (e > result[i].max_ulps || result[i].samples == 0) {
                 result[i].max_ulps = e;
                 result[i].worst_regime = samples[n].regime;

@@ -50,6 +50,7 @@ struct accuracy {
     double mean_ulps = 0;
     double max_ulps = 0;
     std::string worst_regime;
+    std::size_t refused = 0;  ///< samples the kernel refuses as out of range (a divisor out of the type's range)
 };
 
 /// Runs `p` (whose outputs are the kernel's components listed in `which`) in `Real` on

@@ -39,8 +39,7 @@ namespace impact {
 ///   behind_the_wall: unless N_x*(C_x-P_x)+N_y*(C_y-P_y) > 0
 ///   separating: unless N_x*v_x+N_y*v_y < 0
 ///   out_of_range: the values leave the type's range (a divisor below
-///     detail::smallest_divisor or infinite, an argument of a function
-///     or a result not finite).
+///     detail::smallest_divisor or infinite, a result not finite).
 ///   underflow: a value of the arithmetic below (a product, quotient, fused
 ///     multiply-add or function; not a correction of compensated arithmetic) is
 ///     below std::numeric_limits<Real>::min() but not 0, or is 0 where what it
@@ -84,21 +83,20 @@ inline collide_wall_rough_result<Real, 2> collide_wall_rough(Real R, Real q, con
         return out;
     }
     const Real t0 = N_x * N_x;
-    const Real t1 = -N_x;
-    const Real t2 = N_y * N_y;
-    const Real t3 = t0 + t2;
-    const Real t4 = t3 - t0;
-    const Real t5 = -N_y;
-    const Real t6 = t0 - (t3 - t4) + (t2 - t4) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t2));
-    const Real t7 = t3 + t6;
-    const Real t8 = t6 - (t7 - t3);
-    const Real t9 = N_x * v_x;
-    const Real t10 = N_y * v_x;
-    const Real t11 = std::fma(N_y, v_x, -t10);
-    const Real t12 = N_y * v_y;
-    const Real t13 = N_x * v_y;
-    const Real t14 = t9 + t12;
-    if (!(t3 > Real(0))) {
+    const Real t1 = N_y * N_y;
+    const Real t2 = t0 + t1;
+    const Real t3 = t2 - t0;
+    const Real t4 = -N_y;
+    const Real t5 = t0 - (t2 - t3) + (t1 - t3) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
+    const Real t6 = t2 + t5;
+    const Real t7 = t5 - (t6 - t2);
+    const Real t8 = N_x * v_x;
+    const Real t9 = N_y * v_x;
+    const Real t10 = std::fma(N_y, v_x, -t9);
+    const Real t11 = N_y * v_y;
+    const Real t12 = N_x * v_y;
+    const Real t13 = t8 + t11;
+    if (!(t2 > Real(0))) {
         out.status = status::invalid_normal;
         return out;
     }
@@ -106,189 +104,170 @@ inline collide_wall_rough_result<Real, 2> collide_wall_rough(Real R, Real q, con
         out.status = status::behind_the_wall;
         return out;
     }
-    if (!(t14 < Real(0))) {
+    if (!(t13 < Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t15 = t14 - t9;
-    const Real t16 = std::fma(N_x, v_y, -t13);
-    const Real t17 = t9 - (t14 - t15) + (t12 - t15) + (std::fma(N_x, v_x, -t9) + std::fma(N_y, v_y, -t12));
-    const Real t18 = t14 + t17;
-    const Real t19 = t17 - (t18 - t14);
-    const Real t20 = Real(1) + eps;
-    const Real t21 = t20 * t18;
-    const Real t22 = t20 - Real(1);
-    const Real t23 = Real(1) - (t20 - t22) + (eps - t22);
-    const Real t24 = Real(1) + b;
-    const Real t25 = b * N_x;
-    const Real t26 = b * N_y;
-    const Real t27 = t26 * v_x;
-    const Real t28 = t25 * v_y;
-    const Real t29 = t24 - Real(1);
-    const Real t30 = q * t24;
-    const Real t31 = Real(1) + q;
-    const Real t32 = t31 - Real(1);
-    const Real t33 = Real(1) - (t31 - t32) + (q - t32);
-    const Real t34 = R * w;
-    const Real t35 = R * b;
-    const Real t36 = R * q;
-    const Real t37 = std::sqrt(t3);
-    const Real t38 = std::sqrt(t7);
-    const Real t39 = t31 * t38;
-    const Real t40 = t35 * w;
-    const Real t41 = std::fma(R, w, -t34);
-    const Real t42 = t34 * t38;
-    const Real t43 = t42 - t13;
-    const Real t44 = t34 * t37;
-    const Real t45 = std::fma(t1, v_y, t44);
-    const Real t46 = std::fma(N_y, v_x, t45);
-    const Real t47 = t44 - t13 + t10;
-    const Real t48 = std::fma(-t38, t38, t7) + t8;
-    const Real t49 = t38 + t38;
-    const Real t50 = t40 * t38;
-    const Real t51 = std::fma(t34, t38, -t42);
-    const Real t52 = t43 - t42;
-    const Real t53 = t50 + t42;
-    const Real t54 = std::fabs(t46);
-    const Real t55 = t37 * t54;
-    const Real t56 = std::fabs(t47);
-    const Real t57 = t37 * t56;
-    const Real t58 = t53 - t50;
-    const Real t59 = t42 - (t43 - t52) - (t13 + t52);
-    const Real t60 = t59 + (std::fma(t41, t38, t51) - t16);
-    const Real t61 = t43 + t60;
-    const Real t62 = t61 + t10;
-    const Real t63 = t62 - t61;
-    const Real t64 = t61 - (t62 - t63) + (t10 - t63) + (t60 - (t61 - t43) + t11);
-    const Real t65 = t62 + t64;
-    const Real t66 = t64 - (t65 - t62);
-    const Real t67 = (t65 > Real(0) ? t65 : -t65);
-    const Real t68 = t30 * t67;
-    const Real t69 = mu * t31;
-    const Real t70 = t69 * t20;
-    const Real t71 = t70 * t18;
-    const Real t72 = mu * t20;
-    const Real t73 = t68 + t71;
-    const Real t74 = t73 - t68;
-    const Real t75 = t68 - (t73 - t74) + (t71 - t74) + (std::fma(std::fma(q, Real(1) - (t24 - t29) + (b - t29), std::fma(q, t24, -t30)), t67, std::fma(t30, (t65 > Real(0) ? t66 : -t66), std::fma(t30, t67, -t68))) + std::fma(std::fma(std::fma(mu, t33, std::fma(mu, t31, -t69)), t20, std::fma(t69, t23, std::fma(t69, t20, -t70))), t18, std::fma(t70, t19, std::fma(t70, t18, -t71))));
-    const Real t76 = t73 + t75;
-    const Real t77 = t76 + (t75 - (t76 - t73));
-    const Real t78 = (t77 > Real(0) ? Real(1) : t39);
-    const Real t79 = (t77 > Real(0) ? t49 : Real(1));
-    const Real t80 = (t77 > Real(0) ? Real(1) : t49);
-    const Real t81 = (t77 > Real(0) ? t55 : Real(1));
-    const Real t82 = (t77 > Real(0) ? t57 : Real(1));
-    if (!(std::fabs(t7) >= detail::smallest_divisor<Real>) || !(std::fabs(t7) <= std::numeric_limits<Real>::max()) || !(std::fabs(t79) >= detail::smallest_divisor<Real>) || !(std::fabs(t79) <= std::numeric_limits<Real>::max()) || !(std::fabs(t80) >= detail::smallest_divisor<Real>) || !(std::fabs(t80) <= std::numeric_limits<Real>::max()) || !(std::fabs(t49) >= detail::smallest_divisor<Real>) || !(std::fabs(t49) <= std::numeric_limits<Real>::max()) || !(std::fabs(t81) >= detail::smallest_divisor<Real>) || !(std::fabs(t81) <= std::numeric_limits<Real>::max()) || !(std::fabs(t82) >= detail::smallest_divisor<Real>) || !(std::fabs(t82) <= std::numeric_limits<Real>::max()) || !(std::fabs(t78) >= detail::smallest_divisor<Real>) || !(std::fabs(t78) <= std::numeric_limits<Real>::max()) || !(std::fabs(t38) >= detail::smallest_divisor<Real>) || !(std::fabs(t38) <= std::numeric_limits<Real>::max()) || !(std::fabs(t36) >= detail::smallest_divisor<Real>) || !(std::fabs(t36) <= std::numeric_limits<Real>::max())) {
+    const Real t14 = t13 - t8;
+    const Real t15 = std::fma(N_x, v_y, -t12);
+    const Real t16 = t8 - (t13 - t14) + (t11 - t14) + (std::fma(N_x, v_x, -t8) + std::fma(N_y, v_y, -t11));
+    const Real t17 = t13 + t16;
+    const Real t18 = t16 - (t17 - t13);
+    const Real t19 = Real(1) + eps;
+    const Real t20 = t19 * t17;
+    const Real t21 = t19 - Real(1);
+    const Real t22 = Real(1) - (t19 - t21) + (eps - t21);
+    const Real t23 = Real(1) + b;
+    const Real t24 = b * N_x;
+    const Real t25 = b * N_y;
+    const Real t26 = t25 * v_x;
+    const Real t27 = t24 * v_y;
+    const Real t28 = t23 - Real(1);
+    const Real t29 = q * t23;
+    const Real t30 = Real(1) + q;
+    const Real t31 = t30 - Real(1);
+    const Real t32 = Real(1) - (t30 - t31) + (q - t31);
+    const Real t33 = R * w;
+    const Real t34 = R * b;
+    const Real t35 = R * q;
+    const Real t36 = std::sqrt(t6);
+    const Real t37 = t30 * t36;
+    const Real t38 = t34 * w;
+    const Real t39 = std::fma(R, w, -t33);
+    const Real t40 = t33 * t36;
+    const Real t41 = t40 - t12;
+    const Real t42 = std::fma(-t36, t36, t6) + t7;
+    const Real t43 = t36 + t36;
+    const Real t44 = t38 * t36;
+    const Real t45 = std::fma(t33, t36, -t40);
+    const Real t46 = t41 - t40;
+    const Real t47 = t44 + t40;
+    const Real t48 = t47 - t44;
+    const Real t49 = t40 - (t41 - t46) - (t12 + t46);
+    const Real t50 = t49 + (std::fma(t39, t36, t45) - t15);
+    const Real t51 = t41 + t50;
+    const Real t52 = t51 + t9;
+    const Real t53 = t52 - t51;
+    const Real t54 = t51 - (t52 - t53) + (t9 - t53) + (t50 - (t51 - t41) + t10);
+    const Real t55 = t52 + t54;
+    const Real t56 = t54 - (t55 - t52);
+    const Real t57 = (t55 > Real(0) ? t55 : -t55);
+    const Real t58 = t29 * t57;
+    const Real t59 = mu * t30;
+    const Real t60 = t59 * t19;
+    const Real t61 = t60 * t17;
+    const Real t62 = mu * t19;
+    const Real t63 = t58 + t61;
+    const Real t64 = t63 - t58;
+    const Real t65 = t58 - (t63 - t64) + (t61 - t64) + (std::fma(std::fma(q, Real(1) - (t23 - t28) + (b - t28), std::fma(q, t23, -t29)), t57, std::fma(t29, (t55 > Real(0) ? t56 : -t56), std::fma(t29, t57, -t58))) + std::fma(std::fma(std::fma(mu, t32, std::fma(mu, t30, -t59)), t19, std::fma(t59, t22, std::fma(t59, t19, -t60))), t17, std::fma(t60, t18, std::fma(t60, t17, -t61))));
+    const Real t66 = t63 + t65;
+    const Real t67 = t66 + (t65 - (t66 - t63));
+    const Real t68 = (t67 > Real(0) ? Real(1) : t37);
+    const Real t69 = (t67 > Real(0) ? t43 : Real(1));
+    const Real t70 = (t67 > Real(0) ? Real(1) : t43);
+    if (!(std::fabs(t6) >= detail::smallest_divisor<Real>) || !(std::fabs(t6) <= std::numeric_limits<Real>::max()) || !(std::fabs(t69) >= detail::smallest_divisor<Real>) || !(std::fabs(t69) <= std::numeric_limits<Real>::max()) || !(std::fabs(t70) >= detail::smallest_divisor<Real>) || !(std::fabs(t70) <= std::numeric_limits<Real>::max()) || !(std::fabs(t43) >= detail::smallest_divisor<Real>) || !(std::fabs(t43) <= std::numeric_limits<Real>::max()) || !(std::fabs(t68) >= detail::smallest_divisor<Real>) || !(std::fabs(t68) <= std::numeric_limits<Real>::max()) || !(std::fabs(t35) >= detail::smallest_divisor<Real>) || !(std::fabs(t35) <= std::numeric_limits<Real>::max()) || !(std::fabs(t36) >= detail::smallest_divisor<Real>) || !(std::fabs(t36) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t83 = t21 / t7;
-    const Real t84 = t48 / t79;
-    const Real t85 = t48 / t80;
-    const Real t86 = t59 + (std::fma(t41, t38, std::fma(t34, t84, t51)) - t16);
-    const Real t87 = t43 + t86;
-    const Real t88 = t87 + t10;
-    const Real t89 = -t83;
-    const Real t90 = t50 - (t53 - t58) + (t42 - t58) + (std::fma(std::fma(std::fma(R, b, -t35), w, std::fma(t35, w, -t40)), t38, std::fma(t40, t85, std::fma(t40, t38, -t50))) + std::fma(t41, t38, std::fma(t34, t85, t51)));
-    const Real t91 = t53 + t90;
-    const Real t92 = t91 - t28;
-    const Real t93 = t88 - t87;
-    const Real t94 = t89 + -(std::fma(t89, t8, std::fma(t89, t7, t21) + std::fma(t23, t18, std::fma(t20, t19, std::fma(t20, t18, -t21)))) / t7);
-    const Real t95 = N_x * t94;
-    const Real t96 = t92 - t91;
-    const Real t97 = t87 - (t88 - t93) + (t10 - t93) + (t86 - (t87 - t43) + t11);
-    const Real t98 = t88 + t97;
-    const Real t99 = t72 * t98;
-    const Real t100 = t99 * t18;
-    const Real t101 = t100 / t81;
-    const Real t102 = t100 / t82;
-    const Real t103 = t91 - (t92 - t96) - (t28 + t96) + (t90 - (t91 - t53) - std::fma(std::fma(b, N_x, -t25), v_y, std::fma(t25, v_y, -t28)));
-    const Real t104 = t92 + t103;
-    const Real t105 = t104 + t27;
-    const Real t106 = t97 - (t98 - t88);
-    const Real t107 = (t98 > Real(0) ? t98 : -t98);
-    const Real t108 = t38 * t107;
-    const Real t109 = std::fma(std::fma(std::fma(mu, t23, std::fma(mu, t20, -t72)), t98, std::fma(t72, t106, std::fma(t72, t98, -t99))), t18, std::fma(t99, t19, std::fma(t99, t18, -t100)));
-    const Real t110 = -t101;
-    const Real t111 = -t102;
-    const Real t112 = t105 - t104;
-    const Real t113 = std::fma(t84, t107, std::fma(t38, (t98 > Real(0) ? t106 : -t106), std::fma(t38, t107, -t108)));
-    const Real t114 = t104 - (t105 - t112) + (t27 - t112) + (t103 - (t104 - t92) + std::fma(std::fma(b, N_y, -t26), v_x, std::fma(t26, v_x, -t27)));
-    const Real t115 = t105 + t114;
-    const Real t116 = t115 - t13;
-    const Real t117 = t116 - t115;
-    const Real t118 = t115 - (t116 - t117) - (t13 + t117) + (t114 - (t115 - t105) - t16);
-    const Real t119 = t116 + t118;
-    const Real t120 = t119 + t10;
-    const Real t121 = t120 - t119;
-    const Real t122 = t119 - (t120 - t121) + (t10 - t121) + (t118 - (t119 - t116) + t11);
-    const Real t123 = t120 + t122;
-    const Real t124 = q * t123;
-    const Real t125 = t124 / t78;
-    const Real t126 = (t77 > Real(0) ? t110 : t125);
-    const Real t127 = t126 / t38;
-    const Real t128 = (t77 > Real(0) ? t111 : t125);
-    const Real t129 = t128 / t36;
-    const Real t130 = -t125;
-    const Real t131 = -t127;
-    const Real t132 = -t129;
-    const Real t133 = std::fma(t130, std::fma(t33, t38, std::fma(t31, t85, std::fma(t31, t38, -t39))), std::fma(t130, t39, t124) + std::fma(q, t122 - (t123 - t120), std::fma(q, t123, -t124))) / t78;
-    const Real t134 = t127 + std::fma(t131, t48 / t49, std::fma(t131, t38, t126) + (t77 > Real(0) ? -(std::fma(t110, t113, std::fma(t110, t108, t100) + t109) / t81) : t133)) / t38;
-    const Real t135 = N_x * t134;
-    const Real t136 = std::fma(N_y, t94, t135);
-    const Real t137 = std::fma(t5, t134, t95);
-    const Real result0 = t137 + v_x;
-    const Real result1 = t136 + v_y;
-    const Real result2 = w + (t132 + -(std::fma(t132, std::fma(R, q, -t36), std::fma(t132, t36, t128) + (t77 > Real(0) ? -(std::fma(t111, t113, std::fma(t111, t108, t100) + t109) / t82) : t133)) / t36));
-    if (!detail::finite(t46) || !detail::finite(t47) || !detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
+    const Real t71 = t20 / t6;
+    const Real t72 = t42 / t69;
+    const Real t73 = t42 / t70;
+    const Real t74 = t49 + (std::fma(t39, t36, std::fma(t33, t72, t45)) - t15);
+    const Real t75 = t41 + t74;
+    const Real t76 = t75 + t9;
+    const Real t77 = -t71;
+    const Real t78 = t44 - (t47 - t48) + (t40 - t48) + (std::fma(std::fma(std::fma(R, b, -t34), w, std::fma(t34, w, -t38)), t36, std::fma(t38, t73, std::fma(t38, t36, -t44))) + std::fma(t39, t36, std::fma(t33, t73, t45)));
+    const Real t79 = t47 + t78;
+    const Real t80 = t79 - t27;
+    const Real t81 = t76 - t75;
+    const Real t82 = t77 + -(std::fma(t77, t7, std::fma(t77, t6, t20) + std::fma(t22, t17, std::fma(t19, t18, std::fma(t19, t17, -t20)))) / t6);
+    const Real t83 = N_x * t82;
+    const Real t84 = t80 - t79;
+    const Real t85 = t75 - (t76 - t81) + (t9 - t81) + (t74 - (t75 - t41) + t10);
+    const Real t86 = t76 + t85;
+    const Real t87 = t62 * t86;
+    const Real t88 = t87 * t17;
+    const Real t89 = t79 - (t80 - t84) - (t27 + t84) + (t78 - (t79 - t47) - std::fma(std::fma(b, N_x, -t24), v_y, std::fma(t24, v_y, -t27)));
+    const Real t90 = t80 + t89;
+    const Real t91 = t90 + t26;
+    const Real t92 = t85 - (t86 - t76);
+    const Real t93 = (t86 > Real(0) ? t86 : -t86);
+    const Real t94 = t36 * t93;
+    const Real t95 = (t67 > Real(0) ? t94 : Real(1));
+    if (!(std::fabs(t95) >= detail::smallest_divisor<Real>) || !(std::fabs(t95) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t96 = t88 / t95;
+    const Real t97 = t91 - t90;
+    const Real t98 = -t96;
+    const Real t99 = t90 - (t91 - t97) + (t26 - t97) + (t89 - (t90 - t80) + std::fma(std::fma(b, N_y, -t25), v_x, std::fma(t25, v_x, -t26)));
+    const Real t100 = t91 + t99;
+    const Real t101 = t100 - t12;
+    const Real t102 = t101 - t100;
+    const Real t103 = t100 - (t101 - t102) - (t12 + t102) + (t99 - (t100 - t91) - t15);
+    const Real t104 = t101 + t103;
+    const Real t105 = t104 + t9;
+    const Real t106 = t105 - t104;
+    const Real t107 = t104 - (t105 - t106) + (t9 - t106) + (t103 - (t104 - t101) + t10);
+    const Real t108 = t105 + t107;
+    const Real t109 = q * t108;
+    const Real t110 = t109 / t68;
+    const Real t111 = (t67 > Real(0) ? t98 : t110);
+    const Real t112 = t111 / t35;
+    const Real t113 = t111 / t36;
+    const Real t114 = -t110;
+    const Real t115 = -t112;
+    const Real t116 = -t113;
+    const Real t117 = (t67 > Real(0) ? -(std::fma(t98, std::fma(t72, t93, std::fma(t36, (t86 > Real(0) ? t92 : -t92), std::fma(t36, t93, -t94))), std::fma(t98, t94, t88) + std::fma(std::fma(std::fma(mu, t22, std::fma(mu, t19, -t62)), t86, std::fma(t62, t92, std::fma(t62, t86, -t87))), t17, std::fma(t87, t18, std::fma(t87, t17, -t88)))) / t95) : std::fma(t114, std::fma(t32, t36, std::fma(t30, t73, std::fma(t30, t36, -t37))), std::fma(t114, t37, t109) + std::fma(q, t107 - (t108 - t105), std::fma(q, t108, -t109))) / t68);
+    const Real t118 = t113 + std::fma(t116, t42 / t43, std::fma(t116, t36, t111) + t117) / t36;
+    const Real t119 = N_x * t118;
+    const Real t120 = std::fma(N_y, t82, t119);
+    const Real t121 = std::fma(t4, t118, t83);
+    const Real result0 = t121 + v_x;
+    const Real result1 = t120 + v_y;
+    const Real result2 = w + (t115 + -(std::fma(t115, std::fma(R, q, -t35), std::fma(t115, t35, t111) + t117) / t35));
+    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2)) {
         out.status = status::out_of_range;
         return out;
     }
     if ((std::fabs(t0) < std::numeric_limits<Real>::min() && N_x != Real(0)) ||
-        (std::fabs(t2) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
-        (std::fabs(t9) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t10) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t12) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t13) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t21) < std::numeric_limits<Real>::min() && t20 != Real(0) && t18 != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && b != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && b != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && t26 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && t25 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t30) < std::numeric_limits<Real>::min() && q != Real(0) && t24 != Real(0)) ||
-        (std::fabs(t34) < std::numeric_limits<Real>::min() && R != Real(0) && w != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && R != Real(0) && b != Real(0)) ||
-        (std::fabs(t36) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
-        (std::fabs(t39) < std::numeric_limits<Real>::min() && t31 != Real(0) && t38 != Real(0)) ||
-        (std::fabs(t40) < std::numeric_limits<Real>::min() && t35 != Real(0) && w != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && t34 != Real(0) && t38 != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && t34 != Real(0) && t37 != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && (t45 != Real(0) || (t44 == Real(0) && t1 != Real(0) && v_y != Real(0)))) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && (t46 != Real(0) || (t45 == Real(0) && N_y != Real(0) && v_x != Real(0)))) ||
-        (std::fabs(t50) < std::numeric_limits<Real>::min() && t40 != Real(0) && t38 != Real(0)) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && t54 != Real(0)) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && t37 != Real(0) && t54 != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && t56 != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && t37 != Real(0) && t56 != Real(0)) ||
-        (std::fabs(t68) < std::numeric_limits<Real>::min() && t30 != Real(0) && t67 != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && mu != Real(0) && t31 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && t69 != Real(0) && t20 != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && t18 != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && mu != Real(0) && t20 != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t21 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && N_x != Real(0) && t94 != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t72 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && t18 != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t100 != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t100 != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t38 != Real(0) && t107 != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && q != Real(0) && t123 != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t124 != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t126 != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0)) ||
-        (std::fabs(t135) < std::numeric_limits<Real>::min() && N_x != Real(0) && t134 != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && (t136 != Real(0) || (t135 == Real(0) && N_y != Real(0) && t94 != Real(0)))) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && (t137 != Real(0) || (t95 == Real(0) && t5 != Real(0) && t134 != Real(0))))) {
+        (std::fabs(t1) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
+        (std::fabs(t8) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_x != Real(0)) ||
+        (std::fabs(t9) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_x != Real(0)) ||
+        (std::fabs(t11) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_y != Real(0)) ||
+        (std::fabs(t12) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_y != Real(0)) ||
+        (std::fabs(t20) < std::numeric_limits<Real>::min() && t19 != Real(0) && t17 != Real(0)) ||
+        (std::fabs(t24) < std::numeric_limits<Real>::min() && b != Real(0) && N_x != Real(0)) ||
+        (std::fabs(t25) < std::numeric_limits<Real>::min() && b != Real(0) && N_y != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && t25 != Real(0) && v_x != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && t24 != Real(0) && v_y != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && q != Real(0) && t23 != Real(0)) ||
+        (std::fabs(t33) < std::numeric_limits<Real>::min() && R != Real(0) && w != Real(0)) ||
+        (std::fabs(t34) < std::numeric_limits<Real>::min() && R != Real(0) && b != Real(0)) ||
+        (std::fabs(t35) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
+        (std::fabs(t37) < std::numeric_limits<Real>::min() && t30 != Real(0) && t36 != Real(0)) ||
+        (std::fabs(t38) < std::numeric_limits<Real>::min() && t34 != Real(0) && w != Real(0)) ||
+        (std::fabs(t40) < std::numeric_limits<Real>::min() && t33 != Real(0) && t36 != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && t38 != Real(0) && t36 != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && t29 != Real(0) && t57 != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && mu != Real(0) && t30 != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && t59 != Real(0) && t19 != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && t60 != Real(0) && t17 != Real(0)) ||
+        (std::fabs(t62) < std::numeric_limits<Real>::min() && mu != Real(0) && t19 != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && t20 != Real(0)) ||
+        (std::fabs(t83) < std::numeric_limits<Real>::min() && N_x != Real(0) && t82 != Real(0)) ||
+        (std::fabs(t87) < std::numeric_limits<Real>::min() && t62 != Real(0) && t86 != Real(0)) ||
+        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && t17 != Real(0)) ||
+        (std::fabs(t94) < std::numeric_limits<Real>::min() && t36 != Real(0) && t93 != Real(0)) ||
+        (std::fabs(t96) < std::numeric_limits<Real>::min() && t88 != Real(0)) ||
+        (std::fabs(t109) < std::numeric_limits<Real>::min() && q != Real(0) && t108 != Real(0)) ||
+        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0)) ||
+        (std::fabs(t112) < std::numeric_limits<Real>::min() && t111 != Real(0)) ||
+        (std::fabs(t113) < std::numeric_limits<Real>::min() && t111 != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && N_x != Real(0) && t118 != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && (t120 != Real(0) || (t119 == Real(0) && N_y != Real(0) && t82 != Real(0)))) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && (t121 != Real(0) || (t83 == Real(0) && t4 != Real(0) && t118 != Real(0))))) {
         out.status = status::underflow;
         return out;
     }
@@ -310,9 +289,9 @@ namespace detail {
 // rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
 // bounds crosswise, a square root halves them, atan2(y, x) lies within
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, -1, 549, 506; where it is -1, the loop tests the least magnitude of the values.
+// quadruple long double): k = -1, -1, 469, 425; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_wall_rough_batch_2d_k = input_k<Real>(-1, -1, 549, 506);
+constexpr int collide_wall_rough_batch_2d_k = input_k<Real>(-1, -1, 469, 425);
 
 // The loop of collide_wall_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
@@ -370,165 +349,148 @@ IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_2d(std::size_t count, const R
         const Real b = b_[i];
         const Real mu = mu_[i];
         const Real t0 = N_x * N_x;
-        const Real t1 = -N_x;
-        const Real t2 = N_y * N_y;
-        const Real t3 = t0 + t2;
-        const Real t4 = t3 - t0;
-        const Real t5 = -N_y;
-        const Real t6 = t0 - (t3 - t4) + (t2 - t4) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t2));
-        const Real t7 = t3 + t6;
-        const Real t8 = t6 - (t7 - t3);
-        const Real t9 = N_x * v_x;
-        const Real t10 = N_y * v_x;
-        const Real t11 = std::fma(N_y, v_x, -t10);
-        const Real t12 = N_y * v_y;
-        const Real t13 = N_x * v_y;
-        const Real t14 = t9 + t12;
-        const Real t15 = t14 - t9;
-        const Real t16 = std::fma(N_x, v_y, -t13);
-        const Real t17 = t9 - (t14 - t15) + (t12 - t15) + (std::fma(N_x, v_x, -t9) + std::fma(N_y, v_y, -t12));
-        const Real t18 = t14 + t17;
-        const Real t19 = t17 - (t18 - t14);
-        const Real t20 = Real(1) + eps;
-        const Real t21 = t20 * t18;
-        const Real t22 = t20 - Real(1);
-        const Real t23 = Real(1) - (t20 - t22) + (eps - t22);
-        const Real t24 = Real(1) + b;
-        const Real t25 = b * N_x;
-        const Real t26 = b * N_y;
-        const Real t27 = t26 * v_x;
-        const Real t28 = t25 * v_y;
-        const Real t29 = t24 - Real(1);
-        const Real t30 = q * t24;
-        const Real t31 = Real(1) + q;
-        const Real t32 = t31 - Real(1);
-        const Real t33 = Real(1) - (t31 - t32) + (q - t32);
-        const Real t34 = R * w;
-        const Real t35 = R * b;
-        const Real t36 = R * q;
-        const Real t37 = std::sqrt(t3);
-        const Real t38 = std::sqrt(t7);
-        const Real t39 = t31 * t38;
-        const Real t40 = t35 * w;
-        const Real t41 = std::fma(R, w, -t34);
-        const Real t42 = t34 * t38;
-        const Real t43 = t42 - t13;
-        const Real t44 = t34 * t37;
-        const Real t45 = std::fma(t1, v_y, t44);
-        const Real t46 = std::fma(N_y, v_x, t45);
-        const Real t47 = t44 - t13 + t10;
-        const Real t48 = std::fma(-t38, t38, t7) + t8;
-        const Real t49 = t38 + t38;
-        const Real t50 = t40 * t38;
-        const Real t51 = std::fma(t34, t38, -t42);
-        const Real t52 = t43 - t42;
-        const Real t53 = t50 + t42;
-        const Real t54 = std::fabs(t46);
-        const Real t55 = t37 * t54;
-        const Real t56 = std::fabs(t47);
-        const Real t57 = t37 * t56;
-        const Real t58 = t53 - t50;
-        const Real t59 = t42 - (t43 - t52) - (t13 + t52);
-        const Real t60 = t59 + (std::fma(t41, t38, t51) - t16);
-        const Real t61 = t43 + t60;
-        const Real t62 = t61 + t10;
-        const Real t63 = t62 - t61;
-        const Real t64 = t61 - (t62 - t63) + (t10 - t63) + (t60 - (t61 - t43) + t11);
-        const Real t65 = t62 + t64;
-        const Real t66 = t64 - (t65 - t62);
-        const Real t67 = detail::blend(t65 > Real(0), t65, -t65);
-        const Real t68 = t30 * t67;
-        const Real t69 = mu * t31;
-        const Real t70 = t69 * t20;
-        const Real t71 = t70 * t18;
-        const Real t72 = mu * t20;
-        const Real t73 = t68 + t71;
-        const Real t74 = t73 - t68;
-        const Real t75 = t68 - (t73 - t74) + (t71 - t74) + (std::fma(std::fma(q, Real(1) - (t24 - t29) + (b - t29), std::fma(q, t24, -t30)), t67, std::fma(t30, detail::blend(t65 > Real(0), t66, -t66), std::fma(t30, t67, -t68))) + std::fma(std::fma(std::fma(mu, t33, std::fma(mu, t31, -t69)), t20, std::fma(t69, t23, std::fma(t69, t20, -t70))), t18, std::fma(t70, t19, std::fma(t70, t18, -t71))));
-        const Real t76 = t73 + t75;
-        const Real t77 = t76 + (t75 - (t76 - t73));
-        const Real t78 = detail::blend(t77 > Real(0), Real(1), t39);
-        const Real t79 = detail::blend(t77 > Real(0), t49, Real(1));
-        const Real t80 = detail::blend(t77 > Real(0), Real(1), t49);
-        const Real t81 = detail::blend(t77 > Real(0), t55, Real(1));
-        const Real t82 = detail::blend(t77 > Real(0), t57, Real(1));
-        const std::int64_t usable = resolved & (std::fabs(t7) >= detail::smallest_divisor<Real>) & (std::fabs(t7) <= std::numeric_limits<Real>::max()) & (std::fabs(t79) >= detail::smallest_divisor<Real>) & (std::fabs(t79) <= std::numeric_limits<Real>::max()) & (std::fabs(t80) >= detail::smallest_divisor<Real>) & (std::fabs(t80) <= std::numeric_limits<Real>::max()) & (std::fabs(t49) >= detail::smallest_divisor<Real>) & (std::fabs(t49) <= std::numeric_limits<Real>::max()) & (std::fabs(t81) >= detail::smallest_divisor<Real>) & (std::fabs(t81) <= std::numeric_limits<Real>::max()) & (std::fabs(t82) >= detail::smallest_divisor<Real>) & (std::fabs(t82) <= std::numeric_limits<Real>::max()) & (std::fabs(t78) >= detail::smallest_divisor<Real>) & (std::fabs(t78) <= std::numeric_limits<Real>::max()) & (std::fabs(t38) >= detail::smallest_divisor<Real>) & (std::fabs(t38) <= std::numeric_limits<Real>::max()) & (std::fabs(t36) >= detail::smallest_divisor<Real>) & (std::fabs(t36) <= std::numeric_limits<Real>::max());
-        const Real t83 = t21 / detail::blend(usable, t7, Real(1));
-        const Real t84 = t48 / detail::blend(usable, t79, Real(1));
-        const Real t85 = t48 / detail::blend(usable, t80, Real(1));
-        const Real t86 = t59 + (std::fma(t41, t38, std::fma(t34, t84, t51)) - t16);
-        const Real t87 = t43 + t86;
-        const Real t88 = t87 + t10;
-        const Real t89 = -t83;
-        const Real t90 = t50 - (t53 - t58) + (t42 - t58) + (std::fma(std::fma(std::fma(R, b, -t35), w, std::fma(t35, w, -t40)), t38, std::fma(t40, t85, std::fma(t40, t38, -t50))) + std::fma(t41, t38, std::fma(t34, t85, t51)));
-        const Real t91 = t53 + t90;
-        const Real t92 = t91 - t28;
-        const Real t93 = t88 - t87;
-        const Real t94 = t89 + -(std::fma(t89, t8, std::fma(t89, t7, t21) + std::fma(t23, t18, std::fma(t20, t19, std::fma(t20, t18, -t21)))) / detail::blend(usable, t7, Real(1)));
-        const Real t95 = N_x * t94;
-        const Real t96 = t92 - t91;
-        const Real t97 = t87 - (t88 - t93) + (t10 - t93) + (t86 - (t87 - t43) + t11);
-        const Real t98 = t88 + t97;
-        const Real t99 = t72 * t98;
-        const Real t100 = t99 * t18;
-        const Real t101 = t100 / detail::blend(usable, t81, Real(1));
-        const Real t102 = t100 / detail::blend(usable, t82, Real(1));
-        const Real t103 = t91 - (t92 - t96) - (t28 + t96) + (t90 - (t91 - t53) - std::fma(std::fma(b, N_x, -t25), v_y, std::fma(t25, v_y, -t28)));
-        const Real t104 = t92 + t103;
-        const Real t105 = t104 + t27;
-        const Real t106 = t97 - (t98 - t88);
-        const Real t107 = detail::blend(t98 > Real(0), t98, -t98);
-        const Real t108 = t38 * t107;
-        const Real t109 = std::fma(std::fma(std::fma(mu, t23, std::fma(mu, t20, -t72)), t98, std::fma(t72, t106, std::fma(t72, t98, -t99))), t18, std::fma(t99, t19, std::fma(t99, t18, -t100)));
-        const Real t110 = -t101;
-        const Real t111 = -t102;
-        const Real t112 = t105 - t104;
-        const Real t113 = std::fma(t84, t107, std::fma(t38, detail::blend(t98 > Real(0), t106, -t106), std::fma(t38, t107, -t108)));
-        const Real t114 = t104 - (t105 - t112) + (t27 - t112) + (t103 - (t104 - t92) + std::fma(std::fma(b, N_y, -t26), v_x, std::fma(t26, v_x, -t27)));
-        const Real t115 = t105 + t114;
-        const Real t116 = t115 - t13;
-        const Real t117 = t116 - t115;
-        const Real t118 = t115 - (t116 - t117) - (t13 + t117) + (t114 - (t115 - t105) - t16);
-        const Real t119 = t116 + t118;
-        const Real t120 = t119 + t10;
-        const Real t121 = t120 - t119;
-        const Real t122 = t119 - (t120 - t121) + (t10 - t121) + (t118 - (t119 - t116) + t11);
-        const Real t123 = t120 + t122;
-        const Real t124 = q * t123;
-        const Real t125 = t124 / detail::blend(usable, t78, Real(1));
-        const Real t126 = detail::blend(t77 > Real(0), t110, t125);
-        const Real t127 = t126 / detail::blend(usable, t38, Real(1));
-        const Real t128 = detail::blend(t77 > Real(0), t111, t125);
-        const Real t129 = t128 / detail::blend(usable, t36, Real(1));
-        const Real t130 = -t125;
-        const Real t131 = -t127;
-        const Real t132 = -t129;
-        const Real t133 = std::fma(t130, std::fma(t33, t38, std::fma(t31, t85, std::fma(t31, t38, -t39))), std::fma(t130, t39, t124) + std::fma(q, t122 - (t123 - t120), std::fma(q, t123, -t124))) / detail::blend(usable, t78, Real(1));
-        const Real t134 = t127 + std::fma(t131, t48 / detail::blend(usable, t49, Real(1)), std::fma(t131, t38, t126) + detail::blend(t77 > Real(0), -(std::fma(t110, t113, std::fma(t110, t108, t100) + t109) / detail::blend(usable, t81, Real(1))), t133)) / detail::blend(usable, t38, Real(1));
-        const Real t135 = N_x * t134;
-        const Real t136 = std::fma(N_y, t94, t135);
-        const Real t137 = std::fma(t5, t134, t95);
-        const Real v_x_out = t137 + v_x;
-        const Real v_y_out = t136 + v_y;
-        const Real w_out = w + (t132 + -(std::fma(t132, std::fma(R, q, -t36), std::fma(t132, t36, t128) + detail::blend(t77 > Real(0), -(std::fma(t111, t113, std::fma(t111, t108, t100) + t109) / detail::blend(usable, t82, Real(1))), t133)) / detail::blend(usable, t36, Real(1))));
-        const Real finite0 = detail::zero_if_finite(t46, t47);
-        const Real finite1 = detail::zero_if_finite(v_x_out, v_y_out);
-        const Real finite2 = detail::zero_if_finite(w_out);
-        const Real finite3 = finite0 + finite1;
-        const Real finite4 = finite3 + finite2;
-        const std::int64_t finite = (finite4 == Real(0));
+        const Real t1 = N_y * N_y;
+        const Real t2 = t0 + t1;
+        const Real t3 = t2 - t0;
+        const Real t4 = -N_y;
+        const Real t5 = t0 - (t2 - t3) + (t1 - t3) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
+        const Real t6 = t2 + t5;
+        const Real t7 = t5 - (t6 - t2);
+        const Real t8 = N_x * v_x;
+        const Real t9 = N_y * v_x;
+        const Real t10 = std::fma(N_y, v_x, -t9);
+        const Real t11 = N_y * v_y;
+        const Real t12 = N_x * v_y;
+        const Real t13 = t8 + t11;
+        const Real t14 = t13 - t8;
+        const Real t15 = std::fma(N_x, v_y, -t12);
+        const Real t16 = t8 - (t13 - t14) + (t11 - t14) + (std::fma(N_x, v_x, -t8) + std::fma(N_y, v_y, -t11));
+        const Real t17 = t13 + t16;
+        const Real t18 = t16 - (t17 - t13);
+        const Real t19 = Real(1) + eps;
+        const Real t20 = t19 * t17;
+        const Real t21 = t19 - Real(1);
+        const Real t22 = Real(1) - (t19 - t21) + (eps - t21);
+        const Real t23 = Real(1) + b;
+        const Real t24 = b * N_x;
+        const Real t25 = b * N_y;
+        const Real t26 = t25 * v_x;
+        const Real t27 = t24 * v_y;
+        const Real t28 = t23 - Real(1);
+        const Real t29 = q * t23;
+        const Real t30 = Real(1) + q;
+        const Real t31 = t30 - Real(1);
+        const Real t32 = Real(1) - (t30 - t31) + (q - t31);
+        const Real t33 = R * w;
+        const Real t34 = R * b;
+        const Real t35 = R * q;
+        const Real t36 = std::sqrt(t6);
+        const Real t37 = t30 * t36;
+        const Real t38 = t34 * w;
+        const Real t39 = std::fma(R, w, -t33);
+        const Real t40 = t33 * t36;
+        const Real t41 = t40 - t12;
+        const Real t42 = std::fma(-t36, t36, t6) + t7;
+        const Real t43 = t36 + t36;
+        const Real t44 = t38 * t36;
+        const Real t45 = std::fma(t33, t36, -t40);
+        const Real t46 = t41 - t40;
+        const Real t47 = t44 + t40;
+        const Real t48 = t47 - t44;
+        const Real t49 = t40 - (t41 - t46) - (t12 + t46);
+        const Real t50 = t49 + (std::fma(t39, t36, t45) - t15);
+        const Real t51 = t41 + t50;
+        const Real t52 = t51 + t9;
+        const Real t53 = t52 - t51;
+        const Real t54 = t51 - (t52 - t53) + (t9 - t53) + (t50 - (t51 - t41) + t10);
+        const Real t55 = t52 + t54;
+        const Real t56 = t54 - (t55 - t52);
+        const Real t57 = detail::blend(t55 > Real(0), t55, -t55);
+        const Real t58 = t29 * t57;
+        const Real t59 = mu * t30;
+        const Real t60 = t59 * t19;
+        const Real t61 = t60 * t17;
+        const Real t62 = mu * t19;
+        const Real t63 = t58 + t61;
+        const Real t64 = t63 - t58;
+        const Real t65 = t58 - (t63 - t64) + (t61 - t64) + (std::fma(std::fma(q, Real(1) - (t23 - t28) + (b - t28), std::fma(q, t23, -t29)), t57, std::fma(t29, detail::blend(t55 > Real(0), t56, -t56), std::fma(t29, t57, -t58))) + std::fma(std::fma(std::fma(mu, t32, std::fma(mu, t30, -t59)), t19, std::fma(t59, t22, std::fma(t59, t19, -t60))), t17, std::fma(t60, t18, std::fma(t60, t17, -t61))));
+        const Real t66 = t63 + t65;
+        const Real t67 = t66 + (t65 - (t66 - t63));
+        const Real t68 = detail::blend(t67 > Real(0), Real(1), t37);
+        const Real t69 = detail::blend(t67 > Real(0), t43, Real(1));
+        const Real t70 = detail::blend(t67 > Real(0), Real(1), t43);
+        const std::int64_t usable = resolved & (std::fabs(t6) >= detail::smallest_divisor<Real>) & (std::fabs(t6) <= std::numeric_limits<Real>::max()) & (std::fabs(t69) >= detail::smallest_divisor<Real>) & (std::fabs(t69) <= std::numeric_limits<Real>::max()) & (std::fabs(t70) >= detail::smallest_divisor<Real>) & (std::fabs(t70) <= std::numeric_limits<Real>::max()) & (std::fabs(t43) >= detail::smallest_divisor<Real>) & (std::fabs(t43) <= std::numeric_limits<Real>::max()) & (std::fabs(t68) >= detail::smallest_divisor<Real>) & (std::fabs(t68) <= std::numeric_limits<Real>::max()) & (std::fabs(t35) >= detail::smallest_divisor<Real>) & (std::fabs(t35) <= std::numeric_limits<Real>::max()) & (std::fabs(t36) >= detail::smallest_divisor<Real>) & (std::fabs(t36) <= std::numeric_limits<Real>::max());
+        const Real t71 = t20 / detail::blend(usable, t6, Real(1));
+        const Real t72 = t42 / detail::blend(usable, t69, Real(1));
+        const Real t73 = t42 / detail::blend(usable, t70, Real(1));
+        const Real t74 = t49 + (std::fma(t39, t36, std::fma(t33, t72, t45)) - t15);
+        const Real t75 = t41 + t74;
+        const Real t76 = t75 + t9;
+        const Real t77 = -t71;
+        const Real t78 = t44 - (t47 - t48) + (t40 - t48) + (std::fma(std::fma(std::fma(R, b, -t34), w, std::fma(t34, w, -t38)), t36, std::fma(t38, t73, std::fma(t38, t36, -t44))) + std::fma(t39, t36, std::fma(t33, t73, t45)));
+        const Real t79 = t47 + t78;
+        const Real t80 = t79 - t27;
+        const Real t81 = t76 - t75;
+        const Real t82 = t77 + -(std::fma(t77, t7, std::fma(t77, t6, t20) + std::fma(t22, t17, std::fma(t19, t18, std::fma(t19, t17, -t20)))) / detail::blend(usable, t6, Real(1)));
+        const Real t83 = N_x * t82;
+        const Real t84 = t80 - t79;
+        const Real t85 = t75 - (t76 - t81) + (t9 - t81) + (t74 - (t75 - t41) + t10);
+        const Real t86 = t76 + t85;
+        const Real t87 = t62 * t86;
+        const Real t88 = t87 * t17;
+        const Real t89 = t79 - (t80 - t84) - (t27 + t84) + (t78 - (t79 - t47) - std::fma(std::fma(b, N_x, -t24), v_y, std::fma(t24, v_y, -t27)));
+        const Real t90 = t80 + t89;
+        const Real t91 = t90 + t26;
+        const Real t92 = t85 - (t86 - t76);
+        const Real t93 = detail::blend(t86 > Real(0), t86, -t86);
+        const Real t94 = t36 * t93;
+        const Real t95 = detail::blend(t67 > Real(0), t94, Real(1));
+        const std::int64_t usable_late = usable & (std::fabs(t95) >= detail::smallest_divisor<Real>) & (std::fabs(t95) <= std::numeric_limits<Real>::max());
+        const Real t96 = t88 / detail::blend(usable_late, t95, Real(1));
+        const Real t97 = t91 - t90;
+        const Real t98 = -t96;
+        const Real t99 = t90 - (t91 - t97) + (t26 - t97) + (t89 - (t90 - t80) + std::fma(std::fma(b, N_y, -t25), v_x, std::fma(t25, v_x, -t26)));
+        const Real t100 = t91 + t99;
+        const Real t101 = t100 - t12;
+        const Real t102 = t101 - t100;
+        const Real t103 = t100 - (t101 - t102) - (t12 + t102) + (t99 - (t100 - t91) - t15);
+        const Real t104 = t101 + t103;
+        const Real t105 = t104 + t9;
+        const Real t106 = t105 - t104;
+        const Real t107 = t104 - (t105 - t106) + (t9 - t106) + (t103 - (t104 - t101) + t10);
+        const Real t108 = t105 + t107;
+        const Real t109 = q * t108;
+        const Real t110 = t109 / detail::blend(usable, t68, Real(1));
+        const Real t111 = detail::blend(t67 > Real(0), t98, t110);
+        const Real t112 = t111 / detail::blend(usable, t35, Real(1));
+        const Real t113 = t111 / detail::blend(usable, t36, Real(1));
+        const Real t114 = -t110;
+        const Real t115 = -t112;
+        const Real t116 = -t113;
+        const Real t117 = detail::blend(t67 > Real(0), -(std::fma(t98, std::fma(t72, t93, std::fma(t36, detail::blend(t86 > Real(0), t92, -t92), std::fma(t36, t93, -t94))), std::fma(t98, t94, t88) + std::fma(std::fma(std::fma(mu, t22, std::fma(mu, t19, -t62)), t86, std::fma(t62, t92, std::fma(t62, t86, -t87))), t17, std::fma(t87, t18, std::fma(t87, t17, -t88)))) / detail::blend(usable_late, t95, Real(1))), std::fma(t114, std::fma(t32, t36, std::fma(t30, t73, std::fma(t30, t36, -t37))), std::fma(t114, t37, t109) + std::fma(q, t107 - (t108 - t105), std::fma(q, t108, -t109))) / detail::blend(usable, t68, Real(1)));
+        const Real t118 = t113 + std::fma(t116, t42 / detail::blend(usable, t43, Real(1)), std::fma(t116, t36, t111) + t117) / detail::blend(usable, t36, Real(1));
+        const Real t119 = N_x * t118;
+        const Real t120 = std::fma(N_y, t82, t119);
+        const Real t121 = std::fma(t4, t118, t83);
+        const Real v_x_out = t121 + v_x;
+        const Real v_y_out = t120 + v_y;
+        const Real w_out = w + (t115 + -(std::fma(t115, std::fma(R, q, -t35), std::fma(t115, t35, t111) + t117) / detail::blend(usable, t35, Real(1))));
+        const Real finite0 = detail::zero_if_finite(v_x_out, v_y_out);
+        const Real finite1 = detail::zero_if_finite(w_out);
+        const Real finite2 = finite0 + finite1;
+        const std::int64_t finite = (finite2 == Real(0));
         std::int64_t doubtful = 0;
         if constexpr (collide_wall_rough_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_rough_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_rough_batch_2d_k<Real>);
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(R, lowest), detail::magnitude_or(q, lowest)), detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest))), detail::least(detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest)), detail::least(detail::magnitude_or(w, lowest), detail::magnitude_or(eps, lowest)))), detail::least(detail::magnitude_or(b, lowest), detail::magnitude_or(mu, lowest))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(R), std::fabs(q)), detail::most(std::fabs(N_x), std::fabs(N_y))), detail::most(detail::most(std::fabs(v_x), std::fabs(v_y)), detail::most(std::fabs(w), std::fabs(eps)))), detail::most(std::fabs(b), std::fabs(mu))), highest));
         }
         if constexpr (collide_wall_rough_batch_2d_k<Real> < 0)
-            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t2), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t9), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t10), detail::zero_as_min(N_y)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t12), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t13), detail::zero_as_min(N_x)), detail::zero_as_min(v_y))), detail::least(detail::most(detail::most(std::fabs(t21), detail::zero_as_min(t20)), detail::zero_as_min(t18)), detail::most(detail::most(std::fabs(t25), detail::zero_as_min(b)), detail::zero_as_min(N_x))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t26), detail::zero_as_min(b)), detail::zero_as_min(N_y)), detail::most(std::fabs(t27), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t28), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t30), detail::zero_as_min(q)), detail::zero_as_min(t24)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t34), detail::zero_as_min(R)), detail::zero_as_min(w)), detail::most(detail::most(std::fabs(t35), detail::zero_as_min(R)), detail::zero_as_min(b))), detail::least(detail::most(detail::most(std::fabs(t36), detail::zero_as_min(R)), detail::zero_as_min(q)), detail::most(std::fabs(t39), detail::zero_as_min(t31)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t40), detail::zero_as_min(w)), std::fabs(t42)), detail::least(std::fabs(t44), std::fabs(t45))), detail::least(detail::least(std::fabs(t46), std::fabs(t50)), detail::least(std::fabs(t54), std::fabs(t55)))), detail::least(detail::least(detail::least(std::fabs(t56), std::fabs(t57)), detail::least(detail::most(std::fabs(t68), detail::zero_as_min(t67)), detail::most(detail::most(std::fabs(t69), detail::zero_as_min(mu)), detail::zero_as_min(t31)))), detail::least(detail::least(detail::most(std::fabs(t70), detail::zero_as_min(t20)), detail::most(std::fabs(t71), detail::zero_as_min(t18))), detail::least(detail::most(detail::most(std::fabs(t72), detail::zero_as_min(mu)), detail::zero_as_min(t20)), std::fabs(t83)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t95), detail::zero_as_min(N_x)), detail::zero_as_min(t94)), detail::most(std::fabs(t99), detail::zero_as_min(t98))), detail::least(detail::most(std::fabs(t100), detail::zero_as_min(t18)), std::fabs(t101))), detail::least(detail::least(std::fabs(t102), detail::most(std::fabs(t108), detail::zero_as_min(t107))), detail::least(detail::most(detail::most(std::fabs(t124), detail::zero_as_min(q)), detail::zero_as_min(t123)), std::fabs(t125)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t127), detail::zero_as_min(t126)), detail::most(std::fabs(t129), detail::zero_as_min(t128))), detail::least(detail::most(detail::most(std::fabs(t135), detail::zero_as_min(N_x)), detail::zero_as_min(t134)), std::fabs(t136))), std::fabs(t137)))), std::numeric_limits<Real>::min());
-        const std::int64_t written = usable & finite & !doubtful;
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t8), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t9), detail::zero_as_min(N_y)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t11), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t12), detail::zero_as_min(N_x)), detail::zero_as_min(v_y))), detail::least(detail::most(detail::most(std::fabs(t20), detail::zero_as_min(t19)), detail::zero_as_min(t17)), detail::most(detail::most(std::fabs(t24), detail::zero_as_min(b)), detail::zero_as_min(N_x))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t25), detail::zero_as_min(b)), detail::zero_as_min(N_y)), detail::most(std::fabs(t26), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t27), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t29), detail::zero_as_min(q)), detail::zero_as_min(t23)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t33), detail::zero_as_min(R)), detail::zero_as_min(w)), detail::most(detail::most(std::fabs(t34), detail::zero_as_min(R)), detail::zero_as_min(b))), detail::least(detail::most(detail::most(std::fabs(t35), detail::zero_as_min(R)), detail::zero_as_min(q)), detail::most(std::fabs(t37), detail::zero_as_min(t30)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t38), detail::zero_as_min(w)), std::fabs(t40)), detail::least(std::fabs(t44), detail::most(std::fabs(t58), detail::zero_as_min(t57)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t59), detail::zero_as_min(mu)), detail::zero_as_min(t30)), detail::most(std::fabs(t60), detail::zero_as_min(t19))), detail::least(detail::most(std::fabs(t61), detail::zero_as_min(t17)), detail::most(detail::most(std::fabs(t62), detail::zero_as_min(mu)), detail::zero_as_min(t19))))), detail::least(detail::least(detail::least(std::fabs(t71), detail::most(detail::most(std::fabs(t83), detail::zero_as_min(N_x)), detail::zero_as_min(t82))), detail::least(detail::most(std::fabs(t87), detail::zero_as_min(t86)), detail::most(std::fabs(t88), detail::zero_as_min(t17)))), detail::least(detail::least(detail::most(std::fabs(t94), detail::zero_as_min(t93)), std::fabs(t96)), detail::least(detail::most(detail::most(std::fabs(t109), detail::zero_as_min(q)), detail::zero_as_min(t108)), std::fabs(t110)))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t112), detail::zero_as_min(t111)), detail::most(std::fabs(t113), detail::zero_as_min(t111))), detail::least(detail::most(detail::most(std::fabs(t119), detail::zero_as_min(N_x)), detail::zero_as_min(t118)), std::fabs(t120))), std::fabs(t121))), std::numeric_limits<Real>::min());
+        const std::int64_t written = usable_late & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
         w_[i] = detail::blend(written, w_out, w_[i]);
-        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable_late & finite, status::underflow, status::out_of_range), outcome);
     }
 }
 

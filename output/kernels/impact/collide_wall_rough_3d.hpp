@@ -30,12 +30,12 @@ namespace impact {
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 ///   b: tangential restitution: \f$-1\f$ for a smooth contact, \f$1\f$ for a perfectly rough one ([-1, 1], a pure number)
 ///   mu: Coulomb's coefficient of friction (\f$+\infty\f$: the contact never slides) ([0, +inf], a pure number)
-/// v[0] is computed in the form "v_x + K_n*N_x + C_t*T_x, fma, compensated let": at most 1.87 ulps in double on 4200 samples.
-/// v[1] is computed in the form "v_y + K_n*N_y + C_t*T_y, fma, compensated let": at most 2.22 ulps in double on 4200 samples.
-/// v[2] is computed in the form "v_z + K_n*N_z + C_t*T_z, fma, compensated let": at most 1.88 ulps in double on 4200 samples.
-/// w[0] is computed in the form "w_x + dw_x, compensated let": at most 1.75 ulps in double on 4200 samples.
-/// w[1] is computed in the form "w_y + dw_y, compensated let": at most 2.77 ulps in double on 4200 samples.
-/// w[2] is computed in the form "w_z + dw_z, compensated let": at most 1.80 ulps in double on 4200 samples.
+/// v[0] is computed in the form "v_x + K_n*N_x + C_t*T_x, fma, compensated let": at most 2.03 ulps in double on 4200 samples.
+/// v[1] is computed in the form "v_y + K_n*N_y + C_t*T_y, fma, compensated let": at most 2.40 ulps in double on 4200 samples.
+/// v[2] is computed in the form "v_z + K_n*N_z + C_t*T_z, fma, compensated let": at most 1.96 ulps in double on 4200 samples.
+/// w[0] is computed in the form "w_x + dw_x, fma, compensated let": at most 1.79 ulps in double on 4200 samples.
+/// w[1] is computed in the form "w_y + dw_y, compensated let": at most 1.67 ulps in double on 4200 samples.
+/// w[2] is computed in the form "w_z + dw_z, fma, compensated let": at most 1.62 ulps in double on 4200 samples.
 /// When the inputs allow no collision, `status` says why, the first of these that
 /// applies, and the velocities are returned unchanged:
 ///   invalid_radius: R not positive and finite
@@ -98,157 +98,34 @@ inline collide_wall_rough_result<Real, 3> collide_wall_rough(Real R, Real q, con
         out.status = status::non_finite;
         return out;
     }
-    const Real t0 = -Real(2);
-    const Real t1 = N_x * N_x;
-    const Real t2 = t1 * N_x;
-    const Real t3 = t2 * N_x;
-    const Real t4 = Real(2) * N_x;
-    const Real t5 = std::fma(N_x, N_x, -t1);
-    const Real t6 = Real(2) * t1;
-    const Real t7 = t1 * t1;
-    const Real t8 = std::fma(t5, N_x, std::fma(t1, N_x, -t2));
-    const Real t9 = Real(2) * t2;
-    const Real t10 = std::fma(t8, N_x, std::fma(t2, N_x, -t3));
-    const Real t11 = std::fma(Real(2), N_x, -t4);
-    const Real t12 = std::fma(Real(2), t5, std::fma(Real(2), t1, -t6));
-    const Real t13 = std::fma(Real(2), t8, std::fma(Real(2), t2, -t9));
-    const Real t14 = N_y * N_y;
-    const Real t15 = N_x * t14;
-    const Real t16 = N_x * N_y;
-    const Real t17 = t1 + t14;
-    const Real t18 = t17 - t1;
-    const Real t19 = t1 * t14;
-    const Real t20 = t1 * N_y;
-    const Real t21 = t2 * N_y;
-    const Real t22 = t4 * t14;
-    const Real t23 = t4 * N_y;
-    const Real t24 = t6 * t14;
-    const Real t25 = t6 * N_y;
-    const Real t26 = t9 * N_y;
-    const Real t27 = t14 * N_y;
-    const Real t28 = N_x * t27;
-    const Real t29 = t4 * t27;
-    const Real t30 = t27 * N_y;
-    const Real t31 = Real(2) * N_y;
-    const Real t32 = std::fma(N_y, N_y, -t14);
-    const Real t33 = Real(2) * t14;
-    const Real t34 = t14 * t14;
-    const Real t35 = std::fma(t5, t14, std::fma(t1, t32, std::fma(t1, t14, -t19)));
-    const Real t36 = std::fma(t32, N_y, std::fma(t14, N_y, -t27));
-    const Real t37 = Real(2) * t27;
-    const Real t38 = std::fma(t36, N_y, std::fma(t27, N_y, -t30));
-    const Real t39 = t1 - (t17 - t18) + (t14 - t18) + (t5 + t32);
-    const Real t40 = t17 + t39;
-    const Real t41 = N_z * N_z;
-    const Real t42 = t1 * t41;
-    const Real t43 = t2 * N_z;
-    const Real t44 = t6 * t41;
-    const Real t45 = t9 * N_z;
-    const Real t46 = t14 * t41;
-    const Real t47 = t15 * N_z;
-    const Real t48 = t16 * t41;
-    const Real t49 = t17 + t41;
-    const Real t50 = t20 * N_z;
-    const Real t51 = t22 * N_z;
-    const Real t52 = t23 * t41;
-    const Real t53 = t25 * N_z;
-    const Real t54 = t27 * N_z;
-    const Real t55 = t33 * t41;
-    const Real t56 = t37 * N_z;
-    const Real t57 = t40 + t41;
-    const Real t58 = t57 - t40;
-    const Real t59 = t41 * N_z;
-    const Real t60 = N_x * t59;
-    const Real t61 = t4 * t59;
-    const Real t62 = N_y * t59;
-    const Real t63 = t31 * t59;
-    const Real t64 = t59 * N_z;
-    const Real t65 = std::fma(N_z, N_z, -t41);
-    const Real t66 = t41 * t41;
-    const Real t67 = std::fma(t5, t41, std::fma(t1, t65, std::fma(t1, t41, -t42)));
-    const Real t68 = std::fma(t32, t41, std::fma(t14, t65, std::fma(t14, t41, -t46)));
-    const Real t69 = std::fma(t65, N_z, std::fma(t41, N_z, -t59));
-    const Real t70 = std::fma(t69, N_z, std::fma(t59, N_z, -t64));
-    const Real t71 = t40 - (t57 - t58) + (t41 - t58) + (t39 - (t40 - t17) + t65);
-    const Real t72 = t57 + t71;
-    const Real t73 = std::sqrt(t49);
-    const Real t74 = t71 - (t72 - t57);
-    const Real t75 = std::sqrt(t72);
-    const Real t76 = std::fma(-t75, t75, t72) + t74;
-    const Real t77 = t75 + t75;
-    const Real t78 = N_x * v_x;
-    const Real t79 = t21 * v_x;
-    const Real t80 = t26 * v_x;
-    const Real t81 = t28 * v_x;
-    const Real t82 = t29 * v_x;
-    const Real t83 = t43 * v_x;
-    const Real t84 = t45 * v_x;
-    const Real t85 = t47 * v_x;
-    const Real t86 = t48 * v_x;
-    const Real t87 = t51 * v_x;
-    const Real t88 = t52 * v_x;
-    const Real t89 = t60 * v_x;
-    const Real t90 = t61 * v_x;
-    const Real t91 = v_x * t72;
-    const Real t92 = v_x * v_x;
-    const Real t93 = t14 * t92;
-    const Real t94 = t19 * t92;
-    const Real t95 = t30 * t92;
-    const Real t96 = t34 * t92;
-    const Real t97 = t41 * t92;
-    const Real t98 = t42 * t92;
-    const Real t99 = t46 * t92;
-    const Real t100 = t55 * t92;
-    const Real t101 = t64 * t92;
-    const Real t102 = t66 * t92;
-    const Real t103 = std::fma(v_x, t74, std::fma(v_x, t72, -t91));
-    const Real t104 = std::fma(v_x, v_x, -t92);
-    const Real t105 = N_y * v_y;
-    const Real t106 = t50 * v_y;
-    const Real t107 = t53 * v_y;
-    const Real t108 = t54 * v_y;
-    const Real t109 = t56 * v_y;
-    const Real t110 = t62 * v_y;
-    const Real t111 = t63 * v_y;
-    const Real t112 = v_y * t72;
-    const Real t113 = t78 + t105;
-    const Real t114 = t113 - t78;
-    const Real t115 = t79 * v_y;
-    const Real t116 = t80 * v_y;
-    const Real t117 = t81 * v_y;
-    const Real t118 = t82 * v_y;
-    const Real t119 = t86 * v_y;
-    const Real t120 = t88 * v_y;
-    const Real t121 = v_y * v_y;
-    const Real t122 = t3 * t121;
-    const Real t123 = t7 * t121;
-    const Real t124 = t14 * t121;
-    const Real t125 = t19 * t121;
-    const Real t126 = t41 * t121;
-    const Real t127 = t42 * t121;
-    const Real t128 = t44 * t121;
-    const Real t129 = t46 * t121;
-    const Real t130 = t64 * t121;
-    const Real t131 = t66 * t121;
-    const Real t132 = std::fma(v_y, t74, std::fma(v_y, t72, -t112));
-    const Real t133 = std::fma(v_y, v_y, -t121);
-    const Real t134 = t78 - (t113 - t114) + (t105 - t114) + (std::fma(N_x, v_x, -t78) + std::fma(N_y, v_y, -t105));
-    const Real t135 = t113 + t134;
-    const Real t136 = N_z * v_z;
-    const Real t137 = v_z * t72;
-    const Real t138 = t83 * v_z;
-    const Real t139 = t84 * v_z;
-    const Real t140 = t85 * v_z;
-    const Real t141 = t87 * v_z;
-    const Real t142 = t89 * v_z;
-    const Real t143 = t90 * v_z;
-    const Real t144 = t106 * v_z;
-    const Real t145 = t107 * v_z;
-    const Real t146 = t108 * v_z;
-    const Real t147 = t109 * v_z;
-    const Real t148 = t110 * v_z;
-    const Real t149 = t111 * v_z;
-    if (!(t49 > Real(0))) {
+    const Real t0 = N_x * N_x;
+    const Real t1 = N_y * N_y;
+    const Real t2 = t0 + t1;
+    const Real t3 = t2 - t0;
+    const Real t4 = t0 - (t2 - t3) + (t1 - t3) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
+    const Real t5 = t2 + t4;
+    const Real t6 = N_z * N_z;
+    const Real t7 = t5 + t6;
+    const Real t8 = t7 - t5;
+    const Real t9 = t5 - (t7 - t8) + (t6 - t8) + (t4 - (t5 - t2) + std::fma(N_z, N_z, -t6));
+    const Real t10 = t7 + t9;
+    const Real t11 = t9 - (t10 - t7);
+    const Real t12 = std::sqrt(t10);
+    const Real t13 = std::fma(-t12, t12, t10) + t11;
+    const Real t14 = t12 + t12;
+    const Real t15 = N_x * v_x;
+    const Real t16 = v_x * t10;
+    const Real t17 = std::fma(v_x, t11, std::fma(v_x, t10, -t16));
+    const Real t18 = N_y * v_y;
+    const Real t19 = v_y * t10;
+    const Real t20 = t15 + t18;
+    const Real t21 = t20 - t15;
+    const Real t22 = std::fma(v_y, t11, std::fma(v_y, t10, -t19));
+    const Real t23 = t15 - (t20 - t21) + (t18 - t21) + (std::fma(N_x, v_x, -t15) + std::fma(N_y, v_y, -t18));
+    const Real t24 = t20 + t23;
+    const Real t25 = N_z * v_z;
+    const Real t26 = v_z * t10;
+    if (!(t2 + t6 > Real(0))) {
         out.status = status::invalid_normal;
         return out;
     }
@@ -256,1394 +133,329 @@ inline collide_wall_rough_result<Real, 3> collide_wall_rough(Real R, Real q, con
         out.status = status::behind_the_wall;
         return out;
     }
-    if (!(t113 + t136 < Real(0))) {
+    if (!(t20 + t25 < Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t150 = t135 + t136;
-    const Real t151 = t150 - t135;
-    const Real t152 = v_z * v_z;
-    const Real t153 = t3 * t152;
-    const Real t154 = t7 * t152;
-    const Real t155 = t19 * t152;
-    const Real t156 = t24 * t152;
-    const Real t157 = t30 * t152;
-    const Real t158 = t34 * t152;
-    const Real t159 = t41 * t152;
-    const Real t160 = t42 * t152;
-    const Real t161 = t46 * t152;
-    const Real t162 = std::fma(v_z, t74, std::fma(v_z, t72, -t137));
-    const Real t163 = std::fma(v_z, v_z, -t152);
-    const Real t164 = t135 - (t150 - t151) + (t136 - t151) + (t134 - (t135 - t113) + std::fma(N_z, v_z, -t136));
-    const Real t165 = t150 + t164;
-    const Real t166 = N_x * t165;
-    const Real t167 = N_y * t165;
-    const Real t168 = N_z * t165;
-    const Real t169 = t164 - (t165 - t150);
-    const Real t170 = t165 * t165;
-    const Real t171 = std::fma(N_x, t169, std::fma(N_x, t165, -t166));
-    const Real t172 = std::fma(N_y, t169, std::fma(N_y, t165, -t167));
-    const Real t173 = std::fma(N_z, t169, std::fma(N_z, t165, -t168));
-    const Real t174 = Real(1) + eps;
-    const Real t175 = t174 * t165;
-    const Real t176 = t174 - Real(1);
-    const Real t177 = t174 * t174;
-    const Real t178 = Real(1) - (t174 - t176) + (eps - t176);
-    const Real t179 = q * q;
-    const Real t180 = Real(1) + q;
-    const Real t181 = t180 - Real(1);
-    const Real t182 = t180 * t180;
-    const Real t183 = Real(1) - (t180 - t181) + (q - t181);
-    const Real t184 = Real(1) + b;
-    const Real t185 = q * t184;
-    const Real t186 = t184 - Real(1);
-    const Real t187 = t184 * t184;
-    const Real t188 = t179 * t187;
-    const Real t189 = Real(1) - (t184 - t186) + (b - t186);
-    const Real t190 = R * t75;
-    const Real t191 = R * N_x;
-    const Real t192 = R * t1;
-    const Real t193 = R * t2;
-    const Real t194 = t192 * N_y;
-    const Real t195 = R * N_y;
-    const Real t196 = t191 * t14;
-    const Real t197 = R * t14;
-    const Real t198 = R * t27;
-    const Real t199 = t192 * N_z;
-    const Real t200 = t197 * N_z;
-    const Real t201 = t191 * t41;
-    const Real t202 = t195 * t41;
-    const Real t203 = R * t59;
-    const Real t204 = t194 * v_x;
-    const Real t205 = t199 * v_x;
-    const Real t206 = t200 * v_x;
-    const Real t207 = t198 * v_x;
-    const Real t208 = t202 * v_x;
-    const Real t209 = t203 * v_x;
-    const Real t210 = t199 * v_y;
-    const Real t211 = t193 * v_y;
-    const Real t212 = t196 * v_y;
-    const Real t213 = t201 * v_y;
-    const Real t214 = t200 * v_y;
-    const Real t215 = t203 * v_y;
-    const Real t216 = t194 * v_z;
-    const Real t217 = t193 * v_z;
-    const Real t218 = t196 * v_z;
-    const Real t219 = t201 * v_z;
-    const Real t220 = t198 * v_z;
-    const Real t221 = t202 * v_z;
-    const Real t222 = R * q;
-    const Real t223 = t222 * t75;
-    const Real t224 = R * R;
-    const Real t225 = t224 * N_x;
-    const Real t226 = t224 * t1;
-    const Real t227 = t224 * t2;
-    const Real t228 = t224 * t3;
-    const Real t229 = t224 * t7;
-    const Real t230 = t226 * N_y;
-    const Real t231 = t227 * N_y;
-    const Real t232 = t225 * N_y;
-    const Real t233 = t224 * N_y;
-    const Real t234 = t226 * t14;
-    const Real t235 = t224 * t14;
-    const Real t236 = t225 * t14;
-    const Real t237 = t225 * t27;
-    const Real t238 = t224 * t27;
-    const Real t239 = t224 * t30;
-    const Real t240 = t224 * t34;
-    const Real t241 = t230 * N_z;
-    const Real t242 = t227 * N_z;
-    const Real t243 = t236 * N_z;
-    const Real t244 = t238 * N_z;
-    const Real t245 = t226 * t41;
-    const Real t246 = t235 * t41;
-    const Real t247 = t232 * t41;
-    const Real t248 = t225 * t59;
-    const Real t249 = t233 * t59;
-    const Real t250 = t224 * t64;
-    const Real t251 = t224 * t66;
-    const Real t252 = Real(2) * R;
-    const Real t253 = t252 * N_x;
-    const Real t254 = t252 * t1;
-    const Real t255 = t252 * t2;
-    const Real t256 = t254 * N_y;
-    const Real t257 = t252 * N_y;
-    const Real t258 = t253 * t14;
-    const Real t259 = t252 * t14;
-    const Real t260 = t252 * t27;
-    const Real t261 = t254 * N_z;
-    const Real t262 = t259 * N_z;
-    const Real t263 = t253 * t41;
-    const Real t264 = t257 * t41;
-    const Real t265 = t252 * t59;
-    const Real t266 = t256 * v_x;
-    const Real t267 = t261 * v_x;
-    const Real t268 = t262 * v_x;
-    const Real t269 = t260 * v_x;
-    const Real t270 = t264 * v_x;
-    const Real t271 = t265 * v_x;
-    const Real t272 = t261 * v_y;
-    const Real t273 = t255 * v_y;
-    const Real t274 = t258 * v_y;
-    const Real t275 = t263 * v_y;
-    const Real t276 = t262 * v_y;
-    const Real t277 = t265 * v_y;
-    const Real t278 = t256 * v_z;
-    const Real t279 = t255 * v_z;
-    const Real t280 = t258 * v_z;
-    const Real t281 = t263 * v_z;
-    const Real t282 = t260 * v_z;
-    const Real t283 = t264 * v_z;
-    const Real t284 = std::fma(R, t75, -t190);
-    const Real t285 = std::fma(R, R, -t224);
-    const Real t286 = Real(2) * t224;
-    const Real t287 = t286 * N_x;
-    const Real t288 = t286 * t1;
-    const Real t289 = t286 * t2;
-    const Real t290 = t288 * N_y;
-    const Real t291 = t289 * N_y;
-    const Real t292 = t287 * N_y;
-    const Real t293 = t286 * N_y;
-    const Real t294 = t288 * t14;
-    const Real t295 = t287 * t14;
-    const Real t296 = t286 * t14;
-    const Real t297 = t287 * t27;
-    const Real t298 = t286 * t27;
-    const Real t299 = t290 * N_z;
-    const Real t300 = t289 * N_z;
-    const Real t301 = t295 * N_z;
-    const Real t302 = t298 * N_z;
-    const Real t303 = t288 * t41;
-    const Real t304 = t292 * t41;
-    const Real t305 = t296 * t41;
-    const Real t306 = t287 * t59;
-    const Real t307 = t293 * t59;
-    const Real t308 = std::fma(t285, t1, std::fma(t224, t5, std::fma(t224, t1, -t226)));
-    const Real t309 = std::fma(t285, t3, std::fma(t224, t10, std::fma(t224, t3, -t228)));
-    const Real t310 = std::fma(t308, t14, std::fma(t226, t32, std::fma(t226, t14, -t234)));
-    const Real t311 = std::fma(t285, t30, std::fma(t224, t38, std::fma(t224, t30, -t239)));
-    const Real t312 = std::fma(t308, t41, std::fma(t226, t65, std::fma(t226, t41, -t245)));
-    const Real t313 = std::fma(std::fma(t285, t14, std::fma(t224, t32, std::fma(t224, t14, -t235))), t41, std::fma(t235, t65, std::fma(t235, t41, -t246)));
-    const Real t314 = std::fma(t285, t64, std::fma(t224, t70, std::fma(t224, t64, -t250)));
-    const Real t315 = std::fma(Real(2), R, -t252);
-    const Real t316 = std::fma(t315, N_x, std::fma(t252, N_x, -t253));
-    const Real t317 = std::fma(t315, t1, std::fma(t252, t5, std::fma(t252, t1, -t254)));
-    const Real t318 = std::fma(t315, t2, std::fma(t252, t8, std::fma(t252, t2, -t255)));
-    const Real t319 = std::fma(t317, N_y, std::fma(t254, N_y, -t256));
-    const Real t320 = std::fma(t316, t14, std::fma(t253, t32, std::fma(t253, t14, -t258)));
-    const Real t321 = std::fma(t315, t27, std::fma(t252, t36, std::fma(t252, t27, -t260)));
-    const Real t322 = std::fma(t317, N_z, std::fma(t254, N_z, -t261));
-    const Real t323 = std::fma(std::fma(t315, t14, std::fma(t252, t32, std::fma(t252, t14, -t259))), N_z, std::fma(t259, N_z, -t262));
-    const Real t324 = std::fma(t316, t41, std::fma(t253, t65, std::fma(t253, t41, -t263)));
-    const Real t325 = std::fma(std::fma(t315, N_y, std::fma(t252, N_y, -t257)), t41, std::fma(t257, t65, std::fma(t257, t41, -t264)));
-    const Real t326 = std::fma(t315, t59, std::fma(t252, t69, std::fma(t252, t59, -t265)));
-    const Real t327 = std::fma(Real(2), t285, std::fma(Real(2), t224, -t286));
-    const Real t328 = std::fma(t327, N_x, std::fma(t286, N_x, -t287));
-    const Real t329 = std::fma(t327, t1, std::fma(t286, t5, std::fma(t286, t1, -t288)));
-    const Real t330 = std::fma(t327, t2, std::fma(t286, t8, std::fma(t286, t2, -t289)));
-    const Real t331 = N_x * w_y;
-    const Real t332 = N_z * w_y;
-    const Real t333 = t205 * w_y;
-    const Real t334 = t333 * t73;
-    const Real t335 = t206 * w_y;
-    const Real t336 = t335 * t73;
-    const Real t337 = t209 * w_y;
-    const Real t338 = t337 * t73;
-    const Real t339 = t217 * w_y;
-    const Real t340 = t339 * t73;
-    const Real t341 = t218 * w_y;
-    const Real t342 = t341 * t73;
-    const Real t343 = t219 * w_y;
-    const Real t344 = t343 * t73;
-    const Real t345 = t241 * w_y;
-    const Real t346 = t244 * w_y;
-    const Real t347 = t249 * w_y;
-    const Real t348 = t267 * w_y;
-    const Real t349 = t348 * t73;
-    const Real t350 = t348 * t75;
-    const Real t351 = t268 * w_y;
-    const Real t352 = t351 * t73;
-    const Real t353 = t351 * t75;
-    const Real t354 = t271 * w_y;
-    const Real t355 = t354 * t73;
-    const Real t356 = t354 * t75;
-    const Real t357 = t279 * w_y;
-    const Real t358 = t357 * t73;
-    const Real t359 = t357 * t75;
-    const Real t360 = t280 * w_y;
-    const Real t361 = t360 * t73;
-    const Real t362 = t360 * t75;
-    const Real t363 = t281 * w_y;
-    const Real t364 = t363 * t73;
-    const Real t365 = t363 * t75;
-    const Real t366 = t299 * w_y;
-    const Real t367 = t302 * w_y;
-    const Real t368 = t307 * w_y;
-    const Real t369 = w_y * w_y;
-    const Real t370 = t7 * t369;
-    const Real t371 = t19 * t369;
-    const Real t372 = t46 * t369;
-    const Real t373 = t66 * t369;
-    const Real t374 = t228 * t369;
-    const Real t375 = t229 * t369;
-    const Real t376 = t234 * t369;
-    const Real t377 = t245 * t369;
-    const Real t378 = t246 * t369;
-    const Real t379 = t250 * t369;
-    const Real t380 = t251 * t369;
-    const Real t381 = t303 * t369;
-    const Real t382 = std::fma(w_y, w_y, -t369);
-    const Real t383 = N_y * w_x;
-    const Real t384 = N_z * w_x;
-    const Real t385 = t210 * w_x;
-    const Real t386 = t385 * t73;
-    const Real t387 = t214 * w_x;
-    const Real t388 = t387 * t73;
-    const Real t389 = t215 * w_x;
-    const Real t390 = t389 * t73;
-    const Real t391 = t216 * w_x;
-    const Real t392 = t391 * t73;
-    const Real t393 = t220 * w_x;
-    const Real t394 = t393 * t73;
-    const Real t395 = t221 * w_x;
-    const Real t396 = t395 * t73;
-    const Real t397 = t231 * w_x;
-    const Real t398 = t237 * w_x;
-    const Real t399 = t242 * w_x;
-    const Real t400 = t243 * w_x;
-    const Real t401 = t247 * w_x;
-    const Real t402 = t248 * w_x;
-    const Real t403 = t272 * w_x;
-    const Real t404 = t403 * t73;
-    const Real t405 = t403 * t75;
-    const Real t406 = t276 * w_x;
-    const Real t407 = t406 * t73;
-    const Real t408 = t406 * t75;
-    const Real t409 = t277 * w_x;
-    const Real t410 = t409 * t73;
-    const Real t411 = t409 * t75;
-    const Real t412 = t278 * w_x;
-    const Real t413 = t412 * t73;
-    const Real t414 = t412 * t75;
-    const Real t415 = t282 * w_x;
-    const Real t416 = t415 * t73;
-    const Real t417 = t415 * t75;
-    const Real t418 = t283 * w_x;
-    const Real t419 = t418 * t73;
-    const Real t420 = t418 * t75;
-    const Real t421 = t291 * w_x;
-    const Real t422 = t297 * w_x;
-    const Real t423 = t300 * w_x;
-    const Real t424 = t301 * w_x;
-    const Real t425 = t304 * w_x;
-    const Real t426 = t306 * w_x;
-    const Real t427 = t421 * w_y;
-    const Real t428 = t422 * w_y;
-    const Real t429 = t425 * w_y;
-    const Real t430 = t397 * w_y;
-    const Real t431 = t398 * w_y;
-    const Real t432 = t401 * w_y;
-    const Real t433 = t331 - t383;
-    const Real t434 = t433 - t331;
-    const Real t435 = w_x * w_x;
-    const Real t436 = t34 * t435;
-    const Real t437 = t42 * t435;
-    const Real t438 = t66 * t435;
-    const Real t439 = t234 * t435;
-    const Real t440 = std::fma(t224, t371, t439);
-    const Real t441 = t239 * t435;
-    const Real t442 = t240 * t435;
-    const Real t443 = t245 * t435;
-    const Real t444 = t246 * t435;
-    const Real t445 = t250 * t435;
-    const Real t446 = t251 * t435;
-    const Real t447 = t305 * t435;
-    const Real t448 = t439 + t376;
-    const Real t449 = std::fma(w_x, w_x, -t435);
-    const Real t450 = t448 - t439;
-    const Real t451 = t331 - (t433 - t434) - (t383 + t434) + (std::fma(N_x, w_y, -t331) - std::fma(N_y, w_x, -t383));
-    const Real t452 = t433 + t451;
-    const Real t453 = t190 * t452;
-    const Real t454 = t453 - t168;
-    const Real t455 = t439 - (t448 - t450) + (t376 - t450) + (std::fma(t310, t435, std::fma(t234, t449, std::fma(t234, t435, -t439))) + std::fma(t310, t369, std::fma(t234, t382, std::fma(t234, t369, -t376))));
-    const Real t456 = t448 + t455;
-    const Real t457 = std::fma(t190, t451 - (t452 - t433), std::fma(t190, t452, -t453));
-    const Real t458 = t454 - t453;
-    const Real t459 = t453 - (t454 - t458) - (t168 + t458);
-    const Real t460 = t459 + (std::fma(t284, t452, t457) - t173);
-    const Real t461 = t454 + t460;
-    const Real t462 = t461 + t137;
-    const Real t463 = t462 - t461;
-    const Real t464 = t461 - (t462 - t463) + (t137 - t463) + (t460 - (t461 - t454) + t162);
-    const Real t465 = t462 + t464;
-    const Real t466 = t464 - (t465 - t462);
-    const Real t467 = t465 * t465;
-    const Real t468 = N_x * w_z;
-    const Real t469 = N_y * w_z;
-    const Real t470 = t204 * w_z;
-    const Real t471 = t470 * t73;
-    const Real t472 = t207 * w_z;
-    const Real t473 = t472 * t73;
-    const Real t474 = t208 * w_z;
-    const Real t475 = t474 * t73;
-    const Real t476 = t211 * w_z;
-    const Real t477 = t476 * t73;
-    const Real t478 = t212 * w_z;
-    const Real t479 = t478 * t73;
-    const Real t480 = t213 * w_z;
-    const Real t481 = t480 * t73;
-    const Real t482 = t266 * w_z;
-    const Real t483 = t482 * t73;
-    const Real t484 = t482 * t75;
-    const Real t485 = t269 * w_z;
-    const Real t486 = t485 * t73;
-    const Real t487 = t485 * t75;
-    const Real t488 = t270 * w_z;
-    const Real t489 = t488 * t73;
-    const Real t490 = t488 * t75;
-    const Real t491 = t273 * w_z;
-    const Real t492 = t491 * t73;
-    const Real t493 = t491 * t75;
-    const Real t494 = t274 * w_z;
-    const Real t495 = t494 * t73;
-    const Real t496 = t494 * t75;
-    const Real t497 = t275 * w_z;
-    const Real t498 = t497 * t73;
-    const Real t499 = t497 * t75;
-    const Real t500 = t469 - t332;
-    const Real t501 = t345 * w_z;
-    const Real t502 = t346 * w_z;
-    const Real t503 = t347 * w_z;
-    const Real t504 = t366 * w_z;
-    const Real t505 = t367 * w_z;
-    const Real t506 = t368 * w_z;
-    const Real t507 = t468 - t384;
-    const Real t508 = t399 * w_z;
-    const Real t509 = t400 * w_z;
-    const Real t510 = t402 * w_z;
-    const Real t511 = t423 * w_z;
-    const Real t512 = t424 * w_z;
-    const Real t513 = t426 * w_z;
-    const Real t514 = w_z * w_z;
-    const Real t515 = t7 * t514;
-    const Real t516 = t34 * t514;
-    const Real t517 = t42 * t514;
-    const Real t518 = t46 * t514;
-    const Real t519 = t228 * t514;
-    const Real t520 = t229 * t514;
-    const Real t521 = t234 * t514;
-    const Real t522 = t239 * t514;
-    const Real t523 = t240 * t514;
-    const Real t524 = t245 * t514;
-    const Real t525 = t246 * t514;
-    const Real t526 = t294 * t514;
-    const Real t527 = std::fma(Real(2), t521, t440);
-    const Real t528 = std::fma(t0, t501, t527);
-    const Real t529 = std::fma(t224, t437, t528);
-    const Real t530 = std::fma(Real(2), t377, t529);
-    const Real t531 = std::fma(t224, t517, t530);
-    const Real t532 = std::fma(t0, t430, t531);
-    const Real t533 = std::fma(t0, t508, t532);
-    const Real t534 = std::fma(t224, t370, t533);
-    const Real t535 = std::fma(t224, t515, t534);
-    const Real t536 = std::fma(t0, t509, t535);
-    const Real t537 = std::fma(t0, t431, t536);
-    const Real t538 = std::fma(t0, t432, t537);
-    const Real t539 = std::fma(t0, t510, t538);
-    const Real t540 = std::fma(Real(2), t444, t539);
-    const Real t541 = std::fma(t224, t372, t540);
-    const Real t542 = std::fma(t224, t518, t541);
-    const Real t543 = std::fma(t0, t502, t542);
-    const Real t544 = std::fma(t224, t436, t543);
-    const Real t545 = std::fma(t224, t516, t544);
-    const Real t546 = std::fma(t0, t503, t545);
-    const Real t547 = std::fma(t224, t438, t546);
-    const Real t548 = std::fma(t224, t373, t547);
-    const Real t549 = t456 + t526;
-    const Real t550 = t549 - t456;
-    const Real t551 = t507 - t468;
-    const Real t552 = t500 - t469;
-    const Real t553 = std::fma(Real(2), t471, t548);
-    const Real t554 = std::fma(t0, t392, t553);
-    const Real t555 = std::fma(t0, t334, t554);
-    const Real t556 = std::fma(Real(2), t386, t555);
-    const Real t557 = std::fma(t0, t477, t556);
-    const Real t558 = std::fma(Real(2), t340, t557);
-    const Real t559 = std::fma(t0, t479, t558);
-    const Real t560 = std::fma(Real(2), t342, t559);
-    const Real t561 = std::fma(t0, t481, t560);
-    const Real t562 = std::fma(Real(2), t344, t561);
-    const Real t563 = std::fma(t0, t336, t562);
-    const Real t564 = std::fma(Real(2), t388, t563);
-    const Real t565 = std::fma(Real(2), t473, t564);
-    const Real t566 = std::fma(t0, t394, t565);
-    const Real t567 = std::fma(Real(2), t475, t566);
-    const Real t568 = std::fma(t0, t396, t567);
-    const Real t569 = std::fma(t0, t338, t568);
-    const Real t570 = std::fma(Real(2), t390, t569);
-    const Real t571 = std::fma(t1, t93, t570);
-    const Real t572 = std::fma(t1, t124, t571);
-    const Real t573 = std::fma(Real(2), t155, t572);
-    const Real t574 = std::fma(t0, t144, t573);
-    const Real t575 = std::fma(t1, t97, t574);
-    const Real t576 = std::fma(Real(2), t127, t575);
-    const Real t577 = std::fma(t1, t159, t576);
-    const Real t578 = std::fma(t0, t115, t577);
-    const Real t579 = std::fma(t0, t138, t578);
-    const Real t580 = std::fma(t7, t121, t579);
-    const Real t581 = std::fma(t7, t152, t580);
-    const Real t582 = std::fma(t0, t140, t581);
-    const Real t583 = std::fma(t0, t117, t582);
-    const Real t584 = std::fma(t0, t119, t583);
-    const Real t585 = std::fma(t0, t142, t584);
-    const Real t586 = std::fma(Real(2), t99, t585);
-    const Real t587 = std::fma(t14, t126, t586);
-    const Real t588 = std::fma(t14, t159, t587);
-    const Real t589 = std::fma(t0, t146, t588);
-    const Real t590 = std::fma(t34, t92, t589);
-    const Real t591 = std::fma(t34, t152, t590);
-    const Real t592 = std::fma(t0, t148, t591);
-    const Real t593 = std::fma(t66, t92, t592);
-    const Real t594 = std::fma(t66, t121, t593);
-    const Real t595 = std::fma(w_z, w_z, -t514);
-    const Real t596 = t468 - (t507 - t551) - (t384 + t551) + (std::fma(N_x, w_z, -t468) - std::fma(N_z, w_x, -t384));
-    const Real t597 = t507 + t596;
-    const Real t598 = t190 * t597;
-    const Real t599 = t598 + t167;
-    const Real t600 = t469 - (t500 - t552) - (t332 + t552) + (std::fma(N_y, w_z, -t469) - std::fma(N_z, w_y, -t332));
-    const Real t601 = t500 + t600;
-    const Real t602 = t190 * t601;
-    const Real t603 = t602 - t166;
-    const Real t604 = std::sqrt(t594);
-    const Real t605 = std::sqrt(t448 + t526 - t504 + t443 + t381 + t524 - t427 - t511 + t375 + t520 - t512 - t428 - t429 - t513 + t447 + t378 + t525 - t505 + t442 + t523 - t506 + t446 + t380 + t483 - t413 - t349 + t404 - t492 + t358 - t495 + t361 - t498 + t364 - t352 + t407 + t486 - t416 + t489 - t419 - t355 + t410 + t94 + t125 + t156 - t145 + t98 + t128 + t160 - t116 - t139 + t123 + t154 - t141 - t118 - t120 - t143 + t100 + t129 + t161 - t147 + t96 + t158 - t149 + t102 + t131);
-    const Real t606 = t456 - (t549 - t550) + (t526 - t550) + (t455 - (t456 - t448) + std::fma(std::fma(t329, t14, std::fma(t288, t32, std::fma(t288, t14, -t294))), t514, std::fma(t294, t595, std::fma(t294, t514, -t526))));
-    const Real t607 = t549 + t606;
-    const Real t608 = t607 - t504;
-    const Real t609 = std::fma(t190, t596 - (t597 - t507), std::fma(t190, t597, -t598));
-    const Real t610 = t599 - t598;
-    const Real t611 = std::fma(t190, t600 - (t601 - t500), std::fma(t190, t601, -t602));
-    const Real t612 = t603 - t602;
-    const Real t613 = t608 - t607;
-    const Real t614 = t598 - (t599 - t610) + (t167 - t610);
-    const Real t615 = t614 + (std::fma(t284, t597, t609) + t172);
-    const Real t616 = t599 + t615;
-    const Real t617 = t616 - t112;
-    const Real t618 = t602 - (t603 - t612) - (t166 + t612);
-    const Real t619 = t618 + (std::fma(t284, t601, t611) - t171);
-    const Real t620 = t603 + t619;
-    const Real t621 = t620 + t91;
-    const Real t622 = t607 - (t608 - t613) - (t504 + t613) + (t606 - (t607 - t549) - std::fma(std::fma(std::fma(std::fma(t329, N_y, std::fma(t288, N_y, -t290)), N_z, std::fma(t290, N_z, -t299)), w_y, std::fma(t299, w_y, -t366)), w_z, std::fma(t366, w_z, -t504)));
-    const Real t623 = t608 + t622;
-    const Real t624 = t623 + t443;
-    const Real t625 = t617 - t616;
-    const Real t626 = t621 - t620;
-    const Real t627 = t624 - t623;
-    const Real t628 = t616 - (t617 - t625) - (t112 + t625) + (t615 - (t616 - t599) - t132);
-    const Real t629 = t617 + t628;
-    const Real t630 = t620 - (t621 - t626) + (t91 - t626) + (t619 - (t620 - t603) + t103);
-    const Real t631 = t621 + t630;
-    const Real t632 = t623 - (t624 - t627) + (t443 - t627) + (t622 - (t623 - t608) + std::fma(t312, t435, std::fma(t245, t449, std::fma(t245, t435, -t443))));
-    const Real t633 = t624 + t632;
-    const Real t634 = t633 + t381;
-    const Real t635 = t628 - (t629 - t617);
-    const Real t636 = t629 * t629;
-    const Real t637 = t467 + t636;
-    const Real t638 = t637 - t467;
-    const Real t639 = t630 - (t631 - t621);
-    const Real t640 = t631 * t631;
-    const Real t641 = t634 - t633;
-    const Real t642 = t633 - (t634 - t641) + (t381 - t641) + (t632 - (t633 - t624) + std::fma(std::fma(t329, t41, std::fma(t288, t65, std::fma(t288, t41, -t303))), t369, std::fma(t303, t382, std::fma(t303, t369, -t381))));
-    const Real t643 = t634 + t642;
-    const Real t644 = t643 + t524;
-    const Real t645 = t467 - (t637 - t638) + (t636 - t638) + (std::fma(t466, t465, std::fma(t465, t466, std::fma(t465, t465, -t467))) + std::fma(t635, t629, std::fma(t629, t635, std::fma(t629, t629, -t636))));
-    const Real t646 = t637 + t645;
-    const Real t647 = t646 + t640;
-    const Real t648 = t644 - t643;
-    const Real t649 = t647 - t646;
-    const Real t650 = t643 - (t644 - t648) + (t524 - t648) + (t642 - (t643 - t634) + std::fma(t312, t514, std::fma(t245, t595, std::fma(t245, t514, -t524))));
-    const Real t651 = t644 + t650;
-    const Real t652 = t651 - t427;
-    const Real t653 = t646 - (t647 - t649) + (t640 - t649) + (t645 - (t646 - t637) + std::fma(t639, t631, std::fma(t631, t639, std::fma(t631, t631, -t640))));
-    const Real t654 = t647 + t653;
-    const Real t655 = t188 * t654;
-    const Real t656 = t652 - t651;
-    const Real t657 = t651 - (t652 - t656) - (t427 + t656) + (t650 - (t651 - t644) - std::fma(std::fma(std::fma(t330, N_y, std::fma(t289, N_y, -t291)), w_x, std::fma(t291, w_x, -t421)), w_y, std::fma(t421, w_y, -t427)));
-    const Real t658 = t652 + t657;
-    const Real t659 = t658 - t511;
-    const Real t660 = t659 - t658;
-    const Real t661 = t658 - (t659 - t660) - (t511 + t660) + (t657 - (t658 - t652) - std::fma(std::fma(std::fma(t330, N_z, std::fma(t289, N_z, -t300)), w_x, std::fma(t300, w_x, -t423)), w_z, std::fma(t423, w_z, -t511)));
-    const Real t662 = t659 + t661;
-    const Real t663 = t662 + t374;
-    const Real t664 = t663 - t662;
-    const Real t665 = t662 - (t663 - t664) + (t374 - t664) + (t661 - (t662 - t659) + std::fma(t309, t369, std::fma(t228, t382, std::fma(t228, t369, -t374))));
-    const Real t666 = t663 + t665;
-    const Real t667 = t666 + t519;
-    const Real t668 = t667 - t666;
-    const Real t669 = t666 - (t667 - t668) + (t519 - t668) + (t665 - (t666 - t663) + std::fma(t309, t514, std::fma(t228, t595, std::fma(t228, t514, -t519))));
-    const Real t670 = t667 + t669;
-    const Real t671 = t670 - t512;
-    const Real t672 = t671 - t670;
-    const Real t673 = t670 - (t671 - t672) - (t512 + t672) + (t669 - (t670 - t667) - std::fma(std::fma(std::fma(std::fma(t328, t14, std::fma(t287, t32, std::fma(t287, t14, -t295))), N_z, std::fma(t295, N_z, -t301)), w_x, std::fma(t301, w_x, -t424)), w_z, std::fma(t424, w_z, -t512)));
-    const Real t674 = t671 + t673;
-    const Real t675 = t674 - t428;
-    const Real t676 = t675 - t674;
-    const Real t677 = t674 - (t675 - t676) - (t428 + t676) + (t673 - (t674 - t671) - std::fma(std::fma(std::fma(t328, t27, std::fma(t287, t36, std::fma(t287, t27, -t297))), w_x, std::fma(t297, w_x, -t422)), w_y, std::fma(t422, w_y, -t428)));
-    const Real t678 = t675 + t677;
-    const Real t679 = t678 - t429;
-    const Real t680 = t679 - t678;
-    const Real t681 = t678 - (t679 - t680) - (t429 + t680) + (t677 - (t678 - t675) - std::fma(std::fma(std::fma(std::fma(t328, N_y, std::fma(t287, N_y, -t292)), t41, std::fma(t292, t65, std::fma(t292, t41, -t304))), w_x, std::fma(t304, w_x, -t425)), w_y, std::fma(t425, w_y, -t429)));
-    const Real t682 = t679 + t681;
-    const Real t683 = t682 - t513;
-    const Real t684 = t683 - t682;
-    const Real t685 = t682 - (t683 - t684) - (t513 + t684) + (t681 - (t682 - t679) - std::fma(std::fma(std::fma(t328, t59, std::fma(t287, t69, std::fma(t287, t59, -t306))), w_x, std::fma(t306, w_x, -t426)), w_z, std::fma(t426, w_z, -t513)));
-    const Real t686 = t683 + t685;
-    const Real t687 = t686 + t447;
-    const Real t688 = t687 - t686;
-    const Real t689 = t686 - (t687 - t688) + (t447 - t688) + (t685 - (t686 - t683) + std::fma(std::fma(std::fma(t327, t14, std::fma(t286, t32, std::fma(t286, t14, -t296))), t41, std::fma(t296, t65, std::fma(t296, t41, -t305))), t435, std::fma(t305, t449, std::fma(t305, t435, -t447))));
-    const Real t690 = t687 + t689;
-    const Real t691 = t690 + t378;
-    const Real t692 = t691 - t690;
-    const Real t693 = t690 - (t691 - t692) + (t378 - t692) + (t689 - (t690 - t687) + std::fma(t313, t369, std::fma(t246, t382, std::fma(t246, t369, -t378))));
-    const Real t694 = t691 + t693;
-    const Real t695 = t694 + t525;
-    const Real t696 = t695 - t694;
-    const Real t697 = t694 - (t695 - t696) + (t525 - t696) + (t693 - (t694 - t691) + std::fma(t313, t514, std::fma(t246, t595, std::fma(t246, t514, -t525))));
-    const Real t698 = t695 + t697;
-    const Real t699 = t698 - t505;
-    const Real t700 = t699 - t698;
-    const Real t701 = t698 - (t699 - t700) - (t505 + t700) + (t697 - (t698 - t695) - std::fma(std::fma(std::fma(std::fma(t327, t27, std::fma(t286, t36, std::fma(t286, t27, -t298))), N_z, std::fma(t298, N_z, -t302)), w_y, std::fma(t302, w_y, -t367)), w_z, std::fma(t367, w_z, -t505)));
-    const Real t702 = t699 + t701;
-    const Real t703 = t702 + t441;
-    const Real t704 = t703 - t702;
-    const Real t705 = t702 - (t703 - t704) + (t441 - t704) + (t701 - (t702 - t699) + std::fma(t311, t435, std::fma(t239, t449, std::fma(t239, t435, -t441))));
-    const Real t706 = t703 + t705;
-    const Real t707 = t706 + t522;
-    const Real t708 = t707 - t706;
-    const Real t709 = t706 - (t707 - t708) + (t522 - t708) + (t705 - (t706 - t703) + std::fma(t311, t514, std::fma(t239, t595, std::fma(t239, t514, -t522))));
-    const Real t710 = t707 + t709;
-    const Real t711 = t710 - t506;
-    const Real t712 = t711 - t710;
-    const Real t713 = t710 - (t711 - t712) - (t506 + t712) + (t709 - (t710 - t707) - std::fma(std::fma(std::fma(std::fma(t327, N_y, std::fma(t286, N_y, -t293)), t59, std::fma(t293, t69, std::fma(t293, t59, -t307))), w_y, std::fma(t307, w_y, -t368)), w_z, std::fma(t368, w_z, -t506)));
-    const Real t714 = t711 + t713;
-    const Real t715 = t714 + t445;
-    const Real t716 = t715 - t714;
-    const Real t717 = t714 - (t715 - t716) + (t445 - t716) + (t713 - (t714 - t711) + std::fma(t314, t435, std::fma(t250, t449, std::fma(t250, t435, -t445))));
-    const Real t718 = t715 + t717;
-    const Real t719 = t718 + t379;
-    const Real t720 = t719 - t718;
-    const Real t721 = t718 - (t719 - t720) + (t379 - t720) + (t717 - (t718 - t715) + std::fma(t314, t369, std::fma(t250, t382, std::fma(t250, t369, -t379))));
-    const Real t722 = t719 + t721;
-    const Real t723 = t722 + t484;
-    const Real t724 = t723 - t722;
-    const Real t725 = mu * mu;
-    const Real t726 = mu * t174;
-    const Real t727 = t726 * t75;
-    const Real t728 = t727 * t165;
-    const Real t729 = t725 * t182;
-    const Real t730 = t729 * t177;
-    const Real t731 = t730 * t72;
-    const Real t732 = t731 * t170;
-    const Real t733 = t655 - t732;
-    const Real t734 = t733 - t655;
-    const Real t735 = t655 - (t733 - t734) - (t732 + t734) + (std::fma(std::fma(std::fma(q, q, -t179), t187, std::fma(t179, std::fma(t189, t184, std::fma(t184, t189, std::fma(t184, t184, -t187))), std::fma(t179, t187, -t188))), t654, std::fma(t188, t653 - (t654 - t647), std::fma(t188, t654, -t655))) - std::fma(std::fma(std::fma(std::fma(std::fma(mu, mu, -t725), t182, std::fma(t725, std::fma(t183, t180, std::fma(t180, t183, std::fma(t180, t180, -t182))), std::fma(t725, t182, -t729))), t177, std::fma(t729, std::fma(t178, t174, std::fma(t174, t178, std::fma(t174, t174, -t177))), std::fma(t729, t177, -t730))), t72, std::fma(t730, t74, std::fma(t730, t72, -t731))), t170, std::fma(t731, std::fma(t169, t165, std::fma(t165, t169, std::fma(t165, t165, -t170))), std::fma(t731, t170, -t732))));
-    const Real t736 = t733 + t735;
-    const Real t737 = t736 + (t735 - (t736 - t733));
-    const Real t738 = (t737 > Real(0) ? t77 : Real(1));
-    const Real t739 = (t737 > Real(0) ? Real(1) : t180);
-    const Real t740 = (t737 > Real(0) ? t604 : Real(1));
-    const Real t741 = (t737 > Real(0) ? t605 : Real(1));
-    const Real t742 = (t737 > Real(0) ? t604 + t604 : Real(1));
-    const Real t743 = (t737 > Real(0) ? t605 + t605 : Real(1));
-    if (!(std::fabs(t72) >= detail::smallest_divisor<Real>) || !(std::fabs(t72) <= std::numeric_limits<Real>::max()) || !(std::fabs(t738) >= detail::smallest_divisor<Real>) || !(std::fabs(t738) <= std::numeric_limits<Real>::max()) || !(std::fabs(t77) >= detail::smallest_divisor<Real>) || !(std::fabs(t77) <= std::numeric_limits<Real>::max()) || !(std::fabs(t739) >= detail::smallest_divisor<Real>) || !(std::fabs(t739) <= std::numeric_limits<Real>::max()) || !(std::fabs(t740) >= detail::smallest_divisor<Real>) || !(std::fabs(t740) <= std::numeric_limits<Real>::max()) || !(std::fabs(t741) >= detail::smallest_divisor<Real>) || !(std::fabs(t741) <= std::numeric_limits<Real>::max()) || !(std::fabs(t223) >= detail::smallest_divisor<Real>) || !(std::fabs(t223) <= std::numeric_limits<Real>::max()) || !(std::fabs(t742) >= detail::smallest_divisor<Real>) || !(std::fabs(t742) <= std::numeric_limits<Real>::max()) || !(std::fabs(t743) >= detail::smallest_divisor<Real>) || !(std::fabs(t743) <= std::numeric_limits<Real>::max())) {
+    const Real t27 = t24 + t25;
+    const Real t28 = t27 - t24;
+    const Real t29 = std::fma(v_z, t11, std::fma(v_z, t10, -t26));
+    const Real t30 = t24 - (t27 - t28) + (t25 - t28) + (t23 - (t24 - t20) + std::fma(N_z, v_z, -t25));
+    const Real t31 = t27 + t30;
+    const Real t32 = N_x * t31;
+    const Real t33 = N_y * t31;
+    const Real t34 = N_z * t31;
+    const Real t35 = t30 - (t31 - t27);
+    const Real t36 = t31 * t31;
+    const Real t37 = std::fma(N_x, t35, std::fma(N_x, t31, -t32));
+    const Real t38 = std::fma(N_y, t35, std::fma(N_y, t31, -t33));
+    const Real t39 = std::fma(N_z, t35, std::fma(N_z, t31, -t34));
+    const Real t40 = Real(1) + eps;
+    const Real t41 = t40 * t31;
+    const Real t42 = t40 - Real(1);
+    const Real t43 = t40 * t40;
+    const Real t44 = Real(1) - (t40 - t42) + (eps - t42);
+    const Real t45 = q * q;
+    const Real t46 = Real(1) + q;
+    const Real t47 = t46 - Real(1);
+    const Real t48 = t46 * t46;
+    const Real t49 = Real(1) - (t46 - t47) + (q - t47);
+    const Real t50 = Real(1) + b;
+    const Real t51 = q * t50;
+    const Real t52 = t50 - Real(1);
+    const Real t53 = t50 * t50;
+    const Real t54 = t45 * t53;
+    const Real t55 = Real(1) - (t50 - t52) + (b - t52);
+    const Real t56 = R * t12;
+    const Real t57 = R * q;
+    const Real t58 = t57 * t12;
+    const Real t59 = std::fma(R, t12, -t56);
+    const Real t60 = N_x * w_y;
+    const Real t61 = N_z * w_y;
+    const Real t62 = N_y * w_x;
+    const Real t63 = N_z * w_x;
+    const Real t64 = t60 - t62;
+    const Real t65 = t64 - t60;
+    const Real t66 = t60 - (t64 - t65) - (t62 + t65) + (std::fma(N_x, w_y, -t60) - std::fma(N_y, w_x, -t62));
+    const Real t67 = t64 + t66;
+    const Real t68 = t56 * t67;
+    const Real t69 = t68 - t34;
+    const Real t70 = std::fma(t56, t66 - (t67 - t64), std::fma(t56, t67, -t68));
+    const Real t71 = t69 - t68;
+    const Real t72 = t68 - (t69 - t71) - (t34 + t71);
+    const Real t73 = t72 + (std::fma(t59, t67, t70) - t39);
+    const Real t74 = t69 + t73;
+    const Real t75 = t74 + t26;
+    const Real t76 = t75 - t74;
+    const Real t77 = t74 - (t75 - t76) + (t26 - t76) + (t73 - (t74 - t69) + t29);
+    const Real t78 = t75 + t77;
+    const Real t79 = t77 - (t78 - t75);
+    const Real t80 = t78 * t78;
+    const Real t81 = N_x * w_z;
+    const Real t82 = N_y * w_z;
+    const Real t83 = t82 - t61;
+    const Real t84 = t81 - t63;
+    const Real t85 = t84 - t81;
+    const Real t86 = t83 - t82;
+    const Real t87 = t81 - (t84 - t85) - (t63 + t85) + (std::fma(N_x, w_z, -t81) - std::fma(N_z, w_x, -t63));
+    const Real t88 = t84 + t87;
+    const Real t89 = t56 * t88;
+    const Real t90 = t89 + t33;
+    const Real t91 = t82 - (t83 - t86) - (t61 + t86) + (std::fma(N_y, w_z, -t82) - std::fma(N_z, w_y, -t61));
+    const Real t92 = t83 + t91;
+    const Real t93 = t56 * t92;
+    const Real t94 = t93 - t32;
+    const Real t95 = std::fma(t56, t87 - (t88 - t84), std::fma(t56, t88, -t89));
+    const Real t96 = t90 - t89;
+    const Real t97 = std::fma(t56, t91 - (t92 - t83), std::fma(t56, t92, -t93));
+    const Real t98 = t94 - t93;
+    const Real t99 = t89 - (t90 - t96) + (t33 - t96);
+    const Real t100 = t99 + (std::fma(t59, t88, t95) + t38);
+    const Real t101 = t90 + t100;
+    const Real t102 = t101 - t19;
+    const Real t103 = t93 - (t94 - t98) - (t32 + t98);
+    const Real t104 = t103 + (std::fma(t59, t92, t97) - t37);
+    const Real t105 = t94 + t104;
+    const Real t106 = t105 + t16;
+    const Real t107 = t102 - t101;
+    const Real t108 = t106 - t105;
+    const Real t109 = t101 - (t102 - t107) - (t19 + t107) + (t100 - (t101 - t90) - t22);
+    const Real t110 = t102 + t109;
+    const Real t111 = t105 - (t106 - t108) + (t16 - t108) + (t104 - (t105 - t94) + t17);
+    const Real t112 = t106 + t111;
+    const Real t113 = t109 - (t110 - t102);
+    const Real t114 = t110 * t110;
+    const Real t115 = t80 + t114;
+    const Real t116 = t115 - t80;
+    const Real t117 = t111 - (t112 - t106);
+    const Real t118 = t112 * t112;
+    const Real t119 = t80 - (t115 - t116) + (t114 - t116) + (std::fma(t79, t78, std::fma(t78, t79, std::fma(t78, t78, -t80))) + std::fma(t113, t110, std::fma(t110, t113, std::fma(t110, t110, -t114))));
+    const Real t120 = t115 + t119;
+    const Real t121 = t120 + t118;
+    const Real t122 = t121 - t120;
+    const Real t123 = t120 - (t121 - t122) + (t118 - t122) + (t119 - (t120 - t115) + std::fma(t117, t112, std::fma(t112, t117, std::fma(t112, t112, -t118))));
+    const Real t124 = t121 + t123;
+    const Real t125 = t54 * t124;
+    const Real t126 = mu * mu;
+    const Real t127 = mu * t40;
+    const Real t128 = t127 * t12;
+    const Real t129 = t128 * t31;
+    const Real t130 = t126 * t48;
+    const Real t131 = t130 * t43;
+    const Real t132 = t131 * t10;
+    const Real t133 = t132 * t36;
+    const Real t134 = t125 - t133;
+    const Real t135 = t134 - t125;
+    const Real t136 = t125 - (t134 - t135) - (t133 + t135) + (std::fma(std::fma(std::fma(q, q, -t45), t53, std::fma(t45, std::fma(t55, t50, std::fma(t50, t55, std::fma(t50, t50, -t53))), std::fma(t45, t53, -t54))), t124, std::fma(t54, t123 - (t124 - t121), std::fma(t54, t124, -t125))) - std::fma(std::fma(std::fma(std::fma(std::fma(mu, mu, -t126), t48, std::fma(t126, std::fma(t49, t46, std::fma(t46, t49, std::fma(t46, t46, -t48))), std::fma(t126, t48, -t130))), t43, std::fma(t130, std::fma(t44, t40, std::fma(t40, t44, std::fma(t40, t40, -t43))), std::fma(t130, t43, -t131))), t10, std::fma(t131, t11, std::fma(t131, t10, -t132))), t36, std::fma(t132, std::fma(t35, t31, std::fma(t31, t35, std::fma(t31, t31, -t36))), std::fma(t132, t36, -t133))));
+    const Real t137 = t134 + t136;
+    const Real t138 = t137 + (t136 - (t137 - t134));
+    const Real t139 = (t138 > Real(0) ? t14 : Real(1));
+    const Real t140 = (t138 > Real(0) ? Real(1) : t46);
+    if (!(std::fabs(t10) >= detail::smallest_divisor<Real>) || !(std::fabs(t10) <= std::numeric_limits<Real>::max()) || !(std::fabs(t139) >= detail::smallest_divisor<Real>) || !(std::fabs(t139) <= std::numeric_limits<Real>::max()) || !(std::fabs(t14) >= detail::smallest_divisor<Real>) || !(std::fabs(t14) <= std::numeric_limits<Real>::max()) || !(std::fabs(t140) >= detail::smallest_divisor<Real>) || !(std::fabs(t140) <= std::numeric_limits<Real>::max()) || !(std::fabs(t58) >= detail::smallest_divisor<Real>) || !(std::fabs(t58) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t744 = t175 / t72;
-    const Real t745 = t76 / t738;
-    const Real t746 = t76 / t77;
-    const Real t747 = t185 / t739;
-    const Real t748 = std::fma(R, t746, t284);
-    const Real t749 = std::fma(std::fma(R, q, -t222), t75, std::fma(t222, t746, std::fma(t222, t75, -t223)));
-    const Real t750 = t459 + (std::fma(t748, t452, t457) - t173);
-    const Real t751 = t454 + t750;
-    const Real t752 = t751 + t137;
-    const Real t753 = t614 + (std::fma(t748, t597, t609) + t172);
-    const Real t754 = t599 + t753;
-    const Real t755 = t754 - t112;
-    const Real t756 = t618 + (std::fma(t748, t601, t611) - t171);
-    const Real t757 = t603 + t756;
-    const Real t758 = t757 + t91;
-    const Real t759 = t722 - (t723 - t724) + (t484 - t724) + (t721 - (t722 - t719) + std::fma(std::fma(std::fma(t319, v_x, std::fma(t256, v_x, -t266)), w_z, std::fma(t266, w_z, -t482)), t75, std::fma(t482, t745, std::fma(t482, t75, -t484))));
-    const Real t760 = t723 + t759;
-    const Real t761 = t760 - t414;
-    const Real t762 = std::fma(std::fma(std::fma(mu, t178, std::fma(mu, t174, -t726)), t75, std::fma(t726, t745, std::fma(t726, t75, -t727))), t165, std::fma(t727, t169, std::fma(t727, t165, -t728)));
-    const Real t763 = t728 / t740;
-    const Real t764 = t728 / t741;
-    const Real t765 = -t744;
-    const Real t766 = -t747;
-    const Real t767 = std::fma(t766, t183, std::fma(t766, t180, t185) + std::fma(q, t189, std::fma(q, t184, -t185))) / t739;
-    const Real t768 = t752 - t751;
-    const Real t769 = t755 - t754;
-    const Real t770 = t758 - t757;
-    const Real t771 = t761 - t760;
-    const Real t772 = -t763;
-    const Real t773 = -t764;
-    const Real t774 = (t737 > Real(0) ? t773 : t747);
-    const Real t775 = t765 + -(std::fma(t765, t74, std::fma(t765, t72, t175) + std::fma(t178, t165, std::fma(t174, t169, std::fma(t174, t165, -t175)))) / t72);
-    const Real t776 = N_x * t775;
-    const Real t777 = N_y * t775;
-    const Real t778 = N_z * t775;
-    const Real t779 = t776 + v_x;
-    const Real t780 = t777 + v_y;
-    const Real t781 = t778 + v_z;
-    const Real t782 = t751 - (t752 - t768) + (t137 - t768) + (t750 - (t751 - t454) + t162);
-    const Real t783 = t752 + t782;
-    const Real t784 = t783 / t72;
-    const Real t785 = t754 - (t755 - t769) - (t112 + t769) + (t753 - (t754 - t599) - t132);
-    const Real t786 = t755 + t785;
-    const Real t787 = t786 / t72;
-    const Real t788 = N_x * t787;
-    const Real t789 = N_z * t787;
-    const Real t790 = t757 - (t758 - t770) + (t91 - t770) + (t756 - (t757 - t603) + t103);
-    const Real t791 = t758 + t790;
-    const Real t792 = t791 / t72;
-    const Real t793 = t760 - (t761 - t771) - (t414 + t771) + (t759 - (t760 - t723) - std::fma(std::fma(std::fma(t319, v_z, std::fma(t256, v_z, -t278)), w_x, std::fma(t278, w_x, -t412)), t75, std::fma(t412, t745, std::fma(t412, t75, -t414))));
-    const Real t794 = t761 + t793;
-    const Real t795 = t794 - t350;
-    const Real t796 = -t784;
-    const Real t797 = N_x * t796;
-    const Real t798 = N_y * t796;
-    const Real t799 = -t787;
-    const Real t800 = t798 - t789;
-    const Real t801 = -t792;
-    const Real t802 = N_y * t801;
-    const Real t803 = N_z * t801;
-    const Real t804 = t788 - t802;
-    const Real t805 = t804 - t788;
-    const Real t806 = t795 - t794;
-    const Real t807 = t797 - t803;
-    const Real t808 = t807 - t797;
-    const Real t809 = t800 - t798;
-    const Real t810 = std::fma(t799, t74, std::fma(t799, t72, t786) + (t785 - (t786 - t755))) / t72;
-    const Real t811 = t787 + t810;
-    const Real t812 = t794 - (t795 - t806) - (t350 + t806) + (t793 - (t794 - t761) - std::fma(std::fma(std::fma(t322, v_x, std::fma(t261, v_x, -t267)), w_y, std::fma(t267, w_y, -t348)), t75, std::fma(t348, t745, std::fma(t348, t75, -t350))));
-    const Real t813 = t795 + t812;
-    const Real t814 = t813 + t405;
-    const Real t815 = -(std::fma(t796, t74, std::fma(t796, t72, t783) + (t782 - (t783 - t752))) / t72);
-    const Real t816 = t796 + t815;
-    const Real t817 = -(std::fma(t801, t74, std::fma(t801, t72, t791) + (t790 - (t791 - t758))) / t72);
-    const Real t818 = t801 + t817;
-    const Real t819 = t814 - t813;
-    const Real t820 = t798 - (t800 - t809) - (t789 + t809) + (std::fma(N_y, t815, std::fma(N_y, t796, -t798)) - std::fma(N_z, t810, std::fma(N_z, t787, -t789)));
-    const Real t821 = t800 + t820;
-    const Real t822 = t774 * t821;
-    const Real t823 = t822 / t223;
-    const Real t824 = t788 - (t804 - t805) - (t802 + t805) + (std::fma(N_x, t810, std::fma(N_x, t787, -t788)) - std::fma(N_y, t817, std::fma(N_y, t801, -t802)));
-    const Real t825 = t804 + t824;
-    const Real t826 = t774 * t825;
-    const Real t827 = t826 / t223;
-    const Real t828 = t797 - (t807 - t808) - (t803 + t808) + (std::fma(N_x, t815, std::fma(N_x, t796, -t797)) - std::fma(N_z, t817, std::fma(N_z, t801, -t803)));
-    const Real t829 = t807 + t828;
-    const Real t830 = t774 * t829;
-    const Real t831 = t830 / t223;
-    const Real t832 = t813 - (t814 - t819) + (t405 - t819) + (t812 - (t813 - t795) + std::fma(std::fma(std::fma(t322, v_y, std::fma(t261, v_y, -t272)), w_x, std::fma(t272, w_x, -t403)), t75, std::fma(t403, t745, std::fma(t403, t75, -t405))));
-    const Real t833 = t814 + t832;
-    const Real t834 = t833 - t493;
-    const Real t835 = -t823;
-    const Real t836 = -t827;
-    const Real t837 = -t831;
-    const Real t838 = t834 - t833;
-    const Real t839 = t833 - (t834 - t838) - (t493 + t838) + (t832 - (t833 - t814) - std::fma(std::fma(std::fma(t318, v_y, std::fma(t255, v_y, -t273)), w_z, std::fma(t273, w_z, -t491)), t75, std::fma(t491, t745, std::fma(t491, t75, -t493))));
-    const Real t840 = t834 + t839;
-    const Real t841 = t840 + t359;
-    const Real t842 = t841 - t840;
-    const Real t843 = t840 - (t841 - t842) + (t359 - t842) + (t839 - (t840 - t834) + std::fma(std::fma(std::fma(t318, v_z, std::fma(t255, v_z, -t279)), w_y, std::fma(t279, w_y, -t357)), t75, std::fma(t357, t745, std::fma(t357, t75, -t359))));
-    const Real t844 = t841 + t843;
-    const Real t845 = t844 - t496;
-    const Real t846 = t845 - t844;
-    const Real t847 = t844 - (t845 - t846) - (t496 + t846) + (t843 - (t844 - t841) - std::fma(std::fma(std::fma(t320, v_y, std::fma(t258, v_y, -t274)), w_z, std::fma(t274, w_z, -t494)), t75, std::fma(t494, t745, std::fma(t494, t75, -t496))));
-    const Real t848 = t845 + t847;
-    const Real t849 = t848 + t362;
-    const Real t850 = t849 - t848;
-    const Real t851 = t848 - (t849 - t850) + (t362 - t850) + (t847 - (t848 - t845) + std::fma(std::fma(std::fma(t320, v_z, std::fma(t258, v_z, -t280)), w_y, std::fma(t280, w_y, -t360)), t75, std::fma(t360, t745, std::fma(t360, t75, -t362))));
-    const Real t852 = t849 + t851;
-    const Real t853 = t852 - t499;
-    const Real t854 = t853 - t852;
-    const Real t855 = t852 - (t853 - t854) - (t499 + t854) + (t851 - (t852 - t849) - std::fma(std::fma(std::fma(t324, v_y, std::fma(t263, v_y, -t275)), w_z, std::fma(t275, w_z, -t497)), t75, std::fma(t497, t745, std::fma(t497, t75, -t499))));
-    const Real t856 = t853 + t855;
-    const Real t857 = t856 + t365;
-    const Real t858 = t857 - t856;
-    const Real t859 = t856 - (t857 - t858) + (t365 - t858) + (t855 - (t856 - t853) + std::fma(std::fma(std::fma(t324, v_z, std::fma(t263, v_z, -t281)), w_y, std::fma(t281, w_y, -t363)), t75, std::fma(t363, t745, std::fma(t363, t75, -t365))));
-    const Real t860 = t857 + t859;
-    const Real t861 = t860 - t353;
-    const Real t862 = t861 - t860;
-    const Real t863 = t860 - (t861 - t862) - (t353 + t862) + (t859 - (t860 - t857) - std::fma(std::fma(std::fma(t323, v_x, std::fma(t262, v_x, -t268)), w_y, std::fma(t268, w_y, -t351)), t75, std::fma(t351, t745, std::fma(t351, t75, -t353))));
-    const Real t864 = t861 + t863;
-    const Real t865 = t864 + t408;
-    const Real t866 = t865 - t864;
-    const Real t867 = t864 - (t865 - t866) + (t408 - t866) + (t863 - (t864 - t861) + std::fma(std::fma(std::fma(t323, v_y, std::fma(t262, v_y, -t276)), w_x, std::fma(t276, w_x, -t406)), t75, std::fma(t406, t745, std::fma(t406, t75, -t408))));
-    const Real t868 = t865 + t867;
-    const Real t869 = t868 + t487;
-    const Real t870 = t869 - t868;
-    const Real t871 = t868 - (t869 - t870) + (t487 - t870) + (t867 - (t868 - t865) + std::fma(std::fma(std::fma(t321, v_x, std::fma(t260, v_x, -t269)), w_z, std::fma(t269, w_z, -t485)), t75, std::fma(t485, t745, std::fma(t485, t75, -t487))));
-    const Real t872 = t869 + t871;
-    const Real t873 = t872 - t417;
-    const Real t874 = t873 - t872;
-    const Real t875 = t872 - (t873 - t874) - (t417 + t874) + (t871 - (t872 - t869) - std::fma(std::fma(std::fma(t321, v_z, std::fma(t260, v_z, -t282)), w_x, std::fma(t282, w_x, -t415)), t75, std::fma(t415, t745, std::fma(t415, t75, -t417))));
-    const Real t876 = t873 + t875;
-    const Real t877 = t876 + t490;
-    const Real t878 = t877 - t876;
-    const Real t879 = t876 - (t877 - t878) + (t490 - t878) + (t875 - (t876 - t873) + std::fma(std::fma(std::fma(t325, v_x, std::fma(t264, v_x, -t270)), w_z, std::fma(t270, w_z, -t488)), t75, std::fma(t488, t745, std::fma(t488, t75, -t490))));
-    const Real t880 = t877 + t879;
-    const Real t881 = t880 - t420;
-    const Real t882 = t881 - t880;
-    const Real t883 = t880 - (t881 - t882) - (t420 + t882) + (t879 - (t880 - t877) - std::fma(std::fma(std::fma(t325, v_z, std::fma(t264, v_z, -t283)), w_x, std::fma(t283, w_x, -t418)), t75, std::fma(t418, t745, std::fma(t418, t75, -t420))));
-    const Real t884 = t881 + t883;
-    const Real t885 = t884 - t356;
-    const Real t886 = t885 - t884;
-    const Real t887 = t884 - (t885 - t886) - (t356 + t886) + (t883 - (t884 - t881) - std::fma(std::fma(std::fma(t326, v_x, std::fma(t265, v_x, -t271)), w_y, std::fma(t271, w_y, -t354)), t75, std::fma(t354, t745, std::fma(t354, t75, -t356))));
-    const Real t888 = t885 + t887;
-    const Real t889 = t888 + t411;
-    const Real t890 = t889 - t888;
-    const Real t891 = t888 - (t889 - t890) + (t411 - t890) + (t887 - (t888 - t885) + std::fma(std::fma(std::fma(t326, v_y, std::fma(t265, v_y, -t277)), w_x, std::fma(t277, w_x, -t409)), t75, std::fma(t409, t745, std::fma(t409, t75, -t411))));
-    const Real t892 = t889 + t891;
-    const Real t893 = t892 + t94;
-    const Real t894 = t893 - t892;
-    const Real t895 = t892 - (t893 - t894) + (t94 - t894) + (t891 - (t892 - t889) + std::fma(t35, t92, std::fma(t19, t104, std::fma(t19, t92, -t94))));
-    const Real t896 = t893 + t895;
-    const Real t897 = t896 + t125;
-    const Real t898 = t897 - t896;
-    const Real t899 = t896 - (t897 - t898) + (t125 - t898) + (t895 - (t896 - t893) + std::fma(t35, t121, std::fma(t19, t133, std::fma(t19, t121, -t125))));
-    const Real t900 = t897 + t899;
-    const Real t901 = t900 + t156;
-    const Real t902 = t901 - t900;
-    const Real t903 = t900 - (t901 - t902) + (t156 - t902) + (t899 - (t900 - t897) + std::fma(std::fma(t12, t14, std::fma(t6, t32, std::fma(t6, t14, -t24))), t152, std::fma(t24, t163, std::fma(t24, t152, -t156))));
-    const Real t904 = t901 + t903;
-    const Real t905 = t904 - t145;
-    const Real t906 = t905 - t904;
-    const Real t907 = t904 - (t905 - t906) - (t145 + t906) + (t903 - (t904 - t901) - std::fma(std::fma(std::fma(std::fma(t12, N_y, std::fma(t6, N_y, -t25)), N_z, std::fma(t25, N_z, -t53)), v_y, std::fma(t53, v_y, -t107)), v_z, std::fma(t107, v_z, -t145)));
-    const Real t908 = t905 + t907;
-    const Real t909 = t908 + t98;
-    const Real t910 = t909 - t908;
-    const Real t911 = t908 - (t909 - t910) + (t98 - t910) + (t907 - (t908 - t905) + std::fma(t67, t92, std::fma(t42, t104, std::fma(t42, t92, -t98))));
-    const Real t912 = t909 + t911;
-    const Real t913 = t912 + t128;
-    const Real t914 = t913 - t912;
-    const Real t915 = t912 - (t913 - t914) + (t128 - t914) + (t911 - (t912 - t909) + std::fma(std::fma(t12, t41, std::fma(t6, t65, std::fma(t6, t41, -t44))), t121, std::fma(t44, t133, std::fma(t44, t121, -t128))));
-    const Real t916 = t913 + t915;
-    const Real t917 = t916 + t160;
-    const Real t918 = t917 - t916;
-    const Real t919 = t916 - (t917 - t918) + (t160 - t918) + (t915 - (t916 - t913) + std::fma(t67, t152, std::fma(t42, t163, std::fma(t42, t152, -t160))));
-    const Real t920 = t917 + t919;
-    const Real t921 = t920 - t116;
-    const Real t922 = t921 - t920;
-    const Real t923 = t920 - (t921 - t922) - (t116 + t922) + (t919 - (t920 - t917) - std::fma(std::fma(std::fma(t13, N_y, std::fma(t9, N_y, -t26)), v_x, std::fma(t26, v_x, -t80)), v_y, std::fma(t80, v_y, -t116)));
-    const Real t924 = t921 + t923;
-    const Real t925 = t924 - t139;
-    const Real t926 = t925 - t924;
-    const Real t927 = t924 - (t925 - t926) - (t139 + t926) + (t923 - (t924 - t921) - std::fma(std::fma(std::fma(t13, N_z, std::fma(t9, N_z, -t45)), v_x, std::fma(t45, v_x, -t84)), v_z, std::fma(t84, v_z, -t139)));
-    const Real t928 = t925 + t927;
-    const Real t929 = t928 + t122;
-    const Real t930 = t929 - t928;
-    const Real t931 = t928 - (t929 - t930) + (t122 - t930) + (t927 - (t928 - t925) + std::fma(t10, t121, std::fma(t3, t133, std::fma(t3, t121, -t122))));
-    const Real t932 = t929 + t931;
-    const Real t933 = t932 + t153;
-    const Real t934 = t933 - t932;
-    const Real t935 = t932 - (t933 - t934) + (t153 - t934) + (t931 - (t932 - t929) + std::fma(t10, t152, std::fma(t3, t163, std::fma(t3, t152, -t153))));
-    const Real t936 = t933 + t935;
-    const Real t937 = t936 - t141;
-    const Real t938 = t937 - t936;
-    const Real t939 = t936 - (t937 - t938) - (t141 + t938) + (t935 - (t936 - t933) - std::fma(std::fma(std::fma(std::fma(t11, t14, std::fma(t4, t32, std::fma(t4, t14, -t22))), N_z, std::fma(t22, N_z, -t51)), v_x, std::fma(t51, v_x, -t87)), v_z, std::fma(t87, v_z, -t141)));
-    const Real t940 = t937 + t939;
-    const Real t941 = t940 - t118;
-    const Real t942 = t941 - t940;
-    const Real t943 = t940 - (t941 - t942) - (t118 + t942) + (t939 - (t940 - t937) - std::fma(std::fma(std::fma(t11, t27, std::fma(t4, t36, std::fma(t4, t27, -t29))), v_x, std::fma(t29, v_x, -t82)), v_y, std::fma(t82, v_y, -t118)));
-    const Real t944 = t941 + t943;
-    const Real t945 = t944 - t120;
-    const Real t946 = t945 - t944;
-    const Real t947 = t944 - (t945 - t946) - (t120 + t946) + (t943 - (t944 - t941) - std::fma(std::fma(std::fma(std::fma(t11, N_y, std::fma(t4, N_y, -t23)), t41, std::fma(t23, t65, std::fma(t23, t41, -t52))), v_x, std::fma(t52, v_x, -t88)), v_y, std::fma(t88, v_y, -t120)));
-    const Real t948 = t945 + t947;
-    const Real t949 = t948 - t143;
-    const Real t950 = t949 - t948;
-    const Real t951 = t948 - (t949 - t950) - (t143 + t950) + (t947 - (t948 - t945) - std::fma(std::fma(std::fma(t11, t59, std::fma(t4, t69, std::fma(t4, t59, -t61))), v_x, std::fma(t61, v_x, -t90)), v_z, std::fma(t90, v_z, -t143)));
-    const Real t952 = t949 + t951;
-    const Real t953 = t952 + t100;
-    const Real t954 = t953 - t952;
-    const Real t955 = t952 - (t953 - t954) + (t100 - t954) + (t951 - (t952 - t949) + std::fma(std::fma(std::fma(Real(2), t32, std::fma(Real(2), t14, -t33)), t41, std::fma(t33, t65, std::fma(t33, t41, -t55))), t92, std::fma(t55, t104, std::fma(t55, t92, -t100))));
-    const Real t956 = t953 + t955;
-    const Real t957 = t956 + t129;
-    const Real t958 = t957 - t956;
-    const Real t959 = t956 - (t957 - t958) + (t129 - t958) + (t955 - (t956 - t953) + std::fma(t68, t121, std::fma(t46, t133, std::fma(t46, t121, -t129))));
-    const Real t960 = t957 + t959;
-    const Real t961 = t960 + t161;
-    const Real t962 = t961 - t960;
-    const Real t963 = t960 - (t961 - t962) + (t161 - t962) + (t959 - (t960 - t957) + std::fma(t68, t152, std::fma(t46, t163, std::fma(t46, t152, -t161))));
-    const Real t964 = t961 + t963;
-    const Real t965 = t964 - t147;
-    const Real t966 = t965 - t964;
-    const Real t967 = t964 - (t965 - t966) - (t147 + t966) + (t963 - (t964 - t961) - std::fma(std::fma(std::fma(std::fma(Real(2), t36, std::fma(Real(2), t27, -t37)), N_z, std::fma(t37, N_z, -t56)), v_y, std::fma(t56, v_y, -t109)), v_z, std::fma(t109, v_z, -t147)));
-    const Real t968 = t965 + t967;
-    const Real t969 = t968 + t95;
-    const Real t970 = t969 - t968;
-    const Real t971 = t968 - (t969 - t970) + (t95 - t970) + (t967 - (t968 - t965) + std::fma(t38, t92, std::fma(t30, t104, std::fma(t30, t92, -t95))));
-    const Real t972 = t969 + t971;
-    const Real t973 = t972 + t157;
-    const Real t974 = t973 - t972;
-    const Real t975 = t972 - (t973 - t974) + (t157 - t974) + (t971 - (t972 - t969) + std::fma(t38, t152, std::fma(t30, t163, std::fma(t30, t152, -t157))));
-    const Real t976 = t973 + t975;
-    const Real t977 = t976 - t149;
-    const Real t978 = t977 - t976;
-    const Real t979 = t976 - (t977 - t978) - (t149 + t978) + (t975 - (t976 - t973) - std::fma(std::fma(std::fma(std::fma(Real(2), N_y, -t31), t59, std::fma(t31, t69, std::fma(t31, t59, -t63))), v_y, std::fma(t63, v_y, -t111)), v_z, std::fma(t111, v_z, -t149)));
-    const Real t980 = t977 + t979;
-    const Real t981 = t980 + t101;
-    const Real t982 = t981 - t980;
-    const Real t983 = t980 - (t981 - t982) + (t101 - t982) + (t979 - (t980 - t977) + std::fma(t70, t92, std::fma(t64, t104, std::fma(t64, t92, -t101))));
-    const Real t984 = t981 + t983;
-    const Real t985 = t984 + t130;
-    const Real t986 = t985 - t984;
-    const Real t987 = t984 - (t985 - t986) + (t130 - t986) + (t983 - (t984 - t981) + std::fma(t70, t121, std::fma(t64, t133, std::fma(t64, t121, -t130))));
-    const Real t988 = t985 + t987;
-    const Real t989 = std::sqrt(t988);
-    const Real t990 = std::fma(-t989, t989, t988) + (t987 - (t988 - t985));
-    const Real t991 = (t737 > Real(0) ? t772 : t747) + (t737 > Real(0) ? -(std::fma(t772, t990 / t742, std::fma(t772, t989, t728) + t762) / t740) : t767);
-    const Real t992 = std::fma(t991, t818, t779);
-    const Real t993 = std::fma(t991, t811, t780);
-    const Real t994 = std::fma(t991, t816, t781);
-    const Real t995 = (t737 > Real(0) ? -(std::fma(t773, t990 / t743, std::fma(t773, t989, t728) + t762) / t741) : t767);
-    const Real result0 = t992;
-    const Real result1 = t993;
-    const Real result2 = t994;
-    const Real result3 = w_x + (t835 + -(std::fma(t835, t749, std::fma(t835, t223, t822) + std::fma(t995, t821, std::fma(t774, t820 - (t821 - t800), std::fma(t774, t821, -t822)))) / t223));
-    const Real result4 = w_y + (t831 + std::fma(t837, t749, std::fma(t837, t223, t830) + std::fma(t995, t829, std::fma(t774, t828 - (t829 - t807), std::fma(t774, t829, -t830)))) / t223);
-    const Real result5 = w_z + (t836 + -(std::fma(t836, t749, std::fma(t836, t223, t826) + std::fma(t995, t825, std::fma(t774, t824 - (t825 - t804), std::fma(t774, t825, -t826)))) / t223));
+    const Real t141 = t41 / t10;
+    const Real t142 = t13 / t139;
+    const Real t143 = t13 / t14;
+    const Real t144 = t51 / t140;
+    const Real t145 = std::fma(R, t142, t59);
+    const Real t146 = std::fma(R, t143, t59);
+    const Real t147 = std::fma(std::fma(R, q, -t57), t12, std::fma(t57, t143, std::fma(t57, t12, -t58)));
+    const Real t148 = t72 + (std::fma(t145, t67, t70) - t39);
+    const Real t149 = t69 + t148;
+    const Real t150 = t149 + t26;
+    const Real t151 = t72 + (std::fma(t146, t67, t70) - t39);
+    const Real t152 = t69 + t151;
+    const Real t153 = t152 + t26;
+    const Real t154 = t99 + (std::fma(t145, t88, t95) + t38);
+    const Real t155 = t90 + t154;
+    const Real t156 = t155 - t19;
+    const Real t157 = t99 + (std::fma(t146, t88, t95) + t38);
+    const Real t158 = t90 + t157;
+    const Real t159 = t158 - t19;
+    const Real t160 = t103 + (std::fma(t145, t92, t97) - t37);
+    const Real t161 = t94 + t160;
+    const Real t162 = t161 + t16;
+    const Real t163 = t103 + (std::fma(t146, t92, t97) - t37);
+    const Real t164 = t94 + t163;
+    const Real t165 = t164 + t16;
+    const Real t166 = -t141;
+    const Real t167 = -t144;
+    const Real t168 = t150 - t149;
+    const Real t169 = t153 - t152;
+    const Real t170 = t156 - t155;
+    const Real t171 = t159 - t158;
+    const Real t172 = t162 - t161;
+    const Real t173 = t165 - t164;
+    const Real t174 = t166 + -(std::fma(t166, t11, std::fma(t166, t10, t41) + std::fma(t44, t31, std::fma(t40, t35, std::fma(t40, t31, -t41)))) / t10);
+    const Real t175 = N_x * t174;
+    const Real t176 = N_y * t174;
+    const Real t177 = N_z * t174;
+    const Real t178 = t175 + v_x;
+    const Real t179 = t176 + v_y;
+    const Real t180 = t177 + v_z;
+    const Real t181 = t149 - (t150 - t168) + (t26 - t168) + (t148 - (t149 - t69) + t29);
+    const Real t182 = t150 + t181;
+    const Real t183 = t152 - (t153 - t169) + (t26 - t169) + (t151 - (t152 - t69) + t29);
+    const Real t184 = t153 + t183;
+    const Real t185 = t184 / t10;
+    const Real t186 = t155 - (t156 - t170) - (t19 + t170) + (t154 - (t155 - t90) - t22);
+    const Real t187 = t156 + t186;
+    const Real t188 = t158 - (t159 - t171) - (t19 + t171) + (t157 - (t158 - t90) - t22);
+    const Real t189 = t159 + t188;
+    const Real t190 = t189 / t10;
+    const Real t191 = N_x * t190;
+    const Real t192 = N_z * t190;
+    const Real t193 = t161 - (t162 - t172) + (t16 - t172) + (t160 - (t161 - t94) + t17);
+    const Real t194 = t162 + t193;
+    const Real t195 = t164 - (t165 - t173) + (t16 - t173) + (t163 - (t164 - t94) + t17);
+    const Real t196 = t165 + t195;
+    const Real t197 = t196 / t10;
+    const Real t198 = t181 - (t182 - t150);
+    const Real t199 = t182 * t182;
+    const Real t200 = -t185;
+    const Real t201 = N_x * t200;
+    const Real t202 = N_y * t200;
+    const Real t203 = t186 - (t187 - t156);
+    const Real t204 = t187 * t187;
+    const Real t205 = -t190;
+    const Real t206 = t202 - t192;
+    const Real t207 = t193 - (t194 - t162);
+    const Real t208 = t194 * t194;
+    const Real t209 = -t197;
+    const Real t210 = N_y * t209;
+    const Real t211 = N_z * t209;
+    const Real t212 = t191 - t210;
+    const Real t213 = t212 - t191;
+    const Real t214 = t199 + t204;
+    const Real t215 = t214 - t199;
+    const Real t216 = t201 - t211;
+    const Real t217 = t216 - t201;
+    const Real t218 = t206 - t202;
+    const Real t219 = std::fma(t205, t11, std::fma(t205, t10, t189) + (t188 - (t189 - t159))) / t10;
+    const Real t220 = t190 + t219;
+    const Real t221 = -(std::fma(t200, t11, std::fma(t200, t10, t184) + (t183 - (t184 - t153))) / t10);
+    const Real t222 = t200 + t221;
+    const Real t223 = -(std::fma(t209, t11, std::fma(t209, t10, t196) + (t195 - (t196 - t165))) / t10);
+    const Real t224 = t209 + t223;
+    const Real t225 = t199 - (t214 - t215) + (t204 - t215) + (std::fma(t198, t182, std::fma(t182, t198, std::fma(t182, t182, -t199))) + std::fma(t203, t187, std::fma(t187, t203, std::fma(t187, t187, -t204))));
+    const Real t226 = t214 + t225;
+    const Real t227 = t226 + t208;
+    const Real t228 = t202 - (t206 - t218) - (t192 + t218) + (std::fma(N_y, t221, std::fma(N_y, t200, -t202)) - std::fma(N_z, t219, std::fma(N_z, t190, -t192)));
+    const Real t229 = t206 + t228;
+    const Real t230 = t191 - (t212 - t213) - (t210 + t213) + (std::fma(N_x, t219, std::fma(N_x, t190, -t191)) - std::fma(N_y, t223, std::fma(N_y, t209, -t210)));
+    const Real t231 = t212 + t230;
+    const Real t232 = t201 - (t216 - t217) - (t211 + t217) + (std::fma(N_x, t221, std::fma(N_x, t200, -t201)) - std::fma(N_z, t223, std::fma(N_z, t209, -t211)));
+    const Real t233 = t216 + t232;
+    const Real t234 = t227 - t226;
+    const Real t235 = t226 - (t227 - t234) + (t208 - t234) + (t225 - (t226 - t214) + std::fma(t207, t194, std::fma(t194, t207, std::fma(t194, t194, -t208))));
+    const Real t236 = t227 + t235;
+    const Real t237 = std::sqrt(t236);
+    const Real t238 = (t138 > Real(0) ? t237 : Real(1));
+    const Real t239 = (t138 > Real(0) ? t237 + t237 : Real(1));
+    if (!(std::fabs(t238) >= detail::smallest_divisor<Real>) || !(std::fabs(t238) <= std::numeric_limits<Real>::max()) || !(std::fabs(t239) >= detail::smallest_divisor<Real>) || !(std::fabs(t239) <= std::numeric_limits<Real>::max())) {
+        out.status = status::out_of_range;
+        return out;
+    }
+    const Real t240 = t129 / t238;
+    const Real t241 = -t240;
+    const Real t242 = (t138 > Real(0) ? t241 : t144);
+    const Real t243 = t242 * t229;
+    const Real t244 = t243 / t58;
+    const Real t245 = t242 * t231;
+    const Real t246 = t245 / t58;
+    const Real t247 = t242 * t233;
+    const Real t248 = t247 / t58;
+    const Real t249 = -t244;
+    const Real t250 = -t246;
+    const Real t251 = -t248;
+    const Real t252 = (t138 > Real(0) ? -(std::fma(t241, (std::fma(-t237, t237, t236) + (t235 - (t236 - t227))) / t239, std::fma(t241, t237, t129) + std::fma(std::fma(std::fma(mu, t44, std::fma(mu, t40, -t127)), t12, std::fma(t127, t142, std::fma(t127, t12, -t128))), t31, std::fma(t128, t35, std::fma(t128, t31, -t129)))) / t238) : std::fma(t167, t49, std::fma(t167, t46, t51) + std::fma(q, t55, std::fma(q, t50, -t51))) / t140);
+    const Real t253 = t242 + t252;
+    const Real t254 = std::fma(t253, t224, t178);
+    const Real t255 = std::fma(t253, t220, t179);
+    const Real t256 = std::fma(t253, t222, t180);
+    const Real result0 = t254;
+    const Real result1 = t255;
+    const Real result2 = t256;
+    const Real result3 = w_x + (t249 + -(std::fma(t249, t147, std::fma(t249, t58, t243) + std::fma(t252, t229, std::fma(t242, t228 - (t229 - t206), std::fma(t242, t229, -t243)))) / t58));
+    const Real result4 = w_y + (t248 + std::fma(t251, t147, std::fma(t251, t58, t247) + std::fma(t252, t233, std::fma(t242, t232 - (t233 - t216), std::fma(t242, t233, -t247)))) / t58);
+    const Real result5 = w_z + (t250 + -(std::fma(t250, t147, std::fma(t250, t58, t245) + std::fma(t252, t231, std::fma(t242, t230 - (t231 - t212), std::fma(t242, t231, -t245)))) / t58));
     if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t1) < std::numeric_limits<Real>::min() && N_x != Real(0)) ||
-        (std::fabs(t2) < std::numeric_limits<Real>::min() && t1 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t3) < std::numeric_limits<Real>::min() && t2 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && N_x != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
-        (std::fabs(t7) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
-        (std::fabs(t9) < std::numeric_limits<Real>::min() && t2 != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
-        (std::fabs(t15) < std::numeric_limits<Real>::min() && N_x != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && N_x != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && t1 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t1 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t21) < std::numeric_limits<Real>::min() && t2 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t22) < std::numeric_limits<Real>::min() && t4 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t23) < std::numeric_limits<Real>::min() && t4 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t24) < std::numeric_limits<Real>::min() && t6 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && t6 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t26) < std::numeric_limits<Real>::min() && t9 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && t14 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && N_x != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t29) < std::numeric_limits<Real>::min() && t4 != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t30) < std::numeric_limits<Real>::min() && t27 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t31) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
-        (std::fabs(t33) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
-        (std::fabs(t34) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
-        (std::fabs(t37) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && N_z != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && t1 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && t2 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && t6 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && t9 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && t14 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && t15 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t48) < std::numeric_limits<Real>::min() && t16 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t50) < std::numeric_limits<Real>::min() && t20 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t51) < std::numeric_limits<Real>::min() && t22 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t52) < std::numeric_limits<Real>::min() && t23 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t53) < std::numeric_limits<Real>::min() && t25 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && t27 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && t33 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && t37 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && t41 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && N_x != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && t4 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t62) < std::numeric_limits<Real>::min() && N_y != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t63) < std::numeric_limits<Real>::min() && t31 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t64) < std::numeric_limits<Real>::min() && t59 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t66) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t78) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t79) < std::numeric_limits<Real>::min() && t21 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && t26 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t28 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t29 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t43 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t45 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t47 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t48 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t51 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t52 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t60 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t61 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && v_x != Real(0) && t72 != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && v_x != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && t14 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t19 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && t30 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t34 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t41 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && t42 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t46 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t55 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t64 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t66 != Real(0) && t92 != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t50 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t53 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t54 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t56 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t62 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t63 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && v_y != Real(0) && t72 != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t79 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t81 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t82 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t86 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t88 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && v_y != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && t3 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t7 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && t14 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t19 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t41 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t42 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t44 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t46 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t64 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t66 != Real(0) && t121 != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && N_z != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && v_z != Real(0) && t72 != Real(0)) ||
-        (std::fabs(t138) < std::numeric_limits<Real>::min() && t83 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t139) < std::numeric_limits<Real>::min() && t84 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && t85 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t141) < std::numeric_limits<Real>::min() && t87 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t142) < std::numeric_limits<Real>::min() && t89 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t143) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t144) < std::numeric_limits<Real>::min() && t106 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t145) < std::numeric_limits<Real>::min() && t107 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t146) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t147) < std::numeric_limits<Real>::min() && t109 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t148) < std::numeric_limits<Real>::min() && t110 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t149) < std::numeric_limits<Real>::min() && t111 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t152) < std::numeric_limits<Real>::min() && v_z != Real(0)) ||
-        (std::fabs(t153) < std::numeric_limits<Real>::min() && t3 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t154) < std::numeric_limits<Real>::min() && t7 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t155) < std::numeric_limits<Real>::min() && t19 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t156) < std::numeric_limits<Real>::min() && t24 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t157) < std::numeric_limits<Real>::min() && t30 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t158) < std::numeric_limits<Real>::min() && t34 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t159) < std::numeric_limits<Real>::min() && t41 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t160) < std::numeric_limits<Real>::min() && t42 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t161) < std::numeric_limits<Real>::min() && t46 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t166) < std::numeric_limits<Real>::min() && N_x != Real(0) && t165 != Real(0)) ||
-        (std::fabs(t167) < std::numeric_limits<Real>::min() && N_y != Real(0) && t165 != Real(0)) ||
-        (std::fabs(t168) < std::numeric_limits<Real>::min() && N_z != Real(0) && t165 != Real(0)) ||
-        (std::fabs(t170) < std::numeric_limits<Real>::min() && t165 != Real(0)) ||
-        (std::fabs(t175) < std::numeric_limits<Real>::min() && t174 != Real(0) && t165 != Real(0)) ||
-        (std::fabs(t177) < std::numeric_limits<Real>::min() && t174 != Real(0)) ||
-        (std::fabs(t179) < std::numeric_limits<Real>::min() && q != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t180 != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && q != Real(0) && t184 != Real(0)) ||
-        (std::fabs(t187) < std::numeric_limits<Real>::min() && t184 != Real(0)) ||
-        (std::fabs(t188) < std::numeric_limits<Real>::min() && t179 != Real(0) && t187 != Real(0)) ||
-        (std::fabs(t190) < std::numeric_limits<Real>::min() && R != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && R != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && R != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && R != Real(0) && t2 != Real(0)) ||
-        (std::fabs(t194) < std::numeric_limits<Real>::min() && t192 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t195) < std::numeric_limits<Real>::min() && R != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t196) < std::numeric_limits<Real>::min() && t191 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && R != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && R != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && t192 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t200) < std::numeric_limits<Real>::min() && t197 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t201) < std::numeric_limits<Real>::min() && t191 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && t195 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t203) < std::numeric_limits<Real>::min() && R != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t204) < std::numeric_limits<Real>::min() && t194 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t205) < std::numeric_limits<Real>::min() && t199 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t206) < std::numeric_limits<Real>::min() && t200 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t207) < std::numeric_limits<Real>::min() && t198 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t208) < std::numeric_limits<Real>::min() && t202 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t209) < std::numeric_limits<Real>::min() && t203 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t210) < std::numeric_limits<Real>::min() && t199 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && t193 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t212) < std::numeric_limits<Real>::min() && t196 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t213) < std::numeric_limits<Real>::min() && t201 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t214) < std::numeric_limits<Real>::min() && t200 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t215) < std::numeric_limits<Real>::min() && t203 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t216) < std::numeric_limits<Real>::min() && t194 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t217) < std::numeric_limits<Real>::min() && t193 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t218) < std::numeric_limits<Real>::min() && t196 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t219) < std::numeric_limits<Real>::min() && t201 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t220) < std::numeric_limits<Real>::min() && t198 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t221) < std::numeric_limits<Real>::min() && t202 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t222) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
-        (std::fabs(t223) < std::numeric_limits<Real>::min() && t222 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t224) < std::numeric_limits<Real>::min() && R != Real(0)) ||
-        (std::fabs(t225) < std::numeric_limits<Real>::min() && t224 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t226) < std::numeric_limits<Real>::min() && t224 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t227) < std::numeric_limits<Real>::min() && t224 != Real(0) && t2 != Real(0)) ||
-        (std::fabs(t228) < std::numeric_limits<Real>::min() && t224 != Real(0) && t3 != Real(0)) ||
-        (std::fabs(t229) < std::numeric_limits<Real>::min() && t224 != Real(0) && t7 != Real(0)) ||
-        (std::fabs(t230) < std::numeric_limits<Real>::min() && t226 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t231) < std::numeric_limits<Real>::min() && t227 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t232) < std::numeric_limits<Real>::min() && t225 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t233) < std::numeric_limits<Real>::min() && t224 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t234) < std::numeric_limits<Real>::min() && t226 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t235) < std::numeric_limits<Real>::min() && t224 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t236) < std::numeric_limits<Real>::min() && t225 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t237) < std::numeric_limits<Real>::min() && t225 != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t238) < std::numeric_limits<Real>::min() && t224 != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t239) < std::numeric_limits<Real>::min() && t224 != Real(0) && t30 != Real(0)) ||
-        (std::fabs(t240) < std::numeric_limits<Real>::min() && t224 != Real(0) && t34 != Real(0)) ||
-        (std::fabs(t241) < std::numeric_limits<Real>::min() && t230 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t242) < std::numeric_limits<Real>::min() && t227 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t243) < std::numeric_limits<Real>::min() && t236 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t244) < std::numeric_limits<Real>::min() && t238 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t245) < std::numeric_limits<Real>::min() && t226 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t246) < std::numeric_limits<Real>::min() && t235 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t247) < std::numeric_limits<Real>::min() && t232 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t248) < std::numeric_limits<Real>::min() && t225 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t249) < std::numeric_limits<Real>::min() && t233 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t250) < std::numeric_limits<Real>::min() && t224 != Real(0) && t64 != Real(0)) ||
-        (std::fabs(t251) < std::numeric_limits<Real>::min() && t224 != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t252) < std::numeric_limits<Real>::min() && R != Real(0)) ||
-        (std::fabs(t253) < std::numeric_limits<Real>::min() && t252 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t254) < std::numeric_limits<Real>::min() && t252 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t255) < std::numeric_limits<Real>::min() && t252 != Real(0) && t2 != Real(0)) ||
-        (std::fabs(t256) < std::numeric_limits<Real>::min() && t254 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && t252 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t258) < std::numeric_limits<Real>::min() && t253 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t259) < std::numeric_limits<Real>::min() && t252 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t260) < std::numeric_limits<Real>::min() && t252 != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t261) < std::numeric_limits<Real>::min() && t254 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t262) < std::numeric_limits<Real>::min() && t259 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t263) < std::numeric_limits<Real>::min() && t253 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t264) < std::numeric_limits<Real>::min() && t257 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t265) < std::numeric_limits<Real>::min() && t252 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t266) < std::numeric_limits<Real>::min() && t256 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t267) < std::numeric_limits<Real>::min() && t261 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t268) < std::numeric_limits<Real>::min() && t262 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t269) < std::numeric_limits<Real>::min() && t260 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t270) < std::numeric_limits<Real>::min() && t264 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t271) < std::numeric_limits<Real>::min() && t265 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t272) < std::numeric_limits<Real>::min() && t261 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t273) < std::numeric_limits<Real>::min() && t255 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t274) < std::numeric_limits<Real>::min() && t258 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t275) < std::numeric_limits<Real>::min() && t263 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t276) < std::numeric_limits<Real>::min() && t262 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t277) < std::numeric_limits<Real>::min() && t265 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t278) < std::numeric_limits<Real>::min() && t256 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t279) < std::numeric_limits<Real>::min() && t255 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t280) < std::numeric_limits<Real>::min() && t258 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t281) < std::numeric_limits<Real>::min() && t263 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t282) < std::numeric_limits<Real>::min() && t260 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t283) < std::numeric_limits<Real>::min() && t264 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t286) < std::numeric_limits<Real>::min() && t224 != Real(0)) ||
-        (std::fabs(t287) < std::numeric_limits<Real>::min() && t286 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t288) < std::numeric_limits<Real>::min() && t286 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t289) < std::numeric_limits<Real>::min() && t286 != Real(0) && t2 != Real(0)) ||
-        (std::fabs(t290) < std::numeric_limits<Real>::min() && t288 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t291) < std::numeric_limits<Real>::min() && t289 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t292) < std::numeric_limits<Real>::min() && t287 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t293) < std::numeric_limits<Real>::min() && t286 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t294) < std::numeric_limits<Real>::min() && t288 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t295) < std::numeric_limits<Real>::min() && t287 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t296) < std::numeric_limits<Real>::min() && t286 != Real(0) && t14 != Real(0)) ||
-        (std::fabs(t297) < std::numeric_limits<Real>::min() && t287 != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t298) < std::numeric_limits<Real>::min() && t286 != Real(0) && t27 != Real(0)) ||
-        (std::fabs(t299) < std::numeric_limits<Real>::min() && t290 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t300) < std::numeric_limits<Real>::min() && t289 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t301) < std::numeric_limits<Real>::min() && t295 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t302) < std::numeric_limits<Real>::min() && t298 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t303) < std::numeric_limits<Real>::min() && t288 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t304) < std::numeric_limits<Real>::min() && t292 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t305) < std::numeric_limits<Real>::min() && t296 != Real(0) && t41 != Real(0)) ||
-        (std::fabs(t306) < std::numeric_limits<Real>::min() && t287 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t307) < std::numeric_limits<Real>::min() && t293 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t331) < std::numeric_limits<Real>::min() && N_x != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t332) < std::numeric_limits<Real>::min() && N_z != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t333) < std::numeric_limits<Real>::min() && t205 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t334) < std::numeric_limits<Real>::min() && t333 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t335) < std::numeric_limits<Real>::min() && t206 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t336) < std::numeric_limits<Real>::min() && t335 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t337) < std::numeric_limits<Real>::min() && t209 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t338) < std::numeric_limits<Real>::min() && t337 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t339) < std::numeric_limits<Real>::min() && t217 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t340) < std::numeric_limits<Real>::min() && t339 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t341) < std::numeric_limits<Real>::min() && t218 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t342) < std::numeric_limits<Real>::min() && t341 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t343) < std::numeric_limits<Real>::min() && t219 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t344) < std::numeric_limits<Real>::min() && t343 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t345) < std::numeric_limits<Real>::min() && t241 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t346) < std::numeric_limits<Real>::min() && t244 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t347) < std::numeric_limits<Real>::min() && t249 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t348) < std::numeric_limits<Real>::min() && t267 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t349) < std::numeric_limits<Real>::min() && t348 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t350) < std::numeric_limits<Real>::min() && t348 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t351) < std::numeric_limits<Real>::min() && t268 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t352) < std::numeric_limits<Real>::min() && t351 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t353) < std::numeric_limits<Real>::min() && t351 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t354) < std::numeric_limits<Real>::min() && t271 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t355) < std::numeric_limits<Real>::min() && t354 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t356) < std::numeric_limits<Real>::min() && t354 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t357) < std::numeric_limits<Real>::min() && t279 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t358) < std::numeric_limits<Real>::min() && t357 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t359) < std::numeric_limits<Real>::min() && t357 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t360) < std::numeric_limits<Real>::min() && t280 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t361) < std::numeric_limits<Real>::min() && t360 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t362) < std::numeric_limits<Real>::min() && t360 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t363) < std::numeric_limits<Real>::min() && t281 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t364) < std::numeric_limits<Real>::min() && t363 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t365) < std::numeric_limits<Real>::min() && t363 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t366) < std::numeric_limits<Real>::min() && t299 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t367) < std::numeric_limits<Real>::min() && t302 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t368) < std::numeric_limits<Real>::min() && t307 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t369) < std::numeric_limits<Real>::min() && w_y != Real(0)) ||
-        (std::fabs(t370) < std::numeric_limits<Real>::min() && t7 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t371) < std::numeric_limits<Real>::min() && t19 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t372) < std::numeric_limits<Real>::min() && t46 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t373) < std::numeric_limits<Real>::min() && t66 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t374) < std::numeric_limits<Real>::min() && t228 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t375) < std::numeric_limits<Real>::min() && t229 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t376) < std::numeric_limits<Real>::min() && t234 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t377) < std::numeric_limits<Real>::min() && t245 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t378) < std::numeric_limits<Real>::min() && t246 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t379) < std::numeric_limits<Real>::min() && t250 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t380) < std::numeric_limits<Real>::min() && t251 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t381) < std::numeric_limits<Real>::min() && t303 != Real(0) && t369 != Real(0)) ||
-        (std::fabs(t383) < std::numeric_limits<Real>::min() && N_y != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t384) < std::numeric_limits<Real>::min() && N_z != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t385) < std::numeric_limits<Real>::min() && t210 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t386) < std::numeric_limits<Real>::min() && t385 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t387) < std::numeric_limits<Real>::min() && t214 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t388) < std::numeric_limits<Real>::min() && t387 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t389) < std::numeric_limits<Real>::min() && t215 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t390) < std::numeric_limits<Real>::min() && t389 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t391) < std::numeric_limits<Real>::min() && t216 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t392) < std::numeric_limits<Real>::min() && t391 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t393) < std::numeric_limits<Real>::min() && t220 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t394) < std::numeric_limits<Real>::min() && t393 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t395) < std::numeric_limits<Real>::min() && t221 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t396) < std::numeric_limits<Real>::min() && t395 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t397) < std::numeric_limits<Real>::min() && t231 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t398) < std::numeric_limits<Real>::min() && t237 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t399) < std::numeric_limits<Real>::min() && t242 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t400) < std::numeric_limits<Real>::min() && t243 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t401) < std::numeric_limits<Real>::min() && t247 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t402) < std::numeric_limits<Real>::min() && t248 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t403) < std::numeric_limits<Real>::min() && t272 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t404) < std::numeric_limits<Real>::min() && t403 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t405) < std::numeric_limits<Real>::min() && t403 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t406) < std::numeric_limits<Real>::min() && t276 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t407) < std::numeric_limits<Real>::min() && t406 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t408) < std::numeric_limits<Real>::min() && t406 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t409) < std::numeric_limits<Real>::min() && t277 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t410) < std::numeric_limits<Real>::min() && t409 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t411) < std::numeric_limits<Real>::min() && t409 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t412) < std::numeric_limits<Real>::min() && t278 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t413) < std::numeric_limits<Real>::min() && t412 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t414) < std::numeric_limits<Real>::min() && t412 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t415) < std::numeric_limits<Real>::min() && t282 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t416) < std::numeric_limits<Real>::min() && t415 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t417) < std::numeric_limits<Real>::min() && t415 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t418) < std::numeric_limits<Real>::min() && t283 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t419) < std::numeric_limits<Real>::min() && t418 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t420) < std::numeric_limits<Real>::min() && t418 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t421) < std::numeric_limits<Real>::min() && t291 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t422) < std::numeric_limits<Real>::min() && t297 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t423) < std::numeric_limits<Real>::min() && t300 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t424) < std::numeric_limits<Real>::min() && t301 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t425) < std::numeric_limits<Real>::min() && t304 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t426) < std::numeric_limits<Real>::min() && t306 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t427) < std::numeric_limits<Real>::min() && t421 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t428) < std::numeric_limits<Real>::min() && t422 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t429) < std::numeric_limits<Real>::min() && t425 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t430) < std::numeric_limits<Real>::min() && t397 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t431) < std::numeric_limits<Real>::min() && t398 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t432) < std::numeric_limits<Real>::min() && t401 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t435) < std::numeric_limits<Real>::min() && w_x != Real(0)) ||
-        (std::fabs(t436) < std::numeric_limits<Real>::min() && t34 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t437) < std::numeric_limits<Real>::min() && t42 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t438) < std::numeric_limits<Real>::min() && t66 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t439) < std::numeric_limits<Real>::min() && t234 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t440) < std::numeric_limits<Real>::min() && (t440 != Real(0) || (t439 == Real(0) && t224 != Real(0) && t371 != Real(0)))) ||
-        (std::fabs(t441) < std::numeric_limits<Real>::min() && t239 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t442) < std::numeric_limits<Real>::min() && t240 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t443) < std::numeric_limits<Real>::min() && t245 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t444) < std::numeric_limits<Real>::min() && t246 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t445) < std::numeric_limits<Real>::min() && t250 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t446) < std::numeric_limits<Real>::min() && t251 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t447) < std::numeric_limits<Real>::min() && t305 != Real(0) && t435 != Real(0)) ||
-        (std::fabs(t453) < std::numeric_limits<Real>::min() && t190 != Real(0) && t452 != Real(0)) ||
-        (std::fabs(t467) < std::numeric_limits<Real>::min() && t465 != Real(0)) ||
-        (std::fabs(t468) < std::numeric_limits<Real>::min() && N_x != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t469) < std::numeric_limits<Real>::min() && N_y != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t470) < std::numeric_limits<Real>::min() && t204 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t471) < std::numeric_limits<Real>::min() && t470 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t472) < std::numeric_limits<Real>::min() && t207 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t473) < std::numeric_limits<Real>::min() && t472 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t474) < std::numeric_limits<Real>::min() && t208 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t475) < std::numeric_limits<Real>::min() && t474 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t476) < std::numeric_limits<Real>::min() && t211 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t477) < std::numeric_limits<Real>::min() && t476 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t478) < std::numeric_limits<Real>::min() && t212 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t479) < std::numeric_limits<Real>::min() && t478 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t480) < std::numeric_limits<Real>::min() && t213 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t481) < std::numeric_limits<Real>::min() && t480 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t482) < std::numeric_limits<Real>::min() && t266 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t483) < std::numeric_limits<Real>::min() && t482 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t484) < std::numeric_limits<Real>::min() && t482 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t485) < std::numeric_limits<Real>::min() && t269 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t486) < std::numeric_limits<Real>::min() && t485 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t487) < std::numeric_limits<Real>::min() && t485 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t488) < std::numeric_limits<Real>::min() && t270 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t489) < std::numeric_limits<Real>::min() && t488 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t490) < std::numeric_limits<Real>::min() && t488 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t491) < std::numeric_limits<Real>::min() && t273 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t492) < std::numeric_limits<Real>::min() && t491 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t493) < std::numeric_limits<Real>::min() && t491 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t494) < std::numeric_limits<Real>::min() && t274 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t495) < std::numeric_limits<Real>::min() && t494 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t496) < std::numeric_limits<Real>::min() && t494 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t497) < std::numeric_limits<Real>::min() && t275 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t498) < std::numeric_limits<Real>::min() && t497 != Real(0) && t73 != Real(0)) ||
-        (std::fabs(t499) < std::numeric_limits<Real>::min() && t497 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t501) < std::numeric_limits<Real>::min() && t345 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t502) < std::numeric_limits<Real>::min() && t346 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t503) < std::numeric_limits<Real>::min() && t347 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t504) < std::numeric_limits<Real>::min() && t366 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t505) < std::numeric_limits<Real>::min() && t367 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t506) < std::numeric_limits<Real>::min() && t368 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t508) < std::numeric_limits<Real>::min() && t399 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t509) < std::numeric_limits<Real>::min() && t400 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t510) < std::numeric_limits<Real>::min() && t402 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t511) < std::numeric_limits<Real>::min() && t423 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t512) < std::numeric_limits<Real>::min() && t424 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t513) < std::numeric_limits<Real>::min() && t426 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t514) < std::numeric_limits<Real>::min() && w_z != Real(0)) ||
-        (std::fabs(t515) < std::numeric_limits<Real>::min() && t7 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t516) < std::numeric_limits<Real>::min() && t34 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t517) < std::numeric_limits<Real>::min() && t42 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t518) < std::numeric_limits<Real>::min() && t46 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t519) < std::numeric_limits<Real>::min() && t228 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t520) < std::numeric_limits<Real>::min() && t229 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t521) < std::numeric_limits<Real>::min() && t234 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t522) < std::numeric_limits<Real>::min() && t239 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t523) < std::numeric_limits<Real>::min() && t240 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t524) < std::numeric_limits<Real>::min() && t245 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t525) < std::numeric_limits<Real>::min() && t246 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t526) < std::numeric_limits<Real>::min() && t294 != Real(0) && t514 != Real(0)) ||
-        (std::fabs(t527) < std::numeric_limits<Real>::min() && (t527 != Real(0) || (t440 == Real(0) && t521 != Real(0)))) ||
-        (std::fabs(t528) < std::numeric_limits<Real>::min() && (t528 != Real(0) || (t527 == Real(0) && t0 != Real(0) && t501 != Real(0)))) ||
-        (std::fabs(t529) < std::numeric_limits<Real>::min() && (t529 != Real(0) || (t528 == Real(0) && t224 != Real(0) && t437 != Real(0)))) ||
-        (std::fabs(t530) < std::numeric_limits<Real>::min() && (t530 != Real(0) || (t529 == Real(0) && t377 != Real(0)))) ||
-        (std::fabs(t531) < std::numeric_limits<Real>::min() && (t531 != Real(0) || (t530 == Real(0) && t224 != Real(0) && t517 != Real(0)))) ||
-        (std::fabs(t532) < std::numeric_limits<Real>::min() && (t532 != Real(0) || (t531 == Real(0) && t0 != Real(0) && t430 != Real(0)))) ||
-        (std::fabs(t533) < std::numeric_limits<Real>::min() && (t533 != Real(0) || (t532 == Real(0) && t0 != Real(0) && t508 != Real(0)))) ||
-        (std::fabs(t534) < std::numeric_limits<Real>::min() && (t534 != Real(0) || (t533 == Real(0) && t224 != Real(0) && t370 != Real(0)))) ||
-        (std::fabs(t535) < std::numeric_limits<Real>::min() && (t535 != Real(0) || (t534 == Real(0) && t224 != Real(0) && t515 != Real(0)))) ||
-        (std::fabs(t536) < std::numeric_limits<Real>::min() && (t536 != Real(0) || (t535 == Real(0) && t0 != Real(0) && t509 != Real(0)))) ||
-        (std::fabs(t537) < std::numeric_limits<Real>::min() && (t537 != Real(0) || (t536 == Real(0) && t0 != Real(0) && t431 != Real(0)))) ||
-        (std::fabs(t538) < std::numeric_limits<Real>::min() && (t538 != Real(0) || (t537 == Real(0) && t0 != Real(0) && t432 != Real(0)))) ||
-        (std::fabs(t539) < std::numeric_limits<Real>::min() && (t539 != Real(0) || (t538 == Real(0) && t0 != Real(0) && t510 != Real(0)))) ||
-        (std::fabs(t540) < std::numeric_limits<Real>::min() && (t540 != Real(0) || (t539 == Real(0) && t444 != Real(0)))) ||
-        (std::fabs(t541) < std::numeric_limits<Real>::min() && (t541 != Real(0) || (t540 == Real(0) && t224 != Real(0) && t372 != Real(0)))) ||
-        (std::fabs(t542) < std::numeric_limits<Real>::min() && (t542 != Real(0) || (t541 == Real(0) && t224 != Real(0) && t518 != Real(0)))) ||
-        (std::fabs(t543) < std::numeric_limits<Real>::min() && (t543 != Real(0) || (t542 == Real(0) && t0 != Real(0) && t502 != Real(0)))) ||
-        (std::fabs(t544) < std::numeric_limits<Real>::min() && (t544 != Real(0) || (t543 == Real(0) && t224 != Real(0) && t436 != Real(0)))) ||
-        (std::fabs(t545) < std::numeric_limits<Real>::min() && (t545 != Real(0) || (t544 == Real(0) && t224 != Real(0) && t516 != Real(0)))) ||
-        (std::fabs(t546) < std::numeric_limits<Real>::min() && (t546 != Real(0) || (t545 == Real(0) && t0 != Real(0) && t503 != Real(0)))) ||
-        (std::fabs(t547) < std::numeric_limits<Real>::min() && (t547 != Real(0) || (t546 == Real(0) && t224 != Real(0) && t438 != Real(0)))) ||
-        (std::fabs(t548) < std::numeric_limits<Real>::min() && (t548 != Real(0) || (t547 == Real(0) && t224 != Real(0) && t373 != Real(0)))) ||
-        (std::fabs(t553) < std::numeric_limits<Real>::min() && (t553 != Real(0) || (t548 == Real(0) && t471 != Real(0)))) ||
-        (std::fabs(t554) < std::numeric_limits<Real>::min() && (t554 != Real(0) || (t553 == Real(0) && t0 != Real(0) && t392 != Real(0)))) ||
-        (std::fabs(t555) < std::numeric_limits<Real>::min() && (t555 != Real(0) || (t554 == Real(0) && t0 != Real(0) && t334 != Real(0)))) ||
-        (std::fabs(t556) < std::numeric_limits<Real>::min() && (t556 != Real(0) || (t555 == Real(0) && t386 != Real(0)))) ||
-        (std::fabs(t557) < std::numeric_limits<Real>::min() && (t557 != Real(0) || (t556 == Real(0) && t0 != Real(0) && t477 != Real(0)))) ||
-        (std::fabs(t558) < std::numeric_limits<Real>::min() && (t558 != Real(0) || (t557 == Real(0) && t340 != Real(0)))) ||
-        (std::fabs(t559) < std::numeric_limits<Real>::min() && (t559 != Real(0) || (t558 == Real(0) && t0 != Real(0) && t479 != Real(0)))) ||
-        (std::fabs(t560) < std::numeric_limits<Real>::min() && (t560 != Real(0) || (t559 == Real(0) && t342 != Real(0)))) ||
-        (std::fabs(t561) < std::numeric_limits<Real>::min() && (t561 != Real(0) || (t560 == Real(0) && t0 != Real(0) && t481 != Real(0)))) ||
-        (std::fabs(t562) < std::numeric_limits<Real>::min() && (t562 != Real(0) || (t561 == Real(0) && t344 != Real(0)))) ||
-        (std::fabs(t563) < std::numeric_limits<Real>::min() && (t563 != Real(0) || (t562 == Real(0) && t0 != Real(0) && t336 != Real(0)))) ||
-        (std::fabs(t564) < std::numeric_limits<Real>::min() && (t564 != Real(0) || (t563 == Real(0) && t388 != Real(0)))) ||
-        (std::fabs(t565) < std::numeric_limits<Real>::min() && (t565 != Real(0) || (t564 == Real(0) && t473 != Real(0)))) ||
-        (std::fabs(t566) < std::numeric_limits<Real>::min() && (t566 != Real(0) || (t565 == Real(0) && t0 != Real(0) && t394 != Real(0)))) ||
-        (std::fabs(t567) < std::numeric_limits<Real>::min() && (t567 != Real(0) || (t566 == Real(0) && t475 != Real(0)))) ||
-        (std::fabs(t568) < std::numeric_limits<Real>::min() && (t568 != Real(0) || (t567 == Real(0) && t0 != Real(0) && t396 != Real(0)))) ||
-        (std::fabs(t569) < std::numeric_limits<Real>::min() && (t569 != Real(0) || (t568 == Real(0) && t0 != Real(0) && t338 != Real(0)))) ||
-        (std::fabs(t570) < std::numeric_limits<Real>::min() && (t570 != Real(0) || (t569 == Real(0) && t390 != Real(0)))) ||
-        (std::fabs(t571) < std::numeric_limits<Real>::min() && (t571 != Real(0) || (t570 == Real(0) && t1 != Real(0) && t93 != Real(0)))) ||
-        (std::fabs(t572) < std::numeric_limits<Real>::min() && (t572 != Real(0) || (t571 == Real(0) && t1 != Real(0) && t124 != Real(0)))) ||
-        (std::fabs(t573) < std::numeric_limits<Real>::min() && (t573 != Real(0) || (t572 == Real(0) && t155 != Real(0)))) ||
-        (std::fabs(t574) < std::numeric_limits<Real>::min() && (t574 != Real(0) || (t573 == Real(0) && t0 != Real(0) && t144 != Real(0)))) ||
-        (std::fabs(t575) < std::numeric_limits<Real>::min() && (t575 != Real(0) || (t574 == Real(0) && t1 != Real(0) && t97 != Real(0)))) ||
-        (std::fabs(t576) < std::numeric_limits<Real>::min() && (t576 != Real(0) || (t575 == Real(0) && t127 != Real(0)))) ||
-        (std::fabs(t577) < std::numeric_limits<Real>::min() && (t577 != Real(0) || (t576 == Real(0) && t1 != Real(0) && t159 != Real(0)))) ||
-        (std::fabs(t578) < std::numeric_limits<Real>::min() && (t578 != Real(0) || (t577 == Real(0) && t0 != Real(0) && t115 != Real(0)))) ||
-        (std::fabs(t579) < std::numeric_limits<Real>::min() && (t579 != Real(0) || (t578 == Real(0) && t0 != Real(0) && t138 != Real(0)))) ||
-        (std::fabs(t580) < std::numeric_limits<Real>::min() && (t580 != Real(0) || (t579 == Real(0) && t7 != Real(0) && t121 != Real(0)))) ||
-        (std::fabs(t581) < std::numeric_limits<Real>::min() && (t581 != Real(0) || (t580 == Real(0) && t7 != Real(0) && t152 != Real(0)))) ||
-        (std::fabs(t582) < std::numeric_limits<Real>::min() && (t582 != Real(0) || (t581 == Real(0) && t0 != Real(0) && t140 != Real(0)))) ||
-        (std::fabs(t583) < std::numeric_limits<Real>::min() && (t583 != Real(0) || (t582 == Real(0) && t0 != Real(0) && t117 != Real(0)))) ||
-        (std::fabs(t584) < std::numeric_limits<Real>::min() && (t584 != Real(0) || (t583 == Real(0) && t0 != Real(0) && t119 != Real(0)))) ||
-        (std::fabs(t585) < std::numeric_limits<Real>::min() && (t585 != Real(0) || (t584 == Real(0) && t0 != Real(0) && t142 != Real(0)))) ||
-        (std::fabs(t586) < std::numeric_limits<Real>::min() && (t586 != Real(0) || (t585 == Real(0) && t99 != Real(0)))) ||
-        (std::fabs(t587) < std::numeric_limits<Real>::min() && (t587 != Real(0) || (t586 == Real(0) && t14 != Real(0) && t126 != Real(0)))) ||
-        (std::fabs(t588) < std::numeric_limits<Real>::min() && (t588 != Real(0) || (t587 == Real(0) && t14 != Real(0) && t159 != Real(0)))) ||
-        (std::fabs(t589) < std::numeric_limits<Real>::min() && (t589 != Real(0) || (t588 == Real(0) && t0 != Real(0) && t146 != Real(0)))) ||
-        (std::fabs(t590) < std::numeric_limits<Real>::min() && (t590 != Real(0) || (t589 == Real(0) && t34 != Real(0) && t92 != Real(0)))) ||
-        (std::fabs(t591) < std::numeric_limits<Real>::min() && (t591 != Real(0) || (t590 == Real(0) && t34 != Real(0) && t152 != Real(0)))) ||
-        (std::fabs(t592) < std::numeric_limits<Real>::min() && (t592 != Real(0) || (t591 == Real(0) && t0 != Real(0) && t148 != Real(0)))) ||
-        (std::fabs(t593) < std::numeric_limits<Real>::min() && (t593 != Real(0) || (t592 == Real(0) && t66 != Real(0) && t92 != Real(0)))) ||
-        (std::fabs(t594) < std::numeric_limits<Real>::min() && (t594 != Real(0) || (t593 == Real(0) && t66 != Real(0) && t121 != Real(0)))) ||
-        (std::fabs(t598) < std::numeric_limits<Real>::min() && t190 != Real(0) && t597 != Real(0)) ||
-        (std::fabs(t602) < std::numeric_limits<Real>::min() && t190 != Real(0) && t601 != Real(0)) ||
-        (std::fabs(t636) < std::numeric_limits<Real>::min() && t629 != Real(0)) ||
-        (std::fabs(t640) < std::numeric_limits<Real>::min() && t631 != Real(0)) ||
-        (std::fabs(t655) < std::numeric_limits<Real>::min() && t188 != Real(0) && t654 != Real(0)) ||
-        (std::fabs(t725) < std::numeric_limits<Real>::min() && mu != Real(0)) ||
-        (std::fabs(t726) < std::numeric_limits<Real>::min() && mu != Real(0) && t174 != Real(0)) ||
-        (std::fabs(t727) < std::numeric_limits<Real>::min() && t726 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t728) < std::numeric_limits<Real>::min() && t727 != Real(0) && t165 != Real(0)) ||
-        (std::fabs(t729) < std::numeric_limits<Real>::min() && t725 != Real(0) && t182 != Real(0)) ||
-        (std::fabs(t730) < std::numeric_limits<Real>::min() && t729 != Real(0) && t177 != Real(0)) ||
-        (std::fabs(t731) < std::numeric_limits<Real>::min() && t730 != Real(0) && t72 != Real(0)) ||
-        (std::fabs(t732) < std::numeric_limits<Real>::min() && t731 != Real(0) && t170 != Real(0)) ||
-        (std::fabs(t744) < std::numeric_limits<Real>::min() && t175 != Real(0)) ||
-        (std::fabs(t747) < std::numeric_limits<Real>::min() && t185 != Real(0)) ||
-        (std::fabs(t763) < std::numeric_limits<Real>::min() && t728 != Real(0)) ||
-        (std::fabs(t764) < std::numeric_limits<Real>::min() && t728 != Real(0)) ||
-        (std::fabs(t776) < std::numeric_limits<Real>::min() && N_x != Real(0) && t775 != Real(0)) ||
-        (std::fabs(t777) < std::numeric_limits<Real>::min() && N_y != Real(0) && t775 != Real(0)) ||
-        (std::fabs(t778) < std::numeric_limits<Real>::min() && N_z != Real(0) && t775 != Real(0)) ||
-        (std::fabs(t784) < std::numeric_limits<Real>::min() && t783 != Real(0)) ||
-        (std::fabs(t787) < std::numeric_limits<Real>::min() && t786 != Real(0)) ||
-        (std::fabs(t788) < std::numeric_limits<Real>::min() && N_x != Real(0) && t787 != Real(0)) ||
-        (std::fabs(t789) < std::numeric_limits<Real>::min() && N_z != Real(0) && t787 != Real(0)) ||
-        (std::fabs(t792) < std::numeric_limits<Real>::min() && t791 != Real(0)) ||
-        (std::fabs(t797) < std::numeric_limits<Real>::min() && N_x != Real(0) && t796 != Real(0)) ||
-        (std::fabs(t798) < std::numeric_limits<Real>::min() && N_y != Real(0) && t796 != Real(0)) ||
-        (std::fabs(t802) < std::numeric_limits<Real>::min() && N_y != Real(0) && t801 != Real(0)) ||
-        (std::fabs(t803) < std::numeric_limits<Real>::min() && N_z != Real(0) && t801 != Real(0)) ||
-        (std::fabs(t822) < std::numeric_limits<Real>::min() && t774 != Real(0) && t821 != Real(0)) ||
-        (std::fabs(t823) < std::numeric_limits<Real>::min() && t822 != Real(0)) ||
-        (std::fabs(t826) < std::numeric_limits<Real>::min() && t774 != Real(0) && t825 != Real(0)) ||
-        (std::fabs(t827) < std::numeric_limits<Real>::min() && t826 != Real(0)) ||
-        (std::fabs(t830) < std::numeric_limits<Real>::min() && t774 != Real(0) && t829 != Real(0)) ||
-        (std::fabs(t831) < std::numeric_limits<Real>::min() && t830 != Real(0)) ||
-        (std::fabs(t992) < std::numeric_limits<Real>::min() && (t992 != Real(0) || (t779 == Real(0) && t991 != Real(0) && t818 != Real(0)))) ||
-        (std::fabs(t993) < std::numeric_limits<Real>::min() && (t993 != Real(0) || (t780 == Real(0) && t991 != Real(0) && t811 != Real(0)))) ||
-        (std::fabs(t994) < std::numeric_limits<Real>::min() && (t994 != Real(0) || (t781 == Real(0) && t991 != Real(0) && t816 != Real(0))))) {
+    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && N_x != Real(0)) ||
+        (std::fabs(t1) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && N_z != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_x != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && v_x != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_y != Real(0)) ||
+        (std::fabs(t19) < std::numeric_limits<Real>::min() && v_y != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t25) < std::numeric_limits<Real>::min() && N_z != Real(0) && v_z != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && v_z != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t32) < std::numeric_limits<Real>::min() && N_x != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t33) < std::numeric_limits<Real>::min() && N_y != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t34) < std::numeric_limits<Real>::min() && N_z != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t36) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t41) < std::numeric_limits<Real>::min() && t40 != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t43) < std::numeric_limits<Real>::min() && t40 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && q != Real(0)) ||
+        (std::fabs(t48) < std::numeric_limits<Real>::min() && t46 != Real(0)) ||
+        (std::fabs(t51) < std::numeric_limits<Real>::min() && q != Real(0) && t50 != Real(0)) ||
+        (std::fabs(t53) < std::numeric_limits<Real>::min() && t50 != Real(0)) ||
+        (std::fabs(t54) < std::numeric_limits<Real>::min() && t45 != Real(0) && t53 != Real(0)) ||
+        (std::fabs(t56) < std::numeric_limits<Real>::min() && R != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && t57 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t60) < std::numeric_limits<Real>::min() && N_x != Real(0) && w_y != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && N_z != Real(0) && w_y != Real(0)) ||
+        (std::fabs(t62) < std::numeric_limits<Real>::min() && N_y != Real(0) && w_x != Real(0)) ||
+        (std::fabs(t63) < std::numeric_limits<Real>::min() && N_z != Real(0) && w_x != Real(0)) ||
+        (std::fabs(t68) < std::numeric_limits<Real>::min() && t56 != Real(0) && t67 != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && t78 != Real(0)) ||
+        (std::fabs(t81) < std::numeric_limits<Real>::min() && N_x != Real(0) && w_z != Real(0)) ||
+        (std::fabs(t82) < std::numeric_limits<Real>::min() && N_y != Real(0) && w_z != Real(0)) ||
+        (std::fabs(t89) < std::numeric_limits<Real>::min() && t56 != Real(0) && t88 != Real(0)) ||
+        (std::fabs(t93) < std::numeric_limits<Real>::min() && t56 != Real(0) && t92 != Real(0)) ||
+        (std::fabs(t114) < std::numeric_limits<Real>::min() && t110 != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t112 != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t54 != Real(0) && t124 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && mu != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && mu != Real(0) && t40 != Real(0)) ||
+        (std::fabs(t128) < std::numeric_limits<Real>::min() && t127 != Real(0) && t12 != Real(0)) ||
+        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && t31 != Real(0)) ||
+        (std::fabs(t130) < std::numeric_limits<Real>::min() && t126 != Real(0) && t48 != Real(0)) ||
+        (std::fabs(t131) < std::numeric_limits<Real>::min() && t130 != Real(0) && t43 != Real(0)) ||
+        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && t10 != Real(0)) ||
+        (std::fabs(t133) < std::numeric_limits<Real>::min() && t132 != Real(0) && t36 != Real(0)) ||
+        (std::fabs(t141) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
+        (std::fabs(t144) < std::numeric_limits<Real>::min() && t51 != Real(0)) ||
+        (std::fabs(t175) < std::numeric_limits<Real>::min() && N_x != Real(0) && t174 != Real(0)) ||
+        (std::fabs(t176) < std::numeric_limits<Real>::min() && N_y != Real(0) && t174 != Real(0)) ||
+        (std::fabs(t177) < std::numeric_limits<Real>::min() && N_z != Real(0) && t174 != Real(0)) ||
+        (std::fabs(t185) < std::numeric_limits<Real>::min() && t184 != Real(0)) ||
+        (std::fabs(t190) < std::numeric_limits<Real>::min() && t189 != Real(0)) ||
+        (std::fabs(t191) < std::numeric_limits<Real>::min() && N_x != Real(0) && t190 != Real(0)) ||
+        (std::fabs(t192) < std::numeric_limits<Real>::min() && N_z != Real(0) && t190 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && t196 != Real(0)) ||
+        (std::fabs(t199) < std::numeric_limits<Real>::min() && t182 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && N_x != Real(0) && t200 != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && N_y != Real(0) && t200 != Real(0)) ||
+        (std::fabs(t204) < std::numeric_limits<Real>::min() && t187 != Real(0)) ||
+        (std::fabs(t208) < std::numeric_limits<Real>::min() && t194 != Real(0)) ||
+        (std::fabs(t210) < std::numeric_limits<Real>::min() && N_y != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t211) < std::numeric_limits<Real>::min() && N_z != Real(0) && t209 != Real(0)) ||
+        (std::fabs(t240) < std::numeric_limits<Real>::min() && t129 != Real(0)) ||
+        (std::fabs(t243) < std::numeric_limits<Real>::min() && t242 != Real(0) && t229 != Real(0)) ||
+        (std::fabs(t244) < std::numeric_limits<Real>::min() && t243 != Real(0)) ||
+        (std::fabs(t245) < std::numeric_limits<Real>::min() && t242 != Real(0) && t231 != Real(0)) ||
+        (std::fabs(t246) < std::numeric_limits<Real>::min() && t245 != Real(0)) ||
+        (std::fabs(t247) < std::numeric_limits<Real>::min() && t242 != Real(0) && t233 != Real(0)) ||
+        (std::fabs(t248) < std::numeric_limits<Real>::min() && t247 != Real(0)) ||
+        (std::fabs(t254) < std::numeric_limits<Real>::min() && (t254 != Real(0) || (t178 == Real(0) && t253 != Real(0) && t224 != Real(0)))) ||
+        (std::fabs(t255) < std::numeric_limits<Real>::min() && (t255 != Real(0) || (t179 == Real(0) && t253 != Real(0) && t220 != Real(0)))) ||
+        (std::fabs(t256) < std::numeric_limits<Real>::min() && (t256 != Real(0) || (t180 == Real(0) && t253 != Real(0) && t222 != Real(0))))) {
         out.status = status::underflow;
         return out;
     }
@@ -1665,9 +477,9 @@ namespace detail {
 // rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
 // bounds crosswise, a square root halves them, atan2(y, x) lies within
 // [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, -1, 363, 347; where it is -1, the loop tests the least magnitude of the values.
+// quadruple long double): k = -1, -1, 272, 238; where it is -1, the loop tests the least magnitude of the values.
 template <class Real>
-constexpr int collide_wall_rough_batch_3d_k = input_k<Real>(-1, -1, 363, 347);
+constexpr int collide_wall_rough_batch_3d_k = input_k<Real>(-1, -1, 272, 238);
 
 // The loop of collide_wall_rough_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
@@ -1698,20 +510,19 @@ IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_3d(std::size_t count, const R
             outcome = detail::blend(fails, status::invalid_radius, outcome);
             const std::int64_t admitted = outcome == status::ok;
             impact::status condition = status::ok;
-            const Real t1 = N_x_[i] * N_x_[i];
-            const Real t14 = N_y_[i] * N_y_[i];
-            const Real t15 = t1 + t14;
-            const Real t36 = N_z_[i] * N_z_[i];
-            const Real t41 = t15 + t36;
-            const Real t66 = N_x_[i] * v_x_[i];
-            const Real t82 = N_y_[i] * v_y_[i];
-            const Real t87 = t66 + t82;
-            const Real t102 = N_z_[i] * v_z_[i];
-            fails = !(t87 + t102 < Real(0));
+            const Real t0 = N_x_[i] * N_x_[i];
+            const Real t1 = N_y_[i] * N_y_[i];
+            const Real t2 = t0 + t1;
+            const Real t6 = N_z_[i] * N_z_[i];
+            const Real t15 = N_x_[i] * v_x_[i];
+            const Real t18 = N_y_[i] * v_y_[i];
+            const Real t20 = t15 + t18;
+            const Real t25 = N_z_[i] * v_z_[i];
+            fails = !(t20 + t25 < Real(0));
             condition = detail::blend(fails, status::separating, condition);
             fails = !(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) + N_z_[i] * (C_z_[i] - P_z_[i]) > Real(0));
             condition = detail::blend(fails, status::behind_the_wall, condition);
-            fails = !(t41 > Real(0));
+            fails = !(t2 + t6 > Real(0));
             condition = detail::blend(fails, status::invalid_normal, condition);
             outcome = detail::blend(admitted, condition, outcome);
         }
@@ -1731,1008 +542,271 @@ IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_3d(std::size_t count, const R
         const Real eps = eps_[i];
         const Real b = b_[i];
         const Real mu = mu_[i];
-        const Real t0 = -Real(2);
-        const Real t1 = N_x * N_x;
-        const Real t2 = t1 * N_x;
-        const Real t3 = t2 * N_x;
-        const Real t4 = Real(2) * N_x;
-        const Real t5 = std::fma(N_x, N_x, -t1);
-        const Real t6 = Real(2) * t1;
-        const Real t7 = t1 * t1;
-        const Real t8 = std::fma(t5, N_x, std::fma(t1, N_x, -t2));
-        const Real t9 = Real(2) * t2;
-        const Real t10 = std::fma(t8, N_x, std::fma(t2, N_x, -t3));
-        const Real t11 = std::fma(Real(2), N_x, -t4);
-        const Real t12 = std::fma(Real(2), t5, std::fma(Real(2), t1, -t6));
-        const Real t13 = std::fma(Real(2), t8, std::fma(Real(2), t2, -t9));
-        const Real t14 = N_y * N_y;
-        const Real t15 = N_x * t14;
-        const Real t16 = N_x * N_y;
-        const Real t17 = t1 + t14;
-        const Real t18 = t17 - t1;
-        const Real t19 = t1 * t14;
-        const Real t20 = t1 * N_y;
-        const Real t21 = t2 * N_y;
-        const Real t22 = t4 * t14;
-        const Real t23 = t4 * N_y;
-        const Real t24 = t6 * t14;
-        const Real t25 = t6 * N_y;
-        const Real t26 = t9 * N_y;
-        const Real t27 = t14 * N_y;
-        const Real t28 = N_x * t27;
-        const Real t29 = t4 * t27;
-        const Real t30 = t27 * N_y;
-        const Real t31 = Real(2) * N_y;
-        const Real t32 = std::fma(N_y, N_y, -t14);
-        const Real t33 = Real(2) * t14;
-        const Real t34 = t14 * t14;
-        const Real t35 = std::fma(t5, t14, std::fma(t1, t32, std::fma(t1, t14, -t19)));
-        const Real t36 = std::fma(t32, N_y, std::fma(t14, N_y, -t27));
-        const Real t37 = Real(2) * t27;
-        const Real t38 = std::fma(t36, N_y, std::fma(t27, N_y, -t30));
-        const Real t39 = t1 - (t17 - t18) + (t14 - t18) + (t5 + t32);
-        const Real t40 = t17 + t39;
-        const Real t41 = N_z * N_z;
-        const Real t42 = t1 * t41;
-        const Real t43 = t2 * N_z;
-        const Real t44 = t6 * t41;
-        const Real t45 = t9 * N_z;
-        const Real t46 = t14 * t41;
-        const Real t47 = t15 * N_z;
-        const Real t48 = t16 * t41;
-        const Real t49 = t20 * N_z;
-        const Real t50 = t22 * N_z;
-        const Real t51 = t23 * t41;
-        const Real t52 = t25 * N_z;
-        const Real t53 = t27 * N_z;
-        const Real t54 = t33 * t41;
-        const Real t55 = t37 * N_z;
-        const Real t56 = t40 + t41;
-        const Real t57 = t56 - t40;
-        const Real t58 = t41 * N_z;
-        const Real t59 = N_x * t58;
-        const Real t60 = t4 * t58;
-        const Real t61 = N_y * t58;
-        const Real t62 = t31 * t58;
-        const Real t63 = t58 * N_z;
-        const Real t64 = std::fma(N_z, N_z, -t41);
-        const Real t65 = t41 * t41;
-        const Real t66 = std::fma(t5, t41, std::fma(t1, t64, std::fma(t1, t41, -t42)));
-        const Real t67 = std::fma(t32, t41, std::fma(t14, t64, std::fma(t14, t41, -t46)));
-        const Real t68 = std::fma(t64, N_z, std::fma(t41, N_z, -t58));
-        const Real t69 = std::fma(t68, N_z, std::fma(t58, N_z, -t63));
-        const Real t70 = t40 - (t56 - t57) + (t41 - t57) + (t39 - (t40 - t17) + t64);
-        const Real t71 = t56 + t70;
-        const Real t72 = std::sqrt(t17 + t41);
-        const Real t73 = t70 - (t71 - t56);
-        const Real t74 = std::sqrt(t71);
-        const Real t75 = std::fma(-t74, t74, t71) + t73;
-        const Real t76 = t74 + t74;
-        const Real t77 = N_x * v_x;
-        const Real t78 = t21 * v_x;
-        const Real t79 = t26 * v_x;
-        const Real t80 = t28 * v_x;
-        const Real t81 = t29 * v_x;
-        const Real t82 = t43 * v_x;
-        const Real t83 = t45 * v_x;
-        const Real t84 = t47 * v_x;
-        const Real t85 = t48 * v_x;
-        const Real t86 = t50 * v_x;
-        const Real t87 = t51 * v_x;
-        const Real t88 = t59 * v_x;
-        const Real t89 = t60 * v_x;
-        const Real t90 = v_x * t71;
-        const Real t91 = v_x * v_x;
-        const Real t92 = t14 * t91;
-        const Real t93 = t19 * t91;
-        const Real t94 = t30 * t91;
-        const Real t95 = t34 * t91;
-        const Real t96 = t41 * t91;
-        const Real t97 = t42 * t91;
-        const Real t98 = t46 * t91;
-        const Real t99 = t54 * t91;
-        const Real t100 = t63 * t91;
-        const Real t101 = t65 * t91;
-        const Real t102 = std::fma(v_x, t73, std::fma(v_x, t71, -t90));
-        const Real t103 = std::fma(v_x, v_x, -t91);
-        const Real t104 = N_y * v_y;
-        const Real t105 = t49 * v_y;
-        const Real t106 = t52 * v_y;
-        const Real t107 = t53 * v_y;
-        const Real t108 = t55 * v_y;
-        const Real t109 = t61 * v_y;
-        const Real t110 = t62 * v_y;
-        const Real t111 = v_y * t71;
-        const Real t112 = t77 + t104;
-        const Real t113 = t112 - t77;
-        const Real t114 = t78 * v_y;
-        const Real t115 = t79 * v_y;
-        const Real t116 = t80 * v_y;
-        const Real t117 = t81 * v_y;
-        const Real t118 = t85 * v_y;
-        const Real t119 = t87 * v_y;
-        const Real t120 = v_y * v_y;
-        const Real t121 = t3 * t120;
-        const Real t122 = t7 * t120;
-        const Real t123 = t14 * t120;
-        const Real t124 = t19 * t120;
-        const Real t125 = t41 * t120;
-        const Real t126 = t42 * t120;
-        const Real t127 = t44 * t120;
-        const Real t128 = t46 * t120;
-        const Real t129 = t63 * t120;
-        const Real t130 = t65 * t120;
-        const Real t131 = std::fma(v_y, t73, std::fma(v_y, t71, -t111));
-        const Real t132 = std::fma(v_y, v_y, -t120);
-        const Real t133 = t77 - (t112 - t113) + (t104 - t113) + (std::fma(N_x, v_x, -t77) + std::fma(N_y, v_y, -t104));
-        const Real t134 = t112 + t133;
-        const Real t135 = N_z * v_z;
-        const Real t136 = v_z * t71;
-        const Real t137 = t82 * v_z;
-        const Real t138 = t83 * v_z;
-        const Real t139 = t84 * v_z;
-        const Real t140 = t86 * v_z;
-        const Real t141 = t88 * v_z;
-        const Real t142 = t89 * v_z;
-        const Real t143 = t105 * v_z;
-        const Real t144 = t106 * v_z;
-        const Real t145 = t107 * v_z;
-        const Real t146 = t108 * v_z;
-        const Real t147 = t109 * v_z;
-        const Real t148 = t110 * v_z;
-        const Real t149 = t134 + t135;
-        const Real t150 = t149 - t134;
-        const Real t151 = v_z * v_z;
-        const Real t152 = t3 * t151;
-        const Real t153 = t7 * t151;
-        const Real t154 = t19 * t151;
-        const Real t155 = t24 * t151;
-        const Real t156 = t30 * t151;
-        const Real t157 = t34 * t151;
-        const Real t158 = t41 * t151;
-        const Real t159 = t42 * t151;
-        const Real t160 = t46 * t151;
-        const Real t161 = std::fma(v_z, t73, std::fma(v_z, t71, -t136));
-        const Real t162 = std::fma(v_z, v_z, -t151);
-        const Real t163 = t134 - (t149 - t150) + (t135 - t150) + (t133 - (t134 - t112) + std::fma(N_z, v_z, -t135));
-        const Real t164 = t149 + t163;
-        const Real t165 = N_x * t164;
-        const Real t166 = N_y * t164;
-        const Real t167 = N_z * t164;
-        const Real t168 = t163 - (t164 - t149);
-        const Real t169 = t164 * t164;
-        const Real t170 = std::fma(N_x, t168, std::fma(N_x, t164, -t165));
-        const Real t171 = std::fma(N_y, t168, std::fma(N_y, t164, -t166));
-        const Real t172 = std::fma(N_z, t168, std::fma(N_z, t164, -t167));
-        const Real t173 = Real(1) + eps;
-        const Real t174 = t173 * t164;
-        const Real t175 = t173 - Real(1);
-        const Real t176 = t173 * t173;
-        const Real t177 = Real(1) - (t173 - t175) + (eps - t175);
-        const Real t178 = q * q;
-        const Real t179 = Real(1) + q;
-        const Real t180 = t179 - Real(1);
-        const Real t181 = t179 * t179;
-        const Real t182 = Real(1) - (t179 - t180) + (q - t180);
-        const Real t183 = Real(1) + b;
-        const Real t184 = q * t183;
-        const Real t185 = t183 - Real(1);
-        const Real t186 = t183 * t183;
-        const Real t187 = t178 * t186;
-        const Real t188 = Real(1) - (t183 - t185) + (b - t185);
-        const Real t189 = R * t74;
-        const Real t190 = R * N_x;
-        const Real t191 = R * t1;
-        const Real t192 = R * t2;
-        const Real t193 = t191 * N_y;
-        const Real t194 = R * N_y;
-        const Real t195 = t190 * t14;
-        const Real t196 = R * t14;
-        const Real t197 = R * t27;
-        const Real t198 = t191 * N_z;
-        const Real t199 = t196 * N_z;
-        const Real t200 = t190 * t41;
-        const Real t201 = t194 * t41;
-        const Real t202 = R * t58;
-        const Real t203 = t193 * v_x;
-        const Real t204 = t198 * v_x;
-        const Real t205 = t199 * v_x;
-        const Real t206 = t197 * v_x;
-        const Real t207 = t201 * v_x;
-        const Real t208 = t202 * v_x;
-        const Real t209 = t198 * v_y;
-        const Real t210 = t192 * v_y;
-        const Real t211 = t195 * v_y;
-        const Real t212 = t200 * v_y;
-        const Real t213 = t199 * v_y;
-        const Real t214 = t202 * v_y;
-        const Real t215 = t193 * v_z;
-        const Real t216 = t192 * v_z;
-        const Real t217 = t195 * v_z;
-        const Real t218 = t200 * v_z;
-        const Real t219 = t197 * v_z;
-        const Real t220 = t201 * v_z;
-        const Real t221 = R * q;
-        const Real t222 = t221 * t74;
-        const Real t223 = R * R;
-        const Real t224 = t223 * N_x;
-        const Real t225 = t223 * t1;
-        const Real t226 = t223 * t2;
-        const Real t227 = t223 * t3;
-        const Real t228 = t223 * t7;
-        const Real t229 = t225 * N_y;
-        const Real t230 = t226 * N_y;
-        const Real t231 = t224 * N_y;
-        const Real t232 = t223 * N_y;
-        const Real t233 = t225 * t14;
-        const Real t234 = t223 * t14;
-        const Real t235 = t224 * t14;
-        const Real t236 = t224 * t27;
-        const Real t237 = t223 * t27;
-        const Real t238 = t223 * t30;
-        const Real t239 = t223 * t34;
-        const Real t240 = t229 * N_z;
-        const Real t241 = t226 * N_z;
-        const Real t242 = t235 * N_z;
-        const Real t243 = t237 * N_z;
-        const Real t244 = t225 * t41;
-        const Real t245 = t234 * t41;
-        const Real t246 = t231 * t41;
-        const Real t247 = t224 * t58;
-        const Real t248 = t232 * t58;
-        const Real t249 = t223 * t63;
-        const Real t250 = t223 * t65;
-        const Real t251 = Real(2) * R;
-        const Real t252 = t251 * N_x;
-        const Real t253 = t251 * t1;
-        const Real t254 = t251 * t2;
-        const Real t255 = t253 * N_y;
-        const Real t256 = t251 * N_y;
-        const Real t257 = t252 * t14;
-        const Real t258 = t251 * t14;
-        const Real t259 = t251 * t27;
-        const Real t260 = t253 * N_z;
-        const Real t261 = t258 * N_z;
-        const Real t262 = t252 * t41;
-        const Real t263 = t256 * t41;
-        const Real t264 = t251 * t58;
-        const Real t265 = t255 * v_x;
-        const Real t266 = t260 * v_x;
-        const Real t267 = t261 * v_x;
-        const Real t268 = t259 * v_x;
-        const Real t269 = t263 * v_x;
-        const Real t270 = t264 * v_x;
-        const Real t271 = t260 * v_y;
-        const Real t272 = t254 * v_y;
-        const Real t273 = t257 * v_y;
-        const Real t274 = t262 * v_y;
-        const Real t275 = t261 * v_y;
-        const Real t276 = t264 * v_y;
-        const Real t277 = t255 * v_z;
-        const Real t278 = t254 * v_z;
-        const Real t279 = t257 * v_z;
-        const Real t280 = t262 * v_z;
-        const Real t281 = t259 * v_z;
-        const Real t282 = t263 * v_z;
-        const Real t283 = std::fma(R, t74, -t189);
-        const Real t284 = std::fma(R, R, -t223);
-        const Real t285 = Real(2) * t223;
-        const Real t286 = t285 * N_x;
-        const Real t287 = t285 * t1;
-        const Real t288 = t285 * t2;
-        const Real t289 = t287 * N_y;
-        const Real t290 = t288 * N_y;
-        const Real t291 = t286 * N_y;
-        const Real t292 = t285 * N_y;
-        const Real t293 = t287 * t14;
-        const Real t294 = t286 * t14;
-        const Real t295 = t285 * t14;
-        const Real t296 = t286 * t27;
-        const Real t297 = t285 * t27;
-        const Real t298 = t289 * N_z;
-        const Real t299 = t288 * N_z;
-        const Real t300 = t294 * N_z;
-        const Real t301 = t297 * N_z;
-        const Real t302 = t287 * t41;
-        const Real t303 = t291 * t41;
-        const Real t304 = t295 * t41;
-        const Real t305 = t286 * t58;
-        const Real t306 = t292 * t58;
-        const Real t307 = std::fma(t284, t1, std::fma(t223, t5, std::fma(t223, t1, -t225)));
-        const Real t308 = std::fma(t284, t3, std::fma(t223, t10, std::fma(t223, t3, -t227)));
-        const Real t309 = std::fma(t307, t14, std::fma(t225, t32, std::fma(t225, t14, -t233)));
-        const Real t310 = std::fma(t284, t30, std::fma(t223, t38, std::fma(t223, t30, -t238)));
-        const Real t311 = std::fma(t307, t41, std::fma(t225, t64, std::fma(t225, t41, -t244)));
-        const Real t312 = std::fma(std::fma(t284, t14, std::fma(t223, t32, std::fma(t223, t14, -t234))), t41, std::fma(t234, t64, std::fma(t234, t41, -t245)));
-        const Real t313 = std::fma(t284, t63, std::fma(t223, t69, std::fma(t223, t63, -t249)));
-        const Real t314 = std::fma(Real(2), R, -t251);
-        const Real t315 = std::fma(t314, N_x, std::fma(t251, N_x, -t252));
-        const Real t316 = std::fma(t314, t1, std::fma(t251, t5, std::fma(t251, t1, -t253)));
-        const Real t317 = std::fma(t314, t2, std::fma(t251, t8, std::fma(t251, t2, -t254)));
-        const Real t318 = std::fma(t316, N_y, std::fma(t253, N_y, -t255));
-        const Real t319 = std::fma(t315, t14, std::fma(t252, t32, std::fma(t252, t14, -t257)));
-        const Real t320 = std::fma(t314, t27, std::fma(t251, t36, std::fma(t251, t27, -t259)));
-        const Real t321 = std::fma(t316, N_z, std::fma(t253, N_z, -t260));
-        const Real t322 = std::fma(std::fma(t314, t14, std::fma(t251, t32, std::fma(t251, t14, -t258))), N_z, std::fma(t258, N_z, -t261));
-        const Real t323 = std::fma(t315, t41, std::fma(t252, t64, std::fma(t252, t41, -t262)));
-        const Real t324 = std::fma(std::fma(t314, N_y, std::fma(t251, N_y, -t256)), t41, std::fma(t256, t64, std::fma(t256, t41, -t263)));
-        const Real t325 = std::fma(t314, t58, std::fma(t251, t68, std::fma(t251, t58, -t264)));
-        const Real t326 = std::fma(Real(2), t284, std::fma(Real(2), t223, -t285));
-        const Real t327 = std::fma(t326, N_x, std::fma(t285, N_x, -t286));
-        const Real t328 = std::fma(t326, t1, std::fma(t285, t5, std::fma(t285, t1, -t287)));
-        const Real t329 = std::fma(t326, t2, std::fma(t285, t8, std::fma(t285, t2, -t288)));
-        const Real t330 = N_x * w_y;
-        const Real t331 = N_z * w_y;
-        const Real t332 = t204 * w_y;
-        const Real t333 = t332 * t72;
-        const Real t334 = t205 * w_y;
-        const Real t335 = t334 * t72;
-        const Real t336 = t208 * w_y;
-        const Real t337 = t336 * t72;
-        const Real t338 = t216 * w_y;
-        const Real t339 = t338 * t72;
-        const Real t340 = t217 * w_y;
-        const Real t341 = t340 * t72;
-        const Real t342 = t218 * w_y;
-        const Real t343 = t342 * t72;
-        const Real t344 = t240 * w_y;
-        const Real t345 = t243 * w_y;
-        const Real t346 = t248 * w_y;
-        const Real t347 = t266 * w_y;
-        const Real t348 = t347 * t72;
-        const Real t349 = t347 * t74;
-        const Real t350 = t267 * w_y;
-        const Real t351 = t350 * t72;
-        const Real t352 = t350 * t74;
-        const Real t353 = t270 * w_y;
-        const Real t354 = t353 * t72;
-        const Real t355 = t353 * t74;
-        const Real t356 = t278 * w_y;
-        const Real t357 = t356 * t72;
-        const Real t358 = t356 * t74;
-        const Real t359 = t279 * w_y;
-        const Real t360 = t359 * t72;
-        const Real t361 = t359 * t74;
-        const Real t362 = t280 * w_y;
-        const Real t363 = t362 * t72;
-        const Real t364 = t362 * t74;
-        const Real t365 = t298 * w_y;
-        const Real t366 = t301 * w_y;
-        const Real t367 = t306 * w_y;
-        const Real t368 = w_y * w_y;
-        const Real t369 = t7 * t368;
-        const Real t370 = t19 * t368;
-        const Real t371 = t46 * t368;
-        const Real t372 = t65 * t368;
-        const Real t373 = t227 * t368;
-        const Real t374 = t228 * t368;
-        const Real t375 = t233 * t368;
-        const Real t376 = t244 * t368;
-        const Real t377 = t245 * t368;
-        const Real t378 = t249 * t368;
-        const Real t379 = t250 * t368;
-        const Real t380 = t302 * t368;
-        const Real t381 = std::fma(w_y, w_y, -t368);
-        const Real t382 = N_y * w_x;
-        const Real t383 = N_z * w_x;
-        const Real t384 = t209 * w_x;
-        const Real t385 = t384 * t72;
-        const Real t386 = t213 * w_x;
-        const Real t387 = t386 * t72;
-        const Real t388 = t214 * w_x;
-        const Real t389 = t388 * t72;
-        const Real t390 = t215 * w_x;
-        const Real t391 = t390 * t72;
-        const Real t392 = t219 * w_x;
-        const Real t393 = t392 * t72;
-        const Real t394 = t220 * w_x;
-        const Real t395 = t394 * t72;
-        const Real t396 = t230 * w_x;
-        const Real t397 = t236 * w_x;
-        const Real t398 = t241 * w_x;
-        const Real t399 = t242 * w_x;
-        const Real t400 = t246 * w_x;
-        const Real t401 = t247 * w_x;
-        const Real t402 = t271 * w_x;
-        const Real t403 = t402 * t72;
-        const Real t404 = t402 * t74;
-        const Real t405 = t275 * w_x;
-        const Real t406 = t405 * t72;
-        const Real t407 = t405 * t74;
-        const Real t408 = t276 * w_x;
-        const Real t409 = t408 * t72;
-        const Real t410 = t408 * t74;
-        const Real t411 = t277 * w_x;
-        const Real t412 = t411 * t72;
-        const Real t413 = t411 * t74;
-        const Real t414 = t281 * w_x;
-        const Real t415 = t414 * t72;
-        const Real t416 = t414 * t74;
-        const Real t417 = t282 * w_x;
-        const Real t418 = t417 * t72;
-        const Real t419 = t417 * t74;
-        const Real t420 = t290 * w_x;
-        const Real t421 = t296 * w_x;
-        const Real t422 = t299 * w_x;
-        const Real t423 = t300 * w_x;
-        const Real t424 = t303 * w_x;
-        const Real t425 = t305 * w_x;
-        const Real t426 = t420 * w_y;
-        const Real t427 = t421 * w_y;
-        const Real t428 = t424 * w_y;
-        const Real t429 = t396 * w_y;
-        const Real t430 = t397 * w_y;
-        const Real t431 = t400 * w_y;
-        const Real t432 = t330 - t382;
-        const Real t433 = t432 - t330;
-        const Real t434 = w_x * w_x;
-        const Real t435 = t34 * t434;
-        const Real t436 = t42 * t434;
-        const Real t437 = t65 * t434;
-        const Real t438 = t233 * t434;
-        const Real t439 = std::fma(t223, t370, t438);
-        const Real t440 = t238 * t434;
-        const Real t441 = t239 * t434;
-        const Real t442 = t244 * t434;
-        const Real t443 = t245 * t434;
-        const Real t444 = t249 * t434;
-        const Real t445 = t250 * t434;
-        const Real t446 = t304 * t434;
-        const Real t447 = t438 + t375;
-        const Real t448 = std::fma(w_x, w_x, -t434);
-        const Real t449 = t447 - t438;
-        const Real t450 = t330 - (t432 - t433) - (t382 + t433) + (std::fma(N_x, w_y, -t330) - std::fma(N_y, w_x, -t382));
-        const Real t451 = t432 + t450;
-        const Real t452 = t189 * t451;
-        const Real t453 = t452 - t167;
-        const Real t454 = t438 - (t447 - t449) + (t375 - t449) + (std::fma(t309, t434, std::fma(t233, t448, std::fma(t233, t434, -t438))) + std::fma(t309, t368, std::fma(t233, t381, std::fma(t233, t368, -t375))));
-        const Real t455 = t447 + t454;
-        const Real t456 = std::fma(t189, t450 - (t451 - t432), std::fma(t189, t451, -t452));
-        const Real t457 = t453 - t452;
-        const Real t458 = t452 - (t453 - t457) - (t167 + t457);
-        const Real t459 = t458 + (std::fma(t283, t451, t456) - t172);
-        const Real t460 = t453 + t459;
-        const Real t461 = t460 + t136;
-        const Real t462 = t461 - t460;
-        const Real t463 = t460 - (t461 - t462) + (t136 - t462) + (t459 - (t460 - t453) + t161);
-        const Real t464 = t461 + t463;
-        const Real t465 = t463 - (t464 - t461);
-        const Real t466 = t464 * t464;
-        const Real t467 = N_x * w_z;
-        const Real t468 = N_y * w_z;
-        const Real t469 = t203 * w_z;
-        const Real t470 = t469 * t72;
-        const Real t471 = t206 * w_z;
-        const Real t472 = t471 * t72;
-        const Real t473 = t207 * w_z;
-        const Real t474 = t473 * t72;
-        const Real t475 = t210 * w_z;
-        const Real t476 = t475 * t72;
-        const Real t477 = t211 * w_z;
-        const Real t478 = t477 * t72;
-        const Real t479 = t212 * w_z;
-        const Real t480 = t479 * t72;
-        const Real t481 = t265 * w_z;
-        const Real t482 = t481 * t72;
-        const Real t483 = t481 * t74;
-        const Real t484 = t268 * w_z;
-        const Real t485 = t484 * t72;
-        const Real t486 = t484 * t74;
-        const Real t487 = t269 * w_z;
-        const Real t488 = t487 * t72;
-        const Real t489 = t487 * t74;
-        const Real t490 = t272 * w_z;
-        const Real t491 = t490 * t72;
-        const Real t492 = t490 * t74;
-        const Real t493 = t273 * w_z;
-        const Real t494 = t493 * t72;
-        const Real t495 = t493 * t74;
-        const Real t496 = t274 * w_z;
-        const Real t497 = t496 * t72;
-        const Real t498 = t496 * t74;
-        const Real t499 = t468 - t331;
-        const Real t500 = t344 * w_z;
-        const Real t501 = t345 * w_z;
-        const Real t502 = t346 * w_z;
-        const Real t503 = t365 * w_z;
-        const Real t504 = t366 * w_z;
-        const Real t505 = t367 * w_z;
-        const Real t506 = t467 - t383;
-        const Real t507 = t398 * w_z;
-        const Real t508 = t399 * w_z;
-        const Real t509 = t401 * w_z;
-        const Real t510 = t422 * w_z;
-        const Real t511 = t423 * w_z;
-        const Real t512 = t425 * w_z;
-        const Real t513 = w_z * w_z;
-        const Real t514 = t7 * t513;
-        const Real t515 = t34 * t513;
-        const Real t516 = t42 * t513;
-        const Real t517 = t46 * t513;
-        const Real t518 = t227 * t513;
-        const Real t519 = t228 * t513;
-        const Real t520 = t233 * t513;
-        const Real t521 = t238 * t513;
-        const Real t522 = t239 * t513;
-        const Real t523 = t244 * t513;
-        const Real t524 = t245 * t513;
-        const Real t525 = t293 * t513;
-        const Real t526 = std::fma(Real(2), t520, t439);
-        const Real t527 = std::fma(t0, t500, t526);
-        const Real t528 = std::fma(t223, t436, t527);
-        const Real t529 = std::fma(Real(2), t376, t528);
-        const Real t530 = std::fma(t223, t516, t529);
-        const Real t531 = std::fma(t0, t429, t530);
-        const Real t532 = std::fma(t0, t507, t531);
-        const Real t533 = std::fma(t223, t369, t532);
-        const Real t534 = std::fma(t223, t514, t533);
-        const Real t535 = std::fma(t0, t508, t534);
-        const Real t536 = std::fma(t0, t430, t535);
-        const Real t537 = std::fma(t0, t431, t536);
-        const Real t538 = std::fma(t0, t509, t537);
-        const Real t539 = std::fma(Real(2), t443, t538);
-        const Real t540 = std::fma(t223, t371, t539);
-        const Real t541 = std::fma(t223, t517, t540);
-        const Real t542 = std::fma(t0, t501, t541);
-        const Real t543 = std::fma(t223, t435, t542);
-        const Real t544 = std::fma(t223, t515, t543);
-        const Real t545 = std::fma(t0, t502, t544);
-        const Real t546 = std::fma(t223, t437, t545);
-        const Real t547 = std::fma(t223, t372, t546);
-        const Real t548 = t455 + t525;
-        const Real t549 = t548 - t455;
-        const Real t550 = t506 - t467;
-        const Real t551 = t499 - t468;
-        const Real t552 = std::fma(Real(2), t470, t547);
-        const Real t553 = std::fma(t0, t391, t552);
-        const Real t554 = std::fma(t0, t333, t553);
-        const Real t555 = std::fma(Real(2), t385, t554);
-        const Real t556 = std::fma(t0, t476, t555);
-        const Real t557 = std::fma(Real(2), t339, t556);
-        const Real t558 = std::fma(t0, t478, t557);
-        const Real t559 = std::fma(Real(2), t341, t558);
-        const Real t560 = std::fma(t0, t480, t559);
-        const Real t561 = std::fma(Real(2), t343, t560);
-        const Real t562 = std::fma(t0, t335, t561);
-        const Real t563 = std::fma(Real(2), t387, t562);
-        const Real t564 = std::fma(Real(2), t472, t563);
-        const Real t565 = std::fma(t0, t393, t564);
-        const Real t566 = std::fma(Real(2), t474, t565);
-        const Real t567 = std::fma(t0, t395, t566);
-        const Real t568 = std::fma(t0, t337, t567);
-        const Real t569 = std::fma(Real(2), t389, t568);
-        const Real t570 = std::fma(t1, t92, t569);
-        const Real t571 = std::fma(t1, t123, t570);
-        const Real t572 = std::fma(Real(2), t154, t571);
-        const Real t573 = std::fma(t0, t143, t572);
-        const Real t574 = std::fma(t1, t96, t573);
-        const Real t575 = std::fma(Real(2), t126, t574);
-        const Real t576 = std::fma(t1, t158, t575);
-        const Real t577 = std::fma(t0, t114, t576);
-        const Real t578 = std::fma(t0, t137, t577);
-        const Real t579 = std::fma(t7, t120, t578);
-        const Real t580 = std::fma(t7, t151, t579);
-        const Real t581 = std::fma(t0, t139, t580);
-        const Real t582 = std::fma(t0, t116, t581);
-        const Real t583 = std::fma(t0, t118, t582);
-        const Real t584 = std::fma(t0, t141, t583);
-        const Real t585 = std::fma(Real(2), t98, t584);
-        const Real t586 = std::fma(t14, t125, t585);
-        const Real t587 = std::fma(t14, t158, t586);
-        const Real t588 = std::fma(t0, t145, t587);
-        const Real t589 = std::fma(t34, t91, t588);
-        const Real t590 = std::fma(t34, t151, t589);
-        const Real t591 = std::fma(t0, t147, t590);
-        const Real t592 = std::fma(t65, t91, t591);
-        const Real t593 = std::fma(t65, t120, t592);
-        const Real t594 = std::fma(w_z, w_z, -t513);
-        const Real t595 = t467 - (t506 - t550) - (t383 + t550) + (std::fma(N_x, w_z, -t467) - std::fma(N_z, w_x, -t383));
-        const Real t596 = t506 + t595;
-        const Real t597 = t189 * t596;
-        const Real t598 = t597 + t166;
-        const Real t599 = t468 - (t499 - t551) - (t331 + t551) + (std::fma(N_y, w_z, -t468) - std::fma(N_z, w_y, -t331));
-        const Real t600 = t499 + t599;
-        const Real t601 = t189 * t600;
-        const Real t602 = t601 - t165;
-        const Real t603 = std::sqrt(t593);
-        const Real t604 = std::sqrt(t447 + t525 - t503 + t442 + t380 + t523 - t426 - t510 + t374 + t519 - t511 - t427 - t428 - t512 + t446 + t377 + t524 - t504 + t441 + t522 - t505 + t445 + t379 + t482 - t412 - t348 + t403 - t491 + t357 - t494 + t360 - t497 + t363 - t351 + t406 + t485 - t415 + t488 - t418 - t354 + t409 + t93 + t124 + t155 - t144 + t97 + t127 + t159 - t115 - t138 + t122 + t153 - t140 - t117 - t119 - t142 + t99 + t128 + t160 - t146 + t95 + t157 - t148 + t101 + t130);
-        const Real t605 = t455 - (t548 - t549) + (t525 - t549) + (t454 - (t455 - t447) + std::fma(std::fma(t328, t14, std::fma(t287, t32, std::fma(t287, t14, -t293))), t513, std::fma(t293, t594, std::fma(t293, t513, -t525))));
-        const Real t606 = t548 + t605;
-        const Real t607 = t606 - t503;
-        const Real t608 = std::fma(t189, t595 - (t596 - t506), std::fma(t189, t596, -t597));
-        const Real t609 = t598 - t597;
-        const Real t610 = std::fma(t189, t599 - (t600 - t499), std::fma(t189, t600, -t601));
-        const Real t611 = t602 - t601;
-        const Real t612 = t607 - t606;
-        const Real t613 = t597 - (t598 - t609) + (t166 - t609);
-        const Real t614 = t613 + (std::fma(t283, t596, t608) + t171);
-        const Real t615 = t598 + t614;
-        const Real t616 = t615 - t111;
-        const Real t617 = t601 - (t602 - t611) - (t165 + t611);
-        const Real t618 = t617 + (std::fma(t283, t600, t610) - t170);
-        const Real t619 = t602 + t618;
-        const Real t620 = t619 + t90;
-        const Real t621 = t606 - (t607 - t612) - (t503 + t612) + (t605 - (t606 - t548) - std::fma(std::fma(std::fma(std::fma(t328, N_y, std::fma(t287, N_y, -t289)), N_z, std::fma(t289, N_z, -t298)), w_y, std::fma(t298, w_y, -t365)), w_z, std::fma(t365, w_z, -t503)));
-        const Real t622 = t607 + t621;
-        const Real t623 = t622 + t442;
-        const Real t624 = t616 - t615;
-        const Real t625 = t620 - t619;
-        const Real t626 = t623 - t622;
-        const Real t627 = t615 - (t616 - t624) - (t111 + t624) + (t614 - (t615 - t598) - t131);
-        const Real t628 = t616 + t627;
-        const Real t629 = t619 - (t620 - t625) + (t90 - t625) + (t618 - (t619 - t602) + t102);
-        const Real t630 = t620 + t629;
-        const Real t631 = t622 - (t623 - t626) + (t442 - t626) + (t621 - (t622 - t607) + std::fma(t311, t434, std::fma(t244, t448, std::fma(t244, t434, -t442))));
-        const Real t632 = t623 + t631;
-        const Real t633 = t632 + t380;
-        const Real t634 = t627 - (t628 - t616);
-        const Real t635 = t628 * t628;
-        const Real t636 = t466 + t635;
-        const Real t637 = t636 - t466;
-        const Real t638 = t629 - (t630 - t620);
-        const Real t639 = t630 * t630;
-        const Real t640 = t633 - t632;
-        const Real t641 = t632 - (t633 - t640) + (t380 - t640) + (t631 - (t632 - t623) + std::fma(std::fma(t328, t41, std::fma(t287, t64, std::fma(t287, t41, -t302))), t368, std::fma(t302, t381, std::fma(t302, t368, -t380))));
-        const Real t642 = t633 + t641;
-        const Real t643 = t642 + t523;
-        const Real t644 = t466 - (t636 - t637) + (t635 - t637) + (std::fma(t465, t464, std::fma(t464, t465, std::fma(t464, t464, -t466))) + std::fma(t634, t628, std::fma(t628, t634, std::fma(t628, t628, -t635))));
-        const Real t645 = t636 + t644;
-        const Real t646 = t645 + t639;
-        const Real t647 = t643 - t642;
-        const Real t648 = t646 - t645;
-        const Real t649 = t642 - (t643 - t647) + (t523 - t647) + (t641 - (t642 - t633) + std::fma(t311, t513, std::fma(t244, t594, std::fma(t244, t513, -t523))));
-        const Real t650 = t643 + t649;
-        const Real t651 = t650 - t426;
-        const Real t652 = t645 - (t646 - t648) + (t639 - t648) + (t644 - (t645 - t636) + std::fma(t638, t630, std::fma(t630, t638, std::fma(t630, t630, -t639))));
-        const Real t653 = t646 + t652;
-        const Real t654 = t187 * t653;
-        const Real t655 = t651 - t650;
-        const Real t656 = t650 - (t651 - t655) - (t426 + t655) + (t649 - (t650 - t643) - std::fma(std::fma(std::fma(t329, N_y, std::fma(t288, N_y, -t290)), w_x, std::fma(t290, w_x, -t420)), w_y, std::fma(t420, w_y, -t426)));
-        const Real t657 = t651 + t656;
-        const Real t658 = t657 - t510;
-        const Real t659 = t658 - t657;
-        const Real t660 = t657 - (t658 - t659) - (t510 + t659) + (t656 - (t657 - t651) - std::fma(std::fma(std::fma(t329, N_z, std::fma(t288, N_z, -t299)), w_x, std::fma(t299, w_x, -t422)), w_z, std::fma(t422, w_z, -t510)));
-        const Real t661 = t658 + t660;
-        const Real t662 = t661 + t373;
-        const Real t663 = t662 - t661;
-        const Real t664 = t661 - (t662 - t663) + (t373 - t663) + (t660 - (t661 - t658) + std::fma(t308, t368, std::fma(t227, t381, std::fma(t227, t368, -t373))));
-        const Real t665 = t662 + t664;
-        const Real t666 = t665 + t518;
-        const Real t667 = t666 - t665;
-        const Real t668 = t665 - (t666 - t667) + (t518 - t667) + (t664 - (t665 - t662) + std::fma(t308, t513, std::fma(t227, t594, std::fma(t227, t513, -t518))));
-        const Real t669 = t666 + t668;
-        const Real t670 = t669 - t511;
-        const Real t671 = t670 - t669;
-        const Real t672 = t669 - (t670 - t671) - (t511 + t671) + (t668 - (t669 - t666) - std::fma(std::fma(std::fma(std::fma(t327, t14, std::fma(t286, t32, std::fma(t286, t14, -t294))), N_z, std::fma(t294, N_z, -t300)), w_x, std::fma(t300, w_x, -t423)), w_z, std::fma(t423, w_z, -t511)));
-        const Real t673 = t670 + t672;
-        const Real t674 = t673 - t427;
-        const Real t675 = t674 - t673;
-        const Real t676 = t673 - (t674 - t675) - (t427 + t675) + (t672 - (t673 - t670) - std::fma(std::fma(std::fma(t327, t27, std::fma(t286, t36, std::fma(t286, t27, -t296))), w_x, std::fma(t296, w_x, -t421)), w_y, std::fma(t421, w_y, -t427)));
-        const Real t677 = t674 + t676;
-        const Real t678 = t677 - t428;
-        const Real t679 = t678 - t677;
-        const Real t680 = t677 - (t678 - t679) - (t428 + t679) + (t676 - (t677 - t674) - std::fma(std::fma(std::fma(std::fma(t327, N_y, std::fma(t286, N_y, -t291)), t41, std::fma(t291, t64, std::fma(t291, t41, -t303))), w_x, std::fma(t303, w_x, -t424)), w_y, std::fma(t424, w_y, -t428)));
-        const Real t681 = t678 + t680;
-        const Real t682 = t681 - t512;
-        const Real t683 = t682 - t681;
-        const Real t684 = t681 - (t682 - t683) - (t512 + t683) + (t680 - (t681 - t678) - std::fma(std::fma(std::fma(t327, t58, std::fma(t286, t68, std::fma(t286, t58, -t305))), w_x, std::fma(t305, w_x, -t425)), w_z, std::fma(t425, w_z, -t512)));
-        const Real t685 = t682 + t684;
-        const Real t686 = t685 + t446;
-        const Real t687 = t686 - t685;
-        const Real t688 = t685 - (t686 - t687) + (t446 - t687) + (t684 - (t685 - t682) + std::fma(std::fma(std::fma(t326, t14, std::fma(t285, t32, std::fma(t285, t14, -t295))), t41, std::fma(t295, t64, std::fma(t295, t41, -t304))), t434, std::fma(t304, t448, std::fma(t304, t434, -t446))));
-        const Real t689 = t686 + t688;
-        const Real t690 = t689 + t377;
-        const Real t691 = t690 - t689;
-        const Real t692 = t689 - (t690 - t691) + (t377 - t691) + (t688 - (t689 - t686) + std::fma(t312, t368, std::fma(t245, t381, std::fma(t245, t368, -t377))));
-        const Real t693 = t690 + t692;
-        const Real t694 = t693 + t524;
-        const Real t695 = t694 - t693;
-        const Real t696 = t693 - (t694 - t695) + (t524 - t695) + (t692 - (t693 - t690) + std::fma(t312, t513, std::fma(t245, t594, std::fma(t245, t513, -t524))));
-        const Real t697 = t694 + t696;
-        const Real t698 = t697 - t504;
-        const Real t699 = t698 - t697;
-        const Real t700 = t697 - (t698 - t699) - (t504 + t699) + (t696 - (t697 - t694) - std::fma(std::fma(std::fma(std::fma(t326, t27, std::fma(t285, t36, std::fma(t285, t27, -t297))), N_z, std::fma(t297, N_z, -t301)), w_y, std::fma(t301, w_y, -t366)), w_z, std::fma(t366, w_z, -t504)));
-        const Real t701 = t698 + t700;
-        const Real t702 = t701 + t440;
-        const Real t703 = t702 - t701;
-        const Real t704 = t701 - (t702 - t703) + (t440 - t703) + (t700 - (t701 - t698) + std::fma(t310, t434, std::fma(t238, t448, std::fma(t238, t434, -t440))));
-        const Real t705 = t702 + t704;
-        const Real t706 = t705 + t521;
-        const Real t707 = t706 - t705;
-        const Real t708 = t705 - (t706 - t707) + (t521 - t707) + (t704 - (t705 - t702) + std::fma(t310, t513, std::fma(t238, t594, std::fma(t238, t513, -t521))));
-        const Real t709 = t706 + t708;
-        const Real t710 = t709 - t505;
-        const Real t711 = t710 - t709;
-        const Real t712 = t709 - (t710 - t711) - (t505 + t711) + (t708 - (t709 - t706) - std::fma(std::fma(std::fma(std::fma(t326, N_y, std::fma(t285, N_y, -t292)), t58, std::fma(t292, t68, std::fma(t292, t58, -t306))), w_y, std::fma(t306, w_y, -t367)), w_z, std::fma(t367, w_z, -t505)));
-        const Real t713 = t710 + t712;
-        const Real t714 = t713 + t444;
-        const Real t715 = t714 - t713;
-        const Real t716 = t713 - (t714 - t715) + (t444 - t715) + (t712 - (t713 - t710) + std::fma(t313, t434, std::fma(t249, t448, std::fma(t249, t434, -t444))));
-        const Real t717 = t714 + t716;
-        const Real t718 = t717 + t378;
-        const Real t719 = t718 - t717;
-        const Real t720 = t717 - (t718 - t719) + (t378 - t719) + (t716 - (t717 - t714) + std::fma(t313, t368, std::fma(t249, t381, std::fma(t249, t368, -t378))));
-        const Real t721 = t718 + t720;
-        const Real t722 = t721 + t483;
-        const Real t723 = t722 - t721;
-        const Real t724 = mu * mu;
-        const Real t725 = mu * t173;
-        const Real t726 = t725 * t74;
-        const Real t727 = t726 * t164;
-        const Real t728 = t724 * t181;
-        const Real t729 = t728 * t176;
-        const Real t730 = t729 * t71;
-        const Real t731 = t730 * t169;
-        const Real t732 = t654 - t731;
-        const Real t733 = t732 - t654;
-        const Real t734 = t654 - (t732 - t733) - (t731 + t733) + (std::fma(std::fma(std::fma(q, q, -t178), t186, std::fma(t178, std::fma(t188, t183, std::fma(t183, t188, std::fma(t183, t183, -t186))), std::fma(t178, t186, -t187))), t653, std::fma(t187, t652 - (t653 - t646), std::fma(t187, t653, -t654))) - std::fma(std::fma(std::fma(std::fma(std::fma(mu, mu, -t724), t181, std::fma(t724, std::fma(t182, t179, std::fma(t179, t182, std::fma(t179, t179, -t181))), std::fma(t724, t181, -t728))), t176, std::fma(t728, std::fma(t177, t173, std::fma(t173, t177, std::fma(t173, t173, -t176))), std::fma(t728, t176, -t729))), t71, std::fma(t729, t73, std::fma(t729, t71, -t730))), t169, std::fma(t730, std::fma(t168, t164, std::fma(t164, t168, std::fma(t164, t164, -t169))), std::fma(t730, t169, -t731))));
-        const Real t735 = t732 + t734;
-        const Real t736 = t735 + (t734 - (t735 - t732));
-        const Real t737 = detail::blend(t736 > Real(0), t76, Real(1));
-        const Real t738 = detail::blend(t736 > Real(0), Real(1), t179);
-        const Real t739 = detail::blend(t736 > Real(0), t603, Real(1));
-        const Real t740 = detail::blend(t736 > Real(0), t604, Real(1));
-        const Real t741 = detail::blend(t736 > Real(0), t603 + t603, Real(1));
-        const Real t742 = detail::blend(t736 > Real(0), t604 + t604, Real(1));
-        const std::int64_t usable = resolved & (std::fabs(t71) >= detail::smallest_divisor<Real>) & (std::fabs(t71) <= std::numeric_limits<Real>::max()) & (std::fabs(t737) >= detail::smallest_divisor<Real>) & (std::fabs(t737) <= std::numeric_limits<Real>::max()) & (std::fabs(t76) >= detail::smallest_divisor<Real>) & (std::fabs(t76) <= std::numeric_limits<Real>::max()) & (std::fabs(t738) >= detail::smallest_divisor<Real>) & (std::fabs(t738) <= std::numeric_limits<Real>::max()) & (std::fabs(t739) >= detail::smallest_divisor<Real>) & (std::fabs(t739) <= std::numeric_limits<Real>::max()) & (std::fabs(t740) >= detail::smallest_divisor<Real>) & (std::fabs(t740) <= std::numeric_limits<Real>::max()) & (std::fabs(t222) >= detail::smallest_divisor<Real>) & (std::fabs(t222) <= std::numeric_limits<Real>::max()) & (std::fabs(t741) >= detail::smallest_divisor<Real>) & (std::fabs(t741) <= std::numeric_limits<Real>::max()) & (std::fabs(t742) >= detail::smallest_divisor<Real>) & (std::fabs(t742) <= std::numeric_limits<Real>::max());
-        const Real t743 = t174 / detail::blend(usable, t71, Real(1));
-        const Real t744 = t75 / detail::blend(usable, t737, Real(1));
-        const Real t745 = t75 / detail::blend(usable, t76, Real(1));
-        const Real t746 = t184 / detail::blend(usable, t738, Real(1));
-        const Real t747 = std::fma(R, t745, t283);
-        const Real t748 = std::fma(std::fma(R, q, -t221), t74, std::fma(t221, t745, std::fma(t221, t74, -t222)));
-        const Real t749 = t458 + (std::fma(t747, t451, t456) - t172);
-        const Real t750 = t453 + t749;
-        const Real t751 = t750 + t136;
-        const Real t752 = t613 + (std::fma(t747, t596, t608) + t171);
-        const Real t753 = t598 + t752;
-        const Real t754 = t753 - t111;
-        const Real t755 = t617 + (std::fma(t747, t600, t610) - t170);
-        const Real t756 = t602 + t755;
-        const Real t757 = t756 + t90;
-        const Real t758 = t721 - (t722 - t723) + (t483 - t723) + (t720 - (t721 - t718) + std::fma(std::fma(std::fma(t318, v_x, std::fma(t255, v_x, -t265)), w_z, std::fma(t265, w_z, -t481)), t74, std::fma(t481, t744, std::fma(t481, t74, -t483))));
-        const Real t759 = t722 + t758;
-        const Real t760 = t759 - t413;
-        const Real t761 = std::fma(std::fma(std::fma(mu, t177, std::fma(mu, t173, -t725)), t74, std::fma(t725, t744, std::fma(t725, t74, -t726))), t164, std::fma(t726, t168, std::fma(t726, t164, -t727)));
-        const Real t762 = t727 / detail::blend(usable, t739, Real(1));
-        const Real t763 = t727 / detail::blend(usable, t740, Real(1));
-        const Real t764 = -t743;
-        const Real t765 = -t746;
-        const Real t766 = std::fma(t765, t182, std::fma(t765, t179, t184) + std::fma(q, t188, std::fma(q, t183, -t184))) / detail::blend(usable, t738, Real(1));
-        const Real t767 = t751 - t750;
-        const Real t768 = t754 - t753;
-        const Real t769 = t757 - t756;
-        const Real t770 = t760 - t759;
-        const Real t771 = -t762;
-        const Real t772 = -t763;
-        const Real t773 = detail::blend(t736 > Real(0), t772, t746);
-        const Real t774 = t764 + -(std::fma(t764, t73, std::fma(t764, t71, t174) + std::fma(t177, t164, std::fma(t173, t168, std::fma(t173, t164, -t174)))) / detail::blend(usable, t71, Real(1)));
-        const Real t775 = N_x * t774;
-        const Real t776 = N_y * t774;
-        const Real t777 = N_z * t774;
-        const Real t778 = t775 + v_x;
-        const Real t779 = t776 + v_y;
-        const Real t780 = t777 + v_z;
-        const Real t781 = t750 - (t751 - t767) + (t136 - t767) + (t749 - (t750 - t453) + t161);
-        const Real t782 = t751 + t781;
-        const Real t783 = t782 / detail::blend(usable, t71, Real(1));
-        const Real t784 = t753 - (t754 - t768) - (t111 + t768) + (t752 - (t753 - t598) - t131);
-        const Real t785 = t754 + t784;
-        const Real t786 = t785 / detail::blend(usable, t71, Real(1));
-        const Real t787 = N_x * t786;
-        const Real t788 = N_z * t786;
-        const Real t789 = t756 - (t757 - t769) + (t90 - t769) + (t755 - (t756 - t602) + t102);
-        const Real t790 = t757 + t789;
-        const Real t791 = t790 / detail::blend(usable, t71, Real(1));
-        const Real t792 = t759 - (t760 - t770) - (t413 + t770) + (t758 - (t759 - t722) - std::fma(std::fma(std::fma(t318, v_z, std::fma(t255, v_z, -t277)), w_x, std::fma(t277, w_x, -t411)), t74, std::fma(t411, t744, std::fma(t411, t74, -t413))));
-        const Real t793 = t760 + t792;
-        const Real t794 = t793 - t349;
-        const Real t795 = -t783;
-        const Real t796 = N_x * t795;
-        const Real t797 = N_y * t795;
-        const Real t798 = -t786;
-        const Real t799 = t797 - t788;
-        const Real t800 = -t791;
-        const Real t801 = N_y * t800;
-        const Real t802 = N_z * t800;
-        const Real t803 = t787 - t801;
-        const Real t804 = t803 - t787;
-        const Real t805 = t794 - t793;
-        const Real t806 = t796 - t802;
-        const Real t807 = t806 - t796;
-        const Real t808 = t799 - t797;
-        const Real t809 = std::fma(t798, t73, std::fma(t798, t71, t785) + (t784 - (t785 - t754))) / detail::blend(usable, t71, Real(1));
-        const Real t810 = t786 + t809;
-        const Real t811 = t793 - (t794 - t805) - (t349 + t805) + (t792 - (t793 - t760) - std::fma(std::fma(std::fma(t321, v_x, std::fma(t260, v_x, -t266)), w_y, std::fma(t266, w_y, -t347)), t74, std::fma(t347, t744, std::fma(t347, t74, -t349))));
-        const Real t812 = t794 + t811;
-        const Real t813 = t812 + t404;
-        const Real t814 = -(std::fma(t795, t73, std::fma(t795, t71, t782) + (t781 - (t782 - t751))) / detail::blend(usable, t71, Real(1)));
-        const Real t815 = t795 + t814;
-        const Real t816 = -(std::fma(t800, t73, std::fma(t800, t71, t790) + (t789 - (t790 - t757))) / detail::blend(usable, t71, Real(1)));
-        const Real t817 = t800 + t816;
-        const Real t818 = t813 - t812;
-        const Real t819 = t797 - (t799 - t808) - (t788 + t808) + (std::fma(N_y, t814, std::fma(N_y, t795, -t797)) - std::fma(N_z, t809, std::fma(N_z, t786, -t788)));
-        const Real t820 = t799 + t819;
-        const Real t821 = t773 * t820;
-        const Real t822 = t821 / detail::blend(usable, t222, Real(1));
-        const Real t823 = t787 - (t803 - t804) - (t801 + t804) + (std::fma(N_x, t809, std::fma(N_x, t786, -t787)) - std::fma(N_y, t816, std::fma(N_y, t800, -t801)));
-        const Real t824 = t803 + t823;
-        const Real t825 = t773 * t824;
-        const Real t826 = t825 / detail::blend(usable, t222, Real(1));
-        const Real t827 = t796 - (t806 - t807) - (t802 + t807) + (std::fma(N_x, t814, std::fma(N_x, t795, -t796)) - std::fma(N_z, t816, std::fma(N_z, t800, -t802)));
-        const Real t828 = t806 + t827;
-        const Real t829 = t773 * t828;
-        const Real t830 = t829 / detail::blend(usable, t222, Real(1));
-        const Real t831 = t812 - (t813 - t818) + (t404 - t818) + (t811 - (t812 - t794) + std::fma(std::fma(std::fma(t321, v_y, std::fma(t260, v_y, -t271)), w_x, std::fma(t271, w_x, -t402)), t74, std::fma(t402, t744, std::fma(t402, t74, -t404))));
-        const Real t832 = t813 + t831;
-        const Real t833 = t832 - t492;
-        const Real t834 = -t822;
-        const Real t835 = -t826;
-        const Real t836 = -t830;
-        const Real t837 = t833 - t832;
-        const Real t838 = t832 - (t833 - t837) - (t492 + t837) + (t831 - (t832 - t813) - std::fma(std::fma(std::fma(t317, v_y, std::fma(t254, v_y, -t272)), w_z, std::fma(t272, w_z, -t490)), t74, std::fma(t490, t744, std::fma(t490, t74, -t492))));
-        const Real t839 = t833 + t838;
-        const Real t840 = t839 + t358;
-        const Real t841 = t840 - t839;
-        const Real t842 = t839 - (t840 - t841) + (t358 - t841) + (t838 - (t839 - t833) + std::fma(std::fma(std::fma(t317, v_z, std::fma(t254, v_z, -t278)), w_y, std::fma(t278, w_y, -t356)), t74, std::fma(t356, t744, std::fma(t356, t74, -t358))));
-        const Real t843 = t840 + t842;
-        const Real t844 = t843 - t495;
-        const Real t845 = t844 - t843;
-        const Real t846 = t843 - (t844 - t845) - (t495 + t845) + (t842 - (t843 - t840) - std::fma(std::fma(std::fma(t319, v_y, std::fma(t257, v_y, -t273)), w_z, std::fma(t273, w_z, -t493)), t74, std::fma(t493, t744, std::fma(t493, t74, -t495))));
-        const Real t847 = t844 + t846;
-        const Real t848 = t847 + t361;
-        const Real t849 = t848 - t847;
-        const Real t850 = t847 - (t848 - t849) + (t361 - t849) + (t846 - (t847 - t844) + std::fma(std::fma(std::fma(t319, v_z, std::fma(t257, v_z, -t279)), w_y, std::fma(t279, w_y, -t359)), t74, std::fma(t359, t744, std::fma(t359, t74, -t361))));
-        const Real t851 = t848 + t850;
-        const Real t852 = t851 - t498;
-        const Real t853 = t852 - t851;
-        const Real t854 = t851 - (t852 - t853) - (t498 + t853) + (t850 - (t851 - t848) - std::fma(std::fma(std::fma(t323, v_y, std::fma(t262, v_y, -t274)), w_z, std::fma(t274, w_z, -t496)), t74, std::fma(t496, t744, std::fma(t496, t74, -t498))));
-        const Real t855 = t852 + t854;
-        const Real t856 = t855 + t364;
-        const Real t857 = t856 - t855;
-        const Real t858 = t855 - (t856 - t857) + (t364 - t857) + (t854 - (t855 - t852) + std::fma(std::fma(std::fma(t323, v_z, std::fma(t262, v_z, -t280)), w_y, std::fma(t280, w_y, -t362)), t74, std::fma(t362, t744, std::fma(t362, t74, -t364))));
-        const Real t859 = t856 + t858;
-        const Real t860 = t859 - t352;
-        const Real t861 = t860 - t859;
-        const Real t862 = t859 - (t860 - t861) - (t352 + t861) + (t858 - (t859 - t856) - std::fma(std::fma(std::fma(t322, v_x, std::fma(t261, v_x, -t267)), w_y, std::fma(t267, w_y, -t350)), t74, std::fma(t350, t744, std::fma(t350, t74, -t352))));
-        const Real t863 = t860 + t862;
-        const Real t864 = t863 + t407;
-        const Real t865 = t864 - t863;
-        const Real t866 = t863 - (t864 - t865) + (t407 - t865) + (t862 - (t863 - t860) + std::fma(std::fma(std::fma(t322, v_y, std::fma(t261, v_y, -t275)), w_x, std::fma(t275, w_x, -t405)), t74, std::fma(t405, t744, std::fma(t405, t74, -t407))));
-        const Real t867 = t864 + t866;
-        const Real t868 = t867 + t486;
-        const Real t869 = t868 - t867;
-        const Real t870 = t867 - (t868 - t869) + (t486 - t869) + (t866 - (t867 - t864) + std::fma(std::fma(std::fma(t320, v_x, std::fma(t259, v_x, -t268)), w_z, std::fma(t268, w_z, -t484)), t74, std::fma(t484, t744, std::fma(t484, t74, -t486))));
-        const Real t871 = t868 + t870;
-        const Real t872 = t871 - t416;
-        const Real t873 = t872 - t871;
-        const Real t874 = t871 - (t872 - t873) - (t416 + t873) + (t870 - (t871 - t868) - std::fma(std::fma(std::fma(t320, v_z, std::fma(t259, v_z, -t281)), w_x, std::fma(t281, w_x, -t414)), t74, std::fma(t414, t744, std::fma(t414, t74, -t416))));
-        const Real t875 = t872 + t874;
-        const Real t876 = t875 + t489;
-        const Real t877 = t876 - t875;
-        const Real t878 = t875 - (t876 - t877) + (t489 - t877) + (t874 - (t875 - t872) + std::fma(std::fma(std::fma(t324, v_x, std::fma(t263, v_x, -t269)), w_z, std::fma(t269, w_z, -t487)), t74, std::fma(t487, t744, std::fma(t487, t74, -t489))));
-        const Real t879 = t876 + t878;
-        const Real t880 = t879 - t419;
-        const Real t881 = t880 - t879;
-        const Real t882 = t879 - (t880 - t881) - (t419 + t881) + (t878 - (t879 - t876) - std::fma(std::fma(std::fma(t324, v_z, std::fma(t263, v_z, -t282)), w_x, std::fma(t282, w_x, -t417)), t74, std::fma(t417, t744, std::fma(t417, t74, -t419))));
-        const Real t883 = t880 + t882;
-        const Real t884 = t883 - t355;
-        const Real t885 = t884 - t883;
-        const Real t886 = t883 - (t884 - t885) - (t355 + t885) + (t882 - (t883 - t880) - std::fma(std::fma(std::fma(t325, v_x, std::fma(t264, v_x, -t270)), w_y, std::fma(t270, w_y, -t353)), t74, std::fma(t353, t744, std::fma(t353, t74, -t355))));
-        const Real t887 = t884 + t886;
-        const Real t888 = t887 + t410;
-        const Real t889 = t888 - t887;
-        const Real t890 = t887 - (t888 - t889) + (t410 - t889) + (t886 - (t887 - t884) + std::fma(std::fma(std::fma(t325, v_y, std::fma(t264, v_y, -t276)), w_x, std::fma(t276, w_x, -t408)), t74, std::fma(t408, t744, std::fma(t408, t74, -t410))));
-        const Real t891 = t888 + t890;
-        const Real t892 = t891 + t93;
-        const Real t893 = t892 - t891;
-        const Real t894 = t891 - (t892 - t893) + (t93 - t893) + (t890 - (t891 - t888) + std::fma(t35, t91, std::fma(t19, t103, std::fma(t19, t91, -t93))));
-        const Real t895 = t892 + t894;
-        const Real t896 = t895 + t124;
-        const Real t897 = t896 - t895;
-        const Real t898 = t895 - (t896 - t897) + (t124 - t897) + (t894 - (t895 - t892) + std::fma(t35, t120, std::fma(t19, t132, std::fma(t19, t120, -t124))));
-        const Real t899 = t896 + t898;
-        const Real t900 = t899 + t155;
-        const Real t901 = t900 - t899;
-        const Real t902 = t899 - (t900 - t901) + (t155 - t901) + (t898 - (t899 - t896) + std::fma(std::fma(t12, t14, std::fma(t6, t32, std::fma(t6, t14, -t24))), t151, std::fma(t24, t162, std::fma(t24, t151, -t155))));
-        const Real t903 = t900 + t902;
-        const Real t904 = t903 - t144;
-        const Real t905 = t904 - t903;
-        const Real t906 = t903 - (t904 - t905) - (t144 + t905) + (t902 - (t903 - t900) - std::fma(std::fma(std::fma(std::fma(t12, N_y, std::fma(t6, N_y, -t25)), N_z, std::fma(t25, N_z, -t52)), v_y, std::fma(t52, v_y, -t106)), v_z, std::fma(t106, v_z, -t144)));
-        const Real t907 = t904 + t906;
-        const Real t908 = t907 + t97;
-        const Real t909 = t908 - t907;
-        const Real t910 = t907 - (t908 - t909) + (t97 - t909) + (t906 - (t907 - t904) + std::fma(t66, t91, std::fma(t42, t103, std::fma(t42, t91, -t97))));
-        const Real t911 = t908 + t910;
-        const Real t912 = t911 + t127;
-        const Real t913 = t912 - t911;
-        const Real t914 = t911 - (t912 - t913) + (t127 - t913) + (t910 - (t911 - t908) + std::fma(std::fma(t12, t41, std::fma(t6, t64, std::fma(t6, t41, -t44))), t120, std::fma(t44, t132, std::fma(t44, t120, -t127))));
-        const Real t915 = t912 + t914;
-        const Real t916 = t915 + t159;
-        const Real t917 = t916 - t915;
-        const Real t918 = t915 - (t916 - t917) + (t159 - t917) + (t914 - (t915 - t912) + std::fma(t66, t151, std::fma(t42, t162, std::fma(t42, t151, -t159))));
-        const Real t919 = t916 + t918;
-        const Real t920 = t919 - t115;
-        const Real t921 = t920 - t919;
-        const Real t922 = t919 - (t920 - t921) - (t115 + t921) + (t918 - (t919 - t916) - std::fma(std::fma(std::fma(t13, N_y, std::fma(t9, N_y, -t26)), v_x, std::fma(t26, v_x, -t79)), v_y, std::fma(t79, v_y, -t115)));
-        const Real t923 = t920 + t922;
-        const Real t924 = t923 - t138;
-        const Real t925 = t924 - t923;
-        const Real t926 = t923 - (t924 - t925) - (t138 + t925) + (t922 - (t923 - t920) - std::fma(std::fma(std::fma(t13, N_z, std::fma(t9, N_z, -t45)), v_x, std::fma(t45, v_x, -t83)), v_z, std::fma(t83, v_z, -t138)));
-        const Real t927 = t924 + t926;
-        const Real t928 = t927 + t121;
-        const Real t929 = t928 - t927;
-        const Real t930 = t927 - (t928 - t929) + (t121 - t929) + (t926 - (t927 - t924) + std::fma(t10, t120, std::fma(t3, t132, std::fma(t3, t120, -t121))));
-        const Real t931 = t928 + t930;
-        const Real t932 = t931 + t152;
-        const Real t933 = t932 - t931;
-        const Real t934 = t931 - (t932 - t933) + (t152 - t933) + (t930 - (t931 - t928) + std::fma(t10, t151, std::fma(t3, t162, std::fma(t3, t151, -t152))));
-        const Real t935 = t932 + t934;
-        const Real t936 = t935 - t140;
-        const Real t937 = t936 - t935;
-        const Real t938 = t935 - (t936 - t937) - (t140 + t937) + (t934 - (t935 - t932) - std::fma(std::fma(std::fma(std::fma(t11, t14, std::fma(t4, t32, std::fma(t4, t14, -t22))), N_z, std::fma(t22, N_z, -t50)), v_x, std::fma(t50, v_x, -t86)), v_z, std::fma(t86, v_z, -t140)));
-        const Real t939 = t936 + t938;
-        const Real t940 = t939 - t117;
-        const Real t941 = t940 - t939;
-        const Real t942 = t939 - (t940 - t941) - (t117 + t941) + (t938 - (t939 - t936) - std::fma(std::fma(std::fma(t11, t27, std::fma(t4, t36, std::fma(t4, t27, -t29))), v_x, std::fma(t29, v_x, -t81)), v_y, std::fma(t81, v_y, -t117)));
-        const Real t943 = t940 + t942;
-        const Real t944 = t943 - t119;
-        const Real t945 = t944 - t943;
-        const Real t946 = t943 - (t944 - t945) - (t119 + t945) + (t942 - (t943 - t940) - std::fma(std::fma(std::fma(std::fma(t11, N_y, std::fma(t4, N_y, -t23)), t41, std::fma(t23, t64, std::fma(t23, t41, -t51))), v_x, std::fma(t51, v_x, -t87)), v_y, std::fma(t87, v_y, -t119)));
-        const Real t947 = t944 + t946;
-        const Real t948 = t947 - t142;
-        const Real t949 = t948 - t947;
-        const Real t950 = t947 - (t948 - t949) - (t142 + t949) + (t946 - (t947 - t944) - std::fma(std::fma(std::fma(t11, t58, std::fma(t4, t68, std::fma(t4, t58, -t60))), v_x, std::fma(t60, v_x, -t89)), v_z, std::fma(t89, v_z, -t142)));
-        const Real t951 = t948 + t950;
-        const Real t952 = t951 + t99;
-        const Real t953 = t952 - t951;
-        const Real t954 = t951 - (t952 - t953) + (t99 - t953) + (t950 - (t951 - t948) + std::fma(std::fma(std::fma(Real(2), t32, std::fma(Real(2), t14, -t33)), t41, std::fma(t33, t64, std::fma(t33, t41, -t54))), t91, std::fma(t54, t103, std::fma(t54, t91, -t99))));
-        const Real t955 = t952 + t954;
-        const Real t956 = t955 + t128;
-        const Real t957 = t956 - t955;
-        const Real t958 = t955 - (t956 - t957) + (t128 - t957) + (t954 - (t955 - t952) + std::fma(t67, t120, std::fma(t46, t132, std::fma(t46, t120, -t128))));
-        const Real t959 = t956 + t958;
-        const Real t960 = t959 + t160;
-        const Real t961 = t960 - t959;
-        const Real t962 = t959 - (t960 - t961) + (t160 - t961) + (t958 - (t959 - t956) + std::fma(t67, t151, std::fma(t46, t162, std::fma(t46, t151, -t160))));
-        const Real t963 = t960 + t962;
-        const Real t964 = t963 - t146;
-        const Real t965 = t964 - t963;
-        const Real t966 = t963 - (t964 - t965) - (t146 + t965) + (t962 - (t963 - t960) - std::fma(std::fma(std::fma(std::fma(Real(2), t36, std::fma(Real(2), t27, -t37)), N_z, std::fma(t37, N_z, -t55)), v_y, std::fma(t55, v_y, -t108)), v_z, std::fma(t108, v_z, -t146)));
-        const Real t967 = t964 + t966;
-        const Real t968 = t967 + t94;
-        const Real t969 = t968 - t967;
-        const Real t970 = t967 - (t968 - t969) + (t94 - t969) + (t966 - (t967 - t964) + std::fma(t38, t91, std::fma(t30, t103, std::fma(t30, t91, -t94))));
-        const Real t971 = t968 + t970;
-        const Real t972 = t971 + t156;
-        const Real t973 = t972 - t971;
-        const Real t974 = t971 - (t972 - t973) + (t156 - t973) + (t970 - (t971 - t968) + std::fma(t38, t151, std::fma(t30, t162, std::fma(t30, t151, -t156))));
-        const Real t975 = t972 + t974;
-        const Real t976 = t975 - t148;
-        const Real t977 = t976 - t975;
-        const Real t978 = t975 - (t976 - t977) - (t148 + t977) + (t974 - (t975 - t972) - std::fma(std::fma(std::fma(std::fma(Real(2), N_y, -t31), t58, std::fma(t31, t68, std::fma(t31, t58, -t62))), v_y, std::fma(t62, v_y, -t110)), v_z, std::fma(t110, v_z, -t148)));
-        const Real t979 = t976 + t978;
-        const Real t980 = t979 + t100;
-        const Real t981 = t980 - t979;
-        const Real t982 = t979 - (t980 - t981) + (t100 - t981) + (t978 - (t979 - t976) + std::fma(t69, t91, std::fma(t63, t103, std::fma(t63, t91, -t100))));
-        const Real t983 = t980 + t982;
-        const Real t984 = t983 + t129;
-        const Real t985 = t984 - t983;
-        const Real t986 = t983 - (t984 - t985) + (t129 - t985) + (t982 - (t983 - t980) + std::fma(t69, t120, std::fma(t63, t132, std::fma(t63, t120, -t129))));
-        const Real t987 = t984 + t986;
-        const Real t988 = std::sqrt(detail::blend(usable, t987, Real(0)));
-        const Real t989 = std::fma(-t988, t988, t987) + (t986 - (t987 - t984));
-        const Real t990 = detail::blend(t736 > Real(0), t771, t746) + detail::blend(t736 > Real(0), -(std::fma(t771, t989 / detail::blend(usable, t741, Real(1)), std::fma(t771, t988, t727) + t761) / detail::blend(usable, t739, Real(1))), t766);
-        const Real t991 = std::fma(t990, t817, t778);
-        const Real t992 = std::fma(t990, t810, t779);
-        const Real t993 = std::fma(t990, t815, t780);
-        const Real t994 = detail::blend(t736 > Real(0), -(std::fma(t772, t989 / detail::blend(usable, t742, Real(1)), std::fma(t772, t988, t727) + t761) / detail::blend(usable, t740, Real(1))), t766);
-        const Real v_x_out = t991;
-        const Real v_y_out = t992;
-        const Real v_z_out = t993;
-        const Real w_x_out = w_x + (t834 + -(std::fma(t834, t748, std::fma(t834, t222, t821) + std::fma(t994, t820, std::fma(t773, t819 - (t820 - t799), std::fma(t773, t820, -t821)))) / detail::blend(usable, t222, Real(1))));
-        const Real w_y_out = w_y + (t830 + std::fma(t836, t748, std::fma(t836, t222, t829) + std::fma(t994, t828, std::fma(t773, t827 - (t828 - t806), std::fma(t773, t828, -t829)))) / detail::blend(usable, t222, Real(1)));
-        const Real w_z_out = w_z + (t835 + -(std::fma(t835, t748, std::fma(t835, t222, t825) + std::fma(t994, t824, std::fma(t773, t823 - (t824 - t803), std::fma(t773, t824, -t825)))) / detail::blend(usable, t222, Real(1))));
+        const Real t0 = N_x * N_x;
+        const Real t1 = N_y * N_y;
+        const Real t2 = t0 + t1;
+        const Real t3 = t2 - t0;
+        const Real t4 = t0 - (t2 - t3) + (t1 - t3) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
+        const Real t5 = t2 + t4;
+        const Real t6 = N_z * N_z;
+        const Real t7 = t5 + t6;
+        const Real t8 = t7 - t5;
+        const Real t9 = t5 - (t7 - t8) + (t6 - t8) + (t4 - (t5 - t2) + std::fma(N_z, N_z, -t6));
+        const Real t10 = t7 + t9;
+        const Real t11 = t9 - (t10 - t7);
+        const Real t12 = std::sqrt(t10);
+        const Real t13 = std::fma(-t12, t12, t10) + t11;
+        const Real t14 = t12 + t12;
+        const Real t15 = N_x * v_x;
+        const Real t16 = v_x * t10;
+        const Real t17 = std::fma(v_x, t11, std::fma(v_x, t10, -t16));
+        const Real t18 = N_y * v_y;
+        const Real t19 = v_y * t10;
+        const Real t20 = t15 + t18;
+        const Real t21 = t20 - t15;
+        const Real t22 = std::fma(v_y, t11, std::fma(v_y, t10, -t19));
+        const Real t23 = t15 - (t20 - t21) + (t18 - t21) + (std::fma(N_x, v_x, -t15) + std::fma(N_y, v_y, -t18));
+        const Real t24 = t20 + t23;
+        const Real t25 = N_z * v_z;
+        const Real t26 = v_z * t10;
+        const Real t27 = t24 + t25;
+        const Real t28 = t27 - t24;
+        const Real t29 = std::fma(v_z, t11, std::fma(v_z, t10, -t26));
+        const Real t30 = t24 - (t27 - t28) + (t25 - t28) + (t23 - (t24 - t20) + std::fma(N_z, v_z, -t25));
+        const Real t31 = t27 + t30;
+        const Real t32 = N_x * t31;
+        const Real t33 = N_y * t31;
+        const Real t34 = N_z * t31;
+        const Real t35 = t30 - (t31 - t27);
+        const Real t36 = t31 * t31;
+        const Real t37 = std::fma(N_x, t35, std::fma(N_x, t31, -t32));
+        const Real t38 = std::fma(N_y, t35, std::fma(N_y, t31, -t33));
+        const Real t39 = std::fma(N_z, t35, std::fma(N_z, t31, -t34));
+        const Real t40 = Real(1) + eps;
+        const Real t41 = t40 * t31;
+        const Real t42 = t40 - Real(1);
+        const Real t43 = t40 * t40;
+        const Real t44 = Real(1) - (t40 - t42) + (eps - t42);
+        const Real t45 = q * q;
+        const Real t46 = Real(1) + q;
+        const Real t47 = t46 - Real(1);
+        const Real t48 = t46 * t46;
+        const Real t49 = Real(1) - (t46 - t47) + (q - t47);
+        const Real t50 = Real(1) + b;
+        const Real t51 = q * t50;
+        const Real t52 = t50 - Real(1);
+        const Real t53 = t50 * t50;
+        const Real t54 = t45 * t53;
+        const Real t55 = Real(1) - (t50 - t52) + (b - t52);
+        const Real t56 = R * t12;
+        const Real t57 = R * q;
+        const Real t58 = t57 * t12;
+        const Real t59 = std::fma(R, t12, -t56);
+        const Real t60 = N_x * w_y;
+        const Real t61 = N_z * w_y;
+        const Real t62 = N_y * w_x;
+        const Real t63 = N_z * w_x;
+        const Real t64 = t60 - t62;
+        const Real t65 = t64 - t60;
+        const Real t66 = t60 - (t64 - t65) - (t62 + t65) + (std::fma(N_x, w_y, -t60) - std::fma(N_y, w_x, -t62));
+        const Real t67 = t64 + t66;
+        const Real t68 = t56 * t67;
+        const Real t69 = t68 - t34;
+        const Real t70 = std::fma(t56, t66 - (t67 - t64), std::fma(t56, t67, -t68));
+        const Real t71 = t69 - t68;
+        const Real t72 = t68 - (t69 - t71) - (t34 + t71);
+        const Real t73 = t72 + (std::fma(t59, t67, t70) - t39);
+        const Real t74 = t69 + t73;
+        const Real t75 = t74 + t26;
+        const Real t76 = t75 - t74;
+        const Real t77 = t74 - (t75 - t76) + (t26 - t76) + (t73 - (t74 - t69) + t29);
+        const Real t78 = t75 + t77;
+        const Real t79 = t77 - (t78 - t75);
+        const Real t80 = t78 * t78;
+        const Real t81 = N_x * w_z;
+        const Real t82 = N_y * w_z;
+        const Real t83 = t82 - t61;
+        const Real t84 = t81 - t63;
+        const Real t85 = t84 - t81;
+        const Real t86 = t83 - t82;
+        const Real t87 = t81 - (t84 - t85) - (t63 + t85) + (std::fma(N_x, w_z, -t81) - std::fma(N_z, w_x, -t63));
+        const Real t88 = t84 + t87;
+        const Real t89 = t56 * t88;
+        const Real t90 = t89 + t33;
+        const Real t91 = t82 - (t83 - t86) - (t61 + t86) + (std::fma(N_y, w_z, -t82) - std::fma(N_z, w_y, -t61));
+        const Real t92 = t83 + t91;
+        const Real t93 = t56 * t92;
+        const Real t94 = t93 - t32;
+        const Real t95 = std::fma(t56, t87 - (t88 - t84), std::fma(t56, t88, -t89));
+        const Real t96 = t90 - t89;
+        const Real t97 = std::fma(t56, t91 - (t92 - t83), std::fma(t56, t92, -t93));
+        const Real t98 = t94 - t93;
+        const Real t99 = t89 - (t90 - t96) + (t33 - t96);
+        const Real t100 = t99 + (std::fma(t59, t88, t95) + t38);
+        const Real t101 = t90 + t100;
+        const Real t102 = t101 - t19;
+        const Real t103 = t93 - (t94 - t98) - (t32 + t98);
+        const Real t104 = t103 + (std::fma(t59, t92, t97) - t37);
+        const Real t105 = t94 + t104;
+        const Real t106 = t105 + t16;
+        const Real t107 = t102 - t101;
+        const Real t108 = t106 - t105;
+        const Real t109 = t101 - (t102 - t107) - (t19 + t107) + (t100 - (t101 - t90) - t22);
+        const Real t110 = t102 + t109;
+        const Real t111 = t105 - (t106 - t108) + (t16 - t108) + (t104 - (t105 - t94) + t17);
+        const Real t112 = t106 + t111;
+        const Real t113 = t109 - (t110 - t102);
+        const Real t114 = t110 * t110;
+        const Real t115 = t80 + t114;
+        const Real t116 = t115 - t80;
+        const Real t117 = t111 - (t112 - t106);
+        const Real t118 = t112 * t112;
+        const Real t119 = t80 - (t115 - t116) + (t114 - t116) + (std::fma(t79, t78, std::fma(t78, t79, std::fma(t78, t78, -t80))) + std::fma(t113, t110, std::fma(t110, t113, std::fma(t110, t110, -t114))));
+        const Real t120 = t115 + t119;
+        const Real t121 = t120 + t118;
+        const Real t122 = t121 - t120;
+        const Real t123 = t120 - (t121 - t122) + (t118 - t122) + (t119 - (t120 - t115) + std::fma(t117, t112, std::fma(t112, t117, std::fma(t112, t112, -t118))));
+        const Real t124 = t121 + t123;
+        const Real t125 = t54 * t124;
+        const Real t126 = mu * mu;
+        const Real t127 = mu * t40;
+        const Real t128 = t127 * t12;
+        const Real t129 = t128 * t31;
+        const Real t130 = t126 * t48;
+        const Real t131 = t130 * t43;
+        const Real t132 = t131 * t10;
+        const Real t133 = t132 * t36;
+        const Real t134 = t125 - t133;
+        const Real t135 = t134 - t125;
+        const Real t136 = t125 - (t134 - t135) - (t133 + t135) + (std::fma(std::fma(std::fma(q, q, -t45), t53, std::fma(t45, std::fma(t55, t50, std::fma(t50, t55, std::fma(t50, t50, -t53))), std::fma(t45, t53, -t54))), t124, std::fma(t54, t123 - (t124 - t121), std::fma(t54, t124, -t125))) - std::fma(std::fma(std::fma(std::fma(std::fma(mu, mu, -t126), t48, std::fma(t126, std::fma(t49, t46, std::fma(t46, t49, std::fma(t46, t46, -t48))), std::fma(t126, t48, -t130))), t43, std::fma(t130, std::fma(t44, t40, std::fma(t40, t44, std::fma(t40, t40, -t43))), std::fma(t130, t43, -t131))), t10, std::fma(t131, t11, std::fma(t131, t10, -t132))), t36, std::fma(t132, std::fma(t35, t31, std::fma(t31, t35, std::fma(t31, t31, -t36))), std::fma(t132, t36, -t133))));
+        const Real t137 = t134 + t136;
+        const Real t138 = t137 + (t136 - (t137 - t134));
+        const Real t139 = detail::blend(t138 > Real(0), t14, Real(1));
+        const Real t140 = detail::blend(t138 > Real(0), Real(1), t46);
+        const std::int64_t usable = resolved & (std::fabs(t10) >= detail::smallest_divisor<Real>) & (std::fabs(t10) <= std::numeric_limits<Real>::max()) & (std::fabs(t139) >= detail::smallest_divisor<Real>) & (std::fabs(t139) <= std::numeric_limits<Real>::max()) & (std::fabs(t14) >= detail::smallest_divisor<Real>) & (std::fabs(t14) <= std::numeric_limits<Real>::max()) & (std::fabs(t140) >= detail::smallest_divisor<Real>) & (std::fabs(t140) <= std::numeric_limits<Real>::max()) & (std::fabs(t58) >= detail::smallest_divisor<Real>) & (std::fabs(t58) <= std::numeric_limits<Real>::max());
+        const Real t141 = t41 / detail::blend(usable, t10, Real(1));
+        const Real t142 = t13 / detail::blend(usable, t139, Real(1));
+        const Real t143 = t13 / detail::blend(usable, t14, Real(1));
+        const Real t144 = t51 / detail::blend(usable, t140, Real(1));
+        const Real t145 = std::fma(R, t142, t59);
+        const Real t146 = std::fma(R, t143, t59);
+        const Real t147 = std::fma(std::fma(R, q, -t57), t12, std::fma(t57, t143, std::fma(t57, t12, -t58)));
+        const Real t148 = t72 + (std::fma(t145, t67, t70) - t39);
+        const Real t149 = t69 + t148;
+        const Real t150 = t149 + t26;
+        const Real t151 = t72 + (std::fma(t146, t67, t70) - t39);
+        const Real t152 = t69 + t151;
+        const Real t153 = t152 + t26;
+        const Real t154 = t99 + (std::fma(t145, t88, t95) + t38);
+        const Real t155 = t90 + t154;
+        const Real t156 = t155 - t19;
+        const Real t157 = t99 + (std::fma(t146, t88, t95) + t38);
+        const Real t158 = t90 + t157;
+        const Real t159 = t158 - t19;
+        const Real t160 = t103 + (std::fma(t145, t92, t97) - t37);
+        const Real t161 = t94 + t160;
+        const Real t162 = t161 + t16;
+        const Real t163 = t103 + (std::fma(t146, t92, t97) - t37);
+        const Real t164 = t94 + t163;
+        const Real t165 = t164 + t16;
+        const Real t166 = -t141;
+        const Real t167 = -t144;
+        const Real t168 = t150 - t149;
+        const Real t169 = t153 - t152;
+        const Real t170 = t156 - t155;
+        const Real t171 = t159 - t158;
+        const Real t172 = t162 - t161;
+        const Real t173 = t165 - t164;
+        const Real t174 = t166 + -(std::fma(t166, t11, std::fma(t166, t10, t41) + std::fma(t44, t31, std::fma(t40, t35, std::fma(t40, t31, -t41)))) / detail::blend(usable, t10, Real(1)));
+        const Real t175 = N_x * t174;
+        const Real t176 = N_y * t174;
+        const Real t177 = N_z * t174;
+        const Real t178 = t175 + v_x;
+        const Real t179 = t176 + v_y;
+        const Real t180 = t177 + v_z;
+        const Real t181 = t149 - (t150 - t168) + (t26 - t168) + (t148 - (t149 - t69) + t29);
+        const Real t182 = t150 + t181;
+        const Real t183 = t152 - (t153 - t169) + (t26 - t169) + (t151 - (t152 - t69) + t29);
+        const Real t184 = t153 + t183;
+        const Real t185 = t184 / detail::blend(usable, t10, Real(1));
+        const Real t186 = t155 - (t156 - t170) - (t19 + t170) + (t154 - (t155 - t90) - t22);
+        const Real t187 = t156 + t186;
+        const Real t188 = t158 - (t159 - t171) - (t19 + t171) + (t157 - (t158 - t90) - t22);
+        const Real t189 = t159 + t188;
+        const Real t190 = t189 / detail::blend(usable, t10, Real(1));
+        const Real t191 = N_x * t190;
+        const Real t192 = N_z * t190;
+        const Real t193 = t161 - (t162 - t172) + (t16 - t172) + (t160 - (t161 - t94) + t17);
+        const Real t194 = t162 + t193;
+        const Real t195 = t164 - (t165 - t173) + (t16 - t173) + (t163 - (t164 - t94) + t17);
+        const Real t196 = t165 + t195;
+        const Real t197 = t196 / detail::blend(usable, t10, Real(1));
+        const Real t198 = t181 - (t182 - t150);
+        const Real t199 = t182 * t182;
+        const Real t200 = -t185;
+        const Real t201 = N_x * t200;
+        const Real t202 = N_y * t200;
+        const Real t203 = t186 - (t187 - t156);
+        const Real t204 = t187 * t187;
+        const Real t205 = -t190;
+        const Real t206 = t202 - t192;
+        const Real t207 = t193 - (t194 - t162);
+        const Real t208 = t194 * t194;
+        const Real t209 = -t197;
+        const Real t210 = N_y * t209;
+        const Real t211 = N_z * t209;
+        const Real t212 = t191 - t210;
+        const Real t213 = t212 - t191;
+        const Real t214 = t199 + t204;
+        const Real t215 = t214 - t199;
+        const Real t216 = t201 - t211;
+        const Real t217 = t216 - t201;
+        const Real t218 = t206 - t202;
+        const Real t219 = std::fma(t205, t11, std::fma(t205, t10, t189) + (t188 - (t189 - t159))) / detail::blend(usable, t10, Real(1));
+        const Real t220 = t190 + t219;
+        const Real t221 = -(std::fma(t200, t11, std::fma(t200, t10, t184) + (t183 - (t184 - t153))) / detail::blend(usable, t10, Real(1)));
+        const Real t222 = t200 + t221;
+        const Real t223 = -(std::fma(t209, t11, std::fma(t209, t10, t196) + (t195 - (t196 - t165))) / detail::blend(usable, t10, Real(1)));
+        const Real t224 = t209 + t223;
+        const Real t225 = t199 - (t214 - t215) + (t204 - t215) + (std::fma(t198, t182, std::fma(t182, t198, std::fma(t182, t182, -t199))) + std::fma(t203, t187, std::fma(t187, t203, std::fma(t187, t187, -t204))));
+        const Real t226 = t214 + t225;
+        const Real t227 = t226 + t208;
+        const Real t228 = t202 - (t206 - t218) - (t192 + t218) + (std::fma(N_y, t221, std::fma(N_y, t200, -t202)) - std::fma(N_z, t219, std::fma(N_z, t190, -t192)));
+        const Real t229 = t206 + t228;
+        const Real t230 = t191 - (t212 - t213) - (t210 + t213) + (std::fma(N_x, t219, std::fma(N_x, t190, -t191)) - std::fma(N_y, t223, std::fma(N_y, t209, -t210)));
+        const Real t231 = t212 + t230;
+        const Real t232 = t201 - (t216 - t217) - (t211 + t217) + (std::fma(N_x, t221, std::fma(N_x, t200, -t201)) - std::fma(N_z, t223, std::fma(N_z, t209, -t211)));
+        const Real t233 = t216 + t232;
+        const Real t234 = t227 - t226;
+        const Real t235 = t226 - (t227 - t234) + (t208 - t234) + (t225 - (t226 - t214) + std::fma(t207, t194, std::fma(t194, t207, std::fma(t194, t194, -t208))));
+        const Real t236 = t227 + t235;
+        const Real t237 = std::sqrt(detail::blend(usable, t236, Real(0)));
+        const Real t238 = detail::blend(t138 > Real(0), t237, Real(1));
+        const Real t239 = detail::blend(t138 > Real(0), t237 + t237, Real(1));
+        const std::int64_t usable_late = usable & (std::fabs(t238) >= detail::smallest_divisor<Real>) & (std::fabs(t238) <= std::numeric_limits<Real>::max()) & (std::fabs(t239) >= detail::smallest_divisor<Real>) & (std::fabs(t239) <= std::numeric_limits<Real>::max());
+        const Real t240 = t129 / detail::blend(usable_late, t238, Real(1));
+        const Real t241 = -t240;
+        const Real t242 = detail::blend(t138 > Real(0), t241, t144);
+        const Real t243 = t242 * t229;
+        const Real t244 = t243 / detail::blend(usable, t58, Real(1));
+        const Real t245 = t242 * t231;
+        const Real t246 = t245 / detail::blend(usable, t58, Real(1));
+        const Real t247 = t242 * t233;
+        const Real t248 = t247 / detail::blend(usable, t58, Real(1));
+        const Real t249 = -t244;
+        const Real t250 = -t246;
+        const Real t251 = -t248;
+        const Real t252 = detail::blend(t138 > Real(0), -(std::fma(t241, (std::fma(-t237, t237, t236) + (t235 - (t236 - t227))) / detail::blend(usable_late, t239, Real(1)), std::fma(t241, t237, t129) + std::fma(std::fma(std::fma(mu, t44, std::fma(mu, t40, -t127)), t12, std::fma(t127, t142, std::fma(t127, t12, -t128))), t31, std::fma(t128, t35, std::fma(t128, t31, -t129)))) / detail::blend(usable_late, t238, Real(1))), std::fma(t167, t49, std::fma(t167, t46, t51) + std::fma(q, t55, std::fma(q, t50, -t51))) / detail::blend(usable, t140, Real(1)));
+        const Real t253 = t242 + t252;
+        const Real t254 = std::fma(t253, t224, t178);
+        const Real t255 = std::fma(t253, t220, t179);
+        const Real t256 = std::fma(t253, t222, t180);
+        const Real v_x_out = t254;
+        const Real v_y_out = t255;
+        const Real v_z_out = t256;
+        const Real w_x_out = w_x + (t249 + -(std::fma(t249, t147, std::fma(t249, t58, t243) + std::fma(t252, t229, std::fma(t242, t228 - (t229 - t206), std::fma(t242, t229, -t243)))) / detail::blend(usable, t58, Real(1))));
+        const Real w_y_out = w_y + (t248 + std::fma(t251, t147, std::fma(t251, t58, t247) + std::fma(t252, t233, std::fma(t242, t232 - (t233 - t216), std::fma(t242, t233, -t247)))) / detail::blend(usable, t58, Real(1)));
+        const Real w_z_out = w_z + (t250 + -(std::fma(t250, t147, std::fma(t250, t58, t245) + std::fma(t252, t231, std::fma(t242, t230 - (t231 - t212), std::fma(t242, t231, -t245)))) / detail::blend(usable, t58, Real(1))));
         const Real finite0 = detail::zero_if_finite(v_x_out, v_y_out);
         const Real finite1 = detail::zero_if_finite(v_z_out, w_x_out);
         const Real finite2 = detail::zero_if_finite(w_y_out, w_z_out);
@@ -2745,15 +819,15 @@ IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_3d(std::size_t count, const R
             doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(R, lowest), detail::magnitude_or(q, lowest)), detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest))), detail::least(detail::least(detail::magnitude_or(N_z, lowest), detail::magnitude_or(v_x, lowest)), detail::least(detail::magnitude_or(v_y, lowest), detail::magnitude_or(v_z, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(w_x, lowest), detail::magnitude_or(w_y, lowest)), detail::least(detail::magnitude_or(w_z, lowest), detail::magnitude_or(eps, lowest))), detail::least(detail::magnitude_or(b, lowest), detail::magnitude_or(mu, lowest)))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(R), std::fabs(q)), detail::most(std::fabs(N_x), std::fabs(N_y))), detail::most(detail::most(std::fabs(N_z), std::fabs(v_x)), detail::most(std::fabs(v_y), std::fabs(v_z)))), detail::most(detail::most(detail::most(std::fabs(w_x), std::fabs(w_y)), detail::most(std::fabs(w_z), std::fabs(eps))), detail::most(std::fabs(b), std::fabs(mu)))), highest));
         }
         if constexpr (collide_wall_rough_batch_3d_k<Real> < 0)
-            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t1), detail::zero_as_min(N_x)), detail::most(std::fabs(t2), detail::zero_as_min(N_x))), detail::least(detail::most(std::fabs(t3), detail::zero_as_min(N_x)), detail::most(std::fabs(t4), detail::zero_as_min(N_x)))), detail::least(detail::least(std::fabs(t6), std::fabs(t7)), detail::least(std::fabs(t9), detail::most(std::fabs(t14), detail::zero_as_min(N_y))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t15), detail::zero_as_min(N_x)), detail::most(detail::most(std::fabs(t16), detail::zero_as_min(N_x)), detail::zero_as_min(N_y))), detail::least(std::fabs(t19), detail::most(std::fabs(t20), detail::zero_as_min(N_y)))), detail::least(detail::least(detail::most(std::fabs(t21), detail::zero_as_min(N_y)), std::fabs(t22)), detail::least(detail::most(std::fabs(t23), detail::zero_as_min(N_y)), std::fabs(t24))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t25), detail::zero_as_min(N_y)), detail::most(std::fabs(t26), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t27), detail::zero_as_min(N_y)), detail::most(std::fabs(t28), detail::zero_as_min(N_x)))), detail::least(detail::least(std::fabs(t29), detail::most(std::fabs(t30), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t31), detail::zero_as_min(N_y)), std::fabs(t33)))), detail::least(detail::least(detail::least(std::fabs(t34), std::fabs(t37)), detail::least(detail::most(std::fabs(t41), detail::zero_as_min(N_z)), std::fabs(t42))), detail::least(detail::least(detail::most(std::fabs(t43), detail::zero_as_min(N_z)), std::fabs(t44)), detail::least(detail::most(std::fabs(t45), detail::zero_as_min(N_z)), std::fabs(t46)))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t47), detail::zero_as_min(N_z)), std::fabs(t48)), detail::least(detail::most(std::fabs(t49), detail::zero_as_min(N_z)), detail::most(std::fabs(t50), detail::zero_as_min(N_z)))), detail::least(detail::least(std::fabs(t51), detail::most(std::fabs(t52), detail::zero_as_min(N_z))), detail::least(detail::most(std::fabs(t53), detail::zero_as_min(N_z)), std::fabs(t54)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t55), detail::zero_as_min(N_z)), detail::most(std::fabs(t58), detail::zero_as_min(N_z))), detail::least(detail::most(std::fabs(t59), detail::zero_as_min(N_x)), std::fabs(t60))), detail::least(detail::least(detail::most(std::fabs(t61), detail::zero_as_min(N_y)), std::fabs(t62)), detail::least(detail::most(std::fabs(t63), detail::zero_as_min(N_z)), std::fabs(t65))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t77), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(std::fabs(t78), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t79), detail::zero_as_min(v_x)), detail::most(std::fabs(t80), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(std::fabs(t81), detail::zero_as_min(v_x)), detail::most(std::fabs(t82), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t83), detail::zero_as_min(v_x)), detail::most(std::fabs(t84), detail::zero_as_min(v_x))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t85), detail::zero_as_min(v_x)), detail::most(std::fabs(t86), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t87), detail::zero_as_min(v_x)), detail::most(std::fabs(t88), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(std::fabs(t89), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t90), detail::zero_as_min(v_x)), detail::zero_as_min(t71))), detail::least(detail::most(std::fabs(t91), detail::zero_as_min(v_x)), std::fabs(t92))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t93), std::fabs(t94)), detail::least(std::fabs(t95), std::fabs(t96))), detail::least(detail::least(std::fabs(t97), std::fabs(t98)), detail::least(std::fabs(t99), std::fabs(t100)))), detail::least(detail::least(detail::least(std::fabs(t101), detail::most(detail::most(std::fabs(t104), detail::zero_as_min(N_y)), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t105), detail::zero_as_min(v_y)), detail::most(std::fabs(t106), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(std::fabs(t107), detail::zero_as_min(v_y)), detail::most(std::fabs(t108), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t109), detail::zero_as_min(v_y)), detail::most(std::fabs(t110), detail::zero_as_min(v_y)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t111), detail::zero_as_min(v_y)), detail::zero_as_min(t71)), detail::most(std::fabs(t114), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t115), detail::zero_as_min(v_y)), detail::most(std::fabs(t116), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(std::fabs(t117), detail::zero_as_min(v_y)), detail::most(std::fabs(t118), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t119), detail::zero_as_min(v_y)), detail::most(std::fabs(t120), detail::zero_as_min(v_y))))), detail::least(detail::least(detail::least(std::fabs(t121), std::fabs(t122)), detail::least(std::fabs(t123), std::fabs(t124))), detail::least(detail::least(std::fabs(t125), std::fabs(t126)), detail::least(std::fabs(t127), std::fabs(t128)))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t129), std::fabs(t130)), detail::least(detail::most(detail::most(std::fabs(t135), detail::zero_as_min(N_z)), detail::zero_as_min(v_z)), detail::most(detail::most(std::fabs(t136), detail::zero_as_min(v_z)), detail::zero_as_min(t71)))), detail::least(detail::least(detail::most(std::fabs(t137), detail::zero_as_min(v_z)), detail::most(std::fabs(t138), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t139), detail::zero_as_min(v_z)), detail::most(std::fabs(t140), detail::zero_as_min(v_z))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t141), detail::zero_as_min(v_z)), detail::most(std::fabs(t142), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t143), detail::zero_as_min(v_z)), detail::most(std::fabs(t144), detail::zero_as_min(v_z)))), detail::least(detail::least(detail::most(std::fabs(t145), detail::zero_as_min(v_z)), detail::most(std::fabs(t146), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t147), detail::zero_as_min(v_z)), detail::most(std::fabs(t148), detail::zero_as_min(v_z)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t151), detail::zero_as_min(v_z)), std::fabs(t152)), detail::least(std::fabs(t153), std::fabs(t154))), detail::least(detail::least(std::fabs(t155), std::fabs(t156)), detail::least(std::fabs(t157), std::fabs(t158)))), detail::least(detail::least(detail::least(std::fabs(t159), std::fabs(t160)), detail::least(detail::most(detail::most(std::fabs(t165), detail::zero_as_min(N_x)), detail::zero_as_min(t164)), detail::most(detail::most(std::fabs(t166), detail::zero_as_min(N_y)), detail::zero_as_min(t164)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t167), detail::zero_as_min(N_z)), detail::zero_as_min(t164)), detail::most(std::fabs(t169), detail::zero_as_min(t164))), detail::least(detail::most(detail::most(std::fabs(t174), detail::zero_as_min(t173)), detail::zero_as_min(t164)), detail::most(std::fabs(t176), detail::zero_as_min(t173))))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t178), detail::zero_as_min(q)), detail::most(std::fabs(t181), detail::zero_as_min(t179))), detail::least(detail::most(detail::most(std::fabs(t184), detail::zero_as_min(q)), detail::zero_as_min(t183)), detail::most(std::fabs(t186), detail::zero_as_min(t183)))), detail::least(detail::least(std::fabs(t187), detail::most(std::fabs(t189), detail::zero_as_min(R))), detail::least(detail::most(detail::most(std::fabs(t190), detail::zero_as_min(R)), detail::zero_as_min(N_x)), detail::most(std::fabs(t191), detail::zero_as_min(R))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t192), detail::zero_as_min(R)), detail::most(std::fabs(t193), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t194), detail::zero_as_min(R)), detail::zero_as_min(N_y)), std::fabs(t195))), detail::least(detail::least(detail::most(std::fabs(t196), detail::zero_as_min(R)), detail::most(std::fabs(t197), detail::zero_as_min(R))), detail::least(detail::most(std::fabs(t198), detail::zero_as_min(N_z)), detail::most(std::fabs(t199), detail::zero_as_min(N_z)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t200), std::fabs(t201)), detail::least(detail::most(std::fabs(t202), detail::zero_as_min(R)), detail::most(std::fabs(t203), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(std::fabs(t204), detail::zero_as_min(v_x)), detail::most(std::fabs(t205), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t206), detail::zero_as_min(v_x)), detail::most(std::fabs(t207), detail::zero_as_min(v_x))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t208), detail::zero_as_min(v_x)), detail::most(std::fabs(t209), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t210), detail::zero_as_min(v_y)), detail::most(std::fabs(t211), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(std::fabs(t212), detail::zero_as_min(v_y)), detail::most(std::fabs(t213), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t214), detail::zero_as_min(v_y)), detail::most(std::fabs(t215), detail::zero_as_min(v_z))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t216), detail::zero_as_min(v_z)), detail::most(std::fabs(t217), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t218), detail::zero_as_min(v_z)), detail::most(std::fabs(t219), detail::zero_as_min(v_z)))), detail::least(detail::least(detail::most(std::fabs(t220), detail::zero_as_min(v_z)), detail::most(detail::most(std::fabs(t221), detail::zero_as_min(R)), detail::zero_as_min(q))), detail::least(std::fabs(t222), detail::most(std::fabs(t223), detail::zero_as_min(R))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t224), detail::zero_as_min(N_x)), std::fabs(t225)), detail::least(std::fabs(t226), std::fabs(t227))), detail::least(detail::least(std::fabs(t228), detail::most(std::fabs(t229), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t230), detail::zero_as_min(N_y)), detail::most(std::fabs(t231), detail::zero_as_min(N_y)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t232), detail::zero_as_min(N_y)), std::fabs(t233)), detail::least(std::fabs(t234), std::fabs(t235))), detail::least(detail::least(std::fabs(t236), std::fabs(t237)), detail::least(std::fabs(t238), std::fabs(t239)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t240), detail::zero_as_min(N_z)), detail::most(std::fabs(t241), detail::zero_as_min(N_z))), detail::least(detail::most(std::fabs(t242), detail::zero_as_min(N_z)), detail::most(std::fabs(t243), detail::zero_as_min(N_z)))), detail::least(detail::least(std::fabs(t244), std::fabs(t245)), detail::least(std::fabs(t246), std::fabs(t247))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t248), std::fabs(t249)), detail::least(std::fabs(t250), detail::most(std::fabs(t251), detail::zero_as_min(R)))), detail::least(detail::least(detail::most(std::fabs(t252), detail::zero_as_min(N_x)), std::fabs(t253)), detail::least(std::fabs(t254), detail::most(std::fabs(t255), detail::zero_as_min(N_y))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t256), detail::zero_as_min(N_y)), std::fabs(t257)), detail::least(std::fabs(t258), std::fabs(t259))), detail::least(detail::least(detail::most(std::fabs(t260), detail::zero_as_min(N_z)), detail::most(std::fabs(t261), detail::zero_as_min(N_z))), detail::least(std::fabs(t262), std::fabs(t263))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t264), detail::most(std::fabs(t265), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t266), detail::zero_as_min(v_x)), detail::most(std::fabs(t267), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(std::fabs(t268), detail::zero_as_min(v_x)), detail::most(std::fabs(t269), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t270), detail::zero_as_min(v_x)), detail::most(std::fabs(t271), detail::zero_as_min(v_y))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t272), detail::zero_as_min(v_y)), detail::most(std::fabs(t273), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t274), detail::zero_as_min(v_y)), detail::most(std::fabs(t275), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(std::fabs(t276), detail::zero_as_min(v_y)), detail::most(std::fabs(t277), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t278), detail::zero_as_min(v_z)), detail::most(std::fabs(t279), detail::zero_as_min(v_z))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t280), detail::zero_as_min(v_z)), detail::most(std::fabs(t281), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t282), detail::zero_as_min(v_z)), std::fabs(t285))), detail::least(detail::least(detail::most(std::fabs(t286), detail::zero_as_min(N_x)), std::fabs(t287)), detail::least(std::fabs(t288), detail::most(std::fabs(t289), detail::zero_as_min(N_y))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t290), detail::zero_as_min(N_y)), detail::most(std::fabs(t291), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t292), detail::zero_as_min(N_y)), std::fabs(t293))), detail::least(detail::least(std::fabs(t294), std::fabs(t295)), detail::least(std::fabs(t296), std::fabs(t297))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t298), detail::zero_as_min(N_z)), detail::most(std::fabs(t299), detail::zero_as_min(N_z))), detail::least(detail::most(std::fabs(t300), detail::zero_as_min(N_z)), detail::most(std::fabs(t301), detail::zero_as_min(N_z)))), detail::least(detail::least(std::fabs(t302), std::fabs(t303)), detail::least(std::fabs(t304), std::fabs(t305)))), detail::least(detail::least(detail::least(std::fabs(t306), detail::most(detail::most(std::fabs(t330), detail::zero_as_min(N_x)), detail::zero_as_min(w_y))), detail::least(detail::most(detail::most(std::fabs(t331), detail::zero_as_min(N_z)), detail::zero_as_min(w_y)), detail::most(std::fabs(t332), detail::zero_as_min(w_y)))), detail::least(detail::least(std::fabs(t333), detail::most(std::fabs(t334), detail::zero_as_min(w_y))), detail::least(std::fabs(t335), detail::most(std::fabs(t336), detail::zero_as_min(w_y)))))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t337), detail::most(std::fabs(t338), detail::zero_as_min(w_y))), detail::least(std::fabs(t339), detail::most(std::fabs(t340), detail::zero_as_min(w_y)))), detail::least(detail::least(std::fabs(t341), detail::most(std::fabs(t342), detail::zero_as_min(w_y))), detail::least(std::fabs(t343), detail::most(std::fabs(t344), detail::zero_as_min(w_y))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t345), detail::zero_as_min(w_y)), detail::most(std::fabs(t346), detail::zero_as_min(w_y))), detail::least(detail::most(std::fabs(t347), detail::zero_as_min(w_y)), std::fabs(t348))), detail::least(detail::least(std::fabs(t349), detail::most(std::fabs(t350), detail::zero_as_min(w_y))), detail::least(std::fabs(t351), std::fabs(t352))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t353), detail::zero_as_min(w_y)), std::fabs(t354)), detail::least(std::fabs(t355), detail::most(std::fabs(t356), detail::zero_as_min(w_y)))), detail::least(detail::least(std::fabs(t357), std::fabs(t358)), detail::least(detail::most(std::fabs(t359), detail::zero_as_min(w_y)), std::fabs(t360)))), detail::least(detail::least(detail::least(std::fabs(t361), detail::most(std::fabs(t362), detail::zero_as_min(w_y))), detail::least(std::fabs(t363), std::fabs(t364))), detail::least(detail::least(detail::most(std::fabs(t365), detail::zero_as_min(w_y)), detail::most(std::fabs(t366), detail::zero_as_min(w_y))), detail::least(detail::most(std::fabs(t367), detail::zero_as_min(w_y)), detail::most(std::fabs(t368), detail::zero_as_min(w_y))))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t369), std::fabs(t370)), detail::least(std::fabs(t371), std::fabs(t372))), detail::least(detail::least(std::fabs(t373), std::fabs(t374)), detail::least(std::fabs(t375), std::fabs(t376)))), detail::least(detail::least(detail::least(std::fabs(t377), std::fabs(t378)), detail::least(std::fabs(t379), std::fabs(t380))), detail::least(detail::least(detail::most(detail::most(std::fabs(t382), detail::zero_as_min(N_y)), detail::zero_as_min(w_x)), detail::most(detail::most(std::fabs(t383), detail::zero_as_min(N_z)), detail::zero_as_min(w_x))), detail::least(detail::most(std::fabs(t384), detail::zero_as_min(w_x)), std::fabs(t385))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t386), detail::zero_as_min(w_x)), std::fabs(t387)), detail::least(detail::most(std::fabs(t388), detail::zero_as_min(w_x)), std::fabs(t389))), detail::least(detail::least(detail::most(std::fabs(t390), detail::zero_as_min(w_x)), std::fabs(t391)), detail::least(detail::most(std::fabs(t392), detail::zero_as_min(w_x)), std::fabs(t393)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t394), detail::zero_as_min(w_x)), std::fabs(t395)), detail::least(detail::most(std::fabs(t396), detail::zero_as_min(w_x)), detail::most(std::fabs(t397), detail::zero_as_min(w_x)))), detail::least(detail::least(detail::most(std::fabs(t398), detail::zero_as_min(w_x)), detail::most(std::fabs(t399), detail::zero_as_min(w_x))), detail::least(detail::most(std::fabs(t400), detail::zero_as_min(w_x)), detail::most(std::fabs(t401), detail::zero_as_min(w_x)))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t402), detail::zero_as_min(w_x)), std::fabs(t403)), detail::least(std::fabs(t404), detail::most(std::fabs(t405), detail::zero_as_min(w_x)))), detail::least(detail::least(std::fabs(t406), std::fabs(t407)), detail::least(detail::most(std::fabs(t408), detail::zero_as_min(w_x)), std::fabs(t409)))), detail::least(detail::least(detail::least(std::fabs(t410), detail::most(std::fabs(t411), detail::zero_as_min(w_x))), detail::least(std::fabs(t412), std::fabs(t413))), detail::least(detail::least(detail::most(std::fabs(t414), detail::zero_as_min(w_x)), std::fabs(t415)), detail::least(std::fabs(t416), detail::most(std::fabs(t417), detail::zero_as_min(w_x)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t418), std::fabs(t419)), detail::least(detail::most(std::fabs(t420), detail::zero_as_min(w_x)), detail::most(std::fabs(t421), detail::zero_as_min(w_x)))), detail::least(detail::least(detail::most(std::fabs(t422), detail::zero_as_min(w_x)), detail::most(std::fabs(t423), detail::zero_as_min(w_x))), detail::least(detail::most(std::fabs(t424), detail::zero_as_min(w_x)), detail::most(std::fabs(t425), detail::zero_as_min(w_x))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t426), detail::zero_as_min(w_y)), detail::most(std::fabs(t427), detail::zero_as_min(w_y))), detail::least(detail::most(std::fabs(t428), detail::zero_as_min(w_y)), detail::most(std::fabs(t429), detail::zero_as_min(w_y)))), detail::least(detail::least(detail::most(std::fabs(t430), detail::zero_as_min(w_y)), detail::most(std::fabs(t431), detail::zero_as_min(w_y))), detail::least(detail::most(std::fabs(t434), detail::zero_as_min(w_x)), std::fabs(t435)))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t436), std::fabs(t437)), detail::least(std::fabs(t438), std::fabs(t439))), detail::least(detail::least(std::fabs(t440), std::fabs(t441)), detail::least(std::fabs(t442), std::fabs(t443)))), detail::least(detail::least(detail::least(std::fabs(t444), std::fabs(t445)), detail::least(std::fabs(t446), detail::most(std::fabs(t452), detail::zero_as_min(t451)))), detail::least(detail::least(detail::most(std::fabs(t466), detail::zero_as_min(t464)), detail::most(detail::most(std::fabs(t467), detail::zero_as_min(N_x)), detail::zero_as_min(w_z))), detail::least(detail::most(detail::most(std::fabs(t468), detail::zero_as_min(N_y)), detail::zero_as_min(w_z)), detail::most(std::fabs(t469), detail::zero_as_min(w_z)))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t470), detail::most(std::fabs(t471), detail::zero_as_min(w_z))), detail::least(std::fabs(t472), detail::most(std::fabs(t473), detail::zero_as_min(w_z)))), detail::least(detail::least(std::fabs(t474), detail::most(std::fabs(t475), detail::zero_as_min(w_z))), detail::least(std::fabs(t476), detail::most(std::fabs(t477), detail::zero_as_min(w_z))))), detail::least(detail::least(detail::least(std::fabs(t478), detail::most(std::fabs(t479), detail::zero_as_min(w_z))), detail::least(std::fabs(t480), detail::most(std::fabs(t481), detail::zero_as_min(w_z)))), detail::least(detail::least(std::fabs(t482), std::fabs(t483)), detail::least(detail::most(std::fabs(t484), detail::zero_as_min(w_z)), std::fabs(t485)))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t486), detail::most(std::fabs(t487), detail::zero_as_min(w_z))), detail::least(std::fabs(t488), std::fabs(t489))), detail::least(detail::least(detail::most(std::fabs(t490), detail::zero_as_min(w_z)), std::fabs(t491)), detail::least(std::fabs(t492), detail::most(std::fabs(t493), detail::zero_as_min(w_z))))), detail::least(detail::least(detail::least(std::fabs(t494), std::fabs(t495)), detail::least(detail::most(std::fabs(t496), detail::zero_as_min(w_z)), std::fabs(t497))), detail::least(detail::least(std::fabs(t498), detail::most(std::fabs(t500), detail::zero_as_min(w_z))), detail::least(detail::most(std::fabs(t501), detail::zero_as_min(w_z)), detail::most(std::fabs(t502), detail::zero_as_min(w_z)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t503), detail::zero_as_min(w_z)), detail::most(std::fabs(t504), detail::zero_as_min(w_z))), detail::least(detail::most(std::fabs(t505), detail::zero_as_min(w_z)), detail::most(std::fabs(t507), detail::zero_as_min(w_z)))), detail::least(detail::least(detail::most(std::fabs(t508), detail::zero_as_min(w_z)), detail::most(std::fabs(t509), detail::zero_as_min(w_z))), detail::least(detail::most(std::fabs(t510), detail::zero_as_min(w_z)), detail::most(std::fabs(t511), detail::zero_as_min(w_z))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t512), detail::zero_as_min(w_z)), detail::most(std::fabs(t513), detail::zero_as_min(w_z))), detail::least(std::fabs(t514), std::fabs(t515))), detail::least(detail::least(std::fabs(t516), std::fabs(t517)), detail::least(std::fabs(t518), std::fabs(t519)))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t520), std::fabs(t521)), detail::least(std::fabs(t522), std::fabs(t523))), detail::least(detail::least(std::fabs(t524), std::fabs(t525)), detail::least(std::fabs(t526), std::fabs(t527)))), detail::least(detail::least(detail::least(std::fabs(t528), std::fabs(t529)), detail::least(std::fabs(t530), std::fabs(t531))), detail::least(detail::least(std::fabs(t532), std::fabs(t533)), detail::least(std::fabs(t534), std::fabs(t535))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t536), std::fabs(t537)), detail::least(std::fabs(t538), std::fabs(t539))), detail::least(detail::least(std::fabs(t540), std::fabs(t541)), detail::least(std::fabs(t542), std::fabs(t543)))), detail::least(detail::least(detail::least(std::fabs(t544), std::fabs(t545)), detail::least(std::fabs(t546), std::fabs(t547))), detail::least(detail::least(std::fabs(t552), std::fabs(t553)), detail::least(std::fabs(t554), std::fabs(t555))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t556), std::fabs(t557)), detail::least(std::fabs(t558), std::fabs(t559))), detail::least(detail::least(std::fabs(t560), std::fabs(t561)), detail::least(std::fabs(t562), std::fabs(t563)))), detail::least(detail::least(detail::least(std::fabs(t564), std::fabs(t565)), detail::least(std::fabs(t566), std::fabs(t567))), detail::least(detail::least(std::fabs(t568), std::fabs(t569)), detail::least(std::fabs(t570), std::fabs(t571))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t572), std::fabs(t573)), detail::least(std::fabs(t574), std::fabs(t575))), detail::least(detail::least(std::fabs(t576), std::fabs(t577)), detail::least(std::fabs(t578), std::fabs(t579)))), detail::least(detail::least(detail::least(std::fabs(t580), std::fabs(t581)), detail::least(std::fabs(t582), std::fabs(t583))), detail::least(detail::least(std::fabs(t584), std::fabs(t585)), detail::least(std::fabs(t586), std::fabs(t587)))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t588), std::fabs(t589)), detail::least(std::fabs(t590), std::fabs(t591))), detail::least(detail::least(std::fabs(t592), std::fabs(t593)), detail::least(detail::most(std::fabs(t597), detail::zero_as_min(t596)), detail::most(std::fabs(t601), detail::zero_as_min(t600))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t635), detail::zero_as_min(t628)), detail::most(std::fabs(t639), detail::zero_as_min(t630))), detail::least(detail::most(std::fabs(t654), detail::zero_as_min(t653)), detail::most(std::fabs(t724), detail::zero_as_min(mu)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t725), detail::zero_as_min(mu)), detail::zero_as_min(t173)), std::fabs(t726)), detail::least(detail::most(std::fabs(t727), detail::zero_as_min(t164)), std::fabs(t728))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t729), detail::most(std::fabs(t730), detail::zero_as_min(t71))), detail::least(std::fabs(t731), std::fabs(t743))), detail::least(detail::least(std::fabs(t746), std::fabs(t762)), detail::least(std::fabs(t763), detail::most(detail::most(std::fabs(t775), detail::zero_as_min(N_x)), detail::zero_as_min(t774))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t776), detail::zero_as_min(N_y)), detail::zero_as_min(t774)), detail::most(detail::most(std::fabs(t777), detail::zero_as_min(N_z)), detail::zero_as_min(t774))), detail::least(detail::most(std::fabs(t783), detail::zero_as_min(t782)), detail::most(std::fabs(t786), detail::zero_as_min(t785)))), detail::least(detail::least(detail::most(std::fabs(t787), detail::zero_as_min(N_x)), detail::most(std::fabs(t788), detail::zero_as_min(N_z))), detail::least(detail::most(std::fabs(t791), detail::zero_as_min(t790)), detail::most(std::fabs(t796), detail::zero_as_min(N_x))))))))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t797), detail::zero_as_min(N_y)), detail::most(std::fabs(t801), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t802), detail::zero_as_min(N_z)), detail::most(detail::most(std::fabs(t821), detail::zero_as_min(t773)), detail::zero_as_min(t820)))), detail::least(detail::least(std::fabs(t822), detail::most(detail::most(std::fabs(t825), detail::zero_as_min(t773)), detail::zero_as_min(t824))), detail::least(std::fabs(t826), detail::most(detail::most(std::fabs(t829), detail::zero_as_min(t773)), detail::zero_as_min(t828))))), detail::least(detail::least(std::fabs(t830), std::fabs(t991)), detail::least(std::fabs(t992), std::fabs(t993))))), std::numeric_limits<Real>::min());
-        const std::int64_t written = usable & finite & !doubtful;
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t6), detail::zero_as_min(N_z)), detail::most(detail::most(std::fabs(t15), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t16), detail::zero_as_min(v_x)), detail::zero_as_min(t10)), detail::most(detail::most(std::fabs(t18), detail::zero_as_min(N_y)), detail::zero_as_min(v_y))), detail::least(detail::most(detail::most(std::fabs(t19), detail::zero_as_min(v_y)), detail::zero_as_min(t10)), detail::most(detail::most(std::fabs(t25), detail::zero_as_min(N_z)), detail::zero_as_min(v_z))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t26), detail::zero_as_min(v_z)), detail::zero_as_min(t10)), detail::most(detail::most(std::fabs(t32), detail::zero_as_min(N_x)), detail::zero_as_min(t31))), detail::least(detail::most(detail::most(std::fabs(t33), detail::zero_as_min(N_y)), detail::zero_as_min(t31)), detail::most(detail::most(std::fabs(t34), detail::zero_as_min(N_z)), detail::zero_as_min(t31)))), detail::least(detail::least(detail::most(std::fabs(t36), detail::zero_as_min(t31)), detail::most(detail::most(std::fabs(t41), detail::zero_as_min(t40)), detail::zero_as_min(t31))), detail::least(detail::most(std::fabs(t43), detail::zero_as_min(t40)), detail::most(std::fabs(t45), detail::zero_as_min(q)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t48), detail::zero_as_min(t46)), detail::most(detail::most(std::fabs(t51), detail::zero_as_min(q)), detail::zero_as_min(t50))), detail::least(detail::most(std::fabs(t53), detail::zero_as_min(t50)), std::fabs(t54))), detail::least(detail::least(detail::most(std::fabs(t56), detail::zero_as_min(R)), detail::most(detail::most(std::fabs(t57), detail::zero_as_min(R)), detail::zero_as_min(q))), detail::least(std::fabs(t58), detail::most(detail::most(std::fabs(t60), detail::zero_as_min(N_x)), detail::zero_as_min(w_y))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t61), detail::zero_as_min(N_z)), detail::zero_as_min(w_y)), detail::most(detail::most(std::fabs(t62), detail::zero_as_min(N_y)), detail::zero_as_min(w_x))), detail::least(detail::most(detail::most(std::fabs(t63), detail::zero_as_min(N_z)), detail::zero_as_min(w_x)), detail::most(std::fabs(t68), detail::zero_as_min(t67)))), detail::least(detail::least(detail::most(std::fabs(t80), detail::zero_as_min(t78)), detail::most(detail::most(std::fabs(t81), detail::zero_as_min(N_x)), detail::zero_as_min(w_z))), detail::least(detail::most(detail::most(std::fabs(t82), detail::zero_as_min(N_y)), detail::zero_as_min(w_z)), detail::most(std::fabs(t89), detail::zero_as_min(t88))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t93), detail::zero_as_min(t92)), detail::most(std::fabs(t114), detail::zero_as_min(t110))), detail::least(detail::most(std::fabs(t118), detail::zero_as_min(t112)), detail::most(std::fabs(t125), detail::zero_as_min(t124)))), detail::least(detail::least(detail::most(std::fabs(t126), detail::zero_as_min(mu)), detail::most(detail::most(std::fabs(t127), detail::zero_as_min(mu)), detail::zero_as_min(t40))), detail::least(std::fabs(t128), detail::most(std::fabs(t129), detail::zero_as_min(t31))))), detail::least(detail::least(detail::least(std::fabs(t130), std::fabs(t131)), detail::least(detail::most(std::fabs(t132), detail::zero_as_min(t10)), std::fabs(t133))), detail::least(detail::least(std::fabs(t141), std::fabs(t144)), detail::least(detail::most(detail::most(std::fabs(t175), detail::zero_as_min(N_x)), detail::zero_as_min(t174)), detail::most(detail::most(std::fabs(t176), detail::zero_as_min(N_y)), detail::zero_as_min(t174)))))), detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t177), detail::zero_as_min(N_z)), detail::zero_as_min(t174)), detail::most(std::fabs(t185), detail::zero_as_min(t184))), detail::least(detail::most(std::fabs(t190), detail::zero_as_min(t189)), detail::most(std::fabs(t191), detail::zero_as_min(N_x)))), detail::least(detail::least(detail::most(std::fabs(t192), detail::zero_as_min(N_z)), detail::most(std::fabs(t197), detail::zero_as_min(t196))), detail::least(detail::most(std::fabs(t199), detail::zero_as_min(t182)), detail::most(std::fabs(t201), detail::zero_as_min(N_x))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t202), detail::zero_as_min(N_y)), detail::most(std::fabs(t204), detail::zero_as_min(t187))), detail::least(detail::most(std::fabs(t208), detail::zero_as_min(t194)), detail::most(std::fabs(t210), detail::zero_as_min(N_y)))), detail::least(detail::least(detail::most(std::fabs(t211), detail::zero_as_min(N_z)), std::fabs(t240)), detail::least(detail::most(detail::most(std::fabs(t243), detail::zero_as_min(t242)), detail::zero_as_min(t229)), std::fabs(t244))))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t245), detail::zero_as_min(t242)), detail::zero_as_min(t231)), std::fabs(t246)), detail::least(detail::most(detail::most(std::fabs(t247), detail::zero_as_min(t242)), detail::zero_as_min(t233)), std::fabs(t248))), detail::least(detail::least(std::fabs(t254), std::fabs(t255)), std::fabs(t256)))), std::numeric_limits<Real>::min());
+        const std::int64_t written = usable_late & finite & !doubtful;
         v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
         v_z_[i] = detail::blend(written, v_z_out, v_z_[i]);
         w_x_[i] = detail::blend(written, w_x_out, w_x_[i]);
         w_y_[i] = detail::blend(written, w_y_out, w_y_[i]);
         w_z_[i] = detail::blend(written, w_z_out, w_z_[i]);
-        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable_late & finite, status::underflow, status::out_of_range), outcome);
     }
 }
 
@@ -2918,2212 +992,19 @@ inline void collide_wall_rough_batch(const collide_wall_rough_batch_data<Real, 3
         detail::collide_wall_rough_batch_3d_ahead<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, nullptr);
 }
 
-/// collide_wall_rough(R, q, P, n, C, v, w, eps, beta, mu, impact::fast): the fast form of collide_wall_rough, with the
-/// same guards and statuses, each output in its cheapest candidate form within its fast
-/// bound (verification.md): 2246 operations with the guards' conditions, of them 24
-/// division(s) and 4 square root(s) (the accurate form: 2539, 24 and 5).
-/// v[0] is computed in the form "v_x + K_n*N_x + C_t*T_x, compensated let": at most 1.87 ulps in double on 4200 samples.
-/// v[1] is computed in the form "v_y + K_n*N_y + C_t*T_y, compensated let": at most 2.22 ulps in double on 4200 samples.
-/// v[2] is computed in the form "v_z + K_n*N_z + C_t*T_z, compensated let": at most 1.88 ulps in double on 4200 samples.
-/// w[0] is computed in the form "w_x - C_t*(w_x - (w_x*N_x + w_y*N_y + w_z*N_z)*N_x/n2)/q + C_t*(N_y*v_z - N_z*v_y)*n_norm/(q*R*n2), compensated let": at most 4.02 ulps in double on 4200 samples.
-/// w[1] is computed in the form "w_y - C_t*(w_y - (w_x*N_x + w_y*N_y + w_z*N_z)*N_y/n2)/q + C_t*(N_z*v_x - N_x*v_z)*n_norm/(q*R*n2), compensated let": at most 3.66 ulps in double on 4200 samples.
-/// w[2] is computed in the form "w_z - C_t*(w_z - (w_x*N_x + w_y*N_y + w_z*N_z)*N_z/n2)/q + C_t*(N_x*v_y - N_y*v_x)*n_norm/(q*R*n2), compensated let": at most 3.30 ulps in double on 4200 samples.
+/// collide_wall_rough(R, q, P, n, C, v, w, eps, beta, mu, impact::fast): the fast form of collide_wall_rough, which is
+/// its accurate form: no form within the fast bounds is cheaper than it (verification.md).
 template <class Real>
 inline collide_wall_rough_result<Real, 3> collide_wall_rough(Real R, Real q, const std::array<Real, 3>& P, const std::array<Real, 3>& n, const std::array<Real, 3>& C, const std::array<Real, 3>& v, const std::array<Real, 3>& w, Real eps, Real beta, Real mu, fast_t) noexcept
 {
-    const Real P_x = P[0];
-    const Real P_y = P[1];
-    const Real P_z = P[2];
-    const Real N_x = n[0];
-    const Real N_y = n[1];
-    const Real N_z = n[2];
-    const Real C_x = C[0];
-    const Real C_y = C[1];
-    const Real C_z = C[2];
-    const Real v_x = v[0];
-    const Real v_y = v[1];
-    const Real v_z = v[2];
-    const Real w_x = w[0];
-    const Real w_y = w[1];
-    const Real w_z = w[2];
-    const Real b = beta;
-    collide_wall_rough_result<Real, 3> out{v, w, status::ok};
-    if (!(R > Real(0)) || !detail::finite(R)) {
-        out.status = status::invalid_radius;
-        return out;
-    }
-    if (!(q > Real(0)) || !(q <= Real(0.6666666666666666))) {
-        out.status = status::invalid_inertia;
-        return out;
-    }
-    if (!(eps >= Real(0)) || !(eps <= Real(1))) {
-        out.status = status::invalid_restitution;
-        return out;
-    }
-    if (!(b >= Real(-1)) || !(b <= Real(1))) {
-        out.status = status::invalid_tangential_restitution;
-        return out;
-    }
-    if (!(mu >= Real(0))) {
-        out.status = status::invalid_friction;
-        return out;
-    }
-    if (!detail::finite(P_x) || !detail::finite(P_y) || !detail::finite(P_z) || !detail::finite(N_x) || !detail::finite(N_y) || !detail::finite(N_z) || !detail::finite(C_x) || !detail::finite(C_y) || !detail::finite(C_z) || !detail::finite(v_x) || !detail::finite(v_y) || !detail::finite(v_z) || !detail::finite(w_x) || !detail::finite(w_y) || !detail::finite(w_z)) {
-        out.status = status::non_finite;
-        return out;
-    }
-    const Real t0 = N_x * N_x;
-    const Real t1 = t0 * N_x;
-    const Real t2 = t1 * N_x;
-    const Real t3 = Real(2) * N_x;
-    const Real t4 = std::fma(N_x, N_x, -t0);
-    const Real t5 = Real(2) * t0;
-    const Real t6 = t0 * t0;
-    const Real t7 = std::fma(t4, N_x, std::fma(t0, N_x, -t1));
-    const Real t8 = Real(2) * t1;
-    const Real t9 = std::fma(t7, N_x, std::fma(t1, N_x, -t2));
-    const Real t10 = std::fma(Real(2), N_x, -t3);
-    const Real t11 = std::fma(Real(2), t4, std::fma(Real(2), t0, -t5));
-    const Real t12 = std::fma(Real(2), t7, std::fma(Real(2), t1, -t8));
-    const Real t13 = N_y * N_y;
-    const Real t14 = t0 + t13;
-    const Real t15 = t14 - t0;
-    const Real t16 = t0 * t13;
-    const Real t17 = t3 * t13;
-    const Real t18 = t3 * N_y;
-    const Real t19 = t5 * t13;
-    const Real t20 = t5 * N_y;
-    const Real t21 = t8 * N_y;
-    const Real t22 = t13 * N_y;
-    const Real t23 = t3 * t22;
-    const Real t24 = t22 * N_y;
-    const Real t25 = Real(2) * N_y;
-    const Real t26 = std::fma(N_y, N_y, -t13);
-    const Real t27 = Real(2) * t13;
-    const Real t28 = t13 * t13;
-    const Real t29 = std::fma(t4, t13, std::fma(t0, t26, std::fma(t0, t13, -t16)));
-    const Real t30 = std::fma(t26, N_y, std::fma(t13, N_y, -t22));
-    const Real t31 = Real(2) * t22;
-    const Real t32 = std::fma(t30, N_y, std::fma(t22, N_y, -t24));
-    const Real t33 = t0 - (t14 - t15) + (t13 - t15) + (t4 + t26);
-    const Real t34 = t14 + t33;
-    const Real t35 = N_z * N_z;
-    const Real t36 = t0 * t35;
-    const Real t37 = t5 * t35;
-    const Real t38 = t8 * N_z;
-    const Real t39 = t13 * t35;
-    const Real t40 = t14 + t35;
-    const Real t41 = t17 * N_z;
-    const Real t42 = t18 * t35;
-    const Real t43 = t20 * N_z;
-    const Real t44 = t27 * t35;
-    const Real t45 = t31 * N_z;
-    const Real t46 = t34 + t35;
-    const Real t47 = t46 - t34;
-    const Real t48 = t35 * N_z;
-    const Real t49 = t3 * t48;
-    const Real t50 = t25 * t48;
-    const Real t51 = t48 * N_z;
-    const Real t52 = std::fma(N_z, N_z, -t35);
-    const Real t53 = t35 * t35;
-    const Real t54 = std::fma(t4, t35, std::fma(t0, t52, std::fma(t0, t35, -t36)));
-    const Real t55 = std::fma(t26, t35, std::fma(t13, t52, std::fma(t13, t35, -t39)));
-    const Real t56 = std::fma(t52, N_z, std::fma(t35, N_z, -t48));
-    const Real t57 = std::fma(t56, N_z, std::fma(t48, N_z, -t51));
-    const Real t58 = t34 - (t46 - t47) + (t35 - t47) + (t33 - (t34 - t14) + t52);
-    const Real t59 = t46 + t58;
-    const Real t60 = std::sqrt(t40);
-    const Real t61 = t58 - (t59 - t46);
-    const Real t62 = std::sqrt(t59);
-    const Real t63 = std::fma(-t62, t62, t59) + t61;
-    const Real t64 = t62 + t62;
-    const Real t65 = N_x * v_x;
-    const Real t66 = N_y * v_x;
-    const Real t67 = t21 * v_x;
-    const Real t68 = t23 * v_x;
-    const Real t69 = N_z * v_x;
-    const Real t70 = t38 * v_x;
-    const Real t71 = t41 * v_x;
-    const Real t72 = t42 * v_x;
-    const Real t73 = t49 * v_x;
-    const Real t74 = v_x * t59;
-    const Real t75 = v_x * v_x;
-    const Real t76 = t16 * t75;
-    const Real t77 = t24 * t75;
-    const Real t78 = t28 * t75;
-    const Real t79 = t36 * t75;
-    const Real t80 = t44 * t75;
-    const Real t81 = t51 * t75;
-    const Real t82 = t53 * t75;
-    const Real t83 = std::fma(v_x, t61, std::fma(v_x, t59, -t74));
-    const Real t84 = std::fma(v_x, v_x, -t75);
-    const Real t85 = N_y * v_y;
-    const Real t86 = N_x * v_y;
-    const Real t87 = N_z * v_y;
-    const Real t88 = t43 * v_y;
-    const Real t89 = t45 * v_y;
-    const Real t90 = t50 * v_y;
-    const Real t91 = v_y * t59;
-    const Real t92 = t65 + t85;
-    const Real t93 = t92 - t65;
-    const Real t94 = t86 - t66;
-    const Real t95 = t67 * v_y;
-    const Real t96 = t68 * v_y;
-    const Real t97 = t72 * v_y;
-    const Real t98 = v_y * v_y;
-    const Real t99 = t2 * t98;
-    const Real t100 = t6 * t98;
-    const Real t101 = t16 * t98;
-    const Real t102 = t37 * t98;
-    const Real t103 = t39 * t98;
-    const Real t104 = t51 * t98;
-    const Real t105 = t53 * t98;
-    const Real t106 = std::fma(v_y, t61, std::fma(v_y, t59, -t91));
-    const Real t107 = std::fma(v_y, v_y, -t98);
-    const Real t108 = t65 - (t92 - t93) + (t85 - t93) + (std::fma(N_x, v_x, -t65) + std::fma(N_y, v_y, -t85));
-    const Real t109 = t92 + t108;
-    const Real t110 = N_z * v_z;
-    const Real t111 = N_x * v_z;
-    const Real t112 = N_y * v_z;
-    const Real t113 = v_z * t59;
-    const Real t114 = t111 - t69;
-    const Real t115 = t70 * v_z;
-    const Real t116 = t71 * v_z;
-    const Real t117 = t73 * v_z;
-    const Real t118 = t112 - t87;
-    const Real t119 = t88 * v_z;
-    const Real t120 = t89 * v_z;
-    const Real t121 = t90 * v_z;
-    if (!(t40 > Real(0))) {
-        out.status = status::invalid_normal;
-        return out;
-    }
-    if (!(N_x * (C_x - P_x) + N_y * (C_y - P_y) + N_z * (C_z - P_z) > Real(0))) {
-        out.status = status::behind_the_wall;
-        return out;
-    }
-    if (!(t92 + t110 < Real(0))) {
-        out.status = status::separating;
-        return out;
-    }
-    const Real t122 = t109 + t110;
-    const Real t123 = t122 - t109;
-    const Real t124 = v_z * v_z;
-    const Real t125 = t2 * t124;
-    const Real t126 = t6 * t124;
-    const Real t127 = t19 * t124;
-    const Real t128 = t24 * t124;
-    const Real t129 = t28 * t124;
-    const Real t130 = t36 * t124;
-    const Real t131 = t39 * t124;
-    const Real t132 = std::fma(v_z, t61, std::fma(v_z, t59, -t113));
-    const Real t133 = std::fma(v_z, v_z, -t124);
-    const Real t134 = t109 - (t122 - t123) + (t110 - t123) + (t108 - (t109 - t92) + std::fma(N_z, v_z, -t110));
-    const Real t135 = t122 + t134;
-    const Real t136 = N_x * t135;
-    const Real t137 = N_y * t135;
-    const Real t138 = N_z * t135;
-    const Real t139 = t134 - (t135 - t122);
-    const Real t140 = t135 * t135;
-    const Real t141 = std::fma(N_x, t139, std::fma(N_x, t135, -t136));
-    const Real t142 = std::fma(N_y, t139, std::fma(N_y, t135, -t137));
-    const Real t143 = std::fma(N_z, t139, std::fma(N_z, t135, -t138));
-    const Real t144 = Real(1) + eps;
-    const Real t145 = t144 * t135;
-    const Real t146 = t144 - Real(1);
-    const Real t147 = t144 * t144;
-    const Real t148 = Real(1) - (t144 - t146) + (eps - t146);
-    const Real t149 = q * q;
-    const Real t150 = Real(1) + q;
-    const Real t151 = t150 - Real(1);
-    const Real t152 = t150 * t150;
-    const Real t153 = Real(1) - (t150 - t151) + (q - t151);
-    const Real t154 = Real(1) + b;
-    const Real t155 = q * t154;
-    const Real t156 = t154 - Real(1);
-    const Real t157 = t154 * t154;
-    const Real t158 = t149 * t157;
-    const Real t159 = Real(1) - (t154 - t156) + (b - t156);
-    const Real t160 = R * t62;
-    const Real t161 = R * q;
-    const Real t162 = t161 * t60;
-    const Real t163 = R * R;
-    const Real t164 = t163 * t0;
-    const Real t165 = t163 * t2;
-    const Real t166 = t163 * t6;
-    const Real t167 = t164 * t13;
-    const Real t168 = t163 * t13;
-    const Real t169 = t163 * t24;
-    const Real t170 = t163 * t28;
-    const Real t171 = t164 * t35;
-    const Real t172 = t168 * t35;
-    const Real t173 = t163 * t51;
-    const Real t174 = t163 * t53;
-    const Real t175 = Real(2) * R;
-    const Real t176 = t175 * N_x;
-    const Real t177 = t175 * t0;
-    const Real t178 = t175 * t1;
-    const Real t179 = t177 * N_y;
-    const Real t180 = t175 * N_y;
-    const Real t181 = t176 * t13;
-    const Real t182 = t175 * t13;
-    const Real t183 = t175 * t22;
-    const Real t184 = t177 * N_z;
-    const Real t185 = t182 * N_z;
-    const Real t186 = t176 * t35;
-    const Real t187 = t180 * t35;
-    const Real t188 = t175 * t48;
-    const Real t189 = t179 * v_x;
-    const Real t190 = t184 * v_x;
-    const Real t191 = t185 * v_x;
-    const Real t192 = t183 * v_x;
-    const Real t193 = t187 * v_x;
-    const Real t194 = t188 * v_x;
-    const Real t195 = t184 * v_y;
-    const Real t196 = t178 * v_y;
-    const Real t197 = t181 * v_y;
-    const Real t198 = t186 * v_y;
-    const Real t199 = t185 * v_y;
-    const Real t200 = t188 * v_y;
-    const Real t201 = t179 * v_z;
-    const Real t202 = t178 * v_z;
-    const Real t203 = t181 * v_z;
-    const Real t204 = t186 * v_z;
-    const Real t205 = t183 * v_z;
-    const Real t206 = t187 * v_z;
-    const Real t207 = std::fma(R, t62, -t160);
-    const Real t208 = std::fma(R, R, -t163);
-    const Real t209 = Real(2) * t163;
-    const Real t210 = t209 * N_x;
-    const Real t211 = t209 * t0;
-    const Real t212 = t209 * t1;
-    const Real t213 = t211 * N_y;
-    const Real t214 = t212 * N_y;
-    const Real t215 = t210 * N_y;
-    const Real t216 = t209 * N_y;
-    const Real t217 = t211 * t13;
-    const Real t218 = t210 * t13;
-    const Real t219 = t209 * t13;
-    const Real t220 = t210 * t22;
-    const Real t221 = t209 * t22;
-    const Real t222 = t213 * N_z;
-    const Real t223 = t212 * N_z;
-    const Real t224 = t218 * N_z;
-    const Real t225 = t221 * N_z;
-    const Real t226 = t211 * t35;
-    const Real t227 = t215 * t35;
-    const Real t228 = t219 * t35;
-    const Real t229 = t210 * t48;
-    const Real t230 = t216 * t48;
-    const Real t231 = std::fma(t208, t0, std::fma(t163, t4, std::fma(t163, t0, -t164)));
-    const Real t232 = std::fma(t208, t2, std::fma(t163, t9, std::fma(t163, t2, -t165)));
-    const Real t233 = std::fma(t231, t13, std::fma(t164, t26, std::fma(t164, t13, -t167)));
-    const Real t234 = std::fma(t208, t24, std::fma(t163, t32, std::fma(t163, t24, -t169)));
-    const Real t235 = std::fma(t231, t35, std::fma(t164, t52, std::fma(t164, t35, -t171)));
-    const Real t236 = std::fma(std::fma(t208, t13, std::fma(t163, t26, std::fma(t163, t13, -t168))), t35, std::fma(t168, t52, std::fma(t168, t35, -t172)));
-    const Real t237 = std::fma(t208, t51, std::fma(t163, t57, std::fma(t163, t51, -t173)));
-    const Real t238 = std::fma(Real(2), R, -t175);
-    const Real t239 = std::fma(t238, N_x, std::fma(t175, N_x, -t176));
-    const Real t240 = std::fma(t238, t0, std::fma(t175, t4, std::fma(t175, t0, -t177)));
-    const Real t241 = std::fma(t238, t1, std::fma(t175, t7, std::fma(t175, t1, -t178)));
-    const Real t242 = std::fma(t240, N_y, std::fma(t177, N_y, -t179));
-    const Real t243 = std::fma(t239, t13, std::fma(t176, t26, std::fma(t176, t13, -t181)));
-    const Real t244 = std::fma(t238, t22, std::fma(t175, t30, std::fma(t175, t22, -t183)));
-    const Real t245 = std::fma(t240, N_z, std::fma(t177, N_z, -t184));
-    const Real t246 = std::fma(std::fma(t238, t13, std::fma(t175, t26, std::fma(t175, t13, -t182))), N_z, std::fma(t182, N_z, -t185));
-    const Real t247 = std::fma(t239, t35, std::fma(t176, t52, std::fma(t176, t35, -t186)));
-    const Real t248 = std::fma(std::fma(t238, N_y, std::fma(t175, N_y, -t180)), t35, std::fma(t180, t52, std::fma(t180, t35, -t187)));
-    const Real t249 = std::fma(t238, t48, std::fma(t175, t56, std::fma(t175, t48, -t188)));
-    const Real t250 = std::fma(Real(2), t208, std::fma(Real(2), t163, -t209));
-    const Real t251 = std::fma(t250, N_x, std::fma(t209, N_x, -t210));
-    const Real t252 = std::fma(t250, t0, std::fma(t209, t4, std::fma(t209, t0, -t211)));
-    const Real t253 = std::fma(t250, t1, std::fma(t209, t7, std::fma(t209, t1, -t212)));
-    const Real t254 = N_x * w_y;
-    const Real t255 = N_y * w_y;
-    const Real t256 = N_z * w_y;
-    const Real t257 = t190 * w_y;
-    const Real t258 = t257 * t60;
-    const Real t259 = t257 * t62;
-    const Real t260 = t191 * w_y;
-    const Real t261 = t260 * t60;
-    const Real t262 = t260 * t62;
-    const Real t263 = t194 * w_y;
-    const Real t264 = t263 * t60;
-    const Real t265 = t263 * t62;
-    const Real t266 = t202 * w_y;
-    const Real t267 = t266 * t60;
-    const Real t268 = t266 * t62;
-    const Real t269 = t203 * w_y;
-    const Real t270 = t269 * t60;
-    const Real t271 = t269 * t62;
-    const Real t272 = t204 * w_y;
-    const Real t273 = t272 * t60;
-    const Real t274 = t272 * t62;
-    const Real t275 = t222 * w_y;
-    const Real t276 = t225 * w_y;
-    const Real t277 = t230 * w_y;
-    const Real t278 = w_y * w_y;
-    const Real t279 = t165 * t278;
-    const Real t280 = t166 * t278;
-    const Real t281 = t167 * t278;
-    const Real t282 = t172 * t278;
-    const Real t283 = t173 * t278;
-    const Real t284 = t174 * t278;
-    const Real t285 = t226 * t278;
-    const Real t286 = std::fma(w_y, w_y, -t278);
-    const Real t287 = N_y * w_x;
-    const Real t288 = N_x * w_x;
-    const Real t289 = N_z * w_x;
-    const Real t290 = t195 * w_x;
-    const Real t291 = t290 * t60;
-    const Real t292 = t290 * t62;
-    const Real t293 = t199 * w_x;
-    const Real t294 = t293 * t60;
-    const Real t295 = t293 * t62;
-    const Real t296 = t200 * w_x;
-    const Real t297 = t296 * t60;
-    const Real t298 = t296 * t62;
-    const Real t299 = t201 * w_x;
-    const Real t300 = t299 * t60;
-    const Real t301 = t299 * t62;
-    const Real t302 = t205 * w_x;
-    const Real t303 = t302 * t60;
-    const Real t304 = t302 * t62;
-    const Real t305 = t206 * w_x;
-    const Real t306 = t305 * t60;
-    const Real t307 = t305 * t62;
-    const Real t308 = t214 * w_x;
-    const Real t309 = t220 * w_x;
-    const Real t310 = t223 * w_x;
-    const Real t311 = t224 * w_x;
-    const Real t312 = t227 * w_x;
-    const Real t313 = t229 * w_x;
-    const Real t314 = t308 * w_y;
-    const Real t315 = t309 * w_y;
-    const Real t316 = t312 * w_y;
-    const Real t317 = t254 - t287;
-    const Real t318 = t317 - t254;
-    const Real t319 = w_x * w_x;
-    const Real t320 = t167 * t319;
-    const Real t321 = t169 * t319;
-    const Real t322 = t170 * t319;
-    const Real t323 = t171 * t319;
-    const Real t324 = t173 * t319;
-    const Real t325 = t174 * t319;
-    const Real t326 = t228 * t319;
-    const Real t327 = t320 + t281;
-    const Real t328 = std::fma(w_x, w_x, -t319);
-    const Real t329 = t327 - t320;
-    const Real t330 = t254 - (t317 - t318) - (t287 + t318) + (std::fma(N_x, w_y, -t254) - std::fma(N_y, w_x, -t287));
-    const Real t331 = t317 + t330;
-    const Real t332 = t160 * t331;
-    const Real t333 = t332 - t138;
-    const Real t334 = t320 - (t327 - t329) + (t281 - t329) + (std::fma(t233, t319, std::fma(t167, t328, std::fma(t167, t319, -t320))) + std::fma(t233, t278, std::fma(t167, t286, std::fma(t167, t278, -t281))));
-    const Real t335 = t327 + t334;
-    const Real t336 = std::fma(t160, t330 - (t331 - t317), std::fma(t160, t331, -t332));
-    const Real t337 = t333 - t332;
-    const Real t338 = t332 - (t333 - t337) - (t138 + t337);
-    const Real t339 = t338 + (std::fma(t207, t331, t336) - t143);
-    const Real t340 = t333 + t339;
-    const Real t341 = t340 + t113;
-    const Real t342 = t341 - t340;
-    const Real t343 = t340 - (t341 - t342) + (t113 - t342) + (t339 - (t340 - t333) + t132);
-    const Real t344 = t341 + t343;
-    const Real t345 = t343 - (t344 - t341);
-    const Real t346 = t344 * t344;
-    const Real t347 = N_x * w_z;
-    const Real t348 = N_y * w_z;
-    const Real t349 = N_z * w_z;
-    const Real t350 = t189 * w_z;
-    const Real t351 = t350 * t60;
-    const Real t352 = t350 * t62;
-    const Real t353 = t192 * w_z;
-    const Real t354 = t353 * t60;
-    const Real t355 = t353 * t62;
-    const Real t356 = t193 * w_z;
-    const Real t357 = t356 * t60;
-    const Real t358 = t356 * t62;
-    const Real t359 = t196 * w_z;
-    const Real t360 = t359 * t60;
-    const Real t361 = t359 * t62;
-    const Real t362 = t197 * w_z;
-    const Real t363 = t362 * t60;
-    const Real t364 = t362 * t62;
-    const Real t365 = t198 * w_z;
-    const Real t366 = t365 * t60;
-    const Real t367 = t365 * t62;
-    const Real t368 = t348 - t256;
-    const Real t369 = t275 * w_z;
-    const Real t370 = t276 * w_z;
-    const Real t371 = t277 * w_z;
-    const Real t372 = t347 - t289;
-    const Real t373 = t310 * w_z;
-    const Real t374 = t311 * w_z;
-    const Real t375 = t313 * w_z;
-    const Real t376 = t288 + t255 + t349;
-    const Real t377 = N_x * t376;
-    const Real t378 = N_y * t376;
-    const Real t379 = N_z * t376;
-    const Real t380 = w_z * w_z;
-    const Real t381 = t165 * t380;
-    const Real t382 = t166 * t380;
-    const Real t383 = t169 * t380;
-    const Real t384 = t170 * t380;
-    const Real t385 = t171 * t380;
-    const Real t386 = t172 * t380;
-    const Real t387 = t217 * t380;
-    const Real t388 = t335 + t387;
-    const Real t389 = t388 - t335;
-    const Real t390 = t372 - t347;
-    const Real t391 = t368 - t348;
-    const Real t392 = std::fma(w_z, w_z, -t380);
-    const Real t393 = t347 - (t372 - t390) - (t289 + t390) + (std::fma(N_x, w_z, -t347) - std::fma(N_z, w_x, -t289));
-    const Real t394 = t372 + t393;
-    const Real t395 = t160 * t394;
-    const Real t396 = t395 + t137;
-    const Real t397 = t348 - (t368 - t391) - (t256 + t391) + (std::fma(N_y, w_z, -t348) - std::fma(N_z, w_y, -t256));
-    const Real t398 = t368 + t397;
-    const Real t399 = t160 * t398;
-    const Real t400 = t399 - t136;
-    const Real t401 = std::sqrt(t327 + t387 - t369 + t323 + t285 + t385 - t314 - t373 + t280 + t382 - t374 - t315 - t316 - t375 + t326 + t282 + t386 - t370 + t322 + t384 - t371 + t325 + t284 + t351 - t300 - t258 + t291 - t360 + t267 - t363 + t270 - t366 + t273 - t261 + t294 + t354 - t303 + t357 - t306 - t264 + t297 + t76 + t101 + t127 - t119 + t79 + t102 + t130 - t95 - t115 + t100 + t126 - t116 - t96 - t97 - t117 + t80 + t103 + t131 - t120 + t78 + t129 - t121 + t82 + t105);
-    const Real t402 = t335 - (t388 - t389) + (t387 - t389) + (t334 - (t335 - t327) + std::fma(std::fma(t252, t13, std::fma(t211, t26, std::fma(t211, t13, -t217))), t380, std::fma(t217, t392, std::fma(t217, t380, -t387))));
-    const Real t403 = t388 + t402;
-    const Real t404 = t403 - t369;
-    const Real t405 = std::fma(t160, t393 - (t394 - t372), std::fma(t160, t394, -t395));
-    const Real t406 = t396 - t395;
-    const Real t407 = std::fma(t160, t397 - (t398 - t368), std::fma(t160, t398, -t399));
-    const Real t408 = t400 - t399;
-    const Real t409 = t404 - t403;
-    const Real t410 = t395 - (t396 - t406) + (t137 - t406);
-    const Real t411 = t410 + (std::fma(t207, t394, t405) + t142);
-    const Real t412 = t396 + t411;
-    const Real t413 = t412 - t91;
-    const Real t414 = t399 - (t400 - t408) - (t136 + t408);
-    const Real t415 = t414 + (std::fma(t207, t398, t407) - t141);
-    const Real t416 = t400 + t415;
-    const Real t417 = t416 + t74;
-    const Real t418 = t403 - (t404 - t409) - (t369 + t409) + (t402 - (t403 - t388) - std::fma(std::fma(std::fma(std::fma(t252, N_y, std::fma(t211, N_y, -t213)), N_z, std::fma(t213, N_z, -t222)), w_y, std::fma(t222, w_y, -t275)), w_z, std::fma(t275, w_z, -t369)));
-    const Real t419 = t404 + t418;
-    const Real t420 = t419 + t323;
-    const Real t421 = t413 - t412;
-    const Real t422 = t417 - t416;
-    const Real t423 = t420 - t419;
-    const Real t424 = t412 - (t413 - t421) - (t91 + t421) + (t411 - (t412 - t396) - t106);
-    const Real t425 = t413 + t424;
-    const Real t426 = t416 - (t417 - t422) + (t74 - t422) + (t415 - (t416 - t400) + t83);
-    const Real t427 = t417 + t426;
-    const Real t428 = t419 - (t420 - t423) + (t323 - t423) + (t418 - (t419 - t404) + std::fma(t235, t319, std::fma(t171, t328, std::fma(t171, t319, -t323))));
-    const Real t429 = t420 + t428;
-    const Real t430 = t429 + t285;
-    const Real t431 = t424 - (t425 - t413);
-    const Real t432 = t425 * t425;
-    const Real t433 = t346 + t432;
-    const Real t434 = t433 - t346;
-    const Real t435 = t426 - (t427 - t417);
-    const Real t436 = t427 * t427;
-    const Real t437 = t430 - t429;
-    const Real t438 = t429 - (t430 - t437) + (t285 - t437) + (t428 - (t429 - t420) + std::fma(std::fma(t252, t35, std::fma(t211, t52, std::fma(t211, t35, -t226))), t278, std::fma(t226, t286, std::fma(t226, t278, -t285))));
-    const Real t439 = t430 + t438;
-    const Real t440 = t439 + t385;
-    const Real t441 = t346 - (t433 - t434) + (t432 - t434) + (std::fma(t345, t344, std::fma(t344, t345, std::fma(t344, t344, -t346))) + std::fma(t431, t425, std::fma(t425, t431, std::fma(t425, t425, -t432))));
-    const Real t442 = t433 + t441;
-    const Real t443 = t442 + t436;
-    const Real t444 = t440 - t439;
-    const Real t445 = t443 - t442;
-    const Real t446 = t439 - (t440 - t444) + (t385 - t444) + (t438 - (t439 - t430) + std::fma(t235, t380, std::fma(t171, t392, std::fma(t171, t380, -t385))));
-    const Real t447 = t440 + t446;
-    const Real t448 = t447 - t314;
-    const Real t449 = t442 - (t443 - t445) + (t436 - t445) + (t441 - (t442 - t433) + std::fma(t435, t427, std::fma(t427, t435, std::fma(t427, t427, -t436))));
-    const Real t450 = t443 + t449;
-    const Real t451 = t158 * t450;
-    const Real t452 = t448 - t447;
-    const Real t453 = t447 - (t448 - t452) - (t314 + t452) + (t446 - (t447 - t440) - std::fma(std::fma(std::fma(t253, N_y, std::fma(t212, N_y, -t214)), w_x, std::fma(t214, w_x, -t308)), w_y, std::fma(t308, w_y, -t314)));
-    const Real t454 = t448 + t453;
-    const Real t455 = t454 - t373;
-    const Real t456 = t455 - t454;
-    const Real t457 = t454 - (t455 - t456) - (t373 + t456) + (t453 - (t454 - t448) - std::fma(std::fma(std::fma(t253, N_z, std::fma(t212, N_z, -t223)), w_x, std::fma(t223, w_x, -t310)), w_z, std::fma(t310, w_z, -t373)));
-    const Real t458 = t455 + t457;
-    const Real t459 = t458 + t279;
-    const Real t460 = t459 - t458;
-    const Real t461 = t458 - (t459 - t460) + (t279 - t460) + (t457 - (t458 - t455) + std::fma(t232, t278, std::fma(t165, t286, std::fma(t165, t278, -t279))));
-    const Real t462 = t459 + t461;
-    const Real t463 = t462 + t381;
-    const Real t464 = t463 - t462;
-    const Real t465 = t462 - (t463 - t464) + (t381 - t464) + (t461 - (t462 - t459) + std::fma(t232, t380, std::fma(t165, t392, std::fma(t165, t380, -t381))));
-    const Real t466 = t463 + t465;
-    const Real t467 = t466 - t374;
-    const Real t468 = t467 - t466;
-    const Real t469 = t466 - (t467 - t468) - (t374 + t468) + (t465 - (t466 - t463) - std::fma(std::fma(std::fma(std::fma(t251, t13, std::fma(t210, t26, std::fma(t210, t13, -t218))), N_z, std::fma(t218, N_z, -t224)), w_x, std::fma(t224, w_x, -t311)), w_z, std::fma(t311, w_z, -t374)));
-    const Real t470 = t467 + t469;
-    const Real t471 = t470 - t315;
-    const Real t472 = t471 - t470;
-    const Real t473 = t470 - (t471 - t472) - (t315 + t472) + (t469 - (t470 - t467) - std::fma(std::fma(std::fma(t251, t22, std::fma(t210, t30, std::fma(t210, t22, -t220))), w_x, std::fma(t220, w_x, -t309)), w_y, std::fma(t309, w_y, -t315)));
-    const Real t474 = t471 + t473;
-    const Real t475 = t474 - t316;
-    const Real t476 = t475 - t474;
-    const Real t477 = t474 - (t475 - t476) - (t316 + t476) + (t473 - (t474 - t471) - std::fma(std::fma(std::fma(std::fma(t251, N_y, std::fma(t210, N_y, -t215)), t35, std::fma(t215, t52, std::fma(t215, t35, -t227))), w_x, std::fma(t227, w_x, -t312)), w_y, std::fma(t312, w_y, -t316)));
-    const Real t478 = t475 + t477;
-    const Real t479 = t478 - t375;
-    const Real t480 = t479 - t478;
-    const Real t481 = t478 - (t479 - t480) - (t375 + t480) + (t477 - (t478 - t475) - std::fma(std::fma(std::fma(t251, t48, std::fma(t210, t56, std::fma(t210, t48, -t229))), w_x, std::fma(t229, w_x, -t313)), w_z, std::fma(t313, w_z, -t375)));
-    const Real t482 = t479 + t481;
-    const Real t483 = t482 + t326;
-    const Real t484 = t483 - t482;
-    const Real t485 = t482 - (t483 - t484) + (t326 - t484) + (t481 - (t482 - t479) + std::fma(std::fma(std::fma(t250, t13, std::fma(t209, t26, std::fma(t209, t13, -t219))), t35, std::fma(t219, t52, std::fma(t219, t35, -t228))), t319, std::fma(t228, t328, std::fma(t228, t319, -t326))));
-    const Real t486 = t483 + t485;
-    const Real t487 = t486 + t282;
-    const Real t488 = t487 - t486;
-    const Real t489 = t486 - (t487 - t488) + (t282 - t488) + (t485 - (t486 - t483) + std::fma(t236, t278, std::fma(t172, t286, std::fma(t172, t278, -t282))));
-    const Real t490 = t487 + t489;
-    const Real t491 = t490 + t386;
-    const Real t492 = t491 - t490;
-    const Real t493 = t490 - (t491 - t492) + (t386 - t492) + (t489 - (t490 - t487) + std::fma(t236, t380, std::fma(t172, t392, std::fma(t172, t380, -t386))));
-    const Real t494 = t491 + t493;
-    const Real t495 = t494 - t370;
-    const Real t496 = t495 - t494;
-    const Real t497 = t494 - (t495 - t496) - (t370 + t496) + (t493 - (t494 - t491) - std::fma(std::fma(std::fma(std::fma(t250, t22, std::fma(t209, t30, std::fma(t209, t22, -t221))), N_z, std::fma(t221, N_z, -t225)), w_y, std::fma(t225, w_y, -t276)), w_z, std::fma(t276, w_z, -t370)));
-    const Real t498 = t495 + t497;
-    const Real t499 = t498 + t321;
-    const Real t500 = t499 - t498;
-    const Real t501 = t498 - (t499 - t500) + (t321 - t500) + (t497 - (t498 - t495) + std::fma(t234, t319, std::fma(t169, t328, std::fma(t169, t319, -t321))));
-    const Real t502 = t499 + t501;
-    const Real t503 = t502 + t383;
-    const Real t504 = t503 - t502;
-    const Real t505 = t502 - (t503 - t504) + (t383 - t504) + (t501 - (t502 - t499) + std::fma(t234, t380, std::fma(t169, t392, std::fma(t169, t380, -t383))));
-    const Real t506 = t503 + t505;
-    const Real t507 = t506 - t371;
-    const Real t508 = t507 - t506;
-    const Real t509 = t506 - (t507 - t508) - (t371 + t508) + (t505 - (t506 - t503) - std::fma(std::fma(std::fma(std::fma(t250, N_y, std::fma(t209, N_y, -t216)), t48, std::fma(t216, t56, std::fma(t216, t48, -t230))), w_y, std::fma(t230, w_y, -t277)), w_z, std::fma(t277, w_z, -t371)));
-    const Real t510 = t507 + t509;
-    const Real t511 = t510 + t324;
-    const Real t512 = t511 - t510;
-    const Real t513 = t510 - (t511 - t512) + (t324 - t512) + (t509 - (t510 - t507) + std::fma(t237, t319, std::fma(t173, t328, std::fma(t173, t319, -t324))));
-    const Real t514 = t511 + t513;
-    const Real t515 = t514 + t283;
-    const Real t516 = t515 - t514;
-    const Real t517 = t514 - (t515 - t516) + (t283 - t516) + (t513 - (t514 - t511) + std::fma(t237, t278, std::fma(t173, t286, std::fma(t173, t278, -t283))));
-    const Real t518 = t515 + t517;
-    const Real t519 = t518 + t352;
-    const Real t520 = t519 - t518;
-    const Real t521 = mu * mu;
-    const Real t522 = mu * t144;
-    const Real t523 = t522 * t62;
-    const Real t524 = t523 * t135;
-    const Real t525 = t521 * t152;
-    const Real t526 = t525 * t147;
-    const Real t527 = t526 * t59;
-    const Real t528 = t527 * t140;
-    const Real t529 = t451 - t528;
-    const Real t530 = t529 - t451;
-    const Real t531 = t451 - (t529 - t530) - (t528 + t530) + (std::fma(std::fma(std::fma(q, q, -t149), t157, std::fma(t149, std::fma(t159, t154, std::fma(t154, t159, std::fma(t154, t154, -t157))), std::fma(t149, t157, -t158))), t450, std::fma(t158, t449 - (t450 - t443), std::fma(t158, t450, -t451))) - std::fma(std::fma(std::fma(std::fma(std::fma(mu, mu, -t521), t152, std::fma(t521, std::fma(t153, t150, std::fma(t150, t153, std::fma(t150, t150, -t152))), std::fma(t521, t152, -t525))), t147, std::fma(t525, std::fma(t148, t144, std::fma(t144, t148, std::fma(t144, t144, -t147))), std::fma(t525, t147, -t526))), t59, std::fma(t526, t61, std::fma(t526, t59, -t527))), t140, std::fma(t527, std::fma(t139, t135, std::fma(t135, t139, std::fma(t135, t135, -t140))), std::fma(t527, t140, -t528))));
-    const Real t532 = t529 + t531;
-    const Real t533 = t532 + (t531 - (t532 - t529));
-    const Real t534 = (t533 > Real(0) ? t64 : Real(1));
-    const Real t535 = (t533 > Real(0) ? Real(1) : t150);
-    const Real t536 = (t533 > Real(0) ? t401 : Real(1));
-    const Real t537 = (t533 > Real(0) ? t401 + t401 : Real(1));
-    if (!(std::fabs(t40) >= detail::smallest_divisor<Real>) || !(std::fabs(t40) <= std::numeric_limits<Real>::max()) || !(std::fabs(t59) >= detail::smallest_divisor<Real>) || !(std::fabs(t59) <= std::numeric_limits<Real>::max()) || !(std::fabs(t534) >= detail::smallest_divisor<Real>) || !(std::fabs(t534) <= std::numeric_limits<Real>::max()) || !(std::fabs(t64) >= detail::smallest_divisor<Real>) || !(std::fabs(t64) <= std::numeric_limits<Real>::max()) || !(std::fabs(t535) >= detail::smallest_divisor<Real>) || !(std::fabs(t535) <= std::numeric_limits<Real>::max()) || !(std::fabs(t536) >= detail::smallest_divisor<Real>) || !(std::fabs(t536) <= std::numeric_limits<Real>::max()) || !(std::fabs(t537) >= detail::smallest_divisor<Real>) || !(std::fabs(t537) <= std::numeric_limits<Real>::max()) || !(std::fabs(t162) >= detail::smallest_divisor<Real>) || !(std::fabs(t162) <= std::numeric_limits<Real>::max()) || !(std::fabs(q) >= detail::smallest_divisor<Real>) || !(std::fabs(q) <= std::numeric_limits<Real>::max())) {
-        out.status = status::out_of_range;
-        return out;
-    }
-    const Real t538 = t377 / t40;
-    const Real t539 = t378 / t40;
-    const Real t540 = t379 / t40;
-    const Real t541 = t145 / t59;
-    const Real t542 = t63 / t534;
-    const Real t543 = t155 / t535;
-    const Real t544 = std::fma(R, t63 / t64, t207);
-    const Real t545 = t539 - w_y;
-    const Real t546 = t538 - w_x;
-    const Real t547 = t338 + (std::fma(t544, t331, t336) - t143);
-    const Real t548 = t333 + t547;
-    const Real t549 = t548 + t113;
-    const Real t550 = t540 - w_z;
-    const Real t551 = t410 + (std::fma(t544, t394, t405) + t142);
-    const Real t552 = t396 + t551;
-    const Real t553 = t552 - t91;
-    const Real t554 = t414 + (std::fma(t544, t398, t407) - t141);
-    const Real t555 = t400 + t554;
-    const Real t556 = t555 + t74;
-    const Real t557 = t518 - (t519 - t520) + (t352 - t520) + (t517 - (t518 - t515) + std::fma(std::fma(std::fma(t242, v_x, std::fma(t179, v_x, -t189)), w_z, std::fma(t189, w_z, -t350)), t62, std::fma(t350, t542, std::fma(t350, t62, -t352))));
-    const Real t558 = t519 + t557;
-    const Real t559 = t558 - t301;
-    const Real t560 = t524 / t536;
-    const Real t561 = -t541;
-    const Real t562 = -t543;
-    const Real t563 = t549 - t548;
-    const Real t564 = t553 - t552;
-    const Real t565 = t556 - t555;
-    const Real t566 = t559 - t558;
-    const Real t567 = -t560;
-    const Real t568 = t561 + -(std::fma(t561, t61, std::fma(t561, t59, t145) + std::fma(t148, t135, std::fma(t144, t139, std::fma(t144, t135, -t145)))) / t59);
-    const Real t569 = N_x * t568;
-    const Real t570 = N_y * t568;
-    const Real t571 = N_z * t568;
-    const Real t572 = t548 - (t549 - t563) + (t113 - t563) + (t547 - (t548 - t333) + t132);
-    const Real t573 = t549 + t572;
-    const Real t574 = t573 / t59;
-    const Real t575 = t552 - (t553 - t564) - (t91 + t564) + (t551 - (t552 - t396) - t106);
-    const Real t576 = t553 + t575;
-    const Real t577 = t576 / t59;
-    const Real t578 = t555 - (t556 - t565) + (t74 - t565) + (t554 - (t555 - t400) + t83);
-    const Real t579 = t556 + t578;
-    const Real t580 = t579 / t59;
-    const Real t581 = t558 - (t559 - t566) - (t301 + t566) + (t557 - (t558 - t519) - std::fma(std::fma(std::fma(t242, v_z, std::fma(t179, v_z, -t201)), w_x, std::fma(t201, w_x, -t299)), t62, std::fma(t299, t542, std::fma(t299, t62, -t301))));
-    const Real t582 = t559 + t581;
-    const Real t583 = t582 - t259;
-    const Real t584 = -t574;
-    const Real t585 = -t577;
-    const Real t586 = -t580;
-    const Real t587 = t583 - t582;
-    const Real t588 = t577 + std::fma(t585, t61, std::fma(t585, t59, t576) + (t575 - (t576 - t553))) / t59;
-    const Real t589 = t582 - (t583 - t587) - (t259 + t587) + (t581 - (t582 - t559) - std::fma(std::fma(std::fma(t245, v_x, std::fma(t184, v_x, -t190)), w_y, std::fma(t190, w_y, -t257)), t62, std::fma(t257, t542, std::fma(t257, t62, -t259))));
-    const Real t590 = t583 + t589;
-    const Real t591 = t590 + t292;
-    const Real t592 = t584 + -(std::fma(t584, t61, std::fma(t584, t59, t573) + (t572 - (t573 - t549))) / t59);
-    const Real t593 = t586 + -(std::fma(t586, t61, std::fma(t586, t59, t579) + (t578 - (t579 - t556))) / t59);
-    const Real t594 = t591 - t590;
-    const Real t595 = t590 - (t591 - t594) + (t292 - t594) + (t589 - (t590 - t583) + std::fma(std::fma(std::fma(t245, v_y, std::fma(t184, v_y, -t195)), w_x, std::fma(t195, w_x, -t290)), t62, std::fma(t290, t542, std::fma(t290, t62, -t292))));
-    const Real t596 = t591 + t595;
-    const Real t597 = t596 - t361;
-    const Real t598 = t597 - t596;
-    const Real t599 = t596 - (t597 - t598) - (t361 + t598) + (t595 - (t596 - t591) - std::fma(std::fma(std::fma(t241, v_y, std::fma(t178, v_y, -t196)), w_z, std::fma(t196, w_z, -t359)), t62, std::fma(t359, t542, std::fma(t359, t62, -t361))));
-    const Real t600 = t597 + t599;
-    const Real t601 = t600 + t268;
-    const Real t602 = t601 - t600;
-    const Real t603 = t600 - (t601 - t602) + (t268 - t602) + (t599 - (t600 - t597) + std::fma(std::fma(std::fma(t241, v_z, std::fma(t178, v_z, -t202)), w_y, std::fma(t202, w_y, -t266)), t62, std::fma(t266, t542, std::fma(t266, t62, -t268))));
-    const Real t604 = t601 + t603;
-    const Real t605 = t604 - t364;
-    const Real t606 = t605 - t604;
-    const Real t607 = t604 - (t605 - t606) - (t364 + t606) + (t603 - (t604 - t601) - std::fma(std::fma(std::fma(t243, v_y, std::fma(t181, v_y, -t197)), w_z, std::fma(t197, w_z, -t362)), t62, std::fma(t362, t542, std::fma(t362, t62, -t364))));
-    const Real t608 = t605 + t607;
-    const Real t609 = t608 + t271;
-    const Real t610 = t609 - t608;
-    const Real t611 = t608 - (t609 - t610) + (t271 - t610) + (t607 - (t608 - t605) + std::fma(std::fma(std::fma(t243, v_z, std::fma(t181, v_z, -t203)), w_y, std::fma(t203, w_y, -t269)), t62, std::fma(t269, t542, std::fma(t269, t62, -t271))));
-    const Real t612 = t609 + t611;
-    const Real t613 = t612 - t367;
-    const Real t614 = t613 - t612;
-    const Real t615 = t612 - (t613 - t614) - (t367 + t614) + (t611 - (t612 - t609) - std::fma(std::fma(std::fma(t247, v_y, std::fma(t186, v_y, -t198)), w_z, std::fma(t198, w_z, -t365)), t62, std::fma(t365, t542, std::fma(t365, t62, -t367))));
-    const Real t616 = t613 + t615;
-    const Real t617 = t616 + t274;
-    const Real t618 = t617 - t616;
-    const Real t619 = t616 - (t617 - t618) + (t274 - t618) + (t615 - (t616 - t613) + std::fma(std::fma(std::fma(t247, v_z, std::fma(t186, v_z, -t204)), w_y, std::fma(t204, w_y, -t272)), t62, std::fma(t272, t542, std::fma(t272, t62, -t274))));
-    const Real t620 = t617 + t619;
-    const Real t621 = t620 - t262;
-    const Real t622 = t621 - t620;
-    const Real t623 = t620 - (t621 - t622) - (t262 + t622) + (t619 - (t620 - t617) - std::fma(std::fma(std::fma(t246, v_x, std::fma(t185, v_x, -t191)), w_y, std::fma(t191, w_y, -t260)), t62, std::fma(t260, t542, std::fma(t260, t62, -t262))));
-    const Real t624 = t621 + t623;
-    const Real t625 = t624 + t295;
-    const Real t626 = t625 - t624;
-    const Real t627 = t624 - (t625 - t626) + (t295 - t626) + (t623 - (t624 - t621) + std::fma(std::fma(std::fma(t246, v_y, std::fma(t185, v_y, -t199)), w_x, std::fma(t199, w_x, -t293)), t62, std::fma(t293, t542, std::fma(t293, t62, -t295))));
-    const Real t628 = t625 + t627;
-    const Real t629 = t628 + t355;
-    const Real t630 = t629 - t628;
-    const Real t631 = t628 - (t629 - t630) + (t355 - t630) + (t627 - (t628 - t625) + std::fma(std::fma(std::fma(t244, v_x, std::fma(t183, v_x, -t192)), w_z, std::fma(t192, w_z, -t353)), t62, std::fma(t353, t542, std::fma(t353, t62, -t355))));
-    const Real t632 = t629 + t631;
-    const Real t633 = t632 - t304;
-    const Real t634 = t633 - t632;
-    const Real t635 = t632 - (t633 - t634) - (t304 + t634) + (t631 - (t632 - t629) - std::fma(std::fma(std::fma(t244, v_z, std::fma(t183, v_z, -t205)), w_x, std::fma(t205, w_x, -t302)), t62, std::fma(t302, t542, std::fma(t302, t62, -t304))));
-    const Real t636 = t633 + t635;
-    const Real t637 = t636 + t358;
-    const Real t638 = t637 - t636;
-    const Real t639 = t636 - (t637 - t638) + (t358 - t638) + (t635 - (t636 - t633) + std::fma(std::fma(std::fma(t248, v_x, std::fma(t187, v_x, -t193)), w_z, std::fma(t193, w_z, -t356)), t62, std::fma(t356, t542, std::fma(t356, t62, -t358))));
-    const Real t640 = t637 + t639;
-    const Real t641 = t640 - t307;
-    const Real t642 = t641 - t640;
-    const Real t643 = t640 - (t641 - t642) - (t307 + t642) + (t639 - (t640 - t637) - std::fma(std::fma(std::fma(t248, v_z, std::fma(t187, v_z, -t206)), w_x, std::fma(t206, w_x, -t305)), t62, std::fma(t305, t542, std::fma(t305, t62, -t307))));
-    const Real t644 = t641 + t643;
-    const Real t645 = t644 - t265;
-    const Real t646 = t645 - t644;
-    const Real t647 = t644 - (t645 - t646) - (t265 + t646) + (t643 - (t644 - t641) - std::fma(std::fma(std::fma(t249, v_x, std::fma(t188, v_x, -t194)), w_y, std::fma(t194, w_y, -t263)), t62, std::fma(t263, t542, std::fma(t263, t62, -t265))));
-    const Real t648 = t645 + t647;
-    const Real t649 = t648 + t298;
-    const Real t650 = t649 - t648;
-    const Real t651 = t648 - (t649 - t650) + (t298 - t650) + (t647 - (t648 - t645) + std::fma(std::fma(std::fma(t249, v_y, std::fma(t188, v_y, -t200)), w_x, std::fma(t200, w_x, -t296)), t62, std::fma(t296, t542, std::fma(t296, t62, -t298))));
-    const Real t652 = t649 + t651;
-    const Real t653 = t652 + t76;
-    const Real t654 = t653 - t652;
-    const Real t655 = t652 - (t653 - t654) + (t76 - t654) + (t651 - (t652 - t649) + std::fma(t29, t75, std::fma(t16, t84, std::fma(t16, t75, -t76))));
-    const Real t656 = t653 + t655;
-    const Real t657 = t656 + t101;
-    const Real t658 = t657 - t656;
-    const Real t659 = t656 - (t657 - t658) + (t101 - t658) + (t655 - (t656 - t653) + std::fma(t29, t98, std::fma(t16, t107, std::fma(t16, t98, -t101))));
-    const Real t660 = t657 + t659;
-    const Real t661 = t660 + t127;
-    const Real t662 = t661 - t660;
-    const Real t663 = t660 - (t661 - t662) + (t127 - t662) + (t659 - (t660 - t657) + std::fma(std::fma(t11, t13, std::fma(t5, t26, std::fma(t5, t13, -t19))), t124, std::fma(t19, t133, std::fma(t19, t124, -t127))));
-    const Real t664 = t661 + t663;
-    const Real t665 = t664 - t119;
-    const Real t666 = t665 - t664;
-    const Real t667 = t664 - (t665 - t666) - (t119 + t666) + (t663 - (t664 - t661) - std::fma(std::fma(std::fma(std::fma(t11, N_y, std::fma(t5, N_y, -t20)), N_z, std::fma(t20, N_z, -t43)), v_y, std::fma(t43, v_y, -t88)), v_z, std::fma(t88, v_z, -t119)));
-    const Real t668 = t665 + t667;
-    const Real t669 = t668 + t79;
-    const Real t670 = t669 - t668;
-    const Real t671 = t668 - (t669 - t670) + (t79 - t670) + (t667 - (t668 - t665) + std::fma(t54, t75, std::fma(t36, t84, std::fma(t36, t75, -t79))));
-    const Real t672 = t669 + t671;
-    const Real t673 = t672 + t102;
-    const Real t674 = t673 - t672;
-    const Real t675 = t672 - (t673 - t674) + (t102 - t674) + (t671 - (t672 - t669) + std::fma(std::fma(t11, t35, std::fma(t5, t52, std::fma(t5, t35, -t37))), t98, std::fma(t37, t107, std::fma(t37, t98, -t102))));
-    const Real t676 = t673 + t675;
-    const Real t677 = t676 + t130;
-    const Real t678 = t677 - t676;
-    const Real t679 = t676 - (t677 - t678) + (t130 - t678) + (t675 - (t676 - t673) + std::fma(t54, t124, std::fma(t36, t133, std::fma(t36, t124, -t130))));
-    const Real t680 = t677 + t679;
-    const Real t681 = t680 - t95;
-    const Real t682 = t681 - t680;
-    const Real t683 = t680 - (t681 - t682) - (t95 + t682) + (t679 - (t680 - t677) - std::fma(std::fma(std::fma(t12, N_y, std::fma(t8, N_y, -t21)), v_x, std::fma(t21, v_x, -t67)), v_y, std::fma(t67, v_y, -t95)));
-    const Real t684 = t681 + t683;
-    const Real t685 = t684 - t115;
-    const Real t686 = t685 - t684;
-    const Real t687 = t684 - (t685 - t686) - (t115 + t686) + (t683 - (t684 - t681) - std::fma(std::fma(std::fma(t12, N_z, std::fma(t8, N_z, -t38)), v_x, std::fma(t38, v_x, -t70)), v_z, std::fma(t70, v_z, -t115)));
-    const Real t688 = t685 + t687;
-    const Real t689 = t688 + t99;
-    const Real t690 = t689 - t688;
-    const Real t691 = t688 - (t689 - t690) + (t99 - t690) + (t687 - (t688 - t685) + std::fma(t9, t98, std::fma(t2, t107, std::fma(t2, t98, -t99))));
-    const Real t692 = t689 + t691;
-    const Real t693 = t692 + t125;
-    const Real t694 = t693 - t692;
-    const Real t695 = t692 - (t693 - t694) + (t125 - t694) + (t691 - (t692 - t689) + std::fma(t9, t124, std::fma(t2, t133, std::fma(t2, t124, -t125))));
-    const Real t696 = t693 + t695;
-    const Real t697 = t696 - t116;
-    const Real t698 = t697 - t696;
-    const Real t699 = t696 - (t697 - t698) - (t116 + t698) + (t695 - (t696 - t693) - std::fma(std::fma(std::fma(std::fma(t10, t13, std::fma(t3, t26, std::fma(t3, t13, -t17))), N_z, std::fma(t17, N_z, -t41)), v_x, std::fma(t41, v_x, -t71)), v_z, std::fma(t71, v_z, -t116)));
-    const Real t700 = t697 + t699;
-    const Real t701 = t700 - t96;
-    const Real t702 = t701 - t700;
-    const Real t703 = t700 - (t701 - t702) - (t96 + t702) + (t699 - (t700 - t697) - std::fma(std::fma(std::fma(t10, t22, std::fma(t3, t30, std::fma(t3, t22, -t23))), v_x, std::fma(t23, v_x, -t68)), v_y, std::fma(t68, v_y, -t96)));
-    const Real t704 = t701 + t703;
-    const Real t705 = t704 - t97;
-    const Real t706 = t705 - t704;
-    const Real t707 = t704 - (t705 - t706) - (t97 + t706) + (t703 - (t704 - t701) - std::fma(std::fma(std::fma(std::fma(t10, N_y, std::fma(t3, N_y, -t18)), t35, std::fma(t18, t52, std::fma(t18, t35, -t42))), v_x, std::fma(t42, v_x, -t72)), v_y, std::fma(t72, v_y, -t97)));
-    const Real t708 = t705 + t707;
-    const Real t709 = t708 - t117;
-    const Real t710 = t709 - t708;
-    const Real t711 = t708 - (t709 - t710) - (t117 + t710) + (t707 - (t708 - t705) - std::fma(std::fma(std::fma(t10, t48, std::fma(t3, t56, std::fma(t3, t48, -t49))), v_x, std::fma(t49, v_x, -t73)), v_z, std::fma(t73, v_z, -t117)));
-    const Real t712 = t709 + t711;
-    const Real t713 = t712 + t80;
-    const Real t714 = t713 - t712;
-    const Real t715 = t712 - (t713 - t714) + (t80 - t714) + (t711 - (t712 - t709) + std::fma(std::fma(std::fma(Real(2), t26, std::fma(Real(2), t13, -t27)), t35, std::fma(t27, t52, std::fma(t27, t35, -t44))), t75, std::fma(t44, t84, std::fma(t44, t75, -t80))));
-    const Real t716 = t713 + t715;
-    const Real t717 = t716 + t103;
-    const Real t718 = t717 - t716;
-    const Real t719 = t716 - (t717 - t718) + (t103 - t718) + (t715 - (t716 - t713) + std::fma(t55, t98, std::fma(t39, t107, std::fma(t39, t98, -t103))));
-    const Real t720 = t717 + t719;
-    const Real t721 = t720 + t131;
-    const Real t722 = t721 - t720;
-    const Real t723 = t720 - (t721 - t722) + (t131 - t722) + (t719 - (t720 - t717) + std::fma(t55, t124, std::fma(t39, t133, std::fma(t39, t124, -t131))));
-    const Real t724 = t721 + t723;
-    const Real t725 = t724 - t120;
-    const Real t726 = t725 - t724;
-    const Real t727 = t724 - (t725 - t726) - (t120 + t726) + (t723 - (t724 - t721) - std::fma(std::fma(std::fma(std::fma(Real(2), t30, std::fma(Real(2), t22, -t31)), N_z, std::fma(t31, N_z, -t45)), v_y, std::fma(t45, v_y, -t89)), v_z, std::fma(t89, v_z, -t120)));
-    const Real t728 = t725 + t727;
-    const Real t729 = t728 + t77;
-    const Real t730 = t729 - t728;
-    const Real t731 = t728 - (t729 - t730) + (t77 - t730) + (t727 - (t728 - t725) + std::fma(t32, t75, std::fma(t24, t84, std::fma(t24, t75, -t77))));
-    const Real t732 = t729 + t731;
-    const Real t733 = t732 + t128;
-    const Real t734 = t733 - t732;
-    const Real t735 = t732 - (t733 - t734) + (t128 - t734) + (t731 - (t732 - t729) + std::fma(t32, t124, std::fma(t24, t133, std::fma(t24, t124, -t128))));
-    const Real t736 = t733 + t735;
-    const Real t737 = t736 - t121;
-    const Real t738 = t737 - t736;
-    const Real t739 = t736 - (t737 - t738) - (t121 + t738) + (t735 - (t736 - t733) - std::fma(std::fma(std::fma(std::fma(Real(2), N_y, -t25), t48, std::fma(t25, t56, std::fma(t25, t48, -t50))), v_y, std::fma(t50, v_y, -t90)), v_z, std::fma(t90, v_z, -t121)));
-    const Real t740 = t737 + t739;
-    const Real t741 = t740 + t81;
-    const Real t742 = t741 - t740;
-    const Real t743 = t740 - (t741 - t742) + (t81 - t742) + (t739 - (t740 - t737) + std::fma(t57, t75, std::fma(t51, t84, std::fma(t51, t75, -t81))));
-    const Real t744 = t741 + t743;
-    const Real t745 = t744 + t104;
-    const Real t746 = t745 - t744;
-    const Real t747 = t744 - (t745 - t746) + (t104 - t746) + (t743 - (t744 - t741) + std::fma(t57, t98, std::fma(t51, t107, std::fma(t51, t98, -t104))));
-    const Real t748 = t745 + t747;
-    const Real t749 = std::sqrt(t748);
-    const Real t750 = (t533 > Real(0) ? t567 : t543) + (t533 > Real(0) ? -(std::fma(t567, (std::fma(-t749, t749, t748) + (t747 - (t748 - t745))) / t537, std::fma(t567, t749, t524) + std::fma(std::fma(std::fma(mu, t148, std::fma(mu, t144, -t522)), t62, std::fma(t522, t542, std::fma(t522, t62, -t523))), t135, std::fma(t523, t139, std::fma(t523, t135, -t524)))) / t536) : std::fma(t562, t153, std::fma(t562, t150, t155) + std::fma(q, t159, std::fma(q, t154, -t155))) / t535);
-    const Real t751 = t750 * t94;
-    const Real t752 = t750 * t114;
-    const Real t753 = t750 * t118;
-    const Real t754 = t753 / t162;
-    const Real t755 = t752 / t162;
-    const Real t756 = t751 / t162;
-    const Real t757 = t750 * t545;
-    const Real t758 = t757 / q;
-    const Real t759 = t750 * t546;
-    const Real t760 = t759 / q;
-    const Real t761 = t750 * t550;
-    const Real t762 = t761 / q;
-    const Real t763 = t750 * t588;
-    const Real t764 = t750 * t592;
-    const Real t765 = t750 * t593;
-    const Real result0 = t569 + v_x + t765;
-    const Real result1 = t570 + v_y + t763;
-    const Real result2 = t571 + v_z + t764;
-    const Real result3 = w_x + t760 + t754;
-    const Real result4 = w_y - t755 + t758;
-    const Real result5 = w_z + t756 + t762;
-    if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
-        out.status = status::out_of_range;
-        return out;
-    }
-    if ((std::fabs(t0) < std::numeric_limits<Real>::min() && N_x != Real(0)) ||
-        (std::fabs(t1) < std::numeric_limits<Real>::min() && t0 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t2) < std::numeric_limits<Real>::min() && t1 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t3) < std::numeric_limits<Real>::min() && N_x != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
-        (std::fabs(t8) < std::numeric_limits<Real>::min() && t1 != Real(0)) ||
-        (std::fabs(t13) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
-        (std::fabs(t16) < std::numeric_limits<Real>::min() && t0 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && t3 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && t3 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && t5 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t5 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t21) < std::numeric_limits<Real>::min() && t8 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t22) < std::numeric_limits<Real>::min() && t13 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t23) < std::numeric_limits<Real>::min() && t3 != Real(0) && t22 != Real(0)) ||
-        (std::fabs(t24) < std::numeric_limits<Real>::min() && t22 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t25) < std::numeric_limits<Real>::min() && N_y != Real(0)) ||
-        (std::fabs(t27) < std::numeric_limits<Real>::min() && t13 != Real(0)) ||
-        (std::fabs(t28) < std::numeric_limits<Real>::min() && t13 != Real(0)) ||
-        (std::fabs(t31) < std::numeric_limits<Real>::min() && t22 != Real(0)) ||
-        (std::fabs(t35) < std::numeric_limits<Real>::min() && N_z != Real(0)) ||
-        (std::fabs(t36) < std::numeric_limits<Real>::min() && t0 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t37) < std::numeric_limits<Real>::min() && t5 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t38) < std::numeric_limits<Real>::min() && t8 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t39) < std::numeric_limits<Real>::min() && t13 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && t17 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && t18 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && t20 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && t27 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && t31 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t48) < std::numeric_limits<Real>::min() && t35 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t49) < std::numeric_limits<Real>::min() && t3 != Real(0) && t48 != Real(0)) ||
-        (std::fabs(t50) < std::numeric_limits<Real>::min() && t25 != Real(0) && t48 != Real(0)) ||
-        (std::fabs(t51) < std::numeric_limits<Real>::min() && t48 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t53) < std::numeric_limits<Real>::min() && t35 != Real(0)) ||
-        (std::fabs(t65) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t66) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t67) < std::numeric_limits<Real>::min() && t21 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t68) < std::numeric_limits<Real>::min() && t23 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && N_z != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && t38 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && t41 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && t42 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && t49 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && v_x != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t75) < std::numeric_limits<Real>::min() && v_x != Real(0)) ||
-        (std::fabs(t76) < std::numeric_limits<Real>::min() && t16 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t77) < std::numeric_limits<Real>::min() && t24 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t78) < std::numeric_limits<Real>::min() && t28 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t79) < std::numeric_limits<Real>::min() && t36 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && t44 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t51 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t53 != Real(0) && t75 != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && N_z != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t43 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t45 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t50 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && v_y != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && t67 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t68 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t72 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && v_y != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t2 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t6 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t16 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t37 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t39 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t51 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t53 != Real(0) && t98 != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && N_z != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && N_x != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && N_y != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && v_z != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t70 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t71 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t73 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t88 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t89 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t90 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && v_z != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t2 != Real(0) && t124 != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t6 != Real(0) && t124 != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t19 != Real(0) && t124 != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t24 != Real(0) && t124 != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t28 != Real(0) && t124 != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t36 != Real(0) && t124 != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t39 != Real(0) && t124 != Real(0)) ||
-        (std::fabs(t136) < std::numeric_limits<Real>::min() && N_x != Real(0) && t135 != Real(0)) ||
-        (std::fabs(t137) < std::numeric_limits<Real>::min() && N_y != Real(0) && t135 != Real(0)) ||
-        (std::fabs(t138) < std::numeric_limits<Real>::min() && N_z != Real(0) && t135 != Real(0)) ||
-        (std::fabs(t140) < std::numeric_limits<Real>::min() && t135 != Real(0)) ||
-        (std::fabs(t145) < std::numeric_limits<Real>::min() && t144 != Real(0) && t135 != Real(0)) ||
-        (std::fabs(t147) < std::numeric_limits<Real>::min() && t144 != Real(0)) ||
-        (std::fabs(t149) < std::numeric_limits<Real>::min() && q != Real(0)) ||
-        (std::fabs(t152) < std::numeric_limits<Real>::min() && t150 != Real(0)) ||
-        (std::fabs(t155) < std::numeric_limits<Real>::min() && q != Real(0) && t154 != Real(0)) ||
-        (std::fabs(t157) < std::numeric_limits<Real>::min() && t154 != Real(0)) ||
-        (std::fabs(t158) < std::numeric_limits<Real>::min() && t149 != Real(0) && t157 != Real(0)) ||
-        (std::fabs(t160) < std::numeric_limits<Real>::min() && R != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t161) < std::numeric_limits<Real>::min() && R != Real(0) && q != Real(0)) ||
-        (std::fabs(t162) < std::numeric_limits<Real>::min() && t161 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t163) < std::numeric_limits<Real>::min() && R != Real(0)) ||
-        (std::fabs(t164) < std::numeric_limits<Real>::min() && t163 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t165) < std::numeric_limits<Real>::min() && t163 != Real(0) && t2 != Real(0)) ||
-        (std::fabs(t166) < std::numeric_limits<Real>::min() && t163 != Real(0) && t6 != Real(0)) ||
-        (std::fabs(t167) < std::numeric_limits<Real>::min() && t164 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t168) < std::numeric_limits<Real>::min() && t163 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t169) < std::numeric_limits<Real>::min() && t163 != Real(0) && t24 != Real(0)) ||
-        (std::fabs(t170) < std::numeric_limits<Real>::min() && t163 != Real(0) && t28 != Real(0)) ||
-        (std::fabs(t171) < std::numeric_limits<Real>::min() && t164 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t172) < std::numeric_limits<Real>::min() && t168 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t173) < std::numeric_limits<Real>::min() && t163 != Real(0) && t51 != Real(0)) ||
-        (std::fabs(t174) < std::numeric_limits<Real>::min() && t163 != Real(0) && t53 != Real(0)) ||
-        (std::fabs(t175) < std::numeric_limits<Real>::min() && R != Real(0)) ||
-        (std::fabs(t176) < std::numeric_limits<Real>::min() && t175 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t177) < std::numeric_limits<Real>::min() && t175 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t178) < std::numeric_limits<Real>::min() && t175 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t179) < std::numeric_limits<Real>::min() && t177 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t180) < std::numeric_limits<Real>::min() && t175 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t181) < std::numeric_limits<Real>::min() && t176 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t175 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && t175 != Real(0) && t22 != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && t177 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && t182 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t186) < std::numeric_limits<Real>::min() && t176 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t187) < std::numeric_limits<Real>::min() && t180 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t188) < std::numeric_limits<Real>::min() && t175 != Real(0) && t48 != Real(0)) ||
-        (std::fabs(t189) < std::numeric_limits<Real>::min() && t179 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t190) < std::numeric_limits<Real>::min() && t184 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && t185 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && t183 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && t187 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t194) < std::numeric_limits<Real>::min() && t188 != Real(0) && v_x != Real(0)) ||
-        (std::fabs(t195) < std::numeric_limits<Real>::min() && t184 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t196) < std::numeric_limits<Real>::min() && t178 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && t181 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && t186 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && t185 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t200) < std::numeric_limits<Real>::min() && t188 != Real(0) && v_y != Real(0)) ||
-        (std::fabs(t201) < std::numeric_limits<Real>::min() && t179 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && t178 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t203) < std::numeric_limits<Real>::min() && t181 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t204) < std::numeric_limits<Real>::min() && t186 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t205) < std::numeric_limits<Real>::min() && t183 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t206) < std::numeric_limits<Real>::min() && t187 != Real(0) && v_z != Real(0)) ||
-        (std::fabs(t209) < std::numeric_limits<Real>::min() && t163 != Real(0)) ||
-        (std::fabs(t210) < std::numeric_limits<Real>::min() && t209 != Real(0) && N_x != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && t209 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t212) < std::numeric_limits<Real>::min() && t209 != Real(0) && t1 != Real(0)) ||
-        (std::fabs(t213) < std::numeric_limits<Real>::min() && t211 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t214) < std::numeric_limits<Real>::min() && t212 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t215) < std::numeric_limits<Real>::min() && t210 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t216) < std::numeric_limits<Real>::min() && t209 != Real(0) && N_y != Real(0)) ||
-        (std::fabs(t217) < std::numeric_limits<Real>::min() && t211 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t218) < std::numeric_limits<Real>::min() && t210 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t219) < std::numeric_limits<Real>::min() && t209 != Real(0) && t13 != Real(0)) ||
-        (std::fabs(t220) < std::numeric_limits<Real>::min() && t210 != Real(0) && t22 != Real(0)) ||
-        (std::fabs(t221) < std::numeric_limits<Real>::min() && t209 != Real(0) && t22 != Real(0)) ||
-        (std::fabs(t222) < std::numeric_limits<Real>::min() && t213 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t223) < std::numeric_limits<Real>::min() && t212 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t224) < std::numeric_limits<Real>::min() && t218 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t225) < std::numeric_limits<Real>::min() && t221 != Real(0) && N_z != Real(0)) ||
-        (std::fabs(t226) < std::numeric_limits<Real>::min() && t211 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t227) < std::numeric_limits<Real>::min() && t215 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t228) < std::numeric_limits<Real>::min() && t219 != Real(0) && t35 != Real(0)) ||
-        (std::fabs(t229) < std::numeric_limits<Real>::min() && t210 != Real(0) && t48 != Real(0)) ||
-        (std::fabs(t230) < std::numeric_limits<Real>::min() && t216 != Real(0) && t48 != Real(0)) ||
-        (std::fabs(t254) < std::numeric_limits<Real>::min() && N_x != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t255) < std::numeric_limits<Real>::min() && N_y != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t256) < std::numeric_limits<Real>::min() && N_z != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && t190 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t258) < std::numeric_limits<Real>::min() && t257 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t259) < std::numeric_limits<Real>::min() && t257 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t260) < std::numeric_limits<Real>::min() && t191 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t261) < std::numeric_limits<Real>::min() && t260 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t262) < std::numeric_limits<Real>::min() && t260 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t263) < std::numeric_limits<Real>::min() && t194 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t264) < std::numeric_limits<Real>::min() && t263 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t265) < std::numeric_limits<Real>::min() && t263 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t266) < std::numeric_limits<Real>::min() && t202 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t267) < std::numeric_limits<Real>::min() && t266 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t268) < std::numeric_limits<Real>::min() && t266 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t269) < std::numeric_limits<Real>::min() && t203 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t270) < std::numeric_limits<Real>::min() && t269 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t271) < std::numeric_limits<Real>::min() && t269 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t272) < std::numeric_limits<Real>::min() && t204 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t273) < std::numeric_limits<Real>::min() && t272 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t274) < std::numeric_limits<Real>::min() && t272 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t275) < std::numeric_limits<Real>::min() && t222 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t276) < std::numeric_limits<Real>::min() && t225 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t277) < std::numeric_limits<Real>::min() && t230 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t278) < std::numeric_limits<Real>::min() && w_y != Real(0)) ||
-        (std::fabs(t279) < std::numeric_limits<Real>::min() && t165 != Real(0) && t278 != Real(0)) ||
-        (std::fabs(t280) < std::numeric_limits<Real>::min() && t166 != Real(0) && t278 != Real(0)) ||
-        (std::fabs(t281) < std::numeric_limits<Real>::min() && t167 != Real(0) && t278 != Real(0)) ||
-        (std::fabs(t282) < std::numeric_limits<Real>::min() && t172 != Real(0) && t278 != Real(0)) ||
-        (std::fabs(t283) < std::numeric_limits<Real>::min() && t173 != Real(0) && t278 != Real(0)) ||
-        (std::fabs(t284) < std::numeric_limits<Real>::min() && t174 != Real(0) && t278 != Real(0)) ||
-        (std::fabs(t285) < std::numeric_limits<Real>::min() && t226 != Real(0) && t278 != Real(0)) ||
-        (std::fabs(t287) < std::numeric_limits<Real>::min() && N_y != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t288) < std::numeric_limits<Real>::min() && N_x != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t289) < std::numeric_limits<Real>::min() && N_z != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t290) < std::numeric_limits<Real>::min() && t195 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t291) < std::numeric_limits<Real>::min() && t290 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t292) < std::numeric_limits<Real>::min() && t290 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t293) < std::numeric_limits<Real>::min() && t199 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t294) < std::numeric_limits<Real>::min() && t293 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t295) < std::numeric_limits<Real>::min() && t293 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t296) < std::numeric_limits<Real>::min() && t200 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t297) < std::numeric_limits<Real>::min() && t296 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t298) < std::numeric_limits<Real>::min() && t296 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t299) < std::numeric_limits<Real>::min() && t201 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t300) < std::numeric_limits<Real>::min() && t299 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t301) < std::numeric_limits<Real>::min() && t299 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t302) < std::numeric_limits<Real>::min() && t205 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t303) < std::numeric_limits<Real>::min() && t302 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t304) < std::numeric_limits<Real>::min() && t302 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t305) < std::numeric_limits<Real>::min() && t206 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t306) < std::numeric_limits<Real>::min() && t305 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t307) < std::numeric_limits<Real>::min() && t305 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t308) < std::numeric_limits<Real>::min() && t214 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t309) < std::numeric_limits<Real>::min() && t220 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t310) < std::numeric_limits<Real>::min() && t223 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t311) < std::numeric_limits<Real>::min() && t224 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t312) < std::numeric_limits<Real>::min() && t227 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t313) < std::numeric_limits<Real>::min() && t229 != Real(0) && w_x != Real(0)) ||
-        (std::fabs(t314) < std::numeric_limits<Real>::min() && t308 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t315) < std::numeric_limits<Real>::min() && t309 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t316) < std::numeric_limits<Real>::min() && t312 != Real(0) && w_y != Real(0)) ||
-        (std::fabs(t319) < std::numeric_limits<Real>::min() && w_x != Real(0)) ||
-        (std::fabs(t320) < std::numeric_limits<Real>::min() && t167 != Real(0) && t319 != Real(0)) ||
-        (std::fabs(t321) < std::numeric_limits<Real>::min() && t169 != Real(0) && t319 != Real(0)) ||
-        (std::fabs(t322) < std::numeric_limits<Real>::min() && t170 != Real(0) && t319 != Real(0)) ||
-        (std::fabs(t323) < std::numeric_limits<Real>::min() && t171 != Real(0) && t319 != Real(0)) ||
-        (std::fabs(t324) < std::numeric_limits<Real>::min() && t173 != Real(0) && t319 != Real(0)) ||
-        (std::fabs(t325) < std::numeric_limits<Real>::min() && t174 != Real(0) && t319 != Real(0)) ||
-        (std::fabs(t326) < std::numeric_limits<Real>::min() && t228 != Real(0) && t319 != Real(0)) ||
-        (std::fabs(t332) < std::numeric_limits<Real>::min() && t160 != Real(0) && t331 != Real(0)) ||
-        (std::fabs(t346) < std::numeric_limits<Real>::min() && t344 != Real(0)) ||
-        (std::fabs(t347) < std::numeric_limits<Real>::min() && N_x != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t348) < std::numeric_limits<Real>::min() && N_y != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t349) < std::numeric_limits<Real>::min() && N_z != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t350) < std::numeric_limits<Real>::min() && t189 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t351) < std::numeric_limits<Real>::min() && t350 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t352) < std::numeric_limits<Real>::min() && t350 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t353) < std::numeric_limits<Real>::min() && t192 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t354) < std::numeric_limits<Real>::min() && t353 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t355) < std::numeric_limits<Real>::min() && t353 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t356) < std::numeric_limits<Real>::min() && t193 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t357) < std::numeric_limits<Real>::min() && t356 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t358) < std::numeric_limits<Real>::min() && t356 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t359) < std::numeric_limits<Real>::min() && t196 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t360) < std::numeric_limits<Real>::min() && t359 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t361) < std::numeric_limits<Real>::min() && t359 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t362) < std::numeric_limits<Real>::min() && t197 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t363) < std::numeric_limits<Real>::min() && t362 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t364) < std::numeric_limits<Real>::min() && t362 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t365) < std::numeric_limits<Real>::min() && t198 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t366) < std::numeric_limits<Real>::min() && t365 != Real(0) && t60 != Real(0)) ||
-        (std::fabs(t367) < std::numeric_limits<Real>::min() && t365 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t369) < std::numeric_limits<Real>::min() && t275 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t370) < std::numeric_limits<Real>::min() && t276 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t371) < std::numeric_limits<Real>::min() && t277 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t373) < std::numeric_limits<Real>::min() && t310 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t374) < std::numeric_limits<Real>::min() && t311 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t375) < std::numeric_limits<Real>::min() && t313 != Real(0) && w_z != Real(0)) ||
-        (std::fabs(t377) < std::numeric_limits<Real>::min() && N_x != Real(0) && t376 != Real(0)) ||
-        (std::fabs(t378) < std::numeric_limits<Real>::min() && N_y != Real(0) && t376 != Real(0)) ||
-        (std::fabs(t379) < std::numeric_limits<Real>::min() && N_z != Real(0) && t376 != Real(0)) ||
-        (std::fabs(t380) < std::numeric_limits<Real>::min() && w_z != Real(0)) ||
-        (std::fabs(t381) < std::numeric_limits<Real>::min() && t165 != Real(0) && t380 != Real(0)) ||
-        (std::fabs(t382) < std::numeric_limits<Real>::min() && t166 != Real(0) && t380 != Real(0)) ||
-        (std::fabs(t383) < std::numeric_limits<Real>::min() && t169 != Real(0) && t380 != Real(0)) ||
-        (std::fabs(t384) < std::numeric_limits<Real>::min() && t170 != Real(0) && t380 != Real(0)) ||
-        (std::fabs(t385) < std::numeric_limits<Real>::min() && t171 != Real(0) && t380 != Real(0)) ||
-        (std::fabs(t386) < std::numeric_limits<Real>::min() && t172 != Real(0) && t380 != Real(0)) ||
-        (std::fabs(t387) < std::numeric_limits<Real>::min() && t217 != Real(0) && t380 != Real(0)) ||
-        (std::fabs(t395) < std::numeric_limits<Real>::min() && t160 != Real(0) && t394 != Real(0)) ||
-        (std::fabs(t399) < std::numeric_limits<Real>::min() && t160 != Real(0) && t398 != Real(0)) ||
-        (std::fabs(t432) < std::numeric_limits<Real>::min() && t425 != Real(0)) ||
-        (std::fabs(t436) < std::numeric_limits<Real>::min() && t427 != Real(0)) ||
-        (std::fabs(t451) < std::numeric_limits<Real>::min() && t158 != Real(0) && t450 != Real(0)) ||
-        (std::fabs(t521) < std::numeric_limits<Real>::min() && mu != Real(0)) ||
-        (std::fabs(t522) < std::numeric_limits<Real>::min() && mu != Real(0) && t144 != Real(0)) ||
-        (std::fabs(t523) < std::numeric_limits<Real>::min() && t522 != Real(0) && t62 != Real(0)) ||
-        (std::fabs(t524) < std::numeric_limits<Real>::min() && t523 != Real(0) && t135 != Real(0)) ||
-        (std::fabs(t525) < std::numeric_limits<Real>::min() && t521 != Real(0) && t152 != Real(0)) ||
-        (std::fabs(t526) < std::numeric_limits<Real>::min() && t525 != Real(0) && t147 != Real(0)) ||
-        (std::fabs(t527) < std::numeric_limits<Real>::min() && t526 != Real(0) && t59 != Real(0)) ||
-        (std::fabs(t528) < std::numeric_limits<Real>::min() && t527 != Real(0) && t140 != Real(0)) ||
-        (std::fabs(t538) < std::numeric_limits<Real>::min() && t377 != Real(0)) ||
-        (std::fabs(t539) < std::numeric_limits<Real>::min() && t378 != Real(0)) ||
-        (std::fabs(t540) < std::numeric_limits<Real>::min() && t379 != Real(0)) ||
-        (std::fabs(t541) < std::numeric_limits<Real>::min() && t145 != Real(0)) ||
-        (std::fabs(t543) < std::numeric_limits<Real>::min() && t155 != Real(0)) ||
-        (std::fabs(t560) < std::numeric_limits<Real>::min() && t524 != Real(0)) ||
-        (std::fabs(t569) < std::numeric_limits<Real>::min() && N_x != Real(0) && t568 != Real(0)) ||
-        (std::fabs(t570) < std::numeric_limits<Real>::min() && N_y != Real(0) && t568 != Real(0)) ||
-        (std::fabs(t571) < std::numeric_limits<Real>::min() && N_z != Real(0) && t568 != Real(0)) ||
-        (std::fabs(t574) < std::numeric_limits<Real>::min() && t573 != Real(0)) ||
-        (std::fabs(t577) < std::numeric_limits<Real>::min() && t576 != Real(0)) ||
-        (std::fabs(t580) < std::numeric_limits<Real>::min() && t579 != Real(0)) ||
-        (std::fabs(t751) < std::numeric_limits<Real>::min() && t750 != Real(0) && t94 != Real(0)) ||
-        (std::fabs(t752) < std::numeric_limits<Real>::min() && t750 != Real(0) && t114 != Real(0)) ||
-        (std::fabs(t753) < std::numeric_limits<Real>::min() && t750 != Real(0) && t118 != Real(0)) ||
-        (std::fabs(t754) < std::numeric_limits<Real>::min() && t753 != Real(0)) ||
-        (std::fabs(t755) < std::numeric_limits<Real>::min() && t752 != Real(0)) ||
-        (std::fabs(t756) < std::numeric_limits<Real>::min() && t751 != Real(0)) ||
-        (std::fabs(t757) < std::numeric_limits<Real>::min() && t750 != Real(0) && t545 != Real(0)) ||
-        (std::fabs(t758) < std::numeric_limits<Real>::min() && t757 != Real(0)) ||
-        (std::fabs(t759) < std::numeric_limits<Real>::min() && t750 != Real(0) && t546 != Real(0)) ||
-        (std::fabs(t760) < std::numeric_limits<Real>::min() && t759 != Real(0)) ||
-        (std::fabs(t761) < std::numeric_limits<Real>::min() && t750 != Real(0) && t550 != Real(0)) ||
-        (std::fabs(t762) < std::numeric_limits<Real>::min() && t761 != Real(0)) ||
-        (std::fabs(t763) < std::numeric_limits<Real>::min() && t750 != Real(0) && t588 != Real(0)) ||
-        (std::fabs(t764) < std::numeric_limits<Real>::min() && t750 != Real(0) && t592 != Real(0)) ||
-        (std::fabs(t765) < std::numeric_limits<Real>::min() && t750 != Real(0) && t593 != Real(0))) {
-        out.status = status::underflow;
-        return out;
-    }
-    out.v = {result0, result1, result2};
-    out.w = {result3, result4, result5};
-    return out;
+    return collide_wall_rough<Real>(R, q, P, n, C, v, w, eps, beta, mu);
 }
 
-namespace detail {
-
-// The range of collide_wall_rough_batch_3d_fast's inputs within which its arithmetic stays in the normal range: where
-// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
-// normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
-// the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
-// by Impact from the program, operation by operation, bounding each value not 0 by powers
-// of 2, 2^lo <= |v| <= 2^hi, and by the power of 2 it is a multiple of, 2^q (a number of
-// at least 2^lo is a multiple of its ulp, 2^(lo - digits + 1)): a product adds them; a sum,
-// difference or fused multiply-add is exactly a multiple of its terms' finest q, and so,
-// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
-// bounds crosswise, a square root halves them, atan2(y, x) lies within
-// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
-// quadruple long double): k = -1, -1, 382, 347; where it is -1, the loop tests the least magnitude of the values.
-template <class Real>
-constexpr int collide_wall_rough_batch_3d_fast_k = input_k<Real>(-1, -1, 382, 347);
-
-// The loop of collide_wall_rough_batch in 3D, without branches; inlined where it is called, so that a
-// block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_3d_fast(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < count; ++i) {
-        // The status, as the scalar kernel decides it: the first guard that fails.
-        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
-        impact::status outcome = status::ok;
-        {
-            std::int64_t fails = !((((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(P_z_[i], N_x_[i])) + (detail::zero_if_finite(N_y_[i], N_z_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i]))) + ((detail::zero_if_finite(C_z_[i], v_x_[i]) + detail::zero_if_finite(v_y_[i], v_z_[i])) + (detail::zero_if_finite(w_x_[i], w_y_[i]) + detail::zero_if_finite(w_z_[i])))) == Real(0));
-            outcome = detail::blend(fails, status::non_finite, outcome);
-            fails = !(mu_[i] >= Real(0));
-            outcome = detail::blend(fails, status::invalid_friction, outcome);
-            fails = !(b_[i] >= Real(-1));
-            fails |= !(b_[i] <= Real(1));
-            outcome = detail::blend(fails, status::invalid_tangential_restitution, outcome);
-            fails = !(eps_[i] >= Real(0));
-            fails |= !(eps_[i] <= Real(1));
-            outcome = detail::blend(fails, status::invalid_restitution, outcome);
-            fails = !(q_[i] > Real(0));
-            fails |= !(q_[i] <= Real(0.6666666666666666));
-            outcome = detail::blend(fails, status::invalid_inertia, outcome);
-            fails = !(R_[i] > Real(0));
-            fails |= !detail::finite(R_[i]);
-            outcome = detail::blend(fails, status::invalid_radius, outcome);
-            const std::int64_t admitted = outcome == status::ok;
-            impact::status condition = status::ok;
-            const Real t0 = N_x_[i] * N_x_[i];
-            const Real t13 = N_y_[i] * N_y_[i];
-            const Real t14 = t0 + t13;
-            const Real t35 = N_z_[i] * N_z_[i];
-            const Real t40 = t14 + t35;
-            const Real t65 = N_x_[i] * v_x_[i];
-            const Real t81 = N_y_[i] * v_y_[i];
-            const Real t86 = t65 + t81;
-            const Real t101 = N_z_[i] * v_z_[i];
-            fails = !(t86 + t101 < Real(0));
-            condition = detail::blend(fails, status::separating, condition);
-            fails = !(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) + N_z_[i] * (C_z_[i] - P_z_[i]) > Real(0));
-            condition = detail::blend(fails, status::behind_the_wall, condition);
-            fails = !(t40 > Real(0));
-            condition = detail::blend(fails, status::invalid_normal, condition);
-            outcome = detail::blend(admitted, condition, outcome);
-        }
-        const std::int64_t resolved = outcome == status::ok;
-        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
-        const Real R = R_[i];
-        const Real q = q_[i];
-        const Real N_x = N_x_[i];
-        const Real N_y = N_y_[i];
-        const Real N_z = N_z_[i];
-        const Real v_x = v_x_[i];
-        const Real v_y = v_y_[i];
-        const Real v_z = v_z_[i];
-        const Real w_x = w_x_[i];
-        const Real w_y = w_y_[i];
-        const Real w_z = w_z_[i];
-        const Real eps = eps_[i];
-        const Real b = b_[i];
-        const Real mu = mu_[i];
-        const Real t0 = N_x * N_x;
-        const Real t1 = t0 * N_x;
-        const Real t2 = t1 * N_x;
-        const Real t3 = Real(2) * N_x;
-        const Real t4 = std::fma(N_x, N_x, -t0);
-        const Real t5 = Real(2) * t0;
-        const Real t6 = t0 * t0;
-        const Real t7 = std::fma(t4, N_x, std::fma(t0, N_x, -t1));
-        const Real t8 = Real(2) * t1;
-        const Real t9 = std::fma(t7, N_x, std::fma(t1, N_x, -t2));
-        const Real t10 = std::fma(Real(2), N_x, -t3);
-        const Real t11 = std::fma(Real(2), t4, std::fma(Real(2), t0, -t5));
-        const Real t12 = std::fma(Real(2), t7, std::fma(Real(2), t1, -t8));
-        const Real t13 = N_y * N_y;
-        const Real t14 = t0 + t13;
-        const Real t15 = t14 - t0;
-        const Real t16 = t0 * t13;
-        const Real t17 = t3 * t13;
-        const Real t18 = t3 * N_y;
-        const Real t19 = t5 * t13;
-        const Real t20 = t5 * N_y;
-        const Real t21 = t8 * N_y;
-        const Real t22 = t13 * N_y;
-        const Real t23 = t3 * t22;
-        const Real t24 = t22 * N_y;
-        const Real t25 = Real(2) * N_y;
-        const Real t26 = std::fma(N_y, N_y, -t13);
-        const Real t27 = Real(2) * t13;
-        const Real t28 = t13 * t13;
-        const Real t29 = std::fma(t4, t13, std::fma(t0, t26, std::fma(t0, t13, -t16)));
-        const Real t30 = std::fma(t26, N_y, std::fma(t13, N_y, -t22));
-        const Real t31 = Real(2) * t22;
-        const Real t32 = std::fma(t30, N_y, std::fma(t22, N_y, -t24));
-        const Real t33 = t0 - (t14 - t15) + (t13 - t15) + (t4 + t26);
-        const Real t34 = t14 + t33;
-        const Real t35 = N_z * N_z;
-        const Real t36 = t0 * t35;
-        const Real t37 = t5 * t35;
-        const Real t38 = t8 * N_z;
-        const Real t39 = t13 * t35;
-        const Real t40 = t14 + t35;
-        const Real t41 = t17 * N_z;
-        const Real t42 = t18 * t35;
-        const Real t43 = t20 * N_z;
-        const Real t44 = t27 * t35;
-        const Real t45 = t31 * N_z;
-        const Real t46 = t34 + t35;
-        const Real t47 = t46 - t34;
-        const Real t48 = t35 * N_z;
-        const Real t49 = t3 * t48;
-        const Real t50 = t25 * t48;
-        const Real t51 = t48 * N_z;
-        const Real t52 = std::fma(N_z, N_z, -t35);
-        const Real t53 = t35 * t35;
-        const Real t54 = std::fma(t4, t35, std::fma(t0, t52, std::fma(t0, t35, -t36)));
-        const Real t55 = std::fma(t26, t35, std::fma(t13, t52, std::fma(t13, t35, -t39)));
-        const Real t56 = std::fma(t52, N_z, std::fma(t35, N_z, -t48));
-        const Real t57 = std::fma(t56, N_z, std::fma(t48, N_z, -t51));
-        const Real t58 = t34 - (t46 - t47) + (t35 - t47) + (t33 - (t34 - t14) + t52);
-        const Real t59 = t46 + t58;
-        const Real t60 = std::sqrt(t40);
-        const Real t61 = t58 - (t59 - t46);
-        const Real t62 = std::sqrt(t59);
-        const Real t63 = std::fma(-t62, t62, t59) + t61;
-        const Real t64 = t62 + t62;
-        const Real t65 = N_x * v_x;
-        const Real t66 = N_y * v_x;
-        const Real t67 = t21 * v_x;
-        const Real t68 = t23 * v_x;
-        const Real t69 = N_z * v_x;
-        const Real t70 = t38 * v_x;
-        const Real t71 = t41 * v_x;
-        const Real t72 = t42 * v_x;
-        const Real t73 = t49 * v_x;
-        const Real t74 = v_x * t59;
-        const Real t75 = v_x * v_x;
-        const Real t76 = t16 * t75;
-        const Real t77 = t24 * t75;
-        const Real t78 = t28 * t75;
-        const Real t79 = t36 * t75;
-        const Real t80 = t44 * t75;
-        const Real t81 = t51 * t75;
-        const Real t82 = t53 * t75;
-        const Real t83 = std::fma(v_x, t61, std::fma(v_x, t59, -t74));
-        const Real t84 = std::fma(v_x, v_x, -t75);
-        const Real t85 = N_y * v_y;
-        const Real t86 = N_x * v_y;
-        const Real t87 = N_z * v_y;
-        const Real t88 = t43 * v_y;
-        const Real t89 = t45 * v_y;
-        const Real t90 = t50 * v_y;
-        const Real t91 = v_y * t59;
-        const Real t92 = t65 + t85;
-        const Real t93 = t92 - t65;
-        const Real t94 = t86 - t66;
-        const Real t95 = t67 * v_y;
-        const Real t96 = t68 * v_y;
-        const Real t97 = t72 * v_y;
-        const Real t98 = v_y * v_y;
-        const Real t99 = t2 * t98;
-        const Real t100 = t6 * t98;
-        const Real t101 = t16 * t98;
-        const Real t102 = t37 * t98;
-        const Real t103 = t39 * t98;
-        const Real t104 = t51 * t98;
-        const Real t105 = t53 * t98;
-        const Real t106 = std::fma(v_y, t61, std::fma(v_y, t59, -t91));
-        const Real t107 = std::fma(v_y, v_y, -t98);
-        const Real t108 = t65 - (t92 - t93) + (t85 - t93) + (std::fma(N_x, v_x, -t65) + std::fma(N_y, v_y, -t85));
-        const Real t109 = t92 + t108;
-        const Real t110 = N_z * v_z;
-        const Real t111 = N_x * v_z;
-        const Real t112 = N_y * v_z;
-        const Real t113 = v_z * t59;
-        const Real t114 = t111 - t69;
-        const Real t115 = t70 * v_z;
-        const Real t116 = t71 * v_z;
-        const Real t117 = t73 * v_z;
-        const Real t118 = t112 - t87;
-        const Real t119 = t88 * v_z;
-        const Real t120 = t89 * v_z;
-        const Real t121 = t90 * v_z;
-        const Real t122 = t109 + t110;
-        const Real t123 = t122 - t109;
-        const Real t124 = v_z * v_z;
-        const Real t125 = t2 * t124;
-        const Real t126 = t6 * t124;
-        const Real t127 = t19 * t124;
-        const Real t128 = t24 * t124;
-        const Real t129 = t28 * t124;
-        const Real t130 = t36 * t124;
-        const Real t131 = t39 * t124;
-        const Real t132 = std::fma(v_z, t61, std::fma(v_z, t59, -t113));
-        const Real t133 = std::fma(v_z, v_z, -t124);
-        const Real t134 = t109 - (t122 - t123) + (t110 - t123) + (t108 - (t109 - t92) + std::fma(N_z, v_z, -t110));
-        const Real t135 = t122 + t134;
-        const Real t136 = N_x * t135;
-        const Real t137 = N_y * t135;
-        const Real t138 = N_z * t135;
-        const Real t139 = t134 - (t135 - t122);
-        const Real t140 = t135 * t135;
-        const Real t141 = std::fma(N_x, t139, std::fma(N_x, t135, -t136));
-        const Real t142 = std::fma(N_y, t139, std::fma(N_y, t135, -t137));
-        const Real t143 = std::fma(N_z, t139, std::fma(N_z, t135, -t138));
-        const Real t144 = Real(1) + eps;
-        const Real t145 = t144 * t135;
-        const Real t146 = t144 - Real(1);
-        const Real t147 = t144 * t144;
-        const Real t148 = Real(1) - (t144 - t146) + (eps - t146);
-        const Real t149 = q * q;
-        const Real t150 = Real(1) + q;
-        const Real t151 = t150 - Real(1);
-        const Real t152 = t150 * t150;
-        const Real t153 = Real(1) - (t150 - t151) + (q - t151);
-        const Real t154 = Real(1) + b;
-        const Real t155 = q * t154;
-        const Real t156 = t154 - Real(1);
-        const Real t157 = t154 * t154;
-        const Real t158 = t149 * t157;
-        const Real t159 = Real(1) - (t154 - t156) + (b - t156);
-        const Real t160 = R * t62;
-        const Real t161 = R * q;
-        const Real t162 = t161 * t60;
-        const Real t163 = R * R;
-        const Real t164 = t163 * t0;
-        const Real t165 = t163 * t2;
-        const Real t166 = t163 * t6;
-        const Real t167 = t164 * t13;
-        const Real t168 = t163 * t13;
-        const Real t169 = t163 * t24;
-        const Real t170 = t163 * t28;
-        const Real t171 = t164 * t35;
-        const Real t172 = t168 * t35;
-        const Real t173 = t163 * t51;
-        const Real t174 = t163 * t53;
-        const Real t175 = Real(2) * R;
-        const Real t176 = t175 * N_x;
-        const Real t177 = t175 * t0;
-        const Real t178 = t175 * t1;
-        const Real t179 = t177 * N_y;
-        const Real t180 = t175 * N_y;
-        const Real t181 = t176 * t13;
-        const Real t182 = t175 * t13;
-        const Real t183 = t175 * t22;
-        const Real t184 = t177 * N_z;
-        const Real t185 = t182 * N_z;
-        const Real t186 = t176 * t35;
-        const Real t187 = t180 * t35;
-        const Real t188 = t175 * t48;
-        const Real t189 = t179 * v_x;
-        const Real t190 = t184 * v_x;
-        const Real t191 = t185 * v_x;
-        const Real t192 = t183 * v_x;
-        const Real t193 = t187 * v_x;
-        const Real t194 = t188 * v_x;
-        const Real t195 = t184 * v_y;
-        const Real t196 = t178 * v_y;
-        const Real t197 = t181 * v_y;
-        const Real t198 = t186 * v_y;
-        const Real t199 = t185 * v_y;
-        const Real t200 = t188 * v_y;
-        const Real t201 = t179 * v_z;
-        const Real t202 = t178 * v_z;
-        const Real t203 = t181 * v_z;
-        const Real t204 = t186 * v_z;
-        const Real t205 = t183 * v_z;
-        const Real t206 = t187 * v_z;
-        const Real t207 = std::fma(R, t62, -t160);
-        const Real t208 = std::fma(R, R, -t163);
-        const Real t209 = Real(2) * t163;
-        const Real t210 = t209 * N_x;
-        const Real t211 = t209 * t0;
-        const Real t212 = t209 * t1;
-        const Real t213 = t211 * N_y;
-        const Real t214 = t212 * N_y;
-        const Real t215 = t210 * N_y;
-        const Real t216 = t209 * N_y;
-        const Real t217 = t211 * t13;
-        const Real t218 = t210 * t13;
-        const Real t219 = t209 * t13;
-        const Real t220 = t210 * t22;
-        const Real t221 = t209 * t22;
-        const Real t222 = t213 * N_z;
-        const Real t223 = t212 * N_z;
-        const Real t224 = t218 * N_z;
-        const Real t225 = t221 * N_z;
-        const Real t226 = t211 * t35;
-        const Real t227 = t215 * t35;
-        const Real t228 = t219 * t35;
-        const Real t229 = t210 * t48;
-        const Real t230 = t216 * t48;
-        const Real t231 = std::fma(t208, t0, std::fma(t163, t4, std::fma(t163, t0, -t164)));
-        const Real t232 = std::fma(t208, t2, std::fma(t163, t9, std::fma(t163, t2, -t165)));
-        const Real t233 = std::fma(t231, t13, std::fma(t164, t26, std::fma(t164, t13, -t167)));
-        const Real t234 = std::fma(t208, t24, std::fma(t163, t32, std::fma(t163, t24, -t169)));
-        const Real t235 = std::fma(t231, t35, std::fma(t164, t52, std::fma(t164, t35, -t171)));
-        const Real t236 = std::fma(std::fma(t208, t13, std::fma(t163, t26, std::fma(t163, t13, -t168))), t35, std::fma(t168, t52, std::fma(t168, t35, -t172)));
-        const Real t237 = std::fma(t208, t51, std::fma(t163, t57, std::fma(t163, t51, -t173)));
-        const Real t238 = std::fma(Real(2), R, -t175);
-        const Real t239 = std::fma(t238, N_x, std::fma(t175, N_x, -t176));
-        const Real t240 = std::fma(t238, t0, std::fma(t175, t4, std::fma(t175, t0, -t177)));
-        const Real t241 = std::fma(t238, t1, std::fma(t175, t7, std::fma(t175, t1, -t178)));
-        const Real t242 = std::fma(t240, N_y, std::fma(t177, N_y, -t179));
-        const Real t243 = std::fma(t239, t13, std::fma(t176, t26, std::fma(t176, t13, -t181)));
-        const Real t244 = std::fma(t238, t22, std::fma(t175, t30, std::fma(t175, t22, -t183)));
-        const Real t245 = std::fma(t240, N_z, std::fma(t177, N_z, -t184));
-        const Real t246 = std::fma(std::fma(t238, t13, std::fma(t175, t26, std::fma(t175, t13, -t182))), N_z, std::fma(t182, N_z, -t185));
-        const Real t247 = std::fma(t239, t35, std::fma(t176, t52, std::fma(t176, t35, -t186)));
-        const Real t248 = std::fma(std::fma(t238, N_y, std::fma(t175, N_y, -t180)), t35, std::fma(t180, t52, std::fma(t180, t35, -t187)));
-        const Real t249 = std::fma(t238, t48, std::fma(t175, t56, std::fma(t175, t48, -t188)));
-        const Real t250 = std::fma(Real(2), t208, std::fma(Real(2), t163, -t209));
-        const Real t251 = std::fma(t250, N_x, std::fma(t209, N_x, -t210));
-        const Real t252 = std::fma(t250, t0, std::fma(t209, t4, std::fma(t209, t0, -t211)));
-        const Real t253 = std::fma(t250, t1, std::fma(t209, t7, std::fma(t209, t1, -t212)));
-        const Real t254 = N_x * w_y;
-        const Real t255 = N_y * w_y;
-        const Real t256 = N_z * w_y;
-        const Real t257 = t190 * w_y;
-        const Real t258 = t257 * t60;
-        const Real t259 = t257 * t62;
-        const Real t260 = t191 * w_y;
-        const Real t261 = t260 * t60;
-        const Real t262 = t260 * t62;
-        const Real t263 = t194 * w_y;
-        const Real t264 = t263 * t60;
-        const Real t265 = t263 * t62;
-        const Real t266 = t202 * w_y;
-        const Real t267 = t266 * t60;
-        const Real t268 = t266 * t62;
-        const Real t269 = t203 * w_y;
-        const Real t270 = t269 * t60;
-        const Real t271 = t269 * t62;
-        const Real t272 = t204 * w_y;
-        const Real t273 = t272 * t60;
-        const Real t274 = t272 * t62;
-        const Real t275 = t222 * w_y;
-        const Real t276 = t225 * w_y;
-        const Real t277 = t230 * w_y;
-        const Real t278 = w_y * w_y;
-        const Real t279 = t165 * t278;
-        const Real t280 = t166 * t278;
-        const Real t281 = t167 * t278;
-        const Real t282 = t172 * t278;
-        const Real t283 = t173 * t278;
-        const Real t284 = t174 * t278;
-        const Real t285 = t226 * t278;
-        const Real t286 = std::fma(w_y, w_y, -t278);
-        const Real t287 = N_y * w_x;
-        const Real t288 = N_x * w_x;
-        const Real t289 = N_z * w_x;
-        const Real t290 = t195 * w_x;
-        const Real t291 = t290 * t60;
-        const Real t292 = t290 * t62;
-        const Real t293 = t199 * w_x;
-        const Real t294 = t293 * t60;
-        const Real t295 = t293 * t62;
-        const Real t296 = t200 * w_x;
-        const Real t297 = t296 * t60;
-        const Real t298 = t296 * t62;
-        const Real t299 = t201 * w_x;
-        const Real t300 = t299 * t60;
-        const Real t301 = t299 * t62;
-        const Real t302 = t205 * w_x;
-        const Real t303 = t302 * t60;
-        const Real t304 = t302 * t62;
-        const Real t305 = t206 * w_x;
-        const Real t306 = t305 * t60;
-        const Real t307 = t305 * t62;
-        const Real t308 = t214 * w_x;
-        const Real t309 = t220 * w_x;
-        const Real t310 = t223 * w_x;
-        const Real t311 = t224 * w_x;
-        const Real t312 = t227 * w_x;
-        const Real t313 = t229 * w_x;
-        const Real t314 = t308 * w_y;
-        const Real t315 = t309 * w_y;
-        const Real t316 = t312 * w_y;
-        const Real t317 = t254 - t287;
-        const Real t318 = t317 - t254;
-        const Real t319 = w_x * w_x;
-        const Real t320 = t167 * t319;
-        const Real t321 = t169 * t319;
-        const Real t322 = t170 * t319;
-        const Real t323 = t171 * t319;
-        const Real t324 = t173 * t319;
-        const Real t325 = t174 * t319;
-        const Real t326 = t228 * t319;
-        const Real t327 = t320 + t281;
-        const Real t328 = std::fma(w_x, w_x, -t319);
-        const Real t329 = t327 - t320;
-        const Real t330 = t254 - (t317 - t318) - (t287 + t318) + (std::fma(N_x, w_y, -t254) - std::fma(N_y, w_x, -t287));
-        const Real t331 = t317 + t330;
-        const Real t332 = t160 * t331;
-        const Real t333 = t332 - t138;
-        const Real t334 = t320 - (t327 - t329) + (t281 - t329) + (std::fma(t233, t319, std::fma(t167, t328, std::fma(t167, t319, -t320))) + std::fma(t233, t278, std::fma(t167, t286, std::fma(t167, t278, -t281))));
-        const Real t335 = t327 + t334;
-        const Real t336 = std::fma(t160, t330 - (t331 - t317), std::fma(t160, t331, -t332));
-        const Real t337 = t333 - t332;
-        const Real t338 = t332 - (t333 - t337) - (t138 + t337);
-        const Real t339 = t338 + (std::fma(t207, t331, t336) - t143);
-        const Real t340 = t333 + t339;
-        const Real t341 = t340 + t113;
-        const Real t342 = t341 - t340;
-        const Real t343 = t340 - (t341 - t342) + (t113 - t342) + (t339 - (t340 - t333) + t132);
-        const Real t344 = t341 + t343;
-        const Real t345 = t343 - (t344 - t341);
-        const Real t346 = t344 * t344;
-        const Real t347 = N_x * w_z;
-        const Real t348 = N_y * w_z;
-        const Real t349 = N_z * w_z;
-        const Real t350 = t189 * w_z;
-        const Real t351 = t350 * t60;
-        const Real t352 = t350 * t62;
-        const Real t353 = t192 * w_z;
-        const Real t354 = t353 * t60;
-        const Real t355 = t353 * t62;
-        const Real t356 = t193 * w_z;
-        const Real t357 = t356 * t60;
-        const Real t358 = t356 * t62;
-        const Real t359 = t196 * w_z;
-        const Real t360 = t359 * t60;
-        const Real t361 = t359 * t62;
-        const Real t362 = t197 * w_z;
-        const Real t363 = t362 * t60;
-        const Real t364 = t362 * t62;
-        const Real t365 = t198 * w_z;
-        const Real t366 = t365 * t60;
-        const Real t367 = t365 * t62;
-        const Real t368 = t348 - t256;
-        const Real t369 = t275 * w_z;
-        const Real t370 = t276 * w_z;
-        const Real t371 = t277 * w_z;
-        const Real t372 = t347 - t289;
-        const Real t373 = t310 * w_z;
-        const Real t374 = t311 * w_z;
-        const Real t375 = t313 * w_z;
-        const Real t376 = t288 + t255 + t349;
-        const Real t377 = N_x * t376;
-        const Real t378 = N_y * t376;
-        const Real t379 = N_z * t376;
-        const Real t380 = w_z * w_z;
-        const Real t381 = t165 * t380;
-        const Real t382 = t166 * t380;
-        const Real t383 = t169 * t380;
-        const Real t384 = t170 * t380;
-        const Real t385 = t171 * t380;
-        const Real t386 = t172 * t380;
-        const Real t387 = t217 * t380;
-        const Real t388 = t335 + t387;
-        const Real t389 = t388 - t335;
-        const Real t390 = t372 - t347;
-        const Real t391 = t368 - t348;
-        const Real t392 = std::fma(w_z, w_z, -t380);
-        const Real t393 = t347 - (t372 - t390) - (t289 + t390) + (std::fma(N_x, w_z, -t347) - std::fma(N_z, w_x, -t289));
-        const Real t394 = t372 + t393;
-        const Real t395 = t160 * t394;
-        const Real t396 = t395 + t137;
-        const Real t397 = t348 - (t368 - t391) - (t256 + t391) + (std::fma(N_y, w_z, -t348) - std::fma(N_z, w_y, -t256));
-        const Real t398 = t368 + t397;
-        const Real t399 = t160 * t398;
-        const Real t400 = t399 - t136;
-        const Real t401 = std::sqrt(t327 + t387 - t369 + t323 + t285 + t385 - t314 - t373 + t280 + t382 - t374 - t315 - t316 - t375 + t326 + t282 + t386 - t370 + t322 + t384 - t371 + t325 + t284 + t351 - t300 - t258 + t291 - t360 + t267 - t363 + t270 - t366 + t273 - t261 + t294 + t354 - t303 + t357 - t306 - t264 + t297 + t76 + t101 + t127 - t119 + t79 + t102 + t130 - t95 - t115 + t100 + t126 - t116 - t96 - t97 - t117 + t80 + t103 + t131 - t120 + t78 + t129 - t121 + t82 + t105);
-        const Real t402 = t335 - (t388 - t389) + (t387 - t389) + (t334 - (t335 - t327) + std::fma(std::fma(t252, t13, std::fma(t211, t26, std::fma(t211, t13, -t217))), t380, std::fma(t217, t392, std::fma(t217, t380, -t387))));
-        const Real t403 = t388 + t402;
-        const Real t404 = t403 - t369;
-        const Real t405 = std::fma(t160, t393 - (t394 - t372), std::fma(t160, t394, -t395));
-        const Real t406 = t396 - t395;
-        const Real t407 = std::fma(t160, t397 - (t398 - t368), std::fma(t160, t398, -t399));
-        const Real t408 = t400 - t399;
-        const Real t409 = t404 - t403;
-        const Real t410 = t395 - (t396 - t406) + (t137 - t406);
-        const Real t411 = t410 + (std::fma(t207, t394, t405) + t142);
-        const Real t412 = t396 + t411;
-        const Real t413 = t412 - t91;
-        const Real t414 = t399 - (t400 - t408) - (t136 + t408);
-        const Real t415 = t414 + (std::fma(t207, t398, t407) - t141);
-        const Real t416 = t400 + t415;
-        const Real t417 = t416 + t74;
-        const Real t418 = t403 - (t404 - t409) - (t369 + t409) + (t402 - (t403 - t388) - std::fma(std::fma(std::fma(std::fma(t252, N_y, std::fma(t211, N_y, -t213)), N_z, std::fma(t213, N_z, -t222)), w_y, std::fma(t222, w_y, -t275)), w_z, std::fma(t275, w_z, -t369)));
-        const Real t419 = t404 + t418;
-        const Real t420 = t419 + t323;
-        const Real t421 = t413 - t412;
-        const Real t422 = t417 - t416;
-        const Real t423 = t420 - t419;
-        const Real t424 = t412 - (t413 - t421) - (t91 + t421) + (t411 - (t412 - t396) - t106);
-        const Real t425 = t413 + t424;
-        const Real t426 = t416 - (t417 - t422) + (t74 - t422) + (t415 - (t416 - t400) + t83);
-        const Real t427 = t417 + t426;
-        const Real t428 = t419 - (t420 - t423) + (t323 - t423) + (t418 - (t419 - t404) + std::fma(t235, t319, std::fma(t171, t328, std::fma(t171, t319, -t323))));
-        const Real t429 = t420 + t428;
-        const Real t430 = t429 + t285;
-        const Real t431 = t424 - (t425 - t413);
-        const Real t432 = t425 * t425;
-        const Real t433 = t346 + t432;
-        const Real t434 = t433 - t346;
-        const Real t435 = t426 - (t427 - t417);
-        const Real t436 = t427 * t427;
-        const Real t437 = t430 - t429;
-        const Real t438 = t429 - (t430 - t437) + (t285 - t437) + (t428 - (t429 - t420) + std::fma(std::fma(t252, t35, std::fma(t211, t52, std::fma(t211, t35, -t226))), t278, std::fma(t226, t286, std::fma(t226, t278, -t285))));
-        const Real t439 = t430 + t438;
-        const Real t440 = t439 + t385;
-        const Real t441 = t346 - (t433 - t434) + (t432 - t434) + (std::fma(t345, t344, std::fma(t344, t345, std::fma(t344, t344, -t346))) + std::fma(t431, t425, std::fma(t425, t431, std::fma(t425, t425, -t432))));
-        const Real t442 = t433 + t441;
-        const Real t443 = t442 + t436;
-        const Real t444 = t440 - t439;
-        const Real t445 = t443 - t442;
-        const Real t446 = t439 - (t440 - t444) + (t385 - t444) + (t438 - (t439 - t430) + std::fma(t235, t380, std::fma(t171, t392, std::fma(t171, t380, -t385))));
-        const Real t447 = t440 + t446;
-        const Real t448 = t447 - t314;
-        const Real t449 = t442 - (t443 - t445) + (t436 - t445) + (t441 - (t442 - t433) + std::fma(t435, t427, std::fma(t427, t435, std::fma(t427, t427, -t436))));
-        const Real t450 = t443 + t449;
-        const Real t451 = t158 * t450;
-        const Real t452 = t448 - t447;
-        const Real t453 = t447 - (t448 - t452) - (t314 + t452) + (t446 - (t447 - t440) - std::fma(std::fma(std::fma(t253, N_y, std::fma(t212, N_y, -t214)), w_x, std::fma(t214, w_x, -t308)), w_y, std::fma(t308, w_y, -t314)));
-        const Real t454 = t448 + t453;
-        const Real t455 = t454 - t373;
-        const Real t456 = t455 - t454;
-        const Real t457 = t454 - (t455 - t456) - (t373 + t456) + (t453 - (t454 - t448) - std::fma(std::fma(std::fma(t253, N_z, std::fma(t212, N_z, -t223)), w_x, std::fma(t223, w_x, -t310)), w_z, std::fma(t310, w_z, -t373)));
-        const Real t458 = t455 + t457;
-        const Real t459 = t458 + t279;
-        const Real t460 = t459 - t458;
-        const Real t461 = t458 - (t459 - t460) + (t279 - t460) + (t457 - (t458 - t455) + std::fma(t232, t278, std::fma(t165, t286, std::fma(t165, t278, -t279))));
-        const Real t462 = t459 + t461;
-        const Real t463 = t462 + t381;
-        const Real t464 = t463 - t462;
-        const Real t465 = t462 - (t463 - t464) + (t381 - t464) + (t461 - (t462 - t459) + std::fma(t232, t380, std::fma(t165, t392, std::fma(t165, t380, -t381))));
-        const Real t466 = t463 + t465;
-        const Real t467 = t466 - t374;
-        const Real t468 = t467 - t466;
-        const Real t469 = t466 - (t467 - t468) - (t374 + t468) + (t465 - (t466 - t463) - std::fma(std::fma(std::fma(std::fma(t251, t13, std::fma(t210, t26, std::fma(t210, t13, -t218))), N_z, std::fma(t218, N_z, -t224)), w_x, std::fma(t224, w_x, -t311)), w_z, std::fma(t311, w_z, -t374)));
-        const Real t470 = t467 + t469;
-        const Real t471 = t470 - t315;
-        const Real t472 = t471 - t470;
-        const Real t473 = t470 - (t471 - t472) - (t315 + t472) + (t469 - (t470 - t467) - std::fma(std::fma(std::fma(t251, t22, std::fma(t210, t30, std::fma(t210, t22, -t220))), w_x, std::fma(t220, w_x, -t309)), w_y, std::fma(t309, w_y, -t315)));
-        const Real t474 = t471 + t473;
-        const Real t475 = t474 - t316;
-        const Real t476 = t475 - t474;
-        const Real t477 = t474 - (t475 - t476) - (t316 + t476) + (t473 - (t474 - t471) - std::fma(std::fma(std::fma(std::fma(t251, N_y, std::fma(t210, N_y, -t215)), t35, std::fma(t215, t52, std::fma(t215, t35, -t227))), w_x, std::fma(t227, w_x, -t312)), w_y, std::fma(t312, w_y, -t316)));
-        const Real t478 = t475 + t477;
-        const Real t479 = t478 - t375;
-        const Real t480 = t479 - t478;
-        const Real t481 = t478 - (t479 - t480) - (t375 + t480) + (t477 - (t478 - t475) - std::fma(std::fma(std::fma(t251, t48, std::fma(t210, t56, std::fma(t210, t48, -t229))), w_x, std::fma(t229, w_x, -t313)), w_z, std::fma(t313, w_z, -t375)));
-        const Real t482 = t479 + t481;
-        const Real t483 = t482 + t326;
-        const Real t484 = t483 - t482;
-        const Real t485 = t482 - (t483 - t484) + (t326 - t484) + (t481 - (t482 - t479) + std::fma(std::fma(std::fma(t250, t13, std::fma(t209, t26, std::fma(t209, t13, -t219))), t35, std::fma(t219, t52, std::fma(t219, t35, -t228))), t319, std::fma(t228, t328, std::fma(t228, t319, -t326))));
-        const Real t486 = t483 + t485;
-        const Real t487 = t486 + t282;
-        const Real t488 = t487 - t486;
-        const Real t489 = t486 - (t487 - t488) + (t282 - t488) + (t485 - (t486 - t483) + std::fma(t236, t278, std::fma(t172, t286, std::fma(t172, t278, -t282))));
-        const Real t490 = t487 + t489;
-        const Real t491 = t490 + t386;
-        const Real t492 = t491 - t490;
-        const Real t493 = t490 - (t491 - t492) + (t386 - t492) + (t489 - (t490 - t487) + std::fma(t236, t380, std::fma(t172, t392, std::fma(t172, t380, -t386))));
-        const Real t494 = t491 + t493;
-        const Real t495 = t494 - t370;
-        const Real t496 = t495 - t494;
-        const Real t497 = t494 - (t495 - t496) - (t370 + t496) + (t493 - (t494 - t491) - std::fma(std::fma(std::fma(std::fma(t250, t22, std::fma(t209, t30, std::fma(t209, t22, -t221))), N_z, std::fma(t221, N_z, -t225)), w_y, std::fma(t225, w_y, -t276)), w_z, std::fma(t276, w_z, -t370)));
-        const Real t498 = t495 + t497;
-        const Real t499 = t498 + t321;
-        const Real t500 = t499 - t498;
-        const Real t501 = t498 - (t499 - t500) + (t321 - t500) + (t497 - (t498 - t495) + std::fma(t234, t319, std::fma(t169, t328, std::fma(t169, t319, -t321))));
-        const Real t502 = t499 + t501;
-        const Real t503 = t502 + t383;
-        const Real t504 = t503 - t502;
-        const Real t505 = t502 - (t503 - t504) + (t383 - t504) + (t501 - (t502 - t499) + std::fma(t234, t380, std::fma(t169, t392, std::fma(t169, t380, -t383))));
-        const Real t506 = t503 + t505;
-        const Real t507 = t506 - t371;
-        const Real t508 = t507 - t506;
-        const Real t509 = t506 - (t507 - t508) - (t371 + t508) + (t505 - (t506 - t503) - std::fma(std::fma(std::fma(std::fma(t250, N_y, std::fma(t209, N_y, -t216)), t48, std::fma(t216, t56, std::fma(t216, t48, -t230))), w_y, std::fma(t230, w_y, -t277)), w_z, std::fma(t277, w_z, -t371)));
-        const Real t510 = t507 + t509;
-        const Real t511 = t510 + t324;
-        const Real t512 = t511 - t510;
-        const Real t513 = t510 - (t511 - t512) + (t324 - t512) + (t509 - (t510 - t507) + std::fma(t237, t319, std::fma(t173, t328, std::fma(t173, t319, -t324))));
-        const Real t514 = t511 + t513;
-        const Real t515 = t514 + t283;
-        const Real t516 = t515 - t514;
-        const Real t517 = t514 - (t515 - t516) + (t283 - t516) + (t513 - (t514 - t511) + std::fma(t237, t278, std::fma(t173, t286, std::fma(t173, t278, -t283))));
-        const Real t518 = t515 + t517;
-        const Real t519 = t518 + t352;
-        const Real t520 = t519 - t518;
-        const Real t521 = mu * mu;
-        const Real t522 = mu * t144;
-        const Real t523 = t522 * t62;
-        const Real t524 = t523 * t135;
-        const Real t525 = t521 * t152;
-        const Real t526 = t525 * t147;
-        const Real t527 = t526 * t59;
-        const Real t528 = t527 * t140;
-        const Real t529 = t451 - t528;
-        const Real t530 = t529 - t451;
-        const Real t531 = t451 - (t529 - t530) - (t528 + t530) + (std::fma(std::fma(std::fma(q, q, -t149), t157, std::fma(t149, std::fma(t159, t154, std::fma(t154, t159, std::fma(t154, t154, -t157))), std::fma(t149, t157, -t158))), t450, std::fma(t158, t449 - (t450 - t443), std::fma(t158, t450, -t451))) - std::fma(std::fma(std::fma(std::fma(std::fma(mu, mu, -t521), t152, std::fma(t521, std::fma(t153, t150, std::fma(t150, t153, std::fma(t150, t150, -t152))), std::fma(t521, t152, -t525))), t147, std::fma(t525, std::fma(t148, t144, std::fma(t144, t148, std::fma(t144, t144, -t147))), std::fma(t525, t147, -t526))), t59, std::fma(t526, t61, std::fma(t526, t59, -t527))), t140, std::fma(t527, std::fma(t139, t135, std::fma(t135, t139, std::fma(t135, t135, -t140))), std::fma(t527, t140, -t528))));
-        const Real t532 = t529 + t531;
-        const Real t533 = t532 + (t531 - (t532 - t529));
-        const Real t534 = detail::blend(t533 > Real(0), t64, Real(1));
-        const Real t535 = detail::blend(t533 > Real(0), Real(1), t150);
-        const Real t536 = detail::blend(t533 > Real(0), t401, Real(1));
-        const Real t537 = detail::blend(t533 > Real(0), t401 + t401, Real(1));
-        const std::int64_t usable = resolved & (std::fabs(t40) >= detail::smallest_divisor<Real>) & (std::fabs(t40) <= std::numeric_limits<Real>::max()) & (std::fabs(t59) >= detail::smallest_divisor<Real>) & (std::fabs(t59) <= std::numeric_limits<Real>::max()) & (std::fabs(t534) >= detail::smallest_divisor<Real>) & (std::fabs(t534) <= std::numeric_limits<Real>::max()) & (std::fabs(t64) >= detail::smallest_divisor<Real>) & (std::fabs(t64) <= std::numeric_limits<Real>::max()) & (std::fabs(t535) >= detail::smallest_divisor<Real>) & (std::fabs(t535) <= std::numeric_limits<Real>::max()) & (std::fabs(t536) >= detail::smallest_divisor<Real>) & (std::fabs(t536) <= std::numeric_limits<Real>::max()) & (std::fabs(t537) >= detail::smallest_divisor<Real>) & (std::fabs(t537) <= std::numeric_limits<Real>::max()) & (std::fabs(t162) >= detail::smallest_divisor<Real>) & (std::fabs(t162) <= std::numeric_limits<Real>::max()) & (std::fabs(q) >= detail::smallest_divisor<Real>) & (std::fabs(q) <= std::numeric_limits<Real>::max());
-        const Real t538 = t377 / detail::blend(usable, t40, Real(1));
-        const Real t539 = t378 / detail::blend(usable, t40, Real(1));
-        const Real t540 = t379 / detail::blend(usable, t40, Real(1));
-        const Real t541 = t145 / detail::blend(usable, t59, Real(1));
-        const Real t542 = t63 / detail::blend(usable, t534, Real(1));
-        const Real t543 = t155 / detail::blend(usable, t535, Real(1));
-        const Real t544 = std::fma(R, t63 / detail::blend(usable, t64, Real(1)), t207);
-        const Real t545 = t539 - w_y;
-        const Real t546 = t538 - w_x;
-        const Real t547 = t338 + (std::fma(t544, t331, t336) - t143);
-        const Real t548 = t333 + t547;
-        const Real t549 = t548 + t113;
-        const Real t550 = t540 - w_z;
-        const Real t551 = t410 + (std::fma(t544, t394, t405) + t142);
-        const Real t552 = t396 + t551;
-        const Real t553 = t552 - t91;
-        const Real t554 = t414 + (std::fma(t544, t398, t407) - t141);
-        const Real t555 = t400 + t554;
-        const Real t556 = t555 + t74;
-        const Real t557 = t518 - (t519 - t520) + (t352 - t520) + (t517 - (t518 - t515) + std::fma(std::fma(std::fma(t242, v_x, std::fma(t179, v_x, -t189)), w_z, std::fma(t189, w_z, -t350)), t62, std::fma(t350, t542, std::fma(t350, t62, -t352))));
-        const Real t558 = t519 + t557;
-        const Real t559 = t558 - t301;
-        const Real t560 = t524 / detail::blend(usable, t536, Real(1));
-        const Real t561 = -t541;
-        const Real t562 = -t543;
-        const Real t563 = t549 - t548;
-        const Real t564 = t553 - t552;
-        const Real t565 = t556 - t555;
-        const Real t566 = t559 - t558;
-        const Real t567 = -t560;
-        const Real t568 = t561 + -(std::fma(t561, t61, std::fma(t561, t59, t145) + std::fma(t148, t135, std::fma(t144, t139, std::fma(t144, t135, -t145)))) / detail::blend(usable, t59, Real(1)));
-        const Real t569 = N_x * t568;
-        const Real t570 = N_y * t568;
-        const Real t571 = N_z * t568;
-        const Real t572 = t548 - (t549 - t563) + (t113 - t563) + (t547 - (t548 - t333) + t132);
-        const Real t573 = t549 + t572;
-        const Real t574 = t573 / detail::blend(usable, t59, Real(1));
-        const Real t575 = t552 - (t553 - t564) - (t91 + t564) + (t551 - (t552 - t396) - t106);
-        const Real t576 = t553 + t575;
-        const Real t577 = t576 / detail::blend(usable, t59, Real(1));
-        const Real t578 = t555 - (t556 - t565) + (t74 - t565) + (t554 - (t555 - t400) + t83);
-        const Real t579 = t556 + t578;
-        const Real t580 = t579 / detail::blend(usable, t59, Real(1));
-        const Real t581 = t558 - (t559 - t566) - (t301 + t566) + (t557 - (t558 - t519) - std::fma(std::fma(std::fma(t242, v_z, std::fma(t179, v_z, -t201)), w_x, std::fma(t201, w_x, -t299)), t62, std::fma(t299, t542, std::fma(t299, t62, -t301))));
-        const Real t582 = t559 + t581;
-        const Real t583 = t582 - t259;
-        const Real t584 = -t574;
-        const Real t585 = -t577;
-        const Real t586 = -t580;
-        const Real t587 = t583 - t582;
-        const Real t588 = t577 + std::fma(t585, t61, std::fma(t585, t59, t576) + (t575 - (t576 - t553))) / detail::blend(usable, t59, Real(1));
-        const Real t589 = t582 - (t583 - t587) - (t259 + t587) + (t581 - (t582 - t559) - std::fma(std::fma(std::fma(t245, v_x, std::fma(t184, v_x, -t190)), w_y, std::fma(t190, w_y, -t257)), t62, std::fma(t257, t542, std::fma(t257, t62, -t259))));
-        const Real t590 = t583 + t589;
-        const Real t591 = t590 + t292;
-        const Real t592 = t584 + -(std::fma(t584, t61, std::fma(t584, t59, t573) + (t572 - (t573 - t549))) / detail::blend(usable, t59, Real(1)));
-        const Real t593 = t586 + -(std::fma(t586, t61, std::fma(t586, t59, t579) + (t578 - (t579 - t556))) / detail::blend(usable, t59, Real(1)));
-        const Real t594 = t591 - t590;
-        const Real t595 = t590 - (t591 - t594) + (t292 - t594) + (t589 - (t590 - t583) + std::fma(std::fma(std::fma(t245, v_y, std::fma(t184, v_y, -t195)), w_x, std::fma(t195, w_x, -t290)), t62, std::fma(t290, t542, std::fma(t290, t62, -t292))));
-        const Real t596 = t591 + t595;
-        const Real t597 = t596 - t361;
-        const Real t598 = t597 - t596;
-        const Real t599 = t596 - (t597 - t598) - (t361 + t598) + (t595 - (t596 - t591) - std::fma(std::fma(std::fma(t241, v_y, std::fma(t178, v_y, -t196)), w_z, std::fma(t196, w_z, -t359)), t62, std::fma(t359, t542, std::fma(t359, t62, -t361))));
-        const Real t600 = t597 + t599;
-        const Real t601 = t600 + t268;
-        const Real t602 = t601 - t600;
-        const Real t603 = t600 - (t601 - t602) + (t268 - t602) + (t599 - (t600 - t597) + std::fma(std::fma(std::fma(t241, v_z, std::fma(t178, v_z, -t202)), w_y, std::fma(t202, w_y, -t266)), t62, std::fma(t266, t542, std::fma(t266, t62, -t268))));
-        const Real t604 = t601 + t603;
-        const Real t605 = t604 - t364;
-        const Real t606 = t605 - t604;
-        const Real t607 = t604 - (t605 - t606) - (t364 + t606) + (t603 - (t604 - t601) - std::fma(std::fma(std::fma(t243, v_y, std::fma(t181, v_y, -t197)), w_z, std::fma(t197, w_z, -t362)), t62, std::fma(t362, t542, std::fma(t362, t62, -t364))));
-        const Real t608 = t605 + t607;
-        const Real t609 = t608 + t271;
-        const Real t610 = t609 - t608;
-        const Real t611 = t608 - (t609 - t610) + (t271 - t610) + (t607 - (t608 - t605) + std::fma(std::fma(std::fma(t243, v_z, std::fma(t181, v_z, -t203)), w_y, std::fma(t203, w_y, -t269)), t62, std::fma(t269, t542, std::fma(t269, t62, -t271))));
-        const Real t612 = t609 + t611;
-        const Real t613 = t612 - t367;
-        const Real t614 = t613 - t612;
-        const Real t615 = t612 - (t613 - t614) - (t367 + t614) + (t611 - (t612 - t609) - std::fma(std::fma(std::fma(t247, v_y, std::fma(t186, v_y, -t198)), w_z, std::fma(t198, w_z, -t365)), t62, std::fma(t365, t542, std::fma(t365, t62, -t367))));
-        const Real t616 = t613 + t615;
-        const Real t617 = t616 + t274;
-        const Real t618 = t617 - t616;
-        const Real t619 = t616 - (t617 - t618) + (t274 - t618) + (t615 - (t616 - t613) + std::fma(std::fma(std::fma(t247, v_z, std::fma(t186, v_z, -t204)), w_y, std::fma(t204, w_y, -t272)), t62, std::fma(t272, t542, std::fma(t272, t62, -t274))));
-        const Real t620 = t617 + t619;
-        const Real t621 = t620 - t262;
-        const Real t622 = t621 - t620;
-        const Real t623 = t620 - (t621 - t622) - (t262 + t622) + (t619 - (t620 - t617) - std::fma(std::fma(std::fma(t246, v_x, std::fma(t185, v_x, -t191)), w_y, std::fma(t191, w_y, -t260)), t62, std::fma(t260, t542, std::fma(t260, t62, -t262))));
-        const Real t624 = t621 + t623;
-        const Real t625 = t624 + t295;
-        const Real t626 = t625 - t624;
-        const Real t627 = t624 - (t625 - t626) + (t295 - t626) + (t623 - (t624 - t621) + std::fma(std::fma(std::fma(t246, v_y, std::fma(t185, v_y, -t199)), w_x, std::fma(t199, w_x, -t293)), t62, std::fma(t293, t542, std::fma(t293, t62, -t295))));
-        const Real t628 = t625 + t627;
-        const Real t629 = t628 + t355;
-        const Real t630 = t629 - t628;
-        const Real t631 = t628 - (t629 - t630) + (t355 - t630) + (t627 - (t628 - t625) + std::fma(std::fma(std::fma(t244, v_x, std::fma(t183, v_x, -t192)), w_z, std::fma(t192, w_z, -t353)), t62, std::fma(t353, t542, std::fma(t353, t62, -t355))));
-        const Real t632 = t629 + t631;
-        const Real t633 = t632 - t304;
-        const Real t634 = t633 - t632;
-        const Real t635 = t632 - (t633 - t634) - (t304 + t634) + (t631 - (t632 - t629) - std::fma(std::fma(std::fma(t244, v_z, std::fma(t183, v_z, -t205)), w_x, std::fma(t205, w_x, -t302)), t62, std::fma(t302, t542, std::fma(t302, t62, -t304))));
-        const Real t636 = t633 + t635;
-        const Real t637 = t636 + t358;
-        const Real t638 = t637 - t636;
-        const Real t639 = t636 - (t637 - t638) + (t358 - t638) + (t635 - (t636 - t633) + std::fma(std::fma(std::fma(t248, v_x, std::fma(t187, v_x, -t193)), w_z, std::fma(t193, w_z, -t356)), t62, std::fma(t356, t542, std::fma(t356, t62, -t358))));
-        const Real t640 = t637 + t639;
-        const Real t641 = t640 - t307;
-        const Real t642 = t641 - t640;
-        const Real t643 = t640 - (t641 - t642) - (t307 + t642) + (t639 - (t640 - t637) - std::fma(std::fma(std::fma(t248, v_z, std::fma(t187, v_z, -t206)), w_x, std::fma(t206, w_x, -t305)), t62, std::fma(t305, t542, std::fma(t305, t62, -t307))));
-        const Real t644 = t641 + t643;
-        const Real t645 = t644 - t265;
-        const Real t646 = t645 - t644;
-        const Real t647 = t644 - (t645 - t646) - (t265 + t646) + (t643 - (t644 - t641) - std::fma(std::fma(std::fma(t249, v_x, std::fma(t188, v_x, -t194)), w_y, std::fma(t194, w_y, -t263)), t62, std::fma(t263, t542, std::fma(t263, t62, -t265))));
-        const Real t648 = t645 + t647;
-        const Real t649 = t648 + t298;
-        const Real t650 = t649 - t648;
-        const Real t651 = t648 - (t649 - t650) + (t298 - t650) + (t647 - (t648 - t645) + std::fma(std::fma(std::fma(t249, v_y, std::fma(t188, v_y, -t200)), w_x, std::fma(t200, w_x, -t296)), t62, std::fma(t296, t542, std::fma(t296, t62, -t298))));
-        const Real t652 = t649 + t651;
-        const Real t653 = t652 + t76;
-        const Real t654 = t653 - t652;
-        const Real t655 = t652 - (t653 - t654) + (t76 - t654) + (t651 - (t652 - t649) + std::fma(t29, t75, std::fma(t16, t84, std::fma(t16, t75, -t76))));
-        const Real t656 = t653 + t655;
-        const Real t657 = t656 + t101;
-        const Real t658 = t657 - t656;
-        const Real t659 = t656 - (t657 - t658) + (t101 - t658) + (t655 - (t656 - t653) + std::fma(t29, t98, std::fma(t16, t107, std::fma(t16, t98, -t101))));
-        const Real t660 = t657 + t659;
-        const Real t661 = t660 + t127;
-        const Real t662 = t661 - t660;
-        const Real t663 = t660 - (t661 - t662) + (t127 - t662) + (t659 - (t660 - t657) + std::fma(std::fma(t11, t13, std::fma(t5, t26, std::fma(t5, t13, -t19))), t124, std::fma(t19, t133, std::fma(t19, t124, -t127))));
-        const Real t664 = t661 + t663;
-        const Real t665 = t664 - t119;
-        const Real t666 = t665 - t664;
-        const Real t667 = t664 - (t665 - t666) - (t119 + t666) + (t663 - (t664 - t661) - std::fma(std::fma(std::fma(std::fma(t11, N_y, std::fma(t5, N_y, -t20)), N_z, std::fma(t20, N_z, -t43)), v_y, std::fma(t43, v_y, -t88)), v_z, std::fma(t88, v_z, -t119)));
-        const Real t668 = t665 + t667;
-        const Real t669 = t668 + t79;
-        const Real t670 = t669 - t668;
-        const Real t671 = t668 - (t669 - t670) + (t79 - t670) + (t667 - (t668 - t665) + std::fma(t54, t75, std::fma(t36, t84, std::fma(t36, t75, -t79))));
-        const Real t672 = t669 + t671;
-        const Real t673 = t672 + t102;
-        const Real t674 = t673 - t672;
-        const Real t675 = t672 - (t673 - t674) + (t102 - t674) + (t671 - (t672 - t669) + std::fma(std::fma(t11, t35, std::fma(t5, t52, std::fma(t5, t35, -t37))), t98, std::fma(t37, t107, std::fma(t37, t98, -t102))));
-        const Real t676 = t673 + t675;
-        const Real t677 = t676 + t130;
-        const Real t678 = t677 - t676;
-        const Real t679 = t676 - (t677 - t678) + (t130 - t678) + (t675 - (t676 - t673) + std::fma(t54, t124, std::fma(t36, t133, std::fma(t36, t124, -t130))));
-        const Real t680 = t677 + t679;
-        const Real t681 = t680 - t95;
-        const Real t682 = t681 - t680;
-        const Real t683 = t680 - (t681 - t682) - (t95 + t682) + (t679 - (t680 - t677) - std::fma(std::fma(std::fma(t12, N_y, std::fma(t8, N_y, -t21)), v_x, std::fma(t21, v_x, -t67)), v_y, std::fma(t67, v_y, -t95)));
-        const Real t684 = t681 + t683;
-        const Real t685 = t684 - t115;
-        const Real t686 = t685 - t684;
-        const Real t687 = t684 - (t685 - t686) - (t115 + t686) + (t683 - (t684 - t681) - std::fma(std::fma(std::fma(t12, N_z, std::fma(t8, N_z, -t38)), v_x, std::fma(t38, v_x, -t70)), v_z, std::fma(t70, v_z, -t115)));
-        const Real t688 = t685 + t687;
-        const Real t689 = t688 + t99;
-        const Real t690 = t689 - t688;
-        const Real t691 = t688 - (t689 - t690) + (t99 - t690) + (t687 - (t688 - t685) + std::fma(t9, t98, std::fma(t2, t107, std::fma(t2, t98, -t99))));
-        const Real t692 = t689 + t691;
-        const Real t693 = t692 + t125;
-        const Real t694 = t693 - t692;
-        const Real t695 = t692 - (t693 - t694) + (t125 - t694) + (t691 - (t692 - t689) + std::fma(t9, t124, std::fma(t2, t133, std::fma(t2, t124, -t125))));
-        const Real t696 = t693 + t695;
-        const Real t697 = t696 - t116;
-        const Real t698 = t697 - t696;
-        const Real t699 = t696 - (t697 - t698) - (t116 + t698) + (t695 - (t696 - t693) - std::fma(std::fma(std::fma(std::fma(t10, t13, std::fma(t3, t26, std::fma(t3, t13, -t17))), N_z, std::fma(t17, N_z, -t41)), v_x, std::fma(t41, v_x, -t71)), v_z, std::fma(t71, v_z, -t116)));
-        const Real t700 = t697 + t699;
-        const Real t701 = t700 - t96;
-        const Real t702 = t701 - t700;
-        const Real t703 = t700 - (t701 - t702) - (t96 + t702) + (t699 - (t700 - t697) - std::fma(std::fma(std::fma(t10, t22, std::fma(t3, t30, std::fma(t3, t22, -t23))), v_x, std::fma(t23, v_x, -t68)), v_y, std::fma(t68, v_y, -t96)));
-        const Real t704 = t701 + t703;
-        const Real t705 = t704 - t97;
-        const Real t706 = t705 - t704;
-        const Real t707 = t704 - (t705 - t706) - (t97 + t706) + (t703 - (t704 - t701) - std::fma(std::fma(std::fma(std::fma(t10, N_y, std::fma(t3, N_y, -t18)), t35, std::fma(t18, t52, std::fma(t18, t35, -t42))), v_x, std::fma(t42, v_x, -t72)), v_y, std::fma(t72, v_y, -t97)));
-        const Real t708 = t705 + t707;
-        const Real t709 = t708 - t117;
-        const Real t710 = t709 - t708;
-        const Real t711 = t708 - (t709 - t710) - (t117 + t710) + (t707 - (t708 - t705) - std::fma(std::fma(std::fma(t10, t48, std::fma(t3, t56, std::fma(t3, t48, -t49))), v_x, std::fma(t49, v_x, -t73)), v_z, std::fma(t73, v_z, -t117)));
-        const Real t712 = t709 + t711;
-        const Real t713 = t712 + t80;
-        const Real t714 = t713 - t712;
-        const Real t715 = t712 - (t713 - t714) + (t80 - t714) + (t711 - (t712 - t709) + std::fma(std::fma(std::fma(Real(2), t26, std::fma(Real(2), t13, -t27)), t35, std::fma(t27, t52, std::fma(t27, t35, -t44))), t75, std::fma(t44, t84, std::fma(t44, t75, -t80))));
-        const Real t716 = t713 + t715;
-        const Real t717 = t716 + t103;
-        const Real t718 = t717 - t716;
-        const Real t719 = t716 - (t717 - t718) + (t103 - t718) + (t715 - (t716 - t713) + std::fma(t55, t98, std::fma(t39, t107, std::fma(t39, t98, -t103))));
-        const Real t720 = t717 + t719;
-        const Real t721 = t720 + t131;
-        const Real t722 = t721 - t720;
-        const Real t723 = t720 - (t721 - t722) + (t131 - t722) + (t719 - (t720 - t717) + std::fma(t55, t124, std::fma(t39, t133, std::fma(t39, t124, -t131))));
-        const Real t724 = t721 + t723;
-        const Real t725 = t724 - t120;
-        const Real t726 = t725 - t724;
-        const Real t727 = t724 - (t725 - t726) - (t120 + t726) + (t723 - (t724 - t721) - std::fma(std::fma(std::fma(std::fma(Real(2), t30, std::fma(Real(2), t22, -t31)), N_z, std::fma(t31, N_z, -t45)), v_y, std::fma(t45, v_y, -t89)), v_z, std::fma(t89, v_z, -t120)));
-        const Real t728 = t725 + t727;
-        const Real t729 = t728 + t77;
-        const Real t730 = t729 - t728;
-        const Real t731 = t728 - (t729 - t730) + (t77 - t730) + (t727 - (t728 - t725) + std::fma(t32, t75, std::fma(t24, t84, std::fma(t24, t75, -t77))));
-        const Real t732 = t729 + t731;
-        const Real t733 = t732 + t128;
-        const Real t734 = t733 - t732;
-        const Real t735 = t732 - (t733 - t734) + (t128 - t734) + (t731 - (t732 - t729) + std::fma(t32, t124, std::fma(t24, t133, std::fma(t24, t124, -t128))));
-        const Real t736 = t733 + t735;
-        const Real t737 = t736 - t121;
-        const Real t738 = t737 - t736;
-        const Real t739 = t736 - (t737 - t738) - (t121 + t738) + (t735 - (t736 - t733) - std::fma(std::fma(std::fma(std::fma(Real(2), N_y, -t25), t48, std::fma(t25, t56, std::fma(t25, t48, -t50))), v_y, std::fma(t50, v_y, -t90)), v_z, std::fma(t90, v_z, -t121)));
-        const Real t740 = t737 + t739;
-        const Real t741 = t740 + t81;
-        const Real t742 = t741 - t740;
-        const Real t743 = t740 - (t741 - t742) + (t81 - t742) + (t739 - (t740 - t737) + std::fma(t57, t75, std::fma(t51, t84, std::fma(t51, t75, -t81))));
-        const Real t744 = t741 + t743;
-        const Real t745 = t744 + t104;
-        const Real t746 = t745 - t744;
-        const Real t747 = t744 - (t745 - t746) + (t104 - t746) + (t743 - (t744 - t741) + std::fma(t57, t98, std::fma(t51, t107, std::fma(t51, t98, -t104))));
-        const Real t748 = t745 + t747;
-        const Real t749 = std::sqrt(detail::blend(usable, t748, Real(0)));
-        const Real t750 = detail::blend(t533 > Real(0), t567, t543) + detail::blend(t533 > Real(0), -(std::fma(t567, (std::fma(-t749, t749, t748) + (t747 - (t748 - t745))) / detail::blend(usable, t537, Real(1)), std::fma(t567, t749, t524) + std::fma(std::fma(std::fma(mu, t148, std::fma(mu, t144, -t522)), t62, std::fma(t522, t542, std::fma(t522, t62, -t523))), t135, std::fma(t523, t139, std::fma(t523, t135, -t524)))) / detail::blend(usable, t536, Real(1))), std::fma(t562, t153, std::fma(t562, t150, t155) + std::fma(q, t159, std::fma(q, t154, -t155))) / detail::blend(usable, t535, Real(1)));
-        const Real t751 = t750 * t94;
-        const Real t752 = t750 * t114;
-        const Real t753 = t750 * t118;
-        const Real t754 = t753 / detail::blend(usable, t162, Real(1));
-        const Real t755 = t752 / detail::blend(usable, t162, Real(1));
-        const Real t756 = t751 / detail::blend(usable, t162, Real(1));
-        const Real t757 = t750 * t545;
-        const Real t758 = t757 / detail::blend(usable, q, Real(1));
-        const Real t759 = t750 * t546;
-        const Real t760 = t759 / detail::blend(usable, q, Real(1));
-        const Real t761 = t750 * t550;
-        const Real t762 = t761 / detail::blend(usable, q, Real(1));
-        const Real t763 = t750 * t588;
-        const Real t764 = t750 * t592;
-        const Real t765 = t750 * t593;
-        const Real v_x_out = t569 + v_x + t765;
-        const Real v_y_out = t570 + v_y + t763;
-        const Real v_z_out = t571 + v_z + t764;
-        const Real w_x_out = w_x + t760 + t754;
-        const Real w_y_out = w_y - t755 + t758;
-        const Real w_z_out = w_z + t756 + t762;
-        const Real finite0 = detail::zero_if_finite(v_x_out, v_y_out);
-        const Real finite1 = detail::zero_if_finite(v_z_out, w_x_out);
-        const Real finite2 = detail::zero_if_finite(w_y_out, w_z_out);
-        const Real finite3 = finite0 + finite1;
-        const Real finite4 = finite3 + finite2;
-        const std::int64_t finite = (finite4 == Real(0));
-        std::int64_t doubtful = 0;
-        if constexpr (collide_wall_rough_batch_3d_fast_k<Real> >= 0) {
-            constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_rough_batch_3d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_rough_batch_3d_fast_k<Real>);
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(R, lowest), detail::magnitude_or(q, lowest)), detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest))), detail::least(detail::least(detail::magnitude_or(N_z, lowest), detail::magnitude_or(v_x, lowest)), detail::least(detail::magnitude_or(v_y, lowest), detail::magnitude_or(v_z, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(w_x, lowest), detail::magnitude_or(w_y, lowest)), detail::least(detail::magnitude_or(w_z, lowest), detail::magnitude_or(eps, lowest))), detail::least(detail::magnitude_or(b, lowest), detail::magnitude_or(mu, lowest)))), lowest) & detail::at_most(detail::most(detail::most(detail::most(detail::most(std::fabs(R), std::fabs(q)), detail::most(std::fabs(N_x), std::fabs(N_y))), detail::most(detail::most(std::fabs(N_z), std::fabs(v_x)), detail::most(std::fabs(v_y), std::fabs(v_z)))), detail::most(detail::most(detail::most(std::fabs(w_x), std::fabs(w_y)), detail::most(std::fabs(w_z), std::fabs(eps))), detail::most(std::fabs(b), std::fabs(mu)))), highest));
-        }
-        if constexpr (collide_wall_rough_batch_3d_fast_k<Real> < 0)
-            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_x))), detail::least(detail::most(std::fabs(t2), detail::zero_as_min(N_x)), detail::most(std::fabs(t3), detail::zero_as_min(N_x)))), detail::least(detail::least(std::fabs(t5), std::fabs(t6)), detail::least(std::fabs(t8), detail::most(std::fabs(t13), detail::zero_as_min(N_y))))), detail::least(detail::least(detail::least(std::fabs(t16), std::fabs(t17)), detail::least(detail::most(std::fabs(t18), detail::zero_as_min(N_y)), std::fabs(t19))), detail::least(detail::least(detail::most(std::fabs(t20), detail::zero_as_min(N_y)), detail::most(std::fabs(t21), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t22), detail::zero_as_min(N_y)), std::fabs(t23))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t24), detail::zero_as_min(N_y)), detail::most(std::fabs(t25), detail::zero_as_min(N_y))), detail::least(std::fabs(t27), std::fabs(t28))), detail::least(detail::least(std::fabs(t31), detail::most(std::fabs(t35), detail::zero_as_min(N_z))), detail::least(std::fabs(t36), std::fabs(t37)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t38), detail::zero_as_min(N_z)), std::fabs(t39)), detail::least(detail::most(std::fabs(t41), detail::zero_as_min(N_z)), std::fabs(t42))), detail::least(detail::least(detail::most(std::fabs(t43), detail::zero_as_min(N_z)), std::fabs(t44)), detail::least(detail::most(std::fabs(t45), detail::zero_as_min(N_z)), detail::most(std::fabs(t48), detail::zero_as_min(N_z))))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t49), std::fabs(t50)), detail::least(detail::most(std::fabs(t51), detail::zero_as_min(N_z)), std::fabs(t53))), detail::least(detail::least(detail::most(detail::most(std::fabs(t65), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t66), detail::zero_as_min(N_y)), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t67), detail::zero_as_min(v_x)), detail::most(std::fabs(t68), detail::zero_as_min(v_x))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t69), detail::zero_as_min(N_z)), detail::zero_as_min(v_x)), detail::most(std::fabs(t70), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t71), detail::zero_as_min(v_x)), detail::most(std::fabs(t72), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(std::fabs(t73), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t74), detail::zero_as_min(v_x)), detail::zero_as_min(t59))), detail::least(detail::most(std::fabs(t75), detail::zero_as_min(v_x)), std::fabs(t76))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t77), std::fabs(t78)), detail::least(std::fabs(t79), std::fabs(t80))), detail::least(detail::least(std::fabs(t81), std::fabs(t82)), detail::least(detail::most(detail::most(std::fabs(t85), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)), detail::most(detail::most(std::fabs(t86), detail::zero_as_min(N_x)), detail::zero_as_min(v_y))))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t87), detail::zero_as_min(N_z)), detail::zero_as_min(v_y)), detail::most(std::fabs(t88), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t89), detail::zero_as_min(v_y)), detail::most(std::fabs(t90), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t91), detail::zero_as_min(v_y)), detail::zero_as_min(t59)), detail::most(std::fabs(t95), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t96), detail::zero_as_min(v_y)), detail::most(std::fabs(t97), detail::zero_as_min(v_y)))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t98), detail::zero_as_min(v_y)), std::fabs(t99)), detail::least(std::fabs(t100), std::fabs(t101))), detail::least(detail::least(std::fabs(t102), std::fabs(t103)), detail::least(std::fabs(t104), std::fabs(t105)))), detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t110), detail::zero_as_min(N_z)), detail::zero_as_min(v_z)), detail::most(detail::most(std::fabs(t111), detail::zero_as_min(N_x)), detail::zero_as_min(v_z))), detail::least(detail::most(detail::most(std::fabs(t112), detail::zero_as_min(N_y)), detail::zero_as_min(v_z)), detail::most(detail::most(std::fabs(t113), detail::zero_as_min(v_z)), detail::zero_as_min(t59)))), detail::least(detail::least(detail::most(std::fabs(t115), detail::zero_as_min(v_z)), detail::most(std::fabs(t116), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t117), detail::zero_as_min(v_z)), detail::most(std::fabs(t119), detail::zero_as_min(v_z)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t120), detail::zero_as_min(v_z)), detail::most(std::fabs(t121), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t124), detail::zero_as_min(v_z)), std::fabs(t125))), detail::least(detail::least(std::fabs(t126), std::fabs(t127)), detail::least(std::fabs(t128), std::fabs(t129)))), detail::least(detail::least(detail::least(std::fabs(t130), std::fabs(t131)), detail::least(detail::most(detail::most(std::fabs(t136), detail::zero_as_min(N_x)), detail::zero_as_min(t135)), detail::most(detail::most(std::fabs(t137), detail::zero_as_min(N_y)), detail::zero_as_min(t135)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t138), detail::zero_as_min(N_z)), detail::zero_as_min(t135)), detail::most(std::fabs(t140), detail::zero_as_min(t135))), detail::least(detail::most(detail::most(std::fabs(t145), detail::zero_as_min(t144)), detail::zero_as_min(t135)), detail::most(std::fabs(t147), detail::zero_as_min(t144))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t149), detail::zero_as_min(q)), detail::most(std::fabs(t152), detail::zero_as_min(t150))), detail::least(detail::most(detail::most(std::fabs(t155), detail::zero_as_min(q)), detail::zero_as_min(t154)), detail::most(std::fabs(t157), detail::zero_as_min(t154)))), detail::least(detail::least(std::fabs(t158), detail::most(std::fabs(t160), detail::zero_as_min(R))), detail::least(detail::most(detail::most(std::fabs(t161), detail::zero_as_min(R)), detail::zero_as_min(q)), std::fabs(t162)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t163), detail::zero_as_min(R)), std::fabs(t164)), detail::least(std::fabs(t165), std::fabs(t166))), detail::least(detail::least(std::fabs(t167), std::fabs(t168)), detail::least(std::fabs(t169), std::fabs(t170))))), detail::least(detail::least(detail::least(detail::least(std::fabs(t171), std::fabs(t172)), detail::least(std::fabs(t173), std::fabs(t174))), detail::least(detail::least(detail::most(std::fabs(t175), detail::zero_as_min(R)), detail::most(std::fabs(t176), detail::zero_as_min(N_x))), detail::least(std::fabs(t177), std::fabs(t178)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t179), detail::zero_as_min(N_y)), detail::most(std::fabs(t180), detail::zero_as_min(N_y))), detail::least(std::fabs(t181), std::fabs(t182))), detail::least(detail::least(std::fabs(t183), detail::most(std::fabs(t184), detail::zero_as_min(N_z))), detail::least(detail::most(std::fabs(t185), detail::zero_as_min(N_z)), std::fabs(t186)))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t187), std::fabs(t188)), detail::least(detail::most(std::fabs(t189), detail::zero_as_min(v_x)), detail::most(std::fabs(t190), detail::zero_as_min(v_x)))), detail::least(detail::least(detail::most(std::fabs(t191), detail::zero_as_min(v_x)), detail::most(std::fabs(t192), detail::zero_as_min(v_x))), detail::least(detail::most(std::fabs(t193), detail::zero_as_min(v_x)), detail::most(std::fabs(t194), detail::zero_as_min(v_x))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t195), detail::zero_as_min(v_y)), detail::most(std::fabs(t196), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t197), detail::zero_as_min(v_y)), detail::most(std::fabs(t198), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(std::fabs(t199), detail::zero_as_min(v_y)), detail::most(std::fabs(t200), detail::zero_as_min(v_y))), detail::least(detail::most(std::fabs(t201), detail::zero_as_min(v_z)), detail::most(std::fabs(t202), detail::zero_as_min(v_z)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t203), detail::zero_as_min(v_z)), detail::most(std::fabs(t204), detail::zero_as_min(v_z))), detail::least(detail::most(std::fabs(t205), detail::zero_as_min(v_z)), detail::most(std::fabs(t206), detail::zero_as_min(v_z)))), detail::least(detail::least(std::fabs(t209), detail::most(std::fabs(t210), detail::zero_as_min(N_x))), detail::least(std::fabs(t211), std::fabs(t212)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t213), detail::zero_as_min(N_y)), detail::most(std::fabs(t214), detail::zero_as_min(N_y))), detail::least(detail::most(std::fabs(t215), detail::zero_as_min(N_y)), detail::most(std::fabs(t216), detail::zero_as_min(N_y)))), detail::least(detail::least(std::fabs(t217), std::fabs(t218)), detail::least(std::fabs(t219), std::fabs(t220)))))), detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t221), detail::most(std::fabs(t222), detail::zero_as_min(N_z))), detail::least(detail::most(std::fabs(t223), detail::zero_as_min(N_z)), detail::most(std::fabs(t224), detail::zero_as_min(N_z)))), detail::least(detail::least(detail::most(std::fabs(t225), detail::zero_as_min(N_z)), std::fabs(t226)), detail::least(std::fabs(t227), std::fabs(t228)))), detail::least(detail::least(detail::least(std::fabs(t229), std::fabs(t230)), detail::least(detail::most(detail::most(std::fabs(t254), detail::zero_as_min(N_x)), detail::zero_as_min(w_y)), detail::most(detail::most(std::fabs(t255), detail::zero_as_min(N_y)), detail::zero_as_min(w_y)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t256), detail::zero_as_min(N_z)), detail::zero_as_min(w_y)), detail::most(std::fabs(t257), detail::zero_as_min(w_y))), detail::least(std::fabs(t258), std::fabs(t259))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t260), detail::zero_as_min(w_y)), std::fabs(t261)), detail::least(std::fabs(t262), detail::most(std::fabs(t263), detail::zero_as_min(w_y)))), detail::least(detail::least(std::fabs(t264), std::fabs(t265)), detail::least(detail::most(std::fabs(t266), detail::zero_as_min(w_y)), std::fabs(t267)))), detail::least(detail::least(detail::least(std::fabs(t268), detail::most(std::fabs(t269), detail::zero_as_min(w_y))), detail::least(std::fabs(t270), std::fabs(t271))), detail::least(detail::least(detail::most(std::fabs(t272), detail::zero_as_min(w_y)), std::fabs(t273)), detail::least(std::fabs(t274), detail::most(std::fabs(t275), detail::zero_as_min(w_y)))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t276), detail::zero_as_min(w_y)), detail::most(std::fabs(t277), detail::zero_as_min(w_y))), detail::least(detail::most(std::fabs(t278), detail::zero_as_min(w_y)), std::fabs(t279))), detail::least(detail::least(std::fabs(t280), std::fabs(t281)), detail::least(std::fabs(t282), std::fabs(t283)))), detail::least(detail::least(detail::least(std::fabs(t284), std::fabs(t285)), detail::least(detail::most(detail::most(std::fabs(t287), detail::zero_as_min(N_y)), detail::zero_as_min(w_x)), detail::most(detail::most(std::fabs(t288), detail::zero_as_min(N_x)), detail::zero_as_min(w_x)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t289), detail::zero_as_min(N_z)), detail::zero_as_min(w_x)), detail::most(std::fabs(t290), detail::zero_as_min(w_x))), detail::least(std::fabs(t291), std::fabs(t292))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t293), detail::zero_as_min(w_x)), std::fabs(t294)), detail::least(std::fabs(t295), detail::most(std::fabs(t296), detail::zero_as_min(w_x)))), detail::least(detail::least(std::fabs(t297), std::fabs(t298)), detail::least(detail::most(std::fabs(t299), detail::zero_as_min(w_x)), std::fabs(t300)))), detail::least(detail::least(detail::least(std::fabs(t301), detail::most(std::fabs(t302), detail::zero_as_min(w_x))), detail::least(std::fabs(t303), std::fabs(t304))), detail::least(detail::least(detail::most(std::fabs(t305), detail::zero_as_min(w_x)), std::fabs(t306)), detail::least(std::fabs(t307), detail::most(std::fabs(t308), detail::zero_as_min(w_x))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t309), detail::zero_as_min(w_x)), detail::most(std::fabs(t310), detail::zero_as_min(w_x))), detail::least(detail::most(std::fabs(t311), detail::zero_as_min(w_x)), detail::most(std::fabs(t312), detail::zero_as_min(w_x)))), detail::least(detail::least(detail::most(std::fabs(t313), detail::zero_as_min(w_x)), detail::most(std::fabs(t314), detail::zero_as_min(w_y))), detail::least(detail::most(std::fabs(t315), detail::zero_as_min(w_y)), detail::most(std::fabs(t316), detail::zero_as_min(w_y))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t319), detail::zero_as_min(w_x)), std::fabs(t320)), detail::least(std::fabs(t321), std::fabs(t322))), detail::least(detail::least(std::fabs(t323), std::fabs(t324)), detail::least(std::fabs(t325), std::fabs(t326))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t332), detail::zero_as_min(t331)), detail::most(std::fabs(t346), detail::zero_as_min(t344))), detail::least(detail::most(detail::most(std::fabs(t347), detail::zero_as_min(N_x)), detail::zero_as_min(w_z)), detail::most(detail::most(std::fabs(t348), detail::zero_as_min(N_y)), detail::zero_as_min(w_z)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t349), detail::zero_as_min(N_z)), detail::zero_as_min(w_z)), detail::most(std::fabs(t350), detail::zero_as_min(w_z))), detail::least(std::fabs(t351), std::fabs(t352)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t353), detail::zero_as_min(w_z)), std::fabs(t354)), detail::least(std::fabs(t355), detail::most(std::fabs(t356), detail::zero_as_min(w_z)))), detail::least(detail::least(std::fabs(t357), std::fabs(t358)), detail::least(detail::most(std::fabs(t359), detail::zero_as_min(w_z)), std::fabs(t360))))))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::least(std::fabs(t361), detail::most(std::fabs(t362), detail::zero_as_min(w_z))), detail::least(std::fabs(t363), std::fabs(t364))), detail::least(detail::least(detail::most(std::fabs(t365), detail::zero_as_min(w_z)), std::fabs(t366)), detail::least(std::fabs(t367), detail::most(std::fabs(t369), detail::zero_as_min(w_z))))), detail::least(detail::least(detail::least(detail::most(std::fabs(t370), detail::zero_as_min(w_z)), detail::most(std::fabs(t371), detail::zero_as_min(w_z))), detail::least(detail::most(std::fabs(t373), detail::zero_as_min(w_z)), detail::most(std::fabs(t374), detail::zero_as_min(w_z)))), detail::least(detail::least(detail::most(std::fabs(t375), detail::zero_as_min(w_z)), detail::most(detail::most(std::fabs(t377), detail::zero_as_min(N_x)), detail::zero_as_min(t376))), detail::least(detail::most(detail::most(std::fabs(t378), detail::zero_as_min(N_y)), detail::zero_as_min(t376)), detail::most(detail::most(std::fabs(t379), detail::zero_as_min(N_z)), detail::zero_as_min(t376)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t380), detail::zero_as_min(w_z)), std::fabs(t381)), detail::least(std::fabs(t382), std::fabs(t383))), detail::least(detail::least(std::fabs(t384), std::fabs(t385)), detail::least(std::fabs(t386), std::fabs(t387)))), detail::least(detail::least(detail::least(detail::most(std::fabs(t395), detail::zero_as_min(t394)), detail::most(std::fabs(t399), detail::zero_as_min(t398))), detail::least(detail::most(std::fabs(t432), detail::zero_as_min(t425)), detail::most(std::fabs(t436), detail::zero_as_min(t427)))), detail::least(detail::least(detail::most(std::fabs(t451), detail::zero_as_min(t450)), detail::most(std::fabs(t521), detail::zero_as_min(mu))), detail::least(detail::most(detail::most(std::fabs(t522), detail::zero_as_min(mu)), detail::zero_as_min(t144)), std::fabs(t523)))))), detail::least(detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t524), detail::zero_as_min(t135)), std::fabs(t525)), detail::least(std::fabs(t526), detail::most(std::fabs(t527), detail::zero_as_min(t59)))), detail::least(detail::least(std::fabs(t528), std::fabs(t538)), detail::least(std::fabs(t539), std::fabs(t540)))), detail::least(detail::least(detail::least(std::fabs(t541), std::fabs(t543)), detail::least(std::fabs(t560), detail::most(detail::most(std::fabs(t569), detail::zero_as_min(N_x)), detail::zero_as_min(t568)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t570), detail::zero_as_min(N_y)), detail::zero_as_min(t568)), detail::most(detail::most(std::fabs(t571), detail::zero_as_min(N_z)), detail::zero_as_min(t568))), detail::least(detail::most(std::fabs(t574), detail::zero_as_min(t573)), detail::most(std::fabs(t577), detail::zero_as_min(t576)))))), detail::least(detail::least(detail::least(detail::least(detail::most(std::fabs(t580), detail::zero_as_min(t579)), detail::most(detail::most(std::fabs(t751), detail::zero_as_min(t750)), detail::zero_as_min(t94))), detail::least(detail::most(detail::most(std::fabs(t752), detail::zero_as_min(t750)), detail::zero_as_min(t114)), detail::most(detail::most(std::fabs(t753), detail::zero_as_min(t750)), detail::zero_as_min(t118)))), detail::least(detail::least(std::fabs(t754), std::fabs(t755)), detail::least(std::fabs(t756), detail::most(detail::most(std::fabs(t757), detail::zero_as_min(t750)), detail::zero_as_min(t545))))), detail::least(detail::least(detail::least(std::fabs(t758), detail::most(detail::most(std::fabs(t759), detail::zero_as_min(t750)), detail::zero_as_min(t546))), detail::least(std::fabs(t760), detail::most(detail::most(std::fabs(t761), detail::zero_as_min(t750)), detail::zero_as_min(t550)))), detail::least(detail::least(std::fabs(t762), detail::most(detail::most(std::fabs(t763), detail::zero_as_min(t750)), detail::zero_as_min(t588))), detail::least(detail::most(detail::most(std::fabs(t764), detail::zero_as_min(t750)), detail::zero_as_min(t592)), detail::most(detail::most(std::fabs(t765), detail::zero_as_min(t750)), detail::zero_as_min(t593))))))))), std::numeric_limits<Real>::min());
-        const std::int64_t written = usable & finite & !doubtful;
-        v_x_[i] = detail::blend(written, v_x_out, v_x_[i]);
-        v_y_[i] = detail::blend(written, v_y_out, v_y_[i]);
-        v_z_[i] = detail::blend(written, v_z_out, v_z_[i]);
-        w_x_[i] = detail::blend(written, w_x_out, w_x_[i]);
-        w_y_[i] = detail::blend(written, w_y_out, w_y_[i]);
-        w_z_[i] = detail::blend(written, w_z_out, w_z_[i]);
-        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
-    }
-}
-
-// The pairs collide_wall_rough_batch_3d_fast left to the scalar collide_wall_rough (status underflow: a value it tests for underflow may be
-// below the normal range), each resolved by it, which decides exactly.
-template <class Real>
-inline void collide_wall_rough_batch_3d_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    bool doubtful = false;
-    for (std::size_t i = 0; i < count; ++i)
-        doubtful |= status_[i] == status::underflow;
-    if (!doubtful)
-        return;
-    for (std::size_t i = 0; i < count; ++i) {
-        if (status_[i] != status::underflow)
-            continue;
-        const auto out = collide_wall_rough<Real>(R_[i], q_[i], std::array<Real, 3>{P_x_[i], P_y_[i], P_z_[i]}, std::array<Real, 3>{N_x_[i], N_y_[i], N_z_[i]}, std::array<Real, 3>{C_x_[i], C_y_[i], C_z_[i]}, std::array<Real, 3>{v_x_[i], v_y_[i], v_z_[i]}, std::array<Real, 3>{w_x_[i], w_y_[i], w_z_[i]}, eps_[i], b_[i], mu_[i], fast_t{});
-        v_x_[i] = out.v[0];
-        v_y_[i] = out.v[1];
-        v_z_[i] = out.v[2];
-        w_x_[i] = out.w[0];
-        w_y_[i] = out.w[1];
-        w_z_[i] = out.w[2];
-        status_[i] = out.status;
-    }
-}
-
-// collide_wall_rough_batch_3d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
-// processor's own prefetching, following so many arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_wall_rough_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t b = 0;
-    for (; b + block <= count; b += block) {
-        if (b + ahead < count) {
-            IMPACT_PREFETCH(R_ + b + ahead, 0);
-            IMPACT_PREFETCH(q_ + b + ahead, 0);
-            IMPACT_PREFETCH(P_x_ + b + ahead, 0);
-            IMPACT_PREFETCH(P_y_ + b + ahead, 0);
-            IMPACT_PREFETCH(P_z_ + b + ahead, 0);
-            IMPACT_PREFETCH(N_x_ + b + ahead, 0);
-            IMPACT_PREFETCH(N_y_ + b + ahead, 0);
-            IMPACT_PREFETCH(N_z_ + b + ahead, 0);
-            IMPACT_PREFETCH(C_x_ + b + ahead, 0);
-            IMPACT_PREFETCH(C_y_ + b + ahead, 0);
-            IMPACT_PREFETCH(C_z_ + b + ahead, 0);
-            IMPACT_PREFETCH(v_x_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_y_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_z_ + b + ahead, 1);
-            IMPACT_PREFETCH(w_x_ + b + ahead, 1);
-            IMPACT_PREFETCH(w_y_ + b + ahead, 1);
-            IMPACT_PREFETCH(w_z_ + b + ahead, 1);
-            IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            IMPACT_PREFETCH(b_ + b + ahead, 0);
-            IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
-                IMPACT_PREFETCH(status_ + b + ahead, 1);
-        }
-        collide_wall_rough_batch_3d_fast<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_wall_rough_batch_3d_fast_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    }
-    collide_wall_rough_batch_3d_fast<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_wall_rough_batch_3d_fast_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-}
-
-// collide_wall_rough_batch_3d_fast over blocks of 8 pairs for arrays that start at one offset within their pages:
-// pair i of every array then falls on the same cache sets. The read-only array k is read
-// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
-// at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
-inline void collide_wall_rough_batch_3d_fast_skewed(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 14;
-    impact::status own[block];  // the statuses, where the caller wants none
-    const Real* const from[read_only] = {R_, q_, P_x_, P_y_, P_z_, N_x_, N_y_, N_z_, C_x_, C_y_, C_z_, eps_, b_, mu_};
-    alignas(64) Real stage[read_only][ring][block];
-    auto lead = [](std::size_t k) { return 2 * (k + 1); };
-    auto read = [&](std::size_t k, std::size_t j) {
-        for (std::size_t i = 0; i < block; ++i)
-            stage[k][j % ring][i] = from[k][j * block + i];
-    };
-    const std::size_t blocks = count / block;
-    for (std::size_t k = 0; k < read_only; ++k)
-        for (std::size_t j = 0; j < lead(k) && j < blocks; ++j)
-            read(k, j);
-    std::size_t b = 0;
-    for (std::size_t j = 0; j < blocks; ++j, b += block) {
-        if (b + ahead < count) {
-            if (b + ahead + block * lead(0) < count)
-                IMPACT_PREFETCH(R_ + b + ahead + block * lead(0), 0);
-            if (b + ahead + block * lead(1) < count)
-                IMPACT_PREFETCH(q_ + b + ahead + block * lead(1), 0);
-            if (b + ahead + block * lead(2) < count)
-                IMPACT_PREFETCH(P_x_ + b + ahead + block * lead(2), 0);
-            if (b + ahead + block * lead(3) < count)
-                IMPACT_PREFETCH(P_y_ + b + ahead + block * lead(3), 0);
-            if (b + ahead + block * lead(4) < count)
-                IMPACT_PREFETCH(P_z_ + b + ahead + block * lead(4), 0);
-            if (b + ahead + block * lead(5) < count)
-                IMPACT_PREFETCH(N_x_ + b + ahead + block * lead(5), 0);
-            if (b + ahead + block * lead(6) < count)
-                IMPACT_PREFETCH(N_y_ + b + ahead + block * lead(6), 0);
-            if (b + ahead + block * lead(7) < count)
-                IMPACT_PREFETCH(N_z_ + b + ahead + block * lead(7), 0);
-            if (b + ahead + block * lead(8) < count)
-                IMPACT_PREFETCH(C_x_ + b + ahead + block * lead(8), 0);
-            if (b + ahead + block * lead(9) < count)
-                IMPACT_PREFETCH(C_y_ + b + ahead + block * lead(9), 0);
-            if (b + ahead + block * lead(10) < count)
-                IMPACT_PREFETCH(C_z_ + b + ahead + block * lead(10), 0);
-            IMPACT_PREFETCH(v_x_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_y_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_z_ + b + ahead, 1);
-            IMPACT_PREFETCH(w_x_ + b + ahead, 1);
-            IMPACT_PREFETCH(w_y_ + b + ahead, 1);
-            IMPACT_PREFETCH(w_z_ + b + ahead, 1);
-            if (b + ahead + block * lead(11) < count)
-                IMPACT_PREFETCH(eps_ + b + ahead + block * lead(11), 0);
-            if (b + ahead + block * lead(12) < count)
-                IMPACT_PREFETCH(b_ + b + ahead + block * lead(12), 0);
-            if (b + ahead + block * lead(13) < count)
-                IMPACT_PREFETCH(mu_ + b + ahead + block * lead(13), 0);
-            if constexpr (with_status)
-                IMPACT_PREFETCH(status_ + b + ahead, 1);
-        }
-        for (std::size_t k = 0; k < read_only; ++k)
-            if (j + lead(k) < blocks)
-                read(k, j + lead(k));
-        const std::size_t r = j % ring;
-        collide_wall_rough_batch_3d_fast<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], stage[10][r], v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, stage[11][r], stage[12][r], stage[13][r], with_status ? status_ + b : own);
-        collide_wall_rough_batch_3d_fast_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    }
-    collide_wall_rough_batch_3d_fast<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_wall_rough_batch_3d_fast_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-}
-
-} // namespace detail
-
-/// collide_wall_rough_batch(data, impact::fast): collide_wall_rough_batch in the fast form, each result bit for bit
-/// the scalar collide_wall_rough(..., impact::fast)'s (compiled alike, e.g. -ffp-contract=off).
+/// collide_wall_rough_batch(data, impact::fast): the fast form of collide_wall_rough_batch, which is its accurate form.
 template <class Real>
 inline void collide_wall_rough_batch(const collide_wall_rough_batch_data<Real, 3>& data, fast_t) noexcept
 {
-    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the
-    // distances are a double's; other types keep the plain loop).
-    if constexpr (sizeof(Real) == sizeof(double))
-        if (detail::crowded(std::array<const void*, 14>{data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.eps, data.beta, data.mu})) {
-            if (data.status)
-                detail::collide_wall_rough_batch_3d_fast_skewed<Real, true>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, data.status);
-            else
-                detail::collide_wall_rough_batch_3d_fast_skewed<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, nullptr);
-            return;
-        }
-    if (data.status)
-        detail::collide_wall_rough_batch_3d_fast_ahead<Real, true>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_wall_rough_batch_3d_fast_ahead<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, nullptr);
+    collide_wall_rough_batch(data);
 }
 
 } // namespace impact
