@@ -53,6 +53,15 @@ struct program_builder {
         p.code.push_back(in);
         return static_cast<int>(p.code.size()) - 1;
     }
+
+    int constant(long value)
+    {
+        compile::instruction in;
+        in.op = compile::opcode::constant;
+        in.value = value;
+        p.code.push_back(in);
+        return static_cast<int>(p.code.size()) - 1;
+    }
 };
 
 // The operations in order: + for an addition, * for a multiplication, / for a division,
@@ -188,6 +197,36 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_takes_a_square_root_once_every_diviso
     BOOST_TEST(compile::run<double>(ordered, values).front() == 3.5);
 }
 
+BOOST_AUTO_TEST_CASE(a_batch_takes_a_root_that_is_a_divisor_before_it_knows_its_lanes)
+{
+    // a / sqrt(b): the root is the last divisor, computed before `usable` is known from it;
+    // blended with `usable` it would read the flag before its declaration. And
+    // a / (b + 1/sqrt(b)): after the early divisor sqrt(b), b + 1/sqrt(b) is a late one,
+    // divided by only where `usable_late` holds.
+    using compile::opcode;
+    program_builder in(2);
+    const int a = 0, b = 1;
+    const int root = in(opcode::sqrt, b);
+    in.p.outputs.push_back(in(opcode::div, a, root));
+    const emit::cxx_code code = emit::program_cxx(in.p, {"a", "b"}, "usable");
+    BOOST_TEST_REQUIRE(code.statements.size() == 1u);
+    BOOST_TEST(code.statements[0] == "const Real t0 = std::sqrt(b);");
+    BOOST_TEST(code.divisors_known == 1u);
+
+    program_builder late(2);
+    const int late_root = late(opcode::sqrt, b);
+    const int one = late.constant(1);
+    const int inverse = late(opcode::div, one, late_root);
+    const int sum = late(opcode::add, b, inverse);
+    late.p.outputs.push_back(late(opcode::div, a, sum));
+    const emit::cxx_code late_code = emit::program_cxx(late.p, {"a", "b"}, "usable");
+    BOOST_TEST(late_code.divisors.size() == 1u);
+    BOOST_TEST_REQUIRE(late_code.late_divisors.size() == 1u);
+    BOOST_TEST(!late_code.divides_early);
+    BOOST_TEST(late_code.outputs.front().find("detail::blend(usable_late, ") != std::string::npos,
+               late_code.outputs.front());
+}
+
 BOOST_AUTO_TEST_CASE(ordered_for_registers_waits_for_an_fma_s_addend)
 {
     // a b, c d, e + g, fma(a, b, c d), a b + fma, + (e + g): once c d is known the fma reads
@@ -211,12 +250,11 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_waits_for_an_fma_s_addend)
     BOOST_TEST(compile::run<double>(ordered, values).front() == 7.625);
 }
 
-BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
+BOOST_AUTO_TEST_CASE(ordered_for_registers_tests_late_divisors_after_the_early_divisions)
 {
-    // p = a / b and q = c / d; then e / (p + a) and g / (q + c). Unconstrained, p + a would
-    // follow p (it reads nothing new; q does). But the division p comes after every divisor
-    // that does not need it, q + c among them, which needs q; and q after p + a, which
-    // needs p. No order satisfies both: the program is kept as it is.
+    // p = a / b and q = c / d; then e / (p + a) and g / (q + c). b and d are early divisors,
+    // p + a and q + c late ones (compile::grouped_divisors): the divisions by b and d wait for
+    // b and d only, those by p + a and q + c for both of them. Unconstrained, p + a follows p.
     using compile::opcode;
     program_builder in(6);
     const int a = 0, b = 1, c = 2, d = 3, e = 4, g = 5;
@@ -227,15 +265,43 @@ BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
     const int r = in(opcode::div, e, pa);
     const int s = in(opcode::div, g, qc);
     in.p.outputs.push_back(in(opcode::add, r, s));
+    const compile::divisor_groups groups = compile::grouped_divisors(in.p);
+    BOOST_TEST(groups.early == std::vector<int>({b, d}));
+    BOOST_TEST(groups.late == std::vector<int>({pa, qc}));
+    BOOST_TEST(!compile::divides_early(in.p));
+
+    const compile::program ordered = compile::ordered_for_registers(in.p);
+    BOOST_TEST(operations(ordered) == "/+/+//+");
+    BOOST_TEST(!compile::divides_early(ordered));
+    const std::vector<double> values{1, 2, 3, 4, 3, 3.75};  // 3/1.5 + 3.75/3.75
+    BOOST_TEST(compile::run<double>(ordered, values).front() == 3.0);
+}
+
+BOOST_AUTO_TEST_CASE(ordered_for_registers_keeps_a_program_no_order_can_serve)
+{
+    // l = a / b + c, a late divisor; r = d / l; m = r + e, a late divisor too, which needs the
+    // division by l; then g / m. A division by a late divisor waits for every late divisor
+    // that does not need it: d / l for m, which needs d / l. No order serves: the program is
+    // kept as it is, and it divides early.
+    using compile::opcode;
+    program_builder in(6);
+    const int a = 0, b = 1, c = 2, d = 3, e = 4, g = 5;
+    const int ab = in(opcode::div, a, b);
+    const int l = in(opcode::add, ab, c);
+    const int r = in(opcode::div, d, l);
+    const int m = in(opcode::add, r, e);
+    in.p.outputs.push_back(in(opcode::div, g, m));
+    BOOST_TEST(compile::divides_early(in.p));
 
     const compile::program kept = compile::ordered_for_registers(in.p);
-    BOOST_TEST(operations(kept) == "//++//+");
+    BOOST_TEST(operations(kept) == "/+/+/");
     BOOST_TEST(kept.code.size() == in.p.code.size());
     for (std::size_t i = 0; i < kept.code.size(); ++i) {
         BOOST_TEST(kept.code[i].a == in.p.code[i].a);
         BOOST_TEST(kept.code[i].b == in.p.code[i].b);
     }
     BOOST_TEST(kept.outputs == in.p.outputs);
+    BOOST_TEST(compile::divides_early(kept));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

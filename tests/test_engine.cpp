@@ -8,6 +8,7 @@
 #include "engine/derive.h"
 #include "engine/forked.h"
 #include "engine/polynomial.h"
+#include "engine/prove.h"
 #include "engine/sign.h"
 #include "engine/library.h"
 
@@ -735,6 +736,29 @@ BOOST_AUTO_TEST_CASE(a_try_s_effort_cuts_a_sign_short_and_forgets_it)
     BOOST_TEST(!engine::prove_sign(e, engine::with_effort(given, 1)).sign.is_positive());
     BOOST_TEST(engine::prove_sign(e, given).sign.is_positive());
     BOOST_TEST(engine::prove_sign(e, engine::with_effort(given, 1000)).sign.is_positive());
+}
+
+// A refutation before a sign search (engine::takes_both_signs): an expression found < 0 at
+// one point of the domains and > 0 at another cannot be proven of one sign; one that is
+// positive, or >= 0, or 0 written as an identity whose value rounds to noise, is never
+// called so (the boundary of a rough contact in space skips its doomed sign proofs by it).
+BOOST_AUTO_TEST_CASE(an_expression_of_both_signs_is_refuted_before_a_search)
+{
+    const GiNaC::symbol x("x"), y("y");
+    engine::assumptions given{{}, engine::term_order({x, y})};
+    given.domains[x] = engine::domain{engine::domain::kind::positive};
+    given.domains[y] = engine::domain{engine::domain::kind::real};
+    BOOST_TEST(engine::takes_both_signs(x - 1, given));
+    BOOST_TEST(engine::takes_both_signs(x * y, given));
+    BOOST_TEST(!engine::takes_both_signs(x * x + y * y + 1, given));
+    BOOST_TEST(!engine::takes_both_signs(GiNaC::pow(x - y, 2), given));
+    BOOST_TEST(!engine::takes_both_signs(x, given));
+    // (sqrt(x) + y)^2 - x - 2 y sqrt(x) - y^2 is 0: evaluated, rounding noise of either sign.
+    const GiNaC::ex zero = GiNaC::pow(GiNaC::sqrt(x) + y, 2) - x - 2 * y * GiNaC::sqrt(x) - y * y;
+    BOOST_TEST(!engine::takes_both_signs(zero, given));
+    // A symbol without a domain: nothing to draw, no refutation.
+    const GiNaC::symbol z("z");
+    BOOST_TEST(!engine::takes_both_signs(z - 1, given));
 }
 
 // GiNaC's factor() may never return (engine/forked.h): polynomials in several symbols are

@@ -110,8 +110,8 @@ std::vector<domain_test> guard_tests(const engine::kernel& k, const engine::kern
     return tests;
 }
 
-// What must hold of every divisor, as tests; the scalar kernel refuses a pair where one
-// fails, the batch loop divides by 1 instead.
+// What must hold of every divisor of a group (early, or `late`), as tests; the scalar
+// kernel refuses a pair where one fails, the batch loop divides by 1 instead.
 std::vector<std::string> divisors_in_range(const cxx_code& code, bool late)
 {
     if (code.divides_early)

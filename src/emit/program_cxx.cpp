@@ -133,10 +133,12 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             break;
         case opcode::neg: expression = "-" + operand(in.a, unary); own = unary; break;
         case opcode::sqrt:
-            // A root a divisor needs is taken before `kept_if` is known (from the divisors):
-            // a discarded pair's NaN there makes its divisors fail their test, and no more.
+            // A root an early divisor needs (or is) is taken before `kept_if` is known (from
+            // those divisors): a discarded pair's NaN there makes its divisors fail their
+            // test, and no more. A root after them (one a late divisor needs among them) is
+            // taken of 0 where the pair is discarded.
             expression = "std::sqrt(" +
-                         (kept_if.empty() || static_cast<int>(i) < last_divisor
+                         (kept_if.empty() || static_cast<int>(i) <= last_divisor
                               ? text[in.a]
                               : "detail::blend(" + kept_if + ", " + text[in.a] + ", Real(0))") +
                          ")";

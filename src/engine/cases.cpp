@@ -2,6 +2,7 @@
 
 #include "engine/condition_proof.h"
 #include "engine/infix.h"
+#include "engine/prove.h"
 #include "engine/solve.h"
 
 #include <fmt/format.h>
@@ -581,14 +582,20 @@ namespace {
 
 // The boundary `top` = 0 of two cases solved for the declared quantity it is linear in
 // whose value there is the shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass),
-// its coefficient proven non-zero where one can be; none if it is linear in none.
+// its coefficient proven non-zero where one can be; none if it is linear in none. The
+// candidates are tried shortest first (the first in declaration order among equals), and
+// the first whose coefficient is proven non-zero is taken: a sign proof that fails can
+// take seconds on a long coefficient (where the boundary holds the slip's length, in
+// space), and those after the first proven one are not needed; nor is one for a
+// coefficient seen taking both signs at points of the domains (it cannot be proven of one).
 std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& top, const symbol_table& symbols,
                                                                proof_cache& run)
 {
-    std::optional<std::pair<GiNaC::ex, GiNaC::ex>> at;
-    std::size_t shortest = 0;
-    bool coefficient_proven = false;
-    const assumptions given = declared_assumptions(symbols, run);
+    struct candidate {
+        std::size_t length;
+        GiNaC::ex symbol, coefficient, value;
+    };
+    std::vector<candidate> candidates;
     for (const quantity& q : symbols.all()) {
         // Not under a radical (degree() throws on sqrt(x)): linear means polynomial first.
         if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
@@ -598,16 +605,21 @@ std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& 
         if (a.has(q.symbol) || GiNaC::normal(a).is_zero())
             continue;
         const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / a);
-        const sign_set s = prove_sign(a, given).sign;
-        const bool non_zero = !s.zero && (!s.positive || !s.negative);
-        const std::size_t length = ginac_syntax(value, symbols.order()).size();
-        if (at && (coefficient_proven > non_zero || (coefficient_proven == non_zero && length >= shortest)))
-            continue;
-        at.emplace(q.symbol, value);
-        shortest = length;
-        coefficient_proven = non_zero;
+        candidates.push_back({ginac_syntax(value, symbols.order()).size(), q.symbol, a, value});
     }
-    return at;
+    if (candidates.empty())
+        return std::nullopt;
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const candidate& x, const candidate& y) { return x.length < y.length; });
+    const assumptions given = declared_assumptions(symbols, run);
+    for (const candidate& c : candidates) {
+        if (takes_both_signs(c.coefficient, given))
+            continue;
+        const sign_set s = prove_sign(c.coefficient, given).sign;
+        if (!s.zero && (!s.positive || !s.negative))
+            return std::make_pair(c.symbol, c.value);
+    }
+    return std::make_pair(candidates.front().symbol, candidates.front().value);
 }
 
 } // namespace

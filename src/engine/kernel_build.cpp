@@ -478,40 +478,42 @@ private:
     // both; each select is named by one symbol, the same for selects whose condition and
     // cases are proven equal, so that the proof is of the algebra around them (GiNaC's
     // normal form of a select's arguments alone can differ between two writings of it).
+    // The names are kept for the whole kernel: a select met again (every output of a rough
+    // kernel holds the same ones) is named without proving anything again.
     verdict prove_form(const GiNaC::ex& form, const GiNaC::ex& value)
     {
         if (!has_select(form) && !has_select(value))
             return prove_equal(form, value, d_.symbols, run_);
-        std::vector<GiNaC::ex> selects;
+        GiNaC::exmap named;
         for (const GiNaC::ex& side : {form, value})
             for (GiNaC::const_postorder_iterator it = side.postorder_begin(); it != side.postorder_end(); ++it)
                 if (is_select(*it))
-                    selects.push_back(*it);
-        GiNaC::exmap named;
-        std::vector<std::pair<GiNaC::ex, GiNaC::symbol>> classes;
-        for (const GiNaC::ex& s : selects) {
-            if (named.count(s))
-                continue;
-            const GiNaC::symbol* same = nullptr;
-            for (const auto& [representative, symbol] : classes) {
-                bool equal = true;
-                for (std::size_t i = 0; i < 3 && equal; ++i)
-                    equal = prove_equal(s.op(i), representative.op(i), d_.symbols, run_).what ==
-                            verdict::status::proven;
-                if (equal) {
-                    same = &symbol;
-                    break;
-                }
-            }
-            if (!same) {
-                classes.emplace_back(s, GiNaC::symbol(fmt::format("case_{}", classes.size())));
-                same = &classes.back().second;
-            }
-            named[s] = *same;
-        }
+                    named[*it] = select_name(*it);
         return prove_equal(expanded_radicands(form.subs(named, GiNaC::subs_options::no_pattern)),
                            expanded_radicands(value.subs(named, GiNaC::subs_options::no_pattern)), d_.symbols,
                            run_);
+    }
+
+    // The symbol naming select `s`: that of a select met before whose condition and cases
+    // are proven equal to its own (any member of a class, in the order they were met), or
+    // a new one.
+    GiNaC::symbol select_name(const GiNaC::ex& s)
+    {
+        if (const auto known = select_names_.find(s); known != select_names_.end())
+            return known->second;
+        for (auto& [members, symbol] : select_classes_)
+            for (const GiNaC::ex& member : members) {
+                bool equal = true;
+                for (std::size_t i = 0; i < 3 && equal; ++i)
+                    equal = prove_equal(s.op(i), member.op(i), d_.symbols, run_).what == verdict::status::proven;
+                if (equal) {
+                    members.push_back(s);
+                    return select_names_.emplace(s, symbol).first->second;
+                }
+            }
+        const GiNaC::symbol fresh(fmt::format("case_{}", select_classes_.size()));
+        select_classes_.push_back({{s}, fresh});
+        return select_names_.emplace(s, fresh).first->second;
     }
 
     // `e` with the base of every fractional power expanded: one radical written two ways
@@ -681,6 +683,9 @@ private:
     proof_cache& run_;
     /// Symbols of the results that the kernel computes from its inputs (r = C_M - C_m).
     GiNaC::exmap substitutions_;
+    /// Each select met in a form's proof, by the symbol naming its class (`select_name`).
+    std::map<GiNaC::ex, GiNaC::symbol, GiNaC::ex_is_less> select_names_;
+    std::vector<std::pair<std::vector<GiNaC::ex>, GiNaC::symbol>> select_classes_;
 };
 
 } // namespace

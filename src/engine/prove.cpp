@@ -248,6 +248,51 @@ bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b)
 
 } // namespace
 
+bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points)
+{
+    std::vector<std::pair<GiNaC::ex, const domain*>> free;
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+            std::none_of(free.begin(), free.end(), [&](const auto& f) { return f.first.is_equal(*it); })) {
+            const auto d = given.domains.find(*it);
+            if (d == given.domains.end())
+                return false;
+            free.emplace_back(*it, &d->second);
+        }
+    std::sort(free.begin(), free.end(), [&](const auto& a, const auto& b) { return given.order.before(a.first, b.first); });
+    const auto saved_digits = GiNaC::Digits;
+    uniform_stream stream(0x5e1f2a3b4c5d6e7fULL);
+    bool negative = false, positive = false;
+    for (std::size_t n = 0; n < points && !(negative && positive); ++n) {
+        GiNaC::exmap point;
+        for (const auto& [symbol, range] : free)
+            point[symbol] = exact(draw(*range, stream));
+        try {
+            const GiNaC::ex at = e.subs(point, GiNaC::subs_options::no_pattern);
+            int sign[2] = {0, 0};
+            GiNaC::numeric value[2];
+            for (int k = 0; k < 2; ++k) {
+                GiNaC::Digits = k == 0 ? 40 : 80;
+                const GiNaC::ex x = GiNaC::evalf(at);
+                if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::ex_to<GiNaC::numeric>(x).is_real())
+                    break;
+                value[k] = GiNaC::ex_to<GiNaC::numeric>(x);
+                sign[k] = value[k].is_zero() ? 0 : value[k].is_positive() ? 1 : -1;
+            }
+            // A sign believed where both precisions agree on it and on the value to a half:
+            // a value that is 0 (an identity) comes out as noise of either sign.
+            if (sign[0] != 0 && sign[0] == sign[1] && GiNaC::abs(value[0] - value[1]) < GiNaC::abs(value[1]) / 2) {
+                negative = negative || sign[0] < 0;
+                positive = positive || sign[0] > 0;
+            }
+        } catch (const std::exception&) {
+            // a pole: another point
+        }
+    }
+    GiNaC::Digits = saved_digits;
+    return negative && positive;
+}
+
 std::string to_string(const verdict& v)
 {
     switch (v.what) {

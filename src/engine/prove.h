@@ -54,6 +54,13 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
 verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const symbol_table& symbols,
                          const assumptions& given);
 
+/// Whether `e` is found < 0 at one point and > 0 at another, drawn from the domains of
+/// `given` (at most `points` of them; each value's sign the same at 40 and at 80 digits):
+/// then no sign proof under `given` can find it of one sign, nor >= 0, nor <= 0, and a
+/// caller that needs one need not search (seconds, on the long polynomials of a rough
+/// contact in space). A refutation, never a proof; false where a symbol has no domain.
+bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points = 16);
+
 /// Decides `lhs op rhs` from the signs of the factors of the difference alone: proven,
 /// or none (nothing sampled).
 std::optional<verdict> prove_inequality_by_signs(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,

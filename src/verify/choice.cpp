@@ -334,7 +334,7 @@ private:
             r.double_accuracy.worst_regime = "its divisors not computable before its divisions";
             return r;
         }
-        r.double_accuracy = verify::measure<double>(p, {i}, on, ref).front();
+        r.double_accuracy = verify::measure<double>(p, {i}, on, ref, !k_.guards.empty()).front();
         return r;
     }
 
@@ -434,9 +434,10 @@ private:
         std::vector<std::size_t> which(plan_.components.size());
         for (std::size_t i = 0; i < which.size(); ++i)
             which[i] = i;
-        const auto in_float = measure<float>(outputs_only, which, plan_.samples, plan_.float_reference);
-        const auto in_double = measure<double>(outputs_only, which, plan_.samples, plan_.double_reference);
-        const auto in_long = measure<long double>(outputs_only, which, plan_.samples, plan_.double_reference);
+        const bool tests = !k_.guards.empty();
+        const auto in_float = measure<float>(outputs_only, which, plan_.samples, plan_.float_reference, tests);
+        const auto in_double = measure<double>(outputs_only, which, plan_.samples, plan_.double_reference, tests);
+        const auto in_long = measure<long double>(outputs_only, which, plan_.samples, plan_.double_reference, tests);
         std::vector<emitted_accuracy> emitted;
         for (std::size_t i = 0; i < which.size(); ++i)
             emitted.push_back({in_float[i], in_double[i], in_long[i]});
@@ -473,7 +474,7 @@ std::string worst_of(const accuracy& a)
     if (a.refused > 0)
         return fmt::format("it refuses {} of {} samples as out_of_range (a divisor below "
                            "detail::smallest_divisor or infinite; first in the regime '{}')",
-                           a.refused, a.samples, a.worst_regime);
+                           a.refused, a.samples, a.first_refused_regime);
     return fmt::format("{:.3g} ulps at worst ({})", a.max_ulps, a.worst_regime);
 }
 

@@ -84,8 +84,8 @@ std::optional<engine::form> derived_form(const engine::kernel_output& o, std::si
 
 /// The plan's programs, `code` and `fast_code`: the guards' conditions first, then the
 /// chosen (or fastest) form of every component, sharing what they can, in an order that
-/// computes every divisor before the first division when the kernel has guards. Throws
-/// `impact::error` at the kernel where no order does.
+/// computes its divisors before it divides by them, as a kernel with guards tests them
+/// (compile::grouped_divisors). Throws `impact::error` at the kernel where no order does.
 void compile_chosen(kernel_plan& plan, const engine::kernel& k, const engine::term_order& order);
 
 /// The fast form of a plan as a plan of its own, for the emitters: `fast_code` as its

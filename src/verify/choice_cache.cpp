@@ -25,6 +25,7 @@ struct writer {
         number(a.max_ulps);
         text(a.worst_regime);
         count(a.refused);
+        text(a.first_refused_regime);
     }
 };
 
@@ -81,6 +82,7 @@ struct reader {
         a.max_ulps = number();
         a.worst_regime = text();
         a.refused = count();
+        a.first_refused_regime = text();
         return a;
     }
 };

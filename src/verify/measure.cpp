@@ -167,11 +167,11 @@ reference prefix(const reference& ref, std::size_t count)
 
 template <class Real>
 std::vector<accuracy> measure(const compile::program& p, const std::vector<std::size_t>& which,
-                              const std::vector<sample>& samples, const reference& ref)
+                              const std::vector<sample>& samples, const reference& ref, bool tests_divisors)
 {
     std::vector<accuracy> result(which.size());
     std::vector<double> total(which.size(), 0);
-    const std::vector<int> divisors = compile::divisors(p);
+    const std::vector<int> divisors = tests_divisors ? compile::divisors(p) : std::vector<int>{};
     for (std::size_t n = 0; n < samples.size(); ++n) {
         std::vector<Real> x;
         for (double value : samples[n].inputs)
@@ -201,7 +201,8 @@ std::vector<accuracy> measure(const compile::program& p, const std::vector<std::
             else
                 e = static_cast<double>(gap / unit_in_last_place<Real>(scale));
             total[i] += e;
-            result[i].refused += refused ? 1 : 0;
+            if (refused && result[i].refused++ == 0)
+                result[i].first_refused_regime = samples[n].regime;
             if (e > result[i].max_ulps || result[i].samples == 0) {
                 result[i].max_ulps = e;
                 result[i].worst_regime = samples[n].regime;
@@ -215,10 +216,10 @@ std::vector<accuracy> measure(const compile::program& p, const std::vector<std::
 }
 
 template std::vector<accuracy> measure<float>(const compile::program&, const std::vector<std::size_t>&,
-                                              const std::vector<sample>&, const reference&);
+                                              const std::vector<sample>&, const reference&, bool);
 template std::vector<accuracy> measure<double>(const compile::program&, const std::vector<std::size_t>&,
-                                               const std::vector<sample>&, const reference&);
+                                               const std::vector<sample>&, const reference&, bool);
 template std::vector<accuracy> measure<long double>(const compile::program&, const std::vector<std::size_t>&,
-                                                    const std::vector<sample>&, const reference&);
+                                                    const std::vector<sample>&, const reference&, bool);
 
 } // namespace impact::verify

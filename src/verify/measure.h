@@ -51,12 +51,15 @@ struct accuracy {
     double max_ulps = 0;
     std::string worst_regime;
     std::size_t refused = 0;  ///< samples the kernel refuses as out of range (a divisor out of the type's range)
+    std::string first_refused_regime;  ///< the regime of the first of them
 };
 
 /// Runs `p` (whose outputs are the kernel's components listed in `which`) in `Real` on
-/// every sample and measures each of its outputs against `ref`.
+/// every sample and measures each of its outputs against `ref`. Where `tests_divisors`
+/// (the kernel has guards, and so a status), a sample whose divisors the emitted kernel
+/// would find out of range is refused: an infinite error, counted in `refused`.
 template <class Real>
 std::vector<accuracy> measure(const compile::program& p, const std::vector<std::size_t>& which,
-                              const std::vector<sample>& samples, const reference& ref);
+                              const std::vector<sample>& samples, const reference& ref, bool tests_divisors);
 
 } // namespace impact::verify
