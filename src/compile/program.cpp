@@ -618,17 +618,39 @@ divisor_groups grouped_divisors(const program& p)
     return groups;
 }
 
+namespace {
+
+int last_of(const std::vector<int>& values)
+{
+    return values.empty() ? -1 : *std::max_element(values.begin(), values.end());
+}
+
+} // namespace
+
+bool divisor_groups::is_late(int value) const
+{
+    return std::find(late.begin(), late.end(), value) != late.end();
+}
+
+int divisor_groups::last_early() const
+{
+    return last_of(early);
+}
+
+int divisor_groups::last_late() const
+{
+    return last_of(late);
+}
+
 bool divides_early(const program& p)
 {
     const divisor_groups groups = grouped_divisors(p);
-    const auto last = [](const std::vector<int>& of) { return of.empty() ? -1 : *std::max_element(of.begin(), of.end()); };
-    const int last_early = last(groups.early), last_late = last(groups.late);
+    const int last_early = groups.last_early(), last_late = groups.last_late();
     for (std::size_t i = 0; i < p.code.size(); ++i) {
         if (!divides(p, p.code[i]))
             continue;
         const int at = static_cast<int>(i);
-        const bool by_late = std::find(groups.late.begin(), groups.late.end(), p.code[i].b) != groups.late.end();
-        if (at < last_early || (by_late && at < last_late))
+        if (at < last_early || (groups.is_late(p.code[i].b) && at < last_late))
             return true;
     }
     return false;

@@ -130,6 +130,10 @@ std::vector<int> divisors(const program& p);
 struct divisor_groups {
     std::vector<int> early;
     std::vector<int> late;
+
+    bool is_late(int value) const;
+    int last_early() const;  ///< the last computed, or -1 for none
+    int last_late() const;
 };
 divisor_groups grouped_divisors(const program& p);
 

@@ -51,9 +51,6 @@ program ordered_for_registers(const program& p)
     // a late divisor needs divisions by early ones, which must not wait for it).
     const divisor_groups groups = grouped_divisors(p);
     const std::vector<int> divided_by = divisors(p);
-    std::vector<bool> late(n, false);
-    for (int d : groups.late)
-        late[static_cast<std::size_t>(d)] = true;
     std::vector<bool> needs_a_root(n, false);
     for (std::size_t i = 0; i < n; ++i) {
         needs_a_root[i] = p.code[i].op == opcode::sqrt;
@@ -70,7 +67,7 @@ program ordered_for_registers(const program& p)
         for (std::size_t i = d + 1; i < n; ++i)
             for (int operand : operands(p.code[i]))
                 needs_d[i] = needs_d[i] || needs_d[operand];
-        const bool by_late = !root && late[static_cast<std::size_t>(p.code[d].b)];
+        const bool by_late = !root && groups.is_late(p.code[d].b);
         for (int divisor : by_late ? divided_by : groups.early)
             if (!needs_d[divisor] && !(root && needs_a_root[divisor]))
                 waits[d].push_back(divisor);

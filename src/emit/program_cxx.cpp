@@ -98,9 +98,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                     uses[o] += 2;
         }
     const compile::divisor_groups groups = compile::grouped_divisors(p);
-    const auto last_of = [](const std::vector<int>& of) { return of.empty() ? -1 : *std::max_element(of.begin(), of.end()); };
-    const int last_divisor = last_of(groups.early), last_late_divisor = last_of(groups.late);
-    const auto is_late = [&](int d) { return std::find(groups.late.begin(), groups.late.end(), d) != groups.late.end(); };
+    const int last_divisor = groups.last_early(), last_late_divisor = groups.last_late();
 
     constexpr int sum = 1, product = 2, unary = 3, atom = 4;
     std::vector<std::string> text(p.code.size());
@@ -127,7 +125,7 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             expression = operand(in.a, product) + " / " +
                          (kept_if.empty() || !divides(p, in)
                               ? operand(in.b, unary)
-                              : "detail::blend(" + kept_if + (is_late(in.b) ? "_late" : "") + ", " + text[in.b] +
+                              : "detail::blend(" + kept_if + (groups.is_late(in.b) ? "_late" : "") + ", " + text[in.b] +
                                     ", Real(1))");
             own = product;
             break;
