@@ -749,6 +749,75 @@ BOOST_AUTO_TEST_CASE(the_lab_frame_velocities_and_spins_stick_or_slide_as_walton
     }
 }
 
+// A fixed sphere of the rough kernel in a plane: Walton's model against a body of infinite
+// mass, whose reduced mass is the other's (J_n = (1 + eps) m g_n) and whose tangential mass
+// is the other's mass and inertia alone (1/m_t = 1/m + 1/(q_m m)). The kernel's cases come
+// from the limit of the friction cone's condition, which grows with the fixed mass.
+BOOST_AUTO_TEST_CASE(the_rough_fixed_sphere_kernels_stick_or_slide_as_walton_s_model_says)
+{
+    const engine::derivation& d = derived("rough_plane");
+    const ex M = sym(d, "M"), m = sym(d, "m"), R_M = sym(d, "R_M"), R_m = sym(d, "R_m"), q_M = sym(d, "q_M"),
+             q_m = sym(d, "q_m"), eps = sym(d, "eps"), b = sym(d, "b"), mu = sym(d, "mu"), v_Mx = sym(d, "v_Mx"),
+             v_My = sym(d, "v_My"), v_mx = sym(d, "v_mx"), v_my = sym(d, "v_my"), w_M = sym(d, "w_M"),
+             w_m = sym(d, "w_m");
+    const engine::kernel& fixed_M = fixed_obstacles::fixed_kernel(d, "collide_rough", "M");
+    const engine::kernel& fixed_m = fixed_obstacles::fixed_kernel(d, "collide_rough", "m");
+    BOOST_TEST(fixed_M.find_input("M") == nullptr);
+    BOOST_TEST(fixed_m.find_input("m") == nullptr);
+    // n = (3/5, 4/5) from M to m, t = (-4/5, 3/5); M's velocity (1, 1/2), m's (-1/4, 0).
+    const numeric n[2] = {numeric(3, 5), numeric(4, 5)}, tt[2] = {numeric(-4, 5), numeric(3, 5)};
+    const numeric u[2] = {numeric(5, 4), numeric(1, 2)};
+    const numeric g_n = u[0] * n[0] + u[1] * n[1];
+    int sticking = 0, sliding = 0;
+    for (const int mu_den : {1, 20, 50, 400})
+        for (const int spin : {3, -7}) {
+            const numeric mu_here(5, mu_den);
+            const GiNaC::exmap at{{sym(d, "C_Mx"), 0}, {sym(d, "C_My"), 0}, {sym(d, "C_mx"), 3},
+                                  {sym(d, "C_my"), 4}, {M, 2}, {m, 3}, {R_M, numeric(1, 2)},
+                                  {R_m, numeric(1, 4)}, {q_M, numeric(2, 5)}, {q_m, numeric(2, 3)},
+                                  {eps, numeric(4, 5)}, {b, numeric(1, 2)}, {mu, mu_here}, {v_Mx, 1},
+                                  {v_My, numeric(1, 2)}, {v_mx, numeric(-1, 4)}, {v_my, 0}, {w_M, spin},
+                                  {w_m, -1}};
+            const std::vector<GiNaC::exmap> here{at};
+            const numeric g_t = u[0] * tt[0] + u[1] * tt[1] + numeric(1, 2) * spin + numeric(1, 4) * -1;
+            // The obstacle is M (the mass that stays is m = 3), then m (M = 2 stays).
+            for (const bool M_is_fixed : {true, false}) {
+                const numeric mass = M_is_fixed ? numeric(3) : numeric(2);
+                const numeric q = M_is_fixed ? numeric(2, 3) : numeric(2, 5);
+                const numeric m_t = 1 / (1 / mass + 1 / (q * mass));
+                const numeric J_n = numeric(9, 5) * mass * g_n;
+                const numeric stick = numeric(3, 2) * m_t * g_t;
+                const numeric cap = mu_here * J_n;
+                const bool sticks = GiNaC::abs(stick) <= cap;
+                (sticks ? sticking : sliding)++;
+                const numeric J_t = sticks ? stick : (g_t > 0 ? cap : -cap);
+                const numeric J[2] = {J_n * n[0] + J_t * tt[0], J_n * n[1] + J_t * tt[1]};
+                const engine::kernel& k = M_is_fixed ? fixed_M : fixed_m;
+                BOOST_TEST_CONTEXT(k.name << ", mu = " << mu_here << ", w_M = " << spin)
+                {
+                    if (M_is_fixed) {
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_M", 0), 1, here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_M", 1), numeric(1, 2), here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "w_M"), spin, here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_m", 0), numeric(-1, 4) + J[0] / 3, here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_m", 1), J[1] / 3, here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "w_m"), -1 - J_t / (numeric(2, 3) * 3 * numeric(1, 4)), here));
+                    } else {
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_M", 0), 1 - J[0] / 2, here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_M", 1), numeric(1, 2) - J[1] / 2, here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "w_M"), spin - J_t / (numeric(2, 5) * 2 * numeric(1, 2)), here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_m", 0), numeric(-1, 4), here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "v_m", 1), 0, here));
+                        BOOST_TEST(numerically_equal(fixed_obstacles::output(k, "w_m"), -1, here));
+                    }
+                }
+            }
+        }
+    // Both cases are met, against either obstacle.
+    BOOST_TEST(sticking > 0);
+    BOOST_TEST(sliding > 0);
+}
+
 BOOST_AUTO_TEST_CASE(a_rough_sphere_sticks_to_or_slides_on_a_wall_as_walton_s_model_says)
 {
     // The wall is a body at rest of infinite mass: per unit mass of the sphere, the normal

@@ -182,6 +182,25 @@ BOOST_AUTO_TEST_CASE(an_identity_gi_nac_cannot_normalise_is_sampled_never_proven
     BOOST_TEST(engine::to_string(check_named(d, "positive_x").outcome) == "proven");  // x > 0 is declared
 }
 
+// A caller that needs a proof and takes nothing less (a kernel's candidate forms) asks
+// prove_equal to give up where it would sample: failed, no point tested, the residual kept.
+BOOST_AUTO_TEST_CASE(an_identity_not_proven_is_given_up_unsampled_when_asked)
+{
+    const engine::derivation d = derive_text(derivation_text(solve_y + "[[result]]\nname = \"y\"\n"));
+    const GiNaC::ex z = d.symbols.find("z")->symbol, x = d.symbols.find("x")->symbol;
+    engine::proof_cache run;
+    const engine::verdict sampled = engine::prove_equal(GiNaC::sqrt(z * z), GiNaC::abs(z), d.symbols, run);
+    BOOST_TEST(engine::to_string(sampled) == "sampled (200 points)");
+    const engine::verdict given_up = engine::prove_equal(GiNaC::sqrt(z * z), GiNaC::abs(z), d.symbols, run,
+                                                         engine::when_unproven::give_up);
+    BOOST_TEST(engine::to_string(given_up) == "failed");
+    BOOST_TEST(given_up.samples == 0u);
+    BOOST_TEST(!given_up.residual.is_zero());
+    // What is proven is proven either way.
+    BOOST_TEST(engine::to_string(engine::prove_equal(GiNaC::sqrt(x * x), x, d.symbols, run,
+                                                     engine::when_unproven::give_up)) == "proven");
+}
+
 BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_function_is_zero)
 {
     const GiNaC::realsymbol a("a"), b("b");

@@ -2,6 +2,7 @@
 
 #include "engine/dimensional.h"
 #include "engine/cases.h"
+#include "engine/polynomial.h"
 #include "engine/prove.h"
 
 #include <fmt/format.h>
@@ -45,10 +46,33 @@ std::optional<GiNaC::ex> limit_taken(const GiNaC::ex& e, const GiNaC::ex& s, con
                                      limit_memo& memo)
 {
     if (is_select(e)) {
+        // The condition divided term by term, so that the limit laws take each term's
+        // limit apart (a friction cone's sides are long products, each with one factor
+        // M + m): the whole quotient's series takes seconds. A condition polynomial in s
+        // is tried from its degree (at most 2) down: the quotient's limit is zero above
+        // its true degree and finite and not zero at it, so that no quotient whose limit is
+        // infinite (the laws fail, and the series of the whole is taken) is tried.
+        const GiNaC::ex& side = e.op(0);
+        std::vector<int> powers{0, 1, 2};
+        if (side.is_polynomial(s)) {
+            powers.clear();
+            for (int power = std::min(side.degree(s), 2); power >= 0; --power)
+                powers.push_back(power);
+        }
         std::optional<GiNaC::ex> condition;
-        for (int power = 0; power <= 2 && !condition; ++power) {
-            const auto r = finite_limit_at_infinity(e.op(0) / GiNaC::pow(s, power), s, given);
-            if (r && !r->is_zero())
+        for (const int power : powers) {
+            if (condition)
+                break;
+            const GiNaC::ex scale = GiNaC::pow(s, -power);
+            GiNaC::exvector terms;
+            if (GiNaC::is_a<GiNaC::add>(side))
+                for (const GiNaC::ex& term : side)
+                    terms.push_back(term * scale);
+            else
+                terms.push_back(side * scale);
+            const GiNaC::ex scaled = GiNaC::add(terms);
+            const auto r = limit_at_infinity(scaled, s, given, memo);
+            if (r && !r->is_zero() && expand_numerator(*r) != expansion::zero)
                 condition = *r;
         }
         const auto taken = limit_at_infinity(e.op(1), s, given, memo);
@@ -483,7 +507,7 @@ private:
     verdict prove_form(const GiNaC::ex& form, const GiNaC::ex& value)
     {
         if (!has_select(form) && !has_select(value))
-            return prove_equal(form, value, d_.symbols, run_);
+            return prove_equal(form, value, d_.symbols, run_, when_unproven::give_up);
         GiNaC::exmap named;
         for (const GiNaC::ex& side : {form, value})
             for (GiNaC::const_postorder_iterator it = side.postorder_begin(); it != side.postorder_end(); ++it)
@@ -491,7 +515,7 @@ private:
                     named[*it] = select_name(*it);
         return prove_equal(expanded_radicands(form.subs(named, GiNaC::subs_options::no_pattern)),
                            expanded_radicands(value.subs(named, GiNaC::subs_options::no_pattern)), d_.symbols,
-                           run_);
+                           run_, when_unproven::give_up);
     }
 
     // The symbol naming select `s`: that of a select met before whose condition and cases
@@ -505,7 +529,8 @@ private:
             for (const GiNaC::ex& member : members) {
                 bool equal = true;
                 for (std::size_t i = 0; i < 3 && equal; ++i)
-                    equal = prove_equal(s.op(i), member.op(i), d_.symbols, run_).what == verdict::status::proven;
+                    equal = prove_equal(s.op(i), member.op(i), d_.symbols, run_, when_unproven::give_up).what ==
+                            verdict::status::proven;
                 if (equal) {
                     members.push_back(s);
                     return select_names_.emplace(s, symbol).first->second;

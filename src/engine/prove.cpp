@@ -303,7 +303,8 @@ std::string to_string(const verdict& v)
     return "failed";
 }
 
-verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run)
+verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run,
+                    when_unproven otherwise)
 {
     const GiNaC::exmap abbreviations = symbols.abbreviations();
     const assumptions given = declared_assumptions(symbols, run);
@@ -357,6 +358,13 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
     }
     if (auto angles = prove_equal_angles(a, b, symbols, given))
         return *angles;
+    if (otherwise == when_unproven::give_up) {
+        verdict v;
+        v.what = verdict::status::failed;
+        v.residual = residual;
+        v.method = "difference not proven zero (not sampled)";
+        return v;
+    }
     return sample(a, b, residual, symbols, nearly_equal, "=");
 }
 

@@ -45,9 +45,16 @@ struct verdict {
 /// `proven`, `sampled (N points)` or `failed`.
 std::string to_string(const verdict& v);
 
+/// What `prove_equal` does with an identity it cannot prove: test it at sampled points
+/// (`sampled` or `failed`), or give up at once (`failed`, with the residual) for a caller
+/// that needs a proof and would take nothing less (sampling a long radical expression at
+/// 40 digits takes seconds).
+enum class when_unproven { sample, give_up };
+
 /// Decides whether `lhs == rhs` for all values of the symbols' domains; `run` keeps what
 /// the proof works out for the proofs after it.
-verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run);
+verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run,
+                    when_unproven otherwise = when_unproven::sample);
 
 /// Decides `lhs op rhs` for an inequality: proven from the signs of the factors of
 /// the difference under `given` (prove_sign), else sampled, else failed.

@@ -62,663 +62,342 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
     }
     const Real t0 = C_Mx - C_mx;
     const Real t1 = t0 - C_Mx;
-    const Real t2 = C_Mx * C_Mx;
-    const Real t3 = Real(2) * C_Mx;
-    const Real t4 = t3 * C_mx;
-    const Real t5 = C_mx * C_mx;
-    const Real t6 = t0 * t0;
-    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
-    const Real t8 = t2 - t4;
-    const Real t9 = t8 - t2;
-    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
-    const Real t11 = t8 + t10;
-    const Real t12 = C_My - C_my;
-    const Real t13 = t12 - C_My;
-    const Real t14 = C_My * C_My;
-    const Real t15 = t11 + t14;
-    const Real t16 = t15 - t11;
-    const Real t17 = Real(2) * C_My;
-    const Real t18 = t17 * C_my;
-    const Real t19 = C_my * C_my;
-    const Real t20 = t12 * t12;
-    const Real t21 = t6 + t20;
-    const Real t22 = t21 - t6;
-    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
-    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
-    const Real t25 = t15 + t24;
-    const Real t26 = t25 - t18;
-    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
-    const Real t28 = t21 + t27;
-    const Real t29 = t26 - t25;
-    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
-    const Real t31 = t26 + t30;
-    const Real t32 = t31 + t5;
-    const Real t33 = t32 - t31;
-    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
-    const Real t35 = t32 + t34;
-    const Real t36 = t35 + t19;
-    const Real t37 = t36 - t35;
-    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
-    const Real t39 = t36 + t38;
-    const Real t40 = v_Mx - v_mx;
-    const Real t41 = v_Mx * t0;
-    const Real t42 = v_mx * t0;
-    const Real t43 = v_Mx * C_My;
-    const Real t44 = v_Mx * C_my;
-    const Real t45 = v_mx * C_My;
-    const Real t46 = v_mx * C_my;
-    const Real t47 = t40 * t12;
-    const Real t48 = v_Mx * t12;
-    const Real t49 = v_mx * t12;
-    const Real t50 = t40 - v_Mx;
-    const Real t51 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t41));
-    const Real t52 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t42));
-    const Real t53 = v_My - v_my;
-    const Real t54 = v_My * C_Mx;
-    const Real t55 = v_My * C_mx;
-    const Real t56 = v_my * C_Mx;
-    const Real t57 = v_my * C_mx;
-    const Real t58 = t53 * t0;
-    const Real t59 = v_My * t0;
-    const Real t60 = v_my * t0;
-    const Real t61 = v_My * t12;
-    const Real t62 = v_my * t12;
-    if (!(t21 > Real(0))) {
+    const Real t2 = t0 * t0;
+    const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t4 = C_My - C_my;
+    const Real t5 = t4 - C_My;
+    const Real t6 = t4 * t4;
+    const Real t7 = t2 + t6;
+    const Real t8 = t7 - t2;
+    const Real t9 = C_My - (t4 - t5) - (C_my + t5);
+    const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
+    const Real t11 = t7 + t10;
+    const Real t12 = v_Mx - v_mx;
+    const Real t13 = t12 * t0;
+    const Real t14 = v_Mx * t0;
+    const Real t15 = v_mx * t0;
+    const Real t16 = t12 * t4;
+    const Real t17 = v_Mx * t4;
+    const Real t18 = v_mx * t4;
+    const Real t19 = t12 - v_Mx;
+    const Real t20 = -t13;
+    const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+    const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+    const Real t23 = v_Mx - (t12 - t19) - (v_mx + t19);
+    const Real t24 = std::fma(t23, t4, std::fma(t12, t9, std::fma(t12, t4, -t16)));
+    const Real t25 = v_My - v_my;
+    const Real t26 = t25 * t0;
+    const Real t27 = v_My * t0;
+    const Real t28 = v_my * t0;
+    const Real t29 = t25 * t4;
+    const Real t30 = v_My * t4;
+    const Real t31 = v_my * t4;
+    const Real t32 = t13 + t29;
+    const Real t33 = t32 - t13;
+    if (!(t7 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-(t40 * t0) - t53 * t12 > Real(0))) {
+    if (!(t20 - t29 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t63 = t53 - v_My;
-    const Real t64 = std::fma(v_My, t23, std::fma(v_My, t12, -t61));
-    const Real t65 = std::fma(v_my, t23, std::fma(v_my, t12, -t62));
-    const Real t66 = Real(1) + eps;
-    const Real t67 = t66 - Real(1);
-    const Real t68 = Real(1) - (t66 - t67) + (eps - t67);
-    const Real t69 = m * t66;
-    const Real t70 = q_M * q_m;
-    const Real t71 = t70 * eps;
-    const Real t72 = q_M * eps;
-    const Real t73 = m * q_M;
-    const Real t74 = t73 * q_m;
-    const Real t75 = q_M + t70;
-    const Real t76 = t75 - q_M;
-    const Real t77 = std::fma(q_M, q_m, -t70);
-    const Real t78 = q_M - (t75 - t76) + (t70 - t76) + t77;
-    const Real t79 = t75 + t78;
-    const Real t80 = t71 * mu;
-    const Real t81 = t80 * v_Mx;
-    const Real t82 = t81 * C_Mx;
-    const Real t83 = t81 * C_mx;
-    const Real t84 = t80 * v_mx;
-    const Real t85 = t84 * C_Mx;
-    const Real t86 = t84 * C_mx;
-    const Real t87 = t80 * v_My;
-    const Real t88 = t87 * C_My;
-    const Real t89 = t87 * C_my;
-    const Real t90 = t80 * v_my;
-    const Real t91 = t90 * C_My;
-    const Real t92 = t90 * C_my;
-    const Real t93 = m * mu;
-    const Real t94 = t93 * t66;
-    const Real t95 = q_M * mu;
-    const Real t96 = t95 * v_Mx;
-    const Real t97 = t96 * C_Mx;
-    const Real t98 = t96 * C_mx;
-    const Real t99 = t95 * v_mx;
-    const Real t100 = t99 * C_Mx;
-    const Real t101 = t99 * C_mx;
-    const Real t102 = t95 * v_My;
-    const Real t103 = t102 * C_My;
-    const Real t104 = t102 * C_my;
-    const Real t105 = t95 * v_my;
-    const Real t106 = t105 * C_My;
-    const Real t107 = t105 * C_my;
-    const Real t108 = t70 * mu;
-    const Real t109 = t108 * v_Mx;
-    const Real t110 = t109 * C_Mx;
-    const Real t111 = t109 * C_mx;
-    const Real t112 = t108 * v_mx;
-    const Real t113 = t112 * C_Mx;
-    const Real t114 = t112 * C_mx;
-    const Real t115 = t108 * v_My;
-    const Real t116 = t115 * C_My;
-    const Real t117 = t115 * C_my;
-    const Real t118 = t108 * v_my;
-    const Real t119 = t118 * C_My;
-    const Real t120 = t118 * C_my;
-    const Real t121 = t72 * mu;
-    const Real t122 = t121 * v_Mx;
-    const Real t123 = t122 * C_Mx;
-    const Real t124 = t122 * C_mx;
-    const Real t125 = t121 * v_mx;
-    const Real t126 = t125 * C_Mx;
-    const Real t127 = t125 * C_mx;
-    const Real t128 = t121 * v_My;
-    const Real t129 = t128 * C_My;
-    const Real t130 = t128 * C_my;
-    const Real t131 = t121 * v_my;
-    const Real t132 = t131 * C_My;
-    const Real t133 = t131 * C_my;
-    const Real t134 = std::fma(std::fma(t77, eps, std::fma(t70, eps, -t71)), mu, std::fma(t71, mu, -t80));
-    const Real t135 = std::fma(t134, v_Mx, std::fma(t80, v_Mx, -t81));
-    const Real t136 = t82 - t83;
-    const Real t137 = t136 - t82;
-    const Real t138 = std::fma(t134, v_mx, std::fma(t80, v_mx, -t84));
-    const Real t139 = std::fma(t134, v_My, std::fma(t80, v_My, -t87));
-    const Real t140 = std::fma(t134, v_my, std::fma(t80, v_my, -t90));
-    const Real t141 = std::fma(q_M, mu, -t95);
-    const Real t142 = std::fma(t141, v_Mx, std::fma(t95, v_Mx, -t96));
-    const Real t143 = std::fma(t141, v_mx, std::fma(t95, v_mx, -t99));
-    const Real t144 = std::fma(t141, v_My, std::fma(t95, v_My, -t102));
-    const Real t145 = std::fma(t141, v_my, std::fma(t95, v_my, -t105));
-    const Real t146 = std::fma(t77, mu, std::fma(t70, mu, -t108));
-    const Real t147 = std::fma(t146, v_Mx, std::fma(t108, v_Mx, -t109));
-    const Real t148 = std::fma(t146, v_mx, std::fma(t108, v_mx, -t112));
-    const Real t149 = std::fma(t146, v_My, std::fma(t108, v_My, -t115));
-    const Real t150 = std::fma(t146, v_my, std::fma(t108, v_my, -t118));
-    const Real t151 = std::fma(std::fma(q_M, eps, -t72), mu, std::fma(t72, mu, -t121));
-    const Real t152 = std::fma(t151, v_Mx, std::fma(t121, v_Mx, -t122));
-    const Real t153 = std::fma(t151, v_mx, std::fma(t121, v_mx, -t125));
-    const Real t154 = std::fma(t151, v_My, std::fma(t121, v_My, -t128));
-    const Real t155 = std::fma(t151, v_my, std::fma(t121, v_my, -t131));
-    const Real t156 = t82 - (t136 - t137) - (t83 + t137) + (std::fma(t135, C_Mx, std::fma(t81, C_Mx, -t82)) - std::fma(t135, C_mx, std::fma(t81, C_mx, -t83)));
-    const Real t157 = t136 + t156;
-    const Real t158 = t157 + t88;
-    const Real t159 = t158 - t157;
-    const Real t160 = t157 - (t158 - t159) + (t88 - t159) + (t156 - (t157 - t136) + std::fma(t139, C_My, std::fma(t87, C_My, -t88)));
-    const Real t161 = t158 + t160;
-    const Real t162 = t161 - t89;
-    const Real t163 = t162 - t161;
-    const Real t164 = t161 - (t162 - t163) - (t89 + t163) + (t160 - (t161 - t158) - std::fma(t139, C_my, std::fma(t87, C_my, -t89)));
-    const Real t165 = t162 + t164;
-    const Real t166 = t165 - t85;
-    const Real t167 = t166 - t165;
-    const Real t168 = t165 - (t166 - t167) - (t85 + t167) + (t164 - (t165 - t162) - std::fma(t138, C_Mx, std::fma(t84, C_Mx, -t85)));
-    const Real t169 = t166 + t168;
-    const Real t170 = t169 + t86;
-    const Real t171 = t170 - t169;
-    const Real t172 = t169 - (t170 - t171) + (t86 - t171) + (t168 - (t169 - t166) + std::fma(t138, C_mx, std::fma(t84, C_mx, -t86)));
-    const Real t173 = t170 + t172;
-    const Real t174 = t173 - t91;
-    const Real t175 = t174 - t173;
-    const Real t176 = t173 - (t174 - t175) - (t91 + t175) + (t172 - (t173 - t170) - std::fma(t140, C_My, std::fma(t90, C_My, -t91)));
-    const Real t177 = t174 + t176;
-    const Real t178 = t177 + t92;
-    const Real t179 = t178 - t177;
-    const Real t180 = t177 - (t178 - t179) + (t92 - t179) + (t176 - (t177 - t174) + std::fma(t140, C_my, std::fma(t90, C_my, -t92)));
-    const Real t181 = t178 + t180;
-    const Real t182 = t70 * b;
-    const Real t183 = R_M * w_M;
-    const Real t184 = R_M * b;
-    const Real t185 = t184 * w_M;
-    const Real t186 = std::fma(R_M, w_M, -t183);
-    const Real t187 = t185 + t183;
-    const Real t188 = t187 - t185;
-    const Real t189 = t185 - (t187 - t188) + (t183 - t188) + (std::fma(std::fma(R_M, b, -t184), w_M, std::fma(t184, w_M, -t185)) + t186);
-    const Real t190 = t187 + t189;
-    const Real t191 = R_m * w_m;
-    const Real t192 = m * R_m;
-    const Real t193 = t192 * q_m;
-    const Real t194 = std::sqrt(t28);
-    const Real t195 = std::sqrt(t39);
-    const Real t196 = R_m * b;
-    const Real t197 = t183 * t195;
-    const Real t198 = t183 + t191;
-    const Real t199 = t198 - t183;
-    const Real t200 = t196 * w_m;
-    const Real t201 = t190 + t200;
-    const Real t202 = t201 - t190;
-    const Real t203 = std::fma(R_m, w_m, -t191);
-    const Real t204 = t191 * t195;
-    const Real t205 = std::fma(-t194, t194, t28) + (t27 - (t28 - t21));
-    const Real t206 = t194 + t194;
-    const Real t207 = t197 + t204;
-    const Real t208 = t207 - t197;
-    const Real t209 = t183 - (t198 - t199) + (t191 - t199) + (t186 + t203);
-    const Real t210 = t198 + t209;
-    const Real t211 = t210 * t194;
-    const Real t212 = t211 + t47;
-    const Real t213 = t190 - (t201 - t202) + (t200 - t202) + (t189 - (t190 - t187) + std::fma(std::fma(R_m, b, -t196), w_m, std::fma(t196, w_m, -t200)));
-    const Real t214 = t201 + t213;
-    const Real t215 = t214 + t191;
-    const Real t216 = t212 - t211;
-    const Real t217 = t197 - (t207 - t208) + (t204 - t208) + (std::fma(t186, t195, std::fma(t183, t195, -t197)) + std::fma(t203, t195, std::fma(t191, t195, -t204)));
-    const Real t218 = t207 + t217;
-    const Real t219 = t218 + t43;
-    const Real t220 = t215 - t214;
-    const Real t221 = t219 - t218;
-    const Real t222 = t214 - (t215 - t220) + (t191 - t220) + (t213 - (t214 - t201) + t203);
-    const Real t223 = t215 + t222;
-    const Real t224 = t218 - (t219 - t221) + (t43 - t221) + (t217 - (t218 - t207) + std::fma(v_Mx, C_My, -t43));
-    const Real t225 = t219 + t224;
-    const Real t226 = t225 - t44;
-    const Real t227 = t226 - t225;
-    const Real t228 = t225 - (t226 - t227) - (t44 + t227) + (t224 - (t225 - t219) - std::fma(v_Mx, C_my, -t44));
-    const Real t229 = t226 + t228;
-    const Real t230 = t229 - t54;
-    const Real t231 = t230 - t229;
-    const Real t232 = t229 - (t230 - t231) - (t54 + t231) + (t228 - (t229 - t226) - std::fma(v_My, C_Mx, -t54));
-    const Real t233 = t230 + t232;
-    const Real t234 = t233 + t55;
-    const Real t235 = t234 - t233;
-    const Real t236 = t233 - (t234 - t235) + (t55 - t235) + (t232 - (t233 - t230) + std::fma(v_My, C_mx, -t55));
-    const Real t237 = t234 + t236;
-    const Real t238 = t237 - t45;
-    const Real t239 = t238 - t237;
-    const Real t240 = t237 - (t238 - t239) - (t45 + t239) + (t236 - (t237 - t234) - std::fma(v_mx, C_My, -t45));
-    const Real t241 = t238 + t240;
-    const Real t242 = t241 + t46;
-    const Real t243 = t242 - t241;
-    const Real t244 = t241 - (t242 - t243) + (t46 - t243) + (t240 - (t241 - t238) + std::fma(v_mx, C_my, -t46));
-    const Real t245 = t242 + t244;
-    const Real t246 = t245 + t56;
-    const Real t247 = t246 - t245;
-    const Real t248 = t245 - (t246 - t247) + (t56 - t247) + (t244 - (t245 - t242) + std::fma(v_my, C_Mx, -t56));
-    const Real t249 = t246 + t248;
-    const Real t250 = t249 - t57;
-    const Real t251 = t250 - t249;
-    const Real t252 = t249 - (t250 - t251) - (t57 + t251) + (t248 - (t249 - t246) - std::fma(v_my, C_mx, -t57));
-    const Real t253 = t250 + t252;
-    const Real t254 = t252 - (t253 - t250);
-    const Real t255 = (t253 > Real(0) ? t253 : -t253);
-    const Real t256 = t70 * t255;
-    const Real t257 = t182 * t255;
-    const Real t258 = t181 + t257;
-    const Real t259 = t258 - t181;
-    const Real t260 = (t253 > Real(0) ? t254 : -t254);
-    const Real t261 = t181 - (t258 - t259) + (t257 - t259) + (t180 - (t181 - t178) + std::fma(std::fma(t77, b, std::fma(t70, b, -t182)), t255, std::fma(t182, t260, std::fma(t182, t255, -t257))));
-    const Real t262 = t258 + t261;
-    const Real t263 = t262 + t110;
-    const Real t264 = t263 - t262;
-    const Real t265 = t262 - (t263 - t264) + (t110 - t264) + (t261 - (t262 - t258) + std::fma(t147, C_Mx, std::fma(t109, C_Mx, -t110)));
-    const Real t266 = t263 + t265;
-    const Real t267 = t266 - t111;
-    const Real t268 = t267 - t266;
-    const Real t269 = t266 - (t267 - t268) - (t111 + t268) + (t265 - (t266 - t263) - std::fma(t147, C_mx, std::fma(t109, C_mx, -t111)));
-    const Real t270 = t267 + t269;
-    const Real t271 = t270 + t116;
-    const Real t272 = t271 - t270;
-    const Real t273 = t270 - (t271 - t272) + (t116 - t272) + (t269 - (t270 - t267) + std::fma(t149, C_My, std::fma(t115, C_My, -t116)));
-    const Real t274 = t271 + t273;
-    const Real t275 = t274 - t117;
-    const Real t276 = t275 - t274;
-    const Real t277 = t274 - (t275 - t276) - (t117 + t276) + (t273 - (t274 - t271) - std::fma(t149, C_my, std::fma(t115, C_my, -t117)));
-    const Real t278 = t275 + t277;
-    const Real t279 = t278 - t113;
-    const Real t280 = t279 - t278;
-    const Real t281 = t278 - (t279 - t280) - (t113 + t280) + (t277 - (t278 - t275) - std::fma(t148, C_Mx, std::fma(t112, C_Mx, -t113)));
-    const Real t282 = t279 + t281;
-    const Real t283 = t282 + t114;
-    const Real t284 = t283 - t282;
-    const Real t285 = t282 - (t283 - t284) + (t114 - t284) + (t281 - (t282 - t279) + std::fma(t148, C_mx, std::fma(t112, C_mx, -t114)));
-    const Real t286 = t283 + t285;
-    const Real t287 = t286 - t119;
-    const Real t288 = t287 - t286;
-    const Real t289 = t286 - (t287 - t288) - (t119 + t288) + (t285 - (t286 - t283) - std::fma(t150, C_My, std::fma(t118, C_My, -t119)));
-    const Real t290 = t287 + t289;
-    const Real t291 = t290 + t120;
-    const Real t292 = t291 - t290;
-    const Real t293 = t290 - (t291 - t292) + (t120 - t292) + (t289 - (t290 - t287) + std::fma(t150, C_my, std::fma(t118, C_my, -t120)));
-    const Real t294 = t291 + t293;
-    const Real t295 = t294 + t256;
-    const Real t296 = t295 - t294;
-    const Real t297 = t294 - (t295 - t296) + (t256 - t296) + (t293 - (t294 - t291) + std::fma(t77, t255, std::fma(t70, t260, std::fma(t70, t255, -t256))));
-    const Real t298 = t295 + t297;
-    const Real t299 = t298 + t123;
-    const Real t300 = t299 - t298;
-    const Real t301 = t298 - (t299 - t300) + (t123 - t300) + (t297 - (t298 - t295) + std::fma(t152, C_Mx, std::fma(t122, C_Mx, -t123)));
-    const Real t302 = t299 + t301;
-    const Real t303 = t302 - t124;
-    const Real t304 = t303 - t302;
-    const Real t305 = t302 - (t303 - t304) - (t124 + t304) + (t301 - (t302 - t299) - std::fma(t152, C_mx, std::fma(t122, C_mx, -t124)));
-    const Real t306 = t303 + t305;
-    const Real t307 = t306 + t129;
-    const Real t308 = t307 - t306;
-    const Real t309 = t306 - (t307 - t308) + (t129 - t308) + (t305 - (t306 - t303) + std::fma(t154, C_My, std::fma(t128, C_My, -t129)));
-    const Real t310 = t307 + t309;
-    const Real t311 = t310 - t130;
-    const Real t312 = t311 - t310;
-    const Real t313 = t310 - (t311 - t312) - (t130 + t312) + (t309 - (t310 - t307) - std::fma(t154, C_my, std::fma(t128, C_my, -t130)));
-    const Real t314 = t311 + t313;
-    const Real t315 = t314 - t126;
-    const Real t316 = t315 - t314;
-    const Real t317 = t314 - (t315 - t316) - (t126 + t316) + (t313 - (t314 - t311) - std::fma(t153, C_Mx, std::fma(t125, C_Mx, -t126)));
-    const Real t318 = t315 + t317;
-    const Real t319 = t318 + t127;
-    const Real t320 = t319 - t318;
-    const Real t321 = t318 - (t319 - t320) + (t127 - t320) + (t317 - (t318 - t315) + std::fma(t153, C_mx, std::fma(t125, C_mx, -t127)));
-    const Real t322 = t319 + t321;
-    const Real t323 = t322 - t132;
-    const Real t324 = t323 - t322;
-    const Real t325 = t322 - (t323 - t324) - (t132 + t324) + (t321 - (t322 - t319) - std::fma(t155, C_My, std::fma(t131, C_My, -t132)));
-    const Real t326 = t323 + t325;
-    const Real t327 = t326 + t133;
-    const Real t328 = t327 - t326;
-    const Real t329 = t326 - (t327 - t328) + (t133 - t328) + (t325 - (t326 - t323) + std::fma(t155, C_my, std::fma(t131, C_my, -t133)));
-    const Real t330 = t327 + t329;
-    const Real t331 = t330 + t97;
-    const Real t332 = t331 - t330;
-    const Real t333 = t330 - (t331 - t332) + (t97 - t332) + (t329 - (t330 - t327) + std::fma(t142, C_Mx, std::fma(t96, C_Mx, -t97)));
-    const Real t334 = t331 + t333;
-    const Real t335 = t334 - t98;
-    const Real t336 = t335 - t334;
-    const Real t337 = t334 - (t335 - t336) - (t98 + t336) + (t333 - (t334 - t331) - std::fma(t142, C_mx, std::fma(t96, C_mx, -t98)));
-    const Real t338 = t335 + t337;
-    const Real t339 = t338 + t103;
-    const Real t340 = t339 - t338;
-    const Real t341 = t338 - (t339 - t340) + (t103 - t340) + (t337 - (t338 - t335) + std::fma(t144, C_My, std::fma(t102, C_My, -t103)));
-    const Real t342 = t339 + t341;
-    const Real t343 = t342 - t104;
-    const Real t344 = t343 - t342;
-    const Real t345 = t342 - (t343 - t344) - (t104 + t344) + (t341 - (t342 - t339) - std::fma(t144, C_my, std::fma(t102, C_my, -t104)));
-    const Real t346 = t343 + t345;
-    const Real t347 = t346 - t100;
-    const Real t348 = t347 - t346;
-    const Real t349 = t346 - (t347 - t348) - (t100 + t348) + (t345 - (t346 - t343) - std::fma(t143, C_Mx, std::fma(t99, C_Mx, -t100)));
-    const Real t350 = t347 + t349;
-    const Real t351 = t350 + t101;
-    const Real t352 = t351 - t350;
-    const Real t353 = t350 - (t351 - t352) + (t101 - t352) + (t349 - (t350 - t347) + std::fma(t143, C_mx, std::fma(t99, C_mx, -t101)));
-    const Real t354 = t351 + t353;
-    const Real t355 = t354 - t106;
-    const Real t356 = t355 - t354;
-    const Real t357 = t354 - (t355 - t356) - (t106 + t356) + (t353 - (t354 - t351) - std::fma(t145, C_My, std::fma(t105, C_My, -t106)));
-    const Real t358 = t355 + t357;
-    const Real t359 = t358 + t107;
-    const Real t360 = t359 - t358;
-    const Real t361 = t358 - (t359 - t360) + (t107 - t360) + (t357 - (t358 - t355) + std::fma(t145, C_my, std::fma(t105, C_my, -t107)));
-    const Real t362 = t359 + t361;
-    const Real t363 = t362 + (t361 - (t362 - t359));
-    const Real t364 = (t363 > Real(0) ? Real(1) : t79);
-    const Real t365 = (t363 > Real(0) ? t194 : Real(1));
-    const Real t366 = (t363 > Real(0) ? Real(1) : t194);
-    const Real t367 = (t363 > Real(0) ? t206 : Real(1));
-    const Real t368 = (t363 > Real(0) ? Real(1) : t206);
-    if (!(std::fabs(t194) >= detail::smallest_divisor<Real>) || !(std::fabs(t194) <= std::numeric_limits<Real>::max()) || !(std::fabs(t365) >= detail::smallest_divisor<Real>) || !(std::fabs(t365) <= std::numeric_limits<Real>::max()) || !(std::fabs(t366) >= detail::smallest_divisor<Real>) || !(std::fabs(t366) <= std::numeric_limits<Real>::max()) || !(std::fabs(t206) >= detail::smallest_divisor<Real>) || !(std::fabs(t206) <= std::numeric_limits<Real>::max()) || !(std::fabs(t367) >= detail::smallest_divisor<Real>) || !(std::fabs(t367) <= std::numeric_limits<Real>::max()) || !(std::fabs(t368) >= detail::smallest_divisor<Real>) || !(std::fabs(t368) <= std::numeric_limits<Real>::max()) || !(std::fabs(t364) >= detail::smallest_divisor<Real>) || !(std::fabs(t364) <= std::numeric_limits<Real>::max()) || !(std::fabs(t193) >= detail::smallest_divisor<Real>) || !(std::fabs(t193) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
+    const Real t34 = t25 - v_My;
+    const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t30));
+    const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t31));
+    const Real t37 = v_My - (t25 - t34) - (v_my + t34);
+    const Real t38 = std::fma(t37, t0, std::fma(t25, t3, std::fma(t25, t0, -t26)));
+    const Real t39 = t13 - (t32 - t33) + (t29 - t33) + (std::fma(t23, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t37, t4, std::fma(t25, t9, std::fma(t25, t4, -t29))));
+    const Real t40 = t32 + t39;
+    const Real t41 = Real(1) + eps;
+    const Real t42 = t41 - Real(1);
+    const Real t43 = Real(1) - (t41 - t42) + (eps - t42);
+    const Real t44 = m * t41;
+    const Real t45 = q_M * q_m;
+    const Real t46 = m * q_M;
+    const Real t47 = q_M + t45;
+    const Real t48 = t47 - q_M;
+    const Real t49 = t46 * q_m;
+    const Real t50 = std::fma(q_M, q_m, -t45);
+    const Real t51 = q_M - (t47 - t48) + (t45 - t48) + t50;
+    const Real t52 = t47 + t51;
+    const Real t53 = t51 - (t52 - t47);
+    const Real t54 = Real(1) + b;
+    const Real t55 = t45 * t54;
+    const Real t56 = t54 - Real(1);
+    const Real t57 = R_M * w_M;
+    const Real t58 = R_M * b;
+    const Real t59 = t58 * w_M;
+    const Real t60 = std::fma(R_M, w_M, -t57);
+    const Real t61 = t59 + t57;
+    const Real t62 = t61 - t59;
+    const Real t63 = t59 - (t61 - t62) + (t57 - t62) + (std::fma(std::fma(R_M, b, -t58), w_M, std::fma(t58, w_M, -t59)) + t60);
+    const Real t64 = t61 + t63;
+    const Real t65 = R_m * w_m;
+    const Real t66 = m * R_m;
+    const Real t67 = t66 * q_m;
+    const Real t68 = std::sqrt(t11);
+    const Real t69 = R_m * b;
+    const Real t70 = t57 + t65;
+    const Real t71 = t70 - t57;
+    const Real t72 = t69 * w_m;
+    const Real t73 = t64 + t72;
+    const Real t74 = t73 - t64;
+    const Real t75 = std::fma(R_m, w_m, -t65);
+    const Real t76 = std::fma(-t68, t68, t11) + (t10 - (t11 - t7));
+    const Real t77 = t68 + t68;
+    const Real t78 = t57 - (t70 - t71) + (t65 - t71) + (t60 + t75);
+    const Real t79 = t70 + t78;
+    const Real t80 = t79 * t68;
+    const Real t81 = t80 + t16;
+    const Real t82 = t64 - (t73 - t74) + (t72 - t74) + (t63 - (t64 - t61) + std::fma(std::fma(R_m, b, -t69), w_m, std::fma(t69, w_m, -t72)));
+    const Real t83 = t73 + t82;
+    const Real t84 = t83 + t65;
+    const Real t85 = t78 - (t79 - t70);
+    const Real t86 = std::fma(t79, t68, -t80);
+    const Real t87 = t81 - t80;
+    const Real t88 = t84 - t83;
+    const Real t89 = t80 - (t81 - t87) + (t16 - t87);
+    const Real t90 = t89 + (std::fma(t85, t68, t86) + t24);
+    const Real t91 = t81 + t90;
+    const Real t92 = t91 - t26;
+    const Real t93 = t83 - (t84 - t88) + (t65 - t88) + (t82 - (t83 - t73) + t75);
+    const Real t94 = t84 + t93;
+    const Real t95 = t92 - t91;
+    const Real t96 = t91 - (t92 - t95) - (t26 + t95) + (t90 - (t91 - t81) - t38);
+    const Real t97 = t92 + t96;
+    const Real t98 = t96 - (t97 - t92);
+    const Real t99 = (t97 > Real(0) ? t97 : -t97);
+    const Real t100 = t55 * t99;
+    const Real t101 = mu * t41;
+    const Real t102 = m * mu;
+    const Real t103 = t102 * t41;
+    const Real t104 = t101 * t52;
+    const Real t105 = t104 * t40;
+    const Real t106 = t100 + t105;
+    const Real t107 = t106 - t100;
+    const Real t108 = t100 - (t106 - t107) + (t105 - t107) + (std::fma(std::fma(t50, t54, std::fma(t45, Real(1) - (t54 - t56) + (b - t56), std::fma(t45, t54, -t55))), t99, std::fma(t55, (t97 > Real(0) ? t98 : -t98), std::fma(t55, t99, -t100))) + std::fma(std::fma(std::fma(mu, t43, std::fma(mu, t41, -t101)), t52, std::fma(t101, t53, std::fma(t101, t52, -t104))), t40, std::fma(t104, t39 - (t40 - t32), std::fma(t104, t40, -t105))));
+    const Real t109 = t106 + t108;
+    const Real t110 = t109 + (t108 - (t109 - t106));
+    const Real t111 = (t110 > Real(0) ? Real(1) : t52);
+    const Real t112 = (t110 > Real(0) ? t68 : Real(1));
+    const Real t113 = (t110 > Real(0) ? Real(1) : t68);
+    const Real t114 = (t110 > Real(0) ? t77 : Real(1));
+    const Real t115 = (t110 > Real(0) ? Real(1) : t77);
+    if (!(std::fabs(t68) >= detail::smallest_divisor<Real>) || !(std::fabs(t68) <= std::numeric_limits<Real>::max()) || !(std::fabs(t112) >= detail::smallest_divisor<Real>) || !(std::fabs(t112) <= std::numeric_limits<Real>::max()) || !(std::fabs(t113) >= detail::smallest_divisor<Real>) || !(std::fabs(t113) <= std::numeric_limits<Real>::max()) || !(std::fabs(t77) >= detail::smallest_divisor<Real>) || !(std::fabs(t77) <= std::numeric_limits<Real>::max()) || !(std::fabs(t114) >= detail::smallest_divisor<Real>) || !(std::fabs(t114) <= std::numeric_limits<Real>::max()) || !(std::fabs(t115) >= detail::smallest_divisor<Real>) || !(std::fabs(t115) <= std::numeric_limits<Real>::max()) || !(std::fabs(t111) >= detail::smallest_divisor<Real>) || !(std::fabs(t111) <= std::numeric_limits<Real>::max()) || !(std::fabs(t67) >= detail::smallest_divisor<Real>) || !(std::fabs(t67) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t369 = t41 / t194;
-    const Real t370 = t41 / t365;
-    const Real t371 = t42 / t194;
-    const Real t372 = t42 / t365;
-    const Real t373 = t48 / t366;
-    const Real t374 = t49 / t366;
-    const Real t375 = t59 / t366;
-    const Real t376 = t60 / t366;
-    const Real t377 = t61 / t194;
-    const Real t378 = t61 / t365;
-    const Real t379 = t62 / t194;
-    const Real t380 = t62 / t365;
-    const Real t381 = t205 / t206;
-    const Real t382 = t205 / t367;
-    const Real t383 = t205 / t368;
-    const Real t384 = t211 - (t212 - t216) + (t47 - t216) + (std::fma(t209 - (t210 - t198), t194, std::fma(t210, t382, std::fma(t210, t194, -t211))) + std::fma(v_Mx - (t40 - t50) - (v_mx + t50), t12, std::fma(t40, t23, std::fma(t40, t12, -t47))));
-    const Real t385 = t212 + t384;
-    const Real t386 = t385 - t58;
-    const Real t387 = -t369;
-    const Real t388 = t369 + t377;
-    const Real t389 = t388 - t369;
-    const Real t390 = -t370;
-    const Real t391 = t370 + t378;
-    const Real t392 = t391 - t370;
-    const Real t393 = -t371;
-    const Real t394 = -t372;
-    const Real t395 = -t373;
-    const Real t396 = t373 - t375;
-    const Real t397 = t396 - t373;
-    const Real t398 = -t374;
-    const Real t399 = t374 - t376;
-    const Real t400 = t399 - t374;
-    const Real t401 = -t375;
-    const Real t402 = -t376;
-    const Real t403 = -t377;
-    const Real t404 = -t378;
-    const Real t405 = -t379;
-    const Real t406 = -t380;
-    const Real t407 = std::fma(t395, t383, std::fma(t395, t194, t48) + std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t48))) / t366;
-    const Real t408 = std::fma(t401, t383, std::fma(t401, t194, t59) + std::fma(v_My, t7, std::fma(v_My, t0, -t59))) / t366;
-    const Real t409 = std::fma(t398, t383, std::fma(t398, t194, t49) + std::fma(v_mx, t23, std::fma(v_mx, t12, -t49))) / t366;
-    const Real t410 = std::fma(t402, t383, std::fma(t402, t194, t60) + std::fma(v_my, t7, std::fma(v_my, t0, -t60))) / t366;
-    const Real t411 = t386 - t385;
-    const Real t412 = t385 - (t386 - t411) - (t58 + t411) + (t384 - (t385 - t212) - std::fma(v_My - (t53 - t63) - (v_my + t63), t0, std::fma(t53, t7, std::fma(t53, t0, -t58))));
-    const Real t413 = t386 + t412;
-    const Real t414 = t373 - (t396 - t397) - (t375 + t397) + (t407 - t408);
-    const Real t415 = t396 + t414;
-    const Real t416 = b * t415;
-    const Real t417 = t223 + t416;
-    const Real t418 = t417 - t223;
-    const Real t419 = t374 - (t399 - t400) - (t376 + t400) + (t409 - t410);
-    const Real t420 = t399 + t419;
-    const Real t421 = b * t420;
-    const Real t422 = t369 - (t388 - t389) + (t377 - t389) + (std::fma(t387, t381, std::fma(t387, t194, t41) + t51) / t194 + std::fma(t403, t381, std::fma(t403, t194, t61) + t64) / t194);
-    const Real t423 = t388 + t422;
-    const Real t424 = t423 - t371;
-    const Real t425 = t370 - (t391 - t392) + (t378 - t392) + (std::fma(t390, t382, std::fma(t390, t194, t41) + t51) / t365 + std::fma(t404, t382, std::fma(t404, t194, t61) + t64) / t365);
-    const Real t426 = t391 + t425;
-    const Real t427 = t426 - t372;
-    const Real t428 = t412 - (t413 - t386);
-    const Real t429 = (t413 > Real(0) ? t413 : -t413);
-    const Real t430 = (t363 > Real(0) ? t429 : Real(1));
-    if (!(std::fabs(t430) >= detail::smallest_divisor<Real>) || !(std::fabs(t430) <= std::numeric_limits<Real>::max())) {
+    const Real t116 = t14 / t68;
+    const Real t117 = t14 / t112;
+    const Real t118 = t15 / t68;
+    const Real t119 = t15 / t112;
+    const Real t120 = t17 / t113;
+    const Real t121 = t18 / t113;
+    const Real t122 = t27 / t113;
+    const Real t123 = t28 / t113;
+    const Real t124 = t30 / t68;
+    const Real t125 = t30 / t112;
+    const Real t126 = t31 / t68;
+    const Real t127 = t31 / t112;
+    const Real t128 = t76 / t77;
+    const Real t129 = t76 / t114;
+    const Real t130 = t76 / t115;
+    const Real t131 = t89 + (std::fma(t85, t68, std::fma(t79, t129, t86)) + t24);
+    const Real t132 = t81 + t131;
+    const Real t133 = t132 - t26;
+    const Real t134 = -t116;
+    const Real t135 = t116 + t124;
+    const Real t136 = t135 - t116;
+    const Real t137 = -t117;
+    const Real t138 = t117 + t125;
+    const Real t139 = t138 - t117;
+    const Real t140 = -t118;
+    const Real t141 = -t119;
+    const Real t142 = -t120;
+    const Real t143 = t120 - t122;
+    const Real t144 = t143 - t120;
+    const Real t145 = -t121;
+    const Real t146 = t121 - t123;
+    const Real t147 = t146 - t121;
+    const Real t148 = -t122;
+    const Real t149 = -t123;
+    const Real t150 = -t124;
+    const Real t151 = -t125;
+    const Real t152 = -t126;
+    const Real t153 = -t127;
+    const Real t154 = std::fma(t142, t130, std::fma(t142, t68, t17) + std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17))) / t113;
+    const Real t155 = std::fma(t148, t130, std::fma(t148, t68, t27) + std::fma(v_My, t3, std::fma(v_My, t0, -t27))) / t113;
+    const Real t156 = std::fma(t145, t130, std::fma(t145, t68, t18) + std::fma(v_mx, t9, std::fma(v_mx, t4, -t18))) / t113;
+    const Real t157 = std::fma(t149, t130, std::fma(t149, t68, t28) + std::fma(v_my, t3, std::fma(v_my, t0, -t28))) / t113;
+    const Real t158 = t133 - t132;
+    const Real t159 = t132 - (t133 - t158) - (t26 + t158) + (t131 - (t132 - t81) - t38);
+    const Real t160 = t133 + t159;
+    const Real t161 = t120 - (t143 - t144) - (t122 + t144) + (t154 - t155);
+    const Real t162 = t143 + t161;
+    const Real t163 = b * t162;
+    const Real t164 = t94 + t163;
+    const Real t165 = t164 - t94;
+    const Real t166 = t121 - (t146 - t147) - (t123 + t147) + (t156 - t157);
+    const Real t167 = t146 + t166;
+    const Real t168 = b * t167;
+    const Real t169 = t116 - (t135 - t136) + (t124 - t136) + (std::fma(t134, t128, std::fma(t134, t68, t14) + t21) / t68 + std::fma(t150, t128, std::fma(t150, t68, t30) + t35) / t68);
+    const Real t170 = t135 + t169;
+    const Real t171 = t170 - t118;
+    const Real t172 = t117 - (t138 - t139) + (t125 - t139) + (std::fma(t137, t129, std::fma(t137, t68, t14) + t21) / t112 + std::fma(t151, t129, std::fma(t151, t68, t30) + t35) / t112);
+    const Real t173 = t138 + t172;
+    const Real t174 = t173 - t119;
+    const Real t175 = t159 - (t160 - t133);
+    const Real t176 = (t160 > Real(0) ? t160 : -t160);
+    const Real t177 = (t110 > Real(0) ? t176 : Real(1));
+    if (!(std::fabs(t177) >= detail::smallest_divisor<Real>) || !(std::fabs(t177) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t431 = t424 - t423;
-    const Real t432 = t427 - t426;
-    const Real t433 = t223 - (t417 - t418) + (t416 - t418) + (t222 - (t223 - t215) + std::fma(b, t414 - (t415 - t396), std::fma(b, t415, -t416)));
-    const Real t434 = t417 + t433;
-    const Real t435 = t434 - t421;
-    const Real t436 = t423 - (t424 - t431) - (t371 + t431) + (t422 - (t423 - t388) - std::fma(t393, t381, std::fma(t393, t194, t42) + t52) / t194);
-    const Real t437 = t424 + t436;
-    const Real t438 = t437 - t379;
-    const Real t439 = t426 - (t427 - t432) - (t372 + t432) + (t425 - (t426 - t391) - std::fma(t394, t382, std::fma(t394, t194, t42) + t52) / t365);
-    const Real t440 = t427 + t439;
-    const Real t441 = t440 - t380;
-    const Real t442 = t435 - t434;
-    const Real t443 = t438 - t437;
-    const Real t444 = t441 - t440;
-    const Real t445 = t434 - (t435 - t442) - (t421 + t442) + (t433 - (t434 - t417) - std::fma(b, t419 - (t420 - t399), std::fma(b, t420, -t421)));
-    const Real t446 = t435 + t445;
-    const Real t447 = t446 + t373;
-    const Real t448 = t437 - (t438 - t443) - (t379 + t443) + (t436 - (t437 - t424) - std::fma(t405, t381, std::fma(t405, t194, t62) + t65) / t194);
-    const Real t449 = t438 + t448;
-    const Real t450 = t69 * t449;
-    const Real t451 = t450 / t194;
-    const Real t452 = t440 - (t441 - t444) - (t380 + t444) + (t439 - (t440 - t427) - std::fma(t406, t382, std::fma(t406, t194, t62) + t65) / t365);
-    const Real t453 = t441 + t452;
-    const Real t454 = t94 * t453;
-    const Real t455 = t454 * t413;
-    const Real t456 = t455 / t430;
-    const Real t457 = t447 - t446;
-    const Real t458 = -t451;
-    const Real t459 = t458 * t0;
-    const Real t460 = t458 * t12;
-    const Real t461 = -t456;
-    const Real t462 = t446 - (t447 - t457) + (t373 - t457) + (t445 - (t446 - t435) + t407);
-    const Real t463 = t447 + t462;
-    const Real t464 = t463 - t375;
-    const Real t465 = t464 - t463;
-    const Real t466 = -(std::fma(t458, t381, std::fma(t458, t194, t450) + std::fma(std::fma(m, t68, std::fma(m, t66, -t69)), t449, std::fma(t69, t448 - (t449 - t438), std::fma(t69, t449, -t450)))) / t194);
-    const Real t467 = t463 - (t464 - t465) - (t375 + t465) + (t462 - (t463 - t447) - t408);
-    const Real t468 = t464 + t467;
-    const Real t469 = t468 - t374;
-    const Real t470 = t469 - t468;
-    const Real t471 = t468 - (t469 - t470) - (t374 + t470) + (t467 - (t468 - t464) - t409);
-    const Real t472 = t469 + t471;
-    const Real t473 = t472 + t376;
-    const Real t474 = t473 - t472;
-    const Real t475 = t472 - (t473 - t474) + (t376 - t474) + (t471 - (t472 - t469) + t410);
-    const Real t476 = t473 + t475;
-    const Real t477 = t74 * t476;
-    const Real t478 = t477 / t364;
-    const Real t479 = (t363 > Real(0) ? t461 : t478);
-    const Real t480 = t479 / t194;
-    const Real t481 = t480 * t0;
-    const Real t482 = t480 * t12;
-    const Real t483 = t480 * t194;
-    const Real t484 = t483 / t193;
-    const Real t485 = t459 - t482;
-    const Real t486 = t485 - t459;
-    const Real t487 = t460 + t481;
-    const Real t488 = t487 - t460;
-    const Real t489 = -t478;
-    const Real t490 = -t480;
-    const Real t491 = -t484;
-    const Real t492 = std::fma(t490, t381, std::fma(t490, t194, t479) + (t363 > Real(0) ? -(std::fma(t461, (t413 > Real(0) ? t428 : -t428), std::fma(t461, t429, t455) + std::fma(std::fma(std::fma(std::fma(m, mu, -t93), t66, std::fma(t93, t68, std::fma(t93, t66, -t94))), t453, std::fma(t94, t452 - (t453 - t441), std::fma(t94, t453, -t454))), t413, std::fma(t454, t428, std::fma(t454, t413, -t455)))) / t430) : std::fma(t489, t78 - (t79 - t75), std::fma(t489, t79, t477) + std::fma(std::fma(std::fma(m, q_M, -t73), q_m, std::fma(t73, q_m, -t74)), t476, std::fma(t74, t475 - (t476 - t473), std::fma(t74, t476, -t477)))) / t364)) / t194;
-    const Real t493 = t459 - (t485 - t486) - (t482 + t486) + (std::fma(t466, t0, std::fma(t458, t7, std::fma(t458, t0, -t459))) - std::fma(t492, t12, std::fma(t480, t23, std::fma(t480, t12, -t482))));
-    const Real t494 = t485 + t493;
-    const Real t495 = t494 / m;
-    const Real t496 = t460 - (t487 - t488) + (t481 - t488) + (std::fma(t466, t12, std::fma(t458, t23, std::fma(t458, t12, -t460))) + std::fma(t492, t0, std::fma(t480, t7, std::fma(t480, t0, -t481))));
-    const Real t497 = t487 + t496;
-    const Real t498 = t497 / m;
-    const Real t499 = -t495;
-    const Real t500 = -t498;
+    const Real t178 = t171 - t170;
+    const Real t179 = t174 - t173;
+    const Real t180 = t94 - (t164 - t165) + (t163 - t165) + (t93 - (t94 - t84) + std::fma(b, t161 - (t162 - t143), std::fma(b, t162, -t163)));
+    const Real t181 = t164 + t180;
+    const Real t182 = t181 - t168;
+    const Real t183 = t170 - (t171 - t178) - (t118 + t178) + (t169 - (t170 - t135) - std::fma(t140, t128, std::fma(t140, t68, t15) + t22) / t68);
+    const Real t184 = t171 + t183;
+    const Real t185 = t184 - t126;
+    const Real t186 = t173 - (t174 - t179) - (t119 + t179) + (t172 - (t173 - t138) - std::fma(t141, t129, std::fma(t141, t68, t15) + t22) / t112);
+    const Real t187 = t174 + t186;
+    const Real t188 = t187 - t127;
+    const Real t189 = t182 - t181;
+    const Real t190 = t185 - t184;
+    const Real t191 = t188 - t187;
+    const Real t192 = t181 - (t182 - t189) - (t168 + t189) + (t180 - (t181 - t164) - std::fma(b, t166 - (t167 - t146), std::fma(b, t167, -t168)));
+    const Real t193 = t182 + t192;
+    const Real t194 = t193 + t120;
+    const Real t195 = t184 - (t185 - t190) - (t126 + t190) + (t183 - (t184 - t171) - std::fma(t152, t128, std::fma(t152, t68, t31) + t36) / t68);
+    const Real t196 = t185 + t195;
+    const Real t197 = t44 * t196;
+    const Real t198 = t197 / t68;
+    const Real t199 = t187 - (t188 - t191) - (t127 + t191) + (t186 - (t187 - t174) - std::fma(t153, t129, std::fma(t153, t68, t31) + t36) / t112);
+    const Real t200 = t188 + t199;
+    const Real t201 = t103 * t200;
+    const Real t202 = t201 * t160;
+    const Real t203 = t202 / t177;
+    const Real t204 = t194 - t193;
+    const Real t205 = -t198;
+    const Real t206 = t205 * t0;
+    const Real t207 = t205 * t4;
+    const Real t208 = -t203;
+    const Real t209 = t193 - (t194 - t204) + (t120 - t204) + (t192 - (t193 - t182) + t154);
+    const Real t210 = t194 + t209;
+    const Real t211 = t210 - t122;
+    const Real t212 = t211 - t210;
+    const Real t213 = -(std::fma(t205, t128, std::fma(t205, t68, t197) + std::fma(std::fma(m, t43, std::fma(m, t41, -t44)), t196, std::fma(t44, t195 - (t196 - t185), std::fma(t44, t196, -t197)))) / t68);
+    const Real t214 = t210 - (t211 - t212) - (t122 + t212) + (t209 - (t210 - t194) - t155);
+    const Real t215 = t211 + t214;
+    const Real t216 = t215 - t121;
+    const Real t217 = t216 - t215;
+    const Real t218 = t215 - (t216 - t217) - (t121 + t217) + (t214 - (t215 - t211) - t156);
+    const Real t219 = t216 + t218;
+    const Real t220 = t219 + t123;
+    const Real t221 = t220 - t219;
+    const Real t222 = t219 - (t220 - t221) + (t123 - t221) + (t218 - (t219 - t216) + t157);
+    const Real t223 = t220 + t222;
+    const Real t224 = t49 * t223;
+    const Real t225 = t224 / t111;
+    const Real t226 = (t110 > Real(0) ? t208 : t225);
+    const Real t227 = t226 / t68;
+    const Real t228 = t227 * t0;
+    const Real t229 = t227 * t4;
+    const Real t230 = t227 * t68;
+    const Real t231 = t230 / t67;
+    const Real t232 = t206 - t229;
+    const Real t233 = t232 - t206;
+    const Real t234 = t207 + t228;
+    const Real t235 = t234 - t207;
+    const Real t236 = -t225;
+    const Real t237 = -t227;
+    const Real t238 = -t231;
+    const Real t239 = std::fma(t237, t128, std::fma(t237, t68, t226) + (t110 > Real(0) ? -(std::fma(t208, (t160 > Real(0) ? t175 : -t175), std::fma(t208, t176, t202) + std::fma(std::fma(std::fma(std::fma(m, mu, -t102), t41, std::fma(t102, t43, std::fma(t102, t41, -t103))), t200, std::fma(t103, t199 - (t200 - t188), std::fma(t103, t200, -t201))), t160, std::fma(t201, t175, std::fma(t201, t160, -t202)))) / t177) : std::fma(t236, t53, std::fma(t236, t52, t224) + std::fma(std::fma(std::fma(m, q_M, -t46), q_m, std::fma(t46, q_m, -t49)), t223, std::fma(t49, t222 - (t223 - t220), std::fma(t49, t223, -t224)))) / t111)) / t68;
+    const Real t240 = t206 - (t232 - t233) - (t229 + t233) + (std::fma(t213, t0, std::fma(t205, t3, std::fma(t205, t0, -t206))) - std::fma(t239, t4, std::fma(t227, t9, std::fma(t227, t4, -t229))));
+    const Real t241 = t232 + t240;
+    const Real t242 = t241 / m;
+    const Real t243 = t207 - (t234 - t235) + (t228 - t235) + (std::fma(t213, t4, std::fma(t205, t9, std::fma(t205, t4, -t207))) + std::fma(t239, t0, std::fma(t227, t3, std::fma(t227, t0, -t228))));
+    const Real t244 = t234 + t243;
+    const Real t245 = t244 / m;
+    const Real t246 = -t242;
+    const Real t247 = -t245;
     const Real result0 = v_Mx;
     const Real result1 = v_My;
-    const Real result2 = v_mx + (t499 + -((std::fma(t499, m, t494) + (t493 - (t494 - t485))) / m));
-    const Real result3 = v_my + (t500 + -((std::fma(t500, m, t497) + (t496 - (t497 - t487))) / m));
+    const Real result2 = v_mx + (t246 + -((std::fma(t246, m, t241) + (t240 - (t241 - t232))) / m));
+    const Real result3 = v_my + (t247 + -((std::fma(t247, m, t244) + (t243 - (t244 - t234))) / m));
     const Real result4 = w_M;
-    const Real result5 = w_m + (t491 + -(std::fma(t491, std::fma(std::fma(m, R_m, -t192), q_m, std::fma(t192, q_m, -t193)), std::fma(t491, t193, t483) + std::fma(t492, t194, std::fma(t480, t381, std::fma(t480, t194, -t483)))) / t193));
+    const Real result5 = w_m + (t238 + -(std::fma(t238, std::fma(std::fma(m, R_m, -t66), q_m, std::fma(t66, q_m, -t67)), std::fma(t238, t67, t230) + std::fma(t239, t68, std::fma(t227, t128, std::fma(t227, t68, -t230)))) / t67));
     if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && t40 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t48) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t49) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && t53 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t62) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && m != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && q_M != Real(0) && eps != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && t73 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && t71 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && q_M != Real(0) && mu != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t70 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t72 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t70 != Real(0) && b != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && t184 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && t192 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t196) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && t183 != Real(0) && t195 != Real(0)) ||
-        (std::fabs(t200) < std::numeric_limits<Real>::min() && t196 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t204) < std::numeric_limits<Real>::min() && t191 != Real(0) && t195 != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && t210 != Real(0) && t194 != Real(0)) ||
-        (std::fabs(t256) < std::numeric_limits<Real>::min() && t70 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && t182 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t369) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t370) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t371) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t372) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t373) < std::numeric_limits<Real>::min() && t48 != Real(0)) ||
-        (std::fabs(t374) < std::numeric_limits<Real>::min() && t49 != Real(0)) ||
-        (std::fabs(t375) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
-        (std::fabs(t376) < std::numeric_limits<Real>::min() && t60 != Real(0)) ||
-        (std::fabs(t377) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t378) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t379) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t380) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t416) < std::numeric_limits<Real>::min() && b != Real(0) && t415 != Real(0)) ||
-        (std::fabs(t421) < std::numeric_limits<Real>::min() && b != Real(0) && t420 != Real(0)) ||
-        (std::fabs(t450) < std::numeric_limits<Real>::min() && t69 != Real(0) && t449 != Real(0)) ||
-        (std::fabs(t451) < std::numeric_limits<Real>::min() && t450 != Real(0)) ||
-        (std::fabs(t454) < std::numeric_limits<Real>::min() && t94 != Real(0) && t453 != Real(0)) ||
-        (std::fabs(t455) < std::numeric_limits<Real>::min() && t454 != Real(0) && t413 != Real(0)) ||
-        (std::fabs(t456) < std::numeric_limits<Real>::min() && t455 != Real(0)) ||
-        (std::fabs(t459) < std::numeric_limits<Real>::min() && t458 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t460) < std::numeric_limits<Real>::min() && t458 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t477) < std::numeric_limits<Real>::min() && t74 != Real(0) && t476 != Real(0)) ||
-        (std::fabs(t478) < std::numeric_limits<Real>::min() && t477 != Real(0)) ||
-        (std::fabs(t480) < std::numeric_limits<Real>::min() && t479 != Real(0)) ||
-        (std::fabs(t481) < std::numeric_limits<Real>::min() && t480 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t482) < std::numeric_limits<Real>::min() && t480 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t483) < std::numeric_limits<Real>::min() && t480 != Real(0) && t194 != Real(0)) ||
-        (std::fabs(t484) < std::numeric_limits<Real>::min() && t483 != Real(0)) ||
-        (std::fabs(t495) < std::numeric_limits<Real>::min() && t494 != Real(0)) ||
-        (std::fabs(t498) < std::numeric_limits<Real>::min() && t497 != Real(0))) {
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t4 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t12 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t12 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && t25 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && t25 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t30) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && m != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t49) < std::numeric_limits<Real>::min() && t46 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && t45 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t65) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t66) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t67) < std::numeric_limits<Real>::min() && t66 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t69) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t72) < std::numeric_limits<Real>::min() && t69 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && t79 != Real(0) && t68 != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t55 != Real(0) && t99 != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && mu != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t101 != Real(0) && t52 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t104 != Real(0) && t40 != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t17 != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t18 != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t28 != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && b != Real(0) && t162 != Real(0)) ||
+        (std::fabs(t168) < std::numeric_limits<Real>::min() && b != Real(0) && t167 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && t44 != Real(0) && t196 != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && t103 != Real(0) && t200 != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && t201 != Real(0) && t160 != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && t202 != Real(0)) ||
+        (std::fabs(t206) < std::numeric_limits<Real>::min() && t205 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t207) < std::numeric_limits<Real>::min() && t205 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && t49 != Real(0) && t223 != Real(0)) ||
+        (std::fabs(t225) < std::numeric_limits<Real>::min() && t224 != Real(0)) ||
+        (std::fabs(t227) < std::numeric_limits<Real>::min() && t226 != Real(0)) ||
+        (std::fabs(t228) < std::numeric_limits<Real>::min() && t227 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t229) < std::numeric_limits<Real>::min() && t227 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t230) < std::numeric_limits<Real>::min() && t227 != Real(0) && t68 != Real(0)) ||
+        (std::fabs(t231) < std::numeric_limits<Real>::min() && t230 != Real(0)) ||
+        (std::fabs(t242) < std::numeric_limits<Real>::min() && t241 != Real(0)) ||
+        (std::fabs(t245) < std::numeric_limits<Real>::min() && t244 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -780,661 +459,340 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
     }
     const Real t0 = C_Mx - C_mx;
     const Real t1 = t0 - C_Mx;
-    const Real t2 = C_Mx * C_Mx;
-    const Real t3 = Real(2) * C_Mx;
-    const Real t4 = t3 * C_mx;
-    const Real t5 = C_mx * C_mx;
-    const Real t6 = t0 * t0;
-    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
-    const Real t8 = t2 - t4;
-    const Real t9 = t8 - t2;
-    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
-    const Real t11 = t8 + t10;
-    const Real t12 = C_My - C_my;
-    const Real t13 = t12 - C_My;
-    const Real t14 = C_My * C_My;
-    const Real t15 = t11 + t14;
-    const Real t16 = t15 - t11;
-    const Real t17 = Real(2) * C_My;
-    const Real t18 = t17 * C_my;
-    const Real t19 = C_my * C_my;
-    const Real t20 = t12 * t12;
-    const Real t21 = t6 + t20;
-    const Real t22 = t21 - t6;
-    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
-    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
-    const Real t25 = t15 + t24;
-    const Real t26 = t25 - t18;
-    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
-    const Real t28 = t21 + t27;
-    const Real t29 = t26 - t25;
-    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
-    const Real t31 = t26 + t30;
-    const Real t32 = t31 + t5;
-    const Real t33 = t32 - t31;
-    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
-    const Real t35 = t32 + t34;
-    const Real t36 = t35 + t19;
-    const Real t37 = t36 - t35;
-    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
-    const Real t39 = t36 + t38;
-    const Real t40 = v_Mx - v_mx;
-    const Real t41 = v_Mx * t0;
-    const Real t42 = v_mx * t0;
-    const Real t43 = v_Mx * C_My;
-    const Real t44 = v_Mx * C_my;
-    const Real t45 = v_mx * C_My;
-    const Real t46 = v_mx * C_my;
-    const Real t47 = t40 * t12;
-    const Real t48 = v_Mx * t12;
-    const Real t49 = v_mx * t12;
-    const Real t50 = t40 - v_Mx;
-    const Real t51 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t41));
-    const Real t52 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t42));
-    const Real t53 = v_My - v_my;
-    const Real t54 = v_My * C_Mx;
-    const Real t55 = v_My * C_mx;
-    const Real t56 = v_my * C_Mx;
-    const Real t57 = v_my * C_mx;
-    const Real t58 = t53 * t0;
-    const Real t59 = v_My * t0;
-    const Real t60 = v_my * t0;
-    const Real t61 = v_My * t12;
-    const Real t62 = v_my * t12;
-    if (!(t21 > Real(0))) {
+    const Real t2 = t0 * t0;
+    const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t4 = C_My - C_my;
+    const Real t5 = t4 - C_My;
+    const Real t6 = t4 * t4;
+    const Real t7 = t2 + t6;
+    const Real t8 = t7 - t2;
+    const Real t9 = C_My - (t4 - t5) - (C_my + t5);
+    const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
+    const Real t11 = t7 + t10;
+    const Real t12 = v_Mx - v_mx;
+    const Real t13 = t12 * t0;
+    const Real t14 = v_Mx * t0;
+    const Real t15 = v_mx * t0;
+    const Real t16 = t12 * t4;
+    const Real t17 = v_Mx * t4;
+    const Real t18 = v_mx * t4;
+    const Real t19 = t12 - v_Mx;
+    const Real t20 = -t13;
+    const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+    const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+    const Real t23 = v_Mx - (t12 - t19) - (v_mx + t19);
+    const Real t24 = std::fma(t23, t4, std::fma(t12, t9, std::fma(t12, t4, -t16)));
+    const Real t25 = v_My - v_my;
+    const Real t26 = t25 * t0;
+    const Real t27 = v_My * t0;
+    const Real t28 = v_my * t0;
+    const Real t29 = t25 * t4;
+    const Real t30 = v_My * t4;
+    const Real t31 = v_my * t4;
+    const Real t32 = t13 + t29;
+    const Real t33 = t32 - t13;
+    if (!(t7 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-(t40 * t0) - t53 * t12 > Real(0))) {
+    if (!(t20 - t29 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t63 = t53 - v_My;
-    const Real t64 = std::fma(v_My, t23, std::fma(v_My, t12, -t61));
-    const Real t65 = std::fma(v_my, t23, std::fma(v_my, t12, -t62));
-    const Real t66 = Real(1) + eps;
-    const Real t67 = t66 - Real(1);
-    const Real t68 = Real(1) - (t66 - t67) + (eps - t67);
-    const Real t69 = M * t66;
-    const Real t70 = q_M * q_m;
-    const Real t71 = t70 * eps;
-    const Real t72 = q_m * eps;
-    const Real t73 = M * q_M;
-    const Real t74 = t73 * q_m;
-    const Real t75 = t70 + q_m;
-    const Real t76 = std::fma(q_M, q_m, -t70);
-    const Real t77 = t75 - t70;
-    const Real t78 = t70 - (t75 - t77) + (q_m - t77) + t76;
-    const Real t79 = t75 + t78;
-    const Real t80 = t71 * mu;
-    const Real t81 = t80 * v_Mx;
-    const Real t82 = t81 * C_Mx;
-    const Real t83 = t81 * C_mx;
-    const Real t84 = t80 * v_mx;
-    const Real t85 = t84 * C_Mx;
-    const Real t86 = t84 * C_mx;
-    const Real t87 = t80 * v_My;
-    const Real t88 = t87 * C_My;
-    const Real t89 = t87 * C_my;
-    const Real t90 = t80 * v_my;
-    const Real t91 = t90 * C_My;
-    const Real t92 = t90 * C_my;
-    const Real t93 = M * mu;
-    const Real t94 = t93 * t66;
-    const Real t95 = q_m * mu;
-    const Real t96 = t95 * v_Mx;
-    const Real t97 = t96 * C_Mx;
-    const Real t98 = t96 * C_mx;
-    const Real t99 = t95 * v_mx;
-    const Real t100 = t99 * C_Mx;
-    const Real t101 = t99 * C_mx;
-    const Real t102 = t95 * v_My;
-    const Real t103 = t102 * C_My;
-    const Real t104 = t102 * C_my;
-    const Real t105 = t95 * v_my;
-    const Real t106 = t105 * C_My;
-    const Real t107 = t105 * C_my;
-    const Real t108 = t70 * mu;
-    const Real t109 = t108 * v_Mx;
-    const Real t110 = t109 * C_Mx;
-    const Real t111 = t109 * C_mx;
-    const Real t112 = t108 * v_mx;
-    const Real t113 = t112 * C_Mx;
-    const Real t114 = t112 * C_mx;
-    const Real t115 = t108 * v_My;
-    const Real t116 = t115 * C_My;
-    const Real t117 = t115 * C_my;
-    const Real t118 = t108 * v_my;
-    const Real t119 = t118 * C_My;
-    const Real t120 = t118 * C_my;
-    const Real t121 = t72 * mu;
-    const Real t122 = t121 * v_Mx;
-    const Real t123 = t122 * C_Mx;
-    const Real t124 = t122 * C_mx;
-    const Real t125 = t121 * v_mx;
-    const Real t126 = t125 * C_Mx;
-    const Real t127 = t125 * C_mx;
-    const Real t128 = t121 * v_My;
-    const Real t129 = t128 * C_My;
-    const Real t130 = t128 * C_my;
-    const Real t131 = t121 * v_my;
-    const Real t132 = t131 * C_My;
-    const Real t133 = t131 * C_my;
-    const Real t134 = std::fma(std::fma(t76, eps, std::fma(t70, eps, -t71)), mu, std::fma(t71, mu, -t80));
-    const Real t135 = std::fma(t134, v_Mx, std::fma(t80, v_Mx, -t81));
-    const Real t136 = t82 - t83;
-    const Real t137 = t136 - t82;
-    const Real t138 = std::fma(t134, v_mx, std::fma(t80, v_mx, -t84));
-    const Real t139 = std::fma(t134, v_My, std::fma(t80, v_My, -t87));
-    const Real t140 = std::fma(t134, v_my, std::fma(t80, v_my, -t90));
-    const Real t141 = std::fma(q_m, mu, -t95);
-    const Real t142 = std::fma(t141, v_Mx, std::fma(t95, v_Mx, -t96));
-    const Real t143 = std::fma(t141, v_mx, std::fma(t95, v_mx, -t99));
-    const Real t144 = std::fma(t141, v_My, std::fma(t95, v_My, -t102));
-    const Real t145 = std::fma(t141, v_my, std::fma(t95, v_my, -t105));
-    const Real t146 = std::fma(t76, mu, std::fma(t70, mu, -t108));
-    const Real t147 = std::fma(t146, v_Mx, std::fma(t108, v_Mx, -t109));
-    const Real t148 = std::fma(t146, v_mx, std::fma(t108, v_mx, -t112));
-    const Real t149 = std::fma(t146, v_My, std::fma(t108, v_My, -t115));
-    const Real t150 = std::fma(t146, v_my, std::fma(t108, v_my, -t118));
-    const Real t151 = std::fma(std::fma(q_m, eps, -t72), mu, std::fma(t72, mu, -t121));
-    const Real t152 = std::fma(t151, v_Mx, std::fma(t121, v_Mx, -t122));
-    const Real t153 = std::fma(t151, v_mx, std::fma(t121, v_mx, -t125));
-    const Real t154 = std::fma(t151, v_My, std::fma(t121, v_My, -t128));
-    const Real t155 = std::fma(t151, v_my, std::fma(t121, v_my, -t131));
-    const Real t156 = t82 - (t136 - t137) - (t83 + t137) + (std::fma(t135, C_Mx, std::fma(t81, C_Mx, -t82)) - std::fma(t135, C_mx, std::fma(t81, C_mx, -t83)));
-    const Real t157 = t136 + t156;
-    const Real t158 = t157 + t88;
-    const Real t159 = t158 - t157;
-    const Real t160 = t157 - (t158 - t159) + (t88 - t159) + (t156 - (t157 - t136) + std::fma(t139, C_My, std::fma(t87, C_My, -t88)));
-    const Real t161 = t158 + t160;
-    const Real t162 = t161 - t89;
-    const Real t163 = t162 - t161;
-    const Real t164 = t161 - (t162 - t163) - (t89 + t163) + (t160 - (t161 - t158) - std::fma(t139, C_my, std::fma(t87, C_my, -t89)));
-    const Real t165 = t162 + t164;
-    const Real t166 = t165 - t85;
-    const Real t167 = t166 - t165;
-    const Real t168 = t165 - (t166 - t167) - (t85 + t167) + (t164 - (t165 - t162) - std::fma(t138, C_Mx, std::fma(t84, C_Mx, -t85)));
-    const Real t169 = t166 + t168;
-    const Real t170 = t169 + t86;
-    const Real t171 = t170 - t169;
-    const Real t172 = t169 - (t170 - t171) + (t86 - t171) + (t168 - (t169 - t166) + std::fma(t138, C_mx, std::fma(t84, C_mx, -t86)));
-    const Real t173 = t170 + t172;
-    const Real t174 = t173 - t91;
-    const Real t175 = t174 - t173;
-    const Real t176 = t173 - (t174 - t175) - (t91 + t175) + (t172 - (t173 - t170) - std::fma(t140, C_My, std::fma(t90, C_My, -t91)));
-    const Real t177 = t174 + t176;
-    const Real t178 = t177 + t92;
-    const Real t179 = t178 - t177;
-    const Real t180 = t177 - (t178 - t179) + (t92 - t179) + (t176 - (t177 - t174) + std::fma(t140, C_my, std::fma(t90, C_my, -t92)));
-    const Real t181 = t178 + t180;
-    const Real t182 = t70 * b;
-    const Real t183 = R_M * w_M;
-    const Real t184 = M * R_M;
-    const Real t185 = t184 * q_M;
-    const Real t186 = std::sqrt(t28);
-    const Real t187 = std::sqrt(t39);
-    const Real t188 = R_M * b;
-    const Real t189 = t188 * w_M;
-    const Real t190 = std::fma(R_M, w_M, -t183);
-    const Real t191 = t183 * t187;
-    const Real t192 = t189 + t183;
-    const Real t193 = std::fma(-t186, t186, t28) + (t27 - (t28 - t21));
-    const Real t194 = t186 + t186;
-    const Real t195 = t192 - t189;
-    const Real t196 = t189 - (t192 - t195) + (t183 - t195) + (std::fma(std::fma(R_M, b, -t188), w_M, std::fma(t188, w_M, -t189)) + t190);
-    const Real t197 = t192 + t196;
-    const Real t198 = R_m * w_m;
-    const Real t199 = R_m * b;
-    const Real t200 = t183 + t198;
-    const Real t201 = t200 - t183;
-    const Real t202 = t198 * t187;
-    const Real t203 = t191 + t202;
-    const Real t204 = t203 - t191;
-    const Real t205 = t199 * w_m;
-    const Real t206 = t197 + t205;
-    const Real t207 = t206 - t197;
-    const Real t208 = std::fma(R_m, w_m, -t198);
-    const Real t209 = t183 - (t200 - t201) + (t198 - t201) + (t190 + t208);
-    const Real t210 = t200 + t209;
-    const Real t211 = t210 * t186;
-    const Real t212 = t211 + t47;
-    const Real t213 = t191 - (t203 - t204) + (t202 - t204) + (std::fma(t190, t187, std::fma(t183, t187, -t191)) + std::fma(t208, t187, std::fma(t198, t187, -t202)));
-    const Real t214 = t203 + t213;
-    const Real t215 = t214 + t43;
-    const Real t216 = t197 - (t206 - t207) + (t205 - t207) + (t196 - (t197 - t192) + std::fma(std::fma(R_m, b, -t199), w_m, std::fma(t199, w_m, -t205)));
-    const Real t217 = t206 + t216;
-    const Real t218 = t217 + t198;
-    const Real t219 = t212 - t211;
-    const Real t220 = t215 - t214;
-    const Real t221 = t218 - t217;
-    const Real t222 = t214 - (t215 - t220) + (t43 - t220) + (t213 - (t214 - t203) + std::fma(v_Mx, C_My, -t43));
-    const Real t223 = t215 + t222;
-    const Real t224 = t223 - t44;
-    const Real t225 = t217 - (t218 - t221) + (t198 - t221) + (t216 - (t217 - t206) + t208);
-    const Real t226 = t218 + t225;
-    const Real t227 = t224 - t223;
-    const Real t228 = t223 - (t224 - t227) - (t44 + t227) + (t222 - (t223 - t215) - std::fma(v_Mx, C_my, -t44));
-    const Real t229 = t224 + t228;
-    const Real t230 = t229 - t54;
-    const Real t231 = t230 - t229;
-    const Real t232 = t229 - (t230 - t231) - (t54 + t231) + (t228 - (t229 - t224) - std::fma(v_My, C_Mx, -t54));
-    const Real t233 = t230 + t232;
-    const Real t234 = t233 + t55;
-    const Real t235 = t234 - t233;
-    const Real t236 = t233 - (t234 - t235) + (t55 - t235) + (t232 - (t233 - t230) + std::fma(v_My, C_mx, -t55));
-    const Real t237 = t234 + t236;
-    const Real t238 = t237 - t45;
-    const Real t239 = t238 - t237;
-    const Real t240 = t237 - (t238 - t239) - (t45 + t239) + (t236 - (t237 - t234) - std::fma(v_mx, C_My, -t45));
-    const Real t241 = t238 + t240;
-    const Real t242 = t241 + t46;
-    const Real t243 = t242 - t241;
-    const Real t244 = t241 - (t242 - t243) + (t46 - t243) + (t240 - (t241 - t238) + std::fma(v_mx, C_my, -t46));
-    const Real t245 = t242 + t244;
-    const Real t246 = t245 + t56;
-    const Real t247 = t246 - t245;
-    const Real t248 = t245 - (t246 - t247) + (t56 - t247) + (t244 - (t245 - t242) + std::fma(v_my, C_Mx, -t56));
-    const Real t249 = t246 + t248;
-    const Real t250 = t249 - t57;
-    const Real t251 = t250 - t249;
-    const Real t252 = t249 - (t250 - t251) - (t57 + t251) + (t248 - (t249 - t246) - std::fma(v_my, C_mx, -t57));
-    const Real t253 = t250 + t252;
-    const Real t254 = t252 - (t253 - t250);
-    const Real t255 = (t253 > Real(0) ? t253 : -t253);
-    const Real t256 = t70 * t255;
-    const Real t257 = t182 * t255;
-    const Real t258 = t181 + t257;
-    const Real t259 = t258 - t181;
-    const Real t260 = (t253 > Real(0) ? t254 : -t254);
-    const Real t261 = t181 - (t258 - t259) + (t257 - t259) + (t180 - (t181 - t178) + std::fma(std::fma(t76, b, std::fma(t70, b, -t182)), t255, std::fma(t182, t260, std::fma(t182, t255, -t257))));
-    const Real t262 = t258 + t261;
-    const Real t263 = t262 + t110;
-    const Real t264 = t263 - t262;
-    const Real t265 = t262 - (t263 - t264) + (t110 - t264) + (t261 - (t262 - t258) + std::fma(t147, C_Mx, std::fma(t109, C_Mx, -t110)));
-    const Real t266 = t263 + t265;
-    const Real t267 = t266 - t111;
-    const Real t268 = t267 - t266;
-    const Real t269 = t266 - (t267 - t268) - (t111 + t268) + (t265 - (t266 - t263) - std::fma(t147, C_mx, std::fma(t109, C_mx, -t111)));
-    const Real t270 = t267 + t269;
-    const Real t271 = t270 + t116;
-    const Real t272 = t271 - t270;
-    const Real t273 = t270 - (t271 - t272) + (t116 - t272) + (t269 - (t270 - t267) + std::fma(t149, C_My, std::fma(t115, C_My, -t116)));
-    const Real t274 = t271 + t273;
-    const Real t275 = t274 - t117;
-    const Real t276 = t275 - t274;
-    const Real t277 = t274 - (t275 - t276) - (t117 + t276) + (t273 - (t274 - t271) - std::fma(t149, C_my, std::fma(t115, C_my, -t117)));
-    const Real t278 = t275 + t277;
-    const Real t279 = t278 - t113;
-    const Real t280 = t279 - t278;
-    const Real t281 = t278 - (t279 - t280) - (t113 + t280) + (t277 - (t278 - t275) - std::fma(t148, C_Mx, std::fma(t112, C_Mx, -t113)));
-    const Real t282 = t279 + t281;
-    const Real t283 = t282 + t114;
-    const Real t284 = t283 - t282;
-    const Real t285 = t282 - (t283 - t284) + (t114 - t284) + (t281 - (t282 - t279) + std::fma(t148, C_mx, std::fma(t112, C_mx, -t114)));
-    const Real t286 = t283 + t285;
-    const Real t287 = t286 - t119;
-    const Real t288 = t287 - t286;
-    const Real t289 = t286 - (t287 - t288) - (t119 + t288) + (t285 - (t286 - t283) - std::fma(t150, C_My, std::fma(t118, C_My, -t119)));
-    const Real t290 = t287 + t289;
-    const Real t291 = t290 + t120;
-    const Real t292 = t291 - t290;
-    const Real t293 = t290 - (t291 - t292) + (t120 - t292) + (t289 - (t290 - t287) + std::fma(t150, C_my, std::fma(t118, C_my, -t120)));
-    const Real t294 = t291 + t293;
-    const Real t295 = t294 + t256;
-    const Real t296 = t295 - t294;
-    const Real t297 = t294 - (t295 - t296) + (t256 - t296) + (t293 - (t294 - t291) + std::fma(t76, t255, std::fma(t70, t260, std::fma(t70, t255, -t256))));
-    const Real t298 = t295 + t297;
-    const Real t299 = t298 + t123;
-    const Real t300 = t299 - t298;
-    const Real t301 = t298 - (t299 - t300) + (t123 - t300) + (t297 - (t298 - t295) + std::fma(t152, C_Mx, std::fma(t122, C_Mx, -t123)));
-    const Real t302 = t299 + t301;
-    const Real t303 = t302 - t124;
-    const Real t304 = t303 - t302;
-    const Real t305 = t302 - (t303 - t304) - (t124 + t304) + (t301 - (t302 - t299) - std::fma(t152, C_mx, std::fma(t122, C_mx, -t124)));
-    const Real t306 = t303 + t305;
-    const Real t307 = t306 + t129;
-    const Real t308 = t307 - t306;
-    const Real t309 = t306 - (t307 - t308) + (t129 - t308) + (t305 - (t306 - t303) + std::fma(t154, C_My, std::fma(t128, C_My, -t129)));
-    const Real t310 = t307 + t309;
-    const Real t311 = t310 - t130;
-    const Real t312 = t311 - t310;
-    const Real t313 = t310 - (t311 - t312) - (t130 + t312) + (t309 - (t310 - t307) - std::fma(t154, C_my, std::fma(t128, C_my, -t130)));
-    const Real t314 = t311 + t313;
-    const Real t315 = t314 - t126;
-    const Real t316 = t315 - t314;
-    const Real t317 = t314 - (t315 - t316) - (t126 + t316) + (t313 - (t314 - t311) - std::fma(t153, C_Mx, std::fma(t125, C_Mx, -t126)));
-    const Real t318 = t315 + t317;
-    const Real t319 = t318 + t127;
-    const Real t320 = t319 - t318;
-    const Real t321 = t318 - (t319 - t320) + (t127 - t320) + (t317 - (t318 - t315) + std::fma(t153, C_mx, std::fma(t125, C_mx, -t127)));
-    const Real t322 = t319 + t321;
-    const Real t323 = t322 - t132;
-    const Real t324 = t323 - t322;
-    const Real t325 = t322 - (t323 - t324) - (t132 + t324) + (t321 - (t322 - t319) - std::fma(t155, C_My, std::fma(t131, C_My, -t132)));
-    const Real t326 = t323 + t325;
-    const Real t327 = t326 + t133;
-    const Real t328 = t327 - t326;
-    const Real t329 = t326 - (t327 - t328) + (t133 - t328) + (t325 - (t326 - t323) + std::fma(t155, C_my, std::fma(t131, C_my, -t133)));
-    const Real t330 = t327 + t329;
-    const Real t331 = t330 + t97;
-    const Real t332 = t331 - t330;
-    const Real t333 = t330 - (t331 - t332) + (t97 - t332) + (t329 - (t330 - t327) + std::fma(t142, C_Mx, std::fma(t96, C_Mx, -t97)));
-    const Real t334 = t331 + t333;
-    const Real t335 = t334 - t98;
-    const Real t336 = t335 - t334;
-    const Real t337 = t334 - (t335 - t336) - (t98 + t336) + (t333 - (t334 - t331) - std::fma(t142, C_mx, std::fma(t96, C_mx, -t98)));
-    const Real t338 = t335 + t337;
-    const Real t339 = t338 + t103;
-    const Real t340 = t339 - t338;
-    const Real t341 = t338 - (t339 - t340) + (t103 - t340) + (t337 - (t338 - t335) + std::fma(t144, C_My, std::fma(t102, C_My, -t103)));
-    const Real t342 = t339 + t341;
-    const Real t343 = t342 - t104;
-    const Real t344 = t343 - t342;
-    const Real t345 = t342 - (t343 - t344) - (t104 + t344) + (t341 - (t342 - t339) - std::fma(t144, C_my, std::fma(t102, C_my, -t104)));
-    const Real t346 = t343 + t345;
-    const Real t347 = t346 - t100;
-    const Real t348 = t347 - t346;
-    const Real t349 = t346 - (t347 - t348) - (t100 + t348) + (t345 - (t346 - t343) - std::fma(t143, C_Mx, std::fma(t99, C_Mx, -t100)));
-    const Real t350 = t347 + t349;
-    const Real t351 = t350 + t101;
-    const Real t352 = t351 - t350;
-    const Real t353 = t350 - (t351 - t352) + (t101 - t352) + (t349 - (t350 - t347) + std::fma(t143, C_mx, std::fma(t99, C_mx, -t101)));
-    const Real t354 = t351 + t353;
-    const Real t355 = t354 - t106;
-    const Real t356 = t355 - t354;
-    const Real t357 = t354 - (t355 - t356) - (t106 + t356) + (t353 - (t354 - t351) - std::fma(t145, C_My, std::fma(t105, C_My, -t106)));
-    const Real t358 = t355 + t357;
-    const Real t359 = t358 + t107;
-    const Real t360 = t359 - t358;
-    const Real t361 = t358 - (t359 - t360) + (t107 - t360) + (t357 - (t358 - t355) + std::fma(t145, C_my, std::fma(t105, C_my, -t107)));
-    const Real t362 = t359 + t361;
-    const Real t363 = t362 + (t361 - (t362 - t359));
-    const Real t364 = (t363 > Real(0) ? Real(1) : t79);
-    const Real t365 = (t363 > Real(0) ? t186 : Real(1));
-    const Real t366 = (t363 > Real(0) ? Real(1) : t186);
-    const Real t367 = (t363 > Real(0) ? t194 : Real(1));
-    const Real t368 = (t363 > Real(0) ? Real(1) : t194);
-    if (!(std::fabs(t186) >= detail::smallest_divisor<Real>) || !(std::fabs(t186) <= std::numeric_limits<Real>::max()) || !(std::fabs(t365) >= detail::smallest_divisor<Real>) || !(std::fabs(t365) <= std::numeric_limits<Real>::max()) || !(std::fabs(t366) >= detail::smallest_divisor<Real>) || !(std::fabs(t366) <= std::numeric_limits<Real>::max()) || !(std::fabs(t194) >= detail::smallest_divisor<Real>) || !(std::fabs(t194) <= std::numeric_limits<Real>::max()) || !(std::fabs(t367) >= detail::smallest_divisor<Real>) || !(std::fabs(t367) <= std::numeric_limits<Real>::max()) || !(std::fabs(t368) >= detail::smallest_divisor<Real>) || !(std::fabs(t368) <= std::numeric_limits<Real>::max()) || !(std::fabs(t364) >= detail::smallest_divisor<Real>) || !(std::fabs(t364) <= std::numeric_limits<Real>::max()) || !(std::fabs(t185) >= detail::smallest_divisor<Real>) || !(std::fabs(t185) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max())) {
+    const Real t34 = t25 - v_My;
+    const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t30));
+    const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t31));
+    const Real t37 = v_My - (t25 - t34) - (v_my + t34);
+    const Real t38 = std::fma(t37, t0, std::fma(t25, t3, std::fma(t25, t0, -t26)));
+    const Real t39 = t13 - (t32 - t33) + (t29 - t33) + (std::fma(t23, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t37, t4, std::fma(t25, t9, std::fma(t25, t4, -t29))));
+    const Real t40 = t32 + t39;
+    const Real t41 = Real(1) + eps;
+    const Real t42 = t41 - Real(1);
+    const Real t43 = Real(1) - (t41 - t42) + (eps - t42);
+    const Real t44 = M * t41;
+    const Real t45 = q_M * q_m;
+    const Real t46 = M * q_M;
+    const Real t47 = t45 + q_m;
+    const Real t48 = t46 * q_m;
+    const Real t49 = std::fma(q_M, q_m, -t45);
+    const Real t50 = t47 - t45;
+    const Real t51 = t45 - (t47 - t50) + (q_m - t50) + t49;
+    const Real t52 = t47 + t51;
+    const Real t53 = t51 - (t52 - t47);
+    const Real t54 = Real(1) + b;
+    const Real t55 = t45 * t54;
+    const Real t56 = t54 - Real(1);
+    const Real t57 = R_M * w_M;
+    const Real t58 = M * R_M;
+    const Real t59 = t58 * q_M;
+    const Real t60 = std::sqrt(t11);
+    const Real t61 = R_M * b;
+    const Real t62 = t61 * w_M;
+    const Real t63 = std::fma(R_M, w_M, -t57);
+    const Real t64 = t62 + t57;
+    const Real t65 = std::fma(-t60, t60, t11) + (t10 - (t11 - t7));
+    const Real t66 = t60 + t60;
+    const Real t67 = t64 - t62;
+    const Real t68 = t62 - (t64 - t67) + (t57 - t67) + (std::fma(std::fma(R_M, b, -t61), w_M, std::fma(t61, w_M, -t62)) + t63);
+    const Real t69 = t64 + t68;
+    const Real t70 = R_m * w_m;
+    const Real t71 = R_m * b;
+    const Real t72 = t57 + t70;
+    const Real t73 = t72 - t57;
+    const Real t74 = t71 * w_m;
+    const Real t75 = t69 + t74;
+    const Real t76 = t75 - t69;
+    const Real t77 = std::fma(R_m, w_m, -t70);
+    const Real t78 = t57 - (t72 - t73) + (t70 - t73) + (t63 + t77);
+    const Real t79 = t72 + t78;
+    const Real t80 = t79 * t60;
+    const Real t81 = t80 + t16;
+    const Real t82 = t69 - (t75 - t76) + (t74 - t76) + (t68 - (t69 - t64) + std::fma(std::fma(R_m, b, -t71), w_m, std::fma(t71, w_m, -t74)));
+    const Real t83 = t75 + t82;
+    const Real t84 = t83 + t70;
+    const Real t85 = t78 - (t79 - t72);
+    const Real t86 = std::fma(t79, t60, -t80);
+    const Real t87 = t81 - t80;
+    const Real t88 = t84 - t83;
+    const Real t89 = t80 - (t81 - t87) + (t16 - t87);
+    const Real t90 = t89 + (std::fma(t85, t60, t86) + t24);
+    const Real t91 = t81 + t90;
+    const Real t92 = t91 - t26;
+    const Real t93 = t83 - (t84 - t88) + (t70 - t88) + (t82 - (t83 - t75) + t77);
+    const Real t94 = t84 + t93;
+    const Real t95 = t92 - t91;
+    const Real t96 = t91 - (t92 - t95) - (t26 + t95) + (t90 - (t91 - t81) - t38);
+    const Real t97 = t92 + t96;
+    const Real t98 = t96 - (t97 - t92);
+    const Real t99 = (t97 > Real(0) ? t97 : -t97);
+    const Real t100 = t55 * t99;
+    const Real t101 = mu * t41;
+    const Real t102 = M * mu;
+    const Real t103 = t102 * t41;
+    const Real t104 = t101 * t52;
+    const Real t105 = t104 * t40;
+    const Real t106 = t100 + t105;
+    const Real t107 = t106 - t100;
+    const Real t108 = t100 - (t106 - t107) + (t105 - t107) + (std::fma(std::fma(t49, t54, std::fma(t45, Real(1) - (t54 - t56) + (b - t56), std::fma(t45, t54, -t55))), t99, std::fma(t55, (t97 > Real(0) ? t98 : -t98), std::fma(t55, t99, -t100))) + std::fma(std::fma(std::fma(mu, t43, std::fma(mu, t41, -t101)), t52, std::fma(t101, t53, std::fma(t101, t52, -t104))), t40, std::fma(t104, t39 - (t40 - t32), std::fma(t104, t40, -t105))));
+    const Real t109 = t106 + t108;
+    const Real t110 = t109 + (t108 - (t109 - t106));
+    const Real t111 = (t110 > Real(0) ? Real(1) : t52);
+    const Real t112 = (t110 > Real(0) ? t60 : Real(1));
+    const Real t113 = (t110 > Real(0) ? Real(1) : t60);
+    const Real t114 = (t110 > Real(0) ? t66 : Real(1));
+    const Real t115 = (t110 > Real(0) ? Real(1) : t66);
+    if (!(std::fabs(t60) >= detail::smallest_divisor<Real>) || !(std::fabs(t60) <= std::numeric_limits<Real>::max()) || !(std::fabs(t112) >= detail::smallest_divisor<Real>) || !(std::fabs(t112) <= std::numeric_limits<Real>::max()) || !(std::fabs(t113) >= detail::smallest_divisor<Real>) || !(std::fabs(t113) <= std::numeric_limits<Real>::max()) || !(std::fabs(t66) >= detail::smallest_divisor<Real>) || !(std::fabs(t66) <= std::numeric_limits<Real>::max()) || !(std::fabs(t114) >= detail::smallest_divisor<Real>) || !(std::fabs(t114) <= std::numeric_limits<Real>::max()) || !(std::fabs(t115) >= detail::smallest_divisor<Real>) || !(std::fabs(t115) <= std::numeric_limits<Real>::max()) || !(std::fabs(t111) >= detail::smallest_divisor<Real>) || !(std::fabs(t111) <= std::numeric_limits<Real>::max()) || !(std::fabs(t59) >= detail::smallest_divisor<Real>) || !(std::fabs(t59) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t369 = t41 / t186;
-    const Real t370 = t41 / t365;
-    const Real t371 = t42 / t186;
-    const Real t372 = t42 / t365;
-    const Real t373 = t48 / t366;
-    const Real t374 = t49 / t366;
-    const Real t375 = t59 / t366;
-    const Real t376 = t60 / t366;
-    const Real t377 = t61 / t186;
-    const Real t378 = t61 / t365;
-    const Real t379 = t62 / t186;
-    const Real t380 = t62 / t365;
-    const Real t381 = t193 / t194;
-    const Real t382 = t193 / t367;
-    const Real t383 = t193 / t368;
-    const Real t384 = t211 - (t212 - t219) + (t47 - t219) + (std::fma(t209 - (t210 - t200), t186, std::fma(t210, t382, std::fma(t210, t186, -t211))) + std::fma(v_Mx - (t40 - t50) - (v_mx + t50), t12, std::fma(t40, t23, std::fma(t40, t12, -t47))));
-    const Real t385 = t212 + t384;
-    const Real t386 = t385 - t58;
-    const Real t387 = -t369;
-    const Real t388 = t369 + t377;
-    const Real t389 = t388 - t369;
-    const Real t390 = -t370;
-    const Real t391 = t370 + t378;
-    const Real t392 = t391 - t370;
-    const Real t393 = -t371;
-    const Real t394 = -t372;
-    const Real t395 = -t373;
-    const Real t396 = t373 - t375;
-    const Real t397 = t396 - t373;
-    const Real t398 = -t374;
-    const Real t399 = t374 - t376;
-    const Real t400 = t399 - t374;
-    const Real t401 = -t375;
-    const Real t402 = -t376;
-    const Real t403 = -t377;
-    const Real t404 = -t378;
-    const Real t405 = -t379;
-    const Real t406 = -t380;
-    const Real t407 = std::fma(t395, t383, std::fma(t395, t186, t48) + std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t48))) / t366;
-    const Real t408 = std::fma(t401, t383, std::fma(t401, t186, t59) + std::fma(v_My, t7, std::fma(v_My, t0, -t59))) / t366;
-    const Real t409 = std::fma(t398, t383, std::fma(t398, t186, t49) + std::fma(v_mx, t23, std::fma(v_mx, t12, -t49))) / t366;
-    const Real t410 = std::fma(t402, t383, std::fma(t402, t186, t60) + std::fma(v_my, t7, std::fma(v_my, t0, -t60))) / t366;
-    const Real t411 = t386 - t385;
-    const Real t412 = t385 - (t386 - t411) - (t58 + t411) + (t384 - (t385 - t212) - std::fma(v_My - (t53 - t63) - (v_my + t63), t0, std::fma(t53, t7, std::fma(t53, t0, -t58))));
-    const Real t413 = t386 + t412;
-    const Real t414 = t373 - (t396 - t397) - (t375 + t397) + (t407 - t408);
-    const Real t415 = t396 + t414;
-    const Real t416 = b * t415;
-    const Real t417 = t226 + t416;
-    const Real t418 = t417 - t226;
-    const Real t419 = t374 - (t399 - t400) - (t376 + t400) + (t409 - t410);
-    const Real t420 = t399 + t419;
-    const Real t421 = b * t420;
-    const Real t422 = t369 - (t388 - t389) + (t377 - t389) + (std::fma(t387, t381, std::fma(t387, t186, t41) + t51) / t186 + std::fma(t403, t381, std::fma(t403, t186, t61) + t64) / t186);
-    const Real t423 = t388 + t422;
-    const Real t424 = t423 - t371;
-    const Real t425 = t370 - (t391 - t392) + (t378 - t392) + (std::fma(t390, t382, std::fma(t390, t186, t41) + t51) / t365 + std::fma(t404, t382, std::fma(t404, t186, t61) + t64) / t365);
-    const Real t426 = t391 + t425;
-    const Real t427 = t426 - t372;
-    const Real t428 = t412 - (t413 - t386);
-    const Real t429 = (t413 > Real(0) ? t413 : -t413);
-    const Real t430 = (t363 > Real(0) ? t429 : Real(1));
-    if (!(std::fabs(t430) >= detail::smallest_divisor<Real>) || !(std::fabs(t430) <= std::numeric_limits<Real>::max())) {
+    const Real t116 = t14 / t60;
+    const Real t117 = t14 / t112;
+    const Real t118 = t15 / t60;
+    const Real t119 = t15 / t112;
+    const Real t120 = t17 / t113;
+    const Real t121 = t18 / t113;
+    const Real t122 = t27 / t113;
+    const Real t123 = t28 / t113;
+    const Real t124 = t30 / t60;
+    const Real t125 = t30 / t112;
+    const Real t126 = t31 / t60;
+    const Real t127 = t31 / t112;
+    const Real t128 = t65 / t66;
+    const Real t129 = t65 / t114;
+    const Real t130 = t65 / t115;
+    const Real t131 = t89 + (std::fma(t85, t60, std::fma(t79, t129, t86)) + t24);
+    const Real t132 = t81 + t131;
+    const Real t133 = t132 - t26;
+    const Real t134 = -t116;
+    const Real t135 = t116 + t124;
+    const Real t136 = t135 - t116;
+    const Real t137 = -t117;
+    const Real t138 = t117 + t125;
+    const Real t139 = t138 - t117;
+    const Real t140 = -t118;
+    const Real t141 = -t119;
+    const Real t142 = -t120;
+    const Real t143 = t120 - t122;
+    const Real t144 = t143 - t120;
+    const Real t145 = -t121;
+    const Real t146 = t121 - t123;
+    const Real t147 = t146 - t121;
+    const Real t148 = -t122;
+    const Real t149 = -t123;
+    const Real t150 = -t124;
+    const Real t151 = -t125;
+    const Real t152 = -t126;
+    const Real t153 = -t127;
+    const Real t154 = std::fma(t142, t130, std::fma(t142, t60, t17) + std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17))) / t113;
+    const Real t155 = std::fma(t148, t130, std::fma(t148, t60, t27) + std::fma(v_My, t3, std::fma(v_My, t0, -t27))) / t113;
+    const Real t156 = std::fma(t145, t130, std::fma(t145, t60, t18) + std::fma(v_mx, t9, std::fma(v_mx, t4, -t18))) / t113;
+    const Real t157 = std::fma(t149, t130, std::fma(t149, t60, t28) + std::fma(v_my, t3, std::fma(v_my, t0, -t28))) / t113;
+    const Real t158 = t133 - t132;
+    const Real t159 = t132 - (t133 - t158) - (t26 + t158) + (t131 - (t132 - t81) - t38);
+    const Real t160 = t133 + t159;
+    const Real t161 = t120 - (t143 - t144) - (t122 + t144) + (t154 - t155);
+    const Real t162 = t143 + t161;
+    const Real t163 = b * t162;
+    const Real t164 = t94 + t163;
+    const Real t165 = t164 - t94;
+    const Real t166 = t121 - (t146 - t147) - (t123 + t147) + (t156 - t157);
+    const Real t167 = t146 + t166;
+    const Real t168 = b * t167;
+    const Real t169 = t116 - (t135 - t136) + (t124 - t136) + (std::fma(t134, t128, std::fma(t134, t60, t14) + t21) / t60 + std::fma(t150, t128, std::fma(t150, t60, t30) + t35) / t60);
+    const Real t170 = t135 + t169;
+    const Real t171 = t170 - t118;
+    const Real t172 = t117 - (t138 - t139) + (t125 - t139) + (std::fma(t137, t129, std::fma(t137, t60, t14) + t21) / t112 + std::fma(t151, t129, std::fma(t151, t60, t30) + t35) / t112);
+    const Real t173 = t138 + t172;
+    const Real t174 = t173 - t119;
+    const Real t175 = t159 - (t160 - t133);
+    const Real t176 = (t160 > Real(0) ? t160 : -t160);
+    const Real t177 = (t110 > Real(0) ? t176 : Real(1));
+    if (!(std::fabs(t177) >= detail::smallest_divisor<Real>) || !(std::fabs(t177) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t431 = t424 - t423;
-    const Real t432 = t427 - t426;
-    const Real t433 = t226 - (t417 - t418) + (t416 - t418) + (t225 - (t226 - t218) + std::fma(b, t414 - (t415 - t396), std::fma(b, t415, -t416)));
-    const Real t434 = t417 + t433;
-    const Real t435 = t434 - t421;
-    const Real t436 = t423 - (t424 - t431) - (t371 + t431) + (t422 - (t423 - t388) - std::fma(t393, t381, std::fma(t393, t186, t42) + t52) / t186);
-    const Real t437 = t424 + t436;
-    const Real t438 = t437 - t379;
-    const Real t439 = t426 - (t427 - t432) - (t372 + t432) + (t425 - (t426 - t391) - std::fma(t394, t382, std::fma(t394, t186, t42) + t52) / t365);
-    const Real t440 = t427 + t439;
-    const Real t441 = t440 - t380;
-    const Real t442 = t435 - t434;
-    const Real t443 = t438 - t437;
-    const Real t444 = t441 - t440;
-    const Real t445 = t434 - (t435 - t442) - (t421 + t442) + (t433 - (t434 - t417) - std::fma(b, t419 - (t420 - t399), std::fma(b, t420, -t421)));
-    const Real t446 = t435 + t445;
-    const Real t447 = t446 + t373;
-    const Real t448 = t437 - (t438 - t443) - (t379 + t443) + (t436 - (t437 - t424) - std::fma(t405, t381, std::fma(t405, t186, t62) + t65) / t186);
-    const Real t449 = t438 + t448;
-    const Real t450 = t69 * t449;
-    const Real t451 = t450 / t186;
-    const Real t452 = t440 - (t441 - t444) - (t380 + t444) + (t439 - (t440 - t427) - std::fma(t406, t382, std::fma(t406, t186, t62) + t65) / t365);
-    const Real t453 = t441 + t452;
-    const Real t454 = t94 * t453;
-    const Real t455 = t454 * t413;
-    const Real t456 = t455 / t430;
-    const Real t457 = t447 - t446;
-    const Real t458 = -t451;
-    const Real t459 = t458 * t0;
-    const Real t460 = t458 * t12;
-    const Real t461 = -t456;
-    const Real t462 = t446 - (t447 - t457) + (t373 - t457) + (t445 - (t446 - t435) + t407);
-    const Real t463 = t447 + t462;
-    const Real t464 = t463 - t375;
-    const Real t465 = t464 - t463;
-    const Real t466 = -(std::fma(t458, t381, std::fma(t458, t186, t450) + std::fma(std::fma(M, t68, std::fma(M, t66, -t69)), t449, std::fma(t69, t448 - (t449 - t438), std::fma(t69, t449, -t450)))) / t186);
-    const Real t467 = t463 - (t464 - t465) - (t375 + t465) + (t462 - (t463 - t447) - t408);
-    const Real t468 = t464 + t467;
-    const Real t469 = t468 - t374;
-    const Real t470 = t469 - t468;
-    const Real t471 = t468 - (t469 - t470) - (t374 + t470) + (t467 - (t468 - t464) - t409);
-    const Real t472 = t469 + t471;
-    const Real t473 = t472 + t376;
-    const Real t474 = t473 - t472;
-    const Real t475 = t472 - (t473 - t474) + (t376 - t474) + (t471 - (t472 - t469) + t410);
-    const Real t476 = t473 + t475;
-    const Real t477 = t74 * t476;
-    const Real t478 = t477 / t364;
-    const Real t479 = (t363 > Real(0) ? t461 : t478);
-    const Real t480 = t479 / t186;
-    const Real t481 = t480 * t0;
-    const Real t482 = t480 * t12;
-    const Real t483 = t480 * t186;
-    const Real t484 = t483 / t185;
-    const Real t485 = t459 - t482;
-    const Real t486 = t485 - t459;
-    const Real t487 = t460 + t481;
-    const Real t488 = t487 - t460;
-    const Real t489 = -t478;
-    const Real t490 = -t480;
-    const Real t491 = -t484;
-    const Real t492 = std::fma(t490, t381, std::fma(t490, t186, t479) + (t363 > Real(0) ? -(std::fma(t461, (t413 > Real(0) ? t428 : -t428), std::fma(t461, t429, t455) + std::fma(std::fma(std::fma(std::fma(M, mu, -t93), t66, std::fma(t93, t68, std::fma(t93, t66, -t94))), t453, std::fma(t94, t452 - (t453 - t441), std::fma(t94, t453, -t454))), t413, std::fma(t454, t428, std::fma(t454, t413, -t455)))) / t430) : std::fma(t489, t78 - (t79 - t75), std::fma(t489, t79, t477) + std::fma(std::fma(std::fma(M, q_M, -t73), q_m, std::fma(t73, q_m, -t74)), t476, std::fma(t74, t475 - (t476 - t473), std::fma(t74, t476, -t477)))) / t364)) / t186;
-    const Real t493 = t459 - (t485 - t486) - (t482 + t486) + (std::fma(t466, t0, std::fma(t458, t7, std::fma(t458, t0, -t459))) - std::fma(t492, t12, std::fma(t480, t23, std::fma(t480, t12, -t482))));
-    const Real t494 = t485 + t493;
-    const Real t495 = t494 / M;
-    const Real t496 = t460 - (t487 - t488) + (t481 - t488) + (std::fma(t466, t12, std::fma(t458, t23, std::fma(t458, t12, -t460))) + std::fma(t492, t0, std::fma(t480, t7, std::fma(t480, t0, -t481))));
-    const Real t497 = t487 + t496;
-    const Real t498 = t497 / M;
-    const Real result0 = v_Mx + (t495 + (std::fma(-t495, M, t494) + (t493 - (t494 - t485))) / M);
-    const Real result1 = v_My + (t498 + (std::fma(-t498, M, t497) + (t496 - (t497 - t487))) / M);
+    const Real t178 = t171 - t170;
+    const Real t179 = t174 - t173;
+    const Real t180 = t94 - (t164 - t165) + (t163 - t165) + (t93 - (t94 - t84) + std::fma(b, t161 - (t162 - t143), std::fma(b, t162, -t163)));
+    const Real t181 = t164 + t180;
+    const Real t182 = t181 - t168;
+    const Real t183 = t170 - (t171 - t178) - (t118 + t178) + (t169 - (t170 - t135) - std::fma(t140, t128, std::fma(t140, t60, t15) + t22) / t60);
+    const Real t184 = t171 + t183;
+    const Real t185 = t184 - t126;
+    const Real t186 = t173 - (t174 - t179) - (t119 + t179) + (t172 - (t173 - t138) - std::fma(t141, t129, std::fma(t141, t60, t15) + t22) / t112);
+    const Real t187 = t174 + t186;
+    const Real t188 = t187 - t127;
+    const Real t189 = t182 - t181;
+    const Real t190 = t185 - t184;
+    const Real t191 = t188 - t187;
+    const Real t192 = t181 - (t182 - t189) - (t168 + t189) + (t180 - (t181 - t164) - std::fma(b, t166 - (t167 - t146), std::fma(b, t167, -t168)));
+    const Real t193 = t182 + t192;
+    const Real t194 = t193 + t120;
+    const Real t195 = t184 - (t185 - t190) - (t126 + t190) + (t183 - (t184 - t171) - std::fma(t152, t128, std::fma(t152, t60, t31) + t36) / t60);
+    const Real t196 = t185 + t195;
+    const Real t197 = t44 * t196;
+    const Real t198 = t197 / t60;
+    const Real t199 = t187 - (t188 - t191) - (t127 + t191) + (t186 - (t187 - t174) - std::fma(t153, t129, std::fma(t153, t60, t31) + t36) / t112);
+    const Real t200 = t188 + t199;
+    const Real t201 = t103 * t200;
+    const Real t202 = t201 * t160;
+    const Real t203 = t202 / t177;
+    const Real t204 = t194 - t193;
+    const Real t205 = -t198;
+    const Real t206 = t205 * t0;
+    const Real t207 = t205 * t4;
+    const Real t208 = -t203;
+    const Real t209 = t193 - (t194 - t204) + (t120 - t204) + (t192 - (t193 - t182) + t154);
+    const Real t210 = t194 + t209;
+    const Real t211 = t210 - t122;
+    const Real t212 = t211 - t210;
+    const Real t213 = -(std::fma(t205, t128, std::fma(t205, t60, t197) + std::fma(std::fma(M, t43, std::fma(M, t41, -t44)), t196, std::fma(t44, t195 - (t196 - t185), std::fma(t44, t196, -t197)))) / t60);
+    const Real t214 = t210 - (t211 - t212) - (t122 + t212) + (t209 - (t210 - t194) - t155);
+    const Real t215 = t211 + t214;
+    const Real t216 = t215 - t121;
+    const Real t217 = t216 - t215;
+    const Real t218 = t215 - (t216 - t217) - (t121 + t217) + (t214 - (t215 - t211) - t156);
+    const Real t219 = t216 + t218;
+    const Real t220 = t219 + t123;
+    const Real t221 = t220 - t219;
+    const Real t222 = t219 - (t220 - t221) + (t123 - t221) + (t218 - (t219 - t216) + t157);
+    const Real t223 = t220 + t222;
+    const Real t224 = t48 * t223;
+    const Real t225 = t224 / t111;
+    const Real t226 = (t110 > Real(0) ? t208 : t225);
+    const Real t227 = t226 / t60;
+    const Real t228 = t227 * t0;
+    const Real t229 = t227 * t4;
+    const Real t230 = t227 * t60;
+    const Real t231 = t230 / t59;
+    const Real t232 = t206 - t229;
+    const Real t233 = t232 - t206;
+    const Real t234 = t207 + t228;
+    const Real t235 = t234 - t207;
+    const Real t236 = -t225;
+    const Real t237 = -t227;
+    const Real t238 = -t231;
+    const Real t239 = std::fma(t237, t128, std::fma(t237, t60, t226) + (t110 > Real(0) ? -(std::fma(t208, (t160 > Real(0) ? t175 : -t175), std::fma(t208, t176, t202) + std::fma(std::fma(std::fma(std::fma(M, mu, -t102), t41, std::fma(t102, t43, std::fma(t102, t41, -t103))), t200, std::fma(t103, t199 - (t200 - t188), std::fma(t103, t200, -t201))), t160, std::fma(t201, t175, std::fma(t201, t160, -t202)))) / t177) : std::fma(t236, t53, std::fma(t236, t52, t224) + std::fma(std::fma(std::fma(M, q_M, -t46), q_m, std::fma(t46, q_m, -t48)), t223, std::fma(t48, t222 - (t223 - t220), std::fma(t48, t223, -t224)))) / t111)) / t60;
+    const Real t240 = t206 - (t232 - t233) - (t229 + t233) + (std::fma(t213, t0, std::fma(t205, t3, std::fma(t205, t0, -t206))) - std::fma(t239, t4, std::fma(t227, t9, std::fma(t227, t4, -t229))));
+    const Real t241 = t232 + t240;
+    const Real t242 = t241 / M;
+    const Real t243 = t207 - (t234 - t235) + (t228 - t235) + (std::fma(t213, t4, std::fma(t205, t9, std::fma(t205, t4, -t207))) + std::fma(t239, t0, std::fma(t227, t3, std::fma(t227, t0, -t228))));
+    const Real t244 = t234 + t243;
+    const Real t245 = t244 / M;
+    const Real result0 = v_Mx + (t242 + (std::fma(-t242, M, t241) + (t240 - (t241 - t232))) / M);
+    const Real result1 = v_My + (t245 + (std::fma(-t245, M, t244) + (t243 - (t244 - t234))) / M);
     const Real result2 = v_mx;
     const Real result3 = v_my;
-    const Real result4 = w_M + (t491 + -(std::fma(t491, std::fma(std::fma(M, R_M, -t184), q_M, std::fma(t184, q_M, -t185)), std::fma(t491, t185, t483) + std::fma(t492, t186, std::fma(t480, t381, std::fma(t480, t186, -t483)))) / t185));
+    const Real result4 = w_M + (t238 + -(std::fma(t238, std::fma(std::fma(M, R_M, -t58), q_M, std::fma(t58, q_M, -t59)), std::fma(t238, t59, t230) + std::fma(t239, t60, std::fma(t227, t128, std::fma(t227, t60, -t230)))) / t59));
     const Real result5 = w_m;
     if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && t40 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t48) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t49) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && t53 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t62) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && M != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && t73 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && t71 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t70 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t72 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t70 != Real(0) && b != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && t184 != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t188) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t189) < std::numeric_limits<Real>::min() && t188 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && t183 != Real(0) && t187 != Real(0)) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && t198 != Real(0) && t187 != Real(0)) ||
-        (std::fabs(t205) < std::numeric_limits<Real>::min() && t199 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && t210 != Real(0) && t186 != Real(0)) ||
-        (std::fabs(t256) < std::numeric_limits<Real>::min() && t70 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && t182 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t369) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t370) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t371) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t372) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t373) < std::numeric_limits<Real>::min() && t48 != Real(0)) ||
-        (std::fabs(t374) < std::numeric_limits<Real>::min() && t49 != Real(0)) ||
-        (std::fabs(t375) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
-        (std::fabs(t376) < std::numeric_limits<Real>::min() && t60 != Real(0)) ||
-        (std::fabs(t377) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t378) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t379) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t380) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t416) < std::numeric_limits<Real>::min() && b != Real(0) && t415 != Real(0)) ||
-        (std::fabs(t421) < std::numeric_limits<Real>::min() && b != Real(0) && t420 != Real(0)) ||
-        (std::fabs(t450) < std::numeric_limits<Real>::min() && t69 != Real(0) && t449 != Real(0)) ||
-        (std::fabs(t451) < std::numeric_limits<Real>::min() && t450 != Real(0)) ||
-        (std::fabs(t454) < std::numeric_limits<Real>::min() && t94 != Real(0) && t453 != Real(0)) ||
-        (std::fabs(t455) < std::numeric_limits<Real>::min() && t454 != Real(0) && t413 != Real(0)) ||
-        (std::fabs(t456) < std::numeric_limits<Real>::min() && t455 != Real(0)) ||
-        (std::fabs(t459) < std::numeric_limits<Real>::min() && t458 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t460) < std::numeric_limits<Real>::min() && t458 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t477) < std::numeric_limits<Real>::min() && t74 != Real(0) && t476 != Real(0)) ||
-        (std::fabs(t478) < std::numeric_limits<Real>::min() && t477 != Real(0)) ||
-        (std::fabs(t480) < std::numeric_limits<Real>::min() && t479 != Real(0)) ||
-        (std::fabs(t481) < std::numeric_limits<Real>::min() && t480 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t482) < std::numeric_limits<Real>::min() && t480 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t483) < std::numeric_limits<Real>::min() && t480 != Real(0) && t186 != Real(0)) ||
-        (std::fabs(t484) < std::numeric_limits<Real>::min() && t483 != Real(0)) ||
-        (std::fabs(t495) < std::numeric_limits<Real>::min() && t494 != Real(0)) ||
-        (std::fabs(t498) < std::numeric_limits<Real>::min() && t497 != Real(0))) {
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t4 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t12 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t12 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && t25 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && t25 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t30) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && M != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t48) < std::numeric_limits<Real>::min() && t46 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && t45 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t62) < std::numeric_limits<Real>::min() && t61 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t70) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t74) < std::numeric_limits<Real>::min() && t71 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && t79 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t55 != Real(0) && t99 != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && mu != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t101 != Real(0) && t52 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t104 != Real(0) && t40 != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t17 != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t18 != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t28 != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && b != Real(0) && t162 != Real(0)) ||
+        (std::fabs(t168) < std::numeric_limits<Real>::min() && b != Real(0) && t167 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && t44 != Real(0) && t196 != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && t103 != Real(0) && t200 != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && t201 != Real(0) && t160 != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && t202 != Real(0)) ||
+        (std::fabs(t206) < std::numeric_limits<Real>::min() && t205 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t207) < std::numeric_limits<Real>::min() && t205 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && t48 != Real(0) && t223 != Real(0)) ||
+        (std::fabs(t225) < std::numeric_limits<Real>::min() && t224 != Real(0)) ||
+        (std::fabs(t227) < std::numeric_limits<Real>::min() && t226 != Real(0)) ||
+        (std::fabs(t228) < std::numeric_limits<Real>::min() && t227 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t229) < std::numeric_limits<Real>::min() && t227 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t230) < std::numeric_limits<Real>::min() && t227 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t231) < std::numeric_limits<Real>::min() && t230 != Real(0)) ||
+        (std::fabs(t242) < std::numeric_limits<Real>::min() && t241 != Real(0)) ||
+        (std::fabs(t245) < std::numeric_limits<Real>::min() && t244 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -2531,8 +1889,8 @@ namespace detail {
 
 // collide_rough(m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 1361 operations with the guards' conditions, of them 39
-// division(s) and 2 square root(s) (the accurate form: 1408, 41 and 2).
+// bound (verification.md): 633 operations with the guards' conditions, of them 39
+// division(s) and 1 square root(s) (the accurate form: 680, 41 and 1).
 // v_M[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of v_mx + (K_n*r_x - K_t*r_y)/m, fma, compensated let": at most 3.24 ulps in double on 4200 samples.
@@ -2582,655 +1940,334 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
     }
     const Real t0 = C_Mx - C_mx;
     const Real t1 = t0 - C_Mx;
-    const Real t2 = C_Mx * C_Mx;
-    const Real t3 = Real(2) * C_Mx;
-    const Real t4 = t3 * C_mx;
-    const Real t5 = C_mx * C_mx;
-    const Real t6 = t0 * t0;
-    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
-    const Real t8 = t2 - t4;
-    const Real t9 = t8 - t2;
-    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
-    const Real t11 = t8 + t10;
-    const Real t12 = C_My - C_my;
-    const Real t13 = t12 - C_My;
-    const Real t14 = C_My * C_My;
-    const Real t15 = t11 + t14;
-    const Real t16 = t15 - t11;
-    const Real t17 = Real(2) * C_My;
-    const Real t18 = t17 * C_my;
-    const Real t19 = C_my * C_my;
-    const Real t20 = t12 * t12;
-    const Real t21 = t6 + t20;
-    const Real t22 = t21 - t6;
-    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
-    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
-    const Real t25 = t15 + t24;
-    const Real t26 = t25 - t18;
-    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
-    const Real t28 = t21 + t27;
-    const Real t29 = t26 - t25;
-    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
-    const Real t31 = t26 + t30;
-    const Real t32 = t31 + t5;
-    const Real t33 = t32 - t31;
-    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
-    const Real t35 = t32 + t34;
-    const Real t36 = t35 + t19;
-    const Real t37 = t36 - t35;
-    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
-    const Real t39 = t36 + t38;
-    const Real t40 = v_Mx - v_mx;
-    const Real t41 = v_Mx * t0;
-    const Real t42 = v_mx * t0;
-    const Real t43 = v_Mx * C_My;
-    const Real t44 = v_Mx * C_my;
-    const Real t45 = v_mx * C_My;
-    const Real t46 = v_mx * C_my;
-    const Real t47 = t40 * t12;
-    const Real t48 = v_Mx * t12;
-    const Real t49 = v_mx * t12;
-    const Real t50 = t40 - v_Mx;
-    const Real t51 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t41));
-    const Real t52 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t42));
-    const Real t53 = v_My - v_my;
-    const Real t54 = v_My * C_Mx;
-    const Real t55 = v_My * C_mx;
-    const Real t56 = v_my * C_Mx;
-    const Real t57 = v_my * C_mx;
-    const Real t58 = t53 * t0;
-    const Real t59 = v_My * t0;
-    const Real t60 = v_my * t0;
-    const Real t61 = v_My * t12;
-    const Real t62 = v_my * t12;
-    if (!(t21 > Real(0))) {
+    const Real t2 = t0 * t0;
+    const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t4 = C_My - C_my;
+    const Real t5 = t4 - C_My;
+    const Real t6 = t4 * t4;
+    const Real t7 = t2 + t6;
+    const Real t8 = t7 - t2;
+    const Real t9 = C_My - (t4 - t5) - (C_my + t5);
+    const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
+    const Real t11 = t7 + t10;
+    const Real t12 = v_Mx - v_mx;
+    const Real t13 = t12 * t0;
+    const Real t14 = v_Mx * t0;
+    const Real t15 = v_mx * t0;
+    const Real t16 = t12 * t4;
+    const Real t17 = v_Mx * t4;
+    const Real t18 = v_mx * t4;
+    const Real t19 = t12 - v_Mx;
+    const Real t20 = -t13;
+    const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+    const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+    const Real t23 = v_Mx - (t12 - t19) - (v_mx + t19);
+    const Real t24 = std::fma(t23, t4, std::fma(t12, t9, std::fma(t12, t4, -t16)));
+    const Real t25 = v_My - v_my;
+    const Real t26 = t25 * t0;
+    const Real t27 = v_My * t0;
+    const Real t28 = v_my * t0;
+    const Real t29 = t25 * t4;
+    const Real t30 = v_My * t4;
+    const Real t31 = v_my * t4;
+    const Real t32 = t13 + t29;
+    const Real t33 = t32 - t13;
+    if (!(t7 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-(t40 * t0) - t53 * t12 > Real(0))) {
+    if (!(t20 - t29 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t63 = t53 - v_My;
-    const Real t64 = std::fma(v_My, t23, std::fma(v_My, t12, -t61));
-    const Real t65 = std::fma(v_my, t23, std::fma(v_my, t12, -t62));
-    const Real t66 = Real(1) + eps;
-    const Real t67 = t66 - Real(1);
-    const Real t68 = Real(1) - (t66 - t67) + (eps - t67);
-    const Real t69 = m * t66;
-    const Real t70 = q_M * q_m;
-    const Real t71 = t70 * eps;
-    const Real t72 = q_M * eps;
-    const Real t73 = m * q_M;
-    const Real t74 = t73 * q_m;
-    const Real t75 = q_M + t70;
-    const Real t76 = t75 - q_M;
-    const Real t77 = std::fma(q_M, q_m, -t70);
-    const Real t78 = q_M - (t75 - t76) + (t70 - t76) + t77;
-    const Real t79 = t75 + t78;
-    const Real t80 = t71 * mu;
-    const Real t81 = t80 * v_Mx;
-    const Real t82 = t81 * C_Mx;
-    const Real t83 = t81 * C_mx;
-    const Real t84 = t80 * v_mx;
-    const Real t85 = t84 * C_Mx;
-    const Real t86 = t84 * C_mx;
-    const Real t87 = t80 * v_My;
-    const Real t88 = t87 * C_My;
-    const Real t89 = t87 * C_my;
-    const Real t90 = t80 * v_my;
-    const Real t91 = t90 * C_My;
-    const Real t92 = t90 * C_my;
-    const Real t93 = m * mu;
-    const Real t94 = t93 * t66;
-    const Real t95 = q_M * mu;
-    const Real t96 = t95 * v_Mx;
-    const Real t97 = t96 * C_Mx;
-    const Real t98 = t96 * C_mx;
-    const Real t99 = t95 * v_mx;
-    const Real t100 = t99 * C_Mx;
-    const Real t101 = t99 * C_mx;
-    const Real t102 = t95 * v_My;
-    const Real t103 = t102 * C_My;
-    const Real t104 = t102 * C_my;
-    const Real t105 = t95 * v_my;
-    const Real t106 = t105 * C_My;
-    const Real t107 = t105 * C_my;
-    const Real t108 = t70 * mu;
-    const Real t109 = t108 * v_Mx;
-    const Real t110 = t109 * C_Mx;
-    const Real t111 = t109 * C_mx;
-    const Real t112 = t108 * v_mx;
-    const Real t113 = t112 * C_Mx;
-    const Real t114 = t112 * C_mx;
-    const Real t115 = t108 * v_My;
-    const Real t116 = t115 * C_My;
-    const Real t117 = t115 * C_my;
-    const Real t118 = t108 * v_my;
-    const Real t119 = t118 * C_My;
-    const Real t120 = t118 * C_my;
-    const Real t121 = t72 * mu;
-    const Real t122 = t121 * v_Mx;
-    const Real t123 = t122 * C_Mx;
-    const Real t124 = t122 * C_mx;
-    const Real t125 = t121 * v_mx;
-    const Real t126 = t125 * C_Mx;
-    const Real t127 = t125 * C_mx;
-    const Real t128 = t121 * v_My;
-    const Real t129 = t128 * C_My;
-    const Real t130 = t128 * C_my;
-    const Real t131 = t121 * v_my;
-    const Real t132 = t131 * C_My;
-    const Real t133 = t131 * C_my;
-    const Real t134 = std::fma(std::fma(t77, eps, std::fma(t70, eps, -t71)), mu, std::fma(t71, mu, -t80));
-    const Real t135 = std::fma(t134, v_Mx, std::fma(t80, v_Mx, -t81));
-    const Real t136 = t82 - t83;
-    const Real t137 = t136 - t82;
-    const Real t138 = std::fma(t134, v_mx, std::fma(t80, v_mx, -t84));
-    const Real t139 = std::fma(t134, v_My, std::fma(t80, v_My, -t87));
-    const Real t140 = std::fma(t134, v_my, std::fma(t80, v_my, -t90));
-    const Real t141 = std::fma(q_M, mu, -t95);
-    const Real t142 = std::fma(t141, v_Mx, std::fma(t95, v_Mx, -t96));
-    const Real t143 = std::fma(t141, v_mx, std::fma(t95, v_mx, -t99));
-    const Real t144 = std::fma(t141, v_My, std::fma(t95, v_My, -t102));
-    const Real t145 = std::fma(t141, v_my, std::fma(t95, v_my, -t105));
-    const Real t146 = std::fma(t77, mu, std::fma(t70, mu, -t108));
-    const Real t147 = std::fma(t146, v_Mx, std::fma(t108, v_Mx, -t109));
-    const Real t148 = std::fma(t146, v_mx, std::fma(t108, v_mx, -t112));
-    const Real t149 = std::fma(t146, v_My, std::fma(t108, v_My, -t115));
-    const Real t150 = std::fma(t146, v_my, std::fma(t108, v_my, -t118));
-    const Real t151 = std::fma(std::fma(q_M, eps, -t72), mu, std::fma(t72, mu, -t121));
-    const Real t152 = std::fma(t151, v_Mx, std::fma(t121, v_Mx, -t122));
-    const Real t153 = std::fma(t151, v_mx, std::fma(t121, v_mx, -t125));
-    const Real t154 = std::fma(t151, v_My, std::fma(t121, v_My, -t128));
-    const Real t155 = std::fma(t151, v_my, std::fma(t121, v_my, -t131));
-    const Real t156 = t82 - (t136 - t137) - (t83 + t137) + (std::fma(t135, C_Mx, std::fma(t81, C_Mx, -t82)) - std::fma(t135, C_mx, std::fma(t81, C_mx, -t83)));
-    const Real t157 = t136 + t156;
-    const Real t158 = t157 + t88;
-    const Real t159 = t158 - t157;
-    const Real t160 = t157 - (t158 - t159) + (t88 - t159) + (t156 - (t157 - t136) + std::fma(t139, C_My, std::fma(t87, C_My, -t88)));
-    const Real t161 = t158 + t160;
-    const Real t162 = t161 - t89;
-    const Real t163 = t162 - t161;
-    const Real t164 = t161 - (t162 - t163) - (t89 + t163) + (t160 - (t161 - t158) - std::fma(t139, C_my, std::fma(t87, C_my, -t89)));
-    const Real t165 = t162 + t164;
-    const Real t166 = t165 - t85;
-    const Real t167 = t166 - t165;
-    const Real t168 = t165 - (t166 - t167) - (t85 + t167) + (t164 - (t165 - t162) - std::fma(t138, C_Mx, std::fma(t84, C_Mx, -t85)));
-    const Real t169 = t166 + t168;
-    const Real t170 = t169 + t86;
-    const Real t171 = t170 - t169;
-    const Real t172 = t169 - (t170 - t171) + (t86 - t171) + (t168 - (t169 - t166) + std::fma(t138, C_mx, std::fma(t84, C_mx, -t86)));
-    const Real t173 = t170 + t172;
-    const Real t174 = t173 - t91;
-    const Real t175 = t174 - t173;
-    const Real t176 = t173 - (t174 - t175) - (t91 + t175) + (t172 - (t173 - t170) - std::fma(t140, C_My, std::fma(t90, C_My, -t91)));
-    const Real t177 = t174 + t176;
-    const Real t178 = t177 + t92;
-    const Real t179 = t178 - t177;
-    const Real t180 = t177 - (t178 - t179) + (t92 - t179) + (t176 - (t177 - t174) + std::fma(t140, C_my, std::fma(t90, C_my, -t92)));
-    const Real t181 = t178 + t180;
-    const Real t182 = t70 * b;
-    const Real t183 = R_M * w_M;
-    const Real t184 = R_M * b;
-    const Real t185 = t184 * w_M;
-    const Real t186 = std::fma(R_M, w_M, -t183);
-    const Real t187 = t185 + t183;
-    const Real t188 = t187 - t185;
-    const Real t189 = t185 - (t187 - t188) + (t183 - t188) + (std::fma(std::fma(R_M, b, -t184), w_M, std::fma(t184, w_M, -t185)) + t186);
-    const Real t190 = t187 + t189;
-    const Real t191 = R_m * w_m;
-    const Real t192 = m * R_m;
-    const Real t193 = t192 * q_m;
-    const Real t194 = std::sqrt(t28);
-    const Real t195 = std::sqrt(t39);
-    const Real t196 = R_m * b;
-    const Real t197 = t183 * t195;
-    const Real t198 = t183 + t191;
-    const Real t199 = t198 - t183;
-    const Real t200 = t196 * w_m;
-    const Real t201 = t190 + t200;
-    const Real t202 = t201 - t190;
-    const Real t203 = std::fma(R_m, w_m, -t191);
-    const Real t204 = t191 * t195;
-    const Real t205 = std::fma(-t194, t194, t28) + (t27 - (t28 - t21));
-    const Real t206 = t194 + t194;
-    const Real t207 = t197 + t204;
-    const Real t208 = t207 - t197;
-    const Real t209 = t183 - (t198 - t199) + (t191 - t199) + (t186 + t203);
-    const Real t210 = t198 + t209;
-    const Real t211 = t210 * t194;
-    const Real t212 = t211 + t47;
-    const Real t213 = t190 - (t201 - t202) + (t200 - t202) + (t189 - (t190 - t187) + std::fma(std::fma(R_m, b, -t196), w_m, std::fma(t196, w_m, -t200)));
-    const Real t214 = t201 + t213;
-    const Real t215 = t214 + t191;
-    const Real t216 = t212 - t211;
-    const Real t217 = t197 - (t207 - t208) + (t204 - t208) + (std::fma(t186, t195, std::fma(t183, t195, -t197)) + std::fma(t203, t195, std::fma(t191, t195, -t204)));
-    const Real t218 = t207 + t217;
-    const Real t219 = t218 + t43;
-    const Real t220 = t215 - t214;
-    const Real t221 = t219 - t218;
-    const Real t222 = t214 - (t215 - t220) + (t191 - t220) + (t213 - (t214 - t201) + t203);
-    const Real t223 = t215 + t222;
-    const Real t224 = t218 - (t219 - t221) + (t43 - t221) + (t217 - (t218 - t207) + std::fma(v_Mx, C_My, -t43));
-    const Real t225 = t219 + t224;
-    const Real t226 = t225 - t44;
-    const Real t227 = t226 - t225;
-    const Real t228 = t225 - (t226 - t227) - (t44 + t227) + (t224 - (t225 - t219) - std::fma(v_Mx, C_my, -t44));
-    const Real t229 = t226 + t228;
-    const Real t230 = t229 - t54;
-    const Real t231 = t230 - t229;
-    const Real t232 = t229 - (t230 - t231) - (t54 + t231) + (t228 - (t229 - t226) - std::fma(v_My, C_Mx, -t54));
-    const Real t233 = t230 + t232;
-    const Real t234 = t233 + t55;
-    const Real t235 = t234 - t233;
-    const Real t236 = t233 - (t234 - t235) + (t55 - t235) + (t232 - (t233 - t230) + std::fma(v_My, C_mx, -t55));
-    const Real t237 = t234 + t236;
-    const Real t238 = t237 - t45;
-    const Real t239 = t238 - t237;
-    const Real t240 = t237 - (t238 - t239) - (t45 + t239) + (t236 - (t237 - t234) - std::fma(v_mx, C_My, -t45));
-    const Real t241 = t238 + t240;
-    const Real t242 = t241 + t46;
-    const Real t243 = t242 - t241;
-    const Real t244 = t241 - (t242 - t243) + (t46 - t243) + (t240 - (t241 - t238) + std::fma(v_mx, C_my, -t46));
-    const Real t245 = t242 + t244;
-    const Real t246 = t245 + t56;
-    const Real t247 = t246 - t245;
-    const Real t248 = t245 - (t246 - t247) + (t56 - t247) + (t244 - (t245 - t242) + std::fma(v_my, C_Mx, -t56));
-    const Real t249 = t246 + t248;
-    const Real t250 = t249 - t57;
-    const Real t251 = t250 - t249;
-    const Real t252 = t249 - (t250 - t251) - (t57 + t251) + (t248 - (t249 - t246) - std::fma(v_my, C_mx, -t57));
-    const Real t253 = t250 + t252;
-    const Real t254 = t252 - (t253 - t250);
-    const Real t255 = (t253 > Real(0) ? t253 : -t253);
-    const Real t256 = t70 * t255;
-    const Real t257 = t182 * t255;
-    const Real t258 = t181 + t257;
-    const Real t259 = t258 - t181;
-    const Real t260 = (t253 > Real(0) ? t254 : -t254);
-    const Real t261 = t181 - (t258 - t259) + (t257 - t259) + (t180 - (t181 - t178) + std::fma(std::fma(t77, b, std::fma(t70, b, -t182)), t255, std::fma(t182, t260, std::fma(t182, t255, -t257))));
-    const Real t262 = t258 + t261;
-    const Real t263 = t262 + t110;
-    const Real t264 = t263 - t262;
-    const Real t265 = t262 - (t263 - t264) + (t110 - t264) + (t261 - (t262 - t258) + std::fma(t147, C_Mx, std::fma(t109, C_Mx, -t110)));
-    const Real t266 = t263 + t265;
-    const Real t267 = t266 - t111;
-    const Real t268 = t267 - t266;
-    const Real t269 = t266 - (t267 - t268) - (t111 + t268) + (t265 - (t266 - t263) - std::fma(t147, C_mx, std::fma(t109, C_mx, -t111)));
-    const Real t270 = t267 + t269;
-    const Real t271 = t270 + t116;
-    const Real t272 = t271 - t270;
-    const Real t273 = t270 - (t271 - t272) + (t116 - t272) + (t269 - (t270 - t267) + std::fma(t149, C_My, std::fma(t115, C_My, -t116)));
-    const Real t274 = t271 + t273;
-    const Real t275 = t274 - t117;
-    const Real t276 = t275 - t274;
-    const Real t277 = t274 - (t275 - t276) - (t117 + t276) + (t273 - (t274 - t271) - std::fma(t149, C_my, std::fma(t115, C_my, -t117)));
-    const Real t278 = t275 + t277;
-    const Real t279 = t278 - t113;
-    const Real t280 = t279 - t278;
-    const Real t281 = t278 - (t279 - t280) - (t113 + t280) + (t277 - (t278 - t275) - std::fma(t148, C_Mx, std::fma(t112, C_Mx, -t113)));
-    const Real t282 = t279 + t281;
-    const Real t283 = t282 + t114;
-    const Real t284 = t283 - t282;
-    const Real t285 = t282 - (t283 - t284) + (t114 - t284) + (t281 - (t282 - t279) + std::fma(t148, C_mx, std::fma(t112, C_mx, -t114)));
-    const Real t286 = t283 + t285;
-    const Real t287 = t286 - t119;
-    const Real t288 = t287 - t286;
-    const Real t289 = t286 - (t287 - t288) - (t119 + t288) + (t285 - (t286 - t283) - std::fma(t150, C_My, std::fma(t118, C_My, -t119)));
-    const Real t290 = t287 + t289;
-    const Real t291 = t290 + t120;
-    const Real t292 = t291 - t290;
-    const Real t293 = t290 - (t291 - t292) + (t120 - t292) + (t289 - (t290 - t287) + std::fma(t150, C_my, std::fma(t118, C_my, -t120)));
-    const Real t294 = t291 + t293;
-    const Real t295 = t294 + t256;
-    const Real t296 = t295 - t294;
-    const Real t297 = t294 - (t295 - t296) + (t256 - t296) + (t293 - (t294 - t291) + std::fma(t77, t255, std::fma(t70, t260, std::fma(t70, t255, -t256))));
-    const Real t298 = t295 + t297;
-    const Real t299 = t298 + t123;
-    const Real t300 = t299 - t298;
-    const Real t301 = t298 - (t299 - t300) + (t123 - t300) + (t297 - (t298 - t295) + std::fma(t152, C_Mx, std::fma(t122, C_Mx, -t123)));
-    const Real t302 = t299 + t301;
-    const Real t303 = t302 - t124;
-    const Real t304 = t303 - t302;
-    const Real t305 = t302 - (t303 - t304) - (t124 + t304) + (t301 - (t302 - t299) - std::fma(t152, C_mx, std::fma(t122, C_mx, -t124)));
-    const Real t306 = t303 + t305;
-    const Real t307 = t306 + t129;
-    const Real t308 = t307 - t306;
-    const Real t309 = t306 - (t307 - t308) + (t129 - t308) + (t305 - (t306 - t303) + std::fma(t154, C_My, std::fma(t128, C_My, -t129)));
-    const Real t310 = t307 + t309;
-    const Real t311 = t310 - t130;
-    const Real t312 = t311 - t310;
-    const Real t313 = t310 - (t311 - t312) - (t130 + t312) + (t309 - (t310 - t307) - std::fma(t154, C_my, std::fma(t128, C_my, -t130)));
-    const Real t314 = t311 + t313;
-    const Real t315 = t314 - t126;
-    const Real t316 = t315 - t314;
-    const Real t317 = t314 - (t315 - t316) - (t126 + t316) + (t313 - (t314 - t311) - std::fma(t153, C_Mx, std::fma(t125, C_Mx, -t126)));
-    const Real t318 = t315 + t317;
-    const Real t319 = t318 + t127;
-    const Real t320 = t319 - t318;
-    const Real t321 = t318 - (t319 - t320) + (t127 - t320) + (t317 - (t318 - t315) + std::fma(t153, C_mx, std::fma(t125, C_mx, -t127)));
-    const Real t322 = t319 + t321;
-    const Real t323 = t322 - t132;
-    const Real t324 = t323 - t322;
-    const Real t325 = t322 - (t323 - t324) - (t132 + t324) + (t321 - (t322 - t319) - std::fma(t155, C_My, std::fma(t131, C_My, -t132)));
-    const Real t326 = t323 + t325;
-    const Real t327 = t326 + t133;
-    const Real t328 = t327 - t326;
-    const Real t329 = t326 - (t327 - t328) + (t133 - t328) + (t325 - (t326 - t323) + std::fma(t155, C_my, std::fma(t131, C_my, -t133)));
-    const Real t330 = t327 + t329;
-    const Real t331 = t330 + t97;
-    const Real t332 = t331 - t330;
-    const Real t333 = t330 - (t331 - t332) + (t97 - t332) + (t329 - (t330 - t327) + std::fma(t142, C_Mx, std::fma(t96, C_Mx, -t97)));
-    const Real t334 = t331 + t333;
-    const Real t335 = t334 - t98;
-    const Real t336 = t335 - t334;
-    const Real t337 = t334 - (t335 - t336) - (t98 + t336) + (t333 - (t334 - t331) - std::fma(t142, C_mx, std::fma(t96, C_mx, -t98)));
-    const Real t338 = t335 + t337;
-    const Real t339 = t338 + t103;
-    const Real t340 = t339 - t338;
-    const Real t341 = t338 - (t339 - t340) + (t103 - t340) + (t337 - (t338 - t335) + std::fma(t144, C_My, std::fma(t102, C_My, -t103)));
-    const Real t342 = t339 + t341;
-    const Real t343 = t342 - t104;
-    const Real t344 = t343 - t342;
-    const Real t345 = t342 - (t343 - t344) - (t104 + t344) + (t341 - (t342 - t339) - std::fma(t144, C_my, std::fma(t102, C_my, -t104)));
-    const Real t346 = t343 + t345;
-    const Real t347 = t346 - t100;
-    const Real t348 = t347 - t346;
-    const Real t349 = t346 - (t347 - t348) - (t100 + t348) + (t345 - (t346 - t343) - std::fma(t143, C_Mx, std::fma(t99, C_Mx, -t100)));
-    const Real t350 = t347 + t349;
-    const Real t351 = t350 + t101;
-    const Real t352 = t351 - t350;
-    const Real t353 = t350 - (t351 - t352) + (t101 - t352) + (t349 - (t350 - t347) + std::fma(t143, C_mx, std::fma(t99, C_mx, -t101)));
-    const Real t354 = t351 + t353;
-    const Real t355 = t354 - t106;
-    const Real t356 = t355 - t354;
-    const Real t357 = t354 - (t355 - t356) - (t106 + t356) + (t353 - (t354 - t351) - std::fma(t145, C_My, std::fma(t105, C_My, -t106)));
-    const Real t358 = t355 + t357;
-    const Real t359 = t358 + t107;
-    const Real t360 = t359 - t358;
-    const Real t361 = t358 - (t359 - t360) + (t107 - t360) + (t357 - (t358 - t355) + std::fma(t145, C_my, std::fma(t105, C_my, -t107)));
-    const Real t362 = t359 + t361;
-    const Real t363 = t362 + (t361 - (t362 - t359));
-    const Real t364 = (t363 > Real(0) ? Real(1) : t79);
-    const Real t365 = (t363 > Real(0) ? t194 : Real(1));
-    const Real t366 = (t363 > Real(0) ? Real(1) : t194);
-    const Real t367 = (t363 > Real(0) ? t206 : Real(1));
-    const Real t368 = (t363 > Real(0) ? Real(1) : t206);
-    if (!(std::fabs(t194) >= detail::smallest_divisor<Real>) || !(std::fabs(t194) <= std::numeric_limits<Real>::max()) || !(std::fabs(t365) >= detail::smallest_divisor<Real>) || !(std::fabs(t365) <= std::numeric_limits<Real>::max()) || !(std::fabs(t366) >= detail::smallest_divisor<Real>) || !(std::fabs(t366) <= std::numeric_limits<Real>::max()) || !(std::fabs(t206) >= detail::smallest_divisor<Real>) || !(std::fabs(t206) <= std::numeric_limits<Real>::max()) || !(std::fabs(t367) >= detail::smallest_divisor<Real>) || !(std::fabs(t367) <= std::numeric_limits<Real>::max()) || !(std::fabs(t368) >= detail::smallest_divisor<Real>) || !(std::fabs(t368) <= std::numeric_limits<Real>::max()) || !(std::fabs(t364) >= detail::smallest_divisor<Real>) || !(std::fabs(t364) <= std::numeric_limits<Real>::max()) || !(std::fabs(t193) >= detail::smallest_divisor<Real>) || !(std::fabs(t193) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
+    const Real t34 = t25 - v_My;
+    const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t30));
+    const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t31));
+    const Real t37 = v_My - (t25 - t34) - (v_my + t34);
+    const Real t38 = std::fma(t37, t0, std::fma(t25, t3, std::fma(t25, t0, -t26)));
+    const Real t39 = t13 - (t32 - t33) + (t29 - t33) + (std::fma(t23, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t37, t4, std::fma(t25, t9, std::fma(t25, t4, -t29))));
+    const Real t40 = t32 + t39;
+    const Real t41 = Real(1) + eps;
+    const Real t42 = t41 - Real(1);
+    const Real t43 = Real(1) - (t41 - t42) + (eps - t42);
+    const Real t44 = m * t41;
+    const Real t45 = q_M * q_m;
+    const Real t46 = m * q_M;
+    const Real t47 = q_M + t45;
+    const Real t48 = t47 - q_M;
+    const Real t49 = t46 * q_m;
+    const Real t50 = std::fma(q_M, q_m, -t45);
+    const Real t51 = q_M - (t47 - t48) + (t45 - t48) + t50;
+    const Real t52 = t47 + t51;
+    const Real t53 = t51 - (t52 - t47);
+    const Real t54 = Real(1) + b;
+    const Real t55 = t45 * t54;
+    const Real t56 = t54 - Real(1);
+    const Real t57 = R_M * w_M;
+    const Real t58 = R_M * b;
+    const Real t59 = t58 * w_M;
+    const Real t60 = std::fma(R_M, w_M, -t57);
+    const Real t61 = t59 + t57;
+    const Real t62 = t61 - t59;
+    const Real t63 = t59 - (t61 - t62) + (t57 - t62) + (std::fma(std::fma(R_M, b, -t58), w_M, std::fma(t58, w_M, -t59)) + t60);
+    const Real t64 = t61 + t63;
+    const Real t65 = R_m * w_m;
+    const Real t66 = m * R_m;
+    const Real t67 = t66 * q_m;
+    const Real t68 = std::sqrt(t11);
+    const Real t69 = R_m * b;
+    const Real t70 = t57 + t65;
+    const Real t71 = t70 - t57;
+    const Real t72 = t69 * w_m;
+    const Real t73 = t64 + t72;
+    const Real t74 = t73 - t64;
+    const Real t75 = std::fma(R_m, w_m, -t65);
+    const Real t76 = std::fma(-t68, t68, t11) + (t10 - (t11 - t7));
+    const Real t77 = t68 + t68;
+    const Real t78 = t57 - (t70 - t71) + (t65 - t71) + (t60 + t75);
+    const Real t79 = t70 + t78;
+    const Real t80 = t79 * t68;
+    const Real t81 = t80 + t16;
+    const Real t82 = t64 - (t73 - t74) + (t72 - t74) + (t63 - (t64 - t61) + std::fma(std::fma(R_m, b, -t69), w_m, std::fma(t69, w_m, -t72)));
+    const Real t83 = t73 + t82;
+    const Real t84 = t83 + t65;
+    const Real t85 = t78 - (t79 - t70);
+    const Real t86 = std::fma(t79, t68, -t80);
+    const Real t87 = t81 - t80;
+    const Real t88 = t84 - t83;
+    const Real t89 = t80 - (t81 - t87) + (t16 - t87);
+    const Real t90 = t89 + (std::fma(t85, t68, t86) + t24);
+    const Real t91 = t81 + t90;
+    const Real t92 = t91 - t26;
+    const Real t93 = t83 - (t84 - t88) + (t65 - t88) + (t82 - (t83 - t73) + t75);
+    const Real t94 = t84 + t93;
+    const Real t95 = t92 - t91;
+    const Real t96 = t91 - (t92 - t95) - (t26 + t95) + (t90 - (t91 - t81) - t38);
+    const Real t97 = t92 + t96;
+    const Real t98 = t96 - (t97 - t92);
+    const Real t99 = (t97 > Real(0) ? t97 : -t97);
+    const Real t100 = t55 * t99;
+    const Real t101 = mu * t41;
+    const Real t102 = m * mu;
+    const Real t103 = t102 * t41;
+    const Real t104 = t101 * t52;
+    const Real t105 = t104 * t40;
+    const Real t106 = t100 + t105;
+    const Real t107 = t106 - t100;
+    const Real t108 = t100 - (t106 - t107) + (t105 - t107) + (std::fma(std::fma(t50, t54, std::fma(t45, Real(1) - (t54 - t56) + (b - t56), std::fma(t45, t54, -t55))), t99, std::fma(t55, (t97 > Real(0) ? t98 : -t98), std::fma(t55, t99, -t100))) + std::fma(std::fma(std::fma(mu, t43, std::fma(mu, t41, -t101)), t52, std::fma(t101, t53, std::fma(t101, t52, -t104))), t40, std::fma(t104, t39 - (t40 - t32), std::fma(t104, t40, -t105))));
+    const Real t109 = t106 + t108;
+    const Real t110 = t109 + (t108 - (t109 - t106));
+    const Real t111 = (t110 > Real(0) ? Real(1) : t52);
+    const Real t112 = (t110 > Real(0) ? t68 : Real(1));
+    const Real t113 = (t110 > Real(0) ? Real(1) : t68);
+    const Real t114 = (t110 > Real(0) ? t77 : Real(1));
+    const Real t115 = (t110 > Real(0) ? Real(1) : t77);
+    if (!(std::fabs(t68) >= detail::smallest_divisor<Real>) || !(std::fabs(t68) <= std::numeric_limits<Real>::max()) || !(std::fabs(t112) >= detail::smallest_divisor<Real>) || !(std::fabs(t112) <= std::numeric_limits<Real>::max()) || !(std::fabs(t113) >= detail::smallest_divisor<Real>) || !(std::fabs(t113) <= std::numeric_limits<Real>::max()) || !(std::fabs(t77) >= detail::smallest_divisor<Real>) || !(std::fabs(t77) <= std::numeric_limits<Real>::max()) || !(std::fabs(t114) >= detail::smallest_divisor<Real>) || !(std::fabs(t114) <= std::numeric_limits<Real>::max()) || !(std::fabs(t115) >= detail::smallest_divisor<Real>) || !(std::fabs(t115) <= std::numeric_limits<Real>::max()) || !(std::fabs(t111) >= detail::smallest_divisor<Real>) || !(std::fabs(t111) <= std::numeric_limits<Real>::max()) || !(std::fabs(t67) >= detail::smallest_divisor<Real>) || !(std::fabs(t67) <= std::numeric_limits<Real>::max()) || !(std::fabs(m) >= detail::smallest_divisor<Real>) || !(std::fabs(m) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t369 = t41 / t194;
-    const Real t370 = t41 / t365;
-    const Real t371 = t42 / t194;
-    const Real t372 = t42 / t365;
-    const Real t373 = t48 / t366;
-    const Real t374 = t49 / t366;
-    const Real t375 = t59 / t366;
-    const Real t376 = t60 / t366;
-    const Real t377 = t61 / t194;
-    const Real t378 = t61 / t365;
-    const Real t379 = t62 / t194;
-    const Real t380 = t62 / t365;
-    const Real t381 = t205 / t206;
-    const Real t382 = t205 / t367;
-    const Real t383 = t205 / t368;
-    const Real t384 = t211 - (t212 - t216) + (t47 - t216) + (std::fma(t209 - (t210 - t198), t194, std::fma(t210, t382, std::fma(t210, t194, -t211))) + std::fma(v_Mx - (t40 - t50) - (v_mx + t50), t12, std::fma(t40, t23, std::fma(t40, t12, -t47))));
-    const Real t385 = t212 + t384;
-    const Real t386 = t385 - t58;
-    const Real t387 = -t369;
-    const Real t388 = t369 + t377;
-    const Real t389 = t388 - t369;
-    const Real t390 = -t370;
-    const Real t391 = t370 + t378;
-    const Real t392 = t391 - t370;
-    const Real t393 = -t371;
-    const Real t394 = -t372;
-    const Real t395 = -t373;
-    const Real t396 = t373 - t375;
-    const Real t397 = t396 - t373;
-    const Real t398 = -t374;
-    const Real t399 = t374 - t376;
-    const Real t400 = t399 - t374;
-    const Real t401 = -t375;
-    const Real t402 = -t376;
-    const Real t403 = -t377;
-    const Real t404 = -t378;
-    const Real t405 = -t379;
-    const Real t406 = -t380;
-    const Real t407 = std::fma(t395, t383, std::fma(t395, t194, t48) + std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t48))) / t366;
-    const Real t408 = std::fma(t401, t383, std::fma(t401, t194, t59) + std::fma(v_My, t7, std::fma(v_My, t0, -t59))) / t366;
-    const Real t409 = std::fma(t398, t383, std::fma(t398, t194, t49) + std::fma(v_mx, t23, std::fma(v_mx, t12, -t49))) / t366;
-    const Real t410 = std::fma(t402, t383, std::fma(t402, t194, t60) + std::fma(v_my, t7, std::fma(v_my, t0, -t60))) / t366;
-    const Real t411 = t386 - t385;
-    const Real t412 = t385 - (t386 - t411) - (t58 + t411) + (t384 - (t385 - t212) - std::fma(v_My - (t53 - t63) - (v_my + t63), t0, std::fma(t53, t7, std::fma(t53, t0, -t58))));
-    const Real t413 = t386 + t412;
-    const Real t414 = t373 - (t396 - t397) - (t375 + t397) + (t407 - t408);
-    const Real t415 = t396 + t414;
-    const Real t416 = b * t415;
-    const Real t417 = t223 + t416;
-    const Real t418 = t417 - t223;
-    const Real t419 = t374 - (t399 - t400) - (t376 + t400) + (t409 - t410);
-    const Real t420 = t399 + t419;
-    const Real t421 = b * t420;
-    const Real t422 = t369 - (t388 - t389) + (t377 - t389) + (std::fma(t387, t381, std::fma(t387, t194, t41) + t51) / t194 + std::fma(t403, t381, std::fma(t403, t194, t61) + t64) / t194);
-    const Real t423 = t388 + t422;
-    const Real t424 = t423 - t371;
-    const Real t425 = t370 - (t391 - t392) + (t378 - t392) + (std::fma(t390, t382, std::fma(t390, t194, t41) + t51) / t365 + std::fma(t404, t382, std::fma(t404, t194, t61) + t64) / t365);
-    const Real t426 = t391 + t425;
-    const Real t427 = t426 - t372;
-    const Real t428 = t412 - (t413 - t386);
-    const Real t429 = (t413 > Real(0) ? t413 : -t413);
-    const Real t430 = (t363 > Real(0) ? t429 : Real(1));
-    if (!(std::fabs(t430) >= detail::smallest_divisor<Real>) || !(std::fabs(t430) <= std::numeric_limits<Real>::max())) {
+    const Real t116 = t14 / t68;
+    const Real t117 = t14 / t112;
+    const Real t118 = t15 / t68;
+    const Real t119 = t15 / t112;
+    const Real t120 = t17 / t113;
+    const Real t121 = t18 / t113;
+    const Real t122 = t27 / t113;
+    const Real t123 = t28 / t113;
+    const Real t124 = t30 / t68;
+    const Real t125 = t30 / t112;
+    const Real t126 = t31 / t68;
+    const Real t127 = t31 / t112;
+    const Real t128 = t76 / t77;
+    const Real t129 = t76 / t114;
+    const Real t130 = t76 / t115;
+    const Real t131 = t89 + (std::fma(t85, t68, std::fma(t79, t129, t86)) + t24);
+    const Real t132 = t81 + t131;
+    const Real t133 = t132 - t26;
+    const Real t134 = -t116;
+    const Real t135 = t116 + t124;
+    const Real t136 = t135 - t116;
+    const Real t137 = -t117;
+    const Real t138 = t117 + t125;
+    const Real t139 = t138 - t117;
+    const Real t140 = -t118;
+    const Real t141 = -t119;
+    const Real t142 = -t120;
+    const Real t143 = t120 - t122;
+    const Real t144 = t143 - t120;
+    const Real t145 = -t121;
+    const Real t146 = t121 - t123;
+    const Real t147 = t146 - t121;
+    const Real t148 = -t122;
+    const Real t149 = -t123;
+    const Real t150 = -t124;
+    const Real t151 = -t125;
+    const Real t152 = -t126;
+    const Real t153 = -t127;
+    const Real t154 = std::fma(t142, t130, std::fma(t142, t68, t17) + std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17))) / t113;
+    const Real t155 = std::fma(t148, t130, std::fma(t148, t68, t27) + std::fma(v_My, t3, std::fma(v_My, t0, -t27))) / t113;
+    const Real t156 = std::fma(t145, t130, std::fma(t145, t68, t18) + std::fma(v_mx, t9, std::fma(v_mx, t4, -t18))) / t113;
+    const Real t157 = std::fma(t149, t130, std::fma(t149, t68, t28) + std::fma(v_my, t3, std::fma(v_my, t0, -t28))) / t113;
+    const Real t158 = t133 - t132;
+    const Real t159 = t132 - (t133 - t158) - (t26 + t158) + (t131 - (t132 - t81) - t38);
+    const Real t160 = t133 + t159;
+    const Real t161 = t120 - (t143 - t144) - (t122 + t144) + (t154 - t155);
+    const Real t162 = t143 + t161;
+    const Real t163 = b * t162;
+    const Real t164 = t94 + t163;
+    const Real t165 = t164 - t94;
+    const Real t166 = t121 - (t146 - t147) - (t123 + t147) + (t156 - t157);
+    const Real t167 = t146 + t166;
+    const Real t168 = b * t167;
+    const Real t169 = t116 - (t135 - t136) + (t124 - t136) + (std::fma(t134, t128, std::fma(t134, t68, t14) + t21) / t68 + std::fma(t150, t128, std::fma(t150, t68, t30) + t35) / t68);
+    const Real t170 = t135 + t169;
+    const Real t171 = t170 - t118;
+    const Real t172 = t117 - (t138 - t139) + (t125 - t139) + (std::fma(t137, t129, std::fma(t137, t68, t14) + t21) / t112 + std::fma(t151, t129, std::fma(t151, t68, t30) + t35) / t112);
+    const Real t173 = t138 + t172;
+    const Real t174 = t173 - t119;
+    const Real t175 = t159 - (t160 - t133);
+    const Real t176 = (t160 > Real(0) ? t160 : -t160);
+    const Real t177 = (t110 > Real(0) ? t176 : Real(1));
+    if (!(std::fabs(t177) >= detail::smallest_divisor<Real>) || !(std::fabs(t177) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t431 = t424 - t423;
-    const Real t432 = t427 - t426;
-    const Real t433 = t223 - (t417 - t418) + (t416 - t418) + (t222 - (t223 - t215) + std::fma(b, t414 - (t415 - t396), std::fma(b, t415, -t416)));
-    const Real t434 = t417 + t433;
-    const Real t435 = t434 - t421;
-    const Real t436 = t423 - (t424 - t431) - (t371 + t431) + (t422 - (t423 - t388) - std::fma(t393, t381, std::fma(t393, t194, t42) + t52) / t194);
-    const Real t437 = t424 + t436;
-    const Real t438 = t437 - t379;
-    const Real t439 = t426 - (t427 - t432) - (t372 + t432) + (t425 - (t426 - t391) - std::fma(t394, t382, std::fma(t394, t194, t42) + t52) / t365);
-    const Real t440 = t427 + t439;
-    const Real t441 = t440 - t380;
-    const Real t442 = t435 - t434;
-    const Real t443 = t438 - t437;
-    const Real t444 = t441 - t440;
-    const Real t445 = t434 - (t435 - t442) - (t421 + t442) + (t433 - (t434 - t417) - std::fma(b, t419 - (t420 - t399), std::fma(b, t420, -t421)));
-    const Real t446 = t435 + t445;
-    const Real t447 = t446 + t373;
-    const Real t448 = t437 - (t438 - t443) - (t379 + t443) + (t436 - (t437 - t424) - std::fma(t405, t381, std::fma(t405, t194, t62) + t65) / t194);
-    const Real t449 = t438 + t448;
-    const Real t450 = t69 * t449;
-    const Real t451 = t450 / t194;
-    const Real t452 = t440 - (t441 - t444) - (t380 + t444) + (t439 - (t440 - t427) - std::fma(t406, t382, std::fma(t406, t194, t62) + t65) / t365);
-    const Real t453 = t441 + t452;
-    const Real t454 = t94 * t453;
-    const Real t455 = t454 * t413;
-    const Real t456 = t455 / t430;
-    const Real t457 = t447 - t446;
-    const Real t458 = -t451;
-    const Real t459 = -t456;
-    const Real t460 = t446 - (t447 - t457) + (t373 - t457) + (t445 - (t446 - t435) + t407);
-    const Real t461 = t447 + t460;
-    const Real t462 = t461 - t375;
-    const Real t463 = t462 - t461;
-    const Real t464 = t458 + -(std::fma(t458, t381, std::fma(t458, t194, t450) + std::fma(std::fma(m, t68, std::fma(m, t66, -t69)), t449, std::fma(t69, t448 - (t449 - t438), std::fma(t69, t449, -t450)))) / t194);
-    const Real t465 = t464 * t0;
-    const Real t466 = t464 * t12;
-    const Real t467 = t461 - (t462 - t463) - (t375 + t463) + (t460 - (t461 - t447) - t408);
-    const Real t468 = t462 + t467;
-    const Real t469 = t468 - t374;
-    const Real t470 = t469 - t468;
-    const Real t471 = t468 - (t469 - t470) - (t374 + t470) + (t467 - (t468 - t462) - t409);
-    const Real t472 = t469 + t471;
-    const Real t473 = t472 + t376;
-    const Real t474 = t473 - t472;
-    const Real t475 = t472 - (t473 - t474) + (t376 - t474) + (t471 - (t472 - t469) + t410);
-    const Real t476 = t473 + t475;
-    const Real t477 = t74 * t476;
-    const Real t478 = t477 / t364;
-    const Real t479 = (t363 > Real(0) ? t459 : t478);
-    const Real t480 = t479 / t194;
-    const Real t481 = t480 * t194;
-    const Real t482 = t481 / t193;
-    const Real t483 = -t478;
-    const Real t484 = -t480;
-    const Real t485 = -t482;
-    const Real t486 = std::fma(t484, t381, std::fma(t484, t194, t479) + (t363 > Real(0) ? -(std::fma(t459, (t413 > Real(0) ? t428 : -t428), std::fma(t459, t429, t455) + std::fma(std::fma(std::fma(std::fma(m, mu, -t93), t66, std::fma(t93, t68, std::fma(t93, t66, -t94))), t453, std::fma(t94, t452 - (t453 - t441), std::fma(t94, t453, -t454))), t413, std::fma(t454, t428, std::fma(t454, t413, -t455)))) / t430) : std::fma(t483, t78 - (t79 - t75), std::fma(t483, t79, t477) + std::fma(std::fma(std::fma(m, q_M, -t73), q_m, std::fma(t73, q_m, -t74)), t476, std::fma(t74, t475 - (t476 - t473), std::fma(t74, t476, -t477)))) / t364)) / t194;
-    const Real t487 = t480 + t486;
-    const Real t488 = std::fma(t487, t0, t466);
-    const Real t489 = t488 / m;
-    const Real t490 = -t487;
-    const Real t491 = std::fma(t490, t12, t465);
-    const Real t492 = t491 / m;
+    const Real t178 = t171 - t170;
+    const Real t179 = t174 - t173;
+    const Real t180 = t94 - (t164 - t165) + (t163 - t165) + (t93 - (t94 - t84) + std::fma(b, t161 - (t162 - t143), std::fma(b, t162, -t163)));
+    const Real t181 = t164 + t180;
+    const Real t182 = t181 - t168;
+    const Real t183 = t170 - (t171 - t178) - (t118 + t178) + (t169 - (t170 - t135) - std::fma(t140, t128, std::fma(t140, t68, t15) + t22) / t68);
+    const Real t184 = t171 + t183;
+    const Real t185 = t184 - t126;
+    const Real t186 = t173 - (t174 - t179) - (t119 + t179) + (t172 - (t173 - t138) - std::fma(t141, t129, std::fma(t141, t68, t15) + t22) / t112);
+    const Real t187 = t174 + t186;
+    const Real t188 = t187 - t127;
+    const Real t189 = t182 - t181;
+    const Real t190 = t185 - t184;
+    const Real t191 = t188 - t187;
+    const Real t192 = t181 - (t182 - t189) - (t168 + t189) + (t180 - (t181 - t164) - std::fma(b, t166 - (t167 - t146), std::fma(b, t167, -t168)));
+    const Real t193 = t182 + t192;
+    const Real t194 = t193 + t120;
+    const Real t195 = t184 - (t185 - t190) - (t126 + t190) + (t183 - (t184 - t171) - std::fma(t152, t128, std::fma(t152, t68, t31) + t36) / t68);
+    const Real t196 = t185 + t195;
+    const Real t197 = t44 * t196;
+    const Real t198 = t197 / t68;
+    const Real t199 = t187 - (t188 - t191) - (t127 + t191) + (t186 - (t187 - t174) - std::fma(t153, t129, std::fma(t153, t68, t31) + t36) / t112);
+    const Real t200 = t188 + t199;
+    const Real t201 = t103 * t200;
+    const Real t202 = t201 * t160;
+    const Real t203 = t202 / t177;
+    const Real t204 = t194 - t193;
+    const Real t205 = -t198;
+    const Real t206 = -t203;
+    const Real t207 = t193 - (t194 - t204) + (t120 - t204) + (t192 - (t193 - t182) + t154);
+    const Real t208 = t194 + t207;
+    const Real t209 = t208 - t122;
+    const Real t210 = t209 - t208;
+    const Real t211 = t205 + -(std::fma(t205, t128, std::fma(t205, t68, t197) + std::fma(std::fma(m, t43, std::fma(m, t41, -t44)), t196, std::fma(t44, t195 - (t196 - t185), std::fma(t44, t196, -t197)))) / t68);
+    const Real t212 = t211 * t0;
+    const Real t213 = t211 * t4;
+    const Real t214 = t208 - (t209 - t210) - (t122 + t210) + (t207 - (t208 - t194) - t155);
+    const Real t215 = t209 + t214;
+    const Real t216 = t215 - t121;
+    const Real t217 = t216 - t215;
+    const Real t218 = t215 - (t216 - t217) - (t121 + t217) + (t214 - (t215 - t209) - t156);
+    const Real t219 = t216 + t218;
+    const Real t220 = t219 + t123;
+    const Real t221 = t220 - t219;
+    const Real t222 = t219 - (t220 - t221) + (t123 - t221) + (t218 - (t219 - t216) + t157);
+    const Real t223 = t220 + t222;
+    const Real t224 = t49 * t223;
+    const Real t225 = t224 / t111;
+    const Real t226 = (t110 > Real(0) ? t206 : t225);
+    const Real t227 = t226 / t68;
+    const Real t228 = t227 * t68;
+    const Real t229 = t228 / t67;
+    const Real t230 = -t225;
+    const Real t231 = -t227;
+    const Real t232 = -t229;
+    const Real t233 = std::fma(t231, t128, std::fma(t231, t68, t226) + (t110 > Real(0) ? -(std::fma(t206, (t160 > Real(0) ? t175 : -t175), std::fma(t206, t176, t202) + std::fma(std::fma(std::fma(std::fma(m, mu, -t102), t41, std::fma(t102, t43, std::fma(t102, t41, -t103))), t200, std::fma(t103, t199 - (t200 - t188), std::fma(t103, t200, -t201))), t160, std::fma(t201, t175, std::fma(t201, t160, -t202)))) / t177) : std::fma(t230, t53, std::fma(t230, t52, t224) + std::fma(std::fma(std::fma(m, q_M, -t46), q_m, std::fma(t46, q_m, -t49)), t223, std::fma(t49, t222 - (t223 - t220), std::fma(t49, t223, -t224)))) / t111)) / t68;
+    const Real t234 = t227 + t233;
+    const Real t235 = std::fma(t234, t0, t213);
+    const Real t236 = t235 / m;
+    const Real t237 = -t234;
+    const Real t238 = std::fma(t237, t4, t212);
+    const Real t239 = t238 / m;
     const Real result0 = v_Mx;
     const Real result1 = v_My;
-    const Real result2 = v_mx - t492;
-    const Real result3 = v_my - t489;
+    const Real result2 = v_mx - t239;
+    const Real result3 = v_my - t236;
     const Real result4 = w_M;
-    const Real result5 = w_m + (t485 + -(std::fma(t485, std::fma(std::fma(m, R_m, -t192), q_m, std::fma(t192, q_m, -t193)), std::fma(t485, t193, t481) + std::fma(t486, t194, std::fma(t480, t381, std::fma(t480, t194, -t481)))) / t193));
+    const Real result5 = w_m + (t232 + -(std::fma(t232, std::fma(std::fma(m, R_m, -t66), q_m, std::fma(t66, q_m, -t67)), std::fma(t232, t67, t228) + std::fma(t233, t68, std::fma(t227, t128, std::fma(t227, t68, -t228)))) / t67));
     if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && t40 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t48) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t49) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && t53 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t62) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && m != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && q_M != Real(0) && eps != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && t73 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && t71 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && q_M != Real(0) && mu != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t70 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t72 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t70 != Real(0) && b != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && t184 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t192) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
-        (std::fabs(t193) < std::numeric_limits<Real>::min() && t192 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t196) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t197) < std::numeric_limits<Real>::min() && t183 != Real(0) && t195 != Real(0)) ||
-        (std::fabs(t200) < std::numeric_limits<Real>::min() && t196 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t204) < std::numeric_limits<Real>::min() && t191 != Real(0) && t195 != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && t210 != Real(0) && t194 != Real(0)) ||
-        (std::fabs(t256) < std::numeric_limits<Real>::min() && t70 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && t182 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t369) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t370) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t371) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t372) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t373) < std::numeric_limits<Real>::min() && t48 != Real(0)) ||
-        (std::fabs(t374) < std::numeric_limits<Real>::min() && t49 != Real(0)) ||
-        (std::fabs(t375) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
-        (std::fabs(t376) < std::numeric_limits<Real>::min() && t60 != Real(0)) ||
-        (std::fabs(t377) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t378) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t379) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t380) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t416) < std::numeric_limits<Real>::min() && b != Real(0) && t415 != Real(0)) ||
-        (std::fabs(t421) < std::numeric_limits<Real>::min() && b != Real(0) && t420 != Real(0)) ||
-        (std::fabs(t450) < std::numeric_limits<Real>::min() && t69 != Real(0) && t449 != Real(0)) ||
-        (std::fabs(t451) < std::numeric_limits<Real>::min() && t450 != Real(0)) ||
-        (std::fabs(t454) < std::numeric_limits<Real>::min() && t94 != Real(0) && t453 != Real(0)) ||
-        (std::fabs(t455) < std::numeric_limits<Real>::min() && t454 != Real(0) && t413 != Real(0)) ||
-        (std::fabs(t456) < std::numeric_limits<Real>::min() && t455 != Real(0)) ||
-        (std::fabs(t465) < std::numeric_limits<Real>::min() && t464 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t466) < std::numeric_limits<Real>::min() && t464 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t477) < std::numeric_limits<Real>::min() && t74 != Real(0) && t476 != Real(0)) ||
-        (std::fabs(t478) < std::numeric_limits<Real>::min() && t477 != Real(0)) ||
-        (std::fabs(t480) < std::numeric_limits<Real>::min() && t479 != Real(0)) ||
-        (std::fabs(t481) < std::numeric_limits<Real>::min() && t480 != Real(0) && t194 != Real(0)) ||
-        (std::fabs(t482) < std::numeric_limits<Real>::min() && t481 != Real(0)) ||
-        (std::fabs(t488) < std::numeric_limits<Real>::min() && (t488 != Real(0) || (t466 == Real(0) && t487 != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t489) < std::numeric_limits<Real>::min() && t488 != Real(0)) ||
-        (std::fabs(t491) < std::numeric_limits<Real>::min() && (t491 != Real(0) || (t465 == Real(0) && t490 != Real(0) && t12 != Real(0)))) ||
-        (std::fabs(t492) < std::numeric_limits<Real>::min() && t491 != Real(0))) {
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t4 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t12 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t12 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && t25 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && t25 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t30) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && m != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && m != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t49) < std::numeric_limits<Real>::min() && t46 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && t45 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t65) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t66) < std::numeric_limits<Real>::min() && m != Real(0) && R_m != Real(0)) ||
+        (std::fabs(t67) < std::numeric_limits<Real>::min() && t66 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t69) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t72) < std::numeric_limits<Real>::min() && t69 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && t79 != Real(0) && t68 != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t55 != Real(0) && t99 != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && mu != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && m != Real(0) && mu != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t101 != Real(0) && t52 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t104 != Real(0) && t40 != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t17 != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t18 != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t28 != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && b != Real(0) && t162 != Real(0)) ||
+        (std::fabs(t168) < std::numeric_limits<Real>::min() && b != Real(0) && t167 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && t44 != Real(0) && t196 != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && t103 != Real(0) && t200 != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && t201 != Real(0) && t160 != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && t202 != Real(0)) ||
+        (std::fabs(t212) < std::numeric_limits<Real>::min() && t211 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t211 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && t49 != Real(0) && t223 != Real(0)) ||
+        (std::fabs(t225) < std::numeric_limits<Real>::min() && t224 != Real(0)) ||
+        (std::fabs(t227) < std::numeric_limits<Real>::min() && t226 != Real(0)) ||
+        (std::fabs(t228) < std::numeric_limits<Real>::min() && t227 != Real(0) && t68 != Real(0)) ||
+        (std::fabs(t229) < std::numeric_limits<Real>::min() && t228 != Real(0)) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && (t235 != Real(0) || (t213 == Real(0) && t234 != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t236) < std::numeric_limits<Real>::min() && t235 != Real(0)) ||
+        (std::fabs(t238) < std::numeric_limits<Real>::min() && (t238 != Real(0) || (t212 == Real(0) && t237 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t239) < std::numeric_limits<Real>::min() && t238 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
@@ -3243,8 +2280,8 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_M(Real m, Real R_M, Rea
 
 // collide_rough(M, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu, impact::fast): the fast form of collide_rough with m = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
-// bound (verification.md): 1361 operations with the guards' conditions, of them 39
-// division(s) and 2 square root(s) (the accurate form: 1406, 41 and 2).
+// bound (verification.md): 633 operations with the guards' conditions, of them 39
+// division(s) and 1 square root(s) (the accurate form: 678, 41 and 1).
 // v_M[0] is computed in the form "limit of v_Mx - (K_n*r_x - K_t*r_y)/M, fma, compensated let": at most 3.45 ulps in double on 4200 samples.
 // v_M[1] is computed in the form "limit of v_My - (K_n*r_y + K_t*r_x)/M, fma, compensated let": at most 3.74 ulps in double on 4200 samples.
 // v_m[0] is computed in the form "limit of display, compensated let": at most 0.00 ulps in double on 4200 samples.
@@ -3294,655 +2331,334 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
     }
     const Real t0 = C_Mx - C_mx;
     const Real t1 = t0 - C_Mx;
-    const Real t2 = C_Mx * C_Mx;
-    const Real t3 = Real(2) * C_Mx;
-    const Real t4 = t3 * C_mx;
-    const Real t5 = C_mx * C_mx;
-    const Real t6 = t0 * t0;
-    const Real t7 = C_Mx - (t0 - t1) - (C_mx + t1);
-    const Real t8 = t2 - t4;
-    const Real t9 = t8 - t2;
-    const Real t10 = t2 - (t8 - t9) - (t4 + t9) + (std::fma(C_Mx, C_Mx, -t2) - std::fma(std::fma(Real(2), C_Mx, -t3), C_mx, std::fma(t3, C_mx, -t4)));
-    const Real t11 = t8 + t10;
-    const Real t12 = C_My - C_my;
-    const Real t13 = t12 - C_My;
-    const Real t14 = C_My * C_My;
-    const Real t15 = t11 + t14;
-    const Real t16 = t15 - t11;
-    const Real t17 = Real(2) * C_My;
-    const Real t18 = t17 * C_my;
-    const Real t19 = C_my * C_my;
-    const Real t20 = t12 * t12;
-    const Real t21 = t6 + t20;
-    const Real t22 = t21 - t6;
-    const Real t23 = C_My - (t12 - t13) - (C_my + t13);
-    const Real t24 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t8) + std::fma(C_My, C_My, -t14));
-    const Real t25 = t15 + t24;
-    const Real t26 = t25 - t18;
-    const Real t27 = t6 - (t21 - t22) + (t20 - t22) + (std::fma(t7, t0, std::fma(t0, t7, std::fma(t0, t0, -t6))) + std::fma(t23, t12, std::fma(t12, t23, std::fma(t12, t12, -t20))));
-    const Real t28 = t21 + t27;
-    const Real t29 = t26 - t25;
-    const Real t30 = t25 - (t26 - t29) - (t18 + t29) + (t24 - (t25 - t15) - std::fma(std::fma(Real(2), C_My, -t17), C_my, std::fma(t17, C_my, -t18)));
-    const Real t31 = t26 + t30;
-    const Real t32 = t31 + t5;
-    const Real t33 = t32 - t31;
-    const Real t34 = t31 - (t32 - t33) + (t5 - t33) + (t30 - (t31 - t26) + std::fma(C_mx, C_mx, -t5));
-    const Real t35 = t32 + t34;
-    const Real t36 = t35 + t19;
-    const Real t37 = t36 - t35;
-    const Real t38 = t35 - (t36 - t37) + (t19 - t37) + (t34 - (t35 - t32) + std::fma(C_my, C_my, -t19));
-    const Real t39 = t36 + t38;
-    const Real t40 = v_Mx - v_mx;
-    const Real t41 = v_Mx * t0;
-    const Real t42 = v_mx * t0;
-    const Real t43 = v_Mx * C_My;
-    const Real t44 = v_Mx * C_my;
-    const Real t45 = v_mx * C_My;
-    const Real t46 = v_mx * C_my;
-    const Real t47 = t40 * t12;
-    const Real t48 = v_Mx * t12;
-    const Real t49 = v_mx * t12;
-    const Real t50 = t40 - v_Mx;
-    const Real t51 = std::fma(v_Mx, t7, std::fma(v_Mx, t0, -t41));
-    const Real t52 = std::fma(v_mx, t7, std::fma(v_mx, t0, -t42));
-    const Real t53 = v_My - v_my;
-    const Real t54 = v_My * C_Mx;
-    const Real t55 = v_My * C_mx;
-    const Real t56 = v_my * C_Mx;
-    const Real t57 = v_my * C_mx;
-    const Real t58 = t53 * t0;
-    const Real t59 = v_My * t0;
-    const Real t60 = v_my * t0;
-    const Real t61 = v_My * t12;
-    const Real t62 = v_my * t12;
-    if (!(t21 > Real(0))) {
+    const Real t2 = t0 * t0;
+    const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
+    const Real t4 = C_My - C_my;
+    const Real t5 = t4 - C_My;
+    const Real t6 = t4 * t4;
+    const Real t7 = t2 + t6;
+    const Real t8 = t7 - t2;
+    const Real t9 = C_My - (t4 - t5) - (C_my + t5);
+    const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
+    const Real t11 = t7 + t10;
+    const Real t12 = v_Mx - v_mx;
+    const Real t13 = t12 * t0;
+    const Real t14 = v_Mx * t0;
+    const Real t15 = v_mx * t0;
+    const Real t16 = t12 * t4;
+    const Real t17 = v_Mx * t4;
+    const Real t18 = v_mx * t4;
+    const Real t19 = t12 - v_Mx;
+    const Real t20 = -t13;
+    const Real t21 = std::fma(v_Mx, t3, std::fma(v_Mx, t0, -t14));
+    const Real t22 = std::fma(v_mx, t3, std::fma(v_mx, t0, -t15));
+    const Real t23 = v_Mx - (t12 - t19) - (v_mx + t19);
+    const Real t24 = std::fma(t23, t4, std::fma(t12, t9, std::fma(t12, t4, -t16)));
+    const Real t25 = v_My - v_my;
+    const Real t26 = t25 * t0;
+    const Real t27 = v_My * t0;
+    const Real t28 = v_my * t0;
+    const Real t29 = t25 * t4;
+    const Real t30 = v_My * t4;
+    const Real t31 = v_my * t4;
+    const Real t32 = t13 + t29;
+    const Real t33 = t32 - t13;
+    if (!(t7 > Real(0))) {
         out.status = status::coincident_centres;
         return out;
     }
-    if (!(-(t40 * t0) - t53 * t12 > Real(0))) {
+    if (!(t20 - t29 > Real(0))) {
         out.status = status::separating;
         return out;
     }
-    const Real t63 = t53 - v_My;
-    const Real t64 = std::fma(v_My, t23, std::fma(v_My, t12, -t61));
-    const Real t65 = std::fma(v_my, t23, std::fma(v_my, t12, -t62));
-    const Real t66 = Real(1) + eps;
-    const Real t67 = t66 - Real(1);
-    const Real t68 = Real(1) - (t66 - t67) + (eps - t67);
-    const Real t69 = M * t66;
-    const Real t70 = q_M * q_m;
-    const Real t71 = t70 * eps;
-    const Real t72 = q_m * eps;
-    const Real t73 = M * q_M;
-    const Real t74 = t73 * q_m;
-    const Real t75 = t70 + q_m;
-    const Real t76 = std::fma(q_M, q_m, -t70);
-    const Real t77 = t75 - t70;
-    const Real t78 = t70 - (t75 - t77) + (q_m - t77) + t76;
-    const Real t79 = t75 + t78;
-    const Real t80 = t71 * mu;
-    const Real t81 = t80 * v_Mx;
-    const Real t82 = t81 * C_Mx;
-    const Real t83 = t81 * C_mx;
-    const Real t84 = t80 * v_mx;
-    const Real t85 = t84 * C_Mx;
-    const Real t86 = t84 * C_mx;
-    const Real t87 = t80 * v_My;
-    const Real t88 = t87 * C_My;
-    const Real t89 = t87 * C_my;
-    const Real t90 = t80 * v_my;
-    const Real t91 = t90 * C_My;
-    const Real t92 = t90 * C_my;
-    const Real t93 = M * mu;
-    const Real t94 = t93 * t66;
-    const Real t95 = q_m * mu;
-    const Real t96 = t95 * v_Mx;
-    const Real t97 = t96 * C_Mx;
-    const Real t98 = t96 * C_mx;
-    const Real t99 = t95 * v_mx;
-    const Real t100 = t99 * C_Mx;
-    const Real t101 = t99 * C_mx;
-    const Real t102 = t95 * v_My;
-    const Real t103 = t102 * C_My;
-    const Real t104 = t102 * C_my;
-    const Real t105 = t95 * v_my;
-    const Real t106 = t105 * C_My;
-    const Real t107 = t105 * C_my;
-    const Real t108 = t70 * mu;
-    const Real t109 = t108 * v_Mx;
-    const Real t110 = t109 * C_Mx;
-    const Real t111 = t109 * C_mx;
-    const Real t112 = t108 * v_mx;
-    const Real t113 = t112 * C_Mx;
-    const Real t114 = t112 * C_mx;
-    const Real t115 = t108 * v_My;
-    const Real t116 = t115 * C_My;
-    const Real t117 = t115 * C_my;
-    const Real t118 = t108 * v_my;
-    const Real t119 = t118 * C_My;
-    const Real t120 = t118 * C_my;
-    const Real t121 = t72 * mu;
-    const Real t122 = t121 * v_Mx;
-    const Real t123 = t122 * C_Mx;
-    const Real t124 = t122 * C_mx;
-    const Real t125 = t121 * v_mx;
-    const Real t126 = t125 * C_Mx;
-    const Real t127 = t125 * C_mx;
-    const Real t128 = t121 * v_My;
-    const Real t129 = t128 * C_My;
-    const Real t130 = t128 * C_my;
-    const Real t131 = t121 * v_my;
-    const Real t132 = t131 * C_My;
-    const Real t133 = t131 * C_my;
-    const Real t134 = std::fma(std::fma(t76, eps, std::fma(t70, eps, -t71)), mu, std::fma(t71, mu, -t80));
-    const Real t135 = std::fma(t134, v_Mx, std::fma(t80, v_Mx, -t81));
-    const Real t136 = t82 - t83;
-    const Real t137 = t136 - t82;
-    const Real t138 = std::fma(t134, v_mx, std::fma(t80, v_mx, -t84));
-    const Real t139 = std::fma(t134, v_My, std::fma(t80, v_My, -t87));
-    const Real t140 = std::fma(t134, v_my, std::fma(t80, v_my, -t90));
-    const Real t141 = std::fma(q_m, mu, -t95);
-    const Real t142 = std::fma(t141, v_Mx, std::fma(t95, v_Mx, -t96));
-    const Real t143 = std::fma(t141, v_mx, std::fma(t95, v_mx, -t99));
-    const Real t144 = std::fma(t141, v_My, std::fma(t95, v_My, -t102));
-    const Real t145 = std::fma(t141, v_my, std::fma(t95, v_my, -t105));
-    const Real t146 = std::fma(t76, mu, std::fma(t70, mu, -t108));
-    const Real t147 = std::fma(t146, v_Mx, std::fma(t108, v_Mx, -t109));
-    const Real t148 = std::fma(t146, v_mx, std::fma(t108, v_mx, -t112));
-    const Real t149 = std::fma(t146, v_My, std::fma(t108, v_My, -t115));
-    const Real t150 = std::fma(t146, v_my, std::fma(t108, v_my, -t118));
-    const Real t151 = std::fma(std::fma(q_m, eps, -t72), mu, std::fma(t72, mu, -t121));
-    const Real t152 = std::fma(t151, v_Mx, std::fma(t121, v_Mx, -t122));
-    const Real t153 = std::fma(t151, v_mx, std::fma(t121, v_mx, -t125));
-    const Real t154 = std::fma(t151, v_My, std::fma(t121, v_My, -t128));
-    const Real t155 = std::fma(t151, v_my, std::fma(t121, v_my, -t131));
-    const Real t156 = t82 - (t136 - t137) - (t83 + t137) + (std::fma(t135, C_Mx, std::fma(t81, C_Mx, -t82)) - std::fma(t135, C_mx, std::fma(t81, C_mx, -t83)));
-    const Real t157 = t136 + t156;
-    const Real t158 = t157 + t88;
-    const Real t159 = t158 - t157;
-    const Real t160 = t157 - (t158 - t159) + (t88 - t159) + (t156 - (t157 - t136) + std::fma(t139, C_My, std::fma(t87, C_My, -t88)));
-    const Real t161 = t158 + t160;
-    const Real t162 = t161 - t89;
-    const Real t163 = t162 - t161;
-    const Real t164 = t161 - (t162 - t163) - (t89 + t163) + (t160 - (t161 - t158) - std::fma(t139, C_my, std::fma(t87, C_my, -t89)));
-    const Real t165 = t162 + t164;
-    const Real t166 = t165 - t85;
-    const Real t167 = t166 - t165;
-    const Real t168 = t165 - (t166 - t167) - (t85 + t167) + (t164 - (t165 - t162) - std::fma(t138, C_Mx, std::fma(t84, C_Mx, -t85)));
-    const Real t169 = t166 + t168;
-    const Real t170 = t169 + t86;
-    const Real t171 = t170 - t169;
-    const Real t172 = t169 - (t170 - t171) + (t86 - t171) + (t168 - (t169 - t166) + std::fma(t138, C_mx, std::fma(t84, C_mx, -t86)));
-    const Real t173 = t170 + t172;
-    const Real t174 = t173 - t91;
-    const Real t175 = t174 - t173;
-    const Real t176 = t173 - (t174 - t175) - (t91 + t175) + (t172 - (t173 - t170) - std::fma(t140, C_My, std::fma(t90, C_My, -t91)));
-    const Real t177 = t174 + t176;
-    const Real t178 = t177 + t92;
-    const Real t179 = t178 - t177;
-    const Real t180 = t177 - (t178 - t179) + (t92 - t179) + (t176 - (t177 - t174) + std::fma(t140, C_my, std::fma(t90, C_my, -t92)));
-    const Real t181 = t178 + t180;
-    const Real t182 = t70 * b;
-    const Real t183 = R_M * w_M;
-    const Real t184 = M * R_M;
-    const Real t185 = t184 * q_M;
-    const Real t186 = std::sqrt(t28);
-    const Real t187 = std::sqrt(t39);
-    const Real t188 = R_M * b;
-    const Real t189 = t188 * w_M;
-    const Real t190 = std::fma(R_M, w_M, -t183);
-    const Real t191 = t183 * t187;
-    const Real t192 = t189 + t183;
-    const Real t193 = std::fma(-t186, t186, t28) + (t27 - (t28 - t21));
-    const Real t194 = t186 + t186;
-    const Real t195 = t192 - t189;
-    const Real t196 = t189 - (t192 - t195) + (t183 - t195) + (std::fma(std::fma(R_M, b, -t188), w_M, std::fma(t188, w_M, -t189)) + t190);
-    const Real t197 = t192 + t196;
-    const Real t198 = R_m * w_m;
-    const Real t199 = R_m * b;
-    const Real t200 = t183 + t198;
-    const Real t201 = t200 - t183;
-    const Real t202 = t198 * t187;
-    const Real t203 = t191 + t202;
-    const Real t204 = t203 - t191;
-    const Real t205 = t199 * w_m;
-    const Real t206 = t197 + t205;
-    const Real t207 = t206 - t197;
-    const Real t208 = std::fma(R_m, w_m, -t198);
-    const Real t209 = t183 - (t200 - t201) + (t198 - t201) + (t190 + t208);
-    const Real t210 = t200 + t209;
-    const Real t211 = t210 * t186;
-    const Real t212 = t211 + t47;
-    const Real t213 = t191 - (t203 - t204) + (t202 - t204) + (std::fma(t190, t187, std::fma(t183, t187, -t191)) + std::fma(t208, t187, std::fma(t198, t187, -t202)));
-    const Real t214 = t203 + t213;
-    const Real t215 = t214 + t43;
-    const Real t216 = t197 - (t206 - t207) + (t205 - t207) + (t196 - (t197 - t192) + std::fma(std::fma(R_m, b, -t199), w_m, std::fma(t199, w_m, -t205)));
-    const Real t217 = t206 + t216;
-    const Real t218 = t217 + t198;
-    const Real t219 = t212 - t211;
-    const Real t220 = t215 - t214;
-    const Real t221 = t218 - t217;
-    const Real t222 = t214 - (t215 - t220) + (t43 - t220) + (t213 - (t214 - t203) + std::fma(v_Mx, C_My, -t43));
-    const Real t223 = t215 + t222;
-    const Real t224 = t223 - t44;
-    const Real t225 = t217 - (t218 - t221) + (t198 - t221) + (t216 - (t217 - t206) + t208);
-    const Real t226 = t218 + t225;
-    const Real t227 = t224 - t223;
-    const Real t228 = t223 - (t224 - t227) - (t44 + t227) + (t222 - (t223 - t215) - std::fma(v_Mx, C_my, -t44));
-    const Real t229 = t224 + t228;
-    const Real t230 = t229 - t54;
-    const Real t231 = t230 - t229;
-    const Real t232 = t229 - (t230 - t231) - (t54 + t231) + (t228 - (t229 - t224) - std::fma(v_My, C_Mx, -t54));
-    const Real t233 = t230 + t232;
-    const Real t234 = t233 + t55;
-    const Real t235 = t234 - t233;
-    const Real t236 = t233 - (t234 - t235) + (t55 - t235) + (t232 - (t233 - t230) + std::fma(v_My, C_mx, -t55));
-    const Real t237 = t234 + t236;
-    const Real t238 = t237 - t45;
-    const Real t239 = t238 - t237;
-    const Real t240 = t237 - (t238 - t239) - (t45 + t239) + (t236 - (t237 - t234) - std::fma(v_mx, C_My, -t45));
-    const Real t241 = t238 + t240;
-    const Real t242 = t241 + t46;
-    const Real t243 = t242 - t241;
-    const Real t244 = t241 - (t242 - t243) + (t46 - t243) + (t240 - (t241 - t238) + std::fma(v_mx, C_my, -t46));
-    const Real t245 = t242 + t244;
-    const Real t246 = t245 + t56;
-    const Real t247 = t246 - t245;
-    const Real t248 = t245 - (t246 - t247) + (t56 - t247) + (t244 - (t245 - t242) + std::fma(v_my, C_Mx, -t56));
-    const Real t249 = t246 + t248;
-    const Real t250 = t249 - t57;
-    const Real t251 = t250 - t249;
-    const Real t252 = t249 - (t250 - t251) - (t57 + t251) + (t248 - (t249 - t246) - std::fma(v_my, C_mx, -t57));
-    const Real t253 = t250 + t252;
-    const Real t254 = t252 - (t253 - t250);
-    const Real t255 = (t253 > Real(0) ? t253 : -t253);
-    const Real t256 = t70 * t255;
-    const Real t257 = t182 * t255;
-    const Real t258 = t181 + t257;
-    const Real t259 = t258 - t181;
-    const Real t260 = (t253 > Real(0) ? t254 : -t254);
-    const Real t261 = t181 - (t258 - t259) + (t257 - t259) + (t180 - (t181 - t178) + std::fma(std::fma(t76, b, std::fma(t70, b, -t182)), t255, std::fma(t182, t260, std::fma(t182, t255, -t257))));
-    const Real t262 = t258 + t261;
-    const Real t263 = t262 + t110;
-    const Real t264 = t263 - t262;
-    const Real t265 = t262 - (t263 - t264) + (t110 - t264) + (t261 - (t262 - t258) + std::fma(t147, C_Mx, std::fma(t109, C_Mx, -t110)));
-    const Real t266 = t263 + t265;
-    const Real t267 = t266 - t111;
-    const Real t268 = t267 - t266;
-    const Real t269 = t266 - (t267 - t268) - (t111 + t268) + (t265 - (t266 - t263) - std::fma(t147, C_mx, std::fma(t109, C_mx, -t111)));
-    const Real t270 = t267 + t269;
-    const Real t271 = t270 + t116;
-    const Real t272 = t271 - t270;
-    const Real t273 = t270 - (t271 - t272) + (t116 - t272) + (t269 - (t270 - t267) + std::fma(t149, C_My, std::fma(t115, C_My, -t116)));
-    const Real t274 = t271 + t273;
-    const Real t275 = t274 - t117;
-    const Real t276 = t275 - t274;
-    const Real t277 = t274 - (t275 - t276) - (t117 + t276) + (t273 - (t274 - t271) - std::fma(t149, C_my, std::fma(t115, C_my, -t117)));
-    const Real t278 = t275 + t277;
-    const Real t279 = t278 - t113;
-    const Real t280 = t279 - t278;
-    const Real t281 = t278 - (t279 - t280) - (t113 + t280) + (t277 - (t278 - t275) - std::fma(t148, C_Mx, std::fma(t112, C_Mx, -t113)));
-    const Real t282 = t279 + t281;
-    const Real t283 = t282 + t114;
-    const Real t284 = t283 - t282;
-    const Real t285 = t282 - (t283 - t284) + (t114 - t284) + (t281 - (t282 - t279) + std::fma(t148, C_mx, std::fma(t112, C_mx, -t114)));
-    const Real t286 = t283 + t285;
-    const Real t287 = t286 - t119;
-    const Real t288 = t287 - t286;
-    const Real t289 = t286 - (t287 - t288) - (t119 + t288) + (t285 - (t286 - t283) - std::fma(t150, C_My, std::fma(t118, C_My, -t119)));
-    const Real t290 = t287 + t289;
-    const Real t291 = t290 + t120;
-    const Real t292 = t291 - t290;
-    const Real t293 = t290 - (t291 - t292) + (t120 - t292) + (t289 - (t290 - t287) + std::fma(t150, C_my, std::fma(t118, C_my, -t120)));
-    const Real t294 = t291 + t293;
-    const Real t295 = t294 + t256;
-    const Real t296 = t295 - t294;
-    const Real t297 = t294 - (t295 - t296) + (t256 - t296) + (t293 - (t294 - t291) + std::fma(t76, t255, std::fma(t70, t260, std::fma(t70, t255, -t256))));
-    const Real t298 = t295 + t297;
-    const Real t299 = t298 + t123;
-    const Real t300 = t299 - t298;
-    const Real t301 = t298 - (t299 - t300) + (t123 - t300) + (t297 - (t298 - t295) + std::fma(t152, C_Mx, std::fma(t122, C_Mx, -t123)));
-    const Real t302 = t299 + t301;
-    const Real t303 = t302 - t124;
-    const Real t304 = t303 - t302;
-    const Real t305 = t302 - (t303 - t304) - (t124 + t304) + (t301 - (t302 - t299) - std::fma(t152, C_mx, std::fma(t122, C_mx, -t124)));
-    const Real t306 = t303 + t305;
-    const Real t307 = t306 + t129;
-    const Real t308 = t307 - t306;
-    const Real t309 = t306 - (t307 - t308) + (t129 - t308) + (t305 - (t306 - t303) + std::fma(t154, C_My, std::fma(t128, C_My, -t129)));
-    const Real t310 = t307 + t309;
-    const Real t311 = t310 - t130;
-    const Real t312 = t311 - t310;
-    const Real t313 = t310 - (t311 - t312) - (t130 + t312) + (t309 - (t310 - t307) - std::fma(t154, C_my, std::fma(t128, C_my, -t130)));
-    const Real t314 = t311 + t313;
-    const Real t315 = t314 - t126;
-    const Real t316 = t315 - t314;
-    const Real t317 = t314 - (t315 - t316) - (t126 + t316) + (t313 - (t314 - t311) - std::fma(t153, C_Mx, std::fma(t125, C_Mx, -t126)));
-    const Real t318 = t315 + t317;
-    const Real t319 = t318 + t127;
-    const Real t320 = t319 - t318;
-    const Real t321 = t318 - (t319 - t320) + (t127 - t320) + (t317 - (t318 - t315) + std::fma(t153, C_mx, std::fma(t125, C_mx, -t127)));
-    const Real t322 = t319 + t321;
-    const Real t323 = t322 - t132;
-    const Real t324 = t323 - t322;
-    const Real t325 = t322 - (t323 - t324) - (t132 + t324) + (t321 - (t322 - t319) - std::fma(t155, C_My, std::fma(t131, C_My, -t132)));
-    const Real t326 = t323 + t325;
-    const Real t327 = t326 + t133;
-    const Real t328 = t327 - t326;
-    const Real t329 = t326 - (t327 - t328) + (t133 - t328) + (t325 - (t326 - t323) + std::fma(t155, C_my, std::fma(t131, C_my, -t133)));
-    const Real t330 = t327 + t329;
-    const Real t331 = t330 + t97;
-    const Real t332 = t331 - t330;
-    const Real t333 = t330 - (t331 - t332) + (t97 - t332) + (t329 - (t330 - t327) + std::fma(t142, C_Mx, std::fma(t96, C_Mx, -t97)));
-    const Real t334 = t331 + t333;
-    const Real t335 = t334 - t98;
-    const Real t336 = t335 - t334;
-    const Real t337 = t334 - (t335 - t336) - (t98 + t336) + (t333 - (t334 - t331) - std::fma(t142, C_mx, std::fma(t96, C_mx, -t98)));
-    const Real t338 = t335 + t337;
-    const Real t339 = t338 + t103;
-    const Real t340 = t339 - t338;
-    const Real t341 = t338 - (t339 - t340) + (t103 - t340) + (t337 - (t338 - t335) + std::fma(t144, C_My, std::fma(t102, C_My, -t103)));
-    const Real t342 = t339 + t341;
-    const Real t343 = t342 - t104;
-    const Real t344 = t343 - t342;
-    const Real t345 = t342 - (t343 - t344) - (t104 + t344) + (t341 - (t342 - t339) - std::fma(t144, C_my, std::fma(t102, C_my, -t104)));
-    const Real t346 = t343 + t345;
-    const Real t347 = t346 - t100;
-    const Real t348 = t347 - t346;
-    const Real t349 = t346 - (t347 - t348) - (t100 + t348) + (t345 - (t346 - t343) - std::fma(t143, C_Mx, std::fma(t99, C_Mx, -t100)));
-    const Real t350 = t347 + t349;
-    const Real t351 = t350 + t101;
-    const Real t352 = t351 - t350;
-    const Real t353 = t350 - (t351 - t352) + (t101 - t352) + (t349 - (t350 - t347) + std::fma(t143, C_mx, std::fma(t99, C_mx, -t101)));
-    const Real t354 = t351 + t353;
-    const Real t355 = t354 - t106;
-    const Real t356 = t355 - t354;
-    const Real t357 = t354 - (t355 - t356) - (t106 + t356) + (t353 - (t354 - t351) - std::fma(t145, C_My, std::fma(t105, C_My, -t106)));
-    const Real t358 = t355 + t357;
-    const Real t359 = t358 + t107;
-    const Real t360 = t359 - t358;
-    const Real t361 = t358 - (t359 - t360) + (t107 - t360) + (t357 - (t358 - t355) + std::fma(t145, C_my, std::fma(t105, C_my, -t107)));
-    const Real t362 = t359 + t361;
-    const Real t363 = t362 + (t361 - (t362 - t359));
-    const Real t364 = (t363 > Real(0) ? Real(1) : t79);
-    const Real t365 = (t363 > Real(0) ? t186 : Real(1));
-    const Real t366 = (t363 > Real(0) ? Real(1) : t186);
-    const Real t367 = (t363 > Real(0) ? t194 : Real(1));
-    const Real t368 = (t363 > Real(0) ? Real(1) : t194);
-    if (!(std::fabs(t186) >= detail::smallest_divisor<Real>) || !(std::fabs(t186) <= std::numeric_limits<Real>::max()) || !(std::fabs(t365) >= detail::smallest_divisor<Real>) || !(std::fabs(t365) <= std::numeric_limits<Real>::max()) || !(std::fabs(t366) >= detail::smallest_divisor<Real>) || !(std::fabs(t366) <= std::numeric_limits<Real>::max()) || !(std::fabs(t194) >= detail::smallest_divisor<Real>) || !(std::fabs(t194) <= std::numeric_limits<Real>::max()) || !(std::fabs(t367) >= detail::smallest_divisor<Real>) || !(std::fabs(t367) <= std::numeric_limits<Real>::max()) || !(std::fabs(t368) >= detail::smallest_divisor<Real>) || !(std::fabs(t368) <= std::numeric_limits<Real>::max()) || !(std::fabs(t364) >= detail::smallest_divisor<Real>) || !(std::fabs(t364) <= std::numeric_limits<Real>::max()) || !(std::fabs(t185) >= detail::smallest_divisor<Real>) || !(std::fabs(t185) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max())) {
+    const Real t34 = t25 - v_My;
+    const Real t35 = std::fma(v_My, t9, std::fma(v_My, t4, -t30));
+    const Real t36 = std::fma(v_my, t9, std::fma(v_my, t4, -t31));
+    const Real t37 = v_My - (t25 - t34) - (v_my + t34);
+    const Real t38 = std::fma(t37, t0, std::fma(t25, t3, std::fma(t25, t0, -t26)));
+    const Real t39 = t13 - (t32 - t33) + (t29 - t33) + (std::fma(t23, t0, std::fma(t12, t3, std::fma(t12, t0, t20))) + std::fma(t37, t4, std::fma(t25, t9, std::fma(t25, t4, -t29))));
+    const Real t40 = t32 + t39;
+    const Real t41 = Real(1) + eps;
+    const Real t42 = t41 - Real(1);
+    const Real t43 = Real(1) - (t41 - t42) + (eps - t42);
+    const Real t44 = M * t41;
+    const Real t45 = q_M * q_m;
+    const Real t46 = M * q_M;
+    const Real t47 = t45 + q_m;
+    const Real t48 = t46 * q_m;
+    const Real t49 = std::fma(q_M, q_m, -t45);
+    const Real t50 = t47 - t45;
+    const Real t51 = t45 - (t47 - t50) + (q_m - t50) + t49;
+    const Real t52 = t47 + t51;
+    const Real t53 = t51 - (t52 - t47);
+    const Real t54 = Real(1) + b;
+    const Real t55 = t45 * t54;
+    const Real t56 = t54 - Real(1);
+    const Real t57 = R_M * w_M;
+    const Real t58 = M * R_M;
+    const Real t59 = t58 * q_M;
+    const Real t60 = std::sqrt(t11);
+    const Real t61 = R_M * b;
+    const Real t62 = t61 * w_M;
+    const Real t63 = std::fma(R_M, w_M, -t57);
+    const Real t64 = t62 + t57;
+    const Real t65 = std::fma(-t60, t60, t11) + (t10 - (t11 - t7));
+    const Real t66 = t60 + t60;
+    const Real t67 = t64 - t62;
+    const Real t68 = t62 - (t64 - t67) + (t57 - t67) + (std::fma(std::fma(R_M, b, -t61), w_M, std::fma(t61, w_M, -t62)) + t63);
+    const Real t69 = t64 + t68;
+    const Real t70 = R_m * w_m;
+    const Real t71 = R_m * b;
+    const Real t72 = t57 + t70;
+    const Real t73 = t72 - t57;
+    const Real t74 = t71 * w_m;
+    const Real t75 = t69 + t74;
+    const Real t76 = t75 - t69;
+    const Real t77 = std::fma(R_m, w_m, -t70);
+    const Real t78 = t57 - (t72 - t73) + (t70 - t73) + (t63 + t77);
+    const Real t79 = t72 + t78;
+    const Real t80 = t79 * t60;
+    const Real t81 = t80 + t16;
+    const Real t82 = t69 - (t75 - t76) + (t74 - t76) + (t68 - (t69 - t64) + std::fma(std::fma(R_m, b, -t71), w_m, std::fma(t71, w_m, -t74)));
+    const Real t83 = t75 + t82;
+    const Real t84 = t83 + t70;
+    const Real t85 = t78 - (t79 - t72);
+    const Real t86 = std::fma(t79, t60, -t80);
+    const Real t87 = t81 - t80;
+    const Real t88 = t84 - t83;
+    const Real t89 = t80 - (t81 - t87) + (t16 - t87);
+    const Real t90 = t89 + (std::fma(t85, t60, t86) + t24);
+    const Real t91 = t81 + t90;
+    const Real t92 = t91 - t26;
+    const Real t93 = t83 - (t84 - t88) + (t70 - t88) + (t82 - (t83 - t75) + t77);
+    const Real t94 = t84 + t93;
+    const Real t95 = t92 - t91;
+    const Real t96 = t91 - (t92 - t95) - (t26 + t95) + (t90 - (t91 - t81) - t38);
+    const Real t97 = t92 + t96;
+    const Real t98 = t96 - (t97 - t92);
+    const Real t99 = (t97 > Real(0) ? t97 : -t97);
+    const Real t100 = t55 * t99;
+    const Real t101 = mu * t41;
+    const Real t102 = M * mu;
+    const Real t103 = t102 * t41;
+    const Real t104 = t101 * t52;
+    const Real t105 = t104 * t40;
+    const Real t106 = t100 + t105;
+    const Real t107 = t106 - t100;
+    const Real t108 = t100 - (t106 - t107) + (t105 - t107) + (std::fma(std::fma(t49, t54, std::fma(t45, Real(1) - (t54 - t56) + (b - t56), std::fma(t45, t54, -t55))), t99, std::fma(t55, (t97 > Real(0) ? t98 : -t98), std::fma(t55, t99, -t100))) + std::fma(std::fma(std::fma(mu, t43, std::fma(mu, t41, -t101)), t52, std::fma(t101, t53, std::fma(t101, t52, -t104))), t40, std::fma(t104, t39 - (t40 - t32), std::fma(t104, t40, -t105))));
+    const Real t109 = t106 + t108;
+    const Real t110 = t109 + (t108 - (t109 - t106));
+    const Real t111 = (t110 > Real(0) ? Real(1) : t52);
+    const Real t112 = (t110 > Real(0) ? t60 : Real(1));
+    const Real t113 = (t110 > Real(0) ? Real(1) : t60);
+    const Real t114 = (t110 > Real(0) ? t66 : Real(1));
+    const Real t115 = (t110 > Real(0) ? Real(1) : t66);
+    if (!(std::fabs(t60) >= detail::smallest_divisor<Real>) || !(std::fabs(t60) <= std::numeric_limits<Real>::max()) || !(std::fabs(t112) >= detail::smallest_divisor<Real>) || !(std::fabs(t112) <= std::numeric_limits<Real>::max()) || !(std::fabs(t113) >= detail::smallest_divisor<Real>) || !(std::fabs(t113) <= std::numeric_limits<Real>::max()) || !(std::fabs(t66) >= detail::smallest_divisor<Real>) || !(std::fabs(t66) <= std::numeric_limits<Real>::max()) || !(std::fabs(t114) >= detail::smallest_divisor<Real>) || !(std::fabs(t114) <= std::numeric_limits<Real>::max()) || !(std::fabs(t115) >= detail::smallest_divisor<Real>) || !(std::fabs(t115) <= std::numeric_limits<Real>::max()) || !(std::fabs(t111) >= detail::smallest_divisor<Real>) || !(std::fabs(t111) <= std::numeric_limits<Real>::max()) || !(std::fabs(t59) >= detail::smallest_divisor<Real>) || !(std::fabs(t59) <= std::numeric_limits<Real>::max()) || !(std::fabs(M) >= detail::smallest_divisor<Real>) || !(std::fabs(M) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t369 = t41 / t186;
-    const Real t370 = t41 / t365;
-    const Real t371 = t42 / t186;
-    const Real t372 = t42 / t365;
-    const Real t373 = t48 / t366;
-    const Real t374 = t49 / t366;
-    const Real t375 = t59 / t366;
-    const Real t376 = t60 / t366;
-    const Real t377 = t61 / t186;
-    const Real t378 = t61 / t365;
-    const Real t379 = t62 / t186;
-    const Real t380 = t62 / t365;
-    const Real t381 = t193 / t194;
-    const Real t382 = t193 / t367;
-    const Real t383 = t193 / t368;
-    const Real t384 = t211 - (t212 - t219) + (t47 - t219) + (std::fma(t209 - (t210 - t200), t186, std::fma(t210, t382, std::fma(t210, t186, -t211))) + std::fma(v_Mx - (t40 - t50) - (v_mx + t50), t12, std::fma(t40, t23, std::fma(t40, t12, -t47))));
-    const Real t385 = t212 + t384;
-    const Real t386 = t385 - t58;
-    const Real t387 = -t369;
-    const Real t388 = t369 + t377;
-    const Real t389 = t388 - t369;
-    const Real t390 = -t370;
-    const Real t391 = t370 + t378;
-    const Real t392 = t391 - t370;
-    const Real t393 = -t371;
-    const Real t394 = -t372;
-    const Real t395 = -t373;
-    const Real t396 = t373 - t375;
-    const Real t397 = t396 - t373;
-    const Real t398 = -t374;
-    const Real t399 = t374 - t376;
-    const Real t400 = t399 - t374;
-    const Real t401 = -t375;
-    const Real t402 = -t376;
-    const Real t403 = -t377;
-    const Real t404 = -t378;
-    const Real t405 = -t379;
-    const Real t406 = -t380;
-    const Real t407 = std::fma(t395, t383, std::fma(t395, t186, t48) + std::fma(v_Mx, t23, std::fma(v_Mx, t12, -t48))) / t366;
-    const Real t408 = std::fma(t401, t383, std::fma(t401, t186, t59) + std::fma(v_My, t7, std::fma(v_My, t0, -t59))) / t366;
-    const Real t409 = std::fma(t398, t383, std::fma(t398, t186, t49) + std::fma(v_mx, t23, std::fma(v_mx, t12, -t49))) / t366;
-    const Real t410 = std::fma(t402, t383, std::fma(t402, t186, t60) + std::fma(v_my, t7, std::fma(v_my, t0, -t60))) / t366;
-    const Real t411 = t386 - t385;
-    const Real t412 = t385 - (t386 - t411) - (t58 + t411) + (t384 - (t385 - t212) - std::fma(v_My - (t53 - t63) - (v_my + t63), t0, std::fma(t53, t7, std::fma(t53, t0, -t58))));
-    const Real t413 = t386 + t412;
-    const Real t414 = t373 - (t396 - t397) - (t375 + t397) + (t407 - t408);
-    const Real t415 = t396 + t414;
-    const Real t416 = b * t415;
-    const Real t417 = t226 + t416;
-    const Real t418 = t417 - t226;
-    const Real t419 = t374 - (t399 - t400) - (t376 + t400) + (t409 - t410);
-    const Real t420 = t399 + t419;
-    const Real t421 = b * t420;
-    const Real t422 = t369 - (t388 - t389) + (t377 - t389) + (std::fma(t387, t381, std::fma(t387, t186, t41) + t51) / t186 + std::fma(t403, t381, std::fma(t403, t186, t61) + t64) / t186);
-    const Real t423 = t388 + t422;
-    const Real t424 = t423 - t371;
-    const Real t425 = t370 - (t391 - t392) + (t378 - t392) + (std::fma(t390, t382, std::fma(t390, t186, t41) + t51) / t365 + std::fma(t404, t382, std::fma(t404, t186, t61) + t64) / t365);
-    const Real t426 = t391 + t425;
-    const Real t427 = t426 - t372;
-    const Real t428 = t412 - (t413 - t386);
-    const Real t429 = (t413 > Real(0) ? t413 : -t413);
-    const Real t430 = (t363 > Real(0) ? t429 : Real(1));
-    if (!(std::fabs(t430) >= detail::smallest_divisor<Real>) || !(std::fabs(t430) <= std::numeric_limits<Real>::max())) {
+    const Real t116 = t14 / t60;
+    const Real t117 = t14 / t112;
+    const Real t118 = t15 / t60;
+    const Real t119 = t15 / t112;
+    const Real t120 = t17 / t113;
+    const Real t121 = t18 / t113;
+    const Real t122 = t27 / t113;
+    const Real t123 = t28 / t113;
+    const Real t124 = t30 / t60;
+    const Real t125 = t30 / t112;
+    const Real t126 = t31 / t60;
+    const Real t127 = t31 / t112;
+    const Real t128 = t65 / t66;
+    const Real t129 = t65 / t114;
+    const Real t130 = t65 / t115;
+    const Real t131 = t89 + (std::fma(t85, t60, std::fma(t79, t129, t86)) + t24);
+    const Real t132 = t81 + t131;
+    const Real t133 = t132 - t26;
+    const Real t134 = -t116;
+    const Real t135 = t116 + t124;
+    const Real t136 = t135 - t116;
+    const Real t137 = -t117;
+    const Real t138 = t117 + t125;
+    const Real t139 = t138 - t117;
+    const Real t140 = -t118;
+    const Real t141 = -t119;
+    const Real t142 = -t120;
+    const Real t143 = t120 - t122;
+    const Real t144 = t143 - t120;
+    const Real t145 = -t121;
+    const Real t146 = t121 - t123;
+    const Real t147 = t146 - t121;
+    const Real t148 = -t122;
+    const Real t149 = -t123;
+    const Real t150 = -t124;
+    const Real t151 = -t125;
+    const Real t152 = -t126;
+    const Real t153 = -t127;
+    const Real t154 = std::fma(t142, t130, std::fma(t142, t60, t17) + std::fma(v_Mx, t9, std::fma(v_Mx, t4, -t17))) / t113;
+    const Real t155 = std::fma(t148, t130, std::fma(t148, t60, t27) + std::fma(v_My, t3, std::fma(v_My, t0, -t27))) / t113;
+    const Real t156 = std::fma(t145, t130, std::fma(t145, t60, t18) + std::fma(v_mx, t9, std::fma(v_mx, t4, -t18))) / t113;
+    const Real t157 = std::fma(t149, t130, std::fma(t149, t60, t28) + std::fma(v_my, t3, std::fma(v_my, t0, -t28))) / t113;
+    const Real t158 = t133 - t132;
+    const Real t159 = t132 - (t133 - t158) - (t26 + t158) + (t131 - (t132 - t81) - t38);
+    const Real t160 = t133 + t159;
+    const Real t161 = t120 - (t143 - t144) - (t122 + t144) + (t154 - t155);
+    const Real t162 = t143 + t161;
+    const Real t163 = b * t162;
+    const Real t164 = t94 + t163;
+    const Real t165 = t164 - t94;
+    const Real t166 = t121 - (t146 - t147) - (t123 + t147) + (t156 - t157);
+    const Real t167 = t146 + t166;
+    const Real t168 = b * t167;
+    const Real t169 = t116 - (t135 - t136) + (t124 - t136) + (std::fma(t134, t128, std::fma(t134, t60, t14) + t21) / t60 + std::fma(t150, t128, std::fma(t150, t60, t30) + t35) / t60);
+    const Real t170 = t135 + t169;
+    const Real t171 = t170 - t118;
+    const Real t172 = t117 - (t138 - t139) + (t125 - t139) + (std::fma(t137, t129, std::fma(t137, t60, t14) + t21) / t112 + std::fma(t151, t129, std::fma(t151, t60, t30) + t35) / t112);
+    const Real t173 = t138 + t172;
+    const Real t174 = t173 - t119;
+    const Real t175 = t159 - (t160 - t133);
+    const Real t176 = (t160 > Real(0) ? t160 : -t160);
+    const Real t177 = (t110 > Real(0) ? t176 : Real(1));
+    if (!(std::fabs(t177) >= detail::smallest_divisor<Real>) || !(std::fabs(t177) <= std::numeric_limits<Real>::max())) {
         out.status = status::out_of_range;
         return out;
     }
-    const Real t431 = t424 - t423;
-    const Real t432 = t427 - t426;
-    const Real t433 = t226 - (t417 - t418) + (t416 - t418) + (t225 - (t226 - t218) + std::fma(b, t414 - (t415 - t396), std::fma(b, t415, -t416)));
-    const Real t434 = t417 + t433;
-    const Real t435 = t434 - t421;
-    const Real t436 = t423 - (t424 - t431) - (t371 + t431) + (t422 - (t423 - t388) - std::fma(t393, t381, std::fma(t393, t186, t42) + t52) / t186);
-    const Real t437 = t424 + t436;
-    const Real t438 = t437 - t379;
-    const Real t439 = t426 - (t427 - t432) - (t372 + t432) + (t425 - (t426 - t391) - std::fma(t394, t382, std::fma(t394, t186, t42) + t52) / t365);
-    const Real t440 = t427 + t439;
-    const Real t441 = t440 - t380;
-    const Real t442 = t435 - t434;
-    const Real t443 = t438 - t437;
-    const Real t444 = t441 - t440;
-    const Real t445 = t434 - (t435 - t442) - (t421 + t442) + (t433 - (t434 - t417) - std::fma(b, t419 - (t420 - t399), std::fma(b, t420, -t421)));
-    const Real t446 = t435 + t445;
-    const Real t447 = t446 + t373;
-    const Real t448 = t437 - (t438 - t443) - (t379 + t443) + (t436 - (t437 - t424) - std::fma(t405, t381, std::fma(t405, t186, t62) + t65) / t186);
-    const Real t449 = t438 + t448;
-    const Real t450 = t69 * t449;
-    const Real t451 = t450 / t186;
-    const Real t452 = t440 - (t441 - t444) - (t380 + t444) + (t439 - (t440 - t427) - std::fma(t406, t382, std::fma(t406, t186, t62) + t65) / t365);
-    const Real t453 = t441 + t452;
-    const Real t454 = t94 * t453;
-    const Real t455 = t454 * t413;
-    const Real t456 = t455 / t430;
-    const Real t457 = t447 - t446;
-    const Real t458 = -t451;
-    const Real t459 = -t456;
-    const Real t460 = t446 - (t447 - t457) + (t373 - t457) + (t445 - (t446 - t435) + t407);
-    const Real t461 = t447 + t460;
-    const Real t462 = t461 - t375;
-    const Real t463 = t462 - t461;
-    const Real t464 = t458 + -(std::fma(t458, t381, std::fma(t458, t186, t450) + std::fma(std::fma(M, t68, std::fma(M, t66, -t69)), t449, std::fma(t69, t448 - (t449 - t438), std::fma(t69, t449, -t450)))) / t186);
-    const Real t465 = t464 * t0;
-    const Real t466 = t464 * t12;
-    const Real t467 = t461 - (t462 - t463) - (t375 + t463) + (t460 - (t461 - t447) - t408);
-    const Real t468 = t462 + t467;
-    const Real t469 = t468 - t374;
-    const Real t470 = t469 - t468;
-    const Real t471 = t468 - (t469 - t470) - (t374 + t470) + (t467 - (t468 - t462) - t409);
-    const Real t472 = t469 + t471;
-    const Real t473 = t472 + t376;
-    const Real t474 = t473 - t472;
-    const Real t475 = t472 - (t473 - t474) + (t376 - t474) + (t471 - (t472 - t469) + t410);
-    const Real t476 = t473 + t475;
-    const Real t477 = t74 * t476;
-    const Real t478 = t477 / t364;
-    const Real t479 = (t363 > Real(0) ? t459 : t478);
-    const Real t480 = t479 / t186;
-    const Real t481 = t480 * t186;
-    const Real t482 = t481 / t185;
-    const Real t483 = -t478;
-    const Real t484 = -t480;
-    const Real t485 = -t482;
-    const Real t486 = std::fma(t484, t381, std::fma(t484, t186, t479) + (t363 > Real(0) ? -(std::fma(t459, (t413 > Real(0) ? t428 : -t428), std::fma(t459, t429, t455) + std::fma(std::fma(std::fma(std::fma(M, mu, -t93), t66, std::fma(t93, t68, std::fma(t93, t66, -t94))), t453, std::fma(t94, t452 - (t453 - t441), std::fma(t94, t453, -t454))), t413, std::fma(t454, t428, std::fma(t454, t413, -t455)))) / t430) : std::fma(t483, t78 - (t79 - t75), std::fma(t483, t79, t477) + std::fma(std::fma(std::fma(M, q_M, -t73), q_m, std::fma(t73, q_m, -t74)), t476, std::fma(t74, t475 - (t476 - t473), std::fma(t74, t476, -t477)))) / t364)) / t186;
-    const Real t487 = t480 + t486;
-    const Real t488 = std::fma(t487, t0, t466);
-    const Real t489 = t488 / M;
-    const Real t490 = -t487;
-    const Real t491 = std::fma(t490, t12, t465);
-    const Real t492 = t491 / M;
-    const Real result0 = v_Mx + t492;
-    const Real result1 = v_My + t489;
+    const Real t178 = t171 - t170;
+    const Real t179 = t174 - t173;
+    const Real t180 = t94 - (t164 - t165) + (t163 - t165) + (t93 - (t94 - t84) + std::fma(b, t161 - (t162 - t143), std::fma(b, t162, -t163)));
+    const Real t181 = t164 + t180;
+    const Real t182 = t181 - t168;
+    const Real t183 = t170 - (t171 - t178) - (t118 + t178) + (t169 - (t170 - t135) - std::fma(t140, t128, std::fma(t140, t60, t15) + t22) / t60);
+    const Real t184 = t171 + t183;
+    const Real t185 = t184 - t126;
+    const Real t186 = t173 - (t174 - t179) - (t119 + t179) + (t172 - (t173 - t138) - std::fma(t141, t129, std::fma(t141, t60, t15) + t22) / t112);
+    const Real t187 = t174 + t186;
+    const Real t188 = t187 - t127;
+    const Real t189 = t182 - t181;
+    const Real t190 = t185 - t184;
+    const Real t191 = t188 - t187;
+    const Real t192 = t181 - (t182 - t189) - (t168 + t189) + (t180 - (t181 - t164) - std::fma(b, t166 - (t167 - t146), std::fma(b, t167, -t168)));
+    const Real t193 = t182 + t192;
+    const Real t194 = t193 + t120;
+    const Real t195 = t184 - (t185 - t190) - (t126 + t190) + (t183 - (t184 - t171) - std::fma(t152, t128, std::fma(t152, t60, t31) + t36) / t60);
+    const Real t196 = t185 + t195;
+    const Real t197 = t44 * t196;
+    const Real t198 = t197 / t60;
+    const Real t199 = t187 - (t188 - t191) - (t127 + t191) + (t186 - (t187 - t174) - std::fma(t153, t129, std::fma(t153, t60, t31) + t36) / t112);
+    const Real t200 = t188 + t199;
+    const Real t201 = t103 * t200;
+    const Real t202 = t201 * t160;
+    const Real t203 = t202 / t177;
+    const Real t204 = t194 - t193;
+    const Real t205 = -t198;
+    const Real t206 = -t203;
+    const Real t207 = t193 - (t194 - t204) + (t120 - t204) + (t192 - (t193 - t182) + t154);
+    const Real t208 = t194 + t207;
+    const Real t209 = t208 - t122;
+    const Real t210 = t209 - t208;
+    const Real t211 = t205 + -(std::fma(t205, t128, std::fma(t205, t60, t197) + std::fma(std::fma(M, t43, std::fma(M, t41, -t44)), t196, std::fma(t44, t195 - (t196 - t185), std::fma(t44, t196, -t197)))) / t60);
+    const Real t212 = t211 * t0;
+    const Real t213 = t211 * t4;
+    const Real t214 = t208 - (t209 - t210) - (t122 + t210) + (t207 - (t208 - t194) - t155);
+    const Real t215 = t209 + t214;
+    const Real t216 = t215 - t121;
+    const Real t217 = t216 - t215;
+    const Real t218 = t215 - (t216 - t217) - (t121 + t217) + (t214 - (t215 - t209) - t156);
+    const Real t219 = t216 + t218;
+    const Real t220 = t219 + t123;
+    const Real t221 = t220 - t219;
+    const Real t222 = t219 - (t220 - t221) + (t123 - t221) + (t218 - (t219 - t216) + t157);
+    const Real t223 = t220 + t222;
+    const Real t224 = t48 * t223;
+    const Real t225 = t224 / t111;
+    const Real t226 = (t110 > Real(0) ? t206 : t225);
+    const Real t227 = t226 / t60;
+    const Real t228 = t227 * t60;
+    const Real t229 = t228 / t59;
+    const Real t230 = -t225;
+    const Real t231 = -t227;
+    const Real t232 = -t229;
+    const Real t233 = std::fma(t231, t128, std::fma(t231, t60, t226) + (t110 > Real(0) ? -(std::fma(t206, (t160 > Real(0) ? t175 : -t175), std::fma(t206, t176, t202) + std::fma(std::fma(std::fma(std::fma(M, mu, -t102), t41, std::fma(t102, t43, std::fma(t102, t41, -t103))), t200, std::fma(t103, t199 - (t200 - t188), std::fma(t103, t200, -t201))), t160, std::fma(t201, t175, std::fma(t201, t160, -t202)))) / t177) : std::fma(t230, t53, std::fma(t230, t52, t224) + std::fma(std::fma(std::fma(M, q_M, -t46), q_m, std::fma(t46, q_m, -t48)), t223, std::fma(t48, t222 - (t223 - t220), std::fma(t48, t223, -t224)))) / t111)) / t60;
+    const Real t234 = t227 + t233;
+    const Real t235 = std::fma(t234, t0, t213);
+    const Real t236 = t235 / M;
+    const Real t237 = -t234;
+    const Real t238 = std::fma(t237, t4, t212);
+    const Real t239 = t238 / M;
+    const Real result0 = v_Mx + t239;
+    const Real result1 = v_My + t236;
     const Real result2 = v_mx;
     const Real result3 = v_my;
-    const Real result4 = w_M + (t485 + -(std::fma(t485, std::fma(std::fma(M, R_M, -t184), q_M, std::fma(t184, q_M, -t185)), std::fma(t485, t185, t481) + std::fma(t486, t186, std::fma(t480, t381, std::fma(t480, t186, -t481)))) / t185));
+    const Real result4 = w_M + (t232 + -(std::fma(t232, std::fma(std::fma(M, R_M, -t58), q_M, std::fma(t58, q_M, -t59)), std::fma(t232, t59, t228) + std::fma(t233, t60, std::fma(t227, t128, std::fma(t227, t60, -t228)))) / t59));
     const Real result5 = w_m;
     if (!detail::finite(result0) || !detail::finite(result1) || !detail::finite(result2) || !detail::finite(result3) || !detail::finite(result4) || !detail::finite(result5)) {
         out.status = status::out_of_range;
         return out;
     }
-    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t3) < std::numeric_limits<Real>::min() && C_Mx != Real(0)) ||
-        (std::fabs(t4) < std::numeric_limits<Real>::min() && t3 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t5) < std::numeric_limits<Real>::min() && C_mx != Real(0)) ||
-        (std::fabs(t6) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
-        (std::fabs(t14) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t17) < std::numeric_limits<Real>::min() && C_My != Real(0)) ||
-        (std::fabs(t18) < std::numeric_limits<Real>::min() && t17 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t19) < std::numeric_limits<Real>::min() && C_my != Real(0)) ||
-        (std::fabs(t20) < std::numeric_limits<Real>::min() && t12 != Real(0)) ||
-        (std::fabs(t41) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t42) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t43) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t44) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t45) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t46) < std::numeric_limits<Real>::min() && v_mx != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t47) < std::numeric_limits<Real>::min() && t40 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t48) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t49) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t54) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t55) < std::numeric_limits<Real>::min() && v_My != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t56) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t57) < std::numeric_limits<Real>::min() && v_my != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t58) < std::numeric_limits<Real>::min() && t53 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t59) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t60) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t61) < std::numeric_limits<Real>::min() && v_My != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t62) < std::numeric_limits<Real>::min() && v_my != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t69) < std::numeric_limits<Real>::min() && M != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t70) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t71) < std::numeric_limits<Real>::min() && t70 != Real(0) && eps != Real(0)) ||
-        (std::fabs(t72) < std::numeric_limits<Real>::min() && q_m != Real(0) && eps != Real(0)) ||
-        (std::fabs(t73) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t74) < std::numeric_limits<Real>::min() && t73 != Real(0) && q_m != Real(0)) ||
-        (std::fabs(t80) < std::numeric_limits<Real>::min() && t71 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t81) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t82) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t83) < std::numeric_limits<Real>::min() && t81 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t84) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t85) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t86) < std::numeric_limits<Real>::min() && t84 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t87) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t88) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t89) < std::numeric_limits<Real>::min() && t87 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t90) < std::numeric_limits<Real>::min() && t80 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t91) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t92) < std::numeric_limits<Real>::min() && t90 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t93) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
-        (std::fabs(t94) < std::numeric_limits<Real>::min() && t93 != Real(0) && t66 != Real(0)) ||
-        (std::fabs(t95) < std::numeric_limits<Real>::min() && q_m != Real(0) && mu != Real(0)) ||
-        (std::fabs(t96) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t97) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t98) < std::numeric_limits<Real>::min() && t96 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t99) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t100) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t101) < std::numeric_limits<Real>::min() && t99 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t102) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t104) < std::numeric_limits<Real>::min() && t102 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t105) < std::numeric_limits<Real>::min() && t95 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t106) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t107) < std::numeric_limits<Real>::min() && t105 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t108) < std::numeric_limits<Real>::min() && t70 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t109) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t110) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t111) < std::numeric_limits<Real>::min() && t109 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t112) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t113) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t114) < std::numeric_limits<Real>::min() && t112 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t115) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t116) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t117) < std::numeric_limits<Real>::min() && t115 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t118) < std::numeric_limits<Real>::min() && t108 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t119) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t120) < std::numeric_limits<Real>::min() && t118 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t121) < std::numeric_limits<Real>::min() && t72 != Real(0) && mu != Real(0)) ||
-        (std::fabs(t122) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_Mx != Real(0)) ||
-        (std::fabs(t123) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t124) < std::numeric_limits<Real>::min() && t122 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t125) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_mx != Real(0)) ||
-        (std::fabs(t126) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_Mx != Real(0)) ||
-        (std::fabs(t127) < std::numeric_limits<Real>::min() && t125 != Real(0) && C_mx != Real(0)) ||
-        (std::fabs(t128) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_My != Real(0)) ||
-        (std::fabs(t129) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t130) < std::numeric_limits<Real>::min() && t128 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t131) < std::numeric_limits<Real>::min() && t121 != Real(0) && v_my != Real(0)) ||
-        (std::fabs(t132) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_My != Real(0)) ||
-        (std::fabs(t133) < std::numeric_limits<Real>::min() && t131 != Real(0) && C_my != Real(0)) ||
-        (std::fabs(t182) < std::numeric_limits<Real>::min() && t70 != Real(0) && b != Real(0)) ||
-        (std::fabs(t183) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t184) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
-        (std::fabs(t185) < std::numeric_limits<Real>::min() && t184 != Real(0) && q_M != Real(0)) ||
-        (std::fabs(t188) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
-        (std::fabs(t189) < std::numeric_limits<Real>::min() && t188 != Real(0) && w_M != Real(0)) ||
-        (std::fabs(t191) < std::numeric_limits<Real>::min() && t183 != Real(0) && t187 != Real(0)) ||
-        (std::fabs(t198) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t199) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
-        (std::fabs(t202) < std::numeric_limits<Real>::min() && t198 != Real(0) && t187 != Real(0)) ||
-        (std::fabs(t205) < std::numeric_limits<Real>::min() && t199 != Real(0) && w_m != Real(0)) ||
-        (std::fabs(t211) < std::numeric_limits<Real>::min() && t210 != Real(0) && t186 != Real(0)) ||
-        (std::fabs(t256) < std::numeric_limits<Real>::min() && t70 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t257) < std::numeric_limits<Real>::min() && t182 != Real(0) && t255 != Real(0)) ||
-        (std::fabs(t369) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t370) < std::numeric_limits<Real>::min() && t41 != Real(0)) ||
-        (std::fabs(t371) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t372) < std::numeric_limits<Real>::min() && t42 != Real(0)) ||
-        (std::fabs(t373) < std::numeric_limits<Real>::min() && t48 != Real(0)) ||
-        (std::fabs(t374) < std::numeric_limits<Real>::min() && t49 != Real(0)) ||
-        (std::fabs(t375) < std::numeric_limits<Real>::min() && t59 != Real(0)) ||
-        (std::fabs(t376) < std::numeric_limits<Real>::min() && t60 != Real(0)) ||
-        (std::fabs(t377) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t378) < std::numeric_limits<Real>::min() && t61 != Real(0)) ||
-        (std::fabs(t379) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t380) < std::numeric_limits<Real>::min() && t62 != Real(0)) ||
-        (std::fabs(t416) < std::numeric_limits<Real>::min() && b != Real(0) && t415 != Real(0)) ||
-        (std::fabs(t421) < std::numeric_limits<Real>::min() && b != Real(0) && t420 != Real(0)) ||
-        (std::fabs(t450) < std::numeric_limits<Real>::min() && t69 != Real(0) && t449 != Real(0)) ||
-        (std::fabs(t451) < std::numeric_limits<Real>::min() && t450 != Real(0)) ||
-        (std::fabs(t454) < std::numeric_limits<Real>::min() && t94 != Real(0) && t453 != Real(0)) ||
-        (std::fabs(t455) < std::numeric_limits<Real>::min() && t454 != Real(0) && t413 != Real(0)) ||
-        (std::fabs(t456) < std::numeric_limits<Real>::min() && t455 != Real(0)) ||
-        (std::fabs(t465) < std::numeric_limits<Real>::min() && t464 != Real(0) && t0 != Real(0)) ||
-        (std::fabs(t466) < std::numeric_limits<Real>::min() && t464 != Real(0) && t12 != Real(0)) ||
-        (std::fabs(t477) < std::numeric_limits<Real>::min() && t74 != Real(0) && t476 != Real(0)) ||
-        (std::fabs(t478) < std::numeric_limits<Real>::min() && t477 != Real(0)) ||
-        (std::fabs(t480) < std::numeric_limits<Real>::min() && t479 != Real(0)) ||
-        (std::fabs(t481) < std::numeric_limits<Real>::min() && t480 != Real(0) && t186 != Real(0)) ||
-        (std::fabs(t482) < std::numeric_limits<Real>::min() && t481 != Real(0)) ||
-        (std::fabs(t488) < std::numeric_limits<Real>::min() && (t488 != Real(0) || (t466 == Real(0) && t487 != Real(0) && t0 != Real(0)))) ||
-        (std::fabs(t489) < std::numeric_limits<Real>::min() && t488 != Real(0)) ||
-        (std::fabs(t491) < std::numeric_limits<Real>::min() && (t491 != Real(0) || (t465 == Real(0) && t490 != Real(0) && t12 != Real(0)))) ||
-        (std::fabs(t492) < std::numeric_limits<Real>::min() && t491 != Real(0))) {
+    if ((std::fabs(t2) < std::numeric_limits<Real>::min() && t0 != Real(0)) ||
+        (std::fabs(t6) < std::numeric_limits<Real>::min() && t4 != Real(0)) ||
+        (std::fabs(t13) < std::numeric_limits<Real>::min() && t12 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t14) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t15) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t16) < std::numeric_limits<Real>::min() && t12 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t17) < std::numeric_limits<Real>::min() && v_Mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t18) < std::numeric_limits<Real>::min() && v_mx != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t26) < std::numeric_limits<Real>::min() && t25 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t27) < std::numeric_limits<Real>::min() && v_My != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t28) < std::numeric_limits<Real>::min() && v_my != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t29) < std::numeric_limits<Real>::min() && t25 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t30) < std::numeric_limits<Real>::min() && v_My != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t31) < std::numeric_limits<Real>::min() && v_my != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t44) < std::numeric_limits<Real>::min() && M != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t45) < std::numeric_limits<Real>::min() && q_M != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t46) < std::numeric_limits<Real>::min() && M != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t48) < std::numeric_limits<Real>::min() && t46 != Real(0) && q_m != Real(0)) ||
+        (std::fabs(t55) < std::numeric_limits<Real>::min() && t45 != Real(0) && t54 != Real(0)) ||
+        (std::fabs(t57) < std::numeric_limits<Real>::min() && R_M != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t58) < std::numeric_limits<Real>::min() && M != Real(0) && R_M != Real(0)) ||
+        (std::fabs(t59) < std::numeric_limits<Real>::min() && t58 != Real(0) && q_M != Real(0)) ||
+        (std::fabs(t61) < std::numeric_limits<Real>::min() && R_M != Real(0) && b != Real(0)) ||
+        (std::fabs(t62) < std::numeric_limits<Real>::min() && t61 != Real(0) && w_M != Real(0)) ||
+        (std::fabs(t70) < std::numeric_limits<Real>::min() && R_m != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t71) < std::numeric_limits<Real>::min() && R_m != Real(0) && b != Real(0)) ||
+        (std::fabs(t74) < std::numeric_limits<Real>::min() && t71 != Real(0) && w_m != Real(0)) ||
+        (std::fabs(t80) < std::numeric_limits<Real>::min() && t79 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t100) < std::numeric_limits<Real>::min() && t55 != Real(0) && t99 != Real(0)) ||
+        (std::fabs(t101) < std::numeric_limits<Real>::min() && mu != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t102) < std::numeric_limits<Real>::min() && M != Real(0) && mu != Real(0)) ||
+        (std::fabs(t103) < std::numeric_limits<Real>::min() && t102 != Real(0) && t41 != Real(0)) ||
+        (std::fabs(t104) < std::numeric_limits<Real>::min() && t101 != Real(0) && t52 != Real(0)) ||
+        (std::fabs(t105) < std::numeric_limits<Real>::min() && t104 != Real(0) && t40 != Real(0)) ||
+        (std::fabs(t116) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t117) < std::numeric_limits<Real>::min() && t14 != Real(0)) ||
+        (std::fabs(t118) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t119) < std::numeric_limits<Real>::min() && t15 != Real(0)) ||
+        (std::fabs(t120) < std::numeric_limits<Real>::min() && t17 != Real(0)) ||
+        (std::fabs(t121) < std::numeric_limits<Real>::min() && t18 != Real(0)) ||
+        (std::fabs(t122) < std::numeric_limits<Real>::min() && t27 != Real(0)) ||
+        (std::fabs(t123) < std::numeric_limits<Real>::min() && t28 != Real(0)) ||
+        (std::fabs(t124) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t125) < std::numeric_limits<Real>::min() && t30 != Real(0)) ||
+        (std::fabs(t126) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t127) < std::numeric_limits<Real>::min() && t31 != Real(0)) ||
+        (std::fabs(t163) < std::numeric_limits<Real>::min() && b != Real(0) && t162 != Real(0)) ||
+        (std::fabs(t168) < std::numeric_limits<Real>::min() && b != Real(0) && t167 != Real(0)) ||
+        (std::fabs(t197) < std::numeric_limits<Real>::min() && t44 != Real(0) && t196 != Real(0)) ||
+        (std::fabs(t198) < std::numeric_limits<Real>::min() && t197 != Real(0)) ||
+        (std::fabs(t201) < std::numeric_limits<Real>::min() && t103 != Real(0) && t200 != Real(0)) ||
+        (std::fabs(t202) < std::numeric_limits<Real>::min() && t201 != Real(0) && t160 != Real(0)) ||
+        (std::fabs(t203) < std::numeric_limits<Real>::min() && t202 != Real(0)) ||
+        (std::fabs(t212) < std::numeric_limits<Real>::min() && t211 != Real(0) && t0 != Real(0)) ||
+        (std::fabs(t213) < std::numeric_limits<Real>::min() && t211 != Real(0) && t4 != Real(0)) ||
+        (std::fabs(t224) < std::numeric_limits<Real>::min() && t48 != Real(0) && t223 != Real(0)) ||
+        (std::fabs(t225) < std::numeric_limits<Real>::min() && t224 != Real(0)) ||
+        (std::fabs(t227) < std::numeric_limits<Real>::min() && t226 != Real(0)) ||
+        (std::fabs(t228) < std::numeric_limits<Real>::min() && t227 != Real(0) && t60 != Real(0)) ||
+        (std::fabs(t229) < std::numeric_limits<Real>::min() && t228 != Real(0)) ||
+        (std::fabs(t235) < std::numeric_limits<Real>::min() && (t235 != Real(0) || (t213 == Real(0) && t234 != Real(0) && t0 != Real(0)))) ||
+        (std::fabs(t236) < std::numeric_limits<Real>::min() && t235 != Real(0)) ||
+        (std::fabs(t238) < std::numeric_limits<Real>::min() && (t238 != Real(0) || (t212 == Real(0) && t237 != Real(0) && t4 != Real(0)))) ||
+        (std::fabs(t239) < std::numeric_limits<Real>::min() && t238 != Real(0))) {
         out.status = status::underflow;
         return out;
     }
