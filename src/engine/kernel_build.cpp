@@ -541,18 +541,6 @@ private:
         return select_names_.emplace(s, fresh).first->second;
     }
 
-    // `e` with the base of every fractional power expanded: one radical written two ways
-    // ((C_mx - C_Mx)^2 + ... and its expansion) is then one quantity to normal().
-    static GiNaC::ex expanded_radicands(const GiNaC::ex& e)
-    {
-        if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-            !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())
-            return GiNaC::pow(GiNaC::expand(expanded_radicands(e.op(0))), e.op(1));
-        if (e.nops() == 0)
-            return e;
-        return e.map([](const GiNaC::ex& x) { return expanded_radicands(x); });
-    }
-
     void require_inputs(const kernel& k, const GiNaC::ex& value, const std::string& member,
                         const source_location& where, const char* what = "output") const
     {

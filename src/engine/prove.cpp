@@ -315,7 +315,12 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
     // to zero exactly when the difference is zero as a rational function. It is expanded
     // as a polynomial first (engine/polynomial.h); GiNaC is asked only when radicals or
     // functions in it might still cancel.
-    const expansion numerator = expand_numerator(a - b);
+    // A radical written two ways stands as two variables; with every radicand expanded it
+    // is one (the conditions of a rough contact's cases at shifted or exchanged inputs,
+    // whose normal() below takes minutes).
+    expansion numerator = expand_numerator(a - b);
+    if (numerator == expansion::undecided)
+        numerator = expand_numerator(expanded_radicands(a) - expanded_radicands(b));
     if (numerator == expansion::zero ||
         (numerator == expansion::undecided && GiNaC::expand(over_common_denominator(a - b).numerator).is_zero())) {
         verdict v;

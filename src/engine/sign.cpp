@@ -681,4 +681,17 @@ GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given)
     return simplified;
 }
 
+GiNaC::ex expanded_radicands(const GiNaC::ex& e)
+{
+    struct expand_under : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& part) override
+        {
+            if (GiNaC::is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer))
+                return GiNaC::pow(GiNaC::expand((*this)(part.op(0))), part.op(1));
+            return part.map(*this);
+        }
+    } expand;
+    return expand(e);
+}
+
 } // namespace impact::engine

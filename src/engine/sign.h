@@ -139,4 +139,9 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run);
 /// taken out under the domains.
 GiNaC::ex simplify_radicals(const GiNaC::ex& e, const assumptions& given);
 
+/// Each radicand expanded (√(−(Xg + s²)(Xg − s²)) = √(s⁴ − g²X²)): one radical written two
+/// ways (a condition in the author's form and a solution's; a friction cone's |g_t| at
+/// velocities shifted by u and at the velocities themselves) becomes one quantity.
+GiNaC::ex expanded_radicands(const GiNaC::ex& e);
+
 } // namespace impact::engine

@@ -232,21 +232,6 @@ GiNaC::ex simplest(const GiNaC::ex& value, const assumptions& given)
                              given);
 }
 
-// Each radicand expanded (√(−(Xg + s²)(Xg − s²)) = √(s⁴ − g²X²)): a condition written with
-// the radical in the author's form meets the solution's in one form.
-GiNaC::ex expanded_radicands(const GiNaC::ex& e)
-{
-    struct expand_under : GiNaC::map_function {
-        GiNaC::ex operator()(const GiNaC::ex& part) override
-        {
-            if (GiNaC::is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer))
-                return GiNaC::pow(GiNaC::expand((*this)(part.op(0))), part.op(1));
-            return part.map(*this);
-        }
-    } expand;
-    return expand(e);
-}
-
 // Where a value lies with respect to its unknown's domain: proven inside, proven
 // outside, or not settled (then it stays admissible).
 struct placement {
