@@ -768,7 +768,7 @@ BOOST_AUTO_TEST_CASE(the_rough_fixed_sphere_kernels_stick_or_slide_as_walton_s_m
     const numeric n[2] = {numeric(3, 5), numeric(4, 5)}, tt[2] = {numeric(-4, 5), numeric(3, 5)};
     const numeric u[2] = {numeric(5, 4), numeric(1, 2)};
     const numeric g_n = u[0] * n[0] + u[1] * n[1];
-    int sticking = 0, sliding = 0;
+    int sticking[2] = {0, 0}, sliding[2] = {0, 0};  // against M, against m
     for (const int mu_den : {1, 20, 50, 400})
         for (const int spin : {3, -7}) {
             const numeric mu_here(5, mu_den);
@@ -789,7 +789,7 @@ BOOST_AUTO_TEST_CASE(the_rough_fixed_sphere_kernels_stick_or_slide_as_walton_s_m
                 const numeric stick = numeric(3, 2) * m_t * g_t;
                 const numeric cap = mu_here * J_n;
                 const bool sticks = GiNaC::abs(stick) <= cap;
-                (sticks ? sticking : sliding)++;
+                (sticks ? sticking : sliding)[M_is_fixed ? 0 : 1]++;
                 const numeric J_t = sticks ? stick : (g_t > 0 ? cap : -cap);
                 const numeric J[2] = {J_n * n[0] + J_t * tt[0], J_n * n[1] + J_t * tt[1]};
                 const engine::kernel& k = M_is_fixed ? fixed_M : fixed_m;
@@ -814,8 +814,10 @@ BOOST_AUTO_TEST_CASE(the_rough_fixed_sphere_kernels_stick_or_slide_as_walton_s_m
             }
         }
     // Both cases are met, against either obstacle.
-    BOOST_TEST(sticking > 0);
-    BOOST_TEST(sliding > 0);
+    for (int obstacle = 0; obstacle < 2; ++obstacle) {
+        BOOST_TEST(sticking[obstacle] > 0);
+        BOOST_TEST(sliding[obstacle] > 0);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_rough_sphere_sticks_to_or_slides_on_a_wall_as_walton_s_model_says)

@@ -15,8 +15,8 @@ namespace impact::engine {
 namespace {
 
 // The limit of `e` as `s` -> +infinity, through quantities defined by cases: a select's
-// condition by the sign it takes for s large (its limit, or that of its quotient by s or
-// s^2, the first that is finite and not 0), its values by their limits; a select inside
+// condition by the sign it takes for s large (the limit of its quotient by s^k for the one
+// k in 0, 1, 2 where that is finite and not 0), its values by their limits; a select inside
 // another expression named by a symbol while the expression's limit is taken, its own
 // limit put back after (the select is bounded: its cases' limits are finite). Nothing
 // when no method establishes a finite limit.
@@ -48,10 +48,14 @@ std::optional<GiNaC::ex> limit_taken(const GiNaC::ex& e, const GiNaC::ex& s, con
     if (is_select(e)) {
         // The condition divided term by term, so that the limit laws take each term's
         // limit apart (a friction cone's sides are long products, each with one factor
-        // M + m): the whole quotient's series takes seconds. A condition polynomial in s
-        // is tried from its degree (at most 2) down: the quotient's limit is zero above
-        // its true degree and finite and not zero at it, so that no quotient whose limit is
-        // infinite (the laws fail, and the series of the whole is taken) is tried.
+        // M + m): the series of the whole quotient takes seconds. A condition polynomial
+        // in s is tried from its degree (at most 2) down: above its true degree (the
+        // leading terms may cancel) the quotient's limit is zero, at it finite and not
+        // zero, and the quotients below it, whose limits are infinite and are taken by the
+        // series of the whole once the laws fail, are not tried. A limit is zero when its
+        // numerator expands to zero, radicands expanded; one that does not decide is zero
+        // unless found non-zero at a point of the domains (a refutation). A condition of
+        // degree 3 or more, or one whose quotients all vanish, gives no limit.
         const GiNaC::ex& side = e.op(0);
         std::vector<int> powers{0, 1, 2};
         if (side.is_polynomial(s)) {
@@ -59,6 +63,16 @@ std::optional<GiNaC::ex> limit_taken(const GiNaC::ex& e, const GiNaC::ex& s, con
             for (int power = std::min(side.degree(s), 2); power >= 0; --power)
                 powers.push_back(power);
         }
+        const auto vanishes = [&](const GiNaC::ex& r) {
+            if (r.is_zero())
+                return true;
+            switch (expand_numerator(expanded_radicands(r))) {
+            case expansion::zero: return true;
+            case expansion::nonzero: return false;
+            case expansion::undecided: break;
+            }
+            return !nonzero_somewhere(r, given);
+        };
         std::optional<GiNaC::ex> condition;
         for (const int power : powers) {
             if (condition)
@@ -70,9 +84,8 @@ std::optional<GiNaC::ex> limit_taken(const GiNaC::ex& e, const GiNaC::ex& s, con
                     terms.push_back(term * scale);
             else
                 terms.push_back(side * scale);
-            const GiNaC::ex scaled = GiNaC::add(terms);
-            const auto r = limit_at_infinity(scaled, s, given, memo);
-            if (r && !r->is_zero() && expand_numerator(*r) != expansion::zero)
+            const auto r = limit_at_infinity(GiNaC::add(terms), s, given, memo);
+            if (r && !vanishes(*r))
                 condition = *r;
         }
         const auto taken = limit_at_infinity(e.op(1), s, given, memo);

@@ -248,7 +248,13 @@ bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b)
 
 } // namespace
 
-bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points)
+namespace {
+
+// The signs `e` is believed to take at up to `points` points drawn from the domains of
+// `given` (bit 0: negative, bit 1: positive), drawing until both are seen, or until one is
+// when `one_is_enough`; 0 where a symbol has no domain. A sign is believed where 40 and 80 digits agree on it and on
+// the value to a half: a value that is 0 (an identity) comes out as noise of either sign.
+unsigned believed_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points, bool one_is_enough)
 {
     std::vector<std::pair<GiNaC::ex, const domain*>> free;
     for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
@@ -256,14 +262,14 @@ bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t 
             std::none_of(free.begin(), free.end(), [&](const auto& f) { return f.first.is_equal(*it); })) {
             const auto d = given.domains.find(*it);
             if (d == given.domains.end())
-                return false;
+                return 0;
             free.emplace_back(*it, &d->second);
         }
     std::sort(free.begin(), free.end(), [&](const auto& a, const auto& b) { return given.order.before(a.first, b.first); });
     const auto saved_digits = GiNaC::Digits;
     uniform_stream stream(0x5e1f2a3b4c5d6e7fULL);
-    bool negative = false, positive = false;
-    for (std::size_t n = 0; n < points && !(negative && positive); ++n) {
+    unsigned seen = 0;
+    for (std::size_t n = 0; n < points && seen != 3u && !(one_is_enough && seen != 0); ++n) {
         GiNaC::exmap point;
         for (const auto& [symbol, range] : free)
             point[symbol] = exact(draw(*range, stream));
@@ -279,18 +285,26 @@ bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t 
                 value[k] = GiNaC::ex_to<GiNaC::numeric>(x);
                 sign[k] = value[k].is_zero() ? 0 : value[k].is_positive() ? 1 : -1;
             }
-            // A sign believed where both precisions agree on it and on the value to a half:
-            // a value that is 0 (an identity) comes out as noise of either sign.
-            if (sign[0] != 0 && sign[0] == sign[1] && GiNaC::abs(value[0] - value[1]) < GiNaC::abs(value[1]) / 2) {
-                negative = negative || sign[0] < 0;
-                positive = positive || sign[0] > 0;
-            }
+            if (sign[0] != 0 && sign[0] == sign[1] && GiNaC::abs(value[0] - value[1]) < GiNaC::abs(value[1]) / 2)
+                seen |= sign[0] < 0 ? 1u : 2u;
         } catch (const std::exception&) {
             // a pole: another point
         }
     }
     GiNaC::Digits = saved_digits;
-    return negative && positive;
+    return seen;
+}
+
+} // namespace
+
+bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points)
+{
+    return believed_signs(e, given, points, false) == 3u;
+}
+
+bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t points)
+{
+    return believed_signs(e, given, points, true) != 0;
 }
 
 std::string to_string(const verdict& v)

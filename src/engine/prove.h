@@ -68,6 +68,12 @@ verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs
 /// contact in space). A refutation, never a proof; false where a symbol has no domain.
 bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points = 16);
 
+/// Whether `e` is found non-zero at one of `points` points drawn as takes_both_signs draws
+/// them (40 and 80 digits agreeing): then `e` is not identically zero. A refutation of
+/// "e = 0" (a proof that it is not), never a proof that it is; false where a symbol has no
+/// domain.
+bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t points = 8);
+
 /// Decides `lhs op rhs` from the signs of the factors of the difference alone: proven,
 /// or none (nothing sampled).
 std::optional<verdict> prove_inequality_by_signs(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
