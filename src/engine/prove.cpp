@@ -252,8 +252,9 @@ namespace {
 
 // The signs `e` is believed to take at up to `points` points drawn from the domains of
 // `given` (bit 0: negative, bit 1: positive), drawing until both are seen, or until one is
-// when `one_is_enough`; 0 where a symbol has no domain. A sign is believed where 40 and 80 digits agree on it and on
-// the value to a half: a value that is 0 (an identity) comes out as noise of either sign.
+// when `one_is_enough`; 0 where a symbol has no domain. A sign is believed where 40 and 80
+// digits agree on it and on the value to a half: a value that is 0 (an identity) comes out
+// as noise of either sign.
 unsigned believed_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points, bool one_is_enough)
 {
     std::vector<std::pair<GiNaC::ex, const domain*>> free;
@@ -328,10 +329,9 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
     // Fast path: over the product of all denominators (no gcd), the numerator expands
     // to zero exactly when the difference is zero as a rational function. It is expanded
     // as a polynomial first (engine/polynomial.h); GiNaC is asked only when radicals or
-    // functions in it might still cancel.
-    // A radical written two ways stands as two variables; with every radicand expanded it
-    // is one (the conditions of a rough contact's cases at shifted or exchanged inputs,
-    // whose normal() below takes minutes).
+    // functions in it might still cancel. A radical written two ways stands there as two
+    // variables, and as one once every radicand is expanded (the conditions of a rough
+    // contact's cases at shifted or exchanged inputs, whose normal() below takes minutes).
     expansion numerator = expand_numerator(a - b);
     if (numerator == expansion::undecided)
         numerator = expand_numerator(expanded_radicands(a) - expanded_radicands(b));
