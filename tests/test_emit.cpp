@@ -322,3 +322,43 @@ BOOST_AUTO_TEST_CASE(the_claims_of_one_quote_come_to_one_finding)
                "the 1st check: proven; the 2nd check: proven; the 3rd check: proven; the 4th check: as checked, it "
                "does not hold");
 }
+
+// The interpreter's C library calls, correctly rounded so that a measurement is the same on
+// every machine: against decimal expansions typed here, which the compiler rounds to nearest.
+template <class Real>
+void library_calls_are_correctly_rounded(Real quarter_pi, Real three_quarters_pi, Real pi, Real third_pi)
+{
+    BOOST_TEST(compile::correctly_rounded("atan2", Real(1), Real(1)) == quarter_pi);
+    BOOST_TEST(compile::correctly_rounded("atan2", Real(-1), Real(-1)) == -three_quarters_pi);
+    BOOST_TEST(compile::correctly_rounded("atan2", Real(3), Real(3)) == quarter_pi);
+    BOOST_TEST(compile::correctly_rounded("atan", Real(1), Real(0)) == quarter_pi);
+    BOOST_TEST(compile::correctly_rounded("acos", Real(-1), Real(0)) == pi);
+    BOOST_TEST(compile::correctly_rounded("acos", Real(0.5), Real(0)) == third_pi);
+    // sqrt is correctly rounded by IEEE 754, 2^(1/2) must be the same.
+    BOOST_TEST(compile::correctly_rounded("pow", Real(2), Real(0.5)) == std::sqrt(Real(2)));
+    // atan(x) = x - x^3/3 + ...: a tiny x, and the smallest subnormal, are their own atan.
+    BOOST_TEST(compile::correctly_rounded("atan", Real(1e-30), Real(0)) == Real(1e-30));
+    const Real tiny = std::numeric_limits<Real>::denorm_min();
+    BOOST_TEST(compile::correctly_rounded("atan2", tiny, Real(1)) == tiny);
+    // Zeros, infinities and NaN: the C library's values, which the C standard fixes.
+    BOOST_TEST(compile::correctly_rounded("atan2", Real(0), Real(-1)) == pi);
+    BOOST_TEST(compile::correctly_rounded("atan2", Real(1), Real(0)) == pi / 2);
+    BOOST_TEST(std::isnan(compile::correctly_rounded("acos", Real(2), Real(0))));
+    BOOST_CHECK_THROW(compile::correctly_rounded("sinh", Real(1), Real(0)), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(the_interpreter_s_library_calls_are_correctly_rounded_in_every_type)
+{
+    library_calls_are_correctly_rounded<float>(0.785398163397448309615660845819875721f,
+                                               2.356194490192344928846982537459627163f,
+                                               3.141592653589793238462643383279502884f,
+                                               1.047197551196597746154214461093167628f);
+    library_calls_are_correctly_rounded<double>(0.785398163397448309615660845819875721,
+                                                2.356194490192344928846982537459627163,
+                                                3.141592653589793238462643383279502884,
+                                                1.047197551196597746154214461093167628);
+    library_calls_are_correctly_rounded<long double>(0.785398163397448309615660845819875721L,
+                                                     2.356194490192344928846982537459627163L,
+                                                     3.141592653589793238462643383279502884L,
+                                                     1.047197551196597746154214461093167628L);
+}

@@ -4,9 +4,12 @@
 
 #include <fmt/format.h>
 
+#include <cln/cln.h>
+
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace impact::compile {
@@ -675,6 +678,106 @@ std::vector<bool> needed_by(const program& p, std::size_t first, std::size_t las
             for (int operand : operands(p.code[i]))
                 needed[operand] = true;
     return needed;
+}
+
+namespace {
+
+// `x` (finite) exactly, as a rational: its fraction in [1/2, 1) is the sum of at most three
+// doubles, each the nearest to what the ones before left (for 24, 53, 64 or 113 bits).
+template <class Real>
+cln::cl_RA exactly(Real x)
+{
+    int exponent = 0;
+    Real fraction = std::frexp(x, &exponent);
+    cln::cl_RA sum = 0;
+    while (fraction != 0) {
+        const double part = static_cast<double>(fraction);
+        sum = sum + cln::rational(cln::cl_DF(part));
+        fraction -= static_cast<Real>(part);
+    }
+    return sum * cln::expt(cln::cl_RA(2), exponent);
+}
+
+// std::`function`(a, b) to 60 digits; nullopt where the C library's value is exact (zeros,
+// infinities, NaN, acos outside [-1, 1], pow of a number not positive).
+template <class Real>
+std::optional<cln::cl_F> to_60_digits(const std::string& function, Real a, Real b)
+{
+    if (!std::isfinite(a) || !std::isfinite(b) || a == 0)
+        return std::nullopt;
+    const cln::float_format_t digits = cln::float_format(60);
+    const cln::cl_F x = cln::cl_float(exactly(a), digits);
+    if (function == "atan")
+        return cln::atan(x);
+    if (function == "atan2" && b != 0)
+        return cln::cl_float(cln::atan(cln::cl_float(exactly(b), digits), x), digits);  // the point (b, a)
+    if (function == "acos" && a >= -1 && a <= 1)
+        return cln::cl_float(cln::realpart(cln::acos(x)), digits);
+    if (function == "pow" && a > 0 && b != 0)
+        return cln::exp(cln::cl_float(exactly(b), digits) * cln::ln(x));
+    return std::nullopt;
+}
+
+// `r` (not zero) rounded to the nearest `Real`, ties to even, subnormals included; nullopt
+// when it overflows.
+template <class Real>
+std::optional<Real> nearest(const cln::cl_F& r)
+{
+    using limits = std::numeric_limits<Real>;
+    const long exponent = cln::float_exponent(r);  // r = f 2^exponent, 1/2 <= |f| < 1
+    if (exponent > limits::max_exponent)
+        return std::nullopt;
+    const long shift = limits::digits - std::max<long>(exponent, limits::min_exponent);
+    const cln::cl_I scaled = cln::round1(cln::rational(r) * cln::expt(cln::cl_RA(2), shift));
+    const cln::cl_I magnitude = cln::abs(scaled);
+    Real value = 0;  // its 32-bit pieces, high first: each partial sum fits the type's digits
+    for (long piece = (cln::integer_length(magnitude) + 31) / 32 - 1; piece >= 0; --piece)
+        value = value * Real(4294967296.0) +
+                static_cast<Real>(cln::cl_I_to_ulong(cln::ldb(magnitude, cln::cl_byte(32, 32 * piece))));
+    value = std::ldexp(value, static_cast<int>(-shift));
+    return cln::minusp(scaled) ? -value : value;
+}
+
+template <class Real>
+Real library_call(const std::string& function, Real a, Real b)
+{
+    if (function == "acos")
+        return std::acos(a);
+    if (function == "atan")
+        return std::atan(a);
+    if (function == "atan2")
+        return std::atan2(a, b);
+    if (function == "pow")
+        return std::pow(a, b);
+    throw std::invalid_argument("no interpreter for std::" + function);
+}
+
+template <class Real>
+Real rounded_call(const std::string& function, Real a, Real b)
+{
+    if (const std::optional<cln::cl_F> r = to_60_digits(function, a, b))
+        if (const std::optional<Real> value = nearest<Real>(*r))
+            return *value;
+    return library_call(function, a, b);
+}
+
+} // namespace
+
+// From 60 digits (about 199 bits) to the type's 24, 53, 64 or 113: a second rounding only
+// within 2^-199 of the value's size from a tie.
+float correctly_rounded(const std::string& function, float a, float b)
+{
+    return rounded_call(function, a, b);
+}
+
+double correctly_rounded(const std::string& function, double a, double b)
+{
+    return rounded_call(function, a, b);
+}
+
+long double correctly_rounded(const std::string& function, long double a, long double b)
+{
+    return rounded_call(function, a, b);
 }
 
 } // namespace impact::compile

@@ -142,8 +142,19 @@ divisor_groups grouped_divisors(const program& p);
 /// division by a late divisor before the last late one.
 bool divides_early(const program& p);
 
+/// A C library function a program calls (acos, atan, atan2, pow; `b` is atan2's x and pow's
+/// exponent) correctly rounded to the type, computed by CLN to 60 digits: an interpreted program
+/// gives the same values on every machine, while the C library's own result differs between
+/// libraries and CPUs in its last bit (x87's `fpatan`, which glibc's long double atan2 uses, on
+/// Intel and AMD). Zeros, infinities and NaNs are left to the C library, whose values there the
+/// C standard fixes. `abs` is exact and never passes here.
+float correctly_rounded(const std::string& function, float a, float b);
+double correctly_rounded(const std::string& function, double a, double b);
+long double correctly_rounded(const std::string& function, long double a, long double b);
+
 /// Every value of `p` run in the floating-point type `Real`, exactly as the printed C++
-/// computes it (`run` keeps the outputs).
+/// computes it (`run` keeps the outputs), its C library calls correctly rounded
+/// (`correctly_rounded`).
 template <class Real>
 std::vector<Real> run_values(const program& p, const std::vector<Real>& inputs)
 {
@@ -166,18 +177,10 @@ std::vector<Real> run_values(const program& p, const std::vector<Real>& inputs)
         case opcode::fma: v[i] = std::fma(v[in.a], v[in.b], v[in.c]); break;
         case opcode::select: v[i] = v[in.a] > Real(0) ? v[in.b] : v[in.c]; break;
         case opcode::call:
-            if (in.function == "acos")
-                v[i] = std::acos(v[in.a]);
-            else if (in.function == "atan")
-                v[i] = std::atan(v[in.a]);
-            else if (in.function == "atan2")
-                v[i] = std::atan2(v[in.a], v[in.b]);
-            else if (in.function == "pow")
-                v[i] = std::pow(v[in.a], v[in.b]);
-            else if (in.function == "abs")
+            if (in.function == "abs")
                 v[i] = std::abs(v[in.a]);
             else
-                throw std::invalid_argument("no interpreter for std::" + in.function);
+                v[i] = correctly_rounded(in.function, v[in.a], in.b >= 0 ? v[in.b] : Real(0));
             break;
         }
     }

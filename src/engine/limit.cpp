@@ -98,16 +98,27 @@ std::optional<limit_result> find_limit(const GiNaC::ex& e, const GiNaC::ex& symb
         return r;
     r->how.at_infinity = true;
     r->how.inverted = symbol;
-    // Report the leading term in 1/s, which is what a reader checks by eye.
-    try {
-        const GiNaC::ex s = GiNaC::series(in_t, t == 0, 3);
-        const GiNaC::pseries& p = GiNaC::ex_to<GiNaC::pseries>(s);
-        const int order = p.ldegree(t);
-        const GiNaC::ex leading = GiNaC::normal(p.coeff(t, order) * GiNaC::pow(symbol, -order));
-        r->how.leading_in_inverse = leading;
+    // Report the leading term in 1/s, which is what a reader checks by eye. A limit found by
+    // substitution that is not zero is that term (order 0 in 1/s): the series, which for a
+    // case's value of many symbols takes seconds, is taken only for a limit of 0 or one the
+    // series found.
+    std::optional<GiNaC::ex> leading;
+    if (r->how.how == limit_method::kind::substitution && !r->value.is_zero()) {
+        leading = r->value;
+    } else {
+        try {
+            const GiNaC::ex s = GiNaC::series(in_t, t == 0, 3);
+            const GiNaC::pseries& p = GiNaC::ex_to<GiNaC::pseries>(s);
+            const int order = p.ldegree(t);
+            leading = GiNaC::normal(p.coeff(t, order) * GiNaC::pow(symbol, -order));
+        } catch (const std::exception&) {
+        }
+    }
+    if (leading) {
+        r->how.leading_in_inverse = *leading;
         r->method = fmt::format("substituting {} = 1/t and letting t -> 0+: the leading term in 1/{} is {}",
-                                given.text(symbol), given.text(symbol), given.text(leading));
-    } catch (const std::exception&) {
+                                given.text(symbol), given.text(symbol), given.text(*leading));
+    } else {
         r->method = fmt::format("substituting {} = 1/t and letting t -> 0+, {}", given.text(symbol), r->method);
     }
     return r;
