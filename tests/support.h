@@ -103,6 +103,17 @@ struct temporary_folder {
     temporary_folder& operator=(const temporary_folder&) = delete;
 };
 
+/// Copies into `to` the project's derivation files (and the paper's order of places) whose
+/// names `keep` accepts.
+template <class Keep>
+void copy_derivations(const std::filesystem::path& to, Keep keep)
+{
+    std::filesystem::create_directories(to);
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(IMPACT_SOURCE_DIR) / "derivations"))
+        if (keep(entry.path().filename().string()))
+            std::filesystem::copy_file(entry.path(), to / entry.path().filename());
+}
+
 /// Makes `folder` look like an earlier Impact's output: `previous.txt`, listed in the
 /// marker Impact keeps there (its format as README.md gives it).
 inline void previous_output(const std::filesystem::path& folder)

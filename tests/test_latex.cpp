@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include <map>
 #include <string>
 
 using namespace impact;
@@ -46,10 +47,16 @@ struct eq8_symbols {
     }
 };
 
+// Each derivation of derivations/ with those it uses, derived when first asked for: the
+// folder's slowest proofs (the 3D rough spheres') are not needed by every test.
 const engine::derivation& derived(const std::string& id)
 {
-    static const engine::library lib = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"));
-    return lib.derived.at(id);
+    static const std::vector<spec::derivation> sources = engine::read_directory(IMPACT_SOURCE_DIR "/derivations");
+    static std::map<std::string, engine::library> by_id;
+    auto found = by_id.find(id);
+    if (found == by_id.end())
+        found = by_id.emplace(id, engine::derive_all(sources, id)).first;
+    return found->second.derived.at(id);
 }
 
 bool contains(const std::string& text, const std::string& part)

@@ -14,18 +14,31 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace {
 
-// The derivations of derivations/, derived once, for fuzzed files that use them. If
-// derivations/ is being edited into a bad state, fuzzing goes on without them.
+// The derivations that files of derivations/ use ([[use]]), derived once, for fuzzed files
+// (mutations of those) that use them; a derivation no file uses, as the 3D rough spheres',
+// whose proofs take minutes under the sanitizers, is not derived. If derivations/ is being
+// edited into a bad state, fuzzing goes on without them.
 const impact::engine::derived_by_id& used()
 {
     static const impact::engine::derived_by_id library = [] {
         try {
-            return impact::engine::derive_all(impact::engine::read_directory(IMPACT_SOURCE_DIR "/derivations"))
-                .derived;
+            const std::vector<impact::spec::derivation> all =
+                impact::engine::read_directory(IMPACT_SOURCE_DIR "/derivations");
+            std::set<std::string> ids;
+            for (const impact::spec::derivation& d : all)
+                for (const impact::spec::use& u : d.uses)
+                    ids.insert(u.derivation.value);
+            std::vector<impact::spec::derivation> wanted;
+            for (const impact::spec::derivation& d : all)
+                if (ids.count(d.id.value))
+                    wanted.push_back(d);
+            return impact::engine::derive_all(wanted).derived;
         } catch (const impact::error& e) {
             std::fprintf(stderr, "fuzz_derivation: fuzzing without derivations/ (%s)\n", e.what());
             return impact::engine::derived_by_id{};
