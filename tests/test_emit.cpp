@@ -340,9 +340,16 @@ void library_calls_are_correctly_rounded(Real quarter_pi, Real three_quarters_pi
     BOOST_TEST(compile::correctly_rounded("atan", Real(1e-30), Real(0)) == Real(1e-30));
     const Real tiny = std::numeric_limits<Real>::denorm_min();
     BOOST_TEST(compile::correctly_rounded("atan2", tiny, Real(1)) == tiny);
-    // Zeros, infinities and NaN: the C library's values, which the C standard fixes.
+    // Signed zeros kept: atan2(-0, -1) = -pi; -denorm_min/2, a tie, rounds to even: -0.
     BOOST_TEST(compile::correctly_rounded("atan2", Real(0), Real(-1)) == pi);
+    BOOST_TEST(compile::correctly_rounded("atan2", -Real(0), Real(-1)) == -pi);
     BOOST_TEST(compile::correctly_rounded("atan2", Real(1), Real(0)) == pi / 2);
+    BOOST_TEST(compile::correctly_rounded("acos", Real(0), Real(0)) == pi / 2);
+    const Real half_tiny = compile::correctly_rounded("atan2", -tiny, Real(2));
+    BOOST_TEST((half_tiny == 0 && std::signbit(half_tiny)));
+    // An integer power exactly: (-3)^5.
+    BOOST_TEST(compile::correctly_rounded("pow", Real(-3), Real(5)) == Real(-243));
+    // Outside the domain: the C library's NaN.
     BOOST_TEST(std::isnan(compile::correctly_rounded("acos", Real(2), Real(0))));
     BOOST_CHECK_THROW(compile::correctly_rounded("sinh", Real(1), Real(0)), std::invalid_argument);
 }
@@ -357,6 +364,9 @@ BOOST_AUTO_TEST_CASE(the_interpreter_s_library_calls_are_correctly_rounded_in_ev
                                                 2.356194490192344928846982537459627163,
                                                 3.141592653589793238462643383279502884,
                                                 1.047197551196597746154214461093167628);
+    // 1601^5 = 10518568985608001, odd and of 54 bits: halfway between two doubles, rounded to
+    // the even one (exp(5 ln 1601) at 60 digits would fall on either side of the tie).
+    BOOST_TEST(compile::correctly_rounded("pow", 1601.0, 5.0) == 10518568985608000.0);
     library_calls_are_correctly_rounded<long double>(0.785398163397448309615660845819875721L,
                                                      2.356194490192344928846982537459627163L,
                                                      3.141592653589793238462643383279502884L,

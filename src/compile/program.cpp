@@ -698,44 +698,57 @@ cln::cl_RA exactly(Real x)
     return sum * cln::expt(cln::cl_RA(2), exponent);
 }
 
-// std::`function`(a, b) to 60 digits; nullopt where the C library's value is exact (zeros,
-// infinities, NaN, acos outside [-1, 1], pow of a number not positive).
+// std::`function`(a, b) for a >= 0 (atan, atan2: odd in a; the caller gives a's sign back):
+// exactly where it is rational (pow to an integer power), else to 60 digits, as a rational;
+// nullopt for infinities and NaN (which the kernels' guards refuse before they compute),
+// atan2(0, 0), arguments outside the function's domain and pow of 0, left to the C library.
 template <class Real>
-std::optional<cln::cl_F> to_60_digits(const std::string& function, Real a, Real b)
+std::optional<cln::cl_RA> value_of(const std::string& function, Real a, Real b)
 {
-    if (!std::isfinite(a) || !std::isfinite(b) || a == 0)
+    if (!std::isfinite(a) || !std::isfinite(b))
         return std::nullopt;
     const cln::float_format_t digits = cln::float_format(60);
-    const cln::cl_F x = cln::cl_float(exactly(a), digits);
+    const auto rational = [&](const cln::cl_R& v) { return cln::rational(cln::cl_float(v, digits)); };
+    const cln::cl_RA x = exactly(a), y = exactly(b);
     if (function == "atan")
-        return cln::atan(x);
-    if (function == "atan2" && b != 0)
-        return cln::cl_float(cln::atan(cln::cl_float(exactly(b), digits), x), digits);  // the point (b, a)
+        return rational(cln::atan(cln::cl_float(x, digits)));
+    if (function == "atan2" && !(a == 0 && b == 0))
+        return rational(cln::atan(cln::cl_float(y, digits), cln::cl_float(x, digits)));  // the point (b, a)
     if (function == "acos" && a >= -1 && a <= 1)
-        return cln::cl_float(cln::realpart(cln::acos(x)), digits);
-    if (function == "pow" && a > 0 && b != 0)
-        return cln::exp(cln::cl_float(exactly(b), digits) * cln::ln(x));
+        return rational(cln::realpart(cln::acos(cln::cl_float(x, digits))));
+    if (function == "pow" && a != 0) {
+        if (cln::denominator(y) == 1 && cln::abs(y) <= 4096)  // exactly: a tie is then rounded to even
+            return cln::expt(x, cln::numerator(y));
+        if (a > 0)
+            return rational(cln::exp(cln::cl_float(y, digits) * cln::ln(cln::cl_float(x, digits))));
+    }
     return std::nullopt;
 }
 
-// `r` (not zero) rounded to the nearest `Real`, ties to even, subnormals included; nullopt
-// when it overflows.
+// `q` rounded to the nearest `Real`, ties to even, subnormals included (a negative one that
+// rounds to zero is -0); nullopt when it overflows.
 template <class Real>
-std::optional<Real> nearest(const cln::cl_F& r)
+std::optional<Real> nearest(const cln::cl_RA& q)
 {
     using limits = std::numeric_limits<Real>;
-    const long exponent = cln::float_exponent(r);  // r = f 2^exponent, 1/2 <= |f| < 1
+    if (cln::zerop(q))
+        return Real(0);
+    const cln::cl_RA size = cln::abs(q);
+    // 2^(exponent - 1) <= |q| < 2^exponent.
+    long exponent = static_cast<long>(cln::integer_length(cln::numerator(size))) -
+                    static_cast<long>(cln::integer_length(cln::denominator(size)));
+    if (size >= cln::expt(cln::cl_RA(2), exponent))
+        ++exponent;
     if (exponent > limits::max_exponent)
         return std::nullopt;
     const long shift = limits::digits - std::max<long>(exponent, limits::min_exponent);
-    const cln::cl_I scaled = cln::round1(cln::rational(r) * cln::expt(cln::cl_RA(2), shift));
-    const cln::cl_I magnitude = cln::abs(scaled);
+    const cln::cl_I magnitude = cln::round1(size * cln::expt(cln::cl_RA(2), shift));
     Real value = 0;  // its 32-bit pieces, high first: each partial sum fits the type's digits
     for (long piece = (cln::integer_length(magnitude) + 31) / 32 - 1; piece >= 0; --piece)
         value = value * Real(4294967296.0) +
                 static_cast<Real>(cln::cl_I_to_ulong(cln::ldb(magnitude, cln::cl_byte(32, 32 * piece))));
     value = std::ldexp(value, static_cast<int>(-shift));
-    return cln::minusp(scaled) ? -value : value;
+    return cln::minusp(q) ? -value : value;
 }
 
 template <class Real>
@@ -755,16 +768,18 @@ Real library_call(const std::string& function, Real a, Real b)
 template <class Real>
 Real rounded_call(const std::string& function, Real a, Real b)
 {
-    if (const std::optional<cln::cl_F> r = to_60_digits(function, a, b))
-        if (const std::optional<Real> value = nearest<Real>(*r))
-            return *value;
+    // atan and atan2 are odd in a: computed for |a|, a's sign (of a zero too) given back.
+    const bool odd = function == "atan" || function == "atan2";
+    if (const std::optional<cln::cl_RA> exact = value_of(function, odd ? std::fabs(a) : a, b))
+        if (const std::optional<Real> value = nearest<Real>(*exact))
+            return odd ? std::copysign(*value, a) : *value;
     return library_call(function, a, b);
 }
 
 } // namespace
 
 // From 60 digits (about 199 bits) to the type's 24, 53, 64 or 113: a second rounding only
-// within 2^-199 of the value's size from a tie.
+// within 2^-199 of the value's size from a tie (none for pow to an integer power, exact).
 float correctly_rounded(const std::string& function, float a, float b)
 {
     return rounded_call(function, a, b);

@@ -143,11 +143,13 @@ divisor_groups grouped_divisors(const program& p);
 bool divides_early(const program& p);
 
 /// A C library function a program calls (acos, atan, atan2, pow; `b` is atan2's x and pow's
-/// exponent) correctly rounded to the type, computed by CLN to 60 digits: an interpreted program
-/// gives the same values on every machine, while the C library's own result differs between
-/// libraries and CPUs in its last bit (x87's `fpatan`, which glibc's long double atan2 uses, on
-/// Intel and AMD). Zeros, infinities and NaNs are left to the C library, whose values there the
-/// C standard fixes. `abs` is exact and never passes here.
+/// exponent) correctly rounded to the type, computed by CLN to 60 digits (pow to an integer
+/// power exactly): an interpreted program gives the same values on every machine, while the C
+/// library's own result differs between libraries and CPUs in its last bit (x87's `fpatan`,
+/// which glibc's long double atan2 uses, on Intel and AMD). Signed zeros are kept (atan2(-0, -1)
+/// is -pi). Infinities and NaN, which a kernel's guards refuse before it computes, atan2(0, 0),
+/// pow of 0 and arguments outside a function's domain are left to the C library. `abs` is exact
+/// and never passes here.
 float correctly_rounded(const std::string& function, float a, float b);
 double correctly_rounded(const std::string& function, double a, double b);
 long double correctly_rounded(const std::string& function, long double a, long double b);
@@ -187,7 +189,8 @@ std::vector<Real> run_values(const program& p, const std::vector<Real>& inputs)
     return v;
 }
 
-/// Runs `p` in the floating-point type `Real`, exactly as the printed C++ does.
+/// Runs `p` in the floating-point type `Real` as the printed C++ does, operation for operation,
+/// its C library calls correctly rounded (`correctly_rounded`).
 template <class Real>
 std::vector<Real> run(const program& p, const std::vector<Real>& inputs)
 {
