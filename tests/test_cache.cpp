@@ -49,9 +49,10 @@ void write(const fs::path& path, const std::string& bytes)
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-// The project's derivations but the 3D rough spheres' (rough_space.toml), copied once: their
-// proofs take longer than the rest of the folder's, and nothing the cache does depends on
-// them. The other rough files keep every kind of entry (four PDFs, the rough kernels).
+// The project's derivations but the 3D rough spheres' (rough_space.toml, a draft in
+// tests/rough/ today), copied once: their proofs take longer than the rest of the folder's,
+// and nothing the cache does depends on them. The other rough files keep every kind of
+// entry (four PDFs, the rough kernels).
 const fs::path& derivations()
 {
     static const impact::testing::temporary_folder folder("impact-test-cache-derivations");

@@ -31,8 +31,8 @@ run_result run(const std::string& arguments)
 const fs::path source_dir = IMPACT_SOURCE_DIR;
 
 // Which of the project's derivation files a scratch folder holds: all; all but the 3D rough
-// spheres' (rough_space.toml, whose proofs take longer than the rest of the folder's: for
-// what does not compare with the committed output/); none.
+// spheres' (rough_space.toml, a draft in tests/rough/ today, whose proofs take longer than the
+// rest of the folder's), for what does not compare with the committed output/; none.
 enum class files { all, but_rough_space, none };
 
 // A scratch folder with a copy of derivations/ (or part of it) and an output/ holding a
