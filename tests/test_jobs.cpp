@@ -62,11 +62,8 @@ struct scratch : impact::testing::temporary_folder {
     // sanitizers).
     void copy_smooth_spheres() const
     {
-        for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "derivations")) {
-            const std::string name = entry.path().filename().string();
-            if (name.rfind("rough_", 0) != 0)
-                copy(name);
-        }
+        impact::testing::copy_derivations(root / "derivations",
+                                          [](const std::string& name) { return name.rfind("rough_", 0) != 0; });
     }
     run_result impact(const std::string& arguments) const
     {

@@ -48,7 +48,7 @@ struct eq8_symbols {
 };
 
 // Each derivation of derivations/ with those it uses, derived when first asked for: the
-// folder's slowest proofs (the 3D rough spheres') are not needed by every test.
+// folder's slower proofs (the rough spheres') are not needed by every test.
 const engine::derivation& derived(const std::string& id)
 {
     static const std::vector<spec::derivation> sources = engine::read_directory(IMPACT_SOURCE_DIR "/derivations");

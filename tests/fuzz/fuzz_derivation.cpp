@@ -21,8 +21,8 @@
 namespace {
 
 // The derivations that files of derivations/ use ([[use]]), derived once, for fuzzed files
-// (mutations of those) that use them; a derivation no file uses, as the 3D rough spheres',
-// whose proofs take minutes under the sanitizers, is not derived. If derivations/ is being
+// (mutations of those) that use them; a derivation no file uses is not derived (its proofs
+// only lengthen the fuzzer's start under the sanitizers). If derivations/ is being
 // edited into a bad state, fuzzing goes on without them.
 const impact::engine::derived_by_id& used()
 {
