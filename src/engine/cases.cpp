@@ -2,6 +2,7 @@
 
 #include "engine/condition_proof.h"
 #include "engine/infix.h"
+#include "engine/normal_form.h"
 #include "engine/prove.h"
 #include "engine/solve.h"
 
@@ -331,14 +332,16 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     const bool upper = op == relation::less_equal || op == relation::less;
     const bool strict = op == relation::less || op == relation::greater;
     // The claim as G >= 0 (> 0), the condition as C >= 0 (> 0).
-    const GiNaC::ex g = GiNaC::normal((upper ? rhs - lhs : lhs - rhs).subs(abbreviations));
+    // Each form written once (normal_form.h): which argument proves the claim, and how it
+    // is told, must not follow GiNaC's order of terms.
+    const GiNaC::ex g = normal_written_once((upper ? rhs - lhs : lhs - rhs).subs(abbreviations), given.order);
     nonnegative_form condition = condition_form(c);
-    condition.value = GiNaC::normal(condition.value.subs(abbreviations));
+    condition.value = normal_written_once(condition.value.subs(abbreviations), given.order);
     const std::string under = fmt::format("under {}", condition_text(c, given.order));
 
     // G = q C with q >= 0 (q > 0 and C > 0 for a strict claim).
     if (!condition.value.is_zero()) {
-        const GiNaC::ex q = GiNaC::normal(g / condition.value);
+        const GiNaC::ex q = normal_written_once(g / condition.value, given.order);
         const sign_proof p = prove_sign(q, with_effort(given, try_effort));
         if (strict ? (p.sign.is_positive() && condition.strict) : p.sign.is_nonnegative()) {
             verdict v;
@@ -352,7 +355,7 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     }
     // G = C + r with r >= 0 (and one of them > 0 for a strict claim).
     {
-        const GiNaC::ex r = GiNaC::normal(g - condition.value);
+        const GiNaC::ex r = normal_written_once(g - condition.value, given.order);
         const sign_proof p = prove_sign(r, with_effort(given, try_effort));
         if (p.sign.is_nonnegative() && (!strict || p.sign.is_positive() || condition.strict)) {
             verdict v;

@@ -1,5 +1,7 @@
 #include "engine/condition_proof.h"
 
+#include "engine/normal_form.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -84,8 +86,8 @@ std::optional<verdict> divided_by_condition(const GiNaC::ex& g, bool strict, con
             q += t;
             r = GiNaC::normal(GiNaC::expand(top - q * c_top));
             // G = (q c_bottom / bottom) C + r / bottom.
-            const GiNaC::ex factor = GiNaC::normal(q * c_bottom / bottom);
-            const GiNaC::ex rest = GiNaC::normal(r / bottom);
+            const GiNaC::ex factor = normal_written_once(q * c_bottom / bottom, given.order);
+            const GiNaC::ex rest = normal_written_once(r / bottom, given.order);
             const sign_proof pq = prove_sign(factor, given);
             if (pq.sign.negative)
                 continue;

@@ -1,5 +1,7 @@
 #include "engine/limit.h"
 
+#include "engine/normal_form.h"
+
 #include <fmt/format.h>
 
 namespace impact::engine {
@@ -11,7 +13,9 @@ std::optional<limit_result> by_substitution(const GiNaC::ex& e, const GiNaC::ex&
 {
     GiNaC::ex at;
     try {
-        at = GiNaC::normal(simplify_radicals(GiNaC::normal(e).subs(symbol == point), given));
+        // Written once: normal() alone leaves S sqrt(S) - S^(3/2) and (w S)/S as they stand
+        // in one order of GiNaC's terms and cancels them in another.
+        at = normal_written_once(simplify_radicals(GiNaC::normal(e).subs(symbol == point), given), given.order);
     } catch (const std::exception&) {
         return std::nullopt;
     }
@@ -41,7 +45,7 @@ std::optional<limit_result> by_series(const GiNaC::ex& e, const GiNaC::ex& symbo
         const GiNaC::pseries& p = GiNaC::ex_to<GiNaC::pseries>(s);
         {
             const int order = p.ldegree(symbol);
-            const GiNaC::ex coefficient = GiNaC::normal(p.coeff(symbol, order));
+            const GiNaC::ex coefficient = normal_written_once(p.coeff(symbol, order), given.order);
             limit_result r;
             if (order > 0) {
                 r.value = 0;
@@ -110,7 +114,7 @@ std::optional<limit_result> find_limit(const GiNaC::ex& e, const GiNaC::ex& symb
             const GiNaC::ex s = GiNaC::series(in_t, t == 0, 3);
             const GiNaC::pseries& p = GiNaC::ex_to<GiNaC::pseries>(s);
             const int order = p.ldegree(t);
-            leading = GiNaC::normal(p.coeff(t, order) * GiNaC::pow(symbol, -order));
+            leading = normal_written_once(p.coeff(t, order) * GiNaC::pow(symbol, -order), given.order);
         } catch (const std::exception&) {
         }
     }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "engine/derive.h"
+#include "engine/normal_form.h"
 #include "engine/reconcile.h"
 #include "engine/sign.h"
 
@@ -26,11 +27,6 @@ GiNaC::ex simplified(const GiNaC::ex& e, const assumptions& given);
 
 /// `simplified` without the radicands of nested radicals expanded.
 GiNaC::ex simplified_as_normalised(const GiNaC::ex& e, const assumptions& given);
-
-/// normal(e) written one way whatever order GiNaC gives the terms in this build: each
-/// square root a symbol while normal() works, its powers past the first reduced, the
-/// denominator's first term (in `order`) positive. Use it for a value that is printed.
-GiNaC::ex normal_written_once(const GiNaC::ex& e, const term_order& order);
 
 /// What a `solve` step needs of the derivation it is part of.
 struct solve_context {
