@@ -11,6 +11,7 @@
 #include "engine/prove.h"
 #include "engine/sign.h"
 #include "engine/library.h"
+#include "engine/normal_form.h"
 
 #include <string>
 
@@ -226,6 +227,26 @@ BOOST_AUTO_TEST_CASE(a_radical_written_two_ways_is_proven_equal_to_itself)
     BOOST_TEST(engine::nonzero_somewhere(written - other, given));
     BOOST_TEST(!engine::nonzero_somewhere(written - expanded, given));
     BOOST_TEST(!engine::nonzero_somewhere(GiNaC::pow(GiNaC::sqrt(x) + y, 2) - x - 2 * y * GiNaC::sqrt(x) - y * y, given));
+}
+
+BOOST_AUTO_TEST_CASE(a_value_with_radicals_is_written_one_way)
+{
+    // normal() puts sqrt(S) and S^(3/2) in two unrelated symbols and back: it leaves
+    // (a^3 + a b^2)/S^(3/2) as it stands, which is a/sqrt(S), and which it returns follows
+    // GiNaC's order of terms. Written once, S = a^2 + b^2 cancels.
+    const GiNaC::realsymbol a("a"), b("b"), w("w");
+    const engine::term_order order({a, b, w});
+    const GiNaC::ex s = a * a + b * b;
+    auto once = [&](const GiNaC::ex& e) { return engine::normal_written_once(e, order); };
+    BOOST_TEST(once((a * a * a + a * b * b) / GiNaC::pow(s, GiNaC::numeric(3, 2))).is_equal(a / GiNaC::sqrt(s)));
+    BOOST_TEST(once(a * a * GiNaC::sqrt(s) + b * b * GiNaC::sqrt(s) - GiNaC::pow(s, GiNaC::numeric(3, 2))).is_zero());
+    BOOST_TEST(once((w * a * a + w * b * b) * GiNaC::sqrt(s) / GiNaC::pow(s, GiNaC::numeric(3, 2))).is_equal(w));
+    // The sign goes where the denominator's first term (a before b) is positive.
+    BOOST_TEST(once(1 / (b - a)).is_equal(-1 / (a - b)));
+    BOOST_TEST(once(w / (b - a)).is_equal(once(-w / (a - b))));
+    const auto [numer, denom] = engine::unique_numer_denom(w / (b - a), order);
+    BOOST_TEST(numer.is_equal(-w));
+    BOOST_TEST(denom.is_equal(a - b));
 }
 
 BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_function_is_zero)
