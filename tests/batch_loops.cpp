@@ -7,11 +7,13 @@ template void impact::collide_batch<double>(const impact::collide_batch_data<dou
 template void impact::collide_wall_batch<double>(const impact::collide_wall_batch_data<double, 2>&);
 template void impact::collide_wall_batch<double>(const impact::collide_wall_batch_data<double, 3>&);
 template void impact::collide_rough_batch<double>(const impact::collide_rough_batch_data<double, 2>&);
+template void impact::collide_rough_batch<double>(const impact::collide_rough_batch_data<double, 3>&);
 template void impact::collide_batch<double>(const impact::collide_batch_data<double, 2>&, impact::fast_t);
 template void impact::collide_batch<double>(const impact::collide_batch_data<double, 3>&, impact::fast_t);
 template void impact::collide_wall_batch<double>(const impact::collide_wall_batch_data<double, 2>&, impact::fast_t);
 template void impact::collide_wall_batch<double>(const impact::collide_wall_batch_data<double, 3>&, impact::fast_t);
 template void impact::collide_rough_batch<double>(const impact::collide_rough_batch_data<double, 2>&, impact::fast_t);
+template void impact::collide_rough_batch<double>(const impact::collide_rough_batch_data<double, 3>&, impact::fast_t);
 template void impact::collide_wall_rough_batch<double>(const impact::collide_wall_rough_batch_data<double, 2>&);
 template void impact::collide_wall_rough_batch<double>(const impact::collide_wall_rough_batch_data<double, 2>&, impact::fast_t);
 template void impact::collide_wall_rough_batch<double>(const impact::collide_wall_rough_batch_data<double, 3>&);

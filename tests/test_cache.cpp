@@ -49,13 +49,26 @@ void write(const fs::path& path, const std::string& bytes)
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-// `impact regenerate` of the project's derivations into `output`, with the default
-// cache under `xdg` (never the user's ~/.cache) and any further `arguments`.
+// The project's derivations but the 3D rough spheres' (rough_space.toml), copied once: their
+// proofs take longer than the rest of the folder's, and nothing the cache does depends on
+// them. The other rough files keep every kind of entry (four PDFs, the rough kernels).
+const fs::path& derivations()
+{
+    static const impact::testing::temporary_folder folder("impact-test-cache-derivations");
+    static const bool copied = [] {
+        impact::testing::copy_derivations(folder.root, [](const std::string& name) { return name != "rough_space.toml"; });
+        return true;
+    }();
+    (void)copied;
+    return folder.root;
+}
+
+// `impact regenerate` of those derivations into `output`, with the default cache under
+// `xdg` (never the user's ~/.cache) and any further `arguments`.
 run_result regenerate(const fs::path& xdg, const fs::path& output, const std::string& arguments)
 {
     return run_command("XDG_CACHE_HOME='" + xdg.string() + "' " + IMPACT_BINARY + " regenerate --timings --derivations '" +
-                       std::string(IMPACT_SOURCE_DIR) + "/derivations' --output '" + output.string() + "' " +
-                       arguments);
+                       derivations().string() + "' --output '" + output.string() + "' " + arguments);
 }
 
 // What a regeneration without any cache writes, made once.
@@ -297,7 +310,7 @@ BOOST_AUTO_TEST_CASE(a_comment_changes_nothing_and_a_changed_title_recomputes_on
 {
     const scratch s;
     const fs::path derivations = s.root / "derivations", cache = s.root / "cache";
-    fs::copy(fs::path(IMPACT_SOURCE_DIR) / "derivations", derivations);
+    fs::copy(::derivations(), derivations);
     const auto run = [&](const std::string& output, const std::string& arguments) {
         return run_command(std::string(IMPACT_BINARY) + " regenerate --timings --derivations '" + derivations.string() +
                            "' --output '" + (s.root / output).string() + "' " + arguments);
@@ -371,7 +384,7 @@ BOOST_AUTO_TEST_CASE(two_regenerations_at_once_sharing_one_cache_both_succeed_wi
     const scratch s;
     const std::string cache = "--cache '" + (s.root / "cache").string() + "'";
     const std::string one = "XDG_CACHE_HOME=/nonexistent " + std::string(IMPACT_BINARY) + " regenerate --derivations '" +
-                            IMPACT_SOURCE_DIR + "/derivations' " + cache + " --output ";
+                            derivations().string() + "' " + cache + " --output ";
     const run_result r = run_command("cd '" + s.root.string() + "' && (" + one + "a > a.log 2>&1 & a=$!; " + one +
                                      "b > b.log 2>&1 & b=$!; wait $a; echo \"a $?\"; wait $b; echo \"b $?\")");
     BOOST_TEST(r.output.find("a 0") != std::string::npos, r.output << read(s.root / "a.log"));
@@ -428,8 +441,8 @@ BOOST_AUTO_TEST_CASE(a_cache_size_given_trims_the_cache_to_it_oldest_entries_fir
     BOOST_TEST(left == total);
     // A limit of 1K, from the environment: every entry is beyond it.
     const run_result tiny = run_command("IMPACT_CACHE_SIZE=1K XDG_CACHE_HOME='" + s.root.string() + "' " +
-                                        IMPACT_BINARY + " regenerate --derivations '" + IMPACT_SOURCE_DIR +
-                                        "/derivations' --output '" + (s.root / "third").string() + "' " + at);
+                                        IMPACT_BINARY + " regenerate --derivations '" + derivations().string() +
+                                        "' --output '" + (s.root / "third").string() + "' " + at);
     BOOST_TEST_REQUIRE(tiny.status == 0, tiny.output);
     BOOST_TEST(entries_in(cache).empty());
     BOOST_TEST(fs::exists(cache / "CACHEDIR.TAG"));
@@ -440,7 +453,7 @@ BOOST_AUTO_TEST_CASE(a_cache_size_given_trims_the_cache_to_it_oldest_entries_fir
 BOOST_AUTO_TEST_CASE(a_cache_size_that_is_no_size_is_refused_in_one_line_before_anything_is_done)
 {
     const scratch s;
-    const std::string derivations = " --derivations '" + std::string(IMPACT_SOURCE_DIR) + "/derivations'";
+    const std::string derivations = " --derivations '" + ::derivations().string() + "'";
     const std::string output = " --output '" + (s.root / "output").string() + "'";
     const std::string cache = " --cache '" + (s.root / "cache").string() + "'";
     struct refused {

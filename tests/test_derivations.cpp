@@ -163,7 +163,8 @@ const std::set<std::string> covered = {"elastic_line",      "inelastic_line",   
                                        "scatter_angle",     "elastic_plane",       "inelastic_plane",
                                        "inelastic_space",   "rough_sticking",      "rough_plane",
                                        "wall_plane",        "wall_space",          "rough_space_impulse",
-                                       "rough_wall_plane",  "rough_collision_frame", "rough_wall_space"};
+                                       "rough_wall_plane",  "rough_collision_frame", "rough_wall_space",
+                                       "rough_space"};
 
 } // namespace
 
@@ -936,6 +937,86 @@ BOOST_AUTO_TEST_CASE(an_impulse_at_the_contact_point_in_space_moves_and_spins_th
             // R_M/I_M = 1/(q_M M R_M) = 1/(2/5 * 2 * 1/2); R_m/I_m = 1/(2/3 * 3 * 1/4).
             BOOST_TEST(numerically_equal(value(d, "w_M" + axis[i] + "_after"), w_M[i] - nJ[i] / (numeric(2, 5) * 2 * numeric(1, 2)), here));
             BOOST_TEST(numerically_equal(value(d, "w_m" + axis[i] + "_after"), w_m[i] - nJ[i] / (numeric(2, 3) * 3 * numeric(1, 4)), here));
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(rough_spheres_in_space_stick_or_slide_as_walton_s_model_says)
+{
+    // Walton's model in space (issue 21), typed here: n = r/|r|, g = v_M - v_m + (R_M w_M + R_m w_m) x n,
+    // g_n = g.n, g_t = g - g_n n; J_n = (1 + eps) m_r g_n; J_t = (1 + beta) m_t g_t while
+    // (1 + beta) m_t |g_t| <= mu J_n, else mu J_n g_t/|g_t|; J = J_n n + J_t on m;
+    // v_M' = v_M - J/M, v_m' = v_m + J/m, w' = w - n x J_t/(q mass R); beta_eff = beta while
+    // sticking, -1 + mu (1 + eps) (m_r/m_t) g_n/|g_t| while sliding. At exact numbers:
+    // r = (2, 3, 6) (|r| = 7), M = 2, m = 3, R_M = 1/2, R_m = 1/4, q_M = 2/5, q_m = 2/3,
+    // eps = 4/5, beta = 1/2: m_r = 6/5, 1/m_t = 1/2 + 1/3 + 5/4 + 1/2 = 31/12, g_n = 22/7.
+    const engine::derivation& d = derived("rough_space");
+    const std::array<std::string, 3> axis{"x", "y", "z"};
+    const numeric r[3] = {2, 3, 6}, v_M[3] = {1, numeric(1, 2), 2}, v_m[3] = {numeric(-1, 4), 0, -1};
+    const numeric w_M[3] = {3, -1, numeric(1, 2)}, w_m[3] = {-1, 2, numeric(1, 3)};
+    const numeric M = 2, m = 3, R_M = numeric(1, 2), R_m = numeric(1, 4), q_M = numeric(2, 5), q_m = numeric(2, 3);
+    const numeric eps = numeric(4, 5), beta = numeric(1, 2);
+    GiNaC::exmap at{{sym(d, "M"), M}, {sym(d, "m"), m}, {sym(d, "R_M"), R_M}, {sym(d, "R_m"), R_m},
+                    {sym(d, "q_M"), q_M}, {sym(d, "q_m"), q_m}, {sym(d, "eps"), eps}, {sym(d, "b"), beta}};
+    for (int i = 0; i < 3; ++i) {
+        at[sym(d, "r_" + axis[i])] = r[i];
+        at[sym(d, "C_M" + axis[i])] = 0;
+        at[sym(d, "C_m" + axis[i])] = r[i];
+        at[sym(d, "v_M" + axis[i])] = v_M[i];
+        at[sym(d, "v_m" + axis[i])] = v_m[i];
+        at[sym(d, "w_M" + axis[i])] = w_M[i];
+        at[sym(d, "w_m" + axis[i])] = w_m[i];
+    }
+    numeric n[3], spin[3], g[3], g_t[3];
+    for (int i = 0; i < 3; ++i) {
+        n[i] = r[i] / 7;
+        spin[i] = R_M * w_M[i] + R_m * w_m[i];
+    }
+    const numeric turn[3] = {spin[1] * n[2] - spin[2] * n[1], spin[2] * n[0] - spin[0] * n[2],
+                             spin[0] * n[1] - spin[1] * n[0]};
+    numeric g_n = 0, g_t_squared = 0;
+    for (int i = 0; i < 3; ++i) {
+        g[i] = v_M[i] - v_m[i] + turn[i];
+        g_n += g[i] * n[i];
+    }
+    BOOST_TEST(g_n == numeric(22, 7));
+    for (int i = 0; i < 3; ++i) {
+        g_t[i] = g[i] - g_n * n[i];
+        g_t_squared += g_t[i] * g_t[i];
+    }
+    const numeric m_r = numeric(6, 5), m_t = numeric(12, 31), J_n = (1 + eps) * m_r * g_n;
+    // |g_t| to 50 digits (a square root of a rational): the values below are compared to 25.
+    const long digits = GiNaC::Digits;
+    GiNaC::Digits = 50;
+    const numeric g_t_size = GiNaC::ex_to<numeric>(GiNaC::evalf(GiNaC::sqrt(g_t_squared)));
+    GiNaC::Digits = digits;
+    // mu = 10: (1 + beta) m_t |g_t| < mu J_n, the contact sticks; mu = 1/10: it slides.
+    for (const numeric& mu : {numeric(10), numeric(1, 10)}) {
+        at[sym(d, "mu")] = mu;
+        const numeric stick = (1 + beta) * m_t;
+        const bool sticks = stick * stick * g_t_squared <= mu * mu * J_n * J_n;
+        BOOST_TEST(sticks == (mu == 10));
+        ex J_t[3], J[3];
+        for (int i = 0; i < 3; ++i) {
+            J_t[i] = sticks ? ex(stick * g_t[i]) : mu * J_n * g_t[i] / g_t_size;
+            J[i] = J_n * n[i] + J_t[i];
+        }
+        const ex n_x_J_t[3] = {n[1] * J_t[2] - n[2] * J_t[1], n[2] * J_t[0] - n[0] * J_t[2],
+                               n[0] * J_t[1] - n[1] * J_t[0]};
+        const std::vector<GiNaC::exmap> here{at};
+        BOOST_TEST_CONTEXT("mu = " << mu)
+        {
+            for (int i = 0; i < 3; ++i) {
+                auto after = [&](const std::string& name) { return with_case_that_holds(d, value(d, name), at); };
+                BOOST_TEST(numerically_equal(after("v_M" + axis[i] + "_after"), v_M[i] - J[i] / M, here), axis[i]);
+                BOOST_TEST(numerically_equal(after("v_m" + axis[i] + "_after"), v_m[i] + J[i] / m, here), axis[i]);
+                BOOST_TEST(numerically_equal(after("w_M" + axis[i] + "_after"), w_M[i] - n_x_J_t[i] / (q_M * M * R_M), here),
+                           axis[i]);
+                BOOST_TEST(numerically_equal(after("w_m" + axis[i] + "_after"), w_m[i] - n_x_J_t[i] / (q_m * m * R_m), here),
+                           axis[i]);
+            }
+            const ex b_eff = sticks ? ex(beta) : -1 + mu * (1 + eps) * (m_r / m_t) * g_n / g_t_size;
+            BOOST_TEST(numerically_equal(with_case_that_holds(d, value(d, "b_eff"), at), b_eff, here));
         }
     }
 }

@@ -458,8 +458,8 @@ template <class Real, std::size_t N>
 struct collide_rough_result {
     std::array<Real, N> v_M;
     std::array<Real, N> v_m;
-    Real w_M;
-    Real w_m;
+    std::conditional_t<N == 2, Real, std::array<Real, 3>> w_M;
+    std::conditional_t<N == 2, Real, std::array<Real, 3>> w_m;
     impact::status status;
 };
 
@@ -478,8 +478,8 @@ struct collide_rough_batch_data {
     std::array<const Real*, N> C_m;
     std::array<Real*, N> v_M;
     std::array<Real*, N> v_m;
-    Real* w_M;
-    Real* w_m;
+    std::conditional_t<N == 2, Real*, std::array<Real*, 3>> w_M;
+    std::conditional_t<N == 2, Real*, std::array<Real*, 3>> w_m;
     const Real* eps;
     const Real* beta;
     const Real* mu;
@@ -545,16 +545,16 @@ public:
     const Real* v_M(std::size_t axis) const noexcept { return at<Real>(6 + 2 * N + axis); }
     Real* v_m(std::size_t axis) noexcept { return at<Real>(6 + 3 * N + axis); }
     const Real* v_m(std::size_t axis) const noexcept { return at<Real>(6 + 3 * N + axis); }
-    Real* w_M() noexcept { return at<Real>(6 + 4 * N); }
-    const Real* w_M() const noexcept { return at<Real>(6 + 4 * N); }
-    Real* w_m() noexcept { return at<Real>(7 + 4 * N); }
-    const Real* w_m() const noexcept { return at<Real>(7 + 4 * N); }
-    Real* eps() noexcept { return at<Real>(8 + 4 * N); }
-    const Real* eps() const noexcept { return at<Real>(8 + 4 * N); }
-    Real* beta() noexcept { return at<Real>(9 + 4 * N); }
-    const Real* beta() const noexcept { return at<Real>(9 + 4 * N); }
-    Real* mu() noexcept { return at<Real>(10 + 4 * N); }
-    const Real* mu() const noexcept { return at<Real>(10 + 4 * N); }
+    Real* w_M(std::size_t axis = 0) noexcept { return at<Real>(6 + 4 * N + axis); }
+    const Real* w_M(std::size_t axis = 0) const noexcept { return at<Real>(6 + 4 * N + axis); }
+    Real* w_m(std::size_t axis = 0) noexcept { return at<Real>(6 + 4 * N + (N == 2 ? 1 : 3) + axis); }
+    const Real* w_m(std::size_t axis = 0) const noexcept { return at<Real>(6 + 4 * N + (N == 2 ? 1 : 3) + axis); }
+    Real* eps() noexcept { return at<Real>(6 + 4 * N + (N == 2 ? 1 : 3) + (N == 2 ? 1 : 3)); }
+    const Real* eps() const noexcept { return at<Real>(6 + 4 * N + (N == 2 ? 1 : 3) + (N == 2 ? 1 : 3)); }
+    Real* beta() noexcept { return at<Real>(7 + 4 * N + (N == 2 ? 1 : 3) + (N == 2 ? 1 : 3)); }
+    const Real* beta() const noexcept { return at<Real>(7 + 4 * N + (N == 2 ? 1 : 3) + (N == 2 ? 1 : 3)); }
+    Real* mu() noexcept { return at<Real>(8 + 4 * N + (N == 2 ? 1 : 3) + (N == 2 ? 1 : 3)); }
+    const Real* mu() const noexcept { return at<Real>(8 + 4 * N + (N == 2 ? 1 : 3) + (N == 2 ? 1 : 3)); }
     impact::status* status() noexcept { return at<impact::status>(reals); }
     const impact::status* status() const noexcept { return at<impact::status>(reals); }
 
@@ -577,8 +577,18 @@ public:
             d.v_M[axis] = v_M(axis);
         for (std::size_t axis = 0; axis < N; ++axis)
             d.v_m[axis] = v_m(axis);
-        d.w_M = w_M();
-        d.w_m = w_m();
+        if constexpr (N == 2) {
+            d.w_M = w_M();
+        } else {
+            for (std::size_t axis = 0; axis < 3; ++axis)
+                d.w_M[axis] = w_M(axis);
+        }
+        if constexpr (N == 2) {
+            d.w_m = w_m();
+        } else {
+            for (std::size_t axis = 0; axis < 3; ++axis)
+                d.w_m[axis] = w_m(axis);
+        }
         d.eps = eps();
         d.beta = beta();
         d.mu = mu();
@@ -587,7 +597,7 @@ public:
     }
 
 private:
-    static constexpr std::size_t reals = 11 + 4 * N;  // the arrays of Real, then the statuses
+    static constexpr std::size_t reals = 9 + 4 * N + (N == 2 ? 1 : 3) + (N == 2 ? 1 : 3);  // the arrays of Real, then the statuses
     static constexpr std::size_t page = 4096, apart = 256, first = 64;
     static constexpr std::size_t per_pair = reals * sizeof(Real) + sizeof(impact::status);  // bytes
     template <class T>

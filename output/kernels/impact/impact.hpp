@@ -9,6 +9,7 @@
 #include "scatter_angle.hpp"
 #include "collide_3d.hpp"
 #include "collide_rough_2d.hpp"
+#include "collide_rough_3d.hpp"
 #include "collide_wall_rough_2d.hpp"
 #include "collide_wall_rough_3d.hpp"
 #include "collide_wall_2d.hpp"
