@@ -43,14 +43,25 @@ std::vector<int> multiplied(const program& p, const instruction& in)
     return of;
 }
 
-// Whether value o may be 0 where nothing underflowed, as an input, a sum or a difference
-// may (a product or quotient of values not 0 is not 0 unless it underflowed).
+// Whether value o may be 0 where nothing underflowed: an input, a sum or a difference may,
+// and so may a product with a factor that may be 0, a quotient whose dividend may, a root
+// or a function of one (a product or quotient of values not 0 is not 0 unless it
+// underflowed). A product of an input that is 0 (a sphere at rest) with anything is 0, and
+// so is what divides it: were it not exempt, every such pair of a batch would count as an
+// underflow and be computed again by the scalar kernel.
 bool may_be_zero(const program& p, int o)
 {
-    while (p.code[o].op == opcode::neg)
-        o = p.code[o].a;
-    const opcode op = p.code[o].op;
-    return op == opcode::input || op == opcode::add || op == opcode::sub || op == opcode::select;
+    const instruction& in = p.code[static_cast<std::size_t>(o)];
+    switch (in.op) {
+    case opcode::constant: return in.value.is_zero();
+    case opcode::neg:
+    case opcode::sqrt: return may_be_zero(p, in.a);
+    case opcode::mul: return may_be_zero(p, in.a) || may_be_zero(p, in.b);
+    case opcode::div: return may_be_zero(p, in.a);
+    case opcode::call:
+        return in.function == "atan2" || in.function == "abs" || in.function == "fabs" ? may_be_zero(p, in.a) : true;
+    default: return true;   // input, add, sub, fma, select
+    }
 }
 
 // The test that value v (written text[v]) fell below the normal range, as cxx_code says.
