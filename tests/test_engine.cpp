@@ -245,8 +245,8 @@ BOOST_AUTO_TEST_CASE(a_value_with_radicals_is_written_one_way)
     BOOST_TEST(once(1 / (b - a)).is_equal(-1 / (a - b)));
     BOOST_TEST(once(w / (b - a)).is_equal(once(-w / (a - b))));
     const auto [numer, denom] = engine::unique_numer_denom(w / (b - a), order);
-    BOOST_TEST(numer.is_equal(-w));
-    BOOST_TEST(denom.is_equal(a - b));
+    BOOST_TEST(numer.is_equal(-w), numer << " / " << denom);
+    BOOST_TEST(denom.is_equal(a - b), numer << " / " << denom);
 }
 
 BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_function_is_zero)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <iterator>
 #include <map>
+#include <tuple>
 #include <vector>
 
 namespace impact::engine {
@@ -103,6 +104,8 @@ private:
     std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> expanded_;   // radicands as written, expanded
 };
 
+std::pair<GiNaC::ex, GiNaC::ex> radicals_in_symbols_numer_denom(const GiNaC::ex& e);
+
 } // namespace
 
 // e's numerator and denominator in a form GiNaC's order of terms does not choose: the
@@ -112,10 +115,26 @@ private:
 // positive. Restored, a radicand beside its root merges with it (S sqrt(S) = S^(3/2)).
 std::pair<GiNaC::ex, GiNaC::ex> unique_numer_denom(const GiNaC::ex& e, const term_order& order)
 {
+    GiNaC::ex numer, denom;
     if (!has_radical(e)) {
         const GiNaC::ex nd = GiNaC::normal(e).numer_denom();
-        return {nd.op(0), nd.op(1)};
+        numer = nd.op(0);
+        denom = nd.op(1);
+    } else {
+        std::tie(numer, denom) = radicals_in_symbols_numer_denom(e);
     }
+    if (GiNaC::is_a<GiNaC::add>(denom) ? order.leads_negative(denom) : order.negative(denom)) {
+        numer = -numer;
+        denom = -denom;
+    }
+    return {numer, denom};
+}
+
+namespace {
+
+// unique_numer_denom for an expression with radicals, before the sign is placed.
+std::pair<GiNaC::ex, GiNaC::ex> radicals_in_symbols_numer_denom(const GiNaC::ex& e)
+{
     // Not yet one form in every case: where fractions whose denominators share a factor are
     // added, normal() builds the common denominator factor by factor in GiNaC's order
     // ((x - 1)(x + 1) or x^2 - 1). Multiplying it out would settle that, but changes the
@@ -126,14 +145,10 @@ std::pair<GiNaC::ex, GiNaC::ex> unique_numer_denom(const GiNaC::ex& e, const ter
     const GiNaC::ex reduced = roots.reduced(nd);
     if (!reduced.is_equal(nd))   // a radicand came back: what it shares with the rest cancels
         nd = GiNaC::normal(reduced.op(0) / reduced.op(1)).numer_denom();
-    GiNaC::ex numer = roots.restored(nd.op(0));
-    GiNaC::ex denom = roots.restored(nd.op(1));
-    if (GiNaC::is_a<GiNaC::add>(denom) ? order.leads_negative(denom) : order.negative(denom)) {
-        numer = -numer;
-        denom = -denom;
-    }
-    return {numer, denom};
+    return {roots.restored(nd.op(0)), roots.restored(nd.op(1))};
 }
+
+} // namespace
 
 GiNaC::ex normal_written_once(const GiNaC::ex& e, const term_order& order)
 {
