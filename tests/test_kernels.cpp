@@ -808,33 +808,6 @@ BOOST_AUTO_TEST_CASE(batch_arrays_move_and_refuse_a_count_no_allocation_can_hold
                       std::bad_array_new_length);
 }
 
-BOOST_AUTO_TEST_CASE(spheres_at_rest_are_resolved_by_the_batch_loop_itself)
-{
-    // Inputs that are 0 (a sphere at rest, a centre at the origin, a line of centres along an
-    // axis) make products and quotients 0 as they should be: the vector loop resolves each
-    // such pair itself, and leaves to the scalar kernel (status underflow) only a pair whose
-    // arithmetic may have left the normal range.
-    const std::size_t count = 64;
-    impact::collide_batch_arrays<double, 2> batch(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const double angle = i % 4 == 0 ? 0 : 0.1 * static_cast<double>(i);
-        batch.M()[i] = 1 + 0.25 * static_cast<double>(i % 5);
-        batch.m()[i] = 2;
-        batch.eps()[i] = 0.8;
-        batch.C_M(0)[i] = batch.C_M(1)[i] = 0;
-        batch.C_m(0)[i] = std::cos(angle);
-        batch.C_m(1)[i] = i % 4 == 0 ? 0 : std::sin(angle);
-        batch.v_M(0)[i] = batch.C_m(0)[i] + 0.25;
-        batch.v_M(1)[i] = batch.C_m(1)[i];
-        batch.v_m(0)[i] = batch.v_m(1)[i] = 0;
-    }
-    impact::detail::collide_batch_2d<double, true>(count, batch.M(), batch.m(), batch.C_M(0), batch.C_M(1), batch.C_m(0),
-                                                   batch.C_m(1), batch.v_M(0), batch.v_M(1), batch.v_m(0), batch.v_m(1),
-                                                   batch.eps(), batch.status());
-    for (std::size_t i = 0; i < count; ++i)
-        BOOST_TEST((batch.status()[i] == impact::status::ok), "pair " << i << " left to the scalar kernel");
-}
-
 BOOST_AUTO_TEST_CASE(arrays_crowd_one_page_offset_when_more_than_half_start_within_256_bytes)
 {
     // Starts given as addresses: page p, offset o within it.

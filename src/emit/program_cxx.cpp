@@ -48,7 +48,9 @@ std::vector<int> multiplied(const program& p, const instruction& in)
 // or a function of one (a product or quotient of values not 0 is not 0 unless it
 // underflowed). A product of an input that is 0 (a sphere at rest) with anything is 0, and
 // so is what divides it: were it not exempt, every such pair of a batch would count as an
-// underflow and be computed again by the scalar kernel.
+// underflow and be computed again by the scalar kernel. Only operands of `multiplied` are
+// asked about, each of which the scalar kernel's own test (underflow_test) requires to be
+// non-zero: an exemption here never lets the loop write what the scalar kernel refuses.
 bool may_be_zero(const program& p, int o)
 {
     const instruction& in = p.code[static_cast<std::size_t>(o)];

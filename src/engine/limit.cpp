@@ -11,15 +11,19 @@ namespace {
 std::optional<limit_result> by_substitution(const GiNaC::ex& e, const GiNaC::ex& symbol, const GiNaC::ex& point,
                                             const assumptions& given)
 {
-    GiNaC::ex at;
+    GiNaC::ex at, denominator;
     try {
         // Written once: normal() alone leaves S sqrt(S) - S^(3/2) and (w S)/S as they stand
         // in one order of GiNaC's terms and cancels them in another.
-        at = normal_written_once(simplify_radicals(GiNaC::normal(e).subs(symbol == point), given), given.order);
+        // The denominator kept as written once too: numer_denom() would normalise it again,
+        // with the sign GiNaC's order gives it.
+        const auto [numer, denom] =
+            unique_numer_denom(simplify_radicals(GiNaC::normal(e).subs(symbol == point), given), given.order);
+        at = numer / denom;
+        denominator = denom;
     } catch (const std::exception&) {
         return std::nullopt;
     }
-    const GiNaC::ex denominator = at.numer_denom().op(1);
     const sign_proof nonzero = prove_sign(denominator, given);
     if (nonzero.sign.zero || at.has(symbol))
         return std::nullopt;

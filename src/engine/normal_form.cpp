@@ -152,8 +152,14 @@ std::pair<GiNaC::ex, GiNaC::ex> radicals_in_symbols_numer_denom(const GiNaC::ex&
 
 GiNaC::ex normal_written_once(const GiNaC::ex& e, const term_order& order)
 {
-    const auto [numer, denom] = unique_numer_denom(e, order);
-    return numer / denom;
+    // With t^2 = radicand applied, a denominator may turn out 0 (1/(S^(3/2) - S sqrt(S))),
+    // which normal() then refuses: the value is left as normal() alone writes it.
+    try {
+        const auto [numer, denom] = unique_numer_denom(e, order);
+        return numer / denom;
+    } catch (const std::exception&) {
+        return GiNaC::normal(e);
+    }
 }
 
 } // namespace impact::engine
