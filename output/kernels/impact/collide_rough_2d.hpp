@@ -808,8 +808,8 @@ inline collide_rough_result<Real, 2> collide_rough_fixed_m(Real M, Real R_M, Rea
 /// collide_rough(M, m, R_M, R_m, q_M, q_m, C_M, C_m, v_M, v_m, w_M, w_m, eps, beta, mu): Rough spheres colliding in a plane, in the lab frame.
 ///   M: mass of sphere M (positive, in kg)
 ///   m: mass of sphere m (positive, in kg)
-///   R_M: radius of sphere M (positive, in m)
-///   R_m: radius of sphere m (positive, in m)
+///   R_M: radius of sphere M, the lever arm at the contact point (the centres give only the direction n) (positive, in m)
+///   R_m: radius of sphere m, the lever arm at the contact point (positive, in m)
 ///   q_M: M's moment of inertia in units of \f$M R_M^2\f$ (\f$2/5\f$ for a solid sphere, \f$2/3\f$ for a hollow one) ((0, 2/3], a pure number)
 ///   q_m: m's moment of inertia in units of \f$m R_m^2\f$ ((0, 2/3], a pure number)
 ///   C_M: C_Mx: x-coordinate of the centre of sphere M (real, in m)
