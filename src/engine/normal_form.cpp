@@ -104,7 +104,21 @@ private:
     std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> expanded_;   // radicands as written, expanded
 };
 
-std::pair<GiNaC::ex, GiNaC::ex> radicals_in_symbols_numer_denom(const GiNaC::ex& e);
+// unique_numer_denom for an expression with radicals, before the sign is placed.
+std::pair<GiNaC::ex, GiNaC::ex> radicals_in_symbols_numer_denom(const GiNaC::ex& e)
+{
+    // Not yet one form in every case: where fractions whose denominators share a factor are
+    // added, normal() builds the common denominator factor by factor in GiNaC's order
+    // ((x - 1)(x + 1) or x^2 - 1). Multiplying it out would settle that, but changes the
+    // denominators the kernels' limit forms are built on (rough_plane's fixed spheres then
+    // miss their bounds).
+    radicals_as_symbols roots;
+    GiNaC::ex nd = GiNaC::normal(roots.in_symbols(e)).numer_denom();
+    const GiNaC::ex reduced = roots.reduced(nd);
+    if (!reduced.is_equal(nd))   // a radicand came back: what it shares with the rest cancels
+        nd = GiNaC::normal(reduced.op(0) / reduced.op(1)).numer_denom();
+    return {roots.restored(nd.op(0)), roots.restored(nd.op(1))};
+}
 
 } // namespace
 
@@ -129,26 +143,6 @@ std::pair<GiNaC::ex, GiNaC::ex> unique_numer_denom(const GiNaC::ex& e, const ter
     }
     return {numer, denom};
 }
-
-namespace {
-
-// unique_numer_denom for an expression with radicals, before the sign is placed.
-std::pair<GiNaC::ex, GiNaC::ex> radicals_in_symbols_numer_denom(const GiNaC::ex& e)
-{
-    // Not yet one form in every case: where fractions whose denominators share a factor are
-    // added, normal() builds the common denominator factor by factor in GiNaC's order
-    // ((x - 1)(x + 1) or x^2 - 1). Multiplying it out would settle that, but changes the
-    // denominators the kernels' limit forms are built on (rough_plane's fixed spheres then
-    // miss their bounds).
-    radicals_as_symbols roots;
-    GiNaC::ex nd = GiNaC::normal(roots.in_symbols(e)).numer_denom();
-    const GiNaC::ex reduced = roots.reduced(nd);
-    if (!reduced.is_equal(nd))   // a radicand came back: what it shares with the rest cancels
-        nd = GiNaC::normal(reduced.op(0) / reduced.op(1)).numer_denom();
-    return {roots.restored(nd.op(0)), roots.restored(nd.op(1))};
-}
-
-} // namespace
 
 GiNaC::ex normal_written_once(const GiNaC::ex& e, const term_order& order)
 {
