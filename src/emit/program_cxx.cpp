@@ -61,7 +61,7 @@ bool may_be_zero(const program& p, int o)
     case opcode::mul: return may_be_zero(p, in.a) || may_be_zero(p, in.b);
     case opcode::div: return may_be_zero(p, in.a);
     case opcode::call:
-        return in.function == "atan2" || in.function == "abs" || in.function == "fabs" ? may_be_zero(p, in.a) : true;
+        return in.function == "atan2" || in.function == "abs" ? may_be_zero(p, in.a) : true;
     default: return true;   // input, add, sub, fma, select
     }
 }

@@ -13,10 +13,9 @@ std::optional<limit_result> by_substitution(const GiNaC::ex& e, const GiNaC::ex&
 {
     GiNaC::ex at, denominator;
     try {
-        // Written once: normal() alone leaves S sqrt(S) - S^(3/2) and (w S)/S as they stand
-        // in one order of GiNaC's terms and cancels them in another.
-        // The denominator kept as written once too: numer_denom() would normalise it again,
-        // with the sign GiNaC's order gives it.
+        // Written once, its denominator with it: normal() alone leaves S sqrt(S) - S^(3/2)
+        // and (w S)/S as they stand in one order of GiNaC's terms and cancels them in another,
+        // and numer_denom() would give the denominator the sign that order chooses.
         const auto [numer, denom] =
             unique_numer_denom(simplify_radicals(GiNaC::normal(e).subs(symbol == point), given), given.order);
         at = numer / denom;

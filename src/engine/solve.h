@@ -13,7 +13,6 @@
 #pragma once
 
 #include "engine/derive.h"
-#include "engine/normal_form.h"
 #include "engine/reconcile.h"
 #include "engine/sign.h"
 
