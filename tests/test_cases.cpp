@@ -641,3 +641,106 @@ BOOST_AUTO_TEST_CASE(a_case_the_domains_rule_out_at_a_special_value_holds_nothin
     BOOST_TEST(c.parts[1].outcome.method == "the case does not arise: the domains make its condition false");
     BOOST_TEST(proven(c.outcome));
 }
+
+// An abbreviation declared with a domain is an assumption the proofs may use: s = u - w,
+// declared positive (the spheres approach), rules out the case 0 > k s at b = -1, and is
+// listed with its domain. Without the declaration the case is not ruled out.
+BOOST_AUTO_TEST_CASE(an_abbreviation_declared_positive_is_an_assumption_the_cases_use)
+{
+    const auto text = [](const std::string& s_domain) {
+        return "id = \"t\"\ntitle = \"t\"\n"
+               "[[symbol]]\nname = \"u\"\n[[symbol]]\nname = \"w\"\n"
+               "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+               "[[symbol]]\nname = \"k\"\ndomain = \"nonnegative\"\n"
+               "[[symbol]]\nname = \"b\"\ndomain = \"[-1, 1]\"\n"
+               "[[symbol]]\nname = \"s\"\n" + s_domain + "definition = \"u - w\"\n"
+               "[[symbol]]\nname = \"y\"\n"
+               "[[step]]\ndefine = \"y\"\n"
+               "cases = [{ when = \"(1 + b)*x <= k*s\", as = \"(1 + b)*x\" }, "
+               "{ when = \"(1 + b)*x > k*s\", as = \"k*s/(1 + b)\" }]\n"
+               "[[result]]\nname = \"y\"\n"
+               "[[check]]\nname = \"smooth\"\nclaim = \"y = 0\"\nat = { b = \"-1\" }\n";
+    };
+    const engine::derivation d = derive_text(text("domain = \"positive\"\n"));
+    const engine::check_result& c = check_named(d, "smooth");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(c.parts[1].outcome.method == "the case does not arise: the domains make its condition false");
+    BOOST_TEST(proven(c.outcome));
+    BOOST_TEST(emit::latex_fragment(d).find("\\item $s = u - w$, $s > 0$") != std::string::npos);
+
+    const engine::derivation undeclared = derive_text(text(""));
+    BOOST_TEST(!check_named(undeclared, "smooth").outcome.holds());
+}
+
+// A limit case by case leaves out a case whose condition fails near the point: sliding,
+// mu k < (1 + b) x, as mu -> infinity, where its value mu k grows without bound.
+BOOST_AUTO_TEST_CASE(a_case_whose_condition_fails_near_the_limit_is_left_out)
+{
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"k\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"b\"\ndomain = \"[-1, 1]\"\n"
+        "[[symbol]]\nname = \"mu\"\ndomain = \"[0, +inf]\"\n"
+        "[[symbol]]\nname = \"y\"\n"
+        "[[step]]\ndefine = \"y\"\n"
+        "cases = [{ when = \"(1 + b)*x <= mu*k\", as = \"(1 + b)*x\" }, "
+        "{ when = \"(1 + b)*x > mu*k\", as = \"mu*k\" }]\n"
+        "[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"sticks\"\nclaim = \"y = 2*x\"\nat = { b = \"1\" }\nlimit = \"mu -> infinity\"\n");
+    const engine::check_result& c = check_named(d, "sticks");
+    BOOST_REQUIRE_EQUAL(c.parts.size(), 2u);
+    BOOST_TEST(proven(c.parts[0].outcome), c.parts[0].outcome.method);
+    BOOST_TEST(c.parts[1].outcome.method.rfind("the case does not arise near the limit mu -> infinity", 0) == 0,
+               c.parts[1].outcome.method);
+    BOOST_TEST(proven(c.outcome));
+}
+
+// A square root that is an abbreviation (G = sqrt(x^2 + z^2)) is a quantity of its own in a
+// proof under a case's condition: G >= 0, its radicand never expanded.
+BOOST_AUTO_TEST_CASE(a_root_that_is_an_abbreviation_is_a_quantity_of_its_own_under_a_condition)
+{
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\n[[symbol]]\nname = \"z\"\n"
+        "[[symbol]]\nname = \"k\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"b\"\ndomain = \"[-1, 1]\"\n"
+        "[[symbol]]\nname = \"mu\"\ndomain = \"[0, +inf]\"\n"
+        "[[symbol]]\nname = \"G\"\ndefinition = \"sqrt(x^2 + z^2)\"\n"
+        "[[symbol]]\nname = \"y\"\n"
+        "[[step]]\ndefine = \"y\"\n"
+        "cases = [{ when = \"(1 + b)*G <= mu*k\", as = \"(1 + b)*G\" }, "
+        "{ when = \"(1 + b)*G > mu*k\", as = \"mu*k\" }]\n"
+        "[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"cone\"\nclaim = \"y <= mu*k\"\n"
+        "[[check]]\nname = \"loss\"\nclaim = \"y*(G - y/2) >= 0\"\n");
+    for (const char* name : {"cone", "loss"}) {
+        const engine::check_result& c = check_named(d, name);
+        BOOST_TEST(proven(c.outcome), name << ": " << c.outcome.method);
+    }
+    const engine::check_result& loss = check_named(d, "loss");
+    BOOST_REQUIRE_EQUAL(loss.parts.size(), 2u);
+    BOOST_TEST(loss.parts[1].outcome.method.find("with the square roots that are abbreviations as quantities of "
+                                                 "their own (G >= 0)") != std::string::npos,
+               loss.parts[1].outcome.method);
+}
+
+// G = q C proves nothing where q's denominator vanishes: with C = mu x and q = 1/mu the
+// case's claim y >= 0 is proven otherwise (by the signs of y = x), never as 1/mu times C.
+BOOST_AUTO_TEST_CASE(a_factor_that_divides_by_zero_is_no_argument)
+{
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"mu\"\ndomain = \"nonnegative\"\n"
+        "[[symbol]]\nname = \"y\"\n"
+        "[[step]]\ndefine = \"y\"\n"
+        "cases = [{ when = \"0 <= mu*x\", as = \"x\" }, { when = \"0 > mu*x\", as = \"-x\" }]\n"
+        "[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"positive\"\nclaim = \"y >= 0\"\n");
+    const engine::check_result& c = check_named(d, "positive");
+    BOOST_REQUIRE(!c.parts.empty());
+    BOOST_TEST(proven(c.parts[0].outcome), c.parts[0].outcome.method);
+    BOOST_TEST(c.parts[0].outcome.method.find("times the condition's") == std::string::npos,
+               c.parts[0].outcome.method);
+}

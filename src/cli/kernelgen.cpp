@@ -25,7 +25,11 @@ int main(int argc, char** argv)
         const impact::engine::library lib =
             impact::engine::derive_all(impact::engine::read_directory(argv[1]));
         if (!lib.all_hold()) {
-            fmt::print(stderr, "impact_kernelgen: a check failed; no kernels written (run `impact regenerate`)\n");
+            for (const std::string& id : lib.order)
+                for (const impact::engine::check_result* c : lib.derived.at(id).all_checks())
+                    if (!c->outcome.holds())
+                        fmt::print(stderr, "impact_kernelgen: {}: check '{}' failed\n", id, c->name);
+            fmt::print(stderr, "impact_kernelgen: no kernels written (run `impact derive <id>` for the proofs)\n");
             return 1;
         }
         // The build tree's folder of generated kernels is the build's own: forced, since a

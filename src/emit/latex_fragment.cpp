@@ -205,6 +205,10 @@ std::string fragment_writer::quantities() const
             continue;
         if (q.definition) {
             out += fmt::format("\\item ${} = {}$", math(q.symbol), math(*q.definition, &q.written));
+            // A declared domain of an abbreviation is an assumption the proofs use (s_n > 0:
+            // the spheres approach).
+            if (q.range.what != engine::domain::kind::real)
+                out += fmt::format(", ${} {}$", math(q.symbol), q.range.to_latex());
         } else {
             out += fmt::format("\\item ${} {}$", math(q.symbol), q.range.to_latex());
         }

@@ -2,6 +2,7 @@
 
 #include "engine/condition_proof.h"
 #include "engine/infix.h"
+#include "engine/limit.h"
 #include "engine/normal_form.h"
 #include "engine/prove.h"
 #include "engine/solve.h"
@@ -10,6 +11,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <map>
 
 namespace impact::engine {
 namespace {
@@ -323,11 +325,6 @@ std::optional<verdict> prove_by_terms(const GiNaC::ex& lhs, relation op, const G
 std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const case_value& c,
                                    const symbol_table& symbols, const assumptions& given)
 {
-    if (auto by_terms = prove_by_terms(lhs, op, rhs, c, symbols, given))
-        return by_terms;
-    if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, with_effort(given, try_effort)))
-        return alone;
-
     const GiNaC::exmap abbreviations = symbols.abbreviations();
     const bool upper = op == relation::less_equal || op == relation::less;
     const bool strict = op == relation::less || op == relation::greater;
@@ -339,11 +336,20 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     condition.value = normal_written_once(condition.value.subs(abbreviations), given.order);
     const std::string under = fmt::format("under {}", condition_text(c, given.order));
 
-    // G = q C with q >= 0 (q > 0 and C > 0 for a strict claim).
+    if (g.is_zero() && !strict) {
+        verdict v;
+        v.what = verdict::status::proven;
+        v.residual = 0;
+        v.method = "its two sides are equal";
+        return v;
+    }
+    // G = q C with q >= 0 (q > 0 and C > 0 for a strict claim), q's denominator proven
+    // non-zero: where it vanishes (C = mu J_n at mu = 0) G = q C says nothing.
     if (!condition.value.is_zero()) {
         const GiNaC::ex q = normal_written_once(g / condition.value, given.order);
         const sign_proof p = prove_sign(q, with_effort(given, try_effort));
-        if (strict ? (p.sign.is_positive() && condition.strict) : p.sign.is_nonnegative()) {
+        if ((strict ? (p.sign.is_positive() && condition.strict) : p.sign.is_nonnegative()) &&
+            !prove_sign(q.denom(), with_effort(given, try_effort)).sign.zero) {
             verdict v;
             v.what = verdict::status::proven;
             v.residual = 0;
@@ -367,6 +373,13 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
             return v;
         }
     }
+    // The terms of one sign set aside, or the signs alone; tried after the condition's
+    // factor and remainder, which settle the common claim (a bound the condition is a
+    // multiple of, the friction cone's) at once where these search long polynomials.
+    if (auto by_terms = prove_by_terms(lhs, op, rhs, c, symbols, given))
+        return by_terms;
+    if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, with_effort(given, try_effort)))
+        return alone;
     // A bound on one symbol by a number (x <= 1): the sign proof run again on the symbol's
     // domain narrowed by it.
     if (const auto bound = bound_domain(c, given)) {
@@ -403,18 +416,143 @@ verdict unproven_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs
 
 // The condition of `c` proven false under `given`: the case does not arise. Asked where a
 // condition may have become one the domains decide (at special values, for a sign of
-// what is under |.|), and only of a condition of a few terms: a sign proof of a long
-// sum that holds somewhere costs seconds and finds nothing.
+// what is under |.|), and only of a condition whose factors are sums of a few terms or
+// multiples of an abbreviation of declared sign (the spheres approach: mu (1 + eps) D_t s_n
+// at b = -1): a sign proof of a long sum that holds somewhere costs seconds and finds
+// nothing.
 bool cannot_arise(const case_value& c, const symbol_table& symbols, const assumptions& given)
 {
     constexpr std::size_t most_terms = 4;
+    const auto few_terms = [&](const GiNaC::ex& product) {
+        const auto short_enough = [&](GiNaC::ex factor) {
+            if (GiNaC::is_a<GiNaC::power>(factor))
+                factor = factor.op(0);
+            return !GiNaC::is_a<GiNaC::add>(factor) || factor.nops() <= most_terms ||
+                   assumed_multiple(factor, given).has_value();
+        };
+        if (!GiNaC::is_a<GiNaC::mul>(product))
+            return short_enough(product);
+        for (std::size_t i = 0; i < product.nops(); ++i)
+            if (!short_enough(product.op(i)))
+                return false;
+        return true;
+    };
     const nonnegative_form f = condition_form(c);
     const GiNaC::ex value = without_abs(GiNaC::normal(f.value.subs(symbols.abbreviations())), given);
-    const GiNaC::ex top = GiNaC::expand(value.numer());
-    if (GiNaC::is_a<GiNaC::add>(top) && top.nops() > most_terms)
-        return false;
+    if (!few_terms(value.numer())) {
+        const GiNaC::ex top = GiNaC::expand(value.numer());
+        if (GiNaC::is_a<GiNaC::add>(top) && top.nops() > most_terms &&
+            !few_terms(given.run ? factor_polynomial(top, *given.run) : factor_polynomial(top)))
+            return false;
+    }
     const sign_set s = prove_sign(value, given).sign;
     return f.strict ? !s.positive : (!s.positive && !s.zero);
+}
+
+// Each square root that is an abbreviation's definition (d = sqrt(r.r), G_t = sqrt(G_t.G_t))
+// written as a quantity of its own, named as the abbreviation: a new symbol (the
+// abbreviation's own would be replaced by its definition again), >= 0, or > 0 where its
+// radicand is proven positive. A claim proven under a case's condition for every value
+// of such a quantity is proven for its own value in particular, and the proof never
+// expands the radicand's square (in space a polynomial of hundreds of terms).
+class radicals_named : public GiNaC::map_function {
+public:
+    explicit radicals_named(const symbol_table& symbols)
+    {
+        for (const quantity& q : symbols.all()) {
+            if (!q.definition)
+                continue;
+            const GiNaC::ex inputs = symbols.in_inputs(*q.definition);
+            if (GiNaC::is_a<GiNaC::power>(inputs) && inputs.op(1).is_equal(GiNaC::numeric(1, 2)))
+                roots_.push_back({GiNaC::expand(inputs.op(0)), q, GiNaC::symbol(q.name, q.latex), false});
+        }
+    }
+
+    GiNaC::ex operator()(const GiNaC::ex& part) override
+    {
+        if (GiNaC::is_a<GiNaC::power>(part) && part.op(1).info(GiNaC::info_flags::rational) &&
+            !part.op(1).info(GiNaC::info_flags::integer) && GiNaC::ex_to<GiNaC::numeric>(part.op(1)).denom() == 2) {
+            auto known = match_.find(part.op(0));
+            if (known == match_.end()) {
+                const GiNaC::ex radicand = GiNaC::expand(part.op(0));
+                std::size_t which = roots_.size();
+                for (std::size_t i = 0; i < roots_.size(); ++i)
+                    if (roots_[i].radicand.is_equal(radicand))
+                        which = i;
+                known = match_.emplace(part.op(0), which).first;
+            }
+            if (known->second < roots_.size()) {
+                root& r = roots_[known->second];
+                r.used = true;
+                return GiNaC::pow(r.atom, GiNaC::ex_to<GiNaC::numeric>(part.op(1)).mul(2));
+            }
+        }
+        // The radicand itself (d^2 written r.r): the square of its root.
+        if (GiNaC::is_a<GiNaC::add>(part))
+            for (root& r : roots_)
+                if (GiNaC::is_a<GiNaC::add>(r.radicand) && r.radicand.nops() == part.nops() &&
+                    GiNaC::expand(part).is_equal(r.radicand)) {
+                    r.used = true;
+                    return GiNaC::pow(r.atom, 2);
+                }
+        return part.map(*this);
+    }
+
+    /// `given` with the domains of the roots used: >= 0, > 0 where declared or where the
+    /// radicand is proven > 0.
+    assumptions with_domains(const assumptions& given, std::vector<std::string>& words) const
+    {
+        assumptions named = given;
+        named.known = std::make_shared<worked_out>();
+        for (const root& r : roots_) {
+            if (!r.used)
+                continue;
+            // Declared positive (d: the centres are distinct), or a radicand proven so.
+            const bool positive = r.of.range.what == domain::kind::positive ||
+                                  prove_sign(r.radicand, given).sign.is_positive();
+            named.domains[r.atom] = domain{positive ? domain::kind::positive : domain::kind::nonnegative};
+            words.push_back(fmt::format("{} {} 0", r.of.name, positive ? ">" : ">="));
+        }
+        return named;
+    }
+
+    bool any_used() const
+    {
+        return std::any_of(roots_.begin(), roots_.end(), [](const root& r) { return r.used; });
+    }
+
+private:
+    struct root {
+        GiNaC::ex radicand;   // in the inputs, expanded
+        quantity of;
+        GiNaC::ex atom;
+        bool used;
+    };
+    std::vector<root> roots_;
+    std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> match_;
+};
+
+// The claim under the case's condition with the square roots that are abbreviations as
+// quantities of their own (radicals_named); none when there are none, or it is not proven so.
+std::optional<verdict> prove_with_roots_named(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                              const case_value& c, const symbol_table& symbols,
+                                              const assumptions& given)
+{
+    radicals_named named(symbols);
+    case_value here = c;
+    const GiNaC::ex l = named(lhs), r = named(rhs);
+    here.lhs = named(c.lhs);
+    here.rhs = named(c.rhs);
+    if (!named.any_used())
+        return std::nullopt;
+    std::vector<std::string> words;
+    const assumptions roots = named.with_domains(given, words);
+    auto v = prove_under(l, op, r, here, symbols, roots);
+    if (!v || v->what != verdict::status::proven)
+        return std::nullopt;
+    v->method = fmt::format("with the square roots that are abbreviations as quantities of their own ({}): {}",
+                            fmt::join(words, ", "), v->method);
+    return v;
 }
 
 } // namespace
@@ -432,6 +570,8 @@ verdict prove_in_case(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, c
         case_value plain = c;
         plain.lhs = without_abs(c.lhs, given);
         plain.rhs = without_abs(c.rhs, given);
+        if (auto v = prove_with_roots_named(l, op, r, plain, symbols, given))
+            return *v;
         if (auto v = prove_under(l, op, r, plain, symbols, given))
             return *v;
         return unproven_in_case(lhs, op, rhs, c, symbols, given);
@@ -504,9 +644,37 @@ bool same_conditions(const std::vector<case_value>& a, const std::vector<case_va
     return true;
 }
 
+namespace {
+
+// The case's condition C >= 0 (> 0) false as x -> infinity: C polynomial in x (mu J_n
+// beside a sticking impulse free of mu) tends to -infinity where its leading coefficient,
+// its k-th derivative in x, the first free of x, is proven negative. No expansion (C holds
+// the slip's length, a root of hundreds of terms in space), and nothing decided where the
+// coefficient's sign is not proven at once (the masses' limits: every case arises).
+bool cannot_arise_near(const case_value& c, const check_result::limit_point& near, const symbol_table& symbols,
+                       const assumptions& given)
+{
+    constexpr std::size_t effort = 100;
+    const GiNaC::ex value = condition_form(c).value.subs(symbols.abbreviations());
+    if (!near.to_infinity || !value.has(near.symbol) || !value.is_polynomial(near.symbol))
+        return false;
+    GiNaC::ex derivative = value;
+    for (int k = 1; k <= 8 && derivative.has(near.symbol); ++k)
+        derivative = derivative.diff(GiNaC::ex_to<GiNaC::symbol>(near.symbol));
+    // A sum with square roots is normalised before its sign is sought, which takes seconds
+    // in space; a coefficient whose sign shows is a product (the masses' is a difference).
+    if (derivative.has(near.symbol) || (GiNaC::is_a<GiNaC::add>(derivative) && has_radical(derivative)))
+        return false;
+    const sign_set s = prove_sign(derivative, with_effort(given, effort)).sign;
+    return !s.positive && !s.zero;
+}
+
+} // namespace
+
 void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::exmap& at,
                         const symbol_table& symbols, const assumptions& given, proof_cache& run,
-                        const std::function<verdict(const GiNaC::ex&, const GiNaC::ex&)>& prove)
+                        const std::function<verdict(const GiNaC::ex&, const GiNaC::ex&)>& prove,
+                        const std::optional<check_result::limit_point>& near)
 {
     std::vector<std::string> names;
     for (const GiNaC::ex& s : split.symbols)
@@ -565,6 +733,12 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
         } else if (!at.empty() && cannot_arise(one, symbols, given)) {
             arises = false;
             part.outcome.method = "the case does not arise: the domains make its condition false";
+        } else if (near && cannot_arise_near(one, *near, symbols, given)) {
+            arises = false;
+            part.outcome.method = fmt::format("the case does not arise near the limit {} -> {}: its condition is "
+                                              "false there",
+                                              given.text(near->symbol),
+                                              near->to_infinity ? "infinity" : given.text(near->point));
         }
         if (!arises) {
             part.outcome.what = verdict::status::proven;

@@ -80,10 +80,13 @@ bool same_conditions(const std::vector<case_value>& a, const std::vector<case_va
 /// the case), the claim proven under the case's condition. A case whose condition is
 /// proven false (at the special values, or under the domains) holds nothing to prove.
 /// `prove`, when given, decides each case's claim (its sides with the case's values) in
-/// place of an identity or inequality: a limit, proven in every case whatever its condition.
+/// place of an identity or inequality: a limit, proven in every case that arises near its
+/// point, whatever its condition. A case whose condition's side (C in C >= 0) tends to
+/// -infinity or to a negative value there does not arise near it (sliding as mu -> infinity).
 void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::exmap& at,
                         const symbol_table& symbols, const assumptions& given, proof_cache& run,
-                        const std::function<verdict(const GiNaC::ex&, const GiNaC::ex&)>& prove = {});
+                        const std::function<verdict(const GiNaC::ex&, const GiNaC::ex&)>& prove = {},
+                        const std::optional<check_result::limit_point>& near = std::nullopt);
 
 /// The verdict of a check proven case by case: failed if a case failed, sampled if one was
 /// sampled, proven if every case was; its method lists each case's.

@@ -80,6 +80,9 @@ std::optional<verdict> divided_by_condition(const GiNaC::ex& g, bool strict, con
             top.ldegree(x) < 0)
             continue;
         const GiNaC::ex lead = c_top.coeff(x, 1);
+        // The quotient holds 1/lead: where lead vanishes G = q C + r says nothing.
+        if (prove_sign(lead, given).sign.zero)
+            continue;
         GiNaC::ex q = 0, r = top;
         for (int k = top.degree(x); k >= 1; --k) {
             const GiNaC::ex t = GiNaC::normal(r.coeff(x, k) / lead) * GiNaC::pow(x, k - 1);

@@ -528,18 +528,21 @@ private:
                 split->pieces.push_back(pieces);
             }
             if (spec_check.limit) {
-                // The limit in every case, whatever its condition: a quantity that takes one
-                // case's value or another's has the limit they share (a fixed sphere's
-                // velocity, sticking or sliding).
+                // The limit in every case that arises near the point, whatever its condition:
+                // a quantity that takes one case's value or another's has the limit they share
+                // (a fixed sphere's velocity, sticking or sliding); a case whose condition
+                // fails near the point (sliding as mu -> infinity) is left out.
                 c.limit = limit_point_of(*spec_check.limit);
                 if (c.op != relation::equal)
                     throw error(spec_check.limit->written.where, "a limit check claims an equality: lim lhs = rhs");
-                prove_case_by_case(c, *split, at, out_.symbols, given, run_,
-                                   [&](const GiNaC::ex& l, const GiNaC::ex& r) {
-                                       std::optional<GiNaC::ex> value;
-                                       std::optional<limit_method> how;
-                                       return check_limit(l, r, *c.limit, given, value, how);
-                                   });
+                prove_case_by_case(
+                    c, *split, at, out_.symbols, given, run_,
+                    [&](const GiNaC::ex& l, const GiNaC::ex& r) {
+                        std::optional<GiNaC::ex> value;
+                        std::optional<limit_method> how;
+                        return check_limit(l, r, *c.limit, given, value, how);
+                    },
+                    c.limit);
                 c.statement += fmt::format(" in the limit {}", spec_check.limit->written.value);
                 return c;
             }

@@ -60,11 +60,67 @@ sign_set of_domain(const domain& d)
     return r;
 }
 
-// factor_polynomial, with the run's factors where the assumptions come with a run.
+// factor_polynomial, with the run's factors where the assumptions come with a run. A
+// polynomial too long to factor has the abbreviations of declared sign that divide it
+// taken out first (s_n^2 from the hundreds of terms a bound on sliding leaves), and what
+// is left factored: exact division by a short polynomial costs little.
 GiNaC::ex factored_in(const GiNaC::ex& e, const assumptions& given)
 {
-    return given.run ? factor_polynomial(e, *given.run) : factor_polynomial(e);
+    const GiNaC::ex f = given.run ? factor_polynomial(e, *given.run) : factor_polynomial(e);
+    if (!f.is_equal(e) || given.assumed.empty() || has_radical(e) || !e.info(GiNaC::info_flags::polynomial))
+        return f;
+    GiNaC::ex rest = GiNaC::expand(e);
+    if (!GiNaC::is_a<GiNaC::add>(rest))
+        return f;
+    GiNaC::ex taken = 1;
+    for (const assumptions::assumed_sign& a : given.assumed) {
+        if (!GiNaC::is_a<GiNaC::add>(a.definition) || !a.definition.info(GiNaC::info_flags::polynomial))
+            continue;
+        GiNaC::ex quotient;
+        while (GiNaC::is_a<GiNaC::add>(rest) && GiNaC::divide(rest, a.definition, quotient)) {
+            rest = GiNaC::expand(quotient);
+            taken *= a.definition;
+        }
+    }
+    if (taken.is_equal(1))
+        return f;
+    return taken * factored_in(rest, given);
 }
+
+} // namespace
+
+std::optional<std::pair<GiNaC::numeric, const assumptions::assumed_sign*>> assumed_multiple(const GiNaC::ex& e,
+                                                                                           const assumptions& given)
+{
+    if (given.assumed.empty())
+        return std::nullopt;
+    if (GiNaC::is_a<GiNaC::power>(e)) {   // a root: d = sqrt(r.r), declared positive
+        for (const assumptions::assumed_sign& a : given.assumed)
+            if (GiNaC::is_a<GiNaC::power>(a.definition) && a.definition.op(1).is_equal(e.op(1)) &&
+                GiNaC::expand(e.op(0)).is_equal(a.definition.op(0)))
+                return std::make_pair(GiNaC::numeric(1), &a);
+        return std::nullopt;
+    }
+    const GiNaC::ex terms = GiNaC::expand(e);
+    if (!GiNaC::is_a<GiNaC::add>(terms))
+        return std::nullopt;
+    for (const assumptions::assumed_sign& a : given.assumed) {
+        if (!GiNaC::is_a<GiNaC::add>(a.definition) || a.definition.nops() != terms.nops())
+            continue;
+        // c from the first term and the definition's term of the same symbols.
+        for (std::size_t i = 0; i < a.definition.nops(); ++i) {
+            const GiNaC::ex ratio = terms.op(0) / a.definition.op(i);
+            if (!GiNaC::is_a<GiNaC::numeric>(ratio) || !GiNaC::ex_to<GiNaC::numeric>(ratio).is_real())
+                continue;
+            if (GiNaC::expand(terms - ratio * a.definition).is_zero())
+                return std::make_pair(GiNaC::ex_to<GiNaC::numeric>(ratio), &a);
+            break;
+        }
+    }
+    return std::nullopt;
+}
+
+namespace {
 
 class sign_prover {
 public:
@@ -120,8 +176,11 @@ private:
                 r = times(r, sign(e.op(i), depth).first);
             return {r, "a product of factors of known sign"};
         }
-        if (GiNaC::is_a<GiNaC::power>(e))
+        if (GiNaC::is_a<GiNaC::power>(e)) {
+            if (auto assumed = assumed_sign(e))
+                return *assumed;
             return power_sign(e, depth);
+        }
         if (GiNaC::is_a<GiNaC::add>(e))
             return sum_sign(e, depth);
         if (GiNaC::is_a<GiNaC::function>(e)) {
@@ -162,6 +221,26 @@ private:
         return {r, why};
     }
 
+    // A constant multiple c of an abbreviation declared with a domain: the domain's sign,
+    // times c's.
+    std::optional<std::pair<sign_set, sign_reason>> assumed_sign(const GiNaC::ex& e) const
+    {
+        const auto multiple = assumed_multiple(e, given_);
+        if (!multiple)
+            return std::nullopt;
+        const auto& [c, a] = *multiple;
+        const sign_set of = of_domain(a->range);
+        const sign_set s = c.is_positive() ? of : sign_set{of.positive, of.zero, of.negative};
+        sign_reason why(fmt::format("{} with {} assumed {}", text(c * a->symbol), text(a->symbol),
+                                    a->range.to_string()));
+        why.typeset.math(c * a->symbol).say(", with ");
+        if (a->range.what == domain::kind::positive && !a->range.infinity_included)
+            why.typeset.states(a->symbol, relation::greater, 0).say(" assumed");
+        else
+            why.typeset.math(a->symbol).say(" assumed " + a->range.to_string());
+        return std::make_pair(s, why);
+    }
+
     std::pair<sign_set, sign_reason> sum_sign(const GiNaC::ex& e, int depth) const
     {
         sign_set r = sign_set::exactly(0);
@@ -172,6 +251,8 @@ private:
         }
         if (r.is_known())
             return {r, "a sum of terms of one sign"};
+        if (auto assumed = assumed_sign(e))
+            return *assumed;
 
         if (auto linear = linear_in_bounded_symbol(e))
             return *linear;
@@ -532,9 +613,19 @@ assumptions declared_assumptions(const symbol_table& symbols, proof_cache& run)
     // serves every derivation of the run. Narrowed domains (a check's `assuming`) need
     // their own.
     assumptions given{{}, declaration_order(symbols), run.declared, &run};
-    for (const quantity& q : symbols.all())
-        if (!q.definition)
+    for (const quantity& q : symbols.all()) {
+        if (!q.definition) {
             given.domains[q.symbol] = q.range;
+            continue;
+        }
+        if (q.range.what == domain::kind::real)
+            continue;
+        // The definition in the inputs: an abbreviation may be written with others.
+        GiNaC::ex inputs = symbols.in_inputs(*q.definition);
+        if (GiNaC::is_a<GiNaC::power>(inputs))
+            inputs = GiNaC::pow(GiNaC::expand(inputs.op(0)), inputs.op(1));
+        given.assumed.push_back({q.symbol, GiNaC::expand(inputs), q.range});
+    }
     return given;
 }
 

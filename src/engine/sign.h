@@ -101,7 +101,22 @@ struct assumptions {
     /// remembered. It keeps a search whose length depends on the order GiNaC gives the
     /// terms, which changes with the program's build, from running for minutes.
     std::shared_ptr<std::size_t> effort{};
+    /// An abbreviation declared with a domain is an assumption on the inputs: `s_n`, the
+    /// spheres' normal relative velocity times their distance, declared positive (the
+    /// spheres approach). A sum that is a constant multiple of its definition (written in
+    /// the inputs, expanded) has the sign the domain gives it.
+    struct assumed_sign {
+        GiNaC::ex symbol;
+        GiNaC::ex definition;
+        domain range;
+    };
+    std::vector<assumed_sign> assumed{};
 };
+
+/// `e` as c times an abbreviation declared with a domain (assumptions::assumed), c a real
+/// number: c and the abbreviation; none when it is no such multiple.
+std::optional<std::pair<GiNaC::numeric, const assumptions::assumed_sign*>> assumed_multiple(const GiNaC::ex& e,
+                                                                                           const assumptions& given);
 
 /// `given` with an effort of `signs` for a try (see assumptions::effort).
 assumptions with_effort(const assumptions& given, std::size_t signs);

@@ -430,6 +430,19 @@ GiNaC::exmap symbol_table::abbreviations() const
     return map;
 }
 
+GiNaC::ex symbol_table::in_inputs(const GiNaC::ex& e) const
+{
+    const GiNaC::exmap map = abbreviations();
+    GiNaC::ex now = e;
+    for (int depth = 0; depth < 8; ++depth) {
+        const GiNaC::ex next = now.subs(map, GiNaC::subs_options::no_pattern);
+        if (next.is_equal(now))
+            break;
+        now = next;
+    }
+    return now;
+}
+
 const domain* symbol_table::domain_of(const GiNaC::ex& symbol) const
 {
     for (const quantity& q : quantities_)

@@ -75,6 +75,10 @@ public:
 
     /// Substitutions that expand every abbreviation into declared quantities.
     GiNaC::exmap abbreviations() const;
+    /// `e` with every abbreviation replaced by its definition, and those its definition
+    /// uses in turn, until only declared quantities are left (G_t = sqrt(G_t . G_t), each
+    /// G_t,i in r, g and d, d in r).
+    GiNaC::ex in_inputs(const GiNaC::ex& e) const;
     /// The dimensions the derivation's symbols may be given (mass, length, time, their
     /// familiar combinations and the derivation's own `[[dimension]]`s).
     dimension_names& dimension_words() { return dimension_words_; }
