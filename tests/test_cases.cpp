@@ -744,3 +744,31 @@ BOOST_AUTO_TEST_CASE(a_factor_that_divides_by_zero_is_no_argument)
     BOOST_TEST(c.parts[0].outcome.method.find("times the condition's") == std::string::npos,
                c.parts[0].outcome.method);
 }
+
+// A declared domain is an assumption only where the definition's own sign does not refute
+// it: k = b - 2 with b in [-1, 1] is negative, and declaring it positive is an error (the
+// definition is not checked under the assumption it makes). A root of a radicand that may
+// be negative is never a quantity of its own: w = sqrt(x - z) would make x - z a square.
+BOOST_AUTO_TEST_CASE(an_assumption_never_proves_its_own_definition)
+{
+    const std::string refuted = "id = \"t\"\ntitle = \"t\"\n"
+                                "[[symbol]]\nname = \"b\"\ndomain = \"[-1, 1]\"\n"
+                                "[[symbol]]\nname = \"k\"\ndomain = \"positive\"\ndefinition = \"b - 2\"\n"
+                                "[[symbol]]\nname = \"y\"\n[[step]]\ndefine = \"y\"\nas = \"k\"\n"
+                                "[[result]]\nname = \"y\"\n";
+    BOOST_TEST(message_for(refuted).find("'k' is declared positive but its definition") != std::string::npos,
+               message_for(refuted));
+
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\n[[symbol]]\nname = \"z\"\n"
+        "[[symbol]]\nname = \"k\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"mu\"\ndomain = \"nonnegative\"\n"
+        "[[symbol]]\nname = \"w\"\ndefinition = \"sqrt(x - z)\"\n"
+        "[[symbol]]\nname = \"y\"\n"
+        "[[step]]\ndefine = \"y\"\n"
+        "cases = [{ when = \"k <= mu\", as = \"k\" }, { when = \"k > mu\", as = \"mu\" }]\n"
+        "[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"not a square\"\nclaim = \"y*(x - z) >= 0\"\n");
+    BOOST_TEST(!check_named(d, "not a square").outcome.holds());
+}

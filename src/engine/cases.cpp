@@ -449,6 +449,19 @@ bool cannot_arise(const case_value& c, const symbol_table& symbols, const assump
     return f.strict ? !s.positive : (!s.positive && !s.zero);
 }
 
+// True when `e` is, as written, a sum of products of even powers and positive numbers
+// (r_x^2 + r_y^2, G_tx^2 + G_ty^2 + G_tz^2): >= 0 without expanding it.
+bool sum_of_squares(const GiNaC::ex& e)
+{
+    if (GiNaC::is_a<GiNaC::numeric>(e))
+        return !GiNaC::ex_to<GiNaC::numeric>(e).is_negative() && GiNaC::ex_to<GiNaC::numeric>(e).is_real();
+    if (GiNaC::is_a<GiNaC::power>(e))
+        return e.op(1).info(GiNaC::info_flags::even);
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e))
+        return std::all_of(e.begin(), e.end(), [](const GiNaC::ex& part) { return sum_of_squares(part); });
+    return false;
+}
+
 // Each square root that is an abbreviation's definition (d = sqrt(r.r), G_t = sqrt(G_t.G_t))
 // written as a quantity of its own, named as the abbreviation: a new symbol (the
 // abbreviation's own would be replaced by its definition again), >= 0, or > 0 where its
@@ -457,13 +470,17 @@ bool cannot_arise(const case_value& c, const symbol_table& symbols, const assump
 // expands the radicand's square (in space a polynomial of hundreds of terms).
 class radicals_named : public GiNaC::map_function {
 public:
-    explicit radicals_named(const symbol_table& symbols)
+    // Only roots of radicands proven >= 0 (a sum of squares): a radicand that may be
+    // negative, written as the square of its root, would be taken for >= 0.
+    radicals_named(const symbol_table& symbols, const assumptions& given)
     {
         for (const quantity& q : symbols.all()) {
             if (!q.definition)
                 continue;
             const GiNaC::ex inputs = symbols.in_inputs(*q.definition);
-            if (GiNaC::is_a<GiNaC::power>(inputs) && inputs.op(1).is_equal(GiNaC::numeric(1, 2)))
+            if (!GiNaC::is_a<GiNaC::power>(inputs) || !inputs.op(1).is_equal(GiNaC::numeric(1, 2)))
+                continue;
+            if (sum_of_squares(inputs.op(0)) || prove_sign(inputs.op(0), with_effort(given, 100)).sign.is_nonnegative())
                 roots_.push_back({GiNaC::expand(inputs.op(0)), q, GiNaC::symbol(q.name, q.latex), false});
         }
     }
@@ -538,7 +555,7 @@ std::optional<verdict> prove_with_roots_named(const GiNaC::ex& lhs, relation op,
                                               const case_value& c, const symbol_table& symbols,
                                               const assumptions& given)
 {
-    radicals_named named(symbols);
+    radicals_named named(symbols, given);
     case_value here = c;
     const GiNaC::ex l = named(lhs), r = named(rhs);
     here.lhs = named(c.lhs);

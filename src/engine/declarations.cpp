@@ -35,7 +35,11 @@ bool sign_allowed(const domain& range, const sign_set& proven)
 
 void check_definitions(const symbol_table& symbols, const spec::derivation& source, proof_cache& run)
 {
-    const assumptions declared = declared_assumptions(symbols, run);
+    // The definitions' signs under the inputs' domains alone: a definition is never
+    // checked against the assumption its own domain makes.
+    assumptions declared = declared_assumptions(symbols, run);
+    declared.assumed.clear();
+    declared.known = std::make_shared<worked_out>();
     for (const spec::symbol& declaration : source.symbols) {
         if (!declaration.definition)
             continue;

@@ -67,14 +67,14 @@ sign_set of_domain(const domain& d)
 GiNaC::ex factored_in(const GiNaC::ex& e, const assumptions& given)
 {
     const GiNaC::ex f = given.run ? factor_polynomial(e, *given.run) : factor_polynomial(e);
-    if (!f.is_equal(e) || given.assumed.empty() || has_radical(e) || !e.info(GiNaC::info_flags::polynomial))
+    if (!f.is_equal(e) || given.assumed.empty() || has_radical(e) || !e.info(GiNaC::info_flags::rational_polynomial))
         return f;
     GiNaC::ex rest = GiNaC::expand(e);
     if (!GiNaC::is_a<GiNaC::add>(rest))
         return f;
     GiNaC::ex taken = 1;
     for (const assumptions::assumed_sign& a : given.assumed) {
-        if (!GiNaC::is_a<GiNaC::add>(a.definition) || !a.definition.info(GiNaC::info_flags::polynomial))
+        if (!GiNaC::is_a<GiNaC::add>(a.definition) || !a.definition.info(GiNaC::info_flags::rational_polynomial))
             continue;
         GiNaC::ex quotient;
         while (GiNaC::is_a<GiNaC::add>(rest) && GiNaC::divide(rest, a.definition, quotient)) {
