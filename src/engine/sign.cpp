@@ -620,11 +620,13 @@ assumptions declared_assumptions(const symbol_table& symbols, proof_cache& run)
         }
         if (q.range.what == domain::kind::real)
             continue;
-        // The definition in the inputs: an abbreviation may be written with others.
-        GiNaC::ex inputs = symbols.in_inputs(*q.definition);
-        if (GiNaC::is_a<GiNaC::power>(inputs))
-            inputs = GiNaC::pow(GiNaC::expand(inputs.op(0)), inputs.op(1));
-        given.assumed.push_back({q.symbol, GiNaC::expand(inputs), q.range});
+        // The definition in the inputs (an abbreviation may be written with others),
+        // expanded; a root's radicand expanded under it, as assumed_multiple compares it.
+        const GiNaC::ex inputs = symbols.in_inputs(*q.definition);
+        given.assumed.push_back({q.symbol,
+                                 GiNaC::is_a<GiNaC::power>(inputs) ? GiNaC::pow(GiNaC::expand(inputs.op(0)), inputs.op(1))
+                                                                   : GiNaC::expand(inputs),
+                                 q.range});
     }
     return given;
 }
