@@ -333,11 +333,17 @@ BOOST_AUTO_TEST_CASE(a_comment_changes_nothing_and_a_changed_title_recomputes_on
     const run_result reordered = run("reordered", at);
     BOOST_TEST_REQUIRE(reordered.status == 0, reordered.output);
     BOOST_TEST(said(reordered.output, "output: 0 reused, 1 computed"), reordered.output);
+    // The derivations are kept by their files' bytes, lines and all (a derivation's messages
+    // name them): eq08's comments have it derived again, with the 11 derivations that use
+    // it (eq03, eq04, eq09, eq10, eq11, eq12, eq14, fn10, appA, wall_plane, wall_space, some
+    // through others); the 6 rough ones are those kept.
+    BOOST_TEST(said(reordered.output, "derivation: 6 reused, 12 computed"), reordered.output);
     BOOST_TEST(said(reordered.output, "kernel choice: [1-9][0-9]* reused, 0 computed"), reordered.output);
     const std::string errata = read(s.root / "reordered" / "errata.md");
     BOOST_TEST(errata.find("| Sec. IV |") < errata.find("| Abstract |"));
-    // A new title: derived again, the kernels' choice and the figures reused, the report
-    // compiled again; what is written is what a regeneration without a cache writes.
+    // A new title: derived again, with those that use it; the kernels' choice and the
+    // figures reused, the report compiled again; what is written is what a regeneration
+    // without a cache writes.
     std::string text = read(file);
     const std::size_t title = text.find("\ntitle = \"");
     BOOST_TEST_REQUIRE(title != std::string::npos);
@@ -346,11 +352,22 @@ BOOST_AUTO_TEST_CASE(a_comment_changes_nothing_and_a_changed_title_recomputes_on
     const run_result retitled = run("retitled", at);
     BOOST_TEST_REQUIRE(retitled.status == 0, retitled.output);
     BOOST_TEST(said(retitled.output, "output: 0 reused, 1 computed"), retitled.output);
+    BOOST_TEST(said(retitled.output, "derivation: 6 reused, 12 computed"), retitled.output);
     BOOST_TEST(said(retitled.output, "kernel choice: [1-9][0-9]* reused, 0 computed"), retitled.output);
     BOOST_TEST(said(retitled.output, "PDF: 3 reused, 1 computed"), retitled.output);
     BOOST_TEST_REQUIRE(run("uncached", "--no-cache").status == 0);
     BOOST_TEST((snapshot(s.root / "retitled") == snapshot(s.root / "uncached")));
     BOOST_TEST((snapshot(s.root / "retitled") != snapshot(s.root / "cold")));
+    // A derivation nothing uses: it alone is derived again.
+    const fs::path leaf = derivations / "rough_wall_space.toml";
+    text = read(leaf);
+    const std::size_t leaf_title = text.find("\ntitle = \"");
+    BOOST_TEST_REQUIRE(leaf_title != std::string::npos);
+    text.insert(leaf_title + 10, "Once more: ");
+    write(leaf, text);
+    const run_result leaf_retitled = run("leaf_retitled", at);
+    BOOST_TEST_REQUIRE(leaf_retitled.status == 0, leaf_retitled.output);
+    BOOST_TEST(said(leaf_retitled.output, "derivation: 17 reused, 1 computed"), leaf_retitled.output);
 }
 
 BOOST_AUTO_TEST_CASE(damaged_and_truncated_entries_are_computed_again_and_the_output_is_the_same)
@@ -372,6 +389,7 @@ BOOST_AUTO_TEST_CASE(damaged_and_truncated_entries_are_computed_again_and_the_ou
     BOOST_TEST_REQUIRE(r.status == 0, r.output);
     BOOST_TEST(said(r.output, "PDF: 0 reused, 4 computed \\(4 damaged"), r.output);
     BOOST_TEST(said(r.output, "kernel choice: 0 reused, ([1-9][0-9]*) computed \\(\\1 damaged"), r.output);
+    BOOST_TEST(said(r.output, "derivation: 0 reused, 18 computed \\(18 damaged"), r.output);
     BOOST_TEST((snapshot(s.root / "second") == cold_output()));
     // The entries were written again: the next run reuses everything.
     const run_result again = regenerate(s.root, s.root / "third", "--cache '" + cache.string() + "'");

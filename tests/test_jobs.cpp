@@ -81,9 +81,9 @@ std::map<std::string, std::string> hashes(const fs::path& root)
     return found;
 }
 
-verify::text_task task(const std::string& what, std::function<std::string()> run)
+engine::text_task task(const std::string& what, std::function<std::string()> run)
 {
-    return {what, {"derivations/d.toml", 7, 3}, std::move(run)};
+    return {what, {"derivations/d.toml", 7, 3}, std::move(run), 0, "choosing its forms", "choose them"};
 }
 
 bool said(const std::string& text, const std::string& pattern)
@@ -91,7 +91,7 @@ bool said(const std::string& text, const std::string& pattern)
     return std::regex_search(text, std::regex(pattern));
 }
 
-std::string what_is_thrown(const std::vector<verify::text_task>& tasks, unsigned jobs)
+std::string what_is_thrown(const std::vector<engine::text_task>& tasks, unsigned jobs)
 {
     try {
         pipeline::run_in_workers(tasks, jobs);
@@ -115,7 +115,7 @@ BOOST_AUTO_TEST_SUITE(test_jobs)
 BOOST_AUTO_TEST_CASE(workers_give_their_texts_in_the_tasks_order_whichever_finishes_first)
 {
     const std::string here = std::to_string(::getpid());
-    std::vector<verify::text_task> tasks;
+    std::vector<engine::text_task> tasks;
     // The first sleeps longest: the workers finish in the reverse of the tasks' order.
     for (int i = 0; i < 4; ++i)
         tasks.push_back(task("task " + std::to_string(i), [i] {
@@ -148,7 +148,7 @@ BOOST_AUTO_TEST_CASE(the_costliest_task_is_started_first_and_its_text_kept_in_it
         ::usleep(200000);
         return std::to_string(now.tv_sec * 1000000000LL + now.tv_nsec);
     };
-    std::vector<verify::text_task> tasks = {task("cheap", started), task("cheap too", started),
+    std::vector<engine::text_task> tasks = {task("cheap", started), task("cheap too", started),
                                             task("costly", started)};
     tasks[2].cost = 9;
     const std::vector<std::string> texts = pipeline::run_in_workers(tasks, 2);
@@ -160,7 +160,7 @@ BOOST_AUTO_TEST_CASE(the_costliest_task_is_started_first_and_its_text_kept_in_it
 BOOST_AUTO_TEST_CASE(one_job_runs_the_tasks_in_this_process_one_after_another)
 {
     std::string order;
-    std::vector<verify::text_task> tasks;
+    std::vector<engine::text_task> tasks;
     for (int i = 0; i < 3; ++i)
         tasks.push_back(task("task", [i, &order] {
             order += std::to_string(i);
@@ -182,7 +182,7 @@ BOOST_AUTO_TEST_CASE(a_tasks_error_comes_back_at_its_place_the_first_in_the_task
     };
     // The second task fails late, the third at once: the second's error is the one a run
     // without workers reports.
-    const std::vector<verify::text_task> tasks = {
+    const std::vector<engine::text_task> tasks = {
         task("first", [] { return std::string("fine"); }),
         task("second", fails_at({"derivations/b.toml", 12, 3}, "kernel 'b': cannot be computed", 300000)),
         task("third", fails_at({"derivations/c.toml", 4, 1}, "kernel 'c': cannot be computed", 0)),
@@ -199,7 +199,7 @@ BOOST_AUTO_TEST_CASE(a_tasks_error_comes_back_at_its_place_the_first_in_the_task
         BOOST_TEST(e.message() == "kernel 'b': cannot be computed");
     }
     // The first fails at once and the second would run for minutes: it is stopped.
-    const std::vector<verify::text_task> long_after = {
+    const std::vector<engine::text_task> long_after = {
         task("first", fails_at({"derivations/a.toml", 1, 1}, "kernel 'a': cannot be computed", 0)),
         task("second", [] {
             ::sleep(600);
@@ -208,7 +208,7 @@ BOOST_AUTO_TEST_CASE(a_tasks_error_comes_back_at_its_place_the_first_in_the_task
     };
     BOOST_TEST(what_is_thrown(long_after, 2) == "derivations/a.toml:1:1: error: kernel 'a': cannot be computed");
     // Another exception keeps its message.
-    const std::vector<verify::text_task> other = {
+    const std::vector<engine::text_task> other = {
         task("first", [] { return std::string("fine"); }),
         task("second", []() -> std::string { throw std::runtime_error("out of memory"); }),
     };
@@ -217,7 +217,7 @@ BOOST_AUTO_TEST_CASE(a_tasks_error_comes_back_at_its_place_the_first_in_the_task
 
 BOOST_AUTO_TEST_CASE(a_worker_that_dies_is_an_error_at_its_task_naming_how)
 {
-    const std::vector<verify::text_task> killed = {
+    const std::vector<engine::text_task> killed = {
         task("kernel 'fine'", [] { return std::string("fine"); }),
         task("kernel 'k'", []() -> std::string {
             ::raise(SIGKILL);
@@ -230,7 +230,7 @@ BOOST_AUTO_TEST_CASE(a_worker_that_dies_is_an_error_at_its_task_naming_how)
                           0) == 0u,
                what);
     BOOST_TEST(what.find("--jobs 1") != std::string::npos, what);
-    const std::vector<verify::text_task> quit = {
+    const std::vector<engine::text_task> quit = {
         task("kernel 'fine'", [] { return std::string("fine"); }),
         task("kernel 'k'", []() -> std::string { ::_exit(7); }),
     };
@@ -348,7 +348,38 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_fails_in_its_worker_is_reported_as_without_wo
     }
 }
 
-BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_kernel_and_the_output_kept)
+BOOST_AUTO_TEST_CASE(a_bad_file_derived_in_a_worker_is_reported_as_without_workers_and_the_output_kept)
+{
+    // Two files that use nothing, both wrong where they are derived (a claim naming an
+    // undeclared symbol), beside one that is right: derived three at a time with two
+    // workers, and one after another with one. Both report the first file's error alone.
+    const scratch s;
+    s.copy("eq08_inelastic_line.toml");
+    const auto bad = [](const std::string& id) {
+        std::string text = circle;
+        text.replace(text.find("\"p\""), 3, "\"" + id + "\"");
+        text.replace(text.find("A > 0"), 5, "A > B");
+        return text;
+    };
+    s.write("derivations/a.toml", bad("a"));
+    s.write("derivations/z.toml", bad("z"));
+    const auto before = impact::testing::everything_under(s.root / "output");
+    std::vector<std::string> said_by;
+    for (const char* jobs : {"1", "2"}) {
+        const run_result r =
+            s.impact(std::string("regenerate --no-cache --jobs ") + jobs + " --derivations derivations --output output");
+        BOOST_TEST(r.status == 2, r.output);
+        const std::vector<std::string> lines = lines_of(r.output);
+        BOOST_TEST_REQUIRE(lines.size() == 1u, r.output);
+        BOOST_TEST(said(lines[0], "^derivations/a\\.toml:[0-9]+:[0-9]+: error: .*'B'"), lines[0]);
+        said_by.push_back(lines[0]);
+        BOOST_TEST((impact::testing::everything_under(s.root / "output") == before), "--jobs " << jobs);
+        BOOST_TEST(!fs::exists(s.root / "output.impact-new"));
+    }
+    BOOST_TEST(said_by[0] == said_by[1]);
+}
+
+BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_derivation_or_kernel_and_the_output_kept)
 {
     const scratch s;
     s.copy_smooth_spheres();
@@ -367,8 +398,9 @@ BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_ke
     BOOST_TEST(r.output.find("status 2\n") != std::string::npos, r.output);
     const std::vector<std::string> lines = lines_of(r.output);
     BOOST_TEST_REQUIRE(lines.size() == 3u, r.output);
-    BOOST_TEST(said(lines[2], "^derivations/[a-z0-9_]+\\.toml:[0-9]+:[0-9]+: error: kernel '[a-z_]+': the worker "
-                              "process choosing its forms was killed by signal 9 "),
+    // The first worker is deriving a file (several derive at once) or choosing a kernel's forms.
+    BOOST_TEST(said(lines[2], "^derivations/[a-z0-9_]+\\.toml:[0-9]+:[0-9]+: error: (kernel|derivation) '[a-z_]+': the "
+                              "worker process (choosing its forms|deriving it) was killed by signal 9 "),
                lines[2]);
     BOOST_TEST((impact::testing::everything_under(s.root / "output") == before));
     BOOST_TEST(!fs::exists(s.root / "output.impact-new"));

@@ -21,6 +21,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include <unistd.h>
@@ -85,10 +87,26 @@ void print_kept(const pipeline::write_report& report, const fs::path& folder)
         fmt::print("impact: moved aside, in {}: {}\n", folder.string(), moved);
 }
 
+// The cache the options name, opened (a folder that is not Impact's cache is refused), or none.
+std::unique_ptr<cache::store> open_cache(const options& o)
+{
+    const std::uintmax_t limit = cache_limit(o);
+    if (const std::optional<fs::path> folder = cache_folder(o))
+        return std::make_unique<cache::store>(*folder, limit);
+    return nullptr;
+}
+
+// Derives one derivation and those it uses, each taken from the cache when its file and
+// uses are unchanged.
 engine::library derive_one(const options& o)
 {
+    const std::unique_ptr<cache::store> store = open_cache(o);
     const auto sources = engine::read_directory(o.derivations);
-    return engine::derive_all(sources, engine::resolve_id(sources, o.name));
+    const engine::derivation_store kept = pipeline::derivations_kept(store.get());
+    engine::library lib = engine::derive_all(sources, engine::resolve_id(sources, o.name), &kept);
+    if (store)
+        store->trim();
+    return lib;
 }
 
 int run_regenerate(const options& o)
@@ -148,14 +166,14 @@ int run_latex(const options& o)
 
 int run_kernels(const options& o)
 {
-    const std::uintmax_t limit = cache_limit(o);
     const fs::path folder = pipeline::checked_folder(o.output, o.derivations, pipeline::writing::beside);
     pipeline::check_writable(folder, {}, o.force);
     const std::optional<fs::path> cache_at = cache_folder(o);
-    std::optional<cache::store> store;
-    if (cache_at)
-        store.emplace(*cache_at, limit);
-    const engine::library lib = engine::derive_all(engine::read_directory(o.derivations));
+    const std::unique_ptr<cache::store> store = open_cache(o);
+    const engine::derivation_store kept = pipeline::derivations_kept(store.get());
+    const unsigned jobs = jobs_of(o);
+    const engine::library lib = engine::derive_all(engine::read_directory(o.derivations), "", &kept,
+                                                   jobs > 1 ? pipeline::worker_runner(jobs) : engine::task_runner{});
     if (!lib.all_hold()) {
         for (const std::string& failure : pipeline::failed_checks(lib))
             fmt::print(stderr, "{}\n", failure);
@@ -164,8 +182,8 @@ int run_kernels(const options& o)
     }
     std::vector<std::string> missed;
     pipeline::kernel_options how;
-    how.store = store ? &*store : nullptr;
-    how.jobs = jobs_of(o);
+    how.store = store.get();
+    how.jobs = jobs;
     const pipeline::file_set files = pipeline::generate_kernels(lib, &missed, how);
     if (!missed.empty()) {
         for (const std::string& m : missed)
@@ -224,16 +242,20 @@ int main(int argc, char** argv)
                             "folder of derivation files (default: derivations, or the folder of the file given)");
     };
 
-    // The cache and the worker processes, for the commands that choose kernel forms.
+    // The cache, for every command that derives.
     auto add_cache = [&](CLI::App* command) {
         CLI::Option* cache = command->add_option(
             "--cache", o.cache, "cache folder (default: $XDG_CACHE_HOME/impact, or ~/.cache/impact)");
         command->add_flag("--no-cache", o.no_cache, "compute everything; read and write no cache")->excludes(cache);
         command->add_option("--cache-size", o.cache_size,
                             "trim the cache to this size, e.g. 512M or 2G (default: $IMPACT_CACHE_SIZE, or 256M)");
+    };
+    // The worker processes, for the commands that derive every file and choose kernel forms.
+    auto add_jobs = [&](CLI::App* command) {
         command->add_option("-j,--jobs", o.jobs,
-                            "kernels whose forms are chosen at once, each in a worker process (default: the "
-                            "hardware's threads; 1: one after another, in Impact's own process)")
+                            "derivations, then kernels whose forms are chosen, worked on at once, each in a "
+                            "worker process (default: the hardware's threads; 1: one after another, in Impact's "
+                            "own process)")
             ->check(CLI::Range(1u, 4096u));
     };
 
@@ -246,17 +268,20 @@ int main(int argc, char** argv)
     regenerate->add_option("--output", o.output, "output folder, replaced only when every check holds")
         ->capture_default_str();
     add_cache(regenerate);
+    add_jobs(regenerate);
     regenerate->add_flag("--quiet", o.quiet, "no progress line on the terminal");
 
     CLI::App* derive = app.add_subcommand("derive", "derive one derivation and print its results and checks");
     add_derivations(derive);
     derive->add_option("derivation", o.name, "id or file of the derivation")->required();
+    add_cache(derive);
 
     CLI::App* latex = app.add_subcommand("latex", "print (or write) the LaTeX fragment of one derivation");
     add_derivations(latex);
     latex->add_option("derivation", o.name, "id or file of the derivation")->required();
     latex->add_option("-o,--output", o.file, "file to write instead of printing");
     latex->add_flag("--force", o.force, force_help);
+    add_cache(latex);
 
     CLI::App* kernels = app.add_subcommand("kernels", "write the C++ kernel headers");
     add_derivations(kernels);
@@ -264,6 +289,7 @@ int main(int argc, char** argv)
     kernels->add_flag("--force", o.force, force_help);
     kernels->add_flag("--timings", o.timings, "print how often the cache was used");
     add_cache(kernels);
+    add_jobs(kernels);
 
     simulate::command_options sim;
     CLI::App* simulation = app.add_subcommand(

@@ -50,6 +50,8 @@ public:
     std::string si_unit() const;
     /// The SI unit as factors and exponents: {"kg", 1}, {"m", 2}, {"s", -2}.
     std::vector<std::pair<std::string, GiNaC::numeric>> si_factors() const;
+    /// Each base and its exponent (none zero), by base name.
+    const std::map<std::string, GiNaC::numeric, std::less<>>& exponents() const { return exponents_; }
 
 private:
     std::map<std::string, GiNaC::numeric, std::less<>> exponents_;   ///< no zero exponents

@@ -1,5 +1,7 @@
 #include "engine/library.h"
 
+#include "engine/stored.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -55,7 +57,33 @@ library derive_folder(const std::filesystem::path& directory)
     return lib;
 }
 
-library derive_all(const std::vector<spec::derivation>& sources, const std::string& only)
+namespace {
+
+// The text a derivation is derived from: its file's path and bytes, then the texts of
+// those it uses (whose own keys are in `keys`).
+std::string key_of(const spec::derivation& s, const std::map<std::string, std::string>& keys)
+{
+    std::string key = fmt::format("{} {}\n{}{}\n", s.file.size(), s.contents.size(), s.file, s.contents);
+    for (const spec::use& u : s.uses) {
+        const std::string& used = keys.at(u.derivation.value);
+        key += fmt::format("uses {}\n{}", used.size(), used);
+    }
+    return key;
+}
+
+// Derives one file here. Each derivation has a cache of proofs of its own, so that what it
+// proves, and so what it writes, is the same whether those it uses were derived or kept,
+// here or in a worker.
+derivation derive_here(const spec::derivation& s, const derived_by_id& done)
+{
+    proof_cache run;
+    return derive(s, done, run);
+}
+
+} // namespace
+
+library derive_all(const std::vector<spec::derivation>& sources, const std::string& only,
+                   const derivation_store* kept, const task_runner& runner)
 {
     std::map<std::string, const spec::derivation*> by_id;
     for (const spec::derivation& s : sources) {
@@ -66,12 +94,10 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
 
     // Depth-first over [[use]]: each derivation after those it uses; a derivation met
     // again while still on the path is a cycle.
-    library lib;
-    // One cache for the run: a derivation meets again the polynomials of those it uses.
-    proof_cache run;
-    std::set<std::string> on_path;
+    std::vector<const spec::derivation*> order;
+    std::set<std::string> placed, on_path;
     std::function<void(const spec::derivation&)> visit = [&](const spec::derivation& s) {
-        if (lib.derived.count(s.id.value))
+        if (placed.count(s.id.value))
             return;
         on_path.insert(s.id.value);
         for (const spec::use& u : s.uses) {
@@ -86,19 +112,93 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
             visit(*used->second);
         }
         on_path.erase(s.id.value);
-        lib.derived.emplace(s.id.value, engine::derive(s, lib.derived, run));
-        lib.order.push_back(s.id.value);
+        placed.insert(s.id.value);
+        order.push_back(&s);
     };
-
     if (!only.empty()) {
         const auto found = by_id.find(only);
         if (found == by_id.end())
             throw error({}, fmt::format("no derivation with id '{}'", only));
         visit(*found->second);
-        return lib;
+    } else {
+        for (const spec::derivation& s : sources)
+            visit(s);
     }
-    for (const spec::derivation& s : sources)
-        visit(s);
+
+    std::map<std::string, std::string> keys;
+    for (const spec::derivation* s : order)
+        keys[s->id.value] = key_of(*s, keys);
+    library lib;
+    const auto keep = [&](const spec::derivation& s, const std::string& text) {
+        if (kept && kept->keep && !text.empty())
+            kept->keep(keys.at(s.id.value), text);
+    };
+    const auto add_here = [&](const spec::derivation& s) {
+        derivation d = derive_here(s, lib.derived);
+        if (kept && kept->keep)
+            keep(s, stored_derivation(d).value_or(""));
+        lib.derived.emplace(s.id.value, std::move(d));
+    };
+
+    // In rounds: those whose uses are all derived, each taken from `kept` or derived, in
+    // worker processes when there are several and a runner.
+    std::vector<const spec::derivation*> waiting = order;
+    while (!waiting.empty()) {
+        std::vector<const spec::derivation*> ready, later;
+        for (const spec::derivation* s : waiting) {
+            const bool uses_done = std::all_of(s->uses.begin(), s->uses.end(), [&](const spec::use& u) {
+                return lib.derived.count(u.derivation.value) != 0;
+            });
+            (uses_done ? ready : later).push_back(s);
+        }
+        waiting = std::move(later);
+        std::vector<const spec::derivation*> to_derive;
+        for (const spec::derivation* s : ready) {
+            std::optional<derivation> found;
+            if (kept && kept->find)
+                if (const std::optional<std::string> text = kept->find(keys.at(s->id.value)))
+                    found = restored_derivation(*text, *s);
+            if (found)
+                lib.derived.emplace(s->id.value, std::move(*found));
+            else
+                to_derive.push_back(s);
+        }
+        if (!runner || to_derive.size() < 2) {
+            for (const spec::derivation* s : to_derive)
+                add_here(*s);
+            continue;
+        }
+        std::vector<text_task> tasks;
+        for (const spec::derivation* s : to_derive)
+            tasks.push_back({fmt::format("derivation '{}'", s->id.value), s->id.where,
+                             [s, &lib] { return stored_derivation(derive_here(*s, lib.derived)).value_or(""); },
+                             s->contents.size(), "deriving it", "derive it"});
+        std::vector<std::string> texts;
+        try {
+            texts = runner(tasks, {});
+        } catch (...) {
+            // A file is bad input, or a worker died: everything left is derived here, one
+            // after another in the order, which throws what a run without workers throws
+            // (the first bad file's error); if nothing does, the worker's death is reported.
+            for (const spec::derivation* s : order)
+                if (!lib.derived.count(s->id.value))
+                    add_here(*s);
+            throw;
+        }
+        for (std::size_t i = 0; i < to_derive.size(); ++i) {
+            const spec::derivation& s = *to_derive[i];
+            // A derivation that cannot be kept as text comes back empty: derived here.
+            std::optional<derivation> d = texts[i].empty() ? std::nullopt : restored_derivation(texts[i], s);
+            if (!d) {
+                add_here(s);
+                continue;
+            }
+            keep(s, texts[i]);
+            lib.derived.emplace(s.id.value, std::move(*d));
+        }
+    }
+    for (const spec::derivation* s : order)
+        lib.order.push_back(s->id.value);
     return lib;
 }
 

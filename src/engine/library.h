@@ -6,10 +6,12 @@
 #pragma once
 
 #include "engine/derive.h"
+#include "engine/tasks.h"
 #include "spec/derivation.h"
 #include "spec/outline.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,8 +38,23 @@ std::vector<spec::derivation> read_directory(const std::filesystem::path& direct
 /// The derivation files of a folder (`*.toml`, regular files), sorted by path.
 std::vector<std::filesystem::path> derivation_files(const std::filesystem::path& directory);
 
-/// Derives `sources` in dependency order; with `only`, just that id and what it uses.
-library derive_all(const std::vector<spec::derivation>& sources, const std::string& only = "");
+/// Derivations kept between runs (the pipeline's cache, src/cache/store.h): `find` gives
+/// the text kept for a key, if any, and `keep` keeps one. A derivation's key is the text of
+/// what it is derived from: its file's path and bytes, and the keys of the derivations it
+/// uses (engine/stored.h writes and reads the text).
+struct derivation_store {
+    std::function<std::optional<std::string>(const std::string& key)> find;
+    std::function<void(const std::string& key, const std::string& text)> keep;
+};
+
+/// Derives `sources` in dependency order; with `only`, just that id and what it uses. With
+/// `kept`, a derivation whose file and uses are unchanged is taken from it (the same
+/// derivation), and each one derived is kept in it. With a `runner`, derivations that do
+/// not use one another are derived as its tasks (in worker processes), each sending back
+/// its text (engine/stored.h): the library is the one a run without it derives, and a bad
+/// file throws the same error.
+library derive_all(const std::vector<spec::derivation>& sources, const std::string& only = "",
+                   const derivation_store* kept = nullptr, const task_runner& runner = {});
 
 /// Every derivation of a folder (read_directory, derive_all), with the paper's order of
 /// places that the folder's `paper_order.txt` gives (spec::read_paper_outline).

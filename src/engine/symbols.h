@@ -95,6 +95,7 @@ public:
     const term_order& order() const;
 
 private:
+    friend class derivation_codec;   // keeps a derivation between runs (engine/stored.h)
     std::vector<quantity> quantities_;
     dimension_names dimension_words_;
     GiNaC::symtab table_;

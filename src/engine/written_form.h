@@ -93,6 +93,7 @@ public:
 
 private:
     friend class written_reader;
+    friend class derivation_codec;   // keeps a derivation between runs (engine/stored.h)
     struct sum {
         GiNaC::ex value;
         std::vector<GiNaC::ex> terms;

@@ -73,6 +73,20 @@ std::optional<std::string> output_key(const fs::path& derivations, const std::op
     return key;
 }
 
+} // namespace
+
+engine::derivation_store derivations_kept(cache::store* store)
+{
+    if (!store)
+        return {};
+    // Keyed by the executable too: another build of Impact may prove otherwise.
+    const auto full = [](const std::string& key) { return cache::program_fingerprint() + "\n" + key; };
+    return {[store, full](const std::string& key) { return store->get("derivation", full(key)); },
+            [store, full](const std::string& key, const std::string& text) { store->put("derivation", full(key), text); }};
+}
+
+namespace {
+
 // Files as one text: for each, its path's and contents' lengths, then both.
 std::string packed(const file_set& files)
 {
@@ -160,10 +174,10 @@ std::map<std::string, cache::counts> counts_since(const std::map<std::string, ca
 
 namespace {
 
-// The worker processes to measure kernels in, when more than one at once.
-verify::task_runner runner_for(unsigned jobs)
+// The worker processes to derive files and measure kernels in, when more than one at once.
+engine::task_runner runner_for(unsigned jobs)
 {
-    return jobs > 1 ? worker_runner(jobs) : verify::task_runner{};
+    return jobs > 1 ? worker_runner(jobs) : engine::task_runner{};
 }
 
 } // namespace
@@ -313,7 +327,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
                 return result;
             }
     shown.say("derivations", "deriving and proving");
-    library lib = engine::derive_all(engine::read_directory(derivations));
+    const engine::derivation_store kept = derivations_kept(store ? &*store : nullptr);
+    library lib = engine::derive_all(engine::read_directory(derivations), "", &kept, runner_for(options.jobs));
     lib.outline = outline;
     shown.done("derivations");
     clock.lap("derivations with their checks");
@@ -337,7 +352,11 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     // Compiled in a process beside this one (workers.h says why not a thread), which sends
     // back the PDFs, its time and its use of the cache.
     cache::store* const shared = store ? &*store : nullptr;
-    beside report_process(verify::text_task{"the report", {"output/report.pdf", 0, 0}, [&] {
+    engine::text_task compile;
+    compile.what = "the report";
+    compile.where = {"output/report.pdf", 0, 0};
+    compile.doing = "compiling it";
+    compile.run = [&] {
         const auto began = std::chrono::steady_clock::now();
         const std::map<std::string, cache::counts> before = shared ? shared->statistics() : std::map<std::string, cache::counts>{};
         report::compile_options compiling;
@@ -346,7 +365,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
         return report_result{made, shared ? counts_since(before, shared->statistics()) : std::map<std::string, cache::counts>{},
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()}
             .text();
-    }});
+    };
+    beside report_process(std::move(compile));
     shown.say("report", "compiling the figures and the report");
     const std::vector<std::string> missed =
         add_kernels(lib, files, clock, kernel_options{shared, options.jobs}, &shown);

@@ -38,6 +38,10 @@ struct kernel_options {
 file_set generate_kernels(const library& lib, std::vector<std::string>* missed = nullptr,
                           const kernel_options& how = {});
 
+/// The cache as the engine keeps derivations in it (engine::derivation_store), each keyed
+/// by Impact's executable and what it is derived from; with no store, none kept.
+engine::derivation_store derivations_kept(cache::store* store);
+
 /// One line for each check that failed: `file:line:column: error: check failed: id: name: residual r`.
 std::vector<std::string> failed_checks(const library& lib);
 
@@ -56,7 +60,7 @@ struct regenerate_options {
     std::optional<std::filesystem::path> cache;       ///< the cache folder (src/cache/store.h), or none
     std::uintmax_t cache_size = cache::default_limit; ///< the cache trimmed to this many bytes
     bool progress = false;                            ///< a progress line on standard error
-    unsigned jobs = 1;                                ///< kernels whose forms are chosen at once
+    unsigned jobs = 1;                                ///< derivations, then kernels' forms, worked on at once
 };
 
 /// One line a kind of cache entry: `kernel choice: 12 reused, 0 computed (0 damaged)`.
@@ -72,12 +76,14 @@ std::vector<std::string> cache_summary(const std::optional<std::filesystem::path
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
                         bool force = false);
 
-/// The same, with a cache: the choice of kernel forms and the PDFs are taken from it
-/// when what they depend on is unchanged, and computed and kept in it otherwise (the
-/// files written are the same bytes either way). The report is compiled beside the
-/// choice of kernel forms, and with `jobs` above 1 the kernels' forms are chosen in worker
-/// processes, that many at once (the output the same bytes). A cache folder that is a file, or holds what is not Impact's,
-/// throws `impact::error` before anything is derived or written.
+/// The same, with a cache: each derivation (by its file and those it uses), the choice of
+/// kernel forms and the PDFs are taken from it when what they depend on is unchanged, and
+/// computed and kept in it otherwise (the files written are the same bytes either way).
+/// The report is compiled beside the choice of kernel forms, and with `jobs` above 1 the
+/// derivations that do not use one another are derived, and the kernels' forms chosen, in
+/// worker processes, that many at once (the output the same bytes). A cache folder that is
+/// a file, or holds what is not Impact's, throws `impact::error` before anything is derived
+/// or written.
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
                         const regenerate_options& options);
 

@@ -64,7 +64,7 @@ bool write_all(int fd, const std::string& bytes)
 }
 
 // The child's side: runs the task and sends what came of it.
-[[noreturn]] void be_worker(const verify::text_task& task, int fd)
+[[noreturn]] void be_worker(const engine::text_task& task, int fd)
 {
     std::string message;
     try {
@@ -90,7 +90,7 @@ struct outcome {
 
 // `process` names the child in a message about its death ("the worker process choosing
 // its forms"), and `advice` follows it.
-outcome read_outcome(const verify::text_task& task, const std::string& bytes, int status,
+outcome read_outcome(const engine::text_task& task, const std::string& bytes, int status,
                      const std::string& process, const std::string& advice = "")
 {
     auto died = [&](const std::string& how) {
@@ -147,7 +147,7 @@ struct crew {
 };
 
 // Forks a worker for `task`; nothing when the system refuses a process or a pipe.
-std::optional<worker> start(const verify::text_task& task, std::size_t index)
+std::optional<worker> start(const engine::text_task& task, std::size_t index)
 {
     int fds[2];
     // Close-on-exec: a pdflatex the report's thread starts meanwhile does not hold the
@@ -179,7 +179,7 @@ unsigned default_jobs()
     return std::max(1u, std::thread::hardware_concurrency());
 }
 
-std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& tasks, unsigned jobs,
+std::vector<std::string> run_in_workers(const std::vector<engine::text_task>& tasks, unsigned jobs,
                                         const std::function<void()>& finished)
 {
     std::vector<std::string> texts(tasks.size());
@@ -253,8 +253,8 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
             while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
             }
             outcomes[w.task] =
-                read_outcome(tasks[w.task], w.bytes, status, "the worker process choosing its forms",
-                             " (run again with --jobs 1 to choose them in Impact's own process)");
+                read_outcome(tasks[w.task], w.bytes, status, "the worker process " + tasks[w.task].doing,
+                             " (run again with --jobs 1 to " + tasks[w.task].instead + " in Impact's own process)");
             if (outcomes[w.task].failed)
                 first_failure = std::min(first_failure, w.task);
             workers.running.erase(workers.running.begin() + static_cast<std::ptrdiff_t>(i));
@@ -285,7 +285,7 @@ std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& ta
     return texts;
 }
 
-beside::beside(verify::text_task task) : task_(std::move(task))
+beside::beside(engine::text_task task) : task_(std::move(task))
 {
     result_ = std::tmpfile();
     if (!result_)
@@ -334,9 +334,9 @@ std::string beside::get()
     return std::move(o.text);
 }
 
-verify::task_runner worker_runner(unsigned jobs)
+engine::task_runner worker_runner(unsigned jobs)
 {
-    return [jobs](const std::vector<verify::text_task>& tasks, const std::function<void()>& finished) {
+    return [jobs](const std::vector<engine::text_task>& tasks, const std::function<void()>& finished) {
         return run_in_workers(tasks, jobs, finished);
     };
 }

@@ -20,7 +20,7 @@
 
 #include "engine/forked.h"
 #include "spec/error.h"
-#include "verify/choice.h"
+#include "engine/tasks.h"
 
 #include <sys/types.h>
 
@@ -44,11 +44,11 @@ unsigned default_jobs();
 /// as a run of one task after another would have; workers still running after it are
 /// stopped. With `jobs` 1 or a single task, the tasks run here, one after another;
 /// otherwise the costliest (`text_task::cost`) are started first.
-std::vector<std::string> run_in_workers(const std::vector<verify::text_task>& tasks, unsigned jobs,
+std::vector<std::string> run_in_workers(const std::vector<engine::text_task>& tasks, unsigned jobs,
                                         const std::function<void()>& finished = {});
 
 /// `run_in_workers` with `jobs`, as plan_kernels takes it.
-verify::task_runner worker_runner(unsigned jobs);
+engine::task_runner worker_runner(unsigned jobs);
 
 /// Held by Impact's threads (the progress line's painter) while they run anything that
 /// could take a lock a forked child would need, and around every fork() (the engine's
@@ -62,7 +62,7 @@ using engine::fork_lock;
 /// when this is destroyed (the parent stopped on an error) is killed and waited for.
 class beside {
 public:
-    beside(verify::text_task task);
+    beside(engine::text_task task);
     ~beside();
     beside(const beside&) = delete;
     beside& operator=(const beside&) = delete;
@@ -73,7 +73,7 @@ public:
     std::string get();
 
 private:
-    verify::text_task task_;
+    engine::text_task task_;
     pid_t pid_ = -1;
     std::FILE* result_ = nullptr;
 };

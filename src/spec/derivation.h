@@ -214,6 +214,7 @@ struct use {
 /// One derivation file.
 struct derivation {
     std::string file;              ///< path as given, used in messages and banners
+    std::string contents;          ///< the file's bytes: what a derivation kept between runs is keyed by
     text id;
     text title;
     std::optional<text> paper;

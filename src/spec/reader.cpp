@@ -519,6 +519,7 @@ derivation parse_derivation(const std::string& contents, const std::string& file
     table_reader top(table, file, "the derivation");
     derivation d;
     d.file = file;
+    d.contents = contents;
     d.id = top.required_string("id");
     check_id(d.id);
     d.title = top.required_string("title");

@@ -590,7 +590,8 @@ std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* 
             // Its cost guessed from the text of everything it measures (its forms, their size).
             const std::size_t cost = p.key.empty() ? choice_key(*p.kernel, *p.order).size() : p.key.size();
             tasks.push_back({fmt::format("kernel '{}'", p.kernel->name), p.kernel->where,
-                             [&p] { return encode_choice(plan_kernel(*p.kernel, *p.order), *p.order); }, cost});
+                             [&p] { return encode_choice(plan_kernel(*p.kernel, *p.order), *p.order); }, cost,
+                             "choosing its forms", "choose them"});
         }
         const std::vector<std::string> texts = runner(tasks, one_done);
         for (std::size_t t = 0; t < to_measure.size(); ++t) {

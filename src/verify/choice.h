@@ -96,19 +96,9 @@ kernel_plan fast_form(const kernel_plan& plan);
 /// Whether the fast form is the accurate one: every component's fastest candidate its chosen one.
 bool fast_is_accurate(const kernel_plan& plan);
 
-/// A piece of work whose result is text, so that it may run in another process.
-struct text_task {
-    std::string what;              ///< e.g. "kernel 'collide_line'", for a worker that dies
-    source_location where;         ///< where that is in a derivation file
-    std::function<std::string()> run;
-    std::size_t cost = 0;          ///< a guess at its work: the costliest are started first
-};
-
-/// Runs every task (perhaps several at once, in worker processes) and gives their texts
-/// in the tasks' order, calling `finished()` after each; a task's `impact::error` is
-/// thrown as it is, that of the first failing task in their order.
-using task_runner =
-    std::function<std::vector<std::string>(const std::vector<text_task>&, const std::function<void()>& finished)>;
+/// Work whose result is text (engine/tasks.h): a kernel's forms measured in another process.
+using engine::task_runner;
+using engine::text_task;
 
 /// Every kernel's plan, derivation by derivation in the library's order, each kernel's
 /// fixed spheres' kernels (`engine::kernel::limits`) right after it.

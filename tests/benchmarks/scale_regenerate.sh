@@ -9,12 +9,13 @@
 #   warm     again, nothing changed;
 #   comment  after a comment is added to one derivation file;
 #   change   after one variant's title and one of its kernels' names change: only that
-#            kernel's choice and the report should be computed again (the cache lines say).
+#            derivation, that kernel's choice and the report should be computed again (the
+#            cache lines say).
 # Each size is measured with each number of worker processes in JOBS (default "1 2":
-# `--jobs 1`, the kernels' forms chosen one after another in Impact's process, and
-# `--jobs 2`, two kernels at once in worker processes), each with its own empty cache;
-# the columns kernels_s and derive_s are the cold run's choice of kernel forms and the
-# warm run's derivations, from --timings.
+# `--jobs 1`, the files derived and the kernels' forms chosen one after another in Impact's
+# process, and `--jobs 2`, two at once in worker processes), each with its own empty cache;
+# the columns kernels_s and derive_s are the cold run's choice of kernel forms and its
+# derivations, from --timings.
 # A variant's kernels draw the samples of the kernel they copy (samples are seeded by a
 # kernel's inputs and outputs, not its name), so every variant is measured and verified
 # like its original, and a folder of any size regenerates.
@@ -72,8 +73,8 @@ for n in "${sizes[@]}"; do
     args=(--jobs "$jobs" --derivations "$d" --output "$scratch/out$n-j$jobs" --cache "$scratch/cache$n-j$jobs")
     cold=$(timed "${args[@]}")
     kernels=$(stage 'kernel forms chosen')
-    warm=$(timed "${args[@]}")
     derive=$(stage 'derivations with their checks')
+    warm=$(timed "${args[@]}")
     echo "# a comment added by the benchmark" >> "$d/eq08_inelastic_line.toml"
     comment=$(timed "${args[@]}")
     changed=$(grep -l '^\[\[kernel\]\]' "$d"/*_v1.toml 2>/dev/null | head -1 || true)
@@ -82,7 +83,7 @@ for n in "${sizes[@]}"; do
     awk '/^\[\[kernel\]\]/ { k = 1 } k && /^name = "/ { sub(/"$/, "_changed\""); k = 0 } { print }' "$changed" > "$scratch/t" &&
       mv "$scratch/t" "$changed"
     change=$(timed "${args[@]}")
-    cache=$(grep -E 'cache: (PDF|kernel choice):' "$scratch/last" | sed 's/^impact: cache: //; s/ (0 damaged, computed again)//' |
+    cache=$(grep -E 'cache: (derivation|PDF|kernel choice):' "$scratch/last" | sed 's/^impact: cache: //; s/ (0 damaged, computed again)//' |
       tr '\n' ';' | sed 's/;$//; s/;/; /g')
     printf '%6d %4d %9.2f %9.2f %8.2f %9.2f %7.3f %10.2f %7.3f %9.2f %7.3f  %s\n' "$files" "$jobs" "$cold" "$kernels" \
       "$derive" "$warm" "$(echo "$warm / $cold" | bc -l)" "$comment" "$(echo "$comment / $cold" | bc -l)" "$change" \

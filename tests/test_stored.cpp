@@ -1,0 +1,163 @@
+// Derivations kept between runs (engine/stored.h): a derivation restored from its text is
+// the one derived (what every emitter prints from it, and every kernel form, is the same),
+// for derivation files that are not the paper's; the library takes a derivation from the
+// store only when its file and those it uses are unchanged; a text that is not one Impact
+// wrote is never trusted.
+#define BOOST_TEST_MODULE test_stored
+#include <boost/test/unit_test.hpp>
+
+#include "emit/json.h"
+#include "emit/latex.h"
+#include "engine/library.h"
+#include "engine/stored.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace impact;
+
+namespace {
+
+// A store in memory that counts what it is asked.
+struct memory_store {
+    std::map<std::string, std::string> texts;
+    std::size_t found = 0;
+    std::size_t kept = 0;
+
+    engine::derivation_store handle()
+    {
+        return {[this](const std::string& key) -> std::optional<std::string> {
+                    const auto it = texts.find(key);
+                    if (it == texts.end())
+                        return std::nullopt;
+                    ++found;
+                    return it->second;
+                },
+                [this](const std::string& key, const std::string& text) {
+                    ++kept;
+                    texts[key] = text;
+                }};
+    }
+};
+
+// The files of the tests' folders that are not the paper's, and the rough spheres in the
+// plane with the derivation they use (cases, kernels, a fixed sphere's limits).
+std::vector<spec::derivation> sources()
+{
+    std::vector<spec::derivation> all;
+    for (const char* folder : {"tests/examples", "tests/cases"})
+        for (const fs::path& file : engine::derivation_files(fs::path(IMPACT_SOURCE_DIR) / folder))
+            all.push_back(spec::read_derivation(file.string()));
+    for (const char* file : {"derivations/rough_sticking.toml", "derivations/rough_plane.toml"})
+        all.push_back(spec::read_derivation(std::string(IMPACT_SOURCE_DIR "/") + file));
+    return all;
+}
+
+// Every kernel form of a derivation as text, the fixed spheres' kernels' too.
+void add_forms(const engine::kernel& k, const engine::symbol_table& symbols, std::vector<std::string>& out)
+{
+    out.push_back(k.name);
+    for (const engine::kernel_output& o : k.outputs)
+        for (const auto& forms : o.candidates)
+            for (const engine::form& f : forms)
+                out.push_back(o.member + " " + f.label + " " + symbols.text(f.value));
+    for (const auto& [symbol, value] : k.lets)
+        out.push_back(symbols.text(symbol) + " = " + symbols.text(value));
+    for (const engine::kernel& fixed : k.limits)
+        add_forms(fixed, symbols, out);
+}
+
+// What the emitters print from a library, and its kernels' forms.
+std::vector<std::string> printed(const engine::library& lib)
+{
+    std::vector<std::string> out{emit::derivations_json(lib.in_order())};
+    for (const engine::derivation* d : lib.in_order()) {
+        out.push_back(emit::latex_fragment(*d));
+        for (const engine::kernel& k : d->kernels)
+            add_forms(k, d->symbols, out);
+    }
+    return out;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(a_restored_derivation_prints_what_the_derived_one_prints)
+{
+    const std::vector<spec::derivation> files = sources();
+    memory_store store;
+    const engine::derivation_store handle = store.handle();
+    const engine::library derived = engine::derive_all(files, "", &handle);
+    BOOST_TEST(store.found == 0u);
+    BOOST_TEST(store.kept == files.size());
+    const engine::library restored = engine::derive_all(files, "", &handle);
+    BOOST_TEST(store.found == files.size());
+    BOOST_TEST(store.kept == files.size());
+    const std::vector<std::string> before = printed(derived), after = printed(restored);
+    BOOST_TEST_REQUIRE(before.size() == after.size());
+    for (std::size_t i = 0; i < before.size(); ++i)
+        BOOST_TEST(before[i] == after[i]);
+    // The restored derivations hold symbols of their own, as a derivation does.
+    const engine::derivation& a = derived.derived.at("rough_plane");
+    const engine::derivation& b = restored.derived.at("rough_plane");
+    BOOST_TEST(!a.symbols.find("mu")->symbol.is_equal(b.symbols.find("mu")->symbol));
+    BOOST_TEST(b.all_hold());
+    BOOST_TEST(b.checks.size() == a.checks.size());
+}
+
+BOOST_AUTO_TEST_CASE(a_changed_file_is_derived_again_with_those_that_use_it_and_no_other)
+{
+    std::vector<spec::derivation> files = sources();
+    memory_store store;
+    const engine::derivation_store handle = store.handle();
+    engine::derive_all(files, "", &handle);
+    const std::size_t all = files.size();
+    // rough_plane uses rough_sticking: a space added to rough_sticking's file changes both.
+    for (spec::derivation& s : files)
+        if (s.id.value == "rough_sticking")
+            s.contents += " ";
+    store.found = store.kept = 0;
+    engine::derive_all(files, "", &handle);
+    BOOST_TEST(store.found == all - 2);
+    BOOST_TEST(store.kept == 2u);
+    // rough_plane alone.
+    for (spec::derivation& s : files)
+        if (s.id.value == "rough_plane")
+            s.contents += " ";
+    store.found = store.kept = 0;
+    engine::derive_all(files, "", &handle);
+    BOOST_TEST(store.found == all - 1);
+    BOOST_TEST(store.kept == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_text_impact_did_not_write_is_never_trusted)
+{
+    const spec::derivation source = spec::read_derivation(IMPACT_SOURCE_DIR "/tests/examples/spring.toml");
+    const engine::derivation d = engine::derive(source, {});
+    const std::optional<std::string> text = engine::stored_derivation(d);
+    BOOST_TEST_REQUIRE(text.has_value());
+    BOOST_TEST(engine::restored_derivation(*text, source).has_value());
+    BOOST_TEST(!engine::restored_derivation("", source).has_value());
+    BOOST_TEST(!engine::restored_derivation("impact derivation 0\n" + text->substr(text->find('\n') + 1), source));
+    BOOST_TEST(!engine::restored_derivation(text->substr(0, text->size() / 2), source).has_value());
+    BOOST_TEST(!engine::restored_derivation(text->substr(0, text->size() - 1), source).has_value());
+    // The first expression written, a sum of an expression past the end of those written.
+    const std::size_t body = text->find('\n') + 1;
+    nlohmann::json wrong = nlohmann::json::parse(text->substr(body));
+    wrong["nodes"][0] = {"+", 123456789};
+    BOOST_TEST(!engine::restored_derivation(text->substr(0, body) + wrong.dump(), source).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(a_floating_point_number_is_not_kept)
+{
+    // A derivation holding 0.25 (a float, not 1/4) cannot be kept exactly: it is not kept.
+    const spec::derivation source = spec::read_derivation(IMPACT_SOURCE_DIR "/tests/examples/spring.toml");
+    engine::derivation d = engine::derive(source, {});
+    BOOST_TEST_REQUIRE(!d.results.empty());
+    d.results.front().display = d.results.front().display + GiNaC::numeric(0.25);
+    BOOST_TEST(!engine::stored_derivation(d).has_value());
+}
