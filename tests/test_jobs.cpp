@@ -350,33 +350,39 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_fails_in_its_worker_is_reported_as_without_wo
 
 BOOST_AUTO_TEST_CASE(a_bad_file_derived_in_a_worker_is_reported_as_without_workers_and_the_output_kept)
 {
-    // Two files that use nothing, both wrong where they are derived (a claim naming an
-    // undeclared symbol), beside one that is right: derived three at a time with two
-    // workers, and one after another with one. Both report the first file's error alone.
+    // a.toml uses the collision on a line (eq08) and c.toml uses nothing; both are wrong
+    // where they are derived (a claim naming an undeclared symbol). In file order, a comes
+    // first (after eq08, which it uses): every run reports a's error alone, whether c is
+    // derived beside eq08 in a worker (--jobs 2) or after a (--jobs 1), and whether eq08 is
+    // derived or taken from the cache.
     const scratch s;
     s.copy("eq08_inelastic_line.toml");
-    const auto bad = [](const std::string& id) {
+    const auto bad = [](const std::string& id, const std::string& use) {
         std::string text = circle;
         text.replace(text.find("\"p\""), 3, "\"" + id + "\"");
         text.replace(text.find("A > 0"), 5, "A > B");
+        text.replace(text.find("[[symbol]]"), 0, use);
         return text;
     };
-    s.write("derivations/a.toml", bad("a"));
-    s.write("derivations/z.toml", bad("z"));
+    s.write("derivations/a.toml", bad("a", "[[use]]\nderivation = \"inelastic_line\"\nresults = [\"vMp = v_M_after\"]\n"
+                                           "[[symbol]]\nname = \"vMp\"\n"));
+    s.write("derivations/c.toml", bad("c", ""));
     const auto before = impact::testing::everything_under(s.root / "output");
     std::vector<std::string> said_by;
-    for (const char* jobs : {"1", "2"}) {
+    for (const char* how : {"--no-cache --jobs 1", "--no-cache --jobs 2", "--cache cache --jobs 1", "--cache cache --jobs 2"}) {
         const run_result r =
-            s.impact(std::string("regenerate --no-cache --jobs ") + jobs + " --derivations derivations --output output");
+            s.impact(std::string("regenerate ") + how + " --derivations derivations --output output");
         BOOST_TEST(r.status == 2, r.output);
         const std::vector<std::string> lines = lines_of(r.output);
         BOOST_TEST_REQUIRE(lines.size() == 1u, r.output);
         BOOST_TEST(said(lines[0], "^derivations/a\\.toml:[0-9]+:[0-9]+: error: .*'B'"), lines[0]);
         said_by.push_back(lines[0]);
-        BOOST_TEST((impact::testing::everything_under(s.root / "output") == before), "--jobs " << jobs);
+        BOOST_TEST((impact::testing::everything_under(s.root / "output") == before), how);
         BOOST_TEST(!fs::exists(s.root / "output.impact-new"));
     }
     BOOST_TEST(said_by[0] == said_by[1]);
+    BOOST_TEST(said_by[0] == said_by[2]);
+    BOOST_TEST(said_by[0] == said_by[3]);
 }
 
 BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_derivation_or_kernel_and_the_output_kept)

@@ -150,6 +150,36 @@ BOOST_AUTO_TEST_CASE(a_text_impact_did_not_write_is_never_trusted)
     nlohmann::json wrong = nlohmann::json::parse(text->substr(body));
     wrong["nodes"][0] = {"+", 123456789};
     BOOST_TEST(!engine::restored_derivation(text->substr(0, body) + wrong.dump(), source).has_value());
+    // ... or a sum of itself.
+    wrong["nodes"][0] = {"+", 0, 0};
+    BOOST_TEST(!engine::restored_derivation(text->substr(0, body) + wrong.dump(), source).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(relations_come_back_with_their_sides_as_they_were)
+{
+    // GiNaC takes m == k for k == m, and m < k for k > m: each comes back as it was written.
+    const spec::derivation source = spec::read_derivation(IMPACT_SOURCE_DIR "/tests/examples/spring.toml");
+    engine::derivation d = engine::derive(source, {});
+    const GiNaC::ex m = d.symbols.find("m")->symbol, k = d.symbols.find("k")->symbol;
+    const std::vector<GiNaC::ex> relations{k == m, m == k, k > m, m < k, m <= k, k >= m};
+    for (const GiNaC::ex& r : relations)
+        d.givens.push_back({"r", r, "", "", {}, {}});
+    const std::optional<std::string> text = engine::stored_derivation(d);
+    BOOST_TEST_REQUIRE(text.has_value());
+    const std::optional<engine::derivation> back = engine::restored_derivation(*text, source);
+    BOOST_TEST_REQUIRE(back.has_value());
+    const std::size_t first = back->givens.size() - relations.size();
+    const std::vector<std::string> expected{"k == m", "m == k", "k > m", "m < k", "m <= k", "k >= m"};
+    for (std::size_t i = 0; i < relations.size(); ++i) {
+        const GiNaC::ex& r = back->givens[first + i].relation;
+        const std::string op = r.info(GiNaC::info_flags::relation_equal)              ? "=="
+                               : r.info(GiNaC::info_flags::relation_greater)            ? ">"
+                               : r.info(GiNaC::info_flags::relation_less)               ? "<"
+                               : r.info(GiNaC::info_flags::relation_less_or_equal)      ? "<="
+                               : r.info(GiNaC::info_flags::relation_greater_or_equal)   ? ">="
+                                                                                        : "?";
+        BOOST_TEST(back->symbols.text(r.lhs()) + " " + op + " " + back->symbols.text(r.rhs()) == expected[i]);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_floating_point_number_is_not_kept)

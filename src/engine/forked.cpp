@@ -274,4 +274,10 @@ pid_t factoring_process()
     return factorer.owner == ::getpid() ? factorer.pid : -1;
 }
 
+void stop_factoring()
+{
+    if (factorer.fd >= 0 && factorer.owner == ::getpid())
+        stop(factorer, true);
+}
+
 } // namespace impact::engine

@@ -47,4 +47,8 @@ std::optional<GiNaC::ex> factor_in_child(const GiNaC::ex& e, unsigned options, u
 /// The process id of this process's factoring child, or -1 when it has none.
 pid_t factoring_process();
 
+/// Stops and reaps this process's factoring child, if it started one: what a process that
+/// leaves with _exit() does first (a worker), since the stop at exit does not run there.
+void stop_factoring();
+
 } // namespace impact::engine

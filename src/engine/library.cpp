@@ -80,6 +80,53 @@ derivation derive_here(const spec::derivation& s, const derived_by_id& done)
     return derive(s, done, run);
 }
 
+// In rounds: those whose uses are all derived, each taken from the store or, when there are
+// several, derived as the runner's tasks (each sending back its text, engine/stored.h).
+void derive_in_rounds(const std::vector<const spec::derivation*>& order, library& lib,
+                      const std::function<bool(const spec::derivation&)>& take,
+                      const std::function<void(const spec::derivation&)>& add_here,
+                      const std::function<void(const spec::derivation&, const std::string&)>& keep,
+                      const task_runner& runner)
+{
+    std::vector<const spec::derivation*> waiting = order;
+    while (!waiting.empty()) {
+        std::vector<const spec::derivation*> ready, later;
+        for (const spec::derivation* s : waiting) {
+            const bool uses_done = std::all_of(s->uses.begin(), s->uses.end(), [&](const spec::use& u) {
+                return lib.derived.count(u.derivation.value) != 0;
+            });
+            (uses_done ? ready : later).push_back(s);
+        }
+        waiting = std::move(later);
+        std::vector<const spec::derivation*> to_derive;
+        for (const spec::derivation* s : ready)
+            if (!take(*s))
+                to_derive.push_back(s);
+        if (to_derive.size() < 2) {
+            for (const spec::derivation* s : to_derive)
+                add_here(*s);
+            continue;
+        }
+        std::vector<text_task> tasks;
+        for (const spec::derivation* s : to_derive)
+            tasks.push_back({fmt::format("derivation '{}'", s->id.value), s->id.where,
+                             [s, &lib] { return stored_derivation(derive_here(*s, lib.derived)).value_or(""); },
+                             s->contents.size(), "deriving it", "derive it"});
+        const std::vector<std::string> texts = runner(tasks, {});
+        for (std::size_t i = 0; i < to_derive.size(); ++i) {
+            const spec::derivation& s = *to_derive[i];
+            // A derivation that cannot be kept as text comes back empty: derived here.
+            std::optional<derivation> d = texts[i].empty() ? std::nullopt : restored_derivation(texts[i], s);
+            if (!d) {
+                add_here(s);
+                continue;
+            }
+            keep(s, texts[i]);
+            lib.derived.emplace(s.id.value, std::move(*d));
+        }
+    }
+}
+
 } // namespace
 
 library derive_all(const std::vector<spec::derivation>& sources, const std::string& only,
@@ -133,68 +180,40 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
         if (kept && kept->keep && !text.empty())
             kept->keep(keys.at(s.id.value), text);
     };
+    // From `kept`, or nothing.
+    const auto take = [&](const spec::derivation& s) -> bool {
+        if (!kept || !kept->find)
+            return false;
+        const std::optional<std::string> text = kept->find(keys.at(s.id.value));
+        std::optional<derivation> found = text ? restored_derivation(*text, s) : std::nullopt;
+        if (found)
+            lib.derived.emplace(s.id.value, std::move(*found));
+        return found.has_value();
+    };
     const auto add_here = [&](const spec::derivation& s) {
         derivation d = derive_here(s, lib.derived);
         if (kept && kept->keep)
             keep(s, stored_derivation(d).value_or(""));
         lib.derived.emplace(s.id.value, std::move(d));
     };
-
-    // In rounds: those whose uses are all derived, each taken from `kept` or derived, in
-    // worker processes when there are several and a runner.
-    std::vector<const spec::derivation*> waiting = order;
-    while (!waiting.empty()) {
-        std::vector<const spec::derivation*> ready, later;
-        for (const spec::derivation* s : waiting) {
-            const bool uses_done = std::all_of(s->uses.begin(), s->uses.end(), [&](const spec::use& u) {
-                return lib.derived.count(u.derivation.value) != 0;
-            });
-            (uses_done ? ready : later).push_back(s);
-        }
-        waiting = std::move(later);
-        std::vector<const spec::derivation*> to_derive;
-        for (const spec::derivation* s : ready) {
-            std::optional<derivation> found;
-            if (kept && kept->find)
-                if (const std::optional<std::string> text = kept->find(keys.at(s->id.value)))
-                    found = restored_derivation(*text, *s);
-            if (found)
-                lib.derived.emplace(s->id.value, std::move(*found));
-            else
-                to_derive.push_back(s);
-        }
-        if (!runner || to_derive.size() < 2) {
-            for (const spec::derivation* s : to_derive)
+    // One after another in the order: a bad file throws as soon as it is met.
+    const auto each_in_order = [&] {
+        for (const spec::derivation* s : order)
+            if (!lib.derived.count(s->id.value) && !take(*s))
                 add_here(*s);
-            continue;
-        }
-        std::vector<text_task> tasks;
-        for (const spec::derivation* s : to_derive)
-            tasks.push_back({fmt::format("derivation '{}'", s->id.value), s->id.where,
-                             [s, &lib] { return stored_derivation(derive_here(*s, lib.derived)).value_or(""); },
-                             s->contents.size(), "deriving it", "derive it"});
-        std::vector<std::string> texts;
+    };
+
+    if (!runner) {
+        each_in_order();
+    } else {
         try {
-            texts = runner(tasks, {});
+            derive_in_rounds(order, lib, take, add_here, keep, runner);
         } catch (...) {
-            // A file is bad input, or a worker died: everything left is derived here, one
-            // after another in the order, which throws what a run without workers throws
-            // (the first bad file's error); if nothing does, the worker's death is reported.
-            for (const spec::derivation* s : order)
-                if (!lib.derived.count(s->id.value))
-                    add_here(*s);
+            // A file is bad input, or a worker died: what is left is derived here, one after
+            // another in the order, which throws what a run without workers throws (the
+            // first bad file's error); when nothing does, the worker's death is reported.
+            each_in_order();
             throw;
-        }
-        for (std::size_t i = 0; i < to_derive.size(); ++i) {
-            const spec::derivation& s = *to_derive[i];
-            // A derivation that cannot be kept as text comes back empty: derived here.
-            std::optional<derivation> d = texts[i].empty() ? std::nullopt : restored_derivation(texts[i], s);
-            if (!d) {
-                add_here(s);
-                continue;
-            }
-            keep(s, texts[i]);
-            lib.derived.emplace(s.id.value, std::move(*d));
         }
     }
     for (const spec::derivation* s : order)

@@ -174,7 +174,10 @@ private:
     // An expression as the index of its node; each distinct expression written once.
     json put(const GiNaC::ex& e)
     {
-        if (const auto known = ids_.find(e); known != ids_.end()) {
+        // GiNaC compares a == b equal to b == a (and a < b to b > a): a relation is never
+        // taken for one written before, so that its sides come back as they were.
+        const bool relation = GiNaC::is_exactly_a<GiNaC::relational>(e);
+        if (const auto known = relation ? ids_.end() : ids_.find(e); known != ids_.end()) {
             // GiNaC compares 0.5 and 1/2 equal: an expression equal to one written already
             // (and not the same object) is written by it only if it holds no float.
             if (!GiNaC::are_ex_trivially_equal(known->first, e) && holds_float(e))
@@ -232,7 +235,8 @@ private:
         }
         const std::size_t id = nodes_.size();
         nodes_.push_back(std::move(node));
-        ids_.emplace(e, id);
+        if (!relation)
+            ids_.emplace(e, id);
         return id;
     }
 
@@ -245,6 +249,13 @@ private:
             return *built_[id];
         const json& node = (*nodes_in_)[id];
         const std::string& kind = node.at(0).get_ref<const std::string&>();
+        // Every node is written after its operands: one naming itself or a later node is
+        // not a text Impact wrote (and would never end).
+        const auto operand = [&](std::size_t i) {
+            if (node.at(i).get<std::size_t>() >= id)
+                throw not_readable("an operand written after its expression");
+            return get(node.at(i));
+        };
         GiNaC::ex e;
         if (kind == "s") {
             const std::size_t i = node.at(1).get<std::size_t>();
@@ -256,11 +267,11 @@ private:
         } else if (kind == "q") {
             e = integer_of(node.at(1)) / integer_of(node.at(2));
         } else if (kind == "c") {
-            e = get(node.at(1)) + GiNaC::I * get(node.at(2));
+            e = operand(1) + GiNaC::I * operand(2);
         } else if (kind == "+" || kind == "*" || kind == "l") {
             GiNaC::exvector operands;
             for (std::size_t i = 1; i < node.size(); ++i)
-                operands.push_back(get(node[i]));
+                operands.push_back(operand(i));
             if (kind == "+")
                 e = GiNaC::add(operands);
             else if (kind == "*")
@@ -272,17 +283,17 @@ private:
                 e = l;
             }
         } else if (kind == "^") {
-            e = GiNaC::pow(get(node.at(1)), get(node.at(2)));
+            e = GiNaC::pow(operand(1), operand(2));
         } else if (kind == "f") {
             GiNaC::exvector arguments;
             for (std::size_t i = 2; i < node.size(); ++i)
-                arguments.push_back(get(node[i]));
+                arguments.push_back(operand(i));
             const unsigned serial = GiNaC::function::find_function(node.at(1).get<std::string>(),
                                                                     static_cast<unsigned>(arguments.size()));
             // Held: it was stored as evaluated (or held, as a select is), and stays so.
             e = GiNaC::function(serial, arguments).hold();
         } else if (kind == "r") {
-            e = relation_of(node.at(1).get<std::string>(), get(node.at(2)), get(node.at(3)));
+            e = relation_of(node.at(1).get<std::string>(), operand(2), operand(3));
         } else if (kind == "k") {
             const std::string& name = node.at(1).get_ref<const std::string&>();
             e = name == "Pi" ? GiNaC::ex(GiNaC::Pi) : name == "Euler" ? GiNaC::ex(GiNaC::Euler) : GiNaC::ex(GiNaC::Catalan);
@@ -967,6 +978,9 @@ std::optional<std::string> stored_derivation(const derivation& d)
         derivation_codec codec;
         return format_line + codec.write(d).dump();
     } catch (const not_storable&) {
+        return std::nullopt;
+    } catch (const json::exception&) {
+        // A text that is not UTF-8 (a file name of other bytes): not kept.
         return std::nullopt;
     }
 }

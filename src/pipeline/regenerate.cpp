@@ -356,6 +356,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     compile.what = "the report";
     compile.where = {"output/report.pdf", 0, 0};
     compile.doing = "compiling it";
+    compile.instead = "compile it";
     compile.run = [&] {
         const auto began = std::chrono::steady_clock::now();
         const std::map<std::string, cache::counts> before = shared ? shared->statistics() : std::map<std::string, cache::counts>{};

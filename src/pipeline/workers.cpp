@@ -78,8 +78,11 @@ bool write_all(int fd, const std::string& bytes)
         message = field("failure") + field("an unknown exception");
     }
     // _exit: no static destructors or atexit handlers of the parent's run here, and no
-    // buffered output of the parent's written twice.
-    ::_exit(write_all(fd, message) ? 0 : 3);
+    // buffered output of the parent's written twice; the factoring child it may have
+    // started is stopped first, so that none is left behind as a zombie.
+    const bool sent = write_all(fd, message);
+    engine::stop_factoring();
+    ::_exit(sent ? 0 : 3);
 }
 
 // What came of one task: its text, or the exception to throw for it.
