@@ -116,10 +116,14 @@ BOOST_AUTO_TEST_CASE(a_changed_file_is_derived_again_with_those_that_use_it_and_
     const engine::derivation_store handle = store.handle();
     engine::derive_all(files, "", &handle);
     const std::size_t all = files.size();
-    // rough_plane uses rough_sticking: a space added to rough_sticking's file changes both.
+    // rough_plane uses rough_sticking: a new title in rough_sticking's file changes both (a
+    // comment or spacing would change nothing).
+    const auto retitle = [](spec::derivation& s) {
+        s.contents.replace(s.contents.find("\ntitle = \""), 10, "\ntitle = \"Changed: ");
+    };
     for (spec::derivation& s : files)
         if (s.id.value == "rough_sticking")
-            s.contents += " ";
+            retitle(s);
     store.found = store.kept = 0;
     engine::derive_all(files, "", &handle);
     BOOST_TEST(store.found == all - 2);
@@ -127,11 +131,45 @@ BOOST_AUTO_TEST_CASE(a_changed_file_is_derived_again_with_those_that_use_it_and_
     // rough_plane alone.
     for (spec::derivation& s : files)
         if (s.id.value == "rough_plane")
-            s.contents += " ";
+            retitle(s);
     store.found = store.kept = 0;
     engine::derive_all(files, "", &handle);
     BOOST_TEST(store.found == all - 1);
     BOOST_TEST(store.kept == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(comments_added_move_the_places_of_a_kept_derivation_and_derive_nothing)
+{
+    const std::string file = IMPACT_SOURCE_DIR "/tests/examples/spring.toml";
+    const std::string text = spec::read_input_file(file);
+    memory_store store;
+    const engine::derivation_store handle = store.handle();
+    engine::derive_all({spec::parse_derivation(text, file)}, "", &handle);
+    BOOST_TEST_REQUIRE(store.kept == 1u);
+    // Two lines of comments at the top, one in the middle, a comment at the end: kept, with
+    // every place where a derivation of the commented file has it.
+    const std::size_t middle = text.find("\n[[result]]");
+    BOOST_TEST_REQUIRE(middle != std::string::npos);
+    std::string commented = "# A note.\n\n# Another.\n" + text.substr(0, middle) + "\n# Results:" +
+                            text.substr(middle) + "\n# The end.\n";
+    const engine::library kept = engine::derive_all({spec::parse_derivation(commented, file)}, "", &handle);
+    BOOST_TEST(store.found == 1u);
+    BOOST_TEST(store.kept == 1u);
+    const engine::derivation fresh = engine::derive(spec::parse_derivation(commented, file), {});
+    const engine::derivation& back = kept.derived.at(fresh.id());
+    BOOST_TEST_REQUIRE(back.checks.size() == fresh.checks.size());
+    BOOST_TEST_REQUIRE(!fresh.checks.empty());
+    for (std::size_t i = 0; i < fresh.checks.size(); ++i)
+        BOOST_TEST(to_string(back.checks[i].where) == to_string(fresh.checks[i].where));
+    BOOST_TEST_REQUIRE(back.results.size() == fresh.results.size());
+    for (std::size_t i = 0; i < fresh.steps.size(); ++i)
+        BOOST_TEST(to_string(back.steps[i].where) == to_string(fresh.steps[i].where));
+    BOOST_TEST(fresh.checks.back().where.line > 3u);
+    // A line whose spacing changed moves the columns after it: found, not taken, derived again.
+    std::string spaced = text;
+    spaced.replace(spaced.find("\nname = "), 8, "\nname  = ");
+    engine::derive_all({spec::parse_derivation(spaced, file)}, "", &handle);
+    BOOST_TEST(store.kept == 2u);
 }
 
 BOOST_AUTO_TEST_CASE(a_text_impact_did_not_write_is_never_trusted)

@@ -59,11 +59,14 @@ library derive_folder(const std::filesystem::path& directory)
 
 namespace {
 
-// The text a derivation is derived from: its file's path and bytes, then the texts of
-// those it uses (whose own keys are in `keys`).
+// The text a derivation is derived from: its file's path and content without comments or
+// spacing (spec::meaningful_content: a comment changes nothing derived; the places it moves
+// are put right as the derivation is read back, engine/stored.h), then the texts of those it
+// uses (whose own keys are in `keys`).
 std::string key_of(const spec::derivation& s, const std::map<std::string, std::string>& keys)
 {
-    std::string key = fmt::format("{} {}\n{}{}\n", s.file.size(), s.contents.size(), s.file, s.contents);
+    const std::string content = spec::meaningful_content(s.contents).value_or(s.contents);
+    std::string key = fmt::format("{} {}\n{}{}\n", s.file.size(), content.size(), s.file, content);
     for (const spec::use& u : s.uses) {
         const std::string& used = keys.at(u.derivation.value);
         key += fmt::format("uses {}\n{}", used.size(), used);
@@ -110,13 +113,16 @@ void derive_in_rounds(const std::vector<const spec::derivation*>& order, library
         std::vector<text_task> tasks;
         for (const spec::derivation* s : to_derive)
             tasks.push_back({fmt::format("derivation '{}'", s->id.value), s->id.where,
-                             [s, &lib] { return stored_derivation(derive_here(*s, lib.derived)).value_or(""); },
+                             [s, &lib] {
+                                 return stored_derivation(derive_here(*s, lib.derived), lib.derived).value_or("");
+                             },
                              s->contents.size(), "deriving it", "derive it"});
         const std::vector<std::string> texts = runner(tasks, {});
         for (std::size_t i = 0; i < to_derive.size(); ++i) {
             const spec::derivation& s = *to_derive[i];
             // A derivation that cannot be kept as text comes back empty: derived here.
-            std::optional<derivation> d = texts[i].empty() ? std::nullopt : restored_derivation(texts[i], s);
+            std::optional<derivation> d =
+                texts[i].empty() ? std::nullopt : restored_derivation(texts[i], s, lib.derived);
             if (!d) {
                 add_here(s);
                 continue;
@@ -185,7 +191,7 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
         if (!kept || !kept->find)
             return false;
         const std::optional<std::string> text = kept->find(keys.at(s.id.value));
-        std::optional<derivation> found = text ? restored_derivation(*text, s) : std::nullopt;
+        std::optional<derivation> found = text ? restored_derivation(*text, s, lib.derived) : std::nullopt;
         if (found)
             lib.derived.emplace(s.id.value, std::move(*found));
         return found.has_value();
@@ -193,7 +199,7 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
     const auto add_here = [&](const spec::derivation& s) {
         derivation d = derive_here(s, lib.derived);
         if (kept && kept->keep)
-            keep(s, stored_derivation(d).value_or(""));
+            keep(s, stored_derivation(d, lib.derived).value_or(""));
         lib.derived.emplace(s.id.value, std::move(d));
     };
     // One after another in the order: a bad file throws as soon as it is met.

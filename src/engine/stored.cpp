@@ -8,8 +8,11 @@
 #include <cstdint>
 #include <cstring>
 #include <locale>
+#include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
+#include <string_view>
 #include <stdexcept>
 
 namespace impact::engine {
@@ -82,6 +85,42 @@ GiNaC::ex relation_of(const std::string& code, const GiNaC::ex& lhs, const GiNaC
     throw not_readable("a relation of unknown kind");
 }
 
+// The lines of a derivation file that hold more than spaces or a comment, each with its
+// number (from 1), without the spaces that end it.
+std::vector<std::pair<std::uint32_t, std::string_view>> content_lines(const std::string& text)
+{
+    std::vector<std::pair<std::uint32_t, std::string_view>> lines;
+    std::uint32_t number = 0;
+    for (std::size_t at = 0; at <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', at), text.size());
+        std::string_view line(text.data() + at, end - at);
+        ++number;
+        while (!line.empty() && (line.back() == ' ' || line.back() == '\t' || line.back() == '\r'))
+            line.remove_suffix(1);
+        const std::size_t first = line.find_first_not_of(" \t");
+        if (first != std::string_view::npos && line[first] != '#')
+            lines.emplace_back(number, line);
+        at = end + 1;
+    }
+    return lines;
+}
+
+// Where each line of `before` is in `now` (0: a line of spaces or a comment), when the two
+// differ only by such lines; nothing otherwise (a line changed, or moved).
+std::optional<std::vector<std::uint32_t>> line_map(const std::string& before, const std::string& now)
+{
+    const auto a = content_lines(before), b = content_lines(now);
+    if (a.size() != b.size())
+        return std::nullopt;
+    std::vector<std::uint32_t> map(static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n')) + 2, 0);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].second != b[i].second)
+            return std::nullopt;
+        map[a[i].first] = b[i].first;
+    }
+    return map;
+}
+
 bool holds_float(const GiNaC::ex& e)
 {
     if (GiNaC::is_a<GiNaC::numeric>(e))
@@ -128,6 +167,14 @@ Enum enum_of(const json& j, int last)
 // (symbol_table, written_form), so that it keeps exactly what they hold.
 class derivation_codec {
 public:
+    // The derivation files' bytes now, by path: those of `source` and of `done`.
+    derivation_codec(const spec::derivation& source, const derived_by_id& done)
+    {
+        contents_[source.file] = &source.contents;
+        for (const auto& [id, d] : done)
+            contents_.emplace(d.source.file, &d.source.contents);
+    }
+
     // ---- writing ----
 
     json write(const derivation& d)
@@ -144,6 +191,14 @@ public:
         out["kernels"] = list(d.kernels, &derivation_codec::put_kernel);
         out["nodes"] = std::move(nodes_);
         out["temporaries"] = std::move(temporaries_);
+        // Each file a place names, with its bytes when it is a derivation file: a comment
+        // added or removed moves the places after it, which reading puts right.
+        json files = json::array();
+        for (const std::string& file : files_) {
+            const auto bytes = contents_.find(file);
+            files.push_back({file, bytes == contents_.end() ? json() : json(*bytes->second)});
+        }
+        out["files"] = std::move(files);
         return out;
     }
 
@@ -153,6 +208,21 @@ public:
     {
         derivation d;
         d.source = source;
+        for (const json& f : in.at("files")) {
+            const std::string& file = f.at(0).get_ref<const std::string&>();
+            if (f.at(1).is_null())
+                continue;
+            const auto now = contents_.find(file);
+            if (now == contents_.end())
+                throw not_readable("a place in a file not read now");
+            const std::string& before = f.at(1).get_ref<const std::string&>();
+            if (before == *now->second)
+                continue;
+            std::optional<std::vector<std::uint32_t>> moved = line_map(before, *now->second);
+            if (!moved)
+                throw not_readable("a file changed in more than its comments");
+            lines_moved_[file] = std::move(*moved);
+        }
         get_symbols(in.at("symbols"), d.symbols, source);
         nodes_in_ = &in.at("nodes");
         temporaries_in_ = &in.at("temporaries");
@@ -375,10 +445,20 @@ private:
 
     // ---- small parts ----
 
-    static json put_where(const source_location& w) { return {w.file, w.line, w.column}; }
-    static source_location get_where(const json& j)
+    json put_where(const source_location& w)
     {
-        return {j.at(0).get<std::string>(), j.at(1).get<std::uint32_t>(), j.at(2).get<std::uint32_t>()};
+        files_.insert(w.file);
+        return {w.file, w.line, w.column};
+    }
+    source_location get_where(const json& j)
+    {
+        source_location w{j.at(0).get<std::string>(), j.at(1).get<std::uint32_t>(), j.at(2).get<std::uint32_t>()};
+        if (const auto moved = lines_moved_.find(w.file); moved != lines_moved_.end() && w.line != 0) {
+            if (w.line >= moved->second.size() || moved->second[w.line] == 0)
+                throw not_readable("a place on a line that is no longer there");
+            w.line = moved->second[w.line];
+        }
+        return w;
     }
 
     static json put_domain(const domain& d)
@@ -959,6 +1039,9 @@ private:
         get_list(j.at(12), k.limits, &derivation_codec::get_kernel);
     }
 
+    std::map<std::string, const std::string*> contents_;
+    std::set<std::string> files_;                                      // writing: the files places name
+    std::map<std::string, std::vector<std::uint32_t>> lines_moved_;     // reading: old line -> line now
     // Writing: the symbols of the table by their place, the nodes so far, the others.
     std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> table_;
     std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> ids_;
@@ -972,10 +1055,10 @@ private:
     std::vector<std::optional<GiNaC::ex>> temporary_symbols_;
 };
 
-std::optional<std::string> stored_derivation(const derivation& d)
+std::optional<std::string> stored_derivation(const derivation& d, const derived_by_id& done)
 {
     try {
-        derivation_codec codec;
+        derivation_codec codec(d.source, done);
         return format_line + codec.write(d).dump();
     } catch (const not_storable&) {
         return std::nullopt;
@@ -985,14 +1068,15 @@ std::optional<std::string> stored_derivation(const derivation& d)
     }
 }
 
-std::optional<derivation> restored_derivation(const std::string& text, const spec::derivation& source)
+std::optional<derivation> restored_derivation(const std::string& text, const spec::derivation& source,
+                                             const derived_by_id& done)
 {
     const std::string header = format_line;
     if (text.compare(0, header.size(), header) != 0)
         return std::nullopt;
     try {
         const json in = json::parse(text.begin() + static_cast<std::ptrdiff_t>(header.size()), text.end());
-        derivation_codec codec;
+        derivation_codec codec(source, done);
         return codec.read(in, source);
     } catch (const not_readable&) {
         return std::nullopt;
