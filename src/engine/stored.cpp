@@ -50,38 +50,34 @@ GiNaC::numeric integer_of(const json& j)
     return GiNaC::numeric(cln::cl_I(digits.c_str()));
 }
 
+// The relations GiNaC makes, each by the code a stored text gives it.
+struct relation_kind {
+    const char* code;
+    unsigned flag;
+    GiNaC::relational::operators op;
+};
+constexpr relation_kind relation_kinds[] = {
+    {"==", GiNaC::info_flags::relation_equal, GiNaC::relational::equal},
+    {"!=", GiNaC::info_flags::relation_not_equal, GiNaC::relational::not_equal},
+    {"<", GiNaC::info_flags::relation_less, GiNaC::relational::less},
+    {"<=", GiNaC::info_flags::relation_less_or_equal, GiNaC::relational::less_or_equal},
+    {">", GiNaC::info_flags::relation_greater, GiNaC::relational::greater},
+    {">=", GiNaC::info_flags::relation_greater_or_equal, GiNaC::relational::greater_or_equal},
+};
+
 std::string relation_code(const GiNaC::ex& e)
 {
-    using GiNaC::info_flags;
-    if (e.info(info_flags::relation_equal))
-        return "==";
-    if (e.info(info_flags::relation_not_equal))
-        return "!=";
-    if (e.info(info_flags::relation_less))
-        return "<";
-    if (e.info(info_flags::relation_less_or_equal))
-        return "<=";
-    if (e.info(info_flags::relation_greater))
-        return ">";
-    if (e.info(info_flags::relation_greater_or_equal))
-        return ">=";
+    for (const relation_kind& k : relation_kinds)
+        if (e.info(k.flag))
+            return k.code;
     throw not_storable("a relation of unknown kind");
 }
 
 GiNaC::ex relation_of(const std::string& code, const GiNaC::ex& lhs, const GiNaC::ex& rhs)
 {
-    if (code == "==")
-        return lhs == rhs;
-    if (code == "!=")
-        return lhs != rhs;
-    if (code == "<")
-        return lhs < rhs;
-    if (code == "<=")
-        return lhs <= rhs;
-    if (code == ">")
-        return lhs > rhs;
-    if (code == ">=")
-        return lhs >= rhs;
+    for (const relation_kind& k : relation_kinds)
+        if (code == k.code)
+            return GiNaC::relational(lhs, rhs, k.op);
     throw not_readable("a relation of unknown kind");
 }
 
