@@ -91,10 +91,10 @@ BOOST_AUTO_TEST_CASE(a_restored_derivation_prints_what_the_derived_one_prints)
     const std::vector<spec::derivation> files = sources();
     memory_store store;
     const engine::derivation_store handle = store.handle();
-    const engine::library derived = engine::derive_all(files, "", &handle);
+    const engine::library derived = engine::derive_all(files, "", {&handle});
     BOOST_TEST(store.found == 0u);
     BOOST_TEST(store.kept == files.size());
-    const engine::library restored = engine::derive_all(files, "", &handle);
+    const engine::library restored = engine::derive_all(files, "", {&handle});
     BOOST_TEST(store.found == files.size());
     BOOST_TEST(store.kept == files.size());
     const std::vector<std::string> before = printed(derived), after = printed(restored);
@@ -114,7 +114,7 @@ BOOST_AUTO_TEST_CASE(a_changed_file_is_derived_again_with_those_that_use_it_and_
     std::vector<spec::derivation> files = sources();
     memory_store store;
     const engine::derivation_store handle = store.handle();
-    engine::derive_all(files, "", &handle);
+    engine::derive_all(files, "", {&handle});
     const std::size_t all = files.size();
     // rough_plane uses rough_sticking: a new title in rough_sticking's file changes both (a
     // comment or spacing would change nothing).
@@ -125,7 +125,7 @@ BOOST_AUTO_TEST_CASE(a_changed_file_is_derived_again_with_those_that_use_it_and_
         if (s.id.value == "rough_sticking")
             retitle(s);
     store.found = store.kept = 0;
-    engine::derive_all(files, "", &handle);
+    engine::derive_all(files, "", {&handle});
     BOOST_TEST(store.found == all - 2);
     BOOST_TEST(store.kept == 2u);
     // rough_plane alone.
@@ -133,7 +133,7 @@ BOOST_AUTO_TEST_CASE(a_changed_file_is_derived_again_with_those_that_use_it_and_
         if (s.id.value == "rough_plane")
             retitle(s);
     store.found = store.kept = 0;
-    engine::derive_all(files, "", &handle);
+    engine::derive_all(files, "", {&handle});
     BOOST_TEST(store.found == all - 1);
     BOOST_TEST(store.kept == 1u);
 }
@@ -144,7 +144,7 @@ BOOST_AUTO_TEST_CASE(comments_added_move_the_places_of_a_kept_derivation_and_der
     const std::string text = spec::read_input_file(file);
     memory_store store;
     const engine::derivation_store handle = store.handle();
-    engine::derive_all({spec::parse_derivation(text, file)}, "", &handle);
+    engine::derive_all({spec::parse_derivation(text, file)}, "", {&handle});
     BOOST_TEST_REQUIRE(store.kept == 1u);
     // Two lines of comments at the top, one in the middle, a comment at the end: kept, with
     // every place where a derivation of the commented file has it.
@@ -152,7 +152,7 @@ BOOST_AUTO_TEST_CASE(comments_added_move_the_places_of_a_kept_derivation_and_der
     BOOST_TEST_REQUIRE(middle != std::string::npos);
     std::string commented = "# A note.\n\n# Another.\n" + text.substr(0, middle) + "\n# Results:" +
                             text.substr(middle) + "\n# The end.\n";
-    const engine::library kept = engine::derive_all({spec::parse_derivation(commented, file)}, "", &handle);
+    const engine::library kept = engine::derive_all({spec::parse_derivation(commented, file)}, "", {&handle});
     BOOST_TEST(store.found == 1u);
     BOOST_TEST(store.kept == 1u);
     const engine::derivation fresh = engine::derive(spec::parse_derivation(commented, file), {});
@@ -168,7 +168,7 @@ BOOST_AUTO_TEST_CASE(comments_added_move_the_places_of_a_kept_derivation_and_der
     // A line whose spacing changed moves the columns after it: found, not taken, derived again.
     std::string spaced = text;
     spaced.replace(spaced.find("\nname = "), 8, "\nname  = ");
-    engine::derive_all({spec::parse_derivation(spaced, file)}, "", &handle);
+    engine::derive_all({spec::parse_derivation(spaced, file)}, "", {&handle});
     BOOST_TEST(store.kept == 2u);
 }
 

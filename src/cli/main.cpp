@@ -103,7 +103,7 @@ engine::library derive_one(const options& o)
     const std::unique_ptr<cache::store> store = open_cache(o);
     const auto sources = engine::read_directory(o.derivations);
     const engine::derivation_store kept = pipeline::derivations_kept(store.get());
-    engine::library lib = engine::derive_all(sources, engine::resolve_id(sources, o.name), &kept);
+    engine::library lib = engine::derive_all(sources, engine::resolve_id(sources, o.name), {&kept});
     if (store)
         store->trim();
     return lib;
@@ -172,8 +172,9 @@ int run_kernels(const options& o)
     const std::unique_ptr<cache::store> store = open_cache(o);
     const engine::derivation_store kept = pipeline::derivations_kept(store.get());
     const unsigned jobs = jobs_of(o);
-    const engine::library lib = engine::derive_all(engine::read_directory(o.derivations), "", &kept,
-                                                   jobs > 1 ? pipeline::worker_runner(jobs) : engine::task_runner{});
+    const engine::library lib = engine::derive_all(
+        engine::read_directory(o.derivations), "",
+        {&kept, jobs > 1 ? pipeline::worker_runner(jobs) : engine::task_runner{}});
     if (!lib.all_hold()) {
         for (const std::string& failure : pipeline::failed_checks(lib))
             fmt::print(stderr, "{}\n", failure);

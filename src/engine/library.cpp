@@ -89,7 +89,7 @@ void derive_in_rounds(const std::vector<const spec::derivation*>& order, library
                       const std::function<bool(const spec::derivation&)>& take,
                       const std::function<void(const spec::derivation&)>& add_here,
                       const std::function<void(const spec::derivation&, const std::string&)>& keep,
-                      const task_runner& runner)
+                      const task_runner& runner, const std::function<void(std::size_t)>& told)
 {
     std::vector<const spec::derivation*> waiting = order;
     while (!waiting.empty()) {
@@ -117,7 +117,8 @@ void derive_in_rounds(const std::vector<const spec::derivation*>& order, library
                                  return stored_derivation(derive_here(*s, lib.derived), lib.derived).value_or("");
                              },
                              s->contents.size(), "deriving it", "derive it"});
-        const std::vector<std::string> texts = runner(tasks, {});
+        std::size_t finished = 0;
+        const std::vector<std::string> texts = runner(tasks, [&] { told(++finished); });
         for (std::size_t i = 0; i < to_derive.size(); ++i) {
             const spec::derivation& s = *to_derive[i];
             // A derivation that cannot be kept as text comes back empty: derived here.
@@ -129,15 +130,16 @@ void derive_in_rounds(const std::vector<const spec::derivation*>& order, library
             }
             keep(s, texts[i]);
             lib.derived.emplace(s.id.value, std::move(*d));
+            told(0);
         }
     }
 }
 
 } // namespace
 
-library derive_all(const std::vector<spec::derivation>& sources, const std::string& only,
-                   const derivation_store* kept, const task_runner& runner)
+library derive_all(const std::vector<spec::derivation>& sources, const std::string& only, const deriving& how)
 {
+    const derivation_store* const kept = how.kept;
     std::map<std::string, const spec::derivation*> by_id;
     for (const spec::derivation& s : sources) {
         const auto [it, inserted] = by_id.emplace(s.id.value, &s);
@@ -182,6 +184,10 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
     for (const spec::derivation* s : order)
         keys[s->id.value] = key_of(*s, keys);
     library lib;
+    const auto told = [&](std::size_t more = 0) {
+        if (how.progress)
+            how.progress(lib.derived.size() + more, order.size());
+    };
     const auto keep = [&](const spec::derivation& s, const std::string& text) {
         if (kept && kept->keep && !text.empty())
             kept->keep(keys.at(s.id.value), text);
@@ -192,8 +198,10 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
             return false;
         const std::optional<std::string> text = kept->find(keys.at(s.id.value));
         std::optional<derivation> found = text ? restored_derivation(*text, s, lib.derived) : std::nullopt;
-        if (found)
+        if (found) {
             lib.derived.emplace(s.id.value, std::move(*found));
+            told();
+        }
         return found.has_value();
     };
     const auto add_here = [&](const spec::derivation& s) {
@@ -201,6 +209,7 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
         if (kept && kept->keep)
             keep(s, stored_derivation(d, lib.derived).value_or(""));
         lib.derived.emplace(s.id.value, std::move(d));
+        told();
     };
     // One after another in the order: a bad file throws as soon as it is met.
     const auto each_in_order = [&] {
@@ -209,11 +218,11 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
                 add_here(*s);
     };
 
-    if (!runner) {
+    if (!how.runner) {
         each_in_order();
     } else {
         try {
-            derive_in_rounds(order, lib, take, add_here, keep, runner);
+            derive_in_rounds(order, lib, take, add_here, keep, how.runner, told);
         } catch (...) {
             // A file is bad input, or a worker died: what is left is derived here, one after
             // another in the order, which throws what a run without workers throws (the

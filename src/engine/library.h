@@ -47,14 +47,22 @@ struct derivation_store {
     std::function<void(const std::string& key, const std::string& text)> keep;
 };
 
-/// Derives `sources` in dependency order; with `only`, just that id and what it uses. With
-/// `kept`, a derivation whose file and uses are unchanged is taken from it (the same
-/// derivation), and each one derived is kept in it. With a `runner`, derivations that do
-/// not use one another are derived as its tasks (in worker processes), each sending back
-/// its text (engine/stored.h): the library is the one a run without it derives, and a bad
-/// file throws the same error.
+/// How a library is derived: with `kept`, a derivation whose file and uses are unchanged
+/// is taken from it (the same derivation), and each one derived is kept in it; with a
+/// `runner`, derivations that do not use one another are derived as its tasks (in worker
+/// processes), each sending back its text (engine/stored.h); `progress(k, n)` is told as
+/// each of the n derivations is done.
+struct deriving {
+    const derivation_store* kept = nullptr;
+    task_runner runner{};
+    std::function<void(std::size_t done, std::size_t all)> progress{};
+};
+
+/// Derives `sources` in dependency order; with `only`, just that id and what it uses. The
+/// library is the same however `how` derives it, and a bad file throws the same error (the
+/// first bad file's in that order).
 library derive_all(const std::vector<spec::derivation>& sources, const std::string& only = "",
-                   const derivation_store* kept = nullptr, const task_runner& runner = {});
+                   const deriving& how = {});
 
 /// Every derivation of a folder (read_directory, derive_all), with the paper's order of
 /// places that the folder's `paper_order.txt` gives (spec::read_paper_outline).

@@ -328,7 +328,10 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
             }
     shown.say("derivations", "deriving and proving");
     const engine::derivation_store kept = derivations_kept(store ? &*store : nullptr);
-    library lib = engine::derive_all(engine::read_directory(derivations), "", &kept, runner_for(options.jobs));
+    const auto told = [&shown](std::size_t done, std::size_t all) {
+        shown.say("derivations", fmt::format("deriving and proving: {} of {} files", done, all));
+    };
+    library lib = engine::derive_all(engine::read_directory(derivations), "", {&kept, runner_for(options.jobs), told});
     lib.outline = outline;
     shown.done("derivations");
     clock.lap("derivations with their checks");
