@@ -627,8 +627,9 @@ private:
         get_list(j.at(2), w.products_, &derivation_codec::get_product);
         w.powers_ = get_pairs(j.at(3));
         if (!j.at(4).is_null()) {
-            w.tree_.emplace();
-            get_node(j.at(4), *w.tree_);
+            written_form::node tree;
+            get_node(j.at(4), tree);
+            w.tree_ = std::move(tree);
         }
     }
 
