@@ -390,14 +390,19 @@ BOOST_AUTO_TEST_CASE(a_worker_killed_during_a_regeneration_is_reported_at_its_de
     const scratch s;
     s.copy_smooth_spheres();
     const auto before = impact::testing::everything_under(s.root / "output");
-    // The first worker seen among Impact's children is killed: a process named impact-worker (the shells of the
-    // report's pdflatex are forked from Impact too, and named impact until they run). The watch lasts as long as
-    // Impact runs: under the sanitizers the derivations alone take minutes before the first worker starts.
+    // The first worker seen alive among Impact's children is killed: a process named impact-worker (the shells of
+    // the report's pdflatex are forked from Impact too, and named impact until they run). A worker deriving a small
+    // file lives a few milliseconds: it is stopped first, and killed only once it is seen stopped (state T), so
+    // that one which finished meanwhile (a zombie, state Z) is passed over. The watch lasts as long as Impact
+    // runs: under the sanitizers the derivations take minutes.
     const run_result r = impact::testing::run_command(
         "cd '" + s.root.string() + "' && { XDG_CACHE_HOME=xdg " + IMPACT_BINARY +
         " regenerate --no-cache --jobs 2 --derivations derivations --output output > log 2>&1 & p=$!; "
+        "stopped() { for i in $(seq 100); do case \"$(cut -d' ' -f3 /proc/$1/stat 2>/dev/null)\" in "
+        "T) return 0;; Z|'') return 1;; esac; sleep 0.01; done; return 1; }; "
         "while kill -0 $p 2>/dev/null; do for c in $(cat /proc/$p/task/*/children 2>/dev/null); do "
-        "if [ \"$(cat /proc/$c/comm 2>/dev/null)\" = impact-worker ]; then kill -KILL $c; echo killed; break 2; fi; "
+        "if [ \"$(cat /proc/$c/comm 2>/dev/null)\" = impact-worker ] && kill -STOP $c 2>/dev/null && stopped $c; "
+        "then kill -KILL $c; echo killed; break 2; fi; "
         "done; "
         "sleep 0.01; done; wait $p; echo \"status $?\"; cat log; }");
     BOOST_TEST_REQUIRE(r.output.find("killed\n") == 0u, r.output);
