@@ -117,8 +117,7 @@ void derive_in_rounds(const std::vector<const spec::derivation*>& order, library
                                  return stored_derivation(derive_here(*s, lib.derived), lib.derived).value_or("");
                              },
                              s->contents.size(), "deriving it", "derive it"});
-        std::size_t finished = 0;
-        const std::vector<std::string> texts = runner(tasks, [&] { told(++finished); });
+        const std::vector<std::string> texts = runner(tasks, {});
         for (std::size_t i = 0; i < to_derive.size(); ++i) {
             const spec::derivation& s = *to_derive[i];
             // A derivation that cannot be kept as text comes back empty: derived here.
