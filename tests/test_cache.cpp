@@ -367,6 +367,23 @@ BOOST_AUTO_TEST_CASE(a_comment_changes_nothing_and_a_changed_title_recomputes_on
     const run_result leaf_retitled = run("leaf_retitled", at);
     BOOST_TEST_REQUIRE(leaf_retitled.status == 0, leaf_retitled.output);
     BOOST_TEST(said(leaf_retitled.output, "derivation: 17 reused, 1 computed"), leaf_retitled.output);
+    // Two keys of a table swapped: the same derivation, kept under the same key, but its
+    // places cannot be followed to the lines they moved to. It is found, not used, and said
+    // so, and derived again (here beside the leaf, retitled once more).
+    const fs::path swapped = derivations / "rough_wall_plane.toml";
+    text = read(swapped);
+    const std::string name_then_latex = "name = \"m\"\nlatex = \"m\"\n";
+    const std::size_t pair = text.find(name_then_latex);
+    BOOST_TEST_REQUIRE(pair != std::string::npos);
+    text.replace(pair, name_then_latex.size(), "latex = \"m\"\nname = \"m\"\n");
+    write(swapped, text);
+    text = read(leaf);
+    text.insert(leaf_title + 10, "Twice: ");
+    write(leaf, text);
+    const run_result swapped_keys = run("swapped_keys", at);
+    BOOST_TEST_REQUIRE(swapped_keys.status == 0, swapped_keys.output);
+    BOOST_TEST(said(swapped_keys.output, "derivation: 16 reused, 2 computed \\(0 damaged, 1 found but not usable"),
+               swapped_keys.output);
 }
 
 BOOST_AUTO_TEST_CASE(damaged_and_truncated_entries_are_computed_again_and_the_output_is_the_same)

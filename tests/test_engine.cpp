@@ -856,6 +856,24 @@ BOOST_AUTO_TEST_CASE(gives_the_factors_in_the_same_symbols)
     BOOST_TEST(GiNaC::expand(*f - p).is_zero());
 }
 
+BOOST_AUTO_TEST_CASE(gives_the_same_factors_in_every_arrangement_of_stand_ins)
+{
+    // Each arrangement sends the polynomial in other stand-in symbols, so that the child
+    // orders its terms otherwise: the factors are the same, up to their signs.
+    const GiNaC::symbol x("x"), y("y"), z("z"), w("w");
+    // (x - 2y)(x + y + z)(w z - 3) expanded
+    const GiNaC::ex p = GiNaC::expand((x - 2 * y) * (x + y + z) * (w * z - 3));
+    for (unsigned arrangement = 0; arrangement < 6; ++arrangement) {
+        const std::optional<GiNaC::ex> f = engine::factor_in_child(p, 0, 20, arrangement);
+        BOOST_REQUIRE(f);
+        BOOST_TEST(factors(*f) == 3u, "arrangement " << arrangement << ": " << *f);
+        BOOST_TEST(GiNaC::expand(*f - p).is_zero());
+        GiNaC::ex quotient;
+        for (const GiNaC::ex& factor : {x - 2 * y, x + y + z, w * z - 3})
+            BOOST_TEST(GiNaC::divide(*f, factor, quotient), "arrangement " << arrangement << ": " << factor);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(keeps_apart_symbols_that_share_a_name)
 {
     const GiNaC::symbol x("x"), other_x("x");

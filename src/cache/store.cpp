@@ -299,6 +299,18 @@ void store::add_counts(const std::string& kind, const counts& more)
     c.hits += more.hits;
     c.misses += more.misses;
     c.rejected += more.rejected;
+    c.unusable += more.unusable;
+}
+
+void store::unusable(const std::string& kind)
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    counts& c = counts_[kind];
+    if (c.hits > 0) {
+        --c.hits;
+        ++c.misses;
+        ++c.unusable;
+    }
 }
 
 } // namespace impact::cache

@@ -35,8 +35,9 @@ const std::string& program_fingerprint();
 /// How often each kind of entry was found, computed, or rejected as damaged.
 struct counts {
     std::size_t hits = 0;
-    std::size_t misses = 0;    ///< computed (including those rejected)
+    std::size_t misses = 0;    ///< computed (including those rejected and unusable)
     std::size_t rejected = 0;  ///< present but damaged: wrong length, hash or header
+    std::size_t unusable = 0;  ///< whole, but its reader could not use it (`store::unusable`)
 };
 
 /// The size the cache is kept under by default, in bytes.
@@ -60,6 +61,11 @@ public:
     /// Stores `value` for `kind` and `key`. A failure to write (a full or read-only disk)
     /// is not an error: the result is only not kept.
     void put(const std::string& kind, const std::string& key, const std::string& value);
+
+    /// An entry `get` gave for `kind` was whole but of no use to its reader (a derivation
+    /// whose file moved in a way its places cannot follow): counted as computed again, not
+    /// as reused.
+    void unusable(const std::string& kind);
 
     /// Removes the entries used longest ago until the cache is under its limit, and
     /// temporary files a killed run left over an hour ago.

@@ -222,10 +222,12 @@ bool start(server& s)
 
 } // namespace
 
-std::optional<GiNaC::ex> factor_in_child(const GiNaC::ex& e, unsigned options, unsigned cpu_seconds)
+std::optional<GiNaC::ex> factor_in_child(const GiNaC::ex& e, unsigned options, unsigned cpu_seconds,
+                                         unsigned arrangement)
 {
     // The symbols travel as the stand-ins (two symbols may share a name), numbered in
-    // GiNaC's order of them; the numbers, rational, as GiNaC prints them.
+    // GiNaC's order of them from a place `arrangement` sets; the numbers, rational, as
+    // GiNaC prints them.
     GiNaC::exset symbols;
     for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i) {
         if (GiNaC::is_a<GiNaC::symbol>(*i))
@@ -238,7 +240,7 @@ std::optional<GiNaC::ex> factor_in_child(const GiNaC::ex& e, unsigned options, u
     GiNaC::exmap named;
     GiNaC::symtab by_name;
     for (const GiNaC::ex& s : symbols) {
-        const GiNaC::ex& stand_in = stand_in_symbols()[named.size()];
+        const GiNaC::ex& stand_in = stand_in_symbols()[(101 * arrangement + named.size()) % stand_ins];
         named[s] = stand_in;
         by_name[GiNaC::ex_to<GiNaC::symbol>(stand_in).get_name()] = s;
     }

@@ -9,7 +9,8 @@
 // GiNaC cannot be stopped within a call, so these factorizations run in a child process,
 // started at the first and kept for the next, which factors each within a limit of CPU time;
 // the polynomial is sent and the factorization returned as text. One past its limit ends the
-// child (the polynomial is then taken as not factored), and the next starts another. When the
+// child, and the next starts another (engine/polynomial.h tries the polynomial again, its
+// terms in another order, before it takes it as not factored). When the
 // process that started it exits, the child is stopped and reaped (and were that process
 // killed instead, the child dies with it, by PR_SET_PDEATHSIG). A child costs a fork() once; one fork() a factorization, each copying Impact's pages as it went on
 // writing them, took the LaTeX stage from 0.56 s to 4.6 s.
@@ -42,7 +43,12 @@ pid_t locked_fork();
 /// or when no process or socket is to be had. An error factor() throws, a child that ends
 /// otherwise, or an answer that cannot be read back is thrown as a std::runtime_error.
 /// The factorization is in `e`'s own symbols. Not for threads.
-std::optional<GiNaC::ex> factor_in_child(const GiNaC::ex& e, unsigned options, unsigned cpu_seconds);
+///
+/// `e` travels in stand-in symbols, and GiNaC orders its terms by their hash values: each
+/// `arrangement` gives `e`'s symbols other stand-ins, so that the child sees the terms in
+/// another order, and factor() takes another path (engine/polynomial.h tries several).
+std::optional<GiNaC::ex> factor_in_child(const GiNaC::ex& e, unsigned options, unsigned cpu_seconds,
+                                         unsigned arrangement = 0);
 
 /// The process id of this process's factoring child, or -1 when it has none.
 pid_t factoring_process();

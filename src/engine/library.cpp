@@ -117,7 +117,8 @@ void derive_in_rounds(const std::vector<const spec::derivation*>& order, library
                                  return stored_derivation(derive_here(*s, lib.derived), lib.derived).value_or("");
                              },
                              s->contents.size(), "deriving it", "derive it"});
-        const std::vector<std::string> texts = runner(tasks, {});
+        std::size_t finished = 0;
+        const std::vector<std::string> texts = runner(tasks, [&] { told(++finished); });
         for (std::size_t i = 0; i < to_derive.size(); ++i) {
             const spec::derivation& s = *to_derive[i];
             // A derivation that cannot be kept as text comes back empty: derived here.
@@ -200,6 +201,8 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
         if (found) {
             lib.derived.emplace(s.id.value, std::move(*found));
             told();
+        } else if (text && kept->unusable) {
+            kept->unusable(keys.at(s.id.value));
         }
         return found.has_value();
     };

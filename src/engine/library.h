@@ -41,10 +41,13 @@ std::vector<std::filesystem::path> derivation_files(const std::filesystem::path&
 /// Derivations kept between runs (the pipeline's cache, src/cache/store.h): `find` gives
 /// the text kept for a key, if any, and `keep` keeps one. A derivation's key is the text of
 /// what it is derived from: its file's path and bytes, and the keys of the derivations it
-/// uses (engine/stored.h writes and reads the text).
+/// uses (engine/stored.h writes and reads the text). `unusable` is told of a text `find`
+/// gave that could not be read back (the file's keys reordered, say: the same key, places
+/// that cannot be followed), the derivation then derived again.
 struct derivation_store {
     std::function<std::optional<std::string>(const std::string& key)> find;
     std::function<void(const std::string& key, const std::string& text)> keep;
+    std::function<void(const std::string& key)> unusable;
 };
 
 /// How a library is derived: with `kept`, a derivation whose file and uses are unchanged

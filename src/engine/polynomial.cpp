@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdlib>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -351,9 +352,18 @@ GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
     gather_symbols(expanded, symbols);
     if (symbols.size() > 1) {
         // In several symbols factor() may never return (engine/forked.h): it runs in a
-        // child, and a polynomial it does not factor within the limit is left as it is.
-        constexpr unsigned cpu_seconds = 20;
-        return factor_in_child(e, options, cpu_seconds).value_or(e);
+        // child. Whether it does depends on the order of the terms, which depends on how
+        // Impact was linked: a change to an unrelated part made one factorization of the
+        // derivations take its whole 20 s in one build, and 0.1 s in the one before. So
+        // a short try first, then others, longer, each in another order; a polynomial
+        // none of them factors is left as it is. The factors do not depend on the try
+        // that found them (up to their signs, which the signs' proofs and the LaTeX forms
+        // do not depend on). 20 s of CPU time in all, as one try had.
+        constexpr unsigned cpu_seconds[] = {1, 2, 5, 12};
+        for (unsigned arrangement = 0; arrangement < std::size(cpu_seconds); ++arrangement)
+            if (std::optional<GiNaC::ex> f = factor_in_child(e, options, cpu_seconds[arrangement], arrangement))
+                return *f;
+        return e;
     }
     std::srand(1);
     return GiNaC::factor(e, options);

@@ -34,8 +34,9 @@ expansion expand_numerator(const GiNaC::ex& e);
 /// (or taken from a cache) before. The generator is seeded alike before every call.
 /// A sum that is of degree one in a symbol whose two coefficients have no common factor
 /// is irreducible, and returned expanded without calling factor(). A polynomial in more
-/// than one symbol is factored in a child process, given 20 s of CPU time (factor() may
-/// never return: engine/forked.h), and returned as it is if it takes longer.
+/// than one symbol is factored in a child process (factor() may never return:
+/// engine/forked.h), tried in up to four orders of its terms with 1, 2, 5 and 12 s of CPU
+/// time, and returned as it is if none is enough.
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options = 0);
 
 } // namespace impact::engine

@@ -82,7 +82,8 @@ engine::derivation_store derivations_kept(cache::store* store)
     // Keyed by the executable too: another build of Impact may prove otherwise.
     const auto full = [](const std::string& key) { return cache::program_fingerprint() + "\n" + key; };
     return {[store, full](const std::string& key) { return store->get("derivation", full(key)); },
-            [store, full](const std::string& key, const std::string& text) { store->put("derivation", full(key), text); }};
+            [store, full](const std::string& key, const std::string& text) { store->put("derivation", full(key), text); },
+            [store](const std::string&) { store->unusable("derivation"); }};
 }
 
 namespace {
@@ -126,7 +127,7 @@ struct report_result {
     {
         std::string out = fmt::format("{}\n{}\n", std::llround(seconds * 1e6), used.size());
         for (const auto& [kind, c] : used)
-            out += fmt::format("{} {} {} {}\n", c.hits, c.misses, c.rejected, kind);
+            out += fmt::format("{} {} {} {} {}\n", c.hits, c.misses, c.rejected, c.unusable, kind);
         return out + packed(files);
     }
 
@@ -143,7 +144,7 @@ struct report_result {
         for (std::size_t i = 0; i < kinds; ++i) {
             std::string kind;
             cache::counts c;
-            in >> c.hits >> c.misses >> c.rejected;
+            in >> c.hits >> c.misses >> c.rejected >> c.unusable;
             in.get();   // the space before the name
             std::getline(in, kind);
             r.used[kind] = c;
@@ -164,8 +165,8 @@ std::map<std::string, cache::counts> counts_since(const std::map<std::string, ca
     for (const auto& [kind, c] : after) {
         const auto was = before.find(kind);
         const cache::counts b = was == before.end() ? cache::counts{} : was->second;
-        if (c.hits != b.hits || c.misses != b.misses || c.rejected != b.rejected)
-            made[kind] = {c.hits - b.hits, c.misses - b.misses, c.rejected - b.rejected};
+        if (c.hits != b.hits || c.misses != b.misses || c.rejected != b.rejected || c.unusable != b.unusable)
+            made[kind] = {c.hits - b.hits, c.misses - b.misses, c.rejected - b.rejected, c.unusable - b.unusable};
     }
     return made;
 }
@@ -265,9 +266,12 @@ std::vector<std::string> cache_summary(const std::optional<fs::path>& folder,
     if (!folder)
         return {"cache: none (--no-cache)"};
     lines.push_back("cache: " + folder->string());
-    for (const auto& [kind, c] : counts)
-        lines.push_back(fmt::format("cache: {}: {} reused, {} computed ({} damaged, computed again)", kind, c.hits,
-                                    c.misses, c.rejected));
+    for (const auto& [kind, c] : counts) {
+        std::string line = fmt::format("cache: {}: {} reused, {} computed ({} damaged", kind, c.hits, c.misses, c.rejected);
+        if (c.unusable > 0)
+            line += fmt::format(", {} found but not usable", c.unusable);
+        lines.push_back(line + ", computed again)");
+    }
     return lines;
 }
 
