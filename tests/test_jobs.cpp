@@ -15,6 +15,7 @@
 
 #include "support.h"
 
+#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -99,6 +100,40 @@ std::string what_is_thrown(const std::vector<engine::text_task>& tasks, unsigned
         return e.what();
     }
     return "nothing thrown";
+}
+
+// Runs `command` with a terminal for its standard input, output and error (a pseudo-
+// terminal), as a user at one runs it; everything it printed.
+run_result on_a_terminal(const std::string& command)
+{
+    int terminal = -1;
+    const pid_t pid = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+    BOOST_REQUIRE(pid >= 0);
+    if (pid == 0) {
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    run_result r;
+    std::string got;
+    char buffer[4096];
+    for (;;) {
+        const ssize_t n = ::read(terminal, buffer, sizeof buffer);
+        if (n > 0)
+            got.append(buffer, static_cast<std::size_t>(n));
+        else if (n < 0 && errno == EINTR)
+            continue;
+        else
+            break;  // EIO: the command's side of the terminal is closed
+    }
+    ::close(terminal);
+    // The terminal ends each line with \r\n: as the command wrote it, \n.
+    r.output = std::regex_replace(got, std::regex("\r\n"), "\n");
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    r.exited = WIFEXITED(status);
+    r.status = r.exited ? WEXITSTATUS(status) : -1;
+    return r;
 }
 
 // A Pi-computing kernel on line 21, column 8 (tests/test_bad_input.cpp has its message).
@@ -298,6 +333,35 @@ BOOST_AUTO_TEST_CASE(regenerating_with_two_jobs_writes_the_bytes_of_one_job)
     BOOST_TEST(by_one.count("kernels/impact/collide_line.hpp") == 1u);
     BOOST_TEST(by_one.count("verification.md") == 1u);
     BOOST_TEST((hashes(s.root / "two") == by_one));
+}
+
+// On a terminal, a stage taking more than a second says what it does on one line of
+// standard error, rewritten in place and erased when done; with --quiet, or when standard
+// error is not a terminal, nothing of it is printed. The choice of a dozen kernels' forms
+// takes seconds, derived or not.
+BOOST_AUTO_TEST_CASE(a_progress_line_on_a_terminal_only_and_not_with_quiet)
+{
+    const scratch s;
+    s.copy_smooth_spheres();
+    const std::string impact = "cd '" + s.root.string() + "' && exec " + IMPACT_BINARY + " regenerate --no-cache ";
+    const run_result shown = on_a_terminal(impact + "--output shown");
+    BOOST_TEST_REQUIRE(shown.status == 0, shown.output);
+    BOOST_TEST(said(shown.output, "\\rimpact: choosing kernel forms: [0-9]+ of [0-9]+ kernels"), shown.output);
+    // Erased at the end: what stays on the screen is what Impact prints anyway.
+    const std::size_t last = shown.output.rfind('\r');
+    BOOST_TEST_REQUIRE(last != std::string::npos);
+    BOOST_TEST(shown.output.compare(last, 4, "\r\033[K") == 0, shown.output.substr(last));
+    BOOST_TEST(said(shown.output, "impact: wrote [0-9]+ files to shown"), shown.output);
+
+    const run_result quiet = on_a_terminal(impact + "--quiet --output quiet");
+    BOOST_TEST_REQUIRE(quiet.status == 0, quiet.output);
+    BOOST_TEST(quiet.output.find("choosing kernel forms") == std::string::npos, quiet.output);
+    BOOST_TEST(quiet.output.find("\033[K") == std::string::npos, quiet.output);
+
+    const run_result piped = impact::testing::run_command(impact + "--output piped");
+    BOOST_TEST_REQUIRE(piped.status == 0, piped.output);
+    BOOST_TEST(piped.output.find("choosing kernel forms") == std::string::npos, piped.output);
+    BOOST_TEST(piped.output.find('\r') == std::string::npos, piped.output);
 }
 
 BOOST_AUTO_TEST_CASE(a_failing_derivation_under_two_jobs_is_reported_at_its_place_and_the_output_kept)

@@ -10,6 +10,7 @@
 #include "emit/latex.h"
 #include "engine/library.h"
 #include "engine/stored.h"
+#include "pipeline/workers.h"
 
 #include <nlohmann/json.hpp>
 
@@ -41,7 +42,8 @@ struct memory_store {
                 [this](const std::string& key, const std::string& text) {
                     ++kept;
                     texts[key] = text;
-                }};
+                },
+                {}};
     }
 };
 
@@ -107,6 +109,37 @@ BOOST_AUTO_TEST_CASE(a_restored_derivation_prints_what_the_derived_one_prints)
     BOOST_TEST(!a.symbols.find("mu")->symbol.is_equal(b.symbols.find("mu")->symbol));
     BOOST_TEST(b.all_hold());
     BOOST_TEST(b.checks.size() == a.checks.size());
+}
+
+// The progress line's count (pipeline/progress.h): told as each derivation is done, in one
+// process or in two workers, cold or from the store; never going back, never past the
+// number of files, ending at it.
+BOOST_AUTO_TEST_CASE(progress_is_told_as_each_derivation_is_done_and_never_goes_back)
+{
+    const std::vector<spec::derivation> files = sources();
+    memory_store store;
+    for (const bool workers : {false, true})
+        for (const bool warm : {false, true}) {
+            BOOST_TEST_CONTEXT((workers ? "two workers" : "one process") << (warm ? ", warm" : ", cold"))
+            {
+                std::vector<std::pair<std::size_t, std::size_t>> told;
+                if (!warm)
+                    store = memory_store{};
+                const engine::derivation_store kept = store.handle();
+                const engine::deriving how{&kept, workers ? pipeline::worker_runner(2) : engine::task_runner{},
+                                           [&](std::size_t done, std::size_t all) { told.emplace_back(done, all); }};
+                engine::derive_all(files, "", how);
+                BOOST_TEST(store.found == (warm ? files.size() : 0u));
+                BOOST_TEST_REQUIRE(told.size() >= files.size());
+                BOOST_TEST(told.back().first == files.size());
+                for (std::size_t i = 0; i < told.size(); ++i) {
+                    BOOST_TEST(told[i].second == files.size());
+                    BOOST_TEST(told[i].first >= 1u);
+                    if (i > 0)
+                        BOOST_TEST(told[i].first >= told[i - 1].first, "call " << i);
+                }
+            }
+        }
 }
 
 BOOST_AUTO_TEST_CASE(a_changed_file_is_derived_again_with_those_that_use_it_and_no_other)

@@ -130,7 +130,6 @@ void derive_in_rounds(const std::vector<const spec::derivation*>& order, library
             }
             keep(s, texts[i]);
             lib.derived.emplace(s.id.value, std::move(*d));
-            told(0);
         }
     }
 }
@@ -184,9 +183,13 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
     for (const spec::derivation* s : order)
         keys[s->id.value] = key_of(*s, keys);
     library lib;
+    // Those derived, and those a round's workers have finished (`more`): never fewer than
+    // told before (a round's texts are read back after all its workers are done).
+    std::size_t shown = 0;
     const auto told = [&](std::size_t more = 0) {
+        shown = std::max(shown, lib.derived.size() + more);
         if (how.progress)
-            how.progress(lib.derived.size() + more, order.size());
+            how.progress(shown, order.size());
     };
     const auto keep = [&](const spec::derivation& s, const std::string& text) {
         if (kept && kept->keep && !text.empty())
