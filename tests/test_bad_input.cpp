@@ -361,6 +361,25 @@ BOOST_AUTO_TEST_CASE(a_definition_outside_its_symbols_domain)
                    "outside it");
 }
 
+// Assumptions (domains beside definitions) that cannot hold together: every claim proven
+// under them would be proven of nothing. Each alone is possible (u - z and z - u may each be
+// positive); together, at no point. Under a check's `assuming`, the check's domains count.
+BOOST_AUTO_TEST_CASE(assumptions_that_cannot_hold_together)
+{
+    const std::string u = derived + "[[symbol]]\nname = \"u\"\n";
+    expect_refused(u + "[[symbol]]\nname = \"s\"\ndomain = \"positive\"\ndefinition = \"u - z\"\n"
+                       "[[symbol]]\nname = \"t\"\ndomain = \"positive\"\ndefinition = \"z - u\"\n",
+                   "derivations/bad.toml:27:10: error: 't' is declared positive, but at none of 2000 points drawn "
+                   "from the domains of the symbols it is defined with does it hold together with the assumptions "
+                   "before it (s positive): assumptions that contradict each other prove anything; correct a domain "
+                   "or a definition");
+    expect_refused(u + "[[symbol]]\nname = \"s\"\ndomain = \"positive\"\ndefinition = \"z - 2\"\n"
+                       "[[check]]\nname = \"c\"\nclaim = \"y > 0\"\nassuming = { z = \"[0, 1]\" }\n",
+                   "derivations/bad.toml:28:14: error: 's' is declared positive, but it is so at none of 2000 points "
+                   "drawn from this check's domains of the symbols it is defined with: an assumption that never "
+                   "holds proves anything; correct the domain or the definition");
+}
+
 BOOST_AUTO_TEST_CASE(a_special_value_limit_or_assumption_outside_the_declared_domain)
 {
     expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y = -2\"\nat = { x = \"-1\" }\n",

@@ -4,7 +4,8 @@
 // end, a regeneration with two jobs writes the bytes of one with one, and a failure under
 // two jobs (a derivation, a kernel in its worker, a worker killed) is reported as under one
 // with the output folder left as it was; `impact kernels` takes its choices from the
-// cache; a number of jobs below one is refused. The report, compiled in a process beside
+// cache; a number of jobs below one is refused; on a terminal, and there only, a progress
+// line says what a long stage is doing. The report, compiled in a process beside
 // (pipeline::beside): its text, its error, how it died, and no process left behind.
 #define BOOST_TEST_MODULE test_jobs
 #include <boost/test/unit_test.hpp>
@@ -343,7 +344,10 @@ BOOST_AUTO_TEST_CASE(a_progress_line_on_a_terminal_only_and_not_with_quiet)
 {
     const scratch s;
     s.copy_smooth_spheres();
-    const std::string impact = "cd '" + s.root.string() + "' && exec " + IMPACT_BINARY + " regenerate --no-cache ";
+    // One job: the forms' stage lasts seconds whatever the number of cores, and a kernel
+    // is done (the line's count set) within its first second.
+    const std::string impact =
+        "cd '" + s.root.string() + "' && exec " + IMPACT_BINARY + " regenerate --no-cache --jobs 1 ";
     const run_result shown = on_a_terminal(impact + "--output shown");
     BOOST_TEST_REQUIRE(shown.status == 0, shown.output);
     BOOST_TEST(said(shown.output, "\\rimpact: choosing kernel forms: [0-9]+ of [0-9]+ kernels"), shown.output);

@@ -5,7 +5,8 @@
 // J_t = min((1 + beta) m_t |g_t|, mu J_n) sign(g_t), 1/m_t = 1/M + 1/m + 1/(q_M M) + 1/(q_m m).
 // Checked on the outputs: momentum, angular momentum about the contact point, the energy
 // change -(1 - eps^2) m_r g_n^2/2 - J_t (g_t - J_t/(2 m_t)), the restitution laws, the
-// smooth spheres of Eq. 9, and each refusal with its status.
+// smooth spheres of Eq. 9, and each refusal with its status; in double, and in float and long
+// double against the model and its laws.
 #define BOOST_TEST_MODULE test_rough_kernel
 #include <boost/test/unit_test.hpp>
 
@@ -46,7 +47,7 @@ struct model {
 model expected(const collision& c)
 {
     model e{};
-    const long double rx = c.C_m[0] - c.C_M[0], ry = c.C_m[1] - c.C_M[1];
+    const long double rx = (long double)c.C_m[0] - c.C_M[0], ry = (long double)c.C_m[1] - c.C_M[1];
     const long double d = std::sqrt(rx * rx + ry * ry);
     e.n[0] = rx / d;
     e.n[1] = ry / d;
@@ -211,6 +212,81 @@ BOOST_AUTO_TEST_CASE(conservation_laws_and_the_energy_change)
         if (std::isinf(c.mu))
             BOOST_TEST(std::fabs(gt_after + c.beta * (double)e.g_t) <= scale * g_scale);
     }
+}
+
+// The kernel in float and in long double: the inputs rounded to the type (the model sees
+// the rounded ones), the outputs against the model within 8 ulps of the type (twice the
+// bound; in long double, the model's own rounding, as large, is given as much again), and
+// momentum, the energy change and its sign within a hundred of the type's ulps.
+template <class T>
+void check_in_precision(double ulps)
+{
+    using tvec = std::array<T, 2>;
+    const auto as = [](const vec& v) { return tvec{T(v[0]), T(v[1])}; };
+    const long double unit = std::numeric_limits<T>::epsilon();
+    std::mt19937_64 random(sizeof(T) * 1000 + 22);
+    int checked = 0;
+    for (int n = 0; n < 1000; ++n) {
+        collision c = drawn(random, 0.1, 10, 0.05);
+        if (n % 5 == 0)
+            c.mu = std::numeric_limits<double>::infinity();
+        for (double* x : {&c.M, &c.m, &c.R_M, &c.R_m, &c.q_M, &c.q_m, &c.w_M, &c.w_m, &c.eps, &c.beta, &c.mu,
+                          &c.C_M[0], &c.C_M[1], &c.C_m[0], &c.C_m[1], &c.v_M[0], &c.v_M[1], &c.v_m[0], &c.v_m[1]})
+            *x = static_cast<double>(static_cast<T>(*x));
+        const auto out = impact::collide_rough<T>(T(c.M), T(c.m), T(c.R_M), T(c.R_m), T(c.q_M), T(c.q_m), as(c.C_M),
+                                                  as(c.C_m), as(c.v_M), as(c.v_m), T(c.w_M), T(c.w_m), T(c.eps),
+                                                  T(c.beta), T(c.mu));
+        const model e = expected(c);
+        if (e.g_n <= 0) {
+            BOOST_TEST((out.status == impact::status::separating));
+            continue;
+        }
+        BOOST_REQUIRE(out.status == impact::status::ok);
+        ++checked;
+        BOOST_TEST_CONTEXT("hit " << n)
+        {
+            const long double speed = std::max({std::fabs(c.v_M[0]), std::fabs(c.v_M[1]), std::fabs(c.v_m[0]),
+                                                std::fabs(c.v_m[1]), std::fabs(c.R_M * c.w_M), std::fabs(c.R_m * c.w_m)});
+            const long double tolerance = ulps * speed * unit;
+            const long double v_M[2] = {out.v_M[0], out.v_M[1]}, v_m[2] = {out.v_m[0], out.v_m[1]};
+            for (int i = 0; i < 2; ++i) {
+                const long double J = e.J_n * e.n[i] + e.J_t * e.t[i];
+                BOOST_TEST(std::fabs(v_M[i] - (c.v_M[i] - J / c.M)) <= tolerance);
+                BOOST_TEST(std::fabs(v_m[i] - (c.v_m[i] + J / c.m)) <= tolerance);
+            }
+            BOOST_TEST(std::fabs(out.w_M - (c.w_M - e.J_t / ((long double)c.q_M * c.M * c.R_M))) * c.R_M <= tolerance);
+            BOOST_TEST(std::fabs(out.w_m - (c.w_m - e.J_t / ((long double)c.q_m * c.m * c.R_m))) * c.R_m <= tolerance);
+            const long double scale = 100 * unit;
+            for (int i = 0; i < 2; ++i) {
+                const long double before = (long double)c.M * c.v_M[i] + (long double)c.m * c.v_m[i];
+                const long double after = c.M * v_M[i] + c.m * v_m[i];
+                BOOST_TEST(std::fabs(after - before) <= scale * (c.M + c.m) * 10);
+            }
+            const auto energy_of = [&](const long double* a, const long double* b, long double p, long double q) {
+                return (c.M * (a[0] * a[0] + a[1] * a[1]) + c.m * (b[0] * b[0] + b[1] * b[1]) +
+                        (long double)c.q_M * c.M * c.R_M * c.R_M * p * p + (long double)c.q_m * c.m * c.R_m * c.R_m * q * q) /
+                       2;
+            };
+            const long double before_M[2] = {c.v_M[0], c.v_M[1]}, before_m[2] = {c.v_m[0], c.v_m[1]};
+            const long double E_before = energy_of(before_M, before_m, c.w_M, c.w_m);
+            const long double dE = energy_of(v_M, v_m, out.w_M, out.w_m) - E_before;
+            const long double formula =
+                -(1 - (long double)c.eps * c.eps) * e.m_r * e.g_n * e.g_n / 2 - e.J_t * (e.g_t - e.J_t / (2 * e.m_t));
+            BOOST_TEST(std::fabs(dE - formula) <= scale * (E_before + 1));
+            BOOST_TEST(dE <= scale * (E_before + 1));
+        }
+    }
+    BOOST_TEST(checked > 300);
+}
+
+BOOST_AUTO_TEST_CASE(in_float_the_kernel_follows_the_model_and_its_laws)
+{
+    check_in_precision<float>(8);
+}
+
+BOOST_AUTO_TEST_CASE(in_long_double_the_kernel_follows_the_model_and_its_laws)
+{
+    check_in_precision<long double>(16);
 }
 
 BOOST_AUTO_TEST_CASE(perfectly_rough_elastic_spheres_keep_their_energy)

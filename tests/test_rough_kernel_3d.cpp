@@ -11,7 +11,7 @@
 // along n and the slip never reversed past -beta g_t; eps = beta = 1, mu = +inf keeping the
 // energy; beta = -1 giving the smooth kernel of fn10 with spins unchanged; a hit in the x-y
 // plane giving the 2D kernel's results; a fixed sphere (a mass of +infinity); every refusal;
-// the batch loop bit for bit.
+// the batch loop bit for bit; in float and long double, the model, momentum and the energy.
 #define BOOST_TEST_MODULE test_rough_kernel_3d
 #include <boost/test/unit_test.hpp>
 
@@ -276,6 +276,83 @@ BOOST_AUTO_TEST_CASE(random_hits_follow_the_model_and_its_laws)
     }
     BOOST_TEST(sticking > 200);
     BOOST_TEST(sliding > 200);
+}
+
+// The kernel in float and in long double: the inputs rounded to the type (the model sees
+// the rounded ones), the outputs against the model within 8 ulps of the type (twice the
+// bound; in long double, the model's own rounding, as large, is given as much again), and
+// momentum, the energy change and its sign within a hundred of the type's ulps.
+template <class T>
+void check_in_precision(double ulps)
+{
+    using tvec = std::array<T, 3>;
+    const auto narrow = [](vec& v) {
+        for (double& x : v)
+            x = static_cast<double>(static_cast<T>(x));
+    };
+    const auto as = [](const vec& v) { return tvec{T(v[0]), T(v[1]), T(v[2])}; };
+    const auto wide_t = [](const tvec& v) { return lvec{v[0], v[1], v[2]}; };
+    const long double unit = std::numeric_limits<T>::epsilon();
+    std::mt19937_64 random(sizeof(T) * 1000 + 21);
+    int checked = 0;
+    for (int n = 0; n < 1000; ++n) {
+        collision c = drawn(random, 0.1, 10, 0.05);
+        if (n % 5 == 0)
+            c.mu = inf;
+        for (double* x : {&c.M, &c.m, &c.R_M, &c.R_m, &c.q_M, &c.q_m, &c.eps, &c.beta, &c.mu})
+            *x = static_cast<double>(static_cast<T>(*x));
+        for (vec* v : {&c.C_M, &c.C_m, &c.v_M, &c.v_m, &c.w_M, &c.w_m})
+            narrow(*v);
+        const auto out = impact::collide_rough<T>(T(c.M), T(c.m), T(c.R_M), T(c.R_m), T(c.q_M), T(c.q_m), as(c.C_M),
+                                                  as(c.C_m), as(c.v_M), as(c.v_m), as(c.w_M), as(c.w_m), T(c.eps),
+                                                  T(c.beta), T(c.mu));
+        const model e = expected(c);
+        if (e.g_n <= 0) {
+            BOOST_TEST((out.status == impact::status::separating));
+            continue;
+        }
+        BOOST_REQUIRE(out.status == impact::status::ok);
+        ++checked;
+        BOOST_TEST_CONTEXT("hit " << n)
+        {
+            const lvec v_M = wide_t(out.v_M), v_m = wide_t(out.v_m), w_M = wide_t(out.w_M), w_m = wide_t(out.w_m);
+            const long double tolerance = ulps * largest_speed(c) * unit;
+            for (int i = 0; i < 3; ++i) {
+                BOOST_TEST(std::fabs(v_M[i] - e.v_M[i]) <= tolerance);
+                BOOST_TEST(std::fabs(v_m[i] - e.v_m[i]) <= tolerance);
+                BOOST_TEST(std::fabs(w_M[i] - e.w_M[i]) * c.R_M <= tolerance);
+                BOOST_TEST(std::fabs(w_m[i] - e.w_m[i]) * c.R_m <= tolerance);
+            }
+            const long double scale = 100 * unit;
+            for (int i = 0; i < 3; ++i) {
+                const long double before = (long double)c.M * c.v_M[i] + (long double)c.m * c.v_m[i];
+                const long double after = c.M * v_M[i] + c.m * v_m[i];
+                BOOST_TEST(std::fabs(after - before) <= scale * (c.M + c.m) * 10);
+            }
+            const auto energy_of = [&](const lvec& a, const lvec& b, const lvec& p, const lvec& q) {
+                return (c.M * dot(a, a) + c.m * dot(b, b) + (long double)c.q_M * c.M * c.R_M * c.R_M * dot(p, p) +
+                        (long double)c.q_m * c.m * c.R_m * c.R_m * dot(q, q)) /
+                       2;
+            };
+            const long double E_before = energy_of(wide(c.v_M), wide(c.v_m), wide(c.w_M), wide(c.w_m));
+            const long double dE = energy_of(v_M, v_m, w_M, w_m) - E_before;
+            const long double formula = -(1 - (long double)c.eps * c.eps) * e.m_r * e.g_n * e.g_n / 2 -
+                                        e.J_t_size * (e.g_t_size - e.J_t_size / (2 * e.m_t));
+            BOOST_TEST(std::fabs(dE - formula) <= scale * (E_before + 1));
+            BOOST_TEST(dE <= scale * (E_before + 1));
+        }
+    }
+    BOOST_TEST(checked > 300);
+}
+
+BOOST_AUTO_TEST_CASE(in_float_the_kernel_follows_the_model_and_its_laws)
+{
+    check_in_precision<float>(8);
+}
+
+BOOST_AUTO_TEST_CASE(in_long_double_the_kernel_follows_the_model_and_its_laws)
+{
+    check_in_precision<long double>(16);
 }
 
 BOOST_AUTO_TEST_CASE(perfectly_rough_elastic_spheres_keep_their_energy)

@@ -469,11 +469,18 @@ struct rough_wall_hit_3d {
 struct rough_after_3d {
     std::array<long double, 3> v, w;
     bool sliding;
+    long double g_n, slip, j_t;        ///< g.u, |g_t| and |j_t| before
+    std::array<long double, 3> u, g_t;
 };
 
 std::array<long double, 3> cross(const std::array<long double, 3>& a, const std::array<long double, 3>& b)
 {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+long double dot(const std::array<long double, 3>& a, const std::array<long double, 3>& b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 rough_after_3d walton_3d(const rough_wall_hit_3d& h)
@@ -502,6 +509,11 @@ rough_after_3d walton_3d(const rough_wall_hit_3d& h)
         after.w[k] = h.w[k] - moment[k] / (h.q * h.R);
     }
     after.sliding = sliding;
+    after.g_n = g_n;
+    after.slip = slip;
+    after.j_t = sliding ? h.mu * j_n : stick * slip;
+    after.u = u;
+    after.g_t = g_t;
     return after;
 }
 
@@ -555,6 +567,31 @@ BOOST_AUTO_TEST_CASE(a_rough_wall_in_space_follows_waltons_model)
         const auto after = about_contact({out.v[0], out.v[1], out.v[2]}, {out.w[0], out.w[1], out.w[2]});
         for (std::size_t k = 0; k < 3; ++k)
             BOOST_TEST(std::fabs(after[k] - before[k]) <= 64 * h.R * ulp);
+        // The energy change per unit mass, v^2/2 + q R^2 w^2/2, is
+        // -(1 - eps^2) g_n^2/2 - |j_t| (|g_t| - |j_t|/(2 m_t)) with m_t = q/(1 + q), never a
+        // gain; the slip after, g_t' = g_t - |j_t| (1 + q)/q g_t/|g_t|, is never reversed past
+        // -beta g_t (what the derivation does not prove yet, checked here).
+        auto energy = [&](const std::array<long double, 3>& v, const std::array<long double, 3>& w) {
+            return (dot(v, v) + h.q * h.R * h.R * dot(w, w)) / 2;
+        };
+        const std::array<long double, 3> v0{h.v[0], h.v[1], h.v[2]}, w0{h.w[0], h.w[1], h.w[2]};
+        const std::array<long double, 3> v1{out.v[0], out.v[1], out.v[2]}, w1{out.w[0], out.w[1], out.w[2]};
+        const long double dE = energy(v1, w1) - energy(v0, w0);
+        const long double m_t = h.q / (1 + static_cast<long double>(h.q));
+        const long double formula = -(1 - static_cast<long double>(h.eps) * h.eps) * want.g_n * want.g_n / 2 -
+                                    want.j_t * (want.slip - want.j_t / (2 * m_t));
+        const long double E_ulp = 64 * scale * ulp;
+        BOOST_TEST(std::fabs(dE - formula) <= E_ulp, "hit " << i << ": " << dE << " against " << formula);
+        BOOST_TEST(dE <= E_ulp, "hit " << i);
+        const std::array<long double, 3> w1_x_u = cross(w1, want.u);
+        std::array<long double, 3> g1;
+        for (std::size_t k = 0; k < 3; ++k)
+            g1[k] = -v1[k] + h.R * w1_x_u[k];
+        const long double g1_n = dot(g1, want.u);
+        long double past = 0;  // (g_t' + beta g_t).g_t: 0 sticking, >= 0 sliding
+        for (std::size_t k = 0; k < 3; ++k)
+            past += (g1[k] - g1_n * want.u[k] + h.beta * want.g_t[k]) * want.g_t[k];
+        BOOST_TEST(past >= -64 * scale * ulp * (want.slip + scale), "hit " << i);
     }
     BOOST_TEST(resolved > 3900);
     BOOST_TEST(slid > 400);

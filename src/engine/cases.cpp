@@ -818,6 +818,58 @@ std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& 
 
 } // namespace
 
+namespace {
+
+// Two cases' values agree on their boundary, with each square root that is an abbreviation
+// a quantity of its own (radicals_named) in the condition and in both values: the boundary
+// solved for a declared quantity it is linear in, whose coefficient is proven non-zero, and
+// the values there equal as rational functions. A root solved out of the condition and the
+// same root in a value are then one quantity, however GiNaC would write them expanded (the
+// wall's sliding impulse, mu (1 + eps) s_n/|n|, at the mu where (1 + b) q G_t meets it).
+// Nothing when no root is named or no such quantity is found.
+std::optional<check_result::part> meet_with_roots_named(const case_value& first, const case_value& second,
+                                                        const symbol_table& symbols, proof_cache& run)
+{
+    const assumptions declared = declared_assumptions(symbols, run);
+    radicals_named named(symbols, declared);
+    const GiNaC::ex condition = GiNaC::normal(named(condition_form(first).value));
+    const GiNaC::ex a = named(first.value), b = named(second.value);
+    if (!named.any_used())
+        return std::nullopt;
+    std::vector<std::string> words;
+    const assumptions roots = named.with_domains(declared, words);
+    const GiNaC::ex top = GiNaC::expand(condition.numer());
+    for (const quantity& q : symbols.all()) {
+        if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
+            top.ldegree(q.symbol) < 0)
+            continue;
+        const GiNaC::ex coefficient = top.coeff(q.symbol, 1);
+        if (coefficient.has(q.symbol) || GiNaC::normal(coefficient).is_zero())
+            continue;
+        const sign_set sign = prove_sign(coefficient, roots).sign;
+        if (sign.zero || (sign.positive && sign.negative))
+            continue;
+        const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / coefficient);
+        const GiNaC::exmap on{{q.symbol, value}};
+        if (!GiNaC::normal(a.subs(on, GiNaC::subs_options::no_pattern) - b.subs(on, GiNaC::subs_options::no_pattern))
+                 .is_zero())
+            continue;
+        check_result::part part;
+        part.under = fmt::format("at {} = {}", ginac_syntax(q.symbol, symbols.order()), ginac_syntax(value, symbols.order()));
+        part.boundary = {q.symbol, value};
+        part.outcome.what = verdict::status::proven;
+        part.outcome.residual = 0;
+        part.outcome.method = fmt::format("difference normalises to zero, with the square roots that are "
+                                          "abbreviations as quantities of their own ({})",
+                                          fmt::join(words, ", "));
+        part.outcome.how = verdict::basis::zero_difference;
+        return part;
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
 check_result prove_continuity(const std::string& name, const std::vector<case_value>& cases,
                               const symbol_table& symbols, proof_cache& run, const source_location& where)
 {
@@ -836,6 +888,13 @@ check_result prove_continuity(const std::string& name, const std::vector<case_va
             check_result::part part;
             part.first = i + 1;
             part.second = j + 1;
+            if (std::optional<check_result::part> met = meet_with_roots_named(cases[i], cases[j], symbols, run)) {
+                met->first = i + 1;
+                met->second = j + 1;
+                met->under = fmt::format("cases {} and {} {}", i + 1, j + 1, met->under);
+                c.parts.push_back(std::move(*met));
+                continue;
+            }
             // The boundary C_i = 0, solved once for all the cases that share it.
             const GiNaC::ex top = GiNaC::expand(ci.numer());
             const auto known = run.boundaries.find(top);

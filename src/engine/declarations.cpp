@@ -1,8 +1,12 @@
 #include "engine/declarations.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <optional>
+#include <string>
+#include <vector>
 #include <stdexcept>
 
 namespace impact::engine {
@@ -66,6 +70,87 @@ void check_definitions(const symbol_table& symbols, const spec::derivation& sour
                                            q.name, q.range.to_string(), declaration.definition->value,
                                            proof.sign.describe()));
     }
+}
+
+void check_assumptions_hold_together(const symbol_table& symbols, const spec::derivation& source,
+                                     const assumptions& given, const source_location& where)
+{
+    if (given.assumed.empty())
+        return;
+    // Each assumption in the inputs, with where its domain is written.
+    struct premise {
+        const assumptions::assumed_sign* sign;
+        GiNaC::ex in_inputs;
+        source_location written;
+        std::string name;
+    };
+    std::vector<premise> premises;
+    for (const assumptions::assumed_sign& a : given.assumed) {
+        const quantity* q = nullptr;
+        for (const quantity& candidate : symbols.all())
+            if (candidate.symbol.is_equal(a.symbol))
+                q = &candidate;
+        if (!q || !q->definition)
+            continue;
+        source_location written = where;
+        for (const spec::symbol& declaration : source.symbols)
+            if (declaration.name.value == q->name && where.file.empty())
+                written = declaration.domain.where;
+        premises.push_back({&a, symbols.in_inputs(*q->definition), written, q->name});
+    }
+    if (premises.empty())
+        return;
+    // The inputs the assumptions are written in, each with its domain.
+    GiNaC::exset inputs;
+    for (const premise& p : premises)
+        for (GiNaC::const_preorder_iterator i = p.in_inputs.preorder_begin(); i != p.in_inputs.preorder_end(); ++i)
+            if (GiNaC::is_a<GiNaC::symbol>(*i))
+                inputs.insert(*i);
+    const auto holds_at = [](const premise& p, const GiNaC::exmap& point) {
+        try {
+            const GiNaC::ex value = p.in_inputs.subs(point, GiNaC::subs_options::no_pattern).evalf();
+            if (!GiNaC::is_a<GiNaC::numeric>(value) || !value.info(GiNaC::info_flags::real))
+                return false;
+            return p.sign->range.contains(GiNaC::ex_to<GiNaC::numeric>(value).to_double());
+        } catch (const std::exception&) {
+            return false;  // a division by zero there
+        }
+    };
+    // The most assumptions, in their order, that one point has satisfied so far.
+    constexpr int points = 2000;
+    std::size_t most = 0;
+    uniform_stream stream(0x5eed);
+    for (int n = 0; n < points && most < premises.size(); ++n) {
+        GiNaC::exmap point;
+        for (const GiNaC::ex& x : inputs) {
+            const auto range = given.domains.find(x);
+            point[x] = draw(range == given.domains.end() ? domain{} : range->second, stream);
+        }
+        std::size_t k = 0;
+        while (k < premises.size() && holds_at(premises[k], point))
+            ++k;
+        most = std::max(most, k);
+    }
+    if (most == premises.size())
+        return;
+    const premise& refused = premises[most];
+    std::vector<std::string> before;
+    for (std::size_t i = 0; i < most; ++i)
+        before.push_back(fmt::format("{} {}", premises[i].name, premises[i].sign->range.to_string()));
+    // Under a check's `assuming`, the domains are the check's.
+    const std::string domains = where.file.empty() ? "the domains" : "this check's domains";
+    throw error(refused.written,
+                before.empty()
+                    ? fmt::format("'{}' is declared {}, but it is so at none of {} points drawn from {} of "
+                                  "the symbols it is defined with: an assumption that never holds proves anything; "
+                                  "correct the domain or the definition",
+                                  refused.name, refused.sign->range.to_string(), points, domains)
+                    : fmt::format("'{}' is declared {}, but at none of {} points drawn from {} of the "
+                                  "symbols it is defined with does it hold together with the assumptions before it "
+                                  "({}): assumptions that contradict each other prove anything; correct a domain or "
+                                  "a definition",
+                                  refused.name, refused.sign->range.to_string(), points, domains,
+                                  fmt::join(before, ", ")));
 }
 
 void check_special_value(const quantity& q, const GiNaC::ex& value, const source_location& where)

@@ -20,6 +20,17 @@ namespace impact::engine {
 /// (a positive `w` defined as `-x` with `x` positive is refused).
 void check_definitions(const symbol_table& symbols, const spec::derivation& source, proof_cache& run);
 
+/// The assumptions hold together: the domains given beside definitions (`s_n` positive: the
+/// spheres approach; `d` positive: the centres apart), with the inputs' domains as `given`
+/// has them (a check's `assuming` narrows them), must all hold at one point, or every claim
+/// proven under them would be proven of nothing. A witness is searched among points drawn
+/// from the inputs' domains (a found one establishes it); when none of them satisfies the
+/// first k assumptions in the order they are declared, the k-th is refused at `where`
+/// (or at its domain when `where` is empty) with those before it named. Each assumption
+/// alone has its sign checked by check_definitions.
+void check_assumptions_hold_together(const symbol_table& symbols, const spec::derivation& source,
+                                     const assumptions& given, const source_location& where = {});
+
 /// `at = { x = "value" }`: a numeric value must lie in the closure of x's domain.
 void check_special_value(const quantity& q, const GiNaC::ex& value, const source_location& where);
 

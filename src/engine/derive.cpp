@@ -31,6 +31,7 @@ public:
         for (const spec::symbol& declaration : s.symbols)
             out_.symbols.declare(declaration);
         check_definitions(out_.symbols, s, run_);
+        check_assumptions_hold_together(out_.symbols, s, declared_assumptions(out_.symbols, run_));
         infer_definitions(out_.symbols, s);
         for (const spec::use& u : s.uses)
             import(u);
@@ -634,6 +635,8 @@ private:
             const quantity& q = out_.symbols.at(b.name);
             given.domains[q.symbol] = narrowed_domain(q, b.expression);
         }
+        if (!spec_check.assuming.empty())
+            check_assumptions_hold_together(out_.symbols, out_.source, given, spec_check.assuming.front().name.where);
         return given;
     }
 

@@ -357,8 +357,10 @@ GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
         // derivations take its whole 20 s in one build, and 0.1 s in the one before. So
         // a short try first, then others, longer, each in another order; a polynomial
         // none of them factors is left as it is. The factors do not depend on the try
-        // that found them (up to their signs, which the signs' proofs and the LaTeX forms
-        // do not depend on). 20 s of CPU time in all, as one try had.
+        // that found them, but for their signs and how far factor() collected each: its
+        // callers expand each factor and put its sign outside (sign.cpp's flattened(),
+        // emit/latex_textbook.cpp), so that what they make of it does not depend on the try
+        // either. 20 s of CPU time in all, as one try had.
         constexpr unsigned cpu_seconds[] = {1, 2, 5, 12};
         for (unsigned arrangement = 0; arrangement < std::size(cpu_seconds); ++arrangement)
             if (std::optional<GiNaC::ex> f = factor_in_child(e, options, cpu_seconds[arrangement], arrangement))

@@ -85,7 +85,7 @@ for n in "${sizes[@]}"; do
     awk '/^\[\[kernel\]\]/ { k = 1 } k && /^name = "/ { sub(/"$/, "_changed\""); k = 0 } { print }' "$changed" > "$scratch/t" &&
       mv "$scratch/t" "$changed"
     change=$(timed "${args[@]}")
-    cache=$(grep -E 'cache: (derivation|PDF|kernel choice):' "$scratch/last" | sed 's/^impact: cache: //; s/ (0 damaged, computed again)//' |
+    cache=$(grep -E 'cache: (derivation|PDF|kernel choice):' "$scratch/last" | sed 's/^impact: cache: //; s/ (0 damaged, computed again)//; s/ (0 damaged, \([0-9]* found but not usable\), computed again)/ (\1)/' |
       tr '\n' ';' | sed 's/;$//; s/;/; /g')
     printf '%6d %4d %9.2f %9.2f %8.2f %9.2f %7.3f %10.2f %7.3f %9.2f %7.3f  %s\n' "$files" "$jobs" "$cold" "$kernels" \
       "$derive" "$warm" "$(echo "$warm / $cold" | bc -l)" "$comment" "$(echo "$comment / $cold" | bc -l)" "$change" \
