@@ -822,8 +822,9 @@ namespace {
 
 // Two cases' values agree on their boundary, with each square root that is an abbreviation
 // a quantity of its own (radicals_named) in the condition and in both values: the boundary
-// solved for a declared quantity it is linear in, whose coefficient is proven non-zero, and
-// the values there equal as rational functions. A root solved out of the condition and the
+// solved for a declared quantity it is linear in (the shortest value first, as
+// solved_boundary takes them), the values there equal as rational functions, and the
+// quantity's coefficient proven non-zero. A root solved out of the condition and the
 // same root in a value are then one quantity, however GiNaC would write them expanded (the
 // wall's sliding impulse, mu (1 + eps) s_n/|n|, at the mu where (1 + b) q G_t meets it).
 // Nothing when no root is named or no such quantity is found.
@@ -839,6 +840,13 @@ std::optional<check_result::part> meet_with_roots_named(const case_value& first,
     std::vector<std::string> words;
     const assumptions roots = named.with_domains(declared, words);
     const GiNaC::ex top = GiNaC::expand(condition.numer());
+    // The candidates as solved_boundary takes them, shortest value first; each whose values
+    // agree there has its coefficient's sign proven (the costly part: the first is taken).
+    struct candidate {
+        std::size_t length;
+        GiNaC::ex symbol, coefficient, value;
+    };
+    std::vector<candidate> candidates;
     for (const quantity& q : symbols.all()) {
         if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
             top.ldegree(q.symbol) < 0)
@@ -846,17 +854,23 @@ std::optional<check_result::part> meet_with_roots_named(const case_value& first,
         const GiNaC::ex coefficient = top.coeff(q.symbol, 1);
         if (coefficient.has(q.symbol) || GiNaC::normal(coefficient).is_zero())
             continue;
-        const sign_set sign = prove_sign(coefficient, roots).sign;
-        if (sign.zero || (sign.positive && sign.negative))
-            continue;
         const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / coefficient);
-        const GiNaC::exmap on{{q.symbol, value}};
+        candidates.push_back({ginac_syntax(value, symbols.order()).size(), q.symbol, coefficient, value});
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const candidate& x, const candidate& y) { return x.length < y.length; });
+    for (const candidate& c : candidates) {
+        const GiNaC::exmap on{{c.symbol, c.value}};
         if (!GiNaC::normal(a.subs(on, GiNaC::subs_options::no_pattern) - b.subs(on, GiNaC::subs_options::no_pattern))
                  .is_zero())
             continue;
+        const sign_set sign = prove_sign(c.coefficient, roots).sign;
+        if (sign.zero || (sign.positive && sign.negative))
+            continue;
         check_result::part part;
-        part.under = fmt::format("at {} = {}", ginac_syntax(q.symbol, symbols.order()), ginac_syntax(value, symbols.order()));
-        part.boundary = {q.symbol, value};
+        part.under = fmt::format("at {} = {}", ginac_syntax(c.symbol, symbols.order()),
+                                 ginac_syntax(c.value, symbols.order()));
+        part.boundary = {c.symbol, c.value};
         part.outcome.what = verdict::status::proven;
         part.outcome.residual = 0;
         part.outcome.method = fmt::format("difference normalises to zero, with the square roots that are "
