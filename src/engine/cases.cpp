@@ -774,22 +774,18 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
 
 namespace {
 
-// The boundary `top` = 0 of two cases solved for the declared quantity it is linear in
-// whose value there is the shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass),
-// its coefficient proven non-zero where one can be; none if it is linear in none. The
-// candidates are tried shortest first (the first in declaration order among equals), and
-// the first whose coefficient is proven non-zero is taken: a sign proof that fails can
-// take seconds on a long coefficient (where the boundary holds the slip's length, in
-// space), and those after the first proven one are not needed; nor is one for a
-// coefficient seen taking both signs at points of the domains (it cannot be proven of one).
-std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& top, const symbol_table& symbols,
-                                                               proof_cache& run)
+// A declared quantity the boundary `top` = 0 is linear in, with its coefficient and its
+// value there.
+struct boundary_candidate {
+    std::size_t length;   ///< of the value, printed
+    GiNaC::ex symbol, coefficient, value;
+};
+
+// Every such quantity, the shortest value first (the first in declaration order among
+// equals).
+std::vector<boundary_candidate> linear_candidates(const GiNaC::ex& top, const symbol_table& symbols)
 {
-    struct candidate {
-        std::size_t length;
-        GiNaC::ex symbol, coefficient, value;
-    };
-    std::vector<candidate> candidates;
+    std::vector<boundary_candidate> candidates;
     for (const quantity& q : symbols.all()) {
         // Not under a radical (degree() throws on sqrt(x)): linear means polynomial first.
         if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
@@ -801,12 +797,27 @@ std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& 
         const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / a);
         candidates.push_back({ginac_syntax(value, symbols.order()).size(), q.symbol, a, value});
     }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const boundary_candidate& x, const boundary_candidate& y) { return x.length < y.length; });
+    return candidates;
+}
+
+// The boundary `top` = 0 of two cases solved for the declared quantity it is linear in
+// whose value there is the shortest (mu = (1 + b) m_t |g_t| / J_n rather than a mass),
+// its coefficient proven non-zero where one can be; none if it is linear in none. The
+// candidates are tried shortest first (the first in declaration order among equals), and
+// the first whose coefficient is proven non-zero is taken: a sign proof that fails can
+// take seconds on a long coefficient (where the boundary holds the slip's length, in
+// space), and those after the first proven one are not needed; nor is one for a
+// coefficient seen taking both signs at points of the domains (it cannot be proven of one).
+std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& top, const symbol_table& symbols,
+                                                               proof_cache& run)
+{
+    const std::vector<boundary_candidate> candidates = linear_candidates(top, symbols);
     if (candidates.empty())
         return std::nullopt;
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [](const candidate& x, const candidate& y) { return x.length < y.length; });
     const assumptions given = declared_assumptions(symbols, run);
-    for (const candidate& c : candidates) {
+    for (const boundary_candidate& c : candidates) {
         if (takes_both_signs(c.coefficient, given))
             continue;
         const sign_set s = prove_sign(c.coefficient, given).sign;
@@ -815,10 +826,6 @@ std::optional<std::pair<GiNaC::ex, GiNaC::ex>> solved_boundary(const GiNaC::ex& 
     }
     return std::make_pair(candidates.front().symbol, candidates.front().value);
 }
-
-} // namespace
-
-namespace {
 
 // Two cases' values agree on their boundary, with each square root that is an abbreviation
 // a quantity of its own (radicals_named) in the condition and in both values: the boundary
@@ -840,26 +847,9 @@ std::optional<check_result::part> meet_with_roots_named(const case_value& first,
     std::vector<std::string> words;
     const assumptions roots = named.with_domains(declared, words);
     const GiNaC::ex top = GiNaC::expand(condition.numer());
-    // The candidates as solved_boundary takes them, shortest value first; each whose values
-    // agree there has its coefficient's sign proven (the costly part: the first is taken).
-    struct candidate {
-        std::size_t length;
-        GiNaC::ex symbol, coefficient, value;
-    };
-    std::vector<candidate> candidates;
-    for (const quantity& q : symbols.all()) {
-        if (q.definition || !top.has(q.symbol) || !top.is_polynomial(q.symbol) || top.degree(q.symbol) != 1 ||
-            top.ldegree(q.symbol) < 0)
-            continue;
-        const GiNaC::ex coefficient = top.coeff(q.symbol, 1);
-        if (coefficient.has(q.symbol) || GiNaC::normal(coefficient).is_zero())
-            continue;
-        const GiNaC::ex value = GiNaC::normal(-top.coeff(q.symbol, 0) / coefficient);
-        candidates.push_back({ginac_syntax(value, symbols.order()).size(), q.symbol, coefficient, value});
-    }
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [](const candidate& x, const candidate& y) { return x.length < y.length; });
-    for (const candidate& c : candidates) {
+    // Each whose values agree there has its coefficient's sign proven (the costly part:
+    // the first proven is taken).
+    for (const boundary_candidate& c : linear_candidates(top, symbols)) {
         const GiNaC::exmap on{{c.symbol, c.value}};
         if (!GiNaC::normal(a.subs(on, GiNaC::subs_options::no_pattern) - b.subs(on, GiNaC::subs_options::no_pattern))
                  .is_zero())
