@@ -363,21 +363,35 @@ BOOST_AUTO_TEST_CASE(a_definition_outside_its_symbols_domain)
 
 // Assumptions (domains beside definitions) that cannot hold together: every claim proven
 // under them would be proven of nothing. Each alone is possible (u - z and z - u may each be
-// positive); together, at no point. Under a check's `assuming`, the check's domains count.
+// positive); together they contradict each other, which the sign of the second under the
+// first proves. Under a check's `assuming`, the check's domains count.
 BOOST_AUTO_TEST_CASE(assumptions_that_cannot_hold_together)
 {
     const std::string u = derived + "[[symbol]]\nname = \"u\"\n";
     expect_refused(u + "[[symbol]]\nname = \"s\"\ndomain = \"positive\"\ndefinition = \"u - z\"\n"
                        "[[symbol]]\nname = \"t\"\ndomain = \"positive\"\ndefinition = \"z - u\"\n",
-                   "derivations/bad.toml:27:10: error: 't' is declared positive, but at none of 2000 points drawn "
-                   "from the domains of the symbols it is defined with does it hold together with the assumptions "
-                   "before it (s positive): assumptions that contradict each other prove anything; correct a domain "
-                   "or a definition");
+                   "derivations/bad.toml:27:10: error: 't' is declared positive, but its definition z - u is < 0 "
+                   "under the declared domains and the assumptions before it (s positive): assumptions that "
+                   "contradict each other prove anything; correct a domain or a definition");
     expect_refused(u + "[[symbol]]\nname = \"s\"\ndomain = \"positive\"\ndefinition = \"z - 2\"\n"
                        "[[check]]\nname = \"c\"\nclaim = \"y > 0\"\nassuming = { z = \"[0, 1]\" }\n",
-                   "derivations/bad.toml:28:14: error: 's' is declared positive, but it is so at none of 2000 points "
-                   "drawn from this check's domains of the symbols it is defined with: an assumption that never "
-                   "holds proves anything; correct the domain or the definition");
+                   "derivations/bad.toml:28:14: error: 's' is declared positive, but its definition z - 2 is < 0 "
+                   "under this check's domains: an assumption that never holds proves anything; correct the "
+                   "domain or the definition");
+}
+
+// Assumptions that hold only far from 1 (x - 30 > 0, x positive) or only at 0 (-w >= 0, w
+// nonnegative) are consistent: a point is found where they hold, and nothing is refused.
+BOOST_AUTO_TEST_CASE(assumptions_that_hold_far_from_one_or_only_at_zero_are_accepted)
+{
+    const scratch s;
+    s.write("derivations/fine.toml",
+            derived + "[[symbol]]\nname = \"w\"\ndomain = \"nonnegative\"\n"
+                      "[[symbol]]\nname = \"s\"\ndomain = \"positive\"\ndefinition = \"x - 30\"\n"
+                      "[[symbol]]\nname = \"t\"\ndomain = \"nonnegative\"\ndefinition = \"-w\"\n"
+                      "[[check]]\nname = \"c\"\nclaim = \"y > 0\"\n");
+    const run_result r = s.impact("derive bad");
+    BOOST_TEST(r.status == 0, r.output);
 }
 
 BOOST_AUTO_TEST_CASE(a_special_value_limit_or_assumption_outside_the_declared_domain)

@@ -570,7 +570,7 @@ BOOST_AUTO_TEST_CASE(a_rough_wall_in_space_follows_waltons_model)
         // The energy change per unit mass, v^2/2 + q R^2 w^2/2, is
         // -(1 - eps^2) g_n^2/2 - |j_t| (|g_t| - |j_t|/(2 m_t)) with m_t = q/(1 + q), never a
         // gain; the slip after, g_t' = g_t - |j_t| (1 + q)/q g_t/|g_t|, is never reversed past
-        // -beta g_t (what the derivation does not prove yet, checked here).
+        // -beta g_t (as derivations/rough_wall_space.toml proves, here on the compiled kernel).
         auto energy = [&](const std::array<long double, 3>& v, const std::array<long double, 3>& w) {
             return (dot(v, v) + h.q * h.R * h.R * dot(w, w)) / 2;
         };
@@ -591,7 +591,7 @@ BOOST_AUTO_TEST_CASE(a_rough_wall_in_space_follows_waltons_model)
         long double past = 0;  // (g_t' + beta g_t).g_t: 0 sticking, >= 0 sliding
         for (std::size_t k = 0; k < 3; ++k)
             past += (g1[k] - g1_n * want.u[k] + h.beta * want.g_t[k]) * want.g_t[k];
-        BOOST_TEST(past >= -64 * scale * ulp * (want.slip + scale), "hit " << i);
+        BOOST_TEST(past >= -64 * ulp * (want.slip + scale), "hit " << i);
     }
     BOOST_TEST(resolved > 3900);
     BOOST_TEST(slid > 400);

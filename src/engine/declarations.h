@@ -13,6 +13,8 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
+
 namespace impact::engine {
 
 /// Every `[[symbol]]` with both a `definition` and a domain other than `real`: the
@@ -21,15 +23,17 @@ namespace impact::engine {
 void check_definitions(const symbol_table& symbols, const spec::derivation& source, proof_cache& run);
 
 /// The assumptions hold together: the domains given beside definitions (`s_n` positive: the
-/// spheres approach; `d` positive: the centres apart), with the inputs' domains as `given`
-/// has them (a check's `assuming` narrows them), must all hold at one point, or every claim
-/// proven under them would be proven of nothing. A witness is searched among points drawn
-/// from the inputs' domains (a found one establishes it); when none of them satisfies the
-/// first k assumptions in the order they are declared, the k-th is refused at `where`
-/// (or at its domain when `where` is empty) with those before it named. Each assumption
-/// alone has its sign checked by check_definitions.
+/// spheres approach; `d` positive: the centres apart) hold at one point of the inputs'
+/// domains as `given` has them, or every claim proven under them would be proven of
+/// nothing. A witness is searched among 2000 points drawn over twelve decades either side of
+/// 1, zero and the ends of intervals among them: one found shows them consistent. When none
+/// satisfies the first k in the order they are declared, the k-th is refused if its
+/// definition is proven of another sign under the domains and the k - 1 before it (at its
+/// domain, or at `check`, the place of a check's `assuming` whose domains `given` holds);
+/// a set neither shown consistent nor proven contradictory is let through.
 void check_assumptions_hold_together(const symbol_table& symbols, const spec::derivation& source,
-                                     const assumptions& given, const source_location& where = {});
+                                     const assumptions& given,
+                                     const std::optional<source_location>& check = std::nullopt);
 
 /// `at = { x = "value" }`: a numeric value must lie in the closure of x's domain.
 void check_special_value(const quantity& q, const GiNaC::ex& value, const source_location& where);
