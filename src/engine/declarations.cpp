@@ -131,10 +131,8 @@ void check_assumptions_hold_together(const symbol_table& symbols, const spec::de
                 inputs.insert(*i);
     const auto holds_at = [](const premise& p, const GiNaC::exmap& point) {
         try {
-            const GiNaC::ex value = p.in_inputs.subs(point, GiNaC::subs_options::no_pattern).evalf();
-            if (!GiNaC::is_a<GiNaC::numeric>(value) || !value.info(GiNaC::info_flags::real))
-                return false;
-            return p.sign->range.contains(GiNaC::ex_to<GiNaC::numeric>(value).to_double());
+            const auto value = numeric_value(p.in_inputs.subs(point, GiNaC::subs_options::no_pattern));
+            return value && p.sign->range.contains(*value);
         } catch (const std::exception&) {
             return false;  // a division by zero there
         }
