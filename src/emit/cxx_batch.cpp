@@ -29,6 +29,16 @@ namespace {
 // Each term of the sum is written as `term` gives it (in place by default).
 using term_writer = std::function<std::string(const std::string& term, bool is_sum)>;
 
+// Text with every line indented 4 spaces more.
+std::string indented_by_4(const std::string& text)
+{
+    std::string out;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        out += (line.empty() ? "" : "    ") + line + "\n";
+    return out;
+}
+
 std::string in_place(const std::string& term, bool is_sum)
 {
     return is_sum ? "(" + term + ")" : term;
@@ -160,7 +170,7 @@ constexpr const char* status_ahead = "            if constexpr (with_status)\n"
 // data asked for 64 pairs ahead: out of cache, the hardware's prefetching alone leaves
 // the loop waiting for memory (in 3D, 16 arrays streamed at once, a quarter slower).
 void print_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs, bool with_status,
-                  bool settles)
+                  bool settles, bool sure)
 {
     std::vector<std::string> ahead;
     for (const lane_input& in : inputs)
@@ -170,16 +180,20 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
     const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
     const std::string arguments = fmt::format("{}", fmt::join(block_arguments(inputs, with_status, settles), ", "));
     const std::string settle = settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, arguments) : "";
+    const std::string whole = fmt::format("        {}(block, {});\n{}", call, arguments, settle);
+    const std::string each = sure ? fmt::format("        if (!{}_sure<Real, with_status>({})) {{\n{}        }}\n", loop, arguments,
+                                                indented_by_4(whole))
+                                  : whole;
     out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
                        "// processor's own prefetching, following so many arrays, falls behind.\n"
                        "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
                        "    constexpr std::size_t block = 8, ahead = 64;\n{6}    std::size_t b = 0;\n"
                        "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
-                       "        {4}(block, {5});\n{7}    }}\n    {4}(count - b, {5});\n{8}}}\n",
+                       "{7}    }}\n    {4}(count - b, {5});\n{8}}}\n",
                        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
                        fmt::join(ahead, ""), call, arguments,
                        settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "",
-                       settle, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "");
+                       each, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "");
 }
 
 
@@ -210,7 +224,7 @@ std::vector<lane_input> read_only(const std::vector<lane_input>& inputs)
 // so that at any time the arrays are read at offsets 128 bytes apart, as if staggered
 // (see `skews`; staggered arrays lose a tenth by it, and keep the plain block loop).
 void print_skewed_blocks(std::string& out, const std::string& loop, const std::vector<lane_input>& inputs,
-                         bool with_status, bool settles)
+                         bool with_status, bool settles, bool sure)
 {
     std::vector<std::string> ahead, starts, from_block = block_arguments(inputs, with_status, settles);
     const std::vector<std::string> at_end = from_block;
@@ -233,6 +247,12 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
     while (ring <= 2 * starts.size())  // more blocks than the farthest lead
         ring *= 2;
     const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+    const std::string whole =
+        fmt::format("        {}(block, {});\n{}", call, fmt::join(from_block, ", "),
+                    settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, fmt::join(at_end, ", ")) : "");
+    const std::string each = sure ? fmt::format("        if (!{}_sure<Real, with_status>({})) {{\n{}        }}\n", loop,
+                                                fmt::join(from_block, ", "), indented_by_4(whole))
+                                  : whole;
     out += fmt::format(
         "\n// {0} over blocks of 8 pairs for arrays that start at one offset within their pages:\n"
         "// pair i of every array then falls on the same cache sets. The read-only array k is read\n"
@@ -258,12 +278,12 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "            if (j + lead(k) < blocks)\n"
         "                read(k, j + lead(k));\n"
         "        const std::size_t r = j % ring;\n"
-        "        {7}(block, {8});\n{10}"
+        "{10}"
         "    }}\n"
         "    {7}(count - b, {9});\n{11}}}\n",
         loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, starts.size(),
         fmt::join(starts, ", "), fmt::join(ahead, ""), call, fmt::join(from_block, ", "), fmt::join(at_end, ", "),
-        settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, fmt::join(at_end, ", ")) : "",
+        each,
         settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, fmt::join(at_end, ", ")) : "",
         settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "");
 }
@@ -304,8 +324,9 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const bool with_status = !k.guards.empty();
 
     out += "\nnamespace detail {\n\n";
+    std::vector<int> ks;  // the exponent of the input range, per format (batch_formats)
     if (with_status)
-        print_input_k(out, loop, plan);
+        ks = print_input_k(out, loop, plan);
     out += fmt::format("// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
                        "// block's call runs one pass of 8 pairs.\n", k.name, n);
     out += fmt::format("template <class Real{}>\nIMPACT_ALWAYS_INLINE void {}(std::size_t count, {}) noexcept\n{{\n"
@@ -314,6 +335,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
 
     // The status, from the guards on the values as given.
     const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
+    std::vector<domain_test> sure_domains;  // the domains' tests, as the sure loop prints them
+    std::string sure_conditions;            // the conditions' statuses, as the sure loop decides them
     if (with_status) {
         // The scalar kernel tests the inputs' domains first, then the conditions computed
         // from them; a lane whose inputs are refused divides by 1 in those computations.
@@ -336,6 +359,9 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             declared = true;
         };
         for (auto g = domains.rbegin(); g != domains.rend(); ++g)
+            for (const domain_test& t : guard_tests(k, **g, "_[i]"))
+                sure_domains.push_back(t);
+        for (auto g = domains.rbegin(); g != domains.rend(); ++g)
             fail_with(batch_failures(guard_tests(k, **g, "_[i]")), (*g)->status, "outcome");
         if (!conditions.empty()) {
             // A separate status for the conditions, taken where the domains admit the
@@ -349,6 +375,14 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             for (std::size_t c = conditions.size(); c-- > 0;)
                 fail_with({condition_failure(given.outputs[c], *conditions[c])}, conditions[c]->status, "condition");
             out += "            outcome = detail::blend(admitted, condition, outcome);\n";
+            sure_conditions = "            impact::status condition = status::ok;\n";
+            for (std::size_t s = 0; s < given.statements.size(); ++s)
+                if (for_guards[given.statement_values[s]])
+                    sure_conditions += "            " + given.statements[s] + "\n";
+            for (std::size_t c = conditions.size(); c-- > 0;)
+                sure_conditions += fmt::format("            condition = detail::blend({}, status::{}, condition);\n",
+                                               condition_failure(given.outputs[c], *conditions[c]), conditions[c]->status);
+            sure_conditions += "            outcome = condition;\n";
         }
         out += "        }\n";
         if (!k.limits.empty()) {
@@ -381,10 +415,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     for (std::size_t v = 0; v < arithmetic.code.size(); ++v)
         if (arithmetic.code[v].op == compile::opcode::input && for_outputs[v])
             read.at(static_cast<std::size_t>(arithmetic.code[v].input)) = true;
-    for (std::size_t in = 0; in < inputs.size(); ++in)
-        if (read[in])
-            out += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
     std::string range_test;  // printed after the arithmetic
+    std::string sure_range;  // the sure loop's (print_sure)
     if (with_status && !code.underflows.empty()) {
         // The scalar kernel's underflow test costs about as much as the loop's arithmetic,
         // and a least magnitude of the values it tests more than half of it: the loop
@@ -403,6 +435,26 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                            "            doubtful = !(detail::at_least({1}, lowest) & detail::at_most({2}, highest));\n"
                            "        }}\n",
                            loop, balanced("detail::least", low), balanced("detail::most", high));
+        // The sure loop tests the same range, the largest magnitude by a sum of squares, which
+        // NaN and the infinities, lost in a tree of maxima (a < b ? b : a), make fail.
+        std::vector<std::string> squares, read_names;
+        for (const compile::instruction& in : arithmetic.code)
+            if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
+                squares.push_back(fmt::format("{0} * {0}", plain_names[in.input]));
+                read_names.push_back(plain_names[in.input]);
+            }
+        while (squares.size() > 1) {
+            std::vector<std::string> sums;
+            for (std::size_t t = 0; t < squares.size(); t += 2)
+                sums.push_back(t + 1 < squares.size() ? "(" + squares[t] + " + " + squares[t + 1] + ")" : squares[t]);
+            squares = std::move(sums);
+        }
+        // Where a comparison with NaN is not reliably false (-ffinite-math-only), the inputs'
+        // finiteness is tested too (detail::zero_if_finite).
+        sure_range = fmt::format("        constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
+                                 "        std::int64_t doubtful = !(detail::at_least({1}, lowest) & detail::at_most({2}, highest * highest));\n"
+                                 "        if constexpr (!detail::nan_compares_false)\n            doubtful |= !{3};\n",
+                                 loop, balanced("detail::least", low), squares.front(), all_finite(read_names));
     }
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
     // written only if finite (`written`), as the scalar kernel decides. (`&`, not `&&`: with
@@ -412,25 +464,32 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     // computed, in `usable_late`, which is `usable` from there on.
     const bool late = !code.late_divisors.empty();
     const std::string usable = late ? "usable_late" : "usable";
-    const auto declare_usable = [&](std::size_t known) {
+    const auto declare_usable = [&](std::string& into, std::size_t known) {
         if (known == code.divisors_known) {
             std::vector<std::string> in_range{"resolved"};
             for (const std::string& test : divisors_in_range(code))
                 in_range.push_back(test);
-            out += fmt::format("        const std::int64_t usable = {};\n", fmt::join(in_range, " & "));
+            into += fmt::format("        const std::int64_t usable = {};\n", fmt::join(in_range, " & "));
         }
         if (late && known == code.late_divisors_known)
-            out += fmt::format("        const std::int64_t usable_late = usable & {};\n",
-                               fmt::join(divisors_in_range(code, true), " & "));
+            into += fmt::format("        const std::int64_t usable_late = usable & {};\n",
+                                fmt::join(divisors_in_range(code, true), " & "));
     };
-    if (with_status)
-        declare_usable(0);
-    for (std::size_t s = 0; s < code.statements.size(); ++s) {
-        if (for_outputs[code.statement_values[s]])
-            out += "        " + code.statements[s] + "\n";
+    // The inputs read, the divisors' tests and the statements, as the loop and the sure loop print them.
+    const auto print_arithmetic = [&](std::string& into) {
+        for (std::size_t in = 0; in < inputs.size(); ++in)
+            if (read[in])
+                into += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
         if (with_status)
-            declare_usable(s + 1);
-    }
+            declare_usable(into, 0);
+        for (std::size_t s = 0; s < code.statements.size(); ++s) {
+            if (for_outputs[code.statement_values[s]])
+                into += "        " + code.statements[s] + "\n";
+            if (with_status)
+                declare_usable(into, s + 1);
+        }
+    };
+    print_arithmetic(out);
     std::vector<std::pair<std::string, std::string>> writes;  // target, value
     std::size_t value = 0;
     for (const engine::kernel_output& o : k.outputs) {
@@ -495,9 +554,67 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const bool settles = with_status && (!code.underflows.empty() || !k.limits.empty());
     if (settles)
         print_settle(out, k, loop, inputs, which);
-    print_blocks(out, loop, inputs, with_status, settles);
+    // The sure loop: a block of pairs whose inputs are all in range, where the loop needs
+    // neither the scalar kernel nor a blended status; for a kernel with an input range in
+    // double (batch_formats[1]), the type its loops are vectorised and measured in (the rough
+    // spheres' have none: every block goes to the loop there).
+    const bool sure = with_status && !code.underflows.empty() && ks.at(1) >= 0;
+    if (sure) {
+        std::vector<std::string> kept, stored;
+        for (const auto& [target, result] : writes) {
+            kept.push_back(fmt::format("{}_sure[block]", target));
+            stored.push_back(fmt::format("        {0}_[i] = {0}_sure[i];\n", target));
+        }
+        // The domains' tests, but the finiteness of an input in the range test, which no value
+        // outside [2^-k, 2^k] passes, NaN and the infinities among them.
+        std::set<std::string> in_range;
+        for (std::size_t in = 0; in < inputs.size(); ++in)
+            if (read[in])
+                in_range.insert(inputs[in].name + "_[i]");
+        std::vector<domain_test> tests;
+        std::copy_if(sure_domains.begin(), sure_domains.end(), std::back_inserter(tests),
+                     [&](const domain_test& t) { return t.finite.empty() || in_range.count(t.finite) == 0; });
+        // A fixed sphere's mass, +infinity, is outside the range too.
+        const std::vector<std::string> refusals = batch_failures(tests);
+        // The guards' values in braces of their own, as in the loop: the arithmetic's names follow.
+        std::string body = "        impact::status outcome = status::ok;\n        std::int64_t refused = 0;\n        {\n";
+        for (const std::string& refusal : refusals)
+            body += fmt::format("            refused |= {};\n", refusal);
+        if (sure_conditions.find("admitted") != std::string::npos)  // a condition divides (by 1 where refused)
+            body += "            const std::int64_t admitted = !refused;\n";
+        body += sure_conditions + "        }\n";
+        body += "        const std::int64_t resolved = outcome == status::ok;\n";
+        print_arithmetic(body);
+        // No test of the results: within the range, every value the arithmetic computes is 0 or
+        // normal (compile::input_exponent_bound), so finite.
+        for (const auto& [target, result] : writes)
+            body += fmt::format("        const Real {}_out = {};\n", target, result);
+        body += sure_range;
+        for (const auto& [target, result] : writes)
+            body += fmt::format("        {0}_sure[i] = detail::blend(usable, {0}_out, {0}_[i]);\n", target);
+        body += "        status_sure[i] = outcome;\n"
+                "        left |= refused | doubtful | (resolved & !" + usable + ");\n";
+        out += fmt::format(
+            "\n// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's\n"
+            "// range ({0}_k) and admitted by the domains: nothing then underflows, no sphere is fixed,\n"
+            "// each status is ok or a condition's, and each result is {0}'s bit for bit, without\n"
+            "// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left\n"
+            "// as it was, to {0}.\n"
+            "template <class Real, bool with_status>\nIMPACT_ALWAYS_INLINE bool {0}_sure({1}) noexcept\n{{\n"
+            "    if constexpr ({0}_k<Real> < 0)\n        return false;  // a format without a range: every block left to the loop\n"
+            "    constexpr std::size_t block = 8;\n"
+            "    Real {2};\n    impact::status status_sure[block];\n"
+            "    std::int64_t left = 0;  // a pair the block leaves to the loop\n"
+            "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{3}    }}\n"
+            "    if (left)\n        return false;\n"
+            "    IMPACT_KEPT_A_LOOP\n    for (std::size_t i = 0; i < block; ++i) {{\n{4}"
+            "        if constexpr (with_status)\n            status_[i] = status_sure[i];\n    }}\n"
+            "    return true;\n}}\n",
+            loop, loop_parameters(inputs, true), fmt::join(kept, ", "), body, fmt::join(stored, ""));
+    }
+    print_blocks(out, loop, inputs, with_status, settles, sure);
     if (skews(k))
-        print_skewed_blocks(out, loop, inputs, with_status, settles);
+        print_skewed_blocks(out, loop, inputs, with_status, settles, sure);
     out += "\n} // namespace detail\n";
 
     // The public entry point.

@@ -78,8 +78,9 @@ void print_kernel(std::string& out, const engine::derivation& d, const kernel_pl
 void print_batch(std::string& out, const kernel_plan& plan, form which = form::accurate);
 /// `f` of `terms` as a balanced tree: f(f(a, b), f(c, d)), ...
 std::string balanced(const std::string& f, std::vector<std::string> terms);
-/// `detail::<loop>_k<Real>`: the exponent k of the loop's input range, per format.
-void print_input_k(std::string& out, const std::string& loop, const kernel_plan& plan);
+/// `detail::<loop>_k<Real>`: the exponent k of the loop's input range, per format; returns
+/// them in the order of batch_formats (-1 for a format without a range).
+std::vector<int> print_input_k(std::string& out, const std::string& loop, const kernel_plan& plan);
 /// The least magnitude of the values `code` tests for underflow (detail::zero_as_min for
 /// operands that may be 0), where a format has no input range.
 std::string least_magnitude(const cxx_code& code);

@@ -20,14 +20,14 @@ std::string balanced(const std::string& f, std::vector<std::string> terms)
 
 // The exponent k of the batch loop's input range, per floating-point format, derived from
 // the program of its outputs (compile::input_exponent_bound).
-void print_input_k(std::string& out, const std::string& loop, const kernel_plan& plan)
+std::vector<int> print_input_k(std::string& out, const std::string& loop, const kernel_plan& plan)
 {
     compile::program arithmetic = plan.code;
     arithmetic.outputs.erase(arithmetic.outputs.begin(), arithmetic.outputs.begin() + static_cast<long>(plan.guard_values));
     const std::vector<bool> needed = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
-    std::vector<std::string> ks;
+    std::vector<int> ks;
     for (const compile::float_format& f : batch_formats)
-        ks.push_back(std::to_string(compile::input_exponent_bound(arithmetic, needed, f)));
+        ks.push_back(compile::input_exponent_bound(arithmetic, needed, f));
     out += fmt::format(
         "// The range of {0}'s inputs within which its arithmetic stays in the normal range: where\n"
         "// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or\n"
@@ -43,6 +43,7 @@ void print_input_k(std::string& out, const std::string& loop, const kernel_plan&
         "// quadruple long double): k = {1}; where it is -1, the loop tests the least magnitude of the values.\n"
         "template <class Real>\nconstexpr int {0}_k = input_k<Real>({1});\n\n",
         loop, fmt::join(ks, ", "));
+    return ks;
 }
 
 // The least magnitude of the values the scalar kernel tests for underflow, a balanced tree

@@ -535,6 +535,123 @@ inline void collide_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRI
     }
 }
 
+// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
+// range (collide_batch_2d_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok or a condition's, and each result is collide_batch_2d's bit for bit, without
+// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
+// as it was, to collide_batch_2d.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    if constexpr (collide_batch_2d_k<Real> < 0)
+        return false;  // a format without a range: every block left to the loop
+    constexpr std::size_t block = 8;
+    Real v_Mx_sure[block], v_My_sure[block], v_mx_sure[block], v_my_sure[block];
+    impact::status status_sure[block];
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        std::int64_t refused = 0;
+        {
+            refused |= !(eps_[i] >= Real(0));
+            refused |= !(eps_[i] <= Real(1));
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            impact::status condition = status::ok;
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t1 = t0 * t0;
+            const Real t2 = C_My_[i] - C_my_[i];
+            const Real t3 = t2 * t2;
+            const Real t4 = t1 + t3;
+            const Real t5 = v_Mx_[i] - v_mx_[i];
+            const Real t6 = t0 * t5;
+            const Real t7 = v_My_[i] - v_my_[i];
+            const Real t8 = t2 * t7;
+            const Real t9 = t6 + t8;
+            condition = detail::blend(!(t9 < Real(0)), status::separating, condition);
+            condition = detail::blend(!(t4 > Real(0)), status::coincident_centres, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real eps = eps_[i];
+        const Real t0 = C_Mx - C_mx;
+        const Real t1 = t0 * t0;
+        const Real t2 = C_My - C_my;
+        const Real t3 = t2 * t2;
+        const Real t4 = t1 + t3;
+        const Real t5 = v_Mx - v_mx;
+        const Real t6 = t0 * t5;
+        const Real t7 = v_My - v_my;
+        const Real t8 = t2 * t7;
+        const Real t9 = t6 + t8;
+        const Real t10 = Real(1) + eps;
+        const Real t11 = t10 - Real(1);
+        const Real t12 = t0 - C_Mx;
+        const Real t13 = C_Mx - (t0 - t12) - (C_mx + t12);
+        const Real t14 = t5 - v_Mx;
+        const Real t15 = t2 - C_My;
+        const Real t16 = C_My - (t2 - t15) - (C_my + t15);
+        const Real t17 = t7 - v_My;
+        const Real t18 = t9 - t6;
+        const Real t19 = t6 - (t9 - t18) + (t8 - t18) + (std::fma(t13, t5, std::fma(t0, v_Mx - (t5 - t14) - (v_mx + t14), std::fma(t0, t5, -t6))) + std::fma(t16, t7, std::fma(t2, v_My - (t7 - t17) - (v_my + t17), std::fma(t2, t7, -t8))));
+        const Real t20 = t9 + t19;
+        const Real t21 = t10 * t20;
+        const Real t22 = M + m;
+        const Real t23 = t22 - M;
+        const Real t24 = t4 - t1;
+        const Real t25 = t1 - (t4 - t24) + (t3 - t24) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t16, t2, std::fma(t2, t16, std::fma(t2, t2, -t3))));
+        const Real t26 = t4 + t25;
+        const Real t27 = t22 * t26;
+        const std::int64_t usable = resolved & (std::fabs(t27) >= detail::smallest_divisor<Real>) & (std::fabs(t27) <= std::numeric_limits<Real>::max());
+        const Real t28 = t21 / detail::blend(usable, t27, Real(1));
+        const Real t29 = -t28;
+        const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / detail::blend(usable, t27, Real(1));
+        const Real t31 = t30 * m;
+        const Real t32 = t31 * t0;
+        const Real t33 = t31 * t2;
+        const Real t34 = t30 * M;
+        const Real t35 = t34 * t0;
+        const Real t36 = t34 * t2;
+        const Real v_Mx_out = -t32 + v_Mx;
+        const Real v_My_out = -t33 + v_My;
+        const Real v_mx_out = t35 + v_mx;
+        const Real v_my_out = t36 + v_my;
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_k<Real>);
+        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest));
+        if constexpr (!detail::nan_compares_false)
+            doubtful |= !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_mx, C_my) + detail::zero_if_finite(v_Mx, v_My))) + (detail::zero_if_finite(v_mx, v_my) + detail::zero_if_finite(eps))) == Real(0));
+        v_Mx_sure[i] = detail::blend(usable, v_Mx_out, v_Mx_[i]);
+        v_My_sure[i] = detail::blend(usable, v_My_out, v_My_[i]);
+        v_mx_sure[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
+        v_my_sure[i] = detail::blend(usable, v_my_out, v_my_[i]);
+        status_sure[i] = outcome;
+        left |= refused | doubtful | (resolved & !usable);
+    }
+    if (left)
+        return false;
+    IMPACT_KEPT_A_LOOP
+    for (std::size_t i = 0; i < block; ++i) {
+        v_Mx_[i] = v_Mx_sure[i];
+        v_My_[i] = v_My_sure[i];
+        v_mx_[i] = v_mx_sure[i];
+        v_my_[i] = v_my_sure[i];
+        if constexpr (with_status)
+            status_[i] = status_sure[i];
+    }
+    return true;
+}
+
 // collide_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
@@ -559,8 +676,10 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        if (!collide_batch_2d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        }
     }
     collide_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
     collide_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
@@ -986,6 +1105,101 @@ inline void collide_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_R
     }
 }
 
+// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
+// range (collide_batch_2d_fast_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok or a condition's, and each result is collide_batch_2d_fast's bit for bit, without
+// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
+// as it was, to collide_batch_2d_fast.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    if constexpr (collide_batch_2d_fast_k<Real> < 0)
+        return false;  // a format without a range: every block left to the loop
+    constexpr std::size_t block = 8;
+    Real v_Mx_sure[block], v_My_sure[block], v_mx_sure[block], v_my_sure[block];
+    impact::status status_sure[block];
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        std::int64_t refused = 0;
+        {
+            refused |= !(eps_[i] >= Real(0));
+            refused |= !(eps_[i] <= Real(1));
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            impact::status condition = status::ok;
+            const Real t0 = C_Mx_[i] - C_mx_[i];
+            const Real t1 = C_My_[i] - C_my_[i];
+            const Real t2 = t0 * t0 + t1 * t1;
+            const Real t3 = t0 * (v_Mx_[i] - v_mx_[i]);
+            const Real t4 = v_My_[i] - v_my_[i];
+            condition = detail::blend(!(t3 + t1 * t4 < Real(0)), status::separating, condition);
+            condition = detail::blend(!(t2 > Real(0)), status::coincident_centres, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real eps = eps_[i];
+        const Real t0 = C_Mx - C_mx;
+        const Real t1 = t0 * t0;
+        const Real t2 = C_My - C_my;
+        const Real t3 = t2 * t2;
+        const Real t4 = t1 + t3;
+        const Real t5 = v_Mx - v_mx;
+        const Real t6 = t0 * t5;
+        const Real t7 = v_My - v_my;
+        const Real t8 = Real(1) + eps;
+        const Real t9 = std::fma(t2, t7, t6);
+        const Real t10 = t8 * t9;
+        const Real t11 = M + m;
+        const Real t12 = t11 * t4;
+        const std::int64_t usable = resolved & (std::fabs(t12) >= detail::smallest_divisor<Real>) & (std::fabs(t12) <= std::numeric_limits<Real>::max());
+        const Real t13 = t10 / detail::blend(usable, t12, Real(1));
+        const Real t14 = t13 * m;
+        const Real t15 = t14 * t0;
+        const Real t16 = t14 * t2;
+        const Real t17 = t13 * M;
+        const Real t18 = t17 * t0;
+        const Real t19 = t17 * t2;
+        const Real v_Mx_out = -t15 + v_Mx;
+        const Real v_My_out = -t16 + v_My;
+        const Real v_mx_out = t18 + v_mx;
+        const Real v_my_out = t19 + v_my;
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_fast_k<Real>);
+        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest));
+        if constexpr (!detail::nan_compares_false)
+            doubtful |= !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_mx, C_my) + detail::zero_if_finite(v_Mx, v_My))) + (detail::zero_if_finite(v_mx, v_my) + detail::zero_if_finite(eps))) == Real(0));
+        v_Mx_sure[i] = detail::blend(usable, v_Mx_out, v_Mx_[i]);
+        v_My_sure[i] = detail::blend(usable, v_My_out, v_My_[i]);
+        v_mx_sure[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
+        v_my_sure[i] = detail::blend(usable, v_my_out, v_my_[i]);
+        status_sure[i] = outcome;
+        left |= refused | doubtful | (resolved & !usable);
+    }
+    if (left)
+        return false;
+    IMPACT_KEPT_A_LOOP
+    for (std::size_t i = 0; i < block; ++i) {
+        v_Mx_[i] = v_Mx_sure[i];
+        v_My_[i] = v_My_sure[i];
+        v_mx_[i] = v_mx_sure[i];
+        v_my_[i] = v_my_sure[i];
+        if constexpr (with_status)
+            status_[i] = status_sure[i];
+    }
+    return true;
+}
+
 // collide_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
@@ -1010,8 +1224,10 @@ inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        if (!collide_batch_2d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            collide_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+        }
     }
     collide_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
     collide_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);

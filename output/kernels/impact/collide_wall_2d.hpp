@@ -226,6 +226,90 @@ inline void collide_wall_batch_2d_settle(std::size_t count, const Real* IMPACT_R
     }
 }
 
+// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
+// range (collide_wall_batch_2d_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok or a condition's, and each result is collide_wall_batch_2d's bit for bit, without
+// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
+// as it was, to collide_wall_batch_2d.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    if constexpr (collide_wall_batch_2d_k<Real> < 0)
+        return false;  // a format without a range: every block left to the loop
+    constexpr std::size_t block = 8;
+    Real v_x_sure[block], v_y_sure[block];
+    impact::status status_sure[block];
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        std::int64_t refused = 0;
+        {
+            refused |= !(eps_[i] >= Real(0));
+            refused |= !(eps_[i] <= Real(1));
+            refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
+            impact::status condition = status::ok;
+            const Real t0 = N_x_[i] * N_x_[i];
+            const Real t1 = N_y_[i] * N_y_[i];
+            const Real t2 = t0 + t1;
+            const Real t3 = N_x_[i] * v_x_[i];
+            const Real t4 = N_y_[i] * v_y_[i];
+            const Real t5 = t3 + t4;
+            condition = detail::blend(!(t5 < Real(0)), status::separating, condition);
+            condition = detail::blend(!(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) > Real(0)), status::behind_the_wall, condition);
+            condition = detail::blend(!(t2 > Real(0)), status::invalid_normal, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real N_x = N_x_[i];
+        const Real N_y = N_y_[i];
+        const Real v_x = v_x_[i];
+        const Real v_y = v_y_[i];
+        const Real eps = eps_[i];
+        const Real t0 = N_x * N_x;
+        const Real t1 = N_y * N_y;
+        const Real t2 = t0 + t1;
+        const Real t3 = N_x * v_x;
+        const Real t4 = N_y * v_y;
+        const Real t5 = t3 + t4;
+        const Real t6 = Real(1) + eps;
+        const Real t7 = t6 - Real(1);
+        const Real t8 = t5 - t3;
+        const Real t9 = t3 - (t5 - t8) + (t4 - t8) + (std::fma(N_x, v_x, -t3) + std::fma(N_y, v_y, -t4));
+        const Real t10 = t5 + t9;
+        const Real t11 = t6 * t10;
+        const Real t12 = t2 - t0;
+        const Real t13 = t0 - (t2 - t12) + (t1 - t12) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
+        const Real t14 = t2 + t13;
+        const std::int64_t usable = resolved & (std::fabs(t14) >= detail::smallest_divisor<Real>) & (std::fabs(t14) <= std::numeric_limits<Real>::max());
+        const Real t15 = t11 / detail::blend(usable, t14, Real(1));
+        const Real t16 = -t15;
+        const Real t17 = t15 + std::fma(t16, t13 - (t14 - t2), std::fma(t16, t14, t11) + std::fma(Real(1) - (t6 - t7) + (eps - t7), t10, std::fma(t6, t9 - (t10 - t5), std::fma(t6, t10, -t11)))) / detail::blend(usable, t14, Real(1));
+        const Real t18 = N_x * t17;
+        const Real t19 = N_y * t17;
+        const Real v_x_out = -t18 + v_x;
+        const Real v_y_out = -t19 + v_y;
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_k<Real>);
+        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest));
+        if constexpr (!detail::nan_compares_false)
+            doubtful |= !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0));
+        v_x_sure[i] = detail::blend(usable, v_x_out, v_x_[i]);
+        v_y_sure[i] = detail::blend(usable, v_y_out, v_y_[i]);
+        status_sure[i] = outcome;
+        left |= refused | doubtful | (resolved & !usable);
+    }
+    if (left)
+        return false;
+    IMPACT_KEPT_A_LOOP
+    for (std::size_t i = 0; i < block; ++i) {
+        v_x_[i] = v_x_sure[i];
+        v_y_[i] = v_y_sure[i];
+        if constexpr (with_status)
+            status_[i] = status_sure[i];
+    }
+    return true;
+}
+
 // collide_wall_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
@@ -248,8 +332,10 @@ inline void collide_wall_batch_2d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_wall_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_wall_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        if (!collide_wall_batch_2d_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            collide_wall_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        }
     }
     collide_wall_batch_2d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
     collide_wall_batch_2d_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
@@ -444,6 +530,76 @@ inline void collide_wall_batch_2d_fast_settle(std::size_t count, const Real* IMP
     }
 }
 
+// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
+// range (collide_wall_batch_2d_fast_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok or a condition's, and each result is collide_wall_batch_2d_fast's bit for bit, without
+// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
+// as it was, to collide_wall_batch_2d_fast.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    if constexpr (collide_wall_batch_2d_fast_k<Real> < 0)
+        return false;  // a format without a range: every block left to the loop
+    constexpr std::size_t block = 8;
+    Real v_x_sure[block], v_y_sure[block];
+    impact::status status_sure[block];
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        std::int64_t refused = 0;
+        {
+            refused |= !(eps_[i] >= Real(0));
+            refused |= !(eps_[i] <= Real(1));
+            refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
+            impact::status condition = status::ok;
+            const Real t0 = N_x_[i] * N_x_[i] + N_y_[i] * N_y_[i];
+            const Real t1 = N_x_[i] * v_x_[i];
+            condition = detail::blend(!(t1 + N_y_[i] * v_y_[i] < Real(0)), status::separating, condition);
+            condition = detail::blend(!(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) > Real(0)), status::behind_the_wall, condition);
+            condition = detail::blend(!(t0 > Real(0)), status::invalid_normal, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real N_x = N_x_[i];
+        const Real N_y = N_y_[i];
+        const Real v_x = v_x_[i];
+        const Real v_y = v_y_[i];
+        const Real eps = eps_[i];
+        const Real t0 = N_x * N_x;
+        const Real t1 = N_y * N_y;
+        const Real t2 = t0 + t1;
+        const std::int64_t usable = resolved & (std::fabs(t2) >= detail::smallest_divisor<Real>) & (std::fabs(t2) <= std::numeric_limits<Real>::max());
+        const Real t3 = N_x * v_x;
+        const Real t4 = Real(1) + eps;
+        const Real t5 = std::fma(N_y, v_y, t3);
+        const Real t6 = t4 * t5;
+        const Real t7 = t6 / detail::blend(usable, t2, Real(1));
+        const Real t8 = N_x * t7;
+        const Real t9 = N_y * t7;
+        const Real v_x_out = -t8 + v_x;
+        const Real v_y_out = -t9 + v_y;
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_fast_k<Real>);
+        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest));
+        if constexpr (!detail::nan_compares_false)
+            doubtful |= !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0));
+        v_x_sure[i] = detail::blend(usable, v_x_out, v_x_[i]);
+        v_y_sure[i] = detail::blend(usable, v_y_out, v_y_[i]);
+        status_sure[i] = outcome;
+        left |= refused | doubtful | (resolved & !usable);
+    }
+    if (left)
+        return false;
+    IMPACT_KEPT_A_LOOP
+    for (std::size_t i = 0; i < block; ++i) {
+        v_x_[i] = v_x_sure[i];
+        v_y_[i] = v_y_sure[i];
+        if constexpr (with_status)
+            status_[i] = status_sure[i];
+    }
+    return true;
+}
+
 // collide_wall_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
@@ -466,8 +622,10 @@ inline void collide_wall_batch_2d_fast_ahead(std::size_t count, const Real* IMPA
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        if (!collide_wall_batch_2d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+        }
     }
     collide_wall_batch_2d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
     collide_wall_batch_2d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);

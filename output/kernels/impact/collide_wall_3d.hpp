@@ -268,6 +268,108 @@ inline void collide_wall_batch_3d_settle(std::size_t count, const Real* IMPACT_R
     }
 }
 
+// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
+// range (collide_wall_batch_3d_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok or a condition's, and each result is collide_wall_batch_3d's bit for bit, without
+// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
+// as it was, to collide_wall_batch_3d.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    if constexpr (collide_wall_batch_3d_k<Real> < 0)
+        return false;  // a format without a range: every block left to the loop
+    constexpr std::size_t block = 8;
+    Real v_x_sure[block], v_y_sure[block], v_z_sure[block];
+    impact::status status_sure[block];
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        std::int64_t refused = 0;
+        {
+            refused |= !(eps_[i] >= Real(0));
+            refused |= !(eps_[i] <= Real(1));
+            refused |= !(((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(P_z_[i], C_x_[i])) + detail::zero_if_finite(C_y_[i], C_z_[i])) == Real(0));
+            impact::status condition = status::ok;
+            const Real t0 = N_x_[i] * N_x_[i];
+            const Real t1 = N_y_[i] * N_y_[i];
+            const Real t2 = t0 + t1;
+            const Real t3 = N_z_[i] * N_z_[i];
+            const Real t4 = N_x_[i] * v_x_[i];
+            const Real t5 = N_y_[i] * v_y_[i];
+            const Real t6 = t4 + t5;
+            const Real t7 = N_z_[i] * v_z_[i];
+            condition = detail::blend(!(t6 + t7 < Real(0)), status::separating, condition);
+            condition = detail::blend(!(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) + N_z_[i] * (C_z_[i] - P_z_[i]) > Real(0)), status::behind_the_wall, condition);
+            condition = detail::blend(!(t2 + t3 > Real(0)), status::invalid_normal, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real N_x = N_x_[i];
+        const Real N_y = N_y_[i];
+        const Real N_z = N_z_[i];
+        const Real v_x = v_x_[i];
+        const Real v_y = v_y_[i];
+        const Real v_z = v_z_[i];
+        const Real eps = eps_[i];
+        const Real t0 = N_x * N_x;
+        const Real t1 = N_y * N_y;
+        const Real t2 = t0 + t1;
+        const Real t3 = N_z * N_z;
+        const Real t4 = N_x * v_x;
+        const Real t5 = N_y * v_y;
+        const Real t6 = t4 + t5;
+        const Real t7 = N_z * v_z;
+        const Real t8 = Real(1) + eps;
+        const Real t9 = t8 - Real(1);
+        const Real t10 = t6 - t4;
+        const Real t11 = t4 - (t6 - t10) + (t5 - t10) + (std::fma(N_x, v_x, -t4) + std::fma(N_y, v_y, -t5));
+        const Real t12 = t6 + t11;
+        const Real t13 = t12 + t7;
+        const Real t14 = t13 - t12;
+        const Real t15 = t12 - (t13 - t14) + (t7 - t14) + (t11 - (t12 - t6) + std::fma(N_z, v_z, -t7));
+        const Real t16 = t13 + t15;
+        const Real t17 = t8 * t16;
+        const Real t18 = t2 - t0;
+        const Real t19 = t0 - (t2 - t18) + (t1 - t18) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
+        const Real t20 = t2 + t19;
+        const Real t21 = t20 + t3;
+        const Real t22 = t21 - t20;
+        const Real t23 = t20 - (t21 - t22) + (t3 - t22) + (t19 - (t20 - t2) + std::fma(N_z, N_z, -t3));
+        const Real t24 = t21 + t23;
+        const std::int64_t usable = resolved & (std::fabs(t24) >= detail::smallest_divisor<Real>) & (std::fabs(t24) <= std::numeric_limits<Real>::max());
+        const Real t25 = t17 / detail::blend(usable, t24, Real(1));
+        const Real t26 = -t25;
+        const Real t27 = t25 + std::fma(t26, t23 - (t24 - t21), std::fma(t26, t24, t17) + std::fma(Real(1) - (t8 - t9) + (eps - t9), t16, std::fma(t8, t15 - (t16 - t13), std::fma(t8, t16, -t17)))) / detail::blend(usable, t24, Real(1));
+        const Real t28 = N_x * t27;
+        const Real t29 = N_y * t27;
+        const Real t30 = N_z * t27;
+        const Real v_x_out = -t28 + v_x;
+        const Real v_y_out = -t29 + v_y;
+        const Real v_z_out = -t30 + v_z;
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_3d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_3d_k<Real>);
+        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(N_z, lowest), detail::magnitude_or(v_x, lowest))), detail::least(detail::least(detail::magnitude_or(v_y, lowest), detail::magnitude_or(v_z, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (N_z * N_z + v_x * v_x)) + ((v_y * v_y + v_z * v_z) + eps * eps)), highest * highest));
+        if constexpr (!detail::nan_compares_false)
+            doubtful |= !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(N_z, v_x)) + (detail::zero_if_finite(v_y, v_z) + detail::zero_if_finite(eps))) == Real(0));
+        v_x_sure[i] = detail::blend(usable, v_x_out, v_x_[i]);
+        v_y_sure[i] = detail::blend(usable, v_y_out, v_y_[i]);
+        v_z_sure[i] = detail::blend(usable, v_z_out, v_z_[i]);
+        status_sure[i] = outcome;
+        left |= refused | doubtful | (resolved & !usable);
+    }
+    if (left)
+        return false;
+    IMPACT_KEPT_A_LOOP
+    for (std::size_t i = 0; i < block; ++i) {
+        v_x_[i] = v_x_sure[i];
+        v_y_[i] = v_y_sure[i];
+        v_z_[i] = v_z_sure[i];
+        if constexpr (with_status)
+            status_[i] = status_sure[i];
+    }
+    return true;
+}
+
 // collide_wall_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
@@ -294,8 +396,10 @@ inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_wall_batch_3d<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_wall_batch_3d_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        if (!collide_wall_batch_3d_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            collide_wall_batch_3d<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_3d_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        }
     }
     collide_wall_batch_3d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
     collide_wall_batch_3d_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
@@ -510,6 +614,84 @@ inline void collide_wall_batch_3d_fast_settle(std::size_t count, const Real* IMP
     }
 }
 
+// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
+// range (collide_wall_batch_3d_fast_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok or a condition's, and each result is collide_wall_batch_3d_fast's bit for bit, without
+// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
+// as it was, to collide_wall_batch_3d_fast.
+template <class Real, bool with_status>
+IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    if constexpr (collide_wall_batch_3d_fast_k<Real> < 0)
+        return false;  // a format without a range: every block left to the loop
+    constexpr std::size_t block = 8;
+    Real v_x_sure[block], v_y_sure[block], v_z_sure[block];
+    impact::status status_sure[block];
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        std::int64_t refused = 0;
+        {
+            refused |= !(eps_[i] >= Real(0));
+            refused |= !(eps_[i] <= Real(1));
+            refused |= !(((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(P_z_[i], C_x_[i])) + detail::zero_if_finite(C_y_[i], C_z_[i])) == Real(0));
+            impact::status condition = status::ok;
+            const Real t0 = N_x_[i] * N_x_[i] + N_y_[i] * N_y_[i] + N_z_[i] * N_z_[i];
+            const Real t1 = N_x_[i] * v_x_[i];
+            condition = detail::blend(!(t1 + N_y_[i] * v_y_[i] + N_z_[i] * v_z_[i] < Real(0)), status::separating, condition);
+            condition = detail::blend(!(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) + N_z_[i] * (C_z_[i] - P_z_[i]) > Real(0)), status::behind_the_wall, condition);
+            condition = detail::blend(!(t0 > Real(0)), status::invalid_normal, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real N_x = N_x_[i];
+        const Real N_y = N_y_[i];
+        const Real N_z = N_z_[i];
+        const Real v_x = v_x_[i];
+        const Real v_y = v_y_[i];
+        const Real v_z = v_z_[i];
+        const Real eps = eps_[i];
+        const Real t0 = N_x * N_x;
+        const Real t1 = N_y * N_y;
+        const Real t2 = N_z * N_z;
+        const Real t3 = t0 + t1 + t2;
+        const std::int64_t usable = resolved & (std::fabs(t3) >= detail::smallest_divisor<Real>) & (std::fabs(t3) <= std::numeric_limits<Real>::max());
+        const Real t4 = N_x * v_x;
+        const Real t5 = Real(1) + eps;
+        const Real t6 = std::fma(N_y, v_y, t4);
+        const Real t7 = std::fma(N_z, v_z, t6);
+        const Real t8 = t5 * t7;
+        const Real t9 = t8 / detail::blend(usable, t3, Real(1));
+        const Real t10 = N_x * t9;
+        const Real t11 = N_y * t9;
+        const Real t12 = N_z * t9;
+        const Real v_x_out = -t10 + v_x;
+        const Real v_y_out = -t11 + v_y;
+        const Real v_z_out = -t12 + v_z;
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_3d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_3d_fast_k<Real>);
+        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(N_z, lowest), detail::magnitude_or(v_x, lowest))), detail::least(detail::least(detail::magnitude_or(v_y, lowest), detail::magnitude_or(v_z, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (N_z * N_z + v_x * v_x)) + ((v_y * v_y + v_z * v_z) + eps * eps)), highest * highest));
+        if constexpr (!detail::nan_compares_false)
+            doubtful |= !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(N_z, v_x)) + (detail::zero_if_finite(v_y, v_z) + detail::zero_if_finite(eps))) == Real(0));
+        v_x_sure[i] = detail::blend(usable, v_x_out, v_x_[i]);
+        v_y_sure[i] = detail::blend(usable, v_y_out, v_y_[i]);
+        v_z_sure[i] = detail::blend(usable, v_z_out, v_z_[i]);
+        status_sure[i] = outcome;
+        left |= refused | doubtful | (resolved & !usable);
+    }
+    if (left)
+        return false;
+    IMPACT_KEPT_A_LOOP
+    for (std::size_t i = 0; i < block; ++i) {
+        v_x_[i] = v_x_sure[i];
+        v_y_[i] = v_y_sure[i];
+        v_z_[i] = v_z_sure[i];
+        if constexpr (with_status)
+            status_[i] = status_sure[i];
+    }
+    return true;
+}
+
 // collide_wall_batch_3d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
 // processor's own prefetching, following so many arrays, falls behind.
 template <class Real, bool with_status>
@@ -536,8 +718,10 @@ inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPA
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_wall_batch_3d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
-        collide_wall_batch_3d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        if (!collide_wall_batch_3d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            collide_wall_batch_3d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_3d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+        }
     }
     collide_wall_batch_3d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
     collide_wall_batch_3d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);

@@ -28,6 +28,14 @@
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
 #endif
+// A short loop of copies kept a loop, so that GCC vectorises it as one: unrolled whole, as
+// GCC unrolls a loop of 8 iterations, it is straight-line code, which the kernels compile
+// without GCC's straight-line vectorisation (IMPACT_PRECISE_BEGIN), one lane at a time.
+#if defined(__GNUC__) && !defined(__clang__)
+#define IMPACT_KEPT_A_LOOP _Pragma("GCC unroll 1") _Pragma("GCC ivdep")
+#else
+#define IMPACT_KEPT_A_LOOP
+#endif
 // Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop
 // streams so many arrays at once that the processor's own prefetching falls behind.
 #if defined(__GNUC__) || defined(__clang__)
@@ -141,6 +149,18 @@ IMPACT_ALWAYS_INLINE bool finite(Real x) noexcept
         return std::isfinite(x);
     }
 }
+
+/// Whether a comparison with NaN is false in the kernels' code, as IEEE 754 has it, so that
+/// a sure block's range test (a sum of squares) also refuses NaN: not where the code that
+/// includes the kernels is compiled with -ffinite-math-only (-ffast-math, -Ofast). Clang then
+/// takes NaN as absent from the whole program; GCC, despite IMPACT_PRECISE_BEGIN, let a NaN
+/// input through the sure block of collide_batch (test_kernels_hostile_fast_math). There, the
+/// sure block tests its inputs' finiteness too (zero_if_finite, below).
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+inline constexpr bool nan_compares_false = false;
+#else
+inline constexpr bool nan_compares_false = true;
+#endif
 
 /// 0 where x (and y) are finite, and not 0 elsewhere: a batch loop sums these, one sum
 /// for many values, and tests the sum against 0. x * 0 is 0 for a finite x and NaN
