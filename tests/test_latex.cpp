@@ -373,6 +373,10 @@ BOOST_AUTO_TEST_CASE(checks_are_headed_in_words_not_identifiers)
     const std::string space = emit::latex_fragment(derived("inelastic_space"));
     BOOST_TEST(contains(space, "--- $n$ is a unit vector: "));
     BOOST_TEST(contains(space, "--- Energy loss is Eq.~11: "));
+    // A Greek letter's name as the letter, typed here from the check's name elastic_tau.
+    const std::string transfer = emit::latex_fragment(derived("billiard_transfer"));
+    BOOST_TEST(contains(transfer, "--- Elastic $\\tau$: $\\tau = 0$"));
+    BOOST_TEST(!contains(transfer, "Elastic tau"));
 }
 
 BOOST_AUTO_TEST_CASE(prose_keeps_its_mathematics_and_escapes_the_rest)

@@ -51,8 +51,19 @@ bool nested_fraction(const std::string& math)
     return false;
 }
 
-// A check's name as a heading a physicist reads (LaTeX): its words, a single letter as
-// the quantity it names (n_is_a_unit_vector: "$n$ is a unit vector"), eq11 as "Eq. 11",
+// Whether a word of a check's name is the name of a Greek letter (elastic_tau), which
+// LaTeX sets as that letter.
+bool greek_letter(const std::string& w)
+{
+    static const char* const letters[] = {"alpha", "beta",  "gamma",   "delta", "epsilon", "zeta", "eta",   "theta",
+                                          "iota",  "kappa", "lambda",  "mu",    "nu",      "xi",   "rho",   "sigma",
+                                          "tau",   "upsilon", "phi",   "chi",   "psi",     "omega"};
+    return std::find(std::begin(letters), std::end(letters), w) != std::end(letters);
+}
+
+// A check's name as a heading a physicist reads (LaTeX): its words, a single letter or a
+// Greek letter's name as the quantity it names (n_is_a_unit_vector: "$n$ is a unit vector",
+// elastic_tau: "Elastic $\tau$"), eq11 as "Eq. 11",
 // and the sphere and component a name ends in as a qualifier: momentum_conserved_x is
 // "Momentum conserved ($x$ component)", exchange_symmetry_M_y "Exchange symmetry ($M$,
 // $y$ component)".
@@ -83,6 +94,8 @@ std::string heading(const std::string& name)
             typeset = "Eq.~" + w.substr(2);
         else if (w.size() == 1 && std::isalpha(static_cast<unsigned char>(w[0])) && w != "a")
             typeset = "$" + w + "$";
+        else if (greek_letter(w))
+            typeset = "$\\" + w + "$";
         else if (w == "galilean")
             typeset = "Galilean";
         out += (out.empty() ? "" : " ") + typeset;
