@@ -1663,7 +1663,10 @@ BOOST_AUTO_TEST_CASE(a_block_with_one_hostile_lane_is_the_scalar_kernels_in_ever
 }
 
 // The sure block of collide_batch in 2D on 8 pairs: whether it resolved them, and whether it
-// left their velocities as they were.
+// left their velocities as they were. Compiled as the kernels' own block loops are (between
+// IMPACT_PRECISE_BEGIN and _END): inlined into code compiled with the caller's flags, GCC
+// compiles the sure block with them, -ffast-math's included.
+IMPACT_PRECISE_BEGIN
 std::pair<bool, bool> sure_block(const std::array<pair_nd<double, 2>, 8>& p)
 {
     std::array<double, 8> M, m, eps, C_Mx, C_My, C_mx, C_my;
@@ -1684,6 +1687,7 @@ std::pair<bool, bool> sure_block(const std::array<pair_nd<double, 2>, 8>& p)
             unchanged = unchanged && identical(v[a][i], before[a][i]);
     return {resolved, unchanged};
 }
+IMPACT_PRECISE_END
 
 BOOST_AUTO_TEST_CASE(a_block_of_ordinary_pairs_is_resolved_at_once_and_a_nan_anywhere_leaves_it)
 {

@@ -543,8 +543,10 @@ inline void collide_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRI
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_batch_2d_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_batch_2d_k<Real> < 0 || 2 * collide_batch_2d_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_Mx_sure[block], v_My_sure[block], v_mx_sure[block], v_my_sure[block];
     impact::status status_sure[block];
@@ -659,6 +661,7 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -676,7 +679,15 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_2d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_2d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
         }
@@ -1113,8 +1124,10 @@ inline void collide_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_R
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_batch_2d_fast_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_batch_2d_fast_k<Real> < 0 || 2 * collide_batch_2d_fast_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_Mx_sure[block], v_My_sure[block], v_mx_sure[block], v_my_sure[block];
     impact::status status_sure[block];
@@ -1207,6 +1220,7 @@ inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RE
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -1224,7 +1238,15 @@ inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_2d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_2d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
         }

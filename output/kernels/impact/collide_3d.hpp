@@ -688,8 +688,10 @@ inline void collide_batch_3d_settle(std::size_t count, const Real* IMPACT_RESTRI
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_batch_3d_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_batch_3d_k<Real> < 0 || 2 * collide_batch_3d_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_Mx_sure[block], v_My_sure[block], v_Mz_sure[block], v_mx_sure[block], v_my_sure[block], v_mz_sure[block];
     impact::status status_sure[block];
@@ -835,6 +837,7 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -856,7 +859,15 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_3d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_3d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
         }
@@ -874,6 +885,7 @@ inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRI
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 9;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     const Real* const from[read_only] = {M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, eps_};
     alignas(64) Real stage[read_only][ring][block];
     auto lead = [](std::size_t k) { return 2 * (k + 1); };
@@ -919,7 +931,15 @@ inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRI
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        if (!collide_batch_3d_sure<Real, with_status>(stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_3d_sure<Real, with_status>(stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
             collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
         }
@@ -1442,8 +1462,10 @@ inline void collide_batch_3d_fast_settle(std::size_t count, const Real* IMPACT_R
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_batch_3d_fast_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_batch_3d_fast_k<Real> < 0 || 2 * collide_batch_3d_fast_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_Mx_sure[block], v_My_sure[block], v_Mz_sure[block], v_mx_sure[block], v_my_sure[block], v_mz_sure[block];
     impact::status status_sure[block];
@@ -1554,6 +1576,7 @@ inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RE
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -1575,7 +1598,15 @@ inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_3d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_3d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_batch_3d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
         }
@@ -1593,6 +1624,7 @@ inline void collide_batch_3d_fast_skewed(std::size_t count, const Real* IMPACT_R
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 9;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     const Real* const from[read_only] = {M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, eps_};
     alignas(64) Real stage[read_only][ring][block];
     auto lead = [](std::size_t k) { return 2 * (k + 1); };
@@ -1638,7 +1670,15 @@ inline void collide_batch_3d_fast_skewed(std::size_t count, const Real* IMPACT_R
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        if (!collide_batch_3d_fast_sure<Real, with_status>(stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_3d_fast_sure<Real, with_status>(stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_batch_3d_fast<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
             collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
         }

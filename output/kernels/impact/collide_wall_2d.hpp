@@ -234,8 +234,10 @@ inline void collide_wall_batch_2d_settle(std::size_t count, const Real* IMPACT_R
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_wall_batch_2d_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_wall_batch_2d_k<Real> < 0 || 2 * collide_wall_batch_2d_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_x_sure[block], v_y_sure[block];
     impact::status status_sure[block];
@@ -317,6 +319,7 @@ inline void collide_wall_batch_2d_ahead(std::size_t count, const Real* IMPACT_RE
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -332,7 +335,15 @@ inline void collide_wall_batch_2d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_wall_batch_2d_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_wall_batch_2d_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_wall_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_wall_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
         }
@@ -538,8 +549,10 @@ inline void collide_wall_batch_2d_fast_settle(std::size_t count, const Real* IMP
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_wall_batch_2d_fast_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_wall_batch_2d_fast_k<Real> < 0 || 2 * collide_wall_batch_2d_fast_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_x_sure[block], v_y_sure[block];
     impact::status status_sure[block];
@@ -607,6 +620,7 @@ inline void collide_wall_batch_2d_fast_ahead(std::size_t count, const Real* IMPA
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -622,7 +636,15 @@ inline void collide_wall_batch_2d_fast_ahead(std::size_t count, const Real* IMPA
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_wall_batch_2d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_wall_batch_2d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
         }

@@ -276,8 +276,10 @@ inline void collide_wall_batch_3d_settle(std::size_t count, const Real* IMPACT_R
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_wall_batch_3d_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_wall_batch_3d_k<Real> < 0 || 2 * collide_wall_batch_3d_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_x_sure[block], v_y_sure[block], v_z_sure[block];
     impact::status status_sure[block];
@@ -377,6 +379,7 @@ inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -396,7 +399,15 @@ inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_wall_batch_3d_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_wall_batch_3d_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_wall_batch_3d<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_wall_batch_3d_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
         }
@@ -622,8 +633,10 @@ inline void collide_wall_batch_3d_fast_settle(std::size_t count, const Real* IMP
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
-    if constexpr (collide_wall_batch_3d_fast_k<Real> < 0)
-        return false;  // a format without a range: every block left to the loop
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_wall_batch_3d_fast_k<Real> < 0 || 2 * collide_wall_batch_3d_fast_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
     constexpr std::size_t block = 8;
     Real v_x_sure[block], v_y_sure[block], v_z_sure[block];
     impact::status status_sure[block];
@@ -699,6 +712,7 @@ inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPA
 {
     constexpr std::size_t block = 8, ahead = 64;
     impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
         if (b + ahead < count) {
@@ -718,7 +732,15 @@ inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPA
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_wall_batch_3d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_wall_batch_3d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
             collide_wall_batch_3d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
             collide_wall_batch_3d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
         }
