@@ -446,11 +446,14 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // to the scalar kernel (status underflow here, then `settle`). An input 0 passes
         // (detail::magnitude_or). Tested after the arithmetic: tested as the inputs are
         // read, the loops ran slower (2D 0.69 of the loop before any test, against 0.79).
-        std::vector<std::string> low, high;
+        // (The sure block tests the same inputs, the largest magnitude by a sum of squares.)
+        std::vector<std::string> low, high, squares, read_names;
         for (const compile::instruction& in : arithmetic.code)
             if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
                 low.push_back(fmt::format("detail::magnitude_or({}, lowest)", plain_names[in.input]));
                 high.push_back(fmt::format("std::fabs({})", plain_names[in.input]));
+                squares.push_back(fmt::format("{0} * {0}", plain_names[in.input]));
+                read_names.push_back(plain_names[in.input]);
             }
         range_test = fmt::format("        std::int64_t doubtful = 0;\n        if constexpr ({0}_k<Real> >= 0) {{\n"
                            "            constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
@@ -459,12 +462,6 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                            loop, balanced("detail::least", low), balanced("detail::most", high));
         // The sure loop tests the same range, the largest magnitude by a sum of squares, which
         // NaN and the infinities, lost in a tree of maxima (a < b ? b : a), make fail.
-        std::vector<std::string> squares, read_names;
-        for (const compile::instruction& in : arithmetic.code)
-            if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
-                squares.push_back(fmt::format("{0} * {0}", plain_names[in.input]));
-                read_names.push_back(plain_names[in.input]);
-            }
         while (squares.size() > 1) {
             std::vector<std::string> sums;
             for (std::size_t t = 0; t < squares.size(); t += 2)
