@@ -139,6 +139,15 @@ BOOST_AUTO_TEST_CASE(a_missing_required_field)
                    "derivations/bad.toml:10:1: error: [[given]] is missing the required field 'equation'");
 }
 
+BOOST_AUTO_TEST_CASE(a_quote_of_the_paper_without_the_form_it_reads)
+{
+    // `quote` is the paper's own text of a `printed` form: alone it compares nothing.
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                            "[[result]]\nname = \"y\"\nquote = \"$y = 2x$\"\n",
+                   "derivations/bad.toml:16:9: error: 'quote' is the paper's text of a 'printed' form: give "
+                   "'printed' too");
+}
+
 BOOST_AUTO_TEST_CASE(an_undeclared_symbol)
 {
     expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*w\"\nbecause = \"b\"\n"

@@ -291,6 +291,24 @@ BOOST_AUTO_TEST_CASE(printed_forms_are_shown_as_the_paper_prints_them)
                         "{m v_{1,\\parallel} + m \\epsilon v_{1,\\parallel} + m v_{1,\\parallel} - m \\epsilon v_{1,\\parallel}}"));
 }
 
+BOOST_AUTO_TEST_CASE(a_line_read_in_other_terms_is_shown_in_the_papers_own_text_first)
+{
+    // Eq. 4's second line prints v_M^(L)' = R^T v_M^(C)'; the file reads its rows, one
+    // component each. The paper's text comes first, then the row as read (typed from the
+    // paper: the first row of R^T is (r_x/|r|, -r_y/|r|)).
+    const std::string tex = emit::latex_fragment(derived("elastic_plane"));
+    BOOST_TEST(contains(tex, "Eq.~(4), second line, $v'_{M,x}$: printed $v_M^{(L)\\prime} = \\mathbf{R}^T "
+                             "\\mathbf{v}_M^{(C)\\prime}$, read as"));
+    BOOST_TEST(contains(tex, "\\frac{r_{mM,x}}{\\|r_{mM}\\|} \\frac{(M - m) v_{M,\\parallel} + 2 m v_{m,\\parallel}}{M + m} - "
+                             "\\frac{r_{mM,y}}{\\|r_{mM}\\|} v_{M,\\perp}"));
+    std::vector<const engine::derivation*> all = {&derived("elastic_plane")};
+    const std::string rows = emit::latex_errata(all).rows;
+    BOOST_TEST(contains(emit::latex_errata(all).displays, "printed $v_M^{(L)\\prime} = \\mathbf{R}^T "
+                                                          "\\mathbf{v}_M^{(C)\\prime}$, read as"));
+    // An agreeing row sets the derived form beside the printed one too: Eq. 4's v'_{M,perp}.
+    BOOST_TEST(contains(rows, "& $v'_{M,\\perp}$ & agrees & $v_{M,\\perp}$ & $v_{M,\\perp}$ &"));
+}
+
 BOOST_AUTO_TEST_CASE(a_result_repeated_for_several_printed_lines_is_shown_once)
 {
     // Eq. 12's second and fourth lines give the paper's tau = 1/2 - eps/2; the third line's

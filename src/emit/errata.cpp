@@ -233,9 +233,11 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                               : r             ? beside()
                                               : math(c.derived, order, nullptr));
             // As the paper prints it: the transcription's terms and factors, nothing merged.
-            printed.push_back(claim              ? cell(c.printed_text)
-                              : c.written.tree() ? "$" + latex_as_written(*c.written.tree(), order) + "$"
-                                                 : math(c.printed, order, &c.written));
+            // A form the file reads in other terms (a component of R^T v): the paper's text first.
+            printed.push_back((c.quote.empty() ? "" : cell(c.quote) + ", read as ") +
+                              (claim              ? cell(c.printed_text)
+                               : c.written.tree() ? "$" + latex_as_written(*c.written.tree(), order) + "$"
+                                                  : math(c.printed, order, &c.written)));
             const engine::quantity* q = d->symbols.find(c.subject);
             std::string name = c.subject;
             std::replace(name.begin(), name.end(), '_', ' ');

@@ -116,6 +116,8 @@ json derivation_json(const engine::derivation& d)
         pj["verdict"] = comparison_verdict(p);
         pj["status"] = engine::to_string(p.agreement);
         pj["printed"] = p.printed_text;
+        if (!p.quote.empty())
+            pj["printed_as"] = p.quote;   // the paper's own text, which `printed` reads
         pj["derived"] = p.derived.info(GiNaC::info_flags::relation)
                             ? ginac_syntax(p.derived.lhs(), order) + " = " + ginac_syntax(p.derived.rhs(), order)
                             : ginac_syntax(p.derived, order);

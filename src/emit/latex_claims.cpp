@@ -425,7 +425,7 @@ std::string fragment_writer::paper() const
         } else {
             const std::string printed = as_printed(p);
             after_display = wants_display(printed);
-            out += "printed " + (after_display ? shown_as_printed(p) : "$" + printed + "$");
+            out += "printed " + read_as(p) + (after_display ? shown_as_printed(p) : "$" + printed + "$");
         }
         const std::string verdict = comparison_verdict(p);
         if (p.agrees()) {

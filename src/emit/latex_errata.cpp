@@ -292,6 +292,14 @@ std::string fragment_writer::as_printed(const engine::paper_comparison& p) const
                                                        : math(p.printed, &p.written);
 }
 
+// The paper's own text of a printed form the file reads in other terms (one component of
+// R^T v^(C)', a name the paper does not use), then "read as": what precedes the form as
+// read; empty for a form read as printed.
+std::string fragment_writer::read_as(const engine::paper_comparison& p) const
+{
+    return p.quote.empty() ? "" : latex_prose(p.quote) + ", read as ";
+}
+
 // The same as a display, a long right side broken before a + or -.
 std::string fragment_writer::shown_as_printed(const engine::paper_comparison& p) const
 {
@@ -334,8 +342,9 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
     else
         printed_math = as_printed(p);
     const auto [derived, derived_written] = derived_form(p);
-    const bool show_derived = !p.agrees() && p.what != engine::paper_comparison::kind::claim;
-    const std::string derived_math = !show_derived ? ""
+    // Beside every printed form, agreeing or not, what Impact derived (a claim shows what
+    // was checked instead).
+    const std::string derived_math = claim ? ""
                                      : derived.info(GiNaC::info_flags::relation)
                                          ? relation_math(derived, derived_written)
                                          : math(derived, derived_written);
@@ -361,7 +370,7 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
         change += fmt::format("; one misprint, in each of the {} components", group.size());
     }
 
-    bool to_display = (!printed_math.empty() && !fits(printed_math, printed_pt)) ||
+    bool to_display = (!printed_math.empty() && !fits(read_as(p) + printed_math, printed_pt)) ||
                       (!derived_math.empty() && !fits(derived_math, derived_pt));
     for (std::size_t k : group)
         for (const engine::finding& f : all[k].findings)
@@ -371,7 +380,7 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
                                                                        : math(part.value),
                           change_pt))
                     to_display = true;
-    std::string printed_cell = printed.empty() ? "$" + printed_math + "$" : printed;
+    std::string printed_cell = printed.empty() ? read_as(p) + "$" + printed_math + "$" : printed;
     std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
     // A claim: what was checked (at its special values, or its limit), when it fits.
     if (claim && p.test) {
@@ -392,7 +401,7 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
         const std::string see = "display " + mark + " below";
         table.displays += fmt::format("\\item[{}] {}, {}: ", mark, paper_text(p.paper), listing(subjects));
         if (!printed_math.empty()) {
-            table.displays += "printed" + shown_as_printed(p);
+            table.displays += "printed " + read_as(p) + shown_as_printed(p);
             printed_cell = see;
         } else {
             table.displays += "the paper says " + printed + ".";

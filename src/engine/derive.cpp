@@ -159,6 +159,7 @@ private:
             p.subject = g.name.value;
             p.paper = g.paper ? g.paper->value : std::string();
             p.printed_text = g.printed->value;
+            p.quote = g.quote ? g.quote->value : std::string();
             p.printed = out_.symbols.parse_equation(*g.printed);
             p.written = written(*g.printed);
             p.derived = equations_.back().relation;
@@ -373,6 +374,7 @@ private:
             p.subject = q.name;
             p.paper = r.paper;
             p.printed_text = spec_result.printed->value;
+            p.quote = spec_result.quote ? spec_result.quote->value : std::string();
             p.printed = out_.symbols.parse(*spec_result.printed);
             p.written = written(*spec_result.printed);
             p.derived = r.value;

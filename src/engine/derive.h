@@ -141,6 +141,9 @@ struct paper_comparison {
     std::optional<check_result> test;         ///< for a claim: the check it was turned into
     source_location where;
     written_form written;     ///< how the file transcribes the printed form (not for a claim)
+    /// The paper's own text of the printed form (math between dollar signs), when the file
+    /// reads it in other terms; empty otherwise, and for a claim (`printed_text` is its words).
+    std::string quote;
 
     bool agrees() const { return agreement.what == verdict::status::proven; }
 };

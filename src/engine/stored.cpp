@@ -861,7 +861,8 @@ private:
                 p.reconciliations,
                 p.test ? put_check(*p.test) : json(),
                 put_where(p.where),
-                put_written(p.written)};
+                put_written(p.written),
+                p.quote};
     }
     void get_comparison(const json& j, paper_comparison& p)
     {
@@ -880,6 +881,7 @@ private:
         }
         p.where = get_where(j.at(10));
         get_written(j.at(11), p.written);
+        p.quote = j.at(12).get<std::string>();
     }
 
     json put_result(const result& r)

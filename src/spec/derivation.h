@@ -51,6 +51,7 @@ struct given {
     text because;
     std::optional<text> paper; ///< the paper's equation it is taken from, e.g. `Eq. 6`
     std::optional<text> printed; ///< the equation as the paper prints it, compared for equivalence
+    std::optional<text> quote;   ///< the paper's own text of it, when `printed` had to read it in other terms
 };
 
 /// One case of a value defined by cases: `{ when = "lhs <= rhs", as = "expression" }`.
@@ -83,6 +84,10 @@ struct result {
     std::optional<text> display;   ///< the form to typeset; must be proven equal to the result
     std::optional<text> paper;     ///< e.g. `Eq. 8`
     std::optional<text> printed;   ///< the paper's printed form, transcribed
+    /// The paper's own text of that form, math between dollar signs, when `printed` had
+    /// to read it in other terms: one component of a vector it prints whole (R^T v^(C)'),
+    /// a name for a symbol it prints otherwise, an operator Impact writes as a product.
+    std::optional<text> quote;
 };
 
 /// A claim that must hold once the results are substituted: an identity, an

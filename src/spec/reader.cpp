@@ -93,6 +93,9 @@ given read_given(table_reader& in)
     g.because = in.required_string("because");
     g.paper = in.optional_string("paper");
     g.printed = in.optional_string("printed");
+    g.quote = in.optional_string("quote");
+    if (g.quote && !g.printed)
+        throw error(g.quote->where, "'quote' is the paper's text of a 'printed' form: give 'printed' too");
     in.finish();
     return g;
 }
@@ -176,6 +179,9 @@ result read_result(table_reader& in)
     r.display = in.optional_string("display");
     r.paper = in.optional_string("paper");
     r.printed = in.optional_string("printed");
+    r.quote = in.optional_string("quote");
+    if (r.quote && !r.printed)
+        throw error(r.quote->where, "'quote' is the paper's text of a 'printed' form: give 'printed' too");
     in.finish();
     return r;
 }
