@@ -413,6 +413,30 @@ BOOST_AUTO_TEST_CASE(an_inequality_claimed_the_wrong_way_round_is_reported_rever
         BOOST_TEST(said.find("reverse") == std::string::npos, said);
 }
 
+BOOST_AUTO_TEST_CASE(an_equation_that_holds_only_in_a_special_case_says_where)
+{
+    // Two masses a and b and a velocity u: z = (a - b) u / (a + b) vanishes only for equal
+    // masses or no velocity (the changes of velocity Sec. II A calls equal and opposite);
+    // (1 + x) is never 0 for positive x, so only a = b is said; x^2 + x - 1 = 0 has no
+    // such form, and nothing is said.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"a\"\ndomain = \"positive\"\n[[symbol]]\nname = \"b\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"u\"\n"
+        "[[step]]\ndefine = \"z\"\nas = \"(a - b)*u/(a + b)\"\n[[step]]\ndefine = \"y\"\nas = \"(1 + x)*(2*a - 3*b)\"\n"
+        "[[result]]\nname = \"z\"\n[[result]]\nname = \"y\"\n"
+        "[[claim]]\nname = \"opposite\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z = 0\"\n"
+        "[[claim]]\nname = \"weighed\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 0\"\n"
+        "[[claim]]\nname = \"golden\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x^2 + x = 1\"\n"));
+    const auto said = [&](std::size_t k) {
+        const auto& r = d.paper_checks.at(k).reconciliations;
+        return r.empty() ? std::string() : r.front();
+    };
+    BOOST_TEST(!d.paper_checks.at(0).agrees());
+    BOOST_TEST(said(0).rfind("it holds only where a = b or u = 0: the difference of its sides is ", 0) == 0, said(0));
+    BOOST_TEST(said(1).rfind("it holds only where a = 3*b/2: ", 0) == 0, said(1));
+    BOOST_TEST(said(2).find("only where") == std::string::npos, said(2));
+}
+
 BOOST_AUTO_TEST_CASE(an_angle_printed_for_its_cosine_is_reported_as_such)
 {
     // An angle defined through its cosine, then claimed equal to the cosine itself (Eq. 14's

@@ -726,7 +726,7 @@ private:
         // An angle (derived as an arccosine, arcsine or arctangent) set equal to its cosine,
         // sine or tangent.
         if (!GiNaC::is_a<GiNaC::symbol>(left) || !GiNaC::is_a<GiNaC::function>(failed.lhs))
-            return {};
+            return where_it_holds(original, failed);
         const std::string inverse = GiNaC::ex_to<GiNaC::function>(failed.lhs).get_name();
         const std::map<std::string, std::pair<GiNaC::ex (*)(const GiNaC::ex&), const char*>> of = {
             {"acos", {[](const GiNaC::ex& x) -> GiNaC::ex { return GiNaC::cos(x); }, "cosine"}},
@@ -745,6 +745,55 @@ private:
                     .math(left)
                     .say(fmt::format(": the right side is the {} of ", name))
                     .math(left)};
+    }
+
+    // An equation that holds only where a factor of the difference of its sides vanishes:
+    // the changes of velocity of Sec. II A are equal and opposite only for M = m (and
+    // where nothing collides, v_M = v_m). Each factor the domains do not prove non-zero
+    // must be a symbol or a difference of two (times numbers), said as an equation in
+    // them; one that is not leaves nothing to say, since "only where" would be untrue.
+    std::vector<finding> where_it_holds(const spec::check& original, const check_result& failed)
+    {
+        const GiNaC::exmap abbreviations = out_.symbols.abbreviations();
+        const GiNaC::ex difference = GiNaC::normal((failed.lhs - failed.rhs).subs(abbreviations).subs(abbreviations));
+        if (difference.is_zero() || has_radical(difference) || !difference.info(GiNaC::info_flags::rational_function))
+            return {};
+        const GiNaC::ex numerator = factor_polynomial(GiNaC::numer(difference), run_);
+        const assumptions given = assumptions_of(original);
+        std::vector<GiNaC::ex> factors;
+        for (const GiNaC::ex& f : GiNaC::is_a<GiNaC::mul>(numerator) ? std::vector<GiNaC::ex>(numerator.begin(), numerator.end())
+                                                                      : std::vector<GiNaC::ex>{numerator})
+            factors.push_back(GiNaC::is_a<GiNaC::power>(f) ? f.op(0) : f);
+        // The declared symbols in declaration order: the first one a factor names is set
+        // on the left (M = m, as the file declares M first).
+        std::vector<GiNaC::ex> places;
+        for (const GiNaC::ex& f : factors) {
+            if (GiNaC::is_a<GiNaC::numeric>(f) || !prove_sign(f, given).sign.zero)
+                continue;   // never zero under the domains
+            std::vector<GiNaC::ex> in;
+            for (const quantity& q : out_.symbols.all())
+                if (f.has(q.symbol))
+                    in.push_back(q.symbol);
+            if (in.empty() || in.size() > 2 || f.degree(in.front()) != 1 || (in.size() == 2 && f.degree(in.back()) != 1))
+                return {};
+            const GiNaC::ex a = f.coeff(in.front(), 1);
+            if (!GiNaC::is_a<GiNaC::numeric>(a) || (in.size() == 2 && !GiNaC::is_a<GiNaC::numeric>(f.coeff(in.back(), 1))))
+                return {};
+            const GiNaC::ex rest = GiNaC::expand(f - a * in.front());
+            if (!(rest - rest.coeff(in.back(), 1) * in.back()).is_zero() && in.size() == 2)
+                return {};
+            places.push_back(in.front() == GiNaC::normal(-rest / a));
+        }
+        if (places.empty())
+            return {};
+        finding said;
+        said.say("it holds only where ");
+        for (std::size_t i = 0; i < places.size(); ++i) {
+            if (i > 0)
+                said.say(i + 1 == places.size() ? " or " : ", ");
+            said.math(places[i]);
+        }
+        return {said.say(": the difference of its sides is ").math(numerator / GiNaC::denom(difference))};
     }
 
     std::vector<finding> other_regimes(const spec::check& original, const check_result& failed)
