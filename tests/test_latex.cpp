@@ -83,6 +83,16 @@ BOOST_AUTO_TEST_CASE(a_form_as_written_keeps_every_term_the_text_has)
         "1/2*M*v_M_after^2 = -m_eff^(-1)*(1 + eps)", [this](const std::string& t) { return parse(t); });
     BOOST_TEST(emit::latex_as_written(*e.tree(), order) ==
                "\\frac{1}{2} M v'^{2}_{M,\\parallel} = -m^{-1}_{\\mathrm{eff}} (1 + \\epsilon)");
+    // A sum after a quotient keeps its parentheses: Carnot's theorem, (1 - ε)/(1 + ε) times
+    // the whole of the kinetic energy of the changes, and ½ times a sum.
+    const auto written = [this](const std::string& text) {
+        return emit::latex_as_written(
+            *engine::written_form::read(text, [this](const std::string& t) { return parse(t); }).tree(), order);
+    };
+    BOOST_TEST(written("(1 - eps)/(1 + eps)*(1/2*M*v_M^2 + 1/2*m*v_m^2)") ==
+               "\\frac{1 - \\epsilon}{1 + \\epsilon} \\left(\\frac{1}{2} M v^{2}_{M,\\parallel} + \\frac{1}{2} m v^{2}_{m,\\parallel}\\right)");
+    BOOST_TEST(written("1/2*(1 - eps)") == "\\frac{1}{2} (1 - \\epsilon)");
+    BOOST_TEST(written("1/M*(v_M - v_m)") == "\\frac{1}{M} (v_{M,\\parallel} - v_{m,\\parallel})");
 }
 
 BOOST_AUTO_TEST_CASE(eq8_is_printed_in_the_order_its_display_form_gives)

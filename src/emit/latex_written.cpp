@@ -125,8 +125,10 @@ private:
             }
             if (!out.empty())
                 out += " ";
+            // A run without divisors stands beside another run: its one factor keeps its
+            // parentheses (1/M*(a - b), not \frac{1}{M} a - b).
             if (r.under.empty())
-                out += carried + factors(r.over);
+                out += carried + factors(r.over, false);
             else
                 out += "\\frac{" +
                        (r.over.empty() ? (carried.empty() ? std::string("1") : carried.substr(0, carried.size() - 1))

@@ -766,7 +766,15 @@ private:
             factors.push_back(GiNaC::is_a<GiNaC::power>(f) ? f.op(0) : f);
         // The declared symbols in declaration order: the first one a factor names is set
         // on the left (M = m, as the file declares M first).
-        std::vector<GiNaC::ex> places;
+        // Each place with the declaration rank of its left side, to be said in that order
+        // (GiNaC's order of factors follows its hashes, which a build may change).
+        std::vector<std::pair<std::size_t, GiNaC::ex>> places;
+        const auto rank = [&](const GiNaC::ex& symbol) {
+            const auto& all = out_.symbols.all();
+            return static_cast<std::size_t>(std::find_if(all.begin(), all.end(), [&](const quantity& q) {
+                                                return q.symbol.is_equal(symbol);
+                                            }) - all.begin());
+        };
         for (const GiNaC::ex& f : factors) {
             if (GiNaC::is_a<GiNaC::numeric>(f) || !prove_sign(f, given).sign.zero)
                 continue;   // never zero under the domains
@@ -782,16 +790,18 @@ private:
             const GiNaC::ex rest = GiNaC::expand(f - a * in.front());
             if (!(rest - rest.coeff(in.back(), 1) * in.back()).is_zero() && in.size() == 2)
                 return {};
-            places.push_back(in.front() == GiNaC::normal(-rest / a));
+            places.emplace_back(rank(in.front()), in.front() == GiNaC::normal(-rest / a));
         }
         if (places.empty())
             return {};
+        std::stable_sort(places.begin(), places.end(),
+                  [](const auto& x, const auto& y) { return x.first < y.first; });
         finding said;
         said.say("it holds only where ");
         for (std::size_t i = 0; i < places.size(); ++i) {
             if (i > 0)
                 said.say(i + 1 == places.size() ? " or " : ", ");
-            said.math(places[i]);
+            said.math(places[i].second);
         }
         return {said.say(": the difference of its sides is ").math(numerator / GiNaC::denom(difference))};
     }
