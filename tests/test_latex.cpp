@@ -5,6 +5,8 @@
 #define BOOST_TEST_MODULE test_latex
 #include <boost/test/unit_test.hpp>
 
+#include "derivation_support.h"
+#include "emit/errata.h"
 #include "emit/latex.h"
 #include "engine/written_form.h"
 #include "engine/library.h"
@@ -317,6 +319,31 @@ BOOST_AUTO_TEST_CASE(a_line_read_in_other_terms_is_shown_in_the_papers_own_text_
                                                           "\\mathbf{v}_M^{(C)\\prime}$, read as"));
     // An agreeing row sets the derived form beside the printed one too: Eq. 4's v'_{M,perp}.
     BOOST_TEST(contains(rows, "& $v'_{M,\\perp}$ & agrees & $v_{M,\\perp}$ & $v_{M,\\perp}$ &"));
+}
+
+BOOST_AUTO_TEST_CASE(a_claim_the_paper_states_in_degrees_is_answered_in_degrees)
+{
+    // A derivation of its own: a pendulum's angle from its cosine, c = 1/(1 + x) for x > 0.
+    // The text says "60°" at x = 1, where it is 60°; and "0°" as x grows, where it is 90°.
+    // The cosine's bound c <= 1 is a number, not an angle: it stays 1.
+    const engine::derivation d = impact::testing::derive_text(
+        "id = \"pendulum\"\ntitle = \"t\"\n[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"c\"\n[[symbol]]\nname = \"phi\"\nlatex = \"\\\\varphi\"\n"
+        "[[step]]\ndefine = \"c\"\nas = \"1/(1 + x)\"\n[[step]]\ndefine = \"phi\"\nas = \"acos(c)\"\n"
+        "[[result]]\nname = \"phi\"\n"
+        "[[claim]]\nname = \"sixty\"\npaper = \"p. 1\"\nquote = \"at $x = 1$ it swings to $60^\\\\circ$\"\n"
+        "claim = \"phi = Pi/3\"\nat = { x = \"1\" }\n"
+        "[[claim]]\nname = \"flat\"\npaper = \"p. 1\"\nquote = \"as $x$ grows it tends to 0\u00b0\"\n"
+        "claim = \"phi = 0\"\nlimit = \"x -> infinity\"\n"
+        "[[claim]]\nname = \"bounded\"\npaper = \"p. 1\"\nquote = \"the angle stays below $90^\\\\circ$\"\n"
+        "claim = \"c <= 1\"\n");
+    const std::string table = emit::errata_markdown({&d});
+    BOOST_TEST(contains(table, "checked: $\\varphi = 60^\\circ$, at $x = 1$"), table);
+    BOOST_TEST(contains(table, "the derived value is $90^\\circ$, not $0^\\circ$"), table);
+    BOOST_TEST(contains(table, "checked: $c \\leq 1$"), table);
+    BOOST_TEST(!contains(table, "\\pi"), table);
+    // The engine's own values stay in radians.
+    BOOST_TEST(d.paper_checks.at(1).test->value->is_equal(GiNaC::Pi / 2));
 }
 
 BOOST_AUTO_TEST_CASE(a_result_repeated_for_several_printed_lines_is_shown_once)

@@ -215,11 +215,14 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
         }
         const engine::term_order order = engine::declaration_order(d->symbols);
         const std::vector<std::size_t>& row = entry.comparisons;
-        const engine::paper_comparison& p = d->paper_checks[row.front()];
+        // Each comparison as shown: a claim in degrees answered in degrees.
+        std::vector<engine::paper_comparison> shown;
+        for (std::size_t k : row)
+            shown.push_back(in_the_papers_units(d->paper_checks[k]));
+        const engine::paper_comparison& p = shown.front();
         const bool claim = p.what == engine::paper_comparison::kind::claim;
         std::vector<std::string> items, printed, derived;
-        for (std::size_t k : row) {
-            const engine::paper_comparison& c = d->paper_checks[k];
+        for (const engine::paper_comparison& c : shown) {
             // The derived form in the variables the paper prints: the printed form mended, or the
             // result as its file displays it.
             const engine::result* r =
@@ -259,8 +262,8 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
         if (claim && row.size() > 1) {
             // The claims of one quote: one finding, each check's outcome where they differ.
             std::vector<std::string> each;
-            for (std::size_t k : row)
-                each.push_back(change_of(d->paper_checks[k]));
+            for (const engine::paper_comparison& c : shown)
+                each.push_back(change_of(c));
             change = one_finding(each);
             printed.resize(1);
             for (std::size_t i = 1; i < derived.size(); ++i)

@@ -72,6 +72,12 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
 /// taken at $v_{1,\parallel} \to k v_{1,\parallel}$").
 std::string checked_claim_latex(const engine::check_result& c, const term_order& order);
 
+/// A comparison as the report shows it: a claim the paper states in degrees ("the scatter
+/// angle being 90°") is answered in degrees, each rational multiple of π in what was checked
+/// and found (θ = π/2, "not π/2") set as that many degrees (θ = 90°, "not 90°"). Any other
+/// comparison as it is.
+engine::paper_comparison in_the_papers_units(const engine::paper_comparison& p);
+
 /// Plain text escaped for LaTeX.
 std::string latex_text(const std::string& text);
 

@@ -414,7 +414,7 @@ std::string fragment_writer::paper() const
     }
     for (const item& it : items) {
         const std::vector<std::size_t>& row = it.row;
-        const engine::paper_comparison& p = d_.paper_checks[row.front()];
+        const engine::paper_comparison p = in_the_papers_units(d_.paper_checks[row.front()]);
         const std::string what = subject(p);
         out += fmt::format("\\item {}, {}: ", paper_text(p.paper), what);
         bool after_display = false;
@@ -435,7 +435,7 @@ std::string fragment_writer::paper() const
             std::vector<std::string> proven;
             std::string displays;
             for (std::size_t k : row)
-                if (const engine::paper_comparison& c = d_.paper_checks[k];
+                if (const engine::paper_comparison c = in_the_papers_units(d_.paper_checks[k]);
                     c.what == engine::paper_comparison::kind::claim && c.test) {
                     const std::string shown = checked_claim_latex(*c.test, order_);
                     if (latex_width(shown) < 260 && shown.find("\\frac{\\frac") == std::string::npos) {
@@ -513,6 +513,64 @@ std::string fragment_writer::paper() const
 }
 
 } // namespace detail
+
+engine::paper_comparison in_the_papers_units(const engine::paper_comparison& p)
+{
+    const std::string& words = p.printed_text;
+    if (p.what != engine::paper_comparison::kind::claim ||
+        (words.find("^\\circ") == std::string::npos && words.find("\u00b0") == std::string::npos))
+        return p;
+    // q π as the symbol "180 q°": printed, never computed with.
+    struct to_degrees : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& e) override
+        {
+            if (!e.has(GiNaC::Pi))
+                return e;
+            const GiNaC::ex q = e / GiNaC::Pi;
+            if (GiNaC::is_a<GiNaC::numeric>(q) && q.info(GiNaC::info_flags::rational)) {
+                const GiNaC::numeric degrees = GiNaC::ex_to<GiNaC::numeric>(q) * 180;
+                const std::string number = degrees.is_integer()
+                                               ? fmt::format("{}", degrees.to_long())
+                                               : fmt::format("\\tfrac{{{}}}{{{}}}", degrees.numer().to_long(),
+                                                             degrees.denom().to_long());
+                return GiNaC::symbol(fmt::format("degrees_{}", number), number + "^\\circ");
+            }
+            return e.map(*this);
+        }
+    } degrees;
+    // A claim about an angle (its left side derived as an arccosine, arcsine or arctangent):
+    // its value 0 is 0° too ("the derived value is 0°, not 90°"); never the 0 of a cosine.
+    const bool angle = p.test && GiNaC::is_a<GiNaC::function>(p.test->lhs) && [&] {
+        const std::string name = GiNaC::ex_to<GiNaC::function>(p.test->lhs).get_name();
+        return name == "acos" || name == "asin" || name == "atan";
+    }();
+    const GiNaC::symbol zero_degrees("degrees_0", "0^\\circ");
+    const auto value = [&](const GiNaC::ex& e) -> GiNaC::ex { return angle && e.is_zero() ? zero_degrees : degrees(e); };
+    engine::paper_comparison shown = p;
+    shown.printed = degrees(p.printed);
+    shown.derived = value(p.derived);
+    for (engine::finding& f : shown.findings)
+        for (engine::finding::part& part : f.parts) {
+            part.value = value(part.value);
+            if (part.point)
+                part.point = degrees(*part.point);
+        }
+    if (shown.test) {
+        engine::check_result& c = *shown.test;
+        const GiNaC::ex stated = degrees(c.stated.lhs()) == value(c.stated.rhs());
+        // The claim as its file writes it names π: set from the expression instead.
+        if (!stated.is_equal(c.stated))
+            c.written = written_form();
+        c.stated = stated;
+        c.lhs = degrees(c.lhs);
+        c.rhs = value(c.rhs);
+        if (c.value)
+            c.value = value(*c.value);
+        for (auto& [symbol, value] : c.at)
+            value = degrees(value);
+    }
+    return shown;
+}
 
 std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written)
 {

@@ -326,7 +326,10 @@ std::string fragment_writer::shown_as_printed(const engine::paper_comparison& p)
 void fragment_writer::errata_row(errata_table& table, const std::vector<std::size_t>& group) const
 {
     constexpr double printed_pt = 122, derived_pt = 99, change_pt = 78;
-    const auto& all = d_.paper_checks;
+    // Each comparison as shown: a claim in degrees answered in degrees.
+    std::vector<engine::paper_comparison> all;
+    for (const engine::paper_comparison& c : d_.paper_checks)
+        all.push_back(in_the_papers_units(c));
     const engine::paper_comparison& p = all[group.front()];
     std::vector<std::string> subjects;
     for (std::size_t k : group)
