@@ -499,6 +499,34 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
                boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(a_term_s_sign_in_a_quotient_says_above_or_below_the_bar)
+{
+    // Eq. 12's second line on a small scale: (x + eps x)/(x + eps x + x - eps x), where
+    // (x - eps x)/(2 x) is derived. eps x is printed once above the bar and twice below: the
+    // finding says which one's sign is wrong.
+    BOOST_TEST(smallest_changes("w", "(x - eps*x)/(2*x)", "(x + eps*x)/(x + eps*x + x - eps*x)") ==
+                   std::vector<std::string>{"the sign of the term x*eps in the numerator"},
+               boost::test_tools::per_element());
+    // A term of a sum that is no quotient is named alone.
+    BOOST_TEST(smallest_changes("w", "y + 3*z", "y - 3*z") ==
+                   std::vector<std::string>{"the sign of the term 3*z"},
+               boost::test_tools::per_element());
+}
+
+BOOST_AUTO_TEST_CASE(a_share_said_of_its_complement_is_reported_as_such)
+{
+    // Eq. 12 on a small scale: s is defined as y's share, y/(y + x); the text says s is x's
+    // share, x/(x + y), which is 1 - s.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"s\"\n[[step]]\ndefine = \"s\"\nas = \"y^2/(y^2 + x)\"\n[[result]]\nname = \"s\"\n"
+        "[[claim]]\nname = \"other_share\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"s = x/(x + y^2)\"\n"
+        "[[claim]]\nname = \"not_a_share\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"s = x/(2*x + y^2)\"\n"));
+    BOOST_TEST_REQUIRE(!d.paper_checks.at(0).reconciliations.empty());
+    BOOST_TEST(d.paper_checks.at(0).reconciliations.front() == "it holds with 1-s for s");
+    for (const std::string& said : d.paper_checks.at(1).reconciliations)
+        BOOST_TEST(said.find("1-s") == std::string::npos, said);
+}
+
 BOOST_AUTO_TEST_CASE(a_smallest_change_carries_the_printed_form_it_mends)
 {
     // 2*x printed where 2*z is derived: the mended form is the printed one with 2*z.

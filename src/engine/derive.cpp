@@ -676,8 +676,11 @@ private:
         p.agreement = c.outcome;
         if (!p.agrees() && c.value && (claim.test.limit || !claim.test.at.empty()))
             p.findings = other_regimes(claim.test, c);
-        else if (!p.agrees() && c.op == relation::equal)
+        else if (!p.agrees() && c.op == relation::equal) {
             p.findings = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
+            if (auto found = complement_holds(c))
+                p.findings.insert(p.findings.begin(), *found);
+        }
         if (p.agreement.what == verdict::status::failed && p.findings.empty() && c.parts.empty() && !c.limit)
             p.findings = what_holds_instead(claim.test, c);
         if (const auto found = printed_dimension_finding(out_.symbols, p.printed, p.printed))
@@ -685,6 +688,21 @@ private:
         p.reconciliations = plain_texts(p.findings, out_.symbols);
         p.test = std::move(c);
         return p;
+    }
+
+    // A share said of its complement: the text calls tau the transferred share, where Eq. 12
+    // defines the share the cue ball keeps. A claim `x = rhs` about a quantity x that holds
+    // with 1 - x for x.
+    std::optional<finding> complement_holds(const check_result& failed)
+    {
+        const GiNaC::ex left = failed.stated.lhs();
+        if (!GiNaC::is_a<GiNaC::symbol>(left) || (failed.lhs - left).is_zero() || !failed.at.empty() ||
+            !failed.left_at.empty() || failed.limit || GiNaC::is_a<GiNaC::numeric>(failed.lhs) ||
+            GiNaC::is_a<GiNaC::numeric>(failed.rhs))
+            return std::nullopt;   // a number and its complement say nothing of shares
+        if (prove_equal(1 - failed.lhs, failed.rhs, out_.symbols, run_).what != verdict::status::proven)
+            return std::nullopt;
+        return finding().say("it holds with ").math(1 - left).say(" for ").math(left);
     }
 
     // A failed claim without a finding: the relation reversed (a > b where a < b holds:

@@ -104,10 +104,25 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
     // A term named by its magnitude: GiNaC may store it as -1/m or as 1/m in -(...).
     // (Descriptions are written later, for the edits that reconcile: captured by value.)
     auto magnitude = [order](const GiNaC::ex& term) { return order->negative(term) ? -term : term; };
+    // Where in a quotient a term stands, said with it: a term the paper prints more than
+    // once (Eq. 12's m ε v, once above the bar and twice below) is then named without doubt.
+    const auto divides = [](const GiNaC::ex& f) {
+        return GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
+               GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative();
+    };
+    const bool quotient = GiNaC::is_a<GiNaC::mul>(e) && std::any_of(e.begin(), e.end(), divides);
+    const auto in_quotient = [=](const std::vector<std::size_t>& path) -> std::string {
+        if (!quotient || path.empty())
+            return "";
+        return divides(e.op(path.front())) ? " in the denominator" : " in the numerator";
+    };
     std::set<std::string> present;
     for (const site& s : sites) {
         if (s.is_term && !s.path.empty()) {
-            emit({2, [=] { return finding().say(side + "the sign of the term ").term(magnitude(s.node)); },
+            emit({2,
+                  [=] {
+                      return finding().say(side + "the sign of the term ").term(magnitude(s.node)).say(in_quotient(s.path));
+                  },
                   replace_at(e, s.path, 0, -s.node)});
         }
         if (!GiNaC::is_a<GiNaC::symbol>(s.node))
