@@ -321,6 +321,11 @@ BOOST_AUTO_TEST_CASE(the_claims_of_one_quote_come_to_one_finding)
     BOOST_TEST(one_finding({"proven", "proven", "proven", "as checked, it does not hold"}) ==
                "the 1st check: proven; the 2nd check: proven; the 3rd check: proven; the 4th check: as checked, it "
                "does not hold");
+    // One finding of different values (Fig. 2's restitutions said to increase): said once.
+    BOOST_TEST(one_finding({"the reverse holds: $a < b$", "the reverse holds: $b < c$"}) ==
+               "the reverse holds in each check: $a < b$ and $b < c$");
+    BOOST_TEST(one_finding({"the reverse holds: $a < b$", "derived, $z = 0$"}) ==
+               "the 1st check: the reverse holds: $a < b$; the 2nd check: derived, $z = 0$");
 }
 
 // The interpreter's C library calls, correctly rounded so that a measurement is the same on

@@ -88,6 +88,19 @@ std::string one_finding(const std::vector<std::string>& each)
             return (two ? "both " : "all ") + each.front();
         return each.front();
     }
+    // The same finding of each, of different values ("the reverse holds: 2/3 < 1", "the
+    // reverse holds: 1/3 < 2/3": values said to increase that decrease), said once.
+    const std::size_t colon = each.front().find(": ");
+    const std::string head = colon == std::string::npos ? "" : each.front().substr(0, colon);
+    if (!head.empty() && head.rfind("proven", 0) != 0 && head.find(';') == std::string::npos &&
+        std::all_of(each.begin(), each.end(), [&](const std::string& e) {
+            return e.rfind(head + ": ", 0) == 0 && e.find("; ") == std::string::npos;
+        })) {
+        std::string out = head + " in each check: ";
+        for (std::size_t i = 0; i < each.size(); ++i)
+            out += (i == 0 ? "" : i + 1 == each.size() ? " and " : ", ") + each[i].substr(head.size() + 2);
+        return out;
+    }
     static const char* const ordinals[] = {"1st", "2nd", "3rd"};
     std::string out;
     for (std::size_t i = 0; i < each.size(); ++i)
