@@ -513,6 +513,24 @@ BOOST_AUTO_TEST_CASE(a_term_s_sign_in_a_quotient_says_above_or_below_the_bar)
                boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(an_equation_no_small_edit_mends_is_compared_term_by_term)
+{
+    // Planar "Eq. 2" on a small scale: a printed equation three edits away from the one it
+    // stands for. The terms it shares (x on the left) are not named; the others are, each
+    // with what belongs in its place, and the mended form is the equation itself.
+    const engine::derivation d = derive_text(derivation_text(
+        solve_y + "[[result]]\nname = \"y\"\n"
+                  "[[given]]\nname = \"law\"\nequation = \"x + z = y + eps\"\nbecause = \"b\"\n"
+                  "printed = \"x + z^2 = y^3 + eps*x*z\"\n"));
+    const engine::paper_comparison& p = d.paper_checks.at(0);
+    BOOST_TEST(!p.agrees());
+    BOOST_TEST_REQUIRE(p.reconciliations.size() == 1u);
+    BOOST_TEST(p.reconciliations.front().rfind("on the left, z^2 where z belongs; on the right, ", 0) == 0u,
+               p.reconciliations.front());
+    BOOST_TEST(p.reconciliations.front().find(" where y+eps belongs") != std::string::npos, p.reconciliations.front());
+    BOOST_TEST_REQUIRE(p.findings.front().corrected.has_value());
+}
+
 BOOST_AUTO_TEST_CASE(a_share_said_of_its_complement_is_reported_as_such)
 {
     // Eq. 12 on a small scale: s is defined as y's share, y/(y + x); the text says s is x's

@@ -408,11 +408,12 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
     BOOST_TEST(swapped.front().find("it holds for $v_{1,\\perp} \\to 0$ instead") != std::string::npos,
                swapped.front());
     // Claims about the angle in degrees (90 and 0 degrees) are answered in the angle, not
-    // its cosine.
+    // its cosine, and in degrees, as the paper states them.
     for (const char* place : {"Sec. III C, after Eq. 14, 5th sentence", "Sec. III C, after Eq. 14, 2nd sentence"})
         for (const std::string& row : errata_rows_at(errata, place)) {
             BOOST_TEST(row.find("\\theta") != std::string::npos, row);
-            BOOST_TEST(row.find("\\frac{\\pi}{2}") != std::string::npos, row);
+            BOOST_TEST(row.find("not $90^\\circ$") != std::string::npos, row);
+            BOOST_TEST(row.find("\\pi") == std::string::npos, row);
             BOOST_TEST(row.find("\\cos") == std::string::npos, row);
         }
     // Eq. 9 prints v'_m with the sign of eps M (v_M - v_m) turned, once in the collision
@@ -437,8 +438,8 @@ BOOST_AUTO_TEST_CASE(the_claims_checked_of_one_quote_are_one_finding)
     BOOST_TEST(caption[0].find("**disagrees**") != std::string::npos, caption[0]);
     BOOST_TEST(caption[0].find("\\frac{2}{3} > 1") != std::string::npos, caption[0]);
     BOOST_TEST(caption[0].find("\\frac{1}{3} > \\frac{2}{3}") != std::string::npos, caption[0]);
-    BOOST_TEST(caption[0].find("the 1st check: the reverse holds: $\\frac{2}{3} < 1$; the 2nd check: the reverse "
-                               "holds: $\\frac{1}{3} < \\frac{2}{3}$") != std::string::npos,
+    BOOST_TEST(caption[0].find("the reverse holds in each check: $\\frac{2}{3} < 1$ and $\\frac{1}{3} < "
+                               "\\frac{2}{3}$") != std::string::npos,
                caption[0]);
     // Appendix A, line 6 prints 1/(2m) + 1/(2M) = (2M + 2m)/(4mM) = 1/2 (M + m)/(mM): each
     // member checked against the first, one row, both proven, the quote shown once.

@@ -110,11 +110,17 @@ void single_edits(const GiNaC::ex& e, const std::string& side, const std::set<st
         return GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
                GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative();
     };
-    const bool quotient = GiNaC::is_a<GiNaC::mul>(e) && std::any_of(e.begin(), e.end(), divides);
+    // The innermost quotient on the way down to the term decides (Eq. 9's lab-frame
+    // components, (r_x/|r|) (...)/(M + m) - ..., have their term above the bar of (...)/(M + m)).
     const auto in_quotient = [=](const std::vector<std::size_t>& path) -> std::string {
-        if (!quotient || path.empty())
-            return "";
-        return divides(e.op(path.front())) ? " in the denominator" : " in the numerator";
+        std::string where;
+        GiNaC::ex at = e;
+        for (std::size_t i : path) {
+            if (GiNaC::is_a<GiNaC::mul>(at) && std::any_of(at.begin(), at.end(), divides))
+                where = divides(at.op(i)) ? " in the denominator" : " in the numerator";
+            at = at.op(i);
+        }
+        return where;
     };
     std::set<std::string> present;
     for (const site& s : sites) {
@@ -430,6 +436,74 @@ std::vector<finding> reconcile_expression(const GiNaC::ex& printed, const GiNaC:
     }
 }
 
+// The terms of a side: the operands of a sum, or the side itself.
+static std::vector<GiNaC::ex> terms_of(const GiNaC::ex& side)
+{
+    return GiNaC::is_a<GiNaC::add>(side) ? std::vector<GiNaC::ex>(side.begin(), side.end())
+                                         : std::vector<GiNaC::ex>{side};
+}
+
+// An equation no edit, or two, reconciles, compared term by term with the one it stands for:
+// each side's printed terms that the derived side lacks, and the terms it lacks in their
+// place (planar "Eq. 2": m'_{m,y} where m v'_{m,y} belongs; a whole y-component printed
+// where the x-component belongs). The sides are matched the way that leaves fewer terms
+// apart; nothing is said when no term is shared and the sides are of one term each, which
+// would only restate the two forms.
+static std::vector<finding> terms_apart(const GiNaC::ex& printed, const GiNaC::ex& derived)
+{
+    struct side_apart {
+        std::vector<GiNaC::ex> printed_only, derived_only;
+    };
+    const auto apart = [](const GiNaC::ex& p, const GiNaC::ex& d) {
+        side_apart out;
+        std::vector<GiNaC::ex> left = terms_of(d);
+        for (const GiNaC::ex& t : terms_of(p)) {
+            const auto same = std::find_if(left.begin(), left.end(), [&](const GiNaC::ex& u) { return u.is_equal(t); });
+            if (same == left.end())
+                out.printed_only.push_back(t);
+            else
+                left.erase(same);
+        }
+        out.derived_only = left;
+        return out;
+    };
+    const auto count = [](const side_apart& a, const side_apart& b) {
+        return a.printed_only.size() + a.derived_only.size() + b.printed_only.size() + b.derived_only.size();
+    };
+    side_apart left = apart(printed.lhs(), derived.lhs()), right = apart(printed.rhs(), derived.rhs());
+    const side_apart crossed_left = apart(printed.lhs(), derived.rhs()), crossed_right = apart(printed.rhs(), derived.lhs());
+    if (count(crossed_left, crossed_right) < count(left, right)) {
+        left = crossed_left;
+        right = crossed_right;
+    }
+    const bool one_term_each = terms_of(printed.lhs()).size() == 1 && terms_of(printed.rhs()).size() == 1;
+    if (count(left, right) == 0 || one_term_each)
+        return {};
+    const auto sum = [](const std::vector<GiNaC::ex>& terms) {
+        GiNaC::ex out = 0;
+        for (const GiNaC::ex& t : terms)
+            out += t;
+        return out;
+    };
+    finding f;
+    bool first = true;
+    for (const auto& [where, a] : {std::pair<const char*, const side_apart*>{"on the left, ", &left},
+                                   std::pair<const char*, const side_apart*>{"on the right, ", &right}}) {
+        if (a->printed_only.empty() && a->derived_only.empty())
+            continue;
+        f.say(std::string(first ? "" : "; ") + where);
+        first = false;
+        if (a->printed_only.empty())
+            f.math(sum(a->derived_only)).say(" missing");
+        else if (a->derived_only.empty())
+            f.math(sum(a->printed_only)).say(" too many");
+        else
+            f.math(sum(a->printed_only)).say(" where ").math(sum(a->derived_only)).say(" belongs");
+    }
+    f.corrected = derived;
+    return {f};
+}
+
 std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::ex& derived,
                                             const symbol_table& symbols, const resolver& resolve,
                                             proof_cache& run)
@@ -437,7 +511,9 @@ std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::e
     // A search that meets arithmetic it cannot do (a printed form of 0 divided by) finds
     // nothing; it never stops the derivation.
     try {
-        return reconcile_equation_search(printed, derived, symbols, resolve, run);
+        if (auto found = reconcile_equation_search(printed, derived, symbols, resolve, run); !found.empty())
+            return found;
+        return terms_apart(printed, derived);
     } catch (const error&) {
         throw;
     } catch (const std::exception&) {
