@@ -395,6 +395,24 @@ BOOST_AUTO_TEST_CASE(givens_that_state_their_values_are_not_a_step_to_follow)
     BOOST_TEST(!contains(tex, "Solving \\eqref{impact:billiard_transfer:equal_masses}"));
     BOOST_TEST(contains(tex, "give $M$, $v_{M,\\parallel}$ and $v_{m,\\parallel}$ directly"));
     BOOST_TEST(!contains(tex, "  M &= m \\\\"));
+    // Said before the steps, not numbered as a step without an equation.
+    BOOST_TEST(!contains(tex, "\\item \\eqref{impact:billiard_transfer:equal_masses}"));
+    // No numbered step of any of the paper's derivations is without its equations.
+    for (const char* id : {"elastic_line", "elastic_plane", "inelastic_line", "inelastic_plane", "energy_loss",
+                           "billiard_transfer", "scatter_angle", "energy_loss_impulse"}) {
+        const std::string fragment = emit::latex_fragment(derived(id));
+        const std::size_t from = fragment.find("\\paragraph{Derivation.}");
+        const std::size_t to = fragment.find("\\end{enumerate}", from);
+        if (from == std::string::npos || to == std::string::npos)
+            continue;
+        const std::string steps = fragment.substr(from, to - from);
+        for (std::size_t at = steps.find("\\item "); at != std::string::npos;) {
+            const std::size_t next = steps.find("\\item ", at + 1);
+            const std::string step = steps.substr(at, next == std::string::npos ? std::string::npos : next - at);
+            BOOST_TEST(contains(step, "\\begin{align"), id << ": " << step);
+            at = next;
+        }
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_step_shows_its_value_collected_not_expanded)

@@ -256,10 +256,23 @@ std::string fragment_writer::steps() const
 {
     if (d_.steps.empty())
         return "";
-    std::string out = "\n\\paragraph{Derivation.}\n\\begin{enumerate}\n";
+    // Givens that state their unknowns' values already (M = m, v_M = 0): nothing to solve
+    // and no equation to show, so not a numbered step: said once, before the steps.
+    std::string before, out;
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
         const engine::step_result& s = d_.steps[i];
         const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
+        if (s.what == spec::step::kind::solve && source && s.solutions.size() <= 1 && givens_state(s, *source)) {
+            std::vector<std::string> equations, unknowns;
+            for (const spec::text& e : source->equations)
+                equations.push_back(ref(e.value));
+            for (const auto& value : s.values)
+                unknowns.push_back("$" + math(value.first) + "$");
+            before += fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
+                                  capitalised(listing(equations)), listing(unknowns),
+                                  s.because.empty() ? "" : " (" + latex_prose(s.because) + ")");
+            continue;
+        }
         // A copy of a quantity under another name (τ again, to compare with another printed
         // line): the same symbol, the same value, nothing for the reader to follow.
         if (s.what == spec::step::kind::define && s.values.size() == 1 && s.as_written &&
@@ -274,7 +287,8 @@ std::string fragment_writer::steps() const
         case spec::step::kind::rearrange: out += rearrange_step(s, source, because); break;
         }
     }
-    return out + "\\end{enumerate}\n";
+    const std::string head = "\n\\paragraph{Derivation.}\n" + before;
+    return out.empty() ? head : head + "\\begin{enumerate}\n" + out + "\\end{enumerate}\n";
 }
 
 // Whether the step's equations are the givens `unknown = value` of each of its values, as
@@ -304,11 +318,6 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
             equations.push_back(ref(e.value));
     for (const auto& value : s.values)
         unknowns.push_back("$" + math(value.first) + "$");
-    // Givens that state their unknowns' values already (M = m, v_M = 0): nothing to solve,
-    // said in words rather than set out as a step to follow.
-    if (source && s.solutions.size() <= 1 && givens_state(s, *source))
-        return fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
-                           capitalised(listing(equations)), listing(unknowns), because);
     std::string out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations),
                                   listing(unknowns), because);
     // Each value as a textbook shows it: the result's display form when the unknown is a
