@@ -294,9 +294,20 @@ BOOST_AUTO_TEST_CASE(eq4_s_printed_forms_agree_and_the_misprinted_planar_eq2_dis
                                 "v_My_after", "v_mx_after", "v_my_after"})
         BOOST_TEST(paper_verdict(d, subject) == "proven", subject);
     // The unnumbered planar conservation laws: the momentum line (the y-component, printed
-    // twice) has a mass m'_{m,y} where m v'_{m,y} belongs; the energy after the collision
-    // keeps m's velocities unprimed.
-    BOOST_TEST(paper_verdict(d, "planar_momentum_as_printed") == "failed");
+    // twice) has a mass m'_{m,y} where m v'_{m,y} belongs, each of its equations compared
+    // with the component it stands for; the energy after the collision keeps m's velocities
+    // unprimed.
+    BOOST_TEST(paper_verdict(d, "planar_momentum_x") == "failed");
+    BOOST_TEST(paper_verdict(d, "planar_momentum_y") == "failed");
+    // Typed from the paper's line: its first equation is the y-component where the
+    // x-component belongs, and both end in m'_{m,y} where m v'_{m,y} belongs.
+    for (const engine::paper_comparison& p : d.paper_checks) {
+        if (p.subject == "planar_momentum_x")
+            BOOST_TEST(p.reconciliations.back() == "on the left, M*v_My+m*v_my where M*v_Mx+m*v_mx belongs; on the right, "
+                                                   "M*v_My_after+m_prime_my where M*v_Mx_after+m*v_mx_after belongs");
+        if (p.subject == "planar_momentum_y")
+            BOOST_TEST(p.reconciliations.back() == "on the right, m_prime_my where m*v_my_after belongs");
+    }
     BOOST_TEST(paper_verdict(d, "planar_energy_as_printed") == "failed");
 }
 

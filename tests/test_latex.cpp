@@ -346,6 +346,20 @@ BOOST_AUTO_TEST_CASE(a_claim_the_paper_states_in_degrees_is_answered_in_degrees)
     BOOST_TEST(d.paper_checks.at(1).test->value->is_equal(GiNaC::Pi / 2));
 }
 
+BOOST_AUTO_TEST_CASE(a_value_with_roots_and_absolute_values_is_shown_collected)
+{
+    // A derivation of the tests', not the paper's: the values carry |a| = sqrt(a_x^2 + a_y^2)
+    // and |v'_t - v_t|. Typed from the solution worked by hand: v'_t = (R q w (1 + b) |a| +
+    // (1 - q b)(a_x v - a_y u)) / ((1 + q)|a|), the six-term sum collected in R; and k with
+    // the absolute value's argument factored and the rest collected in mu.
+    const std::string tex = emit::latex_fragment(impact::testing::derive_file("tests/solve/tilted_spin.toml"));
+    BOOST_TEST(contains(tex, "v'_t &= \\frac{R q \\omega (1 + \\beta) \\sqrt{a^{2}_x + a^{2}_y} + (1 - q \\beta) (a_x v - a_y u)}"
+                             "{(1 + q) \\sqrt{a^{2}_x + a^{2}_y}}"),
+               tex);
+    BOOST_TEST(contains(tex, "\\mu g (1 + q) (1 + \\beta)"), tex);
+    BOOST_TEST(!contains(tex, "R q \\beta \\omega"), tex);
+}
+
 BOOST_AUTO_TEST_CASE(a_result_repeated_for_several_printed_lines_is_shown_once)
 {
     // Eq. 12's second and fourth lines give the paper's tau = 1/2 - eps/2; the third line's
@@ -464,7 +478,7 @@ BOOST_AUTO_TEST_CASE(limits_and_inequalities_say_how_they_were_established)
     BOOST_TEST(contains(tex, "$\\lim_{\\epsilon \\to 1} \\cos\\theta = 0$."));
     BOOST_TEST(contains(tex, "The limit is established by substitution"));
     BOOST_TEST(contains(tex, "$\\lim_{v_{1,\\perp} \\to \\infty} \\cos\\theta = 0$."));
-    BOOST_TEST(contains(tex, "by substituting $v_{1,\\perp}$ $= 1/t$ and letting $t \\to 0^+$"));
+    BOOST_TEST(contains(tex, "by substituting $v_{1,\\perp} = 1/t$ and letting $t \\to 0^+$"));
     BOOST_TEST(contains(tex, "$\\cos\\theta \\geq 0$."));
     BOOST_TEST(contains(tex, "From the signs of its factors: "));
 }

@@ -232,8 +232,8 @@ std::string fragment_writer::limit_text(const engine::limit_method& how) const
                                math(how.denominator), sign->second);
     }
     if (how.at_infinity && how.leading_in_inverse)
-        return fmt::format("by substituting ${}$ $= 1/t$ and letting $t \\to 0^+$: the leading term is ${}$",
-                           math(how.inverted), math(*how.leading_in_inverse));
+        return fmt::format("by substituting ${} = 1/t$ and letting $t \\to 0^+$: the leading term is ${}$",
+                           math(how.inverted), math(textbook_form(*how.leading_in_inverse, order_).value));
     return latex_text(how.words);
 }
 

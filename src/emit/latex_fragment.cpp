@@ -609,7 +609,10 @@ std::string fragment_writer::results() const
         if (!r.cases.empty())
             out += *derived_cases_rows(math(r.symbol), r.cases, tag, true) + (i + 1 < shown.size() ? " \\\\\n" : "\n");
         else
-            out += rows(continued ? "" : math(r.symbol), r.display, &r.written, tag, "=", widest) +
+            // A result its file gives no display form for: as a textbook shows it, factored
+            // or collected.
+            out += rows(continued ? "" : math(r.symbol), r.written.tree() ? r.display : textbook_form(r.display, order_).value,
+                        &r.written, tag, "=", widest) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }
     return out + "\\end{align}\n";
