@@ -385,6 +385,22 @@ std::string fragment_writer::form(const GiNaC::ex& e, const written_form* w) con
     return display("", "", e, w);
 }
 
+// A claim as checked, too wide for a line: displayed (its two sides on lines of their own
+// when its left side is wide), its special values, domains or changed inputs after it.
+std::string fragment_writer::checked_display(const engine::check_result& t) const
+{
+    const std::string shown = checked_claim_latex(t, order_);
+    const std::string lhs = claim_lhs(t, &t.written);
+    std::string out = latex_width(lhs) > content_width - 40
+                          ? "\n\\begin{align*}\n" + rows("", t.stated.lhs(), &t.written, "", "") + " \\\\\n" +
+                                rows("", t.stated.rhs(), &t.written, "", latex_relation(t.op)) + "\n\\end{align*}\n"
+                          : display(lhs, latex_relation(t.op), t.stated.rhs(), &t.written);
+    const std::string conditions = shown.substr(shown.find('$', 1) + 1);
+    if (conditions.size() > 2)
+        out += capitalised(conditions.substr(2)) + ".\n";
+    return out;
+}
+
 // Each of the paper's items: what it prints or says, the verdict, and for a
 // disagreement what is derived and the smallest change that reconciles the two.
 // Text after a displayed formula starts a new sentence.
@@ -392,7 +408,32 @@ std::string fragment_writer::paper() const
 {
     if (d_.paper_checks.empty() && d_.source.open_claims.empty())
         return "";
-    std::string out = "\n\\paragraph{The paper, held to account.}\n\\begin{itemize}\n";
+    // In the report, whose errata table has a row for each (\impacterratatable, its
+    // section's label), a sentence that says where, with the count: each finding printed
+    // once. A fragment pasted alone lists them.
+    std::size_t agree = 0, undecided = d_.source.open_claims.size();
+    std::vector<std::string> disagree;
+    for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
+        const std::string v = row_verdict(d_, row);
+        agree += v == "agrees";
+        undecided += v == "undecided";
+        const std::string place = paper_text(d_.paper_checks[row.front()].paper);
+        if (v == "disagrees" && std::find(disagree.begin(), disagree.end(), place) == disagree.end())
+            disagree.push_back(place);
+    }
+    std::vector<std::string> counts;
+    if (agree > 0)
+        counts.push_back(fmt::format("{} {}", agree, agree == 1 ? "agrees" : "agree"));
+    if (!disagree.empty())
+        counts.push_back(fmt::format("{} {} ({})", disagree.size(), disagree.size() == 1 ? "disagrees" : "disagree",
+                                     fmt::join(disagree, "; ")));
+    if (undecided > 0)
+        counts.push_back(fmt::format("{} undecided", undecided));
+    std::string out = "\n\\paragraph{The paper, held to account.}\n\\ifdefined\\impacterratatable\n" +
+                      fmt::format("The paper's printed lines and claims that this derivation compares are rows of the "
+                                  "table in Section~\\ref{{\\impacterratatable}}, with their findings: {}.\n",
+                                  fmt::join(counts, ", ")) +
+                      "\\else\n\\begin{itemize}\n";
     // One item per finding: a misprint that one finding explains in several components of
     // one equation (Eq. 9's v'_m) is shown once, the other components named.
     // The claims checked of one quote are one item when all are proven (what was proven of
@@ -442,17 +483,7 @@ std::string fragment_writer::paper() const
                         proven.push_back(shown);
                         continue;
                     }
-                    const engine::check_result& t = *c.test;
-                    const std::string lhs = claim_lhs(t, &t.written);
-                    displays += latex_width(lhs) > content_width - 40
-                                    ? "\n\\begin{align*}\n" + rows("", t.stated.lhs(), &t.written, "", "") +
-                                          " \\\\\n" + rows("", t.stated.rhs(), &t.written, "", latex_relation(t.op)) +
-                                          "\n\\end{align*}\n"
-                                    : display(lhs, latex_relation(t.op), t.stated.rhs(), &t.written);
-                    // Its special values, domains or changed inputs, after the display.
-                    const std::string conditions = shown.substr(shown.find('$', 1) + 1);
-                    if (conditions.size() > 2)
-                        displays += capitalised(conditions.substr(2)) + ".\n";
+                    displays += checked_display(*c.test);
                 }
             const std::string checked =
                 proven.empty() ? "" : " (proven: " + fmt::format("{}", fmt::join(proven, "; ")) + ")";
@@ -509,7 +540,7 @@ std::string fragment_writer::paper() const
     for (const spec::open_claim& c : d_.source.open_claims)
         out += fmt::format("\\item {}, claim: ``{}'' --- \\textbf{{undecided}}: {}.\n", paper_text(c.paper.value),
                            latex_prose(c.quote.value), latex_prose(c.undecided.value));
-    return out + "\\end{itemize}\n";
+    return out + "\\end{itemize}\n\\fi\n";
 }
 
 } // namespace detail

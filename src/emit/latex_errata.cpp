@@ -249,9 +249,9 @@ std::string fragment_writer::unreconciled(const engine::paper_comparison& p, dou
         return "no edit, or two, reconciles it; the derived form is what holds";
     const engine::check_result& c = *p.test;
     const std::string checked = claim_math(c, order_, &c.written);
-    // Too wide to set inline where it is said: refer to the claim's section instead.
+    // Too wide to set inline where it is said: the claim as checked is displayed beside it.
     if (!fits(checked, width) || latex_width(checked) > width)
-        return fmt::format("the claim, as checked in Sect.~\\ref{{{}}}, does not hold", latex_label(d_));
+        return "the claim, as checked, does not hold";
     std::string out = "as checked, $" + checked + "$";
     std::vector<std::string> at;
     for (const auto& [symbol, value] : c.at)
@@ -384,6 +384,7 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
                           change_pt))
                     to_display = true;
     std::string printed_cell = printed.empty() ? read_as(p) + "$" + printed_math + "$" : printed;
+    std::string checks_displayed;
     std::string derived_cell = derived_math.empty() ? "" : "$" + derived_math + "$";
     // A claim: what was checked (at its special values, or its limit), when it fits.
     if (claim && p.test) {
@@ -395,22 +396,32 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
         const bool each_fits = std::all_of(each.begin(), each.end(), [&](const std::string& c) {
             return fits(c, derived_pt) && cell_width(c) <= 2.5 * derived_pt;
         });
-        derived_cell = each_fits ? "checked: " + fmt::format("{}", fmt::join(each, ";\\newline "))
-                                 : fmt::format("checked in Sect.~\\ref{{{}}}", latex_label(d_));
+        if (each_fits) {
+            derived_cell = "checked: " + fmt::format("{}", fmt::join(each, ";\\newline "));
+        } else {
+            // Too wide for the cell: displayed under the table, so that the table is whole.
+            for (std::size_t k : group)
+                if (all[k].test)
+                    checks_displayed += checked_display(*all[k].test);
+            to_display = true;
+        }
     }
     std::string change_cell = change;
     if (to_display) {
         const std::string mark = fmt::format("(T{})", ++table.displayed);
         const std::string see = "display " + mark + " below";
         table.displays += fmt::format("\\item[{}] {}, {}: ", mark, paper_text(p.paper), listing(subjects));
+        // A claim's words stay in the row's cell: the display shows what was checked.
         if (!printed_math.empty()) {
             table.displays += "printed " + read_as(p) + shown_as_printed(p);
             printed_cell = see;
-        } else {
-            table.displays += "the paper says " + printed + ".";
         }
         if (!derived_math.empty()) {
             table.displays += "Derived" + shown(derived, derived_written);
+            derived_cell = see;
+        }
+        if (!checks_displayed.empty()) {
+            table.displays += "checked as" + checks_displayed;
             derived_cell = see;
         }
         if (!agrees) {

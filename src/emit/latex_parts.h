@@ -171,6 +171,7 @@ private:
     std::string unreconciled(const engine::paper_comparison& p, double width) const;
     std::string shown_as_printed(const engine::paper_comparison& p) const;
     std::string read_as(const engine::paper_comparison& p) const;
+    std::string checked_display(const engine::check_result& t) const;
     std::pair<GiNaC::ex, const written_form*> derived_form(const engine::paper_comparison& p) const;
     // The text width of the report (A4, 2 cm margins: 482 pt) less a list's indent: steps
     // and checks are items of a list.

@@ -21,7 +21,10 @@ std::string report_preamble()
            "\\pdfsuppressptexinfo=-1\n"
            "\\allowdisplaybreaks\n"
            "% The bullet from the math fonts: the default one needs a bitmap font without cm-super.\n"
-           "\\renewcommand{\\labelitemi}{$\\bullet$}\n";
+           "\\renewcommand{\\labelitemi}{$\\bullet$}\n"
+           "% The derivations' comparisons with the paper are rows of the errata table: each\n"
+           "% fragment then says where, instead of listing them a second time.\n"
+           "\\newcommand{\\impacterratatable}{sec:errata}\n";
 }
 
 std::string report_tex(const std::vector<const engine::derivation*>& derivations,
