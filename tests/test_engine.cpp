@@ -531,6 +531,20 @@ BOOST_AUTO_TEST_CASE(an_equation_no_small_edit_mends_is_compared_term_by_term)
     BOOST_TEST_REQUIRE(p.findings.front().corrected.has_value());
 }
 
+BOOST_AUTO_TEST_CASE(bars_that_do_not_belong_are_reported)
+{
+    // Eq. 10 on a small scale: the change of a magnitude, |w| - |z|, claimed equal to the
+    // change of the quantity, w - z, where z = y and w = 2 y, y of either sign.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"w\"\n[[step]]\ndefine = \"z\"\nas = \"y\"\n[[step]]\ndefine = \"w\"\nas = \"2*y\"\n"
+        "[[result]]\nname = \"z\"\n"
+        "[[claim]]\nname = \"bars\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"abs(w) - abs(z) = w - z\"\n"));
+    BOOST_TEST(!d.paper_checks.at(0).agrees());
+    BOOST_TEST_REQUIRE(d.paper_checks.at(0).reconciliations.size() == 1u);
+    BOOST_TEST(d.paper_checks.at(0).reconciliations.front().rfind("it holds without the absolute values around ", 0) == 0u,
+               d.paper_checks.at(0).reconciliations.front());
+}
+
 BOOST_AUTO_TEST_CASE(a_share_said_of_its_complement_is_reported_as_such)
 {
     // Eq. 12 on a small scale: s is defined as y's share, y/(y + x); the text says s is x's

@@ -741,6 +741,36 @@ private:
                 return {finding().say("derived, ").states(left, relation::equal, failed.lhs)};
             return {};
         }
+        // Bars that do not belong: the change of a magnitude, |v'| - |v|, printed where the
+        // change of the quantity itself is meant (Eq. 10's Delta|v_Delta|).
+        if (failed.stated.has(GiNaC::abs(GiNaC::wild(0)))) {
+            struct unbarred : GiNaC::map_function {
+                std::vector<GiNaC::ex> inside;   // what the bars held, in the order met
+                GiNaC::ex operator()(const GiNaC::ex& e) override
+                {
+                    if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
+                        inside.push_back(e.op(0));
+                        return (*this)(e.op(0));
+                    }
+                    return e.map(*this);
+                }
+            } strip;
+            const GiNaC::ex l = strip(failed.stated.lhs()), r = strip(failed.stated.rhs());
+            if (prove_equal(resolve(l), resolve(r), out_.symbols, run_).what == verdict::status::proven) {
+                // In print order: GiNaC's order of a sum's terms follows its hashes.
+                const term_order order = declaration_order(out_.symbols);
+                std::sort(strip.inside.begin(), strip.inside.end(),
+                          [&](const GiNaC::ex& a, const GiNaC::ex& b) { return order.before(a, b); });
+                finding f;
+                f.say("it holds without the absolute values around ");
+                for (std::size_t i = 0; i < strip.inside.size(); ++i) {
+                    if (i > 0)
+                        f.say(i + 1 == strip.inside.size() ? " and " : ", ");
+                    f.math(strip.inside[i]);
+                }
+                return {f};
+            }
+        }
         // An angle (derived as an arccosine, arcsine or arctangent) set equal to its cosine,
         // sine or tangent.
         if (!GiNaC::is_a<GiNaC::symbol>(left) || !GiNaC::is_a<GiNaC::function>(failed.lhs))
