@@ -104,8 +104,8 @@ void billiard_figure(std::map<std::string, std::string>& files)
     out += "\\caption{Billiard collisions for $\\epsilon = 1$, $2/3$ and $1/3$ (left to right), the paper's Fig.~2 "
            "recomputed: the cue ball $m$ (red) arrives from the left, off-centre by one radius, and hits the "
            "object ball $M$ (blue) at rest; equal masses and radii. The paths of both centres are drawn to scale, "
-           "the balls where they start (dotted) and at contact (solid). Simulated as \\texttt{impact simulate} "
-           "does, the collision resolved by the generated kernel \\texttt{impact::collide} (Eq.~9).}\n"
+           "the balls where they start (dotted) and at contact (solid). Simulated with the collision resolved by "
+           "Impact's generated kernel for two spheres (Eq.~9).}\n"
            "\\label{fig:billiard}\n\\end{figure}\n";
     files["figures/billiard.tex"] = out;
 }
@@ -184,7 +184,7 @@ void scatter_figure(std::map<std::string, std::string>& files)
           "% The picture is figures/scatter_angle_plot.tex, compiled to scatter_angle_plot.pdf.\n"
           "\\begin{figure}[htbp]\n\\centering\n\\includegraphics{figures/scatter_angle_plot}\n";
     out += "\\caption{The scatter angle $\\theta$ between the outgoing velocities of a billiard collision (Eq.~14), "
-           "the paper's Fig.~3 recomputed with the generated kernel \\texttt{scatter\\_angle}: against $\\epsilon$ "
+           "the paper's Fig.~3 recomputed with Impact's generated kernel of Eq.~14: against $\\epsilon$ "
            "for several $v_{1,\\perp}$ (left) and against $v_{1,\\perp}$ for several $\\epsilon$ (right), at "
            "$v_{1,\\parallel} = 1$. Every curve lies between $0^\\circ$ and $90^\\circ$; $\\theta \\to 90^\\circ$ "
            "as $\\epsilon \\to 1$ or $v_{1,\\perp} \\to \\infty$, and $\\theta \\to 0$ as $v_{1,\\perp} \\to 0$ "
@@ -268,8 +268,8 @@ void rough_figure(std::map<std::string, std::string>& files)
     out += fmt::format(
         "\\caption{{The effective tangential restitution $\\beta_{{\\mathrm{{eff}}}}$ ($g'_t = -\\beta_{{\\mathrm{{eff}}}} "
         "g_t$) of two equal solid spheres ($q = 2/5$, $\\epsilon = {}$, $\\beta = {}$) against the impact angle "
-        "$\\psi$, for several friction coefficients $\\mu$, computed with the generated kernel "
-        "\\texttt{{impact::collide\\_rough}}. At small angles the contact sticks and $\\beta_{{\\mathrm{{eff}}}} = \\beta$; "
+        "$\\psi$, for several friction coefficients $\\mu$, computed with Impact's generated kernel for rough "
+        "spheres. At small angles the contact sticks and $\\beta_{{\\mathrm{{eff}}}} = \\beta$; "
         "beyond $\\tan\\psi = \\mu (1 + \\epsilon) m_r/((1 + \\beta) m_t)$ it slides, on the branch "
         "$\\beta_{{\\mathrm{{eff}}}} = -1 + \\mu (1 + \\epsilon) (m_r/m_t)/\\tan\\psi$, which meets the constant $\\beta$ "
         "there and falls to $-1$ (smooth spheres) at grazing incidence. With $\\mu = \\infty$ the contact always "
