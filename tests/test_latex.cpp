@@ -280,9 +280,11 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
     // Checks with status; the paper's Eq. 7 found wanting.
     BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- Momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
                              "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));
-    // Eq. 7 as the paper prints it, its parentheses kept: (v_M - v_m) = -eps(v_M - v_m).
-    BOOST_TEST(contains(tex, "Eq.~(7), restitution (equation): printed $(v_{M,\\parallel} - v_{m,\\parallel}) = "
-                             "-\\epsilon (v_{M,\\parallel} - v_{m,\\parallel})$ --- \\textbf{disagrees}"));
+    // Eq. 7 as the paper prints it, in its own symbols, then as read, its parentheses kept:
+    // (v_M - v_m) = -eps(v_M - v_m).
+    BOOST_TEST(contains(tex, "Eq.~(7), restitution (equation): printed $(v_M - v_m) = -\\epsilon(v_M - v_m)$, read as "
+                             "$(v_{M,\\parallel} - v_{m,\\parallel}) = -\\epsilon (v_{M,\\parallel} - v_{m,\\parallel})$ --- "
+                             "\\textbf{disagrees}"));
     BOOST_TEST(contains(tex, "smallest change: on the left, the primes missing."));
 }
 
