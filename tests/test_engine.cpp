@@ -541,8 +541,7 @@ BOOST_AUTO_TEST_CASE(bars_that_do_not_belong_are_reported)
         "[[claim]]\nname = \"bars\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"abs(w) - abs(z) = w - z\"\n"));
     BOOST_TEST(!d.paper_checks.at(0).agrees());
     BOOST_TEST_REQUIRE(d.paper_checks.at(0).reconciliations.size() == 1u);
-    BOOST_TEST(d.paper_checks.at(0).reconciliations.front().rfind("it holds without the absolute values around ", 0) == 0u,
-               d.paper_checks.at(0).reconciliations.front());
+    BOOST_TEST(d.paper_checks.at(0).reconciliations.front() == "it holds without the absolute values around z and w");
 }
 
 BOOST_AUTO_TEST_CASE(a_share_said_of_its_complement_is_reported_as_such)

@@ -411,11 +411,12 @@ std::string fragment_writer::paper() const
     // In the report, whose errata table has a row for each (\impacterratatable, its
     // section's label), a sentence that says where, with the count: each finding printed
     // once. A fragment pasted alone lists them.
-    std::size_t agree = 0, undecided = d_.source.open_claims.size();
-    std::vector<std::string> disagree;
+    std::size_t agree = 0, disagrees = 0, undecided = d_.source.open_claims.size();
+    std::vector<std::string> disagree;   // their places, each once
     for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
         const std::string v = row_verdict(d_, row);
         agree += v == "agrees";
+        disagrees += v == "disagrees";
         undecided += v == "undecided";
         const std::string place = paper_text(d_.paper_checks[row.front()].paper);
         if (v == "disagrees" && std::find(disagree.begin(), disagree.end(), place) == disagree.end())
@@ -425,7 +426,7 @@ std::string fragment_writer::paper() const
     if (agree > 0)
         counts.push_back(fmt::format("{} {}", agree, agree == 1 ? "agrees" : "agree"));
     if (!disagree.empty())
-        counts.push_back(fmt::format("{} {} ({})", disagree.size(), disagree.size() == 1 ? "disagrees" : "disagree",
+        counts.push_back(fmt::format("{} {} ({})", disagrees, disagrees == 1 ? "disagrees" : "disagree",
                                      fmt::join(disagree, "; ")));
     if (undecided > 0)
         counts.push_back(fmt::format("{} undecided", undecided));
@@ -551,22 +552,24 @@ engine::paper_comparison in_the_papers_units(const engine::paper_comparison& p)
     if (p.what != engine::paper_comparison::kind::claim ||
         (words.find("^\\circ") == std::string::npos && words.find("\u00b0") == std::string::npos))
         return p;
-    // q π as the symbol "180 q°": printed, never computed with.
+    // q π as the symbol "180 |q|°", its sign outside: printed, never computed with. Only a
+    // whole side or a whole term of a sum (θ = π/2, θ - π/2), never a π inside a product
+    // (π r² is an area).
     struct to_degrees : GiNaC::map_function {
         GiNaC::ex operator()(const GiNaC::ex& e) override
         {
-            if (!e.has(GiNaC::Pi))
-                return e;
+            if (GiNaC::is_a<GiNaC::relational>(e) || GiNaC::is_a<GiNaC::add>(e))
+                return e.map(*this);   // each side, each term
             const GiNaC::ex q = e / GiNaC::Pi;
-            if (GiNaC::is_a<GiNaC::numeric>(q) && q.info(GiNaC::info_flags::rational)) {
-                const GiNaC::numeric degrees = GiNaC::ex_to<GiNaC::numeric>(q) * 180;
-                const std::string number = degrees.is_integer()
-                                               ? fmt::format("{}", degrees.to_long())
-                                               : fmt::format("\\tfrac{{{}}}{{{}}}", degrees.numer().to_long(),
-                                                             degrees.denom().to_long());
-                return GiNaC::symbol(fmt::format("degrees_{}", number), number + "^\\circ");
-            }
-            return e.map(*this);
+            if (!e.has(GiNaC::Pi) || !GiNaC::is_a<GiNaC::numeric>(q) || !q.info(GiNaC::info_flags::rational))
+                return e;
+            const GiNaC::numeric degrees = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(q)) * 180;
+            const std::string number = degrees.is_integer()
+                                           ? fmt::format("{}", degrees.to_long())
+                                           : fmt::format("\\tfrac{{{}}}{{{}}}", degrees.numer().to_long(),
+                                                         degrees.denom().to_long());
+            const GiNaC::ex angle = GiNaC::symbol(fmt::format("degrees_{}", number), number + "^\\circ");
+            return GiNaC::ex_to<GiNaC::numeric>(q).is_negative() ? -angle : angle;
         }
     } degrees;
     // A claim about an angle (its left side derived as an arccosine, arcsine or arctangent):

@@ -262,7 +262,9 @@ std::string fragment_writer::steps() const
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
         const engine::step_result& s = d_.steps[i];
         const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
-        if (s.what == spec::step::kind::solve && source && s.solutions.size() <= 1 && givens_state(s, *source)) {
+        // Before any numbered step only: "substituted in what follows" is then true of all.
+        if (out.empty() && s.what == spec::step::kind::solve && source && s.solutions.size() <= 1 &&
+            givens_state(s, *source)) {
             std::vector<std::string> equations, unknowns;
             for (const spec::text& e : source->equations)
                 equations.push_back(ref(e.value));
@@ -318,6 +320,10 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
             equations.push_back(ref(e.value));
     for (const auto& value : s.values)
         unknowns.push_back("$" + math(value.first) + "$");
+    // Givens that state their unknowns' values, after other steps: said in words, as a step.
+    if (source && s.solutions.size() <= 1 && givens_state(s, *source))
+        return fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
+                           capitalised(listing(equations)), listing(unknowns), because);
     std::string out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations),
                                   listing(unknowns), because);
     // Each value as a textbook shows it: the result's display form when the unknown is a
@@ -611,7 +617,7 @@ std::string fragment_writer::results() const
         else
             // A result its file gives no display form for: as a textbook shows it, factored
             // or collected.
-            out += rows(continued ? "" : math(r.symbol), r.written.tree() ? r.display : textbook_form(r.display, order_).value,
+            out += rows(continued ? "" : math(r.symbol), !r.written.empty() ? r.display : textbook_form(r.display, order_).value,
                         &r.written, tag, "=", widest) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }

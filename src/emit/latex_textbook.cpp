@@ -191,8 +191,8 @@ textbook_value textbook_form(const GiNaC::ex& e, const term_order& order)
         textbook_value best = root_args;
         // Widths with each root or absolute value as one letter: what is saved is in the
         // sum around them, not in an atom the candidates all print alike.
-        // A rewriting is worth showing when it is 15% narrower, or 20 pt (four letters) on a
-        // short line.
+        // A rewriting is worth showing when it is 15% narrower, or, on a long line (over
+        // 133 pt), when it saves 20 pt (four letters).
         const double as_given = width(rational, order);
         double best_width = std::max(0.85 * as_given, as_given - 20);
         const GiNaC::ex whole = factored(numerator, order) / under;

@@ -700,8 +700,15 @@ private:
             !failed.left_at.empty() || failed.limit || GiNaC::is_a<GiNaC::numeric>(failed.lhs) ||
             GiNaC::is_a<GiNaC::numeric>(failed.rhs))
             return std::nullopt;   // a number and its complement say nothing of shares
-        if (prove_equal(1 - failed.lhs, failed.rhs, out_.symbols, run_).what != verdict::status::proven)
-            return std::nullopt;
+        try {
+            if (prove_equal(1 - failed.lhs, failed.rhs, out_.symbols, run_, when_unproven::give_up).what !=
+                verdict::status::proven)
+                return std::nullopt;
+        } catch (const error&) {
+            throw;
+        } catch (const std::exception&) {
+            return std::nullopt;   // arithmetic it cannot do says nothing of shares
+        }
         return finding().say("it holds with ").math(1 - left).say(" for ").math(left);
     }
 
@@ -756,11 +763,16 @@ private:
                 }
             } strip;
             const GiNaC::ex l = strip(failed.stated.lhs()), r = strip(failed.stated.rhs());
-            if (prove_equal(resolve(l), resolve(r), out_.symbols, run_).what == verdict::status::proven) {
-                // In print order: GiNaC's order of a sum's terms follows its hashes.
+            if (prove_equal(resolve(l), resolve(r), out_.symbols, run_, when_unproven::give_up).what ==
+                verdict::status::proven) {
+                // In the order of the derivation's symbols (GiNaC's order of a sum's terms
+                // follows its hashes), each once.
                 const term_order order = declaration_order(out_.symbols);
                 std::sort(strip.inside.begin(), strip.inside.end(),
                           [&](const GiNaC::ex& a, const GiNaC::ex& b) { return order.before(a, b); });
+                strip.inside.erase(std::unique(strip.inside.begin(), strip.inside.end(),
+                                               [](const GiNaC::ex& a, const GiNaC::ex& b) { return a.is_equal(b); }),
+                                   strip.inside.end());
                 finding f;
                 f.say("it holds without the absolute values around ");
                 for (std::size_t i = 0; i < strip.inside.size(); ++i) {
@@ -798,12 +810,12 @@ private:
     // An equation that holds only where a factor of the difference of its sides vanishes:
     // the changes of velocity of Sec. II A are equal and opposite only for M = m (and
     // where nothing collides, v_M = v_m). Each factor the domains do not prove non-zero
-    // must be a symbol or a difference of two (times numbers), said as an equation in
-    // them; one that is not leaves nothing to say, since "only where" would be untrue.
+    // must be linear in at most two symbols with numbers for coefficients (M - m, M + m,
+    // M - 2), said as an equation in the first declared; one that is not leaves nothing to
+    // say, since "only where" would be untrue.
     std::vector<finding> where_it_holds(const spec::check& original, const check_result& failed)
     {
-        const GiNaC::exmap abbreviations = out_.symbols.abbreviations();
-        const GiNaC::ex difference = GiNaC::normal((failed.lhs - failed.rhs).subs(abbreviations).subs(abbreviations));
+        const GiNaC::ex difference = GiNaC::normal(out_.symbols.in_inputs(failed.lhs - failed.rhs));
         if (difference.is_zero() || has_radical(difference) || !difference.info(GiNaC::info_flags::rational_function))
             return {};
         const GiNaC::ex numerator = factor_polynomial(GiNaC::numer(difference), run_);
@@ -842,8 +854,10 @@ private:
         }
         if (places.empty())
             return {};
-        std::stable_sort(places.begin(), places.end(),
-                  [](const auto& x, const auto& y) { return x.first < y.first; });
+        const term_order order = declaration_order(out_.symbols);
+        std::sort(places.begin(), places.end(), [&](const auto& x, const auto& y) {
+            return x.first != y.first ? x.first < y.first : order.before(x.second.rhs(), y.second.rhs());
+        });
         finding said;
         said.say("it holds only where ");
         for (std::size_t i = 0; i < places.size(); ++i) {

@@ -446,19 +446,22 @@ static std::vector<GiNaC::ex> terms_of(const GiNaC::ex& side)
 // An equation no edit, or two, reconciles, compared term by term with the one it stands for:
 // each side's printed terms that the derived side lacks, and the terms it lacks in their
 // place (planar "Eq. 2": m'_{m,y} where m v'_{m,y} belongs; a whole y-component printed
-// where the x-component belongs). The sides are matched the way that leaves fewer terms
-// apart; nothing is said when no term is shared and the sides are of one term each, which
-// would only restate the two forms.
-static std::vector<finding> terms_apart(const GiNaC::ex& printed, const GiNaC::ex& derived)
+// where the x-component belongs). Terms are matched by value, the derived quantities they
+// name put in (a term written through m_eff is the term it stands for). The sides are
+// matched the way that leaves fewer terms apart; nothing is said when each printed side is
+// one term, which would only restate the two forms.
+static std::vector<finding> terms_apart(const GiNaC::ex& printed, const GiNaC::ex& derived, const resolver& resolve)
 {
     struct side_apart {
         std::vector<GiNaC::ex> printed_only, derived_only;
     };
-    const auto apart = [](const GiNaC::ex& p, const GiNaC::ex& d) {
+    const auto apart = [&](const GiNaC::ex& p, const GiNaC::ex& d) {
         side_apart out;
         std::vector<GiNaC::ex> left = terms_of(d);
         for (const GiNaC::ex& t : terms_of(p)) {
-            const auto same = std::find_if(left.begin(), left.end(), [&](const GiNaC::ex& u) { return u.is_equal(t); });
+            const auto same = std::find_if(left.begin(), left.end(), [&](const GiNaC::ex& u) {
+                return u.is_equal(t) || GiNaC::normal(resolve(u) - resolve(t)).is_zero();
+            });
             if (same == left.end())
                 out.printed_only.push_back(t);
             else
@@ -472,7 +475,8 @@ static std::vector<finding> terms_apart(const GiNaC::ex& printed, const GiNaC::e
     };
     side_apart left = apart(printed.lhs(), derived.lhs()), right = apart(printed.rhs(), derived.rhs());
     const side_apart crossed_left = apart(printed.lhs(), derived.rhs()), crossed_right = apart(printed.rhs(), derived.lhs());
-    if (count(crossed_left, crossed_right) < count(left, right)) {
+    const bool crossed = count(crossed_left, crossed_right) < count(left, right);
+    if (crossed) {
         left = crossed_left;
         right = crossed_right;
     }
@@ -500,7 +504,8 @@ static std::vector<finding> terms_apart(const GiNaC::ex& printed, const GiNaC::e
         else
             f.math(sum(a->printed_only)).say(" where ").math(sum(a->derived_only)).say(" belongs");
     }
-    f.corrected = derived;
+    // The printed equation mended: the derived one, its sides the way the printed one has them.
+    f.corrected = crossed ? (derived.rhs() == derived.lhs()) : derived;
     return {f};
 }
 
@@ -513,7 +518,7 @@ std::vector<finding> reconcile_equation(const GiNaC::ex& printed, const GiNaC::e
     try {
         if (auto found = reconcile_equation_search(printed, derived, symbols, resolve, run); !found.empty())
             return found;
-        return terms_apart(printed, derived);
+        return terms_apart(printed, derived, resolve);
     } catch (const error&) {
         throw;
     } catch (const std::exception&) {
