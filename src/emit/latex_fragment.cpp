@@ -262,17 +262,11 @@ std::string fragment_writer::steps() const
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
         const engine::step_result& s = d_.steps[i];
         const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
+        const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
         // Before any numbered step only: "substituted in what follows" is then true of all.
         if (out.empty() && s.what == spec::step::kind::solve && source && s.solutions.size() <= 1 &&
             givens_state(s, *source)) {
-            std::vector<std::string> equations, unknowns;
-            for (const spec::text& e : source->equations)
-                equations.push_back(ref(e.value));
-            for (const auto& value : s.values)
-                unknowns.push_back("$" + math(value.first) + "$");
-            before += fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
-                                  capitalised(listing(equations)), listing(unknowns),
-                                  s.because.empty() ? "" : " (" + latex_prose(s.because) + ")");
+            before += solve_step(s, source, because);   // its words, unnumbered
             continue;
         }
         // A copy of a quantity under another name (τ again, to compare with another printed
@@ -280,7 +274,6 @@ std::string fragment_writer::steps() const
         if (s.what == spec::step::kind::define && s.values.size() == 1 && s.as_written &&
             math(*s.as_written) == math(s.values[0].first))
             continue;
-        const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
         out += "\\item ";
         switch (s.what) {
         case spec::step::kind::solve: out += solve_step(s, source, because); break;
@@ -320,7 +313,8 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
             equations.push_back(ref(e.value));
     for (const auto& value : s.values)
         unknowns.push_back("$" + math(value.first) + "$");
-    // Givens that state their unknowns' values, after other steps: said in words, as a step.
+    // Givens that state their unknowns' values: said in words (before the numbered steps,
+    // or as a step after others).
     if (source && s.solutions.size() <= 1 && givens_state(s, *source))
         return fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
                            capitalised(listing(equations)), listing(unknowns), because);
