@@ -148,6 +148,22 @@ BOOST_AUTO_TEST_CASE(a_quote_of_the_paper_without_the_form_it_reads)
                    "'printed' too");
 }
 
+BOOST_AUTO_TEST_CASE(a_limit_said_not_to_hold)
+{
+    // `holds = false` is refuted at a point; no point refutes a limit.
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"
+                            "[[claim]]\nname = \"c\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 0\"\n"
+                            "limit = \"x -> 0\"\nholds = false\n",
+                   "derivations/bad.toml:25:9: error: claim 'c': 'holds = false' does not apply beside 'limit' (a "
+                   "limit is refuted by no single point)");
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"
+                            "[[claim]]\nname = \"c\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 0\"\n"
+                            "holds = \"no\"\n",
+                   "derivations/bad.toml:24:9: error: 'holds' in [[claim]] must be true or false");
+}
+
 BOOST_AUTO_TEST_CASE(an_undeclared_symbol)
 {
     expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*w\"\nbecause = \"b\"\n"

@@ -5,6 +5,8 @@
 #include <algorithm>
 
 #include "derivation_support.h"
+#include "emit/errata.h"
+#include "emit/latex.h"
 #include "engine/derive.h"
 #include "engine/forked.h"
 #include "engine/polynomial.h"
@@ -13,6 +15,7 @@
 #include "engine/library.h"
 #include "engine/normal_form.h"
 
+#include <map>
 #include <string>
 
 #include <sys/wait.h>
@@ -435,6 +438,91 @@ BOOST_AUTO_TEST_CASE(an_equation_that_holds_only_in_a_special_case_says_where)
     BOOST_TEST(said(0).rfind("it holds only where a = b or u = 0: the difference of its sides is ", 0) == 0, said(0));
     BOOST_TEST(said(1).rfind("it holds only where a = 3*b/2: ", 0) == 0, said(1));
     BOOST_TEST(said(2).find("only where") == std::string::npos, said(2));
+}
+
+BOOST_AUTO_TEST_CASE(a_claim_that_holds_only_where_a_product_vanishes_says_where_collected)
+{
+    // A change of velocity along a line of centres (r_x, r_y) said to lie along the velocity
+    // (v_x, v_y) itself: its cross product with the velocity, k (r_x v_y - r_y v_x)
+    // (r_x (v_x - w_x) + r_y (v_y - w_y)), vanishes only where one of the two factors does.
+    // An irreducible factor of degree 2 in a symbol is not said (x^2 + x - 1 = 0 above).
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"k\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"r_x\"\n[[symbol]]\nname = \"r_y\"\n[[symbol]]\nname = \"v_x\"\n"
+        "[[symbol]]\nname = \"v_y\"\n[[symbol]]\nname = \"w_x\"\n[[symbol]]\nname = \"w_y\"\n"
+        "[[symbol]]\nname = \"c\"\n[[symbol]]\nname = \"q\"\n"
+        "[[step]]\ndefine = \"c\"\nas = \"k*(r_x*v_y - r_y*v_x)*(r_x*(v_x - w_x) + r_y*(v_y - w_y))\"\n"
+        "[[step]]\ndefine = \"q\"\nas = \"(r_x*v_y - r_y*v_x)*(r_x^2 + r_y)\"\n"
+        "[[result]]\nname = \"c\"\n[[result]]\nname = \"q\"\n"
+        "[[claim]]\nname = \"along\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"c = 0\"\n"
+        "[[claim]]\nname = \"squared\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"q = 0\"\n"));
+    const auto said = [&](std::size_t k) {
+        const auto& r = d.paper_checks.at(k).reconciliations;
+        return r.empty() ? std::string() : r.front();
+    };
+    BOOST_TEST(!d.paper_checks.at(0).agrees());
+    BOOST_TEST(said(0).rfind("it holds only where r_x*(v_x-w_x)+r_y*(v_y-w_y) = 0 or r_x*v_y = r_y*v_x: ", 0) == 0,
+               said(0));
+    BOOST_TEST(said(1).find("only where") == std::string::npos, said(1));
+}
+
+BOOST_AUTO_TEST_CASE(a_claim_said_not_to_hold_agrees_when_refuted_at_a_point_and_disagrees_when_proven)
+{
+    // A fictional text's "it is not true that ..." claims, on z = (a - b) u / (a + b):
+    // z = 0 fails wherever a != b and u != 0 (refuted, exactly); z (a + b) = (a - b) u is an
+    // identity (proven: the text is wrong); sqrt(a^2 + b^2) = a + b fails at any positive
+    // point (refuted with radicals); z >= 0 fails for a < b, u > 0.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"a\"\ndomain = \"positive\"\n[[symbol]]\nname = \"b\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"u\"\n"
+        "[[step]]\ndefine = \"z\"\nas = \"(a - b)*u/(a + b)\"\n[[result]]\nname = \"z\"\n"
+        "[[claim]]\nname = \"never_zero\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z = 0\"\nholds = false\n"
+        "[[claim]]\nname = \"identity\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z*(a + b) = (a - b)*u\"\n"
+        "holds = false\n"
+        "[[claim]]\nname = \"hypotenuse\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"sqrt(a^2 + b^2) = a + b\"\n"
+        "holds = false\n"
+        "[[claim]]\nname = \"not_signed\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z >= 0\"\n"
+        "assuming = { u = \"positive\" }\nholds = false\n"));
+    const auto& never_zero = d.paper_checks.at(0);
+    BOOST_TEST(never_zero.agrees());
+    BOOST_REQUIRE(never_zero.test && never_zero.test->fails_at);
+    BOOST_TEST(never_zero.test->said_false);
+    BOOST_TEST(never_zero.test->fails_at->exact);
+    // The point is a counterexample by the closed form typed here.
+    std::map<std::string, GiNaC::numeric> at;
+    for (const auto& [symbol, value] : never_zero.test->fails_at->point)
+        at[GiNaC::ex_to<GiNaC::symbol>(symbol).get_name()] = GiNaC::ex_to<GiNaC::numeric>(value);
+    BOOST_REQUIRE(at.size() == 3u);
+    const GiNaC::numeric z = (at["a"] - at["b"]) * at["u"] / (at["a"] + at["b"]);
+    BOOST_TEST(!z.is_zero());
+    BOOST_TEST(at["a"].is_positive());
+    BOOST_TEST(at["b"].is_positive());
+    BOOST_TEST((never_zero.test->fails_at->lhs - z).is_zero());
+    BOOST_TEST(never_zero.test->fails_at->rhs.is_zero());
+
+    const auto& identity = d.paper_checks.at(1);
+    BOOST_TEST(!identity.agrees());
+    BOOST_TEST(emit::comparison_verdict(identity) == "disagrees");
+    BOOST_TEST(identity.reconciliations ==
+                   std::vector<std::string>{"it holds, where the paper says it does not: the difference of its sides "
+                                            "simplifies to 0"},
+               boost::test_tools::per_element());
+
+    const auto& hypotenuse = d.paper_checks.at(2);
+    BOOST_TEST(hypotenuse.agrees());
+    BOOST_REQUIRE(hypotenuse.test->fails_at);
+    BOOST_TEST(!hypotenuse.test->fails_at->exact);
+
+    const auto& not_signed = d.paper_checks.at(3);
+    BOOST_TEST(not_signed.agrees());
+    BOOST_REQUIRE(not_signed.test->fails_at);
+    for (const auto& [symbol, value] : not_signed.test->fails_at->point)
+        if (GiNaC::ex_to<GiNaC::symbol>(symbol).get_name() == "u")
+            BOOST_TEST(GiNaC::ex_to<GiNaC::numeric>(value).is_positive());
+    BOOST_TEST(GiNaC::ex_to<GiNaC::numeric>(not_signed.test->fails_at->lhs).is_negative());
+    // The errata says what was refuted, and where.
+    const std::string checked = emit::checked_claim_latex(*never_zero.test, engine::declaration_order(d.symbols));
+    BOOST_TEST(checked.find("which the paper says does not hold; at $a = ") != std::string::npos, checked);
 }
 
 BOOST_AUTO_TEST_CASE(an_angle_printed_for_its_cosine_is_reported_as_such)

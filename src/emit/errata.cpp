@@ -86,6 +86,11 @@ std::string one_finding(const std::vector<std::string>& each)
             return two ? "as checked, neither holds" : "as checked, none holds";
         if (each.front().rfind("proven", 0) == 0)
             return (two ? "both " : "all ") + each.front();
+        // Said of a claim the paper says does not hold, when each of its checks holds.
+        static const std::string holds = "it holds, where the paper says it does not";
+        if (each.front().rfind(holds, 0) == 0)
+            return (two ? "both hold" : "all hold") + std::string(", where the paper says they do not") +
+                   each.front().substr(holds.size());
         return each.front();
     }
     // The same finding of each, of different values ("the reverse holds: 2/3 < 1", "the

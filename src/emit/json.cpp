@@ -125,6 +125,16 @@ json derivation_json(const engine::derivation& d)
             pj["method"] = p.agreement.method;
             pj["smallest_change"] = p.reconciliations;
         }
+        if (p.test && p.test->said_false) {
+            // The paper says the claim does not hold: it agrees when refuted at a point.
+            pj["said_not_to_hold"] = true;
+            if (p.test->fails_at) {
+                for (const auto& [symbol, value] : p.test->fails_at->point)
+                    pj["fails_at"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
+                pj["sides_there"] = {ginac_syntax(p.test->fails_at->lhs, order),
+                                     ginac_syntax(p.test->fails_at->rhs, order)};
+            }
+        }
         j["paper_checks"].push_back(pj);
     }
     // Claims no derivation can settle: compared, and undecided with the reason.

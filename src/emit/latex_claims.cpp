@@ -635,7 +635,20 @@ std::string checked_claim_latex(const engine::check_result& c, const term_order&
         left.push_back(fmt::format("${} \\to {}$", latex(symbol, order), latex(value, order)));
     if (!left.empty())
         conditions.push_back("the left side taken at " + detail::listing(left));
-    return conditions.empty() ? out : out + ", " + detail::listing(conditions);
+    if (!conditions.empty())
+        out += ", " + detail::listing(conditions);
+    if (!c.said_false)
+        return out;
+    out += ", which the paper says does not hold";
+    if (c.fails_at) {
+        // The counterexample: the point, and the sides there.
+        std::vector<std::string> point;
+        for (const auto& [symbol, value] : c.fails_at->point)
+            point.push_back(fmt::format("${} = {}$", latex(symbol, order), latex(value, order)));
+        out += fmt::format("; at {} the left side is ${}$ and the right ${}$", detail::listing(point),
+                           latex(c.fails_at->lhs, order), latex(c.fails_at->rhs, order));
+    }
+    return out;
 }
 
 } // namespace impact::emit

@@ -122,6 +122,7 @@ std::string proven_by(const engine::verdict& v)
     case basis::same_difference: return "the two equations have the same difference of sides";
     case basis::angles:
         return "both angles lie in $[0, \\pi]$, where $\\cos$ is one-to-one, and their cosines are proven equal";
+    case basis::counterexample: return "refuted at a point of the domains";
     case basis::none: break;
     }
     return "";
@@ -142,7 +143,11 @@ std::string limit_by(const engine::limit_method& how)
 std::string agreement_text(const engine::paper_comparison& p)
 {
     const std::string verdict = comparison_verdict(p);
+    const bool said_false = p.what == engine::paper_comparison::kind::claim && p.test && p.test->said_false;
     if (verdict == "undecided") {
+        if (said_false && p.agreement.samples == 0)
+            return "neither proven nor refuted: no proof that it holds, and no point of the domains found where it "
+                   "fails";
         if (p.agreement.what == engine::verdict::status::sampled)
             return fmt::format("neither proven nor refuted: no proof was found, and it holds at each of {} sampled "
                                "points of the declared domains (40 digits)",
@@ -151,6 +156,11 @@ std::string agreement_text(const engine::paper_comparison& p)
     }
     if (verdict != "agrees")
         return "";
+    if (said_false && p.test->fails_at)
+        return p.test->fails_at->exact
+                   ? "refuted, as the paper says: it fails at the point shown, its sides evaluated exactly"
+                   : "refuted, as the paper says: it fails at the point shown, its sides evaluated to 50 and 80 "
+                     "digits and far apart";
     using kind = engine::paper_comparison::kind;
     const std::string head = p.what == kind::claim ? "proven" : p.what == kind::given ? "proven equivalent"
                                                                                      : "proven equal";

@@ -674,6 +674,11 @@ private:
         p.printed = c.stated;
         p.derived = c.value ? *c.value : c.lhs;
         p.agreement = c.outcome;
+        if (!claim.holds) {
+            said_not_to_hold(p, claim.test, c);
+            p.test = std::move(c);
+            return p;
+        }
         if (!p.agrees() && c.value && (claim.test.limit || !claim.test.at.empty()))
             p.findings = other_regimes(claim.test, c);
         else if (!p.agrees() && c.op == relation::equal) {
@@ -688,6 +693,46 @@ private:
         p.reconciliations = plain_texts(p.findings, out_.symbols);
         p.test = std::move(c);
         return p;
+    }
+
+    // A claim the paper says does not hold (`holds = false`, Footnote 11's "the contrapositive
+    // does not hold"): it agrees when a point of the domains is found where it fails, decided
+    // exactly (a counterexample), disagrees when it is proven, and is undecided otherwise.
+    void said_not_to_hold(paper_comparison& p, const spec::check& spec_check, check_result& c)
+    {
+        c.said_false = true;
+        p.findings.clear();
+        switch (c.outcome.what) {
+        case verdict::status::proven:
+            p.agreement = verdict{};
+            p.agreement.residual = c.outcome.residual;
+            p.agreement.method = "it holds, where the paper says it does not: " + c.outcome.method;
+            p.findings = {c.outcome.how == verdict::basis::zero_difference
+                              ? finding().say("it holds, where the paper says it does not: the difference of its "
+                                              "sides simplifies to ").math(GiNaC::ex(0))
+                          : c.outcome.how == verdict::basis::signs && !GiNaC::is_a<GiNaC::numeric>(c.outcome.residual)
+                              ? finding().say("it holds, where the paper says it does not: the sign of each factor "
+                                              "of ").math(c.outcome.residual).say(" follows from the domains")
+                              : finding().say("it holds, where the paper says it does not")};
+            break;
+        case verdict::status::sampled: break;   // undecided, as sampled
+        case verdict::status::failed:
+            if (c.parts.empty())
+                c.fails_at = find_counterexample(c.lhs, c.op, c.rhs, out_.symbols, assumptions_of(spec_check));
+            p.agreement = verdict{};
+            p.agreement.residual = c.outcome.residual;
+            if (c.fails_at) {
+                p.agreement.what = verdict::status::proven;
+                p.agreement.how = verdict::basis::counterexample;
+                p.agreement.method = "refuted at a point of the domains";
+            } else {
+                // Not refuted at a point: undecided, with nothing sampled that held.
+                p.agreement.what = verdict::status::sampled;
+                p.agreement.method = "no point of the domains was found where it fails";
+            }
+            break;
+        }
+        p.reconciliations = plain_texts(p.findings, out_.symbols);
     }
 
     // A share said of its complement: the text calls tau the transferred share, where Eq. 12
@@ -829,6 +874,7 @@ private:
         // Each place with the declaration rank of its left side, to be said in that order
         // (GiNaC's order of factors follows its hashes, which a build may change).
         std::vector<std::pair<std::size_t, GiNaC::ex>> places;
+        std::size_t other = 0;   // places that are not a symbol solved for
         const auto rank = [&](const GiNaC::ex& symbol) {
             const auto& all = out_.symbols.all();
             return static_cast<std::size_t>(std::find_if(all.begin(), all.end(), [&](const quantity& q) {
@@ -842,17 +888,31 @@ private:
             for (const quantity& q : out_.symbols.all())
                 if (f.has(q.symbol))
                     in.push_back(q.symbol);
-            if (in.empty() || in.size() > 2 || f.degree(in.front()) != 1 || (in.size() == 2 && f.degree(in.back()) != 1))
+            if (in.empty())
                 return {};
+            // Linear in one or two symbols, with numbers for coefficients: the first symbol
+            // solved for (M = m, v_M = v_m).
             const GiNaC::ex a = f.coeff(in.front(), 1);
-            if (!GiNaC::is_a<GiNaC::numeric>(a) || (in.size() == 2 && !GiNaC::is_a<GiNaC::numeric>(f.coeff(in.back(), 1))))
+            const bool linear = in.size() <= 2 && f.degree(in.front()) == 1 && GiNaC::is_a<GiNaC::numeric>(a) &&
+                                (in.size() == 1 || (f.degree(in.back()) == 1 &&
+                                                    GiNaC::is_a<GiNaC::numeric>(f.coeff(in.back(), 1))));
+            const GiNaC::ex rest = linear ? GiNaC::expand(f - a * in.front()) : GiNaC::ex(0);
+            if (linear && (in.size() == 1 || (rest - rest.coeff(in.back(), 1) * in.back()).is_zero())) {
+                places.emplace_back(rank(in.front()), in.front() == GiNaC::normal(-rest / a));
+                continue;
+            }
+            // Any other factor, when short and of degree 1 in each of its symbols: two terms
+            // set equal (r_x v_My = r_y v_Mx, the first with its sign), else the factor,
+            // collected, set to 0.
+            const GiNaC::ex e = GiNaC::expand(f);
+            if (!GiNaC::is_a<GiNaC::add>(e) || e.nops() > 6 ||
+                std::any_of(in.begin(), in.end(), [&](const GiNaC::ex& x) { return e.degree(x) != 1; }))
                 return {};
-            const GiNaC::ex rest = GiNaC::expand(f - a * in.front());
-            if (!(rest - rest.coeff(in.back(), 1) * in.back()).is_zero() && in.size() == 2)
-                return {};
-            places.emplace_back(rank(in.front()), in.front() == GiNaC::normal(-rest / a));
+            places.emplace_back(rank(in.front()), vanishes(e));
+            ++other;
         }
-        if (places.empty())
+        // One such factor alone restates the claim: nothing to say.
+        if (places.empty() || (places.size() == 1 && other == 1))
             return {};
         const term_order order = declaration_order(out_.symbols);
         std::sort(places.begin(), places.end(), [&](const auto& x, const auto& y) {
@@ -865,7 +925,72 @@ private:
                 said.say(i + 1 == places.size() ? " or " : ", ");
             said.math(places[i].second);
         }
-        return {said.say(": the difference of its sides is ").math(numerator / GiNaC::denom(difference))};
+        GiNaC::ex shown = 1;
+        for (const GiNaC::ex& f : GiNaC::is_a<GiNaC::mul>(numerator) ? std::vector<GiNaC::ex>(numerator.begin(), numerator.end())
+                                                                      : std::vector<GiNaC::ex>{numerator})
+            shown *= GiNaC::is_a<GiNaC::power>(f) ? GiNaC::pow(collected(f.op(0)), f.op(1)) : collected(f);
+        // The difference itself when it is short enough to read in a line of text.
+        const GiNaC::ex whole = shown / GiNaC::denom(difference);
+        std::size_t occurrences = 0;
+        for (GiNaC::const_preorder_iterator it = whole.preorder_begin(); it != whole.preorder_end(); ++it)
+            occurrences += GiNaC::is_a<GiNaC::symbol>(*it) ? 1 : 0;
+        if (occurrences > 12)
+            return {said};
+        return {said.say(": the difference of its sides is ").math(whole)};
+    }
+
+    // `sum = 0` as said: its first term (by the declaration ranks of its symbols) with a
+    // positive sign; two terms set equal (r_x v_My = r_y v_Mx), more collected.
+    GiNaC::ex vanishes(const GiNaC::ex& sum) const
+    {
+        const auto& all = out_.symbols.all();
+        GiNaC::exmap ones;
+        const auto key = [&](const GiNaC::ex& term) {
+            std::vector<std::size_t> ranks;
+            for (std::size_t i = 0; i < all.size(); ++i)
+                if (term.has(all[i].symbol))
+                    ranks.push_back(i);
+            return ranks;
+        };
+        for (const quantity& q : all)
+            ones[q.symbol] = 1;
+        std::vector<GiNaC::ex> terms(sum.begin(), sum.end());
+        std::stable_sort(terms.begin(), terms.end(),
+                         [&](const GiNaC::ex& a, const GiNaC::ex& b) { return key(a) < key(b); });
+        const GiNaC::ex lead = terms.front().subs(ones, GiNaC::subs_options::no_pattern);
+        const bool negative = GiNaC::is_a<GiNaC::numeric>(lead) && GiNaC::ex_to<GiNaC::numeric>(lead).is_negative();
+        const GiNaC::ex e = negative ? GiNaC::expand(-sum) : sum;
+        if (terms.size() == 2) {
+            const GiNaC::ex first = negative ? -terms.front() : terms.front();
+            return first == first - e;
+        }
+        return collected(e) == 0;
+    }
+
+    // A sum collected by the declared symbols, taken in declaration order, that each stand
+    // to the first power in two or more of its terms not yet covered, when together they
+    // cover every term: r_x (v_Mx - v_mx) + r_y (v_My - v_my). The sum as it was otherwise.
+    GiNaC::ex collected(const GiNaC::ex& sum) const
+    {
+        const GiNaC::ex e = GiNaC::expand(sum);
+        if (!GiNaC::is_a<GiNaC::add>(e) || e.nops() < 3)
+            return sum;
+        std::vector<bool> covered(e.nops(), false);
+        GiNaC::lst by;
+        for (const quantity& q : out_.symbols.all()) {
+            std::vector<std::size_t> terms;
+            for (std::size_t i = 0; i < e.nops(); ++i)
+                if (!covered[i] && e.op(i).has(q.symbol) && e.op(i).degree(q.symbol) == 1)
+                    terms.push_back(i);
+            if (terms.size() < 2)
+                continue;
+            by.append(q.symbol);
+            for (const std::size_t i : terms)
+                covered[i] = true;
+        }
+        if (std::find(covered.begin(), covered.end(), false) != covered.end())
+            return sum;
+        return GiNaC::collect(e, by);
     }
 
     std::vector<finding> other_regimes(const spec::check& original, const check_result& failed)

@@ -89,6 +89,10 @@ struct check_result {
     std::vector<part> parts;
     std::string cases_of;     ///< the quantity whose cases split the check, if any
     bool continuity = false;  ///< a continuity check (`continuity = "J_t"`) of `cases_of`
+    /// A claim the paper says does not hold (`holds = false`): its comparison agrees when
+    /// `fails_at` refutes it, and disagrees when it is proven.
+    bool said_false = false;
+    std::optional<counterexample> fails_at;   ///< a point where it fails, for a claim said not to hold
 };
 
 /// One solution of a `solve` step whose equations are not linear: kept, or rejected by

@@ -7,6 +7,7 @@
 #include <cln/real.h>
 #include <cln/rational.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -306,6 +307,122 @@ bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t 
 bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t points)
 {
     return believed_signs(e, given, points, true) != 0;
+}
+
+namespace {
+
+// The simple values of a domain a reader can check by hand, in the order they are tried:
+// its ends and middle for an interval, else 1, 2, 1/2, 3 (and 0, -1, -2 where they lie in it).
+std::vector<GiNaC::numeric> simple_values(const domain& range)
+{
+    std::vector<GiNaC::numeric> candidates;
+    if (range.what == domain::kind::interval) {
+        const GiNaC::numeric a(cln::rationalize(cln::cl_DF(range.lower)));
+        const GiNaC::numeric b(cln::rationalize(cln::cl_DF(range.upper)));
+        candidates = {b, a, (a + b) / 2, (3 * a + b) / 4, (a + 3 * b) / 4};
+    } else {
+        candidates = {1, 2, GiNaC::numeric(1, 2), 0, -1, 3, -2};
+    }
+    std::vector<GiNaC::numeric> inside;
+    for (const GiNaC::numeric& x : candidates)
+        if (range.contains(x.to_double()) && std::find(inside.begin(), inside.end(), x) == inside.end())
+            inside.push_back(x);
+    return inside;
+}
+
+// Whether `a op b` fails for the two numbers, by more than `margin` (0: exactly).
+bool fails(const GiNaC::numeric& a, relation op, const GiNaC::numeric& b, const GiNaC::numeric& margin)
+{
+    const bool exactly = margin.is_zero();
+    switch (op) {
+    case relation::equal: return GiNaC::abs(a - b) > margin;
+    case relation::less_equal: return a - b > margin;
+    case relation::less: return exactly ? a >= b : a - b > margin;
+    case relation::greater_equal: return b - a > margin;
+    case relation::greater: return exactly ? a <= b : b - a > margin;
+    }
+    return false;
+}
+
+} // namespace
+
+std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                                  const symbol_table& symbols, const assumptions& given,
+                                                  std::size_t points)
+{
+    const GiNaC::exmap abbreviations = symbols.abbreviations();
+    const GiNaC::ex a = spelled_out(lhs, abbreviations), b = spelled_out(rhs, abbreviations);
+    std::vector<std::pair<GiNaC::ex, std::vector<GiNaC::numeric>>> free;
+    const GiNaC::ex both = a - b;
+    for (GiNaC::const_preorder_iterator it = both.preorder_begin(); it != both.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+            std::none_of(free.begin(), free.end(), [&](const auto& f) { return f.first.is_equal(*it); })) {
+            const auto d = given.domains.find(*it);
+            if (d == given.domains.end())
+                return std::nullopt;
+            std::vector<GiNaC::numeric> values = simple_values(d->second);
+            if (values.empty())
+                return std::nullopt;
+            free.emplace_back(*it, std::move(values));
+        }
+    std::sort(free.begin(), free.end(), [&](const auto& x, const auto& y) { return given.order.before(x.first, y.first); });
+
+    const auto saved_digits = GiNaC::Digits;
+    uniform_stream stream(0x6c0e7e1a5b3d2f19ULL);
+    std::optional<counterexample> found;
+    for (std::size_t n = 0; n < points && !found; ++n) {
+        GiNaC::exmap at;
+        counterexample x;
+        for (const auto& [symbol, values] : free) {
+            const std::size_t k =
+                n == 0 ? 0 : std::min(values.size() - 1, static_cast<std::size_t>(stream.next() * values.size()));
+            at[symbol] = values[k];
+            x.point.emplace_back(symbol, values[k]);
+        }
+        try {
+            const GiNaC::ex l = GiNaC::normal(a.subs(at, GiNaC::subs_options::no_pattern));
+            const GiNaC::ex r = GiNaC::normal(b.subs(at, GiNaC::subs_options::no_pattern));
+            if (GiNaC::is_a<GiNaC::numeric>(l) && GiNaC::is_a<GiNaC::numeric>(r) &&
+                GiNaC::ex_to<GiNaC::numeric>(l).is_rational() && GiNaC::ex_to<GiNaC::numeric>(r).is_rational()) {
+                if (fails(GiNaC::ex_to<GiNaC::numeric>(l), op, GiNaC::ex_to<GiNaC::numeric>(r), 0)) {
+                    x.lhs = l;
+                    x.rhs = r;
+                    x.exact = true;
+                    found = std::move(x);
+                }
+                continue;
+            }
+            // Radicals: believed when 50 and 80 digits agree and the failure is far beyond
+            // their rounding.
+            bool believed = true;
+            for (const int digits : {50, 80}) {
+                GiNaC::Digits = digits;
+                const GiNaC::ex le = GiNaC::evalf(l), re = GiNaC::evalf(r);
+                if (!GiNaC::is_a<GiNaC::numeric>(le) || !GiNaC::is_a<GiNaC::numeric>(re) ||
+                    !GiNaC::ex_to<GiNaC::numeric>(le).is_real() || !GiNaC::ex_to<GiNaC::numeric>(re).is_real()) {
+                    believed = false;
+                    break;
+                }
+                const GiNaC::numeric u = GiNaC::ex_to<GiNaC::numeric>(le), v = GiNaC::ex_to<GiNaC::numeric>(re);
+                const GiNaC::numeric margin = GiNaC::numeric(1, 1000000000) * (1 + GiNaC::abs(u) + GiNaC::abs(v));
+                believed = believed && fails(u, op, v, margin);
+                if (digits == 50) {
+                    x.lhs = u;
+                    x.rhs = v;
+                }
+            }
+            GiNaC::Digits = saved_digits;
+            if (believed) {
+                x.lhs = l;
+                x.rhs = r;
+                found = std::move(x);
+            }
+        } catch (const std::exception&) {
+            GiNaC::Digits = saved_digits;   // a pole: another point
+        }
+    }
+    GiNaC::Digits = saved_digits;
+    return found;
 }
 
 std::string to_string(const verdict& v)

@@ -16,6 +16,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace impact::engine {
 
@@ -32,6 +34,7 @@ struct verdict {
         constant_factor,  ///< two equations whose differences of sides differ by a constant factor
         same_difference,  ///< two equations with the same difference of sides
         angles,           ///< two angles in [0, pi] whose cosines are proven equal
+        counterexample,   ///< a claim said not to hold, refuted at a point of the domains
     };
     basis how = basis::none;
     std::size_t samples = 0;     ///< points tested when not proven symbolically
@@ -73,6 +76,23 @@ bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t 
 /// "e = 0" (a proof that it is not), never a proof that it is; false where a symbol has no
 /// domain.
 bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t points = 8);
+
+/// A point of the domains where a claim fails, and both sides' values there.
+struct counterexample {
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> point;  ///< each free symbol and its value, in declaration order
+    GiNaC::ex lhs, rhs;                                  ///< the sides there: exact, or 50-digit numbers
+    bool exact = false;                                  ///< both sides are rationals, the failure decided exactly
+};
+
+/// A counterexample to `lhs op rhs` among simple values of the domains of `given` (their
+/// ends, 0, 1, 2, 1/2, -1, ...), the first found: tried first with each symbol at its first
+/// simple value, then at others drawn in a fixed order. A failure is believed when both
+/// sides are rationals (decided exactly) or, with radicals, when 50 and 80 digits agree and
+/// the sides differ far beyond the rounding. None when no such point is found among
+/// `points`, or when a symbol has no domain.
+std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                                  const symbol_table& symbols, const assumptions& given,
+                                                  std::size_t points = 400);
 
 /// Decides `lhs op rhs` from the signs of the factors of the difference alone: proven,
 /// or none (nothing sampled).

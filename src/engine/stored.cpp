@@ -548,7 +548,7 @@ private:
     void get_verdict(const json& j, verdict& v)
     {
         v.what = enum_of<verdict::status>(j.at(0), 2);
-        v.how = enum_of<verdict::basis>(j.at(1), 6);
+        v.how = enum_of<verdict::basis>(j.at(1), 7);
         v.samples = j.at(2).get<std::size_t>();
         v.residual = get(j.at(3));
         v.method = j.at(4).get<std::string>();
@@ -765,7 +765,11 @@ private:
                 put_written(c.written),
                 list(c.parts, &derivation_codec::put_part),
                 c.cases_of,
-                c.continuity};
+                c.continuity,
+                c.said_false,
+                c.fails_at ? json{put_pairs(c.fails_at->point), put(c.fails_at->lhs), put(c.fails_at->rhs),
+                                  c.fails_at->exact}
+                           : json()};
     }
     void get_check(const json& j, check_result& c)
     {
@@ -794,6 +798,10 @@ private:
         get_list(j.at(17), c.parts, &derivation_codec::get_part);
         c.cases_of = j.at(18).get<std::string>();
         c.continuity = j.at(19).get<bool>();
+        c.said_false = j.at(20).get<bool>();
+        if (!j.at(21).is_null())
+            c.fails_at = counterexample{get_pairs(j.at(21).at(0)), get(j.at(21).at(1)), get(j.at(21).at(2)),
+                                        j.at(21).at(3).get<bool>()};
     }
 
     json put_solution(const solution& s)

@@ -117,6 +117,7 @@ struct claim {
     text paper;                    ///< where the paper says it, e.g. `Sec. III C`
     text quote;                    ///< the paper's words
     check test;                    ///< what the words claim, as a check (name, claim, at, limit, assuming)
+    bool holds = true;             ///< false: the paper says this does not hold (`holds = false`)
 };
 
 /// Something the paper's text claims that no derivation can settle: a statement about

@@ -307,6 +307,11 @@ claim read_claim(table_reader& in)
 {
     claim c;
     c.test = read_check_fields(in);
+    c.holds = in.optional_bool("holds").value_or(true);
+    if (!c.holds && c.test.limit)
+        throw error(in.where_of("holds"), fmt::format("claim '{}': 'holds = false' does not apply beside 'limit' (a "
+                                                      "limit is refuted by no single point)",
+                                                      c.test.name.value));
     c.paper = in.required_string("paper");
     c.quote = in.required_string("quote");
     in.finish();
