@@ -324,6 +324,13 @@ BOOST_AUTO_TEST_CASE(the_claims_of_one_quote_come_to_one_finding)
     // One finding of different values (Fig. 2's restitutions said to increase): said once.
     BOOST_TEST(one_finding({"the reverse holds: $a < b$", "the reverse holds: $b < c$"}) ==
                "the reverse holds in each check: $a < b$ and $b < c$");
+    // In a row that disagrees, the checks that agree are named, not told again.
+    BOOST_TEST(one_finding({"proven", "it holds only where $a = b$", "refuted, as the paper says"},
+                           {true, false, true}) ==
+               "the 2nd check: it holds only where $a = b$; the 1st and 3rd checks hold as the paper says");
+    BOOST_TEST(one_finding({"proven", "as checked, it does not hold"}, {true, false}) ==
+               "the 2nd check: as checked, it does not hold; the 1st check holds as the paper says");
+    BOOST_TEST(one_finding({"proven", "proven"}, {true, true}) == "both proven");
     BOOST_TEST(one_finding({"the reverse holds: $a < b$", "derived, $z = 0$"}) ==
                "the 1st check: the reverse holds: $a < b$; the 2nd check: derived, $z = 0$");
 }

@@ -525,6 +525,44 @@ BOOST_AUTO_TEST_CASE(a_claim_said_not_to_hold_agrees_when_refuted_at_a_point_and
     BOOST_TEST(checked.find("which the paper says does not hold; at $a = ") != std::string::npos, checked);
 }
 
+BOOST_AUTO_TEST_CASE(a_point_outside_an_abbreviation_s_domain_refutes_nothing)
+{
+    // s = a - b declared positive (a approaches b, say): (a - b)(a^2 + ab + b^2 + 1) > 0 holds
+    // wherever s > 0, and a point with a <= b (a = b = 1, the first simple values) is none
+    // of the domains'. Said not to hold, it is not refuted.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[symbol]]\nname = \"a\"\ndomain = \"positive\"\n[[symbol]]\nname = \"b\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"s\"\ndomain = \"positive\"\ndefinition = \"a - b\"\n"
+        "[[step]]\ndefine = \"z\"\nas = \"(a - b)*(a^2 + a*b + b^2 + 1)\"\n[[result]]\nname = \"z\"\n"
+        "[[claim]]\nname = \"positive\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z > 0\"\nholds = false\n"
+        "[[claim]]\nname = \"negative\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z < 0\"\nholds = false\n"));
+    BOOST_TEST(emit::comparison_verdict(d.paper_checks.at(0)) != "agrees");
+    BOOST_TEST(!d.paper_checks.at(0).test->fails_at);
+    // z < 0 is refuted at a point where a > b, as the domain of s asks.
+    const auto& negative = d.paper_checks.at(1);
+    BOOST_TEST(negative.agrees());
+    BOOST_REQUIRE(negative.test->fails_at);
+    std::map<std::string, GiNaC::numeric> at;
+    for (const auto& [symbol, value] : negative.test->fails_at->point)
+        at[GiNaC::ex_to<GiNaC::symbol>(symbol).get_name()] = GiNaC::ex_to<GiNaC::numeric>(value);
+    BOOST_TEST(at["a"] > at["b"]);
+}
+
+BOOST_AUTO_TEST_CASE(a_claim_mended_in_its_words_has_the_mended_claim_for_its_first_finding)
+{
+    // z = (a - b) u / (a + b), said to be u - z (its words mended: z (a + b) = (a - b) u).
+    const std::string text = "[[symbol]]\nname = \"a\"\ndomain = \"positive\"\n[[symbol]]\nname = \"b\"\n"
+                             "domain = \"positive\"\n[[symbol]]\nname = \"u\"\n"
+                             "[[step]]\ndefine = \"z\"\nas = \"(a - b)*u/(a + b)\"\n[[result]]\nname = \"z\"\n"
+                             "[[claim]]\nname = \"c\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z = u - z\"\n";
+    const engine::derivation d = derive_text(derivation_text(text + "mended = \"z*(a + b) = (a - b)*u\"\n"));
+    BOOST_TEST(!d.paper_checks.at(0).agrees());
+    BOOST_REQUIRE(!d.paper_checks.at(0).reconciliations.empty());
+    BOOST_TEST(d.paper_checks.at(0).reconciliations.front().rfind("mended, it holds: z*(a+b) = ", 0) == 0u);
+    // A mended claim that does not hold is the file's mistake.
+    BOOST_CHECK_THROW(derive_text(derivation_text(text + "mended = \"z = u\"\n")), impact::error);
+}
+
 BOOST_AUTO_TEST_CASE(an_angle_printed_for_its_cosine_is_reported_as_such)
 {
     // An angle defined through its cosine, then claimed equal to the cosine itself (Eq. 14's

@@ -532,7 +532,7 @@ BOOST_AUTO_TEST_CASE(one_misprint_in_several_components_is_one_item_of_the_fragm
     BOOST_TEST(contains(held, "\\ifdefined\\impacterratatable\n"));
     // Eq. 9's misprint is one row; the other is Sec. III A's force "opposite to the direction
     // of motion", read as each sphere's own motion.
-    BOOST_TEST(contains(held, "2 disagree (Eq.~(9); Sec. III A, 1st paragraph)."));
+    BOOST_TEST(contains(held, "2 disagree (Eq.~(9); Sec. III A, 1st paragraph)"));
     // Rows, not places, are counted: the planar Eq. 2's first line prints two misprinted
     // equations, its second line one.
     BOOST_TEST(contains(emit::latex_fragment(derived("elastic_plane")),

@@ -76,8 +76,29 @@ std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, b
     return rows;
 }
 
-std::string one_finding(const std::vector<std::string>& each)
+std::string one_finding(const std::vector<std::string>& each, const std::vector<bool>& agrees)
 {
+    static const char* const ordinals[] = {"1st", "2nd", "3rd"};
+    const auto ordinal = [](std::size_t i) {
+        return i < 3 ? std::string(ordinals[i]) : fmt::format("{}th", i + 1);
+    };
+    // Some agree and some do not: what each that does not is found, then the others named.
+    if (agrees.size() == each.size() && std::count(agrees.begin(), agrees.end(), true) > 0 &&
+        std::count(agrees.begin(), agrees.end(), false) > 0) {
+        std::string out;
+        std::vector<std::string> agreeing;
+        for (std::size_t i = 0; i < each.size(); ++i) {
+            if (agrees[i])
+                agreeing.push_back(ordinal(i));
+            else
+                out += fmt::format("{}the {} check: {}", out.empty() ? "" : "; ", ordinal(i), each[i]);
+        }
+        std::string named;
+        for (std::size_t i = 0; i < agreeing.size(); ++i)
+            named += (i == 0 ? "" : i + 1 == agreeing.size() ? " and " : ", ") + agreeing[i];
+        return out + fmt::format("; the {} {} as the paper says", named,
+                                 agreeing.size() == 1 ? "check holds" : "checks hold");
+    }
     if (each.empty())
         return "";
     const bool two = each.size() == 2;
@@ -106,11 +127,9 @@ std::string one_finding(const std::vector<std::string>& each)
             out += (i == 0 ? "" : i + 1 == each.size() ? " and " : ", ") + each[i].substr(head.size() + 2);
         return out;
     }
-    static const char* const ordinals[] = {"1st", "2nd", "3rd"};
     std::string out;
     for (std::size_t i = 0; i < each.size(); ++i)
-        out += fmt::format("{}the {} check: {}", i == 0 ? "" : "; ",
-                           i < 3 ? std::string(ordinals[i]) : fmt::format("{}th", i + 1), each[i]);
+        out += fmt::format("{}the {} check: {}", i == 0 ? "" : "; ", ordinal(i), each[i]);
     return out;
 }
 
@@ -280,9 +299,12 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
         if (claim && row.size() > 1) {
             // The claims of one quote: one finding, each check's outcome where they differ.
             std::vector<std::string> each;
-            for (const engine::paper_comparison& c : shown)
+            std::vector<bool> agrees;
+            for (const engine::paper_comparison& c : shown) {
                 each.push_back(change_of(c));
-            change = one_finding(each);
+                agrees.push_back(comparison_verdict(c) == "agrees");
+            }
+            change = one_finding(each, agrees);
             printed.resize(1);
             for (std::size_t i = 1; i < derived.size(); ++i)
                 if (derived[i].rfind("checked: ", 0) == 0)

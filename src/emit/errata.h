@@ -46,7 +46,9 @@ std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, b
 /// What the claims checked of one quote come to, from what each check came to ("proven",
 /// "as checked, it does not hold", ...): said once when all are the same ("both proven",
 /// "as checked, neither holds"), else each in turn ("the 1st check: ...; the 2nd check: ...").
-std::string one_finding(const std::vector<std::string>& each);
+/// With `agrees` (one per check), when some agree and some do not: only those that do not,
+/// then the others named ("...; the 1st and 3rd checks hold as the paper says").
+std::string one_finding(const std::vector<std::string>& each, const std::vector<bool>& agrees = {});
 
 /// The verdict of a row: "disagrees" when one of its comparisons disagrees, otherwise
 /// "undecided" when one is, otherwise "agrees".

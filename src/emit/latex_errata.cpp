@@ -146,8 +146,11 @@ std::string agreement_text(const engine::paper_comparison& p)
     const bool said_false = p.what == engine::paper_comparison::kind::claim && p.test && p.test->said_false;
     if (verdict == "undecided") {
         if (said_false && p.agreement.samples == 0)
-            return "neither proven nor refuted: no proof that it holds, and no point of the domains found where it "
-                   "fails";
+            return p.test->parts.empty()
+                       ? "neither proven nor refuted: no proof that it holds, and no point of the domains found "
+                         "where it fails"
+                       : "neither proven nor refuted: no proof that it holds in every case, and no point is "
+                         "searched for where it fails, case by case";
         if (p.agreement.what == engine::verdict::status::sampled)
             return fmt::format("neither proven nor refuted: no proof was found, and it holds at each of {} sampled "
                                "points of the declared domains (40 digits)",
@@ -376,9 +379,12 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
     if (claim && group.size() > 1) {
         // The claims of one quote: one finding, each check's outcome where they differ.
         std::vector<std::string> each;
-        for (std::size_t k : group)
+        std::vector<bool> agrees;
+        for (std::size_t k : group) {
             each.push_back(change_of(all[k]));
-        change = one_finding(each);
+            agrees.push_back(comparison_verdict(all[k]) == "agrees");
+        }
+        change = one_finding(each, agrees);
     } else if (!agrees && verdict == "disagrees" && group.size() > 1) {
         change += fmt::format("; one misprint, in each of the {} components", group.size());
     }

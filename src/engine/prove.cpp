@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 
 namespace impact::engine {
 namespace {
@@ -352,19 +353,69 @@ std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation
 {
     const GiNaC::exmap abbreviations = symbols.abbreviations();
     const GiNaC::ex a = spelled_out(lhs, abbreviations), b = spelled_out(rhs, abbreviations);
-    std::vector<std::pair<GiNaC::ex, std::vector<GiNaC::numeric>>> free;
-    const GiNaC::ex both = a - b;
-    for (GiNaC::const_preorder_iterator it = both.preorder_begin(); it != both.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it) &&
-            std::none_of(free.begin(), free.end(), [&](const auto& f) { return f.first.is_equal(*it); })) {
-            const auto d = given.domains.find(*it);
-            if (d == given.domains.end())
-                return std::nullopt;
-            std::vector<GiNaC::numeric> values = simple_values(d->second);
-            if (values.empty())
-                return std::nullopt;
-            free.emplace_back(*it, std::move(values));
+    // The claim's symbols, and those of each abbreviation that shares one with them, in
+    // turn: the abbreviation must take a value of its own domain at the point (s_n > 0, the
+    // spheres approach; or as `assuming` narrows it), or the point is none of the domains'.
+    std::vector<GiNaC::ex> names;
+    const auto add_symbols = [&](const GiNaC::ex& e) {
+        bool added = false;
+        for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+                std::none_of(names.begin(), names.end(), [&](const GiNaC::ex& n) { return n.is_equal(*it); })) {
+                names.push_back(*it);
+                added = true;
+            }
+        return added;
+    };
+    add_symbols(a - b);
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> constrained;   // an abbreviation and its definition in the inputs
+    std::set<GiNaC::ex, GiNaC::ex_is_less> taken;
+    for (bool more = true; more;) {
+        more = false;
+        for (const auto& [symbol, definition] : abbreviations) {
+            if (taken.count(symbol))
+                continue;
+            const GiNaC::ex spelled = spelled_out(definition, abbreviations);
+            if (std::none_of(names.begin(), names.end(), [&](const GiNaC::ex& n) { return spelled.has(n); }))
+                continue;
+            taken.insert(symbol);
+            constrained.emplace_back(symbol, spelled);
+            add_symbols(spelled);
+            more = true;
         }
+    }
+    std::sort(constrained.begin(), constrained.end(),
+              [&](const auto& x, const auto& y) { return given.order.before(x.first, y.first); });
+    std::vector<std::pair<GiNaC::ex, std::vector<GiNaC::numeric>>> free;
+    for (const GiNaC::ex& name : names) {
+        if (abbreviations.count(name))
+            continue;   // spelled out
+        const auto d = given.domains.find(name);
+        if (d == given.domains.end())
+            return std::nullopt;
+        std::vector<GiNaC::numeric> values = simple_values(d->second);
+        if (values.empty())
+            return std::nullopt;
+        free.emplace_back(name, std::move(values));
+    }
+    // Whether each abbreviation lies in its domain at the point (none: a pole, or complex).
+    const auto in_domains = [&](const GiNaC::exmap& at) {
+        for (const auto& [symbol, spelled] : constrained) {
+            // Its domain: as `assuming` narrows it, else as declared.
+            const domain* range = nullptr;
+            if (const auto d = given.domains.find(symbol); d != given.domains.end())
+                range = &d->second;
+            for (const assumptions::assumed_sign& a : given.assumed)
+                if (!range && a.symbol.is_equal(symbol))
+                    range = &a.range;
+            const GiNaC::ex value = GiNaC::evalf(GiNaC::normal(spelled.subs(at, GiNaC::subs_options::no_pattern)));
+            if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
+                return false;
+            if (range && !range->contains(GiNaC::ex_to<GiNaC::numeric>(value).to_double()))
+                return false;
+        }
+        return true;
+    };
     std::sort(free.begin(), free.end(), [&](const auto& x, const auto& y) { return given.order.before(x.first, y.first); });
 
     const auto saved_digits = GiNaC::Digits;
@@ -380,6 +431,8 @@ std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation
             x.point.emplace_back(symbol, values[k]);
         }
         try {
+            if (!in_domains(at))
+                continue;
             const GiNaC::ex l = GiNaC::normal(a.subs(at, GiNaC::subs_options::no_pattern));
             const GiNaC::ex r = GiNaC::normal(b.subs(at, GiNaC::subs_options::no_pattern));
             if (GiNaC::is_a<GiNaC::numeric>(l) && GiNaC::is_a<GiNaC::numeric>(r) &&
@@ -406,10 +459,6 @@ std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation
                 const GiNaC::numeric u = GiNaC::ex_to<GiNaC::numeric>(le), v = GiNaC::ex_to<GiNaC::numeric>(re);
                 const GiNaC::numeric margin = GiNaC::numeric(1, 1000000000) * (1 + GiNaC::abs(u) + GiNaC::abs(v));
                 believed = believed && fails(u, op, v, margin);
-                if (digits == 50) {
-                    x.lhs = u;
-                    x.rhs = v;
-                }
             }
             GiNaC::Digits = saved_digits;
             if (believed) {

@@ -80,12 +80,13 @@ bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t
 /// A point of the domains where a claim fails, and both sides' values there.
 struct counterexample {
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> point;  ///< each free symbol and its value, in declaration order
-    GiNaC::ex lhs, rhs;                                  ///< the sides there: exact, or 50-digit numbers
+    GiNaC::ex lhs, rhs;                                  ///< the sides there, exactly (radicals kept)
     bool exact = false;                                  ///< both sides are rationals, the failure decided exactly
 };
 
 /// A counterexample to `lhs op rhs` among simple values of the domains of `given` (their
-/// ends, 0, 1, 2, 1/2, -1, ...), the first found: tried first with each symbol at its first
+/// ends, 0, 1, 2, 1/2, -1, ...), where every abbreviation that shares a symbol with it lies
+/// in its own domain too (s_n > 0: the spheres approach), the first found: tried first with each symbol at its first
 /// simple value, then at others drawn in a fixed order. A failure is believed when both
 /// sides are rationals (decided exactly) or, with radicals, when 50 and 80 digits agree and
 /// the sides differ far beyond the rounding. None when no such point is found among

@@ -118,6 +118,9 @@ struct claim {
     text quote;                    ///< the paper's words
     check test;                    ///< what the words claim, as a check (name, claim, at, limit, assuming)
     bool holds = true;             ///< false: the paper says this does not hold (`holds = false`)
+    /// The claim as the file mends the words (`mended`, e.g. "final" for "incident"): proven,
+    /// it is the finding of a claim that does not hold.
+    std::optional<text> mended;
 };
 
 /// Something the paper's text claims that no derivation can settle: a statement about

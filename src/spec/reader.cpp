@@ -308,6 +308,11 @@ claim read_claim(table_reader& in)
     claim c;
     c.test = read_check_fields(in);
     c.holds = in.optional_bool("holds").value_or(true);
+    c.mended = in.optional_string("mended");
+    if (c.mended && !c.holds)
+        throw error(c.mended->where, fmt::format("claim '{}': 'mended' mends a claim that does not hold; a claim "
+                                                 "said not to hold ('holds = false') has nothing to mend",
+                                                 c.test.name.value));
     if (!c.holds && c.test.limit)
         throw error(in.where_of("holds"), fmt::format("claim '{}': 'holds = false' does not apply beside 'limit' (a "
                                                       "limit is refuted by no single point)",
