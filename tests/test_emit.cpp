@@ -327,10 +327,17 @@ BOOST_AUTO_TEST_CASE(the_claims_of_one_quote_come_to_one_finding)
     // In a row that disagrees, the checks that agree are named, not told again.
     BOOST_TEST(one_finding({"proven", "it holds only where $a = b$", "refuted, as the paper says"},
                            {true, false, true}) ==
-               "the 2nd check: it holds only where $a = b$; the 1st and 3rd checks hold as the paper says");
+               "the 2nd check: it holds only where $a = b$; the 1st and 3rd checks agree with the paper");
     BOOST_TEST(one_finding({"proven", "as checked, it does not hold"}, {true, false}) ==
-               "the 2nd check: as checked, it does not hold; the 1st check holds as the paper says");
+               "the 2nd check: as checked, it does not hold; the 1st check agrees with the paper");
     BOOST_TEST(one_finding({"proven", "proven"}, {true, true}) == "both proven");
+    // Labelled checks are named by their labels (Footnote 11's contrapositive and converse).
+    BOOST_TEST(one_finding({"it holds, where the paper says it does not", "refuted", "proven"}, {false, true, true},
+                           {"the contrapositive", "the converse", ""}) ==
+               "the contrapositive: it holds, where the paper says it does not; the converse and the 3rd check "
+               "agree with the paper");
+    BOOST_TEST(one_finding({"proven", "as checked, it does not hold"}, {}, {"the first reading", ""}) ==
+               "the first reading: proven; the 2nd check: as checked, it does not hold");
     BOOST_TEST(one_finding({"the reverse holds: $a < b$", "derived, $z = 0$"}) ==
                "the 1st check: the reverse holds: $a < b$; the 2nd check: derived, $z = 0$");
 }

@@ -351,7 +351,7 @@ const std::map<std::string, std::set<std::string>> fields_read = {
                   "name", "rearrange", "into"}},
     {"[[result]]", {"name", "display", "paper", "printed", "quote"}},
     {"[[check]]", {"name", "claim", "continuity", "because", "at", "left_at", "limit", "assuming"}},
-    {"[[claim]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming", "paper", "quote", "mended", "holds", "undecided"}},
+    {"[[claim]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming", "paper", "quote", "mended", "holds", "label", "undecided"}},
     {"[[not_compared]]", {"paper", "because"}},
     {"[[kernel]]", {"name", "inputs", "outputs", "velocities", "error", "forms", "guards", "substitute", "let",
                     "batch", "fixed"}},

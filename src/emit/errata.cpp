@@ -76,28 +76,35 @@ std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, b
     return rows;
 }
 
-std::string one_finding(const std::vector<std::string>& each, const std::vector<bool>& agrees)
+std::string one_finding(const std::vector<std::string>& each, const std::vector<bool>& agrees,
+                        const std::vector<std::string>& labels)
 {
     static const char* const ordinals[] = {"1st", "2nd", "3rd"};
     const auto ordinal = [](std::size_t i) {
         return i < 3 ? std::string(ordinals[i]) : fmt::format("{}th", i + 1);
     };
+    // A check by its label ("the contrapositive"), else by its place in the row.
+    const auto labelled = [&](std::size_t i) { return i < labels.size() && !labels[i].empty(); };
+    const auto name = [&](std::size_t i) { return labelled(i) ? labels[i] : "the " + ordinal(i) + " check"; };
     // Some agree and some do not: what each that does not is found, then the others named.
     if (agrees.size() == each.size() && std::count(agrees.begin(), agrees.end(), true) > 0 &&
         std::count(agrees.begin(), agrees.end(), false) > 0) {
         std::string out;
-        std::vector<std::string> agreeing;
+        std::vector<std::size_t> agreeing;
         for (std::size_t i = 0; i < each.size(); ++i) {
             if (agrees[i])
-                agreeing.push_back(ordinal(i));
+                agreeing.push_back(i);
             else
-                out += fmt::format("{}the {} check: {}", out.empty() ? "" : "; ", ordinal(i), each[i]);
+                out += fmt::format("{}{}: {}", out.empty() ? "" : "; ", name(i), each[i]);
         }
+        const bool any_label = std::any_of(agreeing.begin(), agreeing.end(), labelled);
         std::string named;
-        for (std::size_t i = 0; i < agreeing.size(); ++i)
-            named += (i == 0 ? "" : i + 1 == agreeing.size() ? " and " : ", ") + agreeing[i];
-        return out + fmt::format("; the {} {} as the paper says", named,
-                                 agreeing.size() == 1 ? "check holds" : "checks hold");
+        for (std::size_t k = 0; k < agreeing.size(); ++k)
+            named += (k == 0 ? "" : k + 1 == agreeing.size() ? " and " : ", ") +
+                     (any_label ? name(agreeing[k]) : ordinal(agreeing[k]));
+        if (!any_label)
+            named = "the " + named + (agreeing.size() == 1 ? " check" : " checks");
+        return out + fmt::format("; {} {} with the paper", named, agreeing.size() == 1 ? "agrees" : "agree");
     }
     if (each.empty())
         return "";
@@ -129,7 +136,7 @@ std::string one_finding(const std::vector<std::string>& each, const std::vector<
     }
     std::string out;
     for (std::size_t i = 0; i < each.size(); ++i)
-        out += fmt::format("{}the {} check: {}", i == 0 ? "" : "; ", ordinal(i), each[i]);
+        out += fmt::format("{}{}: {}", i == 0 ? "" : "; ", name(i), each[i]);
     return out;
 }
 
@@ -298,13 +305,14 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
         std::string change = change_of(p);
         if (claim && row.size() > 1) {
             // The claims of one quote: one finding, each check's outcome where they differ.
-            std::vector<std::string> each;
+            std::vector<std::string> each, labels;
             std::vector<bool> agrees;
             for (const engine::paper_comparison& c : shown) {
                 each.push_back(change_of(c));
                 agrees.push_back(comparison_verdict(c) == "agrees");
+                labels.push_back(c.label);
             }
-            change = one_finding(each, agrees);
+            change = one_finding(each, agrees, labels);
             printed.resize(1);
             for (std::size_t i = 1; i < derived.size(); ++i)
                 if (derived[i].rfind("checked: ", 0) == 0)

@@ -47,8 +47,11 @@ std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, b
 /// "as checked, it does not hold", ...): said once when all are the same ("both proven",
 /// "as checked, neither holds"), else each in turn ("the 1st check: ...; the 2nd check: ...").
 /// With `agrees` (one per check), when some agree and some do not: only those that do not,
-/// then the others named ("...; the 1st and 3rd checks hold as the paper says").
-std::string one_finding(const std::vector<std::string>& each, const std::vector<bool>& agrees = {});
+/// then the others named ("...; the 1st and 3rd checks agree with the paper"). With
+/// `labels` (one per check, "" for none), a labelled check is named by its label ("the
+/// contrapositive: it holds, ...").
+std::string one_finding(const std::vector<std::string>& each, const std::vector<bool>& agrees = {},
+                        const std::vector<std::string>& labels = {});
 
 /// The verdict of a row: "disagrees" when one of its comparisons disagrees, otherwise
 /// "undecided" when one is, otherwise "agrees".

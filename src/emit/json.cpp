@@ -125,6 +125,8 @@ json derivation_json(const engine::derivation& d)
             pj["method"] = p.agreement.method;
             pj["smallest_change"] = p.reconciliations;
         }
+        if (!p.label.empty())
+            pj["label"] = p.label;   // how a finding names the claim among those of its quote
         if (p.test && p.test->said_false) {
             // The paper says the claim does not hold: it agrees when refuted at a point.
             pj["said_not_to_hold"] = true;

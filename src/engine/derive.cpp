@@ -670,6 +670,7 @@ private:
         p.paper = claim.paper.value;
         p.printed_text = claim.quote.value;
         p.where = claim.test.claim.where;
+        p.label = claim.label ? claim.label->value : "";
         check_result c = run_check(claim.test, true);
         p.printed = c.stated;
         p.derived = c.value ? *c.value : c.lhs;

@@ -148,6 +148,9 @@ struct paper_comparison {
     /// The paper's own text of the printed form (math between dollar signs), when the file
     /// reads it in other terms; empty otherwise, and for a claim (`printed_text` is its words).
     std::string quote;
+    /// For a claim: how a finding names it among the claims of its quote ("the
+    /// contrapositive"); empty: by its place in the row.
+    std::string label;
 
     bool agrees() const { return agreement.what == verdict::status::proven; }
 };

@@ -870,7 +870,8 @@ private:
                 p.test ? put_check(*p.test) : json(),
                 put_where(p.where),
                 put_written(p.written),
-                p.quote};
+                p.quote,
+                p.label};
     }
     void get_comparison(const json& j, paper_comparison& p)
     {
@@ -890,6 +891,7 @@ private:
         p.where = get_where(j.at(10));
         get_written(j.at(11), p.written);
         p.quote = j.at(12).get<std::string>();
+        p.label = j.at(13).get<std::string>();
     }
 
     json put_result(const result& r)

@@ -121,6 +121,7 @@ struct claim {
     /// The claim as the file mends the words (`mended`, e.g. "final" for "incident"): proven,
     /// it is the finding of a claim that does not hold.
     std::optional<text> mended;
+    std::optional<text> label;     ///< how a finding names it among the claims of its quote ("the contrapositive")
 };
 
 /// Something the paper's text claims that no derivation can settle: a statement about

@@ -309,6 +309,7 @@ claim read_claim(table_reader& in)
     c.test = read_check_fields(in);
     c.holds = in.optional_bool("holds").value_or(true);
     c.mended = in.optional_string("mended");
+    c.label = in.optional_string("label");
     if (c.mended && !c.holds)
         throw error(c.mended->where, fmt::format("claim '{}': 'mended' mends a claim that does not hold; a claim "
                                                  "said not to hold ('holds = false') has nothing to mend",
