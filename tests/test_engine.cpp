@@ -416,6 +416,13 @@ BOOST_AUTO_TEST_CASE(an_inequality_claimed_the_wrong_way_round_is_reported_rever
         BOOST_TEST(said.find("reverse") == std::string::npos, said);
 }
 
+// The first finding of the k-th comparison with the paper, in plain text ("" when none).
+std::string first_finding(const engine::derivation& d, std::size_t k)
+{
+    const auto& r = d.paper_checks.at(k).reconciliations;
+    return r.empty() ? std::string() : r.front();
+}
+
 BOOST_AUTO_TEST_CASE(an_equation_that_holds_only_in_a_special_case_says_where)
 {
     // Two masses a and b and a velocity u: z = (a - b) u / (a + b) vanishes only for equal
@@ -430,10 +437,7 @@ BOOST_AUTO_TEST_CASE(an_equation_that_holds_only_in_a_special_case_says_where)
         "[[claim]]\nname = \"opposite\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"z = 0\"\n"
         "[[claim]]\nname = \"weighed\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 0\"\n"
         "[[claim]]\nname = \"golden\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"x^2 + x = 1\"\n"));
-    const auto said = [&](std::size_t k) {
-        const auto& r = d.paper_checks.at(k).reconciliations;
-        return r.empty() ? std::string() : r.front();
-    };
+    const auto said = [&](std::size_t k) { return first_finding(d, k); };
     BOOST_TEST(!d.paper_checks.at(0).agrees());
     BOOST_TEST(said(0).rfind("it holds only where a = b or u = 0: the difference of its sides is ", 0) == 0, said(0));
     BOOST_TEST(said(1).rfind("it holds only where a = 3*b/2: ", 0) == 0, said(1));
@@ -456,10 +460,7 @@ BOOST_AUTO_TEST_CASE(a_claim_that_holds_only_where_a_product_vanishes_says_where
         "[[result]]\nname = \"c\"\n[[result]]\nname = \"q\"\n"
         "[[claim]]\nname = \"along\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"c = 0\"\n"
         "[[claim]]\nname = \"squared\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"q = 0\"\n"));
-    const auto said = [&](std::size_t k) {
-        const auto& r = d.paper_checks.at(k).reconciliations;
-        return r.empty() ? std::string() : r.front();
-    };
+    const auto said = [&](std::size_t k) { return first_finding(d, k); };
     BOOST_TEST(!d.paper_checks.at(0).agrees());
     BOOST_TEST(said(0).rfind("it holds only where r_x*(v_x-w_x)+r_y*(v_y-w_y) = 0 or r_x*v_y = r_y*v_x: ", 0) == 0,
                said(0));

@@ -140,6 +140,19 @@ std::string one_finding(const std::vector<std::string>& each, const std::vector<
     return out;
 }
 
+std::string one_finding(const std::vector<const engine::paper_comparison*>& claims,
+                        const std::function<std::string(const engine::paper_comparison&)>& change_of)
+{
+    std::vector<std::string> each, labels;
+    std::vector<bool> agrees;
+    for (const engine::paper_comparison* c : claims) {
+        each.push_back(change_of(*c));
+        agrees.push_back(comparison_verdict(*c) == "agrees");
+        labels.push_back(c->label);
+    }
+    return one_finding(each, agrees, labels);
+}
+
 std::string row_verdict(const engine::derivation& d, const std::vector<std::size_t>& row)
 {
     std::string worst = "agrees";
@@ -305,14 +318,10 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
         std::string change = change_of(p);
         if (claim && row.size() > 1) {
             // The claims of one quote: one finding, each check's outcome where they differ.
-            std::vector<std::string> each, labels;
-            std::vector<bool> agrees;
-            for (const engine::paper_comparison& c : shown) {
-                each.push_back(change_of(c));
-                agrees.push_back(comparison_verdict(c) == "agrees");
-                labels.push_back(c.label);
-            }
-            change = one_finding(each, agrees, labels);
+            std::vector<const engine::paper_comparison*> claims;
+            for (const engine::paper_comparison& c : shown)
+                claims.push_back(&c);
+            change = one_finding(claims, change_of);
             printed.resize(1);
             for (std::size_t i = 1; i < derived.size(); ++i)
                 if (derived[i].rfind("checked: ", 0) == 0)

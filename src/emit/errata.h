@@ -5,6 +5,7 @@
 #include "engine/derive.h"
 #include "spec/outline.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,11 @@ std::vector<std::vector<std::size_t>> errata_rows(const engine::derivation& d, b
 /// contrapositive: it holds, ...").
 std::string one_finding(const std::vector<std::string>& each, const std::vector<bool>& agrees = {},
                         const std::vector<std::string>& labels = {});
+
+/// one_finding of the claims of one quote, what each came to said by `change_of`, with
+/// whether each agrees and its label.
+std::string one_finding(const std::vector<const engine::paper_comparison*>& claims,
+                        const std::function<std::string(const engine::paper_comparison&)>& change_of);
 
 /// The verdict of a row: "disagrees" when one of its comparisons disagrees, otherwise
 /// "undecided" when one is, otherwise "agrees".

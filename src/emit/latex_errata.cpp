@@ -378,14 +378,10 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
     std::string change = change_of(p);
     if (claim && group.size() > 1) {
         // The claims of one quote: one finding, each check's outcome where they differ.
-        std::vector<std::string> each, labels;
-        std::vector<bool> agrees;
-        for (std::size_t k : group) {
-            each.push_back(change_of(all[k]));
-            agrees.push_back(comparison_verdict(all[k]) == "agrees");
-            labels.push_back(all[k].label);
-        }
-        change = one_finding(each, agrees, labels);
+        std::vector<const engine::paper_comparison*> claims;
+        for (std::size_t k : group)
+            claims.push_back(&all[k]);
+        change = one_finding(claims, change_of);
     } else if (!agrees && verdict == "disagrees" && group.size() > 1) {
         change += fmt::format("; one misprint, in each of the {} components", group.size());
     }
