@@ -1177,3 +1177,25 @@ BOOST_AUTO_TEST_CASE(a_process_that_exits_leaves_no_factoring_child_behind)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(two_limits_whose_values_are_swapped_are_one_finding)
+{
+    // A derivation of the test's own: y = x/(1 + x) for x > 0 tends to 0 as x -> 0 and to 1
+    // as x grows. The text says the opposite in one sentence (two claims of one quote): one
+    // misprint, the values swapped, told once for both. A third claim of another quote, y = 1/2
+    // as x -> 0, holds nowhere else in the domain's ends: its derived value is said. A fourth,
+    // y = 1 at x = 0, holds as x grows: that regime is the finding, with no derived value.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[step]]\ndefine = \"y\"\nas = \"x/(1 + x)\"\n[[result]]\nname = \"y\"\n"
+        "[[claim]]\nname = \"small\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 1\"\nlimit = \"x -> 0\"\n"
+        "[[claim]]\nname = \"large\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 0\"\nlimit = \"x -> infinity\"\n"
+        "[[claim]]\nname = \"half\"\npaper = \"p. 2\"\nquote = \"r\"\nclaim = \"y = 1/2\"\nlimit = \"x -> 0\"\n"
+        "[[claim]]\nname = \"one\"\npaper = \"p. 3\"\nquote = \"s\"\nclaim = \"y = 1\"\nat = { x = \"0\" }\n"));
+    const auto said = [&](std::size_t k) { return d.paper_checks.at(k).reconciliations; };
+    const std::vector<std::string> swapped = {"the values are swapped: y is 0 for x -> 0 and 1 for x -> infinity"};
+    BOOST_TEST(!d.paper_checks.at(0).agrees());
+    BOOST_TEST(said(0) == swapped, boost::test_tools::per_element());
+    BOOST_TEST(said(1) == swapped, boost::test_tools::per_element());
+    BOOST_TEST(said(2) == std::vector<std::string>{"the derived value is 0, not 1/2"}, boost::test_tools::per_element());
+    BOOST_TEST(said(3) == std::vector<std::string>{"it holds for x -> infinity instead"}, boost::test_tools::per_element());
+}

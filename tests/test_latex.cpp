@@ -321,12 +321,26 @@ BOOST_AUTO_TEST_CASE(a_line_read_in_other_terms_is_shown_in_the_papers_own_text_
                                                           "\\mathbf{v}_M^{(C)\\prime}$, read as"));
     // An agreeing row sets the derived form beside the printed one too: Eq. 4's v'_{M,perp}.
     BOOST_TEST(contains(rows, "& $v'_{M,\\perp}$ & agrees & $v_{M,\\perp}$ & $v_{M,\\perp}$ &"));
+    // A lab component of R^T v, agreeing, is set beside the printed one in the paper's own
+    // variables (the collision frame's v_par, v_perp and r/|r|), not in the lab frame's
+    // v_{M,x}, v_{M,y} the derivation displays: each of its four components.
+    const std::string displays = emit::latex_errata(all).displays;
+    for (const char* component : {"$v'_{M,x}$", "$v'_{M,y}$", "$v'_{m,x}$", "$v'_{m,y}$"}) {
+        const std::size_t at = displays.find(std::string("Eq.~(4), second line, ") + component);
+        BOOST_TEST_REQUIRE(at != std::string::npos, component);
+        const std::size_t derived_at = displays.find("Derived", at);
+        const std::string beside = displays.substr(derived_at, displays.find("\\item", derived_at) - derived_at);
+        BOOST_TEST(contains(beside, "\\|r_{mM}\\|"), beside);
+        BOOST_TEST(contains(beside, "\\perp}"), beside);
+        BOOST_TEST((!contains(beside, "v_{M,x}") && !contains(beside, "v_{m,y}")), beside);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_claim_the_paper_states_in_degrees_is_answered_in_degrees)
 {
     // A derivation of its own: a pendulum's angle from its cosine, c = 1/(1 + x) for x > 0.
-    // The text says "60°" at x = 1, where it is 60°; and "0°" as x grows, where it is 90°.
+    // The text says "60°" at x = 1, where it is 60°; and "45°" as x grows, where it is 90°
+    // (and nowhere else 45°: no regime mends it, so the derived value is the finding).
     // The cosine's bound c <= 1 is a number, not an angle: it stays 1.
     const engine::derivation d = impact::testing::derive_text(
         "id = \"pendulum\"\ntitle = \"t\"\n[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
@@ -335,15 +349,15 @@ BOOST_AUTO_TEST_CASE(a_claim_the_paper_states_in_degrees_is_answered_in_degrees)
         "[[result]]\nname = \"phi\"\n"
         "[[claim]]\nname = \"sixty\"\npaper = \"p. 1\"\nquote = \"at $x = 1$ it swings to $60^\\\\circ$\"\n"
         "claim = \"phi = Pi/3\"\nat = { x = \"1\" }\n"
-        "[[claim]]\nname = \"flat\"\npaper = \"p. 1\"\nquote = \"as $x$ grows it tends to 0\u00b0\"\n"
-        "claim = \"phi = 0\"\nlimit = \"x -> infinity\"\n"
+        "[[claim]]\nname = \"flat\"\npaper = \"p. 1\"\nquote = \"as $x$ grows it tends to 45\u00b0\"\n"
+        "claim = \"phi = Pi/4\"\nlimit = \"x -> infinity\"\n"
         "[[claim]]\nname = \"bounded\"\npaper = \"p. 1\"\nquote = \"the angle stays below $90^\\\\circ$\"\n"
         "claim = \"c <= 1\"\n"
         "[[claim]]\nname = \"short\"\npaper = \"p. 1\"\nquote = \"$30^\\\\circ$ short of a right angle\"\n"
         "claim = \"phi - Pi/2 = -Pi/6\"\nat = { x = \"1\" }\n");
     const std::string table = emit::errata_markdown({&d});
     BOOST_TEST(contains(table, "checked: $\\varphi = 60^\\circ$, at $x = 1$"), table);
-    BOOST_TEST(contains(table, "the derived value is $90^\\circ$, not $0^\\circ$"), table);
+    BOOST_TEST(contains(table, "the derived value is $90^\\circ$, not $45^\\circ$"), table);
     BOOST_TEST(contains(table, "checked: $c \\leq 1$"), table);
     // A negative multiple of pi is the angle with its sign outside.
     BOOST_TEST(contains(table, "checked: $\\varphi - 90^\\circ = -30^\\circ$, at $x = 1$"), table);

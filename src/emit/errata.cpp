@@ -286,7 +286,7 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                 c.what == engine::paper_comparison::kind::result ? d->find_result(c.subject) : nullptr;
             // A claim: what was checked (its special values or limit), which its words state.
             const auto beside = [&] {
-                const auto [form, written] = result_beside(c, *r);
+                const auto [form, written] = result_beside(*d, c, *r);
                 return math(form, order, written);
             };
             derived.push_back(claim && c.test ? "checked: " + cell(checked_claim_latex(*c.test, order))

@@ -111,10 +111,13 @@ std::string agreement_text(const engine::paper_comparison& p);
 /// than one, reconciles the two.
 std::optional<GiNaC::ex> corrected_form(const engine::paper_comparison& p, const GiNaC::ex& shown);
 
-/// The derived form to set beside the printed form of result `r`: mended in the printed form's
-/// variables (corrected_form), else the result as its file displays it; with the written form
-/// that orders its terms.
-std::pair<GiNaC::ex, const written_form*> result_beside(const engine::paper_comparison& p,
+/// The derived form to set beside the printed form of result `r` (of derivation `d`): mended
+/// in the printed form's variables (corrected_form); for an agreeing component of a vector the
+/// paper prints whole under one quote (Eq. 9's R^T (...)), the printed form itself, proven
+/// equal, in the paper's frame; else the result as its file displays it; with the written
+/// form that orders its terms.
+std::pair<GiNaC::ex, const written_form*> result_beside(const engine::derivation& d,
+                                                        const engine::paper_comparison& p,
                                                         const engine::result& r);
 
 /// The LaTeX fragment of one derivation, typeset as a derivation: its quantities, the

@@ -183,9 +183,22 @@ std::string agreement_text(const engine::paper_comparison& p)
     return how.empty() ? head : head + ": " + how;
 }
 
-std::pair<GiNaC::ex, const written_form*> result_beside(const engine::paper_comparison& p,
+std::pair<GiNaC::ex, const written_form*> result_beside(const engine::derivation& d,
+                                                        const engine::paper_comparison& p,
                                                         const engine::result& r)
 {
+    // One component of a vector the paper prints whole (Eq. 9's R^T (...), read component by
+    // component under one quote), agreeing: proven equal, the printed form is the derived
+    // one in the paper's variables (its frame), where the display is in the derivation's.
+    const auto component = [&] {
+        return !p.quote.empty() && std::count_if(d.paper_checks.begin(), d.paper_checks.end(),
+                                                 [&](const engine::paper_comparison& q) {
+                                                     return q.paper == p.paper && q.quote == p.quote;
+                                                 }) > 1;
+    };
+    if (p.agrees() && !p.printed.info(GiNaC::info_flags::relation) && !p.printed.is_equal(r.display) &&
+        component())
+        return {p.printed, &p.written};
     if (const auto corrected = corrected_form(p, r.display))
         return {*corrected, &p.written};
     return {r.display, &r.written};
@@ -281,7 +294,7 @@ std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const en
 {
     if (p.what == engine::paper_comparison::kind::result)
         if (const engine::result* r = d_.find_result(p.subject))
-            return result_beside(p, *r);
+            return result_beside(d_, p, *r);
     // Else as a textbook shows it: factored, or collected (a root's argument likewise).
     return {textbook_form(p.derived, order_).value, nullptr};
 }

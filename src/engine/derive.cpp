@@ -46,6 +46,7 @@ public:
             out_.checks.push_back(run_check(c));
         for (const spec::claim& c : s.claims)
             out_.paper_checks.push_back(hold_to_account(c));
+        find_swapped_values(out_.paper_checks);
         // A kernel computes a quantity defined by cases as a select of its cases' values,
         // each as the file writes it (its quantities replaced by their values), not as
         // simplified: normal() multiplies a radicand out (|G_t| = sqrt(G_t . G_t) as about
@@ -1060,9 +1061,58 @@ private:
                 }
             }
         }
-        found.push_back(
-            finding().say("the derived value is ").math(*failed.value).say(", not ").math(failed.rhs));
+        // A regime where it holds is the one change that mends it; the derived value only when
+        // none is found.
+        if (found.empty())
+            found.push_back(
+                finding().say("the derived value is ").math(*failed.value).say(", not ").math(failed.rhs));
         return found;
+    }
+
+    // Two claims of one quote, each a limit (or a special value) of the same quantity at its
+    // own point of the same symbol, that both fail, each stating the value the other derives:
+    // one misprint, the values swapped (Sec. III C's "90°" and "0°"), told once for both.
+    void find_swapped_values(std::vector<paper_comparison>& claims) const
+    {
+        const auto regime = [](const check_result& c) -> std::optional<std::pair<GiNaC::ex, std::optional<GiNaC::ex>>> {
+            if (c.limit && c.at.empty())
+                return std::pair{c.limit->symbol, c.limit->to_infinity ? std::nullopt : std::optional(c.limit->point)};
+            if (!c.limit && c.at.size() == 1)
+                return std::pair{c.at.front().first, std::optional(c.at.front().second)};
+            return std::nullopt;
+        };
+        const auto same = [](const GiNaC::ex& a, const GiNaC::ex& b) { return (a - b).normal().is_zero(); };
+        for (std::size_t i = 0; i < claims.size(); ++i)
+            for (std::size_t j = i + 1; j < claims.size(); ++j) {
+                paper_comparison& a = claims[i];
+                paper_comparison& b = claims[j];
+                if (a.paper != b.paper || a.printed_text != b.printed_text || a.agrees() || b.agrees() || !a.test ||
+                    !b.test || a.test->said_false || b.test->said_false || a.test->op != relation::equal ||
+                    b.test->op != relation::equal || !a.test->value || !b.test->value || !a.test->left_at.empty() ||
+                    !b.test->left_at.empty())
+                    continue;
+                const auto at_a = regime(*a.test);
+                const auto at_b = regime(*b.test);
+                if (!at_a || !at_b || !at_a->first.is_equal(at_b->first) || !same(a.test->lhs, b.test->lhs) ||
+                    same(a.test->rhs, b.test->rhs) || !same(a.test->rhs, *b.test->value) ||
+                    !same(b.test->rhs, *a.test->value))
+                    continue;
+                const finding swapped = finding()
+                                            .say("the values are swapped: ")
+                                            .math(a.test->stated.lhs())
+                                            .say(" is ")
+                                            .math(*a.test->value)
+                                            .say(" for ")
+                                            .tends(at_a->first, at_a->second)
+                                            .say(" and ")
+                                            .math(*b.test->value)
+                                            .say(" for ")
+                                            .tends(at_b->first, at_b->second);
+                for (paper_comparison* p : {&a, &b}) {
+                    p->findings = {swapped};
+                    p->reconciliations = plain_texts(p->findings, out_.symbols);
+                }
+            }
     }
 
     // The limit's symbol and point (an expression, or infinity), inside the symbol's domain.
