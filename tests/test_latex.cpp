@@ -589,3 +589,34 @@ BOOST_AUTO_TEST_CASE(a_result_by_cases_too_long_to_write_out_is_shown_as_written
     BOOST_TEST(contains(results, "y &= \\frac{G}{2}"), results);
     BOOST_TEST(!contains(results, "a_{24}"), results);
 }
+
+BOOST_AUTO_TEST_CASE(an_intermediate_quantity_too_long_written_out_is_used_by_name)
+{
+    // A derivation of the test's own: the squared lengths of two sums of six products,
+    // u = a_1 b_1 + ... + a_6 b_6 and w = c_1 d_1 + ... + c_6 d_6, and g = u^2 + w^2 - u w,
+    // which written out in the a, b, c, d is a sum of over a hundred products: its step says
+    // so and goes on with g by name. h = u + w, written out in two short lines, is shown.
+    std::string symbols, u = "", w = "";
+    for (int i = 1; i <= 6; ++i) {
+        for (const char* letter : {"a", "b", "c", "d"})
+            symbols += fmt::format("[[symbol]]\nname = \"{}_{}\"\n", letter, i);
+        u += fmt::format("{}a_{}*b_{}", i == 1 ? "" : " + ", i, i);
+        w += fmt::format("{}c_{}*d_{}", i == 1 ? "" : " + ", i, i);
+    }
+    const engine::derivation d = impact::testing::derive_text(
+        "id = \"lengths\"\ntitle = \"t\"\n" + symbols +
+        "[[symbol]]\nname = \"u\"\n[[symbol]]\nname = \"w\"\n[[symbol]]\nname = \"g\"\n[[symbol]]\nname = \"h\"\n"
+        "[[step]]\ndefine = \"u\"\nas = \"" + u + "\"\n[[step]]\ndefine = \"w\"\nas = \"" + w + "\"\n"
+        "[[step]]\ndefine = \"g\"\nas = \"u^2 + w^2 - u*w\"\n[[step]]\ndefine = \"h\"\nas = \"u + w\"\n"
+        "[[result]]\nname = \"h\"\n[[result]]\nname = \"g\"\n");
+    const std::string tex = emit::latex_fragment(d);
+    BOOST_TEST(contains(tex, "Written out in the declared quantities, it would take more than three lines; what "
+                             "follows uses $g$ by name."),
+               tex);
+    BOOST_TEST(!contains(tex, "uses $h$ by name"), tex);
+    // h's step shows what it comes to: a_1 b_1 appears in it, besides u's own step and the results.
+    const std::size_t h_step = tex.find("Defining $h$");
+    BOOST_TEST_REQUIRE(h_step != std::string::npos);
+    BOOST_TEST(tex.substr(h_step, tex.find("\\end{align*}", h_step) - h_step).find("a_1 b_1 + c_1 d_1") != std::string::npos,
+               tex);
+}

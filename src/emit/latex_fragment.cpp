@@ -478,19 +478,34 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
                                !(as_written && math(*as_written, &w) == math(r->display, &r->written));
         const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
         const written_form* shown_written = displayed ? &r->written : nullptr;
-        std::string how;
+        std::string how, too_long;
         if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
             math(*as_written, &w) != math(shown.value, shown_written)) {
-            out += as_defined(math(symbol), *as_written, w) + " \\\\\n" +
-                   rows("", shown.value, shown_written, "", "=", latex_width(math(symbol))) + "\n";
-            how = shown.how;
+            out += as_defined(math(symbol), *as_written, w);
+            // What it comes to in the declared quantities, unless that takes more than three
+            // lines: the quantity is used by name from here on (a contact point's velocity
+            // spelled out in every spin and radius, where the definition says what it is in a
+            // line), a result written out once, in the results. A result the file displays in
+            // a form of its own is shown here in that form.
+            const double side = latex_width(math(symbol));
+            if (displayed || latex_lines(shown.value, order_, shown_written, std::max(content_width - side - 14, 150.0),
+                                         std::max(content_width - side - 20, 150.0))
+                                     .size() <= 3) {
+                out += " \\\\\n" + rows("", shown.value, shown_written, "", "=", side);
+                how = shown.how;
+            } else {
+                too_long = fmt::format("Written out in the declared quantities, it would take more than three lines; "
+                                       "what follows uses ${}$ by name.\n",
+                                       math(symbol));
+            }
+            out += "\n";
         } else if (as_written) {
             out += as_defined(math(symbol), *as_written, w) + "\n";
         } else {
             out += rows(math(symbol), shown.value, shown_written, "") + "\n";
             how = shown.how;
         }
-        out += "\\end{align*}\n";
+        out += "\\end{align*}\n" + too_long;
         if (!how.empty())
             out += "The value is shown " + how + ".\n";
     }
