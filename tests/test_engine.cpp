@@ -1181,16 +1181,24 @@ BOOST_AUTO_TEST_SUITE_END()
 BOOST_AUTO_TEST_CASE(two_limits_whose_values_are_swapped_are_one_finding)
 {
     // A derivation of the test's own: y = x/(1 + x) for x > 0 tends to 0 as x -> 0 and to 1
-    // as x grows. The text says the opposite in one sentence (two claims of one quote): one
-    // misprint, the values swapped, told once for both. A third claim of another quote, y = 1/2
-    // as x -> 0, holds nowhere else in the domain's ends: its derived value is said. A fourth,
-    // y = 1 at x = 0, holds as x grows: that regime is the finding, with no derived value.
+    // as x grows; it is 1/2 at x = 1 and 2/3 at x = 2. The text says the opposite in one
+    // sentence (two claims of one quote): one misprint, the values swapped, told once for
+    // both; likewise two values at points. A claim of another quote, y = 1/2 as x -> 0,
+    // holds nowhere else in the domain's ends: its derived value is said. Another, y = 1 as
+    // x -> 0 alone, holds as x grows: that regime is the finding, with no derived value.
+    // Two limits swapped but checked under different
+    // assumptions (eps narrowed for one) are each told: the pair is not one finding.
     const engine::derivation d = derive_text(derivation_text(
         "[[step]]\ndefine = \"y\"\nas = \"x/(1 + x)\"\n[[result]]\nname = \"y\"\n"
         "[[claim]]\nname = \"small\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 1\"\nlimit = \"x -> 0\"\n"
         "[[claim]]\nname = \"large\"\npaper = \"p. 1\"\nquote = \"q\"\nclaim = \"y = 0\"\nlimit = \"x -> infinity\"\n"
         "[[claim]]\nname = \"half\"\npaper = \"p. 2\"\nquote = \"r\"\nclaim = \"y = 1/2\"\nlimit = \"x -> 0\"\n"
-        "[[claim]]\nname = \"one\"\npaper = \"p. 3\"\nquote = \"s\"\nclaim = \"y = 1\"\nat = { x = \"0\" }\n"));
+        "[[claim]]\nname = \"one\"\npaper = \"p. 3\"\nquote = \"s\"\nclaim = \"y = 1\"\nlimit = \"x -> 0\"\n"
+        "[[claim]]\nname = \"at_one\"\npaper = \"p. 4\"\nquote = \"t\"\nclaim = \"y = 2/3\"\nat = { x = \"1\" }\n"
+        "[[claim]]\nname = \"at_two\"\npaper = \"p. 4\"\nquote = \"t\"\nclaim = \"y = 1/2\"\nat = { x = \"2\" }\n"
+        "[[claim]]\nname = \"small_restitution\"\npaper = \"p. 5\"\nquote = \"u\"\nclaim = \"y = 1\"\n"
+        "limit = \"x -> 0\"\nassuming = { eps = \"[0, 1)\" }\n"
+        "[[claim]]\nname = \"large_any\"\npaper = \"p. 5\"\nquote = \"u\"\nclaim = \"y = 0\"\nlimit = \"x -> infinity\"\n"));
     const auto said = [&](std::size_t k) { return d.paper_checks.at(k).reconciliations; };
     const std::vector<std::string> swapped = {"the values are swapped: y is 0 for x -> 0 and 1 for x -> infinity"};
     BOOST_TEST(!d.paper_checks.at(0).agrees());
@@ -1198,4 +1206,10 @@ BOOST_AUTO_TEST_CASE(two_limits_whose_values_are_swapped_are_one_finding)
     BOOST_TEST(said(1) == swapped, boost::test_tools::per_element());
     BOOST_TEST(said(2) == std::vector<std::string>{"the derived value is 0, not 1/2"}, boost::test_tools::per_element());
     BOOST_TEST(said(3) == std::vector<std::string>{"it holds for x -> infinity instead"}, boost::test_tools::per_element());
+    const std::vector<std::string> at_points = {"the values are swapped: y is 1/2 at x = 1 and 2/3 at x = 2"};
+    BOOST_TEST(said(4) == at_points, boost::test_tools::per_element());
+    BOOST_TEST(said(5) == at_points, boost::test_tools::per_element());
+    for (std::size_t k : {6u, 7u})
+        for (const std::string& finding : said(k))
+            BOOST_TEST(finding.find("swapped") == std::string::npos, finding);
 }

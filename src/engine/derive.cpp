@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iterator>
 #include <set>
 
 namespace impact::engine {
@@ -1069,47 +1070,65 @@ private:
         return found;
     }
 
-    // Two claims of one quote, each a limit (or a special value) of the same quantity at its
-    // own point of the same symbol, that both fail, each stating the value the other derives:
-    // one misprint, the values swapped (Sec. III C's "90°" and "0°"), told once for both.
+    // Two claims of one quote, each a limit (or a value at one point) of the same quantity,
+    // as the file states it, at its own point of the same symbol, under the same assumptions,
+    // that both fail, each stating the value the other derives: one misprint, the values
+    // swapped (Sec. III C's "90°" and "0°"), told once for both in place of where each holds
+    // instead (a dimensional finding or the claim mended are kept before it).
     void find_swapped_values(std::vector<paper_comparison>& claims) const
     {
-        const auto regime = [](const check_result& c) -> std::optional<std::pair<GiNaC::ex, std::optional<GiNaC::ex>>> {
+        struct regime {
+            GiNaC::ex symbol;
+            std::optional<GiNaC::ex> point;   // none: infinity
+            bool limit = false;
+        };
+        const auto regime_of = [](const check_result& c) -> std::optional<regime> {
             if (c.limit && c.at.empty())
-                return std::pair{c.limit->symbol, c.limit->to_infinity ? std::nullopt : std::optional(c.limit->point)};
+                return regime{c.limit->symbol, c.limit->to_infinity ? std::nullopt : std::optional(c.limit->point), true};
             if (!c.limit && c.at.size() == 1)
-                return std::pair{c.at.front().first, std::optional(c.at.front().second)};
+                return regime{c.at.front().first, c.at.front().second, false};
             return std::nullopt;
         };
         const auto same = [](const GiNaC::ex& a, const GiNaC::ex& b) { return (a - b).normal().is_zero(); };
+        const auto same_assumptions = [](const check_result& a, const check_result& b) {
+            return a.assuming.size() == b.assuming.size() &&
+                   std::equal(a.assuming.begin(), a.assuming.end(), b.assuming.begin(), [](const auto& x, const auto& y) {
+                       return x.first.is_equal(y.first) && x.second == y.second;
+                   });
+        };
+        const auto candidate = [](const paper_comparison& p) {
+            return p.agreement.what == verdict::status::failed && p.test && !p.test->said_false &&
+                   p.test->op == relation::equal && p.test->value && p.test->left_at.empty() && p.test->parts.empty();
+        };
+        const auto kept = [](const finding& f) {   // said before the change: not where it holds
+            return std::any_of(f.parts.begin(), f.parts.end(),
+                               [](const finding::part& part) { return part.what == finding::part::kind::dimension; }) ||
+                   (!f.parts.empty() && f.parts.front().words.rfind("mended", 0) == 0);
+        };
         for (std::size_t i = 0; i < claims.size(); ++i)
             for (std::size_t j = i + 1; j < claims.size(); ++j) {
                 paper_comparison& a = claims[i];
                 paper_comparison& b = claims[j];
-                if (a.paper != b.paper || a.printed_text != b.printed_text || a.agrees() || b.agrees() || !a.test ||
-                    !b.test || a.test->said_false || b.test->said_false || a.test->op != relation::equal ||
-                    b.test->op != relation::equal || !a.test->value || !b.test->value || !a.test->left_at.empty() ||
-                    !b.test->left_at.empty())
+                if (a.paper != b.paper || a.printed_text != b.printed_text || !candidate(a) || !candidate(b) ||
+                    !same_assumptions(*a.test, *b.test))
                     continue;
-                const auto at_a = regime(*a.test);
-                const auto at_b = regime(*b.test);
-                if (!at_a || !at_b || !at_a->first.is_equal(at_b->first) || !same(a.test->lhs, b.test->lhs) ||
-                    same(a.test->rhs, b.test->rhs) || !same(a.test->rhs, *b.test->value) ||
-                    !same(b.test->rhs, *a.test->value))
+                const auto at_a = regime_of(*a.test);
+                const auto at_b = regime_of(*b.test);
+                if (!at_a || !at_b || at_a->limit != at_b->limit || !at_a->symbol.is_equal(at_b->symbol) ||
+                    !same(a.test->stated.lhs(), b.test->stated.lhs()) || same(a.test->rhs, b.test->rhs) ||
+                    !same(a.test->rhs, *b.test->value) || !same(b.test->rhs, *a.test->value))
                     continue;
-                const finding swapped = finding()
-                                            .say("the values are swapped: ")
-                                            .math(a.test->stated.lhs())
-                                            .say(" is ")
-                                            .math(*a.test->value)
-                                            .say(" for ")
-                                            .tends(at_a->first, at_a->second)
-                                            .say(" and ")
-                                            .math(*b.test->value)
-                                            .say(" for ")
-                                            .tends(at_b->first, at_b->second);
+                const auto where = [](finding& f, const regime& r) -> finding& {
+                    return r.limit ? f.say(" for ").tends(r.symbol, r.point) : f.say(" at ").math(r.symbol == *r.point);
+                };
+                finding swapped = finding().say("the values are swapped: ").math(a.test->stated.lhs()).say(" is ");
+                where(swapped.math(*a.test->value), *at_a).say(" and ");
+                where(swapped.math(*b.test->value), *at_b);
                 for (paper_comparison* p : {&a, &b}) {
-                    p->findings = {swapped};
+                    std::vector<finding> found;
+                    std::copy_if(p->findings.begin(), p->findings.end(), std::back_inserter(found), kept);
+                    found.push_back(swapped);
+                    p->findings = std::move(found);
                     p->reconciliations = plain_texts(p->findings, out_.symbols);
                 }
             }
