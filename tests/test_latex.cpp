@@ -442,7 +442,9 @@ BOOST_AUTO_TEST_CASE(givens_that_state_their_values_are_not_a_step_to_follow)
         for (std::size_t at = steps.find("\\item "); at != std::string::npos;) {
             const std::size_t next = steps.find("\\item ", at + 1);
             const std::string step = steps.substr(at, next == std::string::npos ? std::string::npos : next - at);
-            BOOST_TEST(contains(step, "\\begin{align"), id << ": " << step);
+            // Its equations set out, or the numbered results it gives referred to.
+            BOOST_TEST((contains(step, "\\begin{align") || contains(step, "gives the results below (\\ref{")),
+                       id << ": " << step);
             at = next;
         }
     }
@@ -619,4 +621,20 @@ BOOST_AUTO_TEST_CASE(an_intermediate_quantity_too_long_written_out_is_used_by_na
     BOOST_TEST_REQUIRE(h_step != std::string::npos);
     BOOST_TEST(tex.substr(h_step, tex.find("\\end{align*}", h_step) - h_step).find("a_1 b_1 + c_1 d_1") != std::string::npos,
                tex);
+}
+
+BOOST_AUTO_TEST_CASE(a_step_that_solves_for_the_numbered_results_refers_to_them)
+{
+    // Eq. 8: solving the two impulse equations and Newton's law for v'_M, v'_m and J gives
+    // exactly the three results the paper numbers Eq. 8, right: the step refers to them by
+    // their tags and does not set them out a second time.
+    const std::string tex = emit::latex_fragment(derived("inelastic_line"));
+    const std::size_t step = tex.find("\\item Solving");
+    BOOST_TEST_REQUIRE(step != std::string::npos);
+    const std::string said = tex.substr(step, tex.find("\\paragraph{Results.}") - step);
+    BOOST_TEST(contains(said, "gives the results below (\\ref{impact:inelastic_line:result:v_M_after}; "
+                              "\\ref{impact:inelastic_line:result:v_m_after}; \\ref{impact:inelastic_line:result:J})."),
+               said);
+    BOOST_TEST(!contains(said, "\\begin{align"), said);
+    BOOST_TEST(contains(said, "Substituted back, the solution satisfies each of"), said);
 }

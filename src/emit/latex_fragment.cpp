@@ -318,28 +318,48 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
     if (source && s.solutions.size() <= 1 && givens_state(s, *source))
         return fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
                            capitalised(listing(equations)), listing(unknowns), because);
-    std::string out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations),
-                                  listing(unknowns), because);
-    // Each value as a textbook shows it: the result's display form when the unknown is a
-    // result (Eq. 8's v'_M, collected in eps as the paper prints it), else factored or
-    // collected, and said which.
-    std::vector<std::string> hows;
-    for (std::size_t i = 0; i < s.values.size(); ++i) {
-        const auto& [unknown, value] = s.values[i];
+    // The result an unknown is, as its file displays it; none when it is no such result.
+    const auto displayed_result = [this](const GiNaC::ex& unknown) -> const engine::result* {
         const engine::result* r = GiNaC::is_a<GiNaC::symbol>(unknown)
                                       ? d_.find_result(GiNaC::ex_to<GiNaC::symbol>(unknown).get_name())
                                       : nullptr;
-        const bool displayed = r && r->cases.empty() && !r->written.empty() && r->symbol.is_equal(unknown);
-        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
-        out += rows(math(unknown), shown.value, displayed ? &r->written : nullptr, "") +
-               (i + 1 < s.values.size() ? " \\\\\n" : "\n");
-        if (!shown.how.empty())
-            hows.push_back(fmt::format("${}$ {}", math(unknown), shown.how));
+        return r && r->cases.empty() && !r->written.empty() && r->symbol.is_equal(unknown) ? r : nullptr;
+    };
+    // Every unknown a result shown and numbered in the results, as the file displays it: the
+    // results are not set out twice; the step refers to them.
+    std::vector<std::string> numbered;
+    for (const auto& [unknown, value] : s.values) {
+        const engine::result* r = displayed_result(unknown);
+        if (r && !r->paper.empty() && &shown_as(*r) == r)
+            numbered.push_back(fmt::format("\\ref{{{}:result:{}}}", latex_label(d_), r->name));
     }
-    out += "\\end{align*}\n";
-    if (!hows.empty())
-        out += "Shown: " + listing(hows) + ".\n";
-    out += rejected_solutions(s);
+    std::string out;
+    if (!numbered.empty() && numbered.size() == s.values.size() && s.solutions.size() <= 1) {
+        // By their tags, which have commas of their own: "Eq. (8), right, first line; ...".
+        out = fmt::format("Solving {} for {}{} gives the results below ({}).\n", listing(equations),
+                          listing(unknowns), because, fmt::join(numbered, "; "));
+    } else {
+        out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations), listing(unknowns),
+                          because);
+        // Each value as a textbook shows it: the result's display form when the unknown is a
+        // result (Eq. 8's v'_M, collected in eps as the paper prints it), else factored or
+        // collected, and said which.
+        std::vector<std::string> hows;
+        for (std::size_t i = 0; i < s.values.size(); ++i) {
+            const auto& [unknown, value] = s.values[i];
+            const engine::result* r = displayed_result(unknown);
+            const bool displayed = r != nullptr;
+            const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
+            out += rows(math(unknown), shown.value, displayed ? &r->written : nullptr, "") +
+                   (i + 1 < s.values.size() ? " \\\\\n" : "\n");
+            if (!shown.how.empty())
+                hows.push_back(fmt::format("${}$ {}", math(unknown), shown.how));
+        }
+        out += "\\end{align*}\n";
+        if (!hows.empty())
+            out += "Shown: " + listing(hows) + ".\n";
+        out += rejected_solutions(s);
+    }
     const bool all_proven = std::all_of(s.checks.begin(), s.checks.end(), [](const engine::check_result& c) {
         return c.outcome.what == engine::verdict::status::proven;
     });
