@@ -414,9 +414,10 @@ BOOST_AUTO_TEST_CASE(one_quantity_in_two_forms_is_named_once)
     // Its definition as the file writes it, the relative velocities in parentheses.
     BOOST_TEST(contains(tex, "\\Delta v_\\Delta &= (v'_{M,\\parallel} - v'_{m,\\parallel}) - (v_{M,\\parallel} - v_{m,\\parallel})"));
     // The check `impulse_form` states the first result's display form: one item, its reason
-    // given there: the form typeset in the step, the result and the comparison with the
-    // paper, not a fourth time.
-    BOOST_TEST(count("-\\left(\\frac{1}{M} + \\frac{1}{m}\\right) J") == 3u);
+    // given there: the form typeset in the result and the comparison with the paper (the
+    // step refers to the result), not a third time.
+    BOOST_TEST(count("-\\left(\\frac{1}{M} + \\frac{1}{m}\\right) J") == 2u);
+    BOOST_TEST(contains(tex, "Its value is the result below (\\ref{impact:relative_velocity_change:result:"));
     BOOST_TEST(count("Impulse form") == 1u);
     BOOST_TEST(contains(tex, "equals the derived result. Impulse form states the same: each velocity changes"));
 }

@@ -328,11 +328,10 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
     // Every unknown a result shown and numbered in the results, as the file displays it: the
     // results are not set out twice; the step refers to them.
     std::vector<std::string> numbered;
-    for (const auto& [unknown, value] : s.values) {
-        const engine::result* r = displayed_result(unknown);
-        if (r && !r->paper.empty() && &shown_as(*r) == r)
-            numbered.push_back(fmt::format("\\ref{{{}:result:{}}}", latex_label(d_), r->name));
-    }
+    for (const auto& [unknown, value] : s.values)
+        if (const engine::result* r = displayed_result(unknown))
+            if (const auto ref = result_ref(*r))
+                numbered.push_back(*ref);
     std::string out;
     if (!numbered.empty() && numbered.size() == s.values.size() && s.solutions.size() <= 1) {
         // By their tags, which have commas of their own: "Eq. (8), right, first line; ...".
@@ -498,7 +497,7 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
                                !(as_written && math(*as_written, &w) == math(r->display, &r->written));
         const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
         const written_form* shown_written = displayed ? &r->written : nullptr;
-        std::string how, too_long;
+        std::string how, after;
         if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
             math(*as_written, &w) != math(shown.value, shown_written)) {
             out += as_defined(math(symbol), *as_written, w);
@@ -508,13 +507,16 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
             // line), a result written out once, in the results. A result the file displays in
             // a form of its own is shown here in that form.
             const double side = latex_width(math(symbol));
-            if (displayed || latex_lines(shown.value, order_, shown_written, std::max(content_width - side - 14, 150.0),
+            const std::optional<std::string> numbered = displayed ? result_ref(*r) : std::nullopt;
+            if (numbered) {
+                after = fmt::format("Its value is the result below ({}).\n", *numbered);
+            } else if (displayed || latex_lines(shown.value, order_, shown_written, std::max(content_width - side - 14, 150.0),
                                          std::max(content_width - side - 20, 150.0))
                                      .size() <= 3) {
                 out += " \\\\\n" + rows("", shown.value, shown_written, "", "=", side);
                 how = shown.how;
             } else {
-                too_long = fmt::format("Written out in the declared quantities, it would take more than three lines; "
+                after = fmt::format("Written out in the declared quantities, it would take more than three lines; "
                                        "what follows uses ${}$ by name.\n",
                                        math(symbol));
             }
@@ -525,7 +527,7 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
             out += rows(math(symbol), shown.value, shown_written, "") + "\n";
             how = shown.how;
         }
-        out += "\\end{align*}\n" + too_long;
+        out += "\\end{align*}\n" + after;
         if (!how.empty())
             out += "The value is shown " + how + ".\n";
     }
@@ -617,6 +619,13 @@ std::string fragment_writer::places(const engine::result& first) const
         words.push_back(ordinals[n - 1]);
     }
     return equation_tag(base) + ", " + listing(words) + " lines";
+}
+
+std::optional<std::string> fragment_writer::result_ref(const engine::result& r) const
+{
+    if (r.paper.empty() || &shown_as(r) != &r)
+        return std::nullopt;
+    return fmt::format("\\ref{{{}:result:{}}}", latex_label(d_), r.name);
 }
 
 std::string fragment_writer::results() const

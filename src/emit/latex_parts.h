@@ -148,6 +148,9 @@ private:
                                const std::string& because) const;
     std::string results() const;
     const engine::result& shown_as(const engine::result& r) const;
+    /// `\ref` to `r` as the results number it (its paper's place), when they show it under
+    /// its own tag; none otherwise.
+    std::optional<std::string> result_ref(const engine::result& r) const;
     std::string places(const engine::result& first) const;
 
     // latex_claims.cpp: the checks and the paper held to account.
