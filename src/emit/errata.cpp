@@ -259,8 +259,9 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
     out += fmt::format("{} printed lines and claims of the paper, {} of them compared, in {} rows: {} agree, {} "
                        "disagree, {} undecided.",
                        n.lines, n.compared, n.rows, n.agree, n.disagree, n.undecided);
-    for (const spec::not_compared* line : n.not_compared)
-        out += fmt::format(" Not compared: {} ({}).", line->paper.value, line->because.value);
+    for (std::size_t i = 0; i < n.not_compared.size(); ++i)
+        out += fmt::format("{}{} ({}){}", i == 0 ? " Not compared: " : "; ", n.not_compared[i]->paper.value,
+                           n.not_compared[i]->because.value, i + 1 == n.not_compared.size() ? "." : "");
     out += "\n\n| Where | Kind | Item | Verdict | Printed | Derived | Finding |\n"
            "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const errata_entry& entry : errata_entries(derivations, outline)) {

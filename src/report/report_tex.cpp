@@ -59,9 +59,11 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
 
     out += "\n\\section{The paper, held to account}\\label{sec:errata}\n";
     std::string not_compared;
-    for (const spec::not_compared* line : n.not_compared)
-        not_compared += fmt::format(" Not compared: {} ({}).", emit::latex_text(line->paper.value),
-                                    emit::latex_prose(line->because.value));
+    for (std::size_t i = 0; i < n.not_compared.size(); ++i)
+        not_compared += fmt::format("{}{} ({}){}", i == 0 ? " Not compared: " : "; ",
+                                    emit::latex_text(n.not_compared[i]->paper.value),
+                                    emit::latex_prose(n.not_compared[i]->because.value),
+                                    i + 1 == n.not_compared.size() ? "." : "");
     out += fmt::format("Every equation the paper prints, and every claim its text makes about them, as transcribed "
                        "in the derivation files, compared with what is derived. The paper has {} printed lines "
                        "and claims; {} of them are compared, in {} rows: {} agree, {} disagree, {} undecided.{} "
