@@ -8,6 +8,7 @@
 #include "derivation_support.h"
 #include "emit/errata.h"
 #include "emit/latex.h"
+#include "emit/latex_parts.h"
 #include "engine/written_form.h"
 #include "engine/library.h"
 #include "spec/derivation.h"
@@ -638,4 +639,30 @@ BOOST_AUTO_TEST_CASE(a_step_that_solves_for_the_numbered_results_refers_to_them)
                said);
     BOOST_TEST(!contains(said, "\\begin{align"), said);
     BOOST_TEST(contains(said, "Substituted back, the solution satisfies each of"), said);
+}
+
+BOOST_AUTO_TEST_CASE(a_sentence_opening_with_a_sphere_s_name_keeps_its_case)
+{
+    // Footnote 10's givens and checks explain m's velocity: the sentence opens with the
+    // sphere's name, which is not capitalised into the other sphere, M. A sentence opening
+    // with the article is.
+    const std::string tex = emit::latex_fragment(derived("inelastic_space"));
+    BOOST_TEST(contains(tex, "m's velocity along the line of action is its component along"), tex);
+    BOOST_TEST(contains(tex, "m's velocity across the line of action, along $\\mathbf{t}$, is untouched"), tex);
+    BOOST_TEST(emit::detail::capitalised("a smooth wall") == "A smooth wall");
+    BOOST_TEST(emit::detail::capitalised("m's velocity") == "m's velocity");
+    BOOST_TEST(emit::detail::capitalised("the impulse") == "The impulse");
+}
+
+BOOST_AUTO_TEST_CASE(a_result_defined_as_another_quantity_by_name_shows_its_value)
+{
+    // Eq. 4: v'_{M,par} is defined as Eq. 3's v'_M of the parallel components; the step shows
+    // what that is, ((M - m) v_{M,par} + 2 m v_{m,par})/(M + m), typed from the paper's Eq. 4,
+    // rather than only referring to the result.
+    const std::string tex = emit::latex_fragment(derived("elastic_plane"));
+    const std::size_t step = tex.find("Defining $v'_{M,\\parallel}$");
+    BOOST_TEST_REQUIRE(step != std::string::npos);
+    const std::string said = tex.substr(step, tex.find("\\item", step) - step);
+    BOOST_TEST(contains(said, "\\frac{(M - m) v_{M,\\parallel} + 2 m v_{m,\\parallel}}{M + m}"), said);
+    BOOST_TEST(!contains(said, "Its value is the result below"), said);
 }

@@ -153,6 +153,16 @@ std::string one_finding(const std::vector<const engine::paper_comparison*>& clai
     return one_finding(each, agrees, labels);
 }
 
+std::string not_compared_sentence(const paper_count& n, const std::function<std::string(const std::string&)>& place,
+                                  const std::function<std::string(const std::string&)>& why)
+{
+    std::string out;
+    for (std::size_t i = 0; i < n.not_compared.size(); ++i)
+        out += fmt::format("{}{} ({}){}", i == 0 ? " Not compared: " : "; ", place(n.not_compared[i]->paper.value),
+                           why(n.not_compared[i]->because.value), i + 1 == n.not_compared.size() ? "." : "");
+    return out;
+}
+
 std::string row_verdict(const engine::derivation& d, const std::vector<std::size_t>& row)
 {
     std::string worst = "agrees";
@@ -259,9 +269,8 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
     out += fmt::format("{} printed lines and claims of the paper, {} of them compared, in {} rows: {} agree, {} "
                        "disagree, {} undecided.",
                        n.lines, n.compared, n.rows, n.agree, n.disagree, n.undecided);
-    for (std::size_t i = 0; i < n.not_compared.size(); ++i)
-        out += fmt::format("{}{} ({}){}", i == 0 ? " Not compared: " : "; ", n.not_compared[i]->paper.value,
-                           n.not_compared[i]->because.value, i + 1 == n.not_compared.size() ? "." : "");
+    const auto as_is = [](const std::string& text) { return text; };
+    out += not_compared_sentence(n, as_is, as_is);
     out += "\n\n| Where | Kind | Item | Verdict | Printed | Derived | Finding |\n"
            "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const errata_entry& entry : errata_entries(derivations, outline)) {

@@ -75,6 +75,12 @@ struct paper_count {
 };
 paper_count count_paper(const std::vector<const engine::derivation*>& derivations);
 
+/// " Not compared: <place> (<why>); <place> (<why>)." for the lines `n` counts as not
+/// compared, each place and reason set by `place` and `why` (plain, or LaTeX); empty when
+/// every line is compared.
+std::string not_compared_sentence(const paper_count& n, const std::function<std::string(const std::string&)>& place,
+                                  const std::function<std::string(const std::string&)>& why);
+
 /// How many printed lines and claims of the paper `derivations` compare: the distinct
 /// places (`paper`) their comparisons and their undecided claims name. A place is one printed line of a displayed
 /// equation ("Eq. 12, line 2"), an equation or a sentence of the text ("Sec. III C,

@@ -67,7 +67,12 @@ std::string status_text(const engine::verdict& v)
 
 std::string capitalised(std::string text)
 {
-    if (!text.empty())
+    // A one-letter name opening the sentence is a symbol, kept as written: sphere m is not
+    // sphere M ("m's velocity along the line of action").
+    const bool symbol = text.size() >= 2 && std::isalpha(static_cast<unsigned char>(text[0])) &&
+                        !std::isalpha(static_cast<unsigned char>(text[1])) && text[1] != '-';
+    const bool article = text.size() >= 2 && (text[0] == 'a' || text[0] == 'A') && text[1] == ' ';
+    if (!text.empty() && (!symbol || article))
         text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
     return text;
 }
@@ -507,7 +512,10 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
             // line), a result written out once, in the results. A result the file displays in
             // a form of its own is shown here in that form.
             const double side = latex_width(math(symbol));
-            const std::optional<std::string> numbered = displayed ? result_ref(*r) : std::nullopt;
+            // Referred to unless defined as another quantity by name (v'_{M,par} = v'_M of Eq. 3):
+            // then the value is what the step says.
+            const std::optional<std::string> numbered =
+                displayed && !GiNaC::is_a<GiNaC::symbol>(*as_written) ? result_ref(*r) : std::nullopt;
             if (numbered) {
                 after = fmt::format("Its value is the result below ({}).\n", *numbered);
             } else if (displayed || latex_lines(shown.value, order_, shown_written, std::max(content_width - side - 14, 150.0),

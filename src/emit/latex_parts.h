@@ -88,6 +88,8 @@ std::string paper_text(const std::string& paper);
 /// A verdict in bold (proven, FAILED) or italics (sampled, with its sample size).
 std::string status_text(const engine::verdict& v);
 
+/// The text with its first letter capitalised, unless it opens with a one-letter name (a
+/// symbol: "m's velocity" stays as written; the article "a" is capitalised).
 std::string capitalised(std::string text);
 
 /// Joins items as "a, b and c".

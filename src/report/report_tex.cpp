@@ -58,12 +58,9 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
             out += fmt::format("\\input{{latex/{}}}\n", d->id());
 
     out += "\n\\section{The paper, held to account}\\label{sec:errata}\n";
-    std::string not_compared;
-    for (std::size_t i = 0; i < n.not_compared.size(); ++i)
-        not_compared += fmt::format("{}{} ({}){}", i == 0 ? " Not compared: " : "; ",
-                                    emit::latex_text(n.not_compared[i]->paper.value),
-                                    emit::latex_prose(n.not_compared[i]->because.value),
-                                    i + 1 == n.not_compared.size() ? "." : "");
+    const std::string not_compared =
+        emit::not_compared_sentence(n, [](const std::string& place) { return emit::latex_text(place); },
+                                    [](const std::string& why) { return emit::latex_prose(why); });
     out += fmt::format("Every equation the paper prints, and every claim its text makes about them, as transcribed "
                        "in the derivation files, compared with what is derived. The paper has {} printed lines "
                        "and claims; {} of them are compared, in {} rows: {} agree, {} disagree, {} undecided.{} "
