@@ -432,6 +432,14 @@ BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_
     BOOST_TEST(swapped.front().find("| the values are swapped: $\\theta$ is $0^\\circ$ for $v_{1,\\perp} \\to 0$ and "
                                     "$90^\\circ$ for $v_{1,\\perp} \\to \\infty$ |") != std::string::npos,
                swapped.front());
+    // Before Eq. 12, typed from the paper: "the proportion of momentum transferred. Let tau
+    // denote the transfer rate, tau = v'_1/(v'_1 + v'_2)": that is the share the cue ball keeps.
+    // Either edit mends it, the complement or the velocities swapped: said as alternatives.
+    const std::vector<std::string> share = errata_rows_at(errata, "Sec. III C, before Eq. 12");
+    BOOST_TEST_REQUIRE(share.size() == 1u);
+    BOOST_TEST(share.front().find("| it holds with $1 - \\tau$ for $\\tau$; or $v'_{1,\\parallel}$ and "
+                                  "$v'_{2,\\parallel}$ swapped |") != std::string::npos,
+               share.front());
     // The 2nd sentence: 90 degrees is the elastic limit, eps = 1, not eps = 0: that one change.
     const std::vector<std::string> elastic = errata_rows_at(errata, "Sec. III C, after Eq. 14, 2nd sentence");
     BOOST_TEST_REQUIRE(elastic.size() == 1u);

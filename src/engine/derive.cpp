@@ -686,8 +686,12 @@ private:
             p.findings = other_regimes(claim.test, c);
         else if (!p.agrees() && c.op == relation::equal) {
             p.findings = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
-            if (auto found = complement_holds(c))
+            if (auto found = complement_holds(c)) {
+                // Either mends it: the edits of the printed side are said as the alternatives.
+                for (finding& edit : p.findings)
+                    edit.parts.insert(edit.parts.begin(), {finding::part::kind::words, "or ", {}, {}, {}});
                 p.findings.insert(p.findings.begin(), *found);
+            }
         }
         if (p.agreement.what == verdict::status::failed && p.findings.empty() && c.parts.empty() && !c.limit)
             p.findings = what_holds_instead(claim.test, c);
