@@ -292,10 +292,9 @@ std::string fragment_writer::checks() const
                 if (first && first->outcome.what == c.outcome.what)
                     continue;
             }
-            // Only a numbered result has a number to refer to.
-            const std::string where = r && !r->paper.empty()
-                                          ? fmt::format(", \\ref{{{}:result:{}}},", latex_label(d_), name)
-                                          : "";
+            // Only a numbered result, shown under its own tag, has a number to refer to.
+            const std::optional<std::string> ref = r ? result_ref(*r) : std::nullopt;
+            const std::string where = ref ? ", " + *ref + "," : "";
             out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result", status_text(c.outcome),
                                q ? math(q->symbol) : latex_text(name), where);
             std::string also;

@@ -506,14 +506,12 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
         if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
             math(*as_written, &w) != math(shown.value, shown_written)) {
             out += as_defined(math(symbol), *as_written, w);
-            // What it comes to in the declared quantities, unless that takes more than three
-            // lines: the quantity is used by name from here on (a contact point's velocity
-            // spelled out in every spin and radius, where the definition says what it is in a
-            // line), a result written out once, in the results. A result the file displays in
-            // a form of its own is shown here in that form.
+            // What it comes to: a numbered result is referred to (its value is in the results),
+            // unless it is defined as another quantity by name (v'_{M,par} = v'_M of Eq. 3), when
+            // the value is what the step says; otherwise the value, unless written out in the
+            // declared quantities it takes more than three lines (a contact point's velocity
+            // spelled out in every spin and radius): the quantity is then used by name.
             const double side = latex_width(math(symbol));
-            // Referred to unless defined as another quantity by name (v'_{M,par} = v'_M of Eq. 3):
-            // then the value is what the step says.
             const std::optional<std::string> numbered =
                 displayed && !GiNaC::is_a<GiNaC::symbol>(*as_written) ? result_ref(*r) : std::nullopt;
             if (numbered) {
