@@ -666,3 +666,28 @@ BOOST_AUTO_TEST_CASE(a_result_defined_as_another_quantity_by_name_shows_its_valu
     BOOST_TEST(contains(said, "\\frac{(M - m) v_{M,\\parallel} + 2 m v_{m,\\parallel}}{M + m}"), said);
     BOOST_TEST(!contains(said, "Its value is the result below"), said);
 }
+
+BOOST_AUTO_TEST_CASE(a_solve_for_numbered_results_of_any_derivation_refers_to_them)
+{
+    // A derivation of the test's own: two numbers from their sum a and difference b,
+    // p = (a + b)/2 and q = (a - b)/2, both numbered results ("p. 1"): the step refers to
+    // them. The same with q not numbered: the step sets the values out.
+    const auto fragment = [](const std::string& q_paper) {
+        const std::string text =
+            "id = \"halves\"\ntitle = \"t\"\n"
+            "[[symbol]]\nname = \"a\"\n[[symbol]]\nname = \"b\"\n[[symbol]]\nname = \"p\"\n[[symbol]]\nname = \"q\"\n"
+            "[[given]]\nname = \"sum\"\nequation = \"p + q = a\"\nbecause = \"s\"\n"
+            "[[given]]\nname = \"difference\"\nequation = \"p - q = b\"\nbecause = \"d\"\n"
+            "[[step]]\nsolve = [\"sum\", \"difference\"]\nfor = [\"p\", \"q\"]\n"
+            "[[result]]\nname = \"p\"\ndisplay = \"(a + b)/2\"\npaper = \"p. 1\"\n"
+            "[[result]]\nname = \"q\"\ndisplay = \"(a - b)/2\"\n" + q_paper;
+        return emit::latex_fragment(engine::derive(spec::parse_derivation(text, "halves.toml"), {}));
+    };
+    const std::string numbered = fragment("paper = \"p. 2\"\n");
+    BOOST_TEST(contains(numbered, "gives the results below (\\ref{impact:halves:result:p}; "
+                                  "\\ref{impact:halves:result:q})."),
+               numbered);
+    const std::string unnumbered = fragment("");
+    BOOST_TEST(!contains(unnumbered, "gives the results below"), unnumbered);
+    BOOST_TEST(contains(unnumbered, "gives\n\\begin{align*}"), unnumbered);
+}
