@@ -999,6 +999,32 @@ BOOST_AUTO_TEST_CASE(a_sum_of_degree_one_is_told_irreducible_and_others_are_fact
     BOOST_TEST(GiNaC::expand(r - root).is_zero());
 }
 
+BOOST_AUTO_TEST_CASE(coefficients_without_a_common_symbol_or_with_one_dividing_both_are_told_without_gcd)
+{
+    // In x: a = y + z and b = w u + 1 share no symbol, so gcd(a, b) is a number. In
+    // x y z + y w every candidate's a and b are divisible by y, the polynomial's factor.
+    const GiNaC::symbol x("x"), y("y"), z("z"), w("w"), u("u");
+    const GiNaC::ex apart = x * (y + z) + w * u + 1;
+    BOOST_TEST(engine::factor_reproducibly(apart).is_equal(GiNaC::expand(apart)));
+    const GiNaC::ex common = x * y * z + y * w;
+    const GiNaC::ex f = engine::factor_reproducibly(common);
+    BOOST_TEST(GiNaC::is_a<GiNaC::mul>(f), f);
+    BOOST_TEST(GiNaC::expand(f - common).is_zero());
+    // Asked again, the same factors (kept from the first time).
+    BOOST_TEST(engine::factor_reproducibly(common).is_equal(f));
+}
+
+BOOST_AUTO_TEST_CASE(a_factorization_is_kept_for_its_options_alone)
+{
+    // sin(x^2 - 1): left as it is by default, its argument factored with
+    // factor_options::all. Asked first without the option, the answer with it is its own.
+    const GiNaC::symbol x("x");
+    const GiNaC::ex e = GiNaC::sin(x * x - 1);
+    BOOST_TEST(engine::factor_reproducibly(e).is_equal(e));
+    const GiNaC::ex all = engine::factor_reproducibly(e, GiNaC::factor_options::all);
+    BOOST_TEST(all.is_equal(GiNaC::sin((x - 1) * (x + 1))), all);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 // A try's effort (assumptions::effort) bounds the signs it works out: a sign it cuts short

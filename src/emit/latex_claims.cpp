@@ -217,7 +217,7 @@ std::string fragment_writer::sign_text(const engine::sign_step& step) const
                                                              : finding_latex(step.why.typeset, order_);
     // The factor as a textbook writes it (factored, or collected, a root's argument too),
     // not as the proof expanded it.
-    return fmt::format("${} {} 0$ ({})", math(textbook_form(step.factor, order_).value), relation, why);
+    return fmt::format("${} {} 0$ ({})", math(textbook(step.factor).value), relation, why);
 }
 
 std::string fragment_writer::limit_text(const engine::limit_method& how) const
@@ -233,7 +233,7 @@ std::string fragment_writer::limit_text(const engine::limit_method& how) const
     }
     if (how.at_infinity && how.leading_in_inverse)
         return fmt::format("by substituting ${} = 1/t$ and letting $t \\to 0^+$: the leading term is ${}$",
-                           math(how.inverted), math(textbook_form(*how.leading_in_inverse, order_).value));
+                           math(how.inverted), math(textbook(*how.leading_in_inverse).value));
     return latex_text(how.words);
 }
 

@@ -296,7 +296,7 @@ std::pair<GiNaC::ex, const written_form*> fragment_writer::derived_form(const en
         if (const engine::result* r = d_.find_result(p.subject))
             return result_beside(d_, p, *r);
     // Else as a textbook shows it: factored, or collected (a root's argument likewise).
-    return {textbook_form(p.derived, order_).value, nullptr};
+    return {textbook(p.derived).value, nullptr};
 }
 
 // An expression or an equation as a display, broken over lines.

@@ -353,7 +353,7 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
             const auto& [unknown, value] = s.values[i];
             const engine::result* r = displayed_result(unknown);
             const bool displayed = r != nullptr;
-            const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
+            const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook(value);
             out += rows(math(unknown), shown.value, displayed ? &r->written : nullptr, "") +
                    (i + 1 < s.values.size() ? " \\\\\n" : "\n");
             if (!shown.how.empty())
@@ -419,6 +419,14 @@ std::string fragment_writer::case_condition(const engine::case_value& c) const
     return written_condition(c);
 }
 
+const textbook_value& fragment_writer::textbook(const GiNaC::ex& e) const
+{
+    auto found = textbooks_.find(e);
+    if (found == textbooks_.end())
+        found = textbooks_.emplace(e, textbook_form(e, order_)).first;
+    return found->second;
+}
+
 std::string fragment_writer::written_condition(const engine::case_value& c) const
 {
     return fmt::format("{} {} {}", math(c.written_lhs), latex_relation(c.op), math(c.written_rhs));
@@ -437,7 +445,7 @@ std::optional<std::string> fragment_writer::derived_cases_rows(const std::string
     bool fits = true;
     for (const engine::case_value& c : cases) {
         const std::vector<std::string> lines =
-            latex_lines(textbook_form(c.value, order_).value, order_, nullptr, content_width - 60);
+            latex_lines(textbook(c.value).value, order_, nullptr, content_width - 60);
         fits = fits && lines.size() <= 3 &&
                std::all_of(lines.begin(), lines.end(),
                            [](const std::string& line) { return latex_width(line) <= content_width - 40; });
@@ -452,7 +460,7 @@ std::optional<std::string> fragment_writer::derived_cases_rows(const std::string
         out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", fits ? case_condition(c) : written_condition(c), notag);
         const std::string last = i + 1 == cases.size() ? tag : "";
         if (fits)
-            out += rows(lhs, textbook_form(c.value, order_).value, nullptr, last);
+            out += rows(lhs, textbook(c.value).value, nullptr, last);
         else
             out += rows(lhs, c.as_written, &c.written, last);
     }
@@ -500,7 +508,7 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
         const engine::result* r = d_.find_result(GiNaC::ex_to<GiNaC::symbol>(symbol).get_name());
         const bool displayed = r && r->cases.empty() && !r->written.empty() &&
                                !(as_written && math(*as_written, &w) == math(r->display, &r->written));
-        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook_form(value, order_);
+        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook(value);
         const written_form* shown_written = displayed ? &r->written : nullptr;
         std::string how, after;
         if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
@@ -661,7 +669,7 @@ std::string fragment_writer::results() const
         else
             // A result its file gives no display form for: as a textbook shows it, factored
             // or collected.
-            out += rows(continued ? "" : math(r.symbol), !r.written.empty() ? r.display : textbook_form(r.display, order_).value,
+            out += rows(continued ? "" : math(r.symbol), !r.written.empty() ? r.display : textbook(r.display).value,
                         &r.written, tag, "=", widest) +
                    (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }

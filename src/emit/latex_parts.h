@@ -166,6 +166,10 @@ private:
     bool displayed(const GiNaC::ex& e, const written_form* w) const;
     std::string form(const GiNaC::ex& e, const written_form* w) const;
     std::string paper() const;
+    /// `textbook_form` of `e` in this derivation's order, kept once made: the steps, cases
+    /// and results ask for the same values again (the rough spheres' cases are factored
+    /// for whether they fit, then for their rows, then again in the results).
+    const textbook_value& textbook(const GiNaC::ex& e) const;
 
     // latex_errata.cpp: the paper held to account, in the errata table.
     enum class finding_kind { all, dimensions, changes };
@@ -185,6 +189,7 @@ private:
     const engine::derivation& d_;
     const term_order order_;
     std::map<std::string, std::string> tags_;
+    mutable std::map<GiNaC::ex, textbook_value, GiNaC::ex_is_less> textbooks_;
 };
 
 } // namespace impact::emit::detail

@@ -310,6 +310,16 @@ expansion expand_numerator(const GiNaC::ex& e)
 
 namespace {
 
+// Factorizations kept, by their options and polynomial.
+struct factored_before {
+    bool operator()(const std::pair<unsigned, GiNaC::ex>& a, const std::pair<unsigned, GiNaC::ex>& b) const
+    {
+        if (a.first != b.first)
+            return a.first < b.first;
+        return a.second.compare(b.second) < 0;
+    }
+};
+
 void gather_symbols(const GiNaC::ex& e, GiNaC::exset& out)
 {
     if (GiNaC::is_a<GiNaC::symbol>(e))
@@ -321,7 +331,11 @@ void gather_symbols(const GiNaC::ex& e, GiNaC::exset& out)
 
 // A polynomial of degree one in some symbol x, a x + b with gcd(a, b) a number, has no
 // factor but numbers: a factor would divide both a and b (Gauss's lemma). factor() takes
-// 15 to 60 ms to find that of a 20-term sum in a dozen symbols; gcd() a small part of it.
+// 15 to 60 ms to find that of a 20-term sum in a dozen symbols; gcd() a part of it, but in
+// twenty symbols, asked of each, gcd() took longer than factor(). So the symbols are tried
+// cheapest first (fewest terms in a and b), and gcd() is asked only when neither answer
+// is plain: a and b with no symbol in common have a number as gcd; a symbol dividing every
+// term of both divides the gcd.
 bool irreducible_by_degree_one(const GiNaC::ex& p)
 {
     if (!GiNaC::is_a<GiNaC::add>(p))
@@ -331,19 +345,35 @@ bool irreducible_by_degree_one(const GiNaC::ex& p)
         return false;
     GiNaC::exset symbols;
     gather_symbols(p, symbols);
-    for (const GiNaC::ex& x : symbols) {
-        if (p.degree(x) != 1 || p.ldegree(x) != 0)
+    struct split {
+        std::size_t size;
+        GiNaC::ex a, b;
+    };
+    std::vector<split> splits;
+    for (const GiNaC::ex& x : symbols)
+        if (p.degree(x) == 1 && p.ldegree(x) == 0) {
+            const GiNaC::ex a = p.coeff(x, 1), b = p.coeff(x, 0);
+            const auto terms = [](const GiNaC::ex& e) { return GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; };
+            splits.push_back({terms(a) * terms(b), a, b});
+        }
+    std::stable_sort(splits.begin(), splits.end(), [](const split& l, const split& r) { return l.size < r.size; });
+    for (const split& s : splits) {
+        GiNaC::exset in_a, in_b;
+        gather_symbols(s.a, in_a);
+        gather_symbols(s.b, in_b);
+        if (std::none_of(in_a.begin(), in_a.end(), [&](const GiNaC::ex& y) { return in_b.count(y) > 0; }))
+            return true;
+        if (std::any_of(in_a.begin(), in_a.end(), [&](const GiNaC::ex& y) {
+                return in_b.count(y) > 0 && s.a.ldegree(y) > 0 && s.b.ldegree(y) > 0;
+            }))
             continue;
-        if (GiNaC::is_a<GiNaC::numeric>(GiNaC::gcd(p.coeff(x, 1), p.coeff(x, 0))))
+        if (GiNaC::is_a<GiNaC::numeric>(GiNaC::gcd(s.a, s.b)))
             return true;
     }
     return false;
 }
 
-} // namespace
-
-// Not for threads: std::rand()'s state is the process's (Impact's workers are processes).
-GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
+GiNaC::ex factor_anew(const GiNaC::ex& e, unsigned options)
 {
     const GiNaC::ex expanded = GiNaC::expand(e);
     if (irreducible_by_degree_one(expanded))
@@ -369,6 +399,27 @@ GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
     }
     std::srand(1);
     return GiNaC::factor(e, options);
+}
+
+} // namespace
+
+// Not for threads: std::rand()'s state is the process's (Impact's workers are processes).
+// Each factorization is kept for the process: the emitters try a value collected in every
+// quantity, factoring each coefficient, and the same small polynomials come again and
+// again (the 3D rough spheres' fragment asked 3149 times for 555 polynomials; each in a
+// child process, or behind a gcd that cost as much). What is kept is what the first call
+// returned, which a second call could only return again, up to the signs and collection
+// of its factors that the callers normalise.
+GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
+{
+    static std::map<std::pair<unsigned, GiNaC::ex>, GiNaC::ex, factored_before> kept;
+    const auto key = std::make_pair(options, e);
+    if (const auto found = kept.find(key); found != kept.end())
+        return found->second;
+    // Past a bound, forgotten at once: a long run keeps no more than this many.
+    if (kept.size() >= 20000)
+        kept.clear();
+    return kept.emplace(key, factor_anew(e, options)).first->second;
 }
 
 } // namespace impact::engine
