@@ -36,7 +36,9 @@ expansion expand_numerator(const GiNaC::ex& e);
 /// is irreducible, and returned expanded without calling factor(). A polynomial in more
 /// than one symbol is factored in a child process (factor() may never return:
 /// engine/forked.h), tried in up to four orders of its terms with 1, 2, 5 and 12 s of CPU
-/// time, and returned as it is if none is enough.
+/// time, and returned as it is if none is enough. What a call returns is kept for the
+/// process (up to 20000 polynomials), and returned again when the same polynomial is asked
+/// for with the same options.
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options = 0);
 
 } // namespace impact::engine
