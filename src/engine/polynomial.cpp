@@ -310,16 +310,6 @@ expansion expand_numerator(const GiNaC::ex& e)
 
 namespace {
 
-// Factorizations kept, by their options and polynomial.
-struct factored_before {
-    bool operator()(const std::pair<unsigned, GiNaC::ex>& a, const std::pair<unsigned, GiNaC::ex>& b) const
-    {
-        if (a.first != b.first)
-            return a.first < b.first;
-        return a.second.compare(b.second) < 0;
-    }
-};
-
 void gather_symbols(const GiNaC::ex& e, GiNaC::exset& out)
 {
     if (GiNaC::is_a<GiNaC::symbol>(e))
@@ -412,14 +402,15 @@ GiNaC::ex factor_anew(const GiNaC::ex& e, unsigned options)
 // of its factors that the callers normalise.
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
 {
-    static std::map<std::pair<unsigned, GiNaC::ex>, GiNaC::ex, factored_before> kept;
-    const auto key = std::make_pair(options, e);
-    if (const auto found = kept.find(key); found != kept.end())
+    // By options, then polynomial.
+    static std::map<unsigned, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>> kept;
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& for_options = kept[options];
+    if (const auto found = for_options.find(e); found != for_options.end())
         return found->second;
     // Past a bound, forgotten at once: a long run keeps no more than this many.
-    if (kept.size() >= 20000)
-        kept.clear();
-    return kept.emplace(key, factor_anew(e, options)).first->second;
+    if (for_options.size() >= 20000)
+        for_options.clear();
+    return for_options.emplace(e, factor_anew(e, options)).first->second;
 }
 
 } // namespace impact::engine
