@@ -626,6 +626,19 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
                boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(several_changes_that_each_mend_a_printed_equation_are_said_as_alternatives)
+{
+    // y = -3x printed for y = 3x: the sign of either side mends it, each alone; the second
+    // is said as the alternative it is, not as one more edit to make.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[given]]\nname = \"g\"\nequation = \"y = 3*x\"\nprinted = \"y = -3*x\"\nbecause = \"given\"\n"
+        "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"));
+    BOOST_TEST(d.paper_checks.at(0).reconciliations ==
+                   (std::vector<std::string>{"on the left, the sign of the whole expression",
+                                             "or on the right, the sign of the whole expression"}),
+               boost::test_tools::per_element());
+}
+
 BOOST_AUTO_TEST_CASE(a_term_s_sign_in_a_quotient_says_above_or_below_the_bar)
 {
     // Eq. 12's second line on a small scale: (x + eps x)/(x + eps x + x - eps x), where
@@ -862,6 +875,98 @@ BOOST_AUTO_TEST_CASE(every_expression_read_from_the_file_carries_how_it_was_writ
     BOOST_TEST(product->factors[0].base.is_equal(one_less_eps));
     BOOST_TEST(product->factors[1].base.is_equal(y));
     BOOST_TEST(d.steps.at(0).written.empty());   // a solve step writes no expression
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// diff(f, x) in a derivation file (engine/derivative.h): taken once the derived quantities
+// are put in, in steps and claims; refused where it could not mean one thing.
+BOOST_AUTO_TEST_SUITE(derivatives)
+
+// A falling stone, not the paper's: its height h = h0 + u t - g t^2/2.
+std::string falling(const std::string& body)
+{
+    return "id = \"falling\"\ntitle = \"test\"\n"
+           "[[symbol]]\nname = \"t\"\ndomain = \"nonnegative\"\ndimension = \"time\"\n"
+           "[[symbol]]\nname = \"u\"\ndimension = \"velocity\"\n"
+           "[[symbol]]\nname = \"g\"\ndomain = \"positive\"\ndimension = \"acceleration\"\n"
+           "[[symbol]]\nname = \"h0\"\ndimension = \"length\"\n"
+           "[[symbol]]\nname = \"du\"\ndomain = \"positive\"\ndimension = \"velocity\"\n"
+           "[[symbol]]\nname = \"h\"\ndimension = \"length\"\n"
+           "[[symbol]]\nname = \"v\"\ndimension = \"velocity\"\n"
+           "[[step]]\ndefine = \"h\"\nas = \"h0 + u*t - g*t^2/2\"\n[[result]]\nname = \"h\"\n" +
+           body;
+}
+constexpr unsigned falling_lines = 31;  // lines before `body` in falling()
+
+BOOST_AUTO_TEST_CASE(a_derivative_is_taken_of_the_value_not_of_the_name)
+{
+    // dh/dt = u - g t, typed here; d^2h/dt^2 = -g; a step defines the velocity as dh/dt.
+    const engine::derivation d = derive_text(falling(
+        "[[step]]\ndefine = \"v\"\nas = \"diff(h, t)\"\n[[result]]\nname = \"v\"\n"
+        "[[check]]\nname = \"velocity\"\nclaim = \"diff(h, t) = u - g*t\"\n"
+        "[[check]]\nname = \"acceleration\"\nclaim = \"diff(diff(h, t), t) = -g\"\n"
+        "[[check]]\nname = \"at_the_top\"\nclaim = \"diff(h, t) = 0\"\nat = { t = \"u/g\" }\n"));
+    BOOST_TEST(equal(value_of(d, "v"), sym(d, "u") - sym(d, "g") * sym(d, "t")));
+    for (const char* name : {"velocity", "acceleration", "at_the_top"})
+        BOOST_TEST((check_named(d, name).outcome.what == engine::verdict::status::proven), name);
+}
+
+BOOST_AUTO_TEST_CASE(a_claim_that_a_slope_changes_agrees_when_a_point_shows_it)
+{
+    // "The slope of the height depends on the launch speed": dh/dt at u and at u + du
+    // differ (by du), so the claim that they are the same, said not to hold, agrees; the
+    // slope does not depend on the starting height, so that claim said not to hold disagrees.
+    const engine::derivation d = derive_text(falling(
+        "[[claim]]\nname = \"set_by_u\"\npaper = \"p. 1\"\nquote = \"q\"\n"
+        "claim = \"diff(h, t) = diff(h, t)\"\nleft_at = { u = \"u + du\" }\nholds = false\n"
+        "[[claim]]\nname = \"set_by_h0\"\npaper = \"p. 1\"\nquote = \"r\"\n"
+        "claim = \"diff(h, t) = diff(h, t)\"\nleft_at = { h0 = \"h0 + u*t\" }\nholds = false\n"));
+    BOOST_TEST(d.paper_checks.at(0).agrees(), engine::to_string(d.paper_checks.at(0).agreement));
+    BOOST_REQUIRE(d.paper_checks.at(0).test && d.paper_checks.at(0).test->fails_at);
+    // At the point found, the two slopes differ by du: (u + du - g t) - (u - g t).
+    const auto& at = *d.paper_checks.at(0).test->fails_at;
+    GiNaC::ex du_there;
+    for (const auto& [symbol, value] : at.point)
+        if (GiNaC::ex_to<GiNaC::symbol>(symbol).get_name() == "du")
+            du_there = value;
+    BOOST_TEST((at.lhs - at.rhs - du_there).is_zero());
+    BOOST_TEST(!d.paper_checks.at(1).agrees());
+}
+
+BOOST_AUTO_TEST_CASE(a_derivative_has_the_dimension_of_its_quotient)
+{
+    // dh/dt is a velocity: set against a length, it is refused at the check's line.
+    const impact::error e =
+        error_for(falling("[[check]]\nname = \"wrong\"\nclaim = \"diff(h, t) = h0\"\n"));
+    BOOST_TEST(e.where().line == falling_lines + 3);
+    BOOST_TEST(mentions(e, "velocity"), e.message());
+}
+
+BOOST_AUTO_TEST_CASE(a_derivative_by_a_derived_quantity_is_refused_at_its_place)
+{
+    const impact::error by_derived =
+        error_for(falling("[[check]]\nname = \"by_h\"\nclaim = \"diff(t, h) = 0\"\n"));
+    BOOST_TEST(mentions(by_derived, "diff(t, h): 'h' is derived, not an input"), by_derived.message());
+    BOOST_TEST(by_derived.where().line == falling_lines + 3);
+    const impact::error by_expression =
+        error_for(falling("[[check]]\nname = \"by_sum\"\nclaim = \"diff(h, t + u) = 0\"\n"));
+    BOOST_TEST(mentions(by_expression, "the second argument is the quantity to differentiate by"),
+               by_expression.message());
+    // In a step, at the step's expression.
+    const impact::error in_step = error_for(falling("[[step]]\ndefine = \"v\"\nas = \"diff(u, h)\"\n"));
+    BOOST_TEST(mentions(in_step, "'h' is derived, not an input"), in_step.message());
+    BOOST_TEST(in_step.where().line == falling_lines + 3);
+}
+
+BOOST_AUTO_TEST_CASE(a_derivative_of_a_quantity_defined_by_cases_is_refused)
+{
+    // v is u - g t until the stone stops rising at t = u/g, and 0 after (caught at the top):
+    // no one expression to differentiate.
+    const impact::error e = error_for(falling(
+        "[[step]]\ndefine = \"v\"\ncases = [{ when = \"g*t <= u\", as = \"u - g*t\" }, { when = \"g*t > u\", as = \"0\" }]\n"
+        "[[check]]\nname = \"jerk\"\nclaim = \"diff(v, t) = 0\"\n"));
+    BOOST_TEST(mentions(e, "'v' is defined by cases"), e.message());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -103,7 +103,7 @@ BOOST_AUTO_TEST_CASE(the_examples_use_every_kind_of_step_check_and_kernel_option
     std::set<spec::step::kind> steps;
     bool solve_rejects_by_condition = false, solve_rejects_by_domain = false;
     bool inequality = false, at = false, left_at = false, limit_to_point = false, limit_to_infinity = false,
-         assuming = false, cases = false, continuity = false;
+         assuming = false, cases = false, continuity = false, derivative = false;
     bool claim = false, use = false, new_base = false, named_combination = false;
     bool array_input = false, renamed_scalar = false, velocities = false, relative = false, velocity = false,
          velocity_times = false, forms = false, parameter_guard = false, guard_below = false,
@@ -127,6 +127,7 @@ BOOST_AUTO_TEST_CASE(the_examples_use_every_kind_of_step_check_and_kernel_option
             limit_to_infinity |= c.limit && c.limit->to_infinity;
             assuming |= !c.assuming.empty();
             continuity |= c.continuity.has_value();
+            derivative |= c.claim.value.find("diff(") != std::string::npos;
         }
         for (const spec::step& st : s.steps)
             cases |= !st.cases.empty();
@@ -169,6 +170,7 @@ BOOST_AUTO_TEST_CASE(the_examples_use_every_kind_of_step_check_and_kernel_option
     BOOST_TEST(assuming);
     BOOST_TEST(cases);
     BOOST_TEST(continuity);
+    BOOST_TEST(derivative);
     BOOST_TEST(claim);
     BOOST_TEST(use);
     BOOST_TEST(new_base);

@@ -9,6 +9,7 @@
 #include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
+#include "engine/derivative.h"
 #include "engine/written_form.h"
 #include "engine/library.h"
 #include "spec/derivation.h"
@@ -184,6 +185,22 @@ BOOST_AUTO_TEST_CASE(primes_greek_letters_and_functions)
     BOOST_TEST(emit::latex(GiNaC::acos(cos_theta), order) == "\\arccos(\\cos\\theta)");
     BOOST_TEST(emit::latex(GiNaC::acos(vperp / vpar), order) == "\\arccos\\left(\\frac{v_{1,\\perp}}{v_{1,\\parallel}}\\right)");
     BOOST_TEST(emit::latex(GiNaC::pow(m_eff, -1), order) == "\\frac{1}{m_{\\mathrm{eff}}}");
+}
+
+BOOST_AUTO_TEST_CASE(a_derivative_is_typeset_as_a_partial_derivative)
+{
+    // diff(f, x) of a derivation file, held as written (engine/derivative.h): a quantity's
+    // name over the variable, anything else after the operator in parentheses.
+    BOOST_TEST(emit::latex(engine::derivative(cos_theta, eps), order) == "\\frac{\\partial \\cos\\theta}{\\partial \\epsilon}");
+    BOOST_TEST(emit::latex(engine::derivative(vperp / vpar, vpar), order) ==
+               "\\frac{\\partial}{\\partial v_{1,\\parallel}} \\left(\\frac{v_{1,\\perp}}{v_{1,\\parallel}}\\right)");
+    BOOST_TEST(as_written("diff(cos_theta, eps)") == "\\frac{\\partial \\cos\\theta}{\\partial \\epsilon}");
+    const auto written = [this](const std::string& text) {
+        return emit::latex_as_written(
+            *engine::written_form::read(text, [this](const std::string& t) { return parse(t); }).tree(), order);
+    };
+    BOOST_TEST(written("diff(M*v_M + m*v_m, eps) = 0") ==
+               "\\frac{\\partial}{\\partial \\epsilon} (M v_{M,\\parallel} + m v_{m,\\parallel}) = 0");
 }
 
 BOOST_AUTO_TEST_CASE(cosine_sine_and_tangent_of_a_symbol_as_a_textbook_writes_them)
@@ -690,4 +707,58 @@ BOOST_AUTO_TEST_CASE(a_solve_for_numbered_results_of_any_derivation_refers_to_th
     const std::string unnumbered = fragment("");
     BOOST_TEST(!contains(unnumbered, "gives the results below"), unnumbered);
     BOOST_TEST(contains(unnumbered, "gives\n\\begin{align*}"), unnumbered);
+}
+
+BOOST_AUTO_TEST_CASE(results_that_share_a_tag_are_cited_with_their_quantity)
+{
+    // The halves again, both results printed on one page of a text ("p. 1", as Eq. 9 prints
+    // six rows): the tag alone would not tell the reader which row, so the quantity is named.
+    // A quantity defined as one an earlier step derives (r = p) refers to that step for its
+    // value instead of setting it out again.
+    const std::string text =
+        "id = \"halves\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"a\"\n[[symbol]]\nname = \"b\"\n[[symbol]]\nname = \"p\"\n[[symbol]]\nname = \"q\"\n"
+        "[[symbol]]\nname = \"r\"\n"
+        "[[given]]\nname = \"sum\"\nequation = \"p + q = a\"\nbecause = \"s\"\n"
+        "[[given]]\nname = \"difference\"\nequation = \"p - q = b\"\nbecause = \"d\"\n"
+        "[[step]]\nsolve = [\"sum\", \"difference\"]\nfor = [\"p\", \"q\"]\n"
+        "[[step]]\ndefine = \"r\"\nas = \"p\"\n"
+        "[[result]]\nname = \"p\"\ndisplay = \"(a + b)/2\"\npaper = \"p. 1\"\n"
+        "[[result]]\nname = \"q\"\ndisplay = \"(a - b)/2\"\npaper = \"p. 1\"\n"
+        "[[result]]\nname = \"r\"\n";
+    const std::string tex = emit::latex_fragment(engine::derive(spec::parse_derivation(text, "halves.toml"), {}));
+    BOOST_TEST(contains(tex, "gives the results below (\\ref{impact:halves:result:p}, $p$; "
+                             "\\ref{impact:halves:result:q}, $q$)."),
+               tex);
+    const std::size_t step = tex.find("Defining $r$");
+    BOOST_TEST_REQUIRE(step != std::string::npos);
+    const std::string said = tex.substr(step, tex.find("\\end{enumerate}", step) - step);
+    BOOST_TEST(contains(said, "r &= p\n\\end{align*}\nStep~1 gives $p$."), said);
+    BOOST_TEST(!contains(said, "\\frac{a + b}{2}"), said);
+}
+
+BOOST_AUTO_TEST_CASE(a_result_long_written_out_is_shown_as_its_step_defines_it)
+{
+    // A derivation of the test's own: k a long sum of products, and the result w = k/(k + a_1),
+    // which written out in the declared quantities breaks over lines; its step's k/(k + a_1)
+    // is one line. The results show that, and say so; a short result stays written out.
+    std::string symbols, sum;
+    for (int i = 1; i <= 9; ++i) {
+        symbols += fmt::format("[[symbol]]\nname = \"a_{0}\"\n[[symbol]]\nname = \"b_{0}\"\n[[symbol]]\nname = \"c_{0}\"\n", i);
+        sum += fmt::format("{}a_{}*b_{}*c_{}", i > 1 ? " + " : "", i, i, i);
+    }
+    const std::string text = "id = \"long\"\ntitle = \"t\"\n" + symbols +
+                             "[[symbol]]\nname = \"k\"\n[[symbol]]\nname = \"w\"\n[[symbol]]\nname = \"u\"\n"
+                             "[[step]]\ndefine = \"k\"\nas = \"" + sum + "\"\n"
+                             "[[step]]\ndefine = \"w\"\nas = \"k/(k + a_1)\"\n"
+                             "[[step]]\ndefine = \"u\"\nas = \"a_1 + a_2\"\n"
+                             "[[result]]\nname = \"w\"\n[[result]]\nname = \"u\"\n";
+    const std::string tex = emit::latex_fragment(engine::derive(spec::parse_derivation(text, "long.toml"), {}));
+    const std::size_t results = tex.find("\\paragraph{Results.}");
+    BOOST_TEST_REQUIRE(results != std::string::npos);
+    const std::string shown = tex.substr(results);
+    BOOST_TEST(contains(shown, "w &= \\frac{k}{k + a_1}"), shown);
+    BOOST_TEST(contains(shown, "u &= a_1 + a_2"), shown);
+    BOOST_TEST(contains(shown, "$w$ is shown as its step defines it, in the quantities named there"), shown);
+    BOOST_TEST(!contains(shown, "$u$ is shown"), shown);
 }

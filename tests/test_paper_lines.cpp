@@ -550,8 +550,11 @@ BOOST_AUTO_TEST_CASE(each_agreeing_row_says_how_agreement_was_established)
             continue;
         ++agreeing;
         const std::string finding = row.substr(row.rfind(" | ", row.size() - 3) + 3);
-        // "proven ...: how", never a bare "proven".
-        BOOST_TEST((finding.find("proven") != std::string::npos && finding.find(": ") != std::string::npos), row);
+        // "proven ...: how", or for a claim the paper says does not hold "refuted, as the paper
+        // says: how" (Sec. III C's steepness); never a bare "proven".
+        BOOST_TEST(((finding.find("proven") != std::string::npos || finding.rfind("refuted, as the paper says", 0) == 0) &&
+                    finding.find(": ") != std::string::npos),
+                   row);
     }
     BOOST_TEST(agreeing > 50u);
     // Eq. 1a prints M v_M + m v_m = M v'_M + m v'_m; derived, m (v_m - v'_m) = -M (v_M - v'_M):
@@ -569,6 +572,16 @@ BOOST_AUTO_TEST_CASE(each_agreeing_row_says_how_agreement_was_established)
                    .at(0)
                    .find("the sign of each factor of the difference of the sides follows from the domains") !=
                std::string::npos);
+    // The same sentence's second half, "the steepness being determined by incident
+    // perpendicular velocity": the slope d(theta)/d(eps) at v_perp and at v_perp + delta,
+    // said not to be the same, refuted at a point.
+    bool steepness = false;
+    for (const std::string& row : errata_rows_at(errata, "Sec. III C, after Eq. 14, 4th sentence"))
+        steepness = steepness || (row.find("the steepness being determined") != std::string::npos &&
+                                  row.find("| agrees |") != std::string::npos &&
+                                  row.find("\\frac{\\partial \\theta}{\\partial \\epsilon}") != std::string::npos &&
+                                  row.find("refuted, as the paper says") != std::string::npos);
+    BOOST_TEST(steepness);
 }
 
 BOOST_AUTO_TEST_CASE(appendix_a_line_1_is_reconciled_by_two_edits)

@@ -429,6 +429,13 @@ const std::map<std::string, std::string>& function_names()
     return names;
 }
 
+std::string partial_derivative(const std::string& f, const std::string& x, bool named)
+{
+    if (named)
+        return "\\frac{\\partial " + f + "}{\\partial " + x + "}";
+    return "\\frac{\\partial}{\\partial " + x + "} " + parenthesised(f);
+}
+
 // base^exponent, the base never rebuilt into a GiNaC power (see engine/order.h).
 void print_power_term(const power_term& p, const print_tex& c, unsigned level)
 {
@@ -488,6 +495,10 @@ void print_function(const GiNaC::function& f, const print_tex& c)
     if (name == "abs") {
         const std::string inner = render(f.op(0), c, 0);
         c.s << (is_tall(inner) ? "\\left|" + inner + "\\right|" : "|" + inner + "|");
+        return;
+    }
+    if (name == "diff") {
+        c.s << partial_derivative(render(f.op(0), c, 0), render(f.op(1), c, 0), GiNaC::is_a<GiNaC::symbol>(f.op(0)));
         return;
     }
     const auto known = function_names().find(name);

@@ -257,28 +257,55 @@ std::string fragment_writer::step_checks(const engine::step_result& s) const
     return out;
 }
 
-std::string fragment_writer::steps() const
+std::vector<int> fragment_writer::step_items() const
 {
-    if (d_.steps.empty())
-        return "";
-    // Givens that state their unknowns' values already (M = m, v_M = 0): nothing to solve
-    // and no equation to show, so not a numbered step: said once, before the steps.
-    std::string before, out;
+    std::vector<int> items(d_.steps.size(), 0);
+    int listed = 0;
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
         const engine::step_result& s = d_.steps[i];
         const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
-        const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
-        // Before any numbered step only: "substituted in what follows" is then true of all.
-        if (out.empty() && s.what == spec::step::kind::solve && source && s.solutions.size() <= 1 &&
-            givens_state(s, *source)) {
-            before += solve_step(s, source, because);   // its words, unnumbered
+        // Givens that state their unknowns' values already (M = m, v_M = 0): nothing to solve
+        // and no equation to show; before any listed step only, where "substituted in what
+        // follows" is true of all.
+        if (listed == 0 && s.what == spec::step::kind::solve && source && s.solutions.size() <= 1 &&
+            givens_state(s, *source))
             continue;
-        }
         // A copy of a quantity under another name (τ again, to compare with another printed
         // line): the same symbol, the same value, nothing for the reader to follow.
         if (s.what == spec::step::kind::define && s.values.size() == 1 && s.as_written &&
             math(*s.as_written) == math(s.values[0].first))
             continue;
+        items[i] = ++listed;
+    }
+    return items;
+}
+
+int fragment_writer::item_deriving(const GiNaC::ex& symbol) const
+{
+    const std::vector<int> items = step_items();
+    for (std::size_t i = 0; i < d_.steps.size(); ++i)
+        for (const auto& value : d_.steps[i].values)
+            if (value.first.is_equal(symbol))
+                return items[i];
+    return 0;
+}
+
+std::string fragment_writer::steps() const
+{
+    if (d_.steps.empty())
+        return "";
+    const std::vector<int> items = step_items();
+    std::string before, out;
+    for (std::size_t i = 0; i < d_.steps.size(); ++i) {
+        const engine::step_result& s = d_.steps[i];
+        const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
+        const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
+        if (items[i] == 0) {
+            // Givens that state their values: said once, in words, before the steps.
+            if (s.what == spec::step::kind::solve)
+                before += solve_step(s, source, because);
+            continue;
+        }
         out += "\\item ";
         switch (s.what) {
         case spec::step::kind::solve: out += solve_step(s, source, because); break;
@@ -335,7 +362,7 @@ std::string fragment_writer::solve_step(const engine::step_result& s, const spec
     std::vector<std::string> numbered;
     for (const auto& [unknown, value] : s.values)
         if (const engine::result* r = displayed_result(unknown))
-            if (const auto ref = result_ref(*r))
+            if (const auto ref = result_cited(*r))
                 numbered.push_back(*ref);
     std::string out;
     if (!numbered.empty() && numbered.size() == s.values.size() && s.solutions.size() <= 1) {
@@ -521,8 +548,13 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
             // spelled out in every spin and radius): the quantity is then used by name.
             const double side = latex_width(math(symbol));
             const std::optional<std::string> numbered =
-                displayed && !GiNaC::is_a<GiNaC::symbol>(*as_written) ? result_ref(*r) : std::nullopt;
-            if (numbered) {
+                displayed && !GiNaC::is_a<GiNaC::symbol>(*as_written) ? result_cited(*r) : std::nullopt;
+            // Defined as a quantity an earlier step derives (v'_{M,perp} = v_{M,perp}, which
+            // the rotation of step 1 gives): its value is there, not set out again.
+            const int earlier = GiNaC::is_a<GiNaC::symbol>(*as_written) ? item_deriving(*as_written) : 0;
+            if (earlier > 0) {
+                after = fmt::format("Step~{} gives ${}$.\n", earlier, math(*as_written));
+            } else if (numbered) {
                 after = fmt::format("Its value is the result below ({}).\n", *numbered);
             } else if (displayed || latex_lines(shown.value, order_, shown_written, std::max(content_width - side - 14, 150.0),
                                          std::max(content_width - side - 20, 150.0))
@@ -642,6 +674,18 @@ std::optional<std::string> fragment_writer::result_ref(const engine::result& r) 
     return fmt::format("\\ref{{{}:result:{}}}", latex_label(d_), r.name);
 }
 
+std::optional<std::string> fragment_writer::result_cited(const engine::result& r) const
+{
+    const std::optional<std::string> ref = result_ref(r);
+    if (!ref)
+        return ref;
+    const std::string tag = places(r);
+    for (const engine::result& other : d_.results)
+        if (&other != &r && !other.paper.empty() && &shown_as(other) == &other && places(other) == tag)
+            return *ref + ", $" + math(r.symbol) + "$";
+    return ref;
+}
+
 std::string fragment_writer::results() const
 {
     if (d_.results.empty())
@@ -651,6 +695,7 @@ std::string fragment_writer::results() const
         if (&shown_as(r) == &r)
             shown.push_back(&r);
     std::string out = "\n\\paragraph{Results.}\n\\begin{align}\n";
+    std::vector<std::string> as_defined;   // results shown as their steps define them
     double widest = 0;
     for (const engine::result* r : shown)
         widest = std::max(widest, latex_width(math(r->symbol)));
@@ -664,16 +709,53 @@ std::string fragment_writer::results() const
         // The paper's own numbering, as cited: several results of one printed line share it.
         if (!r.paper.empty())
             tag = fmt::format("\\tag*{{{}}}\\label{{{}:result:{}}}", places(r), latex_label(d_), r.name);
-        if (!r.cases.empty())
+        if (!r.cases.empty()) {
             out += *derived_cases_rows(math(r.symbol), r.cases, tag, true) + (i + 1 < shown.size() ? " \\\\\n" : "\n");
-        else
-            // A result its file gives no display form for: as a textbook shows it, factored
-            // or collected.
-            out += rows(continued ? "" : math(r.symbol), !r.written.empty() ? r.display : textbook(r.display).value,
-                        &r.written, tag, "=", widest) +
-                   (i + 1 < shown.size() ? " \\\\\n" : "\n");
+            continue;
+        }
+        // A result its file gives no display form for: as a textbook shows it, factored or
+        // collected; or, when that takes more than one line, as its step defines it, in the
+        // quantities the step names, when that is shorter (the rough spheres' v'_{M,x} =
+        // v_{M,x} - (J_n n_x + J_{t,x})/M, three lines written out).
+        GiNaC::ex value = !r.written.empty() ? r.display : textbook(r.display).value;
+        const written_form* written = &r.written;
+        if (r.written.empty())
+            if (const engine::step_result* s = defining_step(r.symbol)) {
+                // Lines it takes, a line too wide for the page (a long quotient) counted as two.
+                const double first = std::max(content_width - widest - 14 - 60, 150.0);
+                const auto line_count = [&](const GiNaC::ex& e, const written_form* w) {
+                    const std::vector<std::string> lines = latex_lines(e, order_, w, first, first);
+                    return lines.size() + (latex_width(lines.front()) > first ? 1 : 0);
+                };
+                const std::size_t written_out = line_count(value, written);
+                if (written_out > 1 && line_count(*s->as_written, &s->written) < written_out) {
+                    value = *s->as_written;
+                    written = &s->written;
+                    as_defined.push_back("$" + math(r.symbol) + "$");
+                }
+            }
+        out += rows(continued ? "" : math(r.symbol), value, written, tag, "=", widest) +
+               (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }
-    return out + "\\end{align}\n";
+    out += "\\end{align}\n";
+    if (!as_defined.empty())
+        out += fmt::format("{} {} shown as {} step{} define{} {}, in the quantities named there: written out in the "
+                           "declared quantities, {} would take more lines.\n",
+                           capitalised(listing(as_defined)), as_defined.size() == 1 ? "is" : "are",
+                           as_defined.size() == 1 ? "its" : "their", as_defined.size() == 1 ? "" : "s",
+                           as_defined.size() == 1 ? "s" : "", as_defined.size() == 1 ? "it" : "them",
+                           as_defined.size() == 1 ? "it" : "each");
+    return out;
+}
+
+// The define step that derives `symbol` as a single expression, written in the file.
+const engine::step_result* fragment_writer::defining_step(const GiNaC::ex& symbol) const
+{
+    for (const engine::step_result& s : d_.steps)
+        if (s.what == spec::step::kind::define && s.cases.empty() && s.as_written && s.values.size() == 1 &&
+            s.values[0].first.is_equal(symbol))
+            return &s;
+    return nullptr;
 }
 
 } // namespace detail

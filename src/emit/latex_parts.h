@@ -44,6 +44,10 @@ bool is_tall(const std::string& math);
 /// GiNaC's function names and their LaTeX (acos → \arccos).
 const std::map<std::string, std::string>& function_names();
 
+/// ∂f/∂x, diff(f, x) of the derivation files: \frac{\partial \theta}{\partial \epsilon} when f is
+/// a quantity's name (`named`), else \frac{\partial}{\partial x} before f in parentheses.
+std::string partial_derivative(const std::string& f, const std::string& x, bool named);
+
 /// An intermediate value as a textbook shows it: factored, or collected in one quantity
 /// with each coefficient factored, whichever prints shortest, when clearly shorter than
 /// `value` as it is (proven equal to it); `how` says which, in LaTeX prose, and is empty
@@ -122,6 +126,11 @@ private:
     std::string givens() const;
     std::string step_checks(const engine::step_result& s) const;
     std::string steps() const;
+    /// Each step's number in the enumerated list; 0 for a step not listed (givens that state
+    /// their unknowns' values, said before the list; a copy of a quantity under another name).
+    std::vector<int> step_items() const;
+    /// The number of the listed step that derives `symbol` (solves for it or defines it), or 0.
+    int item_deriving(const GiNaC::ex& symbol) const;
     std::string as_defined(const std::string& lhs, const GiNaC::ex& value, const written_form& w) const;
     bool givens_state(const engine::step_result& s, const spec::step& source) const;
     std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;
@@ -150,9 +159,13 @@ private:
                                const std::string& because) const;
     std::string results() const;
     const engine::result& shown_as(const engine::result& r) const;
+    const engine::step_result* defining_step(const GiNaC::ex& symbol) const;
     /// `\ref` to `r` as the results number it (its paper's place), when they show it under
     /// its own tag; none otherwise.
     std::optional<std::string> result_ref(const engine::result& r) const;
+    /// result_ref, and the quantity beside it when other results share its tag (Eq. 9's six
+    /// rows): "Eq. (9), $v'_{M,x}$". For a step, whose reader looks below for one row.
+    std::optional<std::string> result_cited(const engine::result& r) const;
     std::string places(const engine::result& first) const;
 
     // latex_claims.cpp: the checks and the paper held to account.

@@ -159,6 +159,10 @@ private:
             return "\\sqrt{" + args + "}";
         if (n.name == "abs")
             return detail::is_tall(args) ? "\\left|" + args + "\\right|" : "|" + args + "|";
+        if (n.name == "diff" && n.children.size() == 2)
+            return detail::partial_derivative(bare(n.children[0]), bare(n.children[1]),
+                                              n.children[0].what == node::kind::atom &&
+                                                  GiNaC::is_a<GiNaC::symbol>(n.children[0].value));
         const auto known = detail::function_names().find(n.name);
         const std::string name =
             known != detail::function_names().end() ? known->second : "\\operatorname{" + n.name + "}";

@@ -2,6 +2,7 @@
 
 #include "engine/cases.h"
 #include "engine/declarations.h"
+#include "engine/derivative.h"
 #include "engine/infix.h"
 #include "engine/dimensional.h"
 #include "engine/kernel_build.h"
@@ -77,7 +78,8 @@ private:
         const auto known = resolved_.find(e);
         if (known != resolved_.end())
             return known->second;
-        const GiNaC::ex now = substituted(e, out_.symbols.abbreviations());
+        // diff(f, x) is taken once f is in the inputs (engine/derivative.h).
+        const GiNaC::ex now = derivatives_taken(substituted(e, out_.symbols.abbreviations()));
         resolved_.emplace(e, now);
         return now;
     }
@@ -101,6 +103,35 @@ private:
     {
         values_[symbol] = value;
         resolved_.clear();
+    }
+
+    // diff(f, x) as the file writes it: x an input (no step derives it, no abbreviation
+    // stands for it), and f free of quantities defined by cases, which have no one value to
+    // differentiate.
+    void check_derivatives(const GiNaC::ex& e, const source_location& where) const
+    {
+        if (!has_derivative(e))
+            return;
+        if (is_derivative(e)) {
+            const GiNaC::ex& x = e.op(1);
+            const std::string written = fmt::format("diff({}, {})", out_.symbols.text(e.op(0)), out_.symbols.text(x));
+            if (!GiNaC::is_a<GiNaC::symbol>(x))
+                throw error(where, fmt::format("{}: the second argument is the quantity to differentiate by, a "
+                                               "declared symbol's name",
+                                               written));
+            if (values_.count(x) || cases_.count(x) || out_.symbols.abbreviations().count(x))
+                throw error(where, fmt::format("{}: '{}' is derived, not an input; differentiate by a quantity it is "
+                                               "derived from",
+                                               written, out_.symbols.text(x)));
+            const GiNaC::ex f = substituted(e.op(0), out_.symbols.abbreviations());
+            for (const auto& [symbol, pieces] : cases_)
+                if (f.has(symbol))
+                    throw error(where, fmt::format("{}: '{}' is defined by cases, and a derivative is taken of one "
+                                                   "expression only",
+                                                   written, out_.symbols.text(symbol)));
+        }
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            check_derivatives(e.op(i), where);
     }
 
     engine::resolver resolver() const
@@ -235,6 +266,7 @@ private:
         r.description = fmt::format("define {} = {}", st.name.value, st.expression.value);
         // Radicals of squares come out by the declared signs: sqrt(u^2) = u for u >= 0.
         r.as_written = out_.symbols.parse(st.expression);
+        check_derivatives(*r.as_written, st.expression.where);
         r.written = written(st.expression);
         const GiNaC::ex value = simplified(resolve(*r.as_written), declared_assumptions(out_.symbols, run_));
         set_value(s, value);
@@ -441,6 +473,8 @@ private:
         c.because = spec_check.because.value;
         c.where = spec_check.claim.where;
         const claim_sides sides = out_.symbols.parse_claim(spec_check.claim);
+        check_derivatives(sides.lhs, spec_check.claim.where);
+        check_derivatives(sides.rhs, spec_check.claim.where);
         c.written = written(spec_check.claim);
         c.op = sides.op;
         c.stated = sides.lhs == sides.rhs;
@@ -687,9 +721,11 @@ private:
         else if (!p.agrees() && c.op == relation::equal) {
             p.findings = reconcile_expression(c.stated.rhs(), c.lhs, out_.symbols, resolver(), run_);
             if (auto found = complement_holds(c)) {
-                // Either mends it: the edits of the printed side are said as the alternatives.
-                for (finding& edit : p.findings)
-                    edit.parts.insert(edit.parts.begin(), {finding::part::kind::words, "or ", {}, {}, {}});
+                // Either mends it: the edits of the printed side are said as the alternatives
+                // (the second and later already are, to each other).
+                if (!p.findings.empty())
+                    p.findings.front().parts.insert(p.findings.front().parts.begin(),
+                                                    {finding::part::kind::words, "or ", {}, {}, {}});
                 p.findings.insert(p.findings.begin(), *found);
             }
         }

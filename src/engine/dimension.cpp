@@ -372,6 +372,11 @@ private:
         const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
         if (name == "abs")
             return of(e.op(0));
+        // ∂f/∂x (engine/derivative.h): f's dimension over x's.
+        if (name == "diff") {
+            const auto f = of(e.op(0)), x = of(e.op(1));
+            return f && x ? std::optional<dimension>(*f / *x) : std::nullopt;
+        }
         if (name == "select_positive") {
             // A quantity defined by cases: the condition's dimension is its own; the two
             // values share one, the result's.

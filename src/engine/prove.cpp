@@ -367,7 +367,10 @@ std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation
             }
         return added;
     };
-    add_symbols(a - b);
+    // Both sides' symbols, also those their difference cancels (u + du - g t against u - g t):
+    // each side must come to a number at the point.
+    add_symbols(a);
+    add_symbols(b);
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> constrained;   // an abbreviation and its definition in the inputs
     std::set<GiNaC::ex, GiNaC::ex_is_less> taken;
     for (bool more = true; more;) {

@@ -341,9 +341,14 @@ std::vector<finding> search(std::vector<candidate> all, const symbol_table& symb
         for (auto& [form, change] : by_form)
             found.emplace(std::move(change.first), std::move(change.second));
     }
+    // Each change reconciles the two alone: after the first, each is said as an alternative
+    // ("...; or ..."), never read as one more edit to make.
     std::vector<finding> out;
-    for (auto& [text, change] : found)
+    for (auto& [text, change] : found) {
+        if (!out.empty())
+            change.parts.insert(change.parts.begin(), {finding::part::kind::words, "or ", {}, {}, {}});
         out.push_back(std::move(change));
+    }
     return out;
 }
 

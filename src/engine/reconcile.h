@@ -8,7 +8,9 @@
 // dimension missing, a factor of 2, the reciprocal — and reports each edit after which
 // the printed form is proven equal to (or, for an equation, equivalent to) the derived
 // one; when no single edit does, each pair of edits that does (Appendix A's first line:
-// the squares, and M for m), a pair that makes the same form as another said once.
+// the squares, and M for m), a pair that makes the same form as another said once. Each
+// change found mends the form alone: after the first, each is said as an alternative
+// ("or ...").
 // Candidates are screened at exact rational points and confirmed with normal(); the list
 // is sorted, so the report is the same on every run.
 #pragma once
