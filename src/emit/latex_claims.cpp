@@ -485,9 +485,16 @@ std::string fragment_writer::paper() const
                     }
                     displays += checked_display(*c.test);
                 }
+            // A claim the paper says does not hold agrees by being refuted, not proven.
+            const bool refuted = std::all_of(row.begin(), row.end(), [&](std::size_t k) {
+                const engine::paper_comparison& c = d_.paper_checks[k];
+                return c.test && c.test->said_false;
+            });
+            const std::string how = refuted ? "refuted, as the paper says" : "proven";
             const std::string checked =
-                proven.empty() ? "" : " (proven: " + fmt::format("{}", fmt::join(proven, "; ")) + ")";
-            const std::string also = displays.empty() ? "" : (proven.empty() ? "; proven:" : "; and proven:") + displays;
+                proven.empty() ? "" : " (" + how + ": " + fmt::format("{}", fmt::join(proven, "; ")) + ")";
+            const std::string also =
+                displays.empty() ? "" : (proven.empty() ? "; " + how + ":" : "; and " + how + ":") + displays;
             out += after_display ? "It agrees" + checked + (also.empty() ? ".\n" : also)
                                  : " --- agrees" + checked + (also.empty() ? ".\n" : also);
             continue;
