@@ -959,6 +959,23 @@ BOOST_AUTO_TEST_CASE(a_derivative_by_a_derived_quantity_is_refused_at_its_place)
     BOOST_TEST(in_step.where().line == falling_lines + 3);
 }
 
+BOOST_AUTO_TEST_CASE(a_derivative_refused_where_a_result_or_a_case_holds_it_is_told_at_its_place)
+{
+    // In a result's display form, the derivative by a derived quantity is refused at the
+    // result; in a case's value, the derivative of a quantity defined by cases at the step.
+    const impact::error in_result =
+        error_for(falling("[[symbol]]\nname = \"w\"\n[[step]]\ndefine = \"w\"\nas = \"u\"\n"
+                          "[[result]]\nname = \"w\"\ndisplay = \"diff(u*h, h)\"\n"));
+    BOOST_TEST(in_result.where().line > falling_lines, in_result.message());
+    BOOST_TEST(mentions(in_result, "differentiates with respect to an input quantity"), in_result.message());
+    const impact::error in_case = error_for(falling(
+        "[[step]]\ndefine = \"v\"\ncases = [{ when = \"g*t <= u\", as = \"u - g*t\" }, { when = \"g*t > u\", as = \"0\" }]\n"
+        "[[symbol]]\nname = \"w\"\n[[step]]\ndefine = \"w\"\ncases = [{ when = \"g*t <= u\", as = \"diff(v, t)\" }, "
+        "{ when = \"g*t > u\", as = \"0\" }]\n"));
+    BOOST_TEST(in_case.where().line > falling_lines, in_case.message());
+    BOOST_TEST(mentions(in_case, "'v' is defined by cases"), in_case.message());
+}
+
 BOOST_AUTO_TEST_CASE(a_derivative_of_a_quantity_defined_by_cases_is_refused)
 {
     // v is u - g t until the stone stops rising at t = u/g, and 0 after (caught at the top):

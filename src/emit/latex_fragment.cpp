@@ -720,7 +720,8 @@ std::string fragment_writer::results() const
         GiNaC::ex value = !r.written.empty() ? r.display : textbook(r.display).value;
         const written_form* written = &r.written;
         if (r.written.empty())
-            if (const engine::step_result* s = defining_step(r.symbol)) {
+            if (const engine::step_result* s = defining_step(r.symbol);
+                s && !GiNaC::is_a<GiNaC::symbol>(*s->as_written)) {   // a bare name is no value
                 // Lines it takes, a line too wide for the page (a long quotient) counted as two.
                 const double first = std::max(content_width - widest - 14 - 60, 150.0);
                 const auto line_count = [&](const GiNaC::ex& e, const written_form* w) {

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <iterator>
 #include <set>
 
@@ -41,13 +42,27 @@ public:
             add_given(g);
         for (const spec::step& st : s.steps)
             run_step(st);
+        // A fault found while putting values in (a diff by a quantity a later step derives)
+        // is told at its place.
         for (const spec::result& r : s.results)
-            add_result(r);
+            try {
+                add_result(r);
+            } catch (...) {
+                rethrow_at(r.name.where, fmt::format("result '{}'", r.name.value));
+            }
         locate_by_members();
         for (const spec::check& c : s.checks)
-            out_.checks.push_back(run_check(c));
+            try {
+                out_.checks.push_back(run_check(c));
+            } catch (...) {
+                rethrow_at(c.claim.where, fmt::format("check '{}'", c.name.value));
+            }
         for (const spec::claim& c : s.claims)
-            out_.paper_checks.push_back(hold_to_account(c));
+            try {
+                out_.paper_checks.push_back(hold_to_account(c));
+            } catch (...) {
+                rethrow_at(c.test.claim.where, fmt::format("claim '{}'", c.test.name.value));
+            }
         find_swapped_values(out_.paper_checks);
         // A kernel computes a quantity defined by cases as a select of its cases' values,
         // each as the file writes it (its quantities replaced by their values), not as
@@ -65,7 +80,11 @@ public:
             return resolve(e).subs(selects, GiNaC::subs_options::no_pattern);
         };
         for (const spec::kernel& k : s.kernels)
-            out_.kernels.push_back(build_kernel(k, out_, in_kernels, run_));
+            try {
+                out_.kernels.push_back(build_kernel(k, out_, in_kernels, run_));
+            } catch (...) {
+                rethrow_at(k.name.where, fmt::format("kernel '{}'", k.name.value));
+            }
         return std::move(out_);
     }
 
@@ -78,8 +97,18 @@ private:
         const auto known = resolved_.find(e);
         if (known != resolved_.end())
             return known->second;
-        // diff(f, x) is taken once f is in the inputs (engine/derivative.h).
-        const GiNaC::ex now = derivatives_taken(substituted(e, out_.symbols.abbreviations()));
+        // diff(f, x) is taken once f is in the inputs (engine/derivative.h); never of a
+        // quantity defined by cases, which stays a symbol here and would differentiate to 0.
+        const GiNaC::ex put_in = substituted(e, out_.symbols.abbreviations());
+        if (has_derivative(put_in))
+            for (GiNaC::const_preorder_iterator it = put_in.preorder_begin(); it != put_in.preorder_end(); ++it)
+                if (is_derivative(*it))
+                    for (const auto& [symbol, pieces] : cases_)
+                        if (it->op(0).has(symbol))
+                            throw std::invalid_argument(fmt::format(
+                                "diff: '{}' is defined by cases, and a derivative is taken of one expression only",
+                                out_.symbols.text(symbol)));
+        const GiNaC::ex now = derivatives_taken(put_in);
         resolved_.emplace(e, now);
         return now;
     }
