@@ -7,10 +7,12 @@
 #include "derivation_support.h"
 #include "emit/errata.h"
 #include "emit/latex.h"
+#include "emit/terminal.h"
 #include "engine/derive.h"
 #include "engine/forked.h"
 #include "engine/polynomial.h"
 #include "engine/prove.h"
+#include "engine/references.h"
 #include "engine/sign.h"
 #include "engine/library.h"
 #include "engine/normal_form.h"
@@ -626,6 +628,35 @@ BOOST_AUTO_TEST_CASE(a_misprinted_symbol_is_found_as_the_smallest_change)
                boost::test_tools::per_element());
 }
 
+BOOST_AUTO_TEST_CASE(a_reference_agrees_when_cited_by_its_authors_once_each_with_a_year)
+{
+    // A fictional paper's list: entry 1 is cited beside its author's name; entry 2 names an
+    // author twice, prints no year and is cited nowhere; entry 3 is cited beside a name it
+    // does not list. Authors end at the first period after a word ("J. Doe" keeps its initial).
+    BOOST_TEST(engine::reference_authors("J. Doe, R Roe, and Q Poe. A Title. 1999.") ==
+                   (std::vector<std::string>{"J. Doe", "R Roe", "Q Poe"}),
+               boost::test_tools::per_element());
+    const spec::derivation d = spec::parse_derivation(
+        derivation_text("[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n"
+                        "[[reference]]\npaper = \"Note 1\"\nnumber = 1\nentry = \"Ada Lovelace. Notes. 1843.\"\n"
+                        "[[reference]]\npaper = \"Note 2\"\nnumber = 2\nentry = \"Max Planck and M Planck. Heat. Leipzig.\"\n"
+                        "[[reference]]\npaper = \"Note 3\"\nnumber = 3\nentry = \"Emmy Noether. Invariants, 1918.\"\n"
+                        "[[citation]]\npaper = \"Sec. 1\"\nquote = \"Lovelace's notes1\"\ncites = 1\nnames = \"Lovelace\"\n"
+                        "[[citation]]\npaper = \"Sec. 2\"\nquote = \"Hilbert's theorem3\"\ncites = 3\nnames = \"Hilbert\"\n"),
+        "refs.toml");
+    const std::vector<engine::text_comparison> t = engine::text_comparisons(d);
+    BOOST_TEST_REQUIRE(t.size() == 3u);
+    using outcome = engine::text_comparison::outcome;
+    BOOST_TEST((t[0].verdict == outcome::agrees), t[0].finding);
+    BOOST_TEST(t[0].finding == "cited at Sec. 1 (beside Lovelace); its authors (Ada Lovelace) each named once, and its "
+                               "year 1843");
+    BOOST_TEST((t[1].verdict == outcome::disagrees));
+    BOOST_TEST(t[1].finding == "no place of the text or the notes cites it (its mark 2 appears nowhere); it names one "
+                               "author twice (Max Planck and M Planck); it prints no year");
+    BOOST_TEST((t[2].verdict == outcome::disagrees));
+    BOOST_TEST(t[2].finding == "Sec. 2 cites it beside Hilbert, whom it does not name among its authors (Emmy Noether)");
+}
+
 BOOST_AUTO_TEST_CASE(several_changes_that_each_mend_a_printed_equation_are_said_as_alternatives)
 {
     // y = -3x printed for y = 3x: the sign of either side mends it, each alone; the second
@@ -637,6 +668,11 @@ BOOST_AUTO_TEST_CASE(several_changes_that_each_mend_a_printed_equation_are_said_
                    (std::vector<std::string>{"on the left, the sign of the whole expression",
                                              "or on the right, the sign of the whole expression"}),
                boost::test_tools::per_element());
+    // The terminal labels the alternative as one: "or reconciled by", not a bare "or".
+    const std::string said = emit::terminal_text(d);
+    BOOST_TEST(said.find("      reconciled by: on the left, the sign of the whole expression\n"
+                         "      or reconciled by: on the right, the sign of the whole expression\n") != std::string::npos,
+               said);
 }
 
 BOOST_AUTO_TEST_CASE(a_term_s_sign_in_a_quotient_says_above_or_below_the_bar)
@@ -931,7 +967,10 @@ BOOST_AUTO_TEST_CASE(a_claim_that_a_slope_changes_agrees_when_a_point_shows_it)
         if (GiNaC::ex_to<GiNaC::symbol>(symbol).get_name() == "du")
             du_there = value;
     BOOST_TEST((at.lhs - at.rhs - du_there).is_zero());
+    // The slope is proven not to depend on h0: the claim holds where the paper says it does not.
     BOOST_TEST(!d.paper_checks.at(1).agrees());
+    BOOST_TEST(d.paper_checks.at(1).agreement.method.rfind("it holds, where the paper says it does not", 0) == 0,
+               d.paper_checks.at(1).agreement.method);
 }
 
 BOOST_AUTO_TEST_CASE(a_derivative_has_the_dimension_of_its_quotient)
@@ -957,6 +996,18 @@ BOOST_AUTO_TEST_CASE(a_derivative_by_a_derived_quantity_is_refused_at_its_place)
     const impact::error in_step = error_for(falling("[[step]]\ndefine = \"v\"\nas = \"diff(u, h)\"\n"));
     BOOST_TEST(mentions(in_step, "'h' is derived, not an input"), in_step.message());
     BOOST_TEST(in_step.where().line == falling_lines + 3);
+    // In a value put into a claim (at, left_at, a limit's point), where its variable would
+    // not stay free: refused at the line of the value.
+    const impact::error in_at =
+        error_for(falling("[[check]]\nname = \"at_slope\"\nclaim = \"h = h0\"\nat = { t = \"diff(h, u)\" }\n"));
+    BOOST_TEST(mentions(in_at, "at's value 'diff(h, u)' takes a derivative"), in_at.message());
+    BOOST_TEST(in_at.where().line == falling_lines + 4);
+    const impact::error in_left_at = error_for(
+        falling("[[check]]\nname = \"left_slope\"\nclaim = \"h = h\"\nleft_at = { u = \"diff(u*t, t)\" }\n"));
+    BOOST_TEST(mentions(in_left_at, "left_at's value"), in_left_at.message());
+    const impact::error in_limit = error_for(
+        falling("[[check]]\nname = \"lim_slope\"\nclaim = \"h = h0\"\nlimit = \"t -> diff(u*t, t)\"\n"));
+    BOOST_TEST(mentions(in_limit, "the limit's point"), in_limit.message());
 }
 
 BOOST_AUTO_TEST_CASE(a_derivative_refused_where_a_result_or_a_case_holds_it_is_told_at_its_place)

@@ -355,6 +355,8 @@ const std::map<std::string, std::set<std::string>> fields_read = {
     {"[[check]]", {"name", "claim", "continuity", "because", "at", "left_at", "limit", "assuming"}},
     {"[[claim]]", {"name", "claim", "because", "at", "left_at", "limit", "assuming", "paper", "quote", "mended", "holds", "label", "undecided"}},
     {"[[not_compared]]", {"paper", "because"}},
+    {"[[reference]]", {"paper", "number", "entry"}},
+    {"[[citation]]", {"paper", "quote", "cites", "names"}},
     {"[[kernel]]", {"name", "inputs", "outputs", "velocities", "error", "forms", "guards", "substitute", "let",
                     "batch", "fixed"}},
     {"[[kernel.bound]]", {"output", "type", "form", "ulps", "because"}},

@@ -391,8 +391,8 @@ BOOST_AUTO_TEST_CASE(a_value_with_roots_and_absolute_values_is_shown_collected)
     // (1 - q b)(a_x v - a_y u)) / ((1 + q)|a|), the six-term sum collected in R; and k with
     // the absolute value's argument factored and the rest collected in mu.
     const std::string tex = emit::latex_fragment(impact::testing::derive_file("tests/solve/tilted_spin.toml"));
-    BOOST_TEST(contains(tex, "v'_t &= \\frac{R q \\omega (1 + \\beta) \\sqrt{a^{2}_x + a^{2}_y} + (1 - q \\beta) (a_x v - a_y u)}"
-                             "{(1 + q) \\sqrt{a^{2}_x + a^{2}_y}}"),
+    BOOST_TEST(contains(tex, "v'_t &= \\frac{R q \\omega (1 + \\beta) \\sqrt{a^{2}_{x} + a^{2}_{y}} + (1 - q \\beta) (a_{x} v - a_{y} u)}"
+                             "{(1 + q) \\sqrt{a^{2}_{x} + a^{2}_{y}}}"),
                tex);
     BOOST_TEST(contains(tex, "\\mu g (1 + q) (1 + \\beta)"), tex);
     BOOST_TEST(!contains(tex, "R q \\beta \\omega"), tex);
@@ -631,14 +631,14 @@ BOOST_AUTO_TEST_CASE(an_intermediate_quantity_too_long_written_out_is_used_by_na
         "[[step]]\ndefine = \"g\"\nas = \"u^2 + w^2 - u*w\"\n[[step]]\ndefine = \"h\"\nas = \"u + w\"\n"
         "[[result]]\nname = \"h\"\n[[result]]\nname = \"g\"\n");
     const std::string tex = emit::latex_fragment(d);
-    BOOST_TEST(contains(tex, "Written out in the declared quantities, it would take more than three lines; what "
-                             "follows uses $g$ by name."),
+    BOOST_TEST(contains(tex, "Written out in the declared quantities, it would take more lines than its "
+                             "definition; what follows uses $g$ by name."),
                tex);
     BOOST_TEST(!contains(tex, "uses $h$ by name"), tex);
     // h's step shows what it comes to: a_1 b_1 appears in it, besides u's own step and the results.
     const std::size_t h_step = tex.find("Defining $h$");
     BOOST_TEST_REQUIRE(h_step != std::string::npos);
-    BOOST_TEST(tex.substr(h_step, tex.find("\\end{align*}", h_step) - h_step).find("a_1 b_1 + c_1 d_1") != std::string::npos,
+    BOOST_TEST(tex.substr(h_step, tex.find("\\end{align*}", h_step) - h_step).find("a_{1} b_{1} + c_{1} d_{1}") != std::string::npos,
                tex);
 }
 
@@ -709,6 +709,26 @@ BOOST_AUTO_TEST_CASE(a_solve_for_numbered_results_of_any_derivation_refers_to_th
     BOOST_TEST(contains(unnumbered, "gives\n\\begin{align*}"), unnumbered);
 }
 
+BOOST_AUTO_TEST_CASE(a_symbol_without_latex_is_typeset_from_its_name)
+{
+    // A file that gives no `latex`: each name is typeset the way a physicist would write it
+    // (spec::latex_of_name), never with its underscores or digits left in the text as typed.
+    const std::string text =
+        "id = \"names\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"a_10\"\n[[symbol]]\nname = \"r_x_1\"\n[[symbol]]\nname = \"v1\"\n"
+        "[[symbol]]\nname = \"theta_2\"\n[[symbol]]\nname = \"t_top\"\n[[symbol]]\nname = \"vel_after\"\n"
+        "[[symbol]]\nname = \"u_perp\"\n[[symbol]]\nname = \"c\"\n"
+        "[[step]]\ndefine = \"c\"\nas = \"a_10 + r_x_1 + v1 + theta_2 + t_top + vel_after + u_perp\"\n"
+        "because = \"the sum\"\n"
+        "[[result]]\nname = \"c\"\n";
+    const std::string tex = emit::latex_fragment(engine::derive(spec::parse_derivation(text, "names.toml"), {}));
+    for (const char* typeset : {"a_{10}", "r_{x,1}", "v_{1}", "\\theta_{2}", "t_{\\mathrm{top}}", "\\mathit{vel}'",
+                                "u_{\\perp}"})
+        BOOST_TEST(contains(tex, typeset), typeset << " in\n" << tex);
+    for (const char* raw : {"a_10", "r_x_1", "v1", "theta_2", "t_top", "vel_after", "u_perp"})
+        BOOST_TEST(!contains(tex, raw), raw << " in\n" << tex);
+}
+
 BOOST_AUTO_TEST_CASE(results_that_share_a_tag_are_cited_with_their_quantity)
 {
     // The halves again, both results printed on one page of a text ("p. 1", as Eq. 9 prints
@@ -757,8 +777,8 @@ BOOST_AUTO_TEST_CASE(a_result_long_written_out_is_shown_as_its_step_defines_it)
     const std::size_t results = tex.find("\\paragraph{Results.}");
     BOOST_TEST_REQUIRE(results != std::string::npos);
     const std::string shown = tex.substr(results);
-    BOOST_TEST(contains(shown, "w &= \\frac{k}{k + a_1}"), shown);
-    BOOST_TEST(contains(shown, "u &= a_1 + a_2"), shown);
+    BOOST_TEST(contains(shown, "w &= \\frac{k}{k + a_{1}}"), shown);
+    BOOST_TEST(contains(shown, "u &= a_{1} + a_{2}"), shown);
     BOOST_TEST(contains(shown, "$w$ is shown as its step defines it, in the quantities named there"), shown);
     BOOST_TEST(!contains(shown, "$u$ is shown"), shown);
 }

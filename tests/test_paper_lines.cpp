@@ -27,6 +27,7 @@
 #include "emit/terminal.h"
 #include "engine/derive.h"
 #include "engine/library.h"
+#include "engine/references.h"
 #include "spec/derivation.h"
 #include "spec/outline.h"
 
@@ -200,15 +201,24 @@ const std::vector<printed_line> paper = {
     {"Appendix A, line 12", "= E_K - (1 - \\epsilon^2) \\frac{mM(v_m - v_M)^2}{2(M + m)}", nullptr},
     {"Appendix A, line 13", "\\Delta E_K = E'_K - E_K = -(1 - \\epsilon^2) \\frac{mM(v_m - v_M)^2}{2(M + m)}", nullptr},
 
-    {"Footnotes 1 to 8, 12 and 13", "Bernard Brogliato and B Brogliato. Nonsmooth mechanics. ... William James Stronge. Impact mechanics.",
-     "bibliographic references"},
+    // The references, after Appendix A: each entry checked against its citations.
+    {"Footnote 1", "Bernard Brogliato and B Brogliato. Nonsmooth mechanics. Springer, 1999.", nullptr},
+    {"Footnote 2", "Victor BURACU and Aurel ALECU. An extension of carnot's theorem for rigid body collisions. energy, 500:10.", nullptr},
+    {"Footnote 3", "Edson Cataldo and Rubens Sampaio. A brief review and a new treatment for rigid bodies collision models. Journal of the Brazilian Society of Mechanical Sciences, 23(1):63–78, 2001.", nullptr},
+    {"Footnote 4", "Mojca Čepič. Elastic collisions of smooth spherical objects: Finding final velocities in four simple steps. American Journal of Physics, 87(3):200–207, 2019.", nullptr},
+    {"Footnote 5", "Anindya Chatterjee. Rigid body collisions: some general considerations, new collision laws, and some experimental data. Cornell University Ithaca, NY, 1997.", nullptr},
+    {"Footnote 6", "Katica R Stevanović Hedrih. Central collision of two rolling balls: theory and examples. Advances in Theoretical and Applied Mechanics, 10(1):33–79, 2017.", nullptr},
+    {"Footnote 7", "Bo Lan. A brief guide to the fundamentals of passive and active rotations in material science, 08 2015.", nullptr},
+    {"Footnote 8", "David Morin. Introduction to classical mechanics: with problems and solutions. Cambridge University Press, 2008.", nullptr},
+    {"Footnote 12", "T Schwager, V Becker, and T Pöschel. Coefficient of tangential restitution for viscoelastic spheres. The European Physical Journal E, 27(1):107–114, 2008.", nullptr},
+    {"Footnote 13", "William James Stronge. Impact mechanics. Cambridge university press, 2018.", nullptr},
 };
 // clang-format on
 
 // Typed from the list above, counted by hand: the paper's printed lines and claims, and
 // those Impact compares.
-constexpr std::size_t printed_lines_and_claims = 125;
-constexpr std::size_t compared = 123;
+constexpr std::size_t printed_lines_and_claims = 134;
+constexpr std::size_t compared = 133;
 
 const engine::library& library()
 {
@@ -223,7 +233,7 @@ const engine::library& library()
         for (const spec::derivation& d : all) {
             const std::string name = std::filesystem::path(d.file).filename().string();
             if ((name.rfind("rough_", 0) != 0 && name.rfind("wall_", 0) != 0) || !d.claims.empty() ||
-                !d.open_claims.empty())
+                !d.open_claims.empty() || !d.references.empty())
                 wanted.insert(d.id.value);
         }
         for (bool more = true; more;) {   // and what they use, in turn
@@ -256,8 +266,8 @@ std::map<std::string, int> compared_places()
     for (const engine::derivation* d : library().in_order()) {
         for (const engine::paper_comparison& p : d->paper_checks)
             ++places[p.paper];
-        for (const spec::open_claim& c : d->source.open_claims)
-            ++places[c.paper.value];
+        for (const engine::text_comparison& t : engine::text_comparisons(d->source))
+            ++places[t.paper];
     }
     return places;
 }
@@ -412,11 +422,33 @@ BOOST_AUTO_TEST_CASE(a_claim_no_derivation_settles_is_one_row_undecided_never_di
             BOOST_TEST(row.find("disagrees") == std::string::npos, row);
         }
     }
-    // The references, and the sentence of Fig. 1's caption that says what panel (b) draws,
-    // are counted, and said not to be compared, in one sentence.
-    BOOST_TEST(errata.find("Not compared: Footnotes 1 to 8, 12 and 13 (bibliographic references); Fig. 1 caption, "
-                           "3rd sentence (") != std::string::npos);
-    BOOST_TEST(errata_rows_at(errata, "Footnotes 1 to 8, 12 and 13").empty());
+    // The sentence of Fig. 1's caption that says what panel (b) draws is counted, and said
+    // not to be compared; the references are compared (below).
+    BOOST_TEST(errata.find("Not compared: Fig. 1 caption, 3rd sentence (") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(each_reference_is_a_row_checked_against_its_citations)
+{
+    // Typed from the paper's list of references and its text: every entry is cited (4 by
+    // Čepič's name, 5 by Chatterjee's, 8 by Morin's, 12 by Schwager's, 13 by Stronge's; 2
+    // and 6 together, for Carnot's theorem; 7 in Footnote 9). Entry 1 names Brogliato twice
+    // ("Bernard Brogliato and B Brogliato") and entry 2 prints no year ("energy, 500:10"):
+    // those two disagree, the others agree.
+    const std::string errata = emit::errata_markdown(library().in_order());
+    for (int n : {1, 2, 3, 4, 5, 6, 7, 8, 12, 13}) {
+        const std::vector<std::string> rows = errata_rows_at(errata, fmt::format("Footnote {}", n));
+        BOOST_TEST_REQUIRE(rows.size() == 1u, n);
+        const std::string& row = rows.front();
+        BOOST_TEST(row.find("| reference |") != std::string::npos, row);
+        const bool faulty = n == 1 || n == 2;
+        BOOST_TEST((row.find("**disagrees**") != std::string::npos) == faulty, row);
+        BOOST_TEST((row.find("| agrees |") != std::string::npos) == !faulty, row);
+    }
+    BOOST_TEST(errata_rows_at(errata, "Footnote 1").front().find("names one author twice (Bernard Brogliato and B "
+                                                                 "Brogliato)") != std::string::npos);
+    BOOST_TEST(errata_rows_at(errata, "Footnote 2").front().find("prints no year") != std::string::npos);
+    BOOST_TEST(errata_rows_at(errata, "Footnote 4").front().find("Sec. I A (beside Čepič)") != std::string::npos);
+    BOOST_TEST(errata_rows_at(errata, "Footnote 7").front().find("cited at Footnote 9") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(each_claim_is_a_row_and_one_misprint_in_several_components_is_one)
@@ -555,6 +587,12 @@ BOOST_AUTO_TEST_CASE(each_agreeing_row_says_how_agreement_was_established)
         const std::string finding = row.substr(row.rfind(" | ", row.size() - 3) + 3);
         // "proven ...: how", or for a claim the paper says does not hold "refuted, as the paper
         // says: how" (Sec. III C's steepness); never a bare "proven".
+        // A reference: where it is cited, and what its entry was checked for.
+        if (row.find("| reference |") != std::string::npos) {
+            BOOST_TEST((finding.rfind("cited at ", 0) == 0 && finding.find("each named once, and its year") != std::string::npos),
+                       row);
+            continue;
+        }
         BOOST_TEST(((finding.find("proven") != std::string::npos || finding.rfind("refuted, as the paper says", 0) == 0) &&
                     finding.find(": ") != std::string::npos),
                    row);
@@ -752,8 +790,8 @@ because = "a reference"
 BOOST_AUTO_TEST_CASE(derivations_json_gives_each_comparison_the_errata_s_verdict)
 {
     // Typed from the paper: Sec. III's first paragraph speaks of experiment (undecided),
-    // Eq. 3's second line prints 2m v_M for 2M v_M (disagrees), and the references are
-    // not compared.
+    // Eq. 3's second line prints 2m v_M for 2M v_M (disagrees), and what Fig. 1(b) draws
+    // is not compared.
     const nlohmann::json j = nlohmann::json::parse(emit::derivations_json(library().in_order()));
     std::map<std::string, std::set<std::string>> verdicts;
     std::set<std::string> uncompared;
@@ -766,7 +804,10 @@ BOOST_AUTO_TEST_CASE(derivations_json_gives_each_comparison_the_errata_s_verdict
     BOOST_TEST((verdicts["Sec. III, 1st paragraph"] == std::set<std::string>{"undecided"}));
     BOOST_TEST((verdicts["Sec. I, assumptions 1 to 3"] == std::set<std::string>{"undecided"}));
     BOOST_TEST((verdicts["Eq. 3, line 2"] == std::set<std::string>{"disagrees"}));
-    BOOST_TEST((uncompared == std::set<std::string>{"Footnotes 1 to 8, 12 and 13", "Fig. 1 caption, 3rd sentence"}));
+    BOOST_TEST((uncompared == std::set<std::string>{"Fig. 1 caption, 3rd sentence"}));
+    // The references: entry 1 names Brogliato twice, entry 4 (Čepič's) is sound.
+    BOOST_TEST((verdicts["Footnote 1"] == std::set<std::string>{"disagrees"}));
+    BOOST_TEST((verdicts["Footnote 4"] == std::set<std::string>{"agrees"}));
     // Every line the list says is compared has a verdict in the JSON.
     for (const printed_line& line : paper)
         if (!line.not_compared)

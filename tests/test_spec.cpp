@@ -203,6 +203,28 @@ BOOST_AUTO_TEST_CASE(a_kernel_output_must_read_name_equals_expression)
     BOOST_TEST(e.where().line == 34u);
 }
 
+BOOST_AUTO_TEST_CASE(references_and_their_citations_are_read_and_checked_against_each_other)
+{
+    const std::string refs = "\n[[reference]]\npaper = \"Note 1\"\nnumber = 1\nentry = \"A Writer. A Book. A Press, 1950.\"\n"
+                             "[[citation]]\npaper = \"Sec. 1\"\nquote = \"as Writer shows1\"\ncites = 1\nnames = \"Writer\"\n";
+    const auto d = parse_derivation(minimal + refs, "tiny.toml");
+    BOOST_TEST_REQUIRE(d.references.size() == 1u);
+    BOOST_TEST(d.references.at(0).number == 1);
+    BOOST_TEST(d.references.at(0).paper.value == "Note 1");
+    BOOST_TEST_REQUIRE(d.citations.size() == 1u);
+    BOOST_TEST(d.citations.at(0).cites == 1);
+    BOOST_TEST(d.citations.at(0).names->value == "Writer");
+    // A citation of a number no entry has, an entry listed twice, a number that is no mark:
+    // each an error at its table.
+    impact::error e = error_for(minimal + refs + "[[citation]]\npaper = \"Sec. 2\"\nquote = \"q\"\ncites = 3\n");
+    BOOST_TEST(e.message().find("cites reference 3, which no [[reference]] of this file lists") != std::string::npos,
+               e.message());
+    e = error_for(minimal + refs + "[[reference]]\npaper = \"Note 2\"\nnumber = 1\nentry = \"B. C.\"\n");
+    BOOST_TEST(e.message().find("reference 1 is listed twice") != std::string::npos, e.message());
+    e = error_for(minimal + "\n[[reference]]\npaper = \"Note 1\"\nnumber = 1.5\nentry = \"x\"\n");
+    BOOST_TEST(e.message().find("a whole number from 1") != std::string::npos, e.message());
+}
+
 BOOST_AUTO_TEST_CASE(an_undecided_claim_says_why_and_has_nothing_to_check)
 {
     const std::string open = "\n[[claim]]\nname = \"empirical\"\npaper = \"Sec. III\"\n"

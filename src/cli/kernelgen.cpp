@@ -14,6 +14,25 @@
 
 #include <exception>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace {
+
+// Whether `folder` holds exactly `files` (and the marker that lists them), byte for byte.
+bool holds_already(const std::filesystem::path& folder, const impact::pipeline::file_set& files)
+{
+    const auto same = [&](const std::filesystem::path& path, const std::string& text) {
+        std::ifstream in(path, std::ios::binary);
+        return in && std::string(std::istreambuf_iterator<char>(in), {}) == text;
+    };
+    for (const auto& [name, text] : files)
+        if (!same(folder / name, text))
+            return false;
+    return same(folder / impact::pipeline::marker_name, impact::pipeline::marker_text(files));
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -33,9 +52,13 @@ int main(int argc, char** argv)
             return 1;
         }
         // The build tree's folder of generated kernels is the build's own: forced, since a
-        // build folder made before Impact marked its output holds unmarked headers.
-        impact::pipeline::replace_folder(std::filesystem::absolute(argv[2]).lexically_normal(),
-                                         impact::emit::kernel_files(lib, impact::verify::plan_kernels(lib)), /*force=*/true);
+        // build folder made before Impact marked its output holds unmarked headers. Headers
+        // that come out as they were are left as they were, their times too, so that a change
+        // to Impact that leaves the kernels alone recompiles nothing that includes them.
+        const std::filesystem::path folder = std::filesystem::absolute(argv[2]).lexically_normal();
+        const impact::pipeline::file_set files = impact::emit::kernel_files(lib, impact::verify::plan_kernels(lib));
+        if (!holds_already(folder, files))
+            impact::pipeline::replace_folder(folder, files, /*force=*/true);
         return 0;
     } catch (const std::exception& e) {
         fmt::print(stderr, "{}\n", e.what());

@@ -176,7 +176,7 @@ std::string row_verdict(const engine::derivation& d, const std::vector<std::size
 
 const std::string& errata_entry::place() const
 {
-    return open ? open->paper.value : derivation->paper_checks[comparisons.front()].paper;
+    return words ? words->paper : derivation->paper_checks[comparisons.front()].paper;
 }
 
 std::vector<errata_entry> errata_entries(const std::vector<const engine::derivation*>& derivations,
@@ -185,9 +185,9 @@ std::vector<errata_entry> errata_entries(const std::vector<const engine::derivat
     std::vector<errata_entry> entries;
     for (const engine::derivation* d : derivations) {
         for (std::vector<std::size_t>& row : errata_rows(*d))
-            entries.push_back({d, std::move(row), nullptr});
-        for (const spec::open_claim& c : d->source.open_claims)
-            entries.push_back({d, {}, &c});
+            entries.push_back(errata_entry{d, std::move(row), std::nullopt});
+        for (engine::text_comparison& t : engine::text_comparisons(d->source))
+            entries.push_back(errata_entry{d, {}, std::move(t)});
     }
     if (!outline)
         return entries;
@@ -195,7 +195,7 @@ std::vector<errata_entry> errata_entries(const std::vector<const engine::derivat
     for (errata_entry& e : entries) {
         const std::optional<std::size_t> at = outline->position(e.place());
         if (!at)
-            throw error(e.open ? e.open->paper.where : e.derivation->paper_checks[e.comparisons.front()].where,
+            throw error(e.words ? e.words->where : e.derivation->paper_checks[e.comparisons.front()].where,
                         fmt::format("the paper's place '{}' is not listed in {}, which gives the order of the "
                                     "errata: add it there, where the paper prints it",
                                     e.place(), outline->file));
@@ -215,8 +215,8 @@ std::size_t compared_places(const std::vector<const engine::derivation*>& deriva
     for (const engine::derivation* d : derivations) {
         for (const engine::paper_comparison& p : d->paper_checks)
             places.insert(p.paper);
-        for (const spec::open_claim& c : d->source.open_claims)
-            places.insert(c.paper.value);
+        for (const engine::text_comparison& t : engine::text_comparisons(d->source))
+            places.insert(t.paper);
     }
     return places.size();
 }
@@ -232,8 +232,12 @@ paper_count count_paper(const std::vector<const engine::derivation*>& derivation
             ++n.rows;
             ++(verdict == "agrees" ? n.agree : verdict == "undecided" ? n.undecided : n.disagree);
         }
-        n.rows += d->source.open_claims.size();
-        n.undecided += d->source.open_claims.size();
+        for (const engine::text_comparison& t : engine::text_comparisons(d->source)) {
+            ++n.rows;
+            ++(t.verdict == engine::text_comparison::outcome::agrees      ? n.agree
+               : t.verdict == engine::text_comparison::outcome::undecided ? n.undecided
+                                                                          : n.disagree);
+        }
         for (const spec::not_compared& line : d->source.uncompared)
             if (not_compared.insert(line.paper.value).second)
                 n.not_compared.push_back(&line);
@@ -275,9 +279,13 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
            "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const errata_entry& entry : errata_entries(derivations, outline)) {
         const engine::derivation* d = entry.derivation;
-        if (entry.open) {
-            out += fmt::format("| {} | claim | claim | **undecided** | {} | — | {} |\n", cell(entry.open->paper.value),
-                               cell(entry.open->quote.value), cell(entry.open->undecided.value));
+        if (entry.words) {
+            const engine::text_comparison& t = *entry.words;
+            const std::string verdict = engine::to_string(t.verdict);
+            const bool reference = t.what == engine::text_comparison::kind::reference;
+            out += fmt::format("| {} | {} | {} | {} | {} | — | {} |\n", cell(t.paper), reference ? "reference" : "claim",
+                               reference ? "entry" : "claim", verdict == "agrees" ? verdict : "**" + verdict + "**",
+                               cell(t.printed), cell(t.finding));
             continue;
         }
         const engine::term_order order = engine::declaration_order(d->symbols);

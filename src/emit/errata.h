@@ -3,9 +3,11 @@
 #pragma once
 
 #include "engine/derive.h"
+#include "engine/references.h"
 #include "spec/outline.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,11 +21,11 @@ std::string errata_markdown(const std::vector<const engine::derivation*>& deriva
                             const spec::paper_outline* outline = nullptr);
 
 /// One row of the errata: comparisons of one derivation shown together (`errata_rows`),
-/// or one of its claims that no derivation settles.
+/// or one comparison of its words (a claim no derivation settles, a reference).
 struct errata_entry {
     const engine::derivation* derivation = nullptr;
-    std::vector<std::size_t> comparisons;   ///< into `paper_checks`; empty for `open`
-    const spec::open_claim* open = nullptr;
+    std::vector<std::size_t> comparisons;   ///< into `paper_checks`; empty for `words`
+    std::optional<engine::text_comparison> words;
 
     /// Its place in the paper ("Eq. 8, right, line 1").
     const std::string& place() const;

@@ -5,6 +5,7 @@
 #include "engine/cases.h"
 
 #include "engine/infix.h"
+#include "engine/references.h"
 #include "engine/order.h"
 
 #include <nlohmann/json.hpp>
@@ -139,16 +140,17 @@ json derivation_json(const engine::derivation& d)
         }
         j["paper_checks"].push_back(pj);
     }
-    // Claims no derivation can settle: compared, and undecided with the reason.
-    for (const spec::open_claim& c : d.source.open_claims) {
+    // The words compared: claims no derivation can settle (undecided with the reason), and
+    // the references, each against its citations.
+    for (const engine::text_comparison& t : engine::text_comparisons(d.source)) {
         json pj;
-        pj["paper"] = c.paper.value;
-        pj["kind"] = "claim";
-        pj["subject"] = c.name.value;
-        pj["agrees"] = false;
-        pj["verdict"] = "undecided";
-        pj["printed"] = c.quote.value;
-        pj["reason"] = c.undecided.value;
+        pj["paper"] = t.paper;
+        pj["kind"] = t.what == engine::text_comparison::kind::reference ? "reference" : "claim";
+        pj["subject"] = t.subject;
+        pj["agrees"] = t.verdict == engine::text_comparison::outcome::agrees;
+        pj["verdict"] = engine::to_string(t.verdict);
+        pj["printed"] = t.printed;
+        pj["reason"] = t.finding;
         j["paper_checks"].push_back(pj);
     }
     // Lines of the paper nothing compares, with why.

@@ -3,6 +3,7 @@
 #include "emit/latex_parts.h"
 
 #include "engine/infix.h"
+#include "spec/latex_name.h"
 
 #include <fmt/format.h>
 
@@ -29,36 +30,11 @@ namespace detail {
 
 
 // A symbol's LaTeX name: the one its derivation file gives, or one made from its name
-// when the file gives none (eps → \epsilon, v_M_after → v'_{M}, r_x → r_{x}).
+// when it has none (spec::latex_of_name: eps → \epsilon, v_M_after → v'_{M}, r_x → r_{x}).
 std::string symbol_latex(const GiNaC::symbol& s)
 {
     const std::string given = s.get_TeX_name();
-    if (!given.empty())
-        return given;
-    static const std::set<std::string> greek = {
-        "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu", "nu",
-        "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega", "Gamma", "Delta", "Theta",
-        "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega"};
-    auto letter = [&](const std::string& word) {
-        if (word == "eps")
-            return std::string("\\epsilon");
-        return greek.count(word) ? "\\" + word : word;
-    };
-    std::string name = s.get_name();
-    bool primed = false;
-    const std::string after = "_after";
-    if (name.size() > after.size() && name.compare(name.size() - after.size(), after.size(), after) == 0) {
-        primed = true;
-        name.erase(name.size() - after.size());
-    }
-    const auto underscore = name.find('_');
-    std::string out = letter(name.substr(0, underscore)) + (primed ? "'" : "");
-    if (underscore != std::string::npos) {
-        std::string sub = name.substr(underscore + 1);
-        std::replace(sub.begin(), sub.end(), '_', ',');
-        out += "_{" + sub + "}";
-    }
-    return out;
+    return given.empty() ? spec::latex_of_name(s.get_name()) : given;
 }
 
 void print_operand(const GiNaC::ex& e, const print_tex& c, unsigned level);

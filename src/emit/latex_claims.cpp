@@ -405,13 +405,22 @@ std::string fragment_writer::checked_display(const engine::check_result& t) cons
 // Text after a displayed formula starts a new sentence.
 std::string fragment_writer::paper() const
 {
-    if (d_.paper_checks.empty() && d_.source.open_claims.empty())
+    const std::vector<engine::text_comparison> words = engine::text_comparisons(d_.source);
+    if (d_.paper_checks.empty() && words.empty())
         return "";
     // In the report, whose errata table has a row for each (\impacterratatable, its
     // section's label), a sentence that says where, with the count: each finding printed
     // once. A fragment pasted alone lists them.
-    std::size_t agree = 0, disagrees = 0, undecided = d_.source.open_claims.size();
+    std::size_t agree = 0, disagrees = 0, undecided = 0;
     std::vector<std::string> disagree;   // their places, each once
+    for (const engine::text_comparison& t : words) {
+        const std::string v = engine::to_string(t.verdict);
+        agree += v == "agrees";
+        disagrees += v == "disagrees";
+        undecided += v == "undecided";
+        if (v == "disagrees" && std::find(disagree.begin(), disagree.end(), paper_text(t.paper)) == disagree.end())
+            disagree.push_back(paper_text(t.paper));
+    }
     for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
         const std::string v = row_verdict(d_, row);
         agree += v == "agrees";
@@ -543,10 +552,14 @@ std::string fragment_writer::paper() const
         }
         out += tail + (tail.empty() && after_display ? "\n" : ".\n");
     }
-    // Claims no derivation settles: the words, undecided, and why.
-    for (const spec::open_claim& c : d_.source.open_claims)
-        out += fmt::format("\\item {}, claim: ``{}'' --- \\textbf{{undecided}}: {}.\n", paper_text(c.paper.value),
-                           latex_prose(c.quote.value), latex_prose(c.undecided.value));
+    // The words compared: claims no derivation settles (undecided, and why), references.
+    for (const engine::text_comparison& t : words) {
+        const std::string verdict = engine::to_string(t.verdict);
+        out += fmt::format("\\item {}, {}: ``{}'' --- {}: {}.\n", paper_text(t.paper),
+                           t.what == engine::text_comparison::kind::reference ? "reference entry" : "claim",
+                           latex_prose(t.printed), verdict == "agrees" ? verdict : "\\textbf{" + verdict + "}",
+                           latex_prose(t.finding));
+    }
     return out + "\\end{itemize}\n\\fi\n";
 }
 

@@ -463,12 +463,16 @@ void fragment_writer::errata_row(errata_table& table, const std::vector<std::siz
                               change_cell);
 }
 
-// A claim no derivation settles: undecided, with the reason.
-void fragment_writer::errata_row(errata_table& table, const spec::open_claim& c) const
+// A comparison of the paper's words: a claim no derivation settles (undecided, with the
+// reason), or an entry of its references (agrees, or what is wrong with it).
+void fragment_writer::errata_row(errata_table& table, const engine::text_comparison& t) const
 {
-    table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & claim & \\textbf{{undecided}} & ``{}'' & & {} \\\\\n",
-                              paper_text(c.paper.value), latex_label(d_), latex_prose(c.quote.value),
-                              capitalised(latex_prose(c.undecided.value)));
+    const std::string verdict = engine::to_string(t.verdict);
+    const bool reference = t.what == engine::text_comparison::kind::reference;
+    table.rows += fmt::format("{} (Sect.~\\ref{{{}}}) & {} & {} & ``{}'' & & {} \\\\\n", paper_text(t.paper),
+                              latex_label(d_), reference ? "reference entry" : "claim",
+                              verdict == "agrees" ? verdict : "\\textbf{" + verdict + "}", latex_prose(t.printed),
+                              capitalised(latex_prose(t.finding)));
 }
 
 } // namespace detail
@@ -479,8 +483,8 @@ errata_table latex_errata(const std::vector<const engine::derivation*>& derivati
     errata_table table;
     for (const errata_entry& e : errata_entries(derivations, outline)) {
         const detail::fragment_writer writer(*e.derivation);
-        if (e.open)
-            writer.errata_row(table, *e.open);
+        if (e.words)
+            writer.errata_row(table, *e.words);
         else
             writer.errata_row(table, e.comparisons);
     }

@@ -280,10 +280,10 @@ std::vector<int> fragment_writer::step_items() const
     return items;
 }
 
-int fragment_writer::item_deriving(const GiNaC::ex& symbol) const
+int fragment_writer::item_deriving(const GiNaC::ex& symbol, std::size_t before) const
 {
     const std::vector<int> items = step_items();
-    for (std::size_t i = 0; i < d_.steps.size(); ++i)
+    for (std::size_t i = 0; i < before && i < d_.steps.size(); ++i)
         for (const auto& value : d_.steps[i].values)
             if (value.first.is_equal(symbol))
                 return items[i];
@@ -544,25 +544,31 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
             // What it comes to: a numbered result is referred to (its value is in the results),
             // unless it is defined as another quantity by name (v'_{M,par} = v'_M of Eq. 3), when
             // the value is what the step says; otherwise the value, unless written out in the
-            // declared quantities it takes more than three lines (a contact point's velocity
+            // declared quantities it takes more lines than its definition, or more than three (a contact point's velocity
             // spelled out in every spin and radius): the quantity is then used by name.
             const double side = latex_width(math(symbol));
+            const auto lines_of = [&](const GiNaC::ex& e, const written_form* written) {
+                return latex_lines(e, order_, written, std::max(content_width - side - 14, 150.0),
+                                   std::max(content_width - side - 20, 150.0))
+                    .size();
+            };
             const std::optional<std::string> numbered =
                 displayed && !GiNaC::is_a<GiNaC::symbol>(*as_written) ? result_cited(*r) : std::nullopt;
             // Defined as a quantity an earlier step derives (v'_{M,perp} = v_{M,perp}, which
             // the rotation of step 1 gives): its value is there, not set out again.
-            const int earlier = GiNaC::is_a<GiNaC::symbol>(*as_written) ? item_deriving(*as_written) : 0;
+            const int earlier = GiNaC::is_a<GiNaC::symbol>(*as_written) ? item_deriving(*as_written, static_cast<std::size_t>(&s - d_.steps.data())) : 0;
             if (earlier > 0) {
                 after = fmt::format("Step~{} gives ${}$.\n", earlier, math(*as_written));
             } else if (numbered) {
                 after = fmt::format("Its value is the result below ({}).\n", *numbered);
-            } else if (displayed || latex_lines(shown.value, order_, shown_written, std::max(content_width - side - 14, 150.0),
-                                         std::max(content_width - side - 20, 150.0))
-                                     .size() <= 3) {
+            } else if (displayed || lines_of(shown.value, shown_written) <=
+                                        std::min<std::size_t>(3, lines_of(*as_written, &w) + 1)) {
+                // Set out when it reads about as easily as the definition: at most three
+                // lines, and at most one more than the definition takes.
                 out += " \\\\\n" + rows("", shown.value, shown_written, "", "=", side);
                 how = shown.how;
             } else {
-                after = fmt::format("Written out in the declared quantities, it would take more than three lines; "
+                after = fmt::format("Written out in the declared quantities, it would take more lines than its definition; "
                                        "what follows uses ${}$ by name.\n",
                                        math(symbol));
             }
@@ -714,9 +720,9 @@ std::string fragment_writer::results() const
             continue;
         }
         // A result its file gives no display form for: as a textbook shows it, factored or
-        // collected; or, when that takes more than one line, as its step defines it, in the
-        // quantities the step names, when that is shorter (the rough spheres' v'_{M,x} =
-        // v_{M,x} - (J_n n_x + J_{t,x})/M, three lines written out).
+        // collected; or, when that takes more lines, or is far wider, as its step defines it,
+        // in the quantities the step names (the rough spheres' v'_{M,x} = v_{M,x} - (J_n n_x +
+        // J_{t,x})/M, three lines written out).
         GiNaC::ex value = !r.written.empty() ? r.display : textbook(r.display).value;
         const written_form* written = &r.written;
         if (r.written.empty())
@@ -729,7 +735,13 @@ std::string fragment_writer::results() const
                     return lines.size() + (latex_width(lines.front()) > first ? 1 : 0);
                 };
                 const std::size_t written_out = line_count(value, written);
-                if (written_out > 1 && line_count(*s->as_written, &s->written) < written_out) {
+                const std::size_t defined = line_count(*s->as_written, &s->written);
+                // On one line too, a value half as wide again as its definition (the rough
+                // spheres' spins: a quotient of roots, where the step's moment over the
+                // inertia reads at a glance).
+                const bool wider = written_out == 1 && defined == 1 &&
+                                   latex_width(math(value, written)) > 1.5 * latex_width(math(*s->as_written, &s->written));
+                if ((written_out > 1 && defined < written_out) || wider) {
                     value = *s->as_written;
                     written = &s->written;
                     as_defined.push_back("$" + math(r.symbol) + "$");
@@ -741,7 +753,7 @@ std::string fragment_writer::results() const
     out += "\\end{align}\n";
     if (!as_defined.empty())
         out += fmt::format("{} {} shown as {} step{} define{} {}, in the quantities named there: written out in the "
-                           "declared quantities, {} would take more lines.\n",
+                           "declared quantities, {} would be longer.\n",
                            capitalised(listing(as_defined)), as_defined.size() == 1 ? "is" : "are",
                            as_defined.size() == 1 ? "its" : "their", as_defined.size() == 1 ? "" : "s",
                            as_defined.size() == 1 ? "s" : "", as_defined.size() == 1 ? "it" : "them",

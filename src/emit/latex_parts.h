@@ -6,6 +6,7 @@
 #pragma once
 
 #include "emit/latex.h"
+#include "engine/references.h"
 
 #include <ginac/ginac.h>
 
@@ -112,7 +113,7 @@ public:
     /// A row (and its displays) of the report's errata table: comparisons shown together
     /// (emit::errata_rows), or a claim no derivation settles.
     void errata_row(errata_table& table, const std::vector<std::size_t>& group) const;
-    void errata_row(errata_table& table, const spec::open_claim& undecided) const;
+    void errata_row(errata_table& table, const engine::text_comparison& words) const;
 
 private:
     // latex_fragment.cpp: the printing shared by every part, and the derivation itself.
@@ -129,8 +130,9 @@ private:
     /// Each step's number in the enumerated list; 0 for a step not listed (givens that state
     /// their unknowns' values, said before the list; a copy of a quantity under another name).
     std::vector<int> step_items() const;
-    /// The number of the listed step that derives `symbol` (solves for it or defines it), or 0.
-    int item_deriving(const GiNaC::ex& symbol) const;
+    /// The number of the listed step among the first `before` that derives `symbol` (solves
+    /// for it or defines it), or 0.
+    int item_deriving(const GiNaC::ex& symbol, std::size_t before) const;
     std::string as_defined(const std::string& lhs, const GiNaC::ex& value, const written_form& w) const;
     bool givens_state(const engine::step_result& s, const spec::step& source) const;
     std::string solve_step(const engine::step_result& s, const spec::step* source, const std::string& because) const;

@@ -5,6 +5,7 @@
 #include "engine/cases.h"
 #include "engine/dimensional.h"
 #include "engine/infix.h"
+#include "engine/references.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -71,7 +72,8 @@ std::string terminal_text(const engine::derivation& d)
     const std::vector<std::string> without = engine::symbols_without_dimension(d.symbols);
     if (!without.empty())
         out += fmt::format("\nwithout a dimension (not checked for consistent units): {}\n", fmt::join(without, ", "));
-    if (!d.paper_checks.empty() || !d.source.open_claims.empty() || !d.source.uncompared.empty()) {
+    const std::vector<engine::text_comparison> words = engine::text_comparisons(d.source);
+    if (!d.paper_checks.empty() || !words.empty() || !d.source.uncompared.empty()) {
         out += "\nthe paper, held to account\n";
         for (const engine::paper_comparison& p : d.paper_checks) {
             // The errata's verdict: a claim neither proven nor refuted is undecided.
@@ -83,16 +85,26 @@ std::string terminal_text(const engine::derivation& d)
             if (verdict == "disagrees")
                 out += fmt::format("      printed: {}\n      derived: {}\n", p.printed_text, text(p.derived));
             // An edit of the printed form reconciles it; a claim's other findings say what holds instead.
-            for (std::size_t i = 0; i < p.reconciliations.size(); ++i)
-                out += fmt::format(i < p.findings.size() && !p.findings[i].corrected &&
-                                           p.what == engine::paper_comparison::kind::claim
-                                       ? "      found: {}\n"
-                                       : "      reconciled by: {}\n",
-                                   p.reconciliations[i]);
+            // A change that is an alternative to the one before it says so ("or ..."): its label does.
+            for (std::size_t i = 0; i < p.reconciliations.size(); ++i) {
+                std::string said = p.reconciliations[i];
+                const bool alternative = said.rfind("or ", 0) == 0;
+                if (alternative)
+                    said.erase(0, 3);
+                const bool found = i < p.findings.size() && !p.findings[i].corrected &&
+                                   p.what == engine::paper_comparison::kind::claim;
+                out += fmt::format("      {}: {}\n", found ? (alternative ? "or found" : "found")
+                                                         : (alternative ? "or reconciled by" : "reconciled by"),
+                                   said);
+            }
         }
-        for (const spec::open_claim& c : d.source.open_claims)
-            out += fmt::format("  {}: {} (no derivation settles it): undecided\n      {}\n", c.paper.value,
-                               c.name.value, c.undecided.value);
+        for (const engine::text_comparison& t : words) {
+            const std::string verdict = engine::to_string(t.verdict);
+            out += fmt::format("  {}: {} ({}): {}\n      {}\n", t.paper, t.subject,
+                               t.what == engine::text_comparison::kind::reference ? "against its citations"
+                                                                                   : "no derivation settles it",
+                               verdict == "disagrees" ? "DISAGREES" : verdict, t.finding);
+        }
         for (const spec::not_compared& line : d.source.uncompared)
             out += fmt::format("  {}: not compared\n      {}\n", line.paper.value, line.because.value);
     }

@@ -163,6 +163,16 @@ private:
             check_derivatives(e.op(i), where);
     }
 
+    // A value put into a claim (`at`, `left_at`, a limit's point) is an expression of the
+    // inputs: a derivative is taken in the claim itself, where its variable stays free.
+    void refuse_derivative(const GiNaC::ex& value, const spec::text& written, const char* where) const
+    {
+        if (has_derivative(value))
+            throw error(written.where, fmt::format("{} '{}' takes a derivative: diff(f, x) belongs in the claim, "
+                                                   "not in a value put into it",
+                                                   where, written.value));
+    }
+
     engine::resolver resolver() const
     {
         return [this](const GiNaC::ex& e) { return resolve(e); };
@@ -522,6 +532,7 @@ private:
                                                       "change the quantities it is derived from",
                                                       c.name, b.name.value));
             left_at[symbol] = out_.symbols.parse(b.expression);
+            refuse_derivative(left_at[symbol], b.expression, "left_at's value");
             c.left_at.emplace_back(symbol, left_at[symbol]);
         }
         // A quantity defined by cases on the left stands for its cases at the changed
@@ -558,6 +569,7 @@ private:
         for (const spec::binding& b : spec_check.at) {
             const quantity& q = out_.symbols.at(b.name);
             at[q.symbol] = out_.symbols.parse(b.expression);
+            refuse_derivative(at[q.symbol], b.expression, "at's value");
             check_special_value(q, at[q.symbol], b.expression.where);
             c.at.emplace_back(q.symbol, at[q.symbol]);
         }
@@ -1212,6 +1224,8 @@ private:
         p.to_infinity = l.to_infinity;
         if (!l.to_infinity)
             p.point = out_.symbols.parse(l.point);
+        if (!l.to_infinity)
+            refuse_derivative(p.point, l.point, "the limit's point");
         check_limit_point(q, p.point, p.to_infinity, l.written.where);
         return p;
     }

@@ -142,6 +142,25 @@ struct not_compared {
     text because;
 };
 
+/// An entry of the paper's list of references, as printed: `[[reference]]`. Compared with
+/// the citations of it (`[[citation]]` of the same file) and checked for what an entry
+/// needs: authors each named once (the names before the entry's first period), and a year.
+struct reference {
+    text paper;                    ///< its place, e.g. `Footnote 4`
+    int number = 0;                ///< the mark the text cites it by
+    text entry;                    ///< the entry as printed: authors. Title. Where, year.
+    source_location where;
+};
+
+/// A place of the paper that cites a reference by its number: `[[citation]]`.
+struct citation {
+    text paper;                    ///< where, e.g. `Sec. I A`
+    text quote;                    ///< the words beside the mark
+    int cites = 0;                 ///< the reference's number
+    std::optional<text> names;     ///< the author the words name beside the mark, e.g. `Čepič`
+    source_location where;
+};
+
 /// A C++ kernel to emit: a function of `inputs` returning `outputs`.
 /// A kernel's input or output: a scalar (`M`, or `v_par = v_1par` under another name)
 /// or an array of components (`C_M = [C_Mx, C_My]`).
@@ -239,6 +258,8 @@ struct derivation {
     std::vector<claim> claims;
     std::vector<open_claim> open_claims;  ///< claims read with `undecided`, in the file's order
     std::vector<not_compared> uncompared;   ///< `[[not_compared]]`: lines of the paper nothing compares
+    std::vector<reference> references;      ///< `[[reference]]`: the paper's list of references
+    std::vector<citation> citations;        ///< `[[citation]]`: where the text cites them
     std::vector<kernel> kernels;
 };
 

@@ -4,6 +4,7 @@
 // Whether expressions parse and symbols are declared is the engine's business,
 // which reports it at the place recorded in each `spec::text`.
 #include "spec/derivation.h"
+#include "spec/latex_name.h"
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 #include <cctype>
 #include <cerrno>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -67,7 +69,7 @@ symbol read_symbol(table_reader& in)
 {
     symbol s;
     s.name = in.required_string("name");
-    s.latex = in.string_or("latex", s.name.value);
+    s.latex = in.string_or("latex", latex_of_name(s.name.value));
     s.definition = in.optional_string("definition");
     s.domain = in.string_or("domain", "real");
     s.meaning = in.string_or("meaning", "");
@@ -356,6 +358,58 @@ not_compared read_not_compared(table_reader& in)
     return n;
 }
 
+// A reference's number: a whole number from 1, as the paper's marks are.
+int reference_number(table_reader& in, const char* key, const char* context)
+{
+    const double n = in.required_number(key);
+    if (!(n >= 1 && n <= 10000 && n == static_cast<double>(static_cast<int>(n))))
+        throw error(in.where_of(key), fmt::format("'{}' in {} must be a reference's number, a whole number from 1",
+                                                  key, context));
+    return static_cast<int>(n);
+}
+
+reference read_reference(table_reader& in)
+{
+    reference r;
+    r.where = in.where();
+    r.paper = in.required_string("paper");
+    r.number = reference_number(in, "number", "[[reference]]");
+    r.entry = in.required_string("entry");
+    in.finish();
+    if (trimmed(r.entry.value).empty())
+        throw error(r.entry.where, fmt::format("reference {}: 'entry' is the entry as the paper prints it", r.number));
+    return r;
+}
+
+citation read_citation(table_reader& in)
+{
+    citation c;
+    c.where = in.where();
+    c.paper = in.required_string("paper");
+    c.quote = in.required_string("quote");
+    c.cites = reference_number(in, "cites", "[[citation]]");
+    c.names = in.optional_string("names");
+    in.finish();
+    if (c.names && trimmed(c.names->value).empty())
+        throw error(c.names->where, "'names' is the author the words name beside the mark; leave it out if none");
+    return c;
+}
+
+// Each reference listed once, and each citation of a listed one.
+void check_references(const derivation& d)
+{
+    std::map<int, const reference*> listed;
+    for (const reference& r : d.references)
+        if (!listed.emplace(r.number, &r).second)
+            throw error(r.where, fmt::format("reference {} is listed twice (first at line {})", r.number,
+                                             listed.at(r.number)->where.line));
+    for (const citation& c : d.citations)
+        if (!listed.count(c.cites))
+            throw error(c.where, fmt::format("the citation at '{}' cites reference {}, which no [[reference]] of "
+                                             "this file lists",
+                                             c.paper.value, c.cites));
+}
+
 // `[[kernel.regime]]`: a ratio of two quantities over decades, or a boundary approached.
 sampling_regime read_sampling_regime(table_reader r)
 {
@@ -558,9 +612,12 @@ derivation parse_derivation(const std::string& contents, const std::string& file
             d.claims.push_back(read_claim(in));
     }
     d.uncompared = read_all<not_compared>(top, file, "not_compared", read_not_compared);
+    d.references = read_all<reference>(top, file, "reference", read_reference);
+    d.citations = read_all<citation>(top, file, "citation", read_citation);
     d.kernels = read_all<kernel>(top, file, "kernel", read_kernel);
     top.finish();
     check_names(d);
+    check_references(d);
 
     if (d.results.empty())
         throw error(top.where(), "the derivation declares no [[result]]");
