@@ -376,6 +376,28 @@ BOOST_AUTO_TEST_CASE(a_result_by_cases_is_typeset_as_a_cases_environment)
                tex);
 }
 
+BOOST_AUTO_TEST_CASE(cases_all_proven_that_would_fill_lines_are_said_once)
+{
+    // Two cases each shorter than a line, together longer: listed, each with its condition,
+    // they would repeat what y's step displays; all proven, they are said once.
+    std::string sum = "x";
+    for (int k = 2; k <= 9; ++k)
+        sum += " + x^" + std::to_string(k) + "/" + std::to_string(k);
+    const engine::derivation d = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"" + sum + "\" }, { when = \"x > 1\", as = \"2*(" + sum + ")\" }]",
+        "[[check]]\nname = \"positive\"\nclaim = \"y > 0\"\n"));
+    const std::string tex = emit::latex_fragment(d);
+    BOOST_TEST(tex.find("Case by case, in each of the 2 cases of $y$ (as defined above): \\textbf{proven}.") !=
+                   std::string::npos,
+               tex);
+    BOOST_TEST(tex.find("case 1 (") == std::string::npos, tex);
+    // One that fails is listed, each case with its outcome.
+    const engine::derivation failing = derive_text(by_cases(
+        "cases = [{ when = \"x <= 1\", as = \"" + sum + "\" }, { when = \"x > 1\", as = \"-(" + sum + ")\" }]",
+        "[[check]]\nname = \"positive\"\nclaim = \"y > 0\"\n"));
+    BOOST_TEST(emit::latex_fragment(failing).find("Case by case: case 1") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(a_case_as_long_as_a_line_is_referred_to_by_its_number)
 {
     // The cases are displayed where y is defined; a check lists a long one by number.

@@ -203,6 +203,22 @@ std::string fragment_writer::cases_text(const engine::check_result& c) const
             parts.push_back(fmt::format("{}: {}", latex_text(p.under), status_text(p.outcome)));
         }
     }
+    // Every case proven, and the list longer than a line (the rough spheres' sticking and
+    // sliding, each with its condition): said once, the cases being displayed where their
+    // quantity is defined.
+    const bool all_proven = std::all_of(c.parts.begin(), c.parts.end(), [](const engine::check_result::part& p) {
+        return p.in_case && p.outcome.what == engine::verdict::status::proven;
+    });
+    if (!c.continuity && all_proven && c.parts.size() > 1 && latex_width(listing(parts)) > content_width) {
+        std::vector<std::string> names;
+        if (q)
+            names.push_back("$" + math(q->symbol) + "$");
+        else
+            for (const auto& [symbol, one] : c.parts.front().in_cases)
+                names.push_back("$" + math(symbol) + "$");
+        return fmt::format(" Case by case, in each of the {} cases of {} (as defined above): \\textbf{{proven}}.",
+                           c.parts.size(), listing(names));
+    }
     return fmt::format(" {}: {}.", c.continuity ? "Where the cases meet" : "Case by case", listing(parts));
 }
 
