@@ -8,7 +8,8 @@ endif()
 
 # Left out of UBSan: `null` and `alignment`, which test every pointer a member call or a load
 # goes through (GiNaC's expressions are such pointers everywhere) and doubled the build's
-# time; a null pointer's dereference is still caught, by ASan, as a SEGV with its stack.
+# time; a null pointer dereferenced is still caught, by ASan, as a SEGV with its stack (a
+# member call or a reference bound through one that touches no memory is not).
 add_compile_options(-fsanitize=address,undefined -fno-sanitize=null,alignment -fno-omit-frame-pointer
                     -fno-sanitize-recover=undefined)
 # Line tables only, and -O1 (both after the build type's -g and -O2, so that these count):

@@ -636,6 +636,13 @@ BOOST_AUTO_TEST_CASE(a_reference_agrees_when_cited_by_its_authors_once_each_with
     BOOST_TEST(engine::reference_authors("J. Doe, R Roe, and Q Poe. A Title. 1999.") ==
                    (std::vector<std::string>{"J. Doe", "R Roe", "Q Poe"}),
                boost::test_tools::per_element());
+    BOOST_TEST(engine::reference_authors("J.R.R. Tolkien and J.-P. Bouchaud. Rings. 1954.") ==
+                   (std::vector<std::string>{"J.R.R. Tolkien", "J.-P. Bouchaud"}),
+               boost::test_tools::per_element());
+    BOOST_TEST(engine::reference_authors("Ł. Kowalski and T Schwager et al. Spheres. 2008.") ==
+                   (std::vector<std::string>{"Ł. Kowalski", "T Schwager"}),
+               boost::test_tools::per_element());
+    BOOST_TEST(engine::reference_authors("no period here, 1999").empty());
     const spec::derivation d = spec::parse_derivation(
         derivation_text("[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n"
                         "[[reference]]\npaper = \"Note 1\"\nnumber = 1\nentry = \"Ada Lovelace. Notes. 1843.\"\n"
@@ -655,6 +662,19 @@ BOOST_AUTO_TEST_CASE(a_reference_agrees_when_cited_by_its_authors_once_each_with
                                "author twice (Max Planck and M Planck); it prints no year");
     BOOST_TEST((t[2].verdict == outcome::disagrees));
     BOOST_TEST(t[2].finding == "Sec. 2 cites it beside Hilbert, whom it does not name among its authors (Emmy Noether)");
+    // Two authors of one surname are two (Marie and Pierre Curie); a name beside the mark
+    // as the text writes it ("Curie's", "Curie et al.") is its surname; a page range is no year.
+    const spec::derivation curies = spec::parse_derivation(
+        derivation_text("[[step]]\ndefine = \"y\"\nas = \"x\"\n[[result]]\nname = \"y\"\n"
+                        "[[reference]]\npaper = \"Note 1\"\nnumber = 1\n"
+                        "entry = \"Marie Curie and Pierre Curie. Radium. Comptes rendus, 1898, 1596–1600.\"\n"
+                        "[[citation]]\npaper = \"Sec. 1\"\nquote = \"Curie's radium1\"\ncites = 1\nnames = \"Curie's\"\n"
+                        "[[citation]]\npaper = \"Sec. 2\"\nquote = \"Curie et al.1\"\ncites = 1\nnames = \"Curie et al.\"\n"),
+        "curies.toml");
+    const std::vector<engine::text_comparison> c = engine::text_comparisons(curies);
+    BOOST_TEST_REQUIRE(c.size() == 1u);
+    BOOST_TEST((c[0].verdict == outcome::agrees), c[0].finding);
+    BOOST_TEST(c[0].finding.find("its year 1898") != std::string::npos, c[0].finding);
 }
 
 BOOST_AUTO_TEST_CASE(several_changes_that_each_mend_a_printed_equation_are_said_as_alternatives)

@@ -631,8 +631,8 @@ BOOST_AUTO_TEST_CASE(an_intermediate_quantity_too_long_written_out_is_used_by_na
         "[[step]]\ndefine = \"g\"\nas = \"u^2 + w^2 - u*w\"\n[[step]]\ndefine = \"h\"\nas = \"u + w\"\n"
         "[[result]]\nname = \"h\"\n[[result]]\nname = \"g\"\n");
     const std::string tex = emit::latex_fragment(d);
-    BOOST_TEST(contains(tex, "Written out in the declared quantities, it would take more lines than its "
-                             "definition; what follows uses $g$ by name."),
+    BOOST_TEST(contains(tex, "Written out in the declared quantities, it would take more than three lines; what "
+                             "follows uses $g$ by name."),
                tex);
     BOOST_TEST(!contains(tex, "uses $h$ by name"), tex);
     // h's step shows what it comes to: a_1 b_1 appears in it, besides u's own step and the results.

@@ -444,6 +444,13 @@ BOOST_AUTO_TEST_CASE(each_reference_is_a_row_checked_against_its_citations)
         BOOST_TEST((row.find("**disagrees**") != std::string::npos) == faulty, row);
         BOOST_TEST((row.find("| agrees |") != std::string::npos) == !faulty, row);
     }
+    // Each row shows its entry as the list above types it from the paper.
+    for (const printed_line& line : paper)
+        if (std::string(line.where).rfind("Footnote ", 0) == 0 && errata_rows_at(errata, line.where).size() == 1 &&
+            errata_rows_at(errata, line.where).front().find("| reference |") != std::string::npos)
+            BOOST_TEST(errata_rows_at(errata, line.where).front().find(std::string("| ") + line.text + " |") !=
+                           std::string::npos,
+                       line.where);
     BOOST_TEST(errata_rows_at(errata, "Footnote 1").front().find("names one author twice (Bernard Brogliato and B "
                                                                  "Brogliato)") != std::string::npos);
     BOOST_TEST(errata_rows_at(errata, "Footnote 2").front().find("prints no year") != std::string::npos);

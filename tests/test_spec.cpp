@@ -219,8 +219,10 @@ BOOST_AUTO_TEST_CASE(references_and_their_citations_are_read_and_checked_against
     impact::error e = error_for(minimal + refs + "[[citation]]\npaper = \"Sec. 2\"\nquote = \"q\"\ncites = 3\n");
     BOOST_TEST(e.message().find("cites reference 3, which no [[reference]] of this file lists") != std::string::npos,
                e.message());
+    BOOST_TEST(e.where().line == 45u);
     e = error_for(minimal + refs + "[[reference]]\npaper = \"Note 2\"\nnumber = 1\nentry = \"B. C.\"\n");
-    BOOST_TEST(e.message().find("reference 1 is listed twice") != std::string::npos, e.message());
+    BOOST_TEST(e.message().find("reference 1 is listed twice (first at line 36)") != std::string::npos, e.message());
+    BOOST_TEST(e.where().line == 45u);
     e = error_for(minimal + "\n[[reference]]\npaper = \"Note 1\"\nnumber = 1.5\nentry = \"x\"\n");
     BOOST_TEST(e.message().find("a whole number from 1") != std::string::npos, e.message());
 }

@@ -209,13 +209,14 @@ std::string fragment_writer::cases_text(const engine::check_result& c) const
     const bool all_proven = std::all_of(c.parts.begin(), c.parts.end(), [](const engine::check_result::part& p) {
         return p.in_case && p.outcome.what == engine::verdict::status::proven;
     });
-    if (!c.continuity && all_proven && c.parts.size() > 1 && latex_width(listing(parts)) > content_width) {
-        std::vector<std::string> names;
-        if (q)
-            names.push_back("$" + math(q->symbol) + "$");
-        else
-            for (const auto& [symbol, one] : c.parts.front().in_cases)
-                names.push_back("$" + math(symbol) + "$");
+    std::vector<std::string> names;
+    if (q)
+        names.push_back("$" + math(q->symbol) + "$");
+    else if (!c.parts.empty())
+        for (const auto& [symbol, one] : c.parts.front().in_cases)
+            names.push_back("$" + math(symbol) + "$");
+    if (!c.continuity && all_proven && !names.empty() && c.parts.size() > 1 &&
+        latex_width(listing(parts)) > content_width) {
         return fmt::format(" Case by case, in each of the {} cases of {} (as defined above): \\textbf{{proven}}.",
                            c.parts.size(), listing(names));
     }

@@ -568,9 +568,11 @@ std::string fragment_writer::define_step(const engine::step_result& s, const std
                 out += " \\\\\n" + rows("", shown.value, shown_written, "", "=", side);
                 how = shown.how;
             } else {
-                after = fmt::format("Written out in the declared quantities, it would take more lines than its definition; "
-                                       "what follows uses ${}$ by name.\n",
-                                       math(symbol));
+                after = fmt::format("Written out in the declared quantities, it would take more {}; what follows uses "
+                                    "${}$ by name.\n",
+                                    lines_of(shown.value, shown_written) > 3 ? "than three lines"
+                                                                             : "lines than its definition",
+                                    math(symbol));
             }
             out += "\n";
         } else if (as_written) {

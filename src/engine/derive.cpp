@@ -167,7 +167,7 @@ private:
     // inputs: a derivative is taken in the claim itself, where its variable stays free.
     void refuse_derivative(const GiNaC::ex& value, const spec::text& written, const char* where) const
     {
-        if (has_derivative(value))
+        if (has_derivative(value) || has_derivative(substituted(value, out_.symbols.abbreviations())))
             throw error(written.where, fmt::format("{} '{}' takes a derivative: diff(f, x) belongs in the claim, "
                                                    "not in a value put into it",
                                                    where, written.value));

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
-#include <set>
 
 namespace impact::engine {
 
@@ -18,12 +17,38 @@ std::string trimmed(const std::string& s)
     return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
 }
 
-// A name's surname: its last word ("Mojca Čepič" → Čepič, "T Pöschel" → Pöschel).
-std::string surname(const std::string& name)
+// The words of a name, split at spaces.
+std::vector<std::string> words_of(const std::string& name)
+{
+    std::vector<std::string> out;
+    std::string word;
+    for (const char c : name + " ") {
+        if (c == ' ') {
+            if (!word.empty())
+                out.push_back(word);
+            word.clear();
+        } else {
+            word += c;
+        }
+    }
+    return out;
+}
+
+// Letters of UTF-8 text: its bytes that start a character.
+std::size_t letters(const std::string& text)
+{
+    return static_cast<std::size_t>(
+        std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+// The first letter of a name (one UTF-8 character), to tell Marie Curie from Pierre Curie.
+std::string initial(const std::string& name)
 {
     const std::string t = trimmed(name);
-    const auto space = t.find_last_of(" ");
-    return space == std::string::npos ? t : t.substr(space + 1);
+    std::size_t end = t.empty() ? 0 : 1;
+    while (end < t.size() && (static_cast<unsigned char>(t[end]) & 0xC0) == 0x80)
+        ++end;
+    return t.substr(0, end);
 }
 
 // Case-insensitive for ASCII letters (BURACU and Buracu), bytes compared otherwise.
@@ -34,9 +59,62 @@ bool same_name(const std::string& a, const std::string& b)
            });
 }
 
-// The years an entry prints: numbers of four digits from 1500 to 2099, not part of a longer number.
+std::string lowered(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+    return s;
+}
+
+// The surnames the words beside a mark name: "Čepič's" → Čepič, "Schwager et al." →
+// Schwager, "Schwager and Pöschel" → both.
+std::vector<std::string> named_surnames(const std::string& names)
+{
+    std::vector<std::string> out;
+    std::string rest = names;
+    for (const char* tail : {" et al.", " et al"})
+        if (const auto at = rest.find(tail); at != std::string::npos)
+            rest.erase(at);
+    std::size_t from = 0;
+    while (from <= rest.size()) {
+        const std::size_t cut = std::min({rest.find(" and ", from), rest.find(" & ", from), rest.find(',', from)});
+        std::string name = trimmed(rest.substr(from, cut == std::string::npos ? std::string::npos : cut - from));
+        for (const char* possessive : {"'s", "\u2019s"})
+            if (name.size() > std::string(possessive).size() &&
+                name.compare(name.size() - std::string(possessive).size(), std::string::npos, possessive) == 0)
+                name.erase(name.size() - std::string(possessive).size());
+        if (const std::vector<std::string> w = words_of(name); !w.empty())
+            out.push_back(w.back());
+        if (cut == std::string::npos)
+            break;
+        from = cut + (rest[cut] == ',' ? 1 : rest.compare(cut, 5, " and ") == 0 ? 5 : 3);
+    }
+    return out;
+}
+
+// Whether an author's name holds `surname` as one of its words after the first ("Katica R
+// Stevanović Hedrih" holds Stevanović and Hedrih), or is that one word.
+bool has_surname(const std::string& author, const std::string& surname)
+{
+    const std::vector<std::string> w = words_of(author);
+    for (std::size_t i = w.size() == 1 ? 0 : 1; i < w.size(); ++i)
+        if (same_name(w[i], surname))
+            return true;
+    return false;
+}
+
+// The years an entry prints: numbers of four digits from 1500 to 2099, not part of a longer
+// number nor of a range of pages (1596–1600, 63:1998).
 std::vector<int> years(const std::string& entry)
 {
+    const auto at_range = [&](std::size_t i, std::size_t j) {
+        const auto before = [&](const char* s) {
+            const std::size_t n = std::string(s).size();
+            return i >= n && entry.compare(i - n, n, s) == 0;
+        };
+        const auto after = [&](const char* s) { return entry.compare(j, std::string(s).size(), s) == 0; };
+        return before("-") || before("\u2013") || before(":") || after("-") || after("\u2013");
+    };
     std::vector<int> out;
     for (std::size_t i = 0; i < entry.size();) {
         if (!std::isdigit(static_cast<unsigned char>(entry[i]))) {
@@ -46,7 +124,7 @@ std::vector<int> years(const std::string& entry)
         std::size_t j = i;
         while (j < entry.size() && std::isdigit(static_cast<unsigned char>(entry[j])))
             ++j;
-        if (j - i == 4) {
+        if (j - i == 4 && !at_range(i, j)) {
             const int year = std::stoi(entry.substr(i, 4));
             if (year >= 1500 && year <= 2099)
                 out.push_back(year);
@@ -56,11 +134,11 @@ std::vector<int> years(const std::string& entry)
     return out;
 }
 
-std::string listing(const std::vector<std::string>& items)
+std::string listing(const std::vector<std::string>& items, const char* between = ", ")
 {
     std::string out;
     for (std::size_t i = 0; i < items.size(); ++i)
-        out += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
+        out += (i == 0 ? "" : i + 1 == items.size() ? " and " : between) + items[i];
     return out;
 }
 
@@ -78,28 +156,37 @@ const char* to_string(text_comparison::outcome verdict)
 
 std::vector<std::string> reference_authors(const std::string& entry)
 {
-    // The authors end at the first period after a word of two letters or more.
+    // The authors end at the first period after a word of two letters or more, a word
+    // starting after a space, a comma, a period or a hyphen ("J.-P. Bouchaud", "J.R.R.
+    // Tolkien"), "et al." and "Jr." going on.
     std::size_t end = std::string::npos;
     for (std::size_t i = entry.find('.'); i != std::string::npos; i = entry.find('.', i + 1)) {
         std::size_t start = i;
-        while (start > 0 && entry[start - 1] != ' ' && entry[start - 1] != ',')
+        while (start > 0 && std::string(" ,.-").find(entry[start - 1]) == std::string::npos)
             --start;
-        if (i - start >= 2) {
+        const std::string word = entry.substr(start, i - start);
+        const bool goes_on = word == "Jr" || (word == "al" && start >= 3 && entry.compare(start - 3, 3, "et ") == 0);
+        if (letters(word) >= 2 && !goes_on) {
             end = i;
             break;
         }
     }
+    if (end == std::string::npos)
+        return {};
     std::string names = entry.substr(0, end);
+    for (const char* tail : {" et al.", " et al"})
+        if (const auto at = names.find(tail); at != std::string::npos)
+            names.erase(at);
     std::vector<std::string> out;
     // Split at ", and ", " and " and ",".
     std::size_t from = 0;
     while (from <= names.size()) {
-        std::size_t comma = names.find(',', from), and_ = names.find(" and ", from);
-        std::size_t cut = std::min(comma, and_);
+        const std::size_t comma = names.find(',', from), and_ = names.find(" and ", from);
+        const std::size_t cut = std::min(comma, and_);
         std::string name = trimmed(names.substr(from, cut == std::string::npos ? std::string::npos : cut - from));
         if (name.rfind("and ", 0) == 0)
             name = trimmed(name.substr(4));
-        if (!name.empty())
+        if (!name.empty() && name != "Jr." && name != "Jr")
             out.push_back(name);
         if (cut == std::string::npos)
             break;
@@ -112,24 +199,24 @@ std::vector<text_comparison> text_comparisons(const spec::derivation& d)
 {
     std::vector<text_comparison> out;
     for (const spec::open_claim& c : d.open_claims)
-        out.push_back({text_comparison::kind::claim, c.name.value, c.paper.value, c.quote.value, text_comparison::outcome::undecided,
-                       c.undecided.value, c.paper.where});
+        out.push_back({text_comparison::kind::claim, c.name.value, c.paper.value, c.quote.value,
+                       text_comparison::outcome::undecided, c.undecided.value, c.paper.where});
     for (const spec::reference& r : d.references) {
-        text_comparison t{text_comparison::kind::reference, fmt::format("reference {}", r.number), r.paper.value, r.entry.value,
-                          text_comparison::outcome::agrees, "", r.where};
+        text_comparison t{text_comparison::kind::reference, fmt::format("reference {}", r.number), r.paper.value,
+                          r.entry.value, text_comparison::outcome::agrees, "", r.where};
         std::vector<std::string> faults, cited_at;
         const std::vector<std::string> authors = reference_authors(r.entry.value);
         for (const spec::citation& c : d.citations) {
             if (c.cites != r.number)
                 continue;
             std::string at = c.paper.value;
-            if (c.names) {
-                const std::string named = surname(c.names->value);
-                const bool listed = std::any_of(authors.begin(), authors.end(),
-                                                [&](const std::string& a) { return same_name(surname(a), named); });
-                if (!listed)
-                    faults.push_back(fmt::format("{} cites it beside {}, whom it does not name among its authors ({})",
-                                                 c.paper.value, c.names->value, listing(authors)));
+            if (c.names && !authors.empty()) {
+                for (const std::string& named : named_surnames(c.names->value))
+                    if (std::none_of(authors.begin(), authors.end(),
+                                     [&](const std::string& a) { return has_surname(a, named); }))
+                        faults.push_back(fmt::format("{} cites it beside {}, whom it does not name among its authors "
+                                                     "({})",
+                                                     c.paper.value, named, listing(authors)));
                 at += fmt::format(" (beside {})", c.names->value);
             }
             if (std::find(cited_at.begin(), cited_at.end(), at) == cited_at.end())
@@ -138,33 +225,33 @@ std::vector<text_comparison> text_comparisons(const spec::derivation& d)
         if (cited_at.empty())
             faults.push_back(fmt::format("no place of the text or the notes cites it (its mark {} appears nowhere)",
                                          r.number));
-        std::map<std::string, std::vector<std::string>> by_surname;
-        for (const std::string& a : authors) {
-            std::string key = surname(a);
-            std::transform(key.begin(), key.end(), key.begin(),
-                           [](char ch) { return static_cast<char>(std::tolower(static_cast<unsigned char>(ch))); });
-            by_surname[key].push_back(a);
-        }
-        for (const std::string& a : authors) {
-            std::string key = surname(a);
-            std::transform(key.begin(), key.end(), key.begin(),
-                           [](char ch) { return static_cast<char>(std::tolower(static_cast<unsigned char>(ch))); });
-            auto found = by_surname.find(key);
-            if (found != by_surname.end() && found->second.size() > 1) {
-                const std::size_t times = found->second.size();
-                faults.push_back(fmt::format("it names one author {} ({})",
-                                             times == 2 ? std::string("twice") : fmt::format("{} times", times),
-                                             listing(found->second)));
-                by_surname.erase(found);
+        if (authors.empty()) {
+            faults.push_back("its authors are not set off by a period, as an entry's are");
+        } else {
+            // One author twice: the same surname and the same initial (Bernard Brogliato and
+            // B Brogliato), where Marie and Pierre Curie are two.
+            std::map<std::string, std::vector<std::string>> by_name;
+            std::vector<std::string> order;
+            for (const std::string& a : authors) {
+                const std::vector<std::string> w = words_of(a);
+                const std::string key = lowered(w.back()) + "|" + lowered(initial(a));
+                if (by_name[key].empty())
+                    order.push_back(key);
+                by_name[key].push_back(a);
             }
+            for (const std::string& key : order)
+                if (const std::vector<std::string>& same = by_name[key]; same.size() > 1)
+                    faults.push_back(fmt::format("it names one author {} ({})",
+                                                 same.size() == 2 ? std::string("twice")
+                                                                  : fmt::format("{} times", same.size()),
+                                                 listing(same)));
         }
-        if (authors.empty())
-            faults.push_back("it names no author before its first period");
-        if (years(r.entry.value).empty())
+        const std::vector<int> printed_years = years(r.entry.value);
+        if (printed_years.empty())
             faults.push_back("it prints no year");
         if (faults.empty()) {
-            t.finding = fmt::format("cited at {}; its authors ({}) each named once, and its year {}", listing(cited_at),
-                                    listing(authors), years(r.entry.value).back());
+            t.finding = fmt::format("cited at {}; its authors ({}) each named once, and its year {}",
+                                    listing(cited_at, "; "), listing(authors), printed_years.back());
         } else {
             t.verdict = text_comparison::outcome::disagrees;
             t.finding = faults.front();
