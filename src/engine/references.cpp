@@ -51,14 +51,6 @@ std::string initial(const std::string& name)
     return t.substr(0, end);
 }
 
-// Case-insensitive for ASCII letters (BURACU and Buracu), bytes compared otherwise.
-bool same_name(const std::string& a, const std::string& b)
-{
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-           });
-}
-
 std::string lowered(std::string s)
 {
     std::transform(s.begin(), s.end(), s.begin(),
@@ -66,28 +58,46 @@ std::string lowered(std::string s)
     return s;
 }
 
+// Case-insensitive for ASCII letters (BURACU and Buracu), bytes compared otherwise.
+bool same_name(const std::string& a, const std::string& b)
+{
+    return lowered(a) == lowered(b);
+}
+
+// The names of a list as written: "et al." left out, split at commas, " and " and " & "
+// ("T Schwager, V Becker, and T Pöschel" → three).
+std::vector<std::string> names_in(std::string text)
+{
+    for (const char* tail : {" et al.", " et al"})
+        if (const auto at = text.find(tail); at != std::string::npos)
+            text.erase(at);
+    std::vector<std::string> out;
+    for (std::size_t from = 0; from <= text.size();) {
+        const std::size_t cut = std::min({text.find(',', from), text.find(" and ", from), text.find(" & ", from)});
+        std::string name = trimmed(text.substr(from, cut == std::string::npos ? std::string::npos : cut - from));
+        if (name.rfind("and ", 0) == 0)
+            name = trimmed(name.substr(4));
+        if (!name.empty())
+            out.push_back(name);
+        if (cut == std::string::npos)
+            break;
+        from = cut + (text[cut] == ',' ? 1 : text.compare(cut, 5, " and ") == 0 ? 5 : 3);
+    }
+    return out;
+}
+
 // The surnames the words beside a mark name: "Čepič's" → Čepič, "Schwager et al." →
 // Schwager, "Schwager and Pöschel" → both.
 std::vector<std::string> named_surnames(const std::string& names)
 {
     std::vector<std::string> out;
-    std::string rest = names;
-    for (const char* tail : {" et al.", " et al"})
-        if (const auto at = rest.find(tail); at != std::string::npos)
-            rest.erase(at);
-    std::size_t from = 0;
-    while (from <= rest.size()) {
-        const std::size_t cut = std::min({rest.find(" and ", from), rest.find(" & ", from), rest.find(',', from)});
-        std::string name = trimmed(rest.substr(from, cut == std::string::npos ? std::string::npos : cut - from));
-        for (const char* possessive : {"'s", "\u2019s"})
-            if (name.size() > std::string(possessive).size() &&
-                name.compare(name.size() - std::string(possessive).size(), std::string::npos, possessive) == 0)
-                name.erase(name.size() - std::string(possessive).size());
+    for (std::string name : names_in(names)) {
+        for (const std::string possessive : {"'s", "\u2019s"})
+            if (name.size() > possessive.size() &&
+                name.compare(name.size() - possessive.size(), std::string::npos, possessive) == 0)
+                name.erase(name.size() - possessive.size());
         if (const std::vector<std::string> w = words_of(name); !w.empty())
             out.push_back(w.back());
-        if (cut == std::string::npos)
-            break;
-        from = cut + (rest[cut] == ',' ? 1 : rest.compare(cut, 5, " and ") == 0 ? 5 : 3);
     }
     return out;
 }
@@ -173,25 +183,10 @@ std::vector<std::string> reference_authors(const std::string& entry)
     }
     if (end == std::string::npos)
         return {};
-    std::string names = entry.substr(0, end);
-    for (const char* tail : {" et al.", " et al"})
-        if (const auto at = names.find(tail); at != std::string::npos)
-            names.erase(at);
     std::vector<std::string> out;
-    // Split at ", and ", " and " and ",".
-    std::size_t from = 0;
-    while (from <= names.size()) {
-        const std::size_t comma = names.find(',', from), and_ = names.find(" and ", from);
-        const std::size_t cut = std::min(comma, and_);
-        std::string name = trimmed(names.substr(from, cut == std::string::npos ? std::string::npos : cut - from));
-        if (name.rfind("and ", 0) == 0)
-            name = trimmed(name.substr(4));
-        if (!name.empty() && name != "Jr." && name != "Jr")
+    for (const std::string& name : names_in(entry.substr(0, end)))
+        if (name != "Jr." && name != "Jr")
             out.push_back(name);
-        if (cut == std::string::npos)
-            break;
-        from = cut + (cut == comma ? 1 : 5);
-    }
     return out;
 }
 
