@@ -1708,6 +1708,36 @@ BOOST_AUTO_TEST_CASE(a_block_of_ordinary_pairs_is_resolved_at_once_and_a_nan_any
     BOOST_TEST(left == 88u);
 }
 
+// The sure block's input range, as the loop's range test reads it: 0, or a magnitude within
+// [2^-k, 2^k]. At its lower end, 2^-k is in and the double just below it is not; above 2^k,
+// nothing is (at 2^k itself, the block may leave a pair it could resolve: its sum of squares
+// then exceeds 2^2k, where the block tests that). Tried on v_Mx, which keeps the pair
+// approaching at every one of these values.
+BOOST_AUTO_TEST_CASE(the_sure_blocks_range_ends_where_the_loops_does)
+{
+    constexpr int k = impact::detail::collide_batch_2d_k<double>;
+    static_assert(k > 0);
+    const double lowest = std::ldexp(1.0, -k), highest = std::ldexp(1.0, k);
+    std::array<pair_nd<double, 2>, 8> pairs;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+        pairs[i] = ordinary_pair<double, 2>(i);
+    const auto resolved_with = [&](double v_Mx) {
+        auto changed = pairs;
+        changed[5].v_M[0] = v_Mx;
+        const auto [taken, kept] = sure_block(changed);
+        BOOST_TEST(taken != kept);  // resolved, or left as it was
+        return taken;
+    };
+    BOOST_TEST(resolved_with(0.0));
+    BOOST_TEST(resolved_with(-0.0));
+    BOOST_TEST(resolved_with(lowest));
+    BOOST_TEST(!resolved_with(std::nextafter(lowest, 0.0)));
+    BOOST_TEST(!resolved_with(std::numeric_limits<double>::denorm_min()));
+    BOOST_TEST(resolved_with(highest / 2));
+    BOOST_TEST(!resolved_with(std::nextafter(highest, 2 * highest)));
+    BOOST_TEST(!resolved_with(std::numeric_limits<double>::infinity()));
+}
+
 BOOST_AUTO_TEST_CASE(the_fast_forms_keep_every_invariant_of_the_sweep_along_the_line)
 {
     sweep_line<float>(1751, impact::fast);

@@ -24,14 +24,6 @@
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
 #endif
-// A short loop of copies kept a loop, so that GCC vectorises it as one: unrolled whole, as
-// GCC unrolls a loop of 8 iterations, it is straight-line code, which the kernels compile
-// without GCC's straight-line vectorisation (IMPACT_PRECISE_BEGIN), one lane at a time.
-#if defined(__GNUC__) && !defined(__clang__)
-#define IMPACT_KEPT_A_LOOP _Pragma("GCC unroll 1") _Pragma("GCC ivdep")
-#else
-#define IMPACT_KEPT_A_LOOP
-#endif
 // Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop
 // streams so many arrays at once that the processor's own prefetching falls behind.
 #if defined(__GNUC__) || defined(__clang__)

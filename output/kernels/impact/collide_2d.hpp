@@ -537,9 +537,9 @@ inline void collide_batch_2d_settle(std::size_t count, const Real* IMPACT_RESTRI
 
 // A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
 // range (collide_batch_2d_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
-// each status is ok or a condition's, and each result is collide_batch_2d's bit for bit, without
-// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
-// as it was, to collide_batch_2d.
+// each status is ok, a condition's or a divisor's out of range, and each result is collide_batch_2d's
+// bit for bit, without its blended statuses and the scalar kernel after it. Otherwise
+// (false) the block is left as it was, to collide_batch_2d.
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
@@ -548,18 +548,42 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
     if constexpr (collide_batch_2d_k<Real> < 0 || 2 * collide_batch_2d_k<Real> >= std::numeric_limits<Real>::max_exponent)
         return false;
     constexpr std::size_t block = 8;
-    Real v_Mx_sure[block], v_My_sure[block], v_mx_sure[block], v_my_sure[block];
-    impact::status status_sure[block];
     std::int64_t left = 0;  // a pair the block leaves to the loop
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
-        impact::status outcome = status::ok;
         std::int64_t refused = 0;
+        refused |= !(eps_[i] >= Real(0));
+        refused |= !(eps_[i] <= Real(1));
+        refused |= !(M_[i] > Real(0));
+        refused |= !(m_[i] > Real(0));
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real eps = eps_[i];
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_k<Real>);
+        std::int64_t doubtful;
+        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
+            doubtful = detail::outside_by_bits(lowest, highest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps);
+        else if constexpr (detail::has_magnitude_bits<Real>)
+            doubtful = detail::below_range(lowest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps) | !detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest);
+        else
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest)) |
+                       (!detail::nan_compares_false && !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_mx, C_my) + detail::zero_if_finite(v_Mx, v_My))) + (detail::zero_if_finite(v_mx, v_my) + detail::zero_if_finite(eps))) == Real(0)));
+        left |= refused | doubtful;
+    }
+    if (left)
+        return false;
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
         {
-            refused |= !(eps_[i] >= Real(0));
-            refused |= !(eps_[i] <= Real(1));
-            refused |= !(M_[i] > Real(0));
-            refused |= !(m_[i] > Real(0));
             impact::status condition = status::ok;
             const Real t0 = C_Mx_[i] - C_mx_[i];
             const Real t1 = t0 * t0;
@@ -629,27 +653,12 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
         const Real v_My_out = -t33 + v_My;
         const Real v_mx_out = t35 + v_mx;
         const Real v_my_out = t36 + v_my;
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_k<Real>);
-        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest));
-        if constexpr (!detail::nan_compares_false)
-            doubtful |= !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_mx, C_my) + detail::zero_if_finite(v_Mx, v_My))) + (detail::zero_if_finite(v_mx, v_my) + detail::zero_if_finite(eps))) == Real(0));
-        v_Mx_sure[i] = detail::blend(usable, v_Mx_out, v_Mx_[i]);
-        v_My_sure[i] = detail::blend(usable, v_My_out, v_My_[i]);
-        v_mx_sure[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
-        v_my_sure[i] = detail::blend(usable, v_my_out, v_my_[i]);
-        status_sure[i] = outcome;
-        left |= refused | doubtful | (resolved & !usable);
-    }
-    if (left)
-        return false;
-    IMPACT_KEPT_A_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_Mx_[i] = v_Mx_sure[i];
-        v_My_[i] = v_My_sure[i];
-        v_mx_[i] = v_mx_sure[i];
-        v_my_[i] = v_my_sure[i];
+        v_Mx_[i] = detail::blend(usable, v_Mx_out, v_Mx_[i]);
+        v_My_[i] = detail::blend(usable, v_My_out, v_My_[i]);
+        v_mx_[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
+        v_my_[i] = detail::blend(usable, v_my_out, v_my_[i]);
         if constexpr (with_status)
-            status_[i] = status_sure[i];
+            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }
@@ -1118,9 +1127,9 @@ inline void collide_batch_2d_fast_settle(std::size_t count, const Real* IMPACT_R
 
 // A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
 // range (collide_batch_2d_fast_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
-// each status is ok or a condition's, and each result is collide_batch_2d_fast's bit for bit, without
-// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
-// as it was, to collide_batch_2d_fast.
+// each status is ok, a condition's or a divisor's out of range, and each result is collide_batch_2d_fast's
+// bit for bit, without its blended statuses and the scalar kernel after it. Otherwise
+// (false) the block is left as it was, to collide_batch_2d_fast.
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
@@ -1129,18 +1138,42 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
     if constexpr (collide_batch_2d_fast_k<Real> < 0 || 2 * collide_batch_2d_fast_k<Real> >= std::numeric_limits<Real>::max_exponent)
         return false;
     constexpr std::size_t block = 8;
-    Real v_Mx_sure[block], v_My_sure[block], v_mx_sure[block], v_my_sure[block];
-    impact::status status_sure[block];
     std::int64_t left = 0;  // a pair the block leaves to the loop
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
-        impact::status outcome = status::ok;
         std::int64_t refused = 0;
+        refused |= !(eps_[i] >= Real(0));
+        refused |= !(eps_[i] <= Real(1));
+        refused |= !(M_[i] > Real(0));
+        refused |= !(m_[i] > Real(0));
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real C_Mx = C_Mx_[i];
+        const Real C_My = C_My_[i];
+        const Real C_mx = C_mx_[i];
+        const Real C_my = C_my_[i];
+        const Real v_Mx = v_Mx_[i];
+        const Real v_My = v_My_[i];
+        const Real v_mx = v_mx_[i];
+        const Real v_my = v_my_[i];
+        const Real eps = eps_[i];
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_fast_k<Real>);
+        std::int64_t doubtful;
+        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
+            doubtful = detail::outside_by_bits(lowest, highest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps);
+        else if constexpr (detail::has_magnitude_bits<Real>)
+            doubtful = detail::below_range(lowest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps) | !detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest);
+        else
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest)) |
+                       (!detail::nan_compares_false && !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_mx, C_my) + detail::zero_if_finite(v_Mx, v_My))) + (detail::zero_if_finite(v_mx, v_my) + detail::zero_if_finite(eps))) == Real(0)));
+        left |= refused | doubtful;
+    }
+    if (left)
+        return false;
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
         {
-            refused |= !(eps_[i] >= Real(0));
-            refused |= !(eps_[i] <= Real(1));
-            refused |= !(M_[i] > Real(0));
-            refused |= !(m_[i] > Real(0));
             impact::status condition = status::ok;
             const Real t0 = C_Mx_[i] - C_mx_[i];
             const Real t1 = C_My_[i] - C_my_[i];
@@ -1188,27 +1221,12 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
         const Real v_My_out = -t16 + v_My;
         const Real v_mx_out = t18 + v_mx;
         const Real v_my_out = t19 + v_my;
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_fast_k<Real>);
-        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest));
-        if constexpr (!detail::nan_compares_false)
-            doubtful |= !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_mx, C_my) + detail::zero_if_finite(v_Mx, v_My))) + (detail::zero_if_finite(v_mx, v_my) + detail::zero_if_finite(eps))) == Real(0));
-        v_Mx_sure[i] = detail::blend(usable, v_Mx_out, v_Mx_[i]);
-        v_My_sure[i] = detail::blend(usable, v_My_out, v_My_[i]);
-        v_mx_sure[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
-        v_my_sure[i] = detail::blend(usable, v_my_out, v_my_[i]);
-        status_sure[i] = outcome;
-        left |= refused | doubtful | (resolved & !usable);
-    }
-    if (left)
-        return false;
-    IMPACT_KEPT_A_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_Mx_[i] = v_Mx_sure[i];
-        v_My_[i] = v_My_sure[i];
-        v_mx_[i] = v_mx_sure[i];
-        v_my_[i] = v_my_sure[i];
+        v_Mx_[i] = detail::blend(usable, v_Mx_out, v_Mx_[i]);
+        v_My_[i] = detail::blend(usable, v_My_out, v_My_[i]);
+        v_mx_[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
+        v_my_[i] = detail::blend(usable, v_my_out, v_my_[i]);
         if constexpr (with_status)
-            status_[i] = status_sure[i];
+            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }

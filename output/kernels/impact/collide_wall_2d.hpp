@@ -228,9 +228,9 @@ inline void collide_wall_batch_2d_settle(std::size_t count, const Real* IMPACT_R
 
 // A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
 // range (collide_wall_batch_2d_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
-// each status is ok or a condition's, and each result is collide_wall_batch_2d's bit for bit, without
-// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
-// as it was, to collide_wall_batch_2d.
+// each status is ok, a condition's or a divisor's out of range, and each result is collide_wall_batch_2d's
+// bit for bit, without its blended statuses and the scalar kernel after it. Otherwise
+// (false) the block is left as it was, to collide_wall_batch_2d.
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
@@ -239,17 +239,35 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT
     if constexpr (collide_wall_batch_2d_k<Real> < 0 || 2 * collide_wall_batch_2d_k<Real> >= std::numeric_limits<Real>::max_exponent)
         return false;
     constexpr std::size_t block = 8;
-    Real v_x_sure[block], v_y_sure[block];
-    impact::status status_sure[block];
     std::int64_t left = 0;  // a pair the block leaves to the loop
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
-        impact::status outcome = status::ok;
         std::int64_t refused = 0;
+        refused |= !(eps_[i] >= Real(0));
+        refused |= !(eps_[i] <= Real(1));
+        refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
+        const Real N_x = N_x_[i];
+        const Real N_y = N_y_[i];
+        const Real v_x = v_x_[i];
+        const Real v_y = v_y_[i];
+        const Real eps = eps_[i];
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_k<Real>);
+        std::int64_t doubtful;
+        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
+            doubtful = detail::outside_by_bits(lowest, highest, N_x, N_y, v_x, v_y, eps);
+        else if constexpr (detail::has_magnitude_bits<Real>)
+            doubtful = detail::below_range(lowest, N_x, N_y, v_x, v_y, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest);
+        else
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)) |
+                       (!detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
+        left |= refused | doubtful;
+    }
+    if (left)
+        return false;
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
         {
-            refused |= !(eps_[i] >= Real(0));
-            refused |= !(eps_[i] <= Real(1));
-            refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
             impact::status condition = status::ok;
             const Real t0 = N_x_[i] * N_x_[i];
             const Real t1 = N_y_[i] * N_y_[i];
@@ -291,23 +309,10 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT
         const Real t19 = N_y * t17;
         const Real v_x_out = -t18 + v_x;
         const Real v_y_out = -t19 + v_y;
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_k<Real>);
-        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest));
-        if constexpr (!detail::nan_compares_false)
-            doubtful |= !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0));
-        v_x_sure[i] = detail::blend(usable, v_x_out, v_x_[i]);
-        v_y_sure[i] = detail::blend(usable, v_y_out, v_y_[i]);
-        status_sure[i] = outcome;
-        left |= refused | doubtful | (resolved & !usable);
-    }
-    if (left)
-        return false;
-    IMPACT_KEPT_A_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_x_[i] = v_x_sure[i];
-        v_y_[i] = v_y_sure[i];
+        v_x_[i] = detail::blend(usable, v_x_out, v_x_[i]);
+        v_y_[i] = detail::blend(usable, v_y_out, v_y_[i]);
         if constexpr (with_status)
-            status_[i] = status_sure[i];
+            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }
@@ -543,9 +548,9 @@ inline void collide_wall_batch_2d_fast_settle(std::size_t count, const Real* IMP
 
 // A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's
 // range (collide_wall_batch_2d_fast_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
-// each status is ok or a condition's, and each result is collide_wall_batch_2d_fast's bit for bit, without
-// its blended statuses and the scalar kernel after it. Otherwise (false) the block is left
-// as it was, to collide_wall_batch_2d_fast.
+// each status is ok, a condition's or a divisor's out of range, and each result is collide_wall_batch_2d_fast's
+// bit for bit, without its blended statuses and the scalar kernel after it. Otherwise
+// (false) the block is left as it was, to collide_wall_batch_2d_fast.
 template <class Real, bool with_status>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
@@ -554,17 +559,35 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RES
     if constexpr (collide_wall_batch_2d_fast_k<Real> < 0 || 2 * collide_wall_batch_2d_fast_k<Real> >= std::numeric_limits<Real>::max_exponent)
         return false;
     constexpr std::size_t block = 8;
-    Real v_x_sure[block], v_y_sure[block];
-    impact::status status_sure[block];
     std::int64_t left = 0;  // a pair the block leaves to the loop
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
-        impact::status outcome = status::ok;
         std::int64_t refused = 0;
+        refused |= !(eps_[i] >= Real(0));
+        refused |= !(eps_[i] <= Real(1));
+        refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
+        const Real N_x = N_x_[i];
+        const Real N_y = N_y_[i];
+        const Real v_x = v_x_[i];
+        const Real v_y = v_y_[i];
+        const Real eps = eps_[i];
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_fast_k<Real>);
+        std::int64_t doubtful;
+        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
+            doubtful = detail::outside_by_bits(lowest, highest, N_x, N_y, v_x, v_y, eps);
+        else if constexpr (detail::has_magnitude_bits<Real>)
+            doubtful = detail::below_range(lowest, N_x, N_y, v_x, v_y, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest);
+        else
+            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)) |
+                       (!detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
+        left |= refused | doubtful;
+    }
+    if (left)
+        return false;
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
         {
-            refused |= !(eps_[i] >= Real(0));
-            refused |= !(eps_[i] <= Real(1));
-            refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
             impact::status condition = status::ok;
             const Real t0 = N_x_[i] * N_x_[i] + N_y_[i] * N_y_[i];
             const Real t1 = N_x_[i] * v_x_[i];
@@ -592,23 +615,10 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RES
         const Real t9 = N_y * t7;
         const Real v_x_out = -t8 + v_x;
         const Real v_y_out = -t9 + v_y;
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_fast_k<Real>);
-        std::int64_t doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest));
-        if constexpr (!detail::nan_compares_false)
-            doubtful |= !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0));
-        v_x_sure[i] = detail::blend(usable, v_x_out, v_x_[i]);
-        v_y_sure[i] = detail::blend(usable, v_y_out, v_y_[i]);
-        status_sure[i] = outcome;
-        left |= refused | doubtful | (resolved & !usable);
-    }
-    if (left)
-        return false;
-    IMPACT_KEPT_A_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_x_[i] = v_x_sure[i];
-        v_y_[i] = v_y_sure[i];
+        v_x_[i] = detail::blend(usable, v_x_out, v_x_[i]);
+        v_y_[i] = detail::blend(usable, v_y_out, v_y_[i]);
         if constexpr (with_status)
-            status_[i] = status_sure[i];
+            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }

@@ -28,14 +28,6 @@
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
 #endif
-// A short loop of copies kept a loop, so that GCC vectorises it as one: unrolled whole, as
-// GCC unrolls a loop of 8 iterations, it is straight-line code, which the kernels compile
-// without GCC's straight-line vectorisation (IMPACT_PRECISE_BEGIN), one lane at a time.
-#if defined(__GNUC__) && !defined(__clang__)
-#define IMPACT_KEPT_A_LOOP _Pragma("GCC unroll 1") _Pragma("GCC ivdep")
-#else
-#define IMPACT_KEPT_A_LOOP
-#endif
 // Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop
 // streams so many arrays at once that the processor's own prefetching falls behind.
 #if defined(__GNUC__) || defined(__clang__)
@@ -328,6 +320,68 @@ template <class Real>
 IMPACT_ALWAYS_INLINE Real magnitude_or(Real x, Real value) noexcept
 {
     return most(std::fabs(x), std::fma(-(std::fabs(x) * underflow_scale<Real>), underflow_scale<Real>, value));
+}
+
+/// A sure block's range test by the inputs' bits: for IEEE float and double, whose
+/// magnitudes order as their bits do. Where vectors have 64-bit unsigned minima and
+/// maxima (AVX-512F), by integers only: one minimum and one maximum an input, NaN and
+/// the infinities above every bound, whatever the floating-point flags (against a
+/// least magnitude and a sum of squares, the fast 2D block 0.34 of the plain loop in
+/// cache, from 0.31). Elsewhere (AVX2: the integers' minima take four instructions),
+/// the least magnitude by a chain of minima of |x| less one unit, which is NaN for a
+/// 0 and skipped (0.28 from 0.20 in cache).
+template <class Real>
+constexpr bool has_magnitude_bits = std::numeric_limits<Real>::is_iec559 &&
+    (sizeof(Real) == sizeof(std::uint64_t) || sizeof(Real) == sizeof(std::uint32_t));
+#if defined(__AVX512F__)
+inline constexpr bool integer_minima = true;
+#else
+inline constexpr bool integer_minima = false;
+#endif
+template <class Real>
+using magnitude_bits_t = std::conditional_t<sizeof(Real) == sizeof(std::uint64_t), std::uint64_t, std::uint32_t>;
+
+/// The bits of |x|.
+template <class Real>
+IMPACT_ALWAYS_INLINE magnitude_bits_t<Real> magnitude_bits(Real x) noexcept
+{
+    magnitude_bits_t<Real> a;
+    std::memcpy(&a, &x, sizeof a);
+    return a & (~magnitude_bits_t<Real>(0) >> 1);
+}
+
+/// 1 where an x is neither 0 nor within [lowest, highest], by the bits of |x| (0 less 1
+/// is the largest of them; NaN and the infinities are above highest).
+template <class Real, class... X>
+IMPACT_ALWAYS_INLINE std::int64_t outside_by_bits(Real lowest, Real highest, X... x) noexcept
+{
+    using bits = magnitude_bits_t<Real>;
+    bits low = ~bits(0), high = 0;
+    ((low = bits(magnitude_bits(x) - 1) < low ? bits(magnitude_bits(x) - 1) : low), ...);
+    ((high = magnitude_bits(x) < high ? high : magnitude_bits(x)), ...);
+    return (low < bits(magnitude_bits(lowest) - 1)) | (high > magnitude_bits(highest));
+}
+
+/// |x| less one unit in its last place, by its bits: NaN for 0.
+template <class Real>
+IMPACT_ALWAYS_INLINE Real below_magnitude(Real x) noexcept
+{
+    const magnitude_bits_t<Real> a = magnitude_bits(x) - 1;
+    Real r;
+    std::memcpy(&r, &a, sizeof r);
+    return r;
+}
+
+/// 1 where an x is neither 0 nor at least lowest in magnitude: the least of below_magnitude,
+/// each taken as least(next, so far), which keeps `so far` where next is NaN (an x 0),
+/// where a comparison with NaN is false (nan_compares_false). A NaN x is found by the
+/// block's sum of squares.
+template <class Real, class... X>
+IMPACT_ALWAYS_INLINE std::int64_t below_range(Real lowest, X... x) noexcept
+{
+    Real low = lowest;
+    ((low = least(below_magnitude(x), low)), ...);
+    return !at_least(low, below_magnitude(lowest));
 }
 
 } // namespace detail
