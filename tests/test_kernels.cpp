@@ -830,7 +830,8 @@ BOOST_AUTO_TEST_CASE(arrays_crowd_one_page_offset_when_more_than_half_start_with
 
 BOOST_AUTO_TEST_CASE(a_batch_whose_arrays_share_a_page_offset_gives_the_scalar_results_bit_for_bit)
 {
-    // Every array at the same offset within its pages: the batch reads them skewed. Counts
+    // Every array at the same offset within its pages (the loop reads them as they are: with its
+    // sure block, skewed reading lost, and kernels without one read them skewed). Counts
     // around its blocks of 8 pairs, its reading 64 pairs ahead and its leads of up to 18
     // blocks (144 pairs).
     constexpr std::size_t most = 1000, stride = 1024;  // pairs at most; array k starts 8 KiB after array k - 1

@@ -887,78 +887,6 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
     collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
-// collide_batch_3d over blocks of 8 pairs for arrays that start at one offset within their pages:
-// pair i of every array then falls on the same cache sets. The read-only array k is read
-// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
-// at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
-inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 9;
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    const Real* const from[read_only] = {M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, eps_};
-    alignas(64) Real stage[read_only][ring][block];
-    auto lead = [](std::size_t k) { return 2 * (k + 1); };
-    auto read = [&](std::size_t k, std::size_t j) {
-        for (std::size_t i = 0; i < block; ++i)
-            stage[k][j % ring][i] = from[k][j * block + i];
-    };
-    const std::size_t blocks = count / block;
-    for (std::size_t k = 0; k < read_only; ++k)
-        for (std::size_t j = 0; j < lead(k) && j < blocks; ++j)
-            read(k, j);
-    std::size_t b = 0;
-    for (std::size_t j = 0; j < blocks; ++j, b += block) {
-        if (b + ahead < count) {
-            if (b + ahead + block * lead(0) < count)
-                IMPACT_PREFETCH(M_ + b + ahead + block * lead(0), 0);
-            if (b + ahead + block * lead(1) < count)
-                IMPACT_PREFETCH(m_ + b + ahead + block * lead(1), 0);
-            if (b + ahead + block * lead(2) < count)
-                IMPACT_PREFETCH(C_Mx_ + b + ahead + block * lead(2), 0);
-            if (b + ahead + block * lead(3) < count)
-                IMPACT_PREFETCH(C_My_ + b + ahead + block * lead(3), 0);
-            if (b + ahead + block * lead(4) < count)
-                IMPACT_PREFETCH(C_Mz_ + b + ahead + block * lead(4), 0);
-            if (b + ahead + block * lead(5) < count)
-                IMPACT_PREFETCH(C_mx_ + b + ahead + block * lead(5), 0);
-            if (b + ahead + block * lead(6) < count)
-                IMPACT_PREFETCH(C_my_ + b + ahead + block * lead(6), 0);
-            if (b + ahead + block * lead(7) < count)
-                IMPACT_PREFETCH(C_mz_ + b + ahead + block * lead(7), 0);
-            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_Mz_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
-            if (b + ahead + block * lead(8) < count)
-                IMPACT_PREFETCH(eps_ + b + ahead + block * lead(8), 0);
-            if constexpr (with_status)
-                IMPACT_PREFETCH(status_ + b + ahead, 1);
-        }
-        for (std::size_t k = 0; k < read_only; ++k)
-            if (j + lead(k) < blocks)
-                read(k, j + lead(k));
-        const std::size_t r = j % ring;
-        if (untried == 0 && collide_batch_3d_sure<Real, with_status>(stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own)) {
-            back_off = 0;
-        } else {
-            if (untried == 0) {
-                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                untried = back_off;
-            } else {
-                --untried;
-            }
-            collide_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
-            collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-        }
-    }
-    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-}
-
 } // namespace detail
 
 /// collide over `count` collisions stored as structure of arrays: outputs named after
@@ -969,16 +897,6 @@ inline void collide_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRI
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 3>& data) noexcept
 {
-    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the
-    // distances are a double's; other types keep the plain loop).
-    if constexpr (sizeof(Real) == sizeof(double))
-        if (detail::crowded(std::array<const void*, 9>{data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.eps})) {
-            if (data.status)
-                detail::collide_batch_3d_skewed<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
-            else
-                detail::collide_batch_3d_skewed<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
-            return;
-        }
     if (data.status)
         detail::collide_batch_3d_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
     else
@@ -1637,78 +1555,6 @@ inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RE
     collide_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
 }
 
-// collide_batch_3d_fast over blocks of 8 pairs for arrays that start at one offset within their pages:
-// pair i of every array then falls on the same cache sets. The read-only array k is read
-// 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
-// at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
-inline void collide_batch_3d_fast_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 9;
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    const Real* const from[read_only] = {M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, eps_};
-    alignas(64) Real stage[read_only][ring][block];
-    auto lead = [](std::size_t k) { return 2 * (k + 1); };
-    auto read = [&](std::size_t k, std::size_t j) {
-        for (std::size_t i = 0; i < block; ++i)
-            stage[k][j % ring][i] = from[k][j * block + i];
-    };
-    const std::size_t blocks = count / block;
-    for (std::size_t k = 0; k < read_only; ++k)
-        for (std::size_t j = 0; j < lead(k) && j < blocks; ++j)
-            read(k, j);
-    std::size_t b = 0;
-    for (std::size_t j = 0; j < blocks; ++j, b += block) {
-        if (b + ahead < count) {
-            if (b + ahead + block * lead(0) < count)
-                IMPACT_PREFETCH(M_ + b + ahead + block * lead(0), 0);
-            if (b + ahead + block * lead(1) < count)
-                IMPACT_PREFETCH(m_ + b + ahead + block * lead(1), 0);
-            if (b + ahead + block * lead(2) < count)
-                IMPACT_PREFETCH(C_Mx_ + b + ahead + block * lead(2), 0);
-            if (b + ahead + block * lead(3) < count)
-                IMPACT_PREFETCH(C_My_ + b + ahead + block * lead(3), 0);
-            if (b + ahead + block * lead(4) < count)
-                IMPACT_PREFETCH(C_Mz_ + b + ahead + block * lead(4), 0);
-            if (b + ahead + block * lead(5) < count)
-                IMPACT_PREFETCH(C_mx_ + b + ahead + block * lead(5), 0);
-            if (b + ahead + block * lead(6) < count)
-                IMPACT_PREFETCH(C_my_ + b + ahead + block * lead(6), 0);
-            if (b + ahead + block * lead(7) < count)
-                IMPACT_PREFETCH(C_mz_ + b + ahead + block * lead(7), 0);
-            IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_My_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_Mz_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_my_ + b + ahead, 1);
-            IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
-            if (b + ahead + block * lead(8) < count)
-                IMPACT_PREFETCH(eps_ + b + ahead + block * lead(8), 0);
-            if constexpr (with_status)
-                IMPACT_PREFETCH(status_ + b + ahead, 1);
-        }
-        for (std::size_t k = 0; k < read_only; ++k)
-            if (j + lead(k) < blocks)
-                read(k, j + lead(k));
-        const std::size_t r = j % ring;
-        if (untried == 0 && collide_batch_3d_fast_sure<Real, with_status>(stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own)) {
-            back_off = 0;
-        } else {
-            if (untried == 0) {
-                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                untried = back_off;
-            } else {
-                --untried;
-            }
-            collide_batch_3d_fast<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, stage[8][r], with_status ? status_ + b : own);
-            collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-        }
-    }
-    collide_batch_3d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-}
-
 } // namespace detail
 
 /// collide_batch(data, impact::fast): collide_batch in the fast form, each result bit for bit
@@ -1716,16 +1562,6 @@ inline void collide_batch_3d_fast_skewed(std::size_t count, const Real* IMPACT_R
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 3>& data, fast_t) noexcept
 {
-    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the
-    // distances are a double's; other types keep the plain loop).
-    if constexpr (sizeof(Real) == sizeof(double))
-        if (detail::crowded(std::array<const void*, 9>{data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.eps})) {
-            if (data.status)
-                detail::collide_batch_3d_fast_skewed<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
-            else
-                detail::collide_batch_3d_fast_skewed<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
-            return;
-        }
     if (data.status)
         detail::collide_batch_3d_fast_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
     else
