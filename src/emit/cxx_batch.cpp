@@ -446,7 +446,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // to the scalar kernel (status underflow here, then `settle`). An input 0 passes
         // (detail::magnitude_or). Tested after the arithmetic: tested as the inputs are
         // read, the loops ran slower (2D 0.69 of the loop before any test, against 0.79).
-        // (The sure block tests the same inputs, the largest magnitude by a sum of squares.)
+        // (The sure block tests the same inputs, by their bits: `sure_range`.)
         std::vector<std::string> low, high, squares, read_names;
         for (const compile::instruction& in : arithmetic.code)
             if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
