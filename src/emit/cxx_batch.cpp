@@ -505,10 +505,13 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                                 fmt::join(divisors_in_range(code, true), " & "));
     };
     // The inputs read, the divisors' tests and the statements, as the loop and the sure loop print them.
-    const auto print_arithmetic = [&](std::string& into) {
+    const auto print_reads = [&](std::string& into) {
         for (std::size_t in = 0; in < inputs.size(); ++in)
             if (read[in])
                 into += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
+    };
+    const auto print_arithmetic = [&](std::string& into) {
+        print_reads(into);
         if (with_status)
             declare_usable(into, 0);
         for (std::size_t s = 0; s < code.statements.size(); ++s) {
@@ -607,9 +610,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         std::string tested = "        std::int64_t refused = 0;\n";
         for (const std::string& refusal : refusals)
             tested += fmt::format("        refused |= {};\n", refusal);
-        for (std::size_t in = 0; in < inputs.size(); ++in)
-            if (read[in])
-                tested += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
+        print_reads(tested);
         tested += sure_range + "        left |= refused | doubtful;\n";
         std::string written = "        impact::status outcome = status::ok;\n";
         if (!sure_conditions.empty())
