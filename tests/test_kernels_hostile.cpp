@@ -1662,12 +1662,14 @@ BOOST_AUTO_TEST_CASE(a_block_with_one_hostile_lane_is_the_scalar_kernels_in_ever
     BOOST_TEST(fail.count == 0u);
 }
 
-// The sure block of collide_batch in 2D on 8 pairs: whether it resolved them, and whether it
-// left their velocities as they were. Compiled as the kernels' own block loops are (between
-// IMPACT_PRECISE_BEGIN and _END): inlined into code compiled with the caller's flags, GCC
-// compiles the sure block with them, -ffast-math's included.
+// The sure block of collide_batch in 2D on 8 pairs (the fast form's with impact::fast):
+// whether it resolved them, and whether it left their velocities as they were; where it
+// resolved them, every lane is the scalar kernel's, bit for bit, and ok. Compiled as the
+// kernels' own block loops are (between IMPACT_PRECISE_BEGIN and _END): inlined into code
+// compiled with the caller's flags, GCC compiles the sure block with them, -ffast-math's included.
 IMPACT_PRECISE_BEGIN
-std::pair<bool, bool> sure_block(const std::array<pair_nd<double, 2>, 8>& p)
+template <class... Form>
+std::pair<bool, bool> sure_block(const std::array<pair_nd<double, 2>, 8>& p, Form... form)
 {
     std::array<double, 8> M, m, eps, C_Mx, C_My, C_mx, C_my;
     std::array<std::array<double, 8>, 4> v;
@@ -1678,13 +1680,23 @@ std::pair<bool, bool> sure_block(const std::array<pair_nd<double, 2>, 8>& p)
     }
     const auto before = v;
     std::array<status, 8> s{};
-    const bool resolved = impact::detail::collide_batch_2d_sure<double, true>(
-        M.data(), m.data(), C_Mx.data(), C_My.data(), C_mx.data(), C_my.data(), v[0].data(), v[1].data(), v[2].data(),
-        v[3].data(), eps.data(), s.data());
+    bool resolved;
+    if constexpr (sizeof...(Form) > 0)
+        resolved = impact::detail::collide_batch_2d_fast_sure<double, true>(M.data(), m.data(), C_Mx.data(), C_My.data(), C_mx.data(), C_my.data(),
+                                                                            v[0].data(), v[1].data(), v[2].data(), v[3].data(), eps.data(), s.data());
+    else
+        resolved = impact::detail::collide_batch_2d_sure<double, true>(M.data(), m.data(), C_Mx.data(), C_My.data(), C_mx.data(), C_my.data(),
+                                                                       v[0].data(), v[1].data(), v[2].data(), v[3].data(), eps.data(), s.data());
     bool unchanged = true;
     for (std::size_t a = 0; a < 4; ++a)
         for (std::size_t i = 0; i < 8; ++i)
             unchanged = unchanged && identical(v[a][i], before[a][i]);
+    for (std::size_t i = 0; resolved && i < 8; ++i) {
+        const auto out = impact::collide(p[i].M, p[i].m, p[i].C_M, p[i].C_m, p[i].v_M, p[i].v_m, p[i].eps, form...);
+        BOOST_TEST((out.status == status::ok && s[i] == status::ok));
+        BOOST_TEST((identical(out.v_M[0], v[0][i]) && identical(out.v_M[1], v[1][i]) && identical(out.v_m[0], v[2][i]) &&
+                    identical(out.v_m[1], v[3][i])));
+    }
     return {resolved, unchanged};
 }
 IMPACT_PRECISE_END
@@ -1708,15 +1720,15 @@ BOOST_AUTO_TEST_CASE(a_block_of_ordinary_pairs_is_resolved_at_once_and_a_nan_any
     BOOST_TEST(left == 88u);
 }
 
-// The sure block's input range, as the loop's range test reads it: 0, or a magnitude within
-// [2^-k, 2^k]. At its lower end, 2^-k is in and the double just below it is not; above 2^k,
-// nothing is (at 2^k itself, the block may leave a pair it could resolve: its sum of squares
-// then exceeds 2^2k, where the block tests that). Tried on v_Mx, which keeps the pair
-// approaching at every one of these values.
+// The sure block's range (collide_batch_2d_sure_k): 0, or a magnitude within [2^-k, 2^k], of
+// each value it tests. At its lower end, 2^-k is in and the double just below it is not;
+// above 2^k, nothing is (at 2^k itself, the block may leave a pair it could resolve: its sum
+// of squares then exceeds 2^2k, where the block tests that). The accurate block tests every
+// input: tried on v_Mx, which keeps the pair approaching at every one of these values.
 BOOST_AUTO_TEST_CASE(the_sure_blocks_range_ends_where_the_loops_does)
 {
-    constexpr int k = impact::detail::collide_batch_2d_k<double>;
-    static_assert(k > 0);
+    constexpr int k = impact::detail::collide_batch_2d_sure_k<double>;
+    static_assert(k > 0 && k == impact::detail::collide_batch_2d_k<double>);
     const double lowest = std::ldexp(1.0, -k), highest = std::ldexp(1.0, k);
     std::array<pair_nd<double, 2>, 8> pairs;
     for (std::size_t i = 0; i < pairs.size(); ++i)
@@ -1736,6 +1748,48 @@ BOOST_AUTO_TEST_CASE(the_sure_blocks_range_ends_where_the_loops_does)
     BOOST_TEST(resolved_with(highest / 2));
     BOOST_TEST(!resolved_with(std::nextafter(highest, 2 * highest)));
     BOOST_TEST(!resolved_with(std::numeric_limits<double>::infinity()));
+}
+
+// The fast block tests the masses, eps, and the differences of centres and of velocities
+// (range_cut: the arithmetic reads the centres and velocities through them, and the
+// velocities again only to add the impulses to them, the results then tested as the loop
+// tests them): a velocity below the range is resolved where its difference is in range, as
+// the scalar kernel resolves it, and so are two velocities of 2^(k+1) or of the largest
+// double whose difference is 0; a difference of centres at the range's lower end is in, the
+// power of 2 below it out; a velocity whose difference passes 2^k, or infinite, or NaN,
+// leaves the block.
+BOOST_AUTO_TEST_CASE(the_fast_sure_block_tests_differences_of_inputs)
+{
+    constexpr int k = impact::detail::collide_batch_2d_fast_sure_k<double>;
+    static_assert(k > impact::detail::collide_batch_2d_fast_k<double>);  // (2^-k: the analysis's own bound)
+    const double lowest = std::ldexp(1.0, -k), highest = std::ldexp(1.0, k);
+    std::array<pair_nd<double, 2>, 8> pairs;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+        pairs[i] = ordinary_pair<double, 2>(i);
+    const auto resolved_with = [&](auto change) {
+        auto changed = pairs;
+        change(changed[5]);
+        const auto [taken, kept] = sure_block(changed, impact::fast);
+        BOOST_TEST(taken != kept);
+        return taken;
+    };
+    BOOST_TEST(resolved_with([](pair_nd<double, 2>&) {}));
+    BOOST_TEST(resolved_with([](pair_nd<double, 2>& p) { p.v_M[0] = std::numeric_limits<double>::denorm_min(); }));
+    BOOST_TEST(resolved_with([](pair_nd<double, 2>& p) { p.v_m[1] = -std::numeric_limits<double>::min() / 4; }));
+    // C_My - C_my exactly: the pair still approaches along x.
+    BOOST_TEST(resolved_with([&](pair_nd<double, 2>& p) { p.C_M[1] = lowest, p.C_m[1] = 0; }));
+    BOOST_TEST(!resolved_with([&](pair_nd<double, 2>& p) { p.C_M[1] = lowest / 2, p.C_m[1] = 0; }));
+    BOOST_TEST(resolved_with([&](pair_nd<double, 2>& p) { p.C_M[1] = 0, p.C_m[1] = 0; }));
+    BOOST_TEST(resolved_with([&](pair_nd<double, 2>& p) { p.M = lowest; }));
+    BOOST_TEST(!resolved_with([&](pair_nd<double, 2>& p) { p.M = std::nextafter(lowest, 0.0); }));
+    BOOST_TEST(!resolved_with([&](pair_nd<double, 2>& p) { p.v_M[0] = std::nextafter(highest, 2 * highest); }));
+    BOOST_TEST(!resolved_with([](pair_nd<double, 2>& p) { p.v_M[1] = std::numeric_limits<double>::infinity(); }));
+    BOOST_TEST(!resolved_with([](pair_nd<double, 2>& p) { p.v_m[0] = std::numeric_limits<double>::quiet_NaN(); }));
+    BOOST_TEST(!resolved_with([](pair_nd<double, 2>& p) { p.C_m[0] = -std::numeric_limits<double>::infinity(); }));
+    BOOST_TEST(resolved_with([&](pair_nd<double, 2>& p) { p.v_M[1] = 2 * highest, p.v_m[1] = 2 * highest; }));
+    BOOST_TEST(resolved_with([](pair_nd<double, 2>& p) {
+        p.v_M[1] = std::numeric_limits<double>::max(), p.v_m[1] = std::numeric_limits<double>::max();
+    }));
 }
 
 BOOST_AUTO_TEST_CASE(the_fast_forms_keep_every_invariant_of_the_sweep_along_the_line)

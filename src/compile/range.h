@@ -37,4 +37,30 @@ struct float_format {
 /// of 2 it bounds. The compensated arithmetic's corrections are bounded alike.
 int input_exponent_bound(const program& p, const std::vector<bool>& needed, float_format format);
 
+/// What a batch loop's sure block tests in place of every input (README, "How the batch loops
+/// were shaped"): `tested`, values each 0 or of magnitude within [2^-k, 2^k]. An input that p
+/// only adds, subtracts or negates, and at least once subtracts from or adds to another input
+/// (C_M - C_m, v_M - v_m), is not tested itself: that sum or difference is, and it is finite
+/// only where both inputs are. Every other input is tested. Every product, quotient, fused
+/// multiply-add, root and function of p then reads values bounded from the tested ones, as
+/// input_exponent_bound bounds them from the inputs; the values an untested input reaches by
+/// sums alone are not bounded, and the outputs among them (`summed`, a velocity plus its
+/// change) are tested as the loop tests every result: out of range where not finite (an
+/// infinity or NaN stays one through sums, so nothing before them needs a test).
+struct range_cut {
+    std::vector<int> tested;  ///< values of p, in p's order
+    std::vector<int> summed;  ///< indices into p.outputs
+};
+
+/// The cut of p's values that `needed` keeps, or every input read (and no output) where the
+/// cut would test as many values (a summed output counted as half a value).
+range_cut cut_for_range(const program& p, const std::vector<bool>& needed);
+
+/// input_exponent_bound for the values of `cut`: the largest k such that, whenever every
+/// tested value is 0 or of magnitude within [2^-k, 2^k], every needed value that can
+/// underflow is 0 or normal and every needed value not reached from an untested input is
+/// finite; -1 if none (or if p multiplies, divides, roots or calls a value an untested
+/// input reaches).
+int cut_exponent_bound(const program& p, const std::vector<bool>& needed, const range_cut& cut, float_format format);
+
 } // namespace impact::compile

@@ -63,6 +63,18 @@ std::string all_finite(const std::vector<std::string>& values, const term_writer
     return fmt::format("({} == Real(0))", terms.front());
 }
 
+// The sum of `terms` as a balanced tree: ((a + b) + (c + d)) ...
+std::string balanced_sum(std::vector<std::string> terms)
+{
+    while (terms.size() > 1) {
+        std::vector<std::string> sums;
+        for (std::size_t t = 0; t < terms.size(); t += 2)
+            sums.push_back(t + 1 < terms.size() ? "(" + terms[t] + " + " + terms[t + 1] + ")" : terms[t]);
+        terms = std::move(sums);
+    }
+    return terms.front();
+}
+
 std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)
 {
     std::vector<std::string> failures, finite;
@@ -206,17 +218,75 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
     const std::string settle = settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, arguments) : "";
     const std::string whole = fmt::format("        {}(block, {});\n{}", call, arguments, settle);
     const std::string each = sure ? sure_or_whole(loop, arguments, whole) : whole;
-    out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the\n"
-                       "// processor's own prefetching, following so many arrays, falls behind.\n"
+    // Asked for only where the arrays hold more than 1 MiB, more than many cores' L2 cache:
+    // in cache, the requests and their addresses cost the fast 2D batch (AVX-512, AMD EPYC
+    // Zen 5, 2 Dec 2026) a tenth of its speed.
+    const std::string bytes = fmt::format("{} * sizeof(Real){}", inputs.size(), with_status ? " + sizeof(impact::status)" : "");
+    if (sure) {
+        // The blocks run through the all-ok block (`_all_ok_run`, a function of its own) until
+        // one is left, which goes to the sure block or the loop, and the next 1, 2, 4 ... 16
+        // blocks after it, doubling while the all-ok block keeps leaving the first one it
+        // tries. `_all_ok_run` is not inlined: in the function with the loop, which needs more
+        // registers, the all-ok block's results went to the stack.
+        std::vector<std::string> to_block, run_arguments;
+        for (const lane_input& in : inputs) {
+            to_block.push_back(fmt::format("{}_ + b", in.name));
+            run_arguments.push_back(in.name + "_");
+        }
+        to_block.push_back("with_status ? status_ + b : status_");
+        run_arguments.push_back("status_");
+        out += fmt::format(
+            "\n// {0}_all_ok over the blocks from b while each resolves its own, each array's data\n"
+            "// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first\n"
+            "// block left, or of the pairs after the last whole block.\n"
+            "template <class Real, bool with_status>\nIMPACT_NOT_INLINED std::size_t {0}_all_ok_run(std::size_t b, std::size_t count, {1}) noexcept\n{{\n"
+            "    constexpr std::size_t block = 8, ahead = 64;\n"
+            "    const std::size_t asked = count > ahead && count * ({2}) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead\n"
+            "    for (; b + block <= count; b += block) {{\n"
+            "        if (b < asked) {{\n{3}        }}\n"
+            "        if (!{0}_all_ok<Real, with_status>({4}))\n"
+            "            break;\n"
+            "    }}\n"
+            "    return b;\n}}\n",
+            loop, loop_parameters(inputs, true), bytes, fmt::join(ahead, ""), fmt::join(to_block, ", "));
+        out += fmt::format(
+            "\n// {0} over blocks of 8 pairs: through {0}_all_ok where it resolves them, else\n"
+            "// {0}_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays\n"
+            "// hold more than 1 MiB (`far`): the processor's own prefetching, following so many\n"
+            "// arrays, falls behind.\n"
+            "template <class Real, bool with_status>\ninline void {0}_ahead(std::size_t count, {1}) noexcept\n{{\n"
+            "    constexpr std::size_t block = 8, ahead = 64;\n"
+            "    const bool far = count * ({2}) > (std::size_t(1) << 20);\n{3}{4}"
+            "    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left\n"
+            "    std::size_t b = 0;\n"
+            "    while (b + block <= count) {{\n"
+            "        const std::size_t left = {0}_all_ok_run<Real, with_status>(b, count, {5});\n"
+            "        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;\n"
+            "        b = left;\n"
+            "        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {{\n"
+            "            if (far && b + ahead < count) {{\n{6}            }}\n"
+            "{7}"
+            "        }}\n"
+            "    }}\n    {8}(count - b, {9});\n{10}}}\n",
+            loop, loop_parameters(inputs, true), bytes,
+            settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "", sure_state,
+            fmt::join(run_arguments, ", "), indented_by_4(fmt::format("{}", fmt::join(ahead, ""))), indented_by_4(each),
+            call, arguments, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "");
+        return;
+    }
+    out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the\n"
+                       "// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so\n"
+                       "// many arrays, falls behind.\n"
                        "template <class Real{1}>\ninline void {0}_ahead(std::size_t count, {2}) noexcept\n{{\n"
-                       "    constexpr std::size_t block = 8, ahead = 64;\n{6}{9}    std::size_t b = 0;\n"
-                       "    for (; b + block <= count; b += block) {{\n        if (b + ahead < count) {{\n{3}        }}\n"
+                       "    constexpr std::size_t block = 8, ahead = 64;\n"
+                       "    const bool far = count * ({10}) > (std::size_t(1) << 20);\n{6}{9}    std::size_t b = 0;\n"
+                       "    for (; b + block <= count; b += block) {{\n        if (far && b + ahead < count) {{\n{3}        }}\n"
                        "{7}    }}\n    {4}(count - b, {5});\n{8}}}\n",
                        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
                        fmt::join(ahead, ""), call, arguments,
                        settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "",
                        each, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "",
-                       sure ? sure_state : "");
+                       sure ? sure_state : "", bytes);
 }
 
 
@@ -359,6 +429,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
     std::vector<domain_test> sure_domains;  // the domains' tests, as the sure loop prints them
     std::string sure_conditions;            // the conditions' statuses, as the sure loop decides them
+    std::string ok_conditions;              // the conditions' failures, as the all-ok block tests them
     if (with_status) {
         // The scalar kernel tests the inputs' domains first, then the conditions computed
         // from them; a lane whose inputs are refused divides by 1 in those computations.
@@ -397,14 +468,18 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             for (std::size_t c = conditions.size(); c-- > 0;)
                 fail_with({condition_failure(given.outputs[c], *conditions[c])}, conditions[c]->status, "condition");
             out += "            outcome = detail::blend(admitted, condition, outcome);\n";
-            sure_conditions = "            impact::status condition = status::ok;\n";
             for (std::size_t s = 0; s < given.statements.size(); ++s)
                 if (for_guards[given.statement_values[s]])
                     sure_conditions += "            " + given.statements[s] + "\n";
             for (std::size_t c = conditions.size(); c-- > 0;)
                 sure_conditions += fmt::format("            condition = detail::blend({}, status::{}, condition);\n",
                                                condition_failure(given.outputs[c], *conditions[c]), conditions[c]->status);
-            sure_conditions += "            outcome = condition;\n";
+            sure_conditions = "            impact::status condition = status::ok;\n" + sure_conditions + "            outcome = condition;\n";
+            for (std::size_t st = 0; st < given.statements.size(); ++st)
+                if (for_guards[given.statement_values[st]])
+                    ok_conditions += "            " + given.statements[st] + "\n";
+            for (std::size_t c = 0; c < conditions.size(); ++c)
+                ok_conditions += fmt::format("            unmet |= {};\n", condition_failure(given.outputs[c], *conditions[c]));
         }
         out += "        }\n";
         if (!k.limits.empty()) {
@@ -438,7 +513,6 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         if (arithmetic.code[v].op == compile::opcode::input && for_outputs[v])
             read.at(static_cast<std::size_t>(arithmetic.code[v].input)) = true;
     std::string range_test;  // printed after the arithmetic
-    std::string sure_range;  // the sure block's range test
     if (with_status && !code.underflows.empty()) {
         // The scalar kernel's underflow test costs about as much as the loop's arithmetic,
         // and a least magnitude of the values it tests more than half of it: the loop
@@ -446,44 +520,18 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // to the scalar kernel (status underflow here, then `settle`). An input 0 passes
         // (detail::magnitude_or). Tested after the arithmetic: tested as the inputs are
         // read, the loops ran slower (2D 0.69 of the loop before any test, against 0.79).
-        // (The sure block tests the same inputs, by their bits: `sure_range`.)
-        std::vector<std::string> low, high, squares, read_names;
+        // (The sure block tests fewer values: print_sure.)
+        std::vector<std::string> low, high;
         for (const compile::instruction& in : arithmetic.code)
             if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
                 low.push_back(fmt::format("detail::magnitude_or({}, lowest)", plain_names[in.input]));
                 high.push_back(fmt::format("std::fabs({})", plain_names[in.input]));
-                squares.push_back(fmt::format("{0} * {0}", plain_names[in.input]));
-                read_names.push_back(plain_names[in.input]);
             }
         range_test = fmt::format("        std::int64_t doubtful = 0;\n        if constexpr ({0}_k<Real> >= 0) {{\n"
                            "            constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
                            "            doubtful = !(detail::at_least({1}, lowest) & detail::at_most({2}, highest));\n"
                            "        }}\n",
                            loop, balanced("detail::least", low), balanced("detail::most", high));
-        // The sure block tests the same range: by the inputs' bits where the format has them
-        // (detail::outside_by_bits with 64-bit integer minima, detail::below_range without), the
-        // largest magnitude otherwise by a sum of squares, which NaN and the infinities, lost
-        // in a tree of maxima (a < b ? b : a), make fail.
-        while (squares.size() > 1) {
-            std::vector<std::string> sums;
-            for (std::size_t t = 0; t < squares.size(); t += 2)
-                sums.push_back(t + 1 < squares.size() ? "(" + squares[t] + " + " + squares[t + 1] + ")" : squares[t]);
-            squares = std::move(sums);
-        }
-        // Where a comparison with NaN is not reliably false (-ffinite-math-only), the inputs'
-        // finiteness is tested too (detail::zero_if_finite), and the least magnitude taken
-        // without NaN (detail::magnitude_or).
-        const std::string names = fmt::format("{}", fmt::join(read_names, ", "));
-        sure_range = fmt::format("        constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
-                                 "        std::int64_t doubtful;\n"
-                                 "        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))\n"
-                                 "            doubtful = detail::outside_by_bits(lowest, highest, {4});\n"
-                                 "        else if constexpr (detail::has_magnitude_bits<Real>)\n"
-                                 "            doubtful = detail::below_range(lowest, {4}) | !detail::at_most({2}, highest * highest);\n"
-                                 "        else\n"
-                                 "            doubtful = !(detail::at_least({1}, lowest) & detail::at_most({2}, highest * highest)) |\n"
-                                 "                       (!detail::nan_compares_false && !{3});\n",
-                                 loop, balanced("detail::least", low), squares.front(), all_finite(read_names), names);
     }
     // A resolved pair is divided only by divisors in range (`usable`), and its results are
     // written only if finite (`written`), as the scalar kernel decides. (`&`, not `&&`: with
@@ -510,8 +558,9 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             if (read[in])
                 into += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
     };
-    const auto print_arithmetic = [&](std::string& into) {
-        print_reads(into);
+    const auto print_arithmetic = [&](std::string& into, bool reads = true) {
+        if (reads)
+            print_reads(into);
         if (with_status)
             declare_usable(into, 0);
         for (std::size_t s = 0; s < code.statements.size(); ++s) {
@@ -586,13 +635,18 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const bool settles = with_status && (!code.underflows.empty() || !k.limits.empty());
     if (settles)
         print_settle(out, k, loop, inputs, which);
-    // The sure loop: a block of pairs whose inputs are all in range, where the loop needs
-    // neither the scalar kernel nor a blended status; for a kernel with an input range in
-    // double (batch_formats[1]), the type its loops are vectorised and measured in (the rough
+    // The sure loop: a block of pairs whose values are all in range, where the loop needs
+    // neither the scalar kernel nor a blended status; for a kernel with a range in double
+    // (batch_formats[1]), the type its loops are vectorised and measured in (the rough
     // spheres' have none: every block goes to the loop there).
-    const bool sure = with_status && !code.underflows.empty() && ks.at(1) >= 0;
+    const compile::range_cut cut = compile::cut_for_range(arithmetic, for_outputs);
+    std::vector<int> sure_ks;
+    for (const compile::float_format& f : batch_formats)
+        sure_ks.push_back(compile::cut_exponent_bound(arithmetic, for_outputs, cut, f));
+    const bool sure = with_status && !code.underflows.empty() && sure_ks.at(1) >= 0;
     if (sure) {
-        // The domains' tests, but the finiteness of an input in the range test, which no value
+        // The domains' tests, but the finiteness of an input the arithmetic reads: tested, or
+        // added to or subtracted from another, and then the sum tested (range_cut), no value
         // outside [2^-k, 2^k] passes, NaN and the infinities among them.
         std::set<std::string> in_range;
         for (std::size_t in = 0; in < inputs.size(); ++in)
@@ -602,16 +656,41 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         std::vector<domain_test> tests;
         std::copy_if(sure_domains.begin(), sure_domains.end(), std::back_inserter(tests),
                      [&](const domain_test& t) { return t.finite.empty() || in_range.count(t.finite) == 0; });
-        const std::vector<std::string> refusals = batch_failures(tests);
-        // The first pass tests the domains and the range only. The second computes the pairs
-        // as the loop does, the guards' values in braces of their own (the arithmetic's names
-        // follow); a condition that divides does so by 1 where the domains refuse (`admitted`,
-        // as in the loop), and here every pair is admitted.
+        // The first pass tests the domains and the range only: of the inputs, sums and
+        // differences of two inputs that range_cut chose, by the values' bits where the format
+        // has them (detail::outside_by_bits with 64-bit integer minima, detail::below_range
+        // without), the largest magnitude otherwise by a sum of squares, which NaN and the
+        // infinities, lost in a tree of maxima (a < b ? b : a), make fail. Where a comparison
+        // with NaN is not reliably false (-ffinite-math-only), the values' finiteness is
+        // tested too (detail::zero_if_finite), and the least magnitude taken without NaN
+        // (detail::magnitude_or).
         std::string tested = "        std::int64_t refused = 0;\n";
-        for (const std::string& refusal : refusals)
+        for (const std::string& refusal : batch_failures(tests))
             tested += fmt::format("        refused |= {};\n", refusal);
         print_reads(tested);
-        tested += sure_range + "        left |= refused | doubtful;\n";
+        std::vector<std::string> values, low, squares;
+        for (int v : cut.tested) {
+            const compile::instruction& in = arithmetic.code[static_cast<std::size_t>(v)];
+            const auto name = [&](int input) { return plain_names.at(static_cast<std::size_t>(arithmetic.code[static_cast<std::size_t>(input)].input)); };
+            values.push_back(in.op == compile::opcode::input ? name(v)
+                                                             : fmt::format("({} {} {})", name(in.a), in.op == compile::opcode::add ? '+' : '-', name(in.b)));
+            low.push_back(fmt::format("detail::magnitude_or({}, lowest)", values.back()));
+            squares.push_back(fmt::format("{0} * {0}", values.back()));
+        }
+        tested += fmt::format("        constexpr Real lowest = detail::power_of_2<Real>(-{0}_sure_k<Real>), highest = detail::power_of_2<Real>({0}_sure_k<Real>);\n"
+                              "        std::int64_t doubtful;\n"
+                              "        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))\n"
+                              "            doubtful = detail::outside_by_bits(lowest, highest, {1});\n"
+                              "        else if constexpr (detail::has_magnitude_bits<Real>)\n"
+                              "            doubtful = detail::below_range(lowest, {1}) | !detail::at_most({2}, highest * highest);\n"
+                              "        else\n"
+                              "            doubtful = !(detail::at_least({3}, lowest) & detail::at_most({2}, highest * highest)) |\n"
+                              "                       (!detail::nan_compares_false && !{4});\n"
+                              "        left |= refused | doubtful;\n",
+                              loop, fmt::join(values, ", "), balanced_sum(squares), balanced("detail::least", low), all_finite(values));
+        // The second computes the pairs as the loop does, the guards' values in braces of their
+        // own (the arithmetic's names follow); a condition that divides does so by 1 where the
+        // domains refuse (`admitted`, as in the loop), and here every pair is admitted.
         std::string written = "        impact::status outcome = status::ok;\n";
         if (!sure_conditions.empty())
             written += std::string("        {\n") +
@@ -619,30 +698,48 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                        sure_conditions + "        }\n";
         written += "        const std::int64_t resolved = outcome == status::ok;\n";
         print_arithmetic(written);
-        // No test of the results: within the range no value the arithmetic computes overflows
-        // (compile::input_exponent_bound bounds every one above), so the results are finite.
         for (const auto& [target, result] : writes)
             written += fmt::format("        const Real {}_out = {};\n", target, result);
+        // Within the range no value the arithmetic computes overflows (range_cut bounds every
+        // one above) but the results that add an untested input (a velocity) to an impulse:
+        // those are tested, as the loop tests them (out_of_range where one is not finite).
+        std::vector<std::string> summed;
+        for (int o : cut.summed)
+            summed.push_back(writes.at(static_cast<std::size_t>(o)).first + "_out");
+        const std::string stored = summed.empty() ? usable : "written";
+        if (!summed.empty())
+            written += fmt::format("        const std::int64_t written = {} & {};\n", usable, all_finite(summed));
         for (const auto& [target, result] : writes)
-            written += fmt::format("        {0}_[i] = detail::blend({1}, {0}_out, {0}_[i]);\n", target, usable);
-        // A divisor out of range, as in the loop: the velocities kept, status out of range.
+            written += fmt::format("        {0}_[i] = detail::blend({1}, {0}_out, {0}_[i]);\n", target, stored);
+        // A divisor out of range, or a result not finite, as in the loop: the velocities kept,
+        // status out of range.
         written += fmt::format("        if constexpr (with_status)\n"
                                "            status_[i] = detail::blend(resolved & !{}, status::{}, outcome);\n",
-                               usable, out_of_range);
+                               stored, out_of_range);
+        std::vector<std::string> tested_names = values;
+        out += fmt::format(
+            "\n// The range of what {0}_sure tests, within which every value {0} computes stays in\n"
+            "// the normal range but its results that add a velocity: where each of {2} is 0\n"
+            "// or of magnitude within [2^-k, 2^k], derived by Impact as {0}_k is, from these values\n"
+            "// instead of the inputs (an input only added or subtracted, as a velocity, is finite\n"
+            "// where its differences and those results are). For 24, 53, 64 and 113 mantissa\n"
+            "// digits: k = {1}.\n"
+            "template <class Real>\nconstexpr int {0}_sure_k = input_k<Real>({1});\n",
+            loop, fmt::join(sure_ks, ", "), fmt::join(tested_names, ", "));
         // Two passes over the block, the first testing, the second computing and storing:
         // against one pass that kept the results in arrays of the block until all were tested,
         // and left a block with a divisor out of range to the loop, the fast 2D block ran
         // 0.28 of the plain loop in cache on AVX2, from 0.23, and alike on AVX-512 (0.32, 0.34).
         out += fmt::format(
-            "\n// A block of 8 pairs resolved at once (true) where every pair's inputs are in the loop's\n"
-            "// range ({0}_k) and admitted by the domains: nothing then underflows, no sphere is fixed,\n"
-            "// each status is ok, a condition's or a divisor's out of range, and each result is {0}'s\n"
-            "// bit for bit, without its blended statuses and the scalar kernel after it. Otherwise\n"
-            "// (false) the block is left as it was, to {0}.\n"
+            "\n// A block of 8 pairs resolved at once (true) where every pair's values are in range\n"
+            "// ({0}_sure_k) and admitted by the domains: nothing then underflows, no sphere is fixed,\n"
+            "// each status is ok, a condition's or out of range, and each result is {0}'s bit for\n"
+            "// bit, without its blended statuses and the scalar kernel after it. Otherwise (false)\n"
+            "// the block is left as it was, to {0}.\n"
             "template <class Real, bool with_status>\nIMPACT_ALWAYS_INLINE bool {0}_sure({1}) noexcept\n{{\n"
             "    // A format without a range, or one whose largest square (2^2k) overflows: every block\n"
             "    // left to the loop.\n"
-            "    if constexpr ({0}_k<Real> < 0 || 2 * {0}_k<Real> >= std::numeric_limits<Real>::max_exponent)\n"
+            "    if constexpr ({0}_sure_k<Real> < 0 || 2 * {0}_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)\n"
             "        return false;\n"
             "    constexpr std::size_t block = 8;\n"
             "    std::int64_t left = 0;  // a pair the block leaves to the loop\n"
@@ -651,6 +748,45 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{3}    }}\n"
             "    return true;\n}}\n",
             loop, loop_parameters(inputs, true), tested, written);
+
+        // The block of pairs all resolved, in one pass: the first pass's tests, the
+        // conditions' failures, and the arithmetic, its results kept in arrays of the block
+        // until every pair is found resolved, then stored by a loop that compilers make copies
+        // of the arrays (memcpy, a vector each: not a batch loop, no vectorisation report).
+        // A divisor is chosen by its own range only (`resolved` is 1 here): the division
+        // waits for no other test.
+        std::string body = tested;
+        body += "        std::int64_t unmet = 0;  // a condition that fails\n";
+        if (!ok_conditions.empty())
+            body += std::string("        {\n") +
+                    (ok_conditions.find("admitted") != std::string::npos ? "            const std::int64_t admitted = !refused;\n" : "") +
+                    ok_conditions + "        }\n";
+        body += "        const std::int64_t resolved = 1;\n";
+        print_arithmetic(body, false);
+        std::string kept, stores;
+        for (const auto& [target, result] : writes) {
+            body += fmt::format("        const Real {0}_out = {1};\n        {0}_kept[i] = {0}_out;\n", target, result);
+            kept += fmt::format("    Real {}_kept[block];\n", target);
+            stores += fmt::format("        {0}_[i] = {0}_kept[i];\n", target);
+        }
+        body += fmt::format("        left |= unmet | !{}{};\n", usable, summed.empty() ? "" : " | !" + all_finite(summed));
+        out += fmt::format(
+            "\n// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every\n"
+            "// pair's values are in range ({0}_sure_k) and admitted by the domains and the\n"
+            "// conditions, and its divisors and results in range, each result is {0}'s bit for bit.\n"
+            "// Otherwise (false) the block is left as it was, to {0}_sure.\n"
+            "template <class Real, bool with_status>\nIMPACT_ALWAYS_INLINE bool {0}_all_ok({1}) noexcept\n{{\n"
+            "    if constexpr ({0}_sure_k<Real> < 0 || 2 * {0}_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)\n"
+            "        return false;\n"
+            "    constexpr std::size_t block = 8;\n"
+            "{2}"
+            "    std::int64_t left = 0;  // a pair the block leaves to {0}_sure\n"
+            "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{3}    }}\n"
+            "    if (left)\n        return false;\n"
+            "    IMPACT_KEEP_LOOP\n    for (std::size_t i = 0; i < block; ++i) {{\n{4}"
+            "        if constexpr (with_status)\n            status_[i] = status::ok;\n    }}\n"
+            "    return true;\n}}\n",
+            loop, loop_parameters(inputs, true), kept, body, stores);
     }
     print_blocks(out, loop, inputs, with_status, settles, sure);
     // A loop with a sure block reads its arrays as they are: skewed, the 3D collide's ran out

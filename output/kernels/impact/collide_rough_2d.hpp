@@ -1751,16 +1751,18 @@ inline void collide_rough_batch_2d_settle(std::size_t count, const Real* IMPACT_
     }
 }
 
-// collide_rough_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
-// processor's own prefetching, following so many arrays, falls behind.
+// collide_rough_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
 inline void collide_rough_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
+    const bool far = count * (19 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
     impact::status own[block];  // the statuses, where the caller wants none
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b + ahead < count) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(M_ + b + ahead, 0);
             IMPACT_PREFETCH(m_ + b + ahead, 0);
             IMPACT_PREFETCH(R_M_ + b + ahead, 0);
@@ -3548,16 +3550,18 @@ inline void collide_rough_batch_2d_fast_settle(std::size_t count, const Real* IM
     }
 }
 
-// collide_rough_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
-// processor's own prefetching, following so many arrays, falls behind.
+// collide_rough_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
 inline void collide_rough_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
+    const bool far = count * (19 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
     impact::status own[block];  // the statuses, where the caller wants none
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b + ahead < count) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(M_ + b + ahead, 0);
             IMPACT_PREFETCH(m_ + b + ahead, 0);
             IMPACT_PREFETCH(R_M_ + b + ahead, 0);

@@ -836,16 +836,18 @@ inline void collide_wall_rough_batch_3d_settle(std::size_t count, const Real* IM
     }
 }
 
-// collide_wall_rough_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead: the
-// processor's own prefetching, following so many arrays, falls behind.
+// collide_wall_rough_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
 inline void collide_wall_rough_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
+    const bool far = count * (20 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
     impact::status own[block];  // the statuses, where the caller wants none
     std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b + ahead < count) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(R_ + b + ahead, 0);
             IMPACT_PREFETCH(q_ + b + ahead, 0);
             IMPACT_PREFETCH(P_x_ + b + ahead, 0);
