@@ -222,58 +222,6 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
     // in cache, the requests and their addresses cost the fast 2D batch (AVX-512, AMD EPYC
     // Zen 5, 2 Dec 2026) a tenth of its speed.
     const std::string bytes = fmt::format("{} * sizeof(Real){}", inputs.size(), with_status ? " + sizeof(impact::status)" : "");
-    if (sure) {
-        // The blocks run through the all-ok block (`_all_ok_run`, a function of its own) until
-        // one is left, which goes to the sure block or the loop, and the next 1, 2, 4 ... 16
-        // blocks after it, doubling while the all-ok block keeps leaving the first one it
-        // tries. `_all_ok_run` is not inlined: in the function with the loop, which needs more
-        // registers, the all-ok block's results went to the stack.
-        std::vector<std::string> to_block, run_arguments;
-        for (const lane_input& in : inputs) {
-            to_block.push_back(fmt::format("{}_ + b", in.name));
-            run_arguments.push_back(in.name + "_");
-        }
-        to_block.push_back("with_status ? status_ + b : status_");
-        run_arguments.push_back("status_");
-        out += fmt::format(
-            "\n// {0}_all_ok over the blocks from b while each resolves its own, each array's data\n"
-            "// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first\n"
-            "// block left, or of the pairs after the last whole block.\n"
-            "template <class Real, bool with_status>\nIMPACT_NOT_INLINED std::size_t {0}_all_ok_run(std::size_t b, std::size_t count, {1}) noexcept\n{{\n"
-            "    constexpr std::size_t block = 8, ahead = 64;\n"
-            "    const std::size_t asked = count > ahead && count * ({2}) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead\n"
-            "    for (; b + block <= count; b += block) {{\n"
-            "        if (b < asked) {{\n{3}        }}\n"
-            "        if (!{0}_all_ok<Real, with_status>({4}))\n"
-            "            break;\n"
-            "    }}\n"
-            "    return b;\n}}\n",
-            loop, loop_parameters(inputs, true), bytes, fmt::join(ahead, ""), fmt::join(to_block, ", "));
-        out += fmt::format(
-            "\n// {0} over blocks of 8 pairs: through {0}_all_ok where it resolves them, else\n"
-            "// {0}_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays\n"
-            "// hold more than 1 MiB (`far`): the processor's own prefetching, following so many\n"
-            "// arrays, falls behind.\n"
-            "template <class Real, bool with_status>\ninline void {0}_ahead(std::size_t count, {1}) noexcept\n{{\n"
-            "    constexpr std::size_t block = 8, ahead = 64;\n"
-            "    const bool far = count * ({2}) > (std::size_t(1) << 20);\n{3}{4}"
-            "    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left\n"
-            "    std::size_t b = 0;\n"
-            "    while (b + block <= count) {{\n"
-            "        const std::size_t left = {0}_all_ok_run<Real, with_status>(b, count, {5});\n"
-            "        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;\n"
-            "        b = left;\n"
-            "        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {{\n"
-            "            if (far && b + ahead < count) {{\n{6}            }}\n"
-            "{7}"
-            "        }}\n"
-            "    }}\n    {8}(count - b, {9});\n{10}}}\n",
-            loop, loop_parameters(inputs, true), bytes,
-            settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "", sure_state,
-            fmt::join(run_arguments, ", "), indented_by_4(fmt::format("{}", fmt::join(ahead, ""))), indented_by_4(each),
-            call, arguments, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "");
-        return;
-    }
     out += fmt::format("\n// {0} over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the\n"
                        "// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so\n"
                        "// many arrays, falls behind.\n"
@@ -429,7 +377,6 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
     std::vector<domain_test> sure_domains;  // the domains' tests, as the sure loop prints them
     std::string sure_conditions;            // the conditions' statuses, as the sure loop decides them
-    std::string ok_conditions;              // the conditions' failures, as the all-ok block tests them
     if (with_status) {
         // The scalar kernel tests the inputs' domains first, then the conditions computed
         // from them; a lane whose inputs are refused divides by 1 in those computations.
@@ -475,11 +422,6 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                 sure_conditions += fmt::format("            condition = detail::blend({}, status::{}, condition);\n",
                                                condition_failure(given.outputs[c], *conditions[c]), conditions[c]->status);
             sure_conditions = "            impact::status condition = status::ok;\n" + sure_conditions + "            outcome = condition;\n";
-            for (std::size_t st = 0; st < given.statements.size(); ++st)
-                if (for_guards[given.statement_values[st]])
-                    ok_conditions += "            " + given.statements[st] + "\n";
-            for (std::size_t c = 0; c < conditions.size(); ++c)
-                ok_conditions += fmt::format("            unmet |= {};\n", condition_failure(given.outputs[c], *conditions[c]));
         }
         out += "        }\n";
         if (!k.limits.empty()) {
@@ -748,45 +690,6 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{3}    }}\n"
             "    return true;\n}}\n",
             loop, loop_parameters(inputs, true), tested, written);
-
-        // The block of pairs all resolved, in one pass: the first pass's tests, the
-        // conditions' failures, and the arithmetic, its results kept in arrays of the block
-        // until every pair is found resolved, then stored by a loop that compilers make copies
-        // of the arrays (memcpy, a vector each: not a batch loop, no vectorisation report).
-        // A divisor is chosen by its own range only (`resolved` is 1 here): the division
-        // waits for no other test.
-        std::string body = tested;
-        body += "        std::int64_t unmet = 0;  // a condition that fails\n";
-        if (!ok_conditions.empty())
-            body += std::string("        {\n") +
-                    (ok_conditions.find("admitted") != std::string::npos ? "            const std::int64_t admitted = !refused;\n" : "") +
-                    ok_conditions + "        }\n";
-        body += "        const std::int64_t resolved = 1;\n";
-        print_arithmetic(body, false);
-        std::string kept, stores;
-        for (const auto& [target, result] : writes) {
-            body += fmt::format("        const Real {0}_out = {1};\n        {0}_kept[i] = {0}_out;\n", target, result);
-            kept += fmt::format("    Real {}_kept[block];\n", target);
-            stores += fmt::format("        {0}_[i] = {0}_kept[i];\n", target);
-        }
-        body += fmt::format("        left |= unmet | !{}{};\n", usable, summed.empty() ? "" : " | !" + all_finite(summed));
-        out += fmt::format(
-            "\n// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every\n"
-            "// pair's values are in range ({0}_sure_k) and admitted by the domains and the\n"
-            "// conditions, and its divisors and results in range, each result is {0}'s bit for bit.\n"
-            "// Otherwise (false) the block is left as it was, to {0}_sure.\n"
-            "template <class Real, bool with_status>\nIMPACT_ALWAYS_INLINE bool {0}_all_ok({1}) noexcept\n{{\n"
-            "    if constexpr ({0}_sure_k<Real> < 0 || 2 * {0}_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)\n"
-            "        return false;\n"
-            "    constexpr std::size_t block = 8;\n"
-            "{2}"
-            "    std::int64_t left = 0;  // a pair the block leaves to {0}_sure\n"
-            "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{3}    }}\n"
-            "    if (left)\n        return false;\n"
-            "    IMPACT_KEEP_LOOP\n    for (std::size_t i = 0; i < block; ++i) {{\n{4}"
-            "        if constexpr (with_status)\n            status_[i] = status::ok;\n    }}\n"
-            "    return true;\n}}\n",
-            loop, loop_parameters(inputs, true), kept, body, stores);
     }
     print_blocks(out, loop, inputs, with_status, settles, sure);
     // A loop with a sure block reads its arrays as they are: skewed, the 3D collide's ran out

@@ -24,17 +24,6 @@
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
 #endif
-// A short loop kept a loop, for the compiler to make it copies of arrays (memcpy): the
-// kernels are compiled without GCC's vectorisation of straight-line code
-// (IMPACT_PRECISE_BEGIN), and a loop of 8 stores that GCC unrolled first became 8 scalar
-// stores of each array.
-#if defined(__clang__)
-#define IMPACT_KEEP_LOOP _Pragma("clang loop unroll(disable)")
-#elif defined(__GNUC__)
-#define IMPACT_KEEP_LOOP _Pragma("GCC unroll 1")
-#else
-#define IMPACT_KEEP_LOOP
-#endif
 // Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop
 // streams so many arrays at once that the processor's own prefetching falls behind.
 #if defined(__GNUC__) || defined(__clang__)
@@ -49,14 +38,6 @@
 #define IMPACT_ALWAYS_INLINE __forceinline
 #else
 #define IMPACT_ALWAYS_INLINE inline
-#endif
-// A function called, not inlined: a loop of its own, with registers of its own.
-#if defined(__GNUC__) || defined(__clang__)
-#define IMPACT_NOT_INLINED inline __attribute__((noinline))
-#elif defined(_MSC_VER)
-#define IMPACT_NOT_INLINED inline __declspec(noinline)
-#else
-#define IMPACT_NOT_INLINED inline
 #endif
 
 // The kernels' arithmetic as written, whatever the flags of the code that includes them:

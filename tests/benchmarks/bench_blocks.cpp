@@ -1,11 +1,10 @@
-// What a block of pairs that the batch's all-ok or sure block leaves costs: collide_batch in
-// 2D, in cache (4 096 pairs), accurate and fast, on ordinary approaching pairs, and on the
-// same pairs with a fixed sphere (a mass +infinity), a velocity of 1e-13 (below the accurate
+// What a block of pairs that the batch's sure block leaves costs: collide_batch in 2D, in
+// cache (4 096 pairs), accurate and fast, on ordinary approaching pairs, and on the same
+// pairs with a fixed sphere (a mass +infinity), a velocity of 1e-13 (below the accurate
 // loop's input range in double) or a pair separating (its velocities swapped) in one pair of
-// every block of 8, or of one block in 16. A block with a separating pair leaves the all-ok
-// block and runs the sure block, which resolves it; one with a fixed sphere or a velocity out
-// of range leaves both, and runs the loop and the scalar kernel. After a block it leaves, the
-// all-ok block is not tried on the next 1, 2, 4 ... 16, nor the sure block after one it leaves.
+// every block of 8, or of one block in 16. The sure block resolves a block with a separating
+// pair itself; one with a fixed sphere or a velocity out of range it leaves, to the loop and
+// the scalar kernel, and after a block it leaves it is not tried on the next 1, 2, 4 ... 16.
 //
 // A benchmark, never a test: each iteration makes one pass of every case, side by side, the
 // velocities reset before each pass (untimed), and reports nanoseconds a pair and each case

@@ -672,137 +672,19 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
     return true;
 }
 
-// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every
-// pair's values are in range (collide_batch_2d_sure_k) and admitted by the domains and the
-// conditions, and its divisors and results in range, each result is collide_batch_2d's bit for bit.
-// Otherwise (false) the block is left as it was, to collide_batch_2d_sure.
+// collide_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE bool collide_batch_2d_all_ok(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    if constexpr (collide_batch_2d_sure_k<Real> < 0 || 2 * collide_batch_2d_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
-        return false;
-    constexpr std::size_t block = 8;
-    Real v_Mx_kept[block];
-    Real v_My_kept[block];
-    Real v_mx_kept[block];
-    Real v_my_kept[block];
-    std::int64_t left = 0;  // a pair the block leaves to collide_batch_2d_sure
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < block; ++i) {
-        std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
-        refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
-        const Real M = M_[i];
-        const Real m = m_[i];
-        const Real C_Mx = C_Mx_[i];
-        const Real C_My = C_My_[i];
-        const Real C_mx = C_mx_[i];
-        const Real C_my = C_my_[i];
-        const Real v_Mx = v_Mx_[i];
-        const Real v_My = v_My_[i];
-        const Real v_mx = v_mx_[i];
-        const Real v_my = v_my_[i];
-        const Real eps = eps_[i];
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_sure_k<Real>);
-        std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps);
-        else if constexpr (detail::has_magnitude_bits<Real>)
-            doubtful = detail::below_range(lowest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps) | !detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest);
-        else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_mx, lowest), detail::magnitude_or(C_my, lowest)), detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)))), detail::least(detail::least(detail::magnitude_or(v_mx, lowest), detail::magnitude_or(v_my, lowest)), detail::magnitude_or(eps, lowest))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest)) |
-                       (!detail::nan_compares_false && !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_mx, C_my) + detail::zero_if_finite(v_Mx, v_My))) + (detail::zero_if_finite(v_mx, v_my) + detail::zero_if_finite(eps))) == Real(0)));
-        left |= refused | doubtful;
-        std::int64_t unmet = 0;  // a condition that fails
-        {
-            const Real t0 = C_Mx_[i] - C_mx_[i];
-            const Real t1 = t0 * t0;
-            const Real t2 = C_My_[i] - C_my_[i];
-            const Real t3 = t2 * t2;
-            const Real t4 = t1 + t3;
-            const Real t5 = v_Mx_[i] - v_mx_[i];
-            const Real t6 = t0 * t5;
-            const Real t7 = v_My_[i] - v_my_[i];
-            const Real t8 = t2 * t7;
-            const Real t9 = t6 + t8;
-            unmet |= !(t4 > Real(0));
-            unmet |= !(t9 < Real(0));
-        }
-        const std::int64_t resolved = 1;
-        const Real t0 = C_Mx - C_mx;
-        const Real t1 = t0 * t0;
-        const Real t2 = C_My - C_my;
-        const Real t3 = t2 * t2;
-        const Real t4 = t1 + t3;
-        const Real t5 = v_Mx - v_mx;
-        const Real t6 = t0 * t5;
-        const Real t7 = v_My - v_my;
-        const Real t8 = t2 * t7;
-        const Real t9 = t6 + t8;
-        const Real t10 = Real(1) + eps;
-        const Real t11 = t10 - Real(1);
-        const Real t12 = t0 - C_Mx;
-        const Real t13 = C_Mx - (t0 - t12) - (C_mx + t12);
-        const Real t14 = t5 - v_Mx;
-        const Real t15 = t2 - C_My;
-        const Real t16 = C_My - (t2 - t15) - (C_my + t15);
-        const Real t17 = t7 - v_My;
-        const Real t18 = t9 - t6;
-        const Real t19 = t6 - (t9 - t18) + (t8 - t18) + (std::fma(t13, t5, std::fma(t0, v_Mx - (t5 - t14) - (v_mx + t14), std::fma(t0, t5, -t6))) + std::fma(t16, t7, std::fma(t2, v_My - (t7 - t17) - (v_my + t17), std::fma(t2, t7, -t8))));
-        const Real t20 = t9 + t19;
-        const Real t21 = t10 * t20;
-        const Real t22 = M + m;
-        const Real t23 = t22 - M;
-        const Real t24 = t4 - t1;
-        const Real t25 = t1 - (t4 - t24) + (t3 - t24) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t16, t2, std::fma(t2, t16, std::fma(t2, t2, -t3))));
-        const Real t26 = t4 + t25;
-        const Real t27 = t22 * t26;
-        const std::int64_t usable = resolved & (std::fabs(t27) >= detail::smallest_divisor<Real>) & (std::fabs(t27) <= std::numeric_limits<Real>::max());
-        const Real t28 = t21 / detail::blend(usable, t27, Real(1));
-        const Real t29 = -t28;
-        const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / detail::blend(usable, t27, Real(1));
-        const Real t31 = t30 * m;
-        const Real t32 = t31 * t0;
-        const Real t33 = t31 * t2;
-        const Real t34 = t30 * M;
-        const Real t35 = t34 * t0;
-        const Real t36 = t34 * t2;
-        const Real v_Mx_out = -t32 + v_Mx;
-        v_Mx_kept[i] = v_Mx_out;
-        const Real v_My_out = -t33 + v_My;
-        v_My_kept[i] = v_My_out;
-        const Real v_mx_out = t35 + v_mx;
-        v_mx_kept[i] = v_mx_out;
-        const Real v_my_out = t36 + v_my;
-        v_my_kept[i] = v_my_out;
-        left |= unmet | !usable;
-    }
-    if (left)
-        return false;
-    IMPACT_KEEP_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_Mx_[i] = v_Mx_kept[i];
-        v_My_[i] = v_My_kept[i];
-        v_mx_[i] = v_mx_kept[i];
-        v_my_[i] = v_my_kept[i];
-        if constexpr (with_status)
-            status_[i] = status::ok;
-    }
-    return true;
-}
-
-// collide_batch_2d_all_ok over the blocks from b while each resolves its own, each array's data
-// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first
-// block left, or of the pairs after the last whole block.
-template <class Real, bool with_status>
-IMPACT_NOT_INLINED std::size_t collide_batch_2d_all_ok_run(std::size_t b, std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
-    const std::size_t asked = count > ahead && count * (11 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead
+    const bool far = count * (11 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b < asked) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(M_ + b + ahead, 0);
             IMPACT_PREFETCH(m_ + b + ahead, 0);
             IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
@@ -817,57 +699,17 @@ IMPACT_NOT_INLINED std::size_t collide_batch_2d_all_ok_run(std::size_t b, std::s
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_2d_all_ok<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : status_))
-            break;
-    }
-    return b;
-}
-
-// collide_batch_2d over blocks of 8 pairs: through collide_batch_2d_all_ok where it resolves them, else
-// collide_batch_2d_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays
-// hold more than 1 MiB (`far`): the processor's own prefetching, following so many
-// arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    const bool far = count * (11 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left
-    std::size_t b = 0;
-    while (b + block <= count) {
-        const std::size_t left = collide_batch_2d_all_ok_run<Real, with_status>(b, count, M_, m_, C_Mx_, C_My_, C_mx_, C_my_, v_Mx_, v_My_, v_mx_, v_my_, eps_, status_);
-        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;
-        b = left;
-        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {
-            if (far && b + ahead < count) {
-                IMPACT_PREFETCH(M_ + b + ahead, 0);
-                IMPACT_PREFETCH(m_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_My_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_my_ + b + ahead, 0);
-                IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_My_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_my_ + b + ahead, 1);
-                IMPACT_PREFETCH(eps_ + b + ahead, 0);
-                if constexpr (with_status)
-                    IMPACT_PREFETCH(status_ + b + ahead, 1);
-            }
-            if (untried == 0 && collide_batch_2d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
-                back_off = 0;
+        if (untried == 0 && collide_batch_2d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
             } else {
-                if (untried == 0) {
-                    back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                    untried = back_off;
-                } else {
-                    --untried;
-                }
-                collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-                collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+                --untried;
             }
+            collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
         }
     }
     collide_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
@@ -1410,115 +1252,19 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
     return true;
 }
 
-// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every
-// pair's values are in range (collide_batch_2d_fast_sure_k) and admitted by the domains and the
-// conditions, and its divisors and results in range, each result is collide_batch_2d_fast's bit for bit.
-// Otherwise (false) the block is left as it was, to collide_batch_2d_fast_sure.
+// collide_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_all_ok(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    if constexpr (collide_batch_2d_fast_sure_k<Real> < 0 || 2 * collide_batch_2d_fast_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
-        return false;
-    constexpr std::size_t block = 8;
-    Real v_Mx_kept[block];
-    Real v_My_kept[block];
-    Real v_mx_kept[block];
-    Real v_my_kept[block];
-    std::int64_t left = 0;  // a pair the block leaves to collide_batch_2d_fast_sure
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < block; ++i) {
-        std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
-        refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
-        const Real M = M_[i];
-        const Real m = m_[i];
-        const Real C_Mx = C_Mx_[i];
-        const Real C_My = C_My_[i];
-        const Real C_mx = C_mx_[i];
-        const Real C_my = C_my_[i];
-        const Real v_Mx = v_Mx_[i];
-        const Real v_My = v_My_[i];
-        const Real v_mx = v_mx_[i];
-        const Real v_my = v_my_[i];
-        const Real eps = eps_[i];
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_fast_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_fast_sure_k<Real>);
-        std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (v_Mx - v_mx), (v_My - v_my));
-        else if constexpr (detail::has_magnitude_bits<Real>)
-            doubtful = detail::below_range(lowest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (v_Mx - v_mx), (v_My - v_my)) | !detail::at_most((((M * M + m * m) + (eps * eps + (C_Mx - C_mx) * (C_Mx - C_mx))) + (((C_My - C_my) * (C_My - C_my) + (v_Mx - v_mx) * (v_Mx - v_mx)) + (v_My - v_my) * (v_My - v_my))), highest * highest);
-        else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or((C_Mx - C_mx), lowest))), detail::least(detail::least(detail::magnitude_or((C_My - C_my), lowest), detail::magnitude_or((v_Mx - v_mx), lowest)), detail::magnitude_or((v_My - v_my), lowest))), lowest) & detail::at_most((((M * M + m * m) + (eps * eps + (C_Mx - C_mx) * (C_Mx - C_mx))) + (((C_My - C_my) * (C_My - C_my) + (v_Mx - v_mx) * (v_Mx - v_mx)) + (v_My - v_my) * (v_My - v_my))), highest * highest)) |
-                       (!detail::nan_compares_false && !(((detail::zero_if_finite(M, m) + detail::zero_if_finite(eps, (C_Mx - C_mx))) + (detail::zero_if_finite((C_My - C_my), (v_Mx - v_mx)) + detail::zero_if_finite((v_My - v_my)))) == Real(0)));
-        left |= refused | doubtful;
-        std::int64_t unmet = 0;  // a condition that fails
-        {
-            const Real t0 = C_Mx_[i] - C_mx_[i];
-            const Real t1 = C_My_[i] - C_my_[i];
-            const Real t2 = t0 * t0 + t1 * t1;
-            const Real t3 = t0 * (v_Mx_[i] - v_mx_[i]);
-            const Real t4 = v_My_[i] - v_my_[i];
-            unmet |= !(t2 > Real(0));
-            unmet |= !(t3 + t1 * t4 < Real(0));
-        }
-        const std::int64_t resolved = 1;
-        const Real t0 = C_Mx - C_mx;
-        const Real t1 = t0 * t0;
-        const Real t2 = C_My - C_my;
-        const Real t3 = t2 * t2;
-        const Real t4 = t1 + t3;
-        const Real t5 = v_Mx - v_mx;
-        const Real t6 = t0 * t5;
-        const Real t7 = v_My - v_my;
-        const Real t8 = Real(1) + eps;
-        const Real t9 = std::fma(t2, t7, t6);
-        const Real t10 = t8 * t9;
-        const Real t11 = M + m;
-        const Real t12 = t11 * t4;
-        const std::int64_t usable = resolved & (std::fabs(t12) >= detail::smallest_divisor<Real>) & (std::fabs(t12) <= std::numeric_limits<Real>::max());
-        const Real t13 = t10 / detail::blend(usable, t12, Real(1));
-        const Real t14 = t13 * m;
-        const Real t15 = t14 * t0;
-        const Real t16 = t14 * t2;
-        const Real t17 = t13 * M;
-        const Real t18 = t17 * t0;
-        const Real t19 = t17 * t2;
-        const Real v_Mx_out = -t15 + v_Mx;
-        v_Mx_kept[i] = v_Mx_out;
-        const Real v_My_out = -t16 + v_My;
-        v_My_kept[i] = v_My_out;
-        const Real v_mx_out = t18 + v_mx;
-        v_mx_kept[i] = v_mx_out;
-        const Real v_my_out = t19 + v_my;
-        v_my_kept[i] = v_my_out;
-        left |= unmet | !usable | !((detail::zero_if_finite(v_Mx_out, v_My_out) + detail::zero_if_finite(v_mx_out, v_my_out)) == Real(0));
-    }
-    if (left)
-        return false;
-    IMPACT_KEEP_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_Mx_[i] = v_Mx_kept[i];
-        v_My_[i] = v_My_kept[i];
-        v_mx_[i] = v_mx_kept[i];
-        v_my_[i] = v_my_kept[i];
-        if constexpr (with_status)
-            status_[i] = status::ok;
-    }
-    return true;
-}
-
-// collide_batch_2d_fast_all_ok over the blocks from b while each resolves its own, each array's data
-// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first
-// block left, or of the pairs after the last whole block.
-template <class Real, bool with_status>
-IMPACT_NOT_INLINED std::size_t collide_batch_2d_fast_all_ok_run(std::size_t b, std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
-    const std::size_t asked = count > ahead && count * (11 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead
+    const bool far = count * (11 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b < asked) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(M_ + b + ahead, 0);
             IMPACT_PREFETCH(m_ + b + ahead, 0);
             IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
@@ -1533,57 +1279,17 @@ IMPACT_NOT_INLINED std::size_t collide_batch_2d_fast_all_ok_run(std::size_t b, s
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_2d_fast_all_ok<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : status_))
-            break;
-    }
-    return b;
-}
-
-// collide_batch_2d_fast over blocks of 8 pairs: through collide_batch_2d_fast_all_ok where it resolves them, else
-// collide_batch_2d_fast_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays
-// hold more than 1 MiB (`far`): the processor's own prefetching, following so many
-// arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    const bool far = count * (11 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left
-    std::size_t b = 0;
-    while (b + block <= count) {
-        const std::size_t left = collide_batch_2d_fast_all_ok_run<Real, with_status>(b, count, M_, m_, C_Mx_, C_My_, C_mx_, C_my_, v_Mx_, v_My_, v_mx_, v_my_, eps_, status_);
-        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;
-        b = left;
-        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {
-            if (far && b + ahead < count) {
-                IMPACT_PREFETCH(M_ + b + ahead, 0);
-                IMPACT_PREFETCH(m_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_My_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_my_ + b + ahead, 0);
-                IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_My_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_my_ + b + ahead, 1);
-                IMPACT_PREFETCH(eps_ + b + ahead, 0);
-                if constexpr (with_status)
-                    IMPACT_PREFETCH(status_ + b + ahead, 1);
-            }
-            if (untried == 0 && collide_batch_2d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
-                back_off = 0;
+        if (untried == 0 && collide_batch_2d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
             } else {
-                if (untried == 0) {
-                    back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                    untried = back_off;
-                } else {
-                    --untried;
-                }
-                collide_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-                collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+                --untried;
             }
+            collide_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
         }
     }
     collide_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);

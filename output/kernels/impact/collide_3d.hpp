@@ -850,170 +850,19 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
     return true;
 }
 
-// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every
-// pair's values are in range (collide_batch_3d_sure_k) and admitted by the domains and the
-// conditions, and its divisors and results in range, each result is collide_batch_3d's bit for bit.
-// Otherwise (false) the block is left as it was, to collide_batch_3d_sure.
+// collide_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE bool collide_batch_3d_all_ok(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    if constexpr (collide_batch_3d_sure_k<Real> < 0 || 2 * collide_batch_3d_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
-        return false;
-    constexpr std::size_t block = 8;
-    Real v_Mx_kept[block];
-    Real v_My_kept[block];
-    Real v_Mz_kept[block];
-    Real v_mx_kept[block];
-    Real v_my_kept[block];
-    Real v_mz_kept[block];
-    std::int64_t left = 0;  // a pair the block leaves to collide_batch_3d_sure
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < block; ++i) {
-        std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
-        refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
-        const Real M = M_[i];
-        const Real m = m_[i];
-        const Real C_Mx = C_Mx_[i];
-        const Real C_My = C_My_[i];
-        const Real C_Mz = C_Mz_[i];
-        const Real C_mx = C_mx_[i];
-        const Real C_my = C_my_[i];
-        const Real C_mz = C_mz_[i];
-        const Real v_Mx = v_Mx_[i];
-        const Real v_My = v_My_[i];
-        const Real v_Mz = v_Mz_[i];
-        const Real v_mx = v_mx_[i];
-        const Real v_my = v_my_[i];
-        const Real v_mz = v_mz_[i];
-        const Real eps = eps_[i];
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_sure_k<Real>);
-        std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, C_Mx, C_My, C_Mz, C_mx, C_my, C_mz, v_Mx, v_My, v_Mz, v_mx, v_my, v_mz, eps);
-        else if constexpr (detail::has_magnitude_bits<Real>)
-            doubtful = detail::below_range(lowest, M, m, C_Mx, C_My, C_Mz, C_mx, C_my, C_mz, v_Mx, v_My, v_Mz, v_mx, v_my, v_mz, eps) | !detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_Mz * C_Mz + C_mx * C_mx) + (C_my * C_my + C_mz * C_mz))) + (((v_Mx * v_Mx + v_My * v_My) + (v_Mz * v_Mz + v_mx * v_mx)) + ((v_my * v_my + v_mz * v_mz) + eps * eps))), highest * highest);
-        else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(C_Mx, lowest), detail::magnitude_or(C_My, lowest))), detail::least(detail::least(detail::magnitude_or(C_Mz, lowest), detail::magnitude_or(C_mx, lowest)), detail::least(detail::magnitude_or(C_my, lowest), detail::magnitude_or(C_mz, lowest)))), detail::least(detail::least(detail::least(detail::magnitude_or(v_Mx, lowest), detail::magnitude_or(v_My, lowest)), detail::least(detail::magnitude_or(v_Mz, lowest), detail::magnitude_or(v_mx, lowest))), detail::least(detail::least(detail::magnitude_or(v_my, lowest), detail::magnitude_or(v_mz, lowest)), detail::magnitude_or(eps, lowest)))), lowest) & detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_Mz * C_Mz + C_mx * C_mx) + (C_my * C_my + C_mz * C_mz))) + (((v_Mx * v_Mx + v_My * v_My) + (v_Mz * v_Mz + v_mx * v_mx)) + ((v_my * v_my + v_mz * v_mz) + eps * eps))), highest * highest)) |
-                       (!detail::nan_compares_false && !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(C_Mx, C_My)) + (detail::zero_if_finite(C_Mz, C_mx) + detail::zero_if_finite(C_my, C_mz))) + ((detail::zero_if_finite(v_Mx, v_My) + detail::zero_if_finite(v_Mz, v_mx)) + (detail::zero_if_finite(v_my, v_mz) + detail::zero_if_finite(eps)))) == Real(0)));
-        left |= refused | doubtful;
-        std::int64_t unmet = 0;  // a condition that fails
-        {
-            const Real t0 = C_Mx_[i] - C_mx_[i];
-            const Real t1 = t0 * t0;
-            const Real t2 = C_My_[i] - C_my_[i];
-            const Real t3 = t2 * t2;
-            const Real t4 = t1 + t3;
-            const Real t5 = C_Mz_[i] - C_mz_[i];
-            const Real t6 = t5 * t5;
-            const Real t7 = v_Mx_[i] - v_mx_[i];
-            const Real t8 = t0 * t7;
-            const Real t9 = v_My_[i] - v_my_[i];
-            const Real t10 = t2 * t9;
-            const Real t11 = t8 + t10;
-            const Real t12 = v_Mz_[i] - v_mz_[i];
-            const Real t13 = t5 * t12;
-            unmet |= !(t4 + t6 > Real(0));
-            unmet |= !(t11 + t13 < Real(0));
-        }
-        const std::int64_t resolved = 1;
-        const Real t0 = C_Mx - C_mx;
-        const Real t1 = t0 - C_Mx;
-        const Real t2 = t0 * t0;
-        const Real t3 = C_Mx - (t0 - t1) - (C_mx + t1);
-        const Real t4 = C_My - C_my;
-        const Real t5 = t4 - C_My;
-        const Real t6 = t4 * t4;
-        const Real t7 = t2 + t6;
-        const Real t8 = t7 - t2;
-        const Real t9 = C_My - (t4 - t5) - (C_my + t5);
-        const Real t10 = t2 - (t7 - t8) + (t6 - t8) + (std::fma(t3, t0, std::fma(t0, t3, std::fma(t0, t0, -t2))) + std::fma(t9, t4, std::fma(t4, t9, std::fma(t4, t4, -t6))));
-        const Real t11 = t7 + t10;
-        const Real t12 = C_Mz - C_mz;
-        const Real t13 = t12 - C_Mz;
-        const Real t14 = t12 * t12;
-        const Real t15 = t11 + t14;
-        const Real t16 = t15 - t11;
-        const Real t17 = C_Mz - (t12 - t13) - (C_mz + t13);
-        const Real t18 = t11 - (t15 - t16) + (t14 - t16) + (t10 - (t11 - t7) + std::fma(t17, t12, std::fma(t12, t17, std::fma(t12, t12, -t14))));
-        const Real t19 = t15 + t18;
-        const Real t20 = v_Mx - v_mx;
-        const Real t21 = t0 * t20;
-        const Real t22 = t20 - v_Mx;
-        const Real t23 = v_My - v_my;
-        const Real t24 = t4 * t23;
-        const Real t25 = t21 + t24;
-        const Real t26 = t25 - t21;
-        const Real t27 = t23 - v_My;
-        const Real t28 = t21 - (t25 - t26) + (t24 - t26) + (std::fma(t3, t20, std::fma(t0, v_Mx - (t20 - t22) - (v_mx + t22), std::fma(t0, t20, -t21))) + std::fma(t9, t23, std::fma(t4, v_My - (t23 - t27) - (v_my + t27), std::fma(t4, t23, -t24))));
-        const Real t29 = t25 + t28;
-        const Real t30 = v_Mz - v_mz;
-        const Real t31 = t12 * t30;
-        const Real t32 = t29 + t31;
-        const Real t33 = t32 - t29;
-        const Real t34 = t30 - v_Mz;
-        const Real t35 = t29 - (t32 - t33) + (t31 - t33) + (t28 - (t29 - t25) + std::fma(t17, t30, std::fma(t12, v_Mz - (t30 - t34) - (v_mz + t34), std::fma(t12, t30, -t31))));
-        const Real t36 = t32 + t35;
-        const Real t37 = Real(1) + eps;
-        const Real t38 = t37 * t36;
-        const Real t39 = t37 - Real(1);
-        const Real t40 = M + m;
-        const Real t41 = t40 * t19;
-        const std::int64_t usable = resolved & (std::fabs(t41) >= detail::smallest_divisor<Real>) & (std::fabs(t41) <= std::numeric_limits<Real>::max());
-        const Real t42 = t38 / detail::blend(usable, t41, Real(1));
-        const Real t43 = t40 - M;
-        const Real t44 = -t42;
-        const Real t45 = t42 + std::fma(t44, std::fma(M - (t40 - t43) + (m - t43), t19, std::fma(t40, t18 - (t19 - t15), std::fma(t40, t19, -t41))), std::fma(t44, t41, t38) + std::fma(Real(1) - (t37 - t39) + (eps - t39), t36, std::fma(t37, t35 - (t36 - t32), std::fma(t37, t36, -t38)))) / detail::blend(usable, t41, Real(1));
-        const Real t46 = t45 * m;
-        const Real t47 = t46 * t0;
-        const Real t48 = t46 * t4;
-        const Real t49 = t46 * t12;
-        const Real t50 = t45 * M;
-        const Real t51 = t50 * t0;
-        const Real t52 = t50 * t4;
-        const Real t53 = t50 * t12;
-        const Real v_Mx_out = -t47 + v_Mx;
-        v_Mx_kept[i] = v_Mx_out;
-        const Real v_My_out = -t48 + v_My;
-        v_My_kept[i] = v_My_out;
-        const Real v_Mz_out = -t49 + v_Mz;
-        v_Mz_kept[i] = v_Mz_out;
-        const Real v_mx_out = t51 + v_mx;
-        v_mx_kept[i] = v_mx_out;
-        const Real v_my_out = t52 + v_my;
-        v_my_kept[i] = v_my_out;
-        const Real v_mz_out = t53 + v_mz;
-        v_mz_kept[i] = v_mz_out;
-        left |= unmet | !usable;
-    }
-    if (left)
-        return false;
-    IMPACT_KEEP_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_Mx_[i] = v_Mx_kept[i];
-        v_My_[i] = v_My_kept[i];
-        v_Mz_[i] = v_Mz_kept[i];
-        v_mx_[i] = v_mx_kept[i];
-        v_my_[i] = v_my_kept[i];
-        v_mz_[i] = v_mz_kept[i];
-        if constexpr (with_status)
-            status_[i] = status::ok;
-    }
-    return true;
-}
-
-// collide_batch_3d_all_ok over the blocks from b while each resolves its own, each array's data
-// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first
-// block left, or of the pairs after the last whole block.
-template <class Real, bool with_status>
-IMPACT_NOT_INLINED std::size_t collide_batch_3d_all_ok_run(std::size_t b, std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
-    const std::size_t asked = count > ahead && count * (15 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead
+    const bool far = count * (15 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b < asked) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(M_ + b + ahead, 0);
             IMPACT_PREFETCH(m_ + b + ahead, 0);
             IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
@@ -1032,61 +881,17 @@ IMPACT_NOT_INLINED std::size_t collide_batch_3d_all_ok_run(std::size_t b, std::s
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_3d_all_ok<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_))
-            break;
-    }
-    return b;
-}
-
-// collide_batch_3d over blocks of 8 pairs: through collide_batch_3d_all_ok where it resolves them, else
-// collide_batch_3d_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays
-// hold more than 1 MiB (`far`): the processor's own prefetching, following so many
-// arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    const bool far = count * (15 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left
-    std::size_t b = 0;
-    while (b + block <= count) {
-        const std::size_t left = collide_batch_3d_all_ok_run<Real, with_status>(b, count, M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, v_Mx_, v_My_, v_Mz_, v_mx_, v_my_, v_mz_, eps_, status_);
-        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;
-        b = left;
-        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {
-            if (far && b + ahead < count) {
-                IMPACT_PREFETCH(M_ + b + ahead, 0);
-                IMPACT_PREFETCH(m_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_My_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_Mz_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_my_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_mz_ + b + ahead, 0);
-                IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_My_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_Mz_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_my_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
-                IMPACT_PREFETCH(eps_ + b + ahead, 0);
-                if constexpr (with_status)
-                    IMPACT_PREFETCH(status_ + b + ahead, 1);
-            }
-            if (untried == 0 && collide_batch_3d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
-                back_off = 0;
+        if (untried == 0 && collide_batch_3d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
             } else {
-                if (untried == 0) {
-                    back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                    untried = back_off;
-                } else {
-                    --untried;
-                }
-                collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-                collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+                --untried;
             }
+            collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
         }
     }
     collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
@@ -1725,135 +1530,19 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
     return true;
 }
 
-// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every
-// pair's values are in range (collide_batch_3d_fast_sure_k) and admitted by the domains and the
-// conditions, and its divisors and results in range, each result is collide_batch_3d_fast's bit for bit.
-// Otherwise (false) the block is left as it was, to collide_batch_3d_fast_sure.
+// collide_batch_3d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_all_ok(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    if constexpr (collide_batch_3d_fast_sure_k<Real> < 0 || 2 * collide_batch_3d_fast_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
-        return false;
-    constexpr std::size_t block = 8;
-    Real v_Mx_kept[block];
-    Real v_My_kept[block];
-    Real v_Mz_kept[block];
-    Real v_mx_kept[block];
-    Real v_my_kept[block];
-    Real v_mz_kept[block];
-    std::int64_t left = 0;  // a pair the block leaves to collide_batch_3d_fast_sure
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < block; ++i) {
-        std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
-        refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
-        const Real M = M_[i];
-        const Real m = m_[i];
-        const Real C_Mx = C_Mx_[i];
-        const Real C_My = C_My_[i];
-        const Real C_Mz = C_Mz_[i];
-        const Real C_mx = C_mx_[i];
-        const Real C_my = C_my_[i];
-        const Real C_mz = C_mz_[i];
-        const Real v_Mx = v_Mx_[i];
-        const Real v_My = v_My_[i];
-        const Real v_Mz = v_Mz_[i];
-        const Real v_mx = v_mx_[i];
-        const Real v_my = v_my_[i];
-        const Real v_mz = v_mz_[i];
-        const Real eps = eps_[i];
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_fast_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_fast_sure_k<Real>);
-        std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (C_Mz - C_mz), (v_Mx - v_mx), (v_My - v_my), (v_Mz - v_mz));
-        else if constexpr (detail::has_magnitude_bits<Real>)
-            doubtful = detail::below_range(lowest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (C_Mz - C_mz), (v_Mx - v_mx), (v_My - v_my), (v_Mz - v_mz)) | !detail::at_most(((((M * M + m * m) + (eps * eps + (C_Mx - C_mx) * (C_Mx - C_mx))) + (((C_My - C_my) * (C_My - C_my) + (C_Mz - C_mz) * (C_Mz - C_mz)) + ((v_Mx - v_mx) * (v_Mx - v_mx) + (v_My - v_my) * (v_My - v_my)))) + (v_Mz - v_mz) * (v_Mz - v_mz)), highest * highest);
-        else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(eps, lowest), detail::magnitude_or((C_Mx - C_mx), lowest))), detail::least(detail::least(detail::magnitude_or((C_My - C_my), lowest), detail::magnitude_or((C_Mz - C_mz), lowest)), detail::least(detail::magnitude_or((v_Mx - v_mx), lowest), detail::magnitude_or((v_My - v_my), lowest)))), detail::magnitude_or((v_Mz - v_mz), lowest)), lowest) & detail::at_most(((((M * M + m * m) + (eps * eps + (C_Mx - C_mx) * (C_Mx - C_mx))) + (((C_My - C_my) * (C_My - C_my) + (C_Mz - C_mz) * (C_Mz - C_mz)) + ((v_Mx - v_mx) * (v_Mx - v_mx) + (v_My - v_my) * (v_My - v_my)))) + (v_Mz - v_mz) * (v_Mz - v_mz)), highest * highest)) |
-                       (!detail::nan_compares_false && !((((detail::zero_if_finite(M, m) + detail::zero_if_finite(eps, (C_Mx - C_mx))) + (detail::zero_if_finite((C_My - C_my), (C_Mz - C_mz)) + detail::zero_if_finite((v_Mx - v_mx), (v_My - v_my)))) + detail::zero_if_finite((v_Mz - v_mz))) == Real(0)));
-        left |= refused | doubtful;
-        std::int64_t unmet = 0;  // a condition that fails
-        {
-            const Real t0 = C_Mx_[i] - C_mx_[i];
-            const Real t1 = C_My_[i] - C_my_[i];
-            const Real t2 = C_Mz_[i] - C_mz_[i];
-            const Real t3 = t0 * t0 + t1 * t1 + t2 * t2;
-            const Real t4 = t0 * (v_Mx_[i] - v_mx_[i]);
-            const Real t5 = v_My_[i] - v_my_[i];
-            const Real t6 = v_Mz_[i] - v_mz_[i];
-            unmet |= !(t3 > Real(0));
-            unmet |= !(t4 + t1 * t5 + t2 * t6 < Real(0));
-        }
-        const std::int64_t resolved = 1;
-        const Real t0 = C_Mx - C_mx;
-        const Real t1 = t0 * t0;
-        const Real t2 = C_My - C_my;
-        const Real t3 = t2 * t2;
-        const Real t4 = C_Mz - C_mz;
-        const Real t5 = t4 * t4;
-        const Real t6 = t1 + t3 + t5;
-        const Real t7 = v_Mx - v_mx;
-        const Real t8 = t0 * t7;
-        const Real t9 = v_My - v_my;
-        const Real t10 = v_Mz - v_mz;
-        const Real t11 = Real(1) + eps;
-        const Real t12 = std::fma(t2, t9, t8);
-        const Real t13 = std::fma(t4, t10, t12);
-        const Real t14 = t11 * t13;
-        const Real t15 = M + m;
-        const Real t16 = t15 * t6;
-        const std::int64_t usable = resolved & (std::fabs(t16) >= detail::smallest_divisor<Real>) & (std::fabs(t16) <= std::numeric_limits<Real>::max());
-        const Real t17 = t14 / detail::blend(usable, t16, Real(1));
-        const Real t18 = t17 * m;
-        const Real t19 = t18 * t0;
-        const Real t20 = t18 * t2;
-        const Real t21 = t18 * t4;
-        const Real t22 = t17 * M;
-        const Real t23 = t22 * t0;
-        const Real t24 = t22 * t2;
-        const Real t25 = t22 * t4;
-        const Real v_Mx_out = -t19 + v_Mx;
-        v_Mx_kept[i] = v_Mx_out;
-        const Real v_My_out = -t20 + v_My;
-        v_My_kept[i] = v_My_out;
-        const Real v_Mz_out = -t21 + v_Mz;
-        v_Mz_kept[i] = v_Mz_out;
-        const Real v_mx_out = t23 + v_mx;
-        v_mx_kept[i] = v_mx_out;
-        const Real v_my_out = t24 + v_my;
-        v_my_kept[i] = v_my_out;
-        const Real v_mz_out = t25 + v_mz;
-        v_mz_kept[i] = v_mz_out;
-        left |= unmet | !usable | !(((detail::zero_if_finite(v_Mx_out, v_My_out) + detail::zero_if_finite(v_Mz_out, v_mx_out)) + detail::zero_if_finite(v_my_out, v_mz_out)) == Real(0));
-    }
-    if (left)
-        return false;
-    IMPACT_KEEP_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_Mx_[i] = v_Mx_kept[i];
-        v_My_[i] = v_My_kept[i];
-        v_Mz_[i] = v_Mz_kept[i];
-        v_mx_[i] = v_mx_kept[i];
-        v_my_[i] = v_my_kept[i];
-        v_mz_[i] = v_mz_kept[i];
-        if constexpr (with_status)
-            status_[i] = status::ok;
-    }
-    return true;
-}
-
-// collide_batch_3d_fast_all_ok over the blocks from b while each resolves its own, each array's data
-// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first
-// block left, or of the pairs after the last whole block.
-template <class Real, bool with_status>
-IMPACT_NOT_INLINED std::size_t collide_batch_3d_fast_all_ok_run(std::size_t b, std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
-    const std::size_t asked = count > ahead && count * (15 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead
+    const bool far = count * (15 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b < asked) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(M_ + b + ahead, 0);
             IMPACT_PREFETCH(m_ + b + ahead, 0);
             IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
@@ -1872,61 +1561,17 @@ IMPACT_NOT_INLINED std::size_t collide_batch_3d_fast_all_ok_run(std::size_t b, s
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_batch_3d_fast_all_ok<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : status_))
-            break;
-    }
-    return b;
-}
-
-// collide_batch_3d_fast over blocks of 8 pairs: through collide_batch_3d_fast_all_ok where it resolves them, else
-// collide_batch_3d_fast_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays
-// hold more than 1 MiB (`far`): the processor's own prefetching, following so many
-// arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    const bool far = count * (15 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left
-    std::size_t b = 0;
-    while (b + block <= count) {
-        const std::size_t left = collide_batch_3d_fast_all_ok_run<Real, with_status>(b, count, M_, m_, C_Mx_, C_My_, C_Mz_, C_mx_, C_my_, C_mz_, v_Mx_, v_My_, v_Mz_, v_mx_, v_my_, v_mz_, eps_, status_);
-        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;
-        b = left;
-        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {
-            if (far && b + ahead < count) {
-                IMPACT_PREFETCH(M_ + b + ahead, 0);
-                IMPACT_PREFETCH(m_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_Mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_My_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_Mz_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_mx_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_my_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_mz_ + b + ahead, 0);
-                IMPACT_PREFETCH(v_Mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_My_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_Mz_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_my_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
-                IMPACT_PREFETCH(eps_ + b + ahead, 0);
-                if constexpr (with_status)
-                    IMPACT_PREFETCH(status_ + b + ahead, 1);
-            }
-            if (untried == 0 && collide_batch_3d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
-                back_off = 0;
+        if (untried == 0 && collide_batch_3d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
             } else {
-                if (untried == 0) {
-                    back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                    untried = back_off;
-                } else {
-                    --untried;
-                }
-                collide_batch_3d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-                collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+                --untried;
             }
+            collide_batch_3d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
         }
     }
     collide_batch_3d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);

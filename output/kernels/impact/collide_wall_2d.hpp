@@ -326,102 +326,19 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT
     return true;
 }
 
-// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every
-// pair's values are in range (collide_wall_batch_2d_sure_k) and admitted by the domains and the
-// conditions, and its divisors and results in range, each result is collide_wall_batch_2d's bit for bit.
-// Otherwise (false) the block is left as it was, to collide_wall_batch_2d_sure.
+// collide_wall_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_all_ok(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    if constexpr (collide_wall_batch_2d_sure_k<Real> < 0 || 2 * collide_wall_batch_2d_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
-        return false;
-    constexpr std::size_t block = 8;
-    Real v_x_kept[block];
-    Real v_y_kept[block];
-    std::int64_t left = 0;  // a pair the block leaves to collide_wall_batch_2d_sure
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < block; ++i) {
-        std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
-        refused |= !(eps_[i] <= Real(1));
-        refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
-        const Real N_x = N_x_[i];
-        const Real N_y = N_y_[i];
-        const Real v_x = v_x_[i];
-        const Real v_y = v_y_[i];
-        const Real eps = eps_[i];
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_sure_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_sure_k<Real>);
-        std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, N_x, N_y, v_x, v_y, eps);
-        else if constexpr (detail::has_magnitude_bits<Real>)
-            doubtful = detail::below_range(lowest, N_x, N_y, v_x, v_y, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest);
-        else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)) |
-                       (!detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
-        left |= refused | doubtful;
-        std::int64_t unmet = 0;  // a condition that fails
-        {
-            const Real t0 = N_x_[i] * N_x_[i];
-            const Real t1 = N_y_[i] * N_y_[i];
-            const Real t2 = t0 + t1;
-            const Real t3 = N_x_[i] * v_x_[i];
-            const Real t4 = N_y_[i] * v_y_[i];
-            const Real t5 = t3 + t4;
-            unmet |= !(t2 > Real(0));
-            unmet |= !(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) > Real(0));
-            unmet |= !(t5 < Real(0));
-        }
-        const std::int64_t resolved = 1;
-        const Real t0 = N_x * N_x;
-        const Real t1 = N_y * N_y;
-        const Real t2 = t0 + t1;
-        const Real t3 = N_x * v_x;
-        const Real t4 = N_y * v_y;
-        const Real t5 = t3 + t4;
-        const Real t6 = Real(1) + eps;
-        const Real t7 = t6 - Real(1);
-        const Real t8 = t5 - t3;
-        const Real t9 = t3 - (t5 - t8) + (t4 - t8) + (std::fma(N_x, v_x, -t3) + std::fma(N_y, v_y, -t4));
-        const Real t10 = t5 + t9;
-        const Real t11 = t6 * t10;
-        const Real t12 = t2 - t0;
-        const Real t13 = t0 - (t2 - t12) + (t1 - t12) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
-        const Real t14 = t2 + t13;
-        const std::int64_t usable = resolved & (std::fabs(t14) >= detail::smallest_divisor<Real>) & (std::fabs(t14) <= std::numeric_limits<Real>::max());
-        const Real t15 = t11 / detail::blend(usable, t14, Real(1));
-        const Real t16 = -t15;
-        const Real t17 = t15 + std::fma(t16, t13 - (t14 - t2), std::fma(t16, t14, t11) + std::fma(Real(1) - (t6 - t7) + (eps - t7), t10, std::fma(t6, t9 - (t10 - t5), std::fma(t6, t10, -t11)))) / detail::blend(usable, t14, Real(1));
-        const Real t18 = N_x * t17;
-        const Real t19 = N_y * t17;
-        const Real v_x_out = -t18 + v_x;
-        v_x_kept[i] = v_x_out;
-        const Real v_y_out = -t19 + v_y;
-        v_y_kept[i] = v_y_out;
-        left |= unmet | !usable;
-    }
-    if (left)
-        return false;
-    IMPACT_KEEP_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_x_[i] = v_x_kept[i];
-        v_y_[i] = v_y_kept[i];
-        if constexpr (with_status)
-            status_[i] = status::ok;
-    }
-    return true;
-}
-
-// collide_wall_batch_2d_all_ok over the blocks from b while each resolves its own, each array's data
-// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first
-// block left, or of the pairs after the last whole block.
-template <class Real, bool with_status>
-IMPACT_NOT_INLINED std::size_t collide_wall_batch_2d_all_ok_run(std::size_t b, std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_wall_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
-    const std::size_t asked = count > ahead && count * (9 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead
+    const bool far = count * (9 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b < asked) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(P_x_ + b + ahead, 0);
             IMPACT_PREFETCH(P_y_ + b + ahead, 0);
             IMPACT_PREFETCH(N_x_ + b + ahead, 0);
@@ -434,55 +351,17 @@ IMPACT_NOT_INLINED std::size_t collide_wall_batch_2d_all_ok_run(std::size_t b, s
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_wall_batch_2d_all_ok<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : status_))
-            break;
-    }
-    return b;
-}
-
-// collide_wall_batch_2d over blocks of 8 pairs: through collide_wall_batch_2d_all_ok where it resolves them, else
-// collide_wall_batch_2d_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays
-// hold more than 1 MiB (`far`): the processor's own prefetching, following so many
-// arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_wall_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    const bool far = count * (9 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left
-    std::size_t b = 0;
-    while (b + block <= count) {
-        const std::size_t left = collide_wall_batch_2d_all_ok_run<Real, with_status>(b, count, P_x_, P_y_, N_x_, N_y_, C_x_, C_y_, v_x_, v_y_, eps_, status_);
-        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;
-        b = left;
-        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {
-            if (far && b + ahead < count) {
-                IMPACT_PREFETCH(P_x_ + b + ahead, 0);
-                IMPACT_PREFETCH(P_y_ + b + ahead, 0);
-                IMPACT_PREFETCH(N_x_ + b + ahead, 0);
-                IMPACT_PREFETCH(N_y_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_x_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_y_ + b + ahead, 0);
-                IMPACT_PREFETCH(v_x_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_y_ + b + ahead, 1);
-                IMPACT_PREFETCH(eps_ + b + ahead, 0);
-                if constexpr (with_status)
-                    IMPACT_PREFETCH(status_ + b + ahead, 1);
-            }
-            if (untried == 0 && collide_wall_batch_2d_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
-                back_off = 0;
+        if (untried == 0 && collide_wall_batch_2d_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
             } else {
-                if (untried == 0) {
-                    back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                    untried = back_off;
-                } else {
-                    --untried;
-                }
-                collide_wall_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
-                collide_wall_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+                --untried;
             }
+            collide_wall_batch_2d<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_2d_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
         }
     }
     collide_wall_batch_2d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
@@ -764,88 +643,19 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RES
     return true;
 }
 
-// A block of 8 pairs all resolved (status ok) at once (true), in one pass: where every
-// pair's values are in range (collide_wall_batch_2d_fast_sure_k) and admitted by the domains and the
-// conditions, and its divisors and results in range, each result is collide_wall_batch_2d_fast's bit for bit.
-// Otherwise (false) the block is left as it was, to collide_wall_batch_2d_fast_sure.
+// collide_wall_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
 template <class Real, bool with_status>
-IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_all_ok(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    if constexpr (collide_wall_batch_2d_fast_sure_k<Real> < 0 || 2 * collide_wall_batch_2d_fast_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
-        return false;
-    constexpr std::size_t block = 8;
-    Real v_x_kept[block];
-    Real v_y_kept[block];
-    std::int64_t left = 0;  // a pair the block leaves to collide_wall_batch_2d_fast_sure
-    IMPACT_INDEPENDENT_ITERATIONS
-    for (std::size_t i = 0; i < block; ++i) {
-        std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
-        refused |= !(eps_[i] <= Real(1));
-        refused |= !((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(C_x_[i], C_y_[i])) == Real(0));
-        const Real N_x = N_x_[i];
-        const Real N_y = N_y_[i];
-        const Real v_x = v_x_[i];
-        const Real v_y = v_y_[i];
-        const Real eps = eps_[i];
-        constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_fast_sure_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_fast_sure_k<Real>);
-        std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, N_x, N_y, v_x, v_y, eps);
-        else if constexpr (detail::has_magnitude_bits<Real>)
-            doubtful = detail::below_range(lowest, N_x, N_y, v_x, v_y, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest);
-        else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)) |
-                       (!detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
-        left |= refused | doubtful;
-        std::int64_t unmet = 0;  // a condition that fails
-        {
-            const Real t0 = N_x_[i] * N_x_[i] + N_y_[i] * N_y_[i];
-            const Real t1 = N_x_[i] * v_x_[i];
-            unmet |= !(t0 > Real(0));
-            unmet |= !(N_x_[i] * (C_x_[i] - P_x_[i]) + N_y_[i] * (C_y_[i] - P_y_[i]) > Real(0));
-            unmet |= !(t1 + N_y_[i] * v_y_[i] < Real(0));
-        }
-        const std::int64_t resolved = 1;
-        const Real t0 = N_x * N_x;
-        const Real t1 = N_y * N_y;
-        const Real t2 = t0 + t1;
-        const std::int64_t usable = resolved & (std::fabs(t2) >= detail::smallest_divisor<Real>) & (std::fabs(t2) <= std::numeric_limits<Real>::max());
-        const Real t3 = N_x * v_x;
-        const Real t4 = Real(1) + eps;
-        const Real t5 = std::fma(N_y, v_y, t3);
-        const Real t6 = t4 * t5;
-        const Real t7 = t6 / detail::blend(usable, t2, Real(1));
-        const Real t8 = N_x * t7;
-        const Real t9 = N_y * t7;
-        const Real v_x_out = -t8 + v_x;
-        v_x_kept[i] = v_x_out;
-        const Real v_y_out = -t9 + v_y;
-        v_y_kept[i] = v_y_out;
-        left |= unmet | !usable;
-    }
-    if (left)
-        return false;
-    IMPACT_KEEP_LOOP
-    for (std::size_t i = 0; i < block; ++i) {
-        v_x_[i] = v_x_kept[i];
-        v_y_[i] = v_y_kept[i];
-        if constexpr (with_status)
-            status_[i] = status::ok;
-    }
-    return true;
-}
-
-// collide_wall_batch_2d_fast_all_ok over the blocks from b while each resolves its own, each array's data
-// asked for 64 pairs ahead where the arrays hold more than 1 MiB: the start of the first
-// block left, or of the pairs after the last whole block.
-template <class Real, bool with_status>
-IMPACT_NOT_INLINED std::size_t collide_wall_batch_2d_fast_all_ok_run(std::size_t b, std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
+inline void collide_wall_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
-    const std::size_t asked = count > ahead && count * (9 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20) ? count - ahead : 0;  // blocks before it ask ahead
+    const bool far = count * (9 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
     for (; b + block <= count; b += block) {
-        if (b < asked) {
+        if (far && b + ahead < count) {
             IMPACT_PREFETCH(P_x_ + b + ahead, 0);
             IMPACT_PREFETCH(P_y_ + b + ahead, 0);
             IMPACT_PREFETCH(N_x_ + b + ahead, 0);
@@ -858,55 +668,17 @@ IMPACT_NOT_INLINED std::size_t collide_wall_batch_2d_fast_all_ok_run(std::size_t
             if constexpr (with_status)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (!collide_wall_batch_2d_fast_all_ok<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : status_))
-            break;
-    }
-    return b;
-}
-
-// collide_wall_batch_2d_fast over blocks of 8 pairs: through collide_wall_batch_2d_fast_all_ok where it resolves them, else
-// collide_wall_batch_2d_fast_sure, else the loop; each array's data asked for 64 pairs ahead where the arrays
-// hold more than 1 MiB (`far`): the processor's own prefetching, following so many
-// arrays, falls behind.
-template <class Real, bool with_status>
-inline void collide_wall_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
-{
-    constexpr std::size_t block = 8, ahead = 64;
-    const bool far = count * (9 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
-    impact::status own[block];  // the statuses, where the caller wants none
-    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
-    std::size_t all_ok_back_off = 0;  // blocks the all-ok block skips after the one it left
-    std::size_t b = 0;
-    while (b + block <= count) {
-        const std::size_t left = collide_wall_batch_2d_fast_all_ok_run<Real, with_status>(b, count, P_x_, P_y_, N_x_, N_y_, C_x_, C_y_, v_x_, v_y_, eps_, status_);
-        all_ok_back_off = left > b ? 1 : all_ok_back_off == 0 ? 1 : all_ok_back_off < 16 ? 2 * all_ok_back_off : 16;
-        b = left;
-        for (std::size_t skipped = 0; skipped <= all_ok_back_off && b + block <= count; ++skipped, b += block) {
-            if (far && b + ahead < count) {
-                IMPACT_PREFETCH(P_x_ + b + ahead, 0);
-                IMPACT_PREFETCH(P_y_ + b + ahead, 0);
-                IMPACT_PREFETCH(N_x_ + b + ahead, 0);
-                IMPACT_PREFETCH(N_y_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_x_ + b + ahead, 0);
-                IMPACT_PREFETCH(C_y_ + b + ahead, 0);
-                IMPACT_PREFETCH(v_x_ + b + ahead, 1);
-                IMPACT_PREFETCH(v_y_ + b + ahead, 1);
-                IMPACT_PREFETCH(eps_ + b + ahead, 0);
-                if constexpr (with_status)
-                    IMPACT_PREFETCH(status_ + b + ahead, 1);
-            }
-            if (untried == 0 && collide_wall_batch_2d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
-                back_off = 0;
+        if (untried == 0 && collide_wall_batch_2d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
             } else {
-                if (untried == 0) {
-                    back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
-                    untried = back_off;
-                } else {
-                    --untried;
-                }
-                collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
-                collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+                --untried;
             }
+            collide_wall_batch_2d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_2d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
         }
     }
     collide_wall_batch_2d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, eps_ + b, with_status ? status_ + b : own);
