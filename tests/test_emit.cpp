@@ -156,6 +156,38 @@ BOOST_AUTO_TEST_CASE(input_range_keeps_every_product_normal_and_no_wider)
     BOOST_TEST(compile::run<double>(square.p, {2 * a, 2 * b}).front() == std::numeric_limits<double>::min());
 }
 
+// A sure block's cut (compile::cut_for_range): x and y enter only through x - y and x is
+// added to an output, so the block tests x - y, s and w, and the output x is added to; the
+// bounds then start from x - y itself, not from x and y: (x - y)^2 s within [2^-3k, 2^3k],
+// normal in double up to k = 340 (from the inputs, x - y is only a multiple of 2^(-k - 52),
+// and the product normal up to k = 306). An input added to a product but to no other input
+// is tested itself, and a cut no cheaper than the inputs is the inputs.
+BOOST_AUTO_TEST_CASE(a_sure_block_tests_differences_of_inputs_where_that_tests_fewer_values)
+{
+    using compile::opcode;
+    const compile::float_format twice{53, -1021, 1024};
+    program_builder in(4);
+    const int x = 0, y = 1, s = 2, w = 3;
+    const int d = in(opcode::sub, x, y);
+    const int r = in(opcode::mul, in(opcode::mul, d, d), s);
+    in.p.outputs.push_back(in(opcode::add, r, x));
+    in.p.outputs.push_back(in(opcode::mul, w, s));
+    const std::vector<bool> all(in.p.code.size(), true);
+    const compile::range_cut cut = compile::cut_for_range(in.p, all);
+    BOOST_TEST((cut.tested == std::vector<int>{s, w, d}));
+    BOOST_TEST((cut.summed == std::vector<int>{0}));
+    BOOST_TEST(compile::cut_exponent_bound(in.p, all, cut, twice) == 340);
+    BOOST_TEST(compile::input_exponent_bound(in.p, all, twice) == 306);
+
+    program_builder plain(2);
+    plain.p.outputs.push_back(plain(opcode::add, 0, plain(opcode::mul, 1, 1)));
+    const std::vector<bool> every(plain.p.code.size(), true);
+    const compile::range_cut inputs = compile::cut_for_range(plain.p, every);
+    BOOST_TEST((inputs.tested == std::vector<int>{0, 1}));
+    BOOST_TEST(inputs.summed.empty());
+    BOOST_TEST(compile::cut_exponent_bound(plain.p, every, inputs, twice) == compile::input_exponent_bound(plain.p, every, twice));
+}
+
 BOOST_AUTO_TEST_CASE(ordered_for_registers_divides_only_once_every_divisor_is_known)
 {
     // b / (b + c) + d / (e + f): once b + c is known, b / (b + c) needs no new input and
