@@ -1662,6 +1662,15 @@ BOOST_AUTO_TEST_CASE(a_block_with_one_hostile_lane_is_the_scalar_kernels_in_ever
     BOOST_TEST(fail.count == 0u);
 }
 
+// 8 ordinary pairs in 2D, a block of the batch loop.
+std::array<pair_nd<double, 2>, 8> ordinary_block()
+{
+    std::array<pair_nd<double, 2>, 8> pairs;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+        pairs[i] = ordinary_pair<double, 2>(i);
+    return pairs;
+}
+
 // The sure block of collide_batch in 2D on 8 pairs (the fast form's with impact::fast):
 // whether it resolved them, and whether it left their velocities as they were; where it
 // resolved them, every lane is the scalar kernel's, bit for bit, and ok. Compiled as the
@@ -1703,9 +1712,7 @@ IMPACT_PRECISE_END
 
 BOOST_AUTO_TEST_CASE(a_block_of_ordinary_pairs_is_resolved_at_once_and_a_nan_anywhere_leaves_it)
 {
-    std::array<pair_nd<double, 2>, 8> pairs;
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        pairs[i] = ordinary_pair<double, 2>(i);
+    const std::array<pair_nd<double, 2>, 8> pairs = ordinary_block();
     const auto [resolved, unchanged] = sure_block(pairs);
     BOOST_TEST(resolved);
     BOOST_TEST(!unchanged);
@@ -1730,9 +1737,7 @@ BOOST_AUTO_TEST_CASE(the_sure_blocks_range_ends_where_the_loops_does)
     constexpr int k = impact::detail::collide_batch_2d_sure_k<double>;
     static_assert(k > 0 && k == impact::detail::collide_batch_2d_k<double>);
     const double lowest = std::ldexp(1.0, -k), highest = std::ldexp(1.0, k);
-    std::array<pair_nd<double, 2>, 8> pairs;
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        pairs[i] = ordinary_pair<double, 2>(i);
+    const std::array<pair_nd<double, 2>, 8> pairs = ordinary_block();
     const auto resolved_with = [&](double v_Mx) {
         auto changed = pairs;
         changed[5].v_M[0] = v_Mx;
@@ -1763,9 +1768,7 @@ BOOST_AUTO_TEST_CASE(the_fast_sure_block_tests_differences_of_inputs)
     constexpr int k = impact::detail::collide_batch_2d_fast_sure_k<double>;
     static_assert(k > impact::detail::collide_batch_2d_fast_k<double>);  // (2^-k: the analysis's own bound)
     const double lowest = std::ldexp(1.0, -k), highest = std::ldexp(1.0, k);
-    std::array<pair_nd<double, 2>, 8> pairs;
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-        pairs[i] = ordinary_pair<double, 2>(i);
+    const std::array<pair_nd<double, 2>, 8> pairs = ordinary_block();
     const auto resolved_with = [&](auto change) {
         auto changed = pairs;
         change(changed[5]);

@@ -364,9 +364,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const bool with_status = !k.guards.empty();
 
     out += "\nnamespace detail {\n\n";
-    std::vector<int> ks;  // the exponent of the input range, per format (batch_formats)
     if (with_status)
-        ks = print_input_k(out, loop, plan);
+        print_input_k(out, loop, plan);
     out += fmt::format("// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
                        "// block's call runs one pass of 8 pairs.\n", k.name, n);
     out += fmt::format("template <class Real{}>\nIMPACT_ALWAYS_INLINE void {}(std::size_t count, {}) noexcept\n{{\n"
@@ -415,13 +414,14 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             for (std::size_t c = conditions.size(); c-- > 0;)
                 fail_with({condition_failure(given.outputs[c], *conditions[c])}, conditions[c]->status, "condition");
             out += "            outcome = detail::blend(admitted, condition, outcome);\n";
+            sure_conditions = "            impact::status condition = status::ok;\n";
             for (std::size_t s = 0; s < given.statements.size(); ++s)
                 if (for_guards[given.statement_values[s]])
                     sure_conditions += "            " + given.statements[s] + "\n";
             for (std::size_t c = conditions.size(); c-- > 0;)
                 sure_conditions += fmt::format("            condition = detail::blend({}, status::{}, condition);\n",
                                                condition_failure(given.outputs[c], *conditions[c]), conditions[c]->status);
-            sure_conditions = "            impact::status condition = status::ok;\n" + sure_conditions + "            outcome = condition;\n";
+            sure_conditions += "            outcome = condition;\n";
         }
         out += "        }\n";
         if (!k.limits.empty()) {
@@ -462,7 +462,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // to the scalar kernel (status underflow here, then `settle`). An input 0 passes
         // (detail::magnitude_or). Tested after the arithmetic: tested as the inputs are
         // read, the loops ran slower (2D 0.69 of the loop before any test, against 0.79).
-        // (The sure block tests fewer values: print_sure.)
+        // (The sure block tests the values compile::cut_for_range chooses.)
         std::vector<std::string> low, high;
         for (const compile::instruction& in : arithmetic.code)
             if (in.op == compile::opcode::input && for_outputs[&in - arithmetic.code.data()]) {
@@ -500,9 +500,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             if (read[in])
                 into += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
     };
-    const auto print_arithmetic = [&](std::string& into, bool reads = true) {
-        if (reads)
-            print_reads(into);
+    const auto print_arithmetic = [&](std::string& into) {
+        print_reads(into);
         if (with_status)
             declare_usable(into, 0);
         for (std::size_t s = 0; s < code.statements.size(); ++s) {
@@ -658,7 +657,6 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         written += fmt::format("        if constexpr (with_status)\n"
                                "            status_[i] = detail::blend(resolved & !{}, status::{}, outcome);\n",
                                stored, out_of_range);
-        std::vector<std::string> tested_names = values;
         out += fmt::format(
             "\n// The range of what {0}_sure tests, within which every value {0} computes stays in\n"
             "// the normal range but its results that add a velocity: where each of {2} is 0\n"
@@ -667,7 +665,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             "// where its differences and those results are). For 24, 53, 64 and 113 mantissa\n"
             "// digits: k = {1}.\n"
             "template <class Real>\nconstexpr int {0}_sure_k = input_k<Real>({1});\n",
-            loop, fmt::join(sure_ks, ", "), fmt::join(tested_names, ", "));
+            loop, fmt::join(sure_ks, ", "), fmt::join(values, ", "));
         // Two passes over the block, the first testing, the second computing and storing:
         // against one pass that kept the results in arrays of the block until all were tested,
         // and left a block with a divisor out of range to the loop, the fast 2D block ran

@@ -205,7 +205,6 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
     for (int d : groups.late)
         code.late_divisors.push_back(text[d]);
     code.divides_early = compile::divides_early(p);
-    code.values = text;
     const auto known_after = [&](int last) {
         std::size_t s = 0;
         while (s < code.statements.size() && code.statement_values[s] <= last)

@@ -52,8 +52,6 @@ struct cxx_code {
     /// With `watched`, the arguments of its functions (named): a function can hide an
     /// overflow (atan2 of an infinity is finite), so a kernel tests them as it tests its results.
     std::vector<std::string> arguments;
-    /// Every value of p as the statements refer to it: its name, or its expression.
-    std::vector<std::string> values;
 };
 cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {},
                      const std::vector<bool>& watched = {});
