@@ -141,6 +141,24 @@ BOOST_AUTO_TEST_CASE(sha256_gives_the_digests_of_the_standards_examples)
                "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
+BOOST_AUTO_TEST_CASE(the_programs_fingerprint_is_the_build_id_the_linker_wrote)
+{
+    // binutils' readelf reads the note from the file; Impact reads it from memory.
+    const fs::path self = fs::read_symlink("/proc/self/exe");
+    const run_result notes = run_command("readelf -n '" + self.string() + "'");
+    BOOST_TEST_REQUIRE(notes.status == 0, notes.output);
+    std::smatch id;
+    if (!std::regex_search(notes.output, id, std::regex("Build ID: ([0-9a-f]+)"))) {
+        // Linked without a build ID: the fingerprint is the hash of the executable.
+        std::ifstream in(self, std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        BOOST_TEST(cache::program_fingerprint() == cache::sha256_hex(bytes.str()));
+        return;
+    }
+    BOOST_TEST(cache::program_fingerprint() == "build " + id[1].str());
+}
+
 BOOST_AUTO_TEST_CASE(a_stored_result_comes_back_for_its_key_only)
 {
     const scratch s;

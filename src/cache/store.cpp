@@ -7,6 +7,12 @@
 
 #include <unistd.h>
 
+#if __has_include(<link.h>)
+#include <elf.h>
+#include <link.h>
+#define IMPACT_HAS_DL_ITERATE_PHDR 1
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -15,6 +21,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace impact::cache {
@@ -124,9 +131,62 @@ fs::path default_folder()
     return fs::path(home) / ".cache" / "impact";
 }
 
+namespace {
+
+#ifdef IMPACT_HAS_DL_ITERATE_PHDR
+// The main program's NT_GNU_BUILD_ID note, read from its loaded PT_NOTE segments: the
+// linker's hash of the whole executable, so another build has another one. Empty when
+// the program was linked without one (--build-id=none).
+int find_build_id(dl_phdr_info* info, std::size_t, void* out)
+{
+    auto& id = *static_cast<std::string*>(out);
+    // The first object is the main program; its notes are all that are wanted.
+    for (ElfW(Half) i = 0; i < info->dlpi_phnum; ++i) {
+        const ElfW(Phdr)& segment = info->dlpi_phdr[i];
+        if (segment.p_type != PT_NOTE)
+            continue;
+        const char* at = reinterpret_cast<const char*>(info->dlpi_addr + segment.p_vaddr);
+        const char* const end = at + segment.p_memsz;
+        const auto aligned = [](std::size_t n) { return (n + 3) & ~std::size_t{3}; };
+        while (at + sizeof(ElfW(Nhdr)) <= end) {
+            const auto* note = reinterpret_cast<const ElfW(Nhdr)*>(at);
+            const char* name = at + sizeof(ElfW(Nhdr));
+            const char* desc = name + aligned(note->n_namesz);
+            const char* next = desc + aligned(note->n_descsz);
+            if (next > end)
+                break;
+            if (note->n_type == NT_GNU_BUILD_ID && std::string_view(name, note->n_namesz) == std::string_view("GNU", 4)) {
+                id.assign(desc, note->n_descsz);
+                return 1;
+            }
+            at = next;
+        }
+    }
+    return 1;
+}
+#endif
+
+std::string build_id()
+{
+    std::string id;
+#ifdef IMPACT_HAS_DL_ITERATE_PHDR
+    dl_iterate_phdr(find_build_id, &id);
+#endif
+    std::string hex;
+    for (unsigned char c : id)
+        hex += fmt::format("{:02x}", c);
+    return hex;
+}
+
+} // namespace
+
 const std::string& program_fingerprint()
 {
     static const std::string fingerprint = [] {
+        // The linker's build ID when there is one: reading it costs nothing, where hashing
+        // the executable reads all of it (tens of megabytes with debugging information).
+        if (const std::string id = build_id(); !id.empty())
+            return "build " + id;
         const auto bytes = read_whole("/proc/self/exe");
         // Unreadable: a fingerprint of this process alone, so that nothing is reused.
         if (!bytes || bytes->empty())

@@ -28,8 +28,10 @@ namespace impact::cache {
 /// `~/.cache/impact` when XDG_CACHE_HOME is unset or not absolute.
 std::filesystem::path default_folder();
 
-/// The SHA-256 of the running executable: part of every key whose result Impact's own
-/// code computes, so that a rebuilt Impact never reuses what an older one measured.
+/// The running executable's identity: its linker build ID (a hash of the whole linked
+/// program), or the SHA-256 of the executable's file when it was linked without one. Part
+/// of every key whose result Impact's own code computes, so that a rebuilt Impact never
+/// reuses what an older one measured.
 const std::string& program_fingerprint();
 
 /// How often each kind of entry was found, computed, or rejected as damaged.
