@@ -178,6 +178,13 @@ BOOST_AUTO_TEST_CASE(a_sure_block_tests_differences_of_inputs_where_that_tests_f
     BOOST_TEST((cut.summed == std::vector<int>{0}));
     BOOST_TEST(compile::cut_exponent_bound(in.p, all, cut, twice) == 340);
     BOOST_TEST(compile::input_exponent_bound(in.p, all, twice) == 306);
+    // Within the cut's range at k = 100, (x - y)^2 s is 0 or within [2^-300, 2^300], and no
+    // narrower; the output x is added to has no bound (x is not tested).
+    BOOST_TEST(compile::cut_bounds_within(in.p, all, cut, 100, twice, {r}, -300, 300));
+    BOOST_TEST(!compile::cut_bounds_within(in.p, all, cut, 100, twice, {r}, -299, 300));
+    BOOST_TEST(!compile::cut_bounds_within(in.p, all, cut, 100, twice, {r}, -300, 299));
+    BOOST_TEST(!compile::cut_bounds_within(in.p, all, cut, 100, twice, {in.p.outputs[0]}, -2000, 2000));
+    BOOST_TEST(compile::cut_bounds_within(in.p, all, cut, 100, twice, {in.p.outputs[1]}, -200, 200));
 
     program_builder plain(2);
     plain.p.outputs.push_back(plain(opcode::add, 0, plain(opcode::mul, 1, 1)));

@@ -228,7 +228,10 @@ range_cut cut_for_range(const program& p, const std::vector<bool>& needed)
     return cut;
 }
 
-int cut_exponent_bound(const program& p, const std::vector<bool>& needed, const range_cut& cut, float_format format)
+namespace {
+
+// The roles of p's values under `cut`: its tested values, the other inputs untested.
+std::vector<role> cut_roles(const program& p, const std::vector<bool>& needed, const range_cut& cut)
 {
     std::vector<role> roles(p.code.size(), role::computed);
     for (std::size_t v = 0; v < p.code.size(); ++v)  // (an input p's outputs do not need bounds none of them)
@@ -236,7 +239,27 @@ int cut_exponent_bound(const program& p, const std::vector<bool>& needed, const 
             roles[v] = role::untested;
     for (int v : cut.tested)
         roles[static_cast<std::size_t>(v)] = role::tested;
+    return roles;
+}
+
+} // namespace
+
+int cut_exponent_bound(const program& p, const std::vector<bool>& needed, const range_cut& cut, float_format format)
+{
+    const std::vector<role> roles = cut_roles(p, needed, cut);
     return largest_k(format, [&](long k) { return within(p, needed, k, format, roles); });
+}
+
+bool cut_bounds_within(const program& p, const std::vector<bool>& needed, const range_cut& cut, long k, float_format format, const std::vector<int>& values,
+                       long lo, long hi)
+{
+    std::vector<exponents> e;
+    if (!propagate(p, k, format.digits, e, cut_roles(p, needed, cut)))
+        return false;
+    return std::all_of(values.begin(), values.end(), [&](int v) {
+        const exponents& b = e.at(static_cast<std::size_t>(v));
+        return !b.summed && (b.zero || (b.lo >= lo && b.hi <= hi));
+    });
 }
 
 } // namespace impact::compile

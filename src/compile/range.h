@@ -63,4 +63,10 @@ range_cut cut_for_range(const program& p, const std::vector<bool>& needed);
 /// input reaches).
 int cut_exponent_bound(const program& p, const std::vector<bool>& needed, const range_cut& cut, float_format format);
 
+/// Whether, whenever every value of `cut` is 0 or of magnitude within [2^-k, 2^k], each of
+/// `values` is 0 or of magnitude within [2^lo, 2^hi], bounded as cut_exponent_bound bounds
+/// them (false for a value reached from an untested input, which has no bound).
+bool cut_bounds_within(const program& p, const std::vector<bool>& needed, const range_cut& cut, long k, float_format format, const std::vector<int>& values,
+                       long lo, long hi);
+
 } // namespace impact::compile

@@ -112,12 +112,16 @@ std::vector<domain_test> guard_tests(const engine::kernel& k, const engine::kern
 
 // What must hold of every divisor of a group (early, or `late`), as tests; the scalar
 // kernel refuses a pair where one fails, the batch loop divides by 1 instead.
-std::vector<std::string> divisors_in_range(const cxx_code& code, bool late)
+std::vector<std::string> divisors_in_range(const cxx_code& code, bool late, bool known)
 {
     if (code.divides_early)
         throw std::logic_error("a kernel with a status divides before all its divisors are known");
     std::vector<std::string> tests;
     for (const std::string& d : late ? code.late_divisors : code.divisors) {
+        if (known) {
+            tests.push_back(fmt::format("({} != Real(0))", d));
+            continue;
+        }
         tests.push_back(fmt::format("(std::fabs({}) >= detail::smallest_divisor<Real>)", d));
         tests.push_back(fmt::format("(std::fabs({}) <= std::numeric_limits<Real>::max())", d));
     }

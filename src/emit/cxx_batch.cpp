@@ -180,7 +180,10 @@ void print_settle(std::string& out, const engine::kernel& k, const std::string& 
 // blocks, doubling while it keeps leaving them; the results are the same either way. The 2D
 // accurate batch in cache (AVX-512), against the loop before sure blocks: ordinary pairs 0.86
 // of its time; a fixed sphere or a velocity of 1e-13 in every block 1.01 (1.17 with the sure
-// block tried on each), in one block of 16 0.92.
+// block tried on each), in one block of 16 0.92. The sure block tried in a loop of its own,
+// over the blocks from b while it resolves them (AMD EPYC Zen 5, 3 Dec 2026): the fast 2D
+// batch in cache 0.37 of the plain loop against 0.36 (AVX-512) and 0.31 against 0.30 (AVX2),
+// the accurate 0.17 against 0.22 and 0.13 against 0.16; not taken.
 constexpr const char* sure_state = "    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next\n";
 
 std::string sure_or_whole(const std::string& loop, const std::string& arguments, const std::string& whole)
@@ -483,16 +486,17 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     // computed, in `usable_late`, which is `usable` from there on.
     const bool late = !code.late_divisors.empty();
     const std::string usable = late ? "usable_late" : "usable";
-    const auto declare_usable = [&](std::string& into, std::size_t known) {
+    // `bounded`: every divisor not 0 known to be in range (a sure block's).
+    const auto declare_usable = [&](std::string& into, std::size_t known, bool bounded) {
         if (known == code.divisors_known) {
             std::vector<std::string> in_range{"resolved"};
-            for (const std::string& test : divisors_in_range(code))
+            for (const std::string& test : divisors_in_range(code, false, bounded))
                 in_range.push_back(test);
             into += fmt::format("        const std::int64_t usable = {};\n", fmt::join(in_range, " & "));
         }
         if (late && known == code.late_divisors_known)
             into += fmt::format("        const std::int64_t usable_late = usable & {};\n",
-                                fmt::join(divisors_in_range(code, true), " & "));
+                                fmt::join(divisors_in_range(code, true, bounded), " & "));
     };
     // The inputs read, the divisors' tests and the statements, as the loop and the sure loop print them.
     const auto print_reads = [&](std::string& into) {
@@ -500,18 +504,18 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             if (read[in])
                 into += fmt::format("        const Real {0} = {0}_[i];\n", inputs[in].name);
     };
-    const auto print_arithmetic = [&](std::string& into) {
+    const auto print_arithmetic = [&](std::string& into, bool bounded) {
         print_reads(into);
         if (with_status)
-            declare_usable(into, 0);
+            declare_usable(into, 0, bounded);
         for (std::size_t s = 0; s < code.statements.size(); ++s) {
             if (for_outputs[code.statement_values[s]])
                 into += "        " + code.statements[s] + "\n";
             if (with_status)
-                declare_usable(into, s + 1);
+                declare_usable(into, s + 1, bounded);
         }
     };
-    print_arithmetic(out);
+    print_arithmetic(out, false);
     std::vector<std::pair<std::string, std::string>> writes;  // target, value
     std::size_t value = 0;
     for (const engine::kernel_output& o : k.outputs) {
@@ -638,7 +642,21 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                        (sure_conditions.find("admitted") != std::string::npos ? "            const std::int64_t admitted = 1;\n" : "") +
                        sure_conditions + "        }\n";
         written += "        const std::int64_t resolved = outcome == status::ok;\n";
-        print_arithmetic(written);
+        // A divisor is tested only for 0 where, in every format the sure block runs in, the
+        // range bounds each one not 0 within [detail::smallest_divisor, max] (the loop's test
+        // of its magnitude, two comparisons, then decides as this one does): the 2D batch in
+        // cache (AMD EPYC Zen 5, 3 Dec 2026), fast, 0.303 of the plain loop from 0.293 on AVX2,
+        // 0.362 from 0.346 on AVX-512; accurate 0.160 from 0.156 and 0.222 from 0.213.
+        std::vector<int> divisors = code.divisor_values;
+        divisors.insert(divisors.end(), code.late_divisor_values.begin(), code.late_divisor_values.end());
+        bool bounded = true;
+        for (std::size_t f = 0; f < std::size(batch_formats); ++f) {
+            const compile::float_format& format = batch_formats[f];
+            if (sure_ks[f] >= 0 && 2 * sure_ks[f] < format.max_exponent)
+                bounded = bounded && compile::cut_bounds_within(arithmetic, for_outputs, cut, sure_ks[f], format, divisors,
+                                                                format.min_exponent - 2 + format.digits, format.max_exponent - 1);
+        }
+        print_arithmetic(written, bounded);
         for (const auto& [target, result] : writes)
             written += fmt::format("        const Real {}_out = {};\n", target, result);
         // Within the range no value the arithmetic computes overflows (range_cut bounds every
@@ -670,6 +688,10 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // against one pass that kept the results in arrays of the block until all were tested,
         // and left a block with a divisor out of range to the loop, the fast 2D block ran
         // 0.28 of the plain loop in cache on AVX2, from 0.23, and alike on AVX-512 (0.32, 0.34).
+        // One pass again (3 Dec 2026, AMD EPYC Zen 5), the results in the block's arrays and
+        // copied after the test: inlined in the block loop, GCC stored each lane of them apart,
+        // and the fast 2D batch ran 0.26 of the plain loop on AVX2 against 0.29 (0.35 alike on
+        // AVX-512); alone in a loop of sure blocks it ran 0.44 against 0.38 there.
         out += fmt::format(
             "\n// A block of 8 pairs resolved at once (true) where every pair's values are in range\n"
             "// ({0}_sure_k) and admitted by the domains: nothing then underflows, no sphere is fixed,\n"

@@ -56,7 +56,9 @@ inline constexpr const char* underflow = "underflow";
 /// What must hold of every divisor of a group (`late`: those that need a division, see
 /// cxx_code), as tests; the scalar kernel refuses a pair where one fails, the batch loop
 /// divides by 1 instead.
-std::vector<std::string> divisors_in_range(const cxx_code& code, bool late = false);
+/// `known`: where every divisor not 0 is known to be in range (a sure block's, whose range
+/// bounds them), the tests are that none is 0.
+std::vector<std::string> divisors_in_range(const cxx_code& code, bool late = false, bool known = false);
 /// A guard's condition (the value compared with 0), written as the test that fails.
 std::string condition_failure(const std::string& value, const engine::kernel_guard& g);
 

@@ -200,10 +200,14 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
                 if (p.code[o].op != opcode::constant)
                     code.arguments.push_back(text[o]);
     }
-    for (int d : groups.early)
+    for (int d : groups.early) {
         code.divisors.push_back(text[d]);
-    for (int d : groups.late)
+        code.divisor_values.push_back(d);
+    }
+    for (int d : groups.late) {
         code.late_divisors.push_back(text[d]);
+        code.late_divisor_values.push_back(d);
+    }
     code.divides_early = compile::divides_early(p);
     const auto known_after = [&](int last) {
         std::size_t s = 0;

@@ -40,8 +40,10 @@ struct cxx_code {
     std::vector<int> statement_values;   ///< the value each statement computes
     std::vector<std::string> outputs;
     std::vector<std::string> divisors;
+    std::vector<int> divisor_values;       ///< the value of p each of `divisors` is
     std::size_t divisors_known = 0;
     std::vector<std::string> late_divisors;
+    std::vector<int> late_divisor_values;  ///< the value of p each of `late_divisors` is
     std::size_t late_divisors_known = 0;
     bool divides_early = false;
     std::vector<std::string> underflows;

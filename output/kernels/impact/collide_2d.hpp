@@ -648,7 +648,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
         const Real t25 = t1 - (t4 - t24) + (t3 - t24) + (std::fma(t13, t0, std::fma(t0, t13, std::fma(t0, t0, -t1))) + std::fma(t16, t2, std::fma(t2, t16, std::fma(t2, t2, -t3))));
         const Real t26 = t4 + t25;
         const Real t27 = t22 * t26;
-        const std::int64_t usable = resolved & (std::fabs(t27) >= detail::smallest_divisor<Real>) & (std::fabs(t27) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t27 != Real(0));
         const Real t28 = t21 / detail::blend(usable, t27, Real(1));
         const Real t29 = -t28;
         const Real t30 = t28 + std::fma(t29, std::fma(M - (t22 - t23) + (m - t23), t26, std::fma(t22, t25 - (t26 - t4), std::fma(t22, t26, -t27))), std::fma(t29, t27, t21) + std::fma(Real(1) - (t10 - t11) + (eps - t11), t20, std::fma(t10, t19 - (t20 - t9), std::fma(t10, t20, -t21)))) / detail::blend(usable, t27, Real(1));
@@ -1229,7 +1229,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
         const Real t10 = t8 * t9;
         const Real t11 = M + m;
         const Real t12 = t11 * t4;
-        const std::int64_t usable = resolved & (std::fabs(t12) >= detail::smallest_divisor<Real>) & (std::fabs(t12) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t12 != Real(0));
         const Real t13 = t10 / detail::blend(usable, t12, Real(1));
         const Real t14 = t13 * m;
         const Real t15 = t14 * t0;

@@ -819,7 +819,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
         const Real t39 = t37 - Real(1);
         const Real t40 = M + m;
         const Real t41 = t40 * t19;
-        const std::int64_t usable = resolved & (std::fabs(t41) >= detail::smallest_divisor<Real>) & (std::fabs(t41) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t41 != Real(0));
         const Real t42 = t38 / detail::blend(usable, t41, Real(1));
         const Real t43 = t40 - M;
         const Real t44 = -t42;
@@ -1501,7 +1501,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
         const Real t14 = t11 * t13;
         const Real t15 = M + m;
         const Real t16 = t15 * t6;
-        const std::int64_t usable = resolved & (std::fabs(t16) >= detail::smallest_divisor<Real>) & (std::fabs(t16) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t16 != Real(0));
         const Real t17 = t14 / detail::blend(usable, t16, Real(1));
         const Real t18 = t17 * m;
         const Real t19 = t18 * t0;

@@ -310,7 +310,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT
         const Real t12 = t2 - t0;
         const Real t13 = t0 - (t2 - t12) + (t1 - t12) + (std::fma(N_x, N_x, -t0) + std::fma(N_y, N_y, -t1));
         const Real t14 = t2 + t13;
-        const std::int64_t usable = resolved & (std::fabs(t14) >= detail::smallest_divisor<Real>) & (std::fabs(t14) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t14 != Real(0));
         const Real t15 = t11 / detail::blend(usable, t14, Real(1));
         const Real t16 = -t15;
         const Real t17 = t15 + std::fma(t16, t13 - (t14 - t2), std::fma(t16, t14, t11) + std::fma(Real(1) - (t6 - t7) + (eps - t7), t10, std::fma(t6, t9 - (t10 - t5), std::fma(t6, t10, -t11)))) / detail::blend(usable, t14, Real(1));
@@ -625,7 +625,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RES
         const Real t0 = N_x * N_x;
         const Real t1 = N_y * N_y;
         const Real t2 = t0 + t1;
-        const std::int64_t usable = resolved & (std::fabs(t2) >= detail::smallest_divisor<Real>) & (std::fabs(t2) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t2 != Real(0));
         const Real t3 = N_x * v_x;
         const Real t4 = Real(1) + eps;
         const Real t5 = std::fma(N_y, v_y, t3);

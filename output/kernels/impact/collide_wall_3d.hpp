@@ -368,7 +368,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT
         const Real t22 = t21 - t20;
         const Real t23 = t20 - (t21 - t22) + (t3 - t22) + (t19 - (t20 - t2) + std::fma(N_z, N_z, -t3));
         const Real t24 = t21 + t23;
-        const std::int64_t usable = resolved & (std::fabs(t24) >= detail::smallest_divisor<Real>) & (std::fabs(t24) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t24 != Real(0));
         const Real t25 = t17 / detail::blend(usable, t24, Real(1));
         const Real t26 = -t25;
         const Real t27 = t25 + std::fma(t26, t23 - (t24 - t21), std::fma(t26, t24, t17) + std::fma(Real(1) - (t8 - t9) + (eps - t9), t16, std::fma(t8, t15 - (t16 - t13), std::fma(t8, t16, -t17)))) / detail::blend(usable, t24, Real(1));
@@ -715,7 +715,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RES
         const Real t1 = N_y * N_y;
         const Real t2 = N_z * N_z;
         const Real t3 = t0 + t1 + t2;
-        const std::int64_t usable = resolved & (std::fabs(t3) >= detail::smallest_divisor<Real>) & (std::fabs(t3) <= std::numeric_limits<Real>::max());
+        const std::int64_t usable = resolved & (t3 != Real(0));
         const Real t4 = N_x * v_x;
         const Real t5 = Real(1) + eps;
         const Real t6 = std::fma(N_y, v_y, t4);
