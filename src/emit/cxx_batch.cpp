@@ -691,7 +691,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // One pass again (3 Dec 2026, AMD EPYC Zen 5), the results in the block's arrays and
         // copied after the test: inlined in the block loop, GCC stored each lane of them apart,
         // and the fast 2D batch ran 0.26 of the plain loop on AVX2 against 0.29 (0.35 alike on
-        // AVX-512); alone in a loop of sure blocks it ran 0.44 against 0.38 there.
+        // AVX-512); copies of both alone in a loop of blocks, compiled outside
+        // IMPACT_PRECISE_BEGIN (products fused), ran 0.44 against 0.38 there.
         out += fmt::format(
             "\n// A block of 8 pairs resolved at once (true) where every pair's values are in range\n"
             "// ({0}_sure_k) and admitted by the domains: nothing then underflows, no sphere is fixed,\n"
