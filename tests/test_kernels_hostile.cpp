@@ -1628,7 +1628,8 @@ void check_blocks_with_one_hostile_lane(failures& fail, Form... form)
 {
     using limits = std::numeric_limits<Real>;
     const Real hostile[] = {limits::quiet_NaN(), limits::infinity(), -limits::infinity(), limits::denorm_min(),
-                            limits::min(), limits::max(), Real(0), -Real(0), std::ldexp(Real(1), limits::min_exponent / 2)};
+                            limits::min(), limits::max(), Real(0), -Real(0), std::ldexp(Real(1), limits::min_exponent / 2),
+                            -Real(1)};
     std::vector<pair_nd<Real, N>> pairs(24);
     for (std::size_t i = 0; i < pairs.size(); ++i)
         pairs[i] = ordinary_pair<Real, N>(i);
@@ -1753,6 +1754,43 @@ BOOST_AUTO_TEST_CASE(the_sure_blocks_range_ends_where_the_loops_does)
     BOOST_TEST(resolved_with(highest / 2));
     BOOST_TEST(!resolved_with(std::nextafter(highest, 2 * highest)));
     BOOST_TEST(!resolved_with(std::numeric_limits<double>::infinity()));
+}
+
+// A mass not above 0 and an eps below 0 leave both sure blocks (where they test the range by
+// the bits, the masses' and eps's signs are tested by them: 0, -0 and negatives outside), an
+// eps of 0 or 1 and a mass at the range's ends do not; -0 for eps, which the domain admits,
+// is resolved by the block where it compares (and then as the scalar kernel resolves it) or
+// left to the loop where it reads bits.
+BOOST_AUTO_TEST_CASE(a_mass_not_above_0_or_an_eps_below_0_leaves_the_sure_blocks)
+{
+    const std::array<pair_nd<double, 2>, 8> pairs = ordinary_block();
+    const auto resolved_with = [&](auto change, auto... form) {
+        auto changed = pairs;
+        change(changed[3]);
+        const auto [taken, kept] = sure_block(changed, form...);
+        BOOST_TEST(taken != kept);
+        return taken;
+    };
+    const auto both = [&](auto change) {
+        const bool accurate = resolved_with(change), fast = resolved_with(change, impact::fast);
+        BOOST_TEST(accurate == fast);
+        return accurate;
+    };
+    const double tiny = std::ldexp(1.0, -impact::detail::collide_batch_2d_sure_k<double>);
+    for (const double mass : {0.0, -0.0, -1.0, -tiny, -std::numeric_limits<double>::infinity()}) {
+        BOOST_TEST(!both([&](pair_nd<double, 2>& p) { p.M = mass; }));
+        BOOST_TEST(!both([&](pair_nd<double, 2>& p) { p.m = mass; }));
+    }
+    for (const double eps : {-0.25, -tiny, -std::numeric_limits<double>::denorm_min()})
+        BOOST_TEST(!both([&](pair_nd<double, 2>& p) { p.eps = eps; }));
+    both([](pair_nd<double, 2>& p) { p.eps = -0.0; });
+    BOOST_TEST(both([](pair_nd<double, 2>& p) { p.eps = 0.0; }));
+    BOOST_TEST(both([](pair_nd<double, 2>& p) { p.eps = 1.0; }));
+    BOOST_TEST(!both([](pair_nd<double, 2>& p) { p.eps = std::nextafter(1.0, 2.0); }));
+    BOOST_TEST(both([&](pair_nd<double, 2>& p) { p.M = tiny; }));
+    BOOST_TEST(!resolved_with([&](pair_nd<double, 2>& p) { p.M = std::nextafter(tiny, 0.0); }));
+    BOOST_TEST(!resolved_with([&](pair_nd<double, 2>& p) { p.m = std::nextafter(tiny, 0.0); }));
+    BOOST_TEST(both([&](pair_nd<double, 2>& p) { p.m = std::ldexp(1.0, impact::detail::collide_batch_2d_sure_k<double> - 1); }));
 }
 
 // The fast block tests the masses, eps, and the differences of centres and of velocities

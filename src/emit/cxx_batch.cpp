@@ -609,30 +609,55 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // with NaN is not reliably false (-ffinite-math-only), the values' finiteness is
         // tested too (detail::zero_if_finite), and the least magnitude taken without NaN
         // (detail::magnitude_or).
-        std::string tested = "        std::int64_t refused = 0;\n";
-        for (const std::string& refusal : batch_failures(tests))
-            tested += fmt::format("        refused |= {};\n", refusal);
-        print_reads(tested);
-        std::vector<std::string> values, low, squares;
+        // A tested input that a domain wants above 0 (a mass) or not below it (eps) is tested
+        // for its sign by its bits too, where the range test reads bits (detail::positive_bits,
+        // detail::non_negative_bits): that domain's comparison is then the bits test's, and
+        // made as before elsewhere. The 2D batch in cache (AVX-512, AMD EPYC Zen 5, 3 Dec
+        // 2026): fast 0.375 of the plain loop, from 0.362; accurate 0.222 alike (with the
+        // comparisons made part of `doubtful` on AVX2 too, its fast loop lost 0.303 -> 0.295).
+        std::vector<std::string> failures = batch_failures(tests), folded, values, bits, low, squares;
         for (int v : cut.tested) {
             const compile::instruction& in = arithmetic.code[static_cast<std::size_t>(v)];
             const auto name = [&](int input) { return plain_names.at(static_cast<std::size_t>(arithmetic.code[static_cast<std::size_t>(input)].input)); };
             values.push_back(in.op == compile::opcode::input ? name(v)
                                                              : fmt::format("({} {} {})", name(in.a), in.op == compile::opcode::add ? '+' : '-', name(in.b)));
+            std::string as_bits = fmt::format("detail::any_sign_bits({})", values.back());
+            if (in.op == compile::opcode::input)
+                for (const auto& [op, form] : {std::pair{">", "positive"}, std::pair{">=", "non_negative"}}) {
+                    const auto at = std::find(failures.begin(), failures.end(), fmt::format("!({}_[i] {} Real(0))", name(v), op));
+                    if (at == failures.end())
+                        continue;
+                    folded.push_back(*at);
+                    failures.erase(at);
+                    as_bits = fmt::format("detail::{}_bits({})", form, values.back());
+                    break;
+                }
+            bits.push_back(as_bits);
             low.push_back(fmt::format("detail::magnitude_or({}, lowest)", values.back()));
             squares.push_back(fmt::format("{0} * {0}", values.back()));
         }
+        std::string tested = "        std::int64_t refused = 0;\n";
+        for (const std::string& refusal : failures)
+            tested += fmt::format("        refused |= {};\n", refusal);
+        if (!folded.empty()) {
+            tested += "        if constexpr (!detail::range_by_bits<Real>) {\n";
+            for (const std::string& refusal : folded)
+                tested += fmt::format("            refused |= {};\n", refusal);
+            tested += "        }\n";
+        }
+        print_reads(tested);
         tested += fmt::format("        constexpr Real lowest = detail::power_of_2<Real>(-{0}_sure_k<Real>), highest = detail::power_of_2<Real>({0}_sure_k<Real>);\n"
                               "        std::int64_t doubtful;\n"
-                              "        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))\n"
-                              "            doubtful = detail::outside_by_bits(lowest, highest, {1});\n"
+                              "        if constexpr (detail::range_by_bits<Real>)\n"
+                              "            doubtful = detail::outside_by_bits(lowest, highest, {5});\n"
                               "        else if constexpr (detail::has_magnitude_bits<Real>)\n"
                               "            doubtful = detail::below_range(lowest, {1}) | !detail::at_most({2}, highest * highest);\n"
                               "        else\n"
                               "            doubtful = !(detail::at_least({3}, lowest) & detail::at_most({2}, highest * highest)) |\n"
                               "                       (!detail::nan_compares_false && !{4});\n"
                               "        left |= refused | doubtful;\n",
-                              loop, fmt::join(values, ", "), balanced_sum(squares), balanced("detail::least", low), all_finite(values));
+                              loop, fmt::join(values, ", "), balanced_sum(squares), balanced("detail::least", low), all_finite(values),
+                              fmt::join(bits, ", "));
         // The second computes the pairs as the loop does, the guards' values in braces of their
         // own (the arithmetic's names follow); a condition that divides does so by 1 where the
         // domains refuse (`admitted`, as in the loop), and here every pair is admitted.

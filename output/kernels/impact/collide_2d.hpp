@@ -561,10 +561,12 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
         refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            refused |= !(eps_[i] >= Real(0));
+        }
         const Real M = M_[i];
         const Real m = m_[i];
         const Real C_Mx = C_Mx_[i];
@@ -578,8 +580,8 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
         const Real eps = eps_[i];
         constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_sure_k<Real>);
         std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps);
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::positive_bits(M), detail::positive_bits(m), detail::any_sign_bits(C_Mx), detail::any_sign_bits(C_My), detail::any_sign_bits(C_mx), detail::any_sign_bits(C_my), detail::any_sign_bits(v_Mx), detail::any_sign_bits(v_My), detail::any_sign_bits(v_mx), detail::any_sign_bits(v_my), detail::non_negative_bits(eps));
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, M, m, C_Mx, C_My, C_mx, C_my, v_Mx, v_My, v_mx, v_my, eps) | !detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_mx * C_mx + C_my * C_my) + (v_Mx * v_Mx + v_My * v_My))) + ((v_mx * v_mx + v_my * v_my) + eps * eps)), highest * highest);
         else
@@ -1162,10 +1164,12 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
         refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            refused |= !(eps_[i] >= Real(0));
+        }
         const Real M = M_[i];
         const Real m = m_[i];
         const Real C_Mx = C_Mx_[i];
@@ -1179,8 +1183,8 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
         const Real eps = eps_[i];
         constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_2d_fast_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_2d_fast_sure_k<Real>);
         std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (v_Mx - v_mx), (v_My - v_my));
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::positive_bits(M), detail::positive_bits(m), detail::non_negative_bits(eps), detail::any_sign_bits((C_Mx - C_mx)), detail::any_sign_bits((C_My - C_my)), detail::any_sign_bits((v_Mx - v_mx)), detail::any_sign_bits((v_My - v_my)));
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (v_Mx - v_mx), (v_My - v_my)) | !detail::at_most((((M * M + m * m) + (eps * eps + (C_Mx - C_mx) * (C_Mx - C_mx))) + (((C_My - C_my) * (C_My - C_my) + (v_Mx - v_mx) * (v_Mx - v_mx)) + (v_My - v_my) * (v_My - v_my))), highest * highest);
         else

@@ -706,10 +706,12 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
         refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            refused |= !(eps_[i] >= Real(0));
+        }
         const Real M = M_[i];
         const Real m = m_[i];
         const Real C_Mx = C_Mx_[i];
@@ -727,8 +729,8 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
         const Real eps = eps_[i];
         constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_sure_k<Real>);
         std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, C_Mx, C_My, C_Mz, C_mx, C_my, C_mz, v_Mx, v_My, v_Mz, v_mx, v_my, v_mz, eps);
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::positive_bits(M), detail::positive_bits(m), detail::any_sign_bits(C_Mx), detail::any_sign_bits(C_My), detail::any_sign_bits(C_Mz), detail::any_sign_bits(C_mx), detail::any_sign_bits(C_my), detail::any_sign_bits(C_mz), detail::any_sign_bits(v_Mx), detail::any_sign_bits(v_My), detail::any_sign_bits(v_Mz), detail::any_sign_bits(v_mx), detail::any_sign_bits(v_my), detail::any_sign_bits(v_mz), detail::non_negative_bits(eps));
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, M, m, C_Mx, C_My, C_Mz, C_mx, C_my, C_mz, v_Mx, v_My, v_Mz, v_mx, v_my, v_mz, eps) | !detail::at_most(((((M * M + m * m) + (C_Mx * C_Mx + C_My * C_My)) + ((C_Mz * C_Mz + C_mx * C_mx) + (C_my * C_my + C_mz * C_mz))) + (((v_Mx * v_Mx + v_My * v_My) + (v_Mz * v_Mz + v_mx * v_mx)) + ((v_my * v_my + v_mz * v_mz) + eps * eps))), highest * highest);
         else
@@ -1420,10 +1422,12 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
         refused |= !(eps_[i] <= Real(1));
-        refused |= !(M_[i] > Real(0));
-        refused |= !(m_[i] > Real(0));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            refused |= !(eps_[i] >= Real(0));
+        }
         const Real M = M_[i];
         const Real m = m_[i];
         const Real C_Mx = C_Mx_[i];
@@ -1441,8 +1445,8 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
         const Real eps = eps_[i];
         constexpr Real lowest = detail::power_of_2<Real>(-collide_batch_3d_fast_sure_k<Real>), highest = detail::power_of_2<Real>(collide_batch_3d_fast_sure_k<Real>);
         std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (C_Mz - C_mz), (v_Mx - v_mx), (v_My - v_my), (v_Mz - v_mz));
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::positive_bits(M), detail::positive_bits(m), detail::non_negative_bits(eps), detail::any_sign_bits((C_Mx - C_mx)), detail::any_sign_bits((C_My - C_my)), detail::any_sign_bits((C_Mz - C_mz)), detail::any_sign_bits((v_Mx - v_mx)), detail::any_sign_bits((v_My - v_my)), detail::any_sign_bits((v_Mz - v_mz)));
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, M, m, eps, (C_Mx - C_mx), (C_My - C_my), (C_Mz - C_mz), (v_Mx - v_mx), (v_My - v_my), (v_Mz - v_mz)) | !detail::at_most(((((M * M + m * m) + (eps * eps + (C_Mx - C_mx) * (C_Mx - C_mx))) + (((C_My - C_my) * (C_My - C_my) + (C_Mz - C_mz) * (C_Mz - C_mz)) + ((v_Mx - v_mx) * (v_Mx - v_mx) + (v_My - v_my) * (v_My - v_my)))) + (v_Mz - v_mz) * (v_Mz - v_mz)), highest * highest);
         else

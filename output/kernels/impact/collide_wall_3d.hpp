@@ -294,9 +294,11 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
         refused |= !(eps_[i] <= Real(1));
         refused |= !(((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(P_z_[i], C_x_[i])) + detail::zero_if_finite(C_y_[i], C_z_[i])) == Real(0));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(eps_[i] >= Real(0));
+        }
         const Real N_x = N_x_[i];
         const Real N_y = N_y_[i];
         const Real N_z = N_z_[i];
@@ -306,8 +308,8 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT
         const Real eps = eps_[i];
         constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_3d_sure_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_3d_sure_k<Real>);
         std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, N_x, N_y, N_z, v_x, v_y, v_z, eps);
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::any_sign_bits(N_x), detail::any_sign_bits(N_y), detail::any_sign_bits(N_z), detail::any_sign_bits(v_x), detail::any_sign_bits(v_y), detail::any_sign_bits(v_z), detail::non_negative_bits(eps));
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, N_x, N_y, N_z, v_x, v_y, v_z, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (N_z * N_z + v_x * v_x)) + ((v_y * v_y + v_z * v_z) + eps * eps)), highest * highest);
         else
@@ -668,9 +670,11 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RES
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
-        refused |= !(eps_[i] >= Real(0));
         refused |= !(eps_[i] <= Real(1));
         refused |= !(((detail::zero_if_finite(P_x_[i], P_y_[i]) + detail::zero_if_finite(P_z_[i], C_x_[i])) + detail::zero_if_finite(C_y_[i], C_z_[i])) == Real(0));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(eps_[i] >= Real(0));
+        }
         const Real N_x = N_x_[i];
         const Real N_y = N_y_[i];
         const Real N_z = N_z_[i];
@@ -680,8 +684,8 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RES
         const Real eps = eps_[i];
         constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_3d_fast_sure_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_3d_fast_sure_k<Real>);
         std::int64_t doubtful;
-        if constexpr (detail::has_magnitude_bits<Real> && (detail::integer_minima || !detail::nan_compares_false))
-            doubtful = detail::outside_by_bits(lowest, highest, N_x, N_y, N_z, v_x, v_y, v_z, eps);
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::any_sign_bits(N_x), detail::any_sign_bits(N_y), detail::any_sign_bits(N_z), detail::any_sign_bits(v_x), detail::any_sign_bits(v_y), detail::any_sign_bits(v_z), detail::non_negative_bits(eps));
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, N_x, N_y, N_z, v_x, v_y, v_z, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (N_z * N_z + v_x * v_x)) + ((v_y * v_y + v_z * v_z) + eps * eps)), highest * highest);
         else

@@ -338,6 +338,9 @@ inline constexpr bool integer_minima = true;
 #else
 inline constexpr bool integer_minima = false;
 #endif
+/// Whether a sure block tests its range by the bits alone (outside_by_bits).
+template <class Real>
+constexpr bool range_by_bits = has_magnitude_bits<Real> && (integer_minima || !nan_compares_false);
 template <class Real>
 using magnitude_bits_t = std::conditional_t<sizeof(Real) == sizeof(std::uint64_t), std::uint64_t, std::uint32_t>;
 
@@ -350,15 +353,51 @@ IMPACT_ALWAYS_INLINE magnitude_bits_t<Real> magnitude_bits(Real x) noexcept
     return a & (~magnitude_bits_t<Real>(0) >> 1);
 }
 
-/// 1 where an x is neither 0 nor within [lowest, highest], by the bits of |x| (0 less 1
-/// is the largest of them; NaN and the infinities are above highest).
+/// A value as outside_by_bits tests it: `low` is compared with the bits of the least
+/// magnitude admitted less 1, `high` with those of the largest.
+template <class Real>
+struct range_bits {
+    magnitude_bits_t<Real> low, high;
+};
+
+/// x of either sign, or 0: the bits of |x| (0 less 1 is the largest of them).
+template <class Real>
+IMPACT_ALWAYS_INLINE range_bits<Real> any_sign_bits(Real x) noexcept
+{
+    const magnitude_bits_t<Real> a = magnitude_bits(x);
+    return {magnitude_bits_t<Real>(a - 1), a};
+}
+
+/// x above 0: x's own bits, so that -0 and every negative number (the sign bit set)
+/// are above the range, and 0 too (its bits less 1, the largest, taken as `high`).
+template <class Real>
+IMPACT_ALWAYS_INLINE range_bits<Real> positive_bits(Real x) noexcept
+{
+    magnitude_bits_t<Real> a;
+    std::memcpy(&a, &x, sizeof a);
+    const magnitude_bits_t<Real> b = a - 1;
+    return {b, a < b ? b : a};
+}
+
+/// x not below 0: 0 admitted as any_sign_bits admits it, -0 and every negative number
+/// above the range (-0 is left to the loop, which admits it).
+template <class Real>
+IMPACT_ALWAYS_INLINE range_bits<Real> non_negative_bits(Real x) noexcept
+{
+    magnitude_bits_t<Real> a;
+    std::memcpy(&a, &x, sizeof a);
+    return {magnitude_bits_t<Real>(a - 1), a};
+}
+
+/// 1 where an x is outside [lowest, highest] as its range_bits say (NaN and the
+/// infinities are above highest).
 template <class Real, class... X>
 IMPACT_ALWAYS_INLINE std::int64_t outside_by_bits(Real lowest, Real highest, X... x) noexcept
 {
     using bits = magnitude_bits_t<Real>;
     bits low = ~bits(0), high = 0;
-    ((low = bits(magnitude_bits(x) - 1) < low ? bits(magnitude_bits(x) - 1) : low), ...);
-    ((high = magnitude_bits(x) < high ? high : magnitude_bits(x)), ...);
+    ((low = x.low < low ? x.low : low), ...);
+    ((high = x.high < high ? high : x.high), ...);
     return (low < bits(magnitude_bits(lowest) - 1)) | (high > magnitude_bits(highest));
 }
 
