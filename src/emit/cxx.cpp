@@ -84,18 +84,19 @@ std::vector<domain_test> domain_tests(const engine::quantity& q, const std::stri
     switch (q.range.what) {
     case engine::domain::kind::positive:
         if (q.range.infinity_included)
-            return {{fmt::format("!({} > Real(0))", value), {}}};
-        return {{fmt::format("!({} > Real(0))", value), {}}, {{}, value}};
+            return {{fmt::format("!({} > Real(0))", value), {}, value, true}};
+        return {{fmt::format("!({} > Real(0))", value), {}, value, true}, {{}, value, {}, false}};
     case engine::domain::kind::nonnegative:
         if (q.range.infinity_included)
-            return {{fmt::format("!({} >= Real(0))", value), {}}};
-        return {{fmt::format("!({} >= Real(0))", value), {}}, {{}, value}};
+            return {{fmt::format("!({} >= Real(0))", value), {}, value, false}};
+        return {{fmt::format("!({} >= Real(0))", value), {}, value, false}, {{}, value, {}, false}};
     case engine::domain::kind::interval:
-        return {{fmt::format("!({} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower), {}},
-                {fmt::format("!({} {} Real({}))", value, q.range.upper_open ? "<" : "<=", q.range.upper), {}}};
+        return {{fmt::format("!({} {} Real({}))", value, q.range.lower_open ? ">" : ">=", q.range.lower), {},
+                 q.range.lower == 0 ? value : std::string(), q.range.lower_open},
+                {fmt::format("!({} {} Real({}))", value, q.range.upper_open ? "<" : "<=", q.range.upper), {}, {}, false}};
     case engine::domain::kind::real: break;
     }
-    return {{{}, value}};
+    return {{{}, value, {}, false}};
 }
 
 // The tests of a guard on the domains of its parameters, in order.

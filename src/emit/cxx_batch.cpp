@@ -615,29 +615,27 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // made as before elsewhere. The 2D batch in cache (AVX-512, AMD EPYC Zen 5, 3 Dec
         // 2026): fast 0.375 of the plain loop, from 0.362; accurate 0.222 alike (with the
         // comparisons made part of `doubtful` on AVX2 too, its fast loop lost 0.303 -> 0.295).
-        std::vector<std::string> failures = batch_failures(tests), folded, values, bits, low, squares;
+        std::vector<std::string> folded, values, bits, low, squares;
         for (int v : cut.tested) {
             const compile::instruction& in = arithmetic.code[static_cast<std::size_t>(v)];
             const auto name = [&](int input) { return plain_names.at(static_cast<std::size_t>(arithmetic.code[static_cast<std::size_t>(input)].input)); };
             values.push_back(in.op == compile::opcode::input ? name(v)
                                                              : fmt::format("({} {} {})", name(in.a), in.op == compile::opcode::add ? '+' : '-', name(in.b)));
             std::string as_bits = fmt::format("detail::any_sign_bits({})", values.back());
-            if (in.op == compile::opcode::input)
-                for (const auto& [op, form] : {std::pair{">", "positive"}, std::pair{">=", "non_negative"}}) {
-                    const auto at = std::find(failures.begin(), failures.end(), fmt::format("!({}_[i] {} Real(0))", name(v), op));
-                    if (at == failures.end())
-                        continue;
-                    folded.push_back(*at);
-                    failures.erase(at);
-                    as_bits = fmt::format("detail::{}_bits({})", form, values.back());
-                    break;
-                }
+            const auto sign = std::find_if(tests.begin(), tests.end(), [&](const domain_test& t) {
+                return in.op == compile::opcode::input && t.sign_of == name(v) + "_[i]";
+            });
+            if (sign != tests.end()) {
+                folded.push_back(sign->failure);
+                as_bits = fmt::format("detail::{}_bits({})", sign->positive ? "positive" : "non_negative", values.back());
+                tests.erase(sign);
+            }
             bits.push_back(as_bits);
             low.push_back(fmt::format("detail::magnitude_or({}, lowest)", values.back()));
             squares.push_back(fmt::format("{0} * {0}", values.back()));
         }
         std::string tested = "        std::int64_t refused = 0;\n";
-        for (const std::string& refusal : failures)
+        for (const std::string& refusal : batch_failures(tests))
             tested += fmt::format("        refused |= {};\n", refusal);
         if (!folded.empty()) {
             tested += "        if constexpr (!detail::range_by_bits<Real>) {\n";

@@ -34,6 +34,10 @@ std::string parameter_type(const engine::kernel_parameter& p);
 struct domain_test {
     std::string failure;  ///< e.g. "!(M > Real(0))"; empty for a finiteness test
     std::string finite;   ///< the value that must be finite
+    /// The value `failure` wants above 0 (`positive`) or not below it, when that is all it
+    /// tests: a sure block may test that sign by the value's bits instead.
+    std::string sign_of;
+    bool positive = false;
 };
 std::vector<domain_test> domain_tests(const engine::quantity& q, const std::string& value);
 /// The tests of a guard on the domains of its parameters, in order.
