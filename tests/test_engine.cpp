@@ -327,6 +327,49 @@ BOOST_AUTO_TEST_CASE(a_symmetry_check_compares_a_result_at_changed_inputs_with_i
     BOOST_TEST(engine::to_string(check_named(d, "not_invariant").outcome) == "failed");
 }
 
+BOOST_AUTO_TEST_CASE(a_value_put_into_a_claim_stays_in_the_domain_its_side_was_derived_for)
+{
+    // q = sqrt(x^2) is x for x positive; at x = -x it is x again, not -x, so a claim that
+    // puts -x in would prove q = -x from an identity that holds only for x > 0.
+    const std::string q = "[[symbol]]\nname = \"q\"\n[[step]]\ndefine = \"q\"\nas = \"sqrt(x^2)\"\n"
+                          "[[result]]\nname = \"q\"\n";
+    for (const std::string field : {"left_at", "at"}) {
+        const impact::error e = error_for(derivation_text(
+            q + "[[check]]\nname = \"c\"\nclaim = \"q = -x\"\n" + field + " = { x = \"-x\" }\n"));
+        BOOST_TEST(mentions(e, field + " gives x the value -x, which lies outside its domain positive (it is < 0)"),
+                   e.message());
+        BOOST_TEST(e.where().line == header_lines + 11);  // the line of `at` or `left_at`
+    }
+    // eps in [0, 1]: 1 - eps is in it, eps + 2 outside; y, of either sign, moves x where the
+    // claim then says it holds.
+    const engine::derivation moved_by_y =
+        derive_text(derivation_text(q + "[[check]]\nname = \"c\"\nclaim = \"q = y\"\nleft_at = { x = \"y\" }\n"));
+    const engine::check_result& where_y = check_named(moved_by_y, "c");
+    BOOST_TEST(where_y.statement == "q = y, where y >= 0");
+    BOOST_TEST(engine::to_string(where_y.outcome) == "proven");
+    BOOST_TEST(engine::to_string(check_named(derive_text(derivation_text(
+                                      q + "[[check]]\nname = \"c\"\nclaim = \"q = q\"\nleft_at = { eps = \"1 - eps\" }\n")),
+                                  "c")
+                          .outcome) == "proven");
+    BOOST_TEST(mentions(error_for(derivation_text(q + "[[check]]\nname = \"c\"\nclaim = \"q = q\"\n"
+                                                      "left_at = { eps = \"eps + 2\" }\n")),
+                        "subtracted from 1 it is < 0"));
+    // An assumption a definition's domain makes must hold at the moved inputs too: s = y - z
+    // declared positive, q = sqrt(s^2) = s; exchanging y and z makes s negative there.
+    const std::string s = "[[symbol]]\nname = \"s\"\ndefinition = \"y - z\"\ndomain = \"positive\"\n"
+                          "[[symbol]]\nname = \"w\"\n[[step]]\ndefine = \"w\"\nas = \"sqrt(s^2)\"\n"
+                          "[[result]]\nname = \"w\"\n";
+    const impact::error swapped = error_for(derivation_text(
+        s + "[[check]]\nname = \"c\"\nclaim = \"w < 0\"\nleft_at = { y = \"z\", z = \"y\" }\n"));
+    BOOST_TEST(mentions(swapped, "left_at moves the inputs to where s = -y+z, declared positive, does not hold"),
+               swapped.message());
+    // A move that keeps it (both shifted alike) is proven as before.
+    BOOST_TEST(engine::to_string(check_named(derive_text(derivation_text(s + "[[check]]\nname = \"c\"\nclaim = \"w = w\"\n"
+                                                                  "left_at = { y = \"y + x\", z = \"z + x\" }\n")),
+                                  "c")
+                          .outcome) == "proven");
+}
+
 BOOST_AUTO_TEST_CASE(an_inequality_is_proven_from_the_signs_of_its_factors_or_refuted)
 {
     const engine::derivation d = derive_text(derivation_text(

@@ -198,6 +198,107 @@ void check_special_value(const quantity& q, const GiNaC::ex& value, const source
                                        q.name, *number, q.name, q.range.to_string(), q.name));
 }
 
+namespace {
+
+// A bound of an interval as the file writes it (1/2, -3, 0.25), exactly.
+GiNaC::numeric exact_bound(const std::string& text)
+{
+    const auto slash = text.find('/');
+    if (slash != std::string::npos)
+        return exact_bound(text.substr(0, slash)) / exact_bound(text.substr(slash + 1));
+    const auto point = text.find('.');
+    if (point == std::string::npos)
+        return GiNaC::numeric(text.c_str());
+    const std::string digits = text.substr(0, point) + text.substr(point + 1);
+    return GiNaC::numeric(digits.c_str()) / GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(int(text.size() - point - 1)));
+}
+
+// Where `value` lies against the closure of `range` under `given`: shown inside (nothing),
+// proven outside (`outside`, with the sign that shows it), or neither (the sign unknown).
+struct placement {
+    bool outside = false;
+    std::string why;
+};
+std::optional<placement> not_shown_within(const domain& range, const GiNaC::ex& value, const assumptions& given)
+{
+    // `e` >= 0 shown (nothing), proven < 0, or unknown.
+    const auto short_of = [&](const GiNaC::ex& e, const std::string& as) -> std::optional<placement> {
+        sign_set sign;
+        try {
+            sign = prove_sign(e, given).sign;
+        } catch (const std::exception&) {
+        }
+        if (sign.is_nonnegative())
+            return std::nullopt;
+        return placement{!sign.positive && !sign.zero, fmt::format("{}{}", as, sign.describe())};
+    };
+    switch (range.what) {
+    case domain::kind::real:
+        return std::nullopt;
+    case domain::kind::positive:
+    case domain::kind::nonnegative:
+        return short_of(value, "it is ");
+    case domain::kind::interval:
+        if (auto low = short_of(value - exact_bound(range.lower_text), fmt::format("minus {} it is ", range.lower_text)))
+            return low;
+        return short_of(exact_bound(range.upper_text) - value, fmt::format("subtracted from {} it is ", range.upper_text));
+    }
+    return std::nullopt;
+}
+
+// `text` in the closure of `range`, as a condition: "u/g >= 0", "0 <= 1 - e <= 1".
+std::string within_closure(const domain& range, const std::string& text)
+{
+    if (range.what == domain::kind::interval)
+        return fmt::format("{} <= {} <= {}", range.lower_text, text, range.upper_text);
+    return fmt::format("{} >= 0", text);
+}
+
+} // namespace
+
+std::vector<std::string> check_moved_inputs(const symbol_table& symbols, const GiNaC::exmap& moved,
+                                            const assumptions& given, const moved_places& places,
+                                            std::string_view field)
+{
+    std::vector<std::string> conditions;
+    for (const auto& [symbol, value] : moved) {
+        const auto narrowed = given.domains.find(symbol);
+        const domain* range = narrowed != given.domains.end() ? &narrowed->second : symbols.domain_of(symbol);
+        if (!range || GiNaC::is_a<GiNaC::numeric>(value.evalf()))
+            continue;   // no domain, or a number: check_special_value's
+        const auto placed = not_shown_within(*range, value, given);
+        if (!placed)
+            continue;
+        const std::string name = symbols.text(symbol);
+        if (placed->outside)
+            throw error(places.at(symbol),
+                        fmt::format("{} gives {} the value {}, which lies outside its domain {} ({}): what is "
+                                    "derived for {} in {} says nothing of it there",
+                                    field, name, symbols.text(value), range->to_string(), placed->why, name,
+                                    range->to_string()));
+        conditions.push_back(within_closure(*range, symbols.text(value)));
+    }
+    for (const assumptions::assumed_sign& premise : given.assumed) {
+        bool touched = false;
+        for (const auto& [symbol, value] : moved)
+            touched = touched || premise.definition.has(symbol);
+        if (!touched)
+            continue;
+        const GiNaC::ex at = premise.definition.subs(moved, GiNaC::subs_options::no_pattern);
+        const auto placed = not_shown_within(premise.range, at, given);
+        if (!placed)
+            continue;
+        if (placed->outside)
+            throw error(places.begin()->second,
+                        fmt::format("{} moves the inputs to where {} = {}, declared {}, does not hold ({}: {}): "
+                                    "what is derived under that assumption says nothing of it there",
+                                    field, symbols.text(premise.symbol), symbols.text(at), premise.range.to_string(),
+                                    symbols.text(at), placed->why));
+        conditions.push_back(within_closure(premise.range, symbols.text(at)));
+    }
+    return conditions;
+}
+
 void check_limit_point(const quantity& q, const GiNaC::ex& point, bool to_infinity, const source_location& where)
 {
     if (to_infinity) {

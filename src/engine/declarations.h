@@ -13,7 +13,10 @@
 
 #include <ginac/ginac.h>
 
+#include <map>
 #include <optional>
+#include <string_view>
+#include <vector>
 
 namespace impact::engine {
 
@@ -37,6 +40,18 @@ void check_assumptions_hold_together(const symbol_table& symbols, const spec::de
 
 /// `at = { x = "value" }`: a numeric value must lie in the closure of x's domain.
 void check_special_value(const quantity& q, const GiNaC::ex& value, const source_location& where);
+
+/// `left_at = { x = "value" }`, and `at` with a value not a number: a claim simplified under
+/// the domains (sqrt(x^2) = x for x positive) says nothing where the values move the inputs
+/// outside them. Refused where a value is proven outside its input's domain, or the values
+/// move the inputs to where an assumption a definition's domain makes (`s_n` positive) is
+/// proven false; where neither is shown inside, the conditions returned ("u/g >= 0") are
+/// the claim's, said with it. `field` names the field in an error; `places` where each
+/// value is written.
+using moved_places = std::map<GiNaC::ex, source_location, GiNaC::ex_is_less>;
+std::vector<std::string> check_moved_inputs(const symbol_table& symbols, const GiNaC::exmap& moved,
+                                            const assumptions& given, const moved_places& places,
+                                            std::string_view field);
 
 /// `limit = "x -> point"`: a numeric point must lie in the closure of x's domain, and
 /// `infinity` needs a domain unbounded above.

@@ -523,7 +523,9 @@ private:
 
         // Symmetries compare a result at changed inputs with the result itself:
         // `left_at` substitutes (all at once) into the left side only.
+        const assumptions given = assumptions_of(spec_check);
         GiNaC::exmap left_at;
+        moved_places placed;
         for (const spec::binding& b : spec_check.left_at) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
             // A derived quantity is not an input: its value follows from theirs.
@@ -534,7 +536,13 @@ private:
             left_at[symbol] = out_.symbols.parse(b.expression);
             refuse_derivative(left_at[symbol], b.expression, "left_at's value");
             c.left_at.emplace_back(symbol, left_at[symbol]);
+            placed[symbol] = b.expression.where;
         }
+        // Values not shown inside the domains the claim was derived under: the claim is
+        // said, and proven, where they are.
+        std::vector<std::string> where_moved;
+        if (!left_at.empty())
+            where_moved = check_moved_inputs(out_.symbols, left_at, given, placed, "left_at");
         // A quantity defined by cases on the left stands for its cases at the changed
         // inputs: a copy of it whose cases have `left_at` substituted, conditions and values.
         std::map<GiNaC::ex, std::vector<case_value>, GiNaC::ex_is_less> moved;
@@ -566,13 +574,18 @@ private:
         }
 
         GiNaC::exmap at;
+        placed.clear();
         for (const spec::binding& b : spec_check.at) {
             const quantity& q = out_.symbols.at(b.name);
             at[q.symbol] = out_.symbols.parse(b.expression);
             refuse_derivative(at[q.symbol], b.expression, "at's value");
             check_special_value(q, at[q.symbol], b.expression.where);
             c.at.emplace_back(q.symbol, at[q.symbol]);
+            placed[q.symbol] = b.expression.where;
         }
+        if (!at.empty())
+            for (std::string& condition : check_moved_inputs(out_.symbols, at, given, placed, "at"))
+                where_moved.push_back(std::move(condition));
         if (!at.empty()) {
             try {
                 lhs = lhs.subs(at);
@@ -585,8 +598,9 @@ private:
                 values.push_back(fmt::format("{} = {}", b.name.value, b.expression.value));
             c.statement += fmt::format(" at {}", fmt::join(values, ", "));
         }
+        if (!where_moved.empty())
+            c.statement += fmt::format(", where {}", fmt::join(where_moved, " and "));
 
-        const assumptions given = assumptions_of(spec_check);
         for (const spec::binding& b : spec_check.assuming) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
             c.assuming.emplace_back(symbol, given.domains.at(symbol).to_string());
