@@ -523,6 +523,95 @@ BOOST_AUTO_TEST_CASE(the_emitted_kernel_compiles_and_selects_each_case)
     fs::remove_all(dir);
 }
 
+// Two bodies on a line, not the paper's file: a kernel of scalars alone, with a batch form.
+// Its velocities after the collision, typed here: v_M' = (M v_M + m v_m - eps m (v_M - v_m))/(M + m),
+// v_m' = (M v_M + m v_m + eps M (v_M - v_m))/(M + m).
+std::string line_kernel(const std::string& names)
+{
+    return "id = \"bodies_on_a_line\"\ntitle = \"t\"\n"
+           "[[symbol]]\nname = \"M\"\ndomain = \"positive\"\ndimension = \"mass\"\n"
+           "[[symbol]]\nname = \"m\"\ndomain = \"positive\"\ndimension = \"mass\"\n"
+           "[[symbol]]\nname = \"u\"\ndimension = \"velocity\"\n"
+           "[[symbol]]\nname = \"w\"\ndimension = \"velocity\"\n"
+           "[[symbol]]\nname = \"eps\"\ndomain = \"[0, 1]\"\n"
+           "[[symbol]]\nname = \"u_after\"\ndimension = \"velocity\"\n"
+           "[[symbol]]\nname = \"w_after\"\ndimension = \"velocity\"\n"
+           "[[step]]\ndefine = \"u_after\"\nas = \"(M*u + m*w - eps*m*(u - w))/(M + m)\"\n"
+           "[[step]]\ndefine = \"w_after\"\nas = \"(M*u + m*w + eps*M*(u - w))/(M + m)\"\n"
+           "[[result]]\nname = \"u_after\"\n[[result]]\nname = \"w_after\"\n"
+           "[[kernel]]\nname = \"line\"\nbatch = true\n" + names +
+           "velocities = [\"u\", \"w\"]\nerror = [\"u = velocity\", \"w = velocity\"]\n"
+           "guards = [\"invalid_input = M, m, eps\", \"non_finite = u, w\"]\n";
+}
+
+BOOST_AUTO_TEST_CASE(a_batch_kernel_of_scalars_compiles_and_writes_what_its_scalar_kernel_returns)
+{
+    namespace fs = std::filesystem;
+    const engine::library lib = engine::derive_all({spec::parse_derivation(
+        line_kernel("inputs = [\"M\", \"m\", \"u\", \"w\", \"eps\"]\noutputs = [\"u = u_after\", \"w = w_after\"]\n"),
+        "line.toml")});
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
+    const fs::path dir = fs::temp_directory_path() / ("impact_test_line_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const auto& [path, text] : files) {
+        fs::create_directories((dir / path).parent_path());
+        std::ofstream(dir / path) << text;
+    }
+    // Equal masses, elastic: the velocities exchanged (0 and 1, exactly); M = 3, m = 1,
+    // eps = 1/2, u = 1, w = -1: u' = (3 - 1 - 1)/4 = 1/4, w' = (2 + 3)/4 = 5/4; a mass of 0 is
+    // refused, its velocities left as they were. The batch writes the scalar kernel's results.
+    std::ofstream(dir / "main.cpp")
+        << "#include \"impact/line.hpp\"\n"
+           "int main()\n{\n"
+           "    double M[3] = {1, 3, 0}, m[3] = {1, 1, 1}, u[3] = {1, 1, 1}, w[3] = {0, -1, 0}, eps[3] = {1, 0.5, 1};\n"
+           "    impact::status status[3];\n"
+           "    impact::line_batch_data<double, 0> data{};\n"
+           "    data.count = 3;\n    data.M = M;\n    data.m = m;\n    data.u = u;\n    data.w = w;\n    data.eps = eps;\n"
+           "    data.status = status;\n"
+           "    const auto first = impact::line<double>(1, 1, 1, 0, 1);\n"
+           "    const auto second = impact::line<double>(3, 1, 1, -1, 0.5);\n"
+           "    impact::line_batch(data);\n"
+           "    const bool typed = u[0] == 0 && w[0] == 1 && u[1] == 0.25 && w[1] == 1.25 && u[2] == 1 && w[2] == 0;\n"
+           "    const bool as_scalar = first.u == u[0] && first.w == w[0] && second.u == u[1] && second.w == w[1];\n"
+           "    const bool statuses = status[0] == impact::status::ok && status[1] == impact::status::ok &&\n"
+           "                          status[2] == impact::status::invalid_input;\n"
+           "    return typed && as_scalar && statuses ? 0 : 1;\n}\n";
+    const std::string command = std::string(IMPACT_CXX) + " -std=c++17 -O2 -I" + (dir / "kernels").string() + " " +
+                                (dir / "main.cpp").string() + " -o " + (dir / "main").string() + " && " +
+                                (dir / "main").string();
+    BOOST_TEST(std::system(command.c_str()) == 0, command);
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(a_name_the_kernels_cxx_declares_is_refused_where_the_file_gives_it)
+{
+    // An input named after a C++ keyword, the kernel's values (t0, t1, ...), its loop's
+    // counters and its arrays (a name ending in _): each refused at its place, with the way out.
+    const std::string refused_input = message_for(
+        line_kernel("inputs = [\"M\", \"m\", \"new = u\", \"w\", \"eps\"]\noutputs = [\"u = u_after\", \"w = w_after\"]\n"));
+    BOOST_TEST(refused_input.find("test.toml:39:21: error: input 'new' cannot be a name in the kernel's C++: it is a "
+                                  "C++ keyword; name the input otherwise, e.g. inputs = [\"other = u\"]") !=
+                   std::string::npos,
+               refused_input);
+    for (const char* name : {"t0", "count", "i", "Real", "m_", "_x"}) {
+        const std::string text = line_kernel("inputs = [\"M\", \"m\", \"" + std::string(name) +
+                                             " = u\", \"w\", \"eps\"]\noutputs = [\"u = u_after\", \"w = w_after\"]\n");
+        const std::string message = message_for(text);
+        BOOST_TEST(message.find("input '" + std::string(name) + "' cannot be a name in the kernel's C++") !=
+                       std::string::npos,
+                   message);
+        BOOST_TEST(message.find("test.toml:39:21: error:") != std::string::npos, message);   // the input's place
+    }
+    const std::string refused_kernel = message_for(line_kernel(
+        "inputs = [\"M\", \"m\", \"u\", \"w\", \"eps\"]\noutputs = [\"u = u_after\", \"w = w_after\"]\n").replace(
+        line_kernel("").find("name = \"line\""), 13, "name = \"int\" "));
+    BOOST_TEST(refused_kernel.find("kernel 'int' cannot be a name in the kernel's C++: it is a C++ keyword; give the "
+                                   "kernel another name") != std::string::npos,
+               refused_kernel);
+}
+
 BOOST_AUTO_TEST_CASE(at_special_values_a_case_that_does_not_arise_is_not_proven_against)
 {
     const engine::derivation d = derive_text(by_cases(

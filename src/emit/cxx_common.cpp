@@ -231,13 +231,15 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
     // Array kernels are emitted in several dimensions; their structures are templates on
     // the dimension, written once, each member shaped as every dimension needs it.
     std::map<std::string, std::vector<const engine::kernel*>> by_name;
+    // A kernel of scalars alone has its result in its own header; its batch structure, if
+    // it has a batch form, is here with the others.
     for (const kernel_plan* plan : plans)
-        if (dimension(*plan->kernel) != 0)
+        if (dimension(*plan->kernel) != 0 || plan->kernel->batch)
             by_name[plan->kernel->name].push_back(plan->kernel);
     std::set<std::string> written;
     for (const kernel_plan* plan : plans) {
         const engine::kernel& k = *plan->kernel;
-        if (dimension(k) == 0 || !written.insert(k.name).second)
+        if ((dimension(k) == 0 && !k.batch) || !written.insert(k.name).second)
             continue;
         // The members of every dimension (in the order they first come), each shaped as its
         // dimensions need; the batch structures as the dimensions with a batch form need them.
@@ -257,13 +259,15 @@ std::string common_header(const std::vector<const kernel_plan*>& plans)
             for (const engine::kernel_parameter& p : each->parameters)
                 parameters[p.name].components[n] = p.is_array ? p.components.size() : 0;
         }
-        out += fmt::format("\n/// What {} returns in N dimensions.\ntemplate <class Real, std::size_t N>\nstruct {}_result {{\n",
-                           k.name, k.name);
-        for (const std::string& member : members)
-            out += fmt::format("    {} {};\n", outputs[member].type("Real"), member);
-        if (!k.guards.empty())
-            out += "    impact::status status;\n";
-        out += "};\n";
+        if (dimension(k) != 0) {
+            out += fmt::format("\n/// What {} returns in N dimensions.\ntemplate <class Real, std::size_t N>\nstruct {}_result {{\n",
+                               k.name, k.name);
+            for (const std::string& member : members)
+                out += fmt::format("    {} {};\n", outputs[member].type("Real"), member);
+            if (!k.guards.empty())
+                out += "    impact::status status;\n";
+            out += "};\n";
+        }
         if (!batched)
             continue;
         const engine::kernel& b = *batched;

@@ -6,13 +6,59 @@
 #include "engine/prove.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
+#include <string>
 
 namespace impact::engine {
 namespace {
+
+// A name the kernels' C++ gives a kernel, parameter or member of its own: C++'s keywords,
+// the names a kernel's code declares beside the file's (the type Real, loop counters and
+// masks, t0, t1, ... for values computed), and what C++ reserves (a leading _, a double _);
+// a name ending in _ is an input's array in a batch loop. The reason, or nothing.
+std::optional<std::string> taken_in_cxx(const std::string& name)
+{
+    static const std::set<std::string> keywords = {
+        "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch",
+        "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval", "constexpr",
+        "constinit", "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete",
+        "do", "double", "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for",
+        "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
+        "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register", "reinterpret_cast",
+        "requires", "return", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "struct",
+        "switch", "template", "this", "thread_local", "throw", "true", "try", "typedef", "typeid", "typename",
+        "union", "unsigned", "using", "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq"};
+    static const std::set<std::string> own = {
+        "Real",  "std",     "impact",  "detail",   "status",   "fast",     "fast_t",  "count",   "data",
+        "i",     "block",   "ahead",   "far",      "own",      "untried",  "back_off", "left",   "refused",
+        "doubtful", "lowest", "highest", "outcome", "condition", "resolved", "usable",  "written", "out",
+        "chosen", "other",  "bits"};
+    if (keywords.count(name))
+        return std::string("a C++ keyword");
+    if (own.count(name))
+        return std::string("a name the kernel's own code declares");
+    if (name.size() > 1 && name[0] == 't' &&
+        std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return std::string("a name of the values the kernel computes (t0, t1, ...)");
+    if (name.front() == '_' || name.find("__") != std::string::npos)
+        return std::string("reserved in C++ (a leading _ or a double _)");
+    if (name.back() == '_')
+        return std::string("a batch loop's name for an input's array (a name ending in _)");
+    return std::nullopt;
+}
+
+// `what` names the thing ("kernel 'x'", "symbol 'x'"), `mend` the way out.
+void refuse_taken_in_cxx(const std::string& name, const source_location& where, const std::string& what,
+                         const std::string& mend)
+{
+    if (const auto why = taken_in_cxx(name))
+        throw error(where, fmt::format("{} '{}' cannot be a name in the kernel's C++: it is {}; {}", what, name, *why, mend));
+}
 
 // The limit of `e` as `s` -> +infinity, through quantities defined by cases: a select's
 // condition by the sign it takes for s large (the limit of its quotient by s^k for the one
@@ -194,6 +240,24 @@ public:
                 throw error(k.where, fmt::format("a kernel cannot be named '{}': the kernels' headers define "
                                                  "impact::{} (give the kernel another name)",
                                                  k.name, k.name));
+        refuse_taken_in_cxx(k.name, k.where, "kernel", "give the kernel another name");
+        const std::string rename_symbol = "rename the symbol (its latex sets how it is typeset)";
+        for (const spec::kernel_value& input : spec_kernel.inputs) {
+            for (const spec::text& component : input.components)
+                refuse_taken_in_cxx(component.value, component.where, "symbol", rename_symbol);
+            std::vector<std::string> components;
+            for (const spec::text& component : input.components)
+                components.push_back(component.value);
+            const std::string symbols = fmt::format("{}", fmt::join(components, ", "));
+            refuse_taken_in_cxx(input.name.value, input.name.where, "input",
+                                fmt::format("name the input otherwise, e.g. inputs = [\"other = {}\"]",
+                                            input.is_array ? "[" + symbols + "]" : symbols));
+        }
+        for (const spec::binding& b : spec_kernel.let)
+            refuse_taken_in_cxx(b.name.value, b.name.where, "symbol", rename_symbol);
+        for (const spec::kernel_value& output : spec_kernel.outputs)
+            refuse_taken_in_cxx(output.name.value, output.name.where, "output",
+                                "name the output otherwise, e.g. outputs = [\"other = ...\"]");
         k.batch = spec_kernel.batch;
         std::set<std::string> seen;
         auto add_input = [&](const spec::text& name) {
