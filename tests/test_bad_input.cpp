@@ -192,6 +192,14 @@ BOOST_AUTO_TEST_CASE(a_symbol_declared_twice)
                    "derivations/bad.toml:11:8: error: symbol 'y' is declared twice (first at line 7)");
 }
 
+BOOST_AUTO_TEST_CASE(a_symbol_named_as_a_constant_of_the_expressions)
+{
+    // A moment of inertia written I would be the imaginary unit in every expression.
+    expect_refused(prefix + "[[symbol]]\nname = \"I\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:11:8: error: a symbol cannot be named 'I': in expressions I is the "
+                   "imaginary unit; name it otherwise (e.g. I_s) and give it latex = \"I\" to typeset it as I");
+}
+
 BOOST_AUTO_TEST_CASE(a_domain_that_is_not_understood)
 {
     expect_refused(prefix + "[[symbol]]\nname = \"w\"\ndomain = \"sometimes\"\n[[result]]\nname = \"y\"\n",

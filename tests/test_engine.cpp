@@ -301,6 +301,19 @@ BOOST_AUTO_TEST_CASE(a_numerator_expands_to_zero_exactly_when_the_rational_funct
     BOOST_TEST((expand_numerator(GiNaC::pow(a + 1, 130) - GiNaC::pow(a - 1, 130)) == expansion::undecided));
 }
 
+BOOST_AUTO_TEST_CASE(a_decimal_in_a_file_is_the_fraction_it_writes)
+{
+    // 0.5 x z^2 is x z^2/2 exactly, and 2.25 = 9/4, 0.125 = 1/8: the check is an identity
+    // of rationals, proven, not a comparison of floating-point numbers.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[step]]\ndefine = \"y\"\nas = \"0.5*x*z^2\"\n[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"c\"\nclaim = \"2.25*y = 18*0.125*x*z^2/2\"\n"));
+    const GiNaC::ex value = d.find_result("y")->value;
+    BOOST_TEST(equal(value, sym(d, "x") * GiNaC::pow(sym(d, "z"), 2) / 2));
+    BOOST_TEST(GiNaC::ex_to<GiNaC::numeric>(value.coeff(sym(d, "x"), 1).coeff(sym(d, "z"), 2)).is_rational());
+    BOOST_TEST(engine::to_string(check_named(d, "c").outcome) == "proven");
+}
+
 BOOST_AUTO_TEST_CASE(a_derivation_uses_the_results_of_another)
 {
     engine::derived_by_id done;

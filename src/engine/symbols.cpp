@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace impact::engine {
 namespace {
@@ -253,6 +254,17 @@ const quantity& symbol_table::declare(const spec::symbol& declaration)
     if (const quantity* earlier = find(name))
         throw error(declaration.name.where,
                     fmt::format("symbol '{}' is declared twice (first at line {})", name, earlier->where.line));
+    // GiNaC's parser reads these as its constants whatever the table holds: a symbol so
+    // named would silently be i, pi, Euler's or Catalan's constant in every expression.
+    for (const auto& [constant, what] : {std::pair<const char*, const char*>{"I", "the imaginary unit"},
+                                         {"Pi", "the constant pi"},
+                                         {"Euler", "Euler's constant"},
+                                         {"Catalan", "Catalan's constant"}})
+        if (name == constant)
+            throw error(declaration.name.where,
+                        fmt::format("a symbol cannot be named '{}': in expressions {} is {}; name it otherwise "
+                                    "(e.g. {}_s) and give it latex = \"{}\" to typeset it as {}",
+                                    name, name, what, name, name, name));
 
     quantity q;
     q.name = name;
@@ -327,6 +339,44 @@ const quantity& symbol_table::at(const spec::text& name) const
     throw error(name.where, fmt::format("undeclared symbol '{}' (declare it in a [[symbol]] table)", name.value));
 }
 
+namespace {
+
+// `text` with each decimal number written as the fraction it means exactly: 0.5 as (5/10),
+// 2.25 as (225/100). A physicist's 0.5 is one half, and GiNaC would read it as a
+// floating-point number, which no identity is proven of and no LaTeX prints exactly.
+std::string exact_decimals(const std::string& text)
+{
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        std::size_t end = i + 1;
+        if (std::isalpha(c) || c == '_') {
+            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))
+                ++end;
+        } else if (std::isdigit(c)) {
+            while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])))
+                ++end;
+            if (end + 1 < text.size() && text[end] == '.' && std::isdigit(static_cast<unsigned char>(text[end + 1]))) {
+                const std::string whole = text.substr(i, end - i);
+                std::size_t fraction_end = end + 1;
+                while (fraction_end < text.size() && std::isdigit(static_cast<unsigned char>(text[fraction_end])))
+                    ++fraction_end;
+                const std::string fraction = text.substr(end + 1, fraction_end - end - 1);
+                std::string digits = whole + fraction;
+                digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+                out += "(" + digits + "/1" + std::string(fraction.size(), '0') + ")";
+                i = fraction_end;
+                continue;
+            }
+        }
+        out += text.substr(i, end - i);
+        i = end;
+    }
+    return out;
+}
+
+} // namespace
+
 GiNaC::ex symbol_table::parse(const spec::text& text) const
 {
     const auto known = parsed_.find(text.value);
@@ -335,13 +385,14 @@ GiNaC::ex symbol_table::parse(const spec::text& text) const
     if (text.value.find_first_not_of(" \t\r\n") == std::string::npos)
         throw error(text.where, "empty expression");
     refuse_deep_nesting(text.where, text.value);
-    const number_bounds bounds(table_, text.value);
+    const std::string exact = exact_decimals(text.value);
+    const number_bounds bounds(table_, exact);
     if (!bounds.literal_free())
         bounds.check(text.where, text.value);
     try {
         if (!reader_)
             reader_ = std::make_shared<GiNaC::parser>(table_, /*strict=*/true);
-        const GiNaC::ex e = (*reader_)(text.value);
+        const GiNaC::ex e = (*reader_)(exact);
         if (bounds.literal_free())
             bounds.check_read(e, text.where, text.value);
         parsed_.emplace(text.value, e);
