@@ -383,6 +383,31 @@ BOOST_AUTO_TEST_CASE(a_value_put_into_a_claim_stays_in_the_domain_its_side_was_d
                           .outcome) == "proven");
 }
 
+BOOST_AUTO_TEST_CASE(a_strict_inequality_that_fails_on_a_thin_set_is_refuted_not_sampled)
+{
+    // The energy a perfectly inelastic collision loses, -x z (y - eps)^2/(2 (x + z)) for
+    // x, z > 0 read as masses: never positive, and 0 where y = eps, which random samples
+    // never hit. Strictly negative is false; not positive is proven.
+    const engine::derivation d = derive_text(
+        "id = \"t\"\ntitle = \"test\"\n"
+        "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n[[symbol]]\nname = \"z\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"y\"\n[[symbol]]\nname = \"eps\"\n[[symbol]]\nname = \"w\"\n"
+        "[[step]]\ndefine = \"w\"\nas = \"(x*y + z*eps)^2/(2*(x + z)) - x*y^2/2 - z*eps^2/2\"\n"
+        "[[result]]\nname = \"w\"\n"
+        "[[check]]\nname = \"strictly\"\nclaim = \"w < 0\"\n"
+        "[[check]]\nname = \"never gained\"\nclaim = \"w <= 0\"\n");
+    const engine::check_result& strictly = check_named(d, "strictly");
+    BOOST_TEST(engine::to_string(strictly.outcome) == "failed");
+    BOOST_TEST_REQUIRE(strictly.fails_at.has_value());
+    GiNaC::exmap at;
+    for (const auto& [symbol, value] : strictly.fails_at->point)
+        at[symbol] = value;
+    BOOST_TEST(at.at(sym(d, "y")) == at.at(sym(d, "eps")));   // where the loss is 0
+    BOOST_TEST(strictly.outcome.method.find("fails at ") == 0, strictly.outcome.method);
+    BOOST_TEST(strictly.outcome.method.find("sampled points held)") != std::string::npos, strictly.outcome.method);
+    BOOST_TEST(engine::to_string(check_named(d, "never gained").outcome) == "proven");
+}
+
 BOOST_AUTO_TEST_CASE(an_inequality_is_proven_from_the_signs_of_its_factors_or_refuted)
 {
     const engine::derivation d = derive_text(derivation_text(

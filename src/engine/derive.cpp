@@ -656,6 +656,20 @@ private:
             c.outcome = std::move(*through);
         } else {
             c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, given);
+            // Samples drawn at random miss where a claim fails on a thin set (dE < 0 fails
+            // where v_M = v_m): an inequality left sampled is tried at the domains' simple
+            // values too, and fails at the first point found, decided exactly.
+            if (c.outcome.what == verdict::status::sampled)
+                if (auto point = find_counterexample(lhs, c.op, rhs, out_.symbols, given); point && point->exact) {
+                    std::vector<std::string> values;
+                    for (const auto& [symbol, value] : point->point)
+                        values.push_back(fmt::format("{} = {}", out_.symbols.text(symbol), out_.symbols.text(value)));
+                    c.outcome.what = verdict::status::failed;
+                    c.outcome.method = fmt::format("fails at {}: {} {} {} is false (though {} sampled points held)",
+                                                   fmt::join(values, ", "), out_.symbols.text(point->lhs),
+                                                   to_string(c.op), out_.symbols.text(point->rhs), c.outcome.samples);
+                    c.fails_at = std::move(point);
+                }
         }
         return c;
     }
