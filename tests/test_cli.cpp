@@ -194,6 +194,16 @@ BOOST_AUTO_TEST_CASE(a_derivation_file_is_derived_from_any_folder)
     BOOST_TEST(missing.status == 2);
     BOOST_TEST(missing.output == "derivations: error: no such folder of derivation files; give one with "
                                  "--derivations (or, to derive one file, its path)\n");
+    // A path to a derivation file that is not there is that file's error, for derive and latex.
+    for (const char* command : {" derive ", " latex "}) {
+        const run_result typo = impact::testing::run_command("cd / && exec " + std::string(IMPACT_BINARY) + command +
+                                                             (source_dir / "derivations" / "eq11_energy_los.toml").string() +
+                                                             " 2>&1");
+        BOOST_TEST(typo.status == 2);
+        BOOST_TEST(typo.output == (source_dir / "derivations" / "eq11_energy_los.toml").string() +
+                                      ": error: no such derivation file\n",
+                   typo.output);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_folder_without_derivation_files_is_an_error)

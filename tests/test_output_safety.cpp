@@ -278,6 +278,9 @@ BOOST_AUTO_TEST_CASE(latex_kernels_and_simulate_replace_only_their_own_files)
     expect_refused(p, "latex first -o paper/thesis.tex",
                    "paper/thesis.tex: error: in the way: Impact writes a file here, and this is not Impact's; move "
                    "it away, or --force to keep it as thesis.tex.orig");
+    // A folder given as the file: said of the folder, not of the folder it is in.
+    expect_refused(p, "latex first -o paper", "paper: error: is a folder; give the file to write (e.g. -o "
+                                              "folder/fragment.tex)");
 
     // Kernels and simulations go beside them, and take nothing away.
     BOOST_TEST(p.impact("kernels --output paper").status == 0);

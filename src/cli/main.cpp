@@ -148,8 +148,8 @@ int run_latex(const options& o)
     const fs::path file = o.file;
     fs::path folder;
     if (!file.empty()) {
-        if (!file.has_filename())
-            throw error({o.file, 0, 0}, "give a file to write, not a folder");
+        if (!file.has_filename() || fs::is_directory(file))
+            throw error({o.file, 0, 0}, "is a folder; give the file to write (e.g. -o folder/fragment.tex)");
         folder = pipeline::checked_folder(file.parent_path().empty() ? "." : file.parent_path(), o.derivations,
                                           pipeline::writing::beside);
         pipeline::check_writable(folder, {{file.filename().string(), ""}}, o.force);
@@ -335,6 +335,11 @@ int main(int argc, char** argv)
     }
     // `impact derive path/to/file.toml` reads the folder the file is in, where the
     // derivations it uses are, so that it works from any folder.
+    // A name that is a path to a .toml file that is not there is a missing file, not an id.
+    if (o.derivations.empty() && fs::path(o.name).extension() == ".toml" && !fs::is_regular_file(o.name)) {
+        fmt::print(stderr, "{}: error: no such derivation file\n", o.name);
+        return exit_bad_input;
+    }
     if (o.derivations.empty())
         o.derivations = fs::is_regular_file(o.name) ? fs::path(o.name).parent_path().lexically_normal().string()
                                                     : std::string("derivations");
