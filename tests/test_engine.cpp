@@ -383,6 +383,22 @@ BOOST_AUTO_TEST_CASE(a_value_put_into_a_claim_stays_in_the_domain_its_side_was_d
                           .outcome) == "proven");
 }
 
+BOOST_AUTO_TEST_CASE(a_limit_no_method_establishes_is_sampled_nearer_and_nearer_the_point)
+{
+    // x^x -> 1 as x -> 0 (x log x -> 0): no substitution, series or leading term gives it,
+    // and evaluated at x = 10^-4 ... 10^-24 it comes within 10^-12 of 1: sampled, not failed.
+    // Its limit is not 2, which the same evaluation shows.
+    const engine::derivation d = derive_text(derivation_text(
+        "[[step]]\ndefine = \"y\"\nas = \"x^x\"\n[[result]]\nname = \"y\"\n"
+        "[[check]]\nname = \"one\"\nclaim = \"y = 1\"\nlimit = \"x -> 0\"\n"
+        "[[check]]\nname = \"two\"\nclaim = \"y = 2\"\nlimit = \"x -> 0\"\n"));
+    const engine::check_result& one = check_named(d, "one");
+    BOOST_TEST(engine::to_string(one.outcome) == "sampled (2 points)", one.outcome.method);
+    const engine::check_result& two = check_named(d, "two");
+    BOOST_TEST(engine::to_string(two.outcome) == "failed");
+    BOOST_TEST(two.outcome.method.find("is still 1 at 10^-24 of it") != std::string::npos, two.outcome.method);
+}
+
 BOOST_AUTO_TEST_CASE(a_strict_inequality_that_fails_on_a_thin_set_is_refuted_not_sampled)
 {
     // The energy a perfectly inelastic collision loses, -x z (y - eps)^2/(2 (x + z)) for
