@@ -69,6 +69,28 @@ void refuse_deep_nesting(const source_location& where, const std::string& text)
     }
 }
 
+// Where the token of an expression's text that starts at `i` ends: a name (letters, digits
+// and _), a number (digits, and a fraction's digits after a point), or one character.
+std::size_t token_end(const std::string& text, std::size_t i)
+{
+    const auto digit = [&](std::size_t k) { return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k])); };
+    const auto in_name = [&](std::size_t k) {
+        return k < text.size() && (std::isalnum(static_cast<unsigned char>(text[k])) || text[k] == '_');
+    };
+    std::size_t end = i + 1;
+    if (std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') {
+        while (in_name(end))
+            ++end;
+    } else if (digit(i)) {
+        while (digit(end))
+            ++end;
+        if (end < text.size() && text[end] == '.' && digit(end + 1))
+            for (++end; digit(end);)
+                ++end;
+    }
+    return end;
+}
+
 // GiNaC computes with numbers as it reads them: 2^(10^9) or factorial(10^7) would take
 // the machine's time and memory before any check ran. So an expression is first read
 // with each number replaced by a placeholder symbol, where nothing is computed, and the
@@ -82,21 +104,8 @@ public:
     number_bounds(const GiNaC::symtab& declared, const std::string& text) : declared_(declared)
     {
         for (std::size_t i = 0; i < text.size();) {
-            const auto c = static_cast<unsigned char>(text[i]);
-            std::size_t end = i + 1;
-            if (std::isalpha(c) || c == '_') {
-                while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))
-                    ++end;
-            } else if (std::isdigit(c)) {
-                const auto digits = [&] {
-                    while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])))
-                        ++end;
-                };
-                digits();
-                if (end + 1 < text.size() && text[end] == '.' && std::isdigit(static_cast<unsigned char>(text[end + 1]))) {
-                    ++end;
-                    digits();
-                }
+            const std::size_t end = token_end(text, i);
+            if (std::isdigit(static_cast<unsigned char>(text[i]))) {
                 const GiNaC::symbol placeholder("impact_number_" + std::to_string(literals_.size()) + "_");
                 placeholders_.push_back(placeholder);
                 literals_.emplace(placeholder, text.substr(i, end - i));
@@ -348,26 +357,16 @@ std::string exact_decimals(const std::string& text)
 {
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        std::size_t end = i + 1;
-        if (std::isalpha(c) || c == '_') {
-            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))
-                ++end;
-        } else if (std::isdigit(c)) {
-            while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])))
-                ++end;
-            if (end + 1 < text.size() && text[end] == '.' && std::isdigit(static_cast<unsigned char>(text[end + 1]))) {
-                const std::string whole = text.substr(i, end - i);
-                std::size_t fraction_end = end + 1;
-                while (fraction_end < text.size() && std::isdigit(static_cast<unsigned char>(text[fraction_end])))
-                    ++fraction_end;
-                const std::string fraction = text.substr(end + 1, fraction_end - end - 1);
-                std::string digits = whole + fraction;
-                digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
-                out += "(" + digits + "/1" + std::string(fraction.size(), '0') + ")";
-                i = fraction_end;
-                continue;
-            }
+        const std::size_t end = token_end(text, i);
+        const std::string token = text.substr(i, end - i);
+        const auto point = token.find('.');
+        if (std::isdigit(static_cast<unsigned char>(token[0])) && point != std::string::npos) {
+            const std::size_t places = token.size() - point - 1;
+            std::string digits = token.substr(0, point) + token.substr(point + 1);
+            digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+            out += "(" + digits + "/1" + std::string(places, '0') + ")";
+            i = end;
+            continue;
         }
         out += text.substr(i, end - i);
         i = end;
