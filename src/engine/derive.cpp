@@ -1283,7 +1283,7 @@ private:
                     at[*it] = value;
                 }
             GiNaC::numeric last;
-            bool settled = false;
+            bool settled = false, grew = false;
             for (int k = 4; k <= 24; k += 4) {
                 const GiNaC::numeric h = GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(-k));
                 GiNaC::numeric x;
@@ -1312,13 +1312,11 @@ private:
                 if (!GiNaC::is_a<GiNaC::numeric>(value) || !value.info(GiNaC::info_flags::real))
                     return;
                 const GiNaC::numeric size = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(value));
-                if (k >= 16 && size > last && last > GiNaC::numeric(0))
-                    settled = false;   // growing again near the point
-                else
-                    settled = size < GiNaC::numeric(1, 1000000000000LL);
+                grew = grew || (k >= 16 && size > last);   // growing again near the point
+                settled = size < GiNaC::numeric(1, 1000000000000LL);
                 last = size;
             }
-            if (!settled) {
+            if (!settled || grew) {
                 v.method += fmt::format("; evaluated nearer and nearer the point, the difference of the sides is "
                                         "still {:.3g} at 10^-24 of it",
                                         last.to_double());
