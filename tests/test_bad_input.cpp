@@ -394,6 +394,19 @@ BOOST_AUTO_TEST_CASE(a_definition_outside_its_symbols_domain)
                    "outside it");
 }
 
+BOOST_AUTO_TEST_CASE(a_definition_that_uses_its_own_symbol)
+{
+    // An abbreviation replaced by itself: w = 2*w + x was refused as an undeclared w.
+    expect_refused(derived + "[[symbol]]\nname = \"w\"\ndefinition = \"2*w + x\"\n",
+                   "derivations/bad.toml:21:14: error: the definition of 'w' uses 'w' itself: a definition is an "
+                   "abbreviation, replaced by its expression wherever the symbol is used; write it in other "
+                   "symbols, or state the relation as a [[given]] equation");
+    // A name that only contains it (w_0, ww) is another symbol: undeclared here.
+    expect_refused(derived + "[[symbol]]\nname = \"w\"\ndefinition = \"2*w_0\"\n",
+                   "derivations/bad.toml:21:14: error: expression \"2*w_0\" does not parse: undeclared symbol 'w_0' "
+                   "(declare it in a [[symbol]] table)");
+}
+
 // Assumptions (domains beside definitions) that cannot hold together: every claim proven
 // under them would be proven of nothing. Each alone is possible (u - z and z - u may each be
 // positive); together they contradict each other, which the sign of the second under the

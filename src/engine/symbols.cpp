@@ -290,6 +290,19 @@ const quantity& symbol_table::declare(const spec::symbol& declaration)
     else
         q.symbol = GiNaC::realsymbol(name, q.latex);
     if (declaration.definition) {
+        // Read before its own name is in the table, a definition that uses it would be
+        // refused as using an undeclared symbol: say what is wrong instead.
+        const std::string& text = declaration.definition->value;
+        for (std::size_t i = 0; i < text.size();) {
+            const std::size_t end = token_end(text, i);
+            if (text.compare(i, end - i, name) == 0)
+                throw error(declaration.definition->where,
+                            fmt::format("the definition of '{}' uses '{}' itself: a definition is an abbreviation, "
+                                        "replaced by its expression wherever the symbol is used; write it in other "
+                                        "symbols, or state the relation as a [[given]] equation",
+                                        name, name));
+            i = end;
+        }
         q.definition = parse(*declaration.definition);
         q.written = written_form::read(declaration.definition->value,
                                        [this](const std::string& piece) { return parse({piece, {}}); });

@@ -2,7 +2,9 @@
 // batch loop of the same arithmetic, the batch loop as generated before the kernels tested
 // their arithmetic for underflow (batch_before_underflow.hpp), the fast form's batch
 // (impact::fast), the plain loop a user would write instead (no guards, no compensated
-// arithmetic), and a memory-bandwidth probe (a triad).
+// arithmetic), the fast form's contract written by hand beside it (the same update with the
+// guards, statuses and range test; and with the guards and statuses alone, a floor under what
+// the contract costs), and a memory-bandwidth probe (a triad).
 //
 // A benchmark, never a test: it reports collisions per second of the scalar and batch
 // kernels, in cache (4 096 pairs) and out of cache (4 194 304 pairs), and the ratios the
@@ -264,7 +266,14 @@ inline double div(dd a, dd b)
 // as the generated loop, underflow included (like with like): a pair whose inputs are not
 // all 0 or within [2^-k, 2^k] (k the generated header's, detail::collide_batch_<D>d_k) is
 // left to the scalar kernel after its block of 8, which decides exactly.
-template <std::size_t D>
+// The form: `accurate`, k in double-double, as the accurate form computes it; `fast`, in plain
+// double as the plain loop and the fast form do (k = (1 + eps) closing / ((M + m) rr), one
+// division), the same guards, statuses and range test around it: the fast form's contract
+// written by hand, to tell what the contract costs beside the plain loop; `guards`, the fast
+// one without the range test and the scalar kernel after it (a pair whose values underflow
+// keeps what the arithmetic gave): less than the contract, a floor under its cost.
+enum class form { accurate, fast, guards };
+template <std::size_t D, form f>
 [[gnu::noinline]] void hand_written(pairs<D>& p)
 {
     const double* __restrict M = p.M.data();
@@ -281,7 +290,9 @@ template <std::size_t D>
     impact::status* __restrict status = p.status.data();
     // Blocks of 8 pairs, every array asked for 64 pairs ahead, as the generated batch does.
     constexpr std::size_t block = 8, ahead = 64;
-    constexpr int k = D == 2 ? impact::detail::collide_batch_2d_k<double> : impact::detail::collide_batch_3d_k<double>;
+    constexpr bool compensated = f == form::accurate;
+    constexpr int k = compensated ? (D == 2 ? impact::detail::collide_batch_2d_k<double> : impact::detail::collide_batch_3d_k<double>)
+                                  : (D == 2 ? impact::detail::collide_batch_2d_fast_k<double> : impact::detail::collide_batch_3d_fast_k<double>);
     constexpr double lowest = impact::detail::power_of_2<double>(-k), highest = impact::detail::power_of_2<double>(k);
     const auto pairs_from = [&](std::size_t first, std::size_t n) __attribute__((always_inline)) {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -297,34 +308,51 @@ template <std::size_t D>
             rr += r[d] * r[d];
             closing += r[d] * (v_M[d][i] - v_m[d][i]);
         }
-        const bool finite = zero == 0;
-        bool bad_mass = !(M[i] > 0);
+        // Each condition a 64-bit integer, as wide as the doubles, combined with & (with bool
+        // and &&, GCC vectorised neither the fast form's loop nor, in 3D, the accurate one's).
+        const std::int64_t finite = zero == 0;
+        std::int64_t bad_mass = !(M[i] > 0);
         bad_mass |= !(m[i] > 0);
         bad_mass |= !(std::fma(M[i], 0.0, m[i] * 0.0) == 0);
-        bool bad_eps = !(eps[i] >= 0);
+        std::int64_t bad_eps = !(eps[i] >= 0);
         bad_eps |= !(eps[i] <= 1);
-        impact::status s = closing < 0 ? impact::status::ok : impact::status::separating;
-        s = rr > 0 ? s : impact::status::coincident_centres;
-        s = finite ? s : impact::status::non_finite;
-        s = bad_eps ? impact::status::invalid_restitution : s;
-        s = bad_mass ? impact::status::invalid_mass : s;
-        const bool ok = s == impact::status::ok;
+        // Each choice by the bits, as the generated loop makes it (impact::detail::blend: with
+        // ?:, GCC made branches of it it could not vectorise).
+        using impact::detail::blend;
+        impact::status s = blend(closing < 0, impact::status::ok, impact::status::separating);
+        s = blend(rr > 0, s, impact::status::coincident_centres);
+        s = blend(finite, s, impact::status::non_finite);
+        s = blend(bad_eps, impact::status::invalid_restitution, s);
+        s = blend(bad_mass, impact::status::invalid_mass, s);
+        const std::int64_t ok = s == impact::status::ok;
 
-        // k = (1 + eps) (dv . r) / ((M + m) r . r), in double-double, then the updates.
-        const dd r0 = two_sum(C_M[0][i], -C_m[0][i]);
-        dd dot = mul(r0, two_sum(v_M[0][i], -v_m[0][i])), r2 = mul(r0, r0);
-        for (std::size_t d = 1; d < D; ++d) {
-            const dd rd = two_sum(C_M[d][i], -C_m[d][i]);
-            dot = add(dot, mul(rd, two_sum(v_M[d][i], -v_m[d][i])));
-            r2 = add(r2, mul(rd, rd));
+        // k = (1 + eps) (dv . r) / ((M + m) r . r), in double-double (or plain double), then
+        // the updates.
+        std::int64_t usable;
+        double k;
+        if constexpr (compensated) {
+            const dd r0 = two_sum(C_M[0][i], -C_m[0][i]);
+            dd dot = mul(r0, two_sum(v_M[0][i], -v_m[0][i])), r2 = mul(r0, r0);
+            for (std::size_t d = 1; d < D; ++d) {
+                const dd rd = two_sum(C_M[d][i], -C_m[d][i]);
+                dot = add(dot, mul(rd, two_sum(v_M[d][i], -v_m[d][i])));
+                r2 = add(r2, mul(rd, rd));
+            }
+            // Refused out of range, as the kernels are: a divisor too small (or infinite) to
+            // divide by in compensated arithmetic, or a result not finite.
+            dd denominator = mul(two_sum(M[i], m[i]), r2);
+            usable = ok & std::isgreaterequal(std::fabs(denominator.hi), std::numeric_limits<double>::min() / 0x1p-52) &
+                     std::islessequal(std::fabs(denominator.hi), std::numeric_limits<double>::max());
+            denominator.hi = blend(usable, denominator.hi, 1.0);
+            k = div(mul(two_sum(1, eps[i]), dot), denominator);
+        } else {
+            // Refused out of range as the fast kernels are: a divisor 0 or not finite.
+            double denominator = (M[i] + m[i]) * rr;
+            // (quiet comparisons: one that may trap keeps GCC from vectorising the loop)
+            usable = ok & (denominator != 0) & std::islessequal(std::fabs(denominator), std::numeric_limits<double>::max());
+            denominator = blend(usable, denominator, 1.0);
+            k = (1 + eps[i]) * closing / denominator;
         }
-        // Refused out of range, as the kernels are: a divisor too small (or infinite) to
-        // divide by in compensated arithmetic, or a result not finite.
-        dd denominator = mul(two_sum(M[i], m[i]), r2);
-        const bool usable = ok && std::fabs(denominator.hi) >= std::numeric_limits<double>::min() / 0x1p-52 &&
-                            std::fabs(denominator.hi) <= std::numeric_limits<double>::max();
-        denominator.hi = usable ? denominator.hi : 1.0;
-        const double k = div(mul(two_sum(1, eps[i]), dot), denominator);
         std::array<double, D> after_M, after_m;
         double results = 0;
         for (std::size_t d = 0; d < D; ++d) {
@@ -352,13 +380,13 @@ template <std::size_t D>
         axis(1);
         if constexpr (D == 3)
             axis(2);
-        const bool in_range = std::isgreaterequal(low, lowest) & std::islessequal(high, highest);
-        const bool written = usable && results == 0 && in_range;
+        const std::int64_t in_range = f == form::guards || (std::isgreaterequal(low, lowest) & std::islessequal(high, highest));
+        const std::int64_t written = usable & (results == 0) & in_range;
         for (std::size_t d = 0; d < D; ++d) {
-            v_M[d][i] = written ? after_M[d] : v_M[d][i];
-            v_m[d][i] = written ? after_m[d] : v_m[d][i];
+            v_M[d][i] = blend(written, after_M[d], v_M[d][i]);
+            v_m[d][i] = blend(written, after_m[d], v_m[d][i]);
         }
-        status[i] = ok && !written ? (usable && results == 0 ? impact::status::underflow : impact::status::out_of_range) : s;
+        status[i] = blend(ok & !written, blend(usable & (results == 0), impact::status::underflow, impact::status::out_of_range), s);
     }
     };
     // The pairs left to the scalar kernel.
@@ -378,7 +406,8 @@ template <std::size_t D>
                 vM[d] = v_M[d][i];
                 vm[d] = v_m[d][i];
             }
-            const auto r = impact::collide(M[i], m[i], cM, cm, vM, vm, eps[i]);
+            const auto r = compensated ? impact::collide(M[i], m[i], cM, cm, vM, vm, eps[i])
+                                       : impact::collide(M[i], m[i], cM, cm, vM, vm, eps[i], impact::fast);
             for (std::size_t d = 0; d < D; ++d) {
                 v_M[d][i] = r.v_M[d];
                 v_m[d][i] = r.v_m[d];
@@ -400,10 +429,12 @@ template <std::size_t D>
             __builtin_prefetch(status + b + ahead, 1);
         }
         pairs_from(b, block);
-        settle(b, block);
+        if constexpr (f != form::guards)
+            settle(b, block);
     }
     pairs_from(b, p.count - b);
-    settle(b, p.count - b);
+    if constexpr (f != form::guards)
+        settle(b, p.count - b);
 }
 
 // ---- Benchmarks -------------------------------------------------------------------
@@ -518,11 +549,14 @@ template <std::size_t D>
 // The loops timed side by side, and the figures each benchmark reports (medians of its
 // repetitions): pairs per second (millions) of the three collision loops, the triad's bytes
 // per second (GB), and the two ratios the batch kernel is held to.
-enum loop { scalar_loop, batch_loop, hand_written_loop, before_loop, fast_loop, plain_loop, triad_loop, loops };
-const char* const pairs_per_second[] = {"scalar_M/s", "batch_M/s", "hand_M/s", "before_M/s", "fast_M/s", "plain_M/s"};
+enum loop { scalar_loop, batch_loop, hand_written_loop, before_loop, fast_loop, plain_loop, fast_hand_written_loop, guards_loop, triad_loop, loops };
+const char* const pairs_per_second[] = {"scalar_M/s", "batch_M/s", "hand_M/s", "before_M/s", "fast_M/s", "plain_M/s", "fast_hand_M/s", "guards_M/s"};
 const char* const triad_bandwidth = "triad_GB/s";
 const char* const batch_per_hand_written = "batch/hand";
 const char* const fast_per_plain = "fast/plain";
+const char* const fast_hand_per_plain = "fast_hand/plain";
+const char* const fast_per_fast_hand = "fast/fast_hand";
+const char* const guards_per_plain = "guards/plain";
 const char* const batch_per_plain = "batch/plain";
 const char* const batch_per_triad = "batch/triad";
 const char* const batch_per_before = "batch/before";
@@ -550,7 +584,9 @@ void side_by_side(benchmark::State& state)
             switch (which) {
             case scalar_loop: generated_scalar(p); break;
             case batch_loop: generated_batch(p); break;
-            case hand_written_loop: hand_written(p); break;
+            case hand_written_loop: hand_written<D, form::accurate>(p); break;
+            case fast_hand_written_loop: hand_written<D, form::fast>(p); break;
+            case guards_loop: hand_written<D, form::guards>(p); break;
             case before_loop: generated_batch_before_underflow(p); break;
             case fast_loop: generated_fast_batch(p); break;
             case plain_loop: plain_hand_written(p); break;
@@ -564,9 +600,12 @@ void side_by_side(benchmark::State& state)
         state.SetIterationTime(pass);
     }
     const double passes = static_cast<double>(state.iterations());
-    for (loop which : {scalar_loop, batch_loop, hand_written_loop, before_loop, fast_loop, plain_loop})
+    for (loop which : {scalar_loop, batch_loop, hand_written_loop, before_loop, fast_loop, plain_loop, fast_hand_written_loop, guards_loop})
         state.counters[pairs_per_second[which]] = passes * n / seconds[which] / 1e6;
     state.counters[fast_per_plain] = seconds[plain_loop] / seconds[fast_loop];
+    state.counters[fast_hand_per_plain] = seconds[plain_loop] / seconds[fast_hand_written_loop];
+    state.counters[fast_per_fast_hand] = seconds[fast_hand_written_loop] / seconds[fast_loop];
+    state.counters[guards_per_plain] = seconds[plain_loop] / seconds[guards_loop];
     state.counters[batch_per_plain] = seconds[plain_loop] / seconds[batch_loop];
     const double triad_bytes = passes * probe.a.size() * triad_arrays::bytes_per_element / seconds[triad_loop];
     state.counters[triad_bandwidth] = triad_bytes / 1e9;
@@ -677,8 +716,12 @@ int main(int argc, char** argv)
                         figure(triad_bandwidth), figure(batch_per_hand_written), 100 * figure(batch_per_triad),
                         figure(pairs_per_second[before_loop]), figure(batch_per_before));
         }
-    std::printf("\n%-3s %-12s %-9s %-12s %9s %9s %9s %10s %11s\n", "", "pairs", "pages", "layout", "fast M/s",
-                "plain M/s", "batch M/s", "fast/plain", "batch/plain");
+    std::printf("\nfast hand: the fast form's contract written by hand (hand_written<D, form::fast>); guards: the same "
+                "without its range test and scalar kernel (form::guards), less than the contract: what the guards "
+                "and statuses alone cost beside the plain loop.\n");
+    std::printf("%-3s %-12s %-9s %-12s %9s %9s %9s %10s %11s %15s %14s %12s\n", "", "pairs", "pages", "layout", "fast M/s",
+                "plain M/s", "batch M/s", "fast/plain", "batch/plain", "fast hand/plain", "fast/fast hand",
+                "guards/plain");
     for (int d : {2, 3})
         for (const auto& [pairs, pages, how] : regimes) {
             const std::string name = "side_by_side<" + std::to_string(d) + ">/pairs:" + std::to_string(pairs) +
@@ -687,10 +730,11 @@ int main(int argc, char** argv)
             if (found == reporter.medians.end())
                 continue;
             auto figure = [&](const char* counter) { return found->second[counter]; };
-            std::printf("%-3s %-12zu %-9s %-12s %9.1f %9.1f %9.1f %10.3f %11.3f\n", (std::to_string(d) + "D").c_str(),
+            std::printf("%-3s %-12zu %-9s %-12s %9.1f %9.1f %9.1f %10.3f %11.3f %15.3f %14.3f %12.3f\n", (std::to_string(d) + "D").c_str(),
                         pairs, pages == huge_pages ? "2 MiB" : "4 KiB", how == staggered ? "staggered" : "same offset",
                         figure(pairs_per_second[fast_loop]), figure(pairs_per_second[plain_loop]),
-                        figure(pairs_per_second[batch_loop]), figure(fast_per_plain), figure(batch_per_plain));
+                        figure(pairs_per_second[batch_loop]), figure(fast_per_plain), figure(batch_per_plain),
+                        figure(fast_hand_per_plain), figure(fast_per_fast_hand), figure(guards_per_plain));
         }
     std::printf("arrays on 2 MiB pages at the end: %ld MiB of the %zu MiB asked for (the system may grant fewer; "
                 "the 2 MiB-page figures hold for as many as it granted)\n",
