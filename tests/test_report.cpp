@@ -8,6 +8,7 @@
 #include "report/report_tex.h"
 #include "engine/library.h"
 #include "pipeline/regenerate.h"
+#include "report/figures.h"
 #include "report/report.h"
 #include "support.h"
 
@@ -114,7 +115,7 @@ BOOST_AUTO_TEST_CASE(the_report_includes_every_derivation_the_errata_and_the_fig
 }
 
 // A folder of the paper's derivations alone, none beyond it: the report still compiles
-// (the chapter beyond the paper holds its figure, and nothing refers to what is absent).
+// (no chapter beyond the paper, no figure, and nothing refers to what is absent).
 BOOST_AUTO_TEST_CASE(a_folder_without_derivations_beyond_the_paper_compiles)
 {
     BOOST_TEST_REQUIRE(report::have_pdflatex());
@@ -126,6 +127,95 @@ BOOST_AUTO_TEST_CASE(a_folder_without_derivations_beyond_the_paper_compiles)
     std::map<std::string, std::string> pdfs;
     BOOST_CHECK_NO_THROW(pdfs = report::figures_and_report(lib, files));
     BOOST_TEST(pdfs.count("report.pdf") == 1u);
+    // Eq. 8 derives none of the kernels the figures plot: none is drawn.
+    for (const auto& [path, contents] : pdfs)
+        BOOST_TEST(path.rfind("figures/", 0) != 0u, path);
+}
+
+// Some of the paper's derivations, as a library of their own (derived once, above).
+engine::library subset(const std::vector<std::string>& ids)
+{
+    engine::library lib;
+    for (const std::string& id : ids) {
+        lib.derived.emplace(id, output().lib.derived.at(id));
+        lib.order.push_back(id);
+    }
+    return lib;
+}
+
+std::vector<std::string> names_of(const std::vector<report::figure>& figures)
+{
+    std::vector<std::string> names;
+    for (const report::figure& f : figures)
+        names.push_back(f.name);
+    return names;
+}
+
+// A figure plots a kernel compiled into Impact: it is drawn where the folder derives that
+// kernel (Fig. 2 the plane's collide, Fig. 3 scatter_angle, beyond the paper the plane's
+// collide_rough), and the report's text speaks of the figures it holds.
+BOOST_AUTO_TEST_CASE(the_report_draws_the_figures_whose_kernels_the_folder_derives)
+{
+    using names = std::vector<std::string>;
+    BOOST_TEST(names_of(report::figures_of(output().lib)) == (names{"billiard", "scatter_angle", "rough_beta_eff"}),
+               boost::test_tools::per_element());
+
+    // Eq. 8 alone: no figure, and no section that would hold one.
+    const engine::library line = subset({"inelastic_line"});
+    BOOST_TEST(report::figures_of(line).empty());
+    std::string tex = report::report_tex(line.in_order(), report::figures_of(line));
+    BOOST_TEST(tex.find("\\section{Figures}") == std::string::npos);
+    BOOST_TEST(tex.find("figures/") == std::string::npos);
+    BOOST_TEST(tex.find("sec:beyond") == std::string::npos);
+    BOOST_TEST(tex.find("\\title{General Collisions of Smooth Spheres") != std::string::npos);
+    BOOST_TEST(tex.find("compares every equation and claim of the paper with what is derived.") != std::string::npos);
+
+    // Eq. 14 (with Eq. 12, which it uses): Fig. 3 alone, numbered 3.
+    const engine::library scatter = subset({"billiard_transfer", "scatter_angle"});
+    BOOST_TEST(names_of(report::figures_of(scatter)) == names{"scatter_angle"}, boost::test_tools::per_element());
+    tex = report::report_tex(scatter.in_order(), report::figures_of(scatter));
+    BOOST_TEST(tex.find("recomputes the paper's Fig.~3 with") != std::string::npos);
+    BOOST_TEST(tex.find("\\setcounter{figure}{2}\n\\input{figures/scatter_angle}") != std::string::npos);
+    BOOST_TEST(tex.find("figures/billiard") == std::string::npos);
+
+    // The 3D collide is not the plane's: no billiard. The rough plane's kernel: its figure,
+    // in the chapter beyond the paper with the derivations that have no place in it.
+    const engine::library space = subset({"inelastic_line", "inelastic_space"});
+    BOOST_TEST(report::figures_of(space).empty());
+    const engine::library rough = subset({"inelastic_line", "rough_sticking", "rough_plane"});
+    BOOST_TEST(names_of(report::figures_of(rough)) == names{"rough_beta_eff"}, boost::test_tools::per_element());
+    tex = report::report_tex(rough.in_order(), report::figures_of(rough));
+    BOOST_TEST(tex.find("\\section{Figures}") == std::string::npos);
+    const auto beyond = tex.find("\\section{Beyond the paper: rough spheres}");
+    BOOST_TEST_REQUIRE(beyond != std::string::npos);
+    BOOST_TEST(tex.find("\\input{figures/rough_beta_eff}") > beyond);
+    BOOST_TEST(tex.find("\\input{latex/rough_plane}") > beyond);
+    BOOST_TEST(tex.find("\\input{latex/inelastic_line}") < beyond);
+}
+
+// A teacher's own folder (tests/examples: a spring, a pendulum, a thrown ball ...): a report
+// of its derivations, titled so, with none of the paper's figures or chapters; the claims of
+// the textbook one file transcribes held to account; it compiles.
+BOOST_AUTO_TEST_CASE(a_folder_of_ones_own_derivations_gets_a_report_of_its_own)
+{
+    BOOST_TEST_REQUIRE(report::have_pdflatex());
+    const engine::library lib = engine::derive_folder(IMPACT_SOURCE_DIR "/tests/examples");
+    const pipeline::file_set files = pipeline::generate(lib);
+    std::map<std::string, std::string> report;
+    BOOST_REQUIRE_NO_THROW(report = report::figures_and_report(lib, files));
+    for (const auto& [path, contents] : report)
+        BOOST_TEST(path.rfind("figures/", 0) != 0u, path);
+    BOOST_TEST(report.count("report.pdf") == 1u);
+    const std::string& tex = report.at("report.tex");
+    BOOST_TEST(tex.find("\\title{Derivations\\\\[0.3em]") != std::string::npos);
+    BOOST_TEST(tex.find("General Collisions") == std::string::npos);
+    BOOST_TEST(tex.find("Beyond the paper") == std::string::npos);
+    BOOST_TEST(tex.find("Figures") == std::string::npos);
+    const auto errata = tex.find("\\section{The paper, held to account}");
+    BOOST_TEST_REQUIRE(errata != std::string::npos);
+    BOOST_TEST(lib.order.size() == 6u);
+    for (const engine::derivation* d : lib.in_order())
+        BOOST_TEST(tex.find("\\input{latex/" + d->id() + "}") < errata, d->id());
 }
 
 BOOST_AUTO_TEST_CASE(a_latex_error_or_an_undefined_reference_is_caught)

@@ -281,17 +281,41 @@ void rough_figure(std::map<std::string, std::string>& files)
 
 } // namespace
 
-std::vector<std::string> figure_pictures()
+const std::vector<figure>& all_figures()
 {
-    return {"figures/billiard_plot", "figures/scatter_angle_plot", "figures/rough_beta_eff_plot"};
+    static const std::vector<figure> all = {{"billiard", "collide", 2, 2, billiard_figure},
+                                            {"scatter_angle", "scatter_angle", 0, 3, scatter_figure},
+                                            {"rough_beta_eff", "collide_rough", 2, 0, rough_figure}};
+    return all;
 }
 
-std::map<std::string, std::string> figure_files()
+std::vector<figure> figures_of(const engine::library& lib)
+{
+    const auto derived = [&](const figure& f) {
+        for (const engine::derivation* d : lib.in_order())
+            for (const engine::kernel& k : d->kernels) {
+                if (k.name != f.kernel)
+                    continue;
+                if (f.dimension == 0)
+                    return true;
+                for (const engine::kernel_parameter& p : k.parameters)
+                    if (p.components.size() == f.dimension)
+                        return true;
+            }
+        return false;
+    };
+    std::vector<figure> chosen;
+    for (const figure& f : all_figures())
+        if (derived(f))
+            chosen.push_back(f);
+    return chosen;
+}
+
+std::map<std::string, std::string> figure_files(const std::vector<figure>& figures)
 {
     std::map<std::string, std::string> files;
-    billiard_figure(files);
-    scatter_figure(files);
-    rough_figure(files);
+    for (const figure& f : figures)
+        f.draw(files);
     return files;
 }
 

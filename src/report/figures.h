@@ -8,22 +8,41 @@
 // so regenerating gives the same bytes.
 #pragma once
 
+#include "engine/library.h"
+
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
 
 namespace impact::report {
 
-/// Every figure file, by path relative to the output folder: `figures/*.dat`; the pgfplots
-/// pictures `figures/billiard_plot.tex` and `figures/scatter_angle_plot.tex` (each a
-/// tikzpicture reading its tables, sized for the report's text width); and
-/// `figures/billiard.tex` and `figures/scatter_angle.tex`, each a complete figure
-/// environment with caption and label (fig:billiard, fig:scatter-angle) that includes
-/// its picture compiled on its own (`figures/<name>_plot.pdf`, made by `compile_report`),
-/// so that the report is compiled without typesetting the plots again.
-std::map<std::string, std::string> figure_files();
+/// A figure of the report, plotted with a kernel compiled into Impact (generated from
+/// derivations/ when Impact was built).
+struct figure {
+    std::string name;        ///< `figures/<name>.tex`; its picture `figures/<name>_plot.tex`
+    std::string kernel;      ///< the kernel it plots
+    std::size_t dimension;   ///< the components of the kernel's vectors (2: the plane); 0 for scalars only
+    int paper_number;        ///< its number in the paper (Fig. 2); 0 beyond the paper
+    void (*draw)(std::map<std::string, std::string>& files);  ///< adds its files
+};
 
-/// The figures' pictures: the `figures/<name>_plot` of each figure, without `.tex`.
-std::vector<std::string> figure_pictures();
+/// The figures Impact draws: the paper's Figs. 2 (billiard, with `collide` in the plane)
+/// and 3 (scatter_angle), and the effective tangential restitution of rough spheres
+/// (`collide_rough` in the plane).
+const std::vector<figure>& all_figures();
+
+/// The figures of a library's report: those whose kernel the library derives (its name,
+/// and a vector parameter of as many components). A folder of one's own derivations gets
+/// none of the paper's figures, which plot the paper's kernels.
+std::vector<figure> figures_of(const engine::library& lib);
+
+/// Every file of `figures`, by path relative to the output folder: `figures/*.dat`; the
+/// pgfplots pictures `figures/<name>_plot.tex` (each a tikzpicture reading its tables,
+/// sized for the report's text width); and `figures/<name>.tex`, each a complete figure
+/// environment with caption and label (fig:billiard, fig:scatter-angle, fig:rough-beta-eff)
+/// that includes its picture compiled on its own (`figures/<name>_plot.pdf`, made by
+/// `compile_report`), so that the report is compiled without typesetting the plots again.
+std::map<std::string, std::string> figure_files(const std::vector<figure>& figures = all_figures());
 
 } // namespace impact::report

@@ -64,9 +64,9 @@ std::string compiled(const file_map& sources, const std::string& main, const std
 
 file_map report_sources(const engine::library& lib)
 {
-    file_map files = figure_files();
-    files["report.tex"] = report::report_tex(lib.in_order(), {"figures/billiard", "figures/scatter_angle"},
-                                              {"figures/rough_beta_eff"}, lib.outline ? &*lib.outline : nullptr);
+    const std::vector<figure> figures = figures_of(lib);
+    file_map files = figure_files(figures);
+    files["report.tex"] = report::report_tex(lib.in_order(), figures, lib.outline ? &*lib.outline : nullptr);
     return files;
 }
 
@@ -76,8 +76,12 @@ file_map compile_report(const file_map& sources, const compile_options& options)
         throw error({"report.tex", 0, 0}, "pdflatex is not installed; run scripts/setup.sh to install TeX Live");
     // Each picture with the tables it reads and nothing else, so that its PDF is kept
     // for as long as they are unchanged; the pictures are compiled side by side.
+    std::vector<std::string> names;  // figures/<name>_plot, each figure's picture among the sources
+    for (const auto& [path, contents] : sources)
+        if (path.rfind("figures/", 0) == 0 && path.size() > 9 && path.compare(path.size() - 9, 9, "_plot.tex") == 0)
+            names.push_back(path.substr(0, path.size() - 4));
     std::vector<std::future<std::string>> pictures;
-    for (const std::string& picture : figure_pictures()) {
+    for (const std::string& picture : names) {
         const std::string& text = sources.at(picture + ".tex");
         file_map own{{picture + ".tex", text}, {picture + "_document.tex", picture_document(picture)}};
         for (const auto& [path, contents] : sources)
@@ -90,7 +94,7 @@ file_map compile_report(const file_map& sources, const compile_options& options)
     }
     file_map out;
     for (std::size_t i = 0; i < pictures.size(); ++i)
-        out[figure_pictures()[i] + ".pdf"] = pictures[i].get();
+        out[names[i] + ".pdf"] = pictures[i].get();
 
     // The report reads the fragments, the figures and their pictures' PDFs; not the tables.
     file_map report;

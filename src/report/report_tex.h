@@ -3,6 +3,7 @@
 #pragma once
 
 #include "engine/derive.h"
+#include "report/figures.h"
 #include "spec/outline.h"
 
 #include <string>
@@ -10,14 +11,16 @@
 
 namespace impact::report {
 
-/// The report's LaTeX source. It \input's `latex/<id>.tex` for each derivation of the
-/// paper (in the order given) and each of `figures` (paths relative to the output folder,
-/// without `.tex`); then, in the chapter "Beyond the paper: rough spheres", the derivations
-/// that have no `paper` and `beyond_figures`; and it typesets the errata table from the
-/// derivations' paper comparisons, in the paper's order when `outline` gives it. The PDF
-/// it makes is the same bytes on every run (no dates, no trailer id).
-std::string report_tex(const std::vector<const engine::derivation*>& derivations,
-                       const std::vector<std::string>& figures, const std::vector<std::string>& beyond_figures,
+/// The report's LaTeX source. Where a derivation has a place in the paper (its `paper`),
+/// the paper's report: it \input's `latex/<id>.tex` for each derivation of the paper (in the
+/// order given) and the paper's `figures` (`figures/<name>`); then, in the chapter beyond the
+/// paper (on rough spheres when their figure is among `figures`), the derivations that have
+/// no `paper` and the figures the paper has not. Otherwise (a folder of one's own) a report
+/// of its derivations, titled so, with the figures it is given. The errata table, typeset
+/// from the derivations' comparisons in the paper's order when `outline` gives it, is there
+/// when some file transcribes a printed line or claim. The PDF it makes is the same bytes on
+/// every run (no dates, no trailer id).
+std::string report_tex(const std::vector<const engine::derivation*>& derivations, const std::vector<figure>& figures,
                        const spec::paper_outline* outline = nullptr);
 
 /// The preamble the report and the test documents share (packages, PDF determinism).
