@@ -160,6 +160,26 @@ BOOST_AUTO_TEST_CASE(a_failed_check_exits_one_and_leaves_output_untouched)
     BOOST_TEST((snapshot(s.root / "output") == before));
 }
 
+BOOST_AUTO_TEST_CASE(derive_and_latex_say_a_failed_check_on_standard_error)
+{
+    // y = 2x, claimed 3x: derive lists it among the checks on standard output, and says it
+    // on standard error as regenerate does (file, line of the claim, what it came to).
+    const scratch s(files::none);
+    s.write("zz_bad.toml", valid_prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                                          "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"
+                                          "[[check]]\nname = \"wrong\"\nclaim = \"y = 3*x\"\n");
+    const std::string file = (s.root / "derivations" / "zz_bad.toml").string();
+    for (const char* command : {" derive ", " latex "}) {
+        // Standard error alone (run_command adds 2>&1 after the group).
+        const run_result said = impact::testing::run_command("{ " + std::string(IMPACT_BINARY) + command + file +
+                                                             " 2>&1 >/dev/null; }");
+        BOOST_TEST(said.status == 1, command);
+        BOOST_TEST(said.output == file + ":18:9: error: check failed: bad: wrong: residual -x\n", command + said.output);
+    }
+    const run_result listed = run("derive " + file);
+    BOOST_TEST(listed.output.find("failed             wrong: y = 3*x") != std::string::npos, listed.output);
+}
+
 BOOST_AUTO_TEST_CASE(derive_prints_eq8_results_and_proven_checks)
 {
     const run_result r = run("derive inelastic_line --derivations " + (source_dir / "derivations").string());

@@ -135,12 +135,24 @@ int run_regenerate(const options& o)
     return 0;
 }
 
+// A check that failed, said on standard error too (file, line, what it came to), as
+// `regenerate` says it: a script that reads only the exit status and standard error, or a
+// reader of a long listing, sees which.
+int failures_said(const engine::library& lib, const engine::derivation& d)
+{
+    if (d.all_hold())
+        return 0;
+    for (const std::string& failure : pipeline::failed_checks(lib))
+        fmt::print(stderr, "{}\n", failure);
+    return exit_failed_check;
+}
+
 int run_derive(const options& o)
 {
     const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
     fmt::print("{}", emit::terminal_text(d));
-    return d.all_hold() ? 0 : exit_failed_check;
+    return failures_said(lib, d);
 }
 
 int run_latex(const options& o)
@@ -161,7 +173,7 @@ int run_latex(const options& o)
         fmt::print("{}", fragment);
     else
         print_kept(pipeline::add_to_folder(folder, {{file.filename().string(), fragment}}, o.force), folder);
-    return d.all_hold() ? 0 : exit_failed_check;
+    return failures_said(lib, d);
 }
 
 int run_kernels(const options& o)
