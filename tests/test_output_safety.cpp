@@ -19,6 +19,7 @@
 #include <csignal>
 #include <cstring>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -417,12 +418,17 @@ BOOST_AUTO_TEST_CASE(a_full_disk_is_an_error_and_the_output_survives)
     BOOST_TEST_REQUIRE(can_mount(), "this machine does not let a test mount a small disk (unshare -rm)");
     project p;
     BOOST_TEST_REQUIRE(p.impact("regenerate").status == 0);
-    // A disk of 768 KiB holding the previous output (about 570 KiB on a tmpfs, the report and
-    // its three figures' PDFs included): the new one, written beside it, cannot fit. What the
-    // disk holds after is copied out.
+    // A disk half again as large as the previous output (its files in 4 KiB pages, as a tmpfs
+    // holds them: about 130 KiB here, the report's PDF most of it), holding it: the new one,
+    // written beside it, cannot fit. What the disk holds after is copied out.
+    std::uintmax_t pages = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(p.root / "output"))
+        if (entry.is_regular_file())
+            pages += (entry.file_size() + 4095) / 4096;
+    const std::uintmax_t disk_kib = std::max<std::uintmax_t>(64, (pages * 3 / 2 + 1) * 4);
     fs::create_directories(p.root / "disk");
     const std::string script =
-        "mount -t tmpfs -o size=768k tmpfs disk && cp -a output disk/ && "
+        "mount -t tmpfs -o size=" + std::to_string(disk_kib) + "k tmpfs disk && cp -a output disk/ && "
         "(cd disk && " + std::string(IMPACT_BINARY) + " regenerate --derivations ../derivations; "
         "echo \"exit $?\") > result.txt 2>&1; cp -a disk/. after/";
     fs::create_directories(p.root / "after");

@@ -33,8 +33,9 @@ std::string kernel_header(const engine::derivation& d, const std::vector<const k
 /// kernel takes arrays of N components; the derivation's id when it has several kernels.
 std::string kernel_header_name(const engine::derivation& d);
 
-/// `impact/common.hpp`: the status enum and the structures array kernels share.
-std::string common_header(const std::vector<const kernel_plan*>& plans);
+/// `impact/common.hpp`: the status enum and the structures array kernels share; its banner
+/// names `folder`, the derivation files' (engine::source_folder).
+std::string common_header(const std::vector<const kernel_plan*>& plans, const std::string& folder);
 
 /// The umbrella header `impact/impact.hpp` including every kernel header.
 std::string umbrella_header(const std::vector<const engine::derivation*>& with_kernels);

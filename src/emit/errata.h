@@ -77,6 +77,11 @@ struct paper_count {
 };
 paper_count count_paper(const std::vector<const engine::derivation*>& derivations);
 
+/// True where a derivation has a place in the paper (a top-level `paper`): the errata and
+/// the report are then the paper's; otherwise those of a folder of one's own, which speak
+/// of "the text" its files transcribe (a textbook's claims, say), not of the paper.
+bool of_the_paper(const std::vector<const engine::derivation*>& derivations);
+
 /// " Not compared: <place> (<why>); <place> (<why>)." for the lines `n` counts as not
 /// compared, each place and reason set by `place` and `why` (plain, or LaTeX); empty when
 /// every line is compared.

@@ -12,7 +12,8 @@
 
 namespace impact::emit {
 
-/// `output/verification.md`.
-std::string verification_markdown(const std::vector<const verify::kernel_plan*>& plans);
+/// `output/verification.md`; its banner names `folder`, the derivation files' (engine::source_folder).
+std::string verification_markdown(const std::vector<const verify::kernel_plan*>& plans,
+                                  const std::string& folder);
 
 } // namespace impact::emit

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 #include <iterator>
 #include <set>
@@ -1371,8 +1372,30 @@ private:
 
 std::string derivation::source_name() const
 {
-    const auto slash = source.file.find_last_of('/');
-    return "derivations/" + (slash == std::string::npos ? source.file : source.file.substr(slash + 1));
+    return folder_and_file_name(source.file);
+}
+
+std::string source_folder(const std::vector<const derivation*>& derivations)
+{
+    if (derivations.empty())
+        return "derivations/";
+    const std::string name = derivations.front()->source_name();
+    const auto slash = name.find_last_of('/');
+    return slash == std::string::npos ? std::string() : name.substr(0, slash + 1);
+}
+
+std::string folder_and_file_name(const std::filesystem::path& file)
+{
+    const std::filesystem::path folder = file.parent_path();
+    std::string name = folder.filename().string();
+    if (name.empty() || name == "." || name == "..") {
+        // `x.toml`, `./x.toml`, `../x.toml`: the folder's name is its full path's last part.
+        std::error_code failed;
+        const std::filesystem::path full = std::filesystem::weakly_canonical(
+            folder.empty() ? std::filesystem::current_path(failed) : folder, failed);
+        name = failed ? std::string() : full.filename().string();
+    }
+    return name.empty() ? file.filename().string() : name + "/" + file.filename().string();
 }
 
 std::vector<GiNaC::ex> kernel::input_symbols() const

@@ -20,6 +20,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -272,8 +273,9 @@ struct derivation {
     std::vector<kernel> kernels;
 
     const std::string& id() const { return source.id.value; }
-    /// `derivations/<file name>`: how generated files name their source, whatever the
-    /// folder the file was read from.
+    /// `<folder>/<file name>`, the folder by its own name (`derivations/eq08_inelastic_line.toml`,
+    /// `mine/spring.toml`): how generated files name their source, the same bytes whatever the
+    /// path the file was given by (relative, absolute, from another working folder).
     std::string source_name() const;
     const result* find_result(const std::string& name) const;
     /// Every step check, display proof and check holds (proven or sampled).
@@ -281,6 +283,16 @@ struct derivation {
     /// Every check of the derivation, steps first, in order.
     std::vector<const check_result*> all_checks() const;
 };
+
+/// `<folder>/<file name>` of a derivation file, its folder by its own name whatever the path
+/// gives (`../../derivations/x.toml`, `/home/u/derivations/x.toml`, `x.toml` run in
+/// derivations/: `derivations/x.toml`); the file name alone where the folder has none (/).
+std::string folder_and_file_name(const std::filesystem::path& file);
+
+/// `<folder>/` of the derivation files a set of derivations was read from, named as
+/// folder_and_file_name names it (a regeneration reads one folder): what files generated
+/// from them all say they come from. `derivations/` for none.
+std::string source_folder(const std::vector<const derivation*>& derivations);
 
 /// Derivations already run, by id, for `[[use]]`.
 using derived_by_id = std::map<std::string, derivation>;

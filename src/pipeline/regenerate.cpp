@@ -45,9 +45,10 @@ private:
 };
 
 // The key of a whole regeneration: Impact's executable, the TeX installation, and each
-// derivation file's name and meaningful content. A comment changes nothing Impact writes
-// (no file it writes names a line of a derivation file), so a regeneration after one is
-// the one before it. None when a file is not TOML: deriving reports it.
+// derivation file's name (with its folder's, which the generated files name) and meaningful
+// content. A comment changes nothing Impact writes (no file it writes names a line of a
+// derivation file), so a regeneration after one is the one before it. None when a file is
+// not TOML: deriving reports it.
 std::optional<std::string> output_key(const fs::path& derivations, const std::optional<spec::paper_outline>& outline)
 {
     if (!fs::is_directory(derivations))
@@ -61,7 +62,7 @@ std::optional<std::string> output_key(const fs::path& derivations, const std::op
         const std::optional<std::string> content = spec::meaningful_content(text.str());
         if (!in || !content)
             return std::nullopt;
-        key += fmt::format("{} {}\n{}\n", path.filename().string(), content->size(), *content);
+        key += fmt::format("{} {}\n{}\n", engine::folder_and_file_name(path), content->size(), *content);
     }
     // The paper's order of places orders the errata: its places, not its comments.
     if (outline) {
@@ -237,7 +238,7 @@ std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwa
     std::vector<const verify::kernel_plan*> all;
     for (const verify::kernel_plan& p : plans)
         all.push_back(&p);
-    files["verification.md"] = emit::verification_markdown(all);
+    files["verification.md"] = emit::verification_markdown(all, engine::source_folder(lib.in_order()));
     clock.lap("verification report (numeric)");
     return verify::missed_bounds(plans);
 }
