@@ -328,6 +328,27 @@ BOOST_AUTO_TEST_CASE(a_kernel_whose_inputs_do_not_cover_its_outputs)
                    "among its inputs");
 }
 
+BOOST_AUTO_TEST_CASE(a_kernel_input_the_derivation_derives)
+{
+    // y = 2x is derived: a kernel of inputs x and y would compute y2 = y from x alone and
+    // never read its y (it emitted `k(x, y)` returning 2*x).
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                            "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"
+                            "[[kernel]]\nname = \"k\"\ninputs = [\"x\", \"y\"]\noutputs = [\"z = y\"]\n",
+                   "derivations/bad.toml:21:16: error: kernel 'k': input 'y' is derived here (y = 2*x), so its "
+                   "outputs are computed from what it is derived from and would never read it; list those "
+                   "quantities as inputs instead");
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_whose_header_is_one_the_kernels_share)
+{
+    // A kernel named common was written over by impact/common.hpp, its function lost.
+    std::string named = good("a");
+    named.replace(named.find("name = \"a_y\""), 12, "name = \"common\"");
+    expect_refused(named, "derivations/bad.toml: error: the kernels of derivation 'a' would be written to "
+                          "kernels/impact/common.hpp, which holds what the kernels share; give its kernel another name");
+}
+
 BOOST_AUTO_TEST_CASE(two_derivations_whose_kernels_would_share_a_header)
 {
     // good() names its kernel <id>_y; b's is renamed a_y, as a's is.
@@ -392,6 +413,15 @@ BOOST_AUTO_TEST_CASE(a_definition_outside_its_symbols_domain)
     expect_refused(derived + "[[symbol]]\nname = \"w\"\ndomain = \"[0, 1]\"\ndefinition = \"3/2\"\n",
                    "derivations/bad.toml:22:14: error: 'w' is declared [0, 1] but its definition 3/2 is 1.5, "
                    "outside it");
+}
+
+BOOST_AUTO_TEST_CASE(a_special_value_of_a_derived_quantity)
+{
+    // y = 2x is derived: `at = { y = "0" }` changed nothing in the claim y = 0, written in x,
+    // and the check failed with residual 2*x as if y = 0 had been tried.
+    expect_refused(derived + "[[check]]\nname = \"c\"\nclaim = \"y = 0\"\nat = { y = \"0\" }\n",
+                   "derivations/bad.toml:22:8: error: check 'c': at gives 'y' a value, but a step derives it; "
+                   "change the quantities it is derived from");
 }
 
 BOOST_AUTO_TEST_CASE(a_definition_that_uses_its_own_symbol)

@@ -185,7 +185,10 @@ std::map<std::string, std::string> kernel_files(const engine::library& lib,
                                                 const std::vector<verify::kernel_plan>& plans)
 {
     std::map<std::string, std::string> files;
-    std::map<std::string, std::string> written_by;   // header → the derivation it is for
+    // Each header, and what it holds: a derivation's kernels, or the headers they share.
+    std::map<std::string, std::string> written_by = {
+        {"kernels/impact/common.hpp", "which holds what the kernels share"},
+        {"kernels/impact/impact.hpp", "which includes every kernel"}};
     std::vector<const engine::derivation*> with_kernels;
     std::vector<const verify::kernel_plan*> all;
     std::size_t next = 0;
@@ -202,10 +205,10 @@ std::map<std::string, std::string> kernel_files(const engine::library& lib,
         const std::string header = "kernels/impact/" + kernel_header_name(*d);
         if (const auto taken = written_by.find(header); taken != written_by.end())
             throw error({d->source.file, 0, 0},
-                        fmt::format("the kernels of derivation '{}' would be written to {}, as those of '{}' are; "
-                                    "give its kernel another name",
+                        fmt::format("the kernels of derivation '{}' would be written to {}, {}; give its kernel "
+                                    "another name",
                                     d->id(), header, taken->second));
-        written_by[header] = d->id();
+        written_by[header] = fmt::format("as those of '{}' are", d->id());
         files[header] = kernel_header(*d, own);
     }
     files["kernels/impact/common.hpp"] = common_header(all, engine::source_folder(lib.in_order()));

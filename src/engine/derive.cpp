@@ -174,6 +174,18 @@ private:
                                                    where, written.value));
     }
 
+    // A derived quantity is not an input: its value follows from theirs, and a value put in
+    // its place (`at`, `left_at`) would change nothing in the claim, whose sides are written
+    // in the inputs.
+    void refuse_derived_value(const GiNaC::ex& symbol, const spec::binding& b, const std::string& check,
+                              const char* field) const
+    {
+        if (values_.count(symbol) || cases_.count(symbol))
+            throw error(b.name.where, fmt::format("check '{}': {} gives '{}' a value, but a step derives it; "
+                                                  "change the quantities it is derived from",
+                                                  check, field, b.name.value));
+    }
+
     engine::resolver resolver() const
     {
         return [this](const GiNaC::ex& e) { return resolve(e); };
@@ -529,11 +541,7 @@ private:
         moved_places placed;
         for (const spec::binding& b : spec_check.left_at) {
             const GiNaC::ex symbol = out_.symbols.at(b.name).symbol;
-            // A derived quantity is not an input: its value follows from theirs.
-            if (values_.count(symbol) || cases_.count(symbol))
-                throw error(b.name.where, fmt::format("check '{}': left_at gives '{}' a value, but a step derives it; "
-                                                      "change the quantities it is derived from",
-                                                      c.name, b.name.value));
+            refuse_derived_value(symbol, b, c.name, "left_at");
             left_at[symbol] = out_.symbols.parse(b.expression);
             refuse_derivative(left_at[symbol], b.expression, "left_at's value");
             c.left_at.emplace_back(symbol, left_at[symbol]);
@@ -578,6 +586,7 @@ private:
         placed.clear();
         for (const spec::binding& b : spec_check.at) {
             const quantity& q = out_.symbols.at(b.name);
+            refuse_derived_value(q.symbol, b, c.name, "at");
             at[q.symbol] = out_.symbols.parse(b.expression);
             refuse_derivative(at[q.symbol], b.expression, "at's value");
             check_special_value(q, at[q.symbol], b.expression.where);

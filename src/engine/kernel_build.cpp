@@ -263,7 +263,16 @@ public:
         auto add_input = [&](const spec::text& name) {
             if (!seen.insert(name.value).second)
                 throw error(name.where, fmt::format("kernel '{}' lists input '{}' twice", k.name, name.value));
-            return d_.symbols.at(name);
+            const quantity& q = d_.symbols.at(name);
+            // A quantity the derivation derives (or defines) is replaced by its value in the
+            // outputs: the kernel would take it and never read it.
+            const GiNaC::ex value = resolve_(q.symbol);
+            if (!value.is_equal(q.symbol))
+                throw error(name.where, fmt::format("kernel '{}': input '{}' is derived here ({} = {}), so its outputs "
+                                                    "are computed from what it is derived from and would never read "
+                                                    "it; list those quantities as inputs instead",
+                                                    k.name, name.value, name.value, d_.symbols.text(value)));
+            return q;
         };
         for (const spec::kernel_value& input : spec_kernel.inputs) {
             kernel_parameter p;
