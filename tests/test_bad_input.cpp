@@ -415,6 +415,29 @@ BOOST_AUTO_TEST_CASE(a_definition_outside_its_symbols_domain)
                    "outside it");
 }
 
+BOOST_AUTO_TEST_CASE(a_use_whose_results_are_named_wrongly)
+{
+    // a derives y = 2*x (positive x); b imports it. Each mistake below derived on, to checks
+    // failing with residuals far from the mistake, or imported nothing at all.
+    const std::string a = good("a");
+    const auto with = [](const std::string& results) {
+        return "id = \"b\"\ntitle = \"b\"\n[[use]]\nderivation = \"a\"\nresults = [" + results +
+               "]\n[[symbol]]\nname = \"w\"\n[[result]]\nname = \"w\"\n";
+    };
+    // Named after a symbol of its own value: y = 2*x imported as x would be x = 2*x.
+    expect_refused({{"a.toml", a}, {"b.toml", with("\"x = y\"")}},
+                   "derivations/b.toml:5:12: error: results entry \"x = y\": y = 2*x is written in 'x' itself; "
+                   "import it under another name");
+    // One name for two results: the second won.
+    expect_refused({{"a.toml", a}, {"b.toml", with("\"w = y\", \"w = y\"")}},
+                   "derivations/b.toml:5:21: error: 'w' is imported twice (as y, then as y); give each result a "
+                   "name of its own");
+    // Not a name: `w := y` imported nothing, and w stayed a free symbol.
+    expect_refused({{"a.toml", a}, {"b.toml", with("\"w := y\"")}},
+                   "derivations/b.toml:5:12: error: 'w :' is not a name to import a result under (letters, digits "
+                   "and _); write \"name = result\"");
+}
+
 BOOST_AUTO_TEST_CASE(a_special_value_of_a_derived_quantity)
 {
     // y = 2x is derived: `at = { y = "0" }` changed nothing in the claim y = 0, written in x,

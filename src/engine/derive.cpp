@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
@@ -209,6 +210,20 @@ private:
                         fmt::format("uses derivation '{}', which does not exist", u.derivation.value));
         const derivation& other = found->second;
         for (const spec::binding& b : u.results) {
+            const std::string& name = b.name.value;
+            const bool a_name = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+                                std::all_of(name.begin(), name.end(), [](char c) {
+                                    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                                });
+            if (!a_name)
+                throw error(b.name.where, fmt::format("'{}' is not a name to import a result under (letters, digits "
+                                                      "and _); write \"name = result\"",
+                                                      name));
+            if (const auto earlier = imported_.find(name); earlier != imported_.end())
+                throw error(b.name.where, fmt::format("'{}' is imported twice (as {}, then as {}); give each result "
+                                                      "a name of its own",
+                                                      name, earlier->second, b.expression.value));
+            imported_.emplace(name, b.expression.value);
             const result* r = other.find_result(b.expression.value);
             if (!r)
                 throw error(b.expression.where, fmt::format("derivation '{}' has no result '{}'",
@@ -225,7 +240,14 @@ private:
                 q.where = b.name.where;
                 local = &out_.symbols.adopt(q);
             }
-            set_value(local->symbol, r->value.subs(rename));
+            // Named after a symbol its own value is written in, it would stand for itself.
+            const GiNaC::ex value = r->value.subs(rename);
+            if (value.has(local->symbol))
+                throw error(b.name.where, fmt::format("results entry \"{} = {}\": {} = {} is written in '{}' itself; "
+                                                      "import it under another name",
+                                                      name, b.expression.value, b.expression.value,
+                                                      out_.symbols.text(value), name));
+            set_value(local->symbol, value);
         }
     }
 
@@ -1375,6 +1397,7 @@ private:
     GiNaC::exmap values_;
     std::map<GiNaC::ex, std::vector<case_value>, GiNaC::ex_is_less> cases_;   ///< quantities defined by cases
     mutable std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> resolved_;
+    std::map<std::string, std::string> imported_;   ///< the names [[use]]s gave, and the results they name
 };
 
 } // namespace
