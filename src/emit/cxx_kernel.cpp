@@ -96,12 +96,17 @@ void print_guards_documentation(std::string& out, const engine::derivation& d, c
         return;
     const bool others = std::any_of(k.outputs.begin(), k.outputs.end(),
                                     [&](const engine::kernel_output& o) { return !k.find_parameter(o.member); });
+    const bool same = std::any_of(k.outputs.begin(), k.outputs.end(),
+                                  [&](const engine::kernel_output& o) { return k.find_parameter(o.member) != nullptr; });
     if (returns_scalar(k))
         out += "/// A quiet NaN when the inputs are refused, for the first of these reasons that applies:\n";
     else
-        out += fmt::format("/// When the inputs allow no collision, `status` says why, the first of these that\n"
-                           "/// applies, and the velocities are returned unchanged{}:\n",
-                           others ? " (the other outputs 0)" : "");
+        out += fmt::format("/// When the inputs are refused (a collision's: they allow none), `status` says why,\n"
+                           "/// the first of these that applies, and {}:\n",
+                           same && others ? "each output named\n/// after an input is that input (a velocity unchanged), "
+                                            "the others 0"
+                           : same         ? "each output is the\n/// input it is named after (the velocities unchanged)"
+                                          : "the outputs are 0");
     for (const engine::kernel_guard& g : k.guards)
         out += fmt::format("///   {}: {}\n", g.status, guard_meaning(d, k, g));
     out += fmt::format("///   {}: the values leave the type's range ({}{}a result not finite).\n", out_of_range,

@@ -237,7 +237,8 @@ IMPACT_ALWAYS_INLINE T blend(std::int64_t chosen, T x, T other) noexcept
 
 namespace impact {
 
-/// Why a kernel resolved no collision; `ok` when it did.
+/// Why a kernel refused its inputs (a collision's: why it resolved none); `ok` when it
+/// computed its outputs.
 /// As wide as a double, so that a vectorised batch loop over doubles keeps one
 /// width in every lane: with a narrower status, compilers pack two vectors of
 /// doubles per vector of statuses, and the loop runs short of registers.
