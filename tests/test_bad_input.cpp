@@ -139,6 +139,26 @@ BOOST_AUTO_TEST_CASE(a_missing_required_field)
                    "derivations/bad.toml:10:1: error: [[given]] is missing the required field 'equation'");
 }
 
+BOOST_AUTO_TEST_CASE(an_expression_with_a_character_beyond_ascii)
+{
+    // v² was "expected EOF, got: \"\xC2\"", half of the character.
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y² = x\"\nbecause = \"b\"\n[[result]]\nname = \"y\"\n",
+                   "derivations/bad.toml:12:13: error: expression \"y²\" holds '²', which expressions do not "
+                   "use: write names in letters, digits and _ (eps, not ε; its latex sets how it is typeset), powers "
+                   "with ^ (v^2), products with *, minus as -");
+}
+
+BOOST_AUTO_TEST_CASE(a_required_field_misspelt)
+{
+    // Said where the typo stands: they were said as missing, at the table's first line.
+    expect_refused("id = \"bad\"\ntitel = \"a bad derivation\"\n",
+                   "derivations/bad.toml:2:1: error: unknown field 'titel' in the derivation, which is missing the "
+                   "required field 'title': misspelt?");
+    expect_refused(prefix + "[[given]]\nname = \"g\"\nequation = \"y = x\"\nbecuase = \"b\"\n",
+                   "derivations/bad.toml:13:1: error: unknown field 'becuase' in [[given]], which is missing the "
+                   "required field 'because': misspelt?");
+}
+
 BOOST_AUTO_TEST_CASE(a_quote_of_the_paper_without_the_form_it_reads)
 {
     // `quote` is the paper's own text of a `printed` form: alone it compares nothing.
@@ -608,6 +628,29 @@ BOOST_AUTO_TEST_CASE(a_regime_that_sets_a_vector_is_refused_at_its_place_when_no
                    "derivations/bad.toml:25:10: error: '[a_x, ]' has an empty component");
     expect_refused(vec + "ratio = [\"[(a_x, a_y]\", \"1\"]\nfrom = 1\nto = 10\n",
                    "derivations/bad.toml:25:10: error: '[(a_x, a_y]' has unbalanced brackets");
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_that_refuses_samples_is_told_a_form_not_a_bound)
+{
+    // sqrt(1 - s^2) with s near 1: refused where its float arithmetic leaves the range. The
+    // message said "a divisor below detail::smallest_divisor" (it has none) and advised a
+    // larger bound, which admits no refused sample.
+    const scratch s;
+    s.write("derivations/root.toml", "id = \"root\"\ntitle = \"a root that cancels\"\n"
+                                     "[[symbol]]\nname = \"s\"\ndomain = \"(0, 1)\"\n[[symbol]]\nname = \"y\"\n"
+                                     "[[step]]\ndefine = \"y\"\nas = \"sqrt(1 - s^2)\"\n[[result]]\nname = \"y\"\n"
+                                     "[[kernel]]\nname = \"root\"\ninputs = [\"s\"]\noutputs = [\"y = y\"]\n"
+                                     "guards = [\"invalid_input = s\"]\n");
+    const run_result r = s.impact("kernels --derivations derivations --output kernels_out");
+    BOOST_TEST(r.status == 1, r.output);
+    static const std::regex refused(
+        "derivations/root\\.toml:14:8: error: kernel 'root': output 'y' misses its bound in float: it refuses "
+        "[0-9]+ of 4200 samples as out_of_range \\(.*an argument outside its function's domain.*first in the regime "
+        "'s near 1'\\); a bound admits no refused sample: give a form that stays in range where they were drawn "
+        "\\(forms = \\[\\.\\.\\.\\]; a difference that cancels under a square root, 1 - s\\^2, written "
+        "\\(1 - s\\)\\*\\(1 \\+ s\\)\\)");
+    BOOST_TEST(std::regex_match(lines_of(r.output).front(), refused), r.output);
+    BOOST_TEST(!s.has("kernels_out"));
 }
 
 BOOST_AUTO_TEST_CASE(a_kernel_that_misses_its_accuracy_bound_fails_the_regeneration)

@@ -396,6 +396,19 @@ GiNaC::ex symbol_table::parse(const spec::text& text) const
         return known->second;
     if (text.value.find_first_not_of(" \t\r\n") == std::string::npos)
         throw error(text.where, "empty expression");
+    // A character beyond ASCII (v², ε, ·, −): the parser would name half of it.
+    if (const auto beyond = std::find_if(text.value.begin(), text.value.end(),
+                                         [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
+        beyond != text.value.end()) {
+        std::size_t end = static_cast<std::size_t>(beyond - text.value.begin()) + 1;
+        while (end < text.value.size() && (static_cast<unsigned char>(text.value[end]) & 0xC0) == 0x80)
+            ++end;   // the rest of its UTF-8 bytes
+        const std::size_t at = static_cast<std::size_t>(beyond - text.value.begin());
+        throw error(text.where, fmt::format("expression \"{}\" holds '{}', which expressions do not use: write "
+                                            "names in letters, digits and _ (eps, not ε; its latex sets how it is "
+                                            "typeset), powers with ^ (v^2), products with *, minus as -",
+                                            text.value, text.value.substr(at, end - at)));
+    }
     refuse_deep_nesting(text.where, text.value);
     const std::string exact = exact_decimals(text.value);
     const number_bounds bounds(table_, exact);

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <string>
@@ -49,7 +50,7 @@ public:
     {
         const toml::node* node = find(key);
         if (!node)
-            throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
+            missing(key);
         return as_text(*node, key);
     }
 
@@ -73,7 +74,7 @@ public:
         const toml::node* node = find(key);
         if (!node) {
             if (required)
-                throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
+                missing(key);
             return {};
         }
         const toml::array* array = node->as_array();
@@ -141,7 +142,7 @@ public:
     {
         const toml::node* node = find(key);
         if (!node)
-            throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
+            missing(key);
         if (const auto value = node->value<double>())
             return *value;
         throw error(location_of(file_, node->source()), fmt::format("'{}' in {} must be a number", key, context_));
@@ -181,6 +182,38 @@ public:
     }
 
 private:
+    // A required field not there: said where a key spelt nearly so stands (`titel` for
+    // `title`, `becuase`), else at the table.
+    [[noreturn]] void missing(std::string_view key) const
+    {
+        for (const auto& [other, value] : table_)
+            if (!read_.count(std::string(other.str())) && key.size() >= 4 && nearly(other.str(), key))
+                throw error(location_of(file_, other.source()),
+                            fmt::format("unknown field '{}' in {}, which is missing the required field '{}': "
+                                        "misspelt?",
+                                        other.str(), context_, key));
+        throw error(where(), fmt::format("{} is missing the required field '{}'", context_, key));
+    }
+
+    // At most two letters changed, added, dropped or swapped with the next.
+    static bool nearly(std::string_view a, std::string_view b)
+    {
+        if (a.size() + 2 < b.size() || b.size() + 2 < a.size())
+            return false;
+        std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+        for (std::size_t i = 0; i <= a.size(); ++i)
+            d[i][0] = i;
+        for (std::size_t j = 0; j <= b.size(); ++j)
+            d[0][j] = j;
+        for (std::size_t i = 1; i <= a.size(); ++i)
+            for (std::size_t j = 1; j <= b.size(); ++j) {
+                d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+                if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                    d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+            }
+        return d[a.size()][b.size()] <= 2;
+    }
+
     const toml::node* find(std::string_view key)
     {
         read_.insert(std::string(key));

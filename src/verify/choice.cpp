@@ -473,7 +473,9 @@ std::string worst_of(const accuracy& a)
 {
     if (a.refused > 0)
         return fmt::format("it refuses {} of {} samples as out_of_range (a divisor below "
-                           "detail::smallest_divisor or infinite; first in the regime '{}')",
+                           "detail::smallest_divisor or infinite, an argument outside its function's domain, such "
+                           "as a square root's below 0 by rounding, or a result not finite; first in the regime "
+                           "'{}')",
                            a.refused, a.samples, a.first_refused_regime);
     return fmt::format("{:.3g} ulps at worst ({})", a.max_ulps, a.worst_regime);
 }
@@ -504,7 +506,15 @@ std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
                         worst = t;
                 if (worst == 3)
                     continue;
-                if (fast)
+                // A refused sample is no error a bound admits: the form must stay in range.
+                const std::string refusing =
+                    "; a bound admits no refused sample: give a form that stays in range where they were drawn "
+                    "(forms = [...]; a difference that cancels under a square root, 1 - s^2, written (1 - s)*(1 + s))";
+                if (measured[worst]->refused > 0)
+                    missed.push_back(fmt::format("{}: error: kernel '{}': output '{}' misses its {}bound in {}: {}{}",
+                                                 to_string(k.where), k.name, cp.name, fast ? "fast " : "",
+                                                 types[worst], worst_of(*measured[worst]), refusing));
+                else if (fast)
                     missed.push_back(fmt::format(
                         "{}: error: kernel '{}': output '{}' misses its fast bound of {:g} ulps in {}: {}, in the "
                         "fast form's candidate ({}, {}); give a cheaper form that is accurate "
