@@ -224,7 +224,17 @@ BOOST_AUTO_TEST_CASE(a_domain_that_is_not_understood)
 {
     expect_refused(prefix + "[[symbol]]\nname = \"w\"\ndomain = \"sometimes\"\n[[result]]\nname = \"y\"\n",
                    "derivations/bad.toml:12:10: error: domain 'sometimes' is not understood; write real, "
-                   "positive, nonnegative, an interval such as [0, 1], or [0, +inf]");
+                   "positive, nonnegative, an interval such as [0, 1] (its ends integers, decimals or fractions: "
+                   "1000, not 1e3), [0, +inf] or (0, +inf)");
+}
+
+BOOST_AUTO_TEST_CASE(a_domain_below_zero_is_declared_by_its_magnitude)
+{
+    for (const char* below : {"negative", "(-inf, 0)", "[-inf, 0]", "nonpositive"})
+        expect_refused(prefix + "[[symbol]]\nname = \"w\"\ndomain = \"" + below + "\"\n[[result]]\nname = \"y\"\n",
+                       "derivations/bad.toml:12:10: error: domain '" + std::string(below) +
+                           "': a quantity below 0 is declared by its magnitude, positive (or nonnegative), and "
+                           "written with its sign where it is used (a depth d, positive, at height -d)");
 }
 
 BOOST_AUTO_TEST_CASE(a_singular_system)

@@ -144,6 +144,19 @@ BOOST_AUTO_TEST_CASE(a_rational_function_of_one_symbol_is_proven_factor_by_facto
     BOOST_TEST((verdict_of("(b^3 - b + 1)/(b^4 + b - 1) < 0").what != engine::verdict::status::proven));
 }
 
+BOOST_AUTO_TEST_CASE(domains_up_to_infinity_read_as_the_words_for_them)
+{
+    using kind = engine::domain::kind;
+    const auto read = [](const char* text) { return engine::parse_domain(text, {}); };
+    BOOST_TEST((read("(0, +inf)").what == kind::positive));
+    BOOST_TEST(!read("(0, +inf)").infinity_included);
+    BOOST_TEST((read("[0, inf)").what == kind::nonnegative));
+    BOOST_TEST(!read("[0, inf)").infinity_included);
+    BOOST_TEST((read("[0, +inf]").what == kind::nonnegative));
+    BOOST_TEST(read("[0, +inf]").infinity_included);
+    BOOST_TEST((read("(-inf, +inf)").what == kind::real));
+}
+
 BOOST_AUTO_TEST_CASE(sturms_theorem_counts_only_roots_of_odd_multiplicity)
 {
     // (x - 1/2)^2 (x + 2), expanded: x + 2 has no root in (0, 1), so the polynomial is

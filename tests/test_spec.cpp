@@ -117,6 +117,18 @@ BOOST_AUTO_TEST_CASE(kernel_lists_guards_error_scales_and_limits_are_read_into_p
     BOOST_TEST(!d.checks.at(2).limit->to_infinity);
 }
 
+BOOST_AUTO_TEST_CASE(a_limit_to_infinity_is_written_as_domains_write_it_too)
+{
+    // `h -> inf` read as a symbol inf, undeclared, though domains write +inf.
+    for (const char* point : {"infinity", "oo", "inf", "+inf", "+infinity"}) {
+        const std::string text = "id = \"t\"\ntitle = \"t\"\n[[symbol]]\nname = \"x\"\n[[result]]\nname = \"x\"\n"
+                                 "[[check]]\nname = \"l\"\nclaim = \"x = 0\"\nlimit = \"x -> " + std::string(point) + "\"\n";
+        const auto d = parse_derivation(text, "t.toml");
+        BOOST_TEST(d.checks.at(0).limit->to_infinity, point);
+        BOOST_TEST(d.checks.at(0).limit->point.value.empty(), point);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(a_limit_list_or_error_scale_that_is_not_understood_is_refused_at_its_place)
 {
     auto refused = [](const std::string& extra, const std::string& message) {

@@ -149,21 +149,33 @@ domain parse_domain(const std::string& text, const source_location& where)
         d.what = domain::kind::nonnegative;
         return d;
     }
-    // +infinity included: [0, +inf] or (0, +inf].
-    static const std::regex to_infinity(R"(^\s*([\[\(])\s*0\s*,\s*\+?inf\s*\]\s*$)");
+    // Up to +infinity: included, [0, +inf] or (0, +inf]; or not, (0, +inf) and [0, +inf),
+    // the interval positive and nonnegative name. (-inf, +inf) is the real line.
+    static const std::regex to_infinity(R"(^\s*([\[\(])\s*0\s*,\s*\+?inf\s*([\]\)])\s*$)");
+    static const std::regex whole_line(R"(^\s*\(\s*-inf\s*,\s*\+?inf\s*\)\s*$)");
     std::smatch end;
     if (std::regex_match(text, end, to_infinity)) {
         d.what = end[1] == "(" ? domain::kind::positive : domain::kind::nonnegative;
-        d.infinity_included = true;
+        d.infinity_included = end[2] == "]";
         return d;
     }
+    if (std::regex_match(text, whole_line))
+        return d;
+    // Below 0 (negative, (-inf, 0)): a quantity of that sign is declared by its magnitude.
+    static const std::regex below_zero(R"(^\s*(negative|nonpositive|[\[\(]\s*-inf\s*,\s*0\s*[\]\)])\s*$)");
+    if (std::regex_match(text, below_zero))
+        throw error(where, fmt::format("domain '{}': a quantity below 0 is declared by its magnitude, positive (or "
+                                       "nonnegative), and written with its sign where it is used (a depth d, "
+                                       "positive, at height -d)",
+                                       text));
     // An interval with numeric bounds: [0, 1], (0, 1], [-1/2, 3).
     static const std::regex interval(
         R"(^\s*([\[\(])\s*([-+]?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?)\s*,\s*([-+]?[0-9]+(?:\.[0-9]+)?(?:/[0-9]+)?)\s*([\]\)])\s*$)");
     std::smatch match;
     if (!std::regex_match(text, match, interval))
         throw error(where, fmt::format("domain '{}' is not understood; write real, positive, "
-                                       "nonnegative, an interval such as [0, 1], or [0, +inf]",
+                                       "nonnegative, an interval such as [0, 1] (its ends integers, decimals or "
+                                       "fractions: 1000, not 1e3), [0, +inf] or (0, +inf)",
                                        text));
     auto bound = [](const std::string& s) {
         const auto slash = s.find('/');

@@ -188,7 +188,7 @@ result read_result(table_reader& in)
     return r;
 }
 
-// `v_perp -> 0`, `v_perp -> infinity` (or `oo`).
+// `v_perp -> 0`, `v_perp -> infinity` (or `oo`, `inf`, `+inf`, `+infinity`, as domains write it).
 limit_point read_limit(const text& written)
 {
     const auto arrow = written.value.find("->");
@@ -198,7 +198,8 @@ limit_point read_limit(const text& written)
     l.written = written;
     l.symbol = {trimmed(written.value.substr(0, arrow)), written.where};
     l.point = {trimmed(written.value.substr(arrow + 2)), written.where};
-    l.to_infinity = l.point.value == "infinity" || l.point.value == "oo";
+    for (const char* spelt : {"infinity", "oo", "inf", "+inf", "+infinity", "+oo"})
+        l.to_infinity = l.to_infinity || l.point.value == spelt;
     if (l.to_infinity)
         l.point.value.clear();
     return l;
