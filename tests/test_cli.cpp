@@ -180,6 +180,19 @@ BOOST_AUTO_TEST_CASE(derive_and_latex_say_a_failed_check_on_standard_error)
     BOOST_TEST(listed.output.find("failed             wrong: y = 3*x") != std::string::npos, listed.output);
 }
 
+BOOST_AUTO_TEST_CASE(derive_given_a_folder_says_so)
+{
+    // `impact derive mine` said "derivations: error: no such folder", of another folder.
+    const std::string folder = (source_dir / "tests" / "examples").string();
+    for (const char* command : {"derive ", "latex "}) {
+        const run_result r = run(command + folder);
+        BOOST_TEST(r.status == 2, r.output);
+        BOOST_TEST(r.output == folder + ": error: is a folder; give one derivation: its file (mine/spring.toml), "
+                                        "or its id with the folder (spring --derivations mine)\n",
+                   r.output);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(derive_prints_eq8_results_and_proven_checks)
 {
     const run_result r = run("derive inelastic_line --derivations " + (source_dir / "derivations").string());

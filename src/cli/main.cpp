@@ -352,6 +352,13 @@ int main(int argc, char** argv)
         fmt::print(stderr, "{}: error: no such derivation file\n", o.name);
         return exit_bad_input;
     }
+    // `impact derive mine`, a folder: one derivation of it is meant.
+    if (!o.name.empty() && (derive->parsed() || latex->parsed()) && fs::is_directory(o.name)) {
+        fmt::print(stderr, "{}: error: is a folder; give one derivation: its file (mine/spring.toml), or its id "
+                           "with the folder (spring --derivations mine)\n",
+                   o.name);
+        return exit_bad_input;
+    }
     if (o.derivations.empty())
         o.derivations = fs::is_regular_file(o.name) ? fs::path(o.name).parent_path().lexically_normal().string()
                                                     : std::string("derivations");
