@@ -559,6 +559,15 @@ BOOST_AUTO_TEST_CASE(an_equation_whose_dimensions_do_not_agree)
                    "mass*length/time (a momentum): both sides share one dimension");
 }
 
+BOOST_AUTO_TEST_CASE(a_display_form_of_the_wrong_dimension_is_called_so)
+{
+    // E = M v^2/2 derived; its display M*v/2 is a momentum. The message called the display
+    // "the value derived for it", which is M*v^2/2.
+    expect_refused(with_dimensions("E = M*v^2/2") + "display = \"M*v/2\"\n",
+                   "derivations/bad.toml:22:11: error: 'E' is an energy (mass*length^2/time^2) but its display form, "
+                   "M*v/2, is a momentum (mass*length/time)");
+}
+
 BOOST_AUTO_TEST_CASE(a_value_of_the_wrong_dimension_or_a_function_of_one)
 {
     const std::string good = with_dimensions("E = M*v^2/2") +

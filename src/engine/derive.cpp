@@ -464,7 +464,7 @@ private:
         if (spec_result.display) {
             r.display = out_.symbols.parse(*spec_result.display);
             r.written = written(*spec_result.display);
-            check_value(out_.symbols, r.symbol, r.display, spec_result.display->where);
+            check_value(out_.symbols, r.symbol, r.display, spec_result.display->where, "its display form");
             check_result c;
             c.name = fmt::format("display form of {}", q.name);
             c.display_of = q.name;

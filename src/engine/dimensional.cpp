@@ -73,7 +73,7 @@ std::optional<dimension> check_expression(const symbol_table& symbols, const GiN
 }
 
 void check_value(symbol_table& symbols, const GiNaC::ex& symbol, const GiNaC::ex& value,
-                 const source_location& where)
+                 const source_location& where, const char* what)
 {
     if (value.is_zero())
         return;   // zero is a value of every dimension
@@ -84,8 +84,8 @@ void check_value(symbol_table& symbols, const GiNaC::ex& symbol, const GiNaC::ex
         if (!q.symbol.is_equal(symbol))
             continue;
         if (q.dim && *q.dim != *found)
-            throw error(where, fmt::format("'{}' is {} but the value derived for it, {}, is {}", q.name,
-                                           named(*q.dim), symbols.text(value), named(*found)));
+            throw error(where, fmt::format("'{}' is {} but {}, {}, is {}", q.name, named(*q.dim), what,
+                                           symbols.text(value), named(*found)));
         if (!q.dim)
             symbols.infer_dimension(symbol, *found);
         return;

@@ -34,10 +34,11 @@ void check_relation(const symbol_table& symbols, const GiNaC::ex& relation, cons
 std::optional<dimension> check_expression(const symbol_table& symbols, const GiNaC::ex& e,
                                           const source_location& where);
 
-/// `symbol` takes `value` (a step solves or defines it): the value's dimension must be
-/// the symbol's declared one; a symbol without one takes the value's.
+/// `symbol` takes `value` (a step solves or defines it, or a result's display form shows
+/// it): the value's dimension must be the symbol's declared one; a symbol without one takes
+/// the value's. `what` names the value in the message ("the value derived for it").
 void check_value(symbol_table& symbols, const GiNaC::ex& symbol, const GiNaC::ex& value,
-                 const source_location& where);
+                 const source_location& where, const char* what = "the value derived for it");
 
 /// A printed form (of the paper) set against what it should equal: nothing when their
 /// dimensions agree or are unknown, else the finding in words, e.g. "dimensionally
