@@ -568,6 +568,16 @@ BOOST_AUTO_TEST_CASE(a_display_form_of_the_wrong_dimension_is_called_so)
                    "M*v/2, is a momentum (mass*length/time)");
 }
 
+BOOST_AUTO_TEST_CASE(a_guard_whose_terms_do_not_share_a_dimension)
+{
+    // A guard's condition was not checked as an equation is: M - 1 > 0 passed.
+    expect_refused(with_dimensions("E = M*v^2/2") +
+                       "[[kernel]]\nname = \"k\"\ninputs = [\"M\", \"v\"]\noutputs = [\"E = E\"]\n"
+                       "guards = [\"too_light = M - 1 > 0\"]\n",
+                   "derivations/bad.toml:26:11: error: adds -1, a pure number, to M, mass: the terms of a sum share "
+                   "one dimension");
+}
+
 BOOST_AUTO_TEST_CASE(a_value_of_the_wrong_dimension_or_a_function_of_one)
 {
     const std::string good = with_dimensions("E = M*v^2/2") +

@@ -652,6 +652,8 @@ private:
             const claim_sides sides = d_.symbols.parse_claim(*g.condition);
             if (!sides.rhs.is_zero() || (sides.op != relation::less && sides.op != relation::greater))
                 throw error(g.condition->where, "a guard condition reads '<expression> < 0' or '<expression> > 0'");
+            // Its sums share a dimension, as an equation's do (h - 1000 adds a number to a length).
+            check_expression(d_.symbols, sides.lhs, g.condition->where);
             guard.condition = in_kernel(sides.lhs);
             guard.op = sides.op;
             require_inputs(k, *guard.condition, "guard " + guard.status, g.condition->where);
