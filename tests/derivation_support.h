@@ -4,7 +4,7 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include "engine/derive.h"
+#include "engine/derivation/derivation.h"
 #include "spec/derivation.h"
 
 #include <string>

@@ -16,9 +16,9 @@
 #include "emit/terminal.h"
 #include "compile/program.h"
 #include "emit/program_cxx.h"
-#include "engine/derive.h"
-#include "engine/infix.h"
-#include "engine/library.h"
+#include "engine/derivation/derivation.h"
+#include "engine/expr/infix.h"
+#include "engine/library/library.h"
 #include "pipeline/regenerate.h"
 #include "verify/choice.h"
 

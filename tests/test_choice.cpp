@@ -7,8 +7,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include "compile/program.h"
-#include "engine/cases.h"
-#include "engine/library.h"
+#include "engine/cases/cases.h"
+#include "engine/library/library.h"
 #include "verify/choice.h"
 #include "verify/measure.h"
 

@@ -8,8 +8,8 @@
 #define BOOST_TEST_MODULE test_derivations
 #include <boost/test/unit_test.hpp>
 
-#include "engine/derive.h"
-#include "engine/library.h"
+#include "engine/derivation/derivation.h"
+#include "engine/library/library.h"
 
 #include <array>
 #include <map>

@@ -1,11 +1,11 @@
 // Dimensions: their algebra and names, and the rules by which an expression's dimension
-// follows from its symbols' (engine/dimension.h). Expected texts are typed here.
+// follows from its symbols' (engine/dimension/dimension.h). Expected texts are typed here.
 #define BOOST_TEST_MODULE test_dimension
 #include <boost/test/unit_test.hpp>
 
-#include "engine/derive.h"
-#include "engine/dimensional.h"
-#include "engine/dimension.h"
+#include "engine/derivation/derivation.h"
+#include "engine/expr/dimensional.h"
+#include "engine/dimension/dimension.h"
 #include "spec/derivation.h"
 
 #include <fstream>

@@ -10,7 +10,7 @@
 #include "compile/program.h"
 #include "compile/range.h"
 #include "emit/program_cxx.h"
-#include "engine/infix.h"
+#include "engine/expr/infix.h"
 
 using namespace impact;
 

@@ -8,14 +8,14 @@
 #include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
-#include "engine/derive.h"
-#include "engine/forked.h"
-#include "engine/polynomial.h"
-#include "engine/prove.h"
-#include "engine/references.h"
-#include "engine/sign.h"
-#include "engine/library.h"
-#include "engine/normal_form.h"
+#include "engine/derivation/derivation.h"
+#include "engine/algebra/forked.h"
+#include "engine/algebra/polynomial.h"
+#include "engine/prove/prove.h"
+#include "engine/paper/references.h"
+#include "engine/prove/sign.h"
+#include "engine/library/library.h"
+#include "engine/expr/normal_form.h"
 
 #include <map>
 #include <string>
@@ -1032,7 +1032,7 @@ BOOST_AUTO_TEST_CASE(every_expression_read_from_the_file_carries_how_it_was_writ
 
 BOOST_AUTO_TEST_SUITE_END()
 
-// diff(f, x) in a derivation file (engine/derivative.h): taken once the derived quantities
+// diff(f, x) in a derivation file (engine/expr/derivative.h): taken once the derived quantities
 // are put in, in steps and claims; refused where it could not mean one thing.
 BOOST_AUTO_TEST_SUITE(derivatives)
 
@@ -1356,7 +1356,7 @@ BOOST_AUTO_TEST_CASE(an_expression_of_both_signs_is_refuted_before_a_search)
     BOOST_TEST(!engine::takes_both_signs(z - 1, given));
 }
 
-// GiNaC's factor() may never return (engine/forked.h): polynomials in several symbols are
+// GiNaC's factor() may never return (engine/algebra/forked.h): polynomials in several symbols are
 // factored in a child process with a limit of CPU time.
 BOOST_AUTO_TEST_SUITE(factoring_in_a_child)
 

@@ -10,7 +10,7 @@
 
 #include "derivation_support.h"
 #include "emit/errata.h"
-#include "engine/library.h"
+#include "engine/library/library.h"
 #include "pipeline/regenerate.h"
 
 #include <algorithm>

@@ -11,8 +11,8 @@
 
 #include "impact/impact.hpp"
 
-#include "engine/domain.h"
-#include "engine/library.h"
+#include "engine/expr/domain.h"
+#include "engine/library/library.h"
 #include "verify/accuracy.h"
 
 #include <algorithm>

@@ -9,9 +9,9 @@
 #include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
-#include "engine/derivative.h"
-#include "engine/written_form.h"
-#include "engine/library.h"
+#include "engine/expr/derivative.h"
+#include "engine/expr/written_form.h"
+#include "engine/library/library.h"
 #include "spec/derivation.h"
 
 #include <fmt/format.h>
@@ -189,7 +189,7 @@ BOOST_AUTO_TEST_CASE(primes_greek_letters_and_functions)
 
 BOOST_AUTO_TEST_CASE(a_derivative_is_typeset_as_a_partial_derivative)
 {
-    // diff(f, x) of a derivation file, held as written (engine/derivative.h): a quantity's
+    // diff(f, x) of a derivation file, held as written (engine/expr/derivative.h): a quantity's
     // name over the variable, anything else after the operator in parentheses.
     BOOST_TEST(emit::latex(engine::derivative(cos_theta, eps), order) == "\\frac{\\partial \\cos\\theta}{\\partial \\epsilon}");
     BOOST_TEST(emit::latex(engine::derivative(vperp / vpar, vpar), order) ==

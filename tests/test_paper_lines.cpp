@@ -25,9 +25,9 @@
 #include "emit/json.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
-#include "engine/derive.h"
-#include "engine/library.h"
-#include "engine/references.h"
+#include "engine/derivation/derivation.h"
+#include "engine/library/library.h"
+#include "engine/paper/references.h"
 #include "spec/derivation.h"
 #include "spec/outline.h"
 

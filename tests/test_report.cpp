@@ -6,7 +6,7 @@
 
 #include "report/pdf.h"
 #include "report/report_tex.h"
-#include "engine/library.h"
+#include "engine/library/library.h"
 #include "pipeline/regenerate.h"
 #include "report/figures.h"
 #include "report/report.h"

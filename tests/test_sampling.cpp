@@ -7,7 +7,7 @@
 #define BOOST_TEST_MODULE test_sampling
 #include <boost/test/unit_test.hpp>
 
-#include "engine/library.h"
+#include "engine/library/library.h"
 #include "verify/sampling.h"
 
 #include <algorithm>

@@ -6,8 +6,8 @@
 #define BOOST_TEST_MODULE test_signs
 #include <boost/test/unit_test.hpp>
 
-#include "engine/derive.h"
-#include "engine/sign_arguments.h"
+#include "engine/derivation/derivation.h"
+#include "engine/prove/sign_arguments.h"
 
 #include <algorithm>
 #include <sstream>

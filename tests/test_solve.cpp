@@ -20,7 +20,7 @@
 #include "emit/json.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
-#include "engine/derive.h"
+#include "engine/derivation/derivation.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-// Derivations kept between runs (engine/stored.h): a derivation restored from its text is
+// Derivations kept between runs (engine/store/stored.h): a derivation restored from its text is
 // the one derived (what every emitter prints from it, and every kernel form, is the same),
 // for derivation files that are not the paper's; the library takes a derivation from the
 // store only when its file and those it uses are unchanged; a text that is not one Impact
@@ -8,8 +8,8 @@
 
 #include "emit/json.h"
 #include "emit/latex.h"
-#include "engine/library.h"
-#include "engine/stored.h"
+#include "engine/library/library.h"
+#include "engine/store/stored.h"
 #include "pipeline/workers.h"
 
 #include <nlohmann/json.hpp>

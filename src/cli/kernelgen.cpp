@@ -6,7 +6,7 @@
 //
 //     impact_kernelgen <derivations folder> <output folder>
 #include "emit/cxx.h"
-#include "engine/library.h"
+#include "engine/library/library.h"
 #include "pipeline/output_folder.h"
 #include "verify/choice.h"
 

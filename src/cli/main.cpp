@@ -5,7 +5,7 @@
 #include "cache/store.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
-#include "engine/library.h"
+#include "engine/library/library.h"
 #include "pipeline/output_folder.h"
 #include "pipeline/regenerate.h"
 #include "pipeline/workers.h"

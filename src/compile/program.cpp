@@ -1,6 +1,6 @@
 #include "compile/program.h"
 
-#include "engine/cases.h"
+#include "engine/cases/cases.h"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 // against CLN): what is measured is exactly what is emitted, operation for operation.
 #pragma once
 
-#include "engine/order.h"
+#include "engine/expr/order.h"
 
 #include <ginac/ginac.h>
 

@@ -3,7 +3,7 @@
 #include "emit/cxx_parts.h"
 #include "emit/program_cxx.h"
 
-#include "engine/infix.h"
+#include "engine/expr/infix.h"
 
 #include <fmt/format.h>
 

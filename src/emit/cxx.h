@@ -12,9 +12,9 @@
 #pragma once
 
 #include "verify/choice.h"
-#include "engine/derive.h"
-#include "engine/library.h"
-#include "engine/infix.h"
+#include "engine/derivation/derivation.h"
+#include "engine/library/library.h"
+#include "engine/expr/infix.h"
 
 #include <map>
 #include <string>

@@ -1,7 +1,7 @@
 #include "emit/errata.h"
 
 #include "emit/latex.h"
-#include "engine/order.h"
+#include "engine/expr/order.h"
 
 #include <fmt/format.h>
 

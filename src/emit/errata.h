@@ -2,8 +2,8 @@
 // as `output/errata.md`.
 #pragma once
 
-#include "engine/derive.h"
-#include "engine/references.h"
+#include "engine/derivation/derivation.h"
+#include "engine/paper/references.h"
 #include "spec/outline.h"
 
 #include <functional>

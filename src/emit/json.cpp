@@ -2,11 +2,11 @@
 
 #include "emit/latex.h"
 
-#include "engine/cases.h"
+#include "engine/cases/cases.h"
 
-#include "engine/infix.h"
-#include "engine/references.h"
-#include "engine/order.h"
+#include "engine/expr/infix.h"
+#include "engine/paper/references.h"
+#include "engine/expr/order.h"
 
 #include <nlohmann/json.hpp>
 

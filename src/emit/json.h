@@ -2,7 +2,7 @@
 // machine-readable file, `output/derivations.json`.
 #pragma once
 
-#include "engine/derive.h"
+#include "engine/derivation/derivation.h"
 
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
 
 #include "emit/latex_parts.h"
 
-#include "engine/infix.h"
+#include "engine/expr/infix.h"
 #include "spec/latex_name.h"
 
 #include <fmt/format.h>
@@ -412,7 +412,7 @@ std::string partial_derivative(const std::string& f, const std::string& x, bool 
     return "\\frac{\\partial}{\\partial " + x + "} " + parenthesised(f);
 }
 
-// base^exponent, the base never rebuilt into a GiNaC power (see engine/order.h).
+// base^exponent, the base never rebuilt into a GiNaC power (see engine/expr/order.h).
 void print_power_term(const power_term& p, const print_tex& c, unsigned level)
 {
     const GiNaC::ex& base = p.base;

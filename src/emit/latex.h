@@ -11,9 +11,9 @@
 // `term_order`, so that the text is the same on every run.
 #pragma once
 
-#include "engine/derive.h"
-#include "engine/order.h"
-#include "engine/written_form.h"
+#include "engine/derivation/derivation.h"
+#include "engine/expr/order.h"
+#include "engine/expr/written_form.h"
 #include "spec/outline.h"
 
 #include <ginac/ginac.h>

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "emit/latex.h"
-#include "engine/references.h"
+#include "engine/paper/references.h"
 
 #include <ginac/ginac.h>
 

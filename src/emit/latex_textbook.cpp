@@ -7,7 +7,7 @@
 // the caller says which it is. A square root's argument is treated the same way.
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
-#include "engine/polynomial.h"
+#include "engine/algebra/polynomial.h"
 
 #include <algorithm>
 #include <set>

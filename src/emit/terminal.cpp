@@ -2,10 +2,10 @@
 
 #include "emit/latex.h"
 
-#include "engine/cases.h"
-#include "engine/dimensional.h"
-#include "engine/infix.h"
-#include "engine/references.h"
+#include "engine/cases/cases.h"
+#include "engine/expr/dimensional.h"
+#include "engine/expr/infix.h"
+#include "engine/paper/references.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

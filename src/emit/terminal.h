@@ -3,7 +3,7 @@
 // printed forms compared. Expressions in GiNaC's syntax, as a derivation file writes them.
 #pragma once
 
-#include "engine/derive.h"
+#include "engine/derivation/derivation.h"
 
 #include <string>
 

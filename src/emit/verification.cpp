@@ -1,6 +1,6 @@
 #include "emit/verification.h"
 
-#include "engine/infix.h"
+#include "engine/expr/infix.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

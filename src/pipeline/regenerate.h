@@ -7,7 +7,7 @@
 #pragma once
 
 #include "cache/store.h"
-#include "engine/library.h"
+#include "engine/library/library.h"
 #include "pipeline/output_folder.h"
 
 #include <filesystem>

@@ -8,7 +8,7 @@
 //
 // A child touches only what the task reads (the derived library, GiNaC's and CLN's
 // state) and its pipe, and leaves with _exit(). It may start a factoring child of its own
-// (engine/forked.h), which closes the pipe and dies with it.
+// (engine/algebra/forked.h), which closes the pipe and dies with it.
 //
 // Impact forks only while no thread of its own can hold a lock: a child gets a copy of
 // every lock as it was, and one held by another thread at that instant (the allocator's,
@@ -18,9 +18,9 @@
 // `fork_lock()` while it prints.
 #pragma once
 
-#include "engine/forked.h"
+#include "engine/algebra/forked.h"
 #include "spec/error.h"
-#include "engine/tasks.h"
+#include "engine/library/tasks.h"
 
 #include <sys/types.h>
 

@@ -8,7 +8,7 @@
 // so regenerating gives the same bytes.
 #pragma once
 
-#include "engine/library.h"
+#include "engine/library/library.h"
 
 #include <cstddef>
 #include <map>

@@ -14,7 +14,7 @@
 // build's kernel generator writes from the stages before this one.
 #pragma once
 
-#include "engine/library.h"
+#include "engine/library/library.h"
 
 #include <functional>
 #include <map>

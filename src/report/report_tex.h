@@ -2,7 +2,7 @@
 // table (the paper held to account) and the figures, in one LaTeX document.
 #pragma once
 
-#include "engine/derive.h"
+#include "engine/derivation/derivation.h"
 #include "report/figures.h"
 #include "spec/outline.h"
 

@@ -1,8 +1,8 @@
 #include "verify/choice.h"
 
 #include "cache/store.h"
-#include "engine/cases.h"
-#include "engine/sign.h"
+#include "engine/cases/cases.h"
+#include "engine/prove/sign.h"
 
 #include <fmt/format.h>
 

@@ -12,8 +12,8 @@
 #pragma once
 
 #include "compile/program.h"
-#include "engine/derive.h"
-#include "engine/library.h"
+#include "engine/derivation/derivation.h"
+#include "engine/library/library.h"
 #include "verify/measure.h"
 #include "verify/sampling.h"
 
@@ -96,7 +96,7 @@ kernel_plan fast_form(const kernel_plan& plan);
 /// Whether the fast form is the accurate one: every component's fastest candidate its chosen one.
 bool fast_is_accurate(const kernel_plan& plan);
 
-/// Work whose result is text (engine/tasks.h): a kernel's forms measured in another process.
+/// Work whose result is text (engine/library/tasks.h): a kernel's forms measured in another process.
 using engine::task_runner;
 using engine::text_task;
 

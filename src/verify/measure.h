@@ -11,7 +11,7 @@
 #pragma once
 
 #include "compile/program.h"
-#include "engine/derive.h"
+#include "engine/derivation/derivation.h"
 #include "verify/sampling.h"
 
 #include <ginac/ginac.h>

@@ -14,8 +14,8 @@
 // repeatable.
 #pragma once
 
-#include "engine/derive.h"
-#include "engine/order.h"
+#include "engine/derivation/derivation.h"
+#include "engine/expr/order.h"
 
 #include <cstdint>
 #include <functional>

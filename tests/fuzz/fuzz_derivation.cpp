@@ -7,8 +7,8 @@
 // (a crash, a sanitizer report, another exception, a message on two lines) is a finding.
 // Built with -fsanitize=fuzzer by tests/fuzz/CMakeLists.txt; test_fuzz_regressions
 // replays tests/fuzz/regressions/ through the same function in every build.
-#include "engine/derive.h"
-#include "engine/library.h"
+#include "engine/derivation/derivation.h"
+#include "engine/library/library.h"
 #include "spec/derivation.h"
 
 #include <cstdint>
