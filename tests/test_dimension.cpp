@@ -3,7 +3,7 @@
 #define BOOST_TEST_MODULE test_dimension
 #include <boost/test/unit_test.hpp>
 
-#include "engine/derivation/derivation.h"
+#include "engine/derive/derive.h"
 #include "engine/expr/dimensional.h"
 #include "engine/dimension/dimension.h"
 #include "spec/derivation.h"

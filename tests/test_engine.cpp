@@ -8,7 +8,7 @@
 #include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
-#include "engine/derivation/derivation.h"
+#include "engine/derive/derive.h"
 #include "engine/algebra/forked.h"
 #include "engine/algebra/polynomial.h"
 #include "engine/prove/prove.h"

@@ -25,7 +25,7 @@
 #include "emit/json.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
-#include "engine/derivation/derivation.h"
+#include "engine/derive/derive.h"
 #include "engine/library/library.h"
 #include "engine/paper/references.h"
 #include "spec/derivation.h"

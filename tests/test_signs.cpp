@@ -6,7 +6,7 @@
 #define BOOST_TEST_MODULE test_signs
 #include <boost/test/unit_test.hpp>
 
-#include "engine/derivation/derivation.h"
+#include "engine/derive/derive.h"
 #include "engine/prove/sign_arguments.h"
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 // (a crash, a sanitizer report, another exception, a message on two lines) is a finding.
 // Built with -fsanitize=fuzzer by tests/fuzz/CMakeLists.txt; test_fuzz_regressions
 // replays tests/fuzz/regressions/ through the same function in every build.
-#include "engine/derivation/derivation.h"
+#include "engine/derive/derive.h"
 #include "engine/library/library.h"
 #include "spec/derivation.h"
 
