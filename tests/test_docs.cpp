@@ -190,8 +190,9 @@ BOOST_AUTO_TEST_CASE(a_heading_s_anchor_is_github_s)
 }
 
 // The checker itself finds what is broken: a typed-in page with an anchor spelt as the
-// README once spelt one (the brackets' colon dropped with its space), a file that does not
-// exist, and links it must leave alone.
+// README once spelt one (#checkclaims-that-must-hold, where GitHub makes the heading
+// check-claims-that-must-hold), an anchor numbered past a heading's repeats, a file that does
+// not exist; and links it must leave alone (the web, mail, code).
 BOOST_AUTO_TEST_CASE(a_link_to_a_heading_that_does_not_exist_is_reported)
 {
     temporary_folder scratch("impact-test-docs-links");
