@@ -115,7 +115,7 @@ void copy_derivations(const std::filesystem::path& to, Keep keep)
 }
 
 /// Makes `folder` look like an earlier Impact's output: `previous.txt`, listed in the
-/// marker Impact keeps there (its format as README.md gives it).
+/// marker Impact keeps there (its format as docs/cli.md gives it).
 inline void previous_output(const std::filesystem::path& folder)
 {
     std::filesystem::create_directories(folder);

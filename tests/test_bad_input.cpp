@@ -4,7 +4,7 @@
 // part-way: tests/test_output_safety.cpp).
 //
 // Each test runs in a scratch folder of its own with small derivation files written here,
-// so that the expected messages (the ones README.md lists) do not depend on derivations/.
+// so that the expected messages (the ones docs/cli.md lists) do not depend on derivations/.
 #define BOOST_TEST_MODULE test_bad_input
 #include <boost/test/unit_test.hpp>
 

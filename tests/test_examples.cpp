@@ -1,7 +1,7 @@
-// The example derivation files of the README's reference (tests/examples/): each derived,
+// The example derivation files of the reference, docs/language.md (tests/examples/): each derived,
 // every check proven, the key results against closed forms typed here; together they use
-// every kind of step, check and kernel option. And the reference itself: the README's
-// "Derivation files" section documents every field the reader accepts, and no other.
+// every kind of step, check and kernel option. And the reference itself: docs/language.md
+// documents every field the reader accepts, and no other.
 //
 // The examples are written for these tests, not from the paper (a ball, a spring, a
 // pendulum, a seesaw, a puck); the expected results are textbook mechanics.
@@ -372,7 +372,7 @@ BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
 // Every key reader.cpp accepts, by table, typed from reading it (src/spec/reader.cpp:
 // parse_derivation, read_symbol, read_dimension, read_given, read_step, read_result,
 // read_check_fields, read_claim, read_open_claim, read_not_compared, read_kernel, read_sampling_regime, read_use). A field added there fails this
-// test until the README documents it.
+// test until docs/language.md documents it.
 const std::map<std::string, std::set<std::string>> fields_read = {
     {"top level", {"id", "title", "paper", "summary"}},
     {"[[use]]", {"derivation", "results"}},
@@ -393,15 +393,13 @@ const std::map<std::string, std::set<std::string>> fields_read = {
     {"[[kernel.regime]]", {"name", "set", "ratio", "boundary", "from", "to", "within", "start"}},
 };
 
-// The README's "## Derivation files" section: a `### ` heading per TOML table (its name in
-// backticks, or "The top level"), then a table whose rows start with the field in backticks.
+// docs/language.md, the reference of derivation files: a `## ` heading per TOML table (its
+// name in backticks, or "The top level"), then a table whose rows start with the field in backticks.
 std::map<std::string, std::set<std::string>> fields_documented()
 {
-    const std::string readme = read_text(IMPACT_SOURCE_DIR "/README.md");
-    const auto start = readme.find("\n## Derivation files\n");
-    BOOST_REQUIRE(start != std::string::npos);
-    const auto end = readme.find("\n## ", start + 1);
-    std::istringstream section(readme.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    const std::string reference = read_text(IMPACT_SOURCE_DIR "/docs/language.md");
+    BOOST_REQUIRE(reference.rfind("# Derivation files\n", 0) == 0);
+    std::istringstream section(reference);
     std::map<std::string, std::set<std::string>> documented;
     std::string table, line;
     auto in_backticks = [](const std::string& s) {
@@ -410,7 +408,7 @@ std::map<std::string, std::set<std::string>> fields_documented()
         return close == std::string::npos ? std::string() : s.substr(open + 1, close - open - 1);
     };
     while (std::getline(section, line)) {
-        if (line.rfind("### ", 0) == 0) {
+        if (line.rfind("## ", 0) == 0) {
             const std::string named = in_backticks(line);
             table = !named.empty() ? named : line.find("top level") != std::string::npos ? "top level" : "";
             if (!table.empty())
@@ -422,27 +420,27 @@ std::map<std::string, std::set<std::string>> fields_documented()
     return documented;
 }
 
-BOOST_AUTO_TEST_CASE(the_readme_documents_every_field_the_reader_accepts_and_no_other)
+BOOST_AUTO_TEST_CASE(the_language_reference_documents_every_field_the_reader_accepts_and_no_other)
 {
     const auto documented = fields_documented();
     for (const auto& [table, fields] : fields_read) {
         const auto found = documented.find(table);
-        BOOST_TEST_REQUIRE((found != documented.end()), "README documents no table " + table);
+        BOOST_TEST_REQUIRE((found != documented.end()), "docs/language.md documents no table " + table);
         for (const std::string& field : fields)
             BOOST_TEST(found->second.count(field) == 1u, table + ": field '" + field + "' is not documented");
         for (const std::string& field : found->second)
-            BOOST_TEST(fields.count(field) == 1u, table + ": README documents '" + field + "', which the reader "
+            BOOST_TEST(fields.count(field) == 1u, table + ": docs/language.md documents '" + field + "', which the reader "
                                                   "does not accept");
     }
     for (const auto& [table, fields] : documented)
-        BOOST_TEST(fields_read.count(table) == 1u, "README documents a table " + table + " the reader does not read");
+        BOOST_TEST(fields_read.count(table) == 1u, "docs/language.md documents a table " + table + " the reader does not read");
 }
 
-BOOST_AUTO_TEST_CASE(the_readme_links_every_example)
+BOOST_AUTO_TEST_CASE(the_language_reference_links_every_example)
 {
-    const std::string readme = read_text(IMPACT_SOURCE_DIR "/README.md");
+    const std::string reference = read_text(IMPACT_SOURCE_DIR "/docs/language.md");
     for (const std::string& id : examples().order)
-        BOOST_TEST(readme.find("(tests/examples/" + id + ".toml)") != std::string::npos, id);
+        BOOST_TEST(reference.find("(../tests/examples/" + id + ".toml)") != std::string::npos, id);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

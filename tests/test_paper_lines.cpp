@@ -341,7 +341,7 @@ BOOST_AUTO_TEST_CASE(every_line_listed_as_compared_is_compared_and_no_other)
                                                     << "\", a place not in the paper's list");
 }
 
-BOOST_AUTO_TEST_CASE(the_errata_and_the_report_state_the_count)
+BOOST_AUTO_TEST_CASE(the_errata_the_report_and_the_paper_page_state_the_count)
 {
     const std::vector<const engine::derivation*> all = library().in_order();
     BOOST_TEST(emit::compared_places(all) == compared);
@@ -351,13 +351,14 @@ BOOST_AUTO_TEST_CASE(the_errata_and_the_report_state_the_count)
     const emit::paper_count n = emit::count_paper(all);
     BOOST_TEST(n.lines == printed_lines_and_claims);
     BOOST_TEST(n.compared == compared);
-    // The committed output says the same, and the README gives both counts.
+    // The committed output says the same, and docs/paper.md gives both counts.
     BOOST_TEST((read(IMPACT_SOURCE_DIR "/output/errata.md") == errata),
                "output/errata.md is not what the derivations give: run impact regenerate");
-    const std::string readme = read(IMPACT_SOURCE_DIR "/README.md");
-    BOOST_TEST(readme.find(fmt::format("{} printed lines and claims", printed_lines_and_claims)) !=
-               std::string::npos);
-    BOOST_TEST(readme.find(fmt::format("{} of them are compared", compared)) != std::string::npos);
+    const std::string page = read(IMPACT_SOURCE_DIR "/docs/paper.md");
+    BOOST_TEST(page.find(fmt::format("{} printed lines and claims", printed_lines_and_claims)) != std::string::npos,
+               "docs/paper.md does not give the count of printed lines and claims");
+    BOOST_TEST(page.find(fmt::format("{} of them are compared", compared)) != std::string::npos,
+               "docs/paper.md does not give the count compared");
 }
 
 // derivations/paper_order.txt orders the errata as the paper prints its lines. It lists

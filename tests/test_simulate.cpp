@@ -507,7 +507,7 @@ BOOST_AUTO_TEST_CASE(simulate_writes_a_table_and_a_figure)
 
 BOOST_AUTO_TEST_CASE(the_example_scenarios_run)
 {
-    // The scenarios the README shows: read, checked and run as users will.
+    // The scenarios docs/simulate.md shows: read, checked and run as users will.
     int count = 0;
     for (const auto& entry : fs::directory_iterator(fs::path(IMPACT_SOURCE_DIR) / "tests" / "scenarios")) {
         const scenario s = read_scenario(entry.path().string());

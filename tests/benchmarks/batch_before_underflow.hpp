@@ -2,7 +2,7 @@
 // their arithmetic for underflow (status::underflow): output/kernels/impact/collide_2d.hpp
 // and collide_3d.hpp of commit e5c571e, from `namespace detail` on, in a namespace of their
 // own. Not a kernel to use: kept so that the benchmark times the loops before and after
-// the test side by side, in one run (README, "How the batch loops were shaped").
+// the test side by side, in one run (docs/design-kernels.md, "How the batch loops were shaped").
 #pragma once
 
 #include "impact/impact.hpp"

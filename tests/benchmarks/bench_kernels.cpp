@@ -25,7 +25,7 @@
 //   arrays of a 3D batch then fall on the same cache sets, pair for pair, and the loops
 //   lose about a fifth of their speed, the hand-written one as much as the generated one;
 // - 4 KiB pages, array k starting 64 + 256 k bytes (modulo 4 KiB) past a page boundary, as
-//   the README recommends for large batches (in cache too);
+//   docs/kernels.md recommends for large batches (in cache too);
 // - the same on 2 MiB pages (madvise MADV_HUGEPAGE): fewer misses of address translation.
 // The triad's three arrays are laid out alike.
 
