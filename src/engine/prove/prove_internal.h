@@ -1,0 +1,28 @@
+// What the files of prove.h share (prove.cpp: equalities; inequality.cpp: inequalities;
+// sampling.cpp: claims tested at points of the domains): a claim's abbreviations spelled
+// out, and a claim tested at sampled points when no proof is found. Internal to
+// engine/prove.
+#pragma once
+
+#include "engine/prove/prove.h"
+
+#include <ginac/ginac.h>
+
+#include <functional>
+#include <string>
+
+namespace impact::engine {
+
+/// `e` with its abbreviations replaced by their definitions (prove.cpp).
+GiNaC::ex spelled_out(const GiNaC::ex& e, const GiNaC::exmap& abbreviations);
+
+/// Both sides evaluated at sampled points of the declared domains, `holds` tested on them:
+/// `failed` at the first point where it does not hold, else `sampled` (sampling.cpp).
+verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& residual, const symbol_table& symbols,
+               const std::function<bool(const GiNaC::numeric&, const GiNaC::numeric&)>& holds,
+               const std::string& claim);
+
+/// Whether two numbers differ by at most 1e-30 times the larger of 1, |a| and |b| (sampling.cpp).
+bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b);
+
+} // namespace impact::engine

@@ -1,0 +1,333 @@
+// Claims tested at points of the domains, never proofs: an identity or an inequality
+// sampled at 40 digits where no proof is found (a failing point evaluated again exactly);
+// the signs an expression is believed to take (a refutation of a sign, or of "= 0"); and a
+// counterexample among simple values a reader can check by hand.
+#include "engine/prove/prove_internal.h"
+
+#include <fmt/format.h>
+
+#include <cln/real.h>
+#include <cln/rational.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+
+namespace impact::engine {
+namespace {
+
+constexpr std::size_t sample_points = 200;
+constexpr int sample_digits = 40;
+
+// The exact rational value of a double, so that sampled points carry no rounding.
+GiNaC::numeric exact(double value)
+{
+    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
+}
+
+} // namespace
+
+// Evaluates `lhs - rhs` at points of the declared domains. Returns the failing
+// residual's value as a verdict, or a `sampled` verdict when every point agrees.
+// Evaluates both sides at points of the declared domains and tests `holds` on them.
+// Returns `failed` at the first point where it does not hold, else `sampled`.
+verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& residual, const symbol_table& symbols,
+               const std::function<bool(const GiNaC::numeric&, const GiNaC::numeric&)>& holds,
+               const std::string& claim)
+{
+    GiNaC::lst free;
+    for (const quantity& q : symbols.all())
+        if ((lhs - rhs).has(q.symbol))
+            free.append(q.symbol);
+
+    const auto saved_digits = GiNaC::Digits;
+    GiNaC::Digits = sample_digits;
+    uniform_stream stream(0x1a2b3c4d5e6f7081ULL);
+    std::size_t tested = 0;
+    verdict v;
+    v.residual = residual;
+    // Each side evaluated at the point: numbers are substituted as 40-digit floats, so
+    // that a large expression is not first evaluated in exact rationals whose digits
+    // grow with every product (the cost of a sampled check, ten times over); a point
+    // where the claim fails is evaluated again exactly before it is believed.
+    auto evaluated = [&](const GiNaC::exmap& point, GiNaC::numeric& a, GiNaC::numeric& b) {
+        const GiNaC::ex x = GiNaC::evalf(lhs.subs(point, GiNaC::subs_options::no_pattern));
+        const GiNaC::ex y = GiNaC::evalf(rhs.subs(point, GiNaC::subs_options::no_pattern));
+        if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::is_a<GiNaC::numeric>(y) ||
+            !GiNaC::ex_to<GiNaC::numeric>(x).is_real() || !GiNaC::ex_to<GiNaC::numeric>(y).is_real())
+            return false;
+        a = GiNaC::ex_to<GiNaC::numeric>(x);
+        b = GiNaC::ex_to<GiNaC::numeric>(y);
+        return true;
+    };
+    for (std::size_t attempt = 0; tested < sample_points && attempt < 4 * sample_points; ++attempt) {
+        GiNaC::exmap point, rounded;
+        for (const GiNaC::ex& s : free) {
+            point[s] = exact(draw(*symbols.domain_of(s), stream));
+            rounded[s] = point[s].evalf();
+        }
+        try {
+            GiNaC::numeric a, b;
+            if (!evaluated(rounded, a, b))
+                continue;
+            if (!holds(a, b)) {
+                if (!evaluated(point, a, b))
+                    continue;
+                if (!holds(a, b)) {
+                    GiNaC::Digits = saved_digits;
+                    v.what = verdict::status::failed;
+                    v.samples = tested + 1;
+                    v.method = fmt::format("does not hold at a sampled point: {} {} vs {:.6g}", a.to_double(), claim,
+                                           b.to_double());
+                    return v;
+                }
+            }
+            ++tested;
+        } catch (const std::exception&) {
+            continue; // a pole of either side: draw another point
+        }
+    }
+    GiNaC::Digits = saved_digits;
+    v.what = tested > 0 ? verdict::status::sampled : verdict::status::failed;
+    v.samples = tested;
+    v.method = tested > 0 ? fmt::format("not proven symbolically; holds at {} sampled points ({} digits)", tested,
+                                        sample_digits)
+                          : "no sampled point could be evaluated";
+    return v;
+}
+
+bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b)
+{
+    const double scale = std::max({1.0, std::abs(a.to_double()), std::abs(b.to_double())});
+    return GiNaC::abs(a - b).to_double() <= 1e-30 * scale;
+}
+
+namespace {
+
+// The signs `e` is believed to take at up to `points` points drawn from the domains of
+// `given` (bit 0: negative, bit 1: positive), drawing until both are seen, or until one is
+// when `one_is_enough`; 0 where a symbol has no domain. A sign is believed where 40 and 80
+// digits agree on it and on the value to a half: a value that is 0 (an identity) comes out
+// as noise of either sign.
+unsigned believed_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points, bool one_is_enough)
+{
+    std::vector<std::pair<GiNaC::ex, const domain*>> free;
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+            std::none_of(free.begin(), free.end(), [&](const auto& f) { return f.first.is_equal(*it); })) {
+            const auto d = given.domains.find(*it);
+            if (d == given.domains.end())
+                return 0;
+            free.emplace_back(*it, &d->second);
+        }
+    std::sort(free.begin(), free.end(), [&](const auto& a, const auto& b) { return given.order.before(a.first, b.first); });
+    const auto saved_digits = GiNaC::Digits;
+    uniform_stream stream(0x5e1f2a3b4c5d6e7fULL);
+    unsigned seen = 0;
+    for (std::size_t n = 0; n < points && seen != 3u && !(one_is_enough && seen != 0); ++n) {
+        GiNaC::exmap point;
+        for (const auto& [symbol, range] : free)
+            point[symbol] = exact(draw(*range, stream));
+        try {
+            const GiNaC::ex at = e.subs(point, GiNaC::subs_options::no_pattern);
+            int sign[2] = {0, 0};
+            GiNaC::numeric value[2];
+            for (int k = 0; k < 2; ++k) {
+                GiNaC::Digits = k == 0 ? 40 : 80;
+                const GiNaC::ex x = GiNaC::evalf(at);
+                if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::ex_to<GiNaC::numeric>(x).is_real())
+                    break;
+                value[k] = GiNaC::ex_to<GiNaC::numeric>(x);
+                sign[k] = value[k].is_zero() ? 0 : value[k].is_positive() ? 1 : -1;
+            }
+            if (sign[0] != 0 && sign[0] == sign[1] && GiNaC::abs(value[0] - value[1]) < GiNaC::abs(value[1]) / 2)
+                seen |= sign[0] < 0 ? 1u : 2u;
+        } catch (const std::exception&) {
+            // a pole: another point
+        }
+    }
+    GiNaC::Digits = saved_digits;
+    return seen;
+}
+
+} // namespace
+
+bool takes_both_signs(const GiNaC::ex& e, const assumptions& given, std::size_t points)
+{
+    return believed_signs(e, given, points, false) == 3u;
+}
+
+bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t points)
+{
+    return believed_signs(e, given, points, true) != 0;
+}
+
+namespace {
+
+// The simple values of a domain a reader can check by hand, in the order they are tried:
+// its ends and middle for an interval, else 1, 2, 1/2, 3 (and 0, -1, -2 where they lie in it).
+std::vector<GiNaC::numeric> simple_values(const domain& range)
+{
+    std::vector<GiNaC::numeric> candidates;
+    if (range.what == domain::kind::interval) {
+        const GiNaC::numeric a(cln::rationalize(cln::cl_DF(range.lower)));
+        const GiNaC::numeric b(cln::rationalize(cln::cl_DF(range.upper)));
+        candidates = {b, a, (a + b) / 2, (3 * a + b) / 4, (a + 3 * b) / 4};
+    } else {
+        candidates = {1, 2, GiNaC::numeric(1, 2), 0, -1, 3, -2};
+    }
+    std::vector<GiNaC::numeric> inside;
+    for (const GiNaC::numeric& x : candidates)
+        if (range.contains(x.to_double()) && std::find(inside.begin(), inside.end(), x) == inside.end())
+            inside.push_back(x);
+    return inside;
+}
+
+// Whether `a op b` fails for the two numbers, by more than `margin` (0: exactly).
+bool fails(const GiNaC::numeric& a, relation op, const GiNaC::numeric& b, const GiNaC::numeric& margin)
+{
+    const bool exactly = margin.is_zero();
+    switch (op) {
+    case relation::equal: return GiNaC::abs(a - b) > margin;
+    case relation::less_equal: return a - b > margin;
+    case relation::less: return exactly ? a >= b : a - b > margin;
+    case relation::greater_equal: return b - a > margin;
+    case relation::greater: return exactly ? a <= b : b - a > margin;
+    }
+    return false;
+}
+
+} // namespace
+
+std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
+                                                  const symbol_table& symbols, const assumptions& given,
+                                                  std::size_t points)
+{
+    const GiNaC::exmap abbreviations = symbols.abbreviations();
+    const GiNaC::ex a = spelled_out(lhs, abbreviations), b = spelled_out(rhs, abbreviations);
+    // The claim's symbols, and those of each abbreviation that shares one with them, in
+    // turn: the abbreviation must take a value of its own domain at the point (s_n > 0, the
+    // spheres approach; or as `assuming` narrows it), or the point is none of the domains'.
+    std::vector<GiNaC::ex> names;
+    const auto add_symbols = [&](const GiNaC::ex& e) {
+        bool added = false;
+        for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+                std::none_of(names.begin(), names.end(), [&](const GiNaC::ex& n) { return n.is_equal(*it); })) {
+                names.push_back(*it);
+                added = true;
+            }
+        return added;
+    };
+    // Both sides' symbols, also those their difference cancels (u + du - g t against u - g t):
+    // each side must come to a number at the point.
+    add_symbols(a);
+    add_symbols(b);
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> constrained;   // an abbreviation and its definition in the inputs
+    std::set<GiNaC::ex, GiNaC::ex_is_less> taken;
+    for (bool more = true; more;) {
+        more = false;
+        for (const auto& [symbol, definition] : abbreviations) {
+            if (taken.count(symbol))
+                continue;
+            const GiNaC::ex spelled = spelled_out(definition, abbreviations);
+            if (std::none_of(names.begin(), names.end(), [&](const GiNaC::ex& n) { return spelled.has(n); }))
+                continue;
+            taken.insert(symbol);
+            constrained.emplace_back(symbol, spelled);
+            add_symbols(spelled);
+            more = true;
+        }
+    }
+    std::sort(constrained.begin(), constrained.end(),
+              [&](const auto& x, const auto& y) { return given.order.before(x.first, y.first); });
+    std::vector<std::pair<GiNaC::ex, std::vector<GiNaC::numeric>>> free;
+    for (const GiNaC::ex& name : names) {
+        if (abbreviations.count(name))
+            continue;   // spelled out
+        const auto d = given.domains.find(name);
+        if (d == given.domains.end())
+            return std::nullopt;
+        std::vector<GiNaC::numeric> values = simple_values(d->second);
+        if (values.empty())
+            return std::nullopt;
+        free.emplace_back(name, std::move(values));
+    }
+    // Whether each abbreviation lies in its domain at the point (none: a pole, or complex).
+    const auto in_domains = [&](const GiNaC::exmap& at) {
+        for (const auto& [symbol, spelled] : constrained) {
+            // Its domain: as `assuming` narrows it, else as declared.
+            const domain* range = nullptr;
+            if (const auto d = given.domains.find(symbol); d != given.domains.end())
+                range = &d->second;
+            for (const assumptions::assumed_sign& a : given.assumed)
+                if (!range && a.symbol.is_equal(symbol))
+                    range = &a.range;
+            const GiNaC::ex value = GiNaC::evalf(GiNaC::normal(spelled.subs(at, GiNaC::subs_options::no_pattern)));
+            if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
+                return false;
+            if (range && !range->contains(GiNaC::ex_to<GiNaC::numeric>(value).to_double()))
+                return false;
+        }
+        return true;
+    };
+    std::sort(free.begin(), free.end(), [&](const auto& x, const auto& y) { return given.order.before(x.first, y.first); });
+
+    const auto saved_digits = GiNaC::Digits;
+    uniform_stream stream(0x6c0e7e1a5b3d2f19ULL);
+    std::optional<counterexample> found;
+    for (std::size_t n = 0; n < points && !found; ++n) {
+        GiNaC::exmap at;
+        counterexample x;
+        for (const auto& [symbol, values] : free) {
+            const std::size_t k =
+                n == 0 ? 0 : std::min(values.size() - 1, static_cast<std::size_t>(stream.next() * values.size()));
+            at[symbol] = values[k];
+            x.point.emplace_back(symbol, values[k]);
+        }
+        try {
+            if (!in_domains(at))
+                continue;
+            const GiNaC::ex l = GiNaC::normal(a.subs(at, GiNaC::subs_options::no_pattern));
+            const GiNaC::ex r = GiNaC::normal(b.subs(at, GiNaC::subs_options::no_pattern));
+            if (GiNaC::is_a<GiNaC::numeric>(l) && GiNaC::is_a<GiNaC::numeric>(r) &&
+                GiNaC::ex_to<GiNaC::numeric>(l).is_rational() && GiNaC::ex_to<GiNaC::numeric>(r).is_rational()) {
+                if (fails(GiNaC::ex_to<GiNaC::numeric>(l), op, GiNaC::ex_to<GiNaC::numeric>(r), 0)) {
+                    x.lhs = l;
+                    x.rhs = r;
+                    x.exact = true;
+                    found = std::move(x);
+                }
+                continue;
+            }
+            // Radicals: believed when 50 and 80 digits agree and the failure is far beyond
+            // their rounding.
+            bool believed = true;
+            for (const int digits : {50, 80}) {
+                GiNaC::Digits = digits;
+                const GiNaC::ex le = GiNaC::evalf(l), re = GiNaC::evalf(r);
+                if (!GiNaC::is_a<GiNaC::numeric>(le) || !GiNaC::is_a<GiNaC::numeric>(re) ||
+                    !GiNaC::ex_to<GiNaC::numeric>(le).is_real() || !GiNaC::ex_to<GiNaC::numeric>(re).is_real()) {
+                    believed = false;
+                    break;
+                }
+                const GiNaC::numeric u = GiNaC::ex_to<GiNaC::numeric>(le), v = GiNaC::ex_to<GiNaC::numeric>(re);
+                const GiNaC::numeric margin = GiNaC::numeric(1, 1000000000) * (1 + GiNaC::abs(u) + GiNaC::abs(v));
+                believed = believed && fails(u, op, v, margin);
+            }
+            GiNaC::Digits = saved_digits;
+            if (believed) {
+                x.lhs = l;
+                x.rhs = r;
+                found = std::move(x);
+            }
+        } catch (const std::exception&) {
+            GiNaC::Digits = saved_digits;   // a pole: another point
+        }
+    }
+    GiNaC::Digits = saved_digits;
+    return found;
+}
+
+} // namespace impact::engine
