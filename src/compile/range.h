@@ -37,8 +37,8 @@ struct float_format {
 /// of 2 it bounds. The compensated arithmetic's corrections are bounded alike.
 int input_exponent_bound(const program& p, const std::vector<bool>& needed, float_format format);
 
-/// What a batch loop's sure block tests in place of every input (README, "How the batch loops
-/// were shaped"): `tested`, values each 0 or of magnitude within [2^-k, 2^k]. An input that p
+/// What a batch loop's sure block tests in place of every input (docs/design-kernels.md, "How
+/// the batch loops were shaped"): `tested`, values each 0 or of magnitude within [2^-k, 2^k]. An input that p
 /// only adds, subtracts or negates, and at least once subtracts from or adds to another input
 /// (C_M - C_m, v_M - v_m), is not tested itself: that sum or difference is, and it is finite
 /// only where both inputs are. Every other input is tested. Every product, quotient, fused

@@ -3,7 +3,7 @@
 // This is the first stage of Impact: `derivations/*.toml` → these structs. Nothing
 // here knows GiNaC; expressions stay text, each with the place it was written so
 // that later stages can point at it when it is wrong. The file format is described
-// in README.md ("Derivation files").
+// in docs/language.md.
 #pragma once
 
 #include "spec/error.h"

@@ -378,7 +378,7 @@ GiNaC::ex factor_anew(const GiNaC::ex& e, unsigned options)
         // a short try first, then others, longer, each in another order; a polynomial
         // none of them factors is left as it is. The factors do not depend on the try
         // that found them, but for their signs and how far factor() collected each: its
-        // callers expand each factor and put its sign outside (sign.cpp's flattened(),
+        // callers expand each factor and put its sign outside (prove/factor_polynomial.cpp's flattened(),
         // emit/latex_textbook.cpp), so that what they make of it does not depend on the try
         // either. 20 s of CPU time in all, as one try had.
         constexpr unsigned cpu_seconds[] = {1, 2, 5, 12};
