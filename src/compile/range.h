@@ -38,8 +38,9 @@ struct float_format {
 int input_exponent_bound(const program& p, const std::vector<bool>& needed, float_format format);
 
 /// What a batch loop's sure block tests in place of every input (docs/design-kernels.md, "How
-/// the batch loops were shaped"): `tested`, values each 0 or of magnitude within [2^-k, 2^k]. An input that p
-/// only adds, subtracts or negates, and at least once subtracts from or adds to another input
+/// the batch loops were shaped"): `tested`, values each 0 or of magnitude within
+/// [2^-k, 2^k]. An input that p only adds, subtracts or negates, and at least once subtracts
+/// from or adds to another input
 /// (C_M - C_m, v_M - v_m), is not tested itself: that sum or difference is, and it is finite
 /// only where both inputs are. Every other input is tested. Every product, quotient, fused
 /// multiply-add, root and function of p then reads values bounded from the tested ones, as
