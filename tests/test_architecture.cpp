@@ -149,3 +149,19 @@ BOOST_AUTO_TEST_CASE(the_table_allows_no_arrow_backwards)
                         std::find(order.begin(), order.begin() + static_cast<long>(i), to) != order.begin() + static_cast<long>(i)),
                        order[i] << " may include " << to << ", which is not an earlier row");
 }
+
+// A file a reader holds in their head: none under src/ over 600 lines. A file that grows past
+// it is split by what its parts do (ARCHITECTURE.md says what each file of a stage holds).
+BOOST_AUTO_TEST_CASE(no_source_file_is_over_600_lines)
+{
+    std::size_t files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(source_dir / "src")) {
+        if (!entry.is_regular_file())
+            continue;
+        const std::string text = read(entry.path());
+        const auto lines = std::count(text.begin(), text.end(), '\n');
+        BOOST_TEST(lines <= 600, entry.path().lexically_relative(source_dir).string() << " has " << lines << " lines");
+        ++files;
+    }
+    BOOST_TEST(files > 100u);   // the sources were found at all
+}
