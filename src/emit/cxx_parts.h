@@ -1,5 +1,5 @@
 // What the C++ emitter's printers share: the scalar kernel (cxx_kernel.cpp), the batch
-// kernel and its arrays (cxx_batch.cpp), the common header (cxx_common.cpp) and the
+// kernel (cxx_batch.cpp, its blocks in cxx_batch_blocks.cpp) and its arrays (cxx_batch_arrays.cpp), the common header (cxx_common.cpp) and the
 // headers' assembly (cxx.cpp).
 #pragma once
 

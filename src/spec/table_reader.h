@@ -1,6 +1,6 @@
 // Walks one TOML table of a derivation file, remembering which keys were read so that a
 // misspelt key is reported instead of silently ignored; every value it gives carries its
-// place in the file. Used by reader.cpp only.
+// place in the file. Used by the readers (reader.cpp, kernel_reader.cpp, outline.cpp) only.
 #pragma once
 
 #include "spec/derivation.h"

@@ -1,13 +1,16 @@
+// The choice of one kernel's forms (plan_kernel): each output component's candidates
+// measured on the kernel's samples, the best kept, and the fast form's cheapest within
+// its bound; the plan's programs compiled from them (compile_chosen). Every kernel's
+// plan, from the cache or measured, is in plan_kernels.cpp; the bounds they miss in
+// missed_bounds.cpp.
 #include "verify/choice.h"
 
-#include "cache/store.h"
 #include "engine/cases/cases.h"
 #include "engine/prove/sign.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -464,160 +467,6 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
                                          "of <cmath> and rational numbers; give such a constant as an input)",
                                          k.name, e.what()));
     }
-}
-
-namespace {
-
-// How far a measured form is from its bound: its largest error, or the collisions it refuses.
-std::string worst_of(const accuracy& a)
-{
-    if (a.refused > 0)
-        return fmt::format("it refuses {} of {} samples as out_of_range (a divisor below "
-                           "detail::smallest_divisor or infinite, an argument outside its function's domain, such "
-                           "as a square root's below 0 by rounding, or a result not finite; first in the regime "
-                           "'{}')",
-                           a.refused, a.samples, a.first_refused_regime);
-    return fmt::format("{:.3g} ulps at worst ({})", a.max_ulps, a.worst_regime);
-}
-
-} // namespace
-
-std::vector<std::string> missed_bounds(const std::vector<kernel_plan>& plans)
-{
-    std::vector<std::string> missed;
-    for (const kernel_plan& plan : plans) {
-        const engine::kernel& k = *plan.kernel;
-        const auto all = components(k);
-        // The accurate form, then the fast one (the accurate one again, where it is the
-        // fast one too, against the fast bounds).
-        for (const bool fast : {false, true}) {
-            for (std::size_t i = 0; i < plan.components.size(); ++i) {
-                const engine::kernel_output& o = k.outputs[all[i].first];
-                const component_plan& cp = plan.components[i];
-                const emitted_accuracy& e = (fast ? plan.fast_emitted : plan.emitted)[i];
-                const std::array<double, 3>& bound = fast ? o.fast_bound_ulps : o.bound_ulps;
-                // One line an output, naming the type where it is furthest past its bound.
-                const auto& types = engine::kernel_output::types;
-                const accuracy* measured[] = {&e.in_float, &e.in_double, &e.in_long_double};
-                std::size_t worst = 3;
-                for (std::size_t t = 0; t < 3; ++t)
-                    if (measured[t]->max_ulps > bound[t] &&
-                        (worst == 3 || measured[t]->max_ulps / bound[t] > measured[worst]->max_ulps / bound[worst]))
-                        worst = t;
-                if (worst == 3)
-                    continue;
-                // A refused sample is no error a bound admits: the form must stay in range.
-                const std::string refusing =
-                    "; a bound admits no refused sample: give a form that stays in range where they were drawn "
-                    "(forms = [...]; a difference that cancels under a square root, 1 - s^2, written (1 - s)*(1 + s))";
-                if (measured[worst]->refused > 0)
-                    missed.push_back(fmt::format("{}: error: kernel '{}': output '{}' misses its {}bound in {}: {}{}",
-                                                 to_string(k.where), k.name, cp.name, fast ? "fast " : "",
-                                                 types[worst], worst_of(*measured[worst]), refusing));
-                else if (fast)
-                    missed.push_back(fmt::format(
-                        "{}: error: kernel '{}': output '{}' misses its fast bound of {:g} ulps in {}: {}, in the "
-                        "fast form's candidate ({}, {}); give a cheaper form that is accurate "
-                        "enough (forms = [...]) or raise the fast bound with [[kernel.bound]] output = \"{}\", "
-                        "form = \"fast\", type, ulps, because",
-                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], worst_of(*measured[worst]),
-                        cp.candidates[cp.fastest].label,
-                        cp.candidates[cp.fastest].double_accuracy.max_ulps <= bound[1]
-                            ? "the cheapest within the bound in double"
-                            : "the accurate form's: none is within the bound in double",
-                        o.member));
-                else
-                    missed.push_back(fmt::format(
-                        "{}: error: kernel '{}': output '{}' misses its bound of {:g} ulps in {}: {}, with the best "
-                        "of {} candidate forms ({}); give a more accurate form (forms = [...]) "
-                        "or, if this is the best it can do, raise the bound with [[kernel.bound]] output = \"{}\", "
-                        "type, ulps, because",
-                        to_string(k.where), k.name, cp.name, bound[worst], types[worst], worst_of(*measured[worst]),
-                        cp.candidates.size(), cp.candidates[cp.chosen].label, o.member));
-            }
-        }
-    }
-    return missed;
-}
-
-std::vector<kernel_plan> plan_kernels(const engine::library& lib, cache::store* store,
-                                      const std::function<void(std::size_t, std::size_t)>& done,
-                                      const task_runner& runner)
-{
-    struct pending {
-        const engine::kernel* kernel;
-        const engine::term_order* order;
-        std::string key;
-        std::optional<kernel_plan> plan;
-    };
-    // Each derivation's term order, kept while its kernels are planned (printing with it
-    // makes a form's text the same in every process and run).
-    std::vector<std::unique_ptr<engine::term_order>> orders;
-    std::vector<pending> kernels;
-    for (const engine::derivation* d : lib.in_order()) {
-        orders.push_back(std::make_unique<engine::term_order>(engine::declaration_order(d->symbols)));
-        for (const engine::kernel& k : d->kernels) {
-            kernels.push_back({&k, orders.back().get(), {}, std::nullopt});
-            for (const engine::kernel& fixed : k.limits)   // its fixed spheres' kernels after it
-                kernels.push_back({&fixed, orders.back().get(), {}, std::nullopt});
-        }
-    }
-    std::size_t finished = 0;
-    auto one_done = [&] {
-        ++finished;
-        if (done)
-            done(finished, kernels.size());
-    };
-    // The cache first: a choice measured before for the same kernel and build.
-    std::vector<std::size_t> to_measure;
-    for (std::size_t i = 0; i < kernels.size(); ++i) {
-        pending& p = kernels[i];
-        if (store) {
-            p.key = choice_key(*p.kernel, *p.order);
-            if (const auto text = store->get("kernel choice", p.key))
-                p.plan = decode_choice(*text, *p.kernel, *p.order);
-        }
-        if (p.plan)
-            one_done();
-        else
-            to_measure.push_back(i);
-    }
-    auto keep = [&](pending& p) {
-        if (store)
-            store->put("kernel choice", p.key, encode_choice(*p.plan, *p.order));
-    };
-    if (!runner || to_measure.size() < 2) {
-        for (std::size_t i : to_measure) {
-            pending& p = kernels[i];
-            p.plan = plan_kernel(*p.kernel, *p.order);
-            keep(p);
-            one_done();
-        }
-    } else {
-        std::vector<text_task> tasks;
-        for (std::size_t i : to_measure) {
-            const pending& p = kernels[i];
-            // Its cost guessed from the text of everything it measures (its forms, their size).
-            const std::size_t cost = p.key.empty() ? choice_key(*p.kernel, *p.order).size() : p.key.size();
-            tasks.push_back({fmt::format("kernel '{}'", p.kernel->name), p.kernel->where,
-                             [&p] { return encode_choice(plan_kernel(*p.kernel, *p.order), *p.order); }, cost,
-                             "choosing its forms", "choose them"});
-        }
-        const std::vector<std::string> texts = runner(tasks, one_done);
-        for (std::size_t t = 0; t < to_measure.size(); ++t) {
-            pending& p = kernels[to_measure[t]];
-            p.plan = decode_choice(texts.at(t), *p.kernel, *p.order);
-            if (!p.plan)
-                throw error(p.kernel->where, fmt::format("kernel '{}': the choice of its forms came back from its "
-                                                         "worker process unreadable",
-                                                         p.kernel->name));
-            keep(p);
-        }
-    }
-    std::vector<kernel_plan> plans;
-    for (pending& p : kernels)
-        plans.push_back(std::move(*p.plan));
-    return plans;
 }
 
 } // namespace impact::verify
