@@ -369,9 +369,10 @@ BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
     BOOST_TEST(statuses.find("out_of_range") < statuses.find("underflow"));
 }
 
-// Every key reader.cpp accepts, by table, typed from reading it (src/spec/reader.cpp:
+// Every key the reader accepts, by table, typed from reading it (src/spec/reader.cpp:
 // parse_derivation, read_symbol, read_dimension, read_given, read_step, read_result,
-// read_check_fields, read_claim, read_open_claim, read_not_compared, read_kernel, read_sampling_regime, read_use). A field added there fails this
+// read_check_fields, read_claim, read_open_claim, read_not_compared, read_use;
+// src/spec/kernel_reader.cpp: read_kernel, read_sampling_regime). A field added there fails this
 // test until docs/language.md documents it.
 const std::map<std::string, std::set<std::string>> fields_read = {
     {"top level", {"id", "title", "paper", "summary"}},

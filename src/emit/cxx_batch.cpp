@@ -24,7 +24,7 @@ namespace {
 // where the compiler may take every value as finite). Fused, a value costs one operation, where
 // std::isfinite costs two and a merge of the results (the guards were a third of the
 // loop's instructions). The sum is a balanced tree, not a chain: the test gates the loop's
-// division and its stores, and a chain of 12 dependent operations delayed both (README,
+// division and its stores, and a chain of 12 dependent operations delayed both (docs/design-kernels.md,
 // "How the batch loops were shaped", has the measurements).
 // Each term of the sum is written as `term` gives it (in place by default).
 using term_writer = std::function<std::string(const std::string& term, bool is_sum)>;
@@ -85,7 +85,7 @@ std::vector<std::string> batch_failures(const std::vector<domain_test>& tests)
 // from its array, and spills others. The 3D collide holds 29 values at once as compiled,
 // 21 ordered, and gains by the order; the 2D collide (21) keeps its own, one operation
 // across every coordinate, then the next, which gives the processor more independent work
-// side by side (README, "How the batch loops were shaped").
+// side by side (docs/design-kernels.md, "How the batch loops were shaped").
 constexpr std::size_t batch_registers = 24;
 
 } // namespace

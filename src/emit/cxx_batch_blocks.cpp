@@ -175,7 +175,7 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
 
 // Whether a batch kernel may get a skewed block loop too, for arrays that crowd one page
 // offset: one that streams 16 arrays or more (the 2D collide, with 12 arrays, lost by it:
-// README, "How the batch loops were shaped"), and has no sure block (print_batch).
+// docs/design-kernels.md, "How the batch loops were shaped"), and has no sure block (print_batch).
 bool skews(const engine::kernel& k)
 {
     constexpr std::size_t skewed_from = 16;
