@@ -74,11 +74,11 @@ struct proof_cache {
     std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> factored;
     std::shared_ptr<worked_out> declared = std::make_shared<worked_out>();
     /// For a real symbol x under |.|, the positive symbol y with x = ±y or 0 that a proof
-    /// by the sign of x writes (engine/cases/cases.cpp): one per x, so that what is worked out
+    /// by the sign of x writes (engine/cases/in_case.cpp): one per x, so that what is worked out
     /// about y is kept.
     std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> magnitudes;
     /// For the boundary of two cases (the numerator of their condition, expanded), the
-    /// quantity it is solved for and its value there (engine/cases/cases.cpp, prove_continuity),
+    /// quantity it is solved for and its value there (engine/cases/continuity.cpp),
     /// or none: the components of one vector meet on the same boundary.
     std::map<GiNaC::ex, std::optional<std::pair<GiNaC::ex, GiNaC::ex>>, GiNaC::ex_is_less> boundaries;
 
