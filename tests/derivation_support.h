@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "engine/derivation/derivation.h"
+#include "engine/derive/derive.h"
 #include "spec/derivation.h"
 
 #include <string>

@@ -240,18 +240,40 @@ std::string fragment_writer::sign_text(const engine::sign_step& step) const
 std::string fragment_writer::limit_text(const engine::limit_method& how) const
 {
     using kind = engine::limit_method::kind;
-    if (!how.at_infinity && how.how == kind::substitution) {
-        static const std::map<std::string, std::string> tex = {
-            {">= 0", "\\geq 0"}, {"> 0", "> 0"}, {"< 0", "< 0"}, {"<= 0", "\\leq 0"}, {"!= 0", "\\neq 0"}};
-        const auto sign = tex.find(how.denominator_sign.describe());
-        if (sign != tex.end())
-            return fmt::format("by substitution (continuous there: its denominator ${}$ is ${}$)",
-                               math(how.denominator), sign->second);
-    }
     if (how.at_infinity && how.leading_in_inverse)
         return fmt::format("by substituting ${} = 1/t$ and letting $t \\to 0^+$: the leading term is ${}$",
                            math(how.inverted), math(textbook(*how.leading_in_inverse).value));
-    return latex_text(how.words);
+    // How the limit at the point was taken (at t = 0 for s = 1/t), typeset: the proof's
+    // words are program text (`x - 0`, `*`, `^`).
+    std::string at_point;
+    if (how.how == kind::substitution) {
+        static const std::map<std::string, std::string> tex = {
+            {">= 0", "\\geq 0"}, {"> 0", "> 0"}, {"< 0", "< 0"}, {"<= 0", "\\leq 0"}, {"!= 0", "\\neq 0"}};
+        const auto sign = tex.find(how.denominator_sign.describe());
+        at_point = fmt::format("by substitution (continuous there: its denominator ${}$ is ${}$)",
+                               math(how.denominator), sign != tex.end() ? sign->second : "\\neq 0");
+    } else {
+        // The leading term c (s - a)^n of the series in s - a (in s when a is 0).
+        const bool bare = GiNaC::is_a<GiNaC::symbol>(how.point) ||
+                          (GiNaC::is_a<GiNaC::numeric>(how.point) && how.point.info(GiNaC::info_flags::nonnegative));
+        const std::string variable =
+            how.point.is_zero() ? math(how.symbol)
+                                : fmt::format("{} - {}", math(how.symbol),
+                                              bare ? math(how.point) : parenthesised(math(how.point)));
+        const std::string power = how.point.is_zero() ? variable : "(" + variable + ")";
+        std::string term = math(how.coefficient);
+        if (how.order != 0) {
+            const std::string raised = how.order == 1 ? power : fmt::format("{}^{{{}}}", power, how.order);
+            term = how.coefficient.is_equal(1)    ? raised
+                   : how.coefficient.is_equal(-1) ? "-" + raised
+                   : GiNaC::is_a<GiNaC::add>(how.coefficient) ? parenthesised(term) + " " + raised
+                                                              : term + " " + raised;
+        }
+        at_point = fmt::format("by the leading term of its series in ${}$, ${}$", variable, term);
+    }
+    if (how.at_infinity)
+        return fmt::format("by substituting ${} = 1/t$ and letting $t \\to 0^+$: {}", math(how.inverted), at_point);
+    return at_point;
 }
 
 std::string fragment_writer::display(const std::string& lhs, const char* relation, const GiNaC::ex& rhs,

@@ -103,8 +103,8 @@ std::string equation_tag(const std::string& paper)
 
 namespace detail {
 
-fragment_writer::fragment_writer(const engine::derivation& d)
-    : d_(d), order_(engine::declaration_order(d.symbols))
+fragment_writer::fragment_writer(const engine::derivation& d, const engine::derived_by_id* used)
+    : d_(d), used_(used), order_(engine::declaration_order(d.symbols))
 {
     int g = 0;
     for (const engine::equation& e : d.givens)
@@ -219,9 +219,42 @@ std::string fragment_writer::quantities() const
         }
         if (q.dim)
             out += " (" + si_unit_latex(*q.dim) + ")";
-        out += q.meaning.empty() ? "\n" : ": " + latex_prose(q.meaning) + "\n";
+        const std::string from = imported_from(q);
+        out += q.meaning.empty() ? (from.empty() ? "" : ": " + from)
+                                 : ": " + latex_prose(q.meaning) + (from.empty() ? "" : "; " + from);
+        out += "\n";
     }
     return out + "\\end{itemize}\n";
+}
+
+// A quantity `[[use]]` imports is the result of another derivation: said where it is listed,
+// that derivation named by its title (as its section is headed) and the result by its symbol
+// there when it is written otherwise here, and by the paper's place when it has one.
+std::string fragment_writer::imported_from(const engine::quantity& q) const
+{
+    for (const spec::use& u : d_.source.uses)
+        for (const spec::binding& b : u.results) {
+            if (b.name.value != q.name)
+                continue;
+            const std::string& id = u.derivation.value;
+            const engine::derivation* other = nullptr;
+            if (used_)
+                if (const auto found = used_->find(id); found != used_->end())
+                    other = &found->second;
+            const engine::result* r = other ? other->find_result(b.expression.value) : nullptr;
+            if (!other || !r)
+                return fmt::format("the result {} of the derivation \\texttt{{{}}}", latex_text(b.expression.value),
+                                   latex_text(id));
+            const std::string there = math(r->symbol);
+            std::string out = there == math(q.symbol) ? "the result" : "the result $" + there + "$";
+            out += " of \\emph{" + latex_text(other->source.title.value) + "}";
+            if (!r->paper.empty())
+                out += ", " + paper_text(r->paper);
+            else if (other->source.paper)
+                out += " (" + paper_text(other->source.paper->value) + ")";
+            return out;
+        }
+    return "";
 }
 
 std::string fragment_writer::givens() const
@@ -485,7 +518,9 @@ std::optional<std::string> fragment_writer::derived_cases_rows(const std::string
         if (i > 0)
             out += " \\\\\n";
         out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", fits ? case_condition(c) : written_condition(c), notag);
-        const std::string last = i + 1 == cases.size() ? tag : "";
+        // One equation, one number: the block's rows are unnumbered but its last, which
+        // carries the tag (a row left bare would take a number of its own).
+        const std::string last = i + 1 == cases.size() ? tag : tag.empty() ? "" : "\\notag";
         if (fits)
             out += rows(lhs, textbook(c.value).value, nullptr, last);
         else
@@ -785,9 +820,9 @@ std::string latex_label(const engine::derivation& d)
     return "impact:" + d.id();
 }
 
-std::string latex_fragment(const engine::derivation& d)
+std::string latex_fragment(const engine::derivation& d, const engine::derived_by_id* used)
 {
-    return detail::fragment_writer(d).write();
+    return detail::fragment_writer(d, used).write();
 }
 
 } // namespace impact::emit

@@ -106,7 +106,9 @@ std::string si_unit_latex(const engine::dimension& d);
 /// Everything the fragment of one derivation needs while it is written.
 class fragment_writer {
 public:
-    explicit fragment_writer(const engine::derivation& d);
+    /// `used`: the derivations derived, by id, where those `d` imports from are found (none:
+    /// they are named by their ids).
+    explicit fragment_writer(const engine::derivation& d, const engine::derived_by_id* used = nullptr);
 
     /// The whole fragment.
     std::string write();
@@ -124,6 +126,9 @@ private:
                      const char* relation = "=", double align_at = -1) const;
     std::string ref(const std::string& equation) const;
     std::string quantities() const;
+    /// Where an imported quantity comes from ("the result $T$ of \emph{A mass on a spring}"),
+    /// or nothing for a quantity of this derivation's own.
+    std::string imported_from(const engine::quantity& q) const;
     std::string givens() const;
     std::string step_checks(const engine::step_result& s) const;
     std::string steps() const;
@@ -144,7 +149,8 @@ private:
     std::string cases_math(const std::vector<engine::case_value>& cases, bool derived) const;
     /// `lhs &= \begin{cases} ... \end{cases}` in the declared quantities when it fits the
     /// line; else each case on rows of its own under its condition, its value as a textbook
-    /// shows it and broken over lines. The last row gets `tag`. When a case takes more than
+    /// shows it and broken over lines. The last row gets `tag`, the others \notag when
+    /// there is a tag: one number for the block. When a case takes more than
     /// three lines or does not fit: none, or, if it `must` be shown, the cases as the file
     /// writes them.
     std::optional<std::string> derived_cases_rows(const std::string& lhs, const std::vector<engine::case_value>& cases,
@@ -202,6 +208,7 @@ private:
     static constexpr double content_width = 450;
 
     const engine::derivation& d_;
+    const engine::derived_by_id* used_;
     const term_order order_;
     std::map<std::string, std::string> tags_;
     mutable std::map<GiNaC::ex, textbook_value, GiNaC::ex_is_less> textbooks_;
