@@ -1,8 +1,9 @@
 // How the LaTeX printer (latex.cpp) sees sums and products, shared with the line breaker
 // (latex_lines.cpp), which breaks a displayed equation where the printer would write a
-// term or a factor; and the writer of a derivation's fragment, whose quantities, givens,
-// steps and results (latex_fragment.cpp) and checks and paper comparisons
-// (latex_claims.cpp) are written apart. Internal to emit.
+// term or a factor; and the writer of a derivation's fragment, whose whole, quantities and
+// givens (latex_fragment.cpp), steps (latex_steps.cpp), results (latex_results.cpp),
+// checks (latex_claims.cpp) and paper comparisons (latex_paper.cpp) are written apart.
+// Internal to emit.
 #pragma once
 
 #include "emit/latex.h"
@@ -103,6 +104,9 @@ std::string listing(const std::vector<std::string>& items);
 /// A dimension's SI unit, e.g. $\mathrm{kg\,m^{2}\,s^{-2}}$, or "dimensionless".
 std::string si_unit_latex(const engine::dimension& d);
 
+/// Math set inline when it is short and flat, displayed (and broken) otherwise.
+bool wants_display(const std::string& math);
+
 /// Everything the fragment of one derivation needs while it is written.
 class fragment_writer {
 public:
@@ -118,7 +122,10 @@ public:
     void errata_row(errata_table& table, const engine::text_comparison& words) const;
 
 private:
-    // latex_fragment.cpp: the printing shared by every part, and the derivation itself.
+    // latex_fragment.cpp: the printing shared by every part, the quantities and the givens;
+    // latex_steps.cpp: the steps (step_checks to rearrange_step, and the cases);
+    // latex_results.cpp: the results (results, shown_as, defining_step, result_ref,
+    // result_cited, places).
     std::string math(const GiNaC::ex& e, const written_form* w = nullptr) const;
     std::string relation_math(const GiNaC::ex& r, const written_form* w = nullptr,
                               engine::relation op = engine::relation::equal) const;
@@ -176,7 +183,8 @@ private:
     std::optional<std::string> result_cited(const engine::result& r) const;
     std::string places(const engine::result& first) const;
 
-    // latex_claims.cpp: the checks and the paper held to account.
+    // latex_claims.cpp: the checks; latex_paper.cpp: the paper held to account (displayed,
+    // form, paper, checked_display).
     std::string how(const engine::check_result& c) const;
     std::string sign_text(const engine::sign_step& step) const;
     std::string limit_text(const engine::limit_method& how) const;
