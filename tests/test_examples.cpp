@@ -10,6 +10,7 @@
 
 #include "derivation_support.h"
 #include "emit/errata.h"
+#include "emit/verification.h"
 #include "engine/library/library.h"
 #include "pipeline/regenerate.h"
 
@@ -324,6 +325,25 @@ BOOST_AUTO_TEST_CASE(errata_of_files_that_transcribe_nothing_say_so)
                            "line or claim of a text") != std::string::npos,
                errata);
     BOOST_TEST(errata.find("| Where |") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_verification_of_a_folder_of_ones_own_speaks_of_its_kernels_not_of_collisions)
+{
+    // verification.md of the examples: its introduction names the folder's kernels and the
+    // regimes of their inputs; none of them is a collision. The paper's keeps its words.
+    const std::string own = emit::verification_markdown({}, "examples/", emit::of_the_paper(examples().in_order()));
+    BOOST_TEST(own.find("# Kernel verification\n\nEvery output of every kernel generated from the derivation files "
+                        "in `examples/`, run on inputs drawn from the regimes where its value is hard to compute, "
+                        "each kernel's listed under its name: its positive inputs over 12 decades, each input of "
+                        "an interval near each of its ends (1e-12 to 1e-1 of its width from it), and the regimes "
+                        "its derivation file declares") != std::string::npos,
+               own);
+    BOOST_TEST(own.find("collision") == std::string::npos, own);
+    BOOST_TEST(own.find("reduced mass") == std::string::npos, own);
+    const std::string paper = emit::verification_markdown({}, "derivations/", true);
+    BOOST_TEST(paper.find("Every output of every generated kernel, run on inputs drawn from the regimes where "
+                          "collisions are hard to compute") != std::string::npos,
+               paper);
 }
 
 BOOST_AUTO_TEST_CASE(generated_files_name_a_derivation_file_by_its_folders_own_name)

@@ -782,3 +782,94 @@ BOOST_AUTO_TEST_CASE(a_result_long_written_out_is_shown_as_its_step_defines_it)
     BOOST_TEST(contains(shown, "$w$ is shown as its step defines it, in the quantities named there"), shown);
     BOOST_TEST(!contains(shown, "$u$ is shown"), shown);
 }
+
+BOOST_AUTO_TEST_CASE(a_quantity_imported_from_another_derivation_is_said_to_be_its_result)
+{
+    // The pendulum of tests/examples/ imports the spring's period T as T_spring: its item says
+    // whose result it is, the spring's derivation by its title, the result by its symbol there.
+    const engine::library lib = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/tests/examples"),
+                                                   "pendulum");
+    const std::string tex = emit::latex_fragment(lib.derived.at("pendulum"), &lib.derived);
+    BOOST_TEST(contains(tex, "\\item $T_\\mathrm{spring} \\in \\mathbb{R}$ ($\\mathrm{s}$): period of a mass m on a "
+                             "spring of stiffness k; the result $T$ of \\emph{A mass on a spring}\n"),
+               tex);
+    // The pendulum's own quantities say nothing of the kind.
+    BOOST_TEST(contains(tex, "\\item $T \\in \\mathbb{R}$ ($\\mathrm{s}$): period of the pendulum\n"), tex);
+    // Handed no derivations, the fragment names the other by its id.
+    BOOST_TEST(contains(emit::latex_fragment(lib.derived.at("pendulum")),
+                        "stiffness k; the result T of the derivation \\texttt{spring}\n"));
+}
+
+BOOST_AUTO_TEST_CASE(a_result_imported_from_the_paper_is_cited_by_its_place_there)
+{
+    // Eq. 11's derivation takes Eq. 8's final velocities (inelastic_line's results, which the
+    // paper prints on the two lines of Eq. 8's right side), under the same symbols.
+    const engine::library lib = engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"),
+                                                   "energy_loss");
+    const std::string tex = emit::latex_fragment(lib.derived.at("energy_loss"), &lib.derived);
+    BOOST_TEST(contains(tex, "velocity of M along the line of action after the collision (Eq. 8); the result of "
+                             "\\emph{Inelastic collision along the line of action}, Eq.~(8), right, first line\n"),
+               tex);
+}
+
+BOOST_AUTO_TEST_CASE(a_result_defined_by_cases_is_one_numbered_equation)
+{
+    // Cases too wide for one line are set row by row under their conditions: one equation
+    // still, numbered once (the paper's Eq. 7, on its last row), no row numbered apart.
+    const std::string text =
+        "id = \"wide\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"F\"\ndomain = \"positive\"\n[[symbol]]\nname = \"m\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"g\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"mu\"\nlatex = \"\\\\mu\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"alpha\"\nlatex = \"\\\\alpha\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"beta\"\nlatex = \"\\\\beta\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"f\"\n"
+        "[[step]]\ndefine = \"f\"\ncases = [\n"
+        "  { when = \"F*(1 + alpha)*(1 + beta) <= mu*m*g*(1 + alpha^2)*(1 + beta^2)\", "
+        "as = \"F*(1 + alpha)*(1 + beta)/((1 + alpha^2)*(1 + beta^2))\" },\n"
+        "  { when = \"F*(1 + alpha)*(1 + beta) > mu*m*g*(1 + alpha^2)*(1 + beta^2)\", as = \"mu*m*g\" },\n]\n"
+        "because = \"static friction holds up to a bound\"\n"
+        "[[result]]\nname = \"f\"\npaper = \"Eq. 7\"\n";
+    const std::string tex = emit::latex_fragment(engine::derive(spec::parse_derivation(text, "wide.toml"), {}));
+    const std::size_t results = tex.find("\\paragraph{Results.}");
+    BOOST_TEST_REQUIRE(results != std::string::npos);
+    const std::string shown = tex.substr(results, tex.find("\\end{align}", results) - results);
+    BOOST_TEST(shown ==
+                   "\\paragraph{Results.}\n\\begin{align}\n"
+                   "  & \\text{if } F (1 + \\alpha) (1 + \\beta) \\leq m g \\mu (1 + \\alpha^{2}) (1 + \\beta^{2}): "
+                   "\\notag \\\\\n"
+                   "  f &= \\frac{F (1 + \\alpha) (1 + \\beta)}{(1 + \\alpha^{2}) (1 + \\beta^{2})} \\notag \\\\\n"
+                   "  & \\text{if } F (1 + \\alpha) (1 + \\beta) > m g \\mu (1 + \\alpha^{2}) (1 + \\beta^{2}): "
+                   "\\notag \\\\\n"
+                   "  f &= m g \\mu \\tag*{Eq.~(7)}\\label{impact:wide:result:f}\n",
+               shown);
+}
+
+BOOST_AUTO_TEST_CASE(a_limit_taken_by_its_series_is_typeset)
+{
+    // sin(x)/x and sin(x)^2/x at 0, and sin(x - 1)/(x - 1) at 1, are 0/0 there: their limits
+    // are the leading terms of their series, said in mathematics, not in the proof's words.
+    const std::string text =
+        "id = \"series\"\ntitle = \"t\"\n"
+        "[[symbol]]\nname = \"x\"\ndomain = \"positive\"\n"
+        "[[symbol]]\nname = \"f\"\n[[symbol]]\nname = \"q\"\n[[symbol]]\nname = \"s\"\n"
+        "[[step]]\ndefine = \"f\"\nas = \"sin(x)/x\"\n"
+        "[[step]]\ndefine = \"q\"\nas = \"sin(x)^2/x\"\n"
+        "[[step]]\ndefine = \"s\"\nas = \"sin(x - 1)/(x - 1)\"\n"
+        "[[result]]\nname = \"f\"\n"
+        "[[check]]\nname = \"sinc_at_zero\"\nclaim = \"f = 1\"\nlimit = \"x -> 0\"\n"
+        "[[check]]\nname = \"vanishing\"\nclaim = \"q = 0\"\nlimit = \"x -> 0\"\n"
+        "[[check]]\nname = \"shifted\"\nclaim = \"s = 1\"\nlimit = \"x -> 1\"\n";
+    const std::string tex = emit::latex_fragment(engine::derive(spec::parse_derivation(text, "series.toml"), {}));
+    BOOST_TEST(contains(tex, "$\\lim_{x \\to 0} f = 1$. The limit is established by the leading term of its "
+                             "series in $x$, $1$.\n"),
+               tex);
+    BOOST_TEST(contains(tex, "$\\lim_{x \\to 0} q = 0$. The limit is established by the leading term of its "
+                             "series in $x$, $x$.\n"),
+               tex);
+    BOOST_TEST(contains(tex, "$\\lim_{x \\to 1} s = 1$. The limit is established by the leading term of its "
+                             "series in $x - 1$, $1$.\n"),
+               tex);
+    BOOST_TEST(!contains(tex, "->"), tex);
+    BOOST_TEST(!contains(tex, "\\^{}"), tex);
+}

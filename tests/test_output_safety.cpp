@@ -476,3 +476,53 @@ BOOST_AUTO_TEST_CASE(standard_output_that_cannot_be_written_is_an_error)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(folders_inside_impacts_output)
+
+BOOST_AUTO_TEST_CASE(files_impact_wrote_in_a_folder_inside_its_output_are_never_called_the_users)
+{
+    project p;
+    BOOST_TEST_REQUIRE(p.impact("regenerate").status == 0);
+
+    // output/latex is Impact's (output's marker lists its files): written into without --force.
+    const run_result fragment = p.impact("latex first -o output/latex/mine.tex");
+    BOOST_TEST(fragment.status == 0, fragment.output);
+    BOOST_TEST(fragment.output == "", fragment.output);
+    const run_result kernels = p.impact("kernels --output output/latex");
+    BOOST_TEST(kernels.status == 0, kernels.output);
+    BOOST_TEST(lines_of(kernels.output) == std::vector<std::string>{"impact: wrote 3 kernel headers to output/latex"},
+               boost::test_tools::per_element());
+    const run_result simulated = p.impact("simulate --output output/latex/simulations");
+    BOOST_TEST(simulated.status == 0, simulated.output);
+    BOOST_TEST(simulated.output.find("did not write") == std::string::npos, simulated.output);
+
+    // Regenerated, output keeps what the other commands wrote inside it, and says nothing of
+    // them: they are Impact's. A file of the user's beside them is said to be kept.
+    p.write("output/latex/notes.md", "what I make of it\n");
+    const run_result again = p.impact("regenerate");
+    BOOST_TEST_REQUIRE(again.status == 0, again.output);
+    BOOST_TEST(lines_of(again.output) ==
+                   (std::vector<std::string>{"impact: kept 1 path Impact did not write in output: latex/notes.md",
+                                             "impact: wrote 9 files to output"}),
+               boost::test_tools::per_element());
+    BOOST_TEST(p.read("output/latex/mine.tex").find("\\subsection{a good derivation}") != std::string::npos);
+    BOOST_TEST(p.has("output/latex/kernels/impact/first_y.hpp"));
+    BOOST_TEST(p.has("output/latex/simulations/billiard.dat"));
+    BOOST_TEST(p.read("output/latex/notes.md") == "what I make of it\n");
+}
+
+BOOST_AUTO_TEST_CASE(a_folder_holding_only_what_another_command_wrote_is_impacts)
+{
+    // `impact latex -o out/latex/x.tex` made out/; regenerating into out is not refused as a
+    // folder of the user's.
+    project p;
+    BOOST_TEST_REQUIRE(p.impact("latex first -o out/latex/x.tex").status == 0);
+    const run_result r = p.impact("regenerate --output out");
+    BOOST_TEST_REQUIRE(r.status == 0, r.output);
+    BOOST_TEST(lines_of(r.output) == std::vector<std::string>{"impact: wrote 9 files to out"},
+               boost::test_tools::per_element());
+    BOOST_TEST(p.has("out/latex/x.tex"));
+    BOOST_TEST(p.has("out/latex/first.tex"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

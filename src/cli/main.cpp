@@ -168,7 +168,7 @@ int run_latex(const options& o)
     }
     const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
-    const std::string fragment = emit::latex_fragment(d);
+    const std::string fragment = emit::latex_fragment(d, &lib.derived);
     if (file.empty())
         fmt::print("{}", fragment);
     else

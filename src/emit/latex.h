@@ -124,7 +124,10 @@ std::pair<GiNaC::ex, const written_form*> result_beside(const engine::derivation
 /// given equations with their justifications, each step and what it yields, the results
 /// numbered as in the paper, the checks with their status and how each was
 /// established, and the paper's printed forms compared. Needs amsmath and amssymb only.
-std::string latex_fragment(const engine::derivation& d);
+/// A quantity imported from another derivation (`[[use]]`) is said to be that one's
+/// result, the derivation named by its title from `used` (the derivations derived, by id),
+/// by its id when `used` has none.
+std::string latex_fragment(const engine::derivation& d, const engine::derived_by_id* used = nullptr);
 
 /// The file name of a derivation's fragment (`<id>.tex`).
 std::string latex_fragment_name(const engine::derivation& d);

@@ -1,5 +1,6 @@
-// The checks of a derivation's LaTeX fragment, with how each was established, and the
-// paper's printed forms held to account, in the fragment and as rows of the errata table.
+// The checks of a derivation's LaTeX fragment, with how each was established (a sign, a
+// limit, cases), and a claim as checked, which the paper's part (latex_paper.cpp) and the
+// errata table (latex_errata.cpp) show too.
 #include "emit/errata.h"
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
@@ -126,15 +127,15 @@ const char* relation_to_zero(const engine::sign_set& sign)
     return nullptr;
 }
 
+} // namespace
+
+namespace detail {
+
 // Math set inline when it is short and flat, displayed (and broken) otherwise.
 bool wants_display(const std::string& math)
 {
     return latex_width(math) > 230 || nested_fraction(math);
 }
-
-} // namespace
-
-namespace detail {
 
 // How a check was established, in words and math: the sign of each factor for an
 // inequality, the method of a limit, the sample size when not proven.
@@ -240,18 +241,40 @@ std::string fragment_writer::sign_text(const engine::sign_step& step) const
 std::string fragment_writer::limit_text(const engine::limit_method& how) const
 {
     using kind = engine::limit_method::kind;
-    if (!how.at_infinity && how.how == kind::substitution) {
-        static const std::map<std::string, std::string> tex = {
-            {">= 0", "\\geq 0"}, {"> 0", "> 0"}, {"< 0", "< 0"}, {"<= 0", "\\leq 0"}, {"!= 0", "\\neq 0"}};
-        const auto sign = tex.find(how.denominator_sign.describe());
-        if (sign != tex.end())
-            return fmt::format("by substitution (continuous there: its denominator ${}$ is ${}$)",
-                               math(how.denominator), sign->second);
-    }
     if (how.at_infinity && how.leading_in_inverse)
         return fmt::format("by substituting ${} = 1/t$ and letting $t \\to 0^+$: the leading term is ${}$",
                            math(how.inverted), math(textbook(*how.leading_in_inverse).value));
-    return latex_text(how.words);
+    // How the limit at the point was taken (at t = 0 for s = 1/t), typeset: the proof's
+    // words are program text (`x - 0`, `*`, `^`).
+    std::string at_point;
+    if (how.how == kind::substitution) {
+        static const std::map<std::string, std::string> tex = {
+            {">= 0", "\\geq 0"}, {"> 0", "> 0"}, {"< 0", "< 0"}, {"<= 0", "\\leq 0"}, {"!= 0", "\\neq 0"}};
+        const auto sign = tex.find(how.denominator_sign.describe());
+        at_point = fmt::format("by substitution (continuous there: its denominator ${}$ is ${}$)",
+                               math(how.denominator), sign != tex.end() ? sign->second : "\\neq 0");
+    } else {
+        // The leading term c (s - a)^n of the series in s - a (in s when a is 0).
+        const bool bare = GiNaC::is_a<GiNaC::symbol>(how.point) ||
+                          (GiNaC::is_a<GiNaC::numeric>(how.point) && how.point.info(GiNaC::info_flags::nonnegative));
+        const std::string variable =
+            how.point.is_zero() ? math(how.symbol)
+                                : fmt::format("{} - {}", math(how.symbol),
+                                              bare ? math(how.point) : parenthesised(math(how.point)));
+        const std::string power = how.point.is_zero() ? variable : "(" + variable + ")";
+        std::string term = math(how.coefficient);
+        if (how.order != 0) {
+            const std::string raised = how.order == 1 ? power : fmt::format("{}^{{{}}}", power, how.order);
+            term = how.coefficient.is_equal(1)    ? raised
+                   : how.coefficient.is_equal(-1) ? "-" + raised
+                   : GiNaC::is_a<GiNaC::add>(how.coefficient) ? parenthesised(term) + " " + raised
+                                                              : term + " " + raised;
+        }
+        at_point = fmt::format("by the leading term of its series in ${}$, ${}$", variable, term);
+    }
+    if (how.at_infinity)
+        return fmt::format("by substituting ${} = 1/t$ and letting $t \\to 0^+$: {}", math(how.inverted), at_point);
+    return at_point;
 }
 
 std::string fragment_writer::display(const std::string& lhs, const char* relation, const GiNaC::ex& rhs,
@@ -386,261 +409,7 @@ std::string fragment_writer::checks() const
     return out + "\\end{itemize}\n";
 }
 
-// A printed or derived form: inline when short, else displayed and broken.
-bool fragment_writer::displayed(const GiNaC::ex& e, const written_form* w) const
-{
-    return wants_display(e.info(GiNaC::info_flags::relation) ? relation_math(e, w) : math(e, w));
-}
-
-std::string fragment_writer::form(const GiNaC::ex& e, const written_form* w) const
-{
-    if (!displayed(e, w))
-        return "$" + (e.info(GiNaC::info_flags::relation) ? relation_math(e, w) : math(e, w)) + "$";
-    if (e.info(GiNaC::info_flags::relation))
-        return display(math(e.lhs(), w), "=", e.rhs(), w);
-    return display("", "", e, w);
-}
-
-// A claim as checked, too wide for a line: displayed (its two sides on lines of their own
-// when its left side is wide), its special values, domains or changed inputs after it.
-std::string fragment_writer::checked_display(const engine::check_result& t) const
-{
-    const std::string shown = checked_claim_latex(t, order_);
-    const std::string lhs = claim_lhs(t, &t.written);
-    std::string out = latex_width(lhs) > content_width - 40
-                          ? "\n\\begin{align*}\n" + rows("", t.stated.lhs(), &t.written, "", "") + " \\\\\n" +
-                                rows("", t.stated.rhs(), &t.written, "", latex_relation(t.op)) + "\n\\end{align*}\n"
-                          : display(lhs, latex_relation(t.op), t.stated.rhs(), &t.written);
-    const std::string conditions = shown.substr(shown.find('$', 1) + 1);
-    if (conditions.size() > 2)
-        out += capitalised(conditions.substr(2)) + ".\n";
-    return out;
-}
-
-// Each of the paper's items: what it prints or says, the verdict, and for a
-// disagreement what is derived and the smallest change that reconciles the two.
-// Text after a displayed formula starts a new sentence.
-std::string fragment_writer::paper() const
-{
-    const std::vector<engine::text_comparison> words = engine::text_comparisons(d_.source);
-    if (d_.paper_checks.empty() && words.empty())
-        return "";
-    // In the report, whose errata table has a row for each (\impacterratatable, its
-    // section's label), a sentence that says where, with the count: each finding printed
-    // once. A fragment pasted alone lists them.
-    std::size_t agree = 0, disagrees = 0, undecided = 0;
-    std::vector<std::string> disagree;   // their places, each once
-    for (const engine::text_comparison& t : words) {
-        const std::string v = engine::to_string(t.verdict);
-        agree += v == "agrees";
-        disagrees += v == "disagrees";
-        undecided += v == "undecided";
-        if (v == "disagrees" && std::find(disagree.begin(), disagree.end(), paper_text(t.paper)) == disagree.end())
-            disagree.push_back(paper_text(t.paper));
-    }
-    for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
-        const std::string v = row_verdict(d_, row);
-        agree += v == "agrees";
-        disagrees += v == "disagrees";
-        undecided += v == "undecided";
-        const std::string place = paper_text(d_.paper_checks[row.front()].paper);
-        if (v == "disagrees" && std::find(disagree.begin(), disagree.end(), place) == disagree.end())
-            disagree.push_back(place);
-    }
-    std::vector<std::string> counts;
-    if (agree > 0)
-        counts.push_back(fmt::format("{} {}", agree, agree == 1 ? "agrees" : "agree"));
-    if (!disagree.empty())
-        counts.push_back(fmt::format("{} {} ({})", disagrees, disagrees == 1 ? "disagrees" : "disagree",
-                                     fmt::join(disagree, "; ")));
-    if (undecided > 0)
-        counts.push_back(fmt::format("{} undecided", undecided));
-    std::string out = "\n\\paragraph{The paper, held to account.}\n\\ifdefined\\impacterratatable\n" +
-                      fmt::format("The paper's printed lines and claims that this derivation compares are rows of the "
-                                  "table in Section~\\ref{{\\impacterratatable}}, with their findings: {}.\n",
-                                  fmt::join(counts, ", ")) +
-                      "\\else\n\\begin{itemize}\n";
-    // One item per finding: a misprint that one finding explains in several components of
-    // one equation (Eq. 9's v'_m) is shown once, the other components named.
-    // The claims checked of one quote are one item when all are proven (what was proven of
-    // each said beside it), and an item each otherwise, so that each failure is said: the
-    // quote in the first, each saying what it checked.
-    struct item {
-        std::vector<std::size_t> row;
-        bool checked_apart = false;   // one of several checks of one quote that do not all hold
-        bool same_quote = false;      // ... and not the first: the quote is not repeated
-    };
-    std::vector<item> items;
-    for (const std::vector<std::size_t>& row : emit::errata_rows(d_)) {
-        if (d_.paper_checks[row.front()].what == engine::paper_comparison::kind::claim && row.size() > 1 &&
-            row_verdict(d_, row) != "agrees")
-            for (std::size_t k : row)
-                items.push_back({{k}, true, k != row.front()});
-        else
-            items.push_back({row});
-    }
-    for (const item& it : items) {
-        const std::vector<std::size_t>& row = it.row;
-        const engine::paper_comparison p = in_the_papers_units(d_.paper_checks[row.front()]);
-        const std::string what = subject(p);
-        out += fmt::format("\\item {}, {}: ", paper_text(p.paper), what);
-        bool after_display = false;
-        if (p.what == engine::paper_comparison::kind::claim) {
-            out += it.same_quote ? std::string("the same words") : fmt::format("``{}''", latex_prose(p.printed_text));
-            if (it.checked_apart && p.test)
-                out += ", checked as " + checked_claim_latex(*p.test, order_);
-        } else {
-            const std::string printed = as_printed(p);
-            after_display = wants_display(printed);
-            out += "printed " + read_as(p) + (after_display ? shown_as_printed(p) : "$" + printed + "$");
-        }
-        const std::string verdict = comparison_verdict(p);
-        if (p.agrees()) {
-            // A claim: what was proven, so that two claims of one sentence read apart; one
-            // too wide for the line displayed after the item's words (the errata table,
-            // which has no room for it, refers here).
-            std::vector<std::string> proven;
-            std::string displays;
-            for (std::size_t k : row)
-                if (const engine::paper_comparison c = in_the_papers_units(d_.paper_checks[k]);
-                    c.what == engine::paper_comparison::kind::claim && c.test) {
-                    const std::string shown = checked_claim_latex(*c.test, order_);
-                    if (latex_width(shown) < 260 && shown.find("\\frac{\\frac") == std::string::npos) {
-                        proven.push_back(shown);
-                        continue;
-                    }
-                    displays += checked_display(*c.test);
-                }
-            // A claim the paper says does not hold agrees by being refuted, not proven.
-            const bool refuted = std::all_of(row.begin(), row.end(), [&](std::size_t k) {
-                const engine::paper_comparison& c = d_.paper_checks[k];
-                return c.test && c.test->said_false;
-            });
-            const std::string how = refuted ? "refuted, as the paper says" : "proven";
-            const std::string checked =
-                proven.empty() ? "" : " (" + how + ": " + fmt::format("{}", fmt::join(proven, "; ")) + ")";
-            const std::string also =
-                displays.empty() ? "" : (proven.empty() ? "; " + how + ":" : "; and " + how + ":") + displays;
-            out += after_display ? "It agrees" + checked + (also.empty() ? ".\n" : also)
-                                 : " --- agrees" + checked + (also.empty() ? ".\n" : also);
-            continue;
-        }
-        out += fmt::format(after_display ? (verdict == "disagrees" ? "It \\textbf{{{}}}" : "It is \\textbf{{{}}}")
-                                         : " --- \\textbf{{{}}}",
-                           verdict);
-        if (verdict == "undecided") {
-            out += ": neither proven nor refuted (" + latex_prose(p.agreement.method) + ").\n";
-            continue;
-        }
-        if (p.what != engine::paper_comparison::kind::claim || p.agreement.what == engine::verdict::status::failed) {
-            const auto [derived, written] = derived_form(p);
-            // After a long quote the line has little room left: a derived form of any
-            // width is displayed.
-            const bool wide = p.what == engine::paper_comparison::kind::claim &&
-                              latex_width(derived.info(GiNaC::info_flags::relation) ? relation_math(derived, written)
-                                                                                   : math(derived, written)) > 150;
-            after_display = wide || displayed(derived, written);
-            out += ": derived " + (wide ? shown(derived, written) : form(derived, written));
-        } else {
-            after_display = false;
-        }
-        // A dimensional inconsistency is said as such, then the change that mends it.
-        const std::string dimensions = findings(p, finding_kind::dimensions);
-        const std::string changes = findings(p, finding_kind::changes);
-        std::string tail;
-        if (!dimensions.empty())
-            tail += after_display ? capitalised(dimensions) : "; it is " + dimensions;
-        // Findings that say what holds instead ("the reverse holds: ...", "it holds for ... instead")
-        // are no edit: "smallest change" names only an edit of the printed form.
-        const bool edit = p.what != engine::paper_comparison::kind::claim ||
-                          std::any_of(p.findings.begin(), p.findings.end(),
-                                      [](const engine::finding& f) { return f.corrected.has_value(); });
-        if (!changes.empty())
-            tail += after_display && tail.empty() ? (edit ? "Smallest change: " + changes : capitalised(changes))
-                                                  : (edit ? "; smallest change: " + changes : "; " + changes);
-        else if (p.what == engine::paper_comparison::kind::claim && p.test)
-            tail += after_display && tail.empty() ? capitalised(unreconciled(p, 250)) : "; " + unreconciled(p, 250);
-        if (row.size() > 1) {
-            std::vector<std::string> others;
-            for (std::size_t k = 1; k < row.size(); ++k)
-                others.push_back(subject(d_.paper_checks[row[k]]));
-            tail += (tail.empty() && after_display ? "" : ". ") +
-                    fmt::format("The same misprint, with the same smallest change, is in {}", listing(others));
-        }
-        out += tail + (tail.empty() && after_display ? "\n" : ".\n");
-    }
-    // The words compared: claims no derivation settles (undecided, and why), references.
-    for (const engine::text_comparison& t : words) {
-        const std::string verdict = engine::to_string(t.verdict);
-        out += fmt::format("\\item {}, {}: ``{}'' --- {}: {}.\n", paper_text(t.paper),
-                           t.what == engine::text_comparison::kind::reference ? "reference entry" : "claim",
-                           latex_prose(t.printed), verdict == "agrees" ? verdict : "\\textbf{" + verdict + "}",
-                           latex_prose(t.finding));
-    }
-    return out + "\\end{itemize}\n\\fi\n";
-}
-
 } // namespace detail
-
-engine::paper_comparison in_the_papers_units(const engine::paper_comparison& p)
-{
-    const std::string& words = p.printed_text;
-    if (p.what != engine::paper_comparison::kind::claim ||
-        (words.find("^\\circ") == std::string::npos && words.find("\u00b0") == std::string::npos))
-        return p;
-    // q π as the symbol "180 |q|°", its sign outside: printed, never computed with. Only a
-    // whole side or a whole term of a sum (θ = π/2, θ - π/2), never a π inside a product
-    // (π r² is an area).
-    struct to_degrees : GiNaC::map_function {
-        GiNaC::ex operator()(const GiNaC::ex& e) override
-        {
-            if (GiNaC::is_a<GiNaC::relational>(e) || GiNaC::is_a<GiNaC::add>(e))
-                return e.map(*this);   // each side, each term
-            const GiNaC::ex q = e / GiNaC::Pi;
-            if (!e.has(GiNaC::Pi) || !GiNaC::is_a<GiNaC::numeric>(q) || !q.info(GiNaC::info_flags::rational))
-                return e;
-            const GiNaC::numeric degrees = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(q)) * 180;
-            const std::string number = degrees.is_integer()
-                                           ? fmt::format("{}", degrees.to_long())
-                                           : fmt::format("\\tfrac{{{}}}{{{}}}", degrees.numer().to_long(),
-                                                         degrees.denom().to_long());
-            const GiNaC::ex angle = GiNaC::symbol(fmt::format("degrees_{}", number), number + "^\\circ");
-            return GiNaC::ex_to<GiNaC::numeric>(q).is_negative() ? -angle : angle;
-        }
-    } degrees;
-    // A claim about an angle (its left side derived as an arccosine, arcsine or arctangent):
-    // its value 0 is 0° too ("the derived value is 0°, not 90°"); never the 0 of a cosine.
-    const bool angle = p.test && GiNaC::is_a<GiNaC::function>(p.test->lhs) && [&] {
-        const std::string name = GiNaC::ex_to<GiNaC::function>(p.test->lhs).get_name();
-        return name == "acos" || name == "asin" || name == "atan";
-    }();
-    const GiNaC::symbol zero_degrees("degrees_0", "0^\\circ");
-    const auto value = [&](const GiNaC::ex& e) -> GiNaC::ex { return angle && e.is_zero() ? zero_degrees : degrees(e); };
-    engine::paper_comparison shown = p;
-    shown.printed = degrees(p.printed);
-    shown.derived = value(p.derived);
-    for (engine::finding& f : shown.findings)
-        for (engine::finding::part& part : f.parts) {
-            part.value = value(part.value);
-            if (part.point)
-                part.point = degrees(*part.point);
-        }
-    if (shown.test) {
-        engine::check_result& c = *shown.test;
-        const GiNaC::ex stated = degrees(c.stated.lhs()) == value(c.stated.rhs());
-        // The claim as its file writes it names π: set from the expression instead.
-        if (!stated.is_equal(c.stated))
-            c.written = written_form();
-        c.stated = stated;
-        c.lhs = degrees(c.lhs);
-        c.rhs = value(c.rhs);
-        if (c.value)
-            c.value = value(*c.value);
-        for (auto& [symbol, value] : c.at)
-            value = degrees(value);
-    }
-    return shown;
-}
 
 std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written)
 {

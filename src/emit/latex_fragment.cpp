@@ -1,5 +1,8 @@
 // The LaTeX fragment of a derivation: quantities, givens, steps and results, typeset as a
-// textbook's derivation (its checks and the paper's printed forms: latex_claims.cpp).
+// textbook's derivation. This file writes the whole, the printing every part shares, the
+// quantities and the givens; the steps are latex_steps.cpp's, the results
+// latex_results.cpp's, its checks latex_claims.cpp's and the paper's printed forms
+// latex_paper.cpp's.
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
 
@@ -89,22 +92,8 @@ std::string listing(const std::vector<std::string>& items)
     return out;
 }
 
-} // namespace detail
-
-namespace {
-
-// The tag of a numbered result: the paper's place as cited, "Eq.~(8), right, first line".
-std::string equation_tag(const std::string& paper)
-{
-    return detail::paper_text(paper);
-}
-
-} // namespace
-
-namespace detail {
-
-fragment_writer::fragment_writer(const engine::derivation& d)
-    : d_(d), order_(engine::declaration_order(d.symbols))
+fragment_writer::fragment_writer(const engine::derivation& d, const engine::derived_by_id* used)
+    : d_(d), used_(used), order_(engine::declaration_order(d.symbols))
 {
     int g = 0;
     for (const engine::equation& e : d.givens)
@@ -141,6 +130,14 @@ std::string fragment_writer::math(const GiNaC::ex& e, const written_form* w) con
 std::string fragment_writer::relation_math(const GiNaC::ex& r, const written_form* w, engine::relation op) const
 {
     return math(r.lhs(), w) + " " + latex_relation(op) + " " + math(r.rhs(), w);
+}
+
+const textbook_value& fragment_writer::textbook(const GiNaC::ex& e) const
+{
+    auto found = textbooks_.find(e);
+    if (found == textbooks_.end())
+        found = textbooks_.emplace(e, textbook_form(e, order_)).first;
+    return found->second;
 }
 
 // `lhs &= rhs` rows of an align, the right side broken over lines when long; the last
@@ -219,9 +216,42 @@ std::string fragment_writer::quantities() const
         }
         if (q.dim)
             out += " (" + si_unit_latex(*q.dim) + ")";
-        out += q.meaning.empty() ? "\n" : ": " + latex_prose(q.meaning) + "\n";
+        const std::string from = imported_from(q);
+        out += q.meaning.empty() ? (from.empty() ? "" : ": " + from)
+                                 : ": " + latex_prose(q.meaning) + (from.empty() ? "" : "; " + from);
+        out += "\n";
     }
     return out + "\\end{itemize}\n";
+}
+
+// A quantity `[[use]]` imports is the result of another derivation: said where it is listed,
+// that derivation named by its title (as its section is headed) and the result by its symbol
+// there when it is written otherwise here, and by the paper's place when it has one.
+std::string fragment_writer::imported_from(const engine::quantity& q) const
+{
+    for (const spec::use& u : d_.source.uses)
+        for (const spec::binding& b : u.results) {
+            if (b.name.value != q.name)
+                continue;
+            const std::string& id = u.derivation.value;
+            const engine::derivation* other = nullptr;
+            if (used_)
+                if (const auto found = used_->find(id); found != used_->end())
+                    other = &found->second;
+            const engine::result* r = other ? other->find_result(b.expression.value) : nullptr;
+            if (!other || !r)
+                return fmt::format("the result {} of the derivation \\texttt{{{}}}", latex_text(b.expression.value),
+                                   latex_text(id));
+            const std::string there = math(r->symbol);
+            std::string out = there == math(q.symbol) ? "the result" : "the result $" + there + "$";
+            out += " of \\emph{" + latex_text(other->source.title.value) + "}";
+            if (!r->paper.empty())
+                out += ", " + paper_text(r->paper);
+            else if (other->source.paper)
+                out += " (" + paper_text(other->source.paper->value) + ")";
+            return out;
+        }
+    return "";
 }
 
 std::string fragment_writer::givens() const
@@ -244,535 +274,6 @@ std::string fragment_writer::givens() const
     return out + "\\end{align}\n";
 }
 
-std::string fragment_writer::step_checks(const engine::step_result& s) const
-{
-    std::string out;
-    for (const engine::check_result& c : s.checks) {
-        // A define by cases proves its cases cover every value: said of the quantity, typeset.
-        const bool covering = !s.cases.empty() && c.name.rfind("the cases of ", 0) == 0;
-        const std::string said = covering ? fmt::format("The cases of ${}$ cover every value", math(s.cases_of))
-                                          : capitalised(latex_text(c.name));
-        out += fmt::format("{}: {}.\n", said, status_text(c.outcome));
-    }
-    return out;
-}
-
-std::vector<int> fragment_writer::step_items() const
-{
-    std::vector<int> items(d_.steps.size(), 0);
-    int listed = 0;
-    for (std::size_t i = 0; i < d_.steps.size(); ++i) {
-        const engine::step_result& s = d_.steps[i];
-        const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
-        // Givens that state their unknowns' values already (M = m, v_M = 0): nothing to solve
-        // and no equation to show; before any listed step only, where "substituted in what
-        // follows" is true of all.
-        if (listed == 0 && s.what == spec::step::kind::solve && source && s.solutions.size() <= 1 &&
-            givens_state(s, *source))
-            continue;
-        // A copy of a quantity under another name (τ again, to compare with another printed
-        // line): the same symbol, the same value, nothing for the reader to follow.
-        if (s.what == spec::step::kind::define && s.values.size() == 1 && s.as_written &&
-            math(*s.as_written) == math(s.values[0].first))
-            continue;
-        items[i] = ++listed;
-    }
-    return items;
-}
-
-int fragment_writer::item_deriving(const GiNaC::ex& symbol, std::size_t before) const
-{
-    const std::vector<int> items = step_items();
-    for (std::size_t i = 0; i < before && i < d_.steps.size(); ++i)
-        for (const auto& value : d_.steps[i].values)
-            if (value.first.is_equal(symbol))
-                return items[i];
-    return 0;
-}
-
-std::string fragment_writer::steps() const
-{
-    if (d_.steps.empty())
-        return "";
-    const std::vector<int> items = step_items();
-    std::string before, out;
-    for (std::size_t i = 0; i < d_.steps.size(); ++i) {
-        const engine::step_result& s = d_.steps[i];
-        const spec::step* source = i < d_.source.steps.size() ? &d_.source.steps[i] : nullptr;
-        const std::string because = s.because.empty() ? "" : " (" + latex_prose(s.because) + ")";
-        if (items[i] == 0) {
-            // Givens that state their values: said once, in words, before the steps.
-            if (s.what == spec::step::kind::solve)
-                before += solve_step(s, source, because);
-            continue;
-        }
-        out += "\\item ";
-        switch (s.what) {
-        case spec::step::kind::solve: out += solve_step(s, source, because); break;
-        case spec::step::kind::define: out += define_step(s, because); break;
-        case spec::step::kind::quotient: out += quotient_step(s, source, because); break;
-        case spec::step::kind::rearrange: out += rearrange_step(s, source, because); break;
-        }
-    }
-    const std::string head = "\n\\paragraph{Derivation.}\n" + before;
-    return out.empty() ? head : head + "\\begin{enumerate}\n" + out + "\\end{enumerate}\n";
-}
-
-// Whether the step's equations are the givens `unknown = value` of each of its values, as
-// written: solving them restates them.
-bool fragment_writer::givens_state(const engine::step_result& s, const spec::step& source) const
-{
-    if (s.values.empty() || source.equations.size() != s.values.size())
-        return false;
-    for (const auto& [unknown, value] : s.values) {
-        bool stated = false;
-        for (const spec::text& name : source.equations)
-            for (const engine::equation& g : d_.givens)
-                if (g.name == name.value && g.relation.lhs().is_equal(unknown) && g.relation.rhs().is_equal(value))
-                    stated = true;
-        if (!stated)
-            return false;
-    }
-    return true;
-}
-
-std::string fragment_writer::solve_step(const engine::step_result& s, const spec::step* source,
-                                        const std::string& because) const
-{
-    std::vector<std::string> equations, unknowns;
-    if (source)
-        for (const spec::text& e : source->equations)
-            equations.push_back(ref(e.value));
-    for (const auto& value : s.values)
-        unknowns.push_back("$" + math(value.first) + "$");
-    // Givens that state their unknowns' values: said in words (before the numbered steps,
-    // or as a step after others).
-    if (source && s.solutions.size() <= 1 && givens_state(s, *source))
-        return fmt::format("{} give {} directly{}; they are substituted in what follows.\n",
-                           capitalised(listing(equations)), listing(unknowns), because);
-    // The result an unknown is, as its file displays it; none when it is no such result.
-    const auto displayed_result = [this](const GiNaC::ex& unknown) -> const engine::result* {
-        const engine::result* r = GiNaC::is_a<GiNaC::symbol>(unknown)
-                                      ? d_.find_result(GiNaC::ex_to<GiNaC::symbol>(unknown).get_name())
-                                      : nullptr;
-        return r && r->cases.empty() && !r->written.empty() && r->symbol.is_equal(unknown) ? r : nullptr;
-    };
-    // Every unknown a result shown and numbered in the results, as the file displays it: the
-    // results are not set out twice; the step refers to them.
-    std::vector<std::string> numbered;
-    for (const auto& [unknown, value] : s.values)
-        if (const engine::result* r = displayed_result(unknown))
-            if (const auto ref = result_cited(*r))
-                numbered.push_back(*ref);
-    std::string out;
-    if (!numbered.empty() && numbered.size() == s.values.size() && s.solutions.size() <= 1) {
-        // By their tags, which have commas of their own: "Eq. (8), right, first line; ...".
-        out = fmt::format("Solving {} for {}{} gives the results below ({}).\n", listing(equations),
-                          listing(unknowns), because, fmt::join(numbered, "; "));
-    } else {
-        out = fmt::format("Solving {} for {}{} gives\n\\begin{{align*}}\n", listing(equations), listing(unknowns),
-                          because);
-        // Each value as a textbook shows it: the result's display form when the unknown is a
-        // result (Eq. 8's v'_M, collected in eps as the paper prints it), else factored or
-        // collected, and said which.
-        std::vector<std::string> hows;
-        for (std::size_t i = 0; i < s.values.size(); ++i) {
-            const auto& [unknown, value] = s.values[i];
-            const engine::result* r = displayed_result(unknown);
-            const bool displayed = r != nullptr;
-            const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook(value);
-            out += rows(math(unknown), shown.value, displayed ? &r->written : nullptr, "") +
-                   (i + 1 < s.values.size() ? " \\\\\n" : "\n");
-            if (!shown.how.empty())
-                hows.push_back(fmt::format("${}$ {}", math(unknown), shown.how));
-        }
-        out += "\\end{align*}\n";
-        if (!hows.empty())
-            out += "Shown: " + listing(hows) + ".\n";
-        out += rejected_solutions(s);
-    }
-    const bool all_proven = std::all_of(s.checks.begin(), s.checks.end(), [](const engine::check_result& c) {
-        return c.outcome.what == engine::verdict::status::proven;
-    });
-    if (all_proven && !s.checks.empty())
-        out += fmt::format("Substituted back, {} satisfies {}: \\textbf{{proven}}.\n",
-                           s.solutions.size() > 1 ? "each solution" : "the solution",
-                           equations.size() == 1 ? equations.front() : "each of " + listing(equations));
-    else
-        out += step_checks(s);
-    return out;
-}
-
-// The solutions of a non-linear system other than the one kept, each with why it is
-// rejected: the domain of an unknown it leaves, or the condition of the step it meets.
-std::string fragment_writer::rejected_solutions(const engine::step_result& s) const
-{
-    std::vector<std::string> rejected;
-    for (const engine::solution& found : s.solutions) {
-        if (found.kept())
-            continue;
-        std::vector<std::string> values;
-        for (const auto& [symbol, value] : found.values)
-            values.push_back(math(symbol) + " = " + math(value));
-        std::string why;
-        if (found.outcome == engine::solution::fate::outside_domain)
-            why = fmt::format("${} {}$", math(found.unknown), found.range.to_latex());
-        else
-            why = fmt::format("${} = {}$: {}", math(found.condition.lhs()), math(found.condition.rhs()),
-                              latex_text(found.why));
-        rejected.push_back(fmt::format("${}$ ({})", fmt::format("{}", fmt::join(values, ",\\ ")), why));
-    }
-    if (rejected.empty())
-        return "";
-    return fmt::format("The equations have {} solutions; rejected: {}.\n", s.solutions.size(), listing(rejected));
-}
-
-std::string fragment_writer::cases_math(const std::vector<engine::case_value>& cases, bool derived) const
-{
-    std::vector<std::string> rows;
-    for (const engine::case_value& c : cases)
-        rows.push_back(fmt::format("{} & \\text{{if }} {} {} {}",
-                                   derived ? math(c.value) : math(c.as_written, &c.written),
-                                   math(derived ? c.lhs : c.written_lhs), latex_relation(c.op),
-                                   math(derived ? c.rhs : c.written_rhs)));
-    return fmt::format("\\begin{{cases}} {} \\end{{cases}}", fmt::join(rows, " \\\\ "));
-}
-
-std::string fragment_writer::case_condition(const engine::case_value& c) const
-{
-    const std::string derived = fmt::format("{} {} {}", math(c.lhs), latex_relation(c.op), math(c.rhs));
-    if (latex_width(derived) < 0.6 * content_width)
-        return derived;
-    return written_condition(c);
-}
-
-const textbook_value& fragment_writer::textbook(const GiNaC::ex& e) const
-{
-    auto found = textbooks_.find(e);
-    if (found == textbooks_.end())
-        found = textbooks_.emplace(e, textbook_form(e, order_)).first;
-    return found->second;
-}
-
-std::string fragment_writer::written_condition(const engine::case_value& c) const
-{
-    return fmt::format("{} {} {}", math(c.written_lhs), latex_relation(c.op), math(c.written_rhs));
-}
-
-std::optional<std::string> fragment_writer::derived_cases_rows(const std::string& lhs,
-                                                               const std::vector<engine::case_value>& cases,
-                                                               const std::string& tag, bool must) const
-{
-    const std::string whole = cases_math(cases, true);
-    if (latex_width(lhs) + latex_width(whole) < content_width - 40)
-        return fmt::format("  {} &= {}{}", lhs, whole, tag.empty() ? "" : " " + tag);
-    const std::string notag = tag.empty() ? "" : " \\notag";
-    // Every case in at most three lines that fit, or the cases as the file writes them
-    // (|J_t| = (1 + beta) m_t G_t / d^2 rather than G_t's radicand spelled out over pages).
-    bool fits = true;
-    for (const engine::case_value& c : cases) {
-        const std::vector<std::string> lines =
-            latex_lines(textbook(c.value).value, order_, nullptr, content_width - 60);
-        fits = fits && lines.size() <= 3 &&
-               std::all_of(lines.begin(), lines.end(),
-                           [](const std::string& line) { return latex_width(line) <= content_width - 40; });
-    }
-    if (!fits && !must)
-        return std::nullopt;
-    std::string out;
-    for (std::size_t i = 0; i < cases.size(); ++i) {
-        const engine::case_value& c = cases[i];
-        if (i > 0)
-            out += " \\\\\n";
-        out += fmt::format("  & \\text{{if }} {}:{} \\\\\n", fits ? case_condition(c) : written_condition(c), notag);
-        const std::string last = i + 1 == cases.size() ? tag : "";
-        if (fits)
-            out += rows(lhs, textbook(c.value).value, nullptr, last);
-        else
-            out += rows(lhs, c.as_written, &c.written, last);
-    }
-    return out;
-}
-
-// A definition as its file writes it, its parentheses kept ((v'_M - v'_m) - (v_M - v_m),
-// which GiNaC would flatten), when it fits a line; else broken as GiNaC reads it.
-std::string fragment_writer::as_defined(const std::string& lhs, const GiNaC::ex& value, const written_form& w) const
-{
-    if (const auto& tree = w.tree(); tree && tree->what != written_form::node::kind::relation) {
-        const std::string written = latex_as_written(*tree, order_);
-        if (latex_width(lhs) + latex_width(written) < content_width - 60)
-            return fmt::format("  {} &= {}", lhs, written);
-    }
-    return rows(lhs, value, &w, "");
-}
-
-std::string fragment_writer::define_step(const engine::step_result& s, const std::string& because) const
-{
-    std::string out;
-    if (!s.cases.empty()) {
-        const std::string symbol = math(s.cases_of);
-        out += fmt::format("Defining ${}${} by cases:\n\\begin{{align*}}\n  {} &= {}", symbol, because, symbol,
-                           cases_math(s.cases, false));
-        // What the cases come to in the declared quantities, when that differs.
-        std::string too_long;
-        if (cases_math(s.cases, true) != cases_math(s.cases, false)) {
-            if (const auto derived = derived_cases_rows(symbol, s.cases, "", false))
-                out += " \\\\\n" + *derived;
-            else
-                too_long = fmt::format("Written out in the declared quantities, its cases would take more than three "
-                                       "lines each; what follows uses ${}$ by name.\n",
-                                       symbol);
-        }
-        return out + "\n\\end{align*}\n" + too_long + step_checks(s);
-    }
-    for (const auto& [symbol, value] : s.values) {
-        out += fmt::format("Defining ${}${}:\n\\begin{{align*}}\n", math(symbol), because);
-        // The definition as written, then what it comes to when that differs.
-        const std::optional<GiNaC::ex>& as_written = s.as_written;
-        const written_form& w = s.written;
-        // What it comes to: the result's display form when it is a result, else the value
-        // as a textbook shows it (factored or collected, which is said).
-        const engine::result* r = d_.find_result(GiNaC::ex_to<GiNaC::symbol>(symbol).get_name());
-        const bool displayed = r && r->cases.empty() && !r->written.empty() &&
-                               !(as_written && math(*as_written, &w) == math(r->display, &r->written));
-        const textbook_value shown = displayed ? textbook_value{r->display, ""} : textbook(value);
-        const written_form* shown_written = displayed ? &r->written : nullptr;
-        std::string how, after;
-        if (as_written && !as_written->is_equal(value) && math(*as_written, &w) != math(value) &&
-            math(*as_written, &w) != math(shown.value, shown_written)) {
-            out += as_defined(math(symbol), *as_written, w);
-            // What it comes to: a numbered result is referred to (its value is in the results),
-            // unless it is defined as another quantity by name (v'_{M,par} = v'_M of Eq. 3), when
-            // the value is what the step says; otherwise the value, unless written out in the
-            // declared quantities it takes more lines than its definition, or more than three (a contact point's velocity
-            // spelled out in every spin and radius): the quantity is then used by name.
-            const double side = latex_width(math(symbol));
-            const auto lines_of = [&](const GiNaC::ex& e, const written_form* written) {
-                return latex_lines(e, order_, written, std::max(content_width - side - 14, 150.0),
-                                   std::max(content_width - side - 20, 150.0))
-                    .size();
-            };
-            const std::optional<std::string> numbered =
-                displayed && !GiNaC::is_a<GiNaC::symbol>(*as_written) ? result_cited(*r) : std::nullopt;
-            // Defined as a quantity an earlier step derives (v'_{M,perp} = v_{M,perp}, which
-            // the rotation of step 1 gives): its value is there, not set out again.
-            const int earlier = GiNaC::is_a<GiNaC::symbol>(*as_written) ? item_deriving(*as_written, static_cast<std::size_t>(&s - d_.steps.data())) : 0;
-            if (earlier > 0) {
-                after = fmt::format("Step~{} gives ${}$.\n", earlier, math(*as_written));
-            } else if (numbered) {
-                after = fmt::format("Its value is the result below ({}).\n", *numbered);
-            } else if (displayed || lines_of(shown.value, shown_written) <=
-                                        std::min<std::size_t>(3, lines_of(*as_written, &w) + 1)) {
-                // Set out when it reads about as easily as the definition: at most three
-                // lines, and at most one more than the definition takes.
-                out += " \\\\\n" + rows("", shown.value, shown_written, "", "=", side);
-                how = shown.how;
-            } else {
-                after = fmt::format("Written out in the declared quantities, it would take more {}; what follows uses "
-                                    "${}$ by name.\n",
-                                    lines_of(shown.value, shown_written) > 3 ? "than three lines"
-                                                                             : "lines than its definition",
-                                    math(symbol));
-            }
-            out += "\n";
-        } else if (as_written) {
-            out += as_defined(math(symbol), *as_written, w) + "\n";
-        } else {
-            out += rows(math(symbol), shown.value, shown_written, "") + "\n";
-            how = shown.how;
-        }
-        out += "\\end{align*}\n" + after;
-        if (!how.empty())
-            out += "The value is shown " + how + ".\n";
-    }
-    return out + step_checks(s);
-}
-
-std::string fragment_writer::yields(const engine::step_result& s) const
-{
-    if (!s.yields)
-        return "";
-    const std::string tag =
-        fmt::format("\\tag{{{}}}\\label{{{}:{}}}", tags_.at(s.yields->name), latex_label(d_), s.yields->name);
-    const written_form& w = s.yields->written;   // a rearranged form as the file writes it
-    return "\\begin{align}\n" + rows(math(s.yields->relation.lhs(), &w), s.yields->relation.rhs(), &w, tag) +
-           "\n\\end{align}\n";
-}
-
-std::string fragment_writer::quotient_step(const engine::step_result& s, const spec::step* source,
-                                           const std::string& because) const
-{
-    std::string a = "an equation", b = "another";
-    if (source && source->equations.size() == 2) {
-        a = ref(source->equations[0].value);
-        b = ref(source->equations[1].value);
-    }
-    std::vector<std::string> assumed;
-    for (const GiNaC::ex& assumption : s.assumptions)
-        assumed.push_back(fmt::format("${} \\neq {}$", math(assumption.lhs()), math(assumption.rhs())));
-    std::string out = fmt::format("Dividing {} by {} side by side{}", a, b, because);
-    if (!assumed.empty())
-        out += fmt::format(", where {}", listing(assumed));
-    return out + ", gives\n" + yields(s) + step_checks(s);
-}
-
-std::string fragment_writer::rearrange_step(const engine::step_result& s, const spec::step* source,
-                                            const std::string& because) const
-{
-    std::string out = fmt::format("Rearranging {}{} gives\n", source ? ref(source->source.value) : "", because);
-    out += yields(s);
-    for (const engine::check_result& c : s.checks)
-        out += fmt::format("Equivalent to {}: {}.\n", ref(source ? source->source.value : ""),
-                           status_text(c.outcome));
-    return out;
-}
-
-// The result shown in place of `r`: an earlier result of the same symbol and the same
-// display (τ of Eq. 12's second, third and fourth lines), shown once; or `r` itself.
-const engine::result& fragment_writer::shown_as(const engine::result& r) const
-{
-    for (const engine::result& earlier : d_.results) {
-        if (&earlier == &r)
-            break;
-        if (earlier.cases.empty() && r.cases.empty() && math(earlier.symbol) == math(r.symbol) &&
-            math(earlier.display, &earlier.written) == math(r.display, &r.written))
-            return earlier;
-    }
-    return r;
-}
-
-// The places of the results shown as `first`, cited together: "Eq.~(12), second, third
-// and fourth lines" when they are lines of one equation.
-std::string fragment_writer::places(const engine::result& first) const
-{
-    std::vector<std::string> papers;
-    for (const engine::result& r : d_.results)
-        if (&shown_as(r) == &first && !r.paper.empty())
-            papers.push_back(r.paper);
-    if (papers.size() < 2)
-        return equation_tag(first.paper);
-    static const char* const ordinals[] = {"first", "second", "third", "fourth", "fifth", "sixth",
-                                           "seventh", "eighth", "ninth", "tenth"};
-    const std::string line = ", line ";
-    const std::string base = papers[0].substr(0, papers[0].rfind(line));
-    std::vector<int> numbers;
-    for (const std::string& paper : papers) {
-        const auto at = paper.rfind(line);
-        if (at == std::string::npos || paper.substr(0, at) != base)
-            return equation_tag(first.paper);
-        numbers.push_back(std::atoi(paper.c_str() + at + line.size()));
-    }
-    std::sort(numbers.begin(), numbers.end());
-    numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
-    if (numbers.size() == 1)
-        return equation_tag(first.paper);
-    std::vector<std::string> words;
-    for (int n : numbers) {
-        if (n < 1 || n > 10)
-            return equation_tag(first.paper);
-        words.push_back(ordinals[n - 1]);
-    }
-    return equation_tag(base) + ", " + listing(words) + " lines";
-}
-
-std::optional<std::string> fragment_writer::result_ref(const engine::result& r) const
-{
-    if (r.paper.empty() || &shown_as(r) != &r)
-        return std::nullopt;
-    return fmt::format("\\ref{{{}:result:{}}}", latex_label(d_), r.name);
-}
-
-std::optional<std::string> fragment_writer::result_cited(const engine::result& r) const
-{
-    const std::optional<std::string> ref = result_ref(r);
-    if (!ref)
-        return ref;
-    const std::string tag = places(r);
-    for (const engine::result& other : d_.results)
-        if (&other != &r && !other.paper.empty() && &shown_as(other) == &other && places(other) == tag)
-            return *ref + ", $" + math(r.symbol) + "$";
-    return ref;
-}
-
-std::string fragment_writer::results() const
-{
-    if (d_.results.empty())
-        return "";
-    std::vector<const engine::result*> shown;
-    for (const engine::result& r : d_.results)
-        if (&shown_as(r) == &r)
-            shown.push_back(&r);
-    std::string out = "\n\\paragraph{Results.}\n\\begin{align}\n";
-    std::vector<std::string> as_defined;   // results shown as their steps define them
-    double widest = 0;
-    for (const engine::result* r : shown)
-        widest = std::max(widest, latex_width(math(r->symbol)));
-    for (std::size_t i = 0; i < shown.size(); ++i) {
-        const engine::result& r = *shown[i];
-        // The same quantity in another form right after it (Eq. 10's two lines): one chain,
-        // the symbol shown once.
-        const bool continued = i > 0 && r.cases.empty() && shown[i - 1]->cases.empty() &&
-                               math(shown[i - 1]->symbol) == math(r.symbol);
-        std::string tag = "\\notag";
-        // The paper's own numbering, as cited: several results of one printed line share it.
-        if (!r.paper.empty())
-            tag = fmt::format("\\tag*{{{}}}\\label{{{}:result:{}}}", places(r), latex_label(d_), r.name);
-        if (!r.cases.empty()) {
-            out += *derived_cases_rows(math(r.symbol), r.cases, tag, true) + (i + 1 < shown.size() ? " \\\\\n" : "\n");
-            continue;
-        }
-        // A result its file gives no display form for: as a textbook shows it, factored or
-        // collected; or, when that takes more lines, or is far wider, as its step defines it,
-        // in the quantities the step names (the rough spheres' v'_{M,x} = v_{M,x} - (J_n n_x +
-        // J_{t,x})/M, three lines written out).
-        GiNaC::ex value = !r.written.empty() ? r.display : textbook(r.display).value;
-        const written_form* written = &r.written;
-        if (r.written.empty())
-            if (const engine::step_result* s = defining_step(r.symbol);
-                s && !GiNaC::is_a<GiNaC::symbol>(*s->as_written)) {   // a bare name is no value
-                // Lines it takes, a line too wide for the page (a long quotient) counted as two.
-                const double first = std::max(content_width - widest - 14 - 60, 150.0);
-                const auto line_count = [&](const GiNaC::ex& e, const written_form* w) {
-                    const std::vector<std::string> lines = latex_lines(e, order_, w, first, first);
-                    return lines.size() + (latex_width(lines.front()) > first ? 1 : 0);
-                };
-                const std::size_t written_out = line_count(value, written);
-                const std::size_t defined = line_count(*s->as_written, &s->written);
-                // On one line too, a value half as wide again as its definition (the rough
-                // spheres' spins: a quotient of roots, where the step's moment over the
-                // inertia reads at a glance).
-                const bool wider = written_out == 1 && defined == 1 &&
-                                   latex_width(math(value, written)) > 1.5 * latex_width(math(*s->as_written, &s->written));
-                if ((written_out > 1 && defined < written_out) || wider) {
-                    value = *s->as_written;
-                    written = &s->written;
-                    as_defined.push_back("$" + math(r.symbol) + "$");
-                }
-            }
-        out += rows(continued ? "" : math(r.symbol), value, written, tag, "=", widest) +
-               (i + 1 < shown.size() ? " \\\\\n" : "\n");
-    }
-    out += "\\end{align}\n";
-    if (!as_defined.empty())
-        out += fmt::format("{} {} shown as {} step{} define{} {}, in the quantities named there: written out in the "
-                           "declared quantities, {} would be longer.\n",
-                           capitalised(listing(as_defined)), as_defined.size() == 1 ? "is" : "are",
-                           as_defined.size() == 1 ? "its" : "their", as_defined.size() == 1 ? "" : "s",
-                           as_defined.size() == 1 ? "s" : "", as_defined.size() == 1 ? "it" : "them",
-                           as_defined.size() == 1 ? "it" : "each");
-    return out;
-}
-
-// The define step that derives `symbol` as a single expression, written in the file.
-const engine::step_result* fragment_writer::defining_step(const GiNaC::ex& symbol) const
-{
-    for (const engine::step_result& s : d_.steps)
-        if (s.what == spec::step::kind::define && s.cases.empty() && s.as_written && s.values.size() == 1 &&
-            s.values[0].first.is_equal(symbol))
-            return &s;
-    return nullptr;
-}
-
 } // namespace detail
 
 std::string latex_fragment_name(const engine::derivation& d)
@@ -785,9 +286,9 @@ std::string latex_label(const engine::derivation& d)
     return "impact:" + d.id();
 }
 
-std::string latex_fragment(const engine::derivation& d)
+std::string latex_fragment(const engine::derivation& d, const engine::derived_by_id* used)
 {
-    return detail::fragment_writer(d).write();
+    return detail::fragment_writer(d, used).write();
 }
 
 } // namespace impact::emit

@@ -1,8 +1,9 @@
 // How the LaTeX printer (latex.cpp) sees sums and products, shared with the line breaker
 // (latex_lines.cpp), which breaks a displayed equation where the printer would write a
-// term or a factor; and the writer of a derivation's fragment, whose quantities, givens,
-// steps and results (latex_fragment.cpp) and checks and paper comparisons
-// (latex_claims.cpp) are written apart. Internal to emit.
+// term or a factor; and the writer of a derivation's fragment, whose whole, quantities and
+// givens (latex_fragment.cpp), steps (latex_steps.cpp), results (latex_results.cpp),
+// checks (latex_claims.cpp) and paper comparisons (latex_paper.cpp) are written apart.
+// Internal to emit.
 #pragma once
 
 #include "emit/latex.h"
@@ -103,10 +104,15 @@ std::string listing(const std::vector<std::string>& items);
 /// A dimension's SI unit, e.g. $\mathrm{kg\,m^{2}\,s^{-2}}$, or "dimensionless".
 std::string si_unit_latex(const engine::dimension& d);
 
+/// Math set inline when it is short and flat, displayed (and broken) otherwise.
+bool wants_display(const std::string& math);
+
 /// Everything the fragment of one derivation needs while it is written.
 class fragment_writer {
 public:
-    explicit fragment_writer(const engine::derivation& d);
+    /// `used`: the derivations derived, by id, where those `d` imports from are found (none:
+    /// they are named by their ids).
+    explicit fragment_writer(const engine::derivation& d, const engine::derived_by_id* used = nullptr);
 
     /// The whole fragment.
     std::string write();
@@ -116,7 +122,10 @@ public:
     void errata_row(errata_table& table, const engine::text_comparison& words) const;
 
 private:
-    // latex_fragment.cpp: the printing shared by every part, and the derivation itself.
+    // latex_fragment.cpp: the printing shared by every part, the quantities and the givens;
+    // latex_steps.cpp: the steps (step_checks to rearrange_step, and the cases);
+    // latex_results.cpp: the results (results, shown_as, defining_step, result_ref,
+    // result_cited, places).
     std::string math(const GiNaC::ex& e, const written_form* w = nullptr) const;
     std::string relation_math(const GiNaC::ex& r, const written_form* w = nullptr,
                               engine::relation op = engine::relation::equal) const;
@@ -124,6 +133,9 @@ private:
                      const char* relation = "=", double align_at = -1) const;
     std::string ref(const std::string& equation) const;
     std::string quantities() const;
+    /// Where an imported quantity comes from ("the result $T$ of \emph{A mass on a spring}"),
+    /// or nothing for a quantity of this derivation's own.
+    std::string imported_from(const engine::quantity& q) const;
     std::string givens() const;
     std::string step_checks(const engine::step_result& s) const;
     std::string steps() const;
@@ -144,7 +156,8 @@ private:
     std::string cases_math(const std::vector<engine::case_value>& cases, bool derived) const;
     /// `lhs &= \begin{cases} ... \end{cases}` in the declared quantities when it fits the
     /// line; else each case on rows of its own under its condition, its value as a textbook
-    /// shows it and broken over lines. The last row gets `tag`. When a case takes more than
+    /// shows it and broken over lines. The last row gets `tag`, the others \notag when
+    /// there is a tag: one number for the block. When a case takes more than
     /// three lines or does not fit: none, or, if it `must` be shown, the cases as the file
     /// writes them.
     std::optional<std::string> derived_cases_rows(const std::string& lhs, const std::vector<engine::case_value>& cases,
@@ -170,7 +183,8 @@ private:
     std::optional<std::string> result_cited(const engine::result& r) const;
     std::string places(const engine::result& first) const;
 
-    // latex_claims.cpp: the checks and the paper held to account.
+    // latex_claims.cpp: the checks; latex_paper.cpp: the paper held to account (displayed,
+    // form, paper, checked_display).
     std::string how(const engine::check_result& c) const;
     std::string sign_text(const engine::sign_step& step) const;
     std::string limit_text(const engine::limit_method& how) const;
@@ -202,6 +216,7 @@ private:
     static constexpr double content_width = 450;
 
     const engine::derivation& d_;
+    const engine::derived_by_id* used_;
     const term_order order_;
     std::map<std::string, std::string> tags_;
     mutable std::map<GiNaC::ex, textbook_value, GiNaC::ex_is_less> textbooks_;

@@ -13,7 +13,9 @@
 namespace impact::emit {
 
 /// `output/verification.md`; its banner names `folder`, the derivation files' (engine::source_folder).
-std::string verification_markdown(const std::vector<const verify::kernel_plan*>& plans,
-                                  const std::string& folder);
+/// `of_the_paper` (emit::of_the_paper): its introduction speaks of collisions; else of the
+/// kernels of the folder's own derivations.
+std::string verification_markdown(const std::vector<const verify::kernel_plan*>& plans, const std::string& folder,
+                                  bool of_the_paper);
 
 } // namespace impact::emit

@@ -128,11 +128,38 @@ contents contents_of(const fs::path& folder)
     return held;
 }
 
+fs::path normalised(const fs::path& folder);
+
+// A folder without a marker of its own inside one Impact wrote (`out/latex` of `impact
+// regenerate --output out`): the paths under it that the nearest marker above lists, as
+// paths relative to it; nothing when no folder above holds a marker.
+std::optional<std::set<std::string>> listed_above(const fs::path& folder)
+{
+    const fs::path path = normalised(folder);
+    for (fs::path above = path.parent_path();; above = above.parent_path()) {
+        if (const std::optional<std::set<std::string>> listed = listed_in(above)) {
+            const std::string prefix = path.lexically_relative(above).generic_string() + "/";
+            std::set<std::string> under;
+            for (const std::string& entry : *listed)
+                if (entry.size() > prefix.size() && entry.compare(0, prefix.size(), prefix) == 0)
+                    under.insert(entry.substr(prefix.size()));
+            return under;
+        }
+        if (above == above.parent_path())
+            return std::nullopt;
+    }
+}
+
 // A folder's contents split into Impact's files (listed in the marker, and regular files
-// still) and everything else, which is the user's.
+// still), Impact's files of folders inside with markers of their own (another command's
+// output, `impact latex -o out/latex/x.tex` in `out`), and everything else, which is the
+// user's. A folder with no marker of its own is Impact's when a marker above lists files in
+// it (`inherited`): those are Impact's.
 struct ownership {
     bool marked = false;
+    bool inherited = false;
     std::set<std::string> impacts;
+    std::vector<std::string> nested;
     std::vector<std::string> users_files;
     std::vector<std::string> users_empty_folders;
 };
@@ -140,12 +167,29 @@ struct ownership {
 ownership ownership_of(const fs::path& folder)
 {
     ownership o;
-    const std::optional<std::set<std::string>> listed = listed_in(folder);
+    std::optional<std::set<std::string>> listed = listed_in(folder);
     o.marked = listed.has_value();
+    if (!listed) {
+        listed = listed_above(folder);
+        o.inherited = listed && !listed->empty();
+    }
     const contents held = contents_of(folder);
+    // The markers of folders inside, and what each lists, are Impact's.
+    std::set<std::string> nested;
+    for (const std::string& file : held.files) {
+        const fs::path path(file);
+        if (path.filename() != marker_name || !is_regular(folder / file))
+            continue;
+        nested.insert(file);
+        if (const std::optional<std::set<std::string>> inner = listed_in(folder / path.parent_path()))
+            for (const std::string& entry : *inner)
+                nested.insert((path.parent_path() / entry).generic_string());
+    }
     for (const std::string& file : held.files) {
         if (listed && listed->count(file) && is_regular(folder / file))
             o.impacts.insert(file);
+        else if (nested.count(file) && is_regular(folder / file))
+            o.nested.push_back(file);
         else
             o.users_files.push_back(file);
     }
@@ -203,15 +247,16 @@ bool holds(const fs::path& path, const std::string& contents)
 }
 
 // The user's paths in the way of `files`, each with the name it moves aside to. A file that
-// holds byte for byte what Impact writes in its place is not in the way: nothing is lost.
+// holds byte for byte what Impact writes in its place is not in the way: nothing is lost;
+// nor is a file of a folder inside that Impact wrote (`nested`), which Impact replaces.
 std::map<std::string, std::string> plan_asides(const fs::path& folder, const ownership& o, const file_set& files)
 {
     const std::set<std::string> folders = folders_needed(files);
     std::map<std::string, std::string> asides;
     std::set<std::string> chosen;
-    auto consider = [&](const std::string& taken, bool is_empty_folder) {
+    auto consider = [&](const std::string& taken, bool is_empty_folder, bool impacts = false) {
         const std::optional<std::string> way = in_the_way(taken, is_empty_folder, files, folders);
-        if (way && *way == taken && files.count(taken) && holds(folder / taken, files.at(taken)))
+        if (way && *way == taken && files.count(taken) && (impacts || holds(folder / taken, files.at(taken))))
             return;
         if (way && !asides.count(*way)) {
             asides[*way] = aside_name(folder, *way, files, folders, chosen);
@@ -222,6 +267,8 @@ std::map<std::string, std::string> plan_asides(const fs::path& folder, const own
         consider(file, false);
     for (const std::string& empty : o.users_empty_folders)
         consider(empty, true);
+    for (const std::string& file : o.nested)
+        consider(file, false, true);
     return asides;
 }
 
@@ -379,7 +426,7 @@ void check_writable(const fs::path& folder, const file_set& files, bool force)
     if (!is_folder(folder))
         refuse(folder, "refusing to write here: it is a file, not a folder");
     const ownership o = ownership_of(folder);
-    if (!o.marked && !(o.users_files.empty() && o.users_empty_folders.empty()) && !force) {
+    if (!o.marked && !o.inherited && !(o.users_files.empty() && o.users_empty_folders.empty()) && !force) {
         std::vector<std::string> held = o.users_files;
         held.insert(held.end(), o.users_empty_folders.begin(), o.users_empty_folders.end());
         refuse(folder, fmt::format("refusing to write into this folder: Impact did not write what it holds ({}); "
@@ -427,6 +474,16 @@ write_report replace_folder(const fs::path& folder, const file_set& files, bool 
             if (to == file)
                 report.kept.push_back(file);
             else
+                report.moved_aside.push_back(file + " -> " + to);
+        }
+        // Impact's files of a folder inside (another command's), where nothing new is written:
+        // kept, and not said to be the user's.
+        for (const std::string& file : o.nested) {
+            const std::string to = moved_to(file, asides);
+            if (to == file && files.count(file))
+                continue;
+            keep(folder / file, fresh / to);
+            if (to != file)
                 report.moved_aside.push_back(file + " -> " + to);
         }
         for (const std::string& empty : o.users_empty_folders) {

@@ -4,7 +4,10 @@
 // Impact wrote there. A folder is Impact's to write into when it is missing, empty, or
 // holds the marker; any other folder is refused unless the user forces it. Whatever
 // happens, only files the marker lists (regular files at those paths) are ever replaced
-// or removed: every other file, folder or link in the folder is kept where it is.
+// or removed: every other file, folder or link in the folder is kept where it is. A folder
+// inside one Impact wrote (`out/latex` of `--output out`) is Impact's too, its files those
+// the marker above lists; files another command wrote in a folder inside, under a marker
+// of their own (`impact latex -o out/latex/x.tex`), are Impact's: kept, never called the user's.
 //
 // A file Impact is about to write whose path is taken by something Impact did not write
 // (or a folder Impact needs where a user's file is) is "in the way": refused, or, when

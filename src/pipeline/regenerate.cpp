@@ -202,7 +202,7 @@ void add_documents(const library& lib, file_set& files)
     for (const engine::derivation* d : lib.in_order()) {
         try {
             emit::derivations_json({d});
-            files["latex/" + emit::latex_fragment_name(*d)] = emit::latex_fragment(*d);
+            files["latex/" + emit::latex_fragment_name(*d)] = emit::latex_fragment(*d, &lib.derived);
         } catch (const error&) {
             throw;
         } catch (const std::exception& e) {
@@ -238,7 +238,8 @@ std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwa
     std::vector<const verify::kernel_plan*> all;
     for (const verify::kernel_plan& p : plans)
         all.push_back(&p);
-    files["verification.md"] = emit::verification_markdown(all, engine::source_folder(lib.in_order()));
+    files["verification.md"] = emit::verification_markdown(all, engine::source_folder(lib.in_order()),
+                                                               emit::of_the_paper(lib.in_order()));
     clock.lap("verification report (numeric)");
     return verify::missed_bounds(plans);
 }
