@@ -57,16 +57,18 @@
 // Clang: precise floating point in between. Clang disregards every pragma on contraction
 // under -ffp-contract=fast (which its -ffast-math and -Ofast imply): products may then be
 // fused into sums, and the batch loop's results differ from the scalar kernel's by an ulp or
-// so; README ("The flags users have") gives the errors measured so.
+// so; docs/kernels.md ("The flags users have") gives the errors measured so.
 // Neither pragma changes the processor's modes: a program linked with -ffast-math (GCC and
-// Clang link crtfastmath.o) flushes denormals to zero; README says what the kernels do then.
+// Clang link crtfastmath.o) flushes denormals to zero; docs/kernels.md ("The flags users
+// have") says what the kernels do then.
 #if defined(__clang__)
 #define IMPACT_PRECISE_BEGIN _Pragma("float_control(precise, on, push)") _Pragma("clang fp contract(off)")
 #define IMPACT_PRECISE_END _Pragma("float_control(pop)")
 #elif defined(__GNUC__)
 // -fno-fast-math also asks for errno and trapping maths: the caller's choice is kept for those
 // (they change no result, and without them GCC vectorises more: the rough batch loop's square
-// root, the AVX2 loops' divisions; README says what a discarded lane's division may then do).
+// root, the AVX2 loops' divisions; docs/design-kernels.md ("The batch loop: one program, no
+// branches") says what a discarded lane's division may then do).
 #if defined(__NO_MATH_ERRNO__)
 #define IMPACT_KEEP_NO_MATH_ERRNO _Pragma("GCC optimize(\"no-math-errno\")")
 #else
