@@ -814,8 +814,13 @@ BOOST_AUTO_TEST_CASE(pi_is_derived_and_typeset_but_no_kernel_computes_it)
     BOOST_TEST(latex.output.find("\\pi r^{2}") != std::string::npos, latex.output);
     expect_refused(circle + "[[kernel]]\nname = \"area\"\ninputs = [\"r\"]\noutputs = [\"A = A\"]\n",
                    "derivations/bad.toml:21:8: error: kernel 'area': a kernel cannot compute Pi (a kernel computes "
-                   "with +, -, *, /, sqrt, the functions of <cmath> and rational numbers; give such a constant as an "
-                   "input)");
+                   "with +, -, *, /, sqrt, abs, pow, acos, atan, atan2 and rational numbers; give any other constant "
+                   "or function, such as Pi or sin(theta), as an input)");
+    // A function the kernels cannot evaluate exactly is named with the same list.
+    expect_refused(circle + "[[kernel]]\nname = \"wave\"\ninputs = [\"r\"]\noutputs = [\"w = sin(r)\"]\n",
+                   "derivations/bad.toml:21:8: error: kernel 'wave': no exact evaluation of std::sin (a kernel "
+                   "computes with +, -, *, /, sqrt, abs, pow, acos, atan, atan2 and rational numbers; give any other "
+                   "constant or function, such as Pi or sin(theta), as an input)");
 }
 
 BOOST_AUTO_TEST_CASE(an_empty_file)

@@ -228,6 +228,52 @@ BOOST_AUTO_TEST_CASE(every_relative_link_of_the_readme_and_docs_leads_to_a_file_
 // command must exit with 0, and print the lines shown after it, in that order ("..." stands
 // for lines left out). Then every path under output/ the page names in backticks exists:
 // among them the LaTeX fragment, the kernel's header and verification.md.
+// The README's example (Eq. 8) shows what Impact prints and writes: each line of the block
+// after "`impact derive inelastic_line` derives it and prints" is printed, in order (`...`
+// stands for lines left out), and the LaTeX line after "`impact latex inelastic_line`" is a
+// line of the committed fragment (which test_cli_output holds to a fresh regeneration).
+std::vector<std::string> block_after(const std::vector<std::string>& page, const std::string& opening)
+{
+    auto at = std::find_if(page.begin(), page.end(),
+                           [&](const std::string& line) { return line.rfind(opening, 0) == 0; });
+    BOOST_TEST_REQUIRE((at != page.end()), "the README has no line starting " << opening);
+    at = std::find_if(at, page.end(), is_fence);
+    BOOST_TEST_REQUIRE((at != page.end()), "no code block after " << opening);
+    std::vector<std::string> block;
+    for (++at; at != page.end() && !is_fence(*at); ++at)
+        block.push_back(*at);
+    return block;
+}
+
+BOOST_AUTO_TEST_CASE(the_readme_s_example_is_what_impact_prints_and_writes)
+{
+    const std::vector<std::string> readme = lines_of(read_text(source / "README.md"));
+    const std::vector<std::string> shown = block_after(readme, "`impact derive inelastic_line` derives it");
+    const auto r = run_command("cd '" + source.string() + "' && '" + fs::absolute(IMPACT_BINARY).string() +
+                               "' derive inelastic_line");
+    BOOST_TEST_REQUIRE(r.status == 0, r.output);
+    const std::vector<std::string> printed = lines_of(r.output);
+    auto next = printed.begin();
+    for (const std::string& line : shown) {
+        if (line == "...")
+            continue;
+        next = std::find(next, printed.end(), line);
+        BOOST_TEST_REQUIRE((next != printed.end()),
+                           "impact derive inelastic_line did not print, where the README shows it:\n" << line
+                                                                                                       << "\nIt printed:\n"
+                                                                                                       << r.output);
+        ++next;
+    }
+
+    const std::vector<std::string> latex = block_after(readme, "is derived. `impact latex inelastic_line`");
+    BOOST_TEST_REQUIRE(latex.size() == 1u);
+    std::vector<std::string> fragment = lines_of(read_text(source / "output" / "latex" / "inelastic_line.tex"));
+    for (std::string& line : fragment)
+        line.erase(0, line.find_first_not_of(' '));
+    BOOST_TEST((std::find(fragment.begin(), fragment.end(), latex.front()) != fragment.end()),
+               "output/latex/inelastic_line.tex has no line " << latex.front());
+}
+
 BOOST_AUTO_TEST_CASE(the_tutorial_runs_from_an_empty_folder)
 {
     const std::string text = read_text(source / "docs" / "tutorial.md");

@@ -792,6 +792,20 @@ BOOST_AUTO_TEST_CASE(several_changes_that_each_mend_a_printed_equation_are_said_
                said);
 }
 
+BOOST_AUTO_TEST_CASE(the_terminal_says_what_a_check_assumes_and_where_its_left_side_is_taken)
+{
+    // y = 3x taken at twice x is twice y; eps y <= y/2 holds only for eps up to 1/2. Without
+    // their conditions the lines read `y = 2*y` and `eps*y <= y/2`, which are false.
+    const engine::derivation d = derive_text(derivation_text(
+        solve_y + "[[result]]\nname = \"y\"\n"
+                  "[[check]]\nname = \"doubled\"\nclaim = \"y = 2*y\"\nleft_at = { x = \"2*x\" }\n"
+                  "[[check]]\nname = \"soft\"\nclaim = \"eps*y <= y/2\"\nassuming = { eps = \"[0, 1/2]\" }\n"));
+    const std::string said = emit::terminal_text(d);
+    BOOST_TEST(said.find("  proven             doubled: y = 2*y, the left side taken at x -> 2*x\n") != std::string::npos,
+               said);
+    BOOST_TEST(said.find("  proven             soft: eps*y <= y/2, for eps in [0, 1/2]\n") != std::string::npos, said);
+}
+
 BOOST_AUTO_TEST_CASE(a_term_s_sign_in_a_quotient_says_above_or_below_the_bar)
 {
     // Eq. 12's second line on a small scale: (x + eps x)/(x + eps x + x - eps x), where

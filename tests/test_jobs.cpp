@@ -404,8 +404,8 @@ BOOST_AUTO_TEST_CASE(a_kernel_that_fails_in_its_worker_is_reported_as_without_wo
     s.write("derivations/p.toml", circle);
     const auto before = impact::testing::everything_under(s.root / "output");
     const std::string expected = "derivations/p.toml:21:8: error: kernel 'area': a kernel cannot compute Pi (a kernel "
-                                 "computes with +, -, *, /, sqrt, the functions of <cmath> and rational numbers; give "
-                                 "such a constant as an input)";
+                                 "computes with +, -, *, /, sqrt, abs, pow, acos, atan, atan2 and rational numbers; "
+                                 "give any other constant or function, such as Pi or sin(theta), as an input)";
     for (const char* jobs : {"1", "2"}) {
         const run_result r =
             s.impact(std::string("regenerate --no-cache --jobs ") + jobs + " --derivations derivations --output output");

@@ -10,6 +10,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <string>
+#include <vector>
+
 namespace impact::emit {
 
 std::string terminal_text(const engine::derivation& d)
@@ -60,9 +63,21 @@ std::string terminal_text(const engine::derivation& d)
         }
         out += fmt::format("  {} = {}{}\n", r.name, text(r.display), r.paper.empty() ? "" : "    [" + r.paper + "]");
     }
+    // A check's statement holds its special values (`at`); what it assumes and where its left
+    // side is taken are said after it, as the LaTeX says them, or `J = -J` would read as false.
+    auto conditions = [&](const engine::check_result& c) {
+        std::vector<std::string> said, left;
+        for (const auto& [symbol, range] : c.assuming)
+            said.push_back(fmt::format("for {} in {}", text(symbol), range));
+        for (const auto& [symbol, value] : c.left_at)
+            left.push_back(fmt::format("{} -> {}", text(symbol), text(value)));
+        if (!left.empty())
+            said.push_back(fmt::format("the left side taken at {}", fmt::join(left, ", ")));
+        return said.empty() ? std::string() : fmt::format(", {}", fmt::join(said, "; "));
+    };
     out += "\nchecks\n";
     for (const engine::check_result& c : d.checks) {
-        out += fmt::format("  {:<18} {}: {}\n", engine::to_string(c.outcome), c.name, c.statement);
+        out += fmt::format("  {:<18} {}: {}{}\n", engine::to_string(c.outcome), c.name, c.statement, conditions(c));
         for (const engine::check_result::part& part : c.parts)
             out += fmt::format("  {:<18}   {}: {}\n", "", part.under, engine::to_string(part.outcome));
         if (!c.outcome.holds())

@@ -463,8 +463,9 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
     } catch (const std::invalid_argument& e) {
         // What compile cannot turn into operations of the kernel (a constant such as Pi):
         // the kernel's mistake, at its place in the file.
-        throw error(k.where, fmt::format("kernel '{}': {} (a kernel computes with +, -, *, /, sqrt, the functions "
-                                         "of <cmath> and rational numbers; give such a constant as an input)",
+        throw error(k.where, fmt::format("kernel '{}': {} (a kernel computes with +, -, *, /, sqrt, abs, pow, acos, "
+                                         "atan, atan2 and rational numbers; give any other constant or function, "
+                                         "such as Pi or sin(theta), as an input)",
                                          k.name, e.what()));
     }
 }
