@@ -373,6 +373,7 @@ BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
     // Their comments speak of their inputs and outputs, not of a collision none of them is.
     BOOST_TEST(all.find("allow no collision") == std::string::npos);
     BOOST_TEST(all.find("resolved no collision") == std::string::npos);
+    BOOST_TEST(all.find("a collision's") == std::string::npos);
     BOOST_TEST(all.find("/// When the inputs are refused") != std::string::npos);
     // Every status a guard names, and out_of_range and underflow, which a kernel with a status
     // adds: the batch kernel's first (push_velocity's), the two of the range, then the others'.

@@ -101,11 +101,12 @@ void print_guards_documentation(std::string& out, const engine::derivation& d, c
     if (returns_scalar(k))
         out += "/// A quiet NaN when the inputs are refused, for the first of these reasons that applies:\n";
     else
-        out += fmt::format("/// When the inputs are refused (a collision's: they allow none), `status` says why,\n"
-                           "/// the first of these that applies, and {}:\n",
-                           same && others ? "each output named\n/// after an input is that input (a velocity unchanged), "
-                                            "the others 0"
-                           : same         ? "each output is the\n/// input it is named after (the velocities unchanged)"
+        out += fmt::format("/// When the inputs are refused, `status` says why, the first of these that applies,\n"
+                           "/// and {}:\n",
+                           same && others ? "each output named after an input is that input (a velocity\n/// "
+                                            "unchanged), the others 0"
+                           : same         ? "each output is the input it is named after (the velocities\n/// "
+                                            "unchanged)"
                                           : "the outputs are 0");
     for (const engine::kernel_guard& g : k.guards)
         out += fmt::format("///   {}: {}\n", g.status, guard_meaning(d, k, g));

@@ -262,9 +262,9 @@ inline collide_result<Real, 2> collide_fixed_m(Real M, const std::array<Real, 2>
 /// With m = +infinity, v_M[1] is computed in the form "limit of display, compensated": at most 0.50 ulps in double.
 /// With m = +infinity, v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// With m = +infinity, v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output is the
-/// input it is named after (the velocities unchanged):
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output is the input it is named after (the velocities
+/// unchanged):
 ///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: C_M, C_m, v_M, v_m not finite

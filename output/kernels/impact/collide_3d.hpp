@@ -344,9 +344,9 @@ inline collide_result<Real, 3> collide_fixed_m(Real M, const std::array<Real, 3>
 /// With m = +infinity, v_m[0] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// With m = +infinity, v_m[1] is computed in the form "limit of display": at most 0.00 ulps in double.
 /// With m = +infinity, v_m[2] is computed in the form "limit of display": at most 0.00 ulps in double.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output is the
-/// input it is named after (the velocities unchanged):
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output is the input it is named after (the velocities
+/// unchanged):
 ///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: C_M, C_m, v_M, v_m not finite

@@ -156,9 +156,9 @@ inline collide_line_result<Real> collide_line_fixed_m(Real M, Real v_M, Real v_m
 /// With m = +infinity, v_M is computed in the form "limit of display, fma": at most 1.33 ulps in double.
 /// With m = +infinity, v_m is computed in the form "limit of display": at most 0.00 ulps in double.
 /// With m = +infinity, J is computed in the form "expanded, fma": at most 2.97 ulps in double.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output named
-/// after an input is that input (a velocity unchanged), the others 0:
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output named after an input is that input (a velocity
+/// unchanged), the others 0:
 ///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: v_M, v_m not finite

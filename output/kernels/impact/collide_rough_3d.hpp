@@ -1494,9 +1494,9 @@ inline collide_rough_result<Real, 3> collide_rough_fixed_m(Real M, Real R_M, Rea
 /// With m = +infinity, w_m[0] is computed in the form "limit of w_mx - L_x/(q_m*m*R_m), compensated let": at most 0.00 ulps in double.
 /// With m = +infinity, w_m[1] is computed in the form "limit of w_my - L_y/(q_m*m*R_m), compensated let": at most 0.00 ulps in double.
 /// With m = +infinity, w_m[2] is computed in the form "limit of w_mz - L_z/(q_m*m*R_m), compensated let": at most 0.00 ulps in double.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output is the
-/// input it is named after (the velocities unchanged):
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output is the input it is named after (the velocities
+/// unchanged):
 ///   invalid_mass: M, m not positive and finite (+infinity allowed for M or m, not both)
 ///   invalid_radius: R_M, R_m not positive and finite
 ///   invalid_inertia: q_M, q_m outside (0, 2/3]

@@ -21,9 +21,9 @@ namespace impact {
 ///   eps: Newton's coefficient of restitution ([0, 1], a pure number)
 /// v[0] is computed in the form "v_x - k_wall*N_x, compensated let": at most 2.48 ulps in double on 4200 samples.
 /// v[1] is computed in the form "v_y - k_wall*N_y, compensated let": at most 2.28 ulps in double on 4200 samples.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output is the
-/// input it is named after (the velocities unchanged):
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output is the input it is named after (the velocities
+/// unchanged):
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: P, n, C, v not finite
 ///   invalid_normal: unless N_x^2+N_y^2 > 0

@@ -26,9 +26,9 @@ namespace impact {
 /// v[0] is computed in the form "v_x - k_wall*N_x, compensated let": at most 2.27 ulps in double on 4200 samples.
 /// v[1] is computed in the form "v_y - k_wall*N_y, compensated let": at most 1.88 ulps in double on 4200 samples.
 /// v[2] is computed in the form "v_z - k_wall*N_z, compensated let": at most 2.00 ulps in double on 4200 samples.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output is the
-/// input it is named after (the velocities unchanged):
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output is the input it is named after (the velocities
+/// unchanged):
 ///   invalid_restitution: eps outside [0, 1]
 ///   non_finite: P, n, C, v not finite
 ///   invalid_normal: unless N_x^2+N_y^2+N_z^2 > 0

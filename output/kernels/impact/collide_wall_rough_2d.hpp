@@ -27,9 +27,9 @@ namespace impact {
 /// v[0] is computed in the form "v_x + K_n*N_x - K_t*N_y, fma, compensated let": at most 2.82 ulps in double on 4200 samples.
 /// v[1] is computed in the form "v_y + K_n*N_y + K_t*N_x, fma, compensated let": at most 2.25 ulps in double on 4200 samples.
 /// w is computed in the form "w + dw, compensated let": at most 2.10 ulps in double on 4200 samples.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output is the
-/// input it is named after (the velocities unchanged):
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output is the input it is named after (the velocities
+/// unchanged):
 ///   invalid_radius: R not positive and finite
 ///   invalid_inertia: q outside (0, 2/3]
 ///   invalid_restitution: eps outside [0, 1]

@@ -36,9 +36,9 @@ namespace impact {
 /// w[0] is computed in the form "w_x + dw_x, fma, compensated let": at most 1.79 ulps in double on 4200 samples.
 /// w[1] is computed in the form "w_y + dw_y, compensated let": at most 1.67 ulps in double on 4200 samples.
 /// w[2] is computed in the form "w_z + dw_z, fma, compensated let": at most 1.62 ulps in double on 4200 samples.
-/// When the inputs are refused (a collision's: they allow none), `status` says why,
-/// the first of these that applies, and each output is the
-/// input it is named after (the velocities unchanged):
+/// When the inputs are refused, `status` says why, the first of these that applies,
+/// and each output is the input it is named after (the velocities
+/// unchanged):
 ///   invalid_radius: R not positive and finite
 ///   invalid_inertia: q outside (0, 2/3]
 ///   invalid_restitution: eps outside [0, 1]
