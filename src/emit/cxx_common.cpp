@@ -97,8 +97,7 @@ std::string common_header(const std::vector<const kernel_plan*>& plans, const st
             statuses.push_back(underflow);
         }
     }
-    out += fmt::format("\n/// Why a kernel refused its inputs (a collision's: why it resolved none); `ok` when it\n"
-                       "/// computed its outputs.\n"
+    out += fmt::format("\n/// Why a kernel refused its inputs; `ok` when it computed its outputs.\n"
                        "/// As wide as a double, so that a vectorised batch loop over doubles keeps one\n"
                        "/// width in every lane: with a narrower status, compilers pack two vectors of\n"
                        "/// doubles per vector of statuses, and the loop runs short of registers.\n"

@@ -239,8 +239,7 @@ IMPACT_ALWAYS_INLINE T blend(std::int64_t chosen, T x, T other) noexcept
 
 namespace impact {
 
-/// Why a kernel refused its inputs (a collision's: why it resolved none); `ok` when it
-/// computed its outputs.
+/// Why a kernel refused its inputs; `ok` when it computed its outputs.
 /// As wide as a double, so that a vectorised batch loop over doubles keeps one
 /// width in every lane: with a narrower status, compilers pack two vectors of
 /// doubles per vector of statuses, and the loop runs short of registers.
