@@ -228,6 +228,24 @@ BOOST_AUTO_TEST_CASE(every_relative_link_of_the_readme_and_docs_leads_to_a_file_
 // command must exit with 0, and print the lines shown after it, in that order ("..." stands
 // for lines left out). Then every path under output/ the page names in backticks exists:
 // among them the LaTeX fragment, the kernel's header and verification.md.
+// Each line a page shows after a command is among what the command printed, in that order
+// (`...` stands for lines left out).
+void expect_shown(const std::vector<std::string>& shown, const std::string& output, const std::string& command,
+                  const std::string& page)
+{
+    const std::vector<std::string> printed = lines_of(output);
+    auto next = printed.begin();
+    for (const std::string& line : shown) {
+        if (line == "...")
+            continue;
+        next = std::find(next, printed.end(), line);
+        BOOST_TEST_REQUIRE((next != printed.end()), command << " did not print, where " << page << " shows it:\n"
+                                                            << line << "\nIt printed:\n"
+                                                            << output);
+        ++next;
+    }
+}
+
 // The README's example (Eq. 8) shows what Impact prints and writes: each line of the block
 // after "`impact derive inelastic_line` derives it and prints" is printed, in order (`...`
 // stands for lines left out), and the LaTeX line after "`impact latex inelastic_line`" is a
@@ -252,18 +270,7 @@ BOOST_AUTO_TEST_CASE(the_readme_s_example_is_what_impact_prints_and_writes)
     const auto r = run_command("cd '" + source.string() + "' && '" + fs::absolute(IMPACT_BINARY).string() +
                                "' derive inelastic_line");
     BOOST_TEST_REQUIRE(r.status == 0, r.output);
-    const std::vector<std::string> printed = lines_of(r.output);
-    auto next = printed.begin();
-    for (const std::string& line : shown) {
-        if (line == "...")
-            continue;
-        next = std::find(next, printed.end(), line);
-        BOOST_TEST_REQUIRE((next != printed.end()),
-                           "impact derive inelastic_line did not print, where the README shows it:\n" << line
-                                                                                                       << "\nIt printed:\n"
-                                                                                                       << r.output);
-        ++next;
-    }
+    expect_shown(shown, r.output, "impact derive inelastic_line", "the README");
 
     const std::vector<std::string> latex = block_after(readme, "is derived. `impact latex inelastic_line`");
     BOOST_TEST_REQUIRE(latex.size() == 1u);
@@ -339,18 +346,7 @@ BOOST_AUTO_TEST_CASE(the_tutorial_runs_from_an_empty_folder)
                 run_command("cd '" + here.string() + "' && PATH='" + bin.string() + "':\"$PATH\" " + command);
             BOOST_TEST_REQUIRE(r.exited, "$ " << command << " was killed");
             BOOST_TEST_REQUIRE(r.status == 0, "$ " << command << " exited with " << r.status << ":\n" << r.output);
-            const std::vector<std::string> printed = lines_of(r.output);
-            auto next = printed.begin();
-            for (const std::string& line : expected) {
-                if (line == "...")
-                    continue;
-                next = std::find(next, printed.end(), line);
-                BOOST_TEST_REQUIRE((next != printed.end()), "$ " << command
-                                                                 << " did not print, where the tutorial shows it:\n"
-                                                                 << line << "\nIt printed:\n"
-                                                                 << r.output);
-                ++next;
-            }
+            expect_shown(expected, r.output, "$ " + command, "the tutorial");
         }
     }
     BOOST_TEST(commands > 0);
