@@ -9,6 +9,7 @@
 // `failed` with the residual.
 #pragma once
 
+#include "engine/prove/definedness.h"
 #include "engine/prove/sign.h"
 #include "engine/expr/symbols.h"
 
@@ -41,11 +42,17 @@ struct verdict {
     GiNaC::ex residual;          ///< the normalised difference; zero when proven
     std::string method;          ///< how the verdict was reached, in words
     std::vector<sign_step> proof; ///< for inequalities: the sign of each factor
+    /// Where the claim is defined (engine/prove/definedness.h): the conditions it is said
+    /// to hold under, not proven from the domains (`proven, where x != y`), and those the
+    /// domains and assumptions prove (a divisor M + m, a radicand 1 - eps^2).
+    std::vector<condition> where;
+    std::vector<condition> defined;
 
     bool holds() const { return what != status::failed; }
 };
 
-/// `proven`, `sampled (N points)` or `failed`.
+/// `proven`, `sampled (N points)` or `failed`; `, where x != y` after the first two when
+/// the verdict rests on attached conditions.
 std::string to_string(const verdict& v);
 
 /// What `prove_equal` does with an identity it cannot prove: test it at sampled points
