@@ -18,6 +18,16 @@ using engine::term_order;
 
 using json = nlohmann::ordered_json;
 
+// Where a check, a result or a step's values are defined: "where", the conditions attached
+// (the claim is said only where they hold), and "defined", those proven from the domains.
+void add_conditions(json& j, const std::vector<engine::condition>& where, const std::vector<engine::condition>& defined)
+{
+    for (const engine::condition& c : where)
+        j["where"].push_back({{"condition", c.text}, {"because", c.because}});
+    for (const engine::condition& c : defined)
+        j["defined"].push_back({{"condition", c.text}, {"because", c.because}});
+}
+
 json check_json(const engine::check_result& c, const term_order& order)
 {
     json j;
@@ -46,6 +56,7 @@ json check_json(const engine::check_result& c, const term_order& order)
     for (const auto& [symbol, value] : c.at)
         j["at"][ginac_syntax(symbol, order)] = ginac_syntax(value, order);
     j["method"] = c.outcome.method;
+    add_conditions(j, c.outcome.where, c.outcome.defined);
     if (c.outcome.what == engine::verdict::status::sampled)
         j["samples"] = c.outcome.samples;
     if (!c.outcome.holds())
@@ -81,6 +92,13 @@ json derivation_json(const engine::derivation& d)
     j["display"] = json::object();
     for (const engine::result& r : d.results)
         j["display"][r.name] = ginac_syntax(r.display, order);
+    // Where each result is defined, and where the values of each step are.
+    for (const engine::result& r : d.results)
+        if (!r.attached.empty() || !r.defined.empty())
+            add_conditions(j["defined_where"]["results"][r.name], r.attached, r.defined);
+    for (std::size_t i = 0; i < d.steps.size(); ++i)
+        if (!d.steps[i].attached.empty() || !d.steps[i].defined.empty())
+            add_conditions(j["defined_where"]["steps"][std::to_string(i + 1)], d.steps[i].attached, d.steps[i].defined);
     // The solutions of the steps whose equations are not linear, kept and rejected.
     for (const engine::step_result& s : d.steps) {
         for (const engine::solution& found : s.solutions) {

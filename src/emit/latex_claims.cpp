@@ -189,19 +189,19 @@ std::string fragment_writer::cases_text(const engine::check_result& c) const
             if (too_long(text))
                 parts.push_back(fmt::format("case {} of ${}$: {}", p.first,
                                             q ? math(q->symbol) : math(p.in_cases.front().first),
-                                            status_text(p.outcome)));
+                                            status_text(p.outcome, order_)));
             else
-                parts.push_back(fmt::format("case {} ({}): {}", p.first, text, status_text(p.outcome)));
+                parts.push_back(fmt::format("case {} ({}): {}", p.first, text, status_text(p.outcome, order_)));
         } else if (p.boundary) {
             const std::string value = math(p.boundary->second);
             if (latex_width(value) > 0.4 * content_width)
                 parts.push_back(fmt::format("cases {} and {} where their conditions meet, solved for ${}$: {}",
-                                            p.first, p.second, math(p.boundary->first), status_text(p.outcome)));
+                                            p.first, p.second, math(p.boundary->first), status_text(p.outcome, order_)));
             else
                 parts.push_back(fmt::format("cases {} and {} at ${} = {}$: {}", p.first, p.second,
-                                            math(p.boundary->first), value, status_text(p.outcome)));
+                                            math(p.boundary->first), value, status_text(p.outcome, order_)));
         } else {
-            parts.push_back(fmt::format("{}: {}", latex_text(p.under), status_text(p.outcome)));
+            parts.push_back(fmt::format("{}: {}", latex_text(p.under), status_text(p.outcome, order_)));
         }
     }
     // Every case proven, and the list longer than a line (the rough spheres' sticking and
@@ -335,7 +335,7 @@ std::string fragment_writer::checks() const
             // Only a numbered result, shown under its own tag, has a number to refer to.
             const std::optional<std::string> ref = r ? result_ref(*r) : std::nullopt;
             const std::string where = ref ? ", " + *ref + "," : "";
-            out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result", status_text(c.outcome),
+            out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result", status_text(c.outcome, order_),
                                q ? math(q->symbol) : latex_text(name), where);
             std::string also;
             for (const engine::check_result& same : d_.checks)
@@ -347,7 +347,7 @@ std::string fragment_writer::checks() const
         }
         if (c.continuity) {
             const engine::quantity* q = d_.symbols.find(c.cases_of);
-            out += fmt::format("\\item {} --- {}: ${}$ is continuous where its cases meet.", status_text(c.outcome),
+            out += fmt::format("\\item {} --- {}: ${}$ is continuous where its cases meet.", status_text(c.outcome, order_),
                                heading(c.name), q ? math(q->symbol) : latex_text(c.cases_of));
             if (!c.because.empty())
                 out += " " + sentence_end(capitalised(latex_prose(c.because)));
@@ -355,7 +355,7 @@ std::string fragment_writer::checks() const
             continue;
         }
         const written_form& w = c.written;
-        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome), heading(c.name));
+        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome, order_), heading(c.name));
         // The claim as the file writes it, nothing merged (cos θ (−sin θ) + sin θ cos θ = 0,
         // not 0 = 0); a limit, and a claim too wide for the line, as GiNaC reads it.
         const std::string inline_math = w.tree() && !c.limit && !wants_display(claim_math(c, order_, &w))

@@ -92,7 +92,12 @@ std::vector<std::pair<std::string, GiNaC::ex>> signed_terms(const GiNaC::ex& sum
 std::string paper_text(const std::string& paper);
 
 /// A verdict in bold (proven, FAILED) or italics (sampled, with its sample size).
-std::string status_text(const engine::verdict& v);
+std::string status_text(const engine::verdict& v, const term_order& order);
+
+/// A condition a claim rests on, as LaTeX math: $r_x^2 + r_y^2 > 0$, $x \\neq y$.
+std::string condition_latex(const engine::condition& c, const term_order& order);
+/// Several, listed in words: "$a > 0$ and $b \\neq 0$".
+std::string conditions_latex(const std::vector<engine::condition>& conditions, const term_order& order);
 
 /// The text with its first letter capitalised, unless it opens with a one-letter name (a
 /// symbol: "m's velocity" stays as written; the article "a" is capitalised).

@@ -153,6 +153,22 @@ std::string fragment_writer::results() const
                (i + 1 < shown.size() ? " \\\\\n" : "\n");
     }
     out += "\\end{align}\n";
+    // Where results are defined, the conditions the domains do not prove: said once for the
+    // results that share them.
+    std::vector<std::pair<std::string, std::vector<std::string>>> defined_where;
+    for (const engine::result* r : shown) {
+        if (r->attached.empty())
+            continue;
+        const std::string conditions = conditions_latex(r->attached, order_);
+        auto same = std::find_if(defined_where.begin(), defined_where.end(),
+                                 [&](const auto& w) { return w.first == conditions; });
+        if (same == defined_where.end())
+            same = defined_where.insert(defined_where.end(), {conditions, {}});
+        same->second.push_back("$" + math(r->symbol) + "$");
+    }
+    for (const auto& [conditions, names] : defined_where)
+        out += fmt::format("{} {} defined where {}.\n", capitalised(listing(names)), names.size() == 1 ? "is" : "are",
+                           conditions);
     if (!as_defined.empty())
         out += fmt::format("{} {} shown as {} step{} define{} {}, in the quantities named there: written out in the "
                            "declared quantities, {} would be longer.\n",

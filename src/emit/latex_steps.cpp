@@ -23,7 +23,7 @@ std::string fragment_writer::step_checks(const engine::step_result& s) const
         const bool covering = !s.cases.empty() && c.name.rfind("the cases of ", 0) == 0;
         const std::string said = covering ? fmt::format("The cases of ${}$ cover every value", math(s.cases_of))
                                           : capitalised(latex_text(c.name));
-        out += fmt::format("{}: {}.\n", said, status_text(c.outcome));
+        out += fmt::format("{}: {}.\n", said, status_text(c.outcome, order_));
     }
     return out;
 }
@@ -388,7 +388,7 @@ std::string fragment_writer::rearrange_step(const engine::step_result& s, const 
     out += yields(s);
     for (const engine::check_result& c : s.checks)
         out += fmt::format("Equivalent to {}: {}.\n", ref(source ? source->source.value : ""),
-                           status_text(c.outcome));
+                           status_text(c.outcome, order_));
     return out;
 }
 

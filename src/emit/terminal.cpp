@@ -50,6 +50,8 @@ std::string terminal_text(const engine::derivation& d)
             out += fmt::format("       {}: {}\n", s.yields->name, relation(s.yields->relation));
         for (const GiNaC::ex& a : s.assumptions)
             out += fmt::format("       assuming {} != {}\n", text(a.lhs()), text(a.rhs()));
+        if (!s.attached.empty())
+            out += fmt::format("       defined where {}\n", engine::to_string(s.attached));
         for (const engine::check_result& c : s.checks)
             out += fmt::format("       {}: {}\n", c.name, engine::to_string(c.outcome));
     }
@@ -61,7 +63,9 @@ std::string terminal_text(const engine::derivation& d)
                 out += fmt::format("    {} = {}    if {}\n", r.name, text(c.value), engine::condition_text(c, order));
             continue;
         }
-        out += fmt::format("  {} = {}{}\n", r.name, text(r.display), r.paper.empty() ? "" : "    [" + r.paper + "]");
+        out += fmt::format("  {} = {}{}{}\n", r.name, text(r.display),
+                           r.attached.empty() ? "" : ", where " + engine::to_string(r.attached),
+                           r.paper.empty() ? "" : "    [" + r.paper + "]");
     }
     // A check's statement holds its special values (`at`); what it assumes and where its left
     // side is taken are said after it, as the LaTeX says them, or `J = -J` would read as false.

@@ -130,6 +130,10 @@ struct step_result {
     /// quantity they define.
     std::vector<case_value> cases;
     GiNaC::ex cases_of;
+    /// Where the values it derives are defined (engine/prove/definedness.h): the conditions
+    /// not proven from the domains, attached to them, and those proven.
+    std::vector<condition> attached;
+    std::vector<condition> defined;
 };
 
 /// Something the paper prints or claims, compared with what is derived.
@@ -166,6 +170,10 @@ struct result {
     written_form written;     ///< how the file writes the display form
     /// Defined by cases: each case (then `value` and `display` are the symbol itself).
     std::vector<case_value> cases;
+    /// Where its value and display form are defined: the conditions attached to it (`T =
+    /// 2*w/g, where g != 0`), and those proven from the domains.
+    std::vector<condition> attached;
+    std::vector<condition> defined;
 };
 
 /// A parameter of a kernel: a scalar, or an array of components (`C_M = [C_Mx, C_My]`).

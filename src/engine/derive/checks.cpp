@@ -129,6 +129,35 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
 
     c.lhs = lhs;
     c.rhs = rhs;
+    // Where the claim is defined, as written and as derived: each condition proven from the
+    // domains, or attached to the claim, which is then proven (or sampled) where they hold.
+    std::vector<condition> needs;
+    {
+        std::vector<condition> written_needs = in_inputs(definedness(c.written, out_.symbols));
+        for (const GiNaC::ex& side : {sides.lhs, sides.rhs}) {
+            add_conditions(written_needs, in_inputs(definedness(side, out_.symbols)));
+            for (const auto& [symbol, more] : needs_)
+                if (side.has(symbol))
+                    add_conditions(written_needs, more);
+        }
+        add_conditions(needs, written_needs);
+        if (!left_at.empty())   // the left side's at the changed inputs too
+            add_conditions(needs, rewritten(
+                                      written_needs,
+                                      [&](const GiNaC::ex& e) { return e.subs(left_at, GiNaC::subs_options::no_pattern); },
+                                      out_.symbols));
+        if (!at.empty())
+            needs = rewritten(needs, [&](const GiNaC::ex& e) { return e.subs(at); }, out_.symbols);
+        add_conditions(needs, definedness(lhs, out_.symbols));
+        add_conditions(needs, definedness(rhs, out_.symbols));
+    }
+    const settled_conditions settled = settle(needs, given);
+    const assumptions under = where(given, settled.attached);
+    const auto defined_where = [&](check_result& done) {
+        done.outcome.where = settled.attached;
+        done.outcome.defined = settled.proven;
+        return done;
+    };
     std::optional<case_split> split = cases_in(lhs, rhs, c.where);
     if (!split && !moved.empty())
         split.emplace();   // only the left side is defined by cases: its copies are named
@@ -159,10 +188,10 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
                 },
                 c.limit);
             c.statement += fmt::format(" in the limit {}", spec_check.limit->written.value);
-            return c;
+            return defined_where(c);
         }
-        prove_case_by_case(c, *split, at, out_.symbols, given, run_);
-        return c;
+        prove_case_by_case(c, *split, at, out_.symbols, under, run_);
+        return defined_where(c);
     }
     if (spec_check.limit) {
         c.limit = limit_point_of(*spec_check.limit);
@@ -171,17 +200,17 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
         c.outcome = check_limit(lhs, rhs, *c.limit, given, c.value, c.limit_by);
         c.statement += fmt::format(" in the limit {}", spec_check.limit->written.value);
     } else if (c.op == relation::equal) {
-        c.outcome = prove_equal(lhs, rhs, out_.symbols, run_);
+        c.outcome = prove_equal(lhs, rhs, out_.symbols, run_, when_unproven::sample, settled.attached);
         c.value = lhs;
-    } else if (auto through = prove_inequality_through(lhs, c.op, rhs, proven_identities(), out_.symbols, given)) {
+    } else if (auto through = prove_inequality_through(lhs, c.op, rhs, proven_identities(), out_.symbols, under)) {
         c.outcome = std::move(*through);
     } else {
-        c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, given);
+        c.outcome = prove_inequality(lhs, c.op, rhs, out_.symbols, under);
         // Samples drawn at random miss where a claim fails on a thin set (dE < 0 fails
         // where v_M = v_m): an inequality left sampled is tried at the domains' simple
         // values too, and fails at the first point found, decided exactly.
         if (c.outcome.what == verdict::status::sampled)
-            if (auto point = find_counterexample(lhs, c.op, rhs, out_.symbols, given); point && point->exact) {
+            if (auto point = find_counterexample(lhs, c.op, rhs, out_.symbols, under); point && point->exact) {
                 std::vector<std::string> values;
                 for (const auto& [symbol, value] : point->point)
                     values.push_back(fmt::format("{} = {}", out_.symbols.text(symbol), out_.symbols.text(value)));
@@ -192,7 +221,7 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
                 c.fails_at = std::move(point);
             }
     }
-    return c;
+    return defined_where(c);
 }
 
 // The equalities proven so far, without special values or changed domains: what an

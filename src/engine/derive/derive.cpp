@@ -127,6 +127,7 @@ void deriver::set_value(const GiNaC::ex& symbol, const GiNaC::ex& value)
 {
     values_[symbol] = value;
     resolved_.clear();
+    needs_[symbol] = needs_of(value, nullptr);
 }
 
 // diff(f, x) as the file writes it: x an input (no step derives it, no abbreviation
@@ -239,6 +240,14 @@ void deriver::import(const spec::use& u)
                                                   name, b.expression.value, b.expression.value,
                                                   out_.symbols.text(value), name));
         set_value(local->symbol, value);
+        // What it needs there and could not be proven there (as written there, too), in
+        // this derivation's symbols; what was proven there is proven under domains it takes.
+        for (const quantity& q : other.symbols.all())
+            for (const condition& c : r->attached)
+                if (!rename.count(q.symbol) && c.expr.has(q.symbol))
+                    rename[q.symbol] = out_.symbols.adopt(q).symbol;
+        add_conditions(needs_[local->symbol],
+                       rewritten(r->attached, [&](const GiNaC::ex& e) { return e.subs(rename); }, out_.symbols));
     }
 }
 
@@ -304,6 +313,13 @@ void deriver::run_step(const spec::step& st)
             check_value(out_.symbols, symbol, value, at);
         if (r.yields)
             check_relation(out_.symbols, r.yields->relation, st.where);
+        // Where the values it derives are defined: proven from the domains, or attached.
+        std::vector<condition> needs;
+        for (const auto& [symbol, value] : r.values)
+            add_conditions(needs, needs_[symbol]);
+        settled_conditions settled = settle(needs, declared_assumptions(out_.symbols, run_));
+        r.attached = std::move(settled.attached);
+        r.defined = std::move(settled.proven);
         infer_definitions(out_.symbols, out_.source);   // abbreviations of what is now known
     } catch (...) {
         rethrow_at(st.where, fmt::format("step {} ({})", out_.steps.size() + 1, r.description));
@@ -334,7 +350,9 @@ void deriver::define(const spec::step& st, step_result& r)
     check_derivatives(*r.as_written, st.expression.where);
     r.written = written(st.expression);
     const GiNaC::ex value = simplified(resolve(*r.as_written), declared_assumptions(out_.symbols, run_));
+    std::vector<condition> needs = needs_of(*r.as_written, &r.written);
     set_value(s, value);
+    add_conditions(needs_[s], needs);
     r.values.emplace_back(s, value);
 }
 
@@ -452,10 +470,18 @@ void deriver::add_result(const spec::result& spec_result)
     r.value = value->second;
     r.display = r.value;
     r.paper = spec_result.paper ? spec_result.paper->value : std::string();
+    std::vector<condition> needs = needs_[q.symbol];
+    const assumptions declared = declared_assumptions(out_.symbols, run_);
     if (spec_result.display) {
         r.display = out_.symbols.parse(*spec_result.display);
         r.written = written(*spec_result.display);
         check_value(out_.symbols, r.symbol, r.display, spec_result.display->where, "its display form");
+        add_conditions(needs, needs_of(r.display, &r.written));
+    }
+    settled_conditions settled = settle(needs, declared);
+    r.attached = settled.attached;
+    r.defined = settled.proven;
+    if (spec_result.display) {
         check_result c;
         c.name = fmt::format("display form of {}", q.name);
         c.display_of = q.name;
@@ -464,7 +490,9 @@ void deriver::add_result(const spec::result& spec_result)
         c.because = "the form typeset must equal the derived result";
         c.lhs = r.display;
         c.rhs = r.value;
-        c.outcome = prove_equal(resolve(r.display), r.value, out_.symbols, run_);
+        c.outcome = prove_equal(resolve(r.display), r.value, out_.symbols, run_, when_unproven::sample, r.attached);
+        c.outcome.where = r.attached;
+        c.outcome.defined = r.defined;
         c.where = spec_result.display->where;
         out_.checks.push_back(std::move(c));
     }

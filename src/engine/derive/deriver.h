@@ -7,6 +7,7 @@
 
 #include "engine/cases/cases.h"
 #include "engine/derivation/derivation.h"
+#include "engine/prove/definedness.h"
 #include "engine/prove/limit.h"
 #include "engine/prove/prove.h"
 
@@ -71,6 +72,10 @@ private:
                         const assumptions& given, std::optional<GiNaC::ex>& value,
                         std::optional<limit_method>& how) const;
 
+    // conditions.cpp: where derived values, results and claims are defined in the reals
+    std::vector<condition> in_inputs(const std::vector<condition>& needs) const;
+    std::vector<condition> needs_of(const GiNaC::ex& value, const written_form* written) const;
+
     // paper_claims.cpp: the paper's claims held to account
     paper_comparison hold_to_account(const spec::claim& claim);
     finding mended_finding(const spec::claim& claim);
@@ -93,6 +98,9 @@ private:
     std::map<GiNaC::ex, std::vector<case_value>, GiNaC::ex_is_less> cases_;   ///< quantities defined by cases
     mutable std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> resolved_;
     std::map<std::string, std::string> imported_;   ///< the names [[use]]s gave, and the results they name
+    /// What each derived quantity's value needs to be defined in the reals, in the inputs:
+    /// its divisors, radicands, ... as written and as derived (conditions.cpp).
+    std::map<GiNaC::ex, std::vector<condition>, GiNaC::ex_is_less> needs_;
 };
 
 } // namespace impact::engine::detail

@@ -11,24 +11,17 @@
 #pragma once
 
 #include "engine/expr/symbols.h"
+#include "engine/prove/condition.h"
 #include "engine/expr/written_form.h"
 #include "engine/prove/sign.h"
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace impact::engine {
-
-/// One condition for an expression to be defined in the reals: `expr` != 0, > 0 or >= 0.
-struct condition {
-    enum class kind { nonzero, positive, nonnegative };
-    GiNaC::ex expr;
-    kind need = kind::nonzero;
-    std::string text;      ///< as the terminal writes it, e.g. "x != y", "p > 0", "1 >= u^2"
-    std::string because;   ///< what needs it: "a divisor", "a radicand", "the argument of log", ...
-};
 
 /// `x != y`, `p > 0`, `1 >= u^2`: each condition as a relation between its positive and
 /// negative terms, written with `symbols` (the same text on every run).
@@ -47,11 +40,11 @@ std::vector<condition> definedness(const written_form& written, const symbol_tab
 /// Appends `more` to `into`, leaving out those already there (e and -e are one divisor).
 void add_conditions(std::vector<condition>& into, const std::vector<condition>& more);
 
-/// `needs` with `map` substituted (derived quantities by their values, special values of
-/// a check): conditions on inputs. Those that become numbers are dropped when they hold;
-/// one that fails stays, as `0 != 0`, which no proof can meet.
-std::vector<condition> substituted(const std::vector<condition>& needs, const GiNaC::exmap& map,
-                                   const symbol_table& symbols);
+/// `needs` with each condition's expression rewritten by `into` (derived quantities put
+/// in, a check's special values): conditions on inputs. Those that become numbers are
+/// dropped when they hold; one that fails stays (`0 != 0`), which no proof can meet.
+std::vector<condition> rewritten(const std::vector<condition>& needs,
+                                 const std::function<GiNaC::ex(const GiNaC::ex&)>& into, const symbol_table& symbols);
 
 /// Conditions split into those proven from `given` and those that are not (attached to
 /// what needs them): a condition on one symbol narrows its domain for those after it

@@ -78,7 +78,7 @@ verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs
         }
         return nearly_equal(x, y);
     };
-    verdict sampled = sample(a, b, v.residual, symbols, holds, to_string(op));
+    verdict sampled = sample(a, b, v.residual, symbols, holds, to_string(op), given.where);
     sampled.proof = proof.steps;
     return sampled;
 }

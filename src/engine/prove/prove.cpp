@@ -142,16 +142,17 @@ std::optional<verdict> prove_equal_angles(const GiNaC::ex& a, const GiNaC::ex& b
 
 std::string to_string(const verdict& v)
 {
+    const std::string where = v.where.empty() ? "" : ", where " + to_string(v.where);
     switch (v.what) {
-    case verdict::status::proven: return "proven";
-    case verdict::status::sampled: return fmt::format("sampled ({} points)", v.samples);
+    case verdict::status::proven: return "proven" + where;
+    case verdict::status::sampled: return fmt::format("sampled ({} points){}", v.samples, where);
     case verdict::status::failed: break;
     }
     return "failed";
 }
 
 verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run,
-                    when_unproven otherwise)
+                    when_unproven otherwise, const std::vector<condition>& where)
 {
     const GiNaC::exmap abbreviations = symbols.abbreviations();
     const assumptions given = declared_assumptions(symbols, run);
@@ -216,7 +217,7 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
         v.method = "difference not proven zero (not sampled)";
         return v;
     }
-    return sample(a, b, residual, symbols, nearly_equal, "=");
+    return sample(a, b, residual, symbols, nearly_equal, "=", where);
 }
 
 verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, const symbol_table& symbols,

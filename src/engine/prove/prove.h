@@ -63,8 +63,9 @@ enum class when_unproven { sample, give_up };
 
 /// Decides whether `lhs == rhs` for all values of the symbols' domains; `run` keeps what
 /// the proof works out for the proofs after it.
+/// Sampled, it is tested where the conditions `where` hold (definedness.h).
 verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run,
-                    when_unproven otherwise = when_unproven::sample);
+                    when_unproven otherwise = when_unproven::sample, const std::vector<condition>& where = {});
 
 /// Decides `lhs op rhs` for an inequality: proven from the signs of the factors of
 /// the difference under `given` (prove_sign), else sampled, else failed.

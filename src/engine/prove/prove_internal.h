@@ -16,11 +16,12 @@ namespace impact::engine {
 /// `e` with its abbreviations replaced by their definitions (prove.cpp).
 GiNaC::ex spelled_out(const GiNaC::ex& e, const GiNaC::exmap& abbreviations);
 
-/// Both sides evaluated at sampled points of the declared domains, `holds` tested on them:
-/// `failed` at the first point where it does not hold, else `sampled` (sampling.cpp).
+/// Both sides evaluated at sampled points of the declared domains where the conditions
+/// `where` hold, `holds` tested on them: `failed` at the first point where it does not
+/// hold, or where a side is undefined or not real, else `sampled` (sampling.cpp).
 verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& residual, const symbol_table& symbols,
                const std::function<bool(const GiNaC::numeric&, const GiNaC::numeric&)>& holds,
-               const std::string& claim);
+               const std::string& claim, const std::vector<condition>& where);
 
 /// Whether two numbers differ by at most 1e-30 times the larger of 1, |a| and |b| (sampling.cpp).
 bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b);

@@ -28,18 +28,22 @@ GiNaC::numeric exact(double value)
 
 } // namespace
 
-// Evaluates `lhs - rhs` at points of the declared domains. Returns the failing
-// residual's value as a verdict, or a `sampled` verdict when every point agrees.
-// Evaluates both sides at points of the declared domains and tests `holds` on them.
-// Returns `failed` at the first point where it does not hold, else `sampled`.
+// Evaluates both sides at points of the declared domains where the conditions `where`
+// hold, and tests `holds` on them. Returns `failed` at the first point where it does not
+// hold, or where a side is undefined or not real: the claim is said to hold there, so the
+// point refutes it, and is never skipped. Else `sampled`.
 verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& residual, const symbol_table& symbols,
                const std::function<bool(const GiNaC::numeric&, const GiNaC::numeric&)>& holds,
-               const std::string& claim)
+               const std::string& claim, const std::vector<condition>& where)
 {
     GiNaC::lst free;
-    for (const quantity& q : symbols.all())
-        if ((lhs - rhs).has(q.symbol))
+    for (const quantity& q : symbols.all()) {
+        bool in_condition = false;
+        for (const condition& c : where)
+            in_condition = in_condition || c.expr.has(q.symbol);
+        if ((lhs - rhs).has(q.symbol) || in_condition)
             free.append(q.symbol);
+    }
 
     const auto saved_digits = GiNaC::Digits;
     GiNaC::Digits = sample_digits;
@@ -50,43 +54,65 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
     // Each side evaluated at the point: numbers are substituted as 40-digit floats, so
     // that a large expression is not first evaluated in exact rationals whose digits
     // grow with every product (the cost of a sampled check, ten times over); a point
-    // where the claim fails is evaluated again exactly before it is believed.
+    // where the claim fails is evaluated again exactly before it is believed. False where
+    // a side is not a real number there (or a pole).
     auto evaluated = [&](const GiNaC::exmap& point, GiNaC::numeric& a, GiNaC::numeric& b) {
-        const GiNaC::ex x = GiNaC::evalf(lhs.subs(point, GiNaC::subs_options::no_pattern));
-        const GiNaC::ex y = GiNaC::evalf(rhs.subs(point, GiNaC::subs_options::no_pattern));
-        if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::is_a<GiNaC::numeric>(y) ||
-            !GiNaC::ex_to<GiNaC::numeric>(x).is_real() || !GiNaC::ex_to<GiNaC::numeric>(y).is_real())
+        try {
+            const GiNaC::ex x = GiNaC::evalf(lhs.subs(point, GiNaC::subs_options::no_pattern));
+            const GiNaC::ex y = GiNaC::evalf(rhs.subs(point, GiNaC::subs_options::no_pattern));
+            if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::is_a<GiNaC::numeric>(y) ||
+                !GiNaC::ex_to<GiNaC::numeric>(x).is_real() || !GiNaC::ex_to<GiNaC::numeric>(y).is_real())
+                return false;
+            a = GiNaC::ex_to<GiNaC::numeric>(x);
+            b = GiNaC::ex_to<GiNaC::numeric>(y);
+            return true;
+        } catch (const std::exception&) {
             return false;
-        a = GiNaC::ex_to<GiNaC::numeric>(x);
-        b = GiNaC::ex_to<GiNaC::numeric>(y);
-        return true;
+        }
     };
-    for (std::size_t attempt = 0; tested < sample_points && attempt < 4 * sample_points; ++attempt) {
+    const auto refuted = [&](const GiNaC::exmap& point, const std::string& what) {
+        std::vector<std::string> values;
+        for (const GiNaC::ex& s : free)
+            values.push_back(fmt::format("{} = {:.6g}", symbols.text(s),
+                                         GiNaC::ex_to<GiNaC::numeric>(point.at(s)).to_double()));
+        GiNaC::Digits = saved_digits;
+        v.what = verdict::status::failed;
+        v.samples = tested + 1;
+        v.method = fmt::format("{} at a sampled point{}: {}", what,
+                               where.empty() ? "" : fmt::format(" where {} hold", to_string(where)),
+                               fmt::join(values, ", "));
+        return v;
+    };
+    for (std::size_t attempt = 0; tested < sample_points && attempt < 8 * sample_points; ++attempt) {
         GiNaC::exmap point, rounded;
         for (const GiNaC::ex& s : free) {
             point[s] = exact(draw(*symbols.domain_of(s), stream));
             rounded[s] = point[s].evalf();
         }
-        try {
-            GiNaC::numeric a, b;
-            if (!evaluated(rounded, a, b))
-                continue;
-            if (!holds(a, b)) {
-                if (!evaluated(point, a, b))
-                    continue;
-                if (!holds(a, b)) {
-                    GiNaC::Digits = saved_digits;
-                    v.what = verdict::status::failed;
-                    v.samples = tested + 1;
-                    v.method = fmt::format("does not hold at a sampled point: {} {} vs {:.6g}", a.to_double(), claim,
-                                           b.to_double());
-                    return v;
-                }
-            }
-            ++tested;
-        } catch (const std::exception&) {
-            continue; // a pole of either side: draw another point
+        if (!where.empty() && !hold_at(where, point))
+            continue;   // outside what the claim is said of
+        GiNaC::numeric a, b;
+        if (!evaluated(rounded, a, b)) {
+            // Not a real number: again exactly, at twice the digits, before it is believed.
+            GiNaC::Digits = 2 * sample_digits;
+            const bool real = evaluated(point, a, b);
+            GiNaC::Digits = sample_digits;
+            if (!real)
+                return refuted(point, "a side is undefined or not real");
         }
+        if (!holds(a, b)) {
+            if (!evaluated(point, a, b))
+                return refuted(point, "a side is undefined or not real");
+            if (!holds(a, b)) {
+                GiNaC::Digits = saved_digits;
+                v.what = verdict::status::failed;
+                v.samples = tested + 1;
+                v.method = fmt::format("does not hold at a sampled point: {} {} vs {:.6g}", a.to_double(), claim,
+                                       b.to_double());
+                return v;
+            }
+        }
+        ++tested;
     }
     GiNaC::Digits = saved_digits;
     v.what = tested > 0 ? verdict::status::sampled : verdict::status::failed;
@@ -129,6 +155,8 @@ unsigned believed_signs(const GiNaC::ex& e, const assumptions& given, std::size_
         GiNaC::exmap point;
         for (const auto& [symbol, range] : free)
             point[symbol] = exact(draw(*range, stream));
+        if (!given.where.empty() && !hold_at(given.where, point))
+            continue;   // outside what the claim is said of
         try {
             const GiNaC::ex at = e.subs(point, GiNaC::subs_options::no_pattern);
             int sign[2] = {0, 0};
@@ -287,7 +315,7 @@ std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation
             x.point.emplace_back(symbol, values[k]);
         }
         try {
-            if (!in_domains(at))
+            if (!in_domains(at) || (!given.where.empty() && !hold_at(given.where, at)))
                 continue;
             const GiNaC::ex l = GiNaC::normal(a.subs(at, GiNaC::subs_options::no_pattern));
             const GiNaC::ex r = GiNaC::normal(b.subs(at, GiNaC::subs_options::no_pattern));

@@ -17,6 +17,7 @@
 
 #include "engine/expr/order.h"
 #include "engine/expr/symbols.h"
+#include "engine/prove/condition.h"
 
 #include <ginac/ginac.h>
 
@@ -112,6 +113,10 @@ struct assumptions {
         domain range;
     };
     std::vector<assumed_sign> assumed{};
+    /// The conditions a claim is said to hold under (definedness.h: attached, not proven):
+    /// a sample is drawn where they hold, and a point there where the claim is undefined
+    /// refutes it.
+    std::vector<condition> where{};
 };
 
 /// `e` as c times an abbreviation declared with a domain (assumptions::assumed), c a real

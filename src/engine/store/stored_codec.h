@@ -131,6 +131,9 @@ private:
     json put_sign_step(const sign_step& s);
     void get_sign_step(const json& j, sign_step& s);
 
+    json put_condition(const condition& c);
+    void get_condition(const json& j, condition& c);
+
     json put_verdict(const verdict& v);
     void get_verdict(const json& j, verdict& v);
 

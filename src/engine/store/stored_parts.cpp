@@ -170,7 +170,9 @@ json derivation_codec::put_step(const step_result& s)
             put_written(s.written),
             list(s.solutions, &derivation_codec::put_solution),
             list(s.cases, &derivation_codec::put_case),
-            put(s.cases_of)};
+            put(s.cases_of),
+            list(s.attached, &derivation_codec::put_condition),
+            list(s.defined, &derivation_codec::put_condition)};
 }
 
 void derivation_codec::get_step(const json& j, step_result& s)
@@ -191,6 +193,8 @@ void derivation_codec::get_step(const json& j, step_result& s)
     get_list(j.at(10), s.solutions, &derivation_codec::get_solution);
     get_list(j.at(11), s.cases, &derivation_codec::get_case);
     s.cases_of = get(j.at(12));
+    get_list(j.at(13), s.attached, &derivation_codec::get_condition);
+    get_list(j.at(14), s.defined, &derivation_codec::get_condition);
 }
 
 json derivation_codec::put_comparison(const paper_comparison& p)
@@ -234,8 +238,15 @@ void derivation_codec::get_comparison(const json& j, paper_comparison& p)
 
 json derivation_codec::put_result(const result& r)
 {
-    return {r.name,   put(r.symbol),          put(r.value), put(r.display),
-            r.paper,  put_written(r.written), list(r.cases, &derivation_codec::put_case)};
+    return {r.name,
+            put(r.symbol),
+            put(r.value),
+            put(r.display),
+            r.paper,
+            put_written(r.written),
+            list(r.cases, &derivation_codec::put_case),
+            list(r.attached, &derivation_codec::put_condition),
+            list(r.defined, &derivation_codec::put_condition)};
 }
 
 void derivation_codec::get_result(const json& j, result& r)
@@ -247,6 +258,8 @@ void derivation_codec::get_result(const json& j, result& r)
     r.paper = j.at(4).get<std::string>();
     get_written(j.at(5), r.written);
     get_list(j.at(6), r.cases, &derivation_codec::get_case);
+    get_list(j.at(7), r.attached, &derivation_codec::get_condition);
+    get_list(j.at(8), r.defined, &derivation_codec::get_condition);
 }
 
 } // namespace impact::engine

@@ -98,10 +98,26 @@ void derivation_codec::get_sign_step(const json& j, sign_step& s)
     s.words = j.at(3).get<std::string>();
 }
 
+json derivation_codec::put_condition(const condition& c) { return {put(c.expr), code(c.need), c.text, c.because}; }
+
+void derivation_codec::get_condition(const json& j, condition& c)
+{
+    c.expr = get(j.at(0));
+    c.need = enum_of<condition::kind>(j.at(1), 2);
+    c.text = j.at(2).get<std::string>();
+    c.because = j.at(3).get<std::string>();
+}
+
 json derivation_codec::put_verdict(const verdict& v)
 {
-    return {code(v.what), code(v.how), v.samples, put(v.residual), v.method,
-            list(v.proof, &derivation_codec::put_sign_step)};
+    return {code(v.what),
+            code(v.how),
+            v.samples,
+            put(v.residual),
+            v.method,
+            list(v.proof, &derivation_codec::put_sign_step),
+            list(v.where, &derivation_codec::put_condition),
+            list(v.defined, &derivation_codec::put_condition)};
 }
 
 void derivation_codec::get_verdict(const json& j, verdict& v)
@@ -112,6 +128,8 @@ void derivation_codec::get_verdict(const json& j, verdict& v)
     v.residual = get(j.at(3));
     v.method = j.at(4).get<std::string>();
     get_list(j.at(5), v.proof, &derivation_codec::get_sign_step);
+    get_list(j.at(6), v.where, &derivation_codec::get_condition);
+    get_list(j.at(7), v.defined, &derivation_codec::get_condition);
 }
 
 json derivation_codec::put_limit_method(const limit_method& m)

@@ -1,0 +1,32 @@
+// Where a derivation's values, results and claims are defined in the reals
+// (engine/prove/definedness.h): what each derived value needs, as the file writes it and as
+// derived, in the inputs; and those needs proven from the domains or attached.
+#include "engine/derive/deriver.h"
+
+namespace impact::engine::detail {
+
+// Conditions written in derived quantities, put in the inputs.
+std::vector<condition> deriver::in_inputs(const std::vector<condition>& needs) const
+{
+    return rewritten(needs, [this](const GiNaC::ex& e) { return resolve(e); }, out_.symbols);
+}
+
+// What a value needs, `value` as parsed (in derived quantities) and `written` as the file
+// writes it: the conditions of the text (exp(log(x)) needs x > 0, though GiNaC reads x),
+// of the parsed value, of the value in the inputs (a solve's divisors), and those of
+// every derived quantity it uses (a divisor that cancels once the quantity is put in, as
+// T g with T = 2 w/g, is still a divisor of T).
+std::vector<condition> deriver::needs_of(const GiNaC::ex& value, const written_form* written) const
+{
+    std::vector<condition> needs;
+    if (written)
+        add_conditions(needs, in_inputs(definedness(*written, out_.symbols)));
+    add_conditions(needs, in_inputs(definedness(value, out_.symbols)));
+    add_conditions(needs, definedness(resolve(value), out_.symbols));
+    for (const auto& [symbol, more] : needs_)
+        if (value.has(symbol))
+            add_conditions(needs, more);
+    return needs;
+}
+
+} // namespace impact::engine::detail
