@@ -132,6 +132,15 @@ BOOST_AUTO_TEST_CASE(a_false_claim_is_not_proven_under_its_conditions)
     BOOST_TEST(status(d, "wrong_bound") == "failed");
 }
 
+// sqrt(-h) for h > 0 is real nowhere: its square is GiNaC's -h, but the claim is about
+// nothing, and fails.
+BOOST_AUTO_TEST_CASE(a_claim_defined_nowhere_in_its_domains_fails)
+{
+    const engine::derivation d = derive_text(over_reals(check("nowhere", "sqrt(-h)^2 = -h")));
+    BOOST_TEST(status(d, "nowhere") == "failed");
+    BOOST_TEST(check_named(d, "nowhere").outcome.method == "defined nowhere in the domains: 0 >= h never holds there");
+}
+
 // A point where a side is not real, and the claim is said to hold, refutes it: never
 // skipped. acos(u) + asin(u) = pi/2 holds for u in [-1, 1] and is not real beyond.
 BOOST_AUTO_TEST_CASE(a_sampled_point_where_a_side_is_not_real_refutes_the_claim)

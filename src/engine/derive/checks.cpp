@@ -131,31 +131,18 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
     c.rhs = rhs;
     // Where the claim is defined, as written and as derived: each condition proven from the
     // domains, or attached to the claim, which is then proven (or sampled) where they hold.
-    std::vector<condition> needs;
-    {
-        std::vector<condition> written_needs = in_inputs(definedness(c.written, out_.symbols));
-        for (const GiNaC::ex& side : {sides.lhs, sides.rhs}) {
-            add_conditions(written_needs, in_inputs(definedness(side, out_.symbols)));
-            for (const auto& [symbol, more] : needs_)
-                if (side.has(symbol))
-                    add_conditions(written_needs, more);
-        }
-        add_conditions(needs, written_needs);
-        if (!left_at.empty())   // the left side's at the changed inputs too
-            add_conditions(needs, rewritten(
-                                      written_needs,
-                                      [&](const GiNaC::ex& e) { return e.subs(left_at, GiNaC::subs_options::no_pattern); },
-                                      out_.symbols));
-        if (!at.empty())
-            needs = rewritten(needs, [&](const GiNaC::ex& e) { return e.subs(at); }, out_.symbols);
-        add_conditions(needs, definedness(lhs, out_.symbols));
-        add_conditions(needs, definedness(rhs, out_.symbols));
-    }
+    const std::vector<condition> needs = needs_of_claim(c.written, sides, left_at, at, lhs, rhs);
     const settled_conditions settled = settle(needs, given);
     const assumptions under = where(given, settled.attached);
     const auto defined_where = [&](check_result& done) {
         done.outcome.where = settled.attached;
         done.outcome.defined = settled.proven;
+        // Defined nowhere in the domains: not a claim about anything.
+        if (!settled.never.empty() && done.outcome.holds()) {
+            done.outcome.what = verdict::status::failed;
+            done.outcome.method = fmt::format("defined nowhere in the domains: {} never holds there",
+                                              to_string(settled.never));
+        }
         return done;
     };
     std::optional<case_split> split = cases_in(lhs, rhs, c.where);

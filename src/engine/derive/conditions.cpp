@@ -29,4 +29,32 @@ std::vector<condition> deriver::needs_of(const GiNaC::ex& value, const written_f
     return needs;
 }
 
+// What a claim needs, `written` as the file writes it and `sides` as parsed: the conditions
+// of its text, of its sides and of the derived quantities they use, the left side's also at
+// the inputs `left_at` changes it to, all at the special values `at`; and those of `lhs` and
+// `rhs`, the sides as proven.
+std::vector<condition> deriver::needs_of_claim(const written_form& written, const claim_sides& sides,
+                                               const GiNaC::exmap& left_at, const GiNaC::exmap& at,
+                                               const GiNaC::ex& lhs, const GiNaC::ex& rhs) const
+{
+    std::vector<condition> as_written = in_inputs(definedness(written, out_.symbols));
+    for (const GiNaC::ex& side : {sides.lhs, sides.rhs}) {
+        add_conditions(as_written, in_inputs(definedness(side, out_.symbols)));
+        for (const auto& [symbol, more] : needs_)
+            if (side.has(symbol))
+                add_conditions(as_written, more);
+    }
+    std::vector<condition> needs = as_written;
+    if (!left_at.empty())
+        add_conditions(needs, rewritten(
+                                  as_written,
+                                  [&](const GiNaC::ex& e) { return e.subs(left_at, GiNaC::subs_options::no_pattern); },
+                                  out_.symbols));
+    if (!at.empty())
+        needs = rewritten(needs, [&](const GiNaC::ex& e) { return e.subs(at); }, out_.symbols);
+    add_conditions(needs, definedness(lhs, out_.symbols));
+    add_conditions(needs, definedness(rhs, out_.symbols));
+    return needs;
+}
+
 } // namespace impact::engine::detail

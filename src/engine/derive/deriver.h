@@ -75,6 +75,9 @@ private:
     // conditions.cpp: where derived values, results and claims are defined in the reals
     std::vector<condition> in_inputs(const std::vector<condition>& needs) const;
     std::vector<condition> needs_of(const GiNaC::ex& value, const written_form* written) const;
+    std::vector<condition> needs_of_claim(const written_form& written, const claim_sides& sides,
+                                          const GiNaC::exmap& left_at, const GiNaC::exmap& at, const GiNaC::ex& lhs,
+                                          const GiNaC::ex& rhs) const;
 
     // paper_claims.cpp: the paper's claims held to account
     paper_comparison hold_to_account(const spec::claim& claim);

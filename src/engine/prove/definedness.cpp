@@ -295,6 +295,19 @@ bool proven(const condition& c, const assumptions& given)
     return false;
 }
 
+// Whether the domains prove the condition false everywhere.
+bool refuted(const condition& c, const assumptions& given)
+{
+    if (c.need == condition::kind::nonzero)
+        return false;
+    try {
+        const sign_set s = prove_sign(c.expr, given).sign;
+        return c.need == condition::kind::positive ? !s.positive : !s.positive && !s.zero;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 // `range` with the values the condition on its symbol excludes taken out, or none when it
 // cannot say (x != 0 for a real x).
 std::optional<domain> narrowed(domain range, condition::kind need)
@@ -434,6 +447,8 @@ settled_conditions settle(const std::vector<condition>& needs, const assumptions
             out.proven.push_back(c);
             continue;
         }
+        if (refuted(c, under))
+            out.never.push_back(c);
         out.attached.push_back(c);
         under = where(under, {c});
     }

@@ -52,6 +52,9 @@ std::vector<condition> rewritten(const std::vector<condition>& needs,
 struct settled_conditions {
     std::vector<condition> proven;
     std::vector<condition> attached;
+    /// Attached conditions the domains prove false everywhere (sqrt(-h) for h > 0): what
+    /// needs them is defined nowhere, and a claim about it is refuted, not proven.
+    std::vector<condition> never;
 };
 settled_conditions settle(const std::vector<condition>& needs, const assumptions& given);
 
