@@ -147,7 +147,7 @@ BOOST_AUTO_TEST_CASE(a_sampled_point_where_a_side_is_not_real_refutes_the_claim)
     const std::vector<engine::condition> inside = engine::definedness(lhs, d.symbols);
     BOOST_REQUIRE(!inside.empty());
     const engine::verdict where = engine::prove_equal(lhs, rhs, d.symbols, run, engine::when_unproven::sample, inside);
-    BOOST_TEST(where.what == engine::verdict::status::sampled);
+    BOOST_TEST(engine::to_string(where).find("sampled") == 0u, engine::to_string(where));
     // The whole claim, from the file: sampled where 1 >= u^2.
     const engine::derivation e = derive_text(over_reals(check("arcs", "acos(u) + asin(u) = Pi/2")));
     BOOST_TEST(status(e, "arcs") == "sampled (200 points), where 1 >= u^2");

@@ -140,6 +140,10 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
                 if (side.has(symbol))
                     add_conditions(written_needs, more);
         }
+        // A quantity the text uses, though GiNaC cancelled it (x*D/D is x), is needed too.
+        for (const auto& [symbol, more] : needs_)
+            if (c.written.mentions(symbol))
+                add_conditions(written_needs, more);
         add_conditions(needs, written_needs);
         if (!left_at.empty())   // the left side's at the changed inputs too
             add_conditions(needs, rewritten(
