@@ -53,8 +53,11 @@ public:
             return call(op::exp, draw(depth - 1, true));
         if (pick < 92)
             return call(op::log, next());
-        if (pick < 96)
-            return pow(next(), 1, 3);
+        if (pick < 96) {
+            static const int exponents[][2] = {{1, 3}, {2, 3}, {-1, 2}, {3, 2}, {-1, 1}, {-2, 1}};
+            const auto& e = exponents[below(6)];
+            return pow(next(), e[0], e[1]);
+        }
         return -next();
     }
 
@@ -149,7 +152,28 @@ const std::vector<family>& families()
         {"root_of_fourth_power", false, [](const term& a, const term&, const term&, drawer&) {
              return relation_claim{call(op::sqrt, pow(a, 4)), r::equal, pow(a, 2)};
          }},
+        {"root_of_root_to_the_fourth", false, [](const term& a, const term&, const term&, drawer&) {
+             return relation_claim{pow(call(op::sqrt, a), 4), r::equal, pow(a, 2)};
+         }},
+        {"two_thirds", false, [](const term& a, const term&, const term&, drawer&) {
+             return relation_claim{pow(a, 2, 3), r::equal, pow(pow(a, 1, 3), 2)};
+         }},
+        {"inverse_root", false, [](const term& a, const term&, const term&, drawer&) {
+             return relation_claim{pow(a, -1, 2), r::equal, num(1) / call(op::sqrt, a)};
+         }},
+        {"root_times_root", false, [](const term& a, const term&, const term&, drawer&) {
+             return relation_claim{call(op::sqrt, a) * call(op::sqrt, a), r::equal, a};
+         }},
+        {"log_of_root", false, [](const term& a, const term&, const term&, drawer&) {
+             return relation_claim{call(op::log, call(op::sqrt, a)), r::equal, call(op::log, a) / num(2)};
+         }},
         // Inequalities.
+        {"root_below_mean", true, [](const term& a, const term&, const term&, drawer&) {
+             return relation_claim{call(op::sqrt, a), r::less_equal, (a + num(1)) / num(2)};
+         }},
+        {"abs_above", true, [](const term& a, const term&, const term&, drawer&) {
+             return relation_claim{call(op::abs, a), r::greater_equal, a};
+         }},
         {"sum_of_squares", true, [](const term& a, const term& b, const term&, drawer&) {
              return relation_claim{pow(a, 2) + pow(b, 2), r::greater_equal, num(0)};
          }},
@@ -285,6 +309,10 @@ drawn_file draw_file(std::mt19937_64& rng, std::size_t claims)
         leaves.push_back(names[i]);
     }
     drawer draw(rng, leaves);
+    if (draw.chance(15)) {
+        f.abbreviation_value = draw.draw(1);
+        draw.names_.push_back("A");
+    }
     if (draw.chance(25)) {
         f.defined_name = "D";
         f.defined_value = draw.draw(2);
@@ -309,6 +337,8 @@ std::string drawn_file::toml() const
     std::string out = "id = \"soundness\"\ntitle = \"drawn by the soundness fuzzer\"\n";
     for (const auto& [name, domain] : symbols)
         out += "[[symbol]]\nname = \"" + name + "\"\ndomain = \"" + domain + "\"\n";
+    if (abbreviation_value)
+        out += "[[symbol]]\nname = \"A\"\ndefinition = \"" + text(*abbreviation_value) + "\"\n";
     const std::string result = defined_name.empty() ? "R" : defined_name;
     out += "[[symbol]]\nname = \"" + result + "\"\n";
     out += "[[step]]\ndefine = \"" + result + "\"\nas = \"" +

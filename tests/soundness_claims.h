@@ -8,6 +8,7 @@
 
 #include "soundness_judge.h"
 
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct drawn_file {
     std::vector<std::pair<std::string, std::string>> symbols;  ///< name, domain
     std::string defined_name;    ///< a quantity a `define` step derives, or empty
     term defined_value;
+    std::optional<term> abbreviation_value;  ///< `A`, a symbol with a `definition`, when drawn
     std::vector<drawn_claim> claims;
 
     /// The derivation file (its `[[result]]` the defined quantity, else the first symbol's copy).

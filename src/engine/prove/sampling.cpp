@@ -138,10 +138,13 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
     return v;
 }
 
+// Within 1e-30 of each other, relative to the larger (or to 1): in GiNaC's numbers, not
+// doubles, whose range ends at 1e308 (exp(exp(3)^2)^2 = 2*exp(2*exp(3)^2), both sides
+// near 1e350, was sampled: an infinite scale let any two values through).
 bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b)
 {
-    const double scale = std::max({1.0, std::abs(a.to_double()), std::abs(b.to_double())});
-    return GiNaC::abs(a - b).to_double() <= 1e-30 * scale;
+    const GiNaC::numeric scale = std::max({GiNaC::numeric(1), GiNaC::abs(a), GiNaC::abs(b)});
+    return GiNaC::abs(a - b) <= scale / GiNaC::numeric(10).power(30);
 }
 
 namespace {
