@@ -322,11 +322,13 @@ drawn_file draw_file(std::mt19937_64& rng, std::size_t claims)
         const family& fam = families()[draw.below(families().size())];
         const int depth = 1 + static_cast<int>(draw.below(2));
         const term a = draw.draw(depth), b = draw.draw(depth), c = draw.draw(1);
-        drawn_claim d{"c" + std::to_string(i + 1), fam.name, fam.make(a, b, c, draw), true};
+        drawn_claim d{"c" + std::to_string(i + 1), fam.name, fam.make(a, b, c, draw), true, ""};
         if (draw.chance(40)) {
             perturb(d.claim, draw);
             d.true_by_construction = false;
         }
+        if (draw.chance(15))
+            d.through_step = "S" + std::to_string(i + 1);
         f.claims.push_back(std::move(d));
     }
     return f;
@@ -343,10 +345,17 @@ std::string drawn_file::toml() const
     out += "[[symbol]]\nname = \"" + result + "\"\n";
     out += "[[step]]\ndefine = \"" + result + "\"\nas = \"" +
            (defined_name.empty() ? symbols.front().first : text(defined_value)) + "\"\nbecause = \"drawn\"\n";
+    for (const drawn_claim& c : claims)
+        if (!c.through_step.empty())
+            out += "[[symbol]]\nname = \"" + c.through_step + "\"\n[[step]]\ndefine = \"" + c.through_step +
+                   "\"\nas = \"" + text(c.claim.lhs) + "\"\nbecause = \"drawn\"\n";
     out += "[[result]]\nname = \"" + result + "\"\n";
     for (const drawn_claim& c : claims) {
         out += "# " + c.family + (c.true_by_construction ? ", true by construction" : ", perturbed") + "\n";
-        out += "[[check]]\nname = \"" + c.name + "\"\nclaim = \"" + text(c.claim) + "\"\n";
+        const std::string claim = c.through_step.empty()
+                                      ? text(c.claim)
+                                      : text(relation_claim{term::symbol(c.through_step), c.claim.rel, c.claim.rhs});
+        out += "[[check]]\nname = \"" + c.name + "\"\nclaim = \"" + claim + "\"\n";
     }
     return out;
 }

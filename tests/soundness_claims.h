@@ -20,6 +20,9 @@ struct drawn_claim {
     std::string family;          ///< the identity it comes from, e.g. "log_product"
     relation_claim claim;
     bool true_by_construction = true;  ///< false: perturbed
+    /// Non-empty: the left side is the value of a `define` step of that name (simplified as a
+    /// step's value is, sqrt(u^2) = u for u >= 0), and the claim is `name rel rhs`.
+    std::string through_step;
 };
 
 struct drawn_file {
