@@ -25,7 +25,8 @@ namespace impact::soundness {
 
 /// An expression as a claim's text writes it, node by node.
 struct term {
-    enum class op { number, symbol, add, sub, mul, div, pow, neg, sqrt, abs, exp, log, sin, cos };
+    /// conjugate: a condition's text may hold it (conjugate(u)*u >= 0); of a real value, itself.
+    enum class op { number, symbol, add, sub, mul, div, pow, neg, sqrt, abs, exp, log, sin, cos, conjugate };
     op what = op::number;
     GiNaC::numeric value;    ///< a number's (an exact rational)
     std::string name;        ///< a symbol's
