@@ -124,7 +124,14 @@ public:
         }
     }
 
-    std::vector<condition> take() { return std::move(found_); }
+    // In the order of their texts: GiNaC's order of a product's factors, or a sum's terms,
+    // changes from run to run, and the conditions must not.
+    std::vector<condition> take()
+    {
+        std::stable_sort(found_.begin(), found_.end(),
+                         [](const condition& a, const condition& b) { return a.text < b.text; });
+        return std::move(found_);
+    }
 
 private:
     void nonzero(const GiNaC::ex& e, const char* because)
@@ -408,7 +415,19 @@ settled_conditions settle(const std::vector<condition>& needs, const assumptions
                     return true;
         return false;
     };
-    for (const condition& c : ordered) {
+    for (condition c : ordered) {
+        // A divisor the domains prove >= 0 (a sum of squares) is not 0 where it is > 0: said so,
+        // as its root's radicand is.
+        if (c.need == condition::kind::nonzero && !proven(c, under)) {
+            condition stronger = c;
+            stronger.need = condition::kind::positive;
+            if (proven({c.expr, condition::kind::nonnegative, "", ""}, under)) {
+                const std::size_t at = stronger.text.find(" != ");
+                if (at != std::string::npos)
+                    stronger.text.replace(at, 4, " > ");
+                c = stronger;
+            }
+        }
         if (implied(c))
             continue;   // said already, by a stronger condition on the same expression
         if (proven(c, under)) {

@@ -96,7 +96,7 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
                                fmt::join(values, ", "));
         return v;
     };
-    for (std::size_t attempt = 0; tested < sample_points && attempt < 8 * sample_points; ++attempt) {
+    for (std::size_t attempt = 0; tested < sample_points && attempt < 50 * sample_points; ++attempt) {
         GiNaC::exmap point, rounded;
         // The last quarter of the points over twelve decades (draw_wide).
         const bool wide = tested >= sample_points * 3 / 4;

@@ -141,6 +141,10 @@ std::pair<sign_set, sign_reason> sign_prover::decide(const GiNaC::ex& e, int dep
             return {{false, true, true}, "an absolute value"};
         if (name == "acos")
             return {{false, true, true}, "an arccosine, in [0, pi]"};
+        if (name == "exp")
+            return {{false, false, true}, "an exponential"};
+        if (name == "cosh")
+            return {{false, false, true}, "a hyperbolic cosine, >= 1"};
     }
     return {sign_set::any(), "not determined"};
 }
@@ -165,6 +169,11 @@ std::pair<sign_set, sign_reason> sign_prover::power_sign(const GiNaC::ex& e, int
         // A real root: x^(p/2q) >= 0.
         r = {false, b.zero, b.positive || b.negative};
         why = "a square root";
+    } else if (n.is_rational()) {
+        // GiNaC's principal root x^(p/q), q odd, is real only where x >= 0 (the condition
+        // that it is defined, engine/prove/definedness.h), and there it is >= 0.
+        r = {false, b.zero, b.positive || b.negative};
+        why = "a real root";
     } else {
         return {sign_set::any(), "a fractional power"};
     }
