@@ -422,9 +422,11 @@ struct digits_scope {
     long saved;
 };
 
-// Whether a relation holds between two defined values at this precision: nothing when
-// rounding leaves it open. Two values within 10^-(2/3 digits) of each other, relative to
-// their size, and their error bounds, are taken as equal.
+// Whether a relation holds between two defined values at this precision. Two values within
+// their error bounds of each other (16 times over), or within 10^-(digits - 10) relative to
+// their size, are taken as equal: the bounds carry the rounding of what cancelled (z e^100 -
+// (w + e^100) is -w, though e^100 is 10^43: a tolerance relative to the sides' size, 10^-40
+// of 10^43, would call -31/13 and 0 equal).
 std::optional<bool> holds(relation rel, const value& l, const value& r, int digits)
 {
     int s;
@@ -435,7 +437,7 @@ std::optional<bool> holds(relation rel, const value& l, const value& r, int digi
         const numeric d = l.v - r.v;
         const numeric size = std::max(GiNaC::abs(l.v), GiNaC::abs(r.v));
         const numeric tolerance =
-            std::max(16 * (l.err + r.err), size * numeric(1) / numeric(10).power(digits * 2 / 3));
+            std::max(16 * (l.err + r.err), size * numeric(1) / numeric(10).power(digits - 10));
         s = GiNaC::abs(d) <= tolerance ? 0 : (d.is_positive() ? 1 : -1);
     }
     switch (rel) {
@@ -713,15 +715,13 @@ judgement judge(const problem& p, const relation_claim& claim, const engine::ver
         where.push_back(parse_relation(c.text));
     for (std::size_t draw = 0; draw < options.draws && j.points < options.wanted; ++draw) {
         const std::map<std::string, numeric> point = draw_point(p, rng);
-        bool inside = true;
-        for (const relation_claim& c : where) {
-            const at_point a = evaluate(c, point, p.defined, 60);
-            if (a.what != at_point::state::holds) {
-                inside = false;
-                break;
-            }
-        }
-        if (!inside)
+        const auto inside = [&](int digits) {
+            for (const relation_claim& c : where)
+                if (evaluate(c, point, p.defined, digits).what != at_point::state::holds)
+                    return false;
+            return true;
+        };
+        if (!inside(60))
             continue;
         const at_point a = evaluate(claim, point, p.defined, 60);
         if (a.what == at_point::state::undecided)
@@ -731,7 +731,7 @@ judgement judge(const problem& p, const relation_claim& claim, const engine::ver
             continue;
         // Believed only when 120 digits say the same.
         const at_point again = evaluate(claim, point, p.defined, 120);
-        if (again.what != a.what)
+        if (again.what != a.what || !inside(120))
             continue;
         ++j.refutable;
         if (j.sound) {
