@@ -15,7 +15,8 @@ std::vector<condition> deriver::in_inputs(const std::vector<condition>& needs) c
 // writes it: the conditions of the text (exp(log(x)) needs x > 0, though GiNaC reads x),
 // of the parsed value, of the value in the inputs (a solve's divisors), and those of
 // every derived quantity it uses (a divisor that cancels once the quantity is put in, as
-// T g with T = 2 w/g, is still a divisor of T).
+// T g with T = 2 w/g, is still a divisor of T), also one the text uses and GiNaC cancelled
+// (x*T/T).
 std::vector<condition> deriver::needs_of(const GiNaC::ex& value, const written_form* written) const
 {
     std::vector<condition> needs;
@@ -24,7 +25,7 @@ std::vector<condition> deriver::needs_of(const GiNaC::ex& value, const written_f
     add_conditions(needs, in_inputs(definedness(value, out_.symbols)));
     add_conditions(needs, definedness(resolve(value), out_.symbols));
     for (const auto& [symbol, more] : needs_)
-        if (value.has(symbol))
+        if (value.has(symbol) || (written && written->mentions(symbol)))
             add_conditions(needs, more);
     return needs;
 }
@@ -44,6 +45,10 @@ std::vector<condition> deriver::needs_of_claim(const written_form& written, cons
             if (side.has(symbol))
                 add_conditions(as_written, more);
     }
+    // A quantity the text uses, though GiNaC cancelled it (x*D/D is x), is needed too.
+    for (const auto& [symbol, more] : needs_)
+        if (written.mentions(symbol))
+            add_conditions(as_written, more);
     std::vector<condition> needs = as_written;
     if (!left_at.empty())
         add_conditions(needs, rewritten(

@@ -32,6 +32,17 @@ derivation deriver::run()
     check_definitions(out_.symbols, s, run_);
     check_assumptions_hold_together(out_.symbols, s, declared_assumptions(out_.symbols, run_));
     infer_definitions(out_.symbols, s);
+    // What each abbreviation's definition needs (A = sqrt(x): x >= 0), as written and as
+    // read, for every value and claim that uses it: GiNaC puts the definition in and may
+    // simplify its condition away (sqrt(A)^4 is x^2, A = x/x is 1). Twice, so that one
+    // defined through another declared after it has that one's needs too.
+    for (int pass = 0; pass < 2; ++pass)
+        for (const spec::symbol& declaration : s.symbols)
+            if (declaration.definition)
+                if (const quantity& q = out_.symbols.at(declaration.name); q.definition) {
+                    const written_form as_written = written(*declaration.definition);
+                    needs_[q.symbol] = needs_of(*q.definition, &as_written);
+                }
     for (const spec::use& u : s.uses)
         import(u);
     for (const spec::given& g : s.givens)

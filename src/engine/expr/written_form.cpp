@@ -491,4 +491,23 @@ const written_form::product* written_form::best_product(const std::vector<std::p
     return best;
 }
 
+namespace {
+
+bool mentions(const written_form::node& n, const GiNaC::ex& symbol)
+{
+    if (n.what == written_form::node::kind::atom && n.value.has(symbol))
+        return true;
+    for (const written_form::node& child : n.children)
+        if (mentions(child, symbol))
+            return true;
+    return false;
+}
+
+} // namespace
+
+bool written_form::mentions(const GiNaC::ex& symbol) const
+{
+    return tree_ && engine::mentions(*tree_, symbol);
+}
+
 } // namespace impact::engine

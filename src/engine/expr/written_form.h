@@ -91,6 +91,10 @@ public:
     /// The tree of the text; nothing when the text was not followed (or nothing was read).
     const std::optional<node>& tree() const { return tree_; }
 
+    /// Whether an atom of the text holds `symbol`: a quantity the text uses, though GiNaC
+    /// may have cancelled it from the value (x*D/D is x), whose conditions the text needs.
+    bool mentions(const GiNaC::ex& symbol) const;
+
 private:
     friend class written_reader;
     friend class derivation_codec;   // keeps a derivation between runs (engine/store/stored.h)

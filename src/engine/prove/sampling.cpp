@@ -26,6 +26,19 @@ GiNaC::numeric exact(double value)
     return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
 }
 
+// A value over twelve decades, 10^-6 to 10^6 (either sign on the real line), for a domain
+// without ends; an interval's as `draw` draws it. The ordinary draws stay within [-10, 10]
+// and [1/20, 20], where a claim false only near 0 or far out (1 + e^6 >= 2 e^3 sqrt(1 + 1/x),
+// false for 0 < x < 1/100) always holds.
+double draw_wide(const domain& range, uniform_stream& stream)
+{
+    if (range.what == domain::kind::interval)
+        return draw(range, stream);
+    const double u = stream.next();
+    const double magnitude = std::pow(10.0, -6 + 12 * stream.next());
+    return range.what == domain::kind::real && u < 0.5 ? -magnitude : magnitude;
+}
+
 } // namespace
 
 // Evaluates both sides at points of the declared domains where the conditions `where`
@@ -85,8 +98,10 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
     };
     for (std::size_t attempt = 0; tested < sample_points && attempt < 50 * sample_points; ++attempt) {
         GiNaC::exmap point, rounded;
+        // The last quarter of the points over twelve decades (draw_wide).
+        const bool wide = tested >= sample_points * 3 / 4;
         for (const GiNaC::ex& s : free) {
-            point[s] = exact(draw(*symbols.domain_of(s), stream));
+            point[s] = exact(wide ? draw_wide(*symbols.domain_of(s), stream) : draw(*symbols.domain_of(s), stream));
             rounded[s] = point[s].evalf();
         }
         if (!where.empty() && !hold_at(where, point))
@@ -123,10 +138,13 @@ verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& resi
     return v;
 }
 
+// Within 1e-30 of each other, relative to the larger (or to 1): in GiNaC's numbers, not
+// doubles, whose range ends at 1e308 (exp(exp(3)^2)^2 = 2*exp(2*exp(3)^2), both sides
+// near 1e350, was sampled: an infinite scale let any two values through).
 bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b)
 {
-    const double scale = std::max({1.0, std::abs(a.to_double()), std::abs(b.to_double())});
-    return GiNaC::abs(a - b).to_double() <= 1e-30 * scale;
+    const GiNaC::numeric scale = std::max({GiNaC::numeric(1), GiNaC::abs(a), GiNaC::abs(b)});
+    return GiNaC::abs(a - b) <= scale / GiNaC::numeric(10).power(30);
 }
 
 namespace {
@@ -201,7 +219,8 @@ std::vector<GiNaC::numeric> simple_values(const domain& range)
     if (range.what == domain::kind::interval) {
         const GiNaC::numeric a(cln::rationalize(cln::cl_DF(range.lower)));
         const GiNaC::numeric b(cln::rationalize(cln::cl_DF(range.upper)));
-        candidates = {b, a, (a + b) / 2, (3 * a + b) / 4, (a + 3 * b) / 4};
+        // 0 and +-1 too where they lie inside ((-1, 2]: exp(z^2) > 1 fails at 0 alone).
+        candidates = {b, a, (a + b) / 2, (3 * a + b) / 4, (a + 3 * b) / 4, 0, 1, -1};
     } else {
         candidates = {1, 2, GiNaC::numeric(1, 2), 0, -1, 3, -2};
     }
