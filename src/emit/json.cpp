@@ -28,11 +28,16 @@ void add_conditions(json& j, const std::vector<engine::condition>& where, const 
         j["defined_conditions_proven"] = defined.size();
 }
 
-json check_json(const engine::check_result& c, const term_order& order)
+json check_json(const engine::check_result& c, const term_order& order, const verify::proof_checks* z3)
 {
     json j;
     j["name"] = c.name;
     j["status"] = engine::to_string(c.outcome);
+    // What Z3 made of a proven check: confirmed, refuted, resource limit, unknown, or not
+    // expressible with why (verify/proofs.h).
+    if (z3)
+        if (const std::string* status = z3->status(c))
+            j["z3"] = *status;
     if (c.continuity)
         j["continuity"] = c.cases_of;
     else if (!GiNaC::is_a<GiNaC::relational>(c.stated))   // a check stated in words (cases exhaustive)
@@ -64,7 +69,7 @@ json check_json(const engine::check_result& c, const term_order& order)
     return j;
 }
 
-json derivation_json(const engine::derivation& d)
+json derivation_json(const engine::derivation& d, const verify::proof_checks* z3)
 {
     const term_order order = engine::declaration_order(d.symbols);
     json j;
@@ -121,7 +126,7 @@ json derivation_json(const engine::derivation& d)
     }
     j["checks"] = json::array();
     for (const engine::check_result* c : d.all_checks())
-        j["checks"].push_back(check_json(*c, order));
+        j["checks"].push_back(check_json(*c, order, z3));
     j["paper_checks"] = json::array();
     for (const engine::paper_comparison& p : d.paper_checks) {
         static const char* const kinds[] = {"printed result", "printed equation", "claim"};
@@ -134,6 +139,9 @@ json derivation_json(const engine::derivation& d)
         // errata's verdict, never "disagrees" for a claim that is not refuted.
         pj["verdict"] = comparison_verdict(p);
         pj["status"] = engine::to_string(p.agreement);
+        if (z3 && p.test)
+            if (const std::string* status = z3->status(*p.test))
+                pj["z3"] = *status;
         pj["printed"] = p.printed_text;
         if (!p.quote.empty())
             pj["printed_as"] = p.quote;   // the paper's own text, which `printed` reads
@@ -199,13 +207,13 @@ json derivation_json(const engine::derivation& d)
 
 } // namespace
 
-std::string derivations_json(const std::vector<const engine::derivation*>& derivations)
+std::string derivations_json(const std::vector<const engine::derivation*>& derivations, const verify::proof_checks* z3)
 {
     json j;
     j["generator"] = "Impact";
     j["derivations"] = json::array();
     for (const engine::derivation* d : derivations)
-        j["derivations"].push_back(derivation_json(*d));
+        j["derivations"].push_back(derivation_json(*d, z3));
     return j.dump(2) + "\n";
 }
 

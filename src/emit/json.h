@@ -3,13 +3,16 @@
 #pragma once
 
 #include "engine/derivation/derivation.h"
+#include "verify/proofs.h"
 
 #include <string>
 #include <vector>
 
 namespace impact::emit {
 
-/// The whole library as JSON text (two-space indent, trailing newline).
-std::string derivations_json(const std::vector<const engine::derivation*>& derivations);
+/// The whole library as JSON text (two-space indent, trailing newline); with `z3`, each
+/// proven check's answer from Z3 (its field "z3").
+std::string derivations_json(const std::vector<const engine::derivation*>& derivations,
+                             const verify::proof_checks* z3 = nullptr);
 
 } // namespace impact::emit

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "verify/choice.h"
+#include "verify/proofs.h"
 
 #include <string>
 #include <vector>
@@ -14,8 +15,9 @@ namespace impact::emit {
 
 /// `output/verification.md`; its banner names `folder`, the derivation files' (engine::source_folder).
 /// `of_the_paper` (emit::of_the_paper): its introduction speaks of collisions; else of the
-/// kernels of the folder's own derivations.
+/// kernels of the folder's own derivations. With `z3`, a section on the proofs Z3
+/// re-checked: how many it confirmed, per derivation and in all, and each one it did not, with why.
 std::string verification_markdown(const std::vector<const verify::kernel_plan*>& plans, const std::string& folder,
-                                  bool of_the_paper);
+                                  bool of_the_paper, const verify::proof_checks* z3 = nullptr);
 
 } // namespace impact::emit

@@ -12,6 +12,7 @@
 #include "report/report.h"
 #include "spec/outline.h"
 #include "verify/choice.h"
+#include "verify/proofs.h"
 
 #include <fmt/format.h>
 
@@ -194,8 +195,9 @@ file_set generate_kernels(const library& lib, std::vector<std::string>* missed, 
 
 namespace {
 
-// The LaTeX fragments, derivations.json and errata.md.
-void add_documents(const library& lib, file_set& files)
+// The LaTeX fragments, derivations.json and errata.md; with `z3`, proofs/<id>.smt2 and
+// each proven check's answer from Z3 in derivations.json.
+void add_documents(const library& lib, file_set& files, const verify::proof_checks* z3 = nullptr)
 {
     // A derivation whose results the printers cannot write (the imaginary unit, a constant
     // such as Pi) is reported at its file, before the files that gather every derivation.
@@ -210,14 +212,17 @@ void add_documents(const library& lib, file_set& files)
                                                             d->id(), e.what()));
         }
     }
-    files["derivations.json"] = emit::derivations_json(lib.in_order());
+    files["derivations.json"] = emit::derivations_json(lib.in_order(), z3);
+    if (z3)
+        for (const verify::derivation_proofs& d : z3->derivations)
+            files["proofs/" + d.id + ".smt2"] = verify::smt2_file(d);
     files["errata.md"] = emit::errata_markdown(lib.in_order(), lib.outline ? &*lib.outline : nullptr);
 }
 
 // The kernel headers and verification.md, the choice of forms taken from `store` where it
 // can be; the outputs that miss their bounds.
 std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwatch& clock, const kernel_options& how,
-                                     progress* shown)
+                                     progress* shown, const verify::proof_checks* z3 = nullptr)
 {
     const char* task = "kernel forms";
     const std::vector<verify::kernel_plan> plans = verify::plan_kernels(
@@ -239,7 +244,7 @@ std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwa
     for (const verify::kernel_plan& p : plans)
         all.push_back(&p);
     files["verification.md"] = emit::verification_markdown(all, engine::source_folder(lib.in_order()),
-                                                               emit::of_the_paper(lib.in_order()));
+                                                               emit::of_the_paper(lib.in_order()), z3);
     clock.lap("verification report (numeric)");
     return verify::missed_bounds(plans);
 }
@@ -345,14 +350,28 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     result.all_hold = result.failures.empty();
     if (!result.all_hold)
         return result;
+    // Every proof re-checked by Z3, each answer kept in the cache by its problem's text. A
+    // proof Z3 refutes fails the regeneration as a failed check does, with Z3's model.
+    shown.say("z3", "re-checking the proofs with Z3");
+    const verify::proof_checks z3 = verify::check_proofs(
+        lib.in_order(), lib.derived, store ? &*store : nullptr, [&shown](std::size_t done, std::size_t all) {
+            shown.say("z3", fmt::format("re-checking the proofs with Z3: {} of {} derivations", done, all));
+        });
+    shown.done("z3");
+    clock.lap(fmt::format("proofs re-checked by Z3 ({} problems, {} run, {:.1f} s in Z3)", z3.problems, z3.run,
+                          z3.seconds));
+    result.failures = z3.refuted();
+    result.all_hold = result.failures.empty();
+    if (!result.all_hold)
+        return result;
 
     file_set files;
-    add_documents(lib, files);
+    add_documents(lib, files, &z3);
     clock.lap("LaTeX fragments, derivations.json, errata.md");
     // The report's sources print GiNaC expressions, so they are made here; compiling them
     // runs pdflatex and nothing of GiNaC's (which is not thread-safe), beside the choice
     // of kernel forms on this thread.
-    file_set report_files = report::report_sources(lib);
+    file_set report_files = report::report_sources(lib, &z3);
     file_set sources = report_files;
     for (const auto& [path, contents] : files)
         if (path.rfind("latex/", 0) == 0)
@@ -379,7 +398,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     beside report_process(std::move(compile));
     shown.say("report", "compiling the figures and the report");
     const std::vector<std::string> missed =
-        add_kernels(lib, files, clock, kernel_options{shared, options.jobs}, &shown);
+        add_kernels(lib, files, clock, kernel_options{shared, options.jobs}, &shown, &z3);
     const report_result compiled = report_result::read(report_process.get());
     shown.done("report");
     for (auto& [path, contents] : report_files)

@@ -62,11 +62,11 @@ std::string compiled(const file_map& sources, const std::string& main, const std
 
 } // namespace
 
-file_map report_sources(const engine::library& lib)
+file_map report_sources(const engine::library& lib, const verify::proof_checks* z3)
 {
     const std::vector<figure> figures = figures_of(lib);
     file_map files = figure_files(figures);
-    files["report.tex"] = report::report_tex(lib.in_order(), figures, lib.outline ? &*lib.outline : nullptr);
+    files["report.tex"] = report::report_tex(lib.in_order(), figures, lib.outline ? &*lib.outline : nullptr, z3);
     return files;
 }
 

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "engine/library/library.h"
+#include "verify/proofs.h"
 
 #include <functional>
 #include <map>
@@ -31,8 +32,9 @@ struct compile_options {
     std::function<void(const std::string&)> doing;     ///< told what is being compiled, for a progress line
 };
 
-/// figures/*.dat, figures/*.tex and report.tex for the derived library.
-std::map<std::string, std::string> report_sources(const engine::library& lib);
+/// figures/*.dat, figures/*.tex and report.tex for the derived library (with `z3`, the count
+/// of proven claims Z3 confirmed in its introduction).
+std::map<std::string, std::string> report_sources(const engine::library& lib, const verify::proof_checks* z3 = nullptr);
 
 /// figures/<name>_plot.pdf for each figure (compiled side by side) and report.pdf, from
 /// `sources`: report_sources' files and the latex/<id>.tex fragments the report \input's.

@@ -1,0 +1,54 @@
+// Z3 run in this process on an SMT-LIB 2 problem (smt.h), through libz3's C API: the text
+// Z3 checks is the text written to output/proofs/, byte for byte.
+//
+// Each problem runs in a fresh context, in a child process of its own, under a resource
+// limit (`(set-option :rlimit N)`, part of the text): Z3 counts its own steps, so that an
+// answer, `unknown` past the limit included, is the same on every run and machine with the
+// same Z3. A wall-clock guard stands behind it for the few procedures that count no steps
+// (the child is killed): its answer, unknown, is kept like any other, so that a machine
+// gives the same answer on every regeneration.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace impact::verify {
+
+/// Z3's resource limit per problem (its `rlimit` steps), measured on the paper's problems:
+/// the largest Z3 confirms (rough_plane's energy_never_gained) needs 4.0 million steps (5 s
+/// on the machine of docs/design.md); the limit allows twice that.
+inline constexpr unsigned long z3_rlimit = 8'000'000;
+
+/// The longest problem given to Z3, in characters: beyond it (the rough spheres' in space,
+/// sums of hundreds of terms under roots) Z3 expands products before it counts a step, for
+/// minutes; such a problem is not run, and counts as past the resource limit.
+inline constexpr std::size_t z3_largest_problem = 85'000;
+
+/// The wall-clock guard per problem, in milliseconds: four times the longest Z3 takes on a
+/// problem it confirms within the limit.
+inline constexpr unsigned z3_guard_ms = 20'000;
+
+struct z3_answer {
+    enum class kind { confirmed, refuted, unknown, resource_limit, error };
+    kind what = kind::unknown;
+    std::string detail;        ///< refuted: Z3's model; unknown: its reason; error: its message
+    bool guarded = false;      ///< cut short by the wall-clock guard
+};
+
+/// The first line of `(set-option :rlimit N)` every problem file starts with.
+std::string rlimit_option(unsigned long rlimit = z3_rlimit);
+
+/// Runs Z3 on `problem` (declarations, assertions, one check-sat), preceded by `option`.
+z3_answer run_z3(const std::string& option, const std::string& problem);
+
+/// "4.8.12.0": the library's version, part of the key an answer is kept under.
+std::string z3_version();
+
+/// The answer as a cache entry keeps it, and read back (nothing when not one).
+std::string to_text(const z3_answer& a);
+bool from_text(const std::string& text, z3_answer& a);
+
+/// "confirmed", "refuted", "unknown (reason)", "resource limit", "error (message)".
+std::string to_string(const z3_answer& a);
+
+} // namespace impact::verify
