@@ -33,36 +33,42 @@
 
 ; check display form of v1_after_par
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 (- eps))) (* (/ 1 2) v_1par (+ 1 (- eps))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 (- eps))) (* (/ 1 2) v_1par (+ 1 (- eps))))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check display form of v2_after_par
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check display form of tau_line3
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 (declare-fun inv.1 () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
@@ -70,30 +76,38 @@
 (assert (=> (not (= v_1par 0)) (= (* inv.1 v_1par) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= v_1par 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* eps v_1par) (- v_1par)))) (+ (/ 1 2) (- (* (/ 1 2) eps))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* eps v_1par) (- v_1par)))) (+ (/ 1 2) (- (* (/ 1 2) eps))))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check display form of tau
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
+(declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (+ (/ 1 2) (- (* (/ 1 2) eps))))))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (+ (/ 1 2) (- (* (/ 1 2) eps))))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check display form of tau_line2
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
+(declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (+ (/ 1 2) (- (* (/ 1 2) eps))))))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (+ (/ 1 2) (- (* (/ 1 2) eps))))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -107,30 +121,34 @@
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* m v_1par) (+ (* (/ 1 2) m v_1par (+ 1 eps)) (* (/ 1 2) m v_1par (+ 1 (- eps)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* m v_1par) (+ (* (/ 1 2) m v_1par (+ 1 eps)) (* (/ 1 2) m v_1par (+ 1 (- eps)))))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check restitution_law_holds
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) (* eps v_1par))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) (* eps v_1par))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check object_ball_share
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 (declare-fun inv.1 () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
@@ -138,8 +156,8 @@
 (assert (=> (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)) (= (* inv.1 (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps))))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)))
-; the claim, negated
-(assert (not (= (+ (/ 1 2) (* (/ 1 2) eps)) (* v_1par (+ 1 eps) inv.1))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (/ 1 2) (* (/ 1 2) eps)) (* v_1par (+ 1 eps) inv.1))) (not (not (= m 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -161,17 +179,19 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= m 0)))
 (assert (not (= v_1par 0)))
-; the claim, negated
-(assert (not (= (+ (/ 1 2) (* (/ 1 2) eps)) (* (/ 1 2) inv.1 inv.2 (+ (* m eps v_1par) (* m v_1par))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (/ 1 2) (* (/ 1 2) eps)) (* (/ 1 2) inv.1 inv.2 (+ (* m eps v_1par) (* m v_1par))))) (not (not (= m 0))) (not (not (= v_1par 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check line_3_has_spurious_mass
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 (declare-fun inv.1 () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
@@ -179,76 +199,111 @@
 (assert (=> (not (= v_1par 0)) (= (* inv.1 v_1par) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= v_1par 0)))
-; the claim, negated
-(assert (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (- (* (/ 1 2) inv.1 (+ (* eps v_1par) (- v_1par)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (- (* (/ 1 2) inv.1 (+ (* eps v_1par) (- v_1par)))))) (not (not (= m 0))) (not (not (= v_1par 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check elastic_cue_ball_stops
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun m () Real)
+; the declared domains
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check elastic_all_transferred
 (push)
-; the claim, negated
-(assert (not (= 1 1)))
+(declare-fun m () Real)
+(declare-fun v_1par () Real)
+; the declared domains
+(assert (> m 0))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 1 1)) (not (not (= m 0))) (not (not (= v_1par 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check elastic_tau
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun m () Real)
+(declare-fun v_1par () Real)
+; the declared domains
+(assert (> m 0))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= m 0))) (not (not (= v_1par 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check perfectly_inelastic_common_velocity
 (push)
+(declare-fun m () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par) (* (/ 1 2) v_1par))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par) (* (/ 1 2) v_1par))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check perfectly_inelastic_half
 (push)
-; the claim, negated
-(assert (not (= (/ 1 2) (/ 1 2))))
+(declare-fun m () Real)
+(declare-fun v_1par () Real)
+; the declared domains
+(assert (> m 0))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (/ 1 2) (/ 1 2))) (not (not (= m 0))) (not (not (= v_1par 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim elastic_transfers_everything
 (push)
-; the claim, negated
-(assert (not (= 1 1)))
+(declare-fun m () Real)
+(declare-fun v_1par () Real)
+; the declared domains
+(assert (> m 0))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 1 1)) (not (not (= m 0))) (not (not (= v_1par 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim elastic_cue_ball_keeps_no_parallel_velocity
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun m () Real)
+; the declared domains
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim perfectly_inelastic_transfers_half
 (push)
-; the claim, negated
-(assert (not (= (/ 1 2) (/ 1 2))))
+(declare-fun m () Real)
+(declare-fun v_1par () Real)
+; the declared domains
+(assert (> m 0))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (/ 1 2) (/ 1 2))) (not (not (= m 0))) (not (not (= v_1par 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim eq12_line_1
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 (declare-fun inv.1 () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
@@ -256,159 +311,187 @@
 (assert (=> (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)) (= (* inv.1 (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps))))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)))
-; the claim, negated
-(assert (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (* v_1par (+ 1 (- eps)) inv.1))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (/ 1 2) (- (* (/ 1 2) eps))) (* v_1par (+ 1 (- eps)) inv.1))) (not (not (= m 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim sticking_requires_eps_0
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
 ; the domains the check narrows (assuming)
 (assert (< 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (> (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (> (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) 0)) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim sticking_needs_eps_0
 (push)
+(declare-fun m () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par) (* (/ 1 2) v_1par))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par) (* (/ 1 2) v_1par))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim cue_ball_velocity_from_the_incident_one
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 (- eps))) (* (/ 1 2) v_1par (+ 1 (- eps))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 (- eps))) (* (/ 1 2) v_1par (+ 1 (- eps))))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim object_ball_velocity_from_the_incident_one
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim between_two_extremes_below
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
+(declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (>= (+ (/ 1 2) (- (* (/ 1 2) eps))) 0)))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (+ (/ 1 2) (- (* (/ 1 2) eps))) 0)) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim between_two_extremes_above
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
+(declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (<= (+ (/ 1 2) (- (* (/ 1 2) eps))) (/ 1 2))))
+(assert (> v_1par 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (+ (/ 1 2) (- (* (/ 1 2) eps))) (/ 1 2))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim balls_move_apart
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (>= (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) 0)) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim two_equations_momentum
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) v_1par)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) v_1par)) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim two_equations_restitution
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) (* eps v_1par))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (- (* (/ 1 2) v_1par (+ 1 (- eps))))) (* eps v_1par))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim conclusion_cue_ball_from_the_incident_velocity
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 (- eps))) (* (/ 1 2) v_1par (+ 1 (- eps))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 (- eps))) (* (/ 1 2) v_1par (+ 1 (- eps))))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim conclusion_object_ball_from_the_incident_velocity
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim conclusion_transferred_parallel_velocity
 (push)
+(declare-fun m () Real)
 (declare-fun eps () Real)
 (declare-fun v_1par () Real)
 ; the declared domains
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (> v_1par 0))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)

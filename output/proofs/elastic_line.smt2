@@ -58,8 +58,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 m v_m) (* v_M (+ M (- m))))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 m v_m) (* v_M (+ M (- m))))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -77,8 +77,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M v_M) (- (* v_m (+ M (- m)))))) (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M v_M) (- (* v_m (+ M (- m)))))) (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -96,8 +96,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* M v_M) (* m v_m)) (+ (* M inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* m inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M v_M) (* m v_m)) (+ (* M inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* m inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -115,8 +115,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))) (+ (* (/ 1 2) M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (* (/ 1 2) m (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))) (+ (* (/ 1 2) M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (* (/ 1 2) m (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -134,24 +134,30 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (+ (- v_M) v_m))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (+ (- v_M) v_m))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check equal_masses_exchange_M
 (push)
+(declare-fun m () Real)
 (declare-fun v_m () Real)
-; the claim, negated
-(assert (not (= v_m v_m)))
+; the declared domains
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= v_m v_m)) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check equal_masses_exchange_m
 (push)
+(declare-fun m () Real)
 (declare-fun v_M () Real)
-; the claim, negated
-(assert (not (= v_M v_M)))
+; the declared domains
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= v_M v_M)) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -170,8 +176,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (+ w v_M)) (- (* m (+ w v_M))) (* 2 m (+ w v_m)))) (+ w (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (+ w v_M)) (- (* m (+ w v_M))) (* 2 m (+ w v_m)))) (+ w (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -189,8 +195,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -208,8 +214,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -227,8 +233,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -246,8 +252,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (+ v_M (- v_m)) (+ v_M (- v_m))) (* (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))) (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (+ v_M (- v_m)) (+ v_M (- v_m))) (* (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))) (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -265,8 +271,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* m (+ v_m (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))))) (- (* M (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* m (+ v_m (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))))) (- (* M (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -284,8 +290,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* m (+ (* v_m v_m) (- (* (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))) (- (* M (+ (* v_M v_M) (- (* (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* m (+ (* v_m v_m) (- (* (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))) (- (* M (+ (* v_M v_M) (- (* (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -303,8 +309,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- v_M) v_m) (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- v_M) v_m) (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -322,8 +328,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (+ v_M (- v_m)) (+ v_M (- v_m))) (* (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))) (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (+ v_M (- v_m)) (+ v_M (- v_m))) (* (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))))) (+ (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -341,8 +347,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ v_m (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (+ v_M (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ v_m (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (+ v_M (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -360,8 +366,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* M v_M) (* m v_m)) (+ (* M inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* m inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M v_M) (* m v_m)) (+ (* M inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* m inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -379,8 +385,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- v_M) v_m) (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- v_M) v_m) (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -398,7 +404,7 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))) (+ (* (/ 1 2) M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (* (/ 1 2) m (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))) (+ (* (/ 1 2) M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (* (/ 1 2) m (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)

@@ -109,8 +109,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 m inv.3 (+ (* r_x v_mx) (* r_y v_my))) (* (+ M (- m)) inv.3 (+ (* r_x v_Mx) (* r_y v_My))))) (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m r_x v_Mx)) (* 2 m r_x v_mx) (- (* m r_y v_My)) (* 2 m r_y v_my)) inv.3))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 m inv.3 (+ (* r_x v_mx) (* r_y v_my))) (* (+ M (- m)) inv.3 (+ (* r_x v_Mx) (* r_y v_My))))) (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m r_x v_Mx)) (* 2 m r_x v_mx) (- (* m r_y v_My)) (* 2 m r_y v_my)) inv.3))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -129,6 +131,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (* inv.2 (+ (* r_x v_My) (- (* r_y v_Mx)))) (* inv.2 (+ (* r_x v_My) (- (* r_y v_Mx)))))))
 (check-sat-using qfnra-nlsat)
@@ -159,8 +163,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* (+ M (- m)) inv.3 (+ (* r_x v_mx) (* r_y v_my)))))) (* inv.1 (+ (* 2 M r_x v_Mx) (- (* M r_x v_mx)) (* 2 M r_y v_My) (- (* M r_y v_my)) (* m r_x v_mx) (* m r_y v_my)) inv.3))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* (+ M (- m)) inv.3 (+ (* r_x v_mx) (* r_y v_my)))))) (* inv.1 (+ (* 2 M r_x v_Mx) (- (* M r_x v_mx)) (* 2 M r_y v_My) (- (* M r_y v_my)) (* m r_x v_mx) (* m r_y v_my)) inv.3))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -179,6 +185,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (* inv.2 (+ (* r_x v_my) (- (* r_y v_mx)))) (* inv.2 (+ (* r_x v_my) (- (* r_y v_mx)))))))
 (check-sat-using qfnra-nlsat)
@@ -205,8 +213,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* 2 m r_x inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_Mx) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* 2 m r_x inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_Mx) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -231,8 +241,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* 2 m r_y inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_My) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* 2 m r_y inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_My) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -257,8 +269,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* 2 M r_x inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_mx) (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* 2 M r_x inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_mx) (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -283,8 +297,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* 2 M r_y inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_my) (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* 2 M r_y inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_my) (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -297,6 +313,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)))
 (check-sat-using qfnra-nlsat)
@@ -304,6 +322,10 @@
 
 ; check rows_of_the_rotation_are_perpendicular
 (push)
+(declare-fun r_x () Real)
+(declare-fun r_y () Real)
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= 0 0)))
 (check-sat-using qfnra-nlsat)
@@ -318,6 +340,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)))
 (check-sat-using qfnra-nlsat)
@@ -332,6 +356,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)))
 (check-sat-using qfnra-nlsat)
@@ -339,6 +365,10 @@
 
 ; check columns_of_the_rotation_are_perpendicular
 (push)
+(declare-fun r_x () Real)
+(declare-fun r_y () Real)
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= 0 0)))
 (check-sat-using qfnra-nlsat)
@@ -353,6 +383,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)))
 (check-sat-using qfnra-nlsat)
@@ -367,6 +399,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)))
 (check-sat-using qfnra-nlsat)
@@ -385,6 +419,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.2) (* (* r_y r_y) inv.2)) root.1)))
 (check-sat-using qfnra-nlsat)
@@ -392,6 +428,10 @@
 
 ; check R_takes_r_off_the_perpendicular_axis
 (push)
+(declare-fun r_x () Real)
+(declare-fun r_y () Real)
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= 0 0)))
 (check-sat-using qfnra-nlsat)
@@ -408,6 +448,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* r_x inv.1 (+ (* r_x v_Mx) (* r_y v_My))) (- (* r_y inv.1 (+ (* r_x v_My) (- (* r_y v_Mx)))))) v_Mx)))
 (check-sat-using qfnra-nlsat)
@@ -424,6 +466,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* r_x inv.1 (+ (* r_x v_My) (- (* r_y v_Mx)))) (* r_y inv.1 (+ (* r_x v_Mx) (* r_y v_My)))) v_My)))
 (check-sat-using qfnra-nlsat)
@@ -440,6 +484,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* r_x inv.1 (+ (* r_x v_mx) (* r_y v_my))) (- (* r_y inv.1 (+ (* r_x v_my) (- (* r_y v_mx)))))) v_mx)))
 (check-sat-using qfnra-nlsat)
@@ -456,6 +502,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* r_x inv.1 (+ (* r_x v_my) (- (* r_y v_mx)))) (* r_y inv.1 (+ (* r_x v_mx) (* r_y v_my)))) v_my)))
 (check-sat-using qfnra-nlsat)
@@ -482,8 +530,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* m inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)) (+ (* M v_Mx) (* m v_mx)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* m inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)) (+ (* M v_Mx) (* m v_mx)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -508,8 +558,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (* m inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)) (+ (* M v_My) (* m v_my)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (* m inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)) (+ (* M v_My) (* m v_my)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -534,8 +586,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my))) (* inv.2 inv.2)))) (* (/ 1 2) m (+ (* (* inv.1 inv.1) (* (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my))) (* inv.2 inv.2))))) (+ (* (/ 1 2) M (+ (* v_Mx v_Mx) (* v_My v_My))) (* (/ 1 2) m (+ (* v_mx v_mx) (* v_my v_my)))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my))) (* inv.2 inv.2)))) (* (/ 1 2) m (+ (* (* inv.1 inv.1) (* (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my))) (* inv.2 inv.2))))) (+ (* (/ 1 2) M (+ (* v_Mx v_Mx) (* v_My v_My))) (* (/ 1 2) m (+ (* v_mx v_mx) (* v_my v_my)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -560,8 +614,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* r_x (+ (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (* r_y (+ (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))) (+ (- (* r_x (+ v_Mx (- v_mx)))) (- (* r_y (+ v_My (- v_my))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* r_x (+ (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (* r_y (+ (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))) (+ (- (* r_x (+ v_Mx (- v_mx)))) (- (* r_y (+ v_My (- v_my))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -586,8 +642,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -612,8 +670,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -635,8 +695,11 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= r_x 0)))
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (* inv.1 inv.1) inv.2 (+ (* M (* r_x r_x) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx))) (* inv.2 (+ (* 2 m v_mx) (* v_Mx (+ M (- m))))))))
+; the conditions the claim is promised under (where)
+(assert (not (= r_x 0)))
+(assert (> (* r_x r_x) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (* inv.1 inv.1) inv.2 (+ (* M (* r_x r_x) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx))) (* inv.2 (+ (* 2 m v_mx) (* v_Mx (+ M (- m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -658,8 +721,11 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= r_x 0)))
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (* inv.1 inv.1) inv.2 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* m (* r_x r_x) v_mx))) (* inv.2 (+ (* 2 M v_Mx) (- (* v_mx (+ M (- m)))))))))
+; the conditions the claim is promised under (where)
+(assert (not (= r_x 0)))
+(assert (> (* r_x r_x) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (* inv.1 inv.1) inv.2 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* m (* r_x r_x) v_mx))) (* inv.2 (+ (* 2 M v_Mx) (- (* v_mx (+ M (- m)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -680,8 +746,11 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= r_x 0)))
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (* inv.1 inv.1) inv.2 (+ (* M (* r_x r_x) v_My) (* m (* r_x r_x) v_My))) v_My)))
+; the conditions the claim is promised under (where)
+(assert (not (= r_x 0)))
+(assert (> (* r_x r_x) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (* inv.1 inv.1) inv.2 (+ (* M (* r_x r_x) v_My) (* m (* r_x r_x) v_My))) v_My)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -704,8 +773,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= m 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* inv.1 r_x (+ (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 r_y (+ (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)) (+ (* r_x v_mx) (* r_y v_my)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* inv.1 r_x (+ (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 r_y (+ (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)) (+ (* r_x v_mx) (* r_y v_my)))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -730,8 +801,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -756,8 +829,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -782,8 +857,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -808,8 +885,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -836,8 +915,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_Mx w_x)) (* M (* r_y r_y) (+ v_Mx w_x)) (- (* m (* r_x r_x) (+ v_Mx w_x))) (* 2 m (* r_x r_x) (+ v_mx w_x)) (- (* 2 m r_x r_y (+ v_My w_y))) (* 2 m r_x r_y (+ v_my w_y)) (* m (* r_y r_y) (+ v_Mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_Mx w_x)) (* M (* r_y r_y) (+ v_Mx w_x)) (- (* m (* r_x r_x) (+ v_Mx w_x))) (* 2 m (* r_x r_x) (+ v_mx w_x)) (- (* 2 m r_x r_y (+ v_My w_y))) (* 2 m r_x r_y (+ v_my w_y)) (* m (* r_y r_y) (+ v_Mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -864,8 +945,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_My w_y)) (* M (* r_y r_y) (+ v_My w_y)) (* m (* r_x r_x) (+ v_My w_y)) (- (* 2 m r_x r_y (+ v_Mx w_x))) (* 2 m r_x r_y (+ v_mx w_x)) (- (* m (* r_y r_y) (+ v_My w_y))) (* 2 m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_My w_y)) (* M (* r_y r_y) (+ v_My w_y)) (* m (* r_x r_x) (+ v_My w_y)) (- (* 2 m r_x r_y (+ v_Mx w_x))) (* 2 m r_x r_y (+ v_mx w_x)) (- (* m (* r_y r_y) (+ v_My w_y))) (* 2 m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -892,8 +975,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M (* r_x r_x) (+ v_Mx w_x)) (- (* M (* r_x r_x) (+ v_mx w_x))) (* 2 M r_x r_y (+ v_My w_y)) (- (* 2 M r_x r_y (+ v_my w_y))) (* M (* r_y r_y) (+ v_mx w_x)) (* m (* r_x r_x) (+ v_mx w_x)) (* m (* r_y r_y) (+ v_mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M (* r_x r_x) (+ v_Mx w_x)) (- (* M (* r_x r_x) (+ v_mx w_x))) (* 2 M r_x r_y (+ v_My w_y)) (- (* 2 M r_x r_y (+ v_my w_y))) (* M (* r_y r_y) (+ v_mx w_x)) (* m (* r_x r_x) (+ v_mx w_x)) (* m (* r_y r_y) (+ v_mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -920,8 +1005,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_my w_y)) (* 2 M r_x r_y (+ v_Mx w_x)) (- (* 2 M r_x r_y (+ v_mx w_x))) (* 2 M (* r_y r_y) (+ v_My w_y)) (- (* M (* r_y r_y) (+ v_my w_y))) (* m (* r_x r_x) (+ v_my w_y)) (* m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_my w_y)) (* 2 M r_x r_y (+ v_Mx w_x)) (- (* 2 M r_x r_y (+ v_mx w_x))) (* 2 M (* r_y r_y) (+ v_My w_y)) (- (* M (* r_y r_y) (+ v_my w_y))) (* m (* r_x r_x) (+ v_my w_y)) (* m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -951,8 +1038,11 @@
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_a) (- (* v_My rot_b)))) (* M (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_a) (- (* v_My rot_b)))) (- (* m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) (* 2 m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_mx rot_a) (- (* v_my rot_b)))) (- (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_Mx rot_b) (* v_My rot_a)))) (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_mx rot_b) (* v_my rot_a))) (* m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) inv.2) (+ (* rot_a inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.3) (- (* rot_b inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.3))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+(assert (> (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_a) (- (* v_My rot_b)))) (* M (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_a) (- (* v_My rot_b)))) (- (* m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) (* 2 m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_mx rot_a) (- (* v_my rot_b)))) (- (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_Mx rot_b) (* v_My rot_a)))) (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_mx rot_b) (* v_my rot_a))) (* m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) inv.2) (+ (* rot_a inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.3) (- (* rot_b inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.3))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -982,8 +1072,11 @@
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_b) (* v_My rot_a))) (* M (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_b) (* v_My rot_a))) (* m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_b) (* v_My rot_a))) (- (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_mx rot_a) (- (* v_my rot_b)))) (- (* m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_b) (* v_My rot_a)))) (* 2 m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_mx rot_b) (* v_my rot_a)))) inv.2) (+ (* rot_a inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.3) (* rot_b inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.3)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+(assert (> (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_b) (* v_My rot_a))) (* M (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_b) (* v_My rot_a))) (* m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_b) (* v_My rot_a))) (- (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_mx rot_a) (- (* v_my rot_b)))) (- (* m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_b) (* v_My rot_a)))) (* 2 m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_mx rot_b) (* v_my rot_a)))) inv.2) (+ (* rot_a inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.3) (* rot_b inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.3)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1008,8 +1101,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* r_x (+ v_My (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_Mx (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* r_x (+ v_My (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_Mx (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1038,8 +1133,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (+ (- (* inv.1 (+ (* 2 M r_x v_Mx) (- (* M r_x v_mx)) (* 2 M r_y v_My) (- (* M r_y v_my)) (* m r_x v_mx) (* m r_y v_my)) inv.3)) (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m r_x v_Mx)) (* 2 m r_x v_mx) (- (* m r_y v_My)) (* 2 m r_y v_my)) inv.3)) (+ (- (* inv.3 (+ (* r_x v_Mx) (* r_y v_My)))) (* inv.3 (+ (* r_x v_mx) (* r_y v_my)))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* inv.1 (+ (* 2 M r_x v_Mx) (- (* M r_x v_mx)) (* 2 M r_y v_My) (- (* M r_y v_my)) (* m r_x v_mx) (* m r_y v_my)) inv.3)) (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m r_x v_Mx)) (* 2 m r_x v_mx) (- (* m r_y v_My)) (* 2 m r_y v_my)) inv.3)) (+ (- (* inv.3 (+ (* r_x v_Mx) (* r_y v_My)))) (* inv.3 (+ (* r_x v_mx) (* r_y v_my)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1052,8 +1149,10 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)) (not (>= (+ (* r_x r_x) (* r_y r_y)) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1068,6 +1167,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= v_Mx (+ (* r_x inv.1 (+ (* r_x v_Mx) (* r_y v_My))) (- (* r_y inv.1 (+ (* r_x v_My) (- (* r_y v_Mx)))))))))
 (check-sat-using qfnra-nlsat)
@@ -1082,6 +1183,8 @@
 (assert (=> (not (= (+ (* r_x r_x) (* r_y r_y)) 0)) (= (* inv.1 (+ (* r_x r_x) (* r_y r_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.1) (* (* r_y r_y) inv.1)) 1)))
 (check-sat-using qfnra-nlsat)
@@ -1108,8 +1211,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* r_x (+ v_my (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_mx (- (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* r_x (+ v_my (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_mx (- (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1134,8 +1239,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* r_x (+ v_My (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_Mx (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* r_x (+ v_My (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_Mx (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1160,8 +1267,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1186,8 +1295,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1212,14 +1323,19 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* M (+ (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my))) (* inv.2 inv.2)))) (* m (+ (* (* inv.1 inv.1) (* (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my))) (* inv.2 inv.2))))) (+ (* M (+ (* v_Mx v_Mx) (* v_My v_My))) (* m (+ (* v_mx v_mx) (* v_my v_my)))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M (+ (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my))) (* inv.2 inv.2)))) (* m (+ (* (* inv.1 inv.1) (* (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx))) (* inv.2 inv.2)) (* (* inv.1 inv.1) (* (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my))) (* inv.2 inv.2))))) (+ (* M (+ (* v_Mx v_Mx) (* v_My v_My))) (* m (+ (* v_mx v_mx) (* v_my v_my)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim displacement_by_cosine
 (push)
 (declare-fun r_x () Real)
+(declare-fun r_y () Real)
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= r_x r_x)))
 (check-sat-using qfnra-nlsat)
@@ -1227,7 +1343,10 @@
 
 ; paper claim displacement_by_sine
 (push)
+(declare-fun r_x () Real)
 (declare-fun r_y () Real)
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= r_y r_y)))
 (check-sat-using qfnra-nlsat)
@@ -1246,6 +1365,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.2) (* (* r_y r_y) inv.2)) root.1)))
 (check-sat-using qfnra-nlsat)
@@ -1272,8 +1393,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* r_x (+ v_my (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_mx (- (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* r_x (+ v_my (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))) (* r_y (+ v_mx (- (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1302,8 +1425,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m r_x v_Mx)) (* 2 m r_x v_mx) (- (* m r_y v_My)) (* 2 m r_y v_my)) inv.3) (* inv.1 (+ (* 2 m inv.3 (+ (* r_x v_mx) (* r_y v_my))) (* (+ M (- m)) inv.3 (+ (* r_x v_Mx) (* r_y v_My))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m r_x v_Mx)) (* 2 m r_x v_mx) (- (* m r_y v_My)) (* 2 m r_y v_my)) inv.3) (* inv.1 (+ (* 2 m inv.3 (+ (* r_x v_mx) (* r_y v_my))) (* (+ M (- m)) inv.3 (+ (* r_x v_Mx) (* r_y v_My))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1322,6 +1447,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (* inv.2 (+ (* r_x v_My) (- (* r_y v_Mx)))) (* inv.2 (+ (* r_x v_My) (- (* r_y v_Mx)))))))
 (check-sat-using qfnra-nlsat)
@@ -1348,7 +1475,9 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (+ (- (* 2 m r_x inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_Mx))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (+ (- (* 2 m r_x inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_Mx))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)

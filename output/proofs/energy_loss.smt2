@@ -21,15 +21,20 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))) (not (not (= (+ M m) 0))) (not (not (= (+ (* 2 M) (* 2 m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check elastic_conserves_energy
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun M () Real)
+(declare-fun m () Real)
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -47,8 +52,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* 2 M m v_M v_m)) (* M m (* v_m v_m))))) (- (* (/ 1 2) M m inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* 2 M m v_M v_m)) (* M m (* v_m v_m))))) (- (* (/ 1 2) M m inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -69,8 +74,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) (+ 1 (- (* eps eps))) (+ (* M (* v_M v_M)) (* m (* v_m v_m)) (- (* inv.1 (* (+ (* M v_M) (* m v_m)) (+ (* M v_M) (* m v_m)))))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) (+ 1 (- (* eps eps))) (+ (* M (* v_M v_M)) (* m (* v_m v_m)) (- (* inv.1 (* (+ (* M v_M) (* m v_m)) (+ (* M v_M) (* m v_m)))))))))) (not (not (= (+ (* 2 M) (* 2 m)) 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -91,8 +96,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (<= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -114,8 +119,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* M m (* eps eps) (* (+ w v_M) (+ w v_M))) (- (* 2 M m (* eps eps) (+ w v_M) (+ w v_m))) (* M m (* eps eps) (* (+ w v_m) (+ w v_m))) (- (* M m (* (+ w v_M) (+ w v_M)))) (* 2 M m (+ w v_M) (+ w v_m)) (- (* M m (* (+ w v_m) (+ w v_m)))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* M m (* eps eps) (* (+ w v_M) (+ w v_M))) (- (* 2 M m (* eps eps) (+ w v_M) (+ w v_m))) (* M m (* eps eps) (* (+ w v_m) (+ w v_m))) (- (* M m (* (+ w v_M) (+ w v_M)))) (* 2 M m (+ w v_M) (+ w v_m)) (- (* M m (* (+ w v_m) (+ w v_m)))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -136,8 +141,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -158,15 +163,20 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (<= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim elastic_limit_is_eq1b
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun M () Real)
+(declare-fun m () Real)
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -187,22 +197,32 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (+ (- (* (/ 1 2) M (* v_M v_M))) (- (* (/ 1 2) m (* v_m v_m))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (+ (- (* (/ 1 2) M (* v_M v_M))) (- (* (/ 1 2) m (* v_m v_m))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim elastic_change_is_zero
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun M () Real)
+(declare-fun m () Real)
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim one_is_perfectly_elastic
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun M () Real)
+(declare-fun m () Real)
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -226,8 +246,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ 1 eps) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) inv.2 (+ 1 (- eps)) (+ (* M (* (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))) (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))))) (* m (* (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))) (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) inv.2 (+ 1 (- eps)) (+ (* M (* (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))) (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))))) (* m (* (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))) (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))))))))) (not (not (= (+ 1 eps) 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -251,15 +271,20 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (<= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim elastic_is_a_case_of_inelastic
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun M () Real)
+(declare-fun m () Real)
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -280,8 +305,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -302,7 +327,7 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- v_M) v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* (+ 1 eps) (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- v_M) v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* (+ 1 eps) (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)

@@ -21,8 +21,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)) (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (* (/ 1 2) m (* inv.1 inv.1) (* (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)) (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)) (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (* (/ 1 2) m (* inv.1 inv.1) (* (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)) (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -49,8 +49,8 @@
 (assert (not (= (+ M m) 0)))
 (assert (not (= M 0)))
 (assert (not (= m 0)))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) (* M M) (* m m) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (+ inv.2 inv.3) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) (* M M) (* m m) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (+ inv.2 inv.3) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -71,8 +71,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0))) (not (not (= (+ (* 2 M) (* 2 m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -93,8 +93,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -115,15 +115,20 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check elastic_conserves_energy
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun M () Real)
+(declare-fun m () Real)
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -144,8 +149,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M (* (+ (* m (+ 1 eps) inv.1 (+ v_M (- v_m))) (- v_M)) (+ (* m (+ 1 eps) inv.1 (+ v_M (- v_m))) (- v_M)))) (* (/ 1 2) m (* (+ (* M (+ 1 eps) inv.1 (+ v_M (- v_m))) v_m) (+ (* M (+ 1 eps) inv.1 (+ v_M (- v_m))) v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M (* (+ (* m (+ 1 eps) inv.1 (+ v_M (- v_m))) (- v_M)) (+ (* m (+ 1 eps) inv.1 (+ v_M (- v_m))) (- v_M)))) (* (/ 1 2) m (* (+ (* M (+ 1 eps) inv.1 (+ v_M (- v_m))) v_m) (+ (* M (+ 1 eps) inv.1 (+ v_M (- v_m))) v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -166,8 +171,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M (+ (* (* m m) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* 2 m v_M (+ 1 eps) inv.1 (+ v_M (- v_m)))) (* v_M v_M))) (* (/ 1 2) m (+ (* (* M M) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* 2 M v_m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* v_m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M (+ (* (* m m) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* 2 m v_M (+ 1 eps) inv.1 (+ v_M (- v_m)))) (* v_M v_M))) (* (/ 1 2) m (+ (* (* M M) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* 2 M v_m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* v_m v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -188,8 +193,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) (* M M) m (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* (/ 1 2) M (* m m) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m v_M (+ 1 eps) inv.1 (+ v_M (- v_m)))) (* M m v_m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) (* M M) m (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* (/ 1 2) M (* m m) (* (+ 1 eps) (+ 1 eps)) (* inv.1 inv.1) (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m v_M (+ 1 eps) inv.1 (+ v_M (- v_m)))) (* M m v_m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -208,8 +213,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= M 0)))
 (assert (not (= m 0)))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) inv.1) (* (/ 1 2) inv.2)) (* (/ 1 2) inv.1 inv.2 (+ M m)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) inv.1) (* (/ 1 2) inv.2)) (* (/ 1 2) inv.1 inv.2 (+ M m)))) (not (not (= M 0))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -230,8 +235,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -266,8 +271,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (* M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -288,8 +293,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -310,8 +315,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (* (/ 1 2) M m (* (+ 1 eps) (+ 1 eps)) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ (* 2 M) (* 2 m)) 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -343,8 +348,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) inv.1 (+ (* (* M M) (* v_M v_M)) (* M m (* v_M v_M) (* eps eps)) (* 2 M m v_M v_m) (- (* 2 M m v_M v_m (* eps eps))) (* M m (* v_m v_m) (* eps eps)) (* (* m m) (* v_m v_m)))) (+ (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (* (/ 1 2) M (* v_M v_M)) (* (/ 1 2) m (* v_m v_m))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ (* 2 M) (* 2 m)) 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -363,8 +368,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= M 0)))
 (assert (not (= m 0)))
-; the claim, negated
-(assert (not (= (+ (* (/ 1 2) inv.1) (* (/ 1 2) inv.2)) (* (/ 1 2) inv.1 inv.2 (+ M m)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* (/ 1 2) inv.1) (* (/ 1 2) inv.2)) (* (/ 1 2) inv.1 inv.2 (+ M m)))) (not (not (= M 0))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

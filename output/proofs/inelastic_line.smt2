@@ -87,8 +87,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (* m v_m) (- (* m eps (+ v_M (- v_m)))))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (* m v_m) (- (* m eps (+ v_M (- v_m)))))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -109,8 +109,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (* M eps (+ v_M (- v_m))) (* m v_m))) (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (* M eps (+ v_M (- v_m))) (* m v_m))) (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -131,8 +131,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -153,8 +153,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* M v_M) (* m v_m)) (+ (* M inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (* m inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M v_M) (* m v_m)) (+ (* M inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (* m inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -175,8 +175,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -194,8 +194,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* inv.1 (+ (* 2 m v_m) (* v_M (+ M (- m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* inv.1 (+ (* 2 m v_m) (* v_M (+ M (- m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -213,8 +213,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* v_m (+ M (- m)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* v_m (+ M (- m)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -232,8 +232,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* M (* v_M v_M)) (* m (* v_m v_m))) (+ (* M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (* m (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M (* v_M v_M)) (* m (* v_m v_m))) (+ (* M (* inv.1 inv.1) (* (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)) (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (* m (* inv.1 inv.1) (* (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)) (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -251,8 +251,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (* m v_m))) (* inv.1 (+ (* M v_M) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (* m v_m))) (* inv.1 (+ (* M v_M) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -274,8 +274,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (+ v_M w)) (- (* m eps (+ v_M w))) (* m eps (+ v_m w)) (* m (+ v_m w)))) (+ w (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (+ v_M w)) (- (* m eps (+ v_M w))) (* m eps (+ v_m w)) (* m (+ v_m w)))) (+ w (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -297,8 +297,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps (+ v_M w)) (- (* M eps (+ v_m w))) (* M (+ v_M w)) (* m (+ v_m w)))) (+ w (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps (+ v_M w)) (- (* M eps (+ v_m w))) (* M (+ v_M w)) (* m (+ v_m w)))) (+ w (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -319,8 +319,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))) (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -341,8 +341,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -363,8 +363,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -400,8 +400,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ v_M (- v_m)) 0)))
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= eps (* inv.1 (+ (* inv.2 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (- (* inv.2 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))))))))
+; the conditions the claim is promised under (where)
+(assert (not (= (+ v_M (- v_m)) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= eps (* inv.1 (+ (* inv.2 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (- (* inv.2 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -420,8 +422,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= M 0)))
 (assert (not (= m 0)))
-; the claim, negated
-(assert (not (= (+ inv.1 inv.2) (* inv.1 inv.2 (+ M m)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ inv.1 inv.2) (* inv.1 inv.2 (+ M m)))) (not (not (= M 0))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -439,8 +441,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* v_m (+ M (- m)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m))) (* inv.1 (+ (* 2 M v_M) (- (* v_m (+ M (- m)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -461,8 +463,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))) (+ (- (* m v_m)) (* m inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))) (+ (- (* m v_m)) (* m inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -483,8 +485,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* M inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (+ (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))) (* M v_M)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* M inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (+ (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))) (* M v_M)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -505,8 +507,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (+ (- (* m (+ 1 eps) inv.1 (+ v_M (- v_m)))) v_M))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (+ (- (* m (+ 1 eps) inv.1 (+ v_M (- v_m)))) v_M))) (not (not (= M 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -527,8 +529,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* M (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))))) (* m (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* M (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))))) (* m (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -549,8 +551,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (+ (- (* m (+ 1 eps) inv.1 (+ v_M (- v_m)))) v_M))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))) (+ (- (* m (+ 1 eps) inv.1 (+ v_M (- v_m)))) v_M))) (not (not (= M 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -571,8 +573,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (+ (* M (+ 1 eps) inv.1 (+ v_M (- v_m))) v_m))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (+ (* M (+ 1 eps) inv.1 (+ v_M (- v_m))) v_m))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -593,8 +595,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -612,8 +614,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (* m v_m))) (* inv.1 (+ (* M v_M) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (* m v_m))) (* inv.1 (+ (* M v_M) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -631,8 +633,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (+ (- v_M) v_m))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* inv.1 (+ (* 2 M v_M) (- (* M v_m)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m)))) (+ (- v_M) v_m))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -653,8 +655,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -675,8 +677,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m)))) (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))) (- (* eps (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -697,8 +699,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* M (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))))) (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* M (+ v_M (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))))) (- (* M m (+ 1 eps) inv.1 (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -719,8 +721,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (- (* m (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))))) (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* m (+ v_m (- (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))))))) (* M m (+ 1 eps) inv.1 (+ v_M (- v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -739,8 +741,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= M 0)))
 (assert (not (= m 0)))
-; the claim, negated
-(assert (not (< (+ (- inv.1) (- inv.2)) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (< (+ (- inv.1) (- inv.2)) 0)) (not (not (= M 0))) (not (not (= m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -758,8 +760,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* inv.1 (+ (* 2 m v_m) (* v_M (+ M (- m))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (- (* m v_M)) (* 2 m v_m))) (* inv.1 (+ (* 2 m v_m) (* v_M (+ M (- m))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -777,7 +779,7 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M v_M) (* m v_m))) (* inv.1 (+ (* M v_M) (* m v_m))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M v_M) (* m v_m))) (* inv.1 (+ (* M v_M) (* m v_m))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)

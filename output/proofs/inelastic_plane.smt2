@@ -112,8 +112,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* m eps (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my))))))) (* m inv.3 (+ (* r_x v_mx) (* r_y v_my))))) (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m eps r_x v_Mx)) (* m eps r_x v_mx) (- (* m eps r_y v_My)) (* m eps r_y v_my) (* m r_x v_mx) (* m r_y v_my)) inv.3))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* m eps (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my))))))) (* m inv.3 (+ (* r_x v_mx) (* r_y v_my))))) (* inv.1 (+ (* M r_x v_Mx) (* M r_y v_My) (- (* m eps r_x v_Mx)) (* m eps r_x v_mx) (- (* m eps r_y v_My)) (* m eps r_y v_my) (* m r_x v_mx) (* m r_y v_my)) inv.3))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -145,8 +147,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my)))))) (* M inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (* m inv.3 (+ (* r_x v_mx) (* r_y v_my))))) (* inv.1 (+ (* M eps r_x v_Mx) (- (* M eps r_x v_mx)) (* M eps r_y v_My) (- (* M eps r_y v_my)) (* M r_x v_Mx) (* M r_y v_My) (* m r_x v_mx) (* m r_y v_my)) inv.3))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my)))))) (* M inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (* m inv.3 (+ (* r_x v_mx) (* r_y v_my))))) (* inv.1 (+ (* M eps r_x v_Mx) (- (* M eps r_x v_mx)) (* M eps r_y v_My) (- (* M eps r_y v_my)) (* M r_x v_Mx) (* M r_y v_My) (* m r_x v_mx) (* m r_y v_my)) inv.3))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -174,8 +178,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* m r_x (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_Mx) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* m r_x (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_Mx) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -203,8 +209,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* m r_y (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_My) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* m r_y (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))) v_My) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -232,8 +240,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* M r_x (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_mx) (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M r_x (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_mx) (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -261,8 +271,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* M r_y (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_my) (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M r_y (+ 1 eps) inv.1 inv.2 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))) v_my) (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -290,8 +302,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* m inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)) (+ (* M v_Mx) (* m v_mx)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* m inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)) (+ (* M v_Mx) (* m v_mx)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -319,8 +333,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (* m inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)) (+ (* M v_My) (* m v_my)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (* m inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)) (+ (* M v_My) (* m v_my)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -348,8 +364,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* r_x (+ (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (- (* r_y (+ (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)))))) (- (* eps (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* r_x (+ (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (- (* r_y (+ (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)))))) (- (* eps (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -377,8 +395,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -406,8 +426,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -442,8 +464,10 @@
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (+ (- (* m r_x (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my))))))) v_Mx))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (+ (- (* m r_x (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my))))))) v_Mx))) (not (not (= M 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -478,8 +502,10 @@
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (+ (- (* m r_y (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my))))))) v_My))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (+ (- (* m r_y (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my))))))) v_My))) (not (not (= M 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -514,8 +540,10 @@
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (+ (* M r_x (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my)))))) v_mx))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (+ (* M r_x (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my)))))) v_mx))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -550,8 +578,10 @@
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (+ (* M r_y (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my)))))) v_my))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (+ (* M r_y (+ 1 eps) inv.1 inv.4 (+ (* inv.4 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.4 (+ (* r_x v_mx) (* r_y v_my)))))) v_my))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -583,8 +613,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (* M m (+ 1 eps) inv.1 root.2 (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my)))))) (* M m (+ 1 eps) inv.1 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* M m (+ 1 eps) inv.1 root.2 (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my)))))) (* M m (+ 1 eps) inv.1 (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -609,8 +641,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -635,8 +669,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -661,8 +697,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* inv.1 (+ (* 2 M (* r_x r_x) v_Mx) (- (* M (* r_x r_x) v_mx)) (* 2 M r_x r_y v_My) (- (* 2 M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -687,8 +725,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_my) (* 2 M r_x r_y v_Mx) (- (* 2 M r_x r_y v_mx)) (* 2 M (* r_y r_y) v_My) (- (* M (* r_y r_y) v_my)) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -713,8 +753,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* r_y inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)) (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* r_y inv.1 (+ (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* r_y inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)) (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* r_y inv.1 (+ (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -739,8 +781,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x (+ (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))) (* r_y (+ (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (+ (* r_x (+ v_My (- v_my))) (- (* r_y (+ v_Mx (- v_mx))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x (+ (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))) (* r_y (+ (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (+ (* r_x (+ v_My (- v_my))) (- (* r_y (+ v_Mx (- v_mx))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -768,8 +812,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -797,8 +843,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -826,8 +874,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -855,8 +905,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -886,8 +938,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_Mx w_x)) (* M (* r_y r_y) (+ v_Mx w_x)) (- (* m eps (* r_x r_x) (+ v_Mx w_x))) (* m eps (* r_x r_x) (+ v_mx w_x)) (- (* m eps r_x r_y (+ v_My w_y))) (* m eps r_x r_y (+ v_my w_y)) (* m (* r_x r_x) (+ v_mx w_x)) (- (* m r_x r_y (+ v_My w_y))) (* m r_x r_y (+ v_my w_y)) (* m (* r_y r_y) (+ v_Mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_Mx w_x)) (* M (* r_y r_y) (+ v_Mx w_x)) (- (* m eps (* r_x r_x) (+ v_Mx w_x))) (* m eps (* r_x r_x) (+ v_mx w_x)) (- (* m eps r_x r_y (+ v_My w_y))) (* m eps r_x r_y (+ v_my w_y)) (* m (* r_x r_x) (+ v_mx w_x)) (- (* m r_x r_y (+ v_My w_y))) (* m r_x r_y (+ v_my w_y)) (* m (* r_y r_y) (+ v_Mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -917,8 +971,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_My w_y)) (* M (* r_y r_y) (+ v_My w_y)) (- (* m eps r_x r_y (+ v_Mx w_x))) (* m eps r_x r_y (+ v_mx w_x)) (- (* m eps (* r_y r_y) (+ v_My w_y))) (* m eps (* r_y r_y) (+ v_my w_y)) (* m (* r_x r_x) (+ v_My w_y)) (- (* m r_x r_y (+ v_Mx w_x))) (* m r_x r_y (+ v_mx w_x)) (* m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M (* r_x r_x) (+ v_My w_y)) (* M (* r_y r_y) (+ v_My w_y)) (- (* m eps r_x r_y (+ v_Mx w_x))) (* m eps r_x r_y (+ v_mx w_x)) (- (* m eps (* r_y r_y) (+ v_My w_y))) (* m eps (* r_y r_y) (+ v_my w_y)) (* m (* r_x r_x) (+ v_My w_y)) (- (* m r_x r_y (+ v_Mx w_x))) (* m r_x r_y (+ v_mx w_x)) (* m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -948,8 +1004,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps (* r_x r_x) (+ v_Mx w_x)) (- (* M eps (* r_x r_x) (+ v_mx w_x))) (* M eps r_x r_y (+ v_My w_y)) (- (* M eps r_x r_y (+ v_my w_y))) (* M (* r_x r_x) (+ v_Mx w_x)) (* M r_x r_y (+ v_My w_y)) (- (* M r_x r_y (+ v_my w_y))) (* M (* r_y r_y) (+ v_mx w_x)) (* m (* r_x r_x) (+ v_mx w_x)) (* m (* r_y r_y) (+ v_mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps (* r_x r_x) (+ v_Mx w_x)) (- (* M eps (* r_x r_x) (+ v_mx w_x))) (* M eps r_x r_y (+ v_My w_y)) (- (* M eps r_x r_y (+ v_my w_y))) (* M (* r_x r_x) (+ v_Mx w_x)) (* M r_x r_y (+ v_My w_y)) (- (* M r_x r_y (+ v_my w_y))) (* M (* r_y r_y) (+ v_mx w_x)) (* m (* r_x r_x) (+ v_mx w_x)) (* m (* r_y r_y) (+ v_mx w_x))) inv.2) (+ w_x (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -979,8 +1037,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (* inv.1 (+ (* M eps r_x r_y (+ v_Mx w_x)) (- (* M eps r_x r_y (+ v_mx w_x))) (* M eps (* r_y r_y) (+ v_My w_y)) (- (* M eps (* r_y r_y) (+ v_my w_y))) (* M (* r_x r_x) (+ v_my w_y)) (* M r_x r_y (+ v_Mx w_x)) (- (* M r_x r_y (+ v_mx w_x))) (* M (* r_y r_y) (+ v_My w_y)) (* m (* r_x r_x) (+ v_my w_y)) (* m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 (+ (* M eps r_x r_y (+ v_Mx w_x)) (- (* M eps r_x r_y (+ v_mx w_x))) (* M eps (* r_y r_y) (+ v_My w_y)) (- (* M eps (* r_y r_y) (+ v_my w_y))) (* M (* r_x r_x) (+ v_my w_y)) (* M r_x r_y (+ v_Mx w_x)) (- (* M r_x r_y (+ v_mx w_x))) (* M (* r_y r_y) (+ v_My w_y)) (* m (* r_x r_x) (+ v_my w_y)) (* m (* r_y r_y) (+ v_my w_y))) inv.2) (+ w_y (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1024,8 +1084,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))) (+ (* r_x v_My) (- (* r_y v_Mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1053,8 +1115,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (- (* r_x (+ (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (- (* r_y (+ (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)))))) (- (* eps (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* r_x (+ (* inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m eps (* r_x r_x) v_Mx)) (* m eps (* r_x r_x) v_mx) (- (* m eps r_x r_y v_My)) (* m eps r_x r_y v_my) (* m (* r_x r_x) v_mx) (- (* m r_x r_y v_My)) (* m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.2))))) (- (* r_y (+ (* inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (- (* m eps r_x r_y v_Mx)) (* m eps r_x r_y v_mx) (- (* m eps (* r_y r_y) v_My)) (* m eps (* r_y r_y) v_my) (* m (* r_x r_x) v_My) (- (* m r_x r_y v_Mx)) (* m r_x r_y v_mx) (* m (* r_y r_y) v_my)) inv.2)))))) (- (* eps (+ (* r_x (+ v_Mx (- v_mx))) (* r_y (+ v_My (- v_my)))))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1082,8 +1146,10 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
-; the claim, negated
-(assert (not (= (+ (* r_x inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* r_x inv.1 (+ (* M eps r_x r_y v_Mx) (- (* M eps r_x r_y v_mx)) (* M eps (* r_y r_y) v_My) (- (* M eps (* r_y r_y) v_my)) (* M (* r_x r_x) v_my) (* M r_x r_y v_Mx) (- (* M r_x r_y v_mx)) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_my) (* m (* r_y r_y) v_my)) inv.2) (- (* r_y inv.1 (+ (* M eps (* r_x r_x) v_Mx) (- (* M eps (* r_x r_x) v_mx)) (* M eps r_x r_y v_My) (- (* M eps r_x r_y v_my)) (* M (* r_x r_x) v_Mx) (* M r_x r_y v_My) (- (* M r_x r_y v_my)) (* M (* r_y r_y) v_mx) (* m (* r_x r_x) v_mx) (* m (* r_y r_y) v_mx)) inv.2))) (+ (* r_x v_my) (- (* r_y v_mx))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1115,8 +1181,10 @@
 (assert (not (= (+ M m) 0)))
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (>= (* M m (+ 1 eps) inv.1 (* (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my))))) (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my))))))) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (* M m (+ 1 eps) inv.1 (* (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my))))) (+ (* inv.3 (+ (* r_x v_Mx) (* r_y v_My))) (- (* inv.3 (+ (* r_x v_mx) (* r_y v_my))))))) 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -1133,6 +1201,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* r_x r_x) inv.2) (* (* r_y r_y) inv.2)) root.1)))
 (check-sat-using qfnra-nlsat)
@@ -1140,6 +1210,10 @@
 
 ; paper claim collision_frame_has_no_component_across_the_line_of_centres
 (push)
+(declare-fun r_x () Real)
+(declare-fun r_y () Real)
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim, negated
 (assert (not (= 0 0)))
 (check-sat-using qfnra-nlsat)
@@ -1147,7 +1221,16 @@
 
 ; paper claim the_impulse_exerts_no_torque_on_M
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun M () Real)
+(declare-fun m () Real)
+(declare-fun r_x () Real)
+(declare-fun r_y () Real)
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)

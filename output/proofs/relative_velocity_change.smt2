@@ -27,21 +27,25 @@
 (assert (not (= (+ M m) 0)))
 (assert (not (= M 0)))
 (assert (not (= m 0)))
-; the claim, negated
-(assert (not (= (- (* M m (+ 1 eps) inv.1 (+ inv.2 inv.3) (+ v_M (- v_m)))) (- (* (+ 1 eps) (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* M m (+ 1 eps) inv.1 (+ inv.2 inv.3) (+ v_M (- v_m)))) (- (* (+ 1 eps) (+ v_M (- v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check display form of Delta_eps
 (push)
+(declare-fun M () Real)
+(declare-fun m () Real)
 (declare-fun v_M () Real)
 (declare-fun v_m () Real)
 (declare-fun eps () Real)
 ; the declared domains
+(assert (> M 0))
+(assert (> m 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (= (- (* (+ 1 eps) (+ v_M (- v_m)))) (- (* (+ 1 eps) (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (+ 1 eps) (+ v_M (- v_m)))) (- (* (+ 1 eps) (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -68,26 +72,36 @@
 (assert (not (= (+ M m) 0)))
 (assert (not (= M 0)))
 (assert (not (= m 0)))
-; the claim, negated
-(assert (not (= (- (* (+ 1 eps) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (+ inv.2 inv.3) (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* (+ 1 eps) (+ v_M (- v_m)))) (- (* M m (+ 1 eps) inv.1 (+ inv.2 inv.3) (+ v_M (- v_m)))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check elastic_reverses
 (push)
+(declare-fun M () Real)
+(declare-fun m () Real)
 (declare-fun v_M () Real)
 (declare-fun v_m () Real)
-; the claim, negated
-(assert (not (= (+ (- (* 2 v_M)) (* 2 v_m)) (+ (- (* 2 v_M)) (* 2 v_m)))))
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* 2 v_M)) (* 2 v_m)) (+ (- (* 2 v_M)) (* 2 v_m)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; check perfectly_inelastic_cancels
 (push)
+(declare-fun M () Real)
+(declare-fun m () Real)
 (declare-fun v_M () Real)
 (declare-fun v_m () Real)
-; the claim, negated
-(assert (not (= (+ (- v_M) v_m) (+ (- v_M) v_m))))
+; the declared domains
+(assert (> M 0))
+(assert (> m 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- v_M) v_m) (+ (- v_M) v_m))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -108,7 +122,7 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (* (+ (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))) (+ (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))))) (* (* eps eps) (* (+ v_M (- v_m)) (+ v_M (- v_m)))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (+ (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps))))) (+ (* inv.1 (+ (* M v_M) (* M v_M eps) (- (* M v_m eps)) (* m v_m))) (- (* inv.1 (+ (* M v_M) (- (* m v_M eps)) (* m v_m) (* m v_m eps)))))) (* (* eps eps) (* (+ v_M (- v_m)) (+ v_M (- v_m)))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)

@@ -120,8 +120,8 @@
 (assert (=> (not (= (+ M m) 0)) (= (* inv.1 (+ M m)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
-; the claim, negated
-(assert (not (= (+ (* M inv.1 (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn))) (* m inv.1 (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))) (+ (* M v_Mn) (- (* m (+ g_n (- v_Mn))))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M inv.1 (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn))) (* m inv.1 (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))) (+ (* M v_Mn) (- (* m (+ g_n (- v_Mn))))))) (not (not (= M 0))) (not (not (= m 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -140,8 +140,8 @@
 (assert (> m 0))
 (assert (> R_M 0))
 (assert (> R_m 0))
-; the claim, negated
-(assert (not (= (+ (* M v_Mt) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M v_Mt) (* m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* M v_Mt) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M v_Mt) (* m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))) (not (not (= m 0))) (not (not (= M 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -201,8 +201,8 @@
 (assert (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (= (+ (- (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt)))) (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt)))) (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))) (not (not (= m 0))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= q_M 0))) (not (not (= R_m 0))) (not (not (= q_m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -262,8 +262,8 @@
 (assert (not (= (ite (>= g_t 0) g_t (- g_t)) 0)))
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (= (+ (- (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt)))) (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt)))) (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))) (not (not (= m 0))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= q_M 0))) (not (not (= R_m 0))) (not (not (= q_m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -324,8 +324,8 @@
 (assert (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))) (not (not (= m 0))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= q_M 0))) (not (not (= R_m 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ M m) 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -386,8 +386,8 @@
 (assert (not (= (ite (>= g_t 0) g_t (- g_t)) 0)))
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))) (not (not (= m 0))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= q_M 0))) (not (not (= R_m 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ M m) 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -440,8 +440,8 @@
 (assert (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (<= (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)) (not (not (= M 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ M m) 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -494,8 +494,8 @@
 (assert (not (= (ite (>= g_t 0) g_t (- g_t)) 0)))
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (<= (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)) (not (not (= M 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ M m) 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -548,8 +548,8 @@
 (assert (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (<= (ite (>= (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) 0) (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m inv.7 (+ (* b g_t) g_t)))) (* M m mu g_n (+ 1 eps) inv.6))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (ite (>= (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) 0) (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m inv.7 (+ (* b g_t) g_t)))) (* M m mu g_n (+ 1 eps) inv.6))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -602,8 +602,8 @@
 (assert (not (= (ite (>= g_t 0) g_t (- g_t)) 0)))
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (<= (ite (>= (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) 0) (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7))) (* M m mu g_n (+ 1 eps) inv.6))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (ite (>= (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) 0) (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7))) (* M m mu g_n (+ 1 eps) inv.6))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -611,6 +611,8 @@
 (push)
 (declare-fun M () Real)
 (declare-fun m () Real)
+(declare-fun R_M () Real)
+(declare-fun R_m () Real)
 (declare-fun q_M () Real)
 (declare-fun q_m () Real)
 (declare-fun eps () Real)
@@ -628,6 +630,8 @@
 ; the declared domains
 (assert (> M 0))
 (assert (> m 0))
+(assert (> R_M 0))
+(assert (> R_m 0))
 (assert (< 0 q_M))
 (assert (<= q_M (/ 2 3)))
 (assert (< 0 q_m))
@@ -656,8 +660,8 @@
 (assert (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))))) 0)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -665,6 +669,8 @@
 (push)
 (declare-fun M () Real)
 (declare-fun m () Real)
+(declare-fun R_M () Real)
+(declare-fun R_m () Real)
 (declare-fun q_M () Real)
 (declare-fun q_m () Real)
 (declare-fun eps () Real)
@@ -682,6 +688,8 @@
 ; the declared domains
 (assert (> M 0))
 (assert (> m 0))
+(assert (> R_M 0))
+(assert (> R_m 0))
 (assert (< 0 q_M))
 (assert (<= q_M (/ 2 3)))
 (assert (< 0 q_m))
@@ -710,8 +718,8 @@
 (assert (not (= (ite (>= g_t 0) g_t (- g_t)) 0)))
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))))) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))))) 0)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -719,6 +727,8 @@
 (push)
 (declare-fun M () Real)
 (declare-fun m () Real)
+(declare-fun R_M () Real)
+(declare-fun R_m () Real)
 (declare-fun q_M () Real)
 (declare-fun q_m () Real)
 (declare-fun eps () Real)
@@ -736,6 +746,8 @@
 ; the declared domains
 (assert (> M 0))
 (assert (> m 0))
+(assert (> R_M 0))
+(assert (> R_m 0))
 (assert (< 0 q_M))
 (assert (<= q_M (/ 2 3)))
 (assert (< 0 q_m))
@@ -764,8 +776,8 @@
 (assert (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))) (- (* b g_t)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))) (- (* b g_t)))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -773,6 +785,8 @@
 (push)
 (declare-fun M () Real)
 (declare-fun m () Real)
+(declare-fun R_M () Real)
+(declare-fun R_m () Real)
 (declare-fun q_M () Real)
 (declare-fun q_m () Real)
 (declare-fun eps () Real)
@@ -790,6 +804,8 @@
 ; the declared domains
 (assert (> M 0))
 (assert (> m 0))
+(assert (> R_M 0))
+(assert (> R_m 0))
 (assert (< 0 q_M))
 (assert (<= q_M (/ 2 3)))
 (assert (< 0 q_m))
@@ -818,8 +834,8 @@
 (assert (not (= (ite (>= g_t 0) g_t (- g_t)) 0)))
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
-; the claim, negated
-(assert (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))) (- (* inv.3 inv.4 g_t inv.6 (+ (* M q_M q_m eps mu g_n) (* M q_M q_m mu g_n) (- (* M q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* M q_M eps mu g_n) (* M q_M mu g_n) (* m q_M q_m eps mu g_n) (* m q_M q_m mu g_n) (- (* m q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* m q_m eps mu g_n) (* m q_m mu g_n)) inv.7)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))) (- (* inv.3 inv.4 g_t inv.6 (+ (* M q_M q_m eps mu g_n) (* M q_M q_m mu g_n) (- (* M q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* M q_M eps mu g_n) (* M q_M mu g_n) (* m q_M q_m eps mu g_n) (* m q_M q_m mu g_n) (- (* m q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* m q_m eps mu g_n) (* m q_m mu g_n)) inv.7)))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -868,6 +884,8 @@
 (push)
 (declare-fun M () Real)
 (declare-fun m () Real)
+(declare-fun R_M () Real)
+(declare-fun q_M () Real)
 (declare-fun eps () Real)
 (declare-fun mu () Real)
 (declare-fun g_n () Real)
@@ -876,6 +894,9 @@
 ; the declared domains
 (assert (> M 0))
 (assert (> m 0))
+(assert (> R_M 0))
+(assert (< 0 q_M))
+(assert (<= q_M (/ 2 3)))
 (assert (<= 0 eps))
 (assert (<= eps 1))
 (assert (>= mu 0))
@@ -886,8 +907,8 @@
 (assert (not (= (+ M m) 0)))
 ; the case's condition
 (assert (<= 0 (* M m mu g_n (+ 1 eps) inv.1)))
-; the claim, negated
-(assert (not (= w_M w_M)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= w_M w_M)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= q_M 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -931,8 +952,8 @@
 (assert (not (= (ite (>= g_t 0) g_t (- g_t)) 0)))
 ; the case's condition
 (assert (> 0 (* M m mu g_n (+ 1 eps) inv.1)))
-; the claim, negated
-(assert (not (= (- (* inv.2 inv.3 inv.4 (+ (* M m mu g_n g_t (+ 1 eps) inv.1 inv.5) (- (* M R_M q_M w_M))))) w_M)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (- (* inv.2 inv.3 inv.4 (+ (* M m mu g_n g_t (+ 1 eps) inv.1 inv.5) (- (* M R_M q_M w_M))))) w_M)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= q_M 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

@@ -247,6 +247,8 @@
 (assert (>= (+ (* N_x N_x) (* N_y N_y)) 0))
 (assert (not (= n_norm 0)))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (* m g_n (+ 1 eps)) (- (* m (+ 1 eps) inv.3 (+ (* N_x v_x) (* N_y v_y)))))))
 (check-sat-using qfnra-nlsat)
@@ -297,8 +299,10 @@
 (assert (not (= n_norm 0)))
 (assert (not (= (+ 1 q) 0)))
 (assert (not (= root.1 0)))
-; the claim, negated
-(assert (not (= (* g_t m_t (+ 1 b)) (* m q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* g_t m_t (+ 1 b)) (* m q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4))) (not (not (= (+ 1 q) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -347,8 +351,10 @@
 (assert (not (= (+ 1 q) 0)))
 (assert (>= (+ (* N_x N_x) (* N_y N_y)) 0))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (+ (* m q inv.1 (+ 1 b) inv.3 (ite (>= (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x))))) (* m mu (+ 1 eps) inv.3 (+ (* N_x v_x) (* N_y v_y)))) (* m inv.1 (+ (* q (+ 1 b) (ite (>= (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x))))) (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y)))) inv.3))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* m q inv.1 (+ 1 b) inv.3 (ite (>= (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x))))) (* m mu (+ 1 eps) inv.3 (+ (* N_x v_x) (* N_y v_y)))) (* m inv.1 (+ (* q (+ 1 b) (ite (>= (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.2) (- (* N_x v_y)) (* N_y v_x))))) (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y)))) inv.3))) (not (not (= (+ 1 q) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -391,6 +397,8 @@
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 ; the case's condition
 (assert (<= (* q (+ 1 b) (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x))))) (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ (* q N_y inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.3)) (* N_y (+ (* q N_x inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (- (* eps N_x N_y v_x)) (- (* eps (* N_y N_y) v_y)) (* (* N_x N_x) v_y) (- (* N_x N_y v_x))) inv.3)) (- (* eps (+ (* N_x v_x) (* N_y v_y)))))))
 (check-sat-using qfnra-nlsat)
@@ -435,6 +443,8 @@
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 ; the case's condition
 (assert (> (* q (+ 1 b) (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x))))) (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.2)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.3)) (- (* N_y (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* mu N_x (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.2) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) inv.3))) (- (* eps (+ (* N_x v_x) (* N_y v_y)))))))
 (check-sat-using qfnra-nlsat)
@@ -484,8 +494,10 @@
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 ; the case's condition
 (assert (<= (* q (+ 1 b) (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x))))) (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
-; the claim, negated
-(assert (not (= (+ (* m R (+ (* R q w) (- (* q inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.3)))) (* m R inv.3 (+ (* N_x (+ (* q N_x inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (- (* eps N_x N_y v_x)) (- (* eps (* N_y N_y) v_y)) (* (* N_x N_x) v_y) (- (* N_x N_y v_x))) inv.4) (* N_y (+ (* q N_y inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.4)))) (+ (* m (* R R) q w) (* m R inv.3 (+ (* N_x v_y) (- (* N_y v_x))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* m R (+ (* R q w) (- (* q inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.3)))) (* m R inv.3 (+ (* N_x (+ (* q N_x inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (- (* eps N_x N_y v_x)) (- (* eps (* N_y N_y) v_y)) (* (* N_x N_x) v_y) (- (* N_x N_y v_x))) inv.4) (* N_y (+ (* q N_y inv.2 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.4)))) (+ (* m (* R R) q w) (* m R inv.3 (+ (* N_x v_y) (- (* N_y v_x))))))) (not (not (= R 0))) (not (not (= q 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -533,8 +545,10 @@
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 ; the case's condition
 (assert (> (* q (+ 1 b) (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x))))) (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
-; the claim, negated
-(assert (not (= (+ (* m R (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.2 (+ (* N_x v_x) (* N_y v_y)) inv.3))) (- (* m R inv.2 (+ (* N_x (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* mu N_x (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.3) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) inv.4) (- (* N_y (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.3)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.4)))))) (+ (* m (* R R) q w) (* m R inv.2 (+ (* N_x v_y) (- (* N_y v_x))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (* m R (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.2 (+ (* N_x v_x) (* N_y v_y)) inv.3))) (- (* m R inv.2 (+ (* N_x (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* mu N_x (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.3) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) inv.4) (- (* N_y (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.3)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.4)))))) (+ (* m (* R R) q w) (* m R inv.2 (+ (* N_x v_y) (- (* N_y v_x))))))) (not (not (= R 0))) (not (not (= q 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -585,8 +599,10 @@
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 ; the case's condition
 (assert (<= (* q (+ 1 b) (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x))))) (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
-; the claim, negated
-(assert (not (= (+ (- (* (/ 1 2) m (* R R) q (* w w))) (* (/ 1 2) m inv.2 (* (+ (* R q w) (- (* q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4))) (+ (* R q w) (- (* q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4))))) (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y)))) (* (/ 1 2) m (+ (* (* (+ (* q N_x inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (- (* eps N_x N_y v_x)) (- (* eps (* N_y N_y) v_y)) (* (* N_x N_x) v_y) (- (* N_x N_y v_x))) (+ (* q N_x inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (- (* eps N_x N_y v_x)) (- (* eps (* N_y N_y) v_y)) (* (* N_x N_x) v_y) (- (* N_x N_y v_x)))) (* inv.5 inv.5)) (* (* (+ (* q N_y inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) (+ (* q N_y inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x)))) (* inv.5 inv.5))))) (+ (- (* (/ 1 2) m q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) (+ (* 2 R w) (- (* (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4)) (- (* 2 inv.4 (+ (* N_x v_y) (- (* N_y v_x)))))) inv.4)) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.5 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* (/ 1 2) m (* R R) q (* w w))) (* (/ 1 2) m inv.2 (* (+ (* R q w) (- (* q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4))) (+ (* R q w) (- (* q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4))))) (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y)))) (* (/ 1 2) m (+ (* (* (+ (* q N_x inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (- (* eps N_x N_y v_x)) (- (* eps (* N_y N_y) v_y)) (* (* N_x N_x) v_y) (- (* N_x N_y v_x))) (+ (* q N_x inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (- (* eps N_x N_y v_x)) (- (* eps (* N_y N_y) v_y)) (* (* N_x N_x) v_y) (- (* N_x N_y v_x)))) (* inv.5 inv.5)) (* (* (+ (* q N_y inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) (+ (* q N_y inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x))) (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x)))) (* inv.5 inv.5))))) (+ (- (* (/ 1 2) m q inv.3 (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) (+ (* 2 R w) (- (* (+ (* R b w root.1) (* R w root.1) (- (* b N_x v_y)) (* b N_y v_x) (- (* N_x v_y)) (* N_y v_x)) inv.4)) (- (* 2 inv.4 (+ (* N_x v_y) (- (* N_y v_x)))))) inv.4)) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.5 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))))))) (not (not (= m 0))) (not (not (= q 0))) (not (not (= inv.3 0))) (not (not (= (+ 1 q) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -609,6 +625,7 @@
 (declare-fun inv.3 () Real)
 (declare-fun inv.4 () Real)
 (declare-fun inv.5 () Real)
+(declare-fun inv.6 () Real)
 ; the declared domains
 (assert (> m 0))
 (assert (> R 0))
@@ -629,16 +646,20 @@
 (assert (=> (not (= root.1 0)) (= (* inv.3 root.1) 1)))
 (assert (=> (not (= (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)))) 0)) (= (* inv.4 (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x))))) 1)))
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.5 (+ (* N_x N_x) (* N_y N_y))) 1)))
+(assert (=> (not (= (+ 1 q) 0)) (= (* inv.6 (+ 1 q)) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* N_x N_x) (* N_y N_y)) 0))
 (assert (not (= q 0)))
 (assert (not (= root.1 0)))
 (assert (not (= (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)))) 0)))
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+(assert (not (= (+ 1 q) 0)))
 ; the case's condition
 (assert (> (* q (+ 1 b) (ite (>= (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x))))) (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
-; the claim, negated
-(assert (not (= (+ (- (* (/ 1 2) m (* R R) q (* w w))) (* (/ 1 2) m inv.2 (* (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4)) (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4)))) (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y)))) (* (/ 1 2) m (+ (* (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x)))) (* inv.5 inv.5)) (* (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* mu N_x (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* mu N_x (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x))) (* inv.5 inv.5))))) (+ (* (/ 1 2) m mu (+ 1 eps) (+ (* 2 R w) (* inv.2 mu (+ 1 q) (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* 2 inv.3 (+ (* N_x v_y) (- (* N_y v_x)))))) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.5 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* (/ 1 2) m (* R R) q (* w w))) (* (/ 1 2) m inv.2 (* (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4)) (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4)))) (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y)))) (* (/ 1 2) m (+ (* (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x)))) (* inv.5 inv.5)) (* (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* mu N_x (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* mu N_x (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x))) (* inv.5 inv.5))))) (+ (* (/ 1 2) m mu (+ 1 eps) (+ (* 2 R w) (* inv.2 mu (+ 1 q) (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* 2 inv.3 (+ (* N_x v_y) (- (* N_y v_x)))))) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) inv.3 (+ (* N_x v_x) (* N_y v_y)) inv.4) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.5 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))))))) (not (not (= m 0))) (not (not (= q 0))) (not (not (= inv.6 0))) (not (not (= (+ 1 q) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -682,8 +703,10 @@
 (assert (>= (+ (* N_x N_x) (* N_y N_y)) 0))
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 (assert (not (= root.2 0)))
-; the claim, negated
-(assert (not (= (+ (- (* (/ 1 2) m (* R R) q (* w w))) (* (/ 1 2) m q (* inv.1 inv.1) (* (+ (* R q w root.2) (- (* R b w root.2)) (* b N_x v_y) (- (* b N_y v_x)) (* N_x v_y) (- (* N_y v_x))) (+ (* R q w root.2) (- (* R b w root.2)) (* b N_x v_y) (- (* b N_y v_x)) (* N_x v_y) (- (* N_y v_x)))) inv.3) (* (/ 1 2) m (+ (* (* eps eps) inv.3 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))) (* (* inv.1 inv.1) (* (+ (* R q b w root.2) (* R q w root.2) (- (* q b N_x v_y)) (* q b N_y v_x) (* N_x v_y) (- (* N_y v_x))) (+ (* R q b w root.2) (* R q w root.2) (- (* q b N_x v_y)) (* q b N_y v_x) (* N_x v_y) (- (* N_y v_x)))) inv.3))) (- (* (/ 1 2) m (+ (* inv.3 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))) (* inv.3 (* (+ (* N_x v_y) (- (* N_y v_x))) (+ (* N_x v_y) (- (* N_y v_x))))))))) (+ (- (* (/ 1 2) m q inv.1 (+ 1 (- (* b b))) (* (+ (* R w) (- (* inv.4 (+ (* N_x v_y) (- (* N_y v_x)))))) (+ (* R w) (- (* inv.4 (+ (* N_x v_y) (- (* N_y v_x))))))))) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.3 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (+ (- (* (/ 1 2) m (* R R) q (* w w))) (* (/ 1 2) m q (* inv.1 inv.1) (* (+ (* R q w root.2) (- (* R b w root.2)) (* b N_x v_y) (- (* b N_y v_x)) (* N_x v_y) (- (* N_y v_x))) (+ (* R q w root.2) (- (* R b w root.2)) (* b N_x v_y) (- (* b N_y v_x)) (* N_x v_y) (- (* N_y v_x)))) inv.3) (* (/ 1 2) m (+ (* (* eps eps) inv.3 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))) (* (* inv.1 inv.1) (* (+ (* R q b w root.2) (* R q w root.2) (- (* q b N_x v_y)) (* q b N_y v_x) (* N_x v_y) (- (* N_y v_x))) (+ (* R q b w root.2) (* R q w root.2) (- (* q b N_x v_y)) (* q b N_y v_x) (* N_x v_y) (- (* N_y v_x)))) inv.3))) (- (* (/ 1 2) m (+ (* inv.3 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))) (* inv.3 (* (+ (* N_x v_y) (- (* N_y v_x))) (+ (* N_x v_y) (- (* N_y v_x))))))))) (+ (- (* (/ 1 2) m q inv.1 (+ 1 (- (* b b))) (* (+ (* R w) (- (* inv.4 (+ (* N_x v_y) (- (* N_y v_x)))))) (+ (* R w) (- (* inv.4 (+ (* N_x v_y) (- (* N_y v_x))))))))) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.3 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y)))))))) (not (not (= R 0))) (not (not (= (+ 1 q) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -713,6 +736,8 @@
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 ; the case's condition
 (assert (<= 0 (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (- (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.1)) (+ (- (* N_x (+ 1 eps) inv.1 (+ (* N_x v_x) (* N_y v_y)))) v_x))))
 (check-sat-using qfnra-nlsat)
@@ -754,6 +779,8 @@
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
 ; the case's condition
 (assert (> 0 (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (- (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (- (* mu N_y (+ 1 eps) (+ (* R w root.1) (- (* N_x v_y)) (* N_y v_x)) (+ (* N_x v_x) (* N_y v_y)) inv.2)) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.3)) (+ (- (* N_x (+ 1 eps) inv.3 (+ (* N_x v_x) (* N_y v_y)))) v_x))))
 (check-sat-using qfnra-nlsat)
@@ -761,6 +788,7 @@
 
 ; check smooth_wall_spin_unchanged, case 1 (j_t = 0, where 0 <= -mu*(1+q)*(1+eps)*(N_x*v_x+N_y*v_y))
 (push)
+(declare-fun R () Real)
 (declare-fun q () Real)
 (declare-fun eps () Real)
 (declare-fun mu () Real)
@@ -771,6 +799,7 @@
 (declare-fun w () Real)
 (declare-fun s_n () Real)
 ; the declared domains
+(assert (> R 0))
 (assert (< 0 q))
 (assert (<= q (/ 2 3)))
 (assert (<= 0 eps))
@@ -781,8 +810,8 @@
 (assert (= s_n (+ (- (* N_x v_x)) (- (* N_y v_y)))))
 ; the case's condition
 (assert (<= 0 (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
-; the claim, negated
-(assert (not (= w w)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= w w)) (not (not (= R 0))) (not (not (= q 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -828,8 +857,8 @@
 (assert (not (= (ite (>= (+ (* R w root.3) (- (* N_x v_y)) (* N_y v_x)) 0) (+ (* R w root.3) (- (* N_x v_y)) (* N_y v_x)) (- (+ (* R w root.3) (- (* N_x v_y)) (* N_y v_x)))) 0)))
 ; the case's condition
 (assert (> 0 (- (* mu (+ 1 q) (+ 1 eps) (+ (* N_x v_x) (* N_y v_y))))))
-; the claim, negated
-(assert (not (= (* inv.1 inv.2 (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.3) (- (* N_x v_y)) (* N_y v_x)) inv.4 (+ (* N_x v_x) (* N_y v_y)) inv.5))) w)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.1 inv.2 (+ (* R q w) (* mu (+ 1 eps) (+ (* R w root.3) (- (* N_x v_y)) (* N_y v_x)) inv.4 (+ (* N_x v_x) (* N_y v_y)) inv.5))) w)) (not (not (= R 0))) (not (not (= q 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

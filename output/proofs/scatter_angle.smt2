@@ -30,8 +30,8 @@
 (assert (not (= root.1 0)))
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -61,8 +61,8 @@
 (assert (not (= root.1 0)))
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -92,8 +92,8 @@
 (assert (not (= root.1 0)))
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -123,8 +123,8 @@
 (assert (not (= root.1 0)))
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -147,8 +147,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.1 0)))
-; the claim, negated
-(assert (not (>= (* v_1par (+ 1 (- eps)) inv.2) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (* v_1par (+ 1 (- eps)) inv.2) 0)) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -171,8 +171,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.1 0)))
-; the claim, negated
-(assert (not (<= (* v_1par (+ 1 (- eps)) inv.2) 1)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (* v_1par (+ 1 (- eps)) inv.2) 1)) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -198,8 +198,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* v_1par v_1par) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.1 0)))
-; the claim, negated
-(assert (not (= (* v_1par inv.2) (* v_1par inv.2))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* v_1par inv.2) (* v_1par inv.2))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* v_1par v_1par) 0)) (not (>= (+ (* v_1par v_1par) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par)) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par)) (* v_1perp v_1perp)) 0)) (not (not (= (+ (* v_1par v_1par) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -224,8 +224,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.1 0)))
-; the claim, negated
-(assert (not (>= (* v_1par (+ 1 (- eps)) inv.2) 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (* v_1par (+ 1 (- eps)) inv.2) 0)) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -252,28 +252,35 @@
 (assert (> v_1par 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 eps)))) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim right_angle_is_a_special_case
 (push)
-; the claim, negated
-(assert (not (= 0 0)))
+(declare-fun v_1par () Real)
+(declare-fun v_1perp () Real)
+; the declared domains
+(assert (> v_1par 0))
+(assert (> v_1perp 0))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= 0 0)) (not (not (= v_1par 0))) (not (not (= v_1perp 0))) (not (> (* 4 (* v_1perp v_1perp)) 0)) (not (>= (* 4 (* v_1par v_1par)) 0)) (not (>= (* 4 (* v_1perp v_1perp)) 0)) (not (>= (* v_1par v_1par) 0)) (not (>= (* v_1perp v_1perp) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim eq13_dot_product
 (push)
 (declare-fun v_1par () Real)
+(declare-fun v_1perp () Real)
 (declare-fun eps () Real)
 ; the declared domains
 (assert (> v_1par 0))
+(assert (> v_1perp 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (= (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))) (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))) (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -296,8 +303,8 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.1 0)))
-; the claim, negated
-(assert (not (<= (* v_1par (+ 1 (- eps)) inv.2) 1)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (<= (* v_1par (+ 1 (- eps)) inv.2) 1)) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -309,6 +316,10 @@
 (declare-fun dv_perp () Real)
 (declare-fun inv.1 () Real)
 (declare-fun inv.2 () Real)
+(declare-fun root.3 () Real)
+(declare-fun inv.4 () Real)
+(declare-fun root.5 () Real)
+(declare-fun inv.6 () Real)
 ; the declared domains
 (assert (> v_1par 0))
 (assert (> v_1perp 0))
@@ -321,24 +332,36 @@
 ; reciprocals and roots
 (assert (=> (not (= v_1par 0)) (= (* inv.1 v_1par) 1)))
 (assert (=> (not (= (+ 1 (- eps)) 0)) (= (* inv.2 (+ 1 (- eps))) 1)))
+(assert (>= root.3 0))
+(assert (=> (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0) (= (* root.3 root.3) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))))))
+(assert (=> (not (= root.3 0)) (= (* inv.4 root.3) 1)))
+(assert (>= root.5 0))
+(assert (=> (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp)))) 0) (= (* root.5 root.5) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp)))))))
+(assert (=> (not (= root.5 0)) (= (* inv.6 root.5) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= v_1par 0)))
 (assert (not (= (+ 1 (- eps)) 0)))
-; the claim, negated
-(assert (not (>= (* (* inv.1 inv.1) (* inv.2 inv.2) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp))))) (* (* inv.1 inv.1) (* inv.2 inv.2) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp)))))))
+(assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
+(assert (not (= root.3 0)))
+(assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp)))) 0))
+(assert (not (= root.5 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (>= (* (* inv.1 inv.1) (* inv.2 inv.2) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp))))) (* (* inv.1 inv.1) (* inv.2 inv.2) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp)))))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp)))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* (+ v_1perp dv_perp) (+ v_1perp dv_perp))) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp)))) 0)) (not (not (= inv.4 0))) (not (not (= (+ eps (- 1)) 0))) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))) (not (not (= inv.6 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* (+ v_1perp dv_perp) (+ v_1perp dv_perp)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
 ; paper claim angle_from_the_dot_product
 (push)
 (declare-fun v_1par () Real)
+(declare-fun v_1perp () Real)
 (declare-fun eps () Real)
 ; the declared domains
 (assert (> v_1par 0))
+(assert (> v_1perp 0))
 (assert (<= 0 eps))
 (assert (<= eps 1))
-; the claim, negated
-(assert (not (= (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))) (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))) (* (/ 1 4) (* v_1par v_1par) (+ 1 eps) (+ 1 (- eps))))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -351,6 +374,10 @@
 (declare-fun inv.1 () Real)
 (declare-fun inv.2 () Real)
 (declare-fun inv.3 () Real)
+(declare-fun root.4 () Real)
+(declare-fun inv.5 () Real)
+(declare-fun root.6 () Real)
+(declare-fun inv.7 () Real)
 ; the declared domains
 (assert (> v_1par 0))
 (assert (> v_1perp 0))
@@ -364,12 +391,22 @@
 (assert (=> (not (= v_1par 0)) (= (* inv.1 v_1par) 1)))
 (assert (=> (not (= k 0)) (= (* inv.2 k) 1)))
 (assert (=> (not (= (+ 1 (- eps)) 0)) (= (* inv.3 (+ 1 (- eps))) 1)))
+(assert (>= root.4 0))
+(assert (=> (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0) (= (* root.4 root.4) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))))))
+(assert (=> (not (= root.4 0)) (= (* inv.5 root.4) 1)))
+(assert (>= root.6 0))
+(assert (=> (>= (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k))) 0) (= (* root.6 root.6) (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k))))))
+(assert (=> (not (= root.6 0)) (= (* inv.7 root.6) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= v_1par 0)))
 (assert (not (= k 0)))
 (assert (not (= (+ 1 (- eps)) 0)))
-; the claim, negated
-(assert (not (= (* (* inv.1 inv.1) (* inv.2 inv.2) (* inv.3 inv.3) (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k)))) (* (* inv.1 inv.1) (* inv.3 inv.3) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp)))))))
+(assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
+(assert (not (= root.4 0)))
+(assert (>= (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k))) 0))
+(assert (not (= root.6 0)))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* (* inv.1 inv.1) (* inv.2 inv.2) (* inv.3 inv.3) (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k)))) (* (* inv.1 inv.1) (* inv.3 inv.3) (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp)))))) (not (not (= v_1par 0))) (not (not (= k 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (> (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k))) 0)) (not (>= (* (* v_1par v_1par) (* k k) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* k k) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* k k) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* (* v_1perp v_1perp) (* k k))) 0)) (not (not (= inv.5 0))) (not (not (= (+ eps (- 1)) 0))) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))) (not (not (= inv.7 0))) (not (not (= (+ (* (* v_1par v_1par) (* eps eps) (* k k)) (- (* 2 (* v_1par v_1par) eps (* k k))) (* (* v_1par v_1par) (* k k)) (* 4 (* v_1perp v_1perp) (* k k))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -399,8 +436,8 @@
 (assert (not (= root.1 0)))
 (assert (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (not (= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0))) (not (not (= (+ 1 eps) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -428,8 +465,8 @@
 (assert (not (= root.1 0)))
 (assert (>= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0))
 (assert (not (= root.3 0)))
-; the claim, negated
-(assert (not (= (* inv.2 (+ 1 (- eps))) (* (+ 1 (- eps)) inv.4))))
+; the claim and the definedness conditions proven for it, one negated
+(assert (or (not (= (* inv.2 (+ 1 (- eps))) (* (+ 1 (- eps)) inv.4))) (not (> (+ 1 (* 4 (* v_1perp v_1perp)) (- (* 2 eps)) (* eps eps)) 0)) (not (>= (* (+ 1 eps) (+ 1 eps)) 0)) (not (>= (* (/ 1 4) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0)) (not (>= (+ (* v_1perp v_1perp) (* (/ 1 4) (* (+ 1 (- eps)) (+ 1 (- eps))))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

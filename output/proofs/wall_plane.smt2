@@ -79,6 +79,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ 1 eps) inv.1 (+ (* N_x v_x) (* N_y v_y)))) v_x) (- (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.1)))))
 (check-sat-using qfnra-nlsat)
@@ -99,6 +101,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_y (+ 1 eps) inv.1 (+ (* N_x v_x) (* N_y v_y)))) v_y) (- (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) inv.1)))))
 (check-sat-using qfnra-nlsat)
@@ -133,6 +137,8 @@
 (assert (>= (+ (* N_x N_x) (* N_y N_y)) 0))
 (assert (not (= n_norm 0)))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (- (* m v_n (+ 1 eps))) (- (* m (+ 1 eps) inv.3 (+ (* N_x v_x) (* N_y v_y)))))))
 (check-sat-using qfnra-nlsat)
@@ -153,6 +159,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.1)) (- (* N_y (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) inv.1))) (- (* eps (+ (* N_x v_x) (* N_y v_y)))))))
 (check-sat-using qfnra-nlsat)
@@ -173,6 +181,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) inv.1)) (* N_y (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) inv.1)) (+ (* N_x v_y) (- (* N_y v_x))))))
 (check-sat-using qfnra-nlsat)
@@ -195,6 +205,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y)))) (* (/ 1 2) m (+ (* (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x)))) (* inv.1 inv.1)) (* (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x))) (* inv.1 inv.1))))) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.1 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y))))))))
 (check-sat-using qfnra-nlsat)
@@ -217,6 +229,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (<= (+ (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y)))) (* (/ 1 2) m (+ (* (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x))) (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* N_x N_y v_y) (- (* (* N_y N_y) v_x)))) (* inv.1 inv.1)) (* (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x)) (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x))) (* inv.1 inv.1))))) 0)))
 (check-sat-using qfnra-nlsat)
@@ -233,6 +247,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* inv.1 inv.1) (* (+ (* (* N_x N_x) v_x) (* 2 N_x N_y v_y) (- (* (* N_y N_y) v_x))) (+ (* (* N_x N_x) v_x) (* 2 N_x N_y v_y) (- (* (* N_y N_y) v_x))))) (* (* inv.1 inv.1) (* (+ (* (* N_x N_x) v_y) (- (* 2 N_x N_y v_x)) (- (* (* N_y N_y) v_y))) (+ (* (* N_x N_x) v_y) (- (* 2 N_x N_y v_x)) (- (* (* N_y N_y) v_y)))))) (+ (* v_x v_x) (* v_y v_y)))))
 (check-sat-using qfnra-nlsat)
@@ -255,6 +271,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y)) 0))
 ; the claim, negated
 (assert (not (<= (- (* m (+ 1 eps) inv.1 (* (+ (* N_x v_x) (* N_y v_y)) (+ (* N_x v_x) (* N_y v_y))))) 0)))
 (check-sat-using qfnra-nlsat)

@@ -109,6 +109,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ 1 eps) inv.1 (+ (* N_x v_x) (* N_y v_y) (* N_z v_z)))) v_x) (- (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))) inv.1)))))
 (check-sat-using qfnra-nlsat)
@@ -131,6 +133,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_y (+ 1 eps) inv.1 (+ (* N_x v_x) (* N_y v_y) (* N_z v_z)))) v_y) (- (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y))) inv.1)))))
 (check-sat-using qfnra-nlsat)
@@ -153,6 +157,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_z (+ 1 eps) inv.1 (+ (* N_x v_x) (* N_y v_y) (* N_z v_z)))) v_z) (- (* (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y)) inv.1)))))
 (check-sat-using qfnra-nlsat)
@@ -189,6 +195,8 @@
 (assert (>= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 (assert (not (= n_norm 0)))
 (assert (not (= root.1 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (- (* m v_n (+ 1 eps))) (- (* m (+ 1 eps) inv.3 (+ (* N_x v_x) (* N_y v_y) (* N_z v_z)))))))
 (check-sat-using qfnra-nlsat)
@@ -211,6 +219,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))) inv.1)) (- (* N_y (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y))) inv.1)) (- (* N_z (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y)) inv.1))) (- (* eps (+ (* N_x v_x) (* N_y v_y) (* N_z v_z)))))))
 (check-sat-using qfnra-nlsat)
@@ -233,6 +243,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_y (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y)) inv.1)) (* N_z (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y))) inv.1)) (+ (* N_y v_z) (- (* N_z v_y))))))
 (check-sat-using qfnra-nlsat)
@@ -255,6 +267,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (* N_x (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y)) inv.1) (- (* N_z (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))) inv.1))) (+ (- (* N_x v_z)) (* N_z v_x)))))
 (check-sat-using qfnra-nlsat)
@@ -277,6 +291,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* N_x (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y))) inv.1)) (* N_y (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))) inv.1)) (+ (* N_x v_y) (- (* N_y v_x))))))
 (check-sat-using qfnra-nlsat)
@@ -301,6 +317,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y) (* v_z v_z)))) (* (/ 1 2) m (+ (* (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))) (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x)))) (* inv.1 inv.1)) (* (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y))) (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y)))) (* inv.1 inv.1)) (* (* (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y)) (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y))) (* inv.1 inv.1))))) (- (* (/ 1 2) m (+ 1 (- (* eps eps))) inv.1 (* (+ (* N_x v_x) (* N_y v_y) (* N_z v_z)) (+ (* N_x v_x) (* N_y v_y) (* N_z v_z))))))))
 (check-sat-using qfnra-nlsat)
@@ -325,6 +343,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (<= (+ (- (* (/ 1 2) m (+ (* v_x v_x) (* v_y v_y) (* v_z v_z)))) (* (/ 1 2) m (+ (* (* (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))) (+ (* eps (* N_x N_x) v_x) (* eps N_x N_y v_y) (* eps N_x N_z v_z) (* N_x N_y v_y) (* N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x)))) (* inv.1 inv.1)) (* (* (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y))) (+ (* eps N_x N_y v_x) (* eps (* N_y N_y) v_y) (* eps N_y N_z v_z) (- (* (* N_x N_x) v_y)) (* N_x N_y v_x) (* N_y N_z v_z) (- (* (* N_z N_z) v_y)))) (* inv.1 inv.1)) (* (* (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y)) (+ (* eps N_x N_z v_x) (* eps N_y N_z v_y) (* eps (* N_z N_z) v_z) (- (* (* N_x N_x) v_z)) (* N_x N_z v_x) (- (* (* N_y N_y) v_z)) (* N_y N_z v_y))) (* inv.1 inv.1))))) 0)))
 (check-sat-using qfnra-nlsat)
@@ -343,6 +363,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (= (+ (* (* inv.1 inv.1) (* (+ (* (* N_x N_x) v_x) (* 2 N_x N_y v_y) (* 2 N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))) (+ (* (* N_x N_x) v_x) (* 2 N_x N_y v_y) (* 2 N_x N_z v_z) (- (* (* N_y N_y) v_x)) (- (* (* N_z N_z) v_x))))) (* (* inv.1 inv.1) (* (+ (* (* N_x N_x) v_y) (- (* 2 N_x N_y v_x)) (- (* (* N_y N_y) v_y)) (- (* 2 N_y N_z v_z)) (* (* N_z N_z) v_y)) (+ (* (* N_x N_x) v_y) (- (* 2 N_x N_y v_x)) (- (* (* N_y N_y) v_y)) (- (* 2 N_y N_z v_z)) (* (* N_z N_z) v_y)))) (* (* inv.1 inv.1) (* (+ (* (* N_x N_x) v_z) (- (* 2 N_x N_z v_x)) (* (* N_y N_y) v_z) (- (* 2 N_y N_z v_y)) (- (* (* N_z N_z) v_z))) (+ (* (* N_x N_x) v_z) (- (* 2 N_x N_z v_x)) (* (* N_y N_y) v_z) (- (* 2 N_y N_z v_y)) (- (* (* N_z N_z) v_z)))))) (+ (* v_x v_x) (* v_y v_y) (* v_z v_z)))))
 (check-sat-using qfnra-nlsat)
@@ -367,6 +389,8 @@
 (assert (=> (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)) (= (* inv.1 (+ (* N_x N_x) (* N_y N_y) (* N_z N_z))) 1)))
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0)))
+; the conditions the claim is promised under (where)
+(assert (> (+ (* N_x N_x) (* N_y N_y) (* N_z N_z)) 0))
 ; the claim, negated
 (assert (not (<= (- (* m (+ 1 eps) inv.1 (* (+ (* N_x v_x) (* N_y v_y) (* N_z v_z)) (+ (* N_x v_x) (* N_y v_y) (* N_z v_z))))) 0)))
 (check-sat-using qfnra-nlsat)

@@ -81,6 +81,11 @@ z3_answer solve(const std::string& option, const std::string& problem)
 
 z3_answer run_z3(const std::string& option, const std::string& problem)
 {
+    // A short problem (most of them: a derivation's identities over a few symbols) in this
+    // process: it meets its resource limit long before any guard is needed, and a child
+    // process would cost more than Z3's answer (its copy of Impact's memory, page by page).
+    if (problem.size() < z3_in_process_below)
+        return solve(option, problem);
     // In a child process: a few of Z3's procedures (expanding products of long sums before
     // nlsat starts) count no steps against the limit and heed no interrupt, so the guard
     // must be able to end them; and each problem starts from a Z3 that has solved nothing.

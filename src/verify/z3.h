@@ -21,12 +21,17 @@ inline constexpr unsigned long z3_rlimit = 8'000'000;
 
 /// The longest problem given to Z3, in characters: beyond it (the rough spheres' in space,
 /// sums of hundreds of terms under roots) Z3 expands products before it counts a step, for
-/// minutes; such a problem is not run, and counts as past the resource limit.
-inline constexpr std::size_t z3_largest_problem = 85'000;
+/// seconds to minutes each; such a problem is not run, and counts as past the resource
+/// limit. 20,000 keeps a cold regeneration's Z3 within about a minute on two cores.
+inline constexpr std::size_t z3_largest_problem = 20'000;
 
-/// The wall-clock guard per problem, in milliseconds: four times the longest Z3 takes on a
-/// problem it confirms within the limit.
-inline constexpr unsigned z3_guard_ms = 20'000;
+/// The wall-clock guard per problem, in milliseconds: a safety net behind the resource
+/// limit, which a problem within `z3_largest_problem` meets first.
+inline constexpr unsigned z3_guard_ms = 10'000;
+
+/// Problems shorter than this, in characters, are solved in Impact's own process; longer
+/// ones in a child process the guard can end.
+inline constexpr std::size_t z3_in_process_below = 6'000;
 
 struct z3_answer {
     enum class kind { confirmed, refuted, unknown, resource_limit, error };

@@ -24,9 +24,10 @@ std::vector<condition> deriver::needs_of(const GiNaC::ex& value, const written_f
         add_conditions(needs, in_inputs(definedness(*written, out_.symbols)));
     add_conditions(needs, in_inputs(definedness(value, out_.symbols)));
     add_conditions(needs, definedness(resolve(value), out_.symbols));
+    // Put in again: a quantity a later step derives may stand in them (M = m).
     for (const auto& [symbol, more] : needs_)
         if (value.has(symbol) || (written && written->mentions(symbol)))
-            add_conditions(needs, more);
+            add_conditions(needs, in_inputs(more));
     return needs;
 }
 
@@ -43,12 +44,12 @@ std::vector<condition> deriver::needs_of_claim(const written_form& written, cons
         add_conditions(as_written, in_inputs(definedness(side, out_.symbols)));
         for (const auto& [symbol, more] : needs_)
             if (side.has(symbol))
-                add_conditions(as_written, more);
+                add_conditions(as_written, in_inputs(more));
     }
     // A quantity the text uses, though GiNaC cancelled it (x*D/D is x), is needed too.
     for (const auto& [symbol, more] : needs_)
         if (written.mentions(symbol))
-            add_conditions(as_written, more);
+            add_conditions(as_written, in_inputs(more));
     std::vector<condition> needs = as_written;
     if (!left_at.empty())
         add_conditions(needs, rewritten(

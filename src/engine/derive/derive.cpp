@@ -327,7 +327,7 @@ void deriver::run_step(const spec::step& st)
         // Where the values it derives are defined: proven from the domains, or attached.
         std::vector<condition> needs;
         for (const auto& [symbol, value] : r.values)
-            add_conditions(needs, needs_[symbol]);
+            add_conditions(needs, in_inputs(needs_[symbol]));
         settled_conditions settled = settle(needs, declared_assumptions(out_.symbols, run_));
         r.attached = std::move(settled.attached);
         r.defined = std::move(settled.proven);
@@ -481,7 +481,7 @@ void deriver::add_result(const spec::result& spec_result)
     r.value = value->second;
     r.display = r.value;
     r.paper = spec_result.paper ? spec_result.paper->value : std::string();
-    std::vector<condition> needs = needs_[q.symbol];
+    std::vector<condition> needs = in_inputs(needs_[q.symbol]);
     const assumptions declared = declared_assumptions(out_.symbols, run_);
     if (spec_result.display) {
         r.display = out_.symbols.parse(*spec_result.display);
