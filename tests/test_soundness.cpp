@@ -13,6 +13,7 @@
 #include "soundness_claims.h"
 #include "soundness_judge.h"
 #include "spec/error.h"
+#include "verify/proofs.h"
 
 #include <chrono>
 #include <cstdlib>
@@ -53,8 +54,8 @@ bool sound(const problem& p, const std::string& claim, const engine::verdict& v)
     return j.sound;
 }
 
-// The second opinions the fuzzer asks beside the judge's. Z3's (src/verify/, branch `z3`)
-// is added here: it receives each claim and Impact's verdict.
+// Further opinions the fuzzer may ask beside the judge's and Z3's (judge_file asks Z3 on
+// every proven check): each receives a claim and Impact's verdict.
 std::vector<second_opinion> second_opinions() { return {}; }
 
 // One derivation file judged: each check's verdict, and what was unsound.
@@ -71,12 +72,22 @@ std::vector<judged_check> judge_file(const std::string& toml, const std::string&
     const problem p = read_problem(source);
     const engine::derivation d = engine::derive(source, {});
     std::vector<judged_check> out;
+    // Z3's opinion on every proven check (src/verify/proofs.h): a problem it finds sat is a
+    // proof of Impact's that is wrong.
+    std::vector<verify::proof_check> z3 = verify::proof_checks_of(d);
+    for (verify::proof_check& check : z3)
+        verify::run_proof_check(check, nullptr);
     for (const engine::check_result* c : d.all_checks()) {
         const relation_claim& claim = p.claims.at(c->name);
         judged_check j{c->name, c->outcome, judge(p, claim, c->outcome, rng), {}};
         for (const second_opinion& other : second_opinions())
             if (std::optional<std::string> no = other(p, c->name, claim, c->outcome))
                 j.second.push_back(*no);
+        for (const verify::proof_check& check : z3)
+            if (check.check == c && check.refuted())
+                for (const verify::proof_problem& problem : check.problems)
+                    if (problem.answer.what == verify::z3_answer::kind::refuted)
+                        j.second.push_back("Z3 refutes the proof: " + problem.answer.detail);
         out.push_back(std::move(j));
     }
     return out;
