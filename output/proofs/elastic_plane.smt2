@@ -1039,8 +1039,8 @@
 (assert (not (= (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
 ; the conditions the claim is promised under (where)
-(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (> (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0))
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim and the definedness conditions proven for it, one negated
 (assert (or (not (= (* inv.1 (+ (* M (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_a) (- (* v_My rot_b)))) (* M (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_a) (- (* v_My rot_b)))) (- (* m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) (* 2 m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_mx rot_a) (- (* v_my rot_b)))) (- (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_Mx rot_b) (* v_My rot_a)))) (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_mx rot_b) (* v_my rot_a))) (* m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) inv.2) (+ (* rot_a inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.3) (- (* rot_b inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.3))))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
@@ -1073,8 +1073,8 @@
 (assert (not (= (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0)))
 (assert (not (= (+ (* r_x r_x) (* r_y r_y)) 0)))
 ; the conditions the claim is promised under (where)
-(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 (assert (> (+ (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a)))) 0))
+(assert (> (+ (* r_x r_x) (* r_y r_y)) 0))
 ; the claim and the definedness conditions proven for it, one negated
 (assert (or (not (= (* inv.1 (+ (* M (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_b) (* v_My rot_a))) (* M (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_b) (* v_My rot_a))) (* m (* (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_a) (- (* r_y rot_b)))) (+ (* v_Mx rot_b) (* v_My rot_a))) (- (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_Mx rot_a) (- (* v_My rot_b))))) (* 2 m (+ (* r_x rot_a) (- (* r_y rot_b))) (+ (* r_x rot_b) (* r_y rot_a)) (+ (* v_mx rot_a) (- (* v_my rot_b)))) (- (* m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_Mx rot_b) (* v_My rot_a)))) (* 2 m (* (+ (* r_x rot_b) (* r_y rot_a)) (+ (* r_x rot_b) (* r_y rot_a))) (+ (* v_mx rot_b) (* v_my rot_a)))) inv.2) (+ (* rot_a inv.1 (+ (* M (* r_x r_x) v_My) (* M (* r_y r_y) v_My) (* m (* r_x r_x) v_My) (- (* 2 m r_x r_y v_Mx)) (* 2 m r_x r_y v_mx) (- (* m (* r_y r_y) v_My)) (* 2 m (* r_y r_y) v_my)) inv.3) (* rot_b inv.1 (+ (* M (* r_x r_x) v_Mx) (* M (* r_y r_y) v_Mx) (- (* m (* r_x r_x) v_Mx)) (* 2 m (* r_x r_x) v_mx) (- (* 2 m r_x r_y v_My)) (* 2 m r_x r_y v_my) (* m (* r_y r_y) v_Mx)) inv.3)))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)

@@ -22,7 +22,7 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= (+ M m) 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))) (not (not (= (+ M m) 0))) (not (not (= (+ (* 2 M) (* 2 m)) 0)))))
+(assert (or (not (= (- (* (/ 1 2) M m (+ 1 (- (* eps eps))) inv.1 (* (+ v_M (- v_m)) (+ v_M (- v_m))))) (- (* (/ 1 2) inv.1 (+ (* M m (* v_M v_M)) (- (* M m (* v_M v_M) (* eps eps))) (- (* 2 M m v_M v_m)) (* 2 M m v_M v_m (* eps eps)) (* M m (* v_m v_m)) (- (* M m (* v_m v_m) (* eps eps)))))))) (not (not (= (+ (* 2 M) (* 2 m)) 0))) (not (not (= (+ M m) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

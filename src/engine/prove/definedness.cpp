@@ -417,8 +417,11 @@ settled_conditions settle(const std::vector<condition>& needs, const assumptions
         return (GiNaC::is_a<GiNaC::symbol>(c.expr) ? 0 : 3) + strength;
     };
     std::vector<condition> ordered = needs;
-    std::stable_sort(ordered.begin(), ordered.end(),
-                     [&](const condition& a, const condition& b) { return rank(a) < rank(b); });
+    // Within a rank in the order of their texts: what is gathered from several quantities
+    // comes in GiNaC's order of them, which changes from run to run.
+    std::stable_sort(ordered.begin(), ordered.end(), [&](const condition& a, const condition& b) {
+        return rank(a) != rank(b) ? rank(a) < rank(b) : a.text < b.text;
+    });
     settled_conditions out;
     assumptions under = given;
     const auto implied = [&](const condition& c) {
