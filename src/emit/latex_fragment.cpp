@@ -60,26 +60,10 @@ std::string paper_text(const std::string& paper)
 
 std::string condition_latex(const engine::condition& c, const term_order& order)
 {
-    GiNaC::ex left = 0, right = 0;
-    const auto negative = [](const GiNaC::ex& t) {
-        if (GiNaC::is_a<GiNaC::numeric>(t))
-            return GiNaC::ex_to<GiNaC::numeric>(t).is_negative();
-        if (!GiNaC::is_a<GiNaC::mul>(t))
-            return false;
-        const GiNaC::ex last = t.op(t.nops() - 1);
-        return GiNaC::is_a<GiNaC::numeric>(last) && GiNaC::ex_to<GiNaC::numeric>(last).is_negative();
-    };
-    // The negative terms on the right: r_x^2 + r_y^2 > 0, x \\neq y.
-    const GiNaC::ex& e = c.expr;
-    const std::size_t terms = GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1;
-    for (std::size_t i = 0; i < terms; ++i) {
-        const GiNaC::ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(i) : e;
-        if (negative(term))
-            right -= term;
-        else
-            left += term;
-    }
-    const char* op = c.need == engine::condition::kind::nonzero ? "\\neq" : c.need == engine::condition::kind::positive ? ">" : "\\geq";
+    const auto [left, right] = engine::condition_sides(c.expr);   // x \\neq y, r_x^2 + r_y^2 > 0
+    const char* op = c.need == engine::condition::kind::nonzero    ? "\\neq"
+                     : c.need == engine::condition::kind::positive ? ">"
+                                                                   : "\\geq";
     return fmt::format("{} {} {}", latex(left, order), op, latex(right, order));
 }
 

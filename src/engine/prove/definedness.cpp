@@ -346,21 +346,23 @@ std::optional<domain> narrowed(domain range, condition::kind need)
 
 } // namespace
 
-std::string condition_text(const GiNaC::ex& expr, condition::kind need, const symbol_table& symbols)
+std::pair<GiNaC::ex, GiNaC::ex> condition_sides(const GiNaC::ex& expr)
 {
     GiNaC::ex left = 0, right = 0;
-    if (GiNaC::is_a<GiNaC::add>(expr)) {
-        for (std::size_t i = 0; i < expr.nops(); ++i) {
-            if (negative_term(expr.op(i)))
-                right -= expr.op(i);
-            else
-                left += expr.op(i);
-        }
-    } else if (negative_term(expr)) {
-        right = -expr;
-    } else {
-        left = expr;
+    const std::size_t terms = GiNaC::is_a<GiNaC::add>(expr) ? expr.nops() : 1;
+    for (std::size_t i = 0; i < terms; ++i) {
+        const GiNaC::ex term = GiNaC::is_a<GiNaC::add>(expr) ? expr.op(i) : expr;
+        if (negative_term(term))
+            right -= term;
+        else
+            left += term;
     }
+    return {left, right};
+}
+
+std::string condition_text(const GiNaC::ex& expr, condition::kind need, const symbol_table& symbols)
+{
+    const auto [left, right] = condition_sides(expr);
     return fmt::format("{} {} {}", symbols.text(left), relation_text(need), symbols.text(right));
 }
 

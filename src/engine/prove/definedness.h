@@ -19,9 +19,14 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impact::engine {
+
+/// A condition's expression as the two sides it is written with: its positive terms on the
+/// left, its negative ones, negated, on the right (x - y: x and y; -u^2 + 1: 1 and u^2).
+std::pair<GiNaC::ex, GiNaC::ex> condition_sides(const GiNaC::ex& expr);
 
 /// `x != y`, `p > 0`, `1 >= u^2`: each condition as a relation between its positive and
 /// negative terms, written with `symbols` (the same text on every run).
