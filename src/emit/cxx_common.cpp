@@ -4,6 +4,7 @@
 #include "emit/cxx.h"
 #include "emit/cxx_parts.h"
 
+#include <cln/cln.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,6 +19,25 @@
 namespace impact::emit {
 
 using namespace cxx_detail;
+
+namespace {
+
+bool uses_pi(const compile::program& p)
+{
+    return std::any_of(p.code.begin(), p.code.end(), [](const compile::instruction& in) { return in.pi; });
+}
+
+// π's first `n` decimals after "3.", truncated (its value within 10^-n).
+std::string pi_digits(int n)
+{
+    const cln::cl_I scaled = cln::floor1(cln::pi(cln::float_format(static_cast<unsigned long>(n + 20))) *
+                                         cln::expt_pos(cln::cl_I(10), n));
+    std::ostringstream text;
+    text << scaled;
+    return text.str().substr(0, 1) + "." + text.str().substr(1);
+}
+
+} // namespace
 
 namespace cxx_detail {
 
@@ -227,6 +247,22 @@ std::string common_header(const std::vector<const kernel_plan*>& plans, const st
                "    }\n"
                "    return 2 * most > K;\n}\n\n"
                "} // namespace detail\n";
+
+    if (std::any_of(plans.begin(), plans.end(), [](const kernel_plan* plan) {
+            return uses_pi(plan->code) || uses_pi(plan->fast_code);
+        })) {
+        // π to 50 digits, from CLN: the compiler rounds the literal to the type once.
+        const std::string digits = pi_digits(50);
+        out += fmt::format("\nnamespace detail {{\n\n"
+                           "/// pi rounded to Real: the nearest float, double and long double (the literal's 50\n"
+                           "/// digits rounded once, by the compiler, to the type of its suffix).\n"
+                           "template <class Real>\nconstexpr Real pi() noexcept\n{{\n"
+                           "    if constexpr (std::is_same_v<Real, float>)\n        return {0}F;\n"
+                           "    else if constexpr (std::is_same_v<Real, double>)\n        return {0};\n"
+                           "    else\n        return static_cast<Real>({0}L);\n}}\n\n"
+                           "}} // namespace detail\n",
+                           digits);
+    }
 
     // Array kernels are emitted in several dimensions; their structures are templates on
     // the dimension, written once, each member shaped as every dimension needs it.

@@ -128,8 +128,8 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
         switch (in.op) {
         case opcode::input: expression = names.at(in.input); break;
         case opcode::constant:
-            expression = literal(in.value);
-            own = in.value.is_integer() ? atom : product;
+            expression = in.pi ? "detail::pi<Real>()" : literal(in.value);
+            own = in.pi || in.value.is_integer() ? atom : product;
             break;
         case opcode::add: expression = operand(in.a, sum) + " + " + operand(in.b, product); own = sum; break;
         case opcode::sub: expression = operand(in.a, sum) + " - " + operand(in.b, product); own = sum; break;
