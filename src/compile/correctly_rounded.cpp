@@ -117,7 +117,7 @@ Real rounded_call(const std::string& function, Real a, Real b)
         return a;
     if (const std::optional<cln::cl_RA> exact = value_of(function, odd ? std::fabs(a) : a, b))
         if (const std::optional<Real> value = nearest<Real>(*exact))
-            return odd ? std::copysign(*value, a) : *value;
+            return odd && std::signbit(a) ? -*value : *value;   // f(-x) = -f(x), f(-0) = -0
     return library_call(function, a, b);
 }
 

@@ -1,0 +1,153 @@
+// The C library functions a kernel calls (compile/functions.h): their values computed by CLN,
+// against values typed here to 42 digits (from tables and from mpmath, an implementation of
+// its own), where the arguments make them hard: an argument reduction of 10^22, cancellations
+// near 0 (log1p, expm1, acos near 1, cos at the double nearest π/2), and exact values where
+// they are rational. And the interpreter's calls, rounded from them, in every type.
+#define BOOST_TEST_MODULE test_functions
+#include <boost/test/unit_test.hpp>
+
+#include "compile/functions.h"
+#include "compile/program.h"
+
+#include <cln/cln.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace {
+
+using namespace impact;
+
+// A decimal typed as text ("-0.84147...", "9.99...e-21"), exactly as a rational.
+cln::cl_RA decimal(const std::string& text)
+{
+    const std::size_t e = text.find('e');
+    const std::string mantissa = text.substr(0, e);
+    const long exponent = e == std::string::npos ? 0 : std::stol(text.substr(e + 1));
+    const std::size_t point = mantissa.find('.');
+    std::string digits = mantissa.substr(0, point) + (point == std::string::npos ? "" : mantissa.substr(point + 1));
+    const long decimals = point == std::string::npos ? 0 : static_cast<long>(mantissa.size() - point - 1);
+    const cln::cl_I n(digits.c_str());
+    const long shift = exponent - decimals;
+    return shift >= 0 ? cln::cl_RA(n * cln::expt_pos(cln::cl_I(10), shift))
+                      : cln::cl_RA(n / cln::expt_pos(cln::cl_I(10), -shift));
+}
+
+cln::cl_RA ratio(long p, long q)
+{
+    return cln::cl_RA(p) / cln::cl_RA(q);
+}
+
+// std::f(a, b) to 40 digits agrees with `expected` (typed to 42) within 10^-38 of its size.
+void agrees(const std::string& f, const cln::cl_RA& a, const cln::cl_RA& b, const std::string& expected)
+{
+    const std::optional<cln::cl_R> v = compile::exact_value(f, a, b, 40);
+    BOOST_REQUIRE_MESSAGE(v.has_value(), f << " has no value");
+    const cln::cl_RA want = decimal(expected);
+    const cln::cl_RA gap = cln::abs(cln::rational(*v) - want);
+    BOOST_TEST((gap <= cln::abs(want) / cln::expt_pos(cln::cl_I(10), 38)),
+               f << ": " << *v << " against " << expected);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(test_functions)
+
+BOOST_AUTO_TEST_CASE(each_function_is_evaluated_to_40_digits_by_cln)
+{
+    agrees("sin", 1, 0, "0.841470984807896506652502321630298999622563");
+    agrees("cos", 1, 0, "0.54030230586813971740093660744297660373231");
+    agrees("tan", 1, 0, "1.55740772465490223050697480745836017308725");
+    agrees("asin", ratio(3, 10), 0, "0.30469265401539750797200296122752916695456");
+    agrees("acos", ratio(3, 10), 0, "1.26610367277949911125931873041222227514402");
+    agrees("atan", 3, 0, "1.24904577239825442582991707728109012307783");
+    agrees("atan2", 1, -2, "2.67794504458898712224838715181828848216863");   // the point (-2, 1)
+    agrees("exp", ratio(-5, 2), 0, "0.0820849986238987951695286744671598078378041");
+    agrees("log", 10, 0, "2.3025850929940456840179914546843642076011");
+    agrees("sinh", ratio(1, 2), 0, "0.521095305493747361622425626411491559105929");
+    agrees("cosh", 2, 0, "3.76219569108363145956221347777374610829397");
+    agrees("tanh", ratio(1, 4), 0, "0.244918662403709129277801131491016957506559");
+    agrees("tanh", -20, 0, "-0.999999999999999991503291489416822045438558");
+    agrees("pow", 3, ratio(3, 4), "2.27950705695477764199356325196363600619032");
+    agrees("asin", -1, 0, "-1.57079632679489661923132169163975144209858");
+}
+
+BOOST_AUTO_TEST_CASE(hard_arguments_keep_every_digit)
+{
+    // sin(10^22): an argument reduction by 10^22 / 2π turns.
+    agrees("sin", cln::expt_pos(cln::cl_I(10), 22), 0, "-0.852200849767188801772705893753029368261762");
+    // cos at the double nearest π/2: 6.1e-17, what is left of π/2 after rounding.
+    agrees("cos", cln::rational(cln::cl_DF(1.5707963267948966)), 0, "6.12323399573676588613032966137500146464038e-17");
+    // Cancellations near 0: log(1 + x), exp(x) − 1, acos near 1, sinh of a tiny x.
+    const cln::cl_RA tiny = cln::cl_RA(1) / cln::expt_pos(cln::cl_I(10), 20);
+    agrees("log1p", tiny, 0, "9.99999999999999999995000000000000000000033e-21");
+    agrees("expm1", -cln::cl_RA(1) / cln::expt_pos(cln::cl_I(10), 15), 0,
+           "-9.99999999999999500000000000000166666666667e-16");
+    agrees("acos", 1 - cln::cl_RA(1) / cln::expt_pos(cln::cl_I(2), 52), 0,
+           "0.0000000210734242554470162834211642882121161990957");
+    agrees("sinh", cln::cl_RA(1) / cln::expt_pos(cln::cl_I(10), 30), 0, "1.0e-30");
+}
+
+BOOST_AUTO_TEST_CASE(rational_values_are_exact_and_values_outside_the_domain_are_none)
+{
+    const auto exact = [](const std::string& f, const cln::cl_RA& a, const cln::cl_RA& b) {
+        const std::optional<cln::cl_R> v = compile::exact_value(f, a, b, 40);
+        BOOST_REQUIRE(v.has_value());
+        BOOST_REQUIRE(cln::instanceof(*v, cln::cl_RA_ring));
+        return cln::the<cln::cl_RA>(*v);
+    };
+    BOOST_TEST((exact("pow", ratio(1, 2), -3) == 8));
+    BOOST_TEST((exact("pow", -3, 5) == -243));
+    BOOST_TEST((exact("sin", 0, 0) == 0));
+    BOOST_TEST((exact("log", 1, 0) == 0));
+    BOOST_TEST((exact("acos", 1, 0) == 0));
+    BOOST_TEST((exact("cosh", 0, 0) == 1));
+    for (const auto& [f, a, b] : {std::tuple<const char*, cln::cl_RA, cln::cl_RA>{"log", 0, 0},
+                                  {"log", -1, 0},
+                                  {"log1p", -1, 0},
+                                  {"acos", 2, 0},
+                                  {"asin", ratio(-11, 10), 0},
+                                  {"atan2", 0, 0},
+                                  {"pow", 0, -1},
+                                  {"pow", -2, ratio(1, 2)},
+                                  {"exp", 1000000, 0}})
+        BOOST_TEST(!compile::exact_value(f, a, b, 40).has_value(), f);
+}
+
+// The interpreter's calls, correctly rounded: against decimals typed here, which the compiler
+// rounds to the nearest of each type. `big` is 10^22 rounded to the type (exactly 10^22 in
+// double and long double; 9999999778196308361216 in float), `sin_big` its sine.
+template <class Real>
+void rounded_in(Real big, Real sin_big, Real sin_1, Real tanh_quarter, Real pi)
+{
+    BOOST_TEST(compile::correctly_rounded("sin", big, Real(0)) == sin_big);
+    BOOST_TEST(compile::correctly_rounded("sin", Real(1), Real(0)) == sin_1);
+    BOOST_TEST(compile::correctly_rounded("sin", Real(-1), Real(0)) == -sin_1);
+    BOOST_TEST(compile::correctly_rounded("tanh", Real(0.25), Real(0)) == tanh_quarter);
+    // exp(x) − 1 and log(1 + x) of a tiny x are x (1 ± x/2 + ...), x itself in every type,
+    // where 1 + x rounds to 1.
+    const Real tiny = Real(1e-30);
+    BOOST_TEST(compile::correctly_rounded("expm1", tiny, Real(0)) == tiny);
+    BOOST_TEST(compile::correctly_rounded("log1p", tiny, Real(0)) == tiny);
+    // Zeros keep their sign, as the C library keeps it.
+    for (const char* f : {"sin", "tan", "asin", "atan", "sinh", "tanh", "expm1", "log1p"}) {
+        const Real z = compile::correctly_rounded(f, -Real(0), Real(0));
+        BOOST_TEST((z == 0 && std::signbit(z)), f);
+    }
+    BOOST_TEST(compile::rounded_pi<Real>() == pi);
+    BOOST_TEST(compile::correctly_rounded("acos", Real(-1), Real(0)) == pi);
+    BOOST_TEST(std::isnan(compile::correctly_rounded("log", Real(-1), Real(0))));
+}
+
+BOOST_AUTO_TEST_CASE(the_interpreter_rounds_each_function_to_nearest_in_every_type)
+{
+    rounded_in<float>(1e22f, -0.7340815352961015259557689076928539478302f, 0.841470984807896506652502321630298999f,
+                      0.244918662403709129277801131491016957f, 3.141592653589793238462643383279502884f);
+    rounded_in<double>(1e22, -0.852200849767188801772705893753029368, 0.841470984807896506652502321630298999,
+                       0.244918662403709129277801131491016957, 3.141592653589793238462643383279502884);
+    rounded_in<long double>(1e22L, -0.852200849767188801772705893753029368L, 0.841470984807896506652502321630298999L,
+                            0.244918662403709129277801131491016957L, 3.141592653589793238462643383279502884L);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
