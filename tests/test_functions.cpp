@@ -8,12 +8,20 @@
 
 #include "compile/functions.h"
 #include "compile/program.h"
+#include "engine/library/library.h"
+#include "pipeline/regenerate.h"
+#include "spec/derivation.h"
 
 #include <cln/cln.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -148,6 +156,56 @@ BOOST_AUTO_TEST_CASE(the_interpreter_rounds_each_function_to_nearest_in_every_ty
                        0.244918662403709129277801131491016957, 3.141592653589793238462643383279502884);
     rounded_in<long double>(1e22L, -0.852200849767188801772705893753029368L, 0.841470984807896506652502321630298999L,
                             0.244918662403709129277801131491016957L, 3.141592653589793238462643383279502884L);
+}
+
+// A batch loop that calls cos, compiled with -O3 -ffast-math: GCC would make it a loop of
+// glibc's vector cos (_ZGVdN4v_cos), whose last bits differ from the scalar cos's; the loop
+// calls the scalar function instead (detail::scalar_cos, never inlined), and writes what the
+// scalar kernel returns, bit for bit.
+BOOST_AUTO_TEST_CASE(a_batch_loop_calls_the_scalar_function_and_gives_the_scalar_kernel_s_bits)
+{
+    namespace fs = std::filesystem;
+    const std::string text = "id = \"turn\"\ntitle = \"a velocity's part along a line\"\n"
+                             "[[symbol]]\nname = \"v\"\ndimension = \"velocity\"\n"
+                             "[[symbol]]\nname = \"theta\"\ndomain = \"[0, 3]\"\n"
+                             "[[symbol]]\nname = \"u\"\ndimension = \"velocity\"\n"
+                             "[[step]]\ndefine = \"u\"\nas = \"v*cos(theta)\"\nbecause = \"the projection\"\n"
+                             "[[result]]\nname = \"u\"\n"
+                             "[[kernel]]\nname = \"along\"\ninputs = [\"v\", \"theta\"]\noutputs = [\"v = u\"]\n"
+                             "batch = true\n";
+    const engine::library lib = engine::derive_all({spec::parse_derivation(text, "turn.toml")});
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    BOOST_TEST(missed.empty());
+    const fs::path dir = fs::temp_directory_path() / ("impact_test_batch_cos_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    std::string all;
+    for (const auto& [path, header] : files) {
+        fs::create_directories((dir / path).parent_path());
+        std::ofstream(dir / path) << header;
+        all += header;
+    }
+    BOOST_TEST(all.find("return v * std::cos(theta);") != std::string::npos);   // the scalar kernel
+    BOOST_TEST(all.find("v_[i] = v * detail::scalar_cos(theta);") != std::string::npos);   // its loop
+    std::ofstream(dir / "main.cpp")
+        << "#include \"impact/along.hpp\"\n#include <cstring>\n#include <vector>\n"
+           "int main()\n{\n"
+           "    const std::size_t n = 4099;\n"
+           "    std::vector<double> v(n), theta(n), want(n);\n"
+           "    for (std::size_t i = 0; i < n; ++i) {\n"
+           "        v[i] = 1.0 + double(i) / 7.0;\n"
+           "        theta[i] = 3.0 * double(i) / double(n);\n"
+           "        want[i] = impact::along<double>(v[i], theta[i]);\n"
+           "    }\n"
+           "    impact::along_batch<double>({n, v.data(), theta.data()});\n"
+           "    return std::memcmp(v.data(), want.data(), n * sizeof(double)) == 0 ? 0 : 1;\n}\n";
+    const std::string object = (dir / "main.o").string();
+    const std::string command =
+        std::string(IMPACT_CXX) + " -std=c++17 -O3 -ffast-math -I" + (dir / "kernels").string() +
+        " -c " + (dir / "main.cpp").string() + " -o " + object + " && ! nm " + object + " | grep -q _ZGV && " +
+        IMPACT_CXX + " -ffast-math " + object + " -o " + (dir / "main").string() + " && " + (dir / "main").string();
+    BOOST_TEST(std::system(command.c_str()) == 0, command);
+    fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -264,6 +264,33 @@ std::string common_header(const std::vector<const kernel_plan*>& plans, const st
                            digits);
     }
 
+    // The functions batch loops call, each through a wrapper never inlined.
+    std::set<std::string> batch_calls;
+    for (const kernel_plan* plan : plans)
+        if (plan->kernel->batch)
+            for (const compile::program* p : {&plan->code, &plan->fast_code})
+                for (const compile::instruction& in : p->code)
+                    if (in.op == compile::opcode::call && in.function != "abs")
+                        batch_calls.insert(in.function);
+    if (!batch_calls.empty()) {
+        out += "\n// A function never inlined.\n#if defined(__GNUC__) || defined(__clang__)\n"
+               "#define IMPACT_NEVER_INLINE __attribute__((noinline))\n#elif defined(_MSC_VER)\n"
+               "#define IMPACT_NEVER_INLINE __declspec(noinline)\n#else\n#define IMPACT_NEVER_INLINE\n#endif\n\n"
+               "namespace detail {\n\n"
+               "// The C library's functions as a batch loop calls them: the scalar function, as the\n"
+               "// scalar kernel calls it, never a vector one. Under -ffast-math, <math.h> declares them\n"
+               "// with vector variants (glibc's libmvec, whose last bits differ), and GCC 12 then\n"
+               "// vectorised a loop calling std::sin with _ZGVdN4v_sin (Clang with -fveclib=libmvec);\n"
+               "// a call of a function never inlined is never vectorised.\n";
+        for (const std::string& f : batch_calls) {
+            const bool two = f == "atan2" || f == "pow";
+            out += fmt::format("template <class Real>\nIMPACT_NEVER_INLINE Real scalar_{0}(Real a{1}) noexcept\n{{\n"
+                               "    return std::{0}(a{2});\n}}\n",
+                               f, two ? ", Real b" : "", two ? ", b" : "");
+        }
+        out += "\n} // namespace detail\n";
+    }
+
     // Array kernels are emitted in several dimensions; their structures are templates on
     // the dimension, written once, each member shaped as every dimension needs it.
     std::map<std::string, std::vector<const engine::kernel*>> by_name;
