@@ -11,6 +11,7 @@
 #include "engine/library/library.h"
 #include "pipeline/regenerate.h"
 #include "spec/derivation.h"
+#include "verify/cancellation.h"
 
 #include <cln/cln.h>
 
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -156,6 +158,36 @@ BOOST_AUTO_TEST_CASE(the_interpreter_rounds_each_function_to_nearest_in_every_ty
                        0.244918662403709129277801131491016957, 3.141592653589793238462643383279502884);
     rounded_in<long double>(1e22L, -0.852200849767188801772705893753029368L, 0.841470984807896506652502321630298999L,
                             0.244918662403709129277801131491016957L, 3.141592653589793238462643383279502884L);
+}
+
+// The forms without cancellation (verify/cancellation.h), against the identities typed here.
+BOOST_AUTO_TEST_CASE(cancelling_sums_and_arguments_are_written_by_their_identities)
+{
+    const GiNaC::symbol E("E"), m("m"), x("x"), a("a"), b("b"), y("y");
+    const auto same = [](const GiNaC::ex& got, const GiNaC::ex& want) {
+        BOOST_TEST((got - want).is_zero(), got << " against " << want);
+    };
+    // Compton's denominator: E − E cos x + m = 2 E sin²(x/2) + m.
+    same(verify::without_cancellation(m * E / (E - E * GiNaC::cos(x) + m)),
+         m * E / (2 * E * GiNaC::pow(GiNaC::sin(x / 2), 2) + m));
+    same(verify::without_cancellation(3 + 3 * GiNaC::cos(x)), 6 * GiNaC::pow(GiNaC::cos(x / 2), 2));
+    same(verify::without_cancellation(a * GiNaC::cosh(x) - a), 2 * a * GiNaC::pow(GiNaC::sinh(x / 2), 2));
+    same(verify::without_cancellation(b * GiNaC::exp(x) - b + y), b * compile::expm1(x) + y);
+    same(verify::without_cancellation(GiNaC::log(1 + x)), compile::log1p(x));
+    same(verify::without_cancellation(GiNaC::log(a / b)), compile::log1p((a - b) / b));
+    same(verify::without_cancellation(GiNaC::acos(1 - y)), 2 * GiNaC::asin(GiNaC::sqrt(y / 2)));
+    same(verify::without_cancellation(GiNaC::acos(y - 1)), GiNaC::Pi - 2 * GiNaC::asin(GiNaC::sqrt(y / 2)));
+    // Nothing cancels: the same expression.
+    same(verify::without_cancellation(E - m * GiNaC::cos(x)), E - m * GiNaC::cos(x));
+    same(verify::without_cancellation(GiNaC::log(a)), GiNaC::log(a));
+    // The identities hold: at a point, each side's value to 30 digits.
+    const GiNaC::exmap at{{x, GiNaC::numeric(1, 7)}, {y, GiNaC::numeric(1, 3)}};
+    for (const GiNaC::ex& e : std::vector<GiNaC::ex>{1 - GiNaC::cos(x), GiNaC::exp(x) - 1, GiNaC::log(1 + x),
+                                                     GiNaC::acos(1 - y), GiNaC::acos(y - 1), GiNaC::cosh(x) - 1}) {
+        const GiNaC::ex gap = GiNaC::evalf(GiNaC::abs((e - verify::without_cancellation(e)).subs(at)));
+        BOOST_TEST((GiNaC::is_a<GiNaC::numeric>(gap) && GiNaC::ex_to<GiNaC::numeric>(gap) < GiNaC::numeric(1, 1000000000)),
+                   e << ": " << gap);
+    }
 }
 
 // A batch loop that calls cos, compiled with -O3 -ffast-math: GCC would make it a loop of

@@ -101,6 +101,20 @@ GiNaC::ex log_without_cancellation(const GiNaC::ex& argument)
     return GiNaC::log(argument);
 }
 
+// acos(1 − y) = 2 asin(√(y/2)) and acos(−1 + y) = π − 2 asin(√(y/2)), y in [0, 2]: an angle
+// near 0 (or π) from a cosine near 1 (or −1), whose rounding 1 − y loses y.
+GiNaC::ex acos_without_cancellation(const GiNaC::ex& argument)
+{
+    if (GiNaC::is_a<GiNaC::add>(argument))
+        for (const GiNaC::ex& term : argument)
+            if (term.is_equal(1) || term.is_equal(-1)) {
+                const GiNaC::ex y = term.is_equal(1) ? 1 - argument : argument + 1;
+                const GiNaC::ex half_angle = 2 * GiNaC::asin(GiNaC::sqrt(y / 2));
+                return term.is_equal(1) ? half_angle : GiNaC::Pi - half_angle;
+            }
+    return GiNaC::acos(argument);
+}
+
 struct rewrite : GiNaC::map_function {
     GiNaC::ex operator()(const GiNaC::ex& e) override
     {
@@ -109,6 +123,8 @@ struct rewrite : GiNaC::map_function {
             return joined_sum(inner);
         if (is_function(inner, "log"))
             return log_without_cancellation(inner.op(0));
+        if (is_function(inner, "acos"))
+            return acos_without_cancellation(inner.op(0));
         return inner;
     }
 };
