@@ -190,6 +190,26 @@ BOOST_AUTO_TEST_CASE(cancelling_sums_and_arguments_are_written_by_their_identiti
     }
 }
 
+// cos a − cos b of two close angles: each cosine rounded, the difference keeps none of their
+// digits, and no identity here writes it otherwise. The kernel is refused, naming the output.
+BOOST_AUTO_TEST_CASE(a_kernel_whose_output_misses_4_ulps_is_refused_naming_it)
+{
+    const std::string text = "id = \"gap\"\ntitle = \"two angles\"\n"
+                             "[[symbol]]\nname = \"a\"\ndomain = \"[0, 3]\"\n"
+                             "[[symbol]]\nname = \"b\"\ndomain = \"[0, 3]\"\n"
+                             "[[symbol]]\nname = \"d\"\n"
+                             "[[step]]\ndefine = \"d\"\nas = \"cos(a) - cos(b)\"\nbecause = \"a difference\"\n"
+                             "[[result]]\nname = \"d\"\n"
+                             "[[kernel]]\nname = \"gap\"\ninputs = [\"a\", \"b\"]\noutputs = [\"d = d\"]\n";
+    const engine::library lib = engine::derive_all({spec::parse_derivation(text, "gap.toml")});
+    std::vector<std::string> missed;
+    pipeline::generate_kernels(lib, &missed);
+    BOOST_REQUIRE(!missed.empty());
+    BOOST_TEST(missed.front().find("gap.toml:18:8: error: kernel 'gap': output 'd' misses its bound of 4 ulps in ") ==
+                   0u,
+               missed.front());
+}
+
 // A batch loop that calls cos, compiled with -O3 -ffast-math: GCC would make it a loop of
 // glibc's vector cos (_ZGVdN4v_cos), whose last bits differ from the scalar cos's; the loop
 // calls the scalar function instead (detail::scalar_cos, never inlined), and writes what the
