@@ -799,28 +799,35 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_whose_output_is_no_input)
                    "or give the batch to a kernel of its own");
 }
 
-BOOST_AUTO_TEST_CASE(pi_is_derived_and_typeset_but_no_kernel_computes_it)
+BOOST_AUTO_TEST_CASE(pi_is_derived_typeset_and_computed_by_a_kernel_but_a_function_it_cannot_call_is_refused)
 {
     const std::string circle = "id = \"p\"\ntitle = \"a circle\"\n[[symbol]]\nname = \"r\"\ndomain = \"positive\"\n"
                                "[[symbol]]\nname = \"A\"\n[[given]]\nname = \"g\"\nequation = \"A = Pi*r^2\"\n"
                                "because = \"a disc\"\n[[step]]\nsolve = [\"g\"]\nfor = [\"A\"]\n[[result]]\nname = \"A\"\n"
                                "[[check]]\nname = \"positive\"\nclaim = \"A > 0\"\n";
     const scratch s;
-    s.write("derivations/p.toml", circle);
+    s.write("derivations/p.toml", circle + "[[kernel]]\nname = \"area\"\ninputs = [\"r\"]\noutputs = [\"A = A\"]\n");
     const run_result derived = s.impact("derive p");
     BOOST_TEST(derived.status == 0, derived.output);
     BOOST_TEST(derived.output.find("proven             positive: A > 0") != std::string::npos, derived.output);
     const run_result latex = s.impact("latex p");
     BOOST_TEST(latex.output.find("\\pi r^{2}") != std::string::npos, latex.output);
-    expect_refused(circle + "[[kernel]]\nname = \"area\"\ninputs = [\"r\"]\noutputs = [\"A = A\"]\n",
-                   "derivations/bad.toml:21:8: error: kernel 'area': a kernel cannot compute Pi (a kernel computes "
-                   "with +, -, *, /, sqrt, abs, pow, acos, atan, atan2 and rational numbers; give any other constant "
-                   "or function, such as Pi or sin(theta), as an input)");
-    // A function the kernels cannot evaluate exactly is named with the same list.
-    expect_refused(circle + "[[kernel]]\nname = \"wave\"\ninputs = [\"r\"]\noutputs = [\"w = sin(r)\"]\n",
-                   "derivations/bad.toml:21:8: error: kernel 'wave': no exact evaluation of std::sin (a kernel "
-                   "computes with +, -, *, /, sqrt, abs, pow, acos, atan, atan2 and rational numbers; give any other "
-                   "constant or function, such as Pi or sin(theta), as an input)");
+    // The kernel computes pi as a constant of its type, the nearest to pi in each.
+    const run_result kernels = s.impact("kernels --derivations derivations --output kernels_out");
+    BOOST_TEST(kernels.status == 0, kernels.output);
+    const auto read = [&](const std::string& file) {
+        std::ifstream in(s.root / "kernels_out/kernels/impact" / file);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    BOOST_TEST(read("area.hpp").find("return r * r * detail::pi<Real>();") != std::string::npos, read("area.hpp"));
+    BOOST_TEST(read("common.hpp").find("return 3.14159265358979323846264338327950288419716939937510F;") !=
+               std::string::npos);
+    // A function no kernel can call is named, with the list of those it can.
+    expect_refused(circle + "[[kernel]]\nname = \"wave\"\ninputs = [\"r\"]\noutputs = [\"w = asinh(r)\"]\n",
+                   "derivations/bad.toml:21:8: error: kernel 'wave': a kernel cannot compute asinh(r): asinh is not "
+                   "among its functions (a kernel computes with +, -, *, /, sqrt, rational numbers, Pi, abs, sin, cos, "
+                   "tan, asin, acos, atan, atan2, exp, log, sinh, cosh, tanh and pow; give any other constant or "
+                   "function as an input)");
 }
 
 BOOST_AUTO_TEST_CASE(an_empty_file)

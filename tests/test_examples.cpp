@@ -13,8 +13,10 @@
 #include "emit/verification.h"
 #include "engine/library/library.h"
 #include "pipeline/regenerate.h"
+#include "verify/choice.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
@@ -22,6 +24,8 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace {
 
@@ -88,7 +92,7 @@ BOOST_AUTO_TEST_SUITE(test_examples)
 
 BOOST_AUTO_TEST_CASE(every_example_is_derived_with_every_check_proven)
 {
-    const std::set<std::string> expected = {"pendulum", "pushed_block", "pushed_puck", "seesaw", "spring",
+    const std::set<std::string> expected = {"compton", "pendulum", "pushed_block", "pushed_puck", "seesaw", "spring",
                                             "thrown_ball"};
     BOOST_TEST((std::set<std::string>(examples().order.begin(), examples().order.end()) == expected));
     for (const std::string& id : examples().order) {
@@ -299,6 +303,67 @@ BOOST_AUTO_TEST_CASE(a_pushed_puck_gains_the_impulse_of_the_force)
     BOOST_TEST(output_named(push, "E_push").bound_ulps[1] == 4.0);
     BOOST_TEST(output_named(push, "E_push").bound_ulps[2] == 4.0);
     BOOST_TEST(kernel_named(d, "push_velocity").batch);
+}
+
+// Compton scattering: E' = E/(1 + (E/(m_e c^2))(1 - cos theta)), and the electron's T_e = E - E'.
+// Its kernel calls sin: a small angle's 1 - cos(theta), which cos(theta) rounded to 1 makes 0,
+// is computed as 2 sin^2(theta/2), within 4 ulps in every type and regime, small angles among them.
+BOOST_AUTO_TEST_CASE(a_photon_scattered_by_a_small_angle_loses_what_its_kernel_computes_within_4_ulps)
+{
+    const engine::derivation& d = example("compton");
+    const GiNaC::ex E = sym(d, "E"), E_0 = sym(d, "E_0"), theta = sym(d, "theta");
+    BOOST_TEST(equal(value_of(d, "Ep"), E / (1 + (E / E_0) * (1 - GiNaC::cos(theta)))));
+    const engine::kernel& k = kernel_named(d, "compton");
+    const verify::kernel_plan plan = verify::plan_kernel(k, engine::declaration_order(d.symbols));
+    BOOST_REQUIRE_EQUAL(plan.components.size(), 2u);
+    for (std::size_t i = 0; i < plan.components.size(); ++i) {
+        const verify::component_plan& cp = plan.components[i];
+        BOOST_TEST(cp.candidates[cp.chosen].label.find("no cancellation") != std::string::npos, cp.name);
+        BOOST_TEST(plan.emitted[i].in_float.max_ulps <= 4.0, cp.name);
+        BOOST_TEST(plan.emitted[i].in_double.max_ulps <= 4.0, cp.name);
+        BOOST_TEST(plan.emitted[i].in_long_double.max_ulps <= 4.0, cp.name);
+    }
+    // Small angles are among the samples (theta within 3e-12 .. 0.3 of 0).
+    BOOST_TEST(std::any_of(plan.samples.begin(), plan.samples.end(),
+                           [](const verify::sample& s) { return s.regime == "theta near 0" && s.inputs[2] < 1e-9; }));
+
+    // The kernel compiled and run: against the closed forms, typed here.
+    namespace fs = std::filesystem;
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(examples(), &missed);
+    BOOST_TEST(missed.empty());
+    const fs::path dir = fs::temp_directory_path() / ("impact_test_compton_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const auto& [path, text] : files) {
+        fs::create_directories((dir / path).parent_path());
+        std::ofstream(dir / path) << text;
+    }
+    std::ofstream(dir / "main.cpp")
+        << "#include \"impact/compton.hpp\"\n#include <cmath>\n#include <cstdio>\n"
+           "template <class Real>\nbool near(Real x, Real want) { return std::fabs(x - want) <= 4 * "
+           "std::numeric_limits<Real>::epsilon() * std::fabs(want); }\n"
+           "int main()\n{\n"
+           // No turn: E' = E, T_e = 0.
+           "    const auto straight = impact::compton<double>(2.0, 1.0, 0.0);\n"
+           "    const bool a = straight.Ep == 2.0 && straight.T_e == 0.0;\n"
+           // A right angle: 1/E' = 1/E + 1/E_0, E' = 3/4 for E = 3, E_0 = 1; T_e = 9/4.
+           "    const auto right = impact::compton<double>(3.0, 1.0, 1.5707963267948966);\n"
+           "    const bool b = near(right.Ep, 0.75) && near(right.T_e, 2.25);\n"
+           // theta = 1e-8: T_e = E (E/E_0) theta^2/2 (1 + O(theta^2)) = 5e-17 for E = E_0 = 1,
+           // where 1 - cos(theta) in double is 0.
+           "    const auto small = impact::compton<double>(1.0, 1.0, 1e-8);\n"
+           "    const bool c = near(small.T_e, 5e-17) && small.Ep == 1.0;\n"
+           "    const auto small_f = impact::compton<float>(1.0f, 1.0f, 1e-4f);\n"
+           "    const bool e = near(small_f.T_e, 5e-9f);\n"
+           "    const auto small_l = impact::compton<long double>(1.0L, 1.0L, 1e-10L);\n"
+           "    const bool f = near(small_l.T_e, 5e-21L);\n"
+           "    std::printf(\"%d %d %d %d %d\\n\", a, b, c, e, f);\n"
+           "    return a && b && c && e && f ? 0 : 1;\n}\n";
+    const std::string command = std::string(IMPACT_CXX) + " -std=c++17 -O2 -I" + (dir / "kernels").string() + " " +
+                                (dir / "main.cpp").string() + " -o " + (dir / "main").string() + " && " +
+                                (dir / "main").string();
+    BOOST_TEST(std::system(command.c_str()) == 0, command);
+    fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(a_pushed_block_sticks_up_to_mu_m_g_then_slides)

@@ -5,8 +5,10 @@
 // compensated.cpp; the class, shared by both, in compiler.h.
 #include "compile/compiler.h"
 
+#include "compile/functions.h"
 #include "engine/cases/cases.h"
 
+#include <cln/cln.h>
 #include <fmt/format.h>
 
 #include <sstream>
@@ -132,6 +134,21 @@ int compiler::constant(const GiNaC::numeric& n)
     return v;
 }
 
+// π: a constant of its own, rounded to the type where it is run or printed (rounded_pi,
+// detail::pi<Real>()); its value, kept for the bounds of a range and the exact reference,
+// within 10^-80 of it.
+int compiler::pi()
+{
+    if (pi_ >= 0)
+        return pi_;
+    instruction in;
+    in.op = opcode::constant;
+    in.pi = true;
+    in.value = GiNaC::numeric(cln::cl_N(cln::rational(cln::pi(cln::float_format(80)))));
+    pi_ = emit(in);
+    return pi_;
+}
+
 int compiler::call(const std::string& function, std::vector<int> arguments)
 {
     instruction in;
@@ -173,11 +190,17 @@ int compiler::compute(const GiNaC::ex& e)
         const int discarded = in_branch(condition, false, e.op(2));
         return op(opcode::select, condition, taken, discarded);
     }
+    if (e.is_equal(GiNaC::Pi))
+        return pi();
     if (GiNaC::is_a<GiNaC::function>(e)) {
+        const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+        if (!is_library_function(name))
+            throw std::invalid_argument(fmt::format("a kernel cannot compute {}: {} is not among its functions",
+                                                    order_symbolless(e), name));
         std::vector<int> arguments;
         for (std::size_t i = 0; i < e.nops(); ++i)
             arguments.push_back(value(e.op(i)));
-        return call(GiNaC::ex_to<GiNaC::function>(e).get_name(), arguments);
+        return call(name, arguments);
     }
     throw std::invalid_argument("a kernel cannot compute " + order_symbolless(e));
 }

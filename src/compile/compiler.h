@@ -62,6 +62,7 @@ private:
     int emit(instruction in);
     int op(opcode code, int a, int b = -1, int c = -1);
     int constant(const GiNaC::numeric& n);
+    int pi();
     int call(const std::string& function, std::vector<int> arguments);
     int compute(const GiNaC::ex& e);
     static std::string order_symbolless(const GiNaC::ex& e);
@@ -80,6 +81,7 @@ private:
     std::map<int, std::map<GiNaC::ex, pair, GiNaC::ex_is_less>> known_pairs_;
     std::map<GiNaC::numeric, int, std::less<>> constants_;
     std::map<std::tuple<int, int, int, int>, int> ops_;
+    int pi_ = -1;  // the constant π, once computed
     bool correcting_ = false;  // the operations made now are corrections
     bool in_condition_ = false;  // compiling the condition of cases, compensated without divisions
     std::vector<std::pair<int, bool>> branch_;  // the branches being compiled: condition, taken where positive

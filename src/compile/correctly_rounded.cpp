@@ -1,7 +1,9 @@
-// The C library functions a program calls (acos, atan, atan2, pow), correctly rounded to
+// The C library functions a program calls (compile/functions.h), correctly rounded to
 // float, double and long double by CLN, so that the interpreter (compile::run) gives the
 // same values on every machine (compile/program.h, correctly_rounded).
 #include "compile/program.h"
+
+#include "compile/functions.h"
 
 #include <cln/cln.h>
 
@@ -29,30 +31,17 @@ cln::cl_RA exactly(Real x)
     return sum * cln::expt(cln::cl_RA(2), exponent);
 }
 
-// std::`function`(a, b) for a >= 0 (atan, atan2: odd in a; the caller gives a's sign back):
-// exactly where it is rational (pow to an integer power), else to 60 digits, as a rational;
-// nullopt for infinities and NaN (which the kernels' guards refuse before they compute),
-// atan2(0, 0), arguments outside the function's domain and pow of 0, left to the C library.
+// std::`function`(a, b) (for an odd function, a >= 0: the caller gives a's sign back) to 60
+// digits, as a rational (exactly where it is rational: pow to an integer power); nullopt for
+// infinities and NaN (which the kernels' guards refuse before they compute) and where the
+// function has no finite value (compile/functions.h, exact_value), left to the C library.
 template <class Real>
 std::optional<cln::cl_RA> value_of(const std::string& function, Real a, Real b)
 {
     if (!std::isfinite(a) || !std::isfinite(b))
         return std::nullopt;
-    const cln::float_format_t digits = cln::float_format(60);
-    const auto rational = [&](const cln::cl_R& v) { return cln::rational(cln::cl_float(v, digits)); };
-    const cln::cl_RA x = exactly(a), y = exactly(b);
-    if (function == "atan")
-        return rational(cln::atan(cln::cl_float(x, digits)));
-    if (function == "atan2" && !(a == 0 && b == 0))
-        return rational(cln::atan(cln::cl_float(y, digits), cln::cl_float(x, digits)));  // the point (b, a)
-    if (function == "acos" && a >= -1 && a <= 1)
-        return rational(cln::realpart(cln::acos(cln::cl_float(x, digits))));
-    if (function == "pow" && a != 0) {
-        if (cln::denominator(y) == 1 && cln::abs(y) <= 4096)  // exactly: a tie is then rounded to even
-            return cln::expt(x, cln::numerator(y));
-        if (a > 0)
-            return rational(cln::exp(cln::cl_float(y, digits) * cln::ln(cln::cl_float(x, digits))));
-    }
+    if (const std::optional<cln::cl_R> v = exact_value(function, exactly(a), exactly(b), 60))
+        return cln::rational(*v);
     return std::nullopt;
 }
 
@@ -85,12 +74,34 @@ std::optional<Real> nearest(const cln::cl_RA& q)
 template <class Real>
 Real library_call(const std::string& function, Real a, Real b)
 {
+    if (function == "sin")
+        return std::sin(a);
+    if (function == "cos")
+        return std::cos(a);
+    if (function == "tan")
+        return std::tan(a);
+    if (function == "asin")
+        return std::asin(a);
     if (function == "acos")
         return std::acos(a);
     if (function == "atan")
         return std::atan(a);
     if (function == "atan2")
         return std::atan2(a, b);
+    if (function == "exp")
+        return std::exp(a);
+    if (function == "expm1")
+        return std::expm1(a);
+    if (function == "log")
+        return std::log(a);
+    if (function == "log1p")
+        return std::log1p(a);
+    if (function == "sinh")
+        return std::sinh(a);
+    if (function == "cosh")
+        return std::cosh(a);
+    if (function == "tanh")
+        return std::tanh(a);
     if (function == "pow")
         return std::pow(a, b);
     throw std::invalid_argument("no interpreter for std::" + function);
@@ -99,11 +110,14 @@ Real library_call(const std::string& function, Real a, Real b)
 template <class Real>
 Real rounded_call(const std::string& function, Real a, Real b)
 {
-    // atan and atan2 are odd in a: computed for |a|, a's sign (of a zero too) given back.
-    const bool odd = function == "atan" || function == "atan2";
+    // An odd function is computed for |a|, a's sign (of a zero too) given back; a zero's
+    // sign is kept by the others that are 0 there (expm1, log1p).
+    const bool odd = is_odd_function(function);
+    if (a == 0 && (function == "expm1" || function == "log1p"))
+        return a;
     if (const std::optional<cln::cl_RA> exact = value_of(function, odd ? std::fabs(a) : a, b))
         if (const std::optional<Real> value = nearest<Real>(*exact))
-            return odd ? std::copysign(*value, a) : *value;
+            return odd && std::signbit(a) ? -*value : *value;   // f(-x) = -f(x), f(-0) = -0
     return library_call(function, a, b);
 }
 
@@ -124,6 +138,33 @@ double correctly_rounded(const std::string& function, double a, double b)
 long double correctly_rounded(const std::string& function, long double a, long double b)
 {
     return rounded_call(function, a, b);
+}
+
+// π to 60 digits, rounded once more to the type (no second rounding: π is not within
+// 2^-199 of a tie of any of them).
+template <class Real>
+Real nearest_pi()
+{
+    static const Real value = *nearest<Real>(cln::rational(cln::pi(cln::float_format(60))));
+    return value;
+}
+
+template <>
+float rounded_pi<float>()
+{
+    return nearest_pi<float>();
+}
+
+template <>
+double rounded_pi<double>()
+{
+    return nearest_pi<double>();
+}
+
+template <>
+long double rounded_pi<long double>()
+{
+    return nearest_pi<long double>();
 }
 
 } // namespace impact::compile

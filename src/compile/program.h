@@ -26,8 +26,9 @@ struct instruction {
     opcode op = opcode::constant;
     int a = -1, b = -1, c = -1;   ///< operands: indices of earlier instructions
     int input = -1;               ///< for `input`: the index among the program's inputs
-    GiNaC::numeric value;         ///< for `constant`: an exact rational
-    std::string function;         ///< for `call`: acos, atan2, pow, ...
+    GiNaC::numeric value;         ///< for `constant`: an exact rational (π's within 10^-80 of it)
+    bool pi = false;              ///< for `constant`: π, rounded to the type (`rounded_pi`)
+    std::string function;         ///< for `call`: sin, atan2, pow, ... (compile/functions.h)
     /// A correction of compensated arithmetic (the low part of a value: a rounding error,
     /// a remainder, what carries them), not a value of the arithmetic itself: its
     /// magnitude is naturally near the rounding error of another, even below the normal
@@ -142,17 +143,28 @@ divisor_groups grouped_divisors(const program& p);
 /// division by a late divisor before the last late one.
 bool divides_early(const program& p);
 
-/// A C library function a program calls (acos, atan, atan2, pow; `b` is atan2's x and pow's
+/// A C library function a program calls (compile/functions.h; `b` is atan2's x and pow's
 /// exponent) correctly rounded to the type, computed by CLN to 60 digits (pow to an integer
 /// power exactly): an interpreted program gives the same values on every machine, while the C
 /// library's own result differs between libraries and CPUs in its last bit (x87's `fpatan`,
 /// which glibc's long double atan2 uses, on Intel and AMD). Signed zeros are kept (atan2(-0, -1)
-/// is -pi). Infinities and NaN, which a kernel's guards refuse before it computes, atan2(0, 0),
-/// pow of 0 and arguments outside a function's domain are left to the C library. `abs` is exact
-/// and never passes here.
+/// is -pi, sin(-0) and expm1(-0) are -0). Infinities and NaN, which a kernel's guards refuse
+/// before it computes, atan2(0, 0), pow of 0 and arguments outside a function's domain are left
+/// to the C library. `abs` is exact and never passes here.
 float correctly_rounded(const std::string& function, float a, float b);
 double correctly_rounded(const std::string& function, double a, double b);
 long double correctly_rounded(const std::string& function, long double a, long double b);
+
+/// π rounded to the nearest float, double or long double (by CLN): a program's constant π,
+/// as a kernel's `detail::pi<Real>()` gives it (emit/cxx_common.cpp).
+template <class Real>
+Real rounded_pi();
+template <>
+float rounded_pi<float>();
+template <>
+double rounded_pi<double>();
+template <>
+long double rounded_pi<long double>();
 
 /// Every value of `p` run in the floating-point type `Real`, exactly as the printed C++
 /// computes it (`run` keeps the outputs), its C library calls correctly rounded
@@ -166,7 +178,8 @@ std::vector<Real> run_values(const program& p, const std::vector<Real>& inputs)
         switch (in.op) {
         case opcode::input: v[i] = inputs[in.input]; break;
         case opcode::constant:
-            v[i] = in.value.is_integer() ? static_cast<Real>(in.value.to_double())
+            v[i] = in.pi ? rounded_pi<Real>()
+                 : in.value.is_integer() ? static_cast<Real>(in.value.to_double())
                                          : static_cast<Real>(in.value.numer().to_double()) /
                                                static_cast<Real>(in.value.denom().to_double());
             break;

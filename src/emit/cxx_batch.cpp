@@ -157,7 +157,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             // inputs (GCC vectorises this, not `fails &= admitted`).
             out += "            const std::int64_t admitted = outcome == status::ok;\n"
                    "            impact::status condition = status::ok;\n";
-            const cxx_code given = program_cxx(plan.code, element_names, "admitted");
+            const cxx_code given = program_cxx(plan.code, element_names, "admitted", {}, true);
             for (std::size_t s = 0; s < given.statements.size(); ++s)
                 if (for_guards[given.statement_values[s]])
                     out += "            " + given.statements[s] + "\n";
@@ -198,7 +198,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const compile::program arithmetic = for_registers ? compile::ordered_for_registers(outputs_only) : outputs_only;
     const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
     const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
-                                      with_status ? for_outputs : std::vector<bool>{});
+                                      with_status ? for_outputs : std::vector<bool>{}, true);
     // The inputs the arithmetic reads (a wall's point and centre only its guards read).
     std::vector<bool> read(inputs.size(), false);
     for (std::size_t v = 0; v < arithmetic.code.size(); ++v)

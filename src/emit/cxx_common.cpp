@@ -4,6 +4,7 @@
 #include "emit/cxx.h"
 #include "emit/cxx_parts.h"
 
+#include <cln/cln.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,6 +19,25 @@
 namespace impact::emit {
 
 using namespace cxx_detail;
+
+namespace {
+
+bool uses_pi(const compile::program& p)
+{
+    return std::any_of(p.code.begin(), p.code.end(), [](const compile::instruction& in) { return in.pi; });
+}
+
+// π's first `n` decimals after "3.", truncated (its value within 10^-n).
+std::string pi_digits(int n)
+{
+    const cln::cl_I scaled = cln::floor1(cln::pi(cln::float_format(static_cast<unsigned long>(n + 20))) *
+                                         cln::expt_pos(cln::cl_I(10), n));
+    std::ostringstream text;
+    text << scaled;
+    return text.str().substr(0, 1) + "." + text.str().substr(1);
+}
+
+} // namespace
 
 namespace cxx_detail {
 
@@ -227,6 +247,49 @@ std::string common_header(const std::vector<const kernel_plan*>& plans, const st
                "    }\n"
                "    return 2 * most > K;\n}\n\n"
                "} // namespace detail\n";
+
+    if (std::any_of(plans.begin(), plans.end(), [](const kernel_plan* plan) {
+            return uses_pi(plan->code) || uses_pi(plan->fast_code);
+        })) {
+        // π to 50 digits, from CLN: the compiler rounds the literal to the type once.
+        const std::string digits = pi_digits(50);
+        out += fmt::format("\nnamespace detail {{\n\n"
+                           "/// pi rounded to Real: the nearest float, double and long double (the literal's 50\n"
+                           "/// digits rounded once, by the compiler, to the type of its suffix).\n"
+                           "template <class Real>\nconstexpr Real pi() noexcept\n{{\n"
+                           "    if constexpr (std::is_same_v<Real, float>)\n        return {0}F;\n"
+                           "    else if constexpr (std::is_same_v<Real, double>)\n        return {0};\n"
+                           "    else\n        return static_cast<Real>({0}L);\n}}\n\n"
+                           "}} // namespace detail\n",
+                           digits);
+    }
+
+    // The functions batch loops call, each through a wrapper never inlined.
+    std::set<std::string> batch_calls;
+    for (const kernel_plan* plan : plans)
+        if (plan->kernel->batch)
+            for (const compile::program* p : {&plan->code, &plan->fast_code})
+                for (const compile::instruction& in : p->code)
+                    if (in.op == compile::opcode::call && in.function != "abs")
+                        batch_calls.insert(in.function);
+    if (!batch_calls.empty()) {
+        out += "\n// A function never inlined.\n#if defined(__GNUC__) || defined(__clang__)\n"
+               "#define IMPACT_NEVER_INLINE __attribute__((noinline))\n#elif defined(_MSC_VER)\n"
+               "#define IMPACT_NEVER_INLINE __declspec(noinline)\n#else\n#define IMPACT_NEVER_INLINE\n#endif\n\n"
+               "namespace detail {\n\n"
+               "// The C library's functions as a batch loop calls them: the scalar function, as the\n"
+               "// scalar kernel calls it, never a vector one. Under -ffast-math, <math.h> declares them\n"
+               "// with vector variants (glibc's libmvec, whose last bits differ), and GCC 12 then\n"
+               "// vectorised a loop calling std::sin with _ZGVdN4v_sin (Clang with -fveclib=libmvec);\n"
+               "// a call of a function never inlined is never vectorised.\n";
+        for (const std::string& f : batch_calls) {
+            const bool two = f == "atan2" || f == "pow";
+            out += fmt::format("template <class Real>\nIMPACT_NEVER_INLINE Real scalar_{0}(Real a{1}) noexcept\n{{\n"
+                               "    return std::{0}(a{2});\n}}\n",
+                               f, two ? ", Real b" : "", two ? ", b" : "");
+        }
+        out += "\n} // namespace detail\n";
+    }
 
     // Array kernels are emitted in several dimensions; their structures are templates on
     // the dimension, written once, each member shaped as every dimension needs it.

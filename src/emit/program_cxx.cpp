@@ -83,7 +83,7 @@ std::string underflow_test(const program& p, std::size_t v, const std::vector<st
 } // namespace
 
 cxx_code program_cxx(const program& p, const std::vector<std::string>& names, const std::string& kept_if,
-                     const std::vector<bool>& watched)
+                     const std::vector<bool>& watched, bool in_batch_loop)
 {
     // A value used more than once gets a name; one used once is written in place, with
     // the parentheses that keep the program's tree (C++ evaluates a - b + c as (a - b) + c,
@@ -128,8 +128,8 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
         switch (in.op) {
         case opcode::input: expression = names.at(in.input); break;
         case opcode::constant:
-            expression = literal(in.value);
-            own = in.value.is_integer() ? atom : product;
+            expression = in.pi ? "detail::pi<Real>()" : literal(in.value);
+            own = in.pi || in.value.is_integer() ? atom : product;
             break;
         case opcode::add: expression = operand(in.a, sum) + " + " + operand(in.b, product); own = sum; break;
         case opcode::sub: expression = operand(in.a, sum) + " - " + operand(in.b, product); own = sum; break;
@@ -165,9 +165,13 @@ cxx_code program_cxx(const program& p, const std::vector<std::string>& names, co
             break;
         case opcode::call:
             // |x| as std::fabs: std::abs(double) is a wrapper of <cmath>, compiled with the
-            // caller's flags, which GCC does not inline into the kernels' precise code.
-            expression = "std::" + (in.function == "abs" ? std::string("fabs") : in.function) + "(" + text[in.a] +
-                         (in.b >= 0 ? ", " + text[in.b] : "") + ")";
+            // caller's flags, which GCC does not inline into the kernels' precise code. In a
+            // batch loop, any other function through detail::scalar_<name>, never inlined: the
+            // scalar C library function, never a vector one (common.hpp says why).
+            expression = (in.function == "abs" ? std::string("std::fabs")
+                          : !in_batch_loop     ? "std::" + in.function
+                                               : "detail::scalar_" + in.function) +
+                         "(" + text[in.a] + (in.b >= 0 ? ", " + text[in.b] : "") + ")";
             break;
         }
         const bool named = uses[i] > 1 && !is_leaf(in);

@@ -55,7 +55,9 @@ struct cxx_code {
     /// overflow (atan2 of an infinity is finite), so a kernel tests them as it tests its results.
     std::vector<std::string> arguments;
 };
+/// With `in_batch_loop`, a call of a C library function other than fabs is written
+/// `detail::scalar_<name>(...)` (common.hpp), the scalar function never made a vector one.
 cxx_code program_cxx(const compile::program& p, const std::vector<std::string>& names, const std::string& kept_if = {},
-                     const std::vector<bool>& watched = {});
+                     const std::vector<bool>& watched = {}, bool in_batch_loop = false);
 
 } // namespace impact::emit

@@ -5,9 +5,12 @@
 // missed_bounds.cpp.
 #include "verify/choice.h"
 
+#include "verify/cancellation.h"
+
 #include "engine/cases/cases.h"
 #include "engine/prove/sign.h"
 
+#include <cln/integer.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -40,13 +43,20 @@ std::uint64_t seed_of(const engine::kernel& k)
 }
 
 // The candidate forms of one output component: those the engine proved, and the
-// derived value expanded and factored.
+// derived value expanded and factored; each also without its cancellations.
 std::vector<engine::form> forms_of(const engine::kernel_output& o, std::size_t c)
 {
     std::vector<engine::form> forms = o.candidates[c];
     for (const char* which : {"expanded", "factored"})
         if (auto f = derived_form(o, c, which))
             forms.push_back(*f);
+    // Each without the cancellations of its functions (1 − cos θ as 2 sin²(θ/2), ...).
+    const std::size_t written = forms.size();
+    for (std::size_t f = 0; f < written; ++f) {
+        const GiNaC::ex rewritten = without_cancellation(forms[f].value);
+        if (!rewritten.is_equal(forms[f].value))
+            forms.push_back({forms[f].label + ", no cancellation", rewritten});
+    }
     // The same expression twice is one candidate.
     std::vector<engine::form> distinct;
     for (const engine::form& f : forms) {
@@ -57,6 +67,21 @@ std::vector<engine::form> forms_of(const engine::kernel_output& o, std::size_t c
             distinct.push_back(f);
     }
     return distinct;
+}
+
+// The divisions of p but those by a power of 2 (θ/2 in sin²(θ/2)), which are exact and which
+// compilers make multiplications.
+std::size_t true_divisions(const compile::program& p)
+{
+    return static_cast<std::size_t>(std::count_if(p.code.begin(), p.code.end(), [&](const compile::instruction& in) {
+        if (in.op != compile::opcode::div)
+            return false;
+        const compile::instruction& by = p.code[static_cast<std::size_t>(in.b)];
+        if (by.op != compile::opcode::constant || by.pi || !by.value.is_integer() || !by.value.is_positive())
+            return true;
+        const cln::cl_I n = cln::the<cln::cl_I>(by.value.to_cl_N());
+        return cln::power2p(n) == 0;   // not a power of 2
+    }));
 }
 
 bool better(const verify::accuracy& a, const verify::accuracy& b)
@@ -228,7 +253,7 @@ private:
     }
 
     // No square root or division that the mathematics does not need: only the forms with
-    // the fewest of them (e.g. the rotation-free lab-frame form, not the rotation matrix
+    // the fewest of them (a division by a power of 2 is none) (e.g. the rotation-free lab-frame form, not the rotation matrix
     // with its |r|) are candidates, each with and without fused multiply-adds.
     std::vector<candidate_result> leanest_candidates(component_plan& cp, std::vector<engine::form> forms) const
     {
@@ -250,7 +275,7 @@ private:
         std::vector<std::pair<std::size_t, std::size_t>> cost;
         for (const engine::form& f : forms) {
             const compile::program p = compile::compile_program({f.value}, inputs_, order_, {}, k_.lets);
-            cost.emplace_back(count(p, compile::opcode::sqrt), count(p, compile::opcode::div));
+            cost.emplace_back(count(p, compile::opcode::sqrt), true_divisions(p));
         }
         const auto leanest = *std::min_element(cost.begin(), cost.end());
         std::vector<candidate_result> plain;
@@ -461,11 +486,12 @@ kernel_plan plan_kernel(const engine::kernel& k, const engine::term_order& order
     try {
         return chooser(k, order).choose();
     } catch (const std::invalid_argument& e) {
-        // What compile cannot turn into operations of the kernel (a constant such as Pi):
+        // What compile cannot turn into operations of the kernel (a constant such as Euler's):
         // the kernel's mistake, at its place in the file.
-        throw error(k.where, fmt::format("kernel '{}': {} (a kernel computes with +, -, *, /, sqrt, abs, pow, acos, "
-                                         "atan, atan2 and rational numbers; give any other constant or function, "
-                                         "such as Pi or sin(theta), as an input)",
+        throw error(k.where, fmt::format("kernel '{}': {} (a kernel computes with +, -, *, /, sqrt, rational "
+                                         "numbers, Pi, abs, sin, cos, tan, asin, acos, atan, atan2, exp, log, "
+                                         "sinh, cosh, tanh and pow; give any other constant or function as an "
+                                         "input)",
                                          k.name, e.what()));
     }
 }

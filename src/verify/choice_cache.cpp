@@ -2,6 +2,7 @@
 #include "verify/choice.h"
 
 #include "cache/store.h"
+#include "verify/cancellation.h"
 
 #include <fmt/format.h>
 
@@ -94,7 +95,7 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
     // Everything plan_kernel reads of the kernel, printed in the derivation's term order
     // (GiNaC's own printing changes from run to run), and the build that measures.
     writer w;
-    w.text("kernel choice, format 5");
+    w.text("kernel choice, format 6");
     w.text(cache::program_fingerprint());
     w.count(kernel_samples);
     w.number(target_ulps);
@@ -169,7 +170,30 @@ std::string encode_choice(const kernel_plan& plan, const engine::term_order& ord
         const component_plan& cp = plan.components[i];
         const engine::kernel_output& o = k.outputs[all[i].first];
         const std::size_t component = all[i].second;
-        std::optional<engine::form> expanded;
+        std::optional<engine::form> expanded, factored;
+        // Where a candidate's form comes from (one of the engine's forms, or the derived value
+        // expanded or factored, or one of those without its cancellations), so that reading
+        // it back does not factor every output again; and its text, to check it against.
+        const auto origin_of = [&](const GiNaC::ex& value) {
+            for (const bool rewritten : {false, true}) {
+                const auto as = [&](const GiNaC::ex& e) { return rewritten ? without_cancellation(e) : e; };
+                const std::string prefix = rewritten ? "no cancellation: " : "";
+                for (std::size_t j = 0; j < o.candidates[component].size(); ++j)
+                    if (as(o.candidates[component][j].value).is_equal(value))
+                        return prefix + fmt::format("engine {}", j);
+                if (!expanded)
+                    expanded = derived_form(o, component, "expanded");
+                if (expanded && as(expanded->value).is_equal(value))
+                    return prefix + "expanded";
+                if (!rewritten)
+                    continue;   // factored, unless it is a rewritten form
+                if (!factored)
+                    factored = derived_form(o, component, "factored");
+                if (factored && as(factored->value).is_equal(value))
+                    return prefix + "factored";
+            }
+            return std::string("factored");
+        };
         w.text(cp.name);
         w.count(cp.chosen);
         w.count(cp.fastest);
@@ -177,19 +201,7 @@ std::string encode_choice(const kernel_plan& plan, const engine::term_order& ord
         w.count(cp.pruned);
         w.count(cp.candidates.size());
         for (const candidate_result& r : cp.candidates) {
-            // Where a candidate's form comes from (one of the engine's forms, or the
-            // derived value expanded or factored), so that reading it back does not
-            // factor every output again; and its text, to check it against.
-            std::string origin;
-            for (std::size_t j = 0; j < o.candidates[component].size() && origin.empty(); ++j)
-                if (o.candidates[component][j].value.is_equal(r.value))
-                    origin = fmt::format("engine {}", j);
-            if (origin.empty()) {
-                if (!expanded)
-                    expanded = derived_form(o, component, "expanded");
-                origin = expanded && expanded->value.is_equal(r.value) ? "expanded" : "factored";
-            }
-            w.text(origin);
+            w.text(origin_of(r.value));
             w.text(order.text(r.value));
             w.text(r.label);
             w.count(r.fma);
@@ -232,10 +244,14 @@ std::optional<kernel_plan> decode_choice(const std::string& text, const engine::
             return std::nullopt;
         for (std::size_t c = 0; c < n; ++c) {
             candidate_result cr;
-            const std::string origin = r.text();
+            std::string origin = r.text();
             const std::string value_text = r.text();
             if (!r.ok)
                 return std::nullopt;
+            const std::string rewritten = "no cancellation: ";
+            const bool is_rewritten = origin.rfind(rewritten, 0) == 0;
+            if (is_rewritten)
+                origin = origin.substr(rewritten.size());
             if (origin.rfind("engine ", 0) == 0) {
                 const std::size_t j = std::strtoull(origin.c_str() + 7, nullptr, 10);
                 if (j >= o.candidates[component].size())
@@ -252,6 +268,8 @@ std::optional<kernel_plan> decode_choice(const std::string& text, const engine::
             } else {
                 return std::nullopt;
             }
+            if (is_rewritten)
+                cr.value = without_cancellation(cr.value);
             if (order.text(cr.value) != value_text)
                 return std::nullopt;
             cr.label = r.text();

@@ -1,14 +1,33 @@
 #include "verify/measure.h"
 
+#include "compile/functions.h"
 #include "verify/accuracy.h"
+#include "verify/cancellation.h"
+
+#include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace impact::verify {
 namespace {
 
 constexpr int reference_digits = 60;
+
+// std::`function`(a, b) to the reference's digits (compile/functions.h).
+GiNaC::numeric exact_call(const std::string& function, const GiNaC::numeric& a, const GiNaC::numeric& b)
+{
+    const auto real = [](const GiNaC::numeric& x) { return cln::the<cln::cl_R>(x.to_cl_N()); };
+    const std::optional<cln::cl_R> v = compile::exact_value(function, real(a), real(b), reference_digits);
+    if (!v)
+        throw std::invalid_argument(fmt::format("std::{}({}{}) has no finite real value, at inputs drawn from the "
+                                                "inputs' domains; give the inputs domains where it has one",
+                                                function, a.to_double(), function == "atan2" || function == "pow"
+                                                                             ? fmt::format(", {}", b.to_double())
+                                                                             : std::string()));
+    return GiNaC::numeric(cln::cl_N(*v));
+}
 
 // The program run in CLN, in the precision of its inputs (60 digits in compute_reference).
 std::vector<GiNaC::numeric> run_exact(const compile::program& p, const std::vector<GiNaC::numeric>& inputs)
@@ -18,7 +37,9 @@ std::vector<GiNaC::numeric> run_exact(const compile::program& p, const std::vect
         const compile::instruction& in = p.code[i];
         switch (in.op) {
         case compile::opcode::input: v[i] = inputs[in.input]; break;
-        case compile::opcode::constant: v[i] = in.value; break;
+        case compile::opcode::constant:
+            v[i] = in.pi ? GiNaC::ex_to<GiNaC::numeric>(GiNaC::Pi.evalf()) : in.value;
+            break;
         case compile::opcode::add: v[i] = v[in.a] + v[in.b]; break;
         case compile::opcode::sub: v[i] = v[in.a] - v[in.b]; break;
         case compile::opcode::mul: v[i] = v[in.a] * v[in.b]; break;
@@ -30,18 +51,11 @@ std::vector<GiNaC::numeric> run_exact(const compile::program& p, const std::vect
         // cases agree, and either gives the value).
         case compile::opcode::select: v[i] = v[in.a].is_positive() ? v[in.b] : v[in.c]; break;
         case compile::opcode::call:
-            if (in.function == "acos")
-                v[i] = GiNaC::acos(v[in.a]);
-            else if (in.function == "atan")
-                v[i] = GiNaC::atan(v[in.a]);
-            else if (in.function == "atan2")
-                v[i] = GiNaC::atan(v[in.a], v[in.b]);
-            else if (in.function == "abs")
+            if (in.function == "abs") {
                 v[i] = GiNaC::abs(v[in.a]);
-            else if (in.function == "pow")
-                v[i] = GiNaC::exp(GiNaC::log(v[in.a]) * v[in.b]);
-            else
-                throw std::invalid_argument("no exact evaluation of std::" + in.function);
+                break;
+            }
+            v[i] = exact_call(in.function, v[in.a], in.b >= 0 ? v[in.b] : GiNaC::numeric(0));
             break;
         }
     }
@@ -96,7 +110,9 @@ reference compute_reference(const engine::kernel& k, const std::vector<sample>& 
                 length = n;
             }
         }
-        expressions.push_back(shortest);
+        // Without the cancellations the functions' identities remove (1 − cos θ as 2 sin²(θ/2)):
+        // 60 digits are then 60 digits of the value at every sample, a small angle's too.
+        expressions.push_back(without_cancellation(shortest));
     }
     for (const engine::kernel_output& o : k.outputs)
         expressions.push_back(o.scale_factor);
