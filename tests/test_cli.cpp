@@ -279,7 +279,7 @@ BOOST_AUTO_TEST_CASE(a_file_is_derived_whatever_errors_its_unused_neighbours_hol
     const run_result itself = run("derive " + (folder / "unknown_field.toml").string());
     BOOST_TEST(itself.status == 2);
     BOOST_TEST(itself.output == (folder / "unknown_field.toml").string() +
-                                    ":8:1: error: unknown field 'bogus' in [[result]]\n",
+                                    ":7:1: error: unknown field 'bogus' in [[result]]\n",
                itself.output);
     BOOST_TEST(run("derive unknown_field --derivations " + folder.string()).output == itself.output);
     // Used by one.toml: the used file's error.
