@@ -32,7 +32,7 @@ bool constant(const GiNaC::ex& e)
 
 // The least integer ≥ q (rounded = ceiling) or the greatest ≤ q (floor) of a real constant:
 // exactly for a rational (the quarter turns of a domain in π are), from 40 digits else.
-long whole(const GiNaC::ex& q, bool ceiling)
+cln::cl_I whole(const GiNaC::ex& q, bool ceiling)
 {
     GiNaC::ex e = GiNaC::normal(q);
     if (!GiNaC::is_a<GiNaC::numeric>(e) || !e.info(GiNaC::info_flags::rational)) {
@@ -42,7 +42,7 @@ long whole(const GiNaC::ex& q, bool ceiling)
         GiNaC::Digits = saved;
     }
     const cln::cl_R x = cln::the<cln::cl_R>(GiNaC::ex_to<GiNaC::numeric>(e).to_cl_N());
-    return cln::cl_I_to_long(ceiling ? cln::ceiling1(x) : cln::floor1(x));
+    return ceiling ? cln::ceiling1(x) : cln::floor1(x);
 }
 
 // One end of an interval, or none (infinite).
@@ -199,11 +199,12 @@ std::vector<trigonometric_root> trigonometric_roots(const trigonometric_equation
     constexpr long most_roots = 24;
     std::vector<trigonometric_root> roots;
     for (const family& f : families) {
-        const long first = whole((x_low - *f.high.at) / period, true);
-        const long last = whole((x_high - *f.low.at) / period, false);
-        if (last - first >= most_roots)
-            throw unsolvable(fmt::format("{} has {} roots or more in the domain of {} ({}); narrow its domain",
-                                         equation, last - first, unknown, range.to_string()));
+        const cln::cl_I from = whole((x_low - *f.high.at) / period, true);
+        const cln::cl_I count = whole((x_high - *f.low.at) / period, false) - from;   // one less than the k's
+        if (count >= cln::cl_I(most_roots) || cln::abs(from) > cln::cl_I(1L << 40))
+            throw unsolvable(fmt::format("{} has more than {} roots in the domain of {} ({}); narrow its domain",
+                                         equation, most_roots, unknown, range.to_string()));
+        const long first = cln::cl_I_to_long(from), last = first + cln::cl_I_to_long(count);
         for (long k = first; k <= last; ++k) {
             const GiNaC::ex turn = k * period;
             const GiNaC::ex x = f.principal + turn;
