@@ -224,8 +224,9 @@ BOOST_AUTO_TEST_CASE(a_domain_that_is_not_understood)
 {
     expect_refused(prefix + "[[symbol]]\nname = \"w\"\ndomain = \"sometimes\"\n[[result]]\nname = \"y\"\n",
                    "derivations/bad.toml:12:10: error: domain 'sometimes' is not understood; write real, "
-                   "positive, nonnegative, an interval such as [0, 1] (its ends integers, decimals or fractions: "
-                   "1000, not 1e3), [0, +inf] or (0, +inf)");
+                   "positive, nonnegative, an interval such as [0, 1] or (0, Pi/2) (its ends integers, decimals "
+                   "or fractions, 1000, not 1e3, or such a number times Pi: Pi, -Pi/2, 3*Pi/4), [0, +inf] or "
+                   "(0, +inf)");
 }
 
 BOOST_AUTO_TEST_CASE(a_domain_below_zero_is_declared_by_its_magnitude)

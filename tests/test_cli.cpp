@@ -308,3 +308,36 @@ BOOST_AUTO_TEST_CASE(an_unknown_derivation_is_an_error)
     BOOST_TEST(r.status == 2);
     BOOST_TEST(r.output.find("no_such_thing: error: no derivation has this id or file (impact list shows the ids)") != std::string::npos, r.output);
 }
+
+BOOST_AUTO_TEST_CASE(a_file_is_derived_whatever_errors_its_unused_neighbours_hold)
+{
+    // one.toml beside a file that is not TOML and one with an unknown field: derived. A
+    // file that uses the broken one gets that file's own error, file and line.
+    const scratch s(files::none);
+    const std::string one = "id = \"one\"\ntitle = \"one\"\n[[symbol]]\nname = \"x\"\ndomain = \"(0, Pi/2)\"\n"
+                            "[[symbol]]\nname = \"y\"\n[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\n"
+                            "because = \"b\"\n[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n";
+    s.write("one.toml", one);
+    s.write("not_toml.toml", "id = \"not_toml\"\ntitle = \n");
+    s.write("unknown_field.toml", "id = \"unknown_field\"\ntitle = \"u\"\n[[symbol]]\nname = \"a\"\n"
+                                  "[[result]]\nname = \"a\"\nbogus = 1\n");
+    const fs::path folder = s.root / "derivations";
+    for (const char* command : {"derive ", "latex "}) {
+        const run_result r = run(command + (folder / "one.toml").string());
+        BOOST_TEST(r.status == 0, command + r.output);
+        BOOST_TEST(r.output.find("not_toml") == std::string::npos, r.output);
+    }
+    BOOST_TEST(run("derive one --derivations " + folder.string()).status == 0);
+    // The broken file itself, by its path or its id, is its error.
+    const run_result itself = run("derive " + (folder / "unknown_field.toml").string());
+    BOOST_TEST(itself.status == 2);
+    BOOST_TEST(itself.output == (folder / "unknown_field.toml").string() +
+                                    ":7:1: error: unknown field 'bogus' in [[result]]\n",
+               itself.output);
+    BOOST_TEST(run("derive unknown_field --derivations " + folder.string()).output == itself.output);
+    // Used by one.toml: the used file's error.
+    s.write("one.toml", one + "[[use]]\nderivation = \"unknown_field\"\nresults = [\"b = a\"]\n");
+    const run_result using_it = run("derive " + (folder / "one.toml").string());
+    BOOST_TEST(using_it.status == 2);
+    BOOST_TEST(using_it.output == itself.output, using_it.output);
+}

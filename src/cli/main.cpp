@@ -101,9 +101,10 @@ std::unique_ptr<cache::store> open_cache(const options& o)
 engine::library derive_one(const options& o)
 {
     const std::unique_ptr<cache::store> store = open_cache(o);
-    const auto sources = engine::read_directory(o.derivations);
+    // Its neighbours' errors do not stop it, unless it uses them.
+    const engine::folder_read folder = engine::read_directory_for_one(o.derivations);
     const engine::derivation_store kept = pipeline::derivations_kept(store.get());
-    engine::library lib = engine::derive_all(sources, engine::resolve_id(sources, o.name), {&kept});
+    engine::library lib = engine::derive_one_of(folder, o.name, {&kept});
     if (store)
         store->trim();
     return lib;

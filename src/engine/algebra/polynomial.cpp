@@ -391,6 +391,27 @@ GiNaC::ex factor_anew(const GiNaC::ex& e, unsigned options)
     return GiNaC::factor(e, options);
 }
 
+// factor_anew with GiNaC's constants (Pi, Euler, Catalan) standing as symbols: factor()
+// takes Pi for a polynomial part but its gcd() refuses it ("arguments must be polynomials
+// over the rationals"), so that theta - Pi + 2 alpha could not be factored. A constant is
+// transcendental, as a symbol is: the factors over the rationals are the same.
+GiNaC::ex factor_with_constants(const GiNaC::ex& e, unsigned options)
+{
+    static const GiNaC::symbol pi_("pi_"), euler_("euler_"), catalan_("catalan_");
+    GiNaC::exmap to_symbols, back;
+    for (const auto& [constant, stand_in] : {std::pair<GiNaC::ex, GiNaC::ex>{GiNaC::Pi, pi_},
+                                             {GiNaC::Euler, euler_},
+                                             {GiNaC::Catalan, catalan_}})
+        if (e.has(constant)) {
+            to_symbols[constant] = stand_in;
+            back[stand_in] = constant;
+        }
+    if (to_symbols.empty())
+        return factor_anew(e, options);
+    return factor_anew(e.subs(to_symbols, GiNaC::subs_options::no_pattern), options)
+        .subs(back, GiNaC::subs_options::no_pattern);
+}
+
 } // namespace
 
 // Not for threads: std::rand()'s state is the process's (Impact's workers are processes).
@@ -410,7 +431,7 @@ GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
     // Past a bound, forgotten at once: a long run keeps no more than this many.
     if (for_options.size() >= 20000)
         for_options.clear();
-    return for_options.emplace(e, factor_anew(e, options)).first->second;
+    return for_options.emplace(e, factor_with_constants(e, options)).first->second;
 }
 
 } // namespace impact::engine

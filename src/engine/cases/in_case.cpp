@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 
 namespace impact::engine {
 
@@ -55,6 +56,9 @@ std::optional<std::pair<GiNaC::ex, domain>> bound_domain(const case_value& c, co
     const auto found = given.domains.find(s);
     const domain d = found != given.domains.end() ? found->second : domain{};
     const double x = GiNaC::ex_to<GiNaC::numeric>(n).to_double();
+    // The bound's text too, which its exact value is read from (domain::exact_upper).
+    std::ostringstream written;
+    written << n;
     const bool strict = op == relation::less || op == relation::greater;
     domain out = d;
     if (op == relation::less_equal || op == relation::less) {
@@ -62,9 +66,10 @@ std::optional<std::pair<GiNaC::ex, domain>> bound_domain(const case_value& c, co
             if (!(x < d.upper || (x == d.upper && strict && !d.upper_open)))
                 return std::nullopt;
             out.upper = x;
+            out.upper_text = written.str();
             out.upper_open = strict;
         } else if (d.what == domain::kind::positive || d.what == domain::kind::nonnegative) {
-            out = domain{domain::kind::interval, 0, x, d.what == domain::kind::positive, strict};
+            out = domain{domain::kind::interval, 0, x, d.what == domain::kind::positive, strict, "0", written.str()};
         } else {
             return std::nullopt;
         }
@@ -73,6 +78,7 @@ std::optional<std::pair<GiNaC::ex, domain>> bound_domain(const case_value& c, co
             if (!(x > d.lower || (x == d.lower && strict && !d.lower_open)))
                 return std::nullopt;
             out.lower = x;
+            out.lower_text = written.str();
             out.lower_open = strict;
         } else if ((x > 0 || (x == 0 && strict)) && d.what != domain::kind::positive) {
             out = domain{domain::kind::positive};

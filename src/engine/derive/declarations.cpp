@@ -54,7 +54,7 @@ void check_definitions(const symbol_table& symbols, const spec::derivation& sour
             continue;
         const source_location& where = declaration.definition->where;
         if (const auto value = numeric_value(*q.definition)) {
-            if (!q.range.contains(*value))
+            if (!q.range.contains(*q.definition))
                 throw error(where, fmt::format("'{}' is declared {} but its definition {} is {}, outside it", q.name,
                                                q.range.to_string(), declaration.definition->value, *value));
             continue;
@@ -192,26 +192,13 @@ void check_assumptions_hold_together(const symbol_table& symbols, const spec::de
 void check_special_value(const quantity& q, const GiNaC::ex& value, const source_location& where)
 {
     const auto number = numeric_value(value);
-    if (number && !q.range.closure_contains(*number))
+    if (number && !q.range.closure_contains(value))
         throw error(where, fmt::format("{} = {} is outside the domain of {} ({}): a special value must be one "
                                        "{} can take, or an end of its domain",
                                        q.name, *number, q.name, q.range.to_string(), q.name));
 }
 
 namespace {
-
-// A bound of an interval as the file writes it (1/2, -3, 0.25), exactly.
-GiNaC::numeric exact_bound(const std::string& text)
-{
-    const auto slash = text.find('/');
-    if (slash != std::string::npos)
-        return exact_bound(text.substr(0, slash)) / exact_bound(text.substr(slash + 1));
-    const auto point = text.find('.');
-    if (point == std::string::npos)
-        return GiNaC::numeric(text.c_str());
-    const std::string digits = text.substr(0, point) + text.substr(point + 1);
-    return GiNaC::numeric(digits.c_str()) / GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(int(text.size() - point - 1)));
-}
 
 // Where `value` lies against the closure of `range` under `given`: shown inside (nothing),
 // proven outside (`outside`, with the sign that shows it), or neither (the sign unknown).
@@ -239,9 +226,9 @@ std::optional<placement> not_shown_within(const domain& range, const GiNaC::ex& 
     case domain::kind::nonnegative:
         return short_of(value, "it is ");
     case domain::kind::interval:
-        if (auto low = short_of(value - exact_bound(range.lower_text), fmt::format("minus {} it is ", range.lower_text)))
+        if (auto low = short_of(value - range.exact_lower(), fmt::format("minus {} it is ", range.lower_text)))
             return low;
-        return short_of(exact_bound(range.upper_text) - value, fmt::format("subtracted from {} it is ", range.upper_text));
+        return short_of(range.exact_upper() - value, fmt::format("subtracted from {} it is ", range.upper_text));
     }
     return std::nullopt;
 }
@@ -308,7 +295,7 @@ void check_limit_point(const quantity& q, const GiNaC::ex& point, bool to_infini
         return;
     }
     const auto number = numeric_value(point);
-    if (number && !q.range.closure_contains(*number))
+    if (number && !q.range.closure_contains(point))
         throw error(where, fmt::format("{} -> {} approaches a point outside the domain of {} ({})", q.name,
                                        *number, q.name, q.range.to_string()));
 }

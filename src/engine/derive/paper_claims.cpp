@@ -404,7 +404,8 @@ std::vector<finding> deriver::other_regimes(const spec::check& original, const c
         const quantity& q = out_.symbols.at(*symbol);
         std::vector<std::string> candidates = {"0", "infinity"};
         if (q.range.what == domain::kind::interval)
-            candidates = {fmt::format("{}", q.range.lower), fmt::format("{}", q.range.upper)};
+            candidates = {q.range.lower_text.empty() ? fmt::format("{}", q.range.lower) : q.range.lower_text,
+                          q.range.upper_text.empty() ? fmt::format("{}", q.range.upper) : q.range.upper_text};
         for (const std::string& other : candidates) {
             const bool infinity = other == "infinity";
             const bool same = original.limit ? original.limit->to_infinity == infinity &&

@@ -3,10 +3,13 @@
 #include "engine/store/stored.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <fstream>
 #include <functional>
 #include <map>
+#include <regex>
 #include <set>
 
 namespace impact::engine {
@@ -140,11 +143,21 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
 {
     const derivation_store* const kept = how.kept;
     std::map<std::string, const spec::derivation*> by_id;
+    // Two files of one id: an error when the id is derived (every id, without `only`).
+    std::map<std::string, const spec::derivation*> twice;
     for (const spec::derivation& s : sources) {
         const auto [it, inserted] = by_id.emplace(s.id.value, &s);
-        if (!inserted)
-            throw error(s.id.where, fmt::format("derivation id '{}' is also used by {}", s.id.value, it->second->file));
+        if (!inserted && !twice.count(s.id.value))
+            twice.emplace(s.id.value, &s);
     }
+    const auto once = [&](const std::string& id) {
+        if (const auto again = twice.find(id); again != twice.end())
+            throw error(again->second->id.where,
+                        fmt::format("derivation id '{}' is also used by {}", id, by_id.at(id)->file));
+    };
+    if (only.empty())
+        for (const spec::derivation& s : sources)
+            once(s.id.value);
 
     // Depth-first over [[use]]: each derivation after those it uses; a derivation met
     // again while still on the path is a cycle.
@@ -153,6 +166,7 @@ library derive_all(const std::vector<spec::derivation>& sources, const std::stri
     std::function<void(const spec::derivation&)> visit = [&](const spec::derivation& s) {
         if (placed.count(s.id.value))
             return;
+        once(s.id.value);
         on_path.insert(s.id.value);
         for (const spec::use& u : s.uses) {
             const auto used = by_id.find(u.derivation.value);
@@ -251,6 +265,78 @@ std::string resolve_id(const std::vector<spec::derivation>& sources, const std::
             return s.id.value;
     }
     throw error({name, 0, 0}, "no derivation has this id or file (impact list shows the ids)");
+}
+
+folder_read read_directory_for_one(const std::filesystem::path& directory)
+{
+    // The folder itself must be one, with files in it.
+    if (!std::filesystem::is_directory(directory) || derivation_files(directory).empty())
+        return {read_directory(directory), {}};
+    folder_read folder;
+    static const std::regex id_line(R"re(^\s*id\s*=\s*"([A-Za-z][A-Za-z0-9_]*)")re");
+    for (const auto& file : derivation_files(directory)) {
+        try {
+            folder.sources.push_back(spec::read_derivation(file.generic_string()));
+        } catch (const error& e) {
+            std::string id;
+            std::ifstream in(file);
+            for (std::string line; id.empty() && std::getline(in, line);)
+                if (std::smatch m; std::regex_search(line, m, id_line))
+                    id = m[1];
+            folder.failures.push_back({file.generic_string(), id, e});
+        }
+    }
+    return folder;
+}
+
+library derive_one_of(const folder_read& folder, const std::string& name, const deriving& how)
+{
+    std::error_code ignored;
+    const auto unreadable_as = [&](const std::string& id, const std::string& file) -> const folder_read::unreadable* {
+        for (const folder_read::unreadable& f : folder.failures)
+            if ((!id.empty() && f.id == id) || (!file.empty() && std::filesystem::equivalent(f.file, file, ignored)))
+                return &f;
+        return nullptr;
+    };
+    // The derivation named: its own error when its file could not be read.
+    std::string id;
+    try {
+        id = resolve_id(folder.sources, name);
+    } catch (const error&) {
+        if (const folder_read::unreadable* f = unreadable_as(name, name))
+            throw f->what;
+        throw;
+    }
+    // Those it uses, through their uses: the error of one whose file could not be read.
+    std::map<std::string, const spec::derivation*> by_id;
+    for (const spec::derivation& s : folder.sources)
+        by_id.emplace(s.id.value, &s);
+    std::set<std::string> seen;
+    std::function<void(const spec::derivation&)> visit = [&](const spec::derivation& s) {
+        if (!seen.insert(s.id.value).second)
+            return;
+        for (const spec::use& u : s.uses) {
+            const auto used = by_id.find(u.derivation.value);
+            if (used != by_id.end()) {
+                visit(*used->second);
+                continue;
+            }
+            if (const folder_read::unreadable* f = unreadable_as(u.derivation.value, ""))
+                throw f->what;
+            // Not found: derive_all says so, naming the files that could not be read.
+            if (!folder.failures.empty()) {
+                std::vector<std::string> files;
+                for (const folder_read::unreadable& f : folder.failures)
+                    files.push_back(f.file);
+                throw error(u.derivation.where,
+                            fmt::format("uses derivation '{}', which does not exist (these files could not be read: "
+                                        "{})",
+                                        u.derivation.value, fmt::join(files, ", ")));
+            }
+        }
+    };
+    visit(*by_id.at(id));
+    return derive_all(folder.sources, id, how);
 }
 
 } // namespace impact::engine

@@ -74,4 +74,24 @@ library derive_folder(const std::filesystem::path& directory);
 /// The id of the derivation that `name` names: an id, or the path of one of the files.
 std::string resolve_id(const std::vector<spec::derivation>& sources, const std::string& name);
 
+/// A folder read for one of its derivations: the files that read, and the errors of those
+/// that did not, kept rather than thrown (with the id each declares, when its `id = "..."`
+/// line can be found), so that a file the one derived does not use does not stop it.
+struct folder_read {
+    struct unreadable {
+        std::string file;
+        std::string id;   ///< as its `id = "..."` line gives it; empty when none is found
+        error what;
+    };
+    std::vector<spec::derivation> sources;
+    std::vector<unreadable> failures;
+};
+folder_read read_directory_for_one(const std::filesystem::path& directory);
+
+/// Derives the derivation `name` names (an id or a file) and those it uses, from a folder
+/// read by read_directory_for_one: a file that could not be read is an error only when it
+/// is that derivation or one it uses (its own error, as read_directory throws it), and two
+/// files of one id only when the id is one of those.
+library derive_one_of(const folder_read& folder, const std::string& name, const deriving& how = {});
+
 } // namespace impact::engine

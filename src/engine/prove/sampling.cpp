@@ -217,8 +217,14 @@ std::vector<GiNaC::numeric> simple_values(const domain& range)
 {
     std::vector<GiNaC::numeric> candidates;
     if (range.what == domain::kind::interval) {
-        const GiNaC::numeric a(cln::rationalize(cln::cl_DF(range.lower)));
-        const GiNaC::numeric b(cln::rationalize(cln::cl_DF(range.upper)));
+        // An end of π (Pi/2) as the double on its inside, exactly: the simplest rational near
+        // that double may lie beyond π/2.
+        const auto end = [](const GiNaC::ex& exact, double inside) {
+            return exact.has(GiNaC::Pi) ? GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(inside))))
+                                        : GiNaC::numeric(cln::rationalize(cln::cl_DF(inside)));
+        };
+        const GiNaC::numeric a = end(range.exact_lower(), range.lower);
+        const GiNaC::numeric b = end(range.exact_upper(), range.upper);
         // 0 and +-1 too where they lie inside ((-1, 2]: exp(z^2) > 1 fails at 0 alone).
         candidates = {b, a, (a + b) / 2, (3 * a + b) / 4, (a + 3 * b) / 4, 0, 1, -1};
     } else {
@@ -226,7 +232,7 @@ std::vector<GiNaC::numeric> simple_values(const domain& range)
     }
     std::vector<GiNaC::numeric> inside;
     for (const GiNaC::numeric& x : candidates)
-        if (range.contains(x.to_double()) && std::find(inside.begin(), inside.end(), x) == inside.end())
+        if (range.contains(GiNaC::ex(x)) && std::find(inside.begin(), inside.end(), x) == inside.end())
             inside.push_back(x);
     return inside;
 }

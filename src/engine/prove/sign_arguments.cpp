@@ -1,5 +1,6 @@
 #include "engine/prove/sign_arguments.h"
 
+#include <cln/integer.h>
 #include <cln/rational.h>
 #include <cln/real.h>
 #include <fmt/format.h>
@@ -9,28 +10,48 @@
 namespace impact::engine {
 namespace {
 
-// The exact rational value of a bound written in a derivation file.
-GiNaC::numeric exact(double value)
-{
-    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
-}
-
 // The closure of a domain: its ends, each a number or none (infinite), and whether the
 // domain holds it.
 struct ends {
     std::optional<GiNaC::numeric> lower, upper;
     bool lower_in = false, upper_in = false;
+    std::optional<GiNaC::ex> lower_shown, upper_shown;   // the ends as the domain has them (Pi/2)
 };
+
+// An end as a rational: itself when it is one; an end of π (Pi/2), at which a Sturm
+// sequence cannot be evaluated exactly, as a rational within 10^-20 beyond it (below a
+// lower end, above an upper one), so that the closure holds the domain and a sign shown on
+// the closure holds on the domain.
+GiNaC::numeric rational_end(const GiNaC::ex& end, bool lower)
+{
+    if (GiNaC::is_a<GiNaC::numeric>(end))
+        return GiNaC::ex_to<GiNaC::numeric>(end);
+    const long saved = GiNaC::Digits;
+    GiNaC::Digits = 40;
+    const GiNaC::numeric scaled = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(end * GiNaC::pow(10, 20)));
+    GiNaC::Digits = saved;
+    const cln::cl_R x = cln::the<cln::cl_R>(scaled.to_cl_N());
+    const cln::cl_I down = cln::floor1(x), up = cln::ceiling1(x);
+    const cln::cl_I beyond = lower ? cln::minus1(down) : cln::plus1(up);
+    return GiNaC::numeric(cln::cl_N(beyond)).div(GiNaC::numeric(10).power(20));
+}
 
 ends closure_of(const domain& d)
 {
     switch (d.what) {
     case domain::kind::real: return {};
-    case domain::kind::positive: return {GiNaC::numeric(0), std::nullopt, false, false};
-    case domain::kind::nonnegative: return {GiNaC::numeric(0), std::nullopt, true, false};
+    case domain::kind::positive: return {GiNaC::numeric(0), std::nullopt, false, false, GiNaC::ex(0), std::nullopt};
+    case domain::kind::nonnegative: return {GiNaC::numeric(0), std::nullopt, true, false, GiNaC::ex(0), std::nullopt};
     case domain::kind::interval: break;
     }
-    return {exact(d.lower), exact(d.upper), !d.lower_open, !d.upper_open};
+    const GiNaC::ex low = d.exact_lower(), high = d.exact_upper();
+    // A widened end is counted in: the sign there is the closure's, whatever the domain's.
+    return {rational_end(low, true),
+            rational_end(high, false),
+            !d.lower_open || !GiNaC::is_a<GiNaC::numeric>(low),
+            !d.upper_open || !GiNaC::is_a<GiNaC::numeric>(high),
+            low,
+            high};
 }
 
 int sign_of(const GiNaC::ex& value)
@@ -138,8 +159,8 @@ std::string in_words(const sign_set& s)
 
 std::string interval_text(const ends& range, const std::function<std::string(const GiNaC::ex&)>& text)
 {
-    return fmt::format("({}, {})", range.lower ? text(*range.lower) : "-infinity",
-                       range.upper ? text(*range.upper) : "infinity");
+    return fmt::format("({}, {})", range.lower_shown ? text(*range.lower_shown) : "-infinity",
+                       range.upper_shown ? text(*range.upper_shown) : "infinity");
 }
 
 } // namespace
@@ -194,8 +215,8 @@ std::optional<reasoned_sign> sturm_sign(const GiNaC::ex& e, const GiNaC::ex& s, 
         "by Sturm's theorem, {} has no root {}in {} (sign changes of its Sturm sequence: {} at {}, {} at {}), "
         "and {} {} at {} = {}",
         text(odd), even.is_equal(1) ? "" : "of odd multiplicity ", where, changing.at_lower,
-        closure.lower ? text(*closure.lower) : "-infinity", changing.at_upper,
-        closure.upper ? text(*closure.upper) : "infinity", text(odd.subs(s == inside)),
+        closure.lower_shown ? text(*closure.lower_shown) : "-infinity", changing.at_upper,
+        closure.upper_shown ? text(*closure.upper_shown) : "infinity", text(odd.subs(s == inside)),
         sign_set::exactly(interior).describe(), text(s), text(inside));
     if (touching > 0)
         words += fmt::format("; it touches zero at the roots of {} (an even power)", text(even));
@@ -220,8 +241,15 @@ std::optional<reasoned_sign> monotone_sign(const GiNaC::ex& e, const GiNaC::ex& 
                                            const std::function<reasoned_sign(const GiNaC::ex&)>& sign,
                                            const std::function<std::string(const GiNaC::ex&)>& text)
 {
-    const ends closure = closure_of(range);
-    if (!GiNaC::is_a<GiNaC::symbol>(s) || !closure.lower || !e.is_polynomial(s))
+    // The ends exactly (Pi/2 as it is): the slope's sign is known on the domain, not beyond.
+    std::optional<GiNaC::ex> lower_end, upper_end;
+    if (range.what == domain::kind::positive || range.what == domain::kind::nonnegative)
+        lower_end = GiNaC::ex(0);
+    if (range.what == domain::kind::interval) {
+        lower_end = range.exact_lower();
+        upper_end = range.exact_upper();
+    }
+    if (!GiNaC::is_a<GiNaC::symbol>(s) || !lower_end || !e.is_polynomial(s))
         return std::nullopt;
     const GiNaC::ex p = GiNaC::expand(e);
     if (p.degree(s) < 2)
@@ -234,29 +262,29 @@ std::optional<reasoned_sign> monotone_sign(const GiNaC::ex& e, const GiNaC::ex& 
     // Between its values at the ends of the closure: from its value at the lower end
     // upwards when increasing, downwards when decreasing (and towards the upper end's
     // value, when there is one).
-    const GiNaC::ex at_lower = GiNaC::normal(p.subs(s == *closure.lower));
+    const GiNaC::ex at_lower = GiNaC::normal(p.subs(s == *lower_end));
     const reasoned_sign low = sign(at_lower);
     std::optional<reasoned_sign> high;
     GiNaC::ex at_upper;
-    if (closure.upper) {
-        at_upper = GiNaC::normal(p.subs(s == *closure.upper));
+    if (upper_end) {
+        at_upper = GiNaC::normal(p.subs(s == *upper_end));
         high = sign(at_upper);
     }
     sign_set result{true, true, true};
     const GiNaC::ex* end_value = nullptr;
-    const GiNaC::numeric* end = nullptr;
+    const GiNaC::ex* end = nullptr;
     const sign_set* end_sign = nullptr;
     // increasing: p >= p(lower), p <= p(upper); decreasing: p <= p(lower), p >= p(upper).
     const sign_set& from_lower = low.first;
     if (increasing ? !from_lower.negative : !from_lower.positive) {
         result = increasing ? sign_set{false, from_lower.zero, true} : sign_set{true, from_lower.zero, false};
         end_value = &at_lower;
-        end = &*closure.lower;
+        end = &*lower_end;
         end_sign = &from_lower;
     } else if (high && (increasing ? !high->first.positive : !high->first.negative)) {
         result = increasing ? sign_set{true, high->first.zero, false} : sign_set{false, high->first.zero, true};
         end_value = &at_upper;
-        end = &*closure.upper;
+        end = &*upper_end;
         end_sign = &high->first;
     } else {
         return std::nullopt;

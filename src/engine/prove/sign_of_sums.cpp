@@ -6,24 +6,12 @@
 
 #include "engine/prove/sign_arguments.h"
 
-#include <cln/rational.h>
-#include <cln/real.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <optional>
 
 namespace impact::engine {
-namespace {
-
-// The exact rational value of a bound written in a derivation file.
-GiNaC::numeric exact(double value)
-{
-    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
-}
-
-} // namespace
-
 std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int depth) const
 {
     sign_set r = sign_set::exactly(0);
@@ -165,17 +153,18 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::affine_in_bounded_s
         const bool squared = degree == 2 && p.coeff(s, 1).is_zero();
         if (degree != 1 && !squared)
             continue;
-        const GiNaC::numeric low = exact(d.lower), high = exact(d.upper);
-        std::vector<GiNaC::numeric> ends = {low, high};
-        if (squared && !low.is_positive() && !high.is_negative())
-            ends = {0, GiNaC::abs(low) > GiNaC::abs(high) ? low : high};
+        // The ends exactly, π among them (Pi/2).
+        const GiNaC::ex low = d.exact_lower(), high = d.exact_upper();
+        std::vector<GiNaC::ex> ends = {low, high};
+        if (squared && sign_of_constant(low) <= 0 && sign_of_constant(high) >= 0)
+            ends = {0, sign_of_constant(low * low - high * high) > 0 ? low : high};
         sign_set r{false, false, false};
         std::vector<std::string> at;
         finding typeset;
         typeset.say(squared ? "affine in " : "linear in ").math(squared ? GiNaC::pow(s, 2) : s);
         typeset.say(", so between its values at the ends of the domain of ").math(s).say(": ");
         bool known = true;
-        for (const GiNaC::numeric& end : ends) {
+        for (const GiNaC::ex& end : ends) {
             const GiNaC::ex value = factored(p.subs(s == end));
             const auto [sign_at, why] = sign(value, depth + 1);
             known = known && sign_at.is_known();
@@ -223,19 +212,24 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::linear_in_bounded_s
         return std::nullopt;
     // The values fill the interval between the values at the two ends; an end that
     // the domain excludes is approached but not attained.
-    const GiNaC::ex low = e.subs(only == exact(d.lower));
-    const GiNaC::ex high = e.subs(only == exact(d.upper));
-    if (!GiNaC::is_a<GiNaC::numeric>(low) || !GiNaC::is_a<GiNaC::numeric>(high))
+    // The values at the ends exactly (an end may be π's: Pi/2), constants whose signs are exact.
+    const GiNaC::ex low = e.subs(only == d.exact_lower());
+    const GiNaC::ex high = e.subs(only == d.exact_upper());
+    const auto constant = [](const GiNaC::ex& v) {
+        return GiNaC::is_a<GiNaC::numeric>(v) ||
+               (v.has(GiNaC::Pi) && GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(v)) && v.info(GiNaC::info_flags::real));
+    };
+    if (!constant(low) || !constant(high))
         return std::nullopt;
-    const double lo = GiNaC::ex_to<GiNaC::numeric>(low).to_double();
-    const double hi = GiNaC::ex_to<GiNaC::numeric>(high).to_double();
-    const double least = std::min(lo, hi), most = std::max(lo, hi);
-    const bool least_open = lo <= hi ? d.lower_open : d.upper_open;
-    const bool most_open = lo <= hi ? d.upper_open : d.lower_open;
+    const bool rising = sign_of_constant(high - low) >= 0;
+    const GiNaC::ex least = rising ? low : high, most = rising ? high : low;
+    const int least_sign = sign_of_constant(least), most_sign = sign_of_constant(most);
+    const bool least_open = rising ? d.lower_open : d.upper_open;
+    const bool most_open = rising ? d.upper_open : d.lower_open;
     sign_set r;
-    r.negative = least < 0;
-    r.positive = most > 0;
-    r.zero = (least < 0 && most > 0) || (least == 0 && !least_open) || (most == 0 && !most_open);
+    r.negative = least_sign < 0;
+    r.positive = most_sign > 0;
+    r.zero = (least_sign < 0 && most_sign > 0) || (least_sign == 0 && !least_open) || (most_sign == 0 && !most_open);
     sign_reason reason(fmt::format("linear in {} in {}: {} and {} at the ends", text(only), d.to_string(),
                                    text(low), text(high)));
     reason.typeset.say("linear in ").math(only).say(", ").math(low).say(" and ").math(high).say(

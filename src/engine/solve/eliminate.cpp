@@ -202,6 +202,16 @@ void eliminator::branch(const std::vector<GiNaC::ex>& equations, const std::vect
                 return;
         }
     }
+    // 2'. An equation in one unknown that holds it in sin, cos or tan alone.
+    for (const GiNaC::ex& p : left) {
+        std::vector<GiNaC::ex> in;
+        for (const GiNaC::ex& u : unknowns)
+            if (p.has(u))
+                in.push_back(u);
+        if (in.size() == 1 && !p.is_polynomial(in.front()) &&
+            solve_trigonometric(left, p, in.front(), unknowns, values, unverified, depth))
+            return;
+    }
     // 3. Linear in u with a coefficient c₁ that holds other unknowns: c₁ ≠ 0 and u =
     // −c₀/c₁, or c₁ = 0 and then c₀ = 0 too.
     for (const GiNaC::ex& p : left) {
@@ -245,8 +255,33 @@ void eliminator::branch(const std::vector<GiNaC::ex>& equations, const std::vect
                                                           : std::string("not polynomial"),
                                        symbols_.text(u));
     throw unsolvable(fmt::format("the system is not linear in {}, and eliminating the unknowns it holds "
-                                 "linearly leaves no equation of degree 2 or less in one unknown ({})",
+                                 "linearly leaves no equation of degree 2 or less in one unknown, nor one "
+                                 "linear in sin, cos or tan of an expression linear in one unknown ({})",
                                  names(unknowns), degrees));
+}
+
+bool eliminator::solve_trigonometric(const std::vector<GiNaC::ex>& left, const GiNaC::ex& p, const GiNaC::ex& u,
+                                     const std::vector<GiNaC::ex>& unknowns, const GiNaC::exmap& values,
+                                     bool unverified, int depth)
+{
+    const std::optional<trigonometric_equation> eq = trigonometric_form(p, u);
+    if (!eq)
+        return false;
+    const auto narrowed = given_.domains.find(u);
+    const domain* declared = symbols_.domain_of(u);
+    const domain range = narrowed != given_.domains.end() ? narrowed->second : declared ? *declared : domain{};
+    std::string no_root;
+    const std::vector<trigonometric_root> roots = trigonometric_roots(*eq, u, range, given_, no_root);
+    if (!no_root.empty())
+        complex.push_back(no_root);
+    for (const trigonometric_root& r : roots) {
+        trigonometric.push_back(r);
+        eliminate(left, p, unknowns, u, r.value, values, unverified, depth);
+    }
+    if (roots.empty() && no_root.empty())
+        complex.push_back(fmt::format("{} = {} has no root in the domain of {} ({})", symbols_.text(eq->function),
+                                      symbols_.text(eq->value), symbols_.text(u), range.to_string()));
+    return true;
 }
 
 bool eliminator::solve_in_one(const std::vector<GiNaC::ex>& left, const GiNaC::ex& p, const GiNaC::ex& u,

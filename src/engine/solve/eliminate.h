@@ -7,7 +7,8 @@
 //  2. an equation left in one unknown is solved: of degree two by the quadratic formula;
 //     of a higher degree through its factors over the rationals (GiNaC's factor), each of
 //     degree one or two, or a quadratic in u² (u = ±√w); a factor beyond these is an error
-//     naming its degree;
+//     naming its degree; one that holds u only in sin, cos or tan of a u + b, by the
+//     inverse function, each root in u's domain (trigonometric.h);
 //  3. an unknown u that an equation holds linearly with a coefficient c₁ holding other
 //     unknowns splits the system in two: u = −c₀/c₁ where c₁ ≠ 0, and c₁ = 0 = c₀;
 //  4. two equations p, q that share an unknown u: q is replaced by their resultant in u
@@ -21,6 +22,7 @@
 #pragma once
 
 #include "engine/prove/sign.h"
+#include "engine/solve/trigonometric.h"
 
 #include <stdexcept>
 #include <string>
@@ -53,7 +55,10 @@ public:
 
     std::vector<candidate> found;
     std::size_t dead_ends = 0;         ///< branches found inconsistent
-    std::vector<std::string> complex;  ///< quadratics without real roots, in words
+    std::vector<std::string> complex;  ///< quadratics (and sin, cos = w) without real roots, in words
+    /// The roots of trigonometric equations (trigonometric.h), each with the interval its
+    /// value lies in: solve.cpp keeps or rejects them by it.
+    std::vector<trigonometric_root> trigonometric;
 
     /// Solves `equations` for `unknowns`; throws `unsolvable` when it cannot.
     void run(const std::vector<GiNaC::ex>& equations, const std::vector<GiNaC::ex>& unknowns)
@@ -74,6 +79,11 @@ private:
     void quadratic(const std::vector<GiNaC::ex>& left, const GiNaC::ex& p, const GiNaC::ex& u,
                    const std::vector<GiNaC::ex>& unknowns, const GiNaC::exmap& values, bool unverified, int depth,
                    const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::ex& c, bool squared);
+    // Stage 2 for an equation in u alone that is not polynomial in it: sin, cos or tan of
+    // an expression linear in u equal to a value (trigonometric.h); false when it is not.
+    bool solve_trigonometric(const std::vector<GiNaC::ex>& left, const GiNaC::ex& p, const GiNaC::ex& u,
+                             const std::vector<GiNaC::ex>& unknowns, const GiNaC::exmap& values, bool unverified,
+                             int depth);
     void eliminate(const std::vector<GiNaC::ex>& left, const GiNaC::ex& used, const std::vector<GiNaC::ex>& unknowns,
                    const GiNaC::ex& u, const GiNaC::ex& value, const GiNaC::exmap& values, bool unverified,
                    int depth);

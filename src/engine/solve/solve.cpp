@@ -1,10 +1,9 @@
 #include "engine/solve/solve.h"
 
 #include "engine/solve/eliminate.h"
+#include "engine/solve/trigonometric.h"
 #include "engine/expr/normal_form.h"
 
-#include <cln/rational.h>
-#include <cln/real.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -113,12 +112,6 @@ struct placement {
     std::vector<sign_step> proof;
 };
 
-// The exact rational value of a bound written in a derivation file.
-GiNaC::numeric exact(double value)
-{
-    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
-}
-
 placement place(const GiNaC::ex& value, const GiNaC::ex& unknown, const domain& range, const assumptions& given)
 {
     // value − lower ≥ 0 (> 0 when the end is open), and upper − value likewise.
@@ -134,10 +127,10 @@ placement place(const GiNaC::ex& value, const GiNaC::ex& unknown, const domain& 
     case domain::kind::positive: bounds.push_back({value, true, name + " > 0"}); break;
     case domain::kind::nonnegative: bounds.push_back({value, false, name + " >= 0"}); break;
     case domain::kind::interval:
-        bounds.push_back({value - exact(range.lower), range.lower_open,
-                          fmt::format("{} {} {}", name, range.lower_open ? ">" : ">=", given.text(exact(range.lower)))});
-        bounds.push_back({exact(range.upper) - value, range.upper_open,
-                          fmt::format("{} {} {}", name, range.upper_open ? "<" : "<=", given.text(exact(range.upper)))});
+        bounds.push_back({value - range.exact_lower(), range.lower_open,
+                          fmt::format("{} {} {}", name, range.lower_open ? ">" : ">=", given.text(range.exact_lower()))});
+        bounds.push_back({range.exact_upper() - value, range.upper_open,
+                          fmt::format("{} {} {}", name, range.upper_open ? "<" : "<=", given.text(range.exact_upper()))});
         break;
     }
     placement p;
@@ -182,12 +175,16 @@ std::vector<check_result> substituted_back(const std::vector<const equation*>& u
         values[u] = v;
     std::vector<check_result> checks;
     for (const equation* e : used) {
-        const GiNaC::ex substituted = context.resolve(e->relation).subs(values, GiNaC::subs_options::no_pattern);
+        const GiNaC::ex put = context.resolve(e->relation).subs(values, GiNaC::subs_options::no_pattern);
+        // A root of sin x = w such as x = π − asin w gives sin(π − asin w): written sin(asin w).
+        const GiNaC::ex substituted = quarter_turns_reduced(put);
         check_result c;
         c.name = fmt::format("{} holds for the {}", e->name, which);
         c.statement = e->name;
         c.stated = e->relation;
-        c.because = "the solution substituted back into the equation it solves";
+        c.because = substituted.is_equal(put) ? "the solution substituted back into the equation it solves"
+                                              : "the solution substituted back into the equation it solves, "
+                                                "sin, cos and tan of y + k*Pi/2 written as functions of y";
         c.lhs = substituted.lhs();
         c.rhs = substituted.rhs();
         c.outcome = prove_equal(c.lhs, c.rhs, context.symbols, context.run);
@@ -266,6 +263,7 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
 
     std::vector<GiNaC::exmap> found;
     std::vector<std::string> complex;
+    std::vector<trigonometric_root> trigonometric;   // roots of sin, cos, tan = w, with their intervals
     if (linear) {
         found.emplace_back(linear->begin(), linear->end());
     } else {
@@ -289,6 +287,7 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
                 found.push_back(c.values);
         }
         complex = std::move(solver.complex);
+        trigonometric = std::move(solver.trigonometric);
     }
     if (found.empty())
         throw error(st.where, complex.empty() ? std::string("the system is inconsistent: it has no solution")
@@ -296,11 +295,18 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
                                                             fmt::join(complex, "; ")));
 
     // Each solution simplified, in the order the unknowns are listed; a double root once.
+    // The roots of a trigonometric equation keep the intervals their values lie in.
     std::vector<solution> solutions;
+    std::vector<std::vector<const trigonometric_root*>> intervals;
     for (const GiNaC::exmap& values : found) {
         solution s;
-        for (const GiNaC::ex& u : unknown_list)
+        std::vector<const trigonometric_root*> within;
+        for (const GiNaC::ex& u : unknown_list) {
             s.values.emplace_back(u, simplest(values.at(u), given));
+            for (const trigonometric_root& r : trigonometric)
+                if (r.unknown.is_equal(u) && r.value.is_equal(values.at(u)))
+                    within.push_back(&r);
+        }
         const bool repeated = std::any_of(solutions.begin(), solutions.end(), [&](const solution& other) {
             for (std::size_t i = 0; i < s.values.size(); ++i)
                 if (prove_equal(s.values[i].second, other.values[i].second, context.symbols, context.run).what !=
@@ -308,15 +314,57 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
                     return false;
             return true;
         });
-        if (!repeated)
+        if (!repeated) {
             solutions.push_back(std::move(s));
+            intervals.push_back(std::move(within));
+        }
     }
 
     // Kept or rejected: by the unknowns' domains, then by the step's conditions.
     std::vector<bool> condition_used(conditions.size(), false);
-    for (solution& s : solutions) {
+    // A condition that holds only for solutions the domains reject already: the first.
+    std::vector<const solution*> condition_redundant(conditions.size(), nullptr);
+    const auto condition_holds = [&](std::size_t i, const solution& s) {
+        GiNaC::exmap values;
+        for (const auto& [u, v] : s.values)
+            values[u] = v;
+        const GiNaC::ex holds = expanded_radicands(conditions[i].subs(values, GiNaC::subs_options::no_pattern));
+        return prove_equal(holds.lhs(), holds.rhs(), context.symbols, context.run).what == verdict::status::proven;
+    };
+    for (std::size_t n = 0; n < solutions.size(); ++n) {
+        solution& s = solutions[n];
         for (const auto& [u, value] : s.values) {
-            const placement p = place(value, u, *context.symbols.domain_of(u), given);
+            const domain& range = *context.symbols.domain_of(u);
+            placement p;
+            // A root of sin, cos or tan = w: first by the interval its value lies in.
+            const auto root = std::find_if(intervals[n].begin(), intervals[n].end(),
+                                           [&](const trigonometric_root* r) { return r->unknown.is_equal(u); });
+            if (root != intervals[n].end()) {
+                const trigonometric_root& r = **root;
+                const std::string lies = fmt::format(
+                    "{} lies in {}", given.text(u), interval_text(r.low, r.low_open, r.high, r.high_open, given));
+                switch (place_interval(r, range)) {
+                case interval_placement::inside:
+                    p = {placement::where::inside,
+                         fmt::format("{}, within {}: {}{}", lies, range.to_string(), r.why,
+                                     r.existence.empty() ? "" : "; " + r.existence),
+                         {}};
+                    break;
+                case interval_placement::outside:
+                    p = {placement::where::outside,
+                         fmt::format("{}, outside {}: {}", lies, range.to_string(), r.why), {}};
+                    break;
+                case interval_placement::across: p = place(value, u, range, given); break;
+                }
+                // Not settled, or settled by signs: the interval said beside them.
+                if (p.at == placement::where::unsettled)
+                    s.why += fmt::format("{}{}; {}: {}{}", s.why.empty() ? "" : "; ", p.words, lies, r.why,
+                                         r.existence.empty() ? "" : "; " + r.existence);
+                else if (p.at == placement::where::inside && p.words.empty())
+                    p.words = fmt::format("{}: {}{}", lies, r.why, r.existence.empty() ? "" : "; " + r.existence);
+            } else {
+                p = place(value, u, range, given);
+            }
             if (p.at == placement::where::outside) {
                 s.outcome = solution::fate::outside_domain;
                 s.unknown = u;
@@ -330,14 +378,14 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
                 s.proof.insert(s.proof.end(), p.proof.begin(), p.proof.end());
             }
         }
-        if (!s.kept())
+        if (!s.kept()) {
+            for (std::size_t i = 0; i < conditions.size(); ++i)
+                if (!condition_redundant[i] && condition_holds(i, s))
+                    condition_redundant[i] = &s;
             continue;
-        GiNaC::exmap values;
-        for (const auto& [u, v] : s.values)
-            values[u] = v;
+        }
         for (std::size_t i = 0; i < conditions.size(); ++i) {
-            const GiNaC::ex holds = expanded_radicands(conditions[i].subs(values, GiNaC::subs_options::no_pattern));
-            if (prove_equal(holds.lhs(), holds.rhs(), context.symbols, context.run).what == verdict::status::proven) {
+            if (condition_holds(i, s)) {
                 s.outcome = solution::fate::condition;
                 s.condition = context.symbols.parse_equation(st.reject[i]);
                 s.why = st.reject_because.value;
@@ -347,15 +395,24 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
             }
         }
     }
-    for (std::size_t i = 0; i < conditions.size(); ++i)
-        if (!condition_used[i])
-            throw error(st.reject[i].where, fmt::format("the condition {} holds for none of the solutions: {}",
+    for (std::size_t i = 0; i < conditions.size(); ++i) {
+        if (condition_used[i])
+            continue;
+        // It holds for a solution, but one that a domain rejects already.
+        if (const solution* s = condition_redundant[i])
+            throw error(st.reject[i].where,
+                        fmt::format("the condition {} is redundant: it holds only for {}, which the domain of {} "
+                                    "({}) already rejects ({}); remove it from reject",
+                                    st.reject[i].value, values_text(s->values, context.symbols),
+                                    context.symbols.text(s->unknown), s->range.to_string(), s->why));
+        throw error(st.reject[i].where, fmt::format("the condition {} holds for none of the solutions: {}",
                                                         st.reject[i].value, [&] {
                                                             std::vector<std::string> all;
                                                             for (const solution& s : solutions)
                                                                 all.push_back(values_text(s.values, context.symbols));
                                                             return fmt::format("{}", fmt::join(all, "; "));
                                                         }()));
+    }
 
     std::vector<std::string> kept, rejected;
     for (const solution& s : solutions)
