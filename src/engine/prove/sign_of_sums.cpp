@@ -4,6 +4,7 @@
 // factored; or A - B with A, B >= 0 through A^2 - B^2.
 #include "engine/prove/sign_prover.h"
 
+#include "engine/prove/angles.h"
 #include "engine/prove/sign_arguments.h"
 
 #include <cln/rational.h>
@@ -14,15 +15,6 @@
 #include <optional>
 
 namespace impact::engine {
-namespace {
-
-// The exact rational value of a bound written in a derivation file.
-GiNaC::numeric exact(double value)
-{
-    return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(value))));
-}
-
-} // namespace
 
 std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int depth) const
 {
@@ -114,6 +106,12 @@ std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int d
             return {s, reason};
         }
     }
+    // A number written with Pi or functions (2 - Pi); sines, cosines and inverse functions
+    // as bounded quantities (sign_of_functions.cpp).
+    if (auto constant = constant_sign(e))
+        return *constant;
+    if (auto bounded = bounded_functions_sign(e, depth))
+        return *bounded;
     return {r, "a sum of terms of unknown sign"};
 }
 
@@ -165,17 +163,17 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::affine_in_bounded_s
         const bool squared = degree == 2 && p.coeff(s, 1).is_zero();
         if (degree != 1 && !squared)
             continue;
-        const GiNaC::numeric low = exact(d.lower), high = exact(d.upper);
-        std::vector<GiNaC::numeric> ends = {low, high};
-        if (squared && !low.is_positive() && !high.is_negative())
-            ends = {0, GiNaC::abs(low) > GiNaC::abs(high) ? low : high};
+        const GiNaC::ex low = exact_end(d, false), high = exact_end(d, true);
+        std::vector<GiNaC::ex> ends = {low, high};
+        if (squared && sign_of_constant(low).value_or(1) <= 0 && sign_of_constant(high).value_or(-1) >= 0)
+            ends = {0, sign_of_constant(-low - high).value_or(0) > 0 ? low : high};
         sign_set r{false, false, false};
         std::vector<std::string> at;
         finding typeset;
         typeset.say(squared ? "affine in " : "linear in ").math(squared ? GiNaC::pow(s, 2) : s);
         typeset.say(", so between its values at the ends of the domain of ").math(s).say(": ");
         bool known = true;
-        for (const GiNaC::numeric& end : ends) {
+        for (const GiNaC::ex& end : ends) {
             const GiNaC::ex value = factored(p.subs(s == end));
             const auto [sign_at, why] = sign(value, depth + 1);
             known = known && sign_at.is_known();
@@ -223,15 +221,15 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::linear_in_bounded_s
         return std::nullopt;
     // The values fill the interval between the values at the two ends; an end that
     // the domain excludes is approached but not attained.
-    const GiNaC::ex low = e.subs(only == exact(d.lower));
-    const GiNaC::ex high = e.subs(only == exact(d.upper));
-    if (!GiNaC::is_a<GiNaC::numeric>(low) || !GiNaC::is_a<GiNaC::numeric>(high))
+    const GiNaC::ex low = e.subs(only == exact_end(d, false));
+    const GiNaC::ex high = e.subs(only == exact_end(d, true));
+    // Each a number (Pi allowed), compared exactly (angles.h).
+    const std::optional<int> lo = sign_of_constant(low), hi = sign_of_constant(high), rising = sign_of_constant(high - low);
+    if (!lo || !hi || !rising)
         return std::nullopt;
-    const double lo = GiNaC::ex_to<GiNaC::numeric>(low).to_double();
-    const double hi = GiNaC::ex_to<GiNaC::numeric>(high).to_double();
-    const double least = std::min(lo, hi), most = std::max(lo, hi);
-    const bool least_open = lo <= hi ? d.lower_open : d.upper_open;
-    const bool most_open = lo <= hi ? d.upper_open : d.lower_open;
+    const int least = *rising >= 0 ? *lo : *hi, most = *rising >= 0 ? *hi : *lo;
+    const bool least_open = *rising >= 0 ? d.lower_open : d.upper_open;
+    const bool most_open = *rising >= 0 ? d.upper_open : d.lower_open;
     sign_set r;
     r.negative = least < 0;
     r.positive = most > 0;

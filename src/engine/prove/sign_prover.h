@@ -43,6 +43,11 @@ private:
     std::vector<std::pair<GiNaC::ex, const domain*>> by_name() const;
     GiNaC::ex factored(const GiNaC::ex& e) const;
 
+    // sign_of_functions.cpp
+    std::optional<std::pair<sign_set, sign_reason>> function_sign(const GiNaC::ex& e, int depth) const;
+    std::optional<std::pair<sign_set, sign_reason>> constant_sign(const GiNaC::ex& e) const;
+    std::optional<std::pair<sign_set, sign_reason>> bounded_functions_sign(const GiNaC::ex& e, int depth) const;
+
     // sign_of_sums.cpp
     std::pair<sign_set, sign_reason> sum_sign(const GiNaC::ex& e, int depth) const;
     std::optional<std::pair<sign_set, sign_reason>> argued_sign(const GiNaC::ex& e, int depth) const;
