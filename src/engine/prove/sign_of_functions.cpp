@@ -34,6 +34,14 @@ bool is_bounded_call(const GiNaC::ex& e)
     return name == "acos" || name == "asin" || name == "atan" || name == "atan2" || name == "tanh";
 }
 
+bool has_sine_or_cosine(const GiNaC::ex& e)
+{
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::function>(*it) && (name_of(*it) == "sin" || name_of(*it) == "cos"))
+            return true;
+    return false;
+}
+
 bool has_bounded(const GiNaC::ex& e)
 {
     for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
@@ -127,10 +135,10 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::constant_sign(const
     return std::make_pair(sign_set::exactly(*s), sign_reason("a number, evaluated at 40 and 60 digits"));
 }
 
-std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_sign(const GiNaC::ex& e,
-                                                                                  int depth) const
+std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_sign(const GiNaC::ex& e, int depth,
+                                                                                  bool trig_only) const
 {
-    if (depth > 4 || !has_bounded(e))
+    if (depth > 4 || !has_bounded(e) || (trig_only && !has_sine_or_cosine(e)))
         return std::nullopt;
     assumptions within = given_;
     within.known = std::make_shared<worked_out>();

@@ -33,6 +33,10 @@ std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int d
         return *linear;
     if (auto affine = affine_in_bounded_symbol(e, depth))
         return *affine;
+    // sin and cos as bounded quantities (sign_of_functions.cpp) before monotonicity, which
+    // would settle for >= 0 where > 0 holds (m c^2 + E - E cos(theta), increasing in c from 0).
+    if (auto bounded = bounded_functions_sign(e, depth, true))
+        return *bounded;
     if (auto argued = argued_sign(e, depth))
         return *argued;
     const bool radical = has_radical(e);
