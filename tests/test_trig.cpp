@@ -245,12 +245,18 @@ BOOST_AUTO_TEST_CASE(bounds_of_sin_cos_exp_log_and_the_inverse_functions_are_pro
                                                   check("atan_below", "atan(x) < Pi/2") +
                                                   check("acos_below", "acos(u) <= Pi") +
                                                   check("asin_sign", "asin(phi) >= 0") +
+                                                  check("above_pi", "x^2 + 4 > Pi") +
+                                                  check("not_above_pi", "x^2 + 3 > Pi") +
                                                   check("too_tight", "cos(t) < 1")));
     for (const char* name : {"cos_below_one", "sin_above_minus_one", "one_minus_cos", "squares", "sum_of_both",
-                             "exp", "sin_on_theta", "log_above_one", "atan_below", "acos_below", "asin_sign"})
+                             "exp", "sin_on_theta", "log_above_one", "atan_below", "acos_below", "asin_sign",
+                             "above_pi"})
         BOOST_TEST(status(d, name) == "proven", name);
     BOOST_TEST(says(check_named(d, "cos_below_one").outcome.proof.at(0).words, "cos(t) in [-1, 1]"));
     BOOST_TEST(says(check_named(d, "sin_on_theta").outcome.proof.at(0).words, "theta in [0, 3], where sin is >= 0"));
+    BOOST_TEST(says(check_named(d, "atan_below").outcome.proof.at(0).words, "with atan(x) in (-Pi/2, Pi/2)"));
+    BOOST_TEST(says(check_named(d, "above_pi").outcome.proof.at(0).words, "its numbers 4-Pi > 0"));
+    BOOST_TEST(status(d, "not_above_pi") == "failed");   // 3 < Pi at x = 0
     BOOST_TEST((check_named(d, "too_tight").outcome.what != engine::verdict::status::proven));   // cos(0) = 1
 }
 

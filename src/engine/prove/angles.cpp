@@ -132,6 +132,11 @@ GiNaC::ex exact_end(const domain& d, bool upper)
     return GiNaC::numeric(cln::cl_N(cln::rational(cln::cl_DF(upper ? d.upper : d.lower))));
 }
 
+bool without_symbols(const GiNaC::ex& e)
+{
+    return !has_symbol(e);
+}
+
 std::optional<int> sign_of_constant(const GiNaC::ex& c)
 {
     if (GiNaC::is_a<GiNaC::numeric>(c)) {

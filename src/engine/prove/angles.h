@@ -21,6 +21,9 @@ namespace impact::engine {
 /// a name (`Pi/2`), else the double's exact rational (as the sign prover has always read it).
 GiNaC::ex exact_end(const domain& d, bool upper);
 
+/// Whether `e` holds no symbol: a number, possibly written with Pi or functions (2 - Pi).
+bool without_symbols(const GiNaC::ex& e);
+
 /// The sign (-1, 0 or 1) of an expression without symbols, or none when it cannot be
 /// decided (a value too near 0 to tell at 60 digits, or not a real number).
 std::optional<int> sign_of_constant(const GiNaC::ex& c);

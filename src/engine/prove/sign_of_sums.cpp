@@ -116,6 +116,23 @@ std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int d
         return *constant;
     if (auto bounded = bounded_functions_sign(e, depth))
         return *bounded;
+    // Its numbers as one (4 - Pi in x^2 + 4 - Pi), beside the terms of known sign.
+    GiNaC::ex numbers = 0;
+    sign_set rest = sign_set::exactly(0);
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        const GiNaC::ex t = e.op(i);
+        if (without_symbols(t))
+            numbers += t;
+        else
+            rest = plus(rest, terms[i]);
+    }
+    if (!numbers.is_zero())
+        if (const auto number = constant_sign(numbers)) {
+            const sign_set all = plus(rest, number->first);
+            if (all.is_known())
+                return {all, fmt::format("a sum of terms of one sign, its numbers {} {}", text(numbers),
+                                         number->first.describe())};
+        }
     return {r, "a sum of terms of unknown sign"};
 }
 
