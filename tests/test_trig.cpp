@@ -188,6 +188,11 @@ BOOST_AUTO_TEST_CASE(an_inverse_function_undoes_its_function_on_the_principal_ra
     BOOST_TEST(status(d, "asin_outside") == "failed");   // asin(sin(3)) = Pi - 3
     BOOST_TEST(status(d, "acos_inside") == "proven");
     BOOST_TEST(status(d, "atan_inside") == "proven");
+    // A check's `assuming` narrows theta to [0, 1]: there asin(sin(theta)) = theta.
+    const engine::derivation narrowed = derive_text(over("[[check]]\nname = \"asin_assumed\"\n"
+                                                         "claim = \"asin(sin(theta)) = theta\"\n"
+                                                         "assuming = { theta = \"[0, 1]\" }\n"));
+    BOOST_TEST(status(narrowed, "asin_assumed") == "proven");
 }
 
 // The principal range with Pi at its ends, through the API (t in [-Pi/2, Pi/2]).

@@ -373,15 +373,16 @@ GiNaC::ex split_logs(const GiNaC::ex& e, const assumptions& given, facts& used)
         return map_operands(e, [&](const GiNaC::ex& x) { return split_logs(x, given, used); });
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> factors;
     factors_of(e.op(0), 1, given, factors);
-    GiNaC::ex sum = 0, rest = 1;
+    // The rest is the argument divided by the factors split off, not the product of the
+    // others: sqrt(a b) is not sqrt(a) sqrt(b) where a, b < 0.
+    GiNaC::ex sum = 0, rest = e.op(0);
     std::size_t split = 0;
     for (const auto& [f, k] : factors) {
         const bool positive = GiNaC::is_a<GiNaC::numeric>(f) ? GiNaC::ex_to<GiNaC::numeric>(f).is_positive()
                                                              : prove_sign(f, given).sign.is_positive();
-        if (!positive) {
-            rest *= GiNaC::pow(f, k);
+        if (!positive)
             continue;
-        }
+        rest *= GiNaC::pow(f, -k);
         sum += k * GiNaC::log(f);
         ++split;
         if (!GiNaC::is_a<GiNaC::numeric>(f))
@@ -389,6 +390,7 @@ GiNaC::ex split_logs(const GiNaC::ex& e, const assumptions& given, facts& used)
     }
     if (split == 0)
         return e;
+    rest = GiNaC::normal(rest);
     if (!rest.is_equal(1))
         sum += GiNaC::log(rest);
     return sum;
