@@ -90,11 +90,11 @@ BOOST_AUTO_TEST_CASE(an_attached_condition_narrows_the_domain_a_sign_is_proven_u
 }
 
 // log(u/w) = log(u) - log(w) needs u > 0 and w > 0 (which give u/w > 0, so that is not
-// said again); sampled only where they hold.
-BOOST_AUTO_TEST_CASE(a_claim_true_only_where_its_logarithms_are_defined_is_sampled_there)
+// said again); proven where they hold (engine/prove/transcendental.h), and said so.
+BOOST_AUTO_TEST_CASE(a_claim_true_only_where_its_logarithms_are_defined_is_proven_there)
 {
     const engine::derivation d = derive_text(over_reals(check("quotient_of_logs", "log(u/w) = log(u) - log(w)")));
-    BOOST_TEST(status(d, "quotient_of_logs") == "sampled (200 points), where u > 0, w > 0");
+    BOOST_TEST(status(d, "quotient_of_logs") == "proven, where u > 0, w > 0");
 }
 
 // T = 2 u/q: T q = 2 u is GiNaC's 2 u once T is put in, but T itself needs q != 0.

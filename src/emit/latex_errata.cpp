@@ -123,6 +123,10 @@ std::string proven_by(const engine::verdict& v)
     case basis::angles:
         return "both angles lie in $[0, \\pi]$, where $\\cos$ is one-to-one, and their cosines are proven equal";
     case basis::counterexample: return "refuted at a point of the domains";
+    case basis::decided:
+        return "the angles written over a basis, every $\\sin$, $\\cos$ and $\\tan$ through the sine and cosine of "
+               "the base angles, reduced modulo $\\sin^2 + \\cos^2 = 1$ (exponentials over a basis of exponents), "
+               "leave no difference";
     case basis::none: break;
     }
     return "";

@@ -187,7 +187,7 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
         c.outcome = check_limit(lhs, rhs, *c.limit, given, c.value, c.limit_by);
         c.statement += fmt::format(" in the limit {}", spec_check.limit->written.value);
     } else if (c.op == relation::equal) {
-        c.outcome = prove_equal(lhs, rhs, out_.symbols, run_, when_unproven::sample, settled.attached);
+        c.outcome = prove_equal(lhs, rhs, out_.symbols, run_, when_unproven::sample, settled.attached, &under);
         c.value = lhs;
     } else if (auto through = prove_inequality_through(lhs, c.op, rhs, proven_identities(), out_.symbols, under)) {
         c.outcome = std::move(*through);

@@ -41,13 +41,29 @@ GiNaC::ex flattened(const GiNaC::ex& f)
     return f;
 }
 
+// factor() with Pi (and GiNaC's other constants) standing as symbols: GiNaC's factor()
+// refuses a polynomial whose coefficients are not rational ("gcd: arguments must be
+// polynomials over the rationals"), and Pi - x is a polynomial in x and Pi.
+GiNaC::ex factored_with_constants(const GiNaC::ex& e)
+{
+    bool constants = false;
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end() && !constants; ++it)
+        constants = GiNaC::is_a<GiNaC::constant>(*it);
+    if (!constants)
+        return factor_reproducibly(e);
+    static const GiNaC::symbol pi("Pi"), euler("Euler"), catalan("Catalan");
+    const GiNaC::exmap in{{GiNaC::Pi, pi}, {GiNaC::Euler, euler}, {GiNaC::Catalan, catalan}};
+    const GiNaC::exmap out{{pi, GiNaC::Pi}, {euler, GiNaC::Euler}, {catalan, GiNaC::Catalan}};
+    return factor_reproducibly(e.subs(in, GiNaC::subs_options::no_pattern)).subs(out, GiNaC::subs_options::no_pattern);
+}
+
 } // namespace
 
 // factor() on a polynomial; an expression with radicals is left as it is, since
 // factoring under a root may pull out -1 and leave I behind.
 GiNaC::ex factor_polynomial(const GiNaC::ex& e)
 {
-    return worth_factoring(e) ? flattened(factor_reproducibly(e)) : e;
+    return worth_factoring(e) ? flattened(factored_with_constants(e)) : e;
 }
 
 GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
@@ -61,7 +77,7 @@ GiNaC::ex factor_polynomial(const GiNaC::ex& e, proof_cache& run)
     if (known != factored.end())
         return known->second;
     const bool worth = worth_factoring(e);
-    const GiNaC::ex f = worth ? flattened(factor_reproducibly(e)) : e;
+    const GiNaC::ex f = worth ? flattened(factored_with_constants(e)) : e;
     if (factored.size() >= 4096)  // bounded: a long run (the fuzzer) meets ever new polynomials
         factored.clear();
     factored.emplace(e, f);

@@ -3,6 +3,8 @@
 // else sampled (sampling.cpp); and a verdict in words.
 #include "engine/prove/prove_internal.h"
 
+#include "engine/prove/transcendental.h"
+
 #include "engine/algebra/polynomial.h"
 
 #include <fmt/format.h>
@@ -152,7 +154,7 @@ std::string to_string(const verdict& v)
 }
 
 verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run,
-                    when_unproven otherwise, const std::vector<condition>& where)
+                    when_unproven otherwise, const std::vector<condition>& where, const assumptions* under)
 {
     const GiNaC::exmap abbreviations = symbols.abbreviations();
     const assumptions given = declared_assumptions(symbols, run);
@@ -208,6 +210,10 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
         v.method = "difference normalises to a non-zero rational function";
         return v;
     }
+    // sin, cos, tan, their hyperbolic kin, exp and log: decided (transcendental.h), under
+    // the conditions the claim is said to hold under (log(p*q) splits where p, q > 0).
+    if (auto decided = decide_transcendental(a, b, under ? *under : impact::engine::where(given, where)))
+        return *decided;
     if (auto angles = prove_equal_angles(a, b, symbols, given))
         return *angles;
     if (otherwise == when_unproven::give_up) {

@@ -36,6 +36,8 @@ struct verdict {
         same_difference,  ///< two equations with the same difference of sides
         angles,           ///< two angles in [0, pi] whose cosines are proven equal
         counterexample,   ///< a claim said not to hold, refuted at a point of the domains
+        decided,          ///< sin, cos, tan, their hyperbolic kin, exp and log: angles and exponents
+                          ///< over a basis, reduced modulo sin^2 + cos^2 = 1 (transcendental.h)
     };
     basis how = basis::none;
     std::size_t samples = 0;     ///< points tested when not proven symbolically
@@ -64,8 +66,12 @@ enum class when_unproven { sample, give_up };
 /// Decides whether `lhs == rhs` for all values of the symbols' domains; `run` keeps what
 /// the proof works out for the proofs after it.
 /// Sampled, it is tested where the conditions `where` hold (definedness.h).
+/// A claim of sin, cos, tan, their hyperbolic kin, exp or log is decided under `under`
+/// (a check's narrowed domains, with the conditions `where`) when given, else under the
+/// declared domains narrowed by `where`.
 verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run,
-                    when_unproven otherwise = when_unproven::sample, const std::vector<condition>& where = {});
+                    when_unproven otherwise = when_unproven::sample, const std::vector<condition>& where = {},
+                    const assumptions* under = nullptr);
 
 /// Decides `lhs op rhs` for an inequality: proven from the signs of the factors of
 /// the difference under `given` (prove_sign), else sampled, else failed.

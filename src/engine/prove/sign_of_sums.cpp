@@ -4,14 +4,18 @@
 // factored; or A - B with A, B >= 0 through A^2 - B^2.
 #include "engine/prove/sign_prover.h"
 
+#include "engine/prove/angles.h"
 #include "engine/prove/sign_arguments.h"
 
+#include <cln/rational.h>
+#include <cln/real.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <optional>
 
 namespace impact::engine {
+
 std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int depth) const
 {
     sign_set r = sign_set::exactly(0);
@@ -29,6 +33,10 @@ std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int d
         return *linear;
     if (auto affine = affine_in_bounded_symbol(e, depth))
         return *affine;
+    // sin and cos as bounded quantities (sign_of_functions.cpp) before monotonicity, which
+    // would settle for >= 0 where > 0 holds (m c^2 + E - E cos(theta), increasing in c from 0).
+    if (auto bounded = bounded_functions_sign(e, depth, true))
+        return *bounded;
     if (auto argued = argued_sign(e, depth))
         return *argued;
     const bool radical = has_radical(e);
@@ -102,6 +110,29 @@ std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int d
             return {s, reason};
         }
     }
+    // A number written with Pi or functions (2 - Pi); sines, cosines and inverse functions
+    // as bounded quantities (sign_of_functions.cpp).
+    if (auto constant = constant_sign(e))
+        return *constant;
+    if (auto bounded = bounded_functions_sign(e, depth))
+        return *bounded;
+    // Its numbers as one (4 - Pi in x^2 + 4 - Pi), beside the terms of known sign.
+    GiNaC::ex numbers = 0;
+    sign_set rest = sign_set::exactly(0);
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        const GiNaC::ex t = e.op(i);
+        if (without_symbols(t))
+            numbers += t;
+        else
+            rest = plus(rest, terms[i]);
+    }
+    if (!numbers.is_zero())
+        if (const auto number = constant_sign(numbers)) {
+            const sign_set all = plus(rest, number->first);
+            if (all.is_known())
+                return {all, fmt::format("a sum of terms of one sign, its numbers {} {}", text(numbers),
+                                         number->first.describe())};
+        }
     return {r, "a sum of terms of unknown sign"};
 }
 
@@ -153,11 +184,10 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::affine_in_bounded_s
         const bool squared = degree == 2 && p.coeff(s, 1).is_zero();
         if (degree != 1 && !squared)
             continue;
-        // The ends exactly, π among them (Pi/2).
-        const GiNaC::ex low = d.exact_lower(), high = d.exact_upper();
+        const GiNaC::ex low = exact_end(d, false), high = exact_end(d, true);
         std::vector<GiNaC::ex> ends = {low, high};
-        if (squared && sign_of_constant(low) <= 0 && sign_of_constant(high) >= 0)
-            ends = {0, sign_of_constant(low * low - high * high) > 0 ? low : high};
+        if (squared && sign_of_number(low).value_or(1) <= 0 && sign_of_number(high).value_or(-1) >= 0)
+            ends = {0, sign_of_number(-low - high).value_or(0) > 0 ? low : high};
         sign_set r{false, false, false};
         std::vector<std::string> at;
         finding typeset;
@@ -212,24 +242,19 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::linear_in_bounded_s
         return std::nullopt;
     // The values fill the interval between the values at the two ends; an end that
     // the domain excludes is approached but not attained.
-    // The values at the ends exactly (an end may be π's: Pi/2), constants whose signs are exact.
-    const GiNaC::ex low = e.subs(only == d.exact_lower());
-    const GiNaC::ex high = e.subs(only == d.exact_upper());
-    const auto constant = [](const GiNaC::ex& v) {
-        return GiNaC::is_a<GiNaC::numeric>(v) ||
-               (v.has(GiNaC::Pi) && GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(v)) && v.info(GiNaC::info_flags::real));
-    };
-    if (!constant(low) || !constant(high))
+    const GiNaC::ex low = e.subs(only == exact_end(d, false));
+    const GiNaC::ex high = e.subs(only == exact_end(d, true));
+    // Each a number (Pi allowed), compared exactly (angles.h).
+    const std::optional<int> lo = sign_of_number(low), hi = sign_of_number(high), rising = sign_of_number(high - low);
+    if (!lo || !hi || !rising)
         return std::nullopt;
-    const bool rising = sign_of_constant(high - low) >= 0;
-    const GiNaC::ex least = rising ? low : high, most = rising ? high : low;
-    const int least_sign = sign_of_constant(least), most_sign = sign_of_constant(most);
-    const bool least_open = rising ? d.lower_open : d.upper_open;
-    const bool most_open = rising ? d.upper_open : d.lower_open;
+    const int least = *rising >= 0 ? *lo : *hi, most = *rising >= 0 ? *hi : *lo;
+    const bool least_open = *rising >= 0 ? d.lower_open : d.upper_open;
+    const bool most_open = *rising >= 0 ? d.upper_open : d.lower_open;
     sign_set r;
-    r.negative = least_sign < 0;
-    r.positive = most_sign > 0;
-    r.zero = (least_sign < 0 && most_sign > 0) || (least_sign == 0 && !least_open) || (most_sign == 0 && !most_open);
+    r.negative = least < 0;
+    r.positive = most > 0;
+    r.zero = (least < 0 && most > 0) || (least == 0 && !least_open) || (most == 0 && !most_open);
     sign_reason reason(fmt::format("linear in {} in {}: {} and {} at the ends", text(only), d.to_string(),
                                    text(low), text(high)));
     reason.typeset.say("linear in ").math(only).say(", ").math(low).say(" and ").math(high).say(

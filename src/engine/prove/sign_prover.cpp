@@ -145,6 +145,8 @@ std::pair<sign_set, sign_reason> sign_prover::decide(const GiNaC::ex& e, int dep
             return {{false, false, true}, "an exponential"};
         if (name == "cosh")
             return {{false, false, true}, "a hyperbolic cosine, >= 1"};
+        if (auto known = function_sign(e, depth))
+            return *known;
     }
     return {sign_set::any(), "not determined"};
 }

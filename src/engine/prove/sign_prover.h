@@ -43,6 +43,14 @@ private:
     std::vector<std::pair<GiNaC::ex, const domain*>> by_name() const;
     GiNaC::ex factored(const GiNaC::ex& e) const;
 
+    // sign_of_functions.cpp
+    std::optional<std::pair<sign_set, sign_reason>> function_sign(const GiNaC::ex& e, int depth) const;
+    std::optional<std::pair<sign_set, sign_reason>> constant_sign(const GiNaC::ex& e) const;
+    // `trig_only`: only for a sum with sin or cos in it (tried before the arguments that would
+    // settle for less).
+    std::optional<std::pair<sign_set, sign_reason>> bounded_functions_sign(const GiNaC::ex& e, int depth,
+                                                                           bool trig_only = false) const;
+
     // sign_of_sums.cpp
     std::pair<sign_set, sign_reason> sum_sign(const GiNaC::ex& e, int depth) const;
     std::optional<std::pair<sign_set, sign_reason>> argued_sign(const GiNaC::ex& e, int depth) const;

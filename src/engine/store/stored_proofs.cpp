@@ -123,7 +123,7 @@ json derivation_codec::put_verdict(const verdict& v)
 void derivation_codec::get_verdict(const json& j, verdict& v)
 {
     v.what = enum_of<verdict::status>(j.at(0), 2);
-    v.how = enum_of<verdict::basis>(j.at(1), 7);
+    v.how = enum_of<verdict::basis>(j.at(1), 8);
     v.samples = j.at(2).get<std::size_t>();
     v.residual = get(j.at(3));
     v.method = j.at(4).get<std::string>();
