@@ -4,7 +4,8 @@
 // documents every field the reader accepts, and no other.
 //
 // The examples are written for these tests, not from the paper (a ball, a spring, a
-// pendulum, a seesaw, a puck); the expected results are textbook mechanics.
+// pendulum, a seesaw, a puck, a photon, an incline, a swing, a scattered charge); the expected
+// results are textbook mechanics.
 #define BOOST_TEST_MODULE test_examples
 #include <boost/test/unit_test.hpp>
 
@@ -32,7 +33,7 @@ namespace {
 using namespace impact;
 using namespace impact::testing;
 
-// Derived once for every test case: deriving the six files takes a fraction of a second.
+// Derived once for every test case: deriving the ten files takes a fraction of a second.
 const engine::library& examples()
 {
     static const engine::library lib =
@@ -92,8 +93,8 @@ BOOST_AUTO_TEST_SUITE(test_examples)
 
 BOOST_AUTO_TEST_CASE(every_example_is_derived_with_every_check_proven)
 {
-    const std::set<std::string> expected = {"compton", "pendulum", "pushed_block", "pushed_puck", "seesaw", "spring",
-                                            "thrown_ball"};
+    const std::set<std::string> expected = {"compton", "incline", "pendulum", "pushed_block", "pushed_puck",
+                                            "rutherford", "seesaw", "spring", "swing", "thrown_ball"};
     BOOST_TEST((std::set<std::string>(examples().order.begin(), examples().order.end()) == expected));
     for (const std::string& id : examples().order) {
         const engine::derivation& d = example(id);
@@ -364,6 +365,72 @@ BOOST_AUTO_TEST_CASE(a_photon_scattered_by_a_small_angle_loses_what_its_kernel_c
                                 (dir / "main").string();
     BOOST_TEST(std::system(command.c_str()) == 0, command);
     fs::remove_all(dir);
+}
+
+// The kernels of the examples with angles (sin, cos and atan; 1 - cos(theta_0) as 2 sin^2(theta_0/2)):
+// every output within 4 ulps in every type, an angle sampled near an end of its domain.
+BOOST_AUTO_TEST_CASE(the_kernels_of_angles_are_within_4_ulps_in_every_type)
+{
+    struct angled { std::string id, name, regime; };
+    for (const angled& a : {angled{"incline", "incline_slide", "alpha near Pi/2"},
+                            angled{"swing", "swing_bottom", "theta_0 near 0"},
+                            angled{"rutherford", "rutherford", "E, kappa, b over 12 decades"}}) {
+        const engine::derivation& d = example(a.id);
+        const verify::kernel_plan plan =
+            verify::plan_kernel(kernel_named(d, a.name), engine::declaration_order(d.symbols));
+        BOOST_TEST_REQUIRE((!plan.components.empty() && plan.components.size() == plan.emitted.size()), a.name);
+        for (std::size_t i = 0; i < plan.components.size(); ++i)
+            for (const verify::accuracy& in : {plan.emitted[i].in_float, plan.emitted[i].in_double,
+                                               plan.emitted[i].in_long_double})
+                BOOST_TEST(in.max_ulps <= 4.0, a.name + ": " + plan.components[i].name);
+        BOOST_TEST(std::any_of(plan.samples.begin(), plan.samples.end(),
+                               [&](const verify::sample& s) { return s.regime == a.regime; }), a.regime);
+    }
+}
+
+// Shot up at v_0 against g (sin(alpha) + mu cos(alpha)), a block slides v_0^2 over twice that.
+BOOST_AUTO_TEST_CASE(a_block_shot_up_an_incline_slides_v0_squared_over_twice_its_deceleration)
+{
+    const engine::derivation& d = example("incline");
+    const GiNaC::ex g = sym(d, "g"), mu = sym(d, "mu"), alpha = sym(d, "alpha"), v_0 = sym(d, "v_0");
+    const GiNaC::ex a_up = g * (GiNaC::sin(alpha) + mu * GiNaC::cos(alpha));
+    BOOST_TEST(equal(value_of(d, "d"), v_0 * v_0 / (2 * a_up)));
+    BOOST_TEST(equal(value_of(d, "t_up"), v_0 / a_up));
+    BOOST_TEST(equal(value_of(d, "alpha_s"), GiNaC::atan(mu)));
+    // On a vertical wall, no friction: the height of a ball thrown up at v_0.
+    BOOST_TEST(equal(value_of(d, "d").subs(alpha == GiNaC::Pi / 2), v_0 * v_0 / (2 * g)));
+}
+
+// Released at theta_0: m v^2/2 = m g L (cos(theta) - cos(theta_0)), T - m g cos(theta) = m v^2/L,
+// so T = m g (3 cos(theta) - 2 cos(theta_0)): m g cos(theta_0) at the release; as hard as the
+// weight where 3 cos(theta_w) = 1 + 2 cos(theta_0), -acos(...) outside (0, pi/2].
+BOOST_AUTO_TEST_CASE(a_pendulum_s_string_holds_m_g_cos_theta_0_at_the_release)
+{
+    const engine::derivation& d = example("swing");
+    const GiNaC::ex m = sym(d, "m"), g = sym(d, "g"), L = sym(d, "L"), theta = sym(d, "theta");
+    const GiNaC::ex c_0 = GiNaC::cos(sym(d, "theta_0")), T = value_of(d, "T");
+    BOOST_TEST(equal(T, m * g * (3 * GiNaC::cos(theta) - 2 * c_0)));
+    BOOST_TEST(equal(T.subs(theta == sym(d, "theta_0")), m * g * c_0));
+    BOOST_TEST(equal(GiNaC::pow(value_of(d, "v"), 2), 2 * g * L * (GiNaC::cos(theta) - c_0)));
+    BOOST_TEST(equal(value_of(d, "theta_w"), GiNaC::acos(GiNaC::ex(1) / 3 + 2 * c_0 / 3)));
+    const engine::step_result& as_weight = step_solving(d, "theta_w");
+    BOOST_TEST_REQUIRE(as_weight.solutions.size() == 2u);
+    const engine::solution& negative = as_weight.solutions[0].kept() ? as_weight.solutions[1] : as_weight.solutions[0];
+    BOOST_TEST((negative.outcome == engine::solution::fate::outside_domain));
+    BOOST_TEST(equal(output_named(kernel_named(d, "swing_bottom"), "T").values[0], m * g * (3 - 2 * c_0))); // theta = 0
+}
+
+// Rutherford: cot(theta/2) = 2 E b / kappa; closest where E = E b^2/r^2 + kappa/r.
+BOOST_AUTO_TEST_CASE(a_charge_passing_a_nucleus_at_b_is_turned_by_2_atan_kappa_over_2_E_b)
+{
+    const engine::derivation& d = example("rutherford");
+    const GiNaC::ex E = sym(d, "E"), kappa = sym(d, "kappa"), b = sym(d, "b");
+    BOOST_TEST(equal(value_of(d, "theta"), 2 * GiNaC::atan(kappa / (2 * E * b))));
+    BOOST_TEST(equal(value_of(d, "r_min"), (kappa + GiNaC::sqrt(kappa * kappa + 4 * E * E * b * b)) / (2 * E)));
+    // At b = kappa/(2 E), half the head-on distance, by a right angle.
+    const GiNaC::ex right = GiNaC::evalf(value_of(d, "theta").subs(b == kappa / (2 * E)) - GiNaC::Pi / 2);
+    BOOST_TEST_REQUIRE(GiNaC::is_a<GiNaC::numeric>(right));
+    BOOST_TEST(GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(right)).to_double() < 1e-15);
 }
 
 BOOST_AUTO_TEST_CASE(a_pushed_block_sticks_up_to_mu_m_g_then_slides)
