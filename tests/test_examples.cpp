@@ -309,7 +309,7 @@ BOOST_AUTO_TEST_CASE(a_pushed_puck_gains_the_impulse_of_the_force)
 // Compton scattering: E' = E/(1 + (E/(m_e c^2))(1 - cos theta)), and the electron's T_e = E - E'.
 // Its kernel calls sin: a small angle's 1 - cos(theta), which cos(theta) rounded to 1 makes 0,
 // is computed as 2 sin^2(theta/2), within 4 ulps in every type and regime, small angles among them.
-BOOST_AUTO_TEST_CASE(a_photon_scattered_by_a_small_angle_loses_what_its_kernel_computes_within_4_ulps)
+BOOST_AUTO_TEST_CASE(a_photon_scattered_by_a_small_angle_loses_what_its_kernel_computes_within_4_ulps, *boost::unit_test::label("measured"))
 {
     const engine::derivation& d = example("compton");
     const GiNaC::ex E = sym(d, "E"), E_0 = sym(d, "E_0"), theta = sym(d, "theta");
@@ -369,7 +369,7 @@ BOOST_AUTO_TEST_CASE(a_photon_scattered_by_a_small_angle_loses_what_its_kernel_c
 
 // The kernels of the examples with angles (sin, cos and atan; 1 - cos(theta_0) as 2 sin^2(theta_0/2)):
 // every output within 4 ulps in every type, an angle sampled near an end of its domain.
-BOOST_AUTO_TEST_CASE(the_kernels_of_angles_are_within_4_ulps_in_every_type)
+BOOST_AUTO_TEST_CASE(the_kernels_of_angles_are_within_4_ulps_in_every_type, *boost::unit_test::label("measured"))
 {
     struct angled { std::string id, name, regime; };
     for (const angled& a : {angled{"incline", "incline_slide", "alpha near Pi/2"},
@@ -488,7 +488,7 @@ BOOST_AUTO_TEST_CASE(generated_files_name_a_derivation_file_by_its_folders_own_n
     BOOST_TEST(engine::folder_and_file_name("./x.toml") == here);
 }
 
-BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted)
+BOOST_AUTO_TEST_CASE(the_example_kernels_meet_their_bounds_and_are_emitted, *boost::unit_test::label("measured"))
 {
     std::vector<std::string> missed;
     const pipeline::file_set files = pipeline::generate_kernels(examples(), &missed);
