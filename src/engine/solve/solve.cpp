@@ -337,8 +337,9 @@ GiNaC::exmap solve_equations(const spec::step& st, const solve_context& context,
             const domain& range = *context.symbols.domain_of(u);
             placement p;
             // A root of sin, cos or tan = w: first by the interval its value lies in.
+            const GiNaC::ex& unknown = u;   // a lambda may not capture a structured binding in C++17
             const auto root = std::find_if(intervals[n].begin(), intervals[n].end(),
-                                           [&](const trigonometric_root* r) { return r->unknown.is_equal(u); });
+                                           [&](const trigonometric_root* r) { return r->unknown.is_equal(unknown); });
             if (root != intervals[n].end()) {
                 const trigonometric_root& r = **root;
                 const std::string lies = fmt::format(
