@@ -86,6 +86,23 @@ void expect_refused(const std::string& text, const std::string& where, const std
     BOOST_TEST((snapshot(s.root / "output") == before));
 }
 
+// `impact regenerate --no-cache` of the scratch folder's derivations/ into its output/, run
+// under a German locale (0,5 for 0.5, another collation) and a time zone 13:45 ahead of UTC
+// (a POSIX rule, needing no time-zone database), started two folders down with relative
+// paths; `arguments` added. The committed output/ is written in the C locale and UTC.
+run_result regenerate_elsewhere(const scratch& s, const std::string& arguments)
+{
+    BOOST_TEST_REQUIRE(std::setlocale(LC_ALL, "de_DE.UTF-8") != nullptr,
+                       "the locale de_DE.UTF-8 is not installed (scripts/setup.sh generates it)");
+    std::setlocale(LC_ALL, "C");
+    fs::remove_all(s.root / "output");
+    fs::create_directories(s.root / "elsewhere" / "deeper");
+    return impact::testing::run_command(
+        "cd '" + (s.root / "elsewhere" / "deeper").string() + "' && LC_ALL=de_DE.UTF-8 LANG=de_DE.UTF-8 "
+        "TZ=XYZ-13:45 " + IMPACT_BINARY + " regenerate --no-cache" + arguments +
+        " --derivations ../../derivations --output ../../output");
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_CASE(regeneration_reproduces_the_committed_output_byte_for_byte_under_another_locale_time_zone_and_folder)
@@ -97,15 +114,8 @@ BOOST_AUTO_TEST_CASE(regeneration_reproduces_the_committed_output_byte_for_byte_
     // ahead of UTC (a POSIX rule, needing no time-zone database), which moves any date
     // printed, started two folders down with relative paths: the same bytes. (CTest runs
     // this case alone, as test_cli_output: it takes most of test_cli's time.)
-    BOOST_TEST_REQUIRE(std::setlocale(LC_ALL, "de_DE.UTF-8") != nullptr,
-                       "the locale de_DE.UTF-8 is not installed (scripts/setup.sh generates it)");
-    std::setlocale(LC_ALL, "C");
     const scratch s;
-    fs::remove_all(s.root / "output");
-    fs::create_directories(s.root / "elsewhere" / "deeper");
-    const run_result r = impact::testing::run_command(
-        "cd '" + (s.root / "elsewhere" / "deeper").string() + "' && LC_ALL=de_DE.UTF-8 LANG=de_DE.UTF-8 "
-        "TZ=XYZ-13:45 " + IMPACT_BINARY + " regenerate --no-cache --derivations ../../derivations --output ../../output");
+    const run_result r = regenerate_elsewhere(s, "");
     BOOST_TEST_REQUIRE(r.status == 0, r.output);
     const auto fresh = snapshot(s.root / "output");
     const auto committed = snapshot(source_dir / "output");
@@ -140,17 +150,10 @@ BOOST_AUTO_TEST_CASE(a_representative_subset_regenerates_as_committed_under_anot
     const std::set<std::string> whole_folder = {
         ".impact-output", "derivations.json", "errata.md", "verification.md", "report.tex",
         "report.pdf", "kernels/impact/impact.hpp", "kernels/impact/common.hpp"};
-    BOOST_TEST_REQUIRE(std::setlocale(LC_ALL, "de_DE.UTF-8") != nullptr,
-                       "the locale de_DE.UTF-8 is not installed (scripts/setup.sh generates it)");
-    std::setlocale(LC_ALL, "C");
     const scratch s(files::none);
     for (const std::string& name : chosen)
         fs::copy_file(source_dir / "derivations" / name, s.root / "derivations" / name);
-    fs::remove_all(s.root / "output");
-    fs::create_directories(s.root / "elsewhere" / "deeper");
-    const run_result r = impact::testing::run_command(
-        "cd '" + (s.root / "elsewhere" / "deeper").string() + "' && LC_ALL=de_DE.UTF-8 LANG=de_DE.UTF-8 "
-        "TZ=XYZ-13:45 " + IMPACT_BINARY + " regenerate --no-cache --jobs 2 --derivations ../../derivations --output ../../output");
+    const run_result r = regenerate_elsewhere(s, " --jobs 2");
     BOOST_TEST_REQUIRE(r.status == 0, r.output);
     const auto fresh = snapshot(s.root / "output");
     const auto committed = snapshot(source_dir / "output");
