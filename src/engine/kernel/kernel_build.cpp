@@ -304,9 +304,19 @@ GiNaC::symbol kernel_builder::select_name(const GiNaC::ex& s)
 {
     if (const auto known = select_names_.find(s); known != select_names_.end())
         return known->second;
+    // Two selects that differ at a point of the domains are not proven equal: the proof,
+    // whose expansion of two unequal conditions takes seconds, is tried only for selects
+    // that agree at the points drawn (a rough kernel's fixed-mass limits meet dozens).
+    const assumptions given = declared_assumptions(d_.symbols, run_);
+    const auto differ = [&](const GiNaC::ex& a, const GiNaC::ex& b) {
+        for (std::size_t i = 0; i < 3; ++i)
+            if (nonzero_somewhere(a.op(i) - b.op(i), given, 2))
+                return true;
+        return false;
+    };
     for (auto& [members, symbol] : select_classes_)
         for (const GiNaC::ex& member : members) {
-            bool equal = true;
+            bool equal = !differ(s, member);
             for (std::size_t i = 0; i < 3 && equal; ++i)
                 equal = prove_equal(s.op(i), member.op(i), d_.symbols, run_, when_unproven::give_up).what ==
                         verdict::status::proven;
