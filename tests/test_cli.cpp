@@ -7,15 +7,18 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <clocale>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -258,6 +261,37 @@ BOOST_AUTO_TEST_CASE(derive_prints_eq8_results_and_proven_checks)
     BOOST_TEST(r.output.find("proven             momentum_conserved") != std::string::npos, r.output);
     BOOST_TEST(r.output.find("proven             restitution_law_holds") != std::string::npos, r.output);
     BOOST_TEST(r.output.find("proven             elastic_limit_M") != std::string::npos, r.output);
+}
+
+// Where a physicist editing a file waits: each part's time, the slowest first, and the whole.
+BOOST_AUTO_TEST_CASE(derive_with_timings_lists_its_slowest_parts_and_says_when_nothing_was_derived)
+{
+    const std::filesystem::path cache = std::filesystem::temp_directory_path() / "impact_test_derive_timings";
+    std::filesystem::remove_all(cache);
+    const std::string folder = " --derivations " + (source_dir / "derivations").string();
+    const run_result cold = run("derive inelastic_line --timings --no-cache" + folder);
+    BOOST_TEST(cold.status == 0, cold.output);
+    // Its twelve slowest parts, each a part of the file (a step by its line, a check, a claim of
+    // the paper's, a kernel), slowest first; then the rest (inelastic_line has 20 checks and
+    // more than 20 claims), then the whole.
+    std::vector<double> seconds;
+    const std::regex part("impact: +([0-9]+\\.[0-9]{3}) s  (check [a-z_A-Z0-9]+|step [0-9]+ \\(line [0-9]+\\)|"
+                          "kernel [a-z_]+|paper claim [a-z_A-Z0-9]+|results|quantities, definitions and given "
+                          "equations|the paper's values compared)\n");
+    for (std::sregex_iterator it(cold.output.begin(), cold.output.end(), part), end; it != end; ++it)
+        seconds.push_back(std::stod((*it)[1]));
+    BOOST_TEST(seconds.size() == 12u, cold.output);
+    BOOST_TEST(std::is_sorted(seconds.rbegin(), seconds.rend()), cold.output);
+    BOOST_TEST(std::regex_search(cold.output, std::regex("\nimpact: +[0-9]+\\.[0-9]{3} s  the other [1-9][0-9]* parts\n")),
+               cold.output);
+    BOOST_TEST(cold.output.find(" s  deriving 'inelastic_line' in all (wall time)\n") != std::string::npos, cold.output);
+    // Derived once into the cache, then taken from it: nothing was timed, and it says so.
+    BOOST_TEST(run("derive inelastic_line --cache " + cache.string() + folder).status == 0);
+    const run_result warm = run("derive inelastic_line --timings --cache " + cache.string() + folder);
+    BOOST_TEST(warm.status == 0, warm.output);
+    BOOST_TEST(warm.output.find("impact: 'inelastic_line' was taken from the cache, nothing derived") != std::string::npos,
+               warm.output);
+    std::filesystem::remove_all(cache);
 }
 
 BOOST_AUTO_TEST_CASE(every_subcommand_has_help)

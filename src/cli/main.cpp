@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -148,11 +149,38 @@ int failures_said(const engine::library& lib, const engine::derivation& d)
     return exit_failed_check;
 }
 
+// The parts of a derivation that took longest, longest first, and the rest summed: where a
+// physicist editing the file waits.
+void print_timings(const engine::derivation& d)
+{
+    if (d.timings.empty()) {
+        fmt::print("impact: '{}' was taken from the cache, nothing derived; --no-cache times each part\n", d.id());
+        return;
+    }
+    std::vector<std::pair<std::string, double>> parts = d.timings;
+    std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+    double total = 0;
+    for (const auto& part : parts)
+        total += part.second;
+    constexpr std::size_t shown = 12;
+    for (std::size_t i = 0; i < parts.size() && i < shown; ++i)
+        fmt::print("impact: {:8.3f} s  {}\n", parts[i].second, parts[i].first);
+    if (parts.size() > shown) {
+        double rest = 0;
+        for (std::size_t i = shown; i < parts.size(); ++i)
+            rest += parts[i].second;
+        fmt::print("impact: {:8.3f} s  the other {} parts\n", rest, parts.size() - shown);
+    }
+    fmt::print("impact: {:8.3f} s  deriving '{}' in all (wall time)\n", total, d.id());
+}
+
 int run_derive(const options& o)
 {
     const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
     fmt::print("{}", emit::terminal_text(d));
+    if (o.timings)
+        print_timings(d);
     return failures_said(lib, d);
 }
 
@@ -288,6 +316,7 @@ int main(int argc, char** argv)
     CLI::App* derive = app.add_subcommand("derive", "derive one derivation and print its results and checks");
     add_derivations(derive);
     derive->add_option("derivation", o.name, "id or file of the derivation")->required();
+    derive->add_flag("--timings", o.timings, "print the wall time of its slowest steps, checks and kernels");
     add_cache(derive);
 
     CLI::App* latex = app.add_subcommand("latex", "print (or write) the LaTeX fragment of one derivation");

@@ -523,7 +523,9 @@ write_report add_to_folder(const fs::path& folder, const file_set& files, bool f
     create_folders(folder);
     const ownership o = ownership_of(folder);
     write_report report;
-    for (const auto& [from, to] : plan_asides(folder, o, files)) {
+    for (const auto& aside : plan_asides(folder, o, files)) {
+        const std::string& from = aside.first;
+        const std::string& to = aside.second;
         on_disk(folder / from, "move this aside", [&] { fs::rename(folder / from, folder / to); });
         report.moved_aside.push_back(from + " -> " + to);
     }

@@ -280,6 +280,10 @@ struct derivation {
     std::vector<check_result> checks;
     std::vector<paper_comparison> paper_checks;
     std::vector<kernel> kernels;
+    /// The wall time of each part of the derivation, in the file's order ("step 2 (solve
+    /// for v_M_after)", "check energy_never_gained", "kernel collide"), in seconds: what
+    /// `impact derive --timings` lists. Empty for a derivation taken from the cache.
+    std::vector<std::pair<std::string, double>> timings;
 
     const std::string& id() const { return source.id.value; }
     /// `<folder>/<file name>`, the folder by its own name (`derivations/eq08_inelastic_line.toml`,

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <chrono>
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
@@ -26,6 +27,13 @@ namespace detail {
 derivation deriver::run()
 {
     const spec::derivation& s = out_.source;
+    // Each part's wall time, for `impact derive --timings`.
+    auto started = std::chrono::steady_clock::now();
+    const auto timed = [&](std::string part) {
+        const auto now = std::chrono::steady_clock::now();
+        out_.timings.emplace_back(std::move(part), std::chrono::duration<double>(now - started).count());
+        started = now;
+    };
     add_dimensions(out_.symbols, s.dimensions);
     for (const spec::symbol& declaration : s.symbols)
         out_.symbols.declare(declaration);
@@ -47,8 +55,11 @@ derivation deriver::run()
         import(u);
     for (const spec::given& g : s.givens)
         add_given(g);
-    for (const spec::step& st : s.steps)
-        run_step(st);
+    timed("quantities, definitions and given equations");
+    for (std::size_t i = 0; i < s.steps.size(); ++i) {
+        run_step(s.steps[i]);
+        timed(fmt::format("step {} (line {})", i + 1, s.steps[i].where.line));
+    }
     // A fault found while putting values in (a diff by a quantity a later step derives)
     // is told at its place.
     for (const spec::result& r : s.results)
@@ -58,19 +69,23 @@ derivation deriver::run()
             rethrow_at(r.name.where, fmt::format("result '{}'", r.name.value));
         }
     locate_by_members();
+    timed("results");
     for (const spec::check& c : s.checks)
         try {
             out_.checks.push_back(run_check(c));
+            timed("check " + c.name.value);
         } catch (...) {
             rethrow_at(c.claim.where, fmt::format("check '{}'", c.name.value));
         }
     for (const spec::claim& c : s.claims)
         try {
             out_.paper_checks.push_back(hold_to_account(c));
+            timed("paper claim " + c.test.name.value);
         } catch (...) {
             rethrow_at(c.test.claim.where, fmt::format("claim '{}'", c.test.name.value));
         }
     find_swapped_values(out_.paper_checks);
+    timed("the paper's values compared");
     // A kernel computes a quantity defined by cases as a select of its cases' values,
     // each as the file writes it (its quantities replaced by their values), not as
     // simplified: normal() multiplies a radicand out (|G_t| = sqrt(G_t . G_t) as about
@@ -89,6 +104,7 @@ derivation deriver::run()
     for (const spec::kernel& k : s.kernels)
         try {
             out_.kernels.push_back(build_kernel(k, out_, in_kernels, run_));
+            timed("kernel " + k.name.value);
         } catch (...) {
             rethrow_at(k.name.where, fmt::format("kernel '{}'", k.name.value));
         }
