@@ -21,7 +21,7 @@ cpu_of_children() { awk '{ print $16 + $17 }' /proc/$$/stat; }  # ticks: user+sy
 ticks=$(getconf CLK_TCK)
 
 cpu=$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo)
-isa=$(grep -m1 -owE 'avx512f|avx2|asimd|sve' /proc/cpuinfo | sort -u | tr '\n' ' ' || true)
+isa=$(grep -m1 -owE 'avx512f|avx2|asimd|sve' /proc/cpuinfo | sort -u | paste -sd' ' || true)
 echo "date:    $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "commit:  $(git -C "$here" rev-parse --short HEAD)$(git -C "$here" diff --quiet HEAD -- src derivations || echo ' (with local changes)')"
 echo "machine: ${cpu:-unknown CPU}, ISA ${isa:-none of avx2/avx512f/asimd}, $(nproc) cores"
