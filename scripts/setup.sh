@@ -20,6 +20,7 @@ packages=(
   latexmk                          # building a report by hand
   poppler-utils                    # pdftoppm, pdffonts: looking at the report's pages
   locales                          # de_DE.UTF-8: the tests regenerate under a locale other than C
+  python3-sympy bc                 # tests/benchmarks/engine_speed.sh: SymPy beside Impact on the 3D rough spheres
 )
 
 missing=()
