@@ -142,7 +142,12 @@ std::string fragment_writer::write()
 
 std::string fragment_writer::math(const GiNaC::ex& e, const written_form* w) const
 {
-    return latex(e, order_, w);
+    if (w)
+        return latex(e, order_, w);
+    auto found = printed_.find(e);
+    if (found == printed_.end())
+        found = printed_.emplace(e, latex(e, order_)).first;
+    return found->second;
 }
 
 std::string fragment_writer::relation_math(const GiNaC::ex& r, const written_form* w, engine::relation op) const

@@ -225,6 +225,10 @@ private:
     const term_order order_;
     std::map<std::string, std::string> tags_;
     mutable std::map<GiNaC::ex, textbook_value, GiNaC::ex_is_less> textbooks_;
+    /// `math` of an expression as it is (no written form), kept once printed: a check proven
+    /// case by case prints each case's value to measure it, and the rough spheres' hundred
+    /// checks share the same cases.
+    mutable std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> printed_;
 };
 
 } // namespace impact::emit::detail

@@ -8,6 +8,7 @@
 #include "emit/latex.h"
 #include "emit/latex_parts.h"
 #include "engine/algebra/polynomial.h"
+#include "engine/algebra/factor_split.h"
 
 #include <algorithm>
 #include <set>
@@ -42,9 +43,11 @@ double width(const GiNaC::ex& e, const term_order& order)
 // A polynomial factored, each factor a flat sum whose first term in `order` is positive
 // (GiNaC nests a factor, and gives it either sign, differently between runs; the sign is
 // carried outside), so that a form, and its width, is the same on every run.
+// (Found by Gauss's lemma where it decides, engine/algebra/factor_split.h: the same
+// factors as GiNaC's factor() finds, at a fraction of its time.)
 GiNaC::ex factored(const GiNaC::ex& p, const term_order& order)
 {
-    const GiNaC::ex f = engine::factor_reproducibly(p, GiNaC::factor_options::all);
+    const GiNaC::ex f = engine::factor_split(p, GiNaC::factor_options::all);
     const GiNaC::ex factors = GiNaC::is_a<GiNaC::mul>(f) ? f : GiNaC::ex(GiNaC::lst{f});
     GiNaC::ex out = 1;
     bool flip = false;
@@ -275,7 +278,10 @@ textbook_value textbook_form(const GiNaC::ex& e, const term_order& order)
                 }
             }
         }
-        if (!best.how.empty() && !GiNaC::normal(best.value - root_args.value).is_zero())
+        // Proven equal: the numerator of the difference expanded to zero (radicals and
+        // absolute values as variables of their own), else normalised to zero.
+        if (!best.how.empty() && engine::expand_numerator(best.value - root_args.value) != engine::expansion::zero &&
+            !GiNaC::normal(best.value - root_args.value).is_zero())
             return root_args;
         return best;
     } catch (const std::exception&) {

@@ -200,19 +200,43 @@ namespace {
 void add_documents(const library& lib, file_set& files, const verify::proof_checks* z3 = nullptr)
 {
     // A derivation whose results the printers cannot write (the imaginary unit, a constant
-    // such as Pi) is reported at its file, before the files that gather every derivation.
-    for (const engine::derivation* d : lib.in_order()) {
+    // such as Pi) is reported at its file, before the files that gather every derivation:
+    // the first, in order, whose JSON or LaTeX fragment cannot be printed (its JSON first).
+    // derivations.json is printed once, for all of them; a derivation's JSON is printed
+    // alone only when something failed, to find the one at fault.
+    const std::vector<const engine::derivation*> all = lib.in_order();
+    const auto at_fault = [](const engine::derivation& d, const std::exception& e) {
+        return error({d.source.file, 0, 0}, fmt::format("cannot print what derivation '{}' derives: {}", d.id(), e.what()));
+    };
+    // Each of the first `count` derivations' JSON alone: the first that fails, at its file.
+    const auto json_alone = [&](std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i) {
+            try {
+                emit::derivations_json({all[i]});
+            } catch (const error&) {
+                throw;
+            } catch (const std::exception& e) {
+                throw at_fault(*all[i], e);
+            }
+        }
+    };
+    for (std::size_t i = 0; i < all.size(); ++i) {
         try {
-            emit::derivations_json({d});
-            files["latex/" + emit::latex_fragment_name(*d)] = emit::latex_fragment(*d, &lib.derived);
+            files["latex/" + emit::latex_fragment_name(*all[i])] = emit::latex_fragment(*all[i], &lib.derived);
         } catch (const error&) {
+            json_alone(i + 1);
             throw;
         } catch (const std::exception& e) {
-            throw error({d->source.file, 0, 0}, fmt::format("cannot print what derivation '{}' derives: {}",
-                                                            d->id(), e.what()));
+            json_alone(i + 1);
+            throw at_fault(*all[i], e);
         }
     }
-    files["derivations.json"] = emit::derivations_json(lib.in_order(), z3);
+    try {
+        files["derivations.json"] = emit::derivations_json(all, z3);
+    } catch (const std::exception&) {
+        json_alone(all.size());
+        throw;
+    }
     if (z3)
         for (const verify::derivation_proofs& d : z3->derivations)
             files["proofs/" + d.id + ".smt2"] = verify::smt2_file(d);
