@@ -6,11 +6,13 @@
 #include <boost/test/unit_test.hpp>
 
 #include "derivation_support.h"
+#include "pipeline/z3_workers.h"
 #include "verify/proofs.h"
 #include "verify/smt.h"
 #include "verify/z3.h"
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +22,7 @@
 #include <sstream>
 #include <tuple>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -77,6 +80,37 @@ std::string run(const std::string& command)
     while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe.get()))
         out.append(buffer.data(), n);
     return out;
+}
+
+// A problem Z3 takes seconds over, sat (8 real unknowns, a product of eight linear forms
+// against another: nlsat expands both); `padding` characters of comment make it as long as
+// one the guard watches without changing what Z3 reads.
+std::string slow_problem(std::size_t padding = 0)
+{
+    std::string text;
+    const int n = 8;
+    for (int j = 0; j < n; ++j)
+        text += "(declare-fun x" + std::to_string(j) + " () Real)\n";
+    std::vector<std::string> sums;
+    for (int i = 0; i < 8; ++i) {
+        std::string sum = "(+";
+        for (int j = 0; j < n; ++j)
+            sum += " (* " + std::to_string((i * j) % 7 + 1) + " x" + std::to_string(j) + ")";
+        sums.push_back(sum + ")");
+    }
+    std::string left = "(*", right = "(* (+ x0 x1)";
+    for (int i = 0; i < 8; ++i)
+        left += " " + sums[i];
+    for (int i = 6; i >= 0; --i)
+        right += " " + sums[i];
+    text += "(assert (> " + left + ") " + right + ")))\n";
+    text += "(assert (> (* x0 x1 x2) (* x3 x4 x5 x6 x7)))\n(check-sat-using qfnra-nlsat)\n";
+    return (padding > 0 ? "; " + std::string(padding, '-') + "\n" : std::string()) + text;
+}
+
+std::string problem_of(const std::string& declarations, const std::string& negated_claim)
+{
+    return declarations + "(assert (not " + negated_claim + "))\n(check-sat-using qfnra-nlsat)\n";
 }
 
 } // namespace
@@ -244,6 +278,98 @@ BOOST_AUTO_TEST_CASE(the_z3_binary_gives_the_committed_problems_the_answers_veri
         ++rows;
     }
     BOOST_TEST(rows > 10u);
+}
+
+BOOST_AUTO_TEST_CASE(worker_processes_give_the_answers_of_impacts_own_process_in_the_problems_order)
+{
+    const std::string xy = "(declare-fun x () Real)\n(declare-fun y () Real)\n";
+    const std::vector<std::string> problems{
+        problem_of(xy, "(>= (+ (* x x) (* y y)) (* 2 x y))"),   // x^2 + y^2 >= 2xy: unsat, confirmed
+        problem_of(xy, "(>= (+ (* x x) (* y y)) (* 3 x y))"),   // fails at x = y = 1: sat, refuted
+        problem_of(xy, "(= (* (+ x y) (+ x y)) (+ (* x x) (* 2 x y) (* y y)))"),
+        problem_of(xy, "(>= (+ (* x x) (* y y)) (* 2 x y))"),   // the first again
+        problem_of(xy, "(> (* x x) 0)"),                        // fails at x = 0
+    };
+    using kind = verify::z3_answer::kind;
+    const std::vector<kind> expected{kind::confirmed, kind::refuted, kind::confirmed, kind::confirmed, kind::refuted};
+    std::vector<verify::z3_answer> here;
+    for (const std::string& p : problems)
+        here.push_back(verify::run_z3(verify::rlimit_option(), p));
+    for (unsigned jobs : {1u, 2u}) {
+        std::size_t told = 0;
+        const std::vector<verify::z3_run> runs =
+            pipeline::run_z3_in_workers(verify::rlimit_option(), problems, jobs, [&] { ++told; });
+        BOOST_TEST_REQUIRE(runs.size() == problems.size());
+        BOOST_TEST(told == problems.size());
+        for (std::size_t i = 0; i < problems.size(); ++i) {
+            BOOST_TEST((runs[i].answer.what == expected[i]), "jobs " << jobs << ", problem " << i << ": "
+                                                                      << verify::to_string(runs[i].answer));
+            // The same answer, Z3's model included, as in Impact's own process.
+            BOOST_TEST((here[i].what == expected[i]), i);
+            BOOST_TEST(runs[i].answer.detail == here[i].detail, "jobs " << jobs << ", problem " << i);
+            BOOST_TEST(!runs[i].answer.guarded);
+        }
+    }
+    BOOST_TEST(here[1].detail.find("define-fun x () Real") != std::string::npos, here[1].detail);
+}
+
+BOOST_AUTO_TEST_CASE(a_long_problem_past_the_guard_is_cut_short_and_the_rest_still_answered)
+{
+    // The same slow problem (a second in Z3 on the machine of docs/design.md): short, it runs
+    // to its answer however long it takes; padded to the length the guard watches, it is
+    // stopped by a guard of 0.1 s, and its worker with it; the problems after it are
+    // answered by another.
+    const std::string slow = slow_problem();
+    const std::string padded = slow_problem(verify::z3_in_process_below);
+    BOOST_TEST_REQUIRE(!verify::z3_guarded(slow));
+    BOOST_TEST_REQUIRE(verify::z3_guarded(padded));
+    const std::string x = "(declare-fun x () Real)\n";
+    const std::vector<std::string> problems{padded, problem_of(x, "(>= (* x x) 0)"), slow, problem_of(x, "(> (* x x) 0)")};
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<verify::z3_run> runs = pipeline::run_z3_in_workers(verify::rlimit_option(), problems, 1, {}, 100);
+    BOOST_TEST_MESSAGE("slow problem answered in " << runs[2].seconds << " s, all in "
+                                                   << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+                                                   << " s");
+    BOOST_TEST_REQUIRE(runs.size() == 4u);
+    BOOST_TEST((runs[0].answer.what == verify::z3_answer::kind::unknown));
+    BOOST_TEST(runs[0].answer.detail == "stopped by the wall-clock guard of 0.1 s");
+    BOOST_TEST(runs[0].answer.guarded);
+    BOOST_TEST(runs[0].seconds < 3.0);
+    BOOST_TEST((runs[1].answer.what == verify::z3_answer::kind::confirmed), verify::to_string(runs[1].answer));
+    BOOST_TEST((runs[2].answer.what == verify::z3_answer::kind::refuted), verify::to_string(runs[2].answer));
+    BOOST_TEST(runs[2].seconds > 0.1);
+    BOOST_TEST((runs[3].answer.what == verify::z3_answer::kind::refuted), verify::to_string(runs[3].answer));
+    // The guard's answer as the cache keeps it and as output/proofs/ names it.
+    BOOST_TEST(verify::cut_short(true).detail == "stopped by the wall-clock guard of 10 s");
+}
+
+BOOST_AUTO_TEST_CASE(checks_get_the_same_statuses_with_workers_and_each_text_is_run_once)
+{
+    // Two checks of one claim give one problem text, run once; the derivation's checks the
+    // same statuses and the same problems file with two workers as in Impact's own process.
+    engine::derived_by_id none;
+    const engine::derivation d = derive_text(claims(
+        check("mean_inequality", "x^2 + y^2 >= 2*x*y") + check("the_same_again", "x^2 + y^2 >= 2*x*y") +
+        check("a_fraction_below_one", "p/(p + 1) < 1")));
+    const engine::derivation block = derive_file("tests/examples/pushed_block.toml");
+    const std::vector<const engine::derivation*> both{&d, &block};
+    std::size_t told = 0, all = 0;
+    const verify::proof_checks here = verify::check_proofs(both, none, nullptr);
+    const verify::proof_checks in_workers = verify::check_proofs(
+        both, none, nullptr, [&](std::size_t done, std::size_t of) { told = done, all = of; },
+        pipeline::z3_runner_for(2));
+    BOOST_TEST(here.problems == in_workers.problems);
+    BOOST_TEST(in_workers.run == here.run);
+    BOOST_TEST(in_workers.run + 1 == in_workers.problems);   // the claim given twice, run once
+    BOOST_TEST(told == in_workers.run);
+    BOOST_TEST(all == in_workers.run);
+    BOOST_TEST(in_workers.confirmed == in_workers.proven);
+    BOOST_TEST_REQUIRE(here.derivations.size() == 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        BOOST_TEST(verify::smt2_file(here.derivations[i]) == verify::smt2_file(in_workers.derivations[i]));
+        for (std::size_t c = 0; c < here.derivations[i].checks.size(); ++c)
+            BOOST_TEST(here.derivations[i].checks[c].status == in_workers.derivations[i].checks[c].status);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -295,8 +295,8 @@ int main(int argc, char** argv)
     // The worker processes, for the commands that derive every file and choose kernel forms.
     auto add_jobs = [&](CLI::App* command) {
         command->add_option("-j,--jobs", o.jobs,
-                            "derivations, then kernels whose forms are chosen, worked on at once, each in a "
-                            "worker process (default: the hardware's threads; 1: one after another, in Impact's "
+                            "derivations, then Z3's problems, then kernels whose forms are chosen, worked on at once, in "
+                            "worker processes (default: the hardware's threads; 1: one after another, in Impact's "
                             "own process)")
             ->check(CLI::Range(1u, 4096u));
     };

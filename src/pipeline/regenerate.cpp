@@ -8,6 +8,7 @@
 #include "emit/verification.h"
 #include "pipeline/progress.h"
 #include "pipeline/workers.h"
+#include "pipeline/z3_workers.h"
 #include "report/pdf.h"
 #include "report/report.h"
 #include "spec/outline.h"
@@ -378,12 +379,15 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     // proof Z3 refutes fails the regeneration as a failed check does, with Z3's model.
     shown.say("z3", "re-checking the proofs with Z3");
     const verify::proof_checks z3 = verify::check_proofs(
-        lib.in_order(), lib.derived, store ? &*store : nullptr, [&shown](std::size_t done, std::size_t all) {
-            shown.say("z3", fmt::format("re-checking the proofs with Z3: {} of {} derivations", done, all));
-        });
+        lib.in_order(), lib.derived, store ? &*store : nullptr,
+        [&shown](std::size_t done, std::size_t all) {
+            shown.say("z3", fmt::format("re-checking the proofs with Z3: {} of {} problems", done, all));
+        },
+        z3_runner_for(options.jobs));
     shown.done("z3");
-    clock.lap(fmt::format("proofs re-checked by Z3 ({} problems, {} run, {:.1f} s in Z3)", z3.problems, z3.run,
-                          z3.seconds));
+    clock.lap(fmt::format("proofs re-checked by Z3 ({} problems, {} run, {:.1f} s in Z3{})", z3.problems, z3.run,
+                          z3.seconds,
+                          options.jobs > 1 ? fmt::format(", up to {} worker processes", options.jobs) : std::string()));
     result.failures = z3.refuted();
     result.all_hold = result.failures.empty();
     if (!result.all_hold)

@@ -60,7 +60,7 @@ struct regenerate_options {
     std::optional<std::filesystem::path> cache;       ///< the cache folder (src/cache/store.h), or none
     std::uintmax_t cache_size = cache::default_limit; ///< the cache trimmed to this many bytes
     bool progress = false;                            ///< a progress line on standard error
-    unsigned jobs = 1;                                ///< derivations, then kernels' forms, worked on at once
+    unsigned jobs = 1;                                ///< derivations, Z3's problems, kernels' forms, worked on at once
 };
 
 /// One line a kind of cache entry: `kernel choice: 12 reused, 0 computed (0 damaged)`.
@@ -76,12 +76,13 @@ std::vector<std::string> cache_summary(const std::optional<std::filesystem::path
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,
                         bool force = false);
 
-/// The same, with a cache: each derivation (by its file and those it uses), the choice of
-/// kernel forms and the PDFs are taken from it when what they depend on is unchanged, and
-/// computed and kept in it otherwise (the files written are the same bytes either way).
-/// The report is compiled beside the choice of kernel forms, and with `jobs` above 1 the
-/// derivations that do not use one another are derived, and the kernels' forms chosen, in
-/// worker processes, that many at once (the output the same bytes). A cache folder that is
+/// The same, with a cache: each derivation (by its file and those it uses), Z3's answers,
+/// the choice of kernel forms and the PDFs are taken from it when what they depend on is
+/// unchanged, and computed and kept in it otherwise (the files written are the same bytes
+/// either way). The report is compiled beside the choice of kernel forms, and with `jobs`
+/// above 1 the derivations that do not use one another are derived, Z3's problems run
+/// (pipeline/z3_workers.h), and the kernels' forms chosen, in worker processes, that many
+/// at once (the output the same bytes). A cache folder that is
 /// a file, or holds what is not Impact's, throws `impact::error` before anything is derived
 /// or written.
 regeneration regenerate(const std::filesystem::path& derivations, const std::filesystem::path& output,

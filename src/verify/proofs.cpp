@@ -6,6 +6,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <utility>
 
 namespace impact::verify {
 
@@ -237,50 +241,104 @@ std::vector<proof_check> proof_checks_of(const engine::derivation& d, const engi
     return out;
 }
 
-void run_proof_check(proof_check& check, cache::store* store, proof_checks* totals)
+namespace {
+
+// Answers every problem of `checks` that Z3 is given: from `store` when it keeps the
+// answer, the others run together by `runner`, each text once (one text has one answer);
+// then each check's status.
+void answer_all(const std::vector<proof_check*>& checks, cache::store* store, proof_checks* totals,
+                const z3_runner& runner, const std::function<void(std::size_t, std::size_t)>& told)
 {
     const std::string option = rlimit_option();
-    for (proof_problem& p : check.problems) {
-        if (!p.smt.not_expressible.empty())
-            continue;
-        if (p.smt.text.size() > z3_largest_problem) {
-            p.answer.what = z3_answer::kind::resource_limit;
-            p.answer.detail = fmt::format("a problem of {} characters, beyond the {} Z3 is given", p.smt.text.size(),
-                                          z3_largest_problem);
-            p.answer.guarded = true;
-            continue;
+    const std::string version = z3_version();
+    std::vector<std::string> texts, keys;   // to run, each text once
+    std::map<std::string, std::size_t> place;   // a key's index in `texts`
+    std::vector<std::pair<proof_problem*, std::size_t>> waiting;
+    for (proof_check* c : checks)
+        for (proof_problem& p : c->problems) {
+            if (!p.smt.not_expressible.empty())
+                continue;
+            if (p.smt.text.size() > z3_largest_problem) {
+                p.answer.what = z3_answer::kind::resource_limit;
+                p.answer.detail = fmt::format("a problem of {} characters, beyond the {} Z3 is given",
+                                              p.smt.text.size(), z3_largest_problem);
+                p.answer.guarded = true;
+                continue;
+            }
+            // Kept by the problem's text, the limit and Z3's version: nothing else decides the answer.
+            std::string key = fmt::format("z3 {}\n{}{}", version, option, p.smt.text);
+            if (const auto same = place.find(key); same != place.end()) {
+                waiting.emplace_back(&p, same->second);   // a text met before: its answer
+                continue;
+            }
+            if (store)
+                if (const std::optional<std::string> kept = store->get("z3 answer", key))
+                    if (from_text(*kept, p.answer)) {
+                        p.answer.guarded = p.answer.detail.rfind("stopped by the wall-clock guard", 0) == 0;
+                        continue;
+                    }
+            place.emplace(key, texts.size());
+            waiting.emplace_back(&p, texts.size());
+            texts.push_back(p.smt.text);
+            keys.push_back(std::move(key));
         }
-        // Kept by the problem's text, the limit and Z3's version: nothing else decides the answer.
-        const std::string key = fmt::format("z3 {}\n{}{}", z3_version(), option, p.smt.text);
+    std::size_t answered = 0;
+    const auto finished = [&] {
+        if (told)
+            told(++answered, texts.size());
+    };
+    std::vector<z3_run> runs;
+    if (runner && !texts.empty()) {
+        runs = runner(option, texts, finished);
+        if (runs.size() != texts.size())
+            throw std::runtime_error(fmt::format("Z3 gave {} answers to {} problems", runs.size(), texts.size()));
+    } else {
+        for (const std::string& text : texts) {
+            const auto start = std::chrono::steady_clock::now();
+            z3_answer answer = run_z3(option, text);
+            runs.push_back({std::move(answer), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+            finished();
+        }
+    }
+    for (std::size_t i = 0; i < runs.size(); ++i) {
         if (store)
-            if (const std::optional<std::string> kept = store->get("z3 answer", key))
-                if (from_text(*kept, p.answer)) {
-                    p.answer.guarded = p.answer.detail.rfind("stopped by the wall-clock guard", 0) == 0;
-                    continue;
-                }
-        const auto start = std::chrono::steady_clock::now();
-        p.answer = run_z3(option, p.smt.text);
+            store->put("z3 answer", keys[i], to_text(runs[i].answer));
         if (totals) {
-            totals->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            totals->seconds += runs[i].seconds;
             ++totals->run;
         }
-        if (store)
-            store->put("z3 answer", key, to_text(p.answer));
     }
-    check.status = status_of(check.problems);
+    for (const auto& [p, i] : waiting)
+        p->answer = runs[i].answer;
+    for (proof_check* c : checks)
+        c->status = status_of(c->problems);
+}
+
+} // namespace
+
+void run_proof_check(proof_check& check, cache::store* store, proof_checks* totals)
+{
+    answer_all({&check}, store, totals, {}, {});
 }
 
 proof_checks check_proofs(const std::vector<const engine::derivation*>& derivations, const engine::derived_by_id& done,
-                          cache::store* store, const std::function<void(std::size_t, std::size_t)>& told)
+                          cache::store* store, const std::function<void(std::size_t, std::size_t)>& told,
+                          const z3_runner& runner)
 {
     proof_checks all;
+    std::vector<proof_check*> checks;
+    all.derivations.reserve(derivations.size());
     for (const engine::derivation* d : derivations) {
-        derivation_proofs one;
+        derivation_proofs& one = all.derivations.emplace_back();
         one.id = d->id();
         one.source = d->source_name();
         one.checks = proof_checks_of(*d, done);
-        for (proof_check& c : one.checks) {
-            run_proof_check(c, store, &all);
+        for (proof_check& c : one.checks)
+            checks.push_back(&c);
+    }
+    answer_all(checks, store, &all, runner, told);
+    for (derivation_proofs& one : all.derivations) {
+        for (const proof_check& c : one.checks) {
             one.confirmed += c.confirmed();
             for (const proof_problem& p : c.problems)
                 if (p.smt.not_expressible.empty() && !p.left_out()) {
@@ -292,9 +350,6 @@ proof_checks check_proofs(const std::vector<const engine::derivation*>& derivati
         all.confirmed += one.confirmed;
         all.problems += one.problems;
         all.unsat += one.unsat;
-        all.derivations.push_back(std::move(one));
-        if (told)
-            told(all.derivations.size(), derivations.size());
     }
     return all;
 }

@@ -64,6 +64,18 @@ struct proof_checks {
     std::vector<std::string> refuted() const;
 };
 
+/// One problem's answer from Z3 and the seconds it took.
+struct z3_run {
+    z3_answer answer;
+    double seconds = 0;
+};
+
+/// Runs Z3 on each of `problems`, preceded by `option`, as `run_z3` would (the same guard,
+/// the same answers), and gives the answers in the problems' order, calling `finished()`
+/// after each. The pipeline gives one that runs them in worker processes.
+using z3_runner = std::function<std::vector<z3_run>(const std::string& option, const std::vector<std::string>& problems,
+                                                    const std::function<void()>& finished)>;
+
 /// The proven checks of `d` as problems (not yet run): its steps' checks and checks
 /// (derivation::all_checks), then the paper's claims it proves. `done` holds the derivations
 /// it uses (`[[use]]`), whose results a display form may name.
@@ -74,9 +86,11 @@ std::vector<proof_check> proof_checks_of(const engine::derivation& d, const engi
 void run_proof_check(proof_check& check, cache::store* store, proof_checks* totals = nullptr);
 
 /// Every proven check of `derivations` re-checked (`done`: every derivation by id, for their
-/// `[[use]]`s); `told` hears of each derivation done.
+/// `[[use]]`s). The problems whose answers `store` does not hold are run together, each text
+/// once, by `runner` (by default one after another, `run_z3`); `told` hears of each answered.
 proof_checks check_proofs(const std::vector<const engine::derivation*>& derivations, const engine::derived_by_id& done,
-                          cache::store* store, const std::function<void(std::size_t done, std::size_t all)>& told = {});
+                          cache::store* store, const std::function<void(std::size_t done, std::size_t all)>& told = {},
+                          const z3_runner& runner = {});
 
 /// output/proofs/<id>.smt2: the rlimit, then each problem in a (push) ... (check-sat-using) (pop)
 /// block after a comment naming its check (and part); checks not stated, as comments.

@@ -39,10 +39,7 @@ std::string z3_version()
     return Z3_get_full_version();
 }
 
-namespace {
-
-// Z3 on one problem, in this process.
-z3_answer solve(const std::string& option, const std::string& problem)
+z3_answer run_z3_here(const std::string& option, const std::string& problem)
 {
     Z3_config config = Z3_mk_config();
     const std::unique_ptr<_Z3_context, void (*)(Z3_context)> context(Z3_mk_context(config), Z3_del_context);
@@ -77,30 +74,38 @@ z3_answer solve(const std::string& option, const std::string& problem)
     return answer;
 }
 
-} // namespace
+z3_answer cut_short(bool stopped, unsigned guard_ms)
+{
+    z3_answer answer;
+    answer.what = z3_answer::kind::unknown;
+    answer.detail = stopped ? fmt::format("stopped by the wall-clock guard of {:g} s", guard_ms / 1000.0)
+                            : std::string("Z3's process ended without an answer");
+    answer.guarded = true;
+    return answer;
+}
 
 z3_answer run_z3(const std::string& option, const std::string& problem)
 {
     // A short problem (most of them: a derivation's identities over a few symbols) in this
     // process: it meets its resource limit long before any guard is needed, and a child
     // process would cost more than Z3's answer (its copy of Impact's memory, page by page).
-    if (problem.size() < z3_in_process_below)
-        return solve(option, problem);
+    if (!z3_guarded(problem))
+        return run_z3_here(option, problem);
     // In a child process: a few of Z3's procedures (expanding products of long sums before
     // nlsat starts) count no steps against the limit and heed no interrupt, so the guard
     // must be able to end them; and each problem starts from a Z3 that has solved nothing.
     int pipe_ends[2];
     if (pipe(pipe_ends) != 0)
-        return solve(option, problem);
+        return run_z3_here(option, problem);
     const pid_t child = fork();
     if (child < 0) {
         close(pipe_ends[0]);
         close(pipe_ends[1]);
-        return solve(option, problem);
+        return run_z3_here(option, problem);
     }
     if (child == 0) {
         close(pipe_ends[0]);
-        const std::string text = to_text(solve(option, problem));
+        const std::string text = to_text(run_z3_here(option, problem));
         for (std::size_t sent = 0; sent < text.size();) {
             const ssize_t n = write(pipe_ends[1], text.data() + sent, text.size() - sent);
             if (n <= 0)
@@ -136,12 +141,8 @@ z3_answer run_z3(const std::string& option, const std::string& problem)
     while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
     }
     z3_answer answer;
-    if (stopped || !from_text(text, answer)) {
-        answer.what = z3_answer::kind::unknown;
-        answer.detail = stopped ? fmt::format("stopped by the wall-clock guard of {} s", z3_guard_ms / 1000)
-                                : std::string("Z3's process ended without an answer");
-        answer.guarded = true;
-    }
+    if (stopped || !from_text(text, answer))
+        return cut_short(stopped);
     return answer;
 }
 

@@ -1,12 +1,14 @@
 // Z3 run in this process on an SMT-LIB 2 problem (smt.h), through libz3's C API: the text
 // Z3 checks is the text written to output/proofs/, byte for byte.
 //
-// Each problem runs in a fresh context, in a child process of its own, under a resource
-// limit (`(set-option :rlimit N)`, part of the text): Z3 counts its own steps, so that an
-// answer, `unknown` past the limit included, is the same on every run and machine with the
-// same Z3. A wall-clock guard stands behind it for the few procedures that count no steps
-// (the child is killed): its answer, unknown, is kept like any other, so that a machine
-// gives the same answer on every regeneration.
+// Each problem runs in a fresh context under a resource limit (`(set-option :rlimit N)`,
+// part of the text): Z3 counts its own steps, so that an answer, `unknown` past the limit
+// included, is the same on every run and machine with the same Z3, whichever process runs
+// it and whatever that process ran before. A wall-clock guard stands behind it for the few
+// procedures that count no steps (the process running it is killed): its answer, unknown,
+// is kept like any other, so that a machine gives the same answer on every regeneration.
+// `run_z3` runs one problem from Impact's own process; the pipeline runs many at once in
+// worker processes of its own (pipeline/z3_workers.h), with the same guard.
 #pragma once
 
 #include <cstddef>
@@ -29,9 +31,15 @@ inline constexpr std::size_t z3_largest_problem = 20'000;
 /// limit, which a problem within `z3_largest_problem` meets first.
 inline constexpr unsigned z3_guard_ms = 10'000;
 
-/// Problems shorter than this, in characters, are solved in Impact's own process; longer
-/// ones in a child process the guard can end.
+/// Problems shorter than this, in characters, are solved in Impact's own process by `run_z3`;
+/// longer ones in a child process the guard can end. Only these longer ones are guarded.
 inline constexpr std::size_t z3_in_process_below = 6'000;
+
+/// Whether `problem` runs under the wall-clock guard (its length).
+inline bool z3_guarded(const std::string& problem)
+{
+    return problem.size() >= z3_in_process_below;
+}
 
 struct z3_answer {
     enum class kind { confirmed, refuted, unknown, resource_limit, error };
@@ -43,8 +51,17 @@ struct z3_answer {
 /// The first line of `(set-option :rlimit N)` every problem file starts with.
 std::string rlimit_option(unsigned long rlimit = z3_rlimit);
 
-/// Runs Z3 on `problem` (declarations, assertions, one check-sat), preceded by `option`.
+/// Runs Z3 on `problem` (declarations, assertions, one check-sat), preceded by `option`: a
+/// guarded problem in a child process forked for it, another in this process.
 z3_answer run_z3(const std::string& option, const std::string& problem);
+
+/// Z3 on `problem` in this process, in a fresh context, with no guard: what `run_z3` and
+/// the pipeline's worker processes run.
+z3_answer run_z3_here(const std::string& option, const std::string& problem);
+
+/// The answer of a guarded problem whose process was stopped by the guard of `guard_ms`
+/// (`stopped`), or ended without an answer.
+z3_answer cut_short(bool stopped, unsigned guard_ms = z3_guard_ms);
 
 /// "4.8.12.0": the library's version, part of the key an answer is kept under.
 std::string z3_version();

@@ -1,0 +1,292 @@
+#include "pipeline/z3_workers.h"
+
+#include "pipeline/workers.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+
+#include <malloc.h>
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace impact::pipeline {
+namespace {
+
+using steady = std::chrono::steady_clock;
+
+// Moves `size` bytes, `step(done)` moving some of what is left (a send or a recv) and
+// retried when a signal interrupts it; false when it fails or the stream ends.
+template <class Step>
+bool all_of(std::size_t size, Step step)
+{
+    for (std::size_t done = 0; done < size;) {
+        const ssize_t n = step(done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        done += static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+// Sends all of `text` (MSG_NOSIGNAL: a worker that died is an error here, not a SIGPIPE).
+bool send_all(int fd, const std::string& text)
+{
+    return all_of(text.size(), [&](std::size_t done) {
+        return ::send(fd, text.data() + done, text.size() - done, MSG_NOSIGNAL);
+    });
+}
+
+// A message: its length in decimal, a newline, the text.
+std::string message(const std::string& text)
+{
+    return std::to_string(text.size()) + "\n" + text;
+}
+
+// The worker's side: one message, waited for.
+bool receive_message(int fd, std::string& text)
+{
+    std::string header;
+    for (char c = 0;;) {
+        if (!all_of(1, [&](std::size_t) { return ::recv(fd, &c, 1, 0); }))
+            return false;
+        if (c == '\n')
+            break;
+        if (c < '0' || c > '9' || header.size() > 18)
+            return false;
+        header += c;
+    }
+    if (header.empty())
+        return false;
+    text.resize(std::stoull(header));
+    return all_of(text.size(), [&](std::size_t done) { return ::recv(fd, text.data() + done, text.size() - done, 0); });
+}
+
+// Impact's side: the message `bytes` holds, once it is whole.
+std::optional<std::string> whole_message(const std::string& bytes)
+{
+    const std::size_t line = bytes.find('\n');
+    if (line == std::string::npos || line == 0 || line > 18 ||
+        bytes.find_first_not_of("0123456789") != line)
+        return std::nullopt;
+    const std::size_t size = std::stoull(bytes.substr(0, line));
+    if (bytes.size() != line + 1 + size)
+        return std::nullopt;
+    return bytes.substr(line + 1);
+}
+
+// The worker: answers each problem sent (the option, then the problem) until Impact closes
+// its end. As the factoring child does (engine/algebra/forked.cpp): signals back to their
+// default actions, none blocked, killed with Impact, no file of Impact's kept open but the
+// socket.
+[[noreturn]] void serve(int fd, pid_t parent)
+{
+    for (int signal : {SIGPROF, SIGSEGV, SIGABRT, SIGBUS, SIGILL, SIGFPE, SIGTERM, SIGINT, SIGPIPE})
+        std::signal(signal, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent)   // Impact died before the line above
+        ::_exit(0);
+    ::prctl(PR_SET_NAME, "impact-z3", 0, 0, 0);
+    if (fd > 3)
+        ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
+    ::close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
+    // What Z3 frees stays with this process, for the next problem's context: by default
+    // glibc gives back the top of its heap past 128 KB (and maps large blocks apart, to
+    // unmap them when freed), and each problem faulted the same pages in again.
+    ::mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
+    std::string option, problem;
+    while (receive_message(fd, option) && receive_message(fd, problem))
+        if (!send_all(fd, message(verify::to_text(verify::run_z3_here(option, problem)))))
+            break;
+    ::_exit(0);
+}
+
+struct z3_worker {
+    pid_t pid = -1;
+    int fd = -1;
+    std::optional<std::size_t> problem;   ///< the problem it is solving
+    steady::time_point since;             ///< when it was sent
+    std::string bytes;                    ///< of its answer, so far
+};
+
+// Forks a worker; nothing when the system refuses a process or a socket.
+std::optional<z3_worker> start_worker()
+{
+    int fds[2];
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
+        return std::nullopt;
+    const pid_t parent = ::getpid();
+    const pid_t pid = engine::locked_fork();
+    if (pid < 0) {
+        ::close(fds[0]);
+        ::close(fds[1]);
+        return std::nullopt;
+    }
+    if (pid == 0) {
+        ::close(fds[0]);
+        serve(fds[1], parent);
+    }
+    ::close(fds[1]);
+    z3_worker w;
+    w.pid = pid;
+    w.fd = fds[0];
+    return w;
+}
+
+void stop(z3_worker& w)
+{
+    ::kill(w.pid, SIGKILL);
+    ::close(w.fd);
+    int status = 0;
+    while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+    }
+}
+
+// The workers; those left at the end, or when Impact stops early (an exception), are killed
+// and waited for, so that none outlives the run.
+struct z3_crew {
+    std::vector<z3_worker> running;
+    ~z3_crew()
+    {
+        for (z3_worker& w : running)
+            stop(w);
+    }
+};
+
+double seconds_since(steady::time_point start, steady::time_point now)
+{
+    return std::chrono::duration<double>(now - start).count();
+}
+
+} // namespace
+
+std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const std::vector<std::string>& problems,
+                                              unsigned jobs, const std::function<void()>& finished, unsigned guard_ms)
+{
+    std::vector<verify::z3_run> runs(problems.size());
+    // The longest first, so that the last to finish is a short one; ties in the problems' order.
+    std::vector<std::size_t> queue(problems.size());
+    for (std::size_t i = 0; i < queue.size(); ++i)
+        queue[i] = i;
+    std::stable_sort(queue.begin(), queue.end(),
+                     [&](std::size_t a, std::size_t b) { return problems[a].size() > problems[b].size(); });
+    std::size_t next = 0, left = problems.size();
+    const auto answered = [&](std::size_t i, verify::z3_answer answer, double seconds) {
+        runs[i] = {std::move(answer), seconds};
+        --left;
+        if (finished)
+            finished();
+    };
+    const auto guard = std::chrono::milliseconds(guard_ms);
+    z3_crew crew;
+    while (left > 0) {
+        // Each idle worker, and new ones up to `jobs`, given the next problem.
+        while (next < queue.size()) {
+            auto idle = std::find_if(crew.running.begin(), crew.running.end(),
+                                     [](const z3_worker& w) { return !w.problem; });
+            if (idle == crew.running.end() && crew.running.size() < std::max(jobs, 1u))
+                if (std::optional<z3_worker> w = start_worker()) {
+                    crew.running.push_back(std::move(*w));
+                    idle = crew.running.end() - 1;
+                }
+            const std::size_t i = queue[next];
+            if (idle == crew.running.end()) {
+                if (!crew.running.empty())
+                    break;   // another when one of those running is done
+                // No process to be had: this problem here, as `run_z3` runs it.
+                const steady::time_point start = steady::now();
+                ++next;
+                answered(i, verify::run_z3(option, problems[i]), seconds_since(start, steady::now()));
+                continue;
+            }
+            ++next;
+            idle->problem = i;
+            idle->since = steady::now();
+            idle->bytes.clear();
+            if (!send_all(idle->fd, message(option) + message(problems[i]))) {
+                // It died before it was given the problem (killed from outside): this
+                // problem here, the next ones in another worker.
+                stop(*idle);
+                crew.running.erase(idle);
+                const steady::time_point start = steady::now();
+                answered(i, verify::run_z3(option, problems[i]), seconds_since(start, steady::now()));
+            }
+        }
+        if (left == 0)
+            break;
+        // An answer, or the first guard to expire.
+        std::vector<pollfd> watched;
+        std::vector<std::size_t> busy;   // their places in crew.running
+        steady::time_point deadline = steady::time_point::max();
+        for (std::size_t k = 0; k < crew.running.size(); ++k) {
+            const z3_worker& w = crew.running[k];
+            if (!w.problem)
+                continue;
+            watched.push_back({w.fd, POLLIN, 0});
+            busy.push_back(k);
+            if (verify::z3_guarded(problems[*w.problem]))
+                deadline = std::min(deadline, w.since + guard);
+        }
+        int wait_ms = -1;
+        if (deadline != steady::time_point::max())
+            wait_ms = static_cast<int>(std::max<std::chrono::milliseconds::rep>(
+                0, std::chrono::ceil<std::chrono::milliseconds>(deadline - steady::now()).count()));
+        if (::poll(watched.data(), watched.size(), wait_ms) < 0 && errno != EINTR)
+            throw std::runtime_error(std::string("cannot wait for Z3's worker processes: ") + std::strerror(errno));
+        const steady::time_point now = steady::now();
+        for (std::size_t b = watched.size(); b-- > 0;) {
+            const std::size_t k = busy[b];
+            z3_worker& w = crew.running[k];
+            const std::size_t i = *w.problem;
+            if (watched[b].revents != 0) {
+                char buffer[1 << 16];
+                const ssize_t n = ::recv(w.fd, buffer, sizeof buffer, 0);
+                if (n < 0 && errno == EINTR)
+                    continue;
+                if (n > 0) {
+                    w.bytes.append(buffer, static_cast<std::size_t>(n));
+                    if (const std::optional<std::string> text = whole_message(w.bytes)) {
+                        verify::z3_answer answer;
+                        if (!verify::from_text(*text, answer))
+                            answer = verify::cut_short(false);
+                        w.problem.reset();
+                        answered(i, std::move(answer), seconds_since(w.since, now));
+                    }
+                    continue;
+                }
+                // The end of its socket: the worker died on this problem.
+                answered(i, verify::cut_short(false), seconds_since(w.since, now));
+            } else if (verify::z3_guarded(problems[i]) && now - w.since >= guard) {
+                answered(i, verify::cut_short(true, guard_ms), seconds_since(w.since, now));
+            } else {
+                continue;
+            }
+            stop(w);
+            crew.running.erase(crew.running.begin() + static_cast<std::ptrdiff_t>(k));
+        }
+    }
+    return runs;
+}
+
+verify::z3_runner z3_runner_for(unsigned jobs)
+{
+    if (jobs <= 1)
+        return {};
+    return [jobs](const std::string& option, const std::vector<std::string>& problems,
+                  const std::function<void()>& finished) { return run_z3_in_workers(option, problems, jobs, finished); };
+}
+
+} // namespace impact::pipeline

@@ -1,0 +1,41 @@
+// The proofs' problems run through Z3 in worker processes, each kept for problem after
+// problem (issue 61).
+//
+// A cold regeneration gives Z3 about 500 problems (output/proofs/), most answered in
+// milliseconds, some in seconds. Run from Impact's own process, one after another, they took
+// 70 s where a small process of their own takes half that: Impact forked a child for each
+// guarded problem (verify/z3.h), whose writes and Impact's copied Impact's pages one by one,
+// and glibc gave the memory Z3 freed back to the system after each problem, to be faulted in
+// again by the next. Here at most `jobs` workers are forked, once each, and given one
+// problem after another, the longest first (a guess at the costliest: the 3D rough spheres'
+// before the rest); in a worker glibc keeps what Z3 frees (mallopt), so the next fresh
+// context finds its memory mapped. Each problem still runs in a fresh context of its own,
+// under its resource limit, so that its answer is the one `run_z3` gives.
+//
+// The wall-clock guard is kept as `run_z3` keeps it: a guarded problem (z3_guarded) not
+// answered within `z3_guard_ms` of being sent has its worker killed and the guard's answer;
+// a worker that dies gives the answer of a process that ended without one. Another worker
+// is forked for the problems left.
+#pragma once
+
+#include "verify/proofs.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace impact::pipeline {
+
+/// Z3 on each of `problems` (preceded by `option`), at most `jobs` at once in worker
+/// processes; the answers in the problems' order, each the one `verify::run_z3` gives.
+/// `finished()` is called after each. When no process is to be had, the problems run here.
+/// `guard_ms`: the wall-clock guard (the tests give a shorter one).
+std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const std::vector<std::string>& problems,
+                                              unsigned jobs, const std::function<void()>& finished = {},
+                                              unsigned guard_ms = verify::z3_guard_ms);
+
+/// `run_z3_in_workers` with `jobs` as check_proofs takes it; with `jobs` 1, none (the
+/// problems one after another in Impact's own process, as for the derivations).
+verify::z3_runner z3_runner_for(unsigned jobs);
+
+} // namespace impact::pipeline
