@@ -2,6 +2,8 @@
 
 #include "pipeline/workers.h"
 
+#include "engine/algebra/forked.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -22,55 +24,6 @@ namespace {
 
 using steady = std::chrono::steady_clock;
 
-// Moves `size` bytes, `step(done)` moving some of what is left (a send or a recv) and
-// retried when a signal interrupts it; false when it fails or the stream ends.
-template <class Step>
-bool all_of(std::size_t size, Step step)
-{
-    for (std::size_t done = 0; done < size;) {
-        const ssize_t n = step(done);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return false;
-        done += static_cast<std::size_t>(n);
-    }
-    return true;
-}
-
-// Sends all of `text` (MSG_NOSIGNAL: a worker that died is an error here, not a SIGPIPE).
-bool send_all(int fd, const std::string& text)
-{
-    return all_of(text.size(), [&](std::size_t done) {
-        return ::send(fd, text.data() + done, text.size() - done, MSG_NOSIGNAL);
-    });
-}
-
-// A message: its length in decimal, a newline, the text.
-std::string message(const std::string& text)
-{
-    return std::to_string(text.size()) + "\n" + text;
-}
-
-// The worker's side: one message, waited for.
-bool receive_message(int fd, std::string& text)
-{
-    std::string header;
-    for (char c = 0;;) {
-        if (!all_of(1, [&](std::size_t) { return ::recv(fd, &c, 1, 0); }))
-            return false;
-        if (c == '\n')
-            break;
-        if (c < '0' || c > '9' || header.size() > 18)
-            return false;
-        header += c;
-    }
-    if (header.empty())
-        return false;
-    text.resize(std::stoull(header));
-    return all_of(text.size(), [&](std::size_t done) { return ::recv(fd, text.data() + done, text.size() - done, 0); });
-}
-
 // Impact's side: the message `bytes` holds, once it is whole.
 std::optional<std::string> whole_message(const std::string& bytes)
 {
@@ -90,26 +43,16 @@ std::optional<std::string> whole_message(const std::string& bytes)
 // socket.
 [[noreturn]] void serve(int fd, pid_t parent)
 {
-    for (int signal : {SIGPROF, SIGSEGV, SIGABRT, SIGBUS, SIGILL, SIGFPE, SIGTERM, SIGINT, SIGPIPE})
-        std::signal(signal, SIG_DFL);
-    sigset_t none;
-    sigemptyset(&none);
-    ::sigprocmask(SIG_SETMASK, &none, nullptr);
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent)   // Impact died before the line above
-        ::_exit(0);
+    engine::become_child(fd, parent);
     ::prctl(PR_SET_NAME, "impact-z3", 0, 0, 0);
-    if (fd > 3)
-        ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
-    ::close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
     // What Z3 frees stays with this process, for the next problem's context: by default
     // glibc gives back the top of its heap past 128 KB (and maps large blocks apart, to
     // unmap them when freed), and each problem faulted the same pages in again.
     ::mallopt(M_MMAP_THRESHOLD, 32 << 20);
     ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
     std::string option, problem;
-    while (receive_message(fd, option) && receive_message(fd, problem))
-        if (!send_all(fd, message(verify::to_text(verify::run_z3_here(option, problem)))))
+    while (engine::receive_message(fd, option) && engine::receive_message(fd, problem))
+        if (!engine::send_message(fd, verify::to_text(verify::run_z3_here(option, problem))))
             break;
     ::_exit(0);
 }
@@ -216,7 +159,7 @@ std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const s
             idle->problem = i;
             idle->since = steady::now();
             idle->bytes.clear();
-            if (!send_all(idle->fd, message(option) + message(problems[i]))) {
+            if (!engine::send_message(idle->fd, option) || !engine::send_message(idle->fd, problems[i])) {
                 // It died before it was given the problem (killed from outside): this
                 // problem here, the next ones in another worker.
                 stop(*idle);

@@ -61,7 +61,8 @@ bool receive_all(int fd, std::string& text, std::size_t size)
     return all_of(size, [&](std::size_t done) { return ::recv(fd, text.data() + done, size - done, 0); });
 }
 
-// A message: its length in decimal, a newline, the text.
+} // namespace
+
 bool send_message(int fd, const std::string& text)
 {
     return send_all(fd, std::to_string(text.size()) + "\n" + text);
@@ -85,6 +86,23 @@ bool receive_message(int fd, std::string& text)
     return !header.empty() && receive_all(fd, text, std::stoull(header));
 }
 
+void become_child(int fd, pid_t parent)
+{
+    for (int signal : {SIGPROF, SIGSEGV, SIGABRT, SIGBUS, SIGILL, SIGFPE, SIGTERM, SIGINT, SIGPIPE})
+        std::signal(signal, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent)  // the parent died before the line above
+        ::_exit(0);
+    if (fd > 3)
+        ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
+    ::close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
+}
+
+namespace {
+
 // The symbols a polynomial travels in, s0, s1, ...: made once, before main(), so that
 // Impact and its factoring child (a copy of it) hold the same ones, and GiNaC orders them
 // the same way in every child and after any number of requests (a symbol's place in
@@ -102,26 +120,6 @@ const std::vector<GiNaC::ex>& stand_in_symbols()
     return symbols;
 }
 const bool stand_ins_made = !stand_in_symbols().empty();
-
-// In the child, before it serves: signals back to their default actions (a handler the
-// parent installed, a test framework's that jumps back into its runner or a profiler's
-// SIGPROF, must not run in the child), none blocked; no file of the parent's kept open
-// but the socket (a worker's result pipe would otherwise stay open while the child runs),
-// and the child killed when its parent dies.
-void become_child(int fd, pid_t parent)
-{
-    for (int signal : {SIGPROF, SIGSEGV, SIGABRT, SIGBUS, SIGILL, SIGFPE, SIGTERM, SIGINT, SIGPIPE})
-        std::signal(signal, SIG_DFL);
-    sigset_t none;
-    sigemptyset(&none);
-    ::sigprocmask(SIG_SETMASK, &none, nullptr);
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent)  // the parent died before the line above
-        ::_exit(0);
-    if (fd > 3)
-        ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
-    ::close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
-}
 
 // The child that factors: a request is "<options> <seconds> <polynomial>", the polynomial
 // in the stand-in symbols; the answer "=" and the factorization, or "!" and factor()'s

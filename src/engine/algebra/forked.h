@@ -27,6 +27,7 @@
 
 #include <mutex>
 #include <optional>
+#include <string>
 
 namespace impact::engine {
 
@@ -36,6 +37,19 @@ std::mutex& fork_lock();
 
 /// fork() under `fork_lock()`.
 pid_t locked_fork();
+
+/// A message between Impact and a child serving it through a stream socket (the factoring
+/// child, Z3's workers): the text's length in decimal, a newline, the text. False when the
+/// socket fails or is closed first.
+bool send_message(int fd, const std::string& text);
+bool receive_message(int fd, std::string& text);
+
+/// What a child forked to serve through socket `fd` does first: signals back to their
+/// default actions (a handler the parent installed, a test framework's that jumps back into
+/// its runner or a profiler's SIGPROF, must not run in the child), none blocked; no file of
+/// the parent's kept open but the socket (a worker's result pipe would otherwise stay open
+/// while the child runs); killed when `parent` dies (and gone at once if it died already).
+void become_child(int fd, pid_t parent);
 
 /// GiNaC::factor(e, options) computed by this process's factoring child within
 /// `cpu_seconds` of CPU time; nothing when it took longer (the child is then replaced at
