@@ -141,14 +141,7 @@ GiNaC::ex factor_split(const GiNaC::ex& p, unsigned options)
 {
     // Kept for the process, as factor_reproducibly keeps its own: the emitters ask for the
     // same coefficients again (11411 times for 2000 polynomials in the whole project).
-    // By options, then polynomial; past a bound, forgotten at once.
-    static std::map<unsigned, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>> kept;
-    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& for_options = kept[options];
-    if (const auto found = for_options.find(p); found != for_options.end())
-        return found->second;
-    if (for_options.size() >= 20000)
-        for_options.clear();
-    return for_options.emplace(p, factored(p, options)).first->second;
+    return kept_factorization(p, options, [](const GiNaC::ex& e, unsigned o) { return factored(e, o); });
 }
 
 } // namespace impact::engine

@@ -423,15 +423,7 @@ GiNaC::ex factor_with_constants(const GiNaC::ex& e, unsigned options)
 // of its factors that the callers normalise.
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options)
 {
-    // By options, then polynomial.
-    static std::map<unsigned, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>> kept;
-    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& for_options = kept[options];
-    if (const auto found = for_options.find(e); found != for_options.end())
-        return found->second;
-    // Past a bound, forgotten at once: a long run keeps no more than this many.
-    if (for_options.size() >= 20000)
-        for_options.clear();
-    return for_options.emplace(e, factor_with_constants(e, options)).first->second;
+    return kept_factorization(e, options, [](const GiNaC::ex& p, unsigned o) { return factor_with_constants(p, o); });
 }
 
 } // namespace impact::engine

@@ -13,6 +13,8 @@
 
 #include <ginac/ginac.h>
 
+#include <map>
+
 namespace impact::engine {
 
 /// What the numerator of a rational function expands to.
@@ -40,5 +42,21 @@ expansion expand_numerator(const GiNaC::ex& e);
 /// process (up to 20000 polynomials), and returned again when the same polynomial is asked
 /// for with the same options.
 GiNaC::ex factor_reproducibly(const GiNaC::ex& e, unsigned options = 0);
+
+/// `factor(e, options)` kept for the process, by options, then polynomial (past 20 000 of
+/// one options, forgotten at once, so that a long run keeps no more): the factorizations
+/// the emitters and proofs ask for again and again. Each `factor` (a lambda of its caller)
+/// keeps its own. Not for threads.
+template <class Factor>
+GiNaC::ex kept_factorization(const GiNaC::ex& e, unsigned options, Factor factor)
+{
+    static std::map<unsigned, std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>> kept;
+    std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less>& for_options = kept[options];
+    if (const auto found = for_options.find(e); found != for_options.end())
+        return found->second;
+    if (for_options.size() >= 20000)
+        for_options.clear();
+    return for_options.emplace(e, factor(e, options)).first->second;
+}
 
 } // namespace impact::engine
