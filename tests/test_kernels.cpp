@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-// Built with -ffast-math too (test_kernels_fast_math, _ofast, _fp_contract): the test's own
+// Built with -ffast-math too (test_kernels_fast_math, built with -Ofast, and _fp_contract): the test's own
 // arithmetic, which measures the kernels', as written. The kernels keep theirs by themselves.
 IMPACT_PRECISE_BEGIN
 

@@ -68,7 +68,7 @@
 #endif
 
 // ---------------------------------------------------------------------------------
-// Under the flags users have (test_kernels_hostile_fast_math, _ofast, _fp_contract).
+// Under the flags users have (test_kernels_hostile_fast_math, built with -Ofast, and _fp_contract).
 
 namespace {
 
@@ -1854,7 +1854,7 @@ BOOST_AUTO_TEST_CASE(a_randomized_sweep_of_hostile_speeds_gives_an_angle_or_nan)
 // mass is not positive: invalid_mass), refused velocities still come back bit for bit as
 // given, and a value of the arithmetic that would have been denormal is 0 and refused as
 // underflow. The cases above are written for IEEE arithmetic: under a build that sets the
-// modes (test_kernels_hostile_fast_math, _ofast) they run with the modes cleared, and this
+// modes (test_kernels_hostile_fast_math) they run with the modes cleared, and this
 // case sets them itself in every build.
 
 #ifdef IMPACT_TEST_MXCSR
