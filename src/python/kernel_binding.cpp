@@ -3,6 +3,7 @@
 #include "python/kernel_binding.hpp"
 
 #include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
 
 #include <Python.h>
 

@@ -15,13 +15,17 @@
 
 #include "impact/common.hpp"
 
-#include <pybind11/pybind11.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
+
+// Declared only: the generated sources that describe kernels do not parse pybind11's headers
+// (five seconds a translation unit), only module.cpp and kernel_binding.cpp do.
+namespace pybind11 {
+class module_;
+}
 
 namespace impact::python {
 
