@@ -289,6 +289,9 @@ void registry::add(kernel_entry entry)
 
 void registry::define(py::module_& m) const
 {
+    // Each docstring starts with the call as Python takes it, not pybind11's (*args, **kwargs).
+    py::options options;
+    options.disable_function_signatures();
     const py::object namedtuple = py::module_::import("collections").attr("namedtuple");
     py::list names;
     for (std::size_t i = 0; i < entries_.size(); ++i) {
