@@ -65,9 +65,13 @@ add_custom_command(
   VERBATIM)
 add_custom_target(python ALL DEPENDS impact_python ${CMAKE_CURRENT_BINARY_DIR}/python/impact/__init__.py)
 
-# Installed where that interpreter finds it (its site-packages under the prefix).
+# Installed where that interpreter finds it under the prefix: its own folder of packages when
+# that is under CMAKE_INSTALL_PREFIX (Debian's /usr/local/lib/python3.X/dist-packages), else
+# lib/python3.X/site-packages there.
 execute_process(
-  COMMAND ${Python3_EXECUTABLE} -c "import sysconfig; print(sysconfig.get_path('platlib', vars={'platbase': '', 'base': ''}).lstrip('/'))"
+  COMMAND ${Python3_EXECUTABLE} -c
+          "import os, sys, sysconfig; p = sys.argv[1].rstrip('/'); s = sysconfig.get_path('platlib'); print(os.path.relpath(s, p) if s.startswith(p + '/') else 'lib/python%d.%d/site-packages' % sys.version_info[:2])"
+          ${CMAKE_INSTALL_PREFIX}
   OUTPUT_VARIABLE IMPACT_PYTHON_SITE OUTPUT_STRIP_TRAILING_WHITESPACE)
 set(IMPACT_PYTHON_INSTALL_DIR ${IMPACT_PYTHON_SITE} CACHE PATH
     "where the package impact is installed, under CMAKE_INSTALL_PREFIX (or absolute)")
