@@ -217,15 +217,18 @@ py::object call(const std::vector<kernel_entry>& entries, const py::object& resu
                 c.step.push_back(1);
                 continue;
             }
-            if (view.size() == 1 && !e.batch) {
+            // An array's values need not be aligned to their type (np.frombuffer at an odd
+            // offset); the kernels read them as Real, so such a column is copied.
+            const bool aligned = view.attr("flags").attr("aligned").cast<bool>();
+            if (view.size() == 1 && !e.batch && aligned) {
                 c.in.push_back(view.data());
                 c.step.push_back(0);
                 continue;
             }
             if (shape_of(view) != all)
                 view = numpy.attr("broadcast_to")(view, all_shape);
-            if (!(view.flags() & py::array::c_style))
-                view = numpy.attr("ascontiguousarray")(view);
+            if (!(view.flags() & py::array::c_style) || !aligned)
+                view = numpy.attr("require")(view, py::none(), py::make_tuple("C", "A"));
             kept.push_back(view);
             c.in.push_back(view.data());
             c.step.push_back(1);

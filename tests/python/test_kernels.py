@@ -246,6 +246,18 @@ def test_every_layout_gives_the_same_results():
     assert np.array_equal(one.v_M, r.v_M[7]) and one.status == r.status[7]
 
 
+def test_unaligned_and_byte_swapped_arrays_give_the_same_results():
+    M, m, v_M, v_m, eps = random_line(np.random.default_rng(5), 100, np.float64)
+    r = impact.collide_line(M, m, v_M, v_m, eps)
+    unaligned = np.frombuffer(b"\0" + v_M.tobytes(), dtype=np.float64, offset=1)
+    assert not unaligned.flags.aligned
+    swapped = M.astype(">f8")
+    other = impact.collide_line(swapped, m, unaligned, v_m, eps)
+    assert np.array_equal(r.v_M, other.v_M) and np.array_equal(r.J, other.J)
+    one = impact.collide_line(M[:1], m[0], unaligned[:1], v_m[0], eps[0])
+    assert one.v_m[0] == r.v_m[0]
+
+
 def test_inputs_are_not_changed():
     v_M = np.array([[1.0, 0.0]])
     kept = v_M.copy()
