@@ -1,5 +1,6 @@
 // The Python module's binding sources (emit/python.h), against the text expected: a kernel
-// with a status through its scalar kernel's loop, and the module calling every file's binder.
+// with a status through its scalar kernel's loop, one through its batch loop, and the module
+// calling every file's binder.
 #include <boost/test/unit_test.hpp>
 
 #include "derivation_support.h"
@@ -68,6 +69,32 @@ BOOST_AUTO_TEST_CASE(a_kernel_with_a_status_is_bound_through_its_scalar_loop)
                                 "{\"invalid_restitution\", impact::status::invalid_restitution}, "
                                 "{\"non_finite\", impact::status::non_finite}, "
                                 "{\"separating\", impact::status::separating}});\n"));
+}
+
+BOOST_AUTO_TEST_CASE(a_kernel_with_a_batch_loop_is_bound_through_it_its_velocities_written_over_their_copies)
+{
+    // wall_plane and the derivations it uses.
+    const engine::library lib =
+        engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"), "wall_plane");
+    const std::string& unit = emit::python_binding_files(lib).at("python/wall_plane.cpp");
+    // collide_wall(P, n, C, v, eps) in 2D: inputs by component (v's are columns 6 and 7, read
+    // from the output it is written over), the batch loop's data, the status.
+    BOOST_TEST(contains(unit, "    impact::collide_wall_batch_data<Real, 2> d{};\n"
+                              "    d.count = c.count;\n"
+                              "    d.P[0] = static_cast<const Real*>(c.in[0]);\n"
+                              "    d.P[1] = static_cast<const Real*>(c.in[1]);\n"
+                              "    d.n[0] = static_cast<const Real*>(c.in[2]);\n"
+                              "    d.n[1] = static_cast<const Real*>(c.in[3]);\n"
+                              "    d.C[0] = static_cast<const Real*>(c.in[4]);\n"
+                              "    d.C[1] = static_cast<const Real*>(c.in[5]);\n"
+                              "    d.v[0] = static_cast<Real*>(c.out[0]);\n"
+                              "    d.v[1] = static_cast<Real*>(c.out[1]);\n"
+                              "    d.eps = static_cast<const Real*>(c.in[8]);\n"
+                              "    d.status = c.status;\n"
+                              "    impact::collide_wall_batch(d, form...);\n"));
+    BOOST_TEST(contains(unit, "    r.add({\"collide_wall\", 2, {{\"P\", 2}, {\"n\", 2}, {\"C\", 2}, {\"v\", 2}, {\"eps\", 0}},\n"
+                              "           {{\"v\", 2, 3}},\n"
+                              "           /*status=*/true, /*returns_scalar=*/false, /*batch=*/true,\n"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
