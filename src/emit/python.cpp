@@ -85,12 +85,13 @@ bool calls_batch(const engine::kernel& k)
     return k.batch && !returns_scalar(k);
 }
 
-// The loop over pairs calling the scalar kernel: input component j at in<j>[i * step<j>],
-// output component j at out<j>[i].
+// The loop over pairs calling the scalar kernel: input component j at in<j>[i * step<j>]
+// (at in<j>[i] where every input has a value a pair, `Strided` false: no multiplication a
+// pair), output component j at out<j>[i].
 void print_scalar_loop(std::string& out, const engine::kernel& k)
 {
-    out += fmt::format("template <class Real, class... Form>\n"
-                       "void loop_{}(const impact::python::columns& c, Form... form) noexcept\n{{\n",
+    out += fmt::format("template <class Real, bool Strided, class... Form>\n"
+                       "inline void loop_{}(const impact::python::columns& c, Form... form) noexcept\n{{\n",
                        k.name);
     std::vector<std::string> arguments;
     std::size_t j = 0;
@@ -100,7 +101,7 @@ void print_scalar_loop(std::string& out, const engine::kernel& k)
             out += fmt::format("    const Real* const in{0} = static_cast<const Real*>(c.in[{0}]);\n"
                                "    const std::size_t step{0} = c.step[{0}];\n",
                                j);
-            components.push_back(fmt::format("in{0}[i * step{0}]", j));
+            components.push_back(fmt::format("in{0}[Strided ? i * step{0} : i]", j));
         }
         arguments.push_back(p.is_array ? fmt::format("std::array<Real, {}>{{{}}}", p.components.size(),
                                                      fmt::join(components, ", "))
@@ -127,6 +128,15 @@ void print_scalar_loop(std::string& out, const engine::kernel& k)
                        "        const auto r = impact::{}<Real>({}, form...);\n"
                        "        {}\n    }}\n}}\n\n",
                        k.name, fmt::join(arguments, ", "), fmt::join(stores, "\n        "));
+    // The runner, compiled for the host's FMA and AVX2 too where the compiler can choose at load
+    // time (IMPACT_PYTHON_LOOP, kernel_binding.hpp), the kernel inlined into it.
+    out += fmt::format("template <class Real>\nIMPACT_PYTHON_LOOP void run_{0}(const impact::python::columns& c, "
+                       "bool fast) noexcept\n{{\n"
+                       "    if (impact::python::strided(c))\n"
+                       "        fast ? loop_{0}<Real, true>(c, impact::fast) : loop_{0}<Real, true>(c);\n"
+                       "    else\n"
+                       "        fast ? loop_{0}<Real, false>(c, impact::fast) : loop_{0}<Real, false>(c);\n}}\n\n",
+                       k.name);
 }
 
 // The batch kernel called on the columns: every input an array of `count` values, the outputs
@@ -192,10 +202,11 @@ std::string binding_source(const engine::derivation& d)
                        "#include <array>\n#include <cstddef>\n\nnamespace impact::python {{\nnamespace {{\n\n",
                        kernel_header_name(d));
     for (const engine::kernel& k : d.kernels) {
-        if (calls_batch(k))
-            print_batch_call(out, k);
-        else
+        if (!calls_batch(k)) {
             print_scalar_loop(out, k);
+            continue;
+        }
+        print_batch_call(out, k);
         out += fmt::format("template <class Real>\nvoid run_{0}(const impact::python::columns& c, bool fast) noexcept\n"
                            "{{\n    if (fast)\n        loop_{0}<Real>(c, impact::fast);\n    else\n"
                            "        loop_{0}<Real>(c);\n}}\n\n",

@@ -55,6 +55,27 @@ struct columns {
     impact::status* status = nullptr;
 };
 
+/// Whether some input of the columns is one value shared by every pair (a step of 0): the
+/// scalar loops index the others without a multiplication.
+inline bool strided(const columns& c) noexcept
+{
+    for (std::size_t s : c.step)
+        if (s != 1)
+            return true;
+    return false;
+}
+
+// A scalar loop's runner is compiled twice where GCC can choose between clones when the module
+// loads (x86-64 on Linux): for the baseline and for x86-64-v3 (AVX2 and FMA), with the kernel
+// inlined into each (`flatten`), so that its std::fma are one instruction, not a call to libm's
+// emulation, where the processor has FMA. The results are the same: an FMA rounds once either
+// way, and the kernels are compiled without contraction (-ffp-contract=off).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define IMPACT_PYTHON_LOOP __attribute__((target_clones("arch=x86-64-v3", "default"), flatten))
+#else
+#define IMPACT_PYTHON_LOOP
+#endif
+
 /// Runs a kernel over the columns in one floating-point type, its fast form if `fast`.
 using runner = void (*)(const columns& c, bool fast) noexcept;
 

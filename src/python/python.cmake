@@ -77,3 +77,14 @@ set(IMPACT_PYTHON_INSTALL_DIR ${IMPACT_PYTHON_SITE} CACHE PATH
     "where the package impact is installed, under CMAKE_INSTALL_PREFIX (or absolute)")
 install(TARGETS impact_python LIBRARY DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
 install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/__init__.py DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
+
+# The benchmark of docs/python.md, run by hand, never by CTest:
+# `cmake --build build --target benchmark_python`. Its C++ side is compiled as the module is.
+add_executable(python_batch_bench EXCLUDE_FROM_ALL ${CMAKE_CURRENT_SOURCE_DIR}/tests/benchmarks/python_batch.cpp)
+target_link_libraries(python_batch_bench PRIVATE impact_kernels)
+string(TOUPPER "${CMAKE_BUILD_TYPE}" IMPACT_PYTHON_BUILD_TYPE)
+add_custom_target(benchmark_python
+  COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${CMAKE_CURRENT_BINARY_DIR}/python ${Python3_EXECUTABLE}
+          ${CMAKE_CURRENT_SOURCE_DIR}/tests/benchmarks/python_kernels.py $<TARGET_FILE:python_batch_bench>
+          "${CMAKE_CXX_COMPILER_ID} ${CMAKE_CXX_COMPILER_VERSION} ${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${IMPACT_PYTHON_BUILD_TYPE}} -ffp-contract=off"
+  DEPENDS python python_batch_bench VERBATIM)
