@@ -3,6 +3,7 @@
 // Exit status: 0 when everything holds, 1 when a check failed, 2 on bad input
 // (a derivation file that cannot be read, with file, line and what is wrong).
 #include "cache/store.h"
+#include "emit/json.h"
 #include "emit/latex.h"
 #include "emit/terminal.h"
 #include "engine/library/library.h"
@@ -48,6 +49,7 @@ struct options {
     std::string cache_size;    ///< empty: $IMPACT_CACHE_SIZE, or cache::default_limit
     unsigned jobs = 0;         ///< 0: pipeline::default_jobs()
     bool quiet = false;
+    bool json = false;         ///< derive: JSON instead of text
 };
 
 // The cache folder and its size limit as the options and the environment give them;
@@ -178,6 +180,10 @@ int run_derive(const options& o)
 {
     const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
+    if (o.json) {
+        fmt::print("{}", emit::derivation_json_with_latex(d));
+        return failures_said(lib, d);
+    }
     fmt::print("{}", emit::terminal_text(d));
     if (o.timings)
         print_timings(d);
@@ -317,6 +323,7 @@ int main(int argc, char** argv)
     add_derivations(derive);
     derive->add_option("derivation", o.name, "id or file of the derivation")->required();
     derive->add_flag("--timings", o.timings, "print the wall time of its slowest steps, checks and kernels");
+    derive->add_flag("--json", o.json, "print its results, checks and solutions as JSON (with their LaTeX)");
     add_cache(derive);
 
     CLI::App* latex = app.add_subcommand("latex", "print (or write) the LaTeX fragment of one derivation");

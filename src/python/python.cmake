@@ -57,13 +57,24 @@ set_target_properties(impact_python PROPERTIES
   CXX_VISIBILITY_PRESET hidden
   LIBRARY_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/python/impact)
 
-add_custom_command(
-  OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/python/impact/__init__.py
-  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/__init__.py
-          ${CMAKE_CURRENT_BINARY_DIR}/python/impact/__init__.py
-  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/__init__.py
-  VERBATIM)
-add_custom_target(python ALL DEPENDS impact_python ${CMAKE_CURRENT_BINARY_DIR}/python/impact/__init__.py)
+set(IMPACT_PYTHON_FILES __init__.py derivation.py)
+set(IMPACT_PYTHON_COPIES)
+foreach(file IN LISTS IMPACT_PYTHON_FILES)
+  add_custom_command(
+    OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/python/impact/${file}
+    COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/${file}
+            ${CMAKE_CURRENT_BINARY_DIR}/python/impact/${file}
+    DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/${file}
+    VERBATIM)
+  list(APPEND IMPACT_PYTHON_COPIES ${CMAKE_CURRENT_BINARY_DIR}/python/impact/${file})
+endforeach()
+# impact.derive runs the command `impact` (derivation.py): the build tree's here, the
+# installed one in the installed package.
+file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/python/impact/_executable.py
+     CONTENT "IMPACT_EXECUTABLE = \"$<TARGET_FILE:impact>\"\n")
+file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/python_install/_executable.py
+     CONTENT "IMPACT_EXECUTABLE = \"${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}/impact\"\n")
+add_custom_target(python ALL DEPENDS impact_python ${IMPACT_PYTHON_COPIES})
 
 # Installed where that interpreter finds it under the prefix: its own folder of packages when
 # that is under CMAKE_INSTALL_PREFIX (Debian's /usr/local/lib/python3.X/dist-packages), else
@@ -76,7 +87,8 @@ execute_process(
 set(IMPACT_PYTHON_INSTALL_DIR ${IMPACT_PYTHON_SITE} CACHE PATH
     "where the package impact is installed, under CMAKE_INSTALL_PREFIX (or absolute)")
 install(TARGETS impact_python LIBRARY DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
-install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/__init__.py DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
+install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/__init__.py ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/derivation.py
+              ${CMAKE_CURRENT_BINARY_DIR}/python_install/_executable.py DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
 
 # The benchmark of docs/python.md, run by hand, never by CTest:
 # `cmake --build build --target benchmark_python`. Its C++ side is compiled as the module is.

@@ -10,6 +10,7 @@ calls the kernel's fast form. ``impact.status`` names the values of the ``status
 import enum as _enum
 
 from . import _impact
+from .derivation import Derivation, DerivationError, derive
 
 #: Why a kernel refused its inputs (``impact.status.separating``); ``ok`` when it computed
 #: its outputs. Compares equal to the values of a result's ``status`` array.
@@ -18,5 +19,5 @@ status = _enum.IntEnum("status", _impact.status_names, module=__name__)
 for _name in _impact.kernel_names:
     globals()[_name] = getattr(_impact, _name)
 
-__all__ = ["status", *_impact.kernel_names]
+__all__ = ["status", "derive", "Derivation", "DerivationError", *_impact.kernel_names]
 del _name
