@@ -19,5 +19,8 @@ status = _enum.IntEnum("status", _impact.status_names, module=__name__)
 for _name in _impact.kernel_names:
     globals()[_name] = getattr(_impact, _name)
 
+#: The kernels' names, in the order the module defines them.
+kernel_names = list(_impact.kernel_names)
+
 __all__ = ["status", "derive", "Derivation", "DerivationError", *_impact.kernel_names]
 del _name
