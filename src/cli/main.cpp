@@ -5,6 +5,7 @@
 #include "cache/store.h"
 #include "emit/json.h"
 #include "emit/latex.h"
+#include "emit/python.h"
 #include "emit/terminal.h"
 #include "engine/library/library.h"
 #include "pipeline/output_folder.h"
@@ -50,6 +51,7 @@ struct options {
     unsigned jobs = 0;         ///< 0: pipeline::default_jobs()
     bool quiet = false;
     bool json = false;         ///< derive: JSON instead of text
+    bool python = false;       ///< kernels: the Python module's sources too
 };
 
 // The cache folder and its size limit as the options and the environment give them;
@@ -232,15 +234,19 @@ int run_kernels(const options& o)
     pipeline::kernel_options how;
     how.store = store.get();
     how.jobs = jobs;
-    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed, how);
+    pipeline::file_set files = pipeline::generate_kernels(lib, &missed, how);
     if (!missed.empty()) {
         for (const std::string& m : missed)
             fmt::print(stderr, "{}\n", m);
         fmt::print(stderr, "impact: no kernels written\n");
         return exit_failed_check;
     }
+    const std::size_t headers = files.size();
+    // The Python module's sources beside them (python/*.cpp, docs/python.md).
+    if (o.python)
+        files.merge(emit::python_binding_files(lib));
     print_kept(pipeline::add_to_folder(folder, files, o.force), folder);
-    fmt::print("impact: wrote {} kernel headers to {}\n", files.size(), o.output);
+    fmt::print("impact: wrote {} kernel headers to {}\n", headers, o.output);
     if (store)
         store->trim();
     if (o.timings)
@@ -338,6 +344,8 @@ int main(int argc, char** argv)
     kernels->add_option("--output", o.output, "folder to write kernels/impact/*.hpp into")->capture_default_str();
     kernels->add_flag("--force", o.force, force_help);
     kernels->add_flag("--timings", o.timings, "print how often the cache was used");
+    kernels->add_flag("--python", o.python,
+                      "write the Python module's sources too, python/*.cpp (impact_add_python_module)");
     add_cache(kernels);
     add_jobs(kernels);
 
