@@ -21,6 +21,9 @@ packages=(
   poppler-utils                    # pdftoppm, pdffonts: looking at the report's pages
   locales                          # de_DE.UTF-8: the tests regenerate under a locale other than C
   python3-sympy bc                 # tests/benchmarks/engine_speed.sh: SymPy beside Impact on the 3D rough spheres
+  python3-dev pybind11-dev python3-numpy  # the Python package impact (docs/python.md)
+  python3-pytest                   # its tests (test_python)
+  python3-nbconvert python3-ipykernel python3-matplotlib  # its notebook, run by a test
 )
 
 missing=()

@@ -239,6 +239,24 @@ BOOST_AUTO_TEST_CASE(derive_and_latex_say_a_failed_check_on_standard_error)
     BOOST_TEST(listed.output.find("failed             wrong: y = 3*x") != std::string::npos, listed.output);
 }
 
+BOOST_AUTO_TEST_CASE(derive_json_prints_results_checks_and_their_latex)
+{
+    // y = 2x, claimed 2x: `derive --json` (what impact.derive reads) gives the result in
+    // Impact's syntax and typeset, the check proven with its claim typeset.
+    const scratch s(files::none);
+    s.write("zz_json.toml", valid_prefix + "[[given]]\nname = \"g\"\nequation = \"y = 2*x\"\nbecause = \"b\"\n"
+                                           "[[step]]\nsolve = [\"g\"]\nfor = [\"y\"]\n[[result]]\nname = \"y\"\n"
+                                           "[[check]]\nname = \"twice\"\nclaim = \"y = 2*x\"\n");
+    const run_result r = impact::testing::run_command(std::string(IMPACT_BINARY) + " derive --json " +
+                                                      (s.root / "derivations" / "zz_json.toml").string() +
+                                                      " 2>/dev/null");
+    BOOST_TEST(r.status == 0, r.output);
+    BOOST_TEST(r.output.front() == '{', r.output);
+    BOOST_TEST(r.output.find("\"results\": {\n    \"y\": \"2*x\"\n  }") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("\"latex\": {\n    \"y\": \"2 x\"\n  }") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("\"name\": \"twice\",\n      \"status\": \"proven\"") != std::string::npos, r.output);
+}
+
 BOOST_AUTO_TEST_CASE(derive_given_a_folder_says_so)
 {
     // `impact derive mine` said "derivations: error: no such folder", of another folder.

@@ -1,4 +1,5 @@
-// Writes the kernel headers into the build tree, before `impact` is built.
+// Writes the kernel headers into the build tree, before `impact` is built, and the sources
+// of the Python module's bindings beside them (emit/python.h).
 //
 // `impact` itself is compiled against the generated kernels (its figures and
 // `impact simulate` run them), so the build cannot use it to generate them: this
@@ -6,6 +7,7 @@
 //
 //     impact_kernelgen <derivations folder> <output folder>
 #include "emit/cxx.h"
+#include "emit/python.h"
 #include "engine/library/library.h"
 #include "pipeline/output_folder.h"
 #include "verify/choice.h"
@@ -56,7 +58,9 @@ int main(int argc, char** argv)
         // that come out as they were are left as they were, their times too, so that a change
         // to Impact that leaves the kernels alone recompiles nothing that includes them.
         const std::filesystem::path folder = std::filesystem::absolute(argv[2]).lexically_normal();
-        const impact::pipeline::file_set files = impact::emit::kernel_files(lib, impact::verify::plan_kernels(lib));
+        impact::pipeline::file_set files = impact::emit::kernel_files(lib, impact::verify::plan_kernels(lib));
+        // The Python module's sources beside them (python/, built by the target `python`).
+        files.merge(impact::emit::python_binding_files(lib));
         if (!holds_already(folder, files))
             impact::pipeline::replace_folder(folder, files, /*force=*/true);
         return 0;

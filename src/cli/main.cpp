@@ -3,7 +3,9 @@
 // Exit status: 0 when everything holds, 1 when a check failed, 2 on bad input
 // (a derivation file that cannot be read, with file, line and what is wrong).
 #include "cache/store.h"
+#include "emit/json.h"
 #include "emit/latex.h"
+#include "emit/python.h"
 #include "emit/terminal.h"
 #include "engine/library/library.h"
 #include "pipeline/output_folder.h"
@@ -48,6 +50,8 @@ struct options {
     std::string cache_size;    ///< empty: $IMPACT_CACHE_SIZE, or cache::default_limit
     unsigned jobs = 0;         ///< 0: pipeline::default_jobs()
     bool quiet = false;
+    bool json = false;         ///< derive: JSON instead of text
+    bool python = false;       ///< kernels: the Python module's sources too
 };
 
 // The cache folder and its size limit as the options and the environment give them;
@@ -178,6 +182,10 @@ int run_derive(const options& o)
 {
     const engine::library lib = derive_one(o);
     const engine::derivation& d = lib.derived.at(lib.order.back());
+    if (o.json) {
+        fmt::print("{}", emit::derivation_json_with_latex(d));
+        return failures_said(lib, d);
+    }
     fmt::print("{}", emit::terminal_text(d));
     if (o.timings)
         print_timings(d);
@@ -226,15 +234,19 @@ int run_kernels(const options& o)
     pipeline::kernel_options how;
     how.store = store.get();
     how.jobs = jobs;
-    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed, how);
+    pipeline::file_set files = pipeline::generate_kernels(lib, &missed, how);
     if (!missed.empty()) {
         for (const std::string& m : missed)
             fmt::print(stderr, "{}\n", m);
         fmt::print(stderr, "impact: no kernels written\n");
         return exit_failed_check;
     }
+    const std::size_t headers = files.size();
+    // The Python module's sources beside them (python/*.cpp, docs/python.md).
+    if (o.python)
+        files.merge(emit::python_binding_files(lib));
     print_kept(pipeline::add_to_folder(folder, files, o.force), folder);
-    fmt::print("impact: wrote {} kernel headers to {}\n", files.size(), o.output);
+    fmt::print("impact: wrote {} kernel headers to {}\n", headers, o.output);
     if (store)
         store->trim();
     if (o.timings)
@@ -317,6 +329,7 @@ int main(int argc, char** argv)
     add_derivations(derive);
     derive->add_option("derivation", o.name, "id or file of the derivation")->required();
     derive->add_flag("--timings", o.timings, "print the wall time of its slowest steps, checks and kernels");
+    derive->add_flag("--json", o.json, "print its results, checks and solutions as JSON (with their LaTeX)");
     add_cache(derive);
 
     CLI::App* latex = app.add_subcommand("latex", "print (or write) the LaTeX fragment of one derivation");
@@ -331,6 +344,8 @@ int main(int argc, char** argv)
     kernels->add_option("--output", o.output, "folder to write kernels/impact/*.hpp into")->capture_default_str();
     kernels->add_flag("--force", o.force, force_help);
     kernels->add_flag("--timings", o.timings, "print how often the cache was used");
+    kernels->add_flag("--python", o.python,
+                      "write the Python module's sources too, python/*.cpp (impact_add_python_module)");
     add_cache(kernels);
     add_jobs(kernels);
 

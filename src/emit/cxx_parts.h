@@ -66,6 +66,10 @@ std::vector<std::string> divisors_in_range(const cxx_code& code, bool late = fal
 /// A guard's condition (the value compared with 0), written as the test that fails.
 std::string condition_failure(const std::string& value, const engine::kernel_guard& g);
 
+/// The names of common.hpp's `impact::status`, in the order of its values, for `kernels`
+/// (one per kernel callers see, in the library's order; not their fixed spheres' kernels).
+std::vector<std::string> status_names(const std::vector<const engine::kernel*>& kernels);
+
 /// The hand-written part of common.hpp: src/emit/kernel_prelude.hpp, as CMake embeds it.
 extern const char* const kernel_prelude;
 

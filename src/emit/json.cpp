@@ -207,6 +207,20 @@ json derivation_json(const engine::derivation& d, const verify::proof_checks* z3
 
 } // namespace
 
+std::string derivation_json_with_latex(const engine::derivation& d)
+{
+    const term_order order = engine::declaration_order(d.symbols);
+    json j = derivation_json(d, nullptr);
+    // Each result's displayed form and each check's claim as the report typesets them.
+    j["latex"] = json::object();
+    for (const engine::result& r : d.results)
+        j["latex"][r.name] = latex(r.display, order);
+    std::size_t c = 0;
+    for (const engine::check_result* check : d.all_checks())
+        j["checks"][c++]["latex"] = checked_claim_latex(*check, order);
+    return j.dump(2) + "\n";
+}
+
 std::string derivations_json(const std::vector<const engine::derivation*>& derivations, const verify::proof_checks* z3)
 {
     json j;
