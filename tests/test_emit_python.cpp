@@ -80,7 +80,7 @@ BOOST_AUTO_TEST_CASE(a_kernel_with_a_batch_loop_is_bound_through_it_its_velociti
     // wall_plane and the derivations it uses.
     const engine::library lib =
         engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"), "wall_plane");
-    const std::string& unit = emit::python_binding_files(lib).at("python/wall_plane.cpp");
+    const std::string unit = emit::python_binding_files(lib).at("python/wall_plane.cpp");
     // collide_wall(P, n, C, v, eps) in 2D: inputs by component (v's are columns 6 and 7, read
     // from the output it is written over), the batch loop's data, the status.
     BOOST_TEST(contains(unit, "    impact::collide_wall_batch_data<Real, 2> d{};\n"
