@@ -87,8 +87,9 @@ execute_process(
 set(IMPACT_PYTHON_INSTALL_DIR ${IMPACT_PYTHON_SITE} CACHE PATH
     "where the package impact is installed, under CMAKE_INSTALL_PREFIX (or absolute)")
 install(TARGETS impact_python LIBRARY DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
-install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/__init__.py ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/derivation.py
-              ${CMAKE_CURRENT_BINARY_DIR}/python_install/_executable.py DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
+list(TRANSFORM IMPACT_PYTHON_FILES PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/src/python/impact/ OUTPUT_VARIABLE IMPACT_PYTHON_SOURCES_PY)
+install(FILES ${IMPACT_PYTHON_SOURCES_PY} ${CMAKE_CURRENT_BINARY_DIR}/python_install/_executable.py
+        DESTINATION ${IMPACT_PYTHON_INSTALL_DIR}/impact)
 
 # The benchmark of docs/python.md, run by hand, never by CTest:
 # `cmake --build build --target benchmark_python`. Its C++ side is compiled as the module is.
