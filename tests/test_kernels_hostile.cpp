@@ -1692,10 +1692,10 @@ std::pair<bool, bool> sure_block(const std::array<pair_nd<double, 2>, 8>& p, For
     std::array<status, 8> s{};
     bool resolved;
     if constexpr (sizeof...(Form) > 0)
-        resolved = impact::detail::collide_batch_2d_fast_sure<double, true>(M.data(), m.data(), C_Mx.data(), C_My.data(), C_mx.data(), C_my.data(),
+        resolved = impact::detail::collide_batch_2d_fast_sure<double>(M.data(), m.data(), C_Mx.data(), C_My.data(), C_mx.data(), C_my.data(),
                                                                             v[0].data(), v[1].data(), v[2].data(), v[3].data(), eps.data(), s.data());
     else
-        resolved = impact::detail::collide_batch_2d_sure<double, true>(M.data(), m.data(), C_Mx.data(), C_My.data(), C_mx.data(), C_my.data(),
+        resolved = impact::detail::collide_batch_2d_sure<double>(M.data(), m.data(), C_Mx.data(), C_My.data(), C_mx.data(), C_my.data(),
                                                                        v[0].data(), v[1].data(), v[2].data(), v[3].data(), eps.data(), s.data());
     bool unchanged = true;
     for (std::size_t a = 0; a < 4; ++a)

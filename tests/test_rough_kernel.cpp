@@ -466,7 +466,7 @@ BOOST_AUTO_TEST_CASE(spheres_at_rest_are_resolved_by_the_batch_loop_itself)
         batch.v_M(1)[i] = batch.C_m(1)[i];
         batch.v_m(0)[i] = batch.v_m(1)[i] = 0;
     }
-    impact::detail::collide_rough_batch_2d<double, true>(
+    impact::detail::collide_rough_batch_2d<double>(
         count, batch.M(), batch.m(), batch.R_M(), batch.R_m(), batch.q_M(), batch.q_m(), batch.C_M(0), batch.C_M(1),
         batch.C_m(0), batch.C_m(1), batch.v_M(0), batch.v_M(1), batch.v_m(0), batch.v_m(1), batch.w_M(), batch.w_m(),
         batch.eps(), batch.beta(), batch.mu(), batch.status());

@@ -112,6 +112,22 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         arguments.push_back(in.field);
     }
     const bool with_status = !k.guards.empty();
+    // The arithmetic, every lane computed (a lane not resolved divides by 1), of the outputs
+    // only: the guards' values are computed with the status.
+    compile::program outputs_only = plan.code;
+    outputs_only.outputs.erase(outputs_only.outputs.begin(),
+                               outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
+    const bool for_registers = compile::most_live(outputs_only) > batch_registers;
+    const compile::program arithmetic = for_registers ? compile::ordered_for_registers(outputs_only) : outputs_only;
+    const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
+    const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
+                                      with_status ? for_outputs : std::vector<bool>{}, true);
+    // A loop that settles (print_settle) always writes statuses, into the caller's array or a
+    // block's own, and is compiled once. Only a loop that does not is a template of whether the
+    // caller wants statuses (`with_status`), which it then writes or not: compiled twice, the
+    // settling loops' one body doubled the compilers' time on the rough spheres' kernels.
+    const bool settles = with_status && (!code.underflows.empty() || !k.limits.empty());
+    const bool by_status = with_status && !settles;
 
     out += "\nnamespace detail {\n\n";
     if (with_status)
@@ -120,7 +136,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                        "// block's call runs one pass of 8 pairs.\n", k.name, n);
     out += fmt::format("template <class Real{}>\nIMPACT_ALWAYS_INLINE void {}(std::size_t count, {}) noexcept\n{{\n"
                        "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
-                       with_status ? ", bool with_status" : "", loop, loop_parameters(inputs, with_status));
+                       by_status ? ", bool with_status" : "", loop, loop_parameters(inputs, with_status));
 
     // The status, from the guards on the values as given.
     const std::vector<bool> for_guards = needed_by(plan.code, 0, plan.guard_values);
@@ -188,17 +204,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         out += "        const std::int64_t resolved = outcome == status::ok;\n";
     }
 
-    // The arithmetic, every lane computed; a lane not resolved divides by 1.
     if (with_status)
         out += "        // Every pair is computed; one not resolved divides by 1, and its results are discarded.\n";
-    compile::program outputs_only = plan.code;  // the guards' values are computed above
-    outputs_only.outputs.erase(outputs_only.outputs.begin(),
-                               outputs_only.outputs.begin() + static_cast<long>(plan.guard_values));
-    const bool for_registers = compile::most_live(outputs_only) > batch_registers;
-    const compile::program arithmetic = for_registers ? compile::ordered_for_registers(outputs_only) : outputs_only;
-    const std::vector<bool> for_outputs = compile::needed_by(arithmetic, 0, arithmetic.outputs.size());
-    const cxx_code code = program_cxx(arithmetic, plain_names, with_status ? "usable" : "",
-                                      with_status ? for_outputs : std::vector<bool>{}, true);
     // The inputs the arithmetic reads (a wall's point and centre only its guards read).
     std::vector<bool> read(inputs.size(), false);
     for (std::size_t v = 0; v < arithmetic.code.size(); ++v)
@@ -324,7 +331,6 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             out += fmt::format("        {}_[i] = {};\n", target, result);
     }
     out += "    }\n}\n";
-    const bool settles = with_status && (!code.underflows.empty() || !k.limits.empty());
     if (settles)
         print_settle(out, k, loop, inputs, which);
     // The sure loop: a block of pairs whose values are all in range, where the loop needs
@@ -442,9 +448,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             written += fmt::format("        {0}_[i] = detail::blend({1}, {0}_out, {0}_[i]);\n", target, stored);
         // A divisor out of range, or a result not finite, as in the loop: the velocities kept,
         // status out of range.
-        written += fmt::format("        if constexpr (with_status)\n"
-                               "            status_[i] = detail::blend(resolved & !{}, status::{}, outcome);\n",
-                               stored, out_of_range);
+        written += fmt::format("        status_[i] = detail::blend(resolved & !{}, status::{}, outcome);\n", stored, out_of_range);
         out += fmt::format(
             "\n// The range of what {0}_sure tests, within which every value {0} computes stays in\n"
             "// the normal range but its results that add a velocity: where each of {2} is 0\n"
@@ -469,7 +473,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             "// each status is ok, a condition's or out of range, and each result is {0}'s bit for\n"
             "// bit, without its blended statuses and the scalar kernel after it. Otherwise (false)\n"
             "// the block is left as it was, to {0}.\n"
-            "template <class Real, bool with_status>\nIMPACT_ALWAYS_INLINE bool {0}_sure({1}) noexcept\n{{\n"
+            "template <class Real>\nIMPACT_ALWAYS_INLINE bool {0}_sure({1}) noexcept\n{{\n"
             "    // A format without a range, or one whose largest square (2^2k) overflows: every block\n"
             "    // left to the loop.\n"
             "    if constexpr ({0}_sure_k<Real> < 0 || 2 * {0}_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)\n"
@@ -510,22 +514,24 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         for (const lane_input& in : read_only(inputs))
             read_starts.push_back(in.field);
         const std::string skewed =
-            with_status ? fmt::format("            if (data.status)\n                detail::{0}_skewed<Real, true>(data.count, {1}, data.status);\n"
+            by_status ? fmt::format("            if (data.status)\n                detail::{0}_skewed<Real, true>(data.count, {1}, data.status);\n"
                                       "            else\n                detail::{0}_skewed<Real, false>(data.count, {1}, nullptr);\n",
                                       loop, fmt::join(arguments, ", "))
-                        : fmt::format("            detail::{}_skewed<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
+                      : fmt::format("            detail::{}_skewed<Real>(data.count, {}{});\n", loop, fmt::join(arguments, ", "),
+                                    with_status ? ", data.status" : "");
         out += fmt::format("    // Arrays of doubles that crowd one page offset are read skewed (the blocks and the\n"
                            "    // distances are a double's; other types keep the plain loop).\n"
                            "    if constexpr (sizeof(Real) == sizeof(double))\n"
                            "        if (detail::crowded(std::array<const void*, {0}>{{{1}}})) {{\n{2}            return;\n        }}\n",
                            read_starts.size(), fmt::join(read_starts, ", "), skewed);
     }
-    if (with_status)
+    if (by_status)
         out += fmt::format("    if (data.status)\n        detail::{0}_ahead<Real, true>(data.count, {1}, data.status);\n"
                            "    else\n        detail::{0}_ahead<Real, false>(data.count, {1}, nullptr);\n",
                            loop, fmt::join(arguments, ", "));
     else
-        out += fmt::format("    detail::{}_ahead<Real>(data.count, {});\n", loop, fmt::join(arguments, ", "));
+        out += fmt::format("    detail::{}_ahead<Real>(data.count, {}{});\n", loop, fmt::join(arguments, ", "),
+                           with_status ? ", data.status" : "");
     out += "}\n";
 }
 

@@ -30,15 +30,15 @@ std::string prefetch_ahead(const lane_input& in)
 }
 
 // The arguments a block loop passes to the loop for the block at b: each array from b.
-// A loop that settles (see print_settle) always writes statuses: into the caller's array, or
-// into a block's own.
+// A loop that settles (see print_settle) always writes statuses: into the caller's array, or,
+// where the caller wants none (status_ null), into a block's own.
 std::vector<std::string> block_arguments(const std::vector<lane_input>& inputs, bool with_status, bool settles = false)
 {
     std::vector<std::string> from_block;
     for (const lane_input& in : inputs)
         from_block.push_back(fmt::format("{}_ + b", in.name));
     if (with_status)
-        from_block.push_back(settles ? "with_status ? status_ + b : own" : "with_status ? status_ + b : status_");
+        from_block.push_back(settles ? "status_ ? status_ + b : own" : "with_status ? status_ + b : status_");
     return from_block;
 }
 
@@ -119,7 +119,7 @@ constexpr const char* sure_state = "    std::size_t untried = 0, back_off = 0;  
 
 std::string sure_or_whole(const std::string& loop, const std::string& arguments, const std::string& whole)
 {
-    return fmt::format("        if (untried == 0 && {0}_sure<Real, with_status>({1})) {{\n"
+    return fmt::format("        if (untried == 0 && {0}_sure<Real>({1})) {{\n"
                        "            back_off = 0;\n"
                        "        }} else {{\n"
                        "            if (untried == 0) {{\n"
@@ -133,8 +133,13 @@ std::string sure_or_whole(const std::string& loop, const std::string& arguments,
                        loop, arguments, indented_by_4(whole));
 }
 
-constexpr const char* status_ahead = "            if constexpr (with_status)\n"
-                                     "                IMPACT_PREFETCH(status_ + b + ahead, 1);\n";
+// The statuses asked for ahead where the caller wants them: a loop that settles is told so by
+// status_ not null, one that does not by its template argument.
+std::string status_ahead(bool settles)
+{
+    return fmt::format("            if {}\n                IMPACT_PREFETCH(status_ + b + ahead, 1);\n",
+                       settles ? "(status_)" : "constexpr (with_status)");
+}
 
 } // namespace
 
@@ -148,8 +153,9 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
     for (const lane_input& in : inputs)
         ahead.push_back(prefetch_ahead(in));
     if (with_status)
-        ahead.push_back(status_ahead);
-    const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+        ahead.push_back(status_ahead(settles));
+    const bool by_status = with_status && !settles;  // a template of whether statuses are wanted
+    const std::string call = fmt::format("{}<Real{}>", loop, by_status ? ", with_status" : "");
     const std::string arguments = fmt::format("{}", fmt::join(block_arguments(inputs, with_status, settles), ", "));
     const std::string settle = settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, arguments) : "";
     const std::string whole = fmt::format("        {}(block, {});\n{}", call, arguments, settle);
@@ -166,7 +172,7 @@ void print_blocks(std::string& out, const std::string& loop, const std::vector<l
                        "    const bool far = count * ({10}) > (std::size_t(1) << 20);\n{6}{9}    std::size_t b = 0;\n"
                        "    for (; b + block <= count; b += block) {{\n        if (far && b + ahead < count) {{\n{3}        }}\n"
                        "{7}    }}\n    {4}(count - b, {5});\n{8}}}\n",
-                       loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
+                       loop, by_status ? ", bool with_status" : "", loop_parameters(inputs, with_status),
                        fmt::join(ahead, ""), call, arguments,
                        settles ? "    impact::status own[block];  // the statuses, where the caller wants none\n" : "",
                        each, settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, arguments) : "",
@@ -214,11 +220,12 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         starts.push_back(inputs[i].name + "_");
     }
     if (with_status)
-        ahead.push_back(status_ahead);
+        ahead.push_back(status_ahead(settles));
     std::size_t ring = 1;
     while (ring <= 2 * starts.size())  // more blocks than the farthest lead
         ring *= 2;
-    const std::string call = fmt::format("{}<Real{}>", loop, with_status ? ", with_status" : "");
+    const bool by_status = with_status && !settles;  // a template of whether statuses are wanted
+    const std::string call = fmt::format("{}<Real{}>", loop, by_status ? ", with_status" : "");
     const std::string whole =
         fmt::format("        {}(block, {});\n{}", call, fmt::join(from_block, ", "),
                     settles ? fmt::format("        {}_settle<Real>(block, {});\n", loop, fmt::join(at_end, ", ")) : "");
@@ -251,7 +258,7 @@ void print_skewed_blocks(std::string& out, const std::string& loop, const std::v
         "{10}"
         "    }}\n"
         "    {7}(count - b, {9});\n{11}}}\n",
-        loop, with_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, starts.size(),
+        loop, by_status ? ", bool with_status" : "", loop_parameters(inputs, with_status), ring, starts.size(),
         fmt::join(starts, ", "), fmt::join(ahead, ""), call, fmt::join(from_block, ", "), fmt::join(at_end, ", "),
         each,
         settles ? fmt::format("    {}_settle<Real>(count - b, {});\n", loop, fmt::join(at_end, ", ")) : "",

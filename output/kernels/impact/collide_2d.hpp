@@ -404,7 +404,7 @@ constexpr int collide_batch_2d_k = input_k<Real>(-1, 37, 1127, 1096);
 
 // The loop of collide_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -550,7 +550,7 @@ constexpr int collide_batch_2d_sure_k = input_k<Real>(-1, 37, 1127, 1096);
 // each status is ok, a condition's or out of range, and each result is collide_batch_2d's bit for
 // bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
 // the block is left as it was, to collide_batch_2d.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     // A format without a range, or one whose largest square (2^2k) overflows: every block
@@ -669,8 +669,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
         v_My_[i] = detail::blend(usable, v_My_out, v_My_[i]);
         v_mx_[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
         v_my_[i] = detail::blend(usable, v_my_out, v_my_[i]);
-        if constexpr (with_status)
-            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
+        status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }
@@ -678,7 +677,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
 // collide_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -699,10 +698,10 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
             IMPACT_PREFETCH(v_my_ + b + ahead, 1);
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (untried == 0 && collide_batch_2d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_2d_sure<Real>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own)) {
             back_off = 0;
         } else {
             if (untried == 0) {
@@ -711,12 +710,12 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             } else {
                 --untried;
             }
-            collide_batch_2d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-            collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_2d<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
+            collide_batch_2d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
         }
     }
-    collide_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_2d<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
+    collide_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -729,10 +728,7 @@ inline void collide_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 2>& data) noexcept
 {
-    if (data.status)
-        detail::collide_batch_2d_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, data.status);
-    else
-        detail::collide_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, nullptr);
+    detail::collide_batch_2d_ahead<Real>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, data.status);
 }
 
 namespace detail {
@@ -1029,7 +1025,7 @@ constexpr int collide_batch_2d_fast_k = input_k<Real>(3, 101, 2015, 1991);
 
 // The loop of collide_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -1153,7 +1149,7 @@ constexpr int collide_batch_2d_fast_sure_k = input_k<Real>(6, 108, 2023, 2005);
 // each status is ok, a condition's or out of range, and each result is collide_batch_2d_fast's bit for
 // bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
 // the block is left as it was, to collide_batch_2d_fast.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     // A format without a range, or one whose largest square (2^2k) overflows: every block
@@ -1251,8 +1247,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
         v_My_[i] = detail::blend(written, v_My_out, v_My_[i]);
         v_mx_[i] = detail::blend(written, v_mx_out, v_mx_[i]);
         v_my_[i] = detail::blend(written, v_my_out, v_my_[i]);
-        if constexpr (with_status)
-            status_[i] = detail::blend(resolved & !written, status::out_of_range, outcome);
+        status_[i] = detail::blend(resolved & !written, status::out_of_range, outcome);
     }
     return true;
 }
@@ -1260,7 +1255,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
 // collide_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -1281,10 +1276,10 @@ inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RE
             IMPACT_PREFETCH(v_mx_ + b + ahead, 1);
             IMPACT_PREFETCH(v_my_ + b + ahead, 1);
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (untried == 0 && collide_batch_2d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_2d_fast_sure<Real>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own)) {
             back_off = 0;
         } else {
             if (untried == 0) {
@@ -1293,12 +1288,12 @@ inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RE
             } else {
                 --untried;
             }
-            collide_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-            collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_2d_fast<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
+            collide_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
         }
     }
-    collide_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_2d_fast<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
+    collide_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, eps_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -1308,10 +1303,7 @@ inline void collide_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RE
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 2>& data, fast_t) noexcept
 {
-    if (data.status)
-        detail::collide_batch_2d_fast_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, data.status);
-    else
-        detail::collide_batch_2d_fast_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, nullptr);
+    detail::collide_batch_2d_fast_ahead<Real>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.eps, data.status);
 }
 
 } // namespace impact

@@ -513,7 +513,7 @@ constexpr int collide_batch_3d_k = input_k<Real>(-1, 36, 1126, 1095);
 
 // The loop of collide_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -695,7 +695,7 @@ constexpr int collide_batch_3d_sure_k = input_k<Real>(-1, 36, 1126, 1095);
 // each status is ok, a condition's or out of range, and each result is collide_batch_3d's bit for
 // bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
 // the block is left as it was, to collide_batch_3d.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     // A format without a range, or one whose largest square (2^2k) overflows: every block
@@ -847,8 +847,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
         v_mx_[i] = detail::blend(usable, v_mx_out, v_mx_[i]);
         v_my_[i] = detail::blend(usable, v_my_out, v_my_[i]);
         v_mz_[i] = detail::blend(usable, v_mz_out, v_mz_[i]);
-        if constexpr (with_status)
-            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
+        status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }
@@ -856,7 +855,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
 // collide_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -881,10 +880,10 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             IMPACT_PREFETCH(v_my_ + b + ahead, 1);
             IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (untried == 0 && collide_batch_3d_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_3d_sure<Real>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own)) {
             back_off = 0;
         } else {
             if (untried == 0) {
@@ -893,12 +892,12 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
             } else {
                 --untried;
             }
-            collide_batch_3d<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-            collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_3d<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
+            collide_batch_3d_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
         }
     }
-    collide_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
+    collide_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -911,10 +910,7 @@ inline void collide_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRIC
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 3>& data) noexcept
 {
-    if (data.status)
-        detail::collide_batch_3d_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
-    else
-        detail::collide_batch_3d_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
+    detail::collide_batch_3d_ahead<Real>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
 }
 
 namespace detail {
@@ -1269,7 +1265,7 @@ constexpr int collide_batch_3d_fast_k = input_k<Real>(3, 101, 2015, 1991);
 
 // The loop of collide_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_batch_3d_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -1411,7 +1407,7 @@ constexpr int collide_batch_3d_fast_sure_k = input_k<Real>(6, 107, 2023, 2005);
 // each status is ok, a condition's or out of range, and each result is collide_batch_3d_fast's bit for
 // bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
 // the block is left as it was, to collide_batch_3d_fast.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     // A format without a range, or one whose largest square (2^2k) overflows: every block
@@ -1529,8 +1525,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
         v_mx_[i] = detail::blend(written, v_mx_out, v_mx_[i]);
         v_my_[i] = detail::blend(written, v_my_out, v_my_[i]);
         v_mz_[i] = detail::blend(written, v_mz_out, v_mz_[i]);
-        if constexpr (with_status)
-            status_[i] = detail::blend(resolved & !written, status::out_of_range, outcome);
+        status_[i] = detail::blend(resolved & !written, status::out_of_range, outcome);
     }
     return true;
 }
@@ -1538,7 +1533,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
 // collide_batch_3d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -1563,10 +1558,10 @@ inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RE
             IMPACT_PREFETCH(v_my_ + b + ahead, 1);
             IMPACT_PREFETCH(v_mz_ + b + ahead, 1);
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (untried == 0 && collide_batch_3d_fast_sure<Real, with_status>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_batch_3d_fast_sure<Real>(M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own)) {
             back_off = 0;
         } else {
             if (untried == 0) {
@@ -1575,12 +1570,12 @@ inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RE
             } else {
                 --untried;
             }
-            collide_batch_3d_fast<Real, with_status>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-            collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_batch_3d_fast<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
+            collide_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
         }
     }
-    collide_batch_3d_fast<Real, with_status>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_batch_3d_fast<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
+    collide_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, eps_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -1590,10 +1585,7 @@ inline void collide_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RE
 template <class Real>
 inline void collide_batch(const collide_batch_data<Real, 3>& data, fast_t) noexcept
 {
-    if (data.status)
-        detail::collide_batch_3d_fast_ahead<Real, true>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
-    else
-        detail::collide_batch_3d_fast_ahead<Real, false>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, nullptr);
+    detail::collide_batch_3d_fast_ahead<Real>(data.count, data.M, data.m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.eps, data.status);
 }
 
 } // namespace impact

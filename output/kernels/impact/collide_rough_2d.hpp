@@ -1335,7 +1335,7 @@ constexpr int collide_rough_batch_2d_k = input_k<Real>(-1, -1, 376, 343);
 
 // The loop of collide_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_rough_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -1755,7 +1755,7 @@ inline void collide_rough_batch_2d_settle(std::size_t count, const Real* IMPACT_
 // collide_rough_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -1783,21 +1783,21 @@ inline void collide_rough_batch_2d_ahead(std::size_t count, const Real* IMPACT_R
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
             IMPACT_PREFETCH(b_ + b + ahead, 0);
             IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_rough_batch_2d<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_rough_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+        collide_rough_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 // collide_rough_batch_2d over blocks of 8 pairs for arrays that start at one offset within their pages:
 // pair i of every array then falls on the same cache sets. The read-only array k is read
 // 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
 // at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_2d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 13;
@@ -1848,18 +1848,18 @@ inline void collide_rough_batch_2d_skewed(std::size_t count, const Real* IMPACT_
                 IMPACT_PREFETCH(b_ + b + ahead + block * lead(11), 0);
             if (b + ahead + block * lead(12) < count)
                 IMPACT_PREFETCH(mu_ + b + ahead + block * lead(12), 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
         for (std::size_t k = 0; k < read_only; ++k)
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_rough_batch_2d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], with_status ? status_ + b : own);
-        collide_rough_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d<Real>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], status_ ? status_ + b : own);
+        collide_rough_batch_2d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_2d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_2d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -1876,16 +1876,10 @@ inline void collide_rough_batch(const collide_rough_batch_data<Real, 2>& data) n
     // distances are a double's; other types keep the plain loop).
     if constexpr (sizeof(Real) == sizeof(double))
         if (detail::crowded(std::array<const void*, 13>{data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.eps, data.beta, data.mu})) {
-            if (data.status)
-                detail::collide_rough_batch_2d_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
-            else
-                detail::collide_rough_batch_2d_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+            detail::collide_rough_batch_2d_skewed<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
             return;
         }
-    if (data.status)
-        detail::collide_rough_batch_2d_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_rough_batch_2d_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+    detail::collide_rough_batch_2d_ahead<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
 }
 
 namespace detail {
@@ -3144,7 +3138,7 @@ constexpr int collide_rough_batch_2d_fast_k = input_k<Real>(-1, -1, 376, 343);
 
 // The loop of collide_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_rough_batch_2d_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -3554,7 +3548,7 @@ inline void collide_rough_batch_2d_fast_settle(std::size_t count, const Real* IM
 // collide_rough_batch_2d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_2d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -3582,21 +3576,21 @@ inline void collide_rough_batch_2d_fast_ahead(std::size_t count, const Real* IMP
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
             IMPACT_PREFETCH(b_ + b + ahead, 0);
             IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_rough_batch_2d_fast<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_rough_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d_fast<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+        collide_rough_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_fast<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 // collide_rough_batch_2d_fast over blocks of 8 pairs for arrays that start at one offset within their pages:
 // pair i of every array then falls on the same cache sets. The read-only array k is read
 // 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
 // at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_2d_fast_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT w_M_, Real* IMPACT_RESTRICT w_m_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 13;
@@ -3647,18 +3641,18 @@ inline void collide_rough_batch_2d_fast_skewed(std::size_t count, const Real* IM
                 IMPACT_PREFETCH(b_ + b + ahead + block * lead(11), 0);
             if (b + ahead + block * lead(12) < count)
                 IMPACT_PREFETCH(mu_ + b + ahead + block * lead(12), 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
         for (std::size_t k = 0; k < read_only; ++k)
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_rough_batch_2d_fast<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], with_status ? status_ + b : own);
-        collide_rough_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_2d_fast<Real>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, stage[10][r], stage[11][r], stage[12][r], status_ ? status_ + b : own);
+        collide_rough_batch_2d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_2d_fast<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_2d_fast<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_2d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_mx_ + b, C_my_ + b, v_Mx_ + b, v_My_ + b, v_mx_ + b, v_my_ + b, w_M_ + b, w_m_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -3672,16 +3666,10 @@ inline void collide_rough_batch(const collide_rough_batch_data<Real, 2>& data, f
     // distances are a double's; other types keep the plain loop).
     if constexpr (sizeof(Real) == sizeof(double))
         if (detail::crowded(std::array<const void*, 13>{data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.eps, data.beta, data.mu})) {
-            if (data.status)
-                detail::collide_rough_batch_2d_fast_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
-            else
-                detail::collide_rough_batch_2d_fast_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+            detail::collide_rough_batch_2d_fast_skewed<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
             return;
         }
-    if (data.status)
-        detail::collide_rough_batch_2d_fast_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_rough_batch_2d_fast_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, nullptr);
+    detail::collide_rough_batch_2d_fast_ahead<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_m[0], data.C_m[1], data.v_M[0], data.v_M[1], data.v_m[0], data.v_m[1], data.w_M, data.w_m, data.eps, data.beta, data.mu, data.status);
 }
 
 } // namespace impact

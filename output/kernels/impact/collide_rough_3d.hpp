@@ -2292,7 +2292,7 @@ constexpr int collide_rough_batch_3d_k = input_k<Real>(-1, -1, 225, 194);
 
 // The loop of collide_rough_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_rough_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, Real* IMPACT_RESTRICT w_Mx_, Real* IMPACT_RESTRICT w_My_, Real* IMPACT_RESTRICT w_Mz_, Real* IMPACT_RESTRICT w_mx_, Real* IMPACT_RESTRICT w_my_, Real* IMPACT_RESTRICT w_mz_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -2987,7 +2987,7 @@ inline void collide_rough_batch_3d_settle(std::size_t count, const Real* IMPACT_
 // collide_rough_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, Real* IMPACT_RESTRICT w_Mx_, Real* IMPACT_RESTRICT w_My_, Real* IMPACT_RESTRICT w_Mz_, Real* IMPACT_RESTRICT w_mx_, Real* IMPACT_RESTRICT w_my_, Real* IMPACT_RESTRICT w_mz_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -3023,21 +3023,21 @@ inline void collide_rough_batch_3d_ahead(std::size_t count, const Real* IMPACT_R
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
             IMPACT_PREFETCH(b_ + b + ahead, 0);
             IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_rough_batch_3d<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_rough_batch_3d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_3d<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+        collide_rough_batch_3d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_3d<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 // collide_rough_batch_3d over blocks of 8 pairs for arrays that start at one offset within their pages:
 // pair i of every array then falls on the same cache sets. The read-only array k is read
 // 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
 // at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, Real* IMPACT_RESTRICT w_Mx_, Real* IMPACT_RESTRICT w_My_, Real* IMPACT_RESTRICT w_Mz_, Real* IMPACT_RESTRICT w_mx_, Real* IMPACT_RESTRICT w_my_, Real* IMPACT_RESTRICT w_mz_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 15;
@@ -3098,18 +3098,18 @@ inline void collide_rough_batch_3d_skewed(std::size_t count, const Real* IMPACT_
                 IMPACT_PREFETCH(b_ + b + ahead + block * lead(13), 0);
             if (b + ahead + block * lead(14) < count)
                 IMPACT_PREFETCH(mu_ + b + ahead + block * lead(14), 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
         for (std::size_t k = 0; k < read_only; ++k)
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_rough_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], stage[10][r], stage[11][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, stage[12][r], stage[13][r], stage[14][r], with_status ? status_ + b : own);
-        collide_rough_batch_3d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_3d<Real>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], stage[10][r], stage[11][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, stage[12][r], stage[13][r], stage[14][r], status_ ? status_ + b : own);
+        collide_rough_batch_3d_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_3d<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_3d<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_3d_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -3126,16 +3126,10 @@ inline void collide_rough_batch(const collide_rough_batch_data<Real, 3>& data) n
     // distances are a double's; other types keep the plain loop).
     if constexpr (sizeof(Real) == sizeof(double))
         if (detail::crowded(std::array<const void*, 15>{data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.eps, data.beta, data.mu})) {
-            if (data.status)
-                detail::collide_rough_batch_3d_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
-            else
-                detail::collide_rough_batch_3d_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, nullptr);
+            detail::collide_rough_batch_3d_skewed<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
             return;
         }
-    if (data.status)
-        detail::collide_rough_batch_3d_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_rough_batch_3d_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, nullptr);
+    detail::collide_rough_batch_3d_ahead<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
 }
 
 namespace detail {
@@ -5345,7 +5339,7 @@ constexpr int collide_rough_batch_3d_fast_k = input_k<Real>(-1, -1, 217, 173);
 
 // The loop of collide_rough_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_rough_batch_3d_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, Real* IMPACT_RESTRICT w_Mx_, Real* IMPACT_RESTRICT w_My_, Real* IMPACT_RESTRICT w_Mz_, Real* IMPACT_RESTRICT w_mx_, Real* IMPACT_RESTRICT w_my_, Real* IMPACT_RESTRICT w_mz_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -6032,7 +6026,7 @@ inline void collide_rough_batch_3d_fast_settle(std::size_t count, const Real* IM
 // collide_rough_batch_3d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, Real* IMPACT_RESTRICT w_Mx_, Real* IMPACT_RESTRICT w_My_, Real* IMPACT_RESTRICT w_Mz_, Real* IMPACT_RESTRICT w_mx_, Real* IMPACT_RESTRICT w_my_, Real* IMPACT_RESTRICT w_mz_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -6068,21 +6062,21 @@ inline void collide_rough_batch_3d_fast_ahead(std::size_t count, const Real* IMP
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
             IMPACT_PREFETCH(b_ + b + ahead, 0);
             IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_rough_batch_3d_fast<Real, with_status>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_rough_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_3d_fast<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+        collide_rough_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_3d_fast<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_3d_fast<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 // collide_rough_batch_3d_fast over blocks of 8 pairs for arrays that start at one offset within their pages:
 // pair i of every array then falls on the same cache sets. The read-only array k is read
 // 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
 // at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_rough_batch_3d_fast_skewed(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, const Real* IMPACT_RESTRICT R_M_, const Real* IMPACT_RESTRICT R_m_, const Real* IMPACT_RESTRICT q_M_, const Real* IMPACT_RESTRICT q_m_, const Real* IMPACT_RESTRICT C_Mx_, const Real* IMPACT_RESTRICT C_My_, const Real* IMPACT_RESTRICT C_Mz_, const Real* IMPACT_RESTRICT C_mx_, const Real* IMPACT_RESTRICT C_my_, const Real* IMPACT_RESTRICT C_mz_, Real* IMPACT_RESTRICT v_Mx_, Real* IMPACT_RESTRICT v_My_, Real* IMPACT_RESTRICT v_Mz_, Real* IMPACT_RESTRICT v_mx_, Real* IMPACT_RESTRICT v_my_, Real* IMPACT_RESTRICT v_mz_, Real* IMPACT_RESTRICT w_Mx_, Real* IMPACT_RESTRICT w_My_, Real* IMPACT_RESTRICT w_Mz_, Real* IMPACT_RESTRICT w_mx_, Real* IMPACT_RESTRICT w_my_, Real* IMPACT_RESTRICT w_mz_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 15;
@@ -6143,18 +6137,18 @@ inline void collide_rough_batch_3d_fast_skewed(std::size_t count, const Real* IM
                 IMPACT_PREFETCH(b_ + b + ahead + block * lead(13), 0);
             if (b + ahead + block * lead(14) < count)
                 IMPACT_PREFETCH(mu_ + b + ahead + block * lead(14), 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
         for (std::size_t k = 0; k < read_only; ++k)
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_rough_batch_3d_fast<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], stage[10][r], stage[11][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, stage[12][r], stage[13][r], stage[14][r], with_status ? status_ + b : own);
-        collide_rough_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_rough_batch_3d_fast<Real>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], stage[10][r], stage[11][r], v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, stage[12][r], stage[13][r], stage[14][r], status_ ? status_ + b : own);
+        collide_rough_batch_3d_fast_settle<Real>(block, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_rough_batch_3d_fast<Real, with_status>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_rough_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_rough_batch_3d_fast<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_rough_batch_3d_fast_settle<Real>(count - b, M_ + b, m_ + b, R_M_ + b, R_m_ + b, q_M_ + b, q_m_ + b, C_Mx_ + b, C_My_ + b, C_Mz_ + b, C_mx_ + b, C_my_ + b, C_mz_ + b, v_Mx_ + b, v_My_ + b, v_Mz_ + b, v_mx_ + b, v_my_ + b, v_mz_ + b, w_Mx_ + b, w_My_ + b, w_Mz_ + b, w_mx_ + b, w_my_ + b, w_mz_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -6168,16 +6162,10 @@ inline void collide_rough_batch(const collide_rough_batch_data<Real, 3>& data, f
     // distances are a double's; other types keep the plain loop).
     if constexpr (sizeof(Real) == sizeof(double))
         if (detail::crowded(std::array<const void*, 15>{data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.eps, data.beta, data.mu})) {
-            if (data.status)
-                detail::collide_rough_batch_3d_fast_skewed<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
-            else
-                detail::collide_rough_batch_3d_fast_skewed<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, nullptr);
+            detail::collide_rough_batch_3d_fast_skewed<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
             return;
         }
-    if (data.status)
-        detail::collide_rough_batch_3d_fast_ahead<Real, true>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_rough_batch_3d_fast_ahead<Real, false>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, nullptr);
+    detail::collide_rough_batch_3d_fast_ahead<Real>(data.count, data.M, data.m, data.R_M, data.R_m, data.q_M, data.q_m, data.C_M[0], data.C_M[1], data.C_M[2], data.C_m[0], data.C_m[1], data.C_m[2], data.v_M[0], data.v_M[1], data.v_M[2], data.v_m[0], data.v_m[1], data.v_m[2], data.w_M[0], data.w_M[1], data.w_M[2], data.w_m[0], data.w_m[1], data.w_m[2], data.eps, data.beta, data.mu, data.status);
 }
 
 } // namespace impact

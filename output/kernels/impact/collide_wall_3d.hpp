@@ -156,7 +156,7 @@ constexpr int collide_wall_batch_3d_k = input_k<Real>(-1, 63, 1591, 1557);
 
 // The loop of collide_wall_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_wall_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -283,7 +283,7 @@ constexpr int collide_wall_batch_3d_sure_k = input_k<Real>(-1, 63, 1591, 1557);
 // each status is ok, a condition's or out of range, and each result is collide_wall_batch_3d's bit for
 // bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
 // the block is left as it was, to collide_wall_batch_3d.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     // A format without a range, or one whose largest square (2^2k) overflows: every block
@@ -384,8 +384,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT
         v_x_[i] = detail::blend(usable, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(usable, v_y_out, v_y_[i]);
         v_z_[i] = detail::blend(usable, v_z_out, v_z_[i]);
-        if constexpr (with_status)
-            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
+        status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }
@@ -393,7 +392,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT
 // collide_wall_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -416,10 +415,10 @@ inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
             IMPACT_PREFETCH(v_y_ + b + ahead, 1);
             IMPACT_PREFETCH(v_z_ + b + ahead, 1);
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (untried == 0 && collide_wall_batch_3d_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_wall_batch_3d_sure<Real>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own)) {
             back_off = 0;
         } else {
             if (untried == 0) {
@@ -428,12 +427,12 @@ inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
             } else {
                 --untried;
             }
-            collide_wall_batch_3d<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
-            collide_wall_batch_3d_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_3d<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
+            collide_wall_batch_3d_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
         }
     }
-    collide_wall_batch_3d<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_wall_batch_3d_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_3d<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
+    collide_wall_batch_3d_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -446,10 +445,7 @@ inline void collide_wall_batch_3d_ahead(std::size_t count, const Real* IMPACT_RE
 template <class Real>
 inline void collide_wall_batch(const collide_wall_batch_data<Real, 3>& data) noexcept
 {
-    if (data.status)
-        detail::collide_wall_batch_3d_ahead<Real, true>(data.count, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.eps, data.status);
-    else
-        detail::collide_wall_batch_3d_ahead<Real, false>(data.count, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.eps, nullptr);
+    detail::collide_wall_batch_3d_ahead<Real>(data.count, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.eps, data.status);
 }
 
 /// collide_wall(P, n, C, v, eps, impact::fast): the fast form of collide_wall, with the
@@ -556,7 +552,7 @@ constexpr int collide_wall_batch_3d_fast_k = input_k<Real>(9, 144, 2698, 2674);
 
 // The loop of collide_wall_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_wall_batch_3d_fast(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -659,7 +655,7 @@ constexpr int collide_wall_batch_3d_fast_sure_k = input_k<Real>(9, 144, 2698, 26
 // each status is ok, a condition's or out of range, and each result is collide_wall_batch_3d_fast's bit for
 // bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
 // the block is left as it was, to collide_wall_batch_3d_fast.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     // A format without a range, or one whose largest square (2^2k) overflows: every block
@@ -736,8 +732,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RES
         v_x_[i] = detail::blend(usable, v_x_out, v_x_[i]);
         v_y_[i] = detail::blend(usable, v_y_out, v_y_[i]);
         v_z_[i] = detail::blend(usable, v_z_out, v_z_[i]);
-        if constexpr (with_status)
-            status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
+        status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
     }
     return true;
 }
@@ -745,7 +740,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RES
 // collide_wall_batch_3d_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, const Real* IMPACT_RESTRICT eps_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -768,10 +763,10 @@ inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPA
             IMPACT_PREFETCH(v_y_ + b + ahead, 1);
             IMPACT_PREFETCH(v_z_ + b + ahead, 1);
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        if (untried == 0 && collide_wall_batch_3d_fast_sure<Real, with_status>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own)) {
+        if (untried == 0 && collide_wall_batch_3d_fast_sure<Real>(P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own)) {
             back_off = 0;
         } else {
             if (untried == 0) {
@@ -780,12 +775,12 @@ inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPA
             } else {
                 --untried;
             }
-            collide_wall_batch_3d_fast<Real, with_status>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
-            collide_wall_batch_3d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+            collide_wall_batch_3d_fast<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
+            collide_wall_batch_3d_fast_settle<Real>(block, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
         }
     }
-    collide_wall_batch_3d_fast<Real, with_status>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
-    collide_wall_batch_3d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, with_status ? status_ + b : own);
+    collide_wall_batch_3d_fast<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
+    collide_wall_batch_3d_fast_settle<Real>(count - b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, eps_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -795,10 +790,7 @@ inline void collide_wall_batch_3d_fast_ahead(std::size_t count, const Real* IMPA
 template <class Real>
 inline void collide_wall_batch(const collide_wall_batch_data<Real, 3>& data, fast_t) noexcept
 {
-    if (data.status)
-        detail::collide_wall_batch_3d_fast_ahead<Real, true>(data.count, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.eps, data.status);
-    else
-        detail::collide_wall_batch_3d_fast_ahead<Real, false>(data.count, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.eps, nullptr);
+    detail::collide_wall_batch_3d_fast_ahead<Real>(data.count, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.eps, data.status);
 }
 
 } // namespace impact

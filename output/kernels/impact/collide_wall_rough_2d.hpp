@@ -296,7 +296,7 @@ constexpr int collide_wall_rough_batch_2d_k = input_k<Real>(-1, -1, 469, 425);
 
 // The loop of collide_wall_rough_batch in 2D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_2d(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -519,7 +519,7 @@ inline void collide_wall_rough_batch_2d_settle(std::size_t count, const Real* IM
 // collide_wall_rough_batch_2d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_wall_rough_batch_2d_ahead(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT w_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -542,14 +542,14 @@ inline void collide_wall_rough_batch_2d_ahead(std::size_t count, const Real* IMP
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
             IMPACT_PREFETCH(b_ + b + ahead, 0);
             IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_wall_rough_batch_2d<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_wall_rough_batch_2d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_wall_rough_batch_2d<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+        collide_wall_rough_batch_2d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_wall_rough_batch_2d<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_wall_rough_batch_2d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_wall_rough_batch_2d<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_wall_rough_batch_2d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, N_x_ + b, N_y_ + b, C_x_ + b, C_y_ + b, v_x_ + b, v_y_ + b, w_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -562,10 +562,7 @@ inline void collide_wall_rough_batch_2d_ahead(std::size_t count, const Real* IMP
 template <class Real>
 inline void collide_wall_rough_batch(const collide_wall_rough_batch_data<Real, 2>& data) noexcept
 {
-    if (data.status)
-        detail::collide_wall_rough_batch_2d_ahead<Real, true>(data.count, data.R, data.q, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.w, data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_wall_rough_batch_2d_ahead<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.w, data.eps, data.beta, data.mu, nullptr);
+    detail::collide_wall_rough_batch_2d_ahead<Real>(data.count, data.R, data.q, data.P[0], data.P[1], data.n[0], data.n[1], data.C[0], data.C[1], data.v[0], data.v[1], data.w, data.eps, data.beta, data.mu, data.status);
 }
 
 /// collide_wall_rough(R, q, P, n, C, v, w, eps, beta, mu, impact::fast): the fast form of collide_wall_rough, which is

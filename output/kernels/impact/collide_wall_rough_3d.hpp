@@ -471,7 +471,7 @@ constexpr int collide_wall_rough_batch_3d_k = input_k<Real>(-1, -1, 272, 238);
 
 // The loop of collide_wall_rough_batch in 3D, without branches; inlined where it is called, so that a
 // block's call runs one pass of 8 pairs.
-template <class Real, bool with_status>
+template <class Real>
 IMPACT_ALWAYS_INLINE void collide_wall_rough_batch_3d(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     IMPACT_INDEPENDENT_ITERATIONS
@@ -840,7 +840,7 @@ inline void collide_wall_rough_batch_3d_settle(std::size_t count, const Real* IM
 // collide_wall_rough_batch_3d over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
 // arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
 // many arrays, falls behind.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_wall_rough_batch_3d_ahead(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64;
@@ -869,21 +869,21 @@ inline void collide_wall_rough_batch_3d_ahead(std::size_t count, const Real* IMP
             IMPACT_PREFETCH(eps_ + b + ahead, 0);
             IMPACT_PREFETCH(b_ + b + ahead, 0);
             IMPACT_PREFETCH(mu_ + b + ahead, 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
-        collide_wall_rough_batch_3d<Real, with_status>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-        collide_wall_rough_batch_3d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_wall_rough_batch_3d<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+        collide_wall_rough_batch_3d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_wall_rough_batch_3d<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_wall_rough_batch_3d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_wall_rough_batch_3d<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_wall_rough_batch_3d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 // collide_wall_rough_batch_3d over blocks of 8 pairs for arrays that start at one offset within their pages:
 // pair i of every array then falls on the same cache sets. The read-only array k is read
 // 2 (k + 1) blocks ahead of its turn, into a ring of blocks, so that the arrays are read
 // at offsets 128 bytes apart, as if staggered.
-template <class Real, bool with_status>
+template <class Real>
 inline void collide_wall_rough_batch_3d_skewed(std::size_t count, const Real* IMPACT_RESTRICT R_, const Real* IMPACT_RESTRICT q_, const Real* IMPACT_RESTRICT P_x_, const Real* IMPACT_RESTRICT P_y_, const Real* IMPACT_RESTRICT P_z_, const Real* IMPACT_RESTRICT N_x_, const Real* IMPACT_RESTRICT N_y_, const Real* IMPACT_RESTRICT N_z_, const Real* IMPACT_RESTRICT C_x_, const Real* IMPACT_RESTRICT C_y_, const Real* IMPACT_RESTRICT C_z_, Real* IMPACT_RESTRICT v_x_, Real* IMPACT_RESTRICT v_y_, Real* IMPACT_RESTRICT v_z_, Real* IMPACT_RESTRICT w_x_, Real* IMPACT_RESTRICT w_y_, Real* IMPACT_RESTRICT w_z_, const Real* IMPACT_RESTRICT eps_, const Real* IMPACT_RESTRICT b_, const Real* IMPACT_RESTRICT mu_, impact::status* IMPACT_RESTRICT status_) noexcept
 {
     constexpr std::size_t block = 8, ahead = 64, ring = 32, read_only = 14;
@@ -936,18 +936,18 @@ inline void collide_wall_rough_batch_3d_skewed(std::size_t count, const Real* IM
                 IMPACT_PREFETCH(b_ + b + ahead + block * lead(12), 0);
             if (b + ahead + block * lead(13) < count)
                 IMPACT_PREFETCH(mu_ + b + ahead + block * lead(13), 0);
-            if constexpr (with_status)
+            if (status_)
                 IMPACT_PREFETCH(status_ + b + ahead, 1);
         }
         for (std::size_t k = 0; k < read_only; ++k)
             if (j + lead(k) < blocks)
                 read(k, j + lead(k));
         const std::size_t r = j % ring;
-        collide_wall_rough_batch_3d<Real, with_status>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], stage[10][r], v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, stage[11][r], stage[12][r], stage[13][r], with_status ? status_ + b : own);
-        collide_wall_rough_batch_3d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+        collide_wall_rough_batch_3d<Real>(block, stage[0][r], stage[1][r], stage[2][r], stage[3][r], stage[4][r], stage[5][r], stage[6][r], stage[7][r], stage[8][r], stage[9][r], stage[10][r], v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, stage[11][r], stage[12][r], stage[13][r], status_ ? status_ + b : own);
+        collide_wall_rough_batch_3d_settle<Real>(block, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
     }
-    collide_wall_rough_batch_3d<Real, with_status>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
-    collide_wall_rough_batch_3d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, with_status ? status_ + b : own);
+    collide_wall_rough_batch_3d<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
+    collide_wall_rough_batch_3d_settle<Real>(count - b, R_ + b, q_ + b, P_x_ + b, P_y_ + b, P_z_ + b, N_x_ + b, N_y_ + b, N_z_ + b, C_x_ + b, C_y_ + b, C_z_ + b, v_x_ + b, v_y_ + b, v_z_ + b, w_x_ + b, w_y_ + b, w_z_ + b, eps_ + b, b_ + b, mu_ + b, status_ ? status_ + b : own);
 }
 
 } // namespace detail
@@ -964,16 +964,10 @@ inline void collide_wall_rough_batch(const collide_wall_rough_batch_data<Real, 3
     // distances are a double's; other types keep the plain loop).
     if constexpr (sizeof(Real) == sizeof(double))
         if (detail::crowded(std::array<const void*, 14>{data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.eps, data.beta, data.mu})) {
-            if (data.status)
-                detail::collide_wall_rough_batch_3d_skewed<Real, true>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, data.status);
-            else
-                detail::collide_wall_rough_batch_3d_skewed<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, nullptr);
+            detail::collide_wall_rough_batch_3d_skewed<Real>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, data.status);
             return;
         }
-    if (data.status)
-        detail::collide_wall_rough_batch_3d_ahead<Real, true>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, data.status);
-    else
-        detail::collide_wall_rough_batch_3d_ahead<Real, false>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, nullptr);
+    detail::collide_wall_rough_batch_3d_ahead<Real>(data.count, data.R, data.q, data.P[0], data.P[1], data.P[2], data.n[0], data.n[1], data.n[2], data.C[0], data.C[1], data.C[2], data.v[0], data.v[1], data.v[2], data.w[0], data.w[1], data.w[2], data.eps, data.beta, data.mu, data.status);
 }
 
 /// collide_wall_rough(R, q, P, n, C, v, w, eps, beta, mu, impact::fast): the fast form of collide_wall_rough, which is
