@@ -343,6 +343,23 @@ BOOST_AUTO_TEST_CASE(a_long_problem_past_the_guard_is_cut_short_and_the_rest_sti
     BOOST_TEST(verify::cut_short(true).detail == "stopped by the wall-clock guard of 10 s");
 }
 
+BOOST_AUTO_TEST_CASE(a_short_problem_past_the_workers_net_is_cut_short_and_the_rest_still_answered)
+{
+    // The slow problem, short, under a net of 0.1 s (a minute in a regeneration): stopped, its
+    // worker with it, and the problem after it answered by another.
+    const std::string slow = slow_problem();
+    BOOST_TEST_REQUIRE(!verify::z3_guarded(slow));
+    const std::string x = "(declare-fun x () Real)\n";
+    const std::vector<std::string> problems{slow, problem_of(x, "(>= (* x x) 0)")};
+    const std::vector<verify::z3_run> runs = pipeline::run_z3_in_workers(verify::rlimit_option(), problems, 1, {}, 10000, 100);
+    BOOST_TEST_REQUIRE(runs.size() == 2u);
+    BOOST_TEST((runs[0].answer.what == verify::z3_answer::kind::unknown), verify::to_string(runs[0].answer));
+    BOOST_TEST(runs[0].answer.detail == "stopped by the wall-clock guard of 0.1 s");
+    BOOST_TEST(runs[0].answer.guarded);
+    BOOST_TEST(runs[0].seconds < 3.0);
+    BOOST_TEST((runs[1].answer.what == verify::z3_answer::kind::confirmed), verify::to_string(runs[1].answer));
+}
+
 BOOST_AUTO_TEST_CASE(checks_get_the_same_statuses_with_workers_and_each_text_is_run_once)
 {
     // Two checks of one claim give one problem text, run once; the derivation's checks the

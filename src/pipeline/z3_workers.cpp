@@ -117,7 +117,8 @@ double seconds_since(steady::time_point start, steady::time_point now)
 } // namespace
 
 std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const std::vector<std::string>& problems,
-                                              unsigned jobs, const std::function<void()>& finished, unsigned guard_ms)
+                                              unsigned jobs, const std::function<void()>& finished, unsigned guard_ms,
+                                              unsigned net_ms)
 {
     std::vector<verify::z3_run> runs(problems.size());
     // The longest first, so that the last to finish is a short one; ties in the problems' order.
@@ -134,6 +135,10 @@ std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const s
             finished();
     };
     const auto guard = std::chrono::milliseconds(guard_ms);
+    // A guarded problem is stopped at the guard, any other at the worker's net.
+    const auto limit_of = [&](std::size_t i) {
+        return std::chrono::milliseconds(verify::z3_guarded(problems[i]) ? guard_ms : net_ms);
+    };
     z3_crew crew;
     while (left > 0) {
         // Each idle worker, and new ones up to `jobs`, given the next problem.
@@ -180,8 +185,7 @@ std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const s
                 continue;
             watched.push_back({w.fd, POLLIN, 0});
             busy.push_back(k);
-            if (verify::z3_guarded(problems[*w.problem]))
-                deadline = std::min(deadline, w.since + guard);
+            deadline = std::min(deadline, w.since + limit_of(*w.problem));
         }
         int wait_ms = -1;
         if (deadline != steady::time_point::max())
@@ -212,8 +216,9 @@ std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const s
                 }
                 // The end of its socket: the worker died on this problem.
                 answered(i, verify::cut_short(false), seconds_since(w.since, now));
-            } else if (verify::z3_guarded(problems[i]) && now - w.since >= guard) {
-                answered(i, verify::cut_short(true, guard_ms), seconds_since(w.since, now));
+            } else if (now - w.since >= limit_of(i)) {
+                const auto limit = std::chrono::duration_cast<std::chrono::milliseconds>(limit_of(i)).count();
+                answered(i, verify::cut_short(true, static_cast<unsigned>(limit)), seconds_since(w.since, now));
             } else {
                 continue;
             }

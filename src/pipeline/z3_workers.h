@@ -14,8 +14,9 @@
 //
 // The wall-clock guard is kept as `run_z3` keeps it: a guarded problem (z3_guarded) not
 // answered within `z3_guard_ms` of being sent has its worker killed and the guard's answer;
-// a worker that dies gives the answer of a process that ended without one. Another worker
-// is forked for the problems left.
+// any other problem, within the workers' net (`z3_worker_net_ms`, a minute) alike. A worker
+// that dies gives the answer of a process that ended without one. Another worker is forked
+// for the problems left.
 #pragma once
 
 #include "verify/proofs.h"
@@ -29,10 +30,12 @@ namespace impact::pipeline {
 /// Z3 on each of `problems` (preceded by `option`), at most `jobs` at once in worker
 /// processes; the answers in the problems' order, each the one `verify::run_z3` gives.
 /// `finished()` is called after each. When no process is to be had, the problems run here.
-/// `guard_ms`: the wall-clock guard (the tests give a shorter one).
+/// `guard_ms`: the wall-clock guard, `net_ms` the net under the problems it does not guard
+/// (the tests give shorter ones).
 std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const std::vector<std::string>& problems,
                                               unsigned jobs, const std::function<void()>& finished = {},
-                                              unsigned guard_ms = verify::z3_guard_ms);
+                                              unsigned guard_ms = verify::z3_guard_ms,
+                                              unsigned net_ms = verify::z3_worker_net_ms);
 
 /// `run_z3_in_workers` with `jobs` as check_proofs takes it; with `jobs` 1, none (the
 /// problems one after another in Impact's own process, as for the derivations).

@@ -31,6 +31,13 @@ inline constexpr std::size_t z3_largest_problem = 20'000;
 /// limit, which a problem within `z3_largest_problem` meets first.
 inline constexpr unsigned z3_guard_ms = 10'000;
 
+/// In the pipeline's worker processes, the wall-clock net under a problem that is not guarded
+/// (shorter than `z3_in_process_below`), in milliseconds. Such a problem takes well under a
+/// second, and its answer is the resource limit's. But a reused worker's Z3 once ran on one
+/// for more than 5 minutes in CI, and the regeneration waited for it. The net ends such a
+/// problem, which is then not re-checked, as one the guard stopped.
+inline constexpr unsigned z3_worker_net_ms = 60'000;
+
 /// Problems shorter than this, in characters, are solved in Impact's own process by `run_z3`;
 /// longer ones in a child process the guard can end. Only these longer ones are guarded.
 inline constexpr std::size_t z3_in_process_below = 6'000;
