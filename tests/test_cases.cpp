@@ -585,6 +585,84 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_of_scalars_compiles_and_writes_what_its_scal
     fs::remove_all(dir);
 }
 
+// A batch kernel that does not settle: sums and differences underflow nowhere and the kernel
+// has no limit, so its loop leaves no pair to a scalar pass and is a template of whether the
+// caller wants statuses (it stores them only then). 19 pairs, two blocks of 8 and a tail of 3,
+// with a NaN, an infinity and an overflow among them: with statuses and without, the batch
+// writes the scalar kernel's results bit for bit; s = u + w and d = u - w typed here (exact
+// for these binary fractions); a refused pair is left as given.
+BOOST_AUTO_TEST_CASE(a_batch_kernel_that_does_not_settle_writes_its_statuses_only_where_asked)
+{
+    namespace fs = std::filesystem;
+    const std::string text = "id = \"sums\"\ntitle = \"t\"\n"
+                             "[[symbol]]\nname = \"u\"\ndimension = \"velocity\"\n"
+                             "[[symbol]]\nname = \"w\"\ndimension = \"velocity\"\n"
+                             "[[symbol]]\nname = \"s\"\ndimension = \"velocity\"\n"
+                             "[[symbol]]\nname = \"d\"\ndimension = \"velocity\"\n"
+                             "[[step]]\ndefine = \"s\"\nas = \"u + w\"\n[[step]]\ndefine = \"d\"\nas = \"u - w\"\n"
+                             "[[result]]\nname = \"s\"\n[[result]]\nname = \"d\"\n"
+                             "[[kernel]]\nname = \"sums\"\nbatch = true\ninputs = [\"u\", \"w\"]\n"
+                             "outputs = [\"u = s\", \"w = d\"]\nguards = [\"non_finite = u, w\"]\n";
+    const engine::library lib = engine::derive_all({spec::parse_derivation(text, "sums.toml")});
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
+    const auto header = files.find("kernels/impact/sums.hpp");
+    BOOST_TEST_REQUIRE((header != files.end()));
+    // The template this test is for: a loop that settles has none.
+    BOOST_TEST(header->second.find("template <class Real, bool with_status>") != std::string::npos);
+    BOOST_TEST(header->second.find("_settle") == std::string::npos);
+    const fs::path dir = fs::temp_directory_path() / ("impact_test_sums_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const auto& [path, contents] : files) {
+        fs::create_directories((dir / path).parent_path());
+        std::ofstream(dir / path) << contents;
+    }
+    std::ofstream(dir / "main.cpp")
+        << "#include \"impact/sums.hpp\"\n#include <cstring>\n#include <limits>\n"
+           "int main()\n{\n"
+           "    const int n = 19;\n"
+           "    double u[n], w[n], u2[n], w2[n];\n"
+           "    impact::status status[n];\n"
+           "    for (int i = 0; i < n; ++i) {\n"
+           "        u[i] = i * 0.375 - 2;\n        w[i] = 1.5 - i * 0.125;\n"
+           "    }\n"
+           "    u[5] = std::numeric_limits<double>::quiet_NaN();\n"
+           "    w[12] = std::numeric_limits<double>::infinity();\n"
+           "    u[17] = w[17] = std::numeric_limits<double>::max();\n"
+           "    double u0[n], w0[n];\n"
+           "    std::memcpy(u0, u, sizeof u);\n    std::memcpy(w0, w, sizeof w);\n"
+           "    std::memcpy(u2, u, sizeof u);\n    std::memcpy(w2, w, sizeof w);\n"
+           "    impact::sums_batch_data<double, 0> with{}, without{};\n"
+           "    with.count = without.count = n;\n"
+           "    with.u = u;\n    with.w = w;\n    with.status = status;\n"
+           "    without.u = u2;\n    without.w = w2;\n    without.status = nullptr;\n"
+           "    impact::sums_batch(with);\n    impact::sums_batch(without);\n"
+           "    int wrong = 0;\n"
+           "    for (int i = 0; i < n; ++i) {\n"
+           "        const auto one = impact::sums<double>(u0[i], w0[i]);\n"
+           "        wrong += std::memcmp(&one.u, &u[i], sizeof(double)) != 0 || std::memcmp(&one.w, &w[i], sizeof(double)) != 0;\n"
+           "        wrong += std::memcmp(&u2[i], &u[i], sizeof(double)) != 0 || std::memcmp(&w2[i], &w[i], sizeof(double)) != 0;\n"
+           "        wrong += one.status != status[i];\n"
+           "        const bool refused = i == 5 || i == 12 || i == 17;\n"
+           "        const impact::status expected = i == 17 ? impact::status::out_of_range\n"
+           "                                        : refused ? impact::status::non_finite : impact::status::ok;\n"
+           "        wrong += status[i] != expected;\n"
+           "        if (refused)\n"
+           "            wrong += std::memcmp(&u0[i], &u[i], sizeof(double)) != 0 || std::memcmp(&w0[i], &w[i], sizeof(double)) != 0;\n"
+           "        else\n"
+           "            wrong += u[i] != u0[i] + w0[i] || w[i] != u0[i] - w0[i];\n"
+           "    }\n"
+           "    return wrong == 0 ? 0 : 1;\n}\n";
+    for (const char* flags : {"-O2", "-O3 -march=native"}) {
+        const std::string command = std::string(IMPACT_CXX) + " -std=c++17 " + flags + " -ffp-contract=off -I" +
+                                    (dir / "kernels").string() + " " + (dir / "main.cpp").string() + " -o " +
+                                    (dir / "main").string() + " && " + (dir / "main").string();
+        BOOST_TEST(std::system(command.c_str()) == 0, command);
+    }
+    fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_CASE(a_name_the_kernels_cxx_declares_is_refused_where_the_file_gives_it)
 {
     // An input named after a C++ keyword, the kernel's values (t0, t1, ...), its loop's
