@@ -100,7 +100,7 @@ const std::map<std::string, std::string>& cold_output()
 
 // A cache one regeneration of the project's derivations filled, made once, in the default
 // folder ($XDG_CACHE_HOME/impact): tests that start from a warm cache copy it rather than
-// regenerate (each cold regeneration takes half a minute, minutes under the sanitizers).
+// regenerate (each cold regeneration takes about 14 s here, far longer under the sanitizers).
 fs::path copy_of_a_filled_cache(const fs::path& to)
 {
     static const scratch s;
