@@ -103,6 +103,15 @@ struct temporary_folder {
     temporary_folder& operator=(const temporary_folder&) = delete;
 };
 
+/// Writes `files` (relative path -> contents, as Impact's stages give them) under `root`.
+inline void write_files(const std::filesystem::path& root, const std::map<std::string, std::string>& files)
+{
+    for (const auto& [path, contents] : files) {
+        std::filesystem::create_directories((root / path).parent_path());
+        std::ofstream(root / path, std::ios::binary) << contents;
+    }
+}
+
 /// Copies into `to` the project's derivation files (and the paper's order of places) whose
 /// names `keep` accepts.
 template <class Keep>

@@ -22,8 +22,6 @@
 #include "pipeline/regenerate.h"
 #include "verify/choice.h"
 
-#include <cstdlib>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
@@ -492,35 +490,42 @@ BOOST_AUTO_TEST_CASE(a_kernel_computes_cases_with_one_select_on_both_sides_of_th
     BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
 }
 
+namespace {
+
+// The kernel headers `files` holds, and `program` beside them, compiled with the build's compiler
+// and `flags`, then run: what the compiler and the program printed, and the program's status.
+impact::testing::run_result compiled_and_run(const pipeline::file_set& files, const std::string& program,
+                                             const std::string& flags)
+{
+    const impact::testing::temporary_folder dir("impact-test-cases-kernel");
+    impact::testing::write_files(dir.root, files);
+    std::ofstream(dir.root / "main.cpp") << program;
+    return impact::testing::run_command(std::string(IMPACT_CXX) + " -std=c++17 " + flags + " -I" +
+                                        (dir.root / "kernels").string() + " " + (dir.root / "main.cpp").string() +
+                                        " -o " + (dir.root / "main").string() + " && " + (dir.root / "main").string());
+}
+
+} // namespace
+
 BOOST_AUTO_TEST_CASE(the_emitted_kernel_compiles_and_selects_each_case)
 {
-    namespace fs = std::filesystem;
     const engine::library lib = engine::derive_all({spec::read_derivation(IMPACT_SOURCE_DIR "/tests/cases/friction.toml")});
     std::vector<std::string> missed;
     const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
     BOOST_TEST(missed.empty());
-    const fs::path dir = fs::temp_directory_path() / ("impact_test_cases_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    for (const auto& [path, text] : files) {
-        fs::create_directories((dir / path).parent_path());
-        std::ofstream(dir / path) << text;
-    }
     // Sticking (1.5 within 2), sliding (3 beyond 2: 2), sliding with mu = 1/4 (0.5), the edge (2);
     // its fast form (impact::fast) too.
-    std::ofstream(dir / "main.cpp") << "#include \"impact/friction_impulse.hpp\"\n"
-                                       "int main()\n{\n"
-                                       "    using impact::friction_impulse;\n"
-                                       "    return friction_impulse<double>(1, 1, 0.5, 1, 1, 1, 1) == 1.5 &&\n"
-                                       "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1) == 2.0 &&\n"
-                                       "           friction_impulse<double>(1, 1, 0.5, 0.25, 1, 1, 1) == 0.5 &&\n"
-                                       "           friction_impulse<float>(1, 1, 1, 1, 1, 1, 1) == 2.0f &&\n"
-                                       "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1, impact::fast) == 2.0 ? 0 : 1;\n"
-                                       "}\n";
-    const std::string command = std::string(IMPACT_CXX) + " -std=c++17 -O2 -I" + (dir / "kernels").string() + " " +
-                                (dir / "main.cpp").string() + " -o " + (dir / "main").string() + " && " +
-                                (dir / "main").string();
-    BOOST_TEST(std::system(command.c_str()) == 0, command);
-    fs::remove_all(dir);
+    const std::string program = "#include \"impact/friction_impulse.hpp\"\n"
+                                "int main()\n{\n"
+                                "    using impact::friction_impulse;\n"
+                                "    return friction_impulse<double>(1, 1, 0.5, 1, 1, 1, 1) == 1.5 &&\n"
+                                "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1) == 2.0 &&\n"
+                                "           friction_impulse<double>(1, 1, 0.5, 0.25, 1, 1, 1) == 0.5 &&\n"
+                                "           friction_impulse<float>(1, 1, 1, 1, 1, 1, 1) == 2.0f &&\n"
+                                "           friction_impulse<double>(2, 1, 0.5, 1, 1, 1, 1, impact::fast) == 2.0 ? 0 : 1;\n"
+                                "}\n";
+    const impact::testing::run_result r = compiled_and_run(files, program, "-O2");
+    BOOST_TEST(r.status == 0, r.output);
 }
 
 // Two bodies on a line, not the paper's file: a kernel of scalars alone, with a batch form.
@@ -546,24 +551,17 @@ std::string line_kernel(const std::string& names)
 
 BOOST_AUTO_TEST_CASE(a_batch_kernel_of_scalars_compiles_and_writes_what_its_scalar_kernel_returns)
 {
-    namespace fs = std::filesystem;
     const engine::library lib = engine::derive_all({spec::parse_derivation(
         line_kernel("inputs = [\"M\", \"m\", \"u\", \"w\", \"eps\"]\noutputs = [\"u = u_after\", \"w = w_after\"]\n"),
         "line.toml")});
     std::vector<std::string> missed;
     const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
     BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
-    const fs::path dir = fs::temp_directory_path() / ("impact_test_line_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    for (const auto& [path, text] : files) {
-        fs::create_directories((dir / path).parent_path());
-        std::ofstream(dir / path) << text;
-    }
     // Equal masses, elastic: the velocities exchanged (0 and 1, exactly); M = 3, m = 1,
     // eps = 1/2, u = 1, w = -1: u' = (3 - 1 - 1)/4 = 1/4, w' = (2 + 3)/4 = 5/4; a mass of 0 is
     // refused, its velocities left as they were. The batch writes the scalar kernel's results.
-    std::ofstream(dir / "main.cpp")
-        << "#include \"impact/line.hpp\"\n"
+    const std::string program =
+        "#include \"impact/line.hpp\"\n"
            "int main()\n{\n"
            "    double M[3] = {1, 3, 0}, m[3] = {1, 1, 1}, u[3] = {1, 1, 1}, w[3] = {0, -1, 0}, eps[3] = {1, 0.5, 1};\n"
            "    impact::status status[3];\n"
@@ -578,11 +576,8 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_of_scalars_compiles_and_writes_what_its_scal
            "    const bool statuses = status[0] == impact::status::ok && status[1] == impact::status::ok &&\n"
            "                          status[2] == impact::status::invalid_input;\n"
            "    return typed && as_scalar && statuses ? 0 : 1;\n}\n";
-    const std::string command = std::string(IMPACT_CXX) + " -std=c++17 -O2 -I" + (dir / "kernels").string() + " " +
-                                (dir / "main.cpp").string() + " -o " + (dir / "main").string() + " && " +
-                                (dir / "main").string();
-    BOOST_TEST(std::system(command.c_str()) == 0, command);
-    fs::remove_all(dir);
+    const impact::testing::run_result r = compiled_and_run(files, program, "-O2");
+    BOOST_TEST(r.status == 0, r.output);
 }
 
 // A batch kernel that does not settle: sums and differences underflow nowhere and the kernel
@@ -593,7 +588,6 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_of_scalars_compiles_and_writes_what_its_scal
 // for these binary fractions); a refused pair is left as given.
 BOOST_AUTO_TEST_CASE(a_batch_kernel_that_does_not_settle_writes_its_statuses_only_where_asked)
 {
-    namespace fs = std::filesystem;
     const std::string text = "id = \"sums\"\ntitle = \"t\"\n"
                              "[[symbol]]\nname = \"u\"\ndimension = \"velocity\"\n"
                              "[[symbol]]\nname = \"w\"\ndimension = \"velocity\"\n"
@@ -612,14 +606,8 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_that_does_not_settle_writes_its_statuses_onl
     // The template this test is for: a loop that settles has none.
     BOOST_TEST(header->second.find("template <class Real, bool with_status>") != std::string::npos);
     BOOST_TEST(header->second.find("_settle") == std::string::npos);
-    const fs::path dir = fs::temp_directory_path() / ("impact_test_sums_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    for (const auto& [path, contents] : files) {
-        fs::create_directories((dir / path).parent_path());
-        std::ofstream(dir / path) << contents;
-    }
-    std::ofstream(dir / "main.cpp")
-        << "#include \"impact/sums.hpp\"\n#include <cstring>\n#include <limits>\n"
+    const std::string program =
+        "#include \"impact/sums.hpp\"\n#include <cstring>\n#include <limits>\n"
            "int main()\n{\n"
            "    const int n = 19;\n"
            "    double u[n], w[n], u2[n], w2[n];\n"
@@ -654,13 +642,10 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_that_does_not_settle_writes_its_statuses_onl
            "            wrong += u[i] != u0[i] + w0[i] || w[i] != u0[i] - w0[i];\n"
            "    }\n"
            "    return wrong == 0 ? 0 : 1;\n}\n";
-    for (const char* flags : {"-O2", "-O3 -march=native"}) {
-        const std::string command = std::string(IMPACT_CXX) + " -std=c++17 " + flags + " -ffp-contract=off -I" +
-                                    (dir / "kernels").string() + " " + (dir / "main.cpp").string() + " -o " +
-                                    (dir / "main").string() + " && " + (dir / "main").string();
-        BOOST_TEST(std::system(command.c_str()) == 0, command);
+    for (const char* flags : {"-O2 -ffp-contract=off", "-O3 -march=native -ffp-contract=off"}) {
+        const impact::testing::run_result r = compiled_and_run(files, program, flags);
+        BOOST_TEST(r.status == 0, flags << ": " << r.output);
     }
-    fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(a_name_the_kernels_cxx_declares_is_refused_where_the_file_gives_it)
