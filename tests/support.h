@@ -112,6 +112,14 @@ inline void write_files(const std::filesystem::path& root, const std::map<std::s
     }
 }
 
+/// The paper's smooth spheres: every derivation file of the project's but the rough spheres'.
+/// A dozen kernels, Z3's problems, a report and two figures, at a third of the cost of the
+/// folder without the 3D rough spheres (whose proofs take most of Z3's time).
+inline bool smooth_spheres(const std::string& name)
+{
+    return name.rfind("rough_", 0) != 0;
+}
+
 /// Copies into `to` the project's derivation files (and the paper's order of places) whose
 /// names `keep` accepts.
 template <class Keep>

@@ -49,21 +49,14 @@ void write(const fs::path& path, const std::string& bytes)
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-// The paper's smooth spheres (every file of the project's but the rough spheres'), copied
-// once: 12 derivations, a dozen kernels, Z3's problems, a report and two figures, so every
-// kind of entry the cache keeps, at a third of the cost of the folder without rough_space.toml
-// (14 s against 43 s of a cold regeneration's wall time, 7 Dec 2026): the rough spheres'
-// proofs are most of Z3's time, and nothing the cache does depends on them.
-bool smooth(const std::string& name)
-{
-    return name.rfind("rough_", 0) != 0;
-}
-
+// The paper's smooth spheres (support.h), copied once: 12 derivations with every kind of entry
+// the cache keeps (14 s of a cold regeneration's wall time against 43 s for the folder without
+// rough_space.toml, 7 Dec 2026); nothing the cache does depends on the rough spheres.
 const fs::path& derivations()
 {
     static const impact::testing::temporary_folder folder("impact-test-cache-derivations");
     static const bool copied = [] {
-        impact::testing::copy_derivations(folder.root, smooth);
+        impact::testing::copy_derivations(folder.root, impact::testing::smooth_spheres);
         return true;
     }();
     (void)copied;

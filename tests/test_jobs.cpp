@@ -64,8 +64,7 @@ struct scratch : impact::testing::temporary_folder {
     // sanitizers).
     void copy_smooth_spheres() const
     {
-        impact::testing::copy_derivations(root / "derivations",
-                                          [](const std::string& name) { return name.rfind("rough_", 0) != 0; });
+        impact::testing::copy_derivations(root / "derivations", impact::testing::smooth_spheres);
     }
     run_result impact(const std::string& arguments) const
     {
