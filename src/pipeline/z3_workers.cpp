@@ -134,7 +134,6 @@ std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const s
         if (finished)
             finished();
     };
-    const auto guard = std::chrono::milliseconds(guard_ms);
     // A guarded problem is stopped at the guard, any other at the worker's net.
     const auto limit_of = [&](std::size_t i) {
         return std::chrono::milliseconds(verify::z3_guarded(problems[i]) ? guard_ms : net_ms);
