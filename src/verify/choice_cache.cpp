@@ -14,7 +14,7 @@ namespace {
 
 // The cache entries' text: one field a line, strings with their length in front
 // (`5:label`), numbers as the shortest text that reads back to the same double.
-struct writer {
+struct entry_writer {
     std::string out;
     void text(const std::string& s) { out += fmt::format("{}:{}\n", s.size(), s); }
     void number(double x) { out += fmt::format("{}\n", x); }
@@ -94,7 +94,7 @@ std::string choice_key(const engine::kernel& k, const engine::term_order& order)
 {
     // Everything plan_kernel reads of the kernel, printed in the derivation's term order
     // (GiNaC's own printing changes from run to run), and the build that measures.
-    writer w;
+    entry_writer w;
     w.text("kernel choice, format 6");
     w.text(cache::program_fingerprint());
     w.count(kernel_samples);
@@ -164,7 +164,7 @@ std::string encode_choice(const kernel_plan& plan, const engine::term_order& ord
 {
     const engine::kernel& k = *plan.kernel;
     const auto all = verify::components(k);
-    writer w;
+    entry_writer w;
     w.count(plan.components.size());
     for (std::size_t i = 0; i < plan.components.size(); ++i) {
         const component_plan& cp = plan.components[i];

@@ -41,9 +41,9 @@ const char* operator_of(relation op)
 // Writes expressions as SMT-LIB terms, declaring what they use: the quantities, the
 // abbreviations with their definitions, and a fresh variable for each reciprocal and
 // each root (the same expression, the same variable: sqrt(x)*sqrt(x) = x needs it).
-class writer {
+class smt_writer {
 public:
-    writer(const engine::symbol_table& symbols, const std::set<std::string>& derived)
+    smt_writer(const engine::symbol_table& symbols, const std::set<std::string>& derived)
         : symbols_(symbols), derived_(derived), order_(engine::declaration_order(symbols))
     {
         for (std::size_t i = 0; i < symbols.all().size(); ++i) {
@@ -322,7 +322,7 @@ private:
 
 smt_problem smt_problem_of(const smt_claim& claim, const engine::symbol_table& symbols)
 {
-    writer w(symbols, claim.derived);
+    smt_writer w(symbols, claim.derived);
     // The assumptions: abbreviations declared with a domain, whether the claim uses them or not.
     for (const engine::quantity& q : symbols.all())
         if (q.definition && q.range.what != engine::domain::kind::real)

@@ -9,15 +9,6 @@
 namespace impact::engine {
 namespace {
 
-void gather_symbols(const GiNaC::ex& e, GiNaC::exset& out)
-{
-    if (GiNaC::is_a<GiNaC::symbol>(e))
-        out.insert(e);
-    else
-        for (std::size_t i = 0; i < e.nops(); ++i)
-            gather_symbols(e.op(i), out);
-}
-
 // A sum `q` with rational coefficients, no symbol dividing every one of its terms,
 // factored: by a symbol x of degree one in it, q = a x + b = gcd(a, b) (a x + b)/gcd(a, b),
 // the second irreducible; else by factor().

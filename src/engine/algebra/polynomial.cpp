@@ -308,8 +308,6 @@ expansion expand_numerator(const GiNaC::ex& e)
     }
 }
 
-namespace {
-
 void gather_symbols(const GiNaC::ex& e, GiNaC::exset& out)
 {
     if (GiNaC::is_a<GiNaC::symbol>(e))
@@ -318,6 +316,8 @@ void gather_symbols(const GiNaC::ex& e, GiNaC::exset& out)
         for (std::size_t i = 0; i < e.nops(); ++i)
             gather_symbols(e.op(i), out);
 }
+
+namespace {
 
 // A polynomial of degree one in some symbol x, a x + b with gcd(a, b) a number, has no
 // factor but numbers: a factor would divide both a and b (Gauss's lemma). factor() takes

@@ -25,6 +25,9 @@ enum class expansion {
                 ///< (they may yet cancel), or one too large to expand here
 };
 
+/// Adds to `out` the symbols `e` holds.
+void gather_symbols(const GiNaC::ex& e, GiNaC::exset& out);
+
 /// Expands the numerator of `e` over the product of its denominators, factor by factor
 /// (the least common multiple of a sum's denominators, no gcd).
 expansion expand_numerator(const GiNaC::ex& e);

@@ -66,7 +66,7 @@ bool same_name(const std::string& a, const std::string& b)
 
 // The names of a list as written: "et al." left out, split at commas, " and " and " & "
 // ("T Schwager, V Becker, and T Pöschel" → three).
-std::vector<std::string> names_in(std::string text)
+std::vector<std::string> authors_in(std::string text)
 {
     for (const char* tail : {" et al.", " et al"})
         if (const auto at = text.find(tail); at != std::string::npos)
@@ -91,7 +91,7 @@ std::vector<std::string> names_in(std::string text)
 std::vector<std::string> named_surnames(const std::string& names)
 {
     std::vector<std::string> out;
-    for (std::string name : names_in(names)) {
+    for (std::string name : authors_in(names)) {
         for (const std::string possessive : {"'s", "\u2019s"})
             if (name.size() > possessive.size() &&
                 name.compare(name.size() - possessive.size(), std::string::npos, possessive) == 0)
@@ -184,7 +184,7 @@ std::vector<std::string> reference_authors(const std::string& entry)
     if (end == std::string::npos)
         return {};
     std::vector<std::string> out;
-    for (const std::string& name : names_in(entry.substr(0, end)))
+    for (const std::string& name : authors_in(entry.substr(0, end)))
         if (name != "Jr." && name != "Jr")
             out.push_back(name);
     return out;
