@@ -86,7 +86,7 @@ std::string report_tex(const std::vector<const engine::derivation*>& derivations
     // Every proof re-checked by a second tool (verify/proofs.h), in one sentence.
     if (z3)
         out += fmt::format(" Z3 re-checked every proof it can state: it confirmed {} of the {} proven claims "
-                           "(\\texttt{{verification.md}} lists the others, with why).",
+                           "(the verification report beside it lists the others, with why).",
                            z3->confirmed, z3->proven);
     const std::string figures_sentence =
         "Section~\\ref{sec:figures} recomputes " + paper_figures + " with the generated C++ kernels.";
