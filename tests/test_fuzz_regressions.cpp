@@ -1,5 +1,6 @@
-// Inputs that once crashed the fuzz target (tests/fuzz/regressions/), and its seeds
-// (the files of derivations/ within its -max_len), replayed through the fuzz target's own function in every build: each
+// Inputs that once crashed the fuzz target (tests/fuzz/regressions/), and the files of
+// derivations/ within its -max_len (its seeds are the shortest of them, tests/fuzz/CMakeLists.txt),
+// replayed through the fuzz target's own function in every build: each
 // must be derived or refused with one line at the file, never crash (fuzz_derivation.cpp
 // aborts otherwise, which fails this test).
 #define BOOST_TEST_MODULE test_fuzz_regressions
@@ -53,7 +54,8 @@ BOOST_AUTO_TEST_CASE(every_input_that_once_crashed_the_fuzzer_is_refused_cleanly
 BOOST_AUTO_TEST_CASE(the_seed_corpus_is_derived_without_a_finding)
 {
     LLVMFuzzerInitialize(nullptr, nullptr);
-    // The fuzzer's seeds: the files no longer than the longest input it reads.
+    // The files no longer than the longest input the fuzzer reads: mutations of any of them
+    // are inputs it may meet.
     const auto files = files_in(fs::path(IMPACT_SOURCE_DIR) / "derivations");
     std::size_t seeds = 0;
     for (const fs::path& file : files)
