@@ -49,8 +49,7 @@ int main(int argc, char** argv)
         // spheres took half of this program's 70 s, with the build's other core idle, since
         // what follows in the build waits for the kernels.
         const unsigned jobs = impact::pipeline::default_jobs();
-        const impact::engine::task_runner runner =
-            jobs > 1 ? impact::pipeline::worker_runner(jobs) : impact::engine::task_runner{};
+        const impact::engine::task_runner runner = impact::pipeline::worker_runner(jobs);
         const impact::engine::library lib =
             impact::engine::derive_all(impact::engine::read_directory(argv[1]), "", {nullptr, runner, {}});
         if (!lib.all_hold()) {

@@ -223,7 +223,7 @@ int run_kernels(const options& o)
     const unsigned jobs = jobs_of(o);
     const engine::library lib = engine::derive_all(
         engine::read_directory(o.derivations), "",
-        {&kept, jobs > 1 ? pipeline::worker_runner(jobs) : engine::task_runner{}});
+        {&kept, pipeline::worker_runner(jobs)});
     if (!lib.all_hold()) {
         for (const std::string& failure : pipeline::failed_checks(lib))
             fmt::print(stderr, "{}\n", failure);

@@ -176,19 +176,9 @@ std::map<std::string, cache::counts> counts_since(const std::map<std::string, ca
 
 } // namespace
 
-namespace {
-
-// The worker processes to derive files and measure kernels in, when more than one at once.
-engine::task_runner runner_for(unsigned jobs)
-{
-    return jobs > 1 ? worker_runner(jobs) : engine::task_runner{};
-}
-
-} // namespace
-
 file_set generate_kernels(const library& lib, std::vector<std::string>* missed, const kernel_options& how)
 {
-    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(lib, how.store, {}, runner_for(how.jobs));
+    const std::vector<verify::kernel_plan> plans = verify::plan_kernels(lib, how.store, {}, worker_runner(how.jobs));
     if (missed)
         *missed = verify::missed_bounds(plans);
     return emit::kernel_files(lib, plans);
@@ -256,7 +246,7 @@ std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwa
             if (shown)
                 shown->say(task, fmt::format("choosing kernel forms: {} of {} kernels", done, total));
         },
-        runner_for(how.jobs));
+        worker_runner(how.jobs));
     if (shown)
         shown->done(task);
     clock.lap(how.jobs > 1 ? fmt::format("kernel forms chosen by measurement (numeric, up to {} worker processes)",
@@ -367,7 +357,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     const auto told = [&shown](std::size_t done, std::size_t all) {
         shown.say("derivations", fmt::format("deriving and proving: {} of {} files", done, all));
     };
-    library lib = engine::derive_all(engine::read_directory(derivations), "", {&kept, runner_for(options.jobs), told});
+    library lib = engine::derive_all(engine::read_directory(derivations), "", {&kept, worker_runner(options.jobs), told});
     lib.outline = outline;
     shown.done("derivations");
     clock.lap("derivations with their checks");

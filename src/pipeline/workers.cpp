@@ -339,6 +339,8 @@ std::string beside::get()
 
 engine::task_runner worker_runner(unsigned jobs)
 {
+    if (jobs <= 1)
+        return {};
     return [jobs](const std::vector<engine::text_task>& tasks, const std::function<void()>& finished) {
         return run_in_workers(tasks, jobs, finished);
     };

@@ -47,7 +47,8 @@ unsigned default_jobs();
 std::vector<std::string> run_in_workers(const std::vector<engine::text_task>& tasks, unsigned jobs,
                                         const std::function<void()>& finished = {});
 
-/// `run_in_workers` with `jobs`, as plan_kernels takes it.
+/// `run_in_workers` with `jobs`, as derive_all and plan_kernels take it; no runner for one job,
+/// so that they work in this process without sending their results through text.
 engine::task_runner worker_runner(unsigned jobs);
 
 /// Held by Impact's threads (the progress line's painter) while they run anything that
