@@ -95,16 +95,18 @@ bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t
 struct counterexample {
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> point;  ///< each free symbol and its value, in declaration order
     GiNaC::ex lhs, rhs;                                  ///< the sides there, exactly (radicals kept)
-    bool exact = false;                                  ///< both sides are rationals, the failure decided exactly
+    bool exact = false;  ///< decided exactly: both sides rationals, or equal sides (radicals too) of a strict claim
 };
 
 /// A counterexample to `lhs op rhs` among simple values of the domains of `given` (their
 /// ends, 0, 1, 2, 1/2, -1, ...), where every abbreviation that shares a symbol with it lies
 /// in its own domain too (s_n > 0: the spheres approach), the first found: tried first with each symbol at its first
-/// simple value, then at others drawn in a fixed order. A failure is believed when both
-/// sides are rationals (decided exactly) or, with radicals, when 50 and 80 digits agree and
-/// the sides differ far beyond the rounding. None when no such point is found among
-/// `points`, or when a symbol has no domain.
+/// simple value, then at others drawn in a fixed order; then, for an inequality, one symbol
+/// at a time at the points its real roots pick out (a thin interval, a single point where a
+/// strict claim fails: real_roots.cpp), the others at simple values. A failure is believed
+/// when both sides are rationals or a strict claim's sides are equal (decided exactly) or,
+/// with radicals, when 50 and 80 digits agree and the sides differ far beyond the rounding.
+/// None when no such point is found, or when a symbol has no domain.
 std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs,
                                                   const symbol_table& symbols, const assumptions& given,
                                                   std::size_t points = 400);

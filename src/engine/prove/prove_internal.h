@@ -9,6 +9,7 @@
 #include <ginac/ginac.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace impact::engine {
@@ -22,6 +23,19 @@ GiNaC::ex spelled_out(const GiNaC::ex& e, const GiNaC::exmap& abbreviations);
 verdict sample(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::ex& residual, const symbol_table& symbols,
                const std::function<bool(const GiNaC::numeric&, const GiNaC::numeric&)>& holds,
                const std::string& claim, const std::vector<condition>& where);
+
+/// The simple values of a domain a reader can check by hand, in the order they are tried:
+/// its ends and middle for an interval, else 1, 2, 1/2, 3 (and 0, -1, -2 where they lie in
+/// it) (sampling.cpp).
+std::vector<GiNaC::numeric> simple_values(const domain& range);
+
+/// The values of `s` at which an inequality whose difference of sides is `difference`, a
+/// rational function of `s` alone with rational coefficients, may fail although random
+/// points miss them: the roots of its numerator's factors of degree 1 and 2, a point
+/// between each two real roots of its numerator and denominator (Sturm's theorem), and the
+/// domain's ends; those in `range`. None when `difference` is no such function
+/// (real_roots.cpp).
+std::vector<GiNaC::ex> points_beside_roots(const GiNaC::ex& difference, const GiNaC::ex& s, const domain& range);
 
 /// Whether two numbers differ by at most 1e-30 times the larger of 1, |a| and |b| (sampling.cpp).
 bool nearly_equal(const GiNaC::numeric& a, const GiNaC::numeric& b);

@@ -209,10 +209,6 @@ bool nonzero_somewhere(const GiNaC::ex& e, const assumptions& given, std::size_t
     return believed_signs(e, given, points, true) != 0;
 }
 
-namespace {
-
-// The simple values of a domain a reader can check by hand, in the order they are tried:
-// its ends and middle for an interval, else 1, 2, 1/2, 3 (and 0, -1, -2 where they lie in it).
 std::vector<GiNaC::numeric> simple_values(const domain& range)
 {
     std::vector<GiNaC::numeric> candidates;
@@ -236,6 +232,8 @@ std::vector<GiNaC::numeric> simple_values(const domain& range)
             inside.push_back(x);
     return inside;
 }
+
+namespace {
 
 // Whether `a op b` fails for the two numbers, by more than `margin` (0: exactly).
 bool fails(const GiNaC::numeric& a, relation op, const GiNaC::numeric& b, const GiNaC::numeric& margin)
@@ -327,39 +325,37 @@ std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation
     };
     std::sort(free.begin(), free.end(), [&](const auto& x, const auto& y) { return given.order.before(x.first, y.first); });
 
+    const bool strict = op == relation::less || op == relation::greater;
     const auto saved_digits = GiNaC::Digits;
-    uniform_stream stream(0x6c0e7e1a5b3d2f19ULL);
-    std::optional<counterexample> found;
-    for (std::size_t n = 0; n < points && !found; ++n) {
-        GiNaC::exmap at;
+    // The claim at a point of the free symbols: a counterexample where it fails.
+    const auto tried_at = [&](const GiNaC::exmap& at) -> std::optional<counterexample> {
         counterexample x;
-        for (const auto& [symbol, values] : free) {
-            const std::size_t k =
-                n == 0 ? 0 : std::min(values.size() - 1, static_cast<std::size_t>(stream.next() * values.size()));
-            at[symbol] = values[k];
-            x.point.emplace_back(symbol, values[k]);
-        }
+        for (const auto& entry : free)
+            x.point.emplace_back(entry.first, at.at(entry.first));
         try {
             if (!in_domains(at) || (!given.where.empty() && !hold_at(given.where, at)))
-                continue;
-            const GiNaC::ex l = GiNaC::normal(a.subs(at, GiNaC::subs_options::no_pattern));
-            const GiNaC::ex r = GiNaC::normal(b.subs(at, GiNaC::subs_options::no_pattern));
-            if (GiNaC::is_a<GiNaC::numeric>(l) && GiNaC::is_a<GiNaC::numeric>(r) &&
-                GiNaC::ex_to<GiNaC::numeric>(l).is_rational() && GiNaC::ex_to<GiNaC::numeric>(r).is_rational()) {
-                if (fails(GiNaC::ex_to<GiNaC::numeric>(l), op, GiNaC::ex_to<GiNaC::numeric>(r), 0)) {
-                    x.lhs = l;
-                    x.rhs = r;
-                    x.exact = true;
-                    found = std::move(x);
-                }
-                continue;
+                return std::nullopt;
+            x.lhs = GiNaC::normal(a.subs(at, GiNaC::subs_options::no_pattern));
+            x.rhs = GiNaC::normal(b.subs(at, GiNaC::subs_options::no_pattern));
+            if (GiNaC::is_a<GiNaC::numeric>(x.lhs) && GiNaC::is_a<GiNaC::numeric>(x.rhs) &&
+                GiNaC::ex_to<GiNaC::numeric>(x.lhs).is_rational() && GiNaC::ex_to<GiNaC::numeric>(x.rhs).is_rational()) {
+                x.exact = true;
+                if (fails(GiNaC::ex_to<GiNaC::numeric>(x.lhs), op, GiNaC::ex_to<GiNaC::numeric>(x.rhs), 0))
+                    return x;
+                return std::nullopt;
+            }
+            // Equal sides, radicals and all (at a root of the difference): a strict claim
+            // fails, decided exactly.
+            if (strict && GiNaC::normal(GiNaC::expand(x.lhs - x.rhs)).is_zero()) {
+                x.exact = true;
+                return x;
             }
             // Radicals: believed when 50 and 80 digits agree and the failure is far beyond
             // their rounding.
             bool believed = true;
             for (const int digits : {50, 80}) {
                 GiNaC::Digits = digits;
-                const GiNaC::ex le = GiNaC::evalf(l), re = GiNaC::evalf(r);
+                const GiNaC::ex le = GiNaC::evalf(x.lhs), re = GiNaC::evalf(x.rhs);
                 if (!GiNaC::is_a<GiNaC::numeric>(le) || !GiNaC::is_a<GiNaC::numeric>(re) ||
                     !GiNaC::ex_to<GiNaC::numeric>(le).is_real() || !GiNaC::ex_to<GiNaC::numeric>(re).is_real()) {
                     believed = false;
@@ -370,15 +366,46 @@ std::optional<counterexample> find_counterexample(const GiNaC::ex& lhs, relation
                 believed = believed && fails(u, op, v, margin);
             }
             GiNaC::Digits = saved_digits;
-            if (believed) {
-                x.lhs = l;
-                x.rhs = r;
-                found = std::move(x);
-            }
+            if (believed)
+                return x;
         } catch (const std::exception&) {
             GiNaC::Digits = saved_digits;   // a pole: another point
         }
+        return std::nullopt;
+    };
+    uniform_stream stream(0x6c0e7e1a5b3d2f19ULL);
+    std::optional<counterexample> found;
+    for (std::size_t n = 0; n < points && !found; ++n) {
+        GiNaC::exmap at;
+        for (const auto& [symbol, values] : free) {
+            const std::size_t k =
+                n == 0 ? 0 : std::min(values.size() - 1, static_cast<std::size_t>(stream.next() * values.size()));
+            at[symbol] = values[k];
+        }
+        found = tried_at(at);
     }
+    // Then one symbol at a time, the others at their first, second and third simple values:
+    // the points where its real roots say the difference may change sign (real_roots.cpp).
+    if (op != relation::equal)
+        for (std::size_t s = 0; s < free.size() && !found; ++s)
+            for (std::size_t k = 0; k < (free.size() > 1 ? 3u : 1u) && !found; ++k) {
+                const GiNaC::ex& symbol = free[s].first;
+                GiNaC::exmap at;
+                for (std::size_t t = 0; t < free.size(); ++t)
+                    if (t != s)
+                        at[free[t].first] = free[t].second[std::min(k, free[t].second.size() - 1)];
+                std::vector<GiNaC::ex> values;
+                try {
+                    values = points_beside_roots((a - b).subs(at, GiNaC::subs_options::no_pattern), symbol,
+                                                 given.domains.at(symbol));
+                } catch (const std::exception&) {
+                    continue;   // a pole at these values
+                }
+                for (std::size_t v = 0; v < values.size() && !found; ++v) {
+                    at[symbol] = values[v];
+                    found = tried_at(at);
+                }
+            }
     GiNaC::Digits = saved_digits;
     return found;
 }

@@ -1,112 +1,13 @@
 #include "engine/prove/sign_arguments.h"
 
-#include <cln/integer.h>
-#include <cln/rational.h>
-#include <cln/real.h>
+#include "engine/prove/sturm.h"
+
 #include <fmt/format.h>
 
 #include <vector>
 
 namespace impact::engine {
 namespace {
-
-// The closure of a domain: its ends, each a number or none (infinite), and whether the
-// domain holds it.
-struct ends {
-    std::optional<GiNaC::numeric> lower, upper;
-    bool lower_in = false, upper_in = false;
-    std::optional<GiNaC::ex> lower_shown, upper_shown;   // the ends as the domain has them (Pi/2)
-};
-
-// An end as a rational: itself when it is one; an end of π (Pi/2), at which a Sturm
-// sequence cannot be evaluated exactly, as a rational within 10^-20 beyond it (below a
-// lower end, above an upper one), so that the closure holds the domain and a sign shown on
-// the closure holds on the domain.
-GiNaC::numeric rational_end(const GiNaC::ex& end, bool lower)
-{
-    if (GiNaC::is_a<GiNaC::numeric>(end))
-        return GiNaC::ex_to<GiNaC::numeric>(end);
-    const long saved = GiNaC::Digits;
-    GiNaC::Digits = 40;
-    const GiNaC::numeric scaled = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(end * GiNaC::pow(10, 20)));
-    GiNaC::Digits = saved;
-    const cln::cl_R x = cln::the<cln::cl_R>(scaled.to_cl_N());
-    const cln::cl_I down = cln::floor1(x), up = cln::ceiling1(x);
-    const cln::cl_I beyond = lower ? cln::minus1(down) : cln::plus1(up);
-    return GiNaC::numeric(cln::cl_N(beyond)).div(GiNaC::numeric(10).power(20));
-}
-
-ends closure_of(const domain& d)
-{
-    switch (d.what) {
-    case domain::kind::real: return {};
-    case domain::kind::positive: return {GiNaC::numeric(0), std::nullopt, false, false, GiNaC::ex(0), std::nullopt};
-    case domain::kind::nonnegative: return {GiNaC::numeric(0), std::nullopt, true, false, GiNaC::ex(0), std::nullopt};
-    case domain::kind::interval: break;
-    }
-    const GiNaC::ex low = d.exact_lower(), high = d.exact_upper();
-    // A widened end is counted in: the sign there is the closure's, whatever the domain's.
-    return {rational_end(low, true),
-            rational_end(high, false),
-            !d.lower_open || !GiNaC::is_a<GiNaC::numeric>(low),
-            !d.upper_open || !GiNaC::is_a<GiNaC::numeric>(high),
-            low,
-            high};
-}
-
-int sign_of(const GiNaC::ex& value)
-{
-    const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(value);
-    return n.is_zero() ? 0 : n.is_positive() ? 1 : -1;
-}
-
-bool rational_polynomial_in(const GiNaC::ex& p, const GiNaC::ex& s)
-{
-    if (!p.is_polynomial(s))
-        return false;
-    for (int k = p.ldegree(s); k <= p.degree(s); ++k)
-        if (!p.coeff(s, k).info(GiNaC::info_flags::rational))
-            return false;
-    return true;
-}
-
-// The Sturm sequence of a square-free polynomial q in s: q, q', then each the negated
-// remainder of the two before it, down to a constant.
-std::vector<GiNaC::ex> sturm_sequence(const GiNaC::ex& q, const GiNaC::ex& s)
-{
-    std::vector<GiNaC::ex> sequence = {q, GiNaC::diff(q, GiNaC::ex_to<GiNaC::symbol>(s))};
-    while (sequence.back().degree(s) > 0) {
-        const GiNaC::ex r = GiNaC::expand(-GiNaC::rem(sequence[sequence.size() - 2], sequence.back(), s));
-        if (r.is_zero())
-            break;
-        sequence.push_back(r);
-    }
-    return sequence;
-}
-
-// The sign changes of the sequence at x, or at +infinity (−infinity) when x is none and
-// `above` is true (false): there, the signs of the leading coefficients.
-int changes(const std::vector<GiNaC::ex>& sequence, const GiNaC::ex& s, const std::optional<GiNaC::numeric>& x,
-            bool above)
-{
-    int count = 0, last = 0;
-    for (const GiNaC::ex& p : sequence) {
-        int sign = 0;
-        if (x) {
-            sign = sign_of(p.subs(s == *x));
-        } else {
-            sign = sign_of(p.lcoeff(s));
-            if (!above && p.degree(s) % 2 == 1)
-                sign = -sign;
-        }
-        if (sign == 0)
-            continue;
-        if (last != 0 && sign != last)
-            ++count;
-        last = sign;
-    }
-    return count;
-}
 
 // The distinct roots of a square-free q strictly between the ends (Sturm's theorem, with
 // a root at a finite end divided out first, so that neither end is a root), and the
@@ -116,7 +17,7 @@ struct root_count {
     int at_lower = 0, at_upper = 0;
 };
 
-root_count roots_inside(GiNaC::ex q, const GiNaC::ex& s, const ends& range)
+root_count roots_inside(GiNaC::ex q, const GiNaC::ex& s, const closed_interval& range)
 {
     for (const auto& end : {range.lower, range.upper})
         if (end && q.degree(s) > 0 && q.subs(s == *end).is_zero())
@@ -125,14 +26,14 @@ root_count roots_inside(GiNaC::ex q, const GiNaC::ex& s, const ends& range)
         return {};
     const std::vector<GiNaC::ex> sequence = sturm_sequence(q, s);
     root_count c;
-    c.at_lower = changes(sequence, s, range.lower, false);
-    c.at_upper = changes(sequence, s, range.upper, true);
+    c.at_lower = sign_changes(sequence, s, range.lower, false);
+    c.at_upper = sign_changes(sequence, s, range.upper, true);
     c.roots = c.at_lower - c.at_upper;
     return c;
 }
 
 // A point strictly inside the domain.
-GiNaC::numeric inner_point(const ends& range)
+GiNaC::numeric inner_point(const closed_interval& range)
 {
     if (range.lower && range.upper)
         return (*range.lower + *range.upper) / 2;
@@ -157,7 +58,7 @@ std::string in_words(const sign_set& s)
     return s.zero && !s.negative && !s.positive ? "zero" : "of unknown sign";
 }
 
-std::string interval_text(const ends& range, const std::function<std::string(const GiNaC::ex&)>& text)
+std::string interval_text(const closed_interval& range, const std::function<std::string(const GiNaC::ex&)>& text)
 {
     return fmt::format("({}, {})", range.lower_shown ? text(*range.lower_shown) : "-infinity",
                        range.upper_shown ? text(*range.upper_shown) : "infinity");
@@ -190,7 +91,7 @@ std::optional<reasoned_sign> sturm_sign(const GiNaC::ex& e, const GiNaC::ex& s, 
     }
     odd = GiNaC::expand(odd);
     even = GiNaC::expand(even);
-    const ends closure = closure_of(range);
+    const closed_interval closure = closure_of(range);
     const root_count changing = roots_inside(odd, s, closure);
     if (changing.roots != 0)
         return std::nullopt;
