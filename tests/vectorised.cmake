@@ -6,7 +6,10 @@
 # change to the generated code can keep every result and still lose the vectors. A loop
 # that takes a square root is the exception: a C library's sqrt may set errno, so without
 # -fno-math-errno neither GCC nor Clang vectorises it, whatever the loop; such a loop must
-# vectorise with -fno-math-errno, and nothing else.
+# vectorise with -fno-math-errno, and nothing else. Each compiles with -Wall -Wextra
+# too, and fails on any warning: a user who builds with `-Wall -Werror` must be able to
+# include the headers (Clang's -Wbitwise-instead-of-logical took a loop's `&` of two
+# conditions for a mistyped `&&`).
 # cmake -DGXX=<g++> -DCLANGXX=<clang++> -DAARCH64_GXX=<aarch64-linux-gnu-g++>
 #       -DKERNELS=<folder holding impact/> -DSOURCE=<batch_loops.cpp> -P vectorised.cmake
 # (GXX is required; CLANGXX and AARCH64_GXX may be empty or NOTFOUND.) -DONLY=<target>
@@ -121,13 +124,18 @@ function(report_of target source extra out)
     return()
   endif()
   execute_process(
-    COMMAND ${compiler_${target}} -std=c++17 -O3 ${flags_${target}} ${extra} -ffp-contract=off
+    COMMAND ${compiler_${target}} -std=c++17 -O3 -Wall -Wextra ${flags_${target}} ${extra} -ffp-contract=off
             -I${KERNELS} -c ${source} -o /dev/null
     RESULT_VARIABLE failed
     OUTPUT_VARIABLE report_out
     ERROR_VARIABLE report)
   if(failed)
     message(FATAL_ERROR "compiling ${source} for ${target} ${extra} failed:\n${report}")
+  endif()
+  if(report MATCHES "warning:")
+    string(REGEX MATCHALL "[^\n]*warning:[^\n]*" warnings "${report}")
+    list(JOIN warnings "\n" warnings)
+    message(FATAL_ERROR "compiling ${source} for ${target} ${extra} warned (-Wall -Wextra):\n${warnings}")
   endif()
   set(${out} "${report_out}${report}" PARENT_SCOPE)
 endfunction()

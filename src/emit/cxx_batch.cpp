@@ -196,10 +196,10 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             // so that the loop stays one program without branches.
             std::vector<std::string> infinite;
             for (const engine::kernel& f : k.limits)
-                infinite.push_back(fmt::format("({}_[i] == std::numeric_limits<Real>::infinity())", f.fixed_mass));
+                infinite.push_back(fmt::format("{}_[i] == std::numeric_limits<Real>::infinity()", f.fixed_mass));
             out += fmt::format("        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).\n"
-                               "        outcome = detail::blend({}, status::{}, outcome);\n",
-                               fmt::join(infinite, " | "), underflow);
+                               "        outcome = detail::blend(detail::either({}), status::{}, outcome);\n",
+                               fmt::join(infinite, ", "), underflow);
         }
         out += "        const std::int64_t resolved = outcome == status::ok;\n";
     }
@@ -228,7 +228,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             }
         range_test = fmt::format("        std::int64_t doubtful = 0;\n        if constexpr ({0}_k<Real> >= 0) {{\n"
                            "            constexpr Real lowest = detail::power_of_2<Real>(-{0}_k<Real>), highest = detail::power_of_2<Real>({0}_k<Real>);\n"
-                           "            doubtful = !(detail::at_least({1}, lowest) & detail::at_most({2}, highest));\n"
+                           "            doubtful = !detail::both(detail::at_least({1}, lowest), detail::at_most({2}, highest));\n"
                            "        }}\n",
                            loop, balanced("detail::least", low), balanced("detail::most", high));
     }
@@ -404,8 +404,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                               "        else if constexpr (detail::has_magnitude_bits<Real>)\n"
                               "            doubtful = detail::below_range(lowest, {1}) | !detail::at_most({2}, highest * highest);\n"
                               "        else\n"
-                              "            doubtful = !(detail::at_least({3}, lowest) & detail::at_most({2}, highest * highest)) |\n"
-                              "                       (!detail::nan_compares_false && !{4});\n"
+                              "            doubtful = detail::either(!detail::both(detail::at_least({3}, lowest), detail::at_most({2}, highest * highest)),\n"
+                              "                                      !detail::nan_compares_false && !{4});\n"
                               "        left |= refused | doubtful;\n",
                               loop, fmt::join(values, ", "), balanced_sum(squares), balanced("detail::least", low), all_finite(values),
                               fmt::join(bits, ", "));

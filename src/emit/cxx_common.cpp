@@ -223,7 +223,7 @@ std::string common_header(const std::vector<const kernel_plan*>& plans, const st
                            "    bits low = ~bits(0), high = 0;\n"
                            "    ((low = x.low < low ? x.low : low), ...);\n"
                            "    ((high = x.high < high ? high : x.high), ...);\n"
-                           "    return (low < bits(magnitude_bits(lowest) - 1)) | (high > magnitude_bits(highest));\n}}\n\n"
+                           "    return either(low < bits(magnitude_bits(lowest) - 1), high > magnitude_bits(highest));\n}}\n\n"
                            "/// |x| less one unit in its last place, by its bits: NaN for 0.\n"
                            "template <class Real>\nIMPACT_ALWAYS_INLINE Real below_magnitude(Real x) noexcept\n{{\n"
                            "    const magnitude_bits_t<Real> a = magnitude_bits(x) - 1;\n"

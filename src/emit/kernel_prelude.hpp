@@ -152,6 +152,19 @@ inline constexpr bool nan_compares_false = false;
 inline constexpr bool nan_compares_false = true;
 #endif
 
+/// 1 where a and b both hold (where any of b holds), as integers: the `&` (`|`) of a batch
+/// loop's conditions, without the branch `&&` (`||`) may be made into, and which Clang's
+/// -Wbitwise-instead-of-logical does not mistake for a `&&` (`||`) mistyped.
+IMPACT_ALWAYS_INLINE int both(bool a, bool b) noexcept
+{
+    return int(a) & int(b);
+}
+template <class... B>
+IMPACT_ALWAYS_INLINE int either(B... b) noexcept
+{
+    return (int(b) | ...);
+}
+
 /// 0 where x (and y) are finite, and not 0 elsewhere: a batch loop sums these, one sum
 /// for many values, and tests the sum against 0. x * 0 is 0 for a finite x and NaN
 /// otherwise (fused, one operation a value). But Clang under -ffinite-math-only (so
@@ -167,7 +180,7 @@ IMPACT_ALWAYS_INLINE Real zero_if_finite(Real x) noexcept
 template <class Real>
 IMPACT_ALWAYS_INLINE Real zero_if_finite(Real x, Real y) noexcept
 {
-    return finite(x) & finite(y) ? Real(0) : Real(1);
+    return both(finite(x), finite(y)) ? Real(0) : Real(1);
 }
 #else
 template <class Real>

@@ -196,7 +196,7 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_2d(std::size_t count, const Real* I
         std::int64_t doubtful = 0;
         if constexpr (collide_wall_batch_2d_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_k<Real>);
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
+            doubtful = !detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
         }
         if constexpr (collide_wall_batch_2d_k<Real> < 0)
             doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), detail::most(detail::most(std::fabs(t4), detail::zero_as_min(N_y)), detail::zero_as_min(v_y)))), detail::least(detail::least(detail::most(detail::most(std::fabs(t11), detail::zero_as_min(t6)), detail::zero_as_min(t10)), detail::most(std::fabs(t15), detail::zero_as_min(t11))), detail::least(detail::most(detail::most(std::fabs(t18), detail::zero_as_min(N_x)), detail::zero_as_min(t17)), detail::most(detail::most(std::fabs(t19), detail::zero_as_min(N_y)), detail::zero_as_min(t17))))), std::numeric_limits<Real>::min());
@@ -270,8 +270,8 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, N_x, N_y, v_x, v_y, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest);
         else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)) |
-                       (!detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
+            doubtful = detail::either(!detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)),
+                                      !detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
         left |= refused | doubtful;
     }
     if (left)
@@ -525,7 +525,7 @@ IMPACT_ALWAYS_INLINE void collide_wall_batch_2d_fast(std::size_t count, const Re
         std::int64_t doubtful = 0;
         if constexpr (collide_wall_batch_2d_fast_k<Real> >= 0) {
             constexpr Real lowest = detail::power_of_2<Real>(-collide_wall_batch_2d_fast_k<Real>), highest = detail::power_of_2<Real>(collide_wall_batch_2d_fast_k<Real>);
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
+            doubtful = !detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most(detail::most(detail::most(detail::most(std::fabs(N_x), std::fabs(N_y)), detail::most(std::fabs(v_x), std::fabs(v_y))), std::fabs(eps)), highest));
         }
         if constexpr (collide_wall_batch_2d_fast_k<Real> < 0)
             doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::most(std::fabs(t0), detail::zero_as_min(N_x)), detail::most(std::fabs(t1), detail::zero_as_min(N_y))), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(N_x)), detail::zero_as_min(v_x)), std::fabs(t5))), detail::least(detail::least(detail::most(detail::most(std::fabs(t6), detail::zero_as_min(t4)), detail::zero_as_min(t5)), detail::most(std::fabs(t7), detail::zero_as_min(t6))), detail::least(detail::most(detail::most(std::fabs(t8), detail::zero_as_min(N_x)), detail::zero_as_min(t7)), detail::most(detail::most(std::fabs(t9), detail::zero_as_min(N_y)), detail::zero_as_min(t7))))), std::numeric_limits<Real>::min());
@@ -599,8 +599,8 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RES
         else if constexpr (detail::has_magnitude_bits<Real>)
             doubtful = detail::below_range(lowest, N_x, N_y, v_x, v_y, eps) | !detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest);
         else
-            doubtful = !(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest) & detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)) |
-                       (!detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
+            doubtful = detail::either(!detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(N_x, lowest), detail::magnitude_or(N_y, lowest)), detail::least(detail::magnitude_or(v_x, lowest), detail::magnitude_or(v_y, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most((((N_x * N_x + N_y * N_y) + (v_x * v_x + v_y * v_y)) + eps * eps), highest * highest)),
+                                      !detail::nan_compares_false && !(((detail::zero_if_finite(N_x, N_y) + detail::zero_if_finite(v_x, v_y)) + detail::zero_if_finite(eps)) == Real(0)));
         left |= refused | doubtful;
     }
     if (left)

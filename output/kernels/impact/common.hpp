@@ -156,6 +156,19 @@ inline constexpr bool nan_compares_false = false;
 inline constexpr bool nan_compares_false = true;
 #endif
 
+/// 1 where a and b both hold (where any of b holds), as integers: the `&` (`|`) of a batch
+/// loop's conditions, without the branch `&&` (`||`) may be made into, and which Clang's
+/// -Wbitwise-instead-of-logical does not mistake for a `&&` (`||`) mistyped.
+IMPACT_ALWAYS_INLINE int both(bool a, bool b) noexcept
+{
+    return int(a) & int(b);
+}
+template <class... B>
+IMPACT_ALWAYS_INLINE int either(B... b) noexcept
+{
+    return (int(b) | ...);
+}
+
 /// 0 where x (and y) are finite, and not 0 elsewhere: a batch loop sums these, one sum
 /// for many values, and tests the sum against 0. x * 0 is 0 for a finite x and NaN
 /// otherwise (fused, one operation a value). But Clang under -ffinite-math-only (so
@@ -171,7 +184,7 @@ IMPACT_ALWAYS_INLINE Real zero_if_finite(Real x) noexcept
 template <class Real>
 IMPACT_ALWAYS_INLINE Real zero_if_finite(Real x, Real y) noexcept
 {
-    return finite(x) & finite(y) ? Real(0) : Real(1);
+    return both(finite(x), finite(y)) ? Real(0) : Real(1);
 }
 #else
 template <class Real>
@@ -400,7 +413,7 @@ IMPACT_ALWAYS_INLINE std::int64_t outside_by_bits(Real lowest, Real highest, X..
     bits low = ~bits(0), high = 0;
     ((low = x.low < low ? x.low : low), ...);
     ((high = x.high < high ? high : x.high), ...);
-    return (low < bits(magnitude_bits(lowest) - 1)) | (high > magnitude_bits(highest));
+    return either(low < bits(magnitude_bits(lowest) - 1), high > magnitude_bits(highest));
 }
 
 /// |x| less one unit in its last place, by its bits: NaN for 0.
