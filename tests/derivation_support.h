@@ -1,5 +1,5 @@
 // What tests of derivations written for the tests share: deriving a file or a text,
-// the error a text raises, and finding a symbol, result or check by name.
+// a check's entry, the error a text raises, and finding a symbol, result or check by name.
 #pragma once
 
 #include <boost/test/unit_test.hpp>
@@ -14,6 +14,12 @@ namespace impact::testing {
 inline engine::derivation derive_text(const std::string& text, const engine::derived_by_id& done = {})
 {
     return engine::derive(spec::parse_derivation(text, "test.toml"), done);
+}
+
+/// A `[[check]]` entry of a derivation file: `name` claims `claim`.
+inline std::string check(const std::string& name, const std::string& claim)
+{
+    return "[[check]]\nname = \"" + name + "\"\nclaim = \"" + claim + "\"\n";
 }
 
 /// A derivation file of the tests, e.g. derive_file("tests/solve/projectile_flight.toml").

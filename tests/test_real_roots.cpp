@@ -32,11 +32,6 @@ std::string over(const std::string& body)
            body;
 }
 
-std::string check(const std::string& name, const std::string& claim)
-{
-    return "[[check]]\nname = \"" + name + "\"\nclaim = \"" + claim + "\"\n";
-}
-
 // The value the check's counterexample gives a symbol, as a double (NaN without one).
 double value_at(const engine::derivation& d, const std::string& name, const std::string& symbol)
 {

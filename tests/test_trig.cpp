@@ -37,11 +37,6 @@ std::string over(const std::string& body)
            body;
 }
 
-std::string check(const std::string& name, const std::string& claim)
-{
-    return "[[check]]\nname = \"" + name + "\"\nclaim = \"" + claim + "\"\n";
-}
-
 std::string status(const engine::derivation& d, const std::string& name)
 {
     return engine::to_string(check_named(d, name).outcome);

@@ -43,11 +43,6 @@ std::string claims(const std::string& body)
            body;
 }
 
-std::string check(const std::string& name, const std::string& claim)
-{
-    return "[[check]]\nname = \"" + name + "\"\nclaim = \"" + claim + "\"\nbecause = \"a test\"\n";
-}
-
 // The Z3 status of each proven check of `d`, by check name.
 std::map<std::string, verify::proof_check> rechecked(const engine::derivation& d)
 {
