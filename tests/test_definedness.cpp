@@ -178,4 +178,32 @@ BOOST_AUTO_TEST_CASE(conditions_are_read_off_each_kind_of_expression)
     BOOST_TEST(texts(GiNaC::exp(u) + GiNaC::sin(w) + GiNaC::abs(u)).empty());
 }
 
+// A quantity defined by cases: each case's value has its own conditions. 1/h in the case
+// h > 1 needs nothing more (its condition makes h non-zero); 1/q in the case u > 0 needs
+// q != 0, which nothing proves, so that case, and the check, are proven where q != 0; and
+// the slip |u - w| a case divides by where its strict condition 2|u - w| > k >= 0 makes it
+// non-zero is proven non-zero by that condition.
+BOOST_AUTO_TEST_CASE(a_case_whose_value_divides_states_its_condition)
+{
+    const engine::derivation d = derive_text(
+        "id = \"by_cases\"\ntitle = \"test\"\n"
+        "[[symbol]]\nname = \"u\"\n[[symbol]]\nname = \"w\"\n[[symbol]]\nname = \"q\"\n"
+        "[[symbol]]\nname = \"h\"\ndomain = \"positive\"\n[[symbol]]\nname = \"k\"\ndomain = \"nonnegative\"\n"
+        "[[symbol]]\nname = \"A\"\n[[symbol]]\nname = \"B\"\n[[symbol]]\nname = \"C\"\n"
+        "[[step]]\ndefine = \"A\"\ncases = [{ when = \"h > 1\", as = \"1/h\" }, { when = \"h <= 1\", as = \"1\" }]\n"
+        "[[step]]\ndefine = \"B\"\ncases = [{ when = \"u > 0\", as = \"1/q\" }, { when = \"u <= 0\", as = \"0\" }]\n"
+        "[[step]]\ndefine = \"C\"\ncases = [{ when = \"2*abs(u - w) > k\", as = \"k*(u - w)/abs(u - w)\" }, "
+        "{ when = \"2*abs(u - w) <= k\", as = \"2*(u - w)\" }]\n"
+        "[[result]]\nname = \"A\"\n" +
+        check("a_at_most_one", "A <= 1") + check("b_times_q", "B*q*u >= 0") +
+        check("c_along_the_slip", "C*(u - w) >= 0"));
+    BOOST_TEST(status(d, "a_at_most_one") == "proven");
+    BOOST_TEST(status(d, "b_times_q") == "proven, where q != 0");
+    const engine::check_result& b = check_named(d, "b_times_q");
+    BOOST_REQUIRE(b.parts.size() == 2u);
+    BOOST_TEST(engine::to_string(b.parts[0].outcome) == "proven, where q != 0");
+    BOOST_TEST(engine::to_string(b.parts[1].outcome) == "proven");
+    BOOST_TEST(status(d, "c_along_the_slip") == "proven");
+}
+
 BOOST_AUTO_TEST_SUITE_END()

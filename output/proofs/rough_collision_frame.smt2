@@ -202,7 +202,7 @@
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (+ (- (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt)))) (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
+(assert (or (not (= (+ (- (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt)))) (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -263,7 +263,7 @@
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (+ (- (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt)))) (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
+(assert (or (not (= (+ (- (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* R_M (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt)))) (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt))) (- (* R_m (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* M (* R_M R_M) q_M w_M) (- (* M R_M v_Mt)) (* m (* R_m R_m) q_m w_m) (* m R_m (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= (+ M m) 0))) (not (> (ite (>= g_t 0) g_t (- g_t)) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -325,7 +325,7 @@
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0)))))
+(assert (or (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m))) (+ (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0))) (not (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -387,7 +387,7 @@
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0)))))
+(assert (or (not (= (+ (- (* (/ 1 2) M (* R_M R_M) q_M (* w_M w_M))) (- (* (/ 1 2) M (+ (* v_Mn v_Mn) (* v_Mt v_Mt)))) (* (/ 1 2) M (+ (* (* inv.1 inv.1) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M v_Mt))))) (* (* inv.6 inv.6) (* (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)) (+ (* M v_Mn) (- (* m eps g_n)) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (* R_m R_m) q_m (* w_m w_m))) (* (/ 1 2) m (+ (* (* inv.2 inv.2) (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* m R_M w_M) (* m R_m w_m) (- (* m g_t)) (* m v_Mt)))) (* (* inv.6 inv.6) (* (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)) (+ (* M eps g_n) (* M v_Mn) (- (* m g_n)) (* m v_Mn)))))) (- (* (/ 1 2) m (+ (* (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt) (+ (* R_M w_M) (* R_m w_m) (- g_t) v_Mt)) (* (+ g_n (- v_Mn)) (+ g_n (- v_Mn)))))) (* (/ 1 2) inv.1 inv.3 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M R_M q_M w_M))))) (* (/ 1 2) inv.2 inv.4 (* (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m))) (+ (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* m R_m q_m w_m)))))) (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0))) (not (not (= (+ M m) 0))) (not (> (ite (>= g_t 0) g_t (- g_t)) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -441,7 +441,7 @@
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (<= (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)) (not (not (= M 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0)))))
+(assert (or (not (<= (+ (* (/ 1 2) M m q_M q_m (+ (* M m q_M q_m (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7 (+ (* b g_t) g_t)) (- (* 2 g_t))) inv.7 (+ (* b g_t) g_t)) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)) (not (not (= M 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0))) (not (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -495,7 +495,7 @@
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (<= (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)) (not (not (= M 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0)))))
+(assert (or (not (<= (+ (* (/ 1 2) M m mu g_n g_t (+ 1 eps) inv.6 (+ (* M m mu g_n g_t (+ 1 eps) inv.6 (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) inv.7) (- (* 2 g_t))) inv.7) (- (* (/ 1 2) M m (* g_n g_n) (+ 1 (- (* eps eps))) inv.6))) 0)) (not (not (= M 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= inv.5 0))) (not (not (= (+ inv.1 inv.2 (* inv.1 inv.3) (* inv.2 inv.4)) 0))) (not (not (= (+ M m) 0))) (not (not (= (+ M m) 0))) (not (> (ite (>= g_t 0) g_t (- g_t)) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -549,7 +549,7 @@
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (<= (ite (>= (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) 0) (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m inv.7 (+ (* b g_t) g_t)))) (* M m mu g_n (+ 1 eps) inv.6))) (not (not (= (+ M m) 0)))))
+(assert (or (not (<= (ite (>= (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) 0) (* M m q_M q_m inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m inv.7 (+ (* b g_t) g_t)))) (* M m mu g_n (+ 1 eps) inv.6))) (not (not (= (+ M m) 0))) (not (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -603,7 +603,7 @@
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (<= (ite (>= (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) 0) (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7))) (* M m mu g_n (+ 1 eps) inv.6))) (not (not (= (+ M m) 0)))))
+(assert (or (not (<= (ite (>= (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) 0) (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m mu g_n g_t (+ 1 eps) inv.6 inv.7))) (* M m mu g_n (+ 1 eps) inv.6))) (not (not (= (+ M m) 0))) (not (not (= (+ M m) 0))) (not (> (ite (>= g_t 0) g_t (- g_t)) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -661,7 +661,7 @@
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))))) 0)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
+(assert (or (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))))) 0)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -719,7 +719,7 @@
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))))) 0)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
+(assert (or (not (>= (* g_t (+ (* b g_t) (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))))) 0)) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= (+ M m) 0))) (not (> (ite (>= g_t 0) g_t (- g_t)) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -777,7 +777,7 @@
 ; the case's condition
 (assert (<= (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))) (- (* b g_t)))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
+(assert (or (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* (* M M) m (* q_M q_M) q_m inv.7 (+ (* b g_t) g_t)) (* M (* m m) (* q_M q_M) (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (* M (* m m) q_M (* q_m q_m) inv.7 (+ (* b g_t) g_t)) (- (* M m q_M q_m g_t))))) (- (* b g_t)))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= (+ (* M q_M) (* M q_M q_m) (* m q_M q_m) (* m q_m)) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -835,7 +835,7 @@
 ; the case's condition
 (assert (> (* (+ 1 b) inv.5 (ite (>= g_t 0) g_t (- g_t))) (* M m mu g_n (+ 1 eps) inv.6)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))) (- (* inv.3 inv.4 g_t inv.6 (+ (* M q_M q_m eps mu g_n) (* M q_M q_m mu g_n) (- (* M q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* M q_M eps mu g_n) (* M q_M mu g_n) (* m q_M q_m eps mu g_n) (* m q_M q_m mu g_n) (- (* m q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* m q_m eps mu g_n) (* m q_m mu g_n)) inv.7)))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0)))))
+(assert (or (not (= (- (* inv.1 inv.2 inv.3 inv.4 (+ (* (* M M) m q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* (* M M) m q_M mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_M q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (* M (* m m) q_m mu g_n g_t (+ 1 eps) inv.6 inv.7) (- (* M m q_M q_m g_t))))) (- (* inv.3 inv.4 g_t inv.6 (+ (* M q_M q_m eps mu g_n) (* M q_M q_m mu g_n) (- (* M q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* M q_M eps mu g_n) (* M q_M mu g_n) (* m q_M q_m eps mu g_n) (* m q_M q_m mu g_n) (- (* m q_M q_m (ite (>= g_t 0) g_t (- g_t)))) (* m q_m eps mu g_n) (* m q_m mu g_n)) inv.7)))) (not (not (= M 0))) (not (not (= R_M 0))) (not (not (= R_m 0))) (not (not (= m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= q_M 0))) (not (not (= q_m 0))) (not (not (= (+ M m) 0))) (not (> (ite (>= g_t 0) g_t (- g_t)) 0))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

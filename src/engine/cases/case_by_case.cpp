@@ -4,6 +4,7 @@
 #include "engine/cases/case_proofs.h"
 
 #include "engine/prove/condition_proof.h"
+#include "engine/prove/definedness.h"
 #include "engine/expr/infix.h"
 #include "engine/prove/limit.h"
 #include "engine/expr/normal_form.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 namespace impact::engine {
 
@@ -43,6 +45,115 @@ bool cannot_arise_near(const case_value& c, const check_result::limit_point& nea
         return false;
     const sign_set s = prove_sign(derivative, with_effort(given, effort)).sign;
     return !s.positive && !s.zero;
+}
+
+// Whether f and e are one quantity as a condition on e needs it: e itself, |u| beside |v|
+// with u = ±v, or sqrt(X) beside its radicand X (sqrt(X) != 0 is X > 0 where it is real).
+bool same_quantity_anew(const GiNaC::ex& f, const GiNaC::ex& e)
+{
+    const auto abs_of = [](const GiNaC::ex& x) -> std::optional<GiNaC::ex> {
+        if (GiNaC::is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "abs")
+            return x.op(0);
+        return std::nullopt;
+    };
+    if (const auto u = abs_of(f), v = abs_of(e); u && v)
+        return GiNaC::expand(*u - *v).is_zero() || GiNaC::expand(*u + *v).is_zero();
+    // Expanded, a radicand can keep sqrt(S)^3 beside S sqrt(S): normal() makes them one.
+    if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).is_equal(GiNaC::numeric(1, 2)))
+        return GiNaC::normal(GiNaC::expand(f.op(0)) - e).is_zero();
+    return false;
+}
+
+// The same, each pair worked out once a run (every check split on J_t asks of its cases'
+// divisors, and normal() of a radicand in space takes a tenth of a second).
+bool same_quantity(const GiNaC::ex& f, const GiNaC::ex& e)
+{
+    if (f.is_equal(e))
+        return true;
+    if (!GiNaC::is_a<GiNaC::function>(f) && !GiNaC::is_a<GiNaC::power>(f))
+        return false;
+    static std::map<GiNaC::ex, bool, GiNaC::ex_is_less> known;
+    const GiNaC::ex key = GiNaC::lst{f, e};
+    if (const auto it = known.find(key); it != known.end())
+        return it->second;
+    return known[key] = same_quantity_anew(f, e);
+}
+
+// A condition on e that the case's condition proves, through a factor f of one of its
+// terms that is the same quantity (e, |e|, sqrt(e)): a radicand e proven of the form the
+// condition writes it in (a sum of squares, whose sign its expansion hides); or, under a
+// strict condition C = A f + R > 0 with R <= 0 proven, A f > -R >= 0, so f != 0 (the
+// sliding contact's slip: q (1 + b) (M + m) |g_t| > mu (1 + eps) ... s_n >= 0 gives
+// |g_t| > 0).
+bool implied_by_condition(const condition& need, const case_value& one, const assumptions& given)
+{
+    constexpr std::size_t effort = 100;
+    const nonnegative_form form = condition_form(one);
+    const GiNaC::exvector terms = GiNaC::is_a<GiNaC::add>(form.value)
+                                      ? GiNaC::exvector(form.value.begin(), form.value.end())
+                                      : GiNaC::exvector{form.value};
+    for (const GiNaC::ex& term : terms) {
+        const GiNaC::exvector factors =
+            GiNaC::is_a<GiNaC::mul>(term) ? GiNaC::exvector(term.begin(), term.end()) : GiNaC::exvector{term};
+        for (const GiNaC::ex& f : factors) {
+            if (!same_quantity(f, need.expr))
+                continue;
+            // The radicand as the condition writes it (a sum of squares, which expanded
+            // hides its sign): the need proven of that form.
+            if (GiNaC::is_a<GiNaC::power>(f)) {
+                const sign_set radicand = prove_sign(f.op(0), with_effort(given, effort)).sign;
+                if (need.need == condition::kind::nonnegative ? radicand.is_nonnegative()
+                    : need.need == condition::kind::positive  ? radicand.is_positive()
+                                                              : !radicand.zero && radicand.is_known())
+                    return true;
+            }
+            if (!form.strict)
+                continue;   // A f >= -R >= 0 says nothing of f != 0
+            // e > 0 needs f >= 0: a |.| or a root (f != 0 is then f > 0, and the radicand's > 0).
+            const bool nonnegative_factor =
+                GiNaC::is_a<GiNaC::power>(f) ||
+                (GiNaC::is_a<GiNaC::function>(f) && GiNaC::ex_to<GiNaC::function>(f).get_name() == "abs");
+            if (need.need != condition::kind::nonzero && !nonnegative_factor)
+                continue;
+            const sign_set rest = prove_sign(term - form.value, with_effort(given, effort)).sign;
+            if (rest.is_nonnegative())
+                return true;
+        }
+    }
+    return false;
+}
+
+// Where the case's values are defined: each condition (a divisor, a radicand) proven from
+// the domains, or from the case's condition (the sliding impulse's divisor |g_t|, which only
+// its case makes non-zero: implied_by_condition), or attached to the case, which is then
+// proven where it holds.
+settled_conditions defined_in_case(const GiNaC::exmap& in_case, const case_value& one, const symbol_table& symbols,
+                                   const assumptions& given)
+{
+    std::vector<condition> needs;
+    for (const auto& [symbol, value] : in_case)
+        add_conditions(needs, definedness(value, symbols));
+    settled_conditions settled = settle(needs, given);
+    if (settled.attached.empty())
+        return settled;
+    // A condition that bounds one symbol (x > 0, mu <= 1) narrows its domain: 1/x where
+    // x > 0. (Narrowed, the domains start what they have worked out afresh: a longer
+    // condition is left to implied_by_condition.)
+    const nonnegative_form form = condition_form(one);
+    const GiNaC::ex bound = GiNaC::expand(form.value);
+    std::optional<assumptions> narrowed;
+    for (const auto& [symbol, range] : given.domains)
+        if (bound.has(symbol) && bound.is_polynomial(symbol) && bound.degree(symbol) == 1 &&
+            GiNaC::is_a<GiNaC::numeric>(bound.coeff(symbol, 1)) && GiNaC::is_a<GiNaC::numeric>(bound.coeff(symbol, 0)))
+            narrowed = where(given, {{bound, form.strict ? condition::kind::positive : condition::kind::nonnegative,
+                                      "", ""}});
+    std::vector<condition> attached;
+    for (const condition& c : settled.attached) {
+        const bool proven = (narrowed && settle({c}, *narrowed).attached.empty()) || implied_by_condition(c, one, given);
+        (proven ? settled.proven : attached).push_back(c);
+    }
+    settled.attached = std::move(attached);
+    return settled;
 }
 
 } // namespace
@@ -122,9 +233,17 @@ void prove_case_by_case(check_result& c, const case_split& split, const GiNaC::e
         } else {
             const GiNaC::ex lhs = c.lhs.subs(in_case, GiNaC::subs_options::no_pattern);
             const GiNaC::ex rhs = c.rhs.subs(in_case, GiNaC::subs_options::no_pattern);
+            const settled_conditions defined = defined_in_case(in_case, one, symbols, given);
+            const assumptions under = where(given, defined.attached);
+            const bool attached = !defined.attached.empty();
             part.outcome = prove                    ? prove(lhs, rhs)
-                           : c.op == relation::equal ? prove_equal(lhs, rhs, symbols, run)
-                                                     : prove_in_case(lhs, c.op, rhs, one, symbols, given);
+                           : c.op == relation::equal ? attached ? prove_equal(lhs, rhs, symbols, run,
+                                                                              when_unproven::sample, defined.attached,
+                                                                              &under)
+                                                                : prove_equal(lhs, rhs, symbols, run)
+                                                     : prove_in_case(lhs, c.op, rhs, one, symbols, under);
+            part.outcome.where = defined.attached;
+            part.outcome.defined = defined.proven;
         }
         c.parts.push_back(std::move(part));
     }

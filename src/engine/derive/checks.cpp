@@ -137,6 +137,10 @@ check_result deriver::run_check(const spec::check& spec_check, bool paper_claim)
     const auto defined_where = [&](check_result& done) {
         done.outcome.where = settled.attached;
         done.outcome.defined = settled.proven;
+        // A case's own conditions (a divisor of its value its condition does not make
+        // non-zero): the check holds where they hold too.
+        for (const check_result::part& p : done.parts)
+            add_conditions(done.outcome.where, p.outcome.where);
         // Defined nowhere in the domains: not a claim about anything.
         if (!settled.never.empty() && done.outcome.holds()) {
             done.outcome.what = verdict::status::failed;
