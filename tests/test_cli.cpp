@@ -257,6 +257,19 @@ BOOST_AUTO_TEST_CASE(derive_json_prints_results_checks_and_their_latex)
     BOOST_TEST(r.output.find("\"name\": \"twice\",\n      \"status\": \"proven\"") != std::string::npos, r.output);
 }
 
+BOOST_AUTO_TEST_CASE(derive_json_words_the_checks_a_define_by_cases_makes)
+{
+    // The block pushed on a rough floor: f defined by cases, a continuity check. Those two
+    // checks are stated in words, not as a relation; `derive --json` stopped on them
+    // ("ex::lhs(): not a relation") for every rough collision of the paper.
+    const std::string file = (source_dir / "tests" / "examples" / "pushed_block.toml").string();
+    const run_result r =
+        impact::testing::run_command(std::string(IMPACT_BINARY) + " derive --no-cache --json " + file + " 2>/dev/null");
+    BOOST_TEST(r.status == 0, r.output);
+    BOOST_TEST(r.output.find("\"latex\": \"the cases of $f$ cover every value\"") != std::string::npos, r.output);
+    BOOST_TEST(r.output.find("\"latex\": \"$f$ is continuous where its cases meet\"") != std::string::npos, r.output);
+}
+
 BOOST_AUTO_TEST_CASE(derive_given_a_folder_says_so)
 {
     // `impact derive mine` said "derivations: error: no such folder", of another folder.
