@@ -1347,6 +1347,37 @@ BOOST_AUTO_TEST_CASE(a_try_s_effort_cuts_a_sign_short_and_forgets_it)
     BOOST_TEST(engine::prove_sign(e, engine::with_effort(given, 1000)).sign.is_positive());
 }
 
+// A sum of six terms or more seen to take both signs at points of the domains is of unknown
+// sign at once (sign_prover::takes_both_signs). Only points of the domains count: one in an
+// interval is drawn from the interval, and one where an abbreviation declared with a domain
+// would lie outside it is passed over; else sums of one sign would be given up.
+BOOST_AUTO_TEST_CASE(a_sum_seen_to_take_both_signs_is_unknown_and_only_points_of_the_domains_count)
+{
+    const GiNaC::symbol x("x"), y("y"), a("a"), s("s");
+    engine::assumptions given{{}, engine::term_order({x, y, a, s})};
+    given.domains[x] = engine::domain{engine::domain::kind::positive};
+    given.domains[y] = engine::domain{engine::domain::kind::positive};
+    engine::domain unit{engine::domain::kind::interval};
+    unit.lower = 0;
+    unit.upper = 1;
+    given.domains[a] = unit;
+    // 1 at x = 2, y = 1; -8 at x = 1, y = 3.
+    const GiNaC::ex both = x * y - x - y + x * x - y * y + 1;
+    BOOST_TEST(!engine::prove_sign(both, given).sign.is_known());
+    // (1 - a)(x^2 + y^2 + 1) + a (x y + 2) > 0 for a in [0, 1], affine in a between
+    // x^2 + y^2 + 1 and x y + 2; -1889 at a = 10, x = y = 10, outside the interval.
+    const GiNaC::ex in_interval = GiNaC::expand((1 - a) * (x * x + y * y + 1) + a * (x * y + 2));
+    BOOST_TEST(in_interval.nops() >= 6u);
+    BOOST_TEST(engine::prove_sign(in_interval, given).sign.is_positive());
+    // (x - y)(x + y + 1 + x y) > 0 where s = x - y is declared positive; < 0 at x = 1, y = 2.
+    // Beside a root, the sum is not factored before its own sign is sought.
+    given.assumed.push_back({s, x - y, engine::domain{engine::domain::kind::positive}});
+    given.known = std::make_shared<engine::worked_out>();
+    const GiNaC::ex where_assumed = GiNaC::expand((x - y) * (x + y + 1 + x * y));
+    BOOST_TEST(where_assumed.nops() >= 6u);
+    BOOST_TEST(engine::prove_sign(GiNaC::sqrt(x) * where_assumed, given).sign.is_positive());
+}
+
 // A refutation before a sign search (engine::takes_both_signs): an expression found < 0 at
 // one point of the domains and > 0 at another cannot be proven of one sign; one that is
 // positive, or >= 0, or 0 written as an identity whose value rounds to noise, is never

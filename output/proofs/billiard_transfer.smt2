@@ -77,7 +77,7 @@
 ; where the sides are defined: divisors != 0, radicands >= 0
 (assert (not (= v_1par 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* eps v_1par) (- v_1par)))) (+ (/ 1 2) (- (* (/ 1 2) eps))))) (not (not (= m 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0))) (not (not (= (+ (* (/ 1 2) v_1par (+ 1 eps)) (* (/ 1 2) v_1par (+ 1 (- eps)))) 0)))))
+(assert (or (not (= (- (* (/ 1 2) inv.1 (+ (* eps v_1par) (- v_1par)))) (+ (/ 1 2) (- (* (/ 1 2) eps))))) (not (not (= m 0))) (not (not (= v_1par 0))) (not (not (= (+ (* v_1par (+ 1 eps)) (* v_1par (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

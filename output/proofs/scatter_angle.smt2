@@ -31,7 +31,7 @@
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -62,7 +62,7 @@
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -93,7 +93,7 @@
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -124,7 +124,7 @@
 (assert (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (>= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)))))
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -437,7 +437,7 @@
 (assert (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0))
 (assert (not (= root.3 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* v_1par v_1par) (- (* 2 (* v_1par v_1par) eps)) (* (* v_1par v_1par) (* eps eps)) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)))))
+(assert (or (not (= (* v_1par (+ 1 (- eps)) inv.2) (* v_1par (+ 1 (- eps)) inv.4))) (not (not (= v_1par 0))) (not (> (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (* (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (* (/ 1 4) (* v_1par v_1par) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)) (not (>= (+ (* (/ 1 4) (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* v_1perp v_1perp)) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* (* v_1par v_1par) (* (+ 1 (- eps)) (+ 1 (- eps)))) (* 4 (* v_1perp v_1perp))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 
@@ -466,7 +466,7 @@
 (assert (>= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0))
 (assert (not (= root.3 0)))
 ; the claim and the definedness conditions proven for it, one negated
-(assert (or (not (= (* inv.2 (+ 1 (- eps))) (* (+ 1 (- eps)) inv.4))) (not (> (+ 1 (* 4 (* v_1perp v_1perp)) (- (* 2 eps)) (* eps eps)) 0)) (not (>= (* (+ 1 eps) (+ 1 eps)) 0)) (not (>= (* (/ 1 4) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0)) (not (>= (+ (* v_1perp v_1perp) (* (/ 1 4) (* (+ 1 (- eps)) (+ 1 (- eps))))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0)))))
+(assert (or (not (= (* inv.2 (+ 1 (- eps))) (* (+ 1 (- eps)) inv.4))) (not (> (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0)) (not (>= (* (+ 1 eps) (+ 1 eps)) 0)) (not (>= (* (/ 1 4) (* (+ 1 eps) (+ 1 eps))) 0)) (not (>= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0)) (not (>= (+ (* v_1perp v_1perp) (* (/ 1 4) (* (+ 1 (- eps)) (+ 1 (- eps))))) 0)) (not (not (= (+ 1 eps) 0))) (not (not (= (+ (* 4 (* v_1perp v_1perp)) (* (+ 1 (- eps)) (+ 1 (- eps)))) 0)))))
 (check-sat-using qfnra-nlsat)
 (pop)
 

@@ -3,6 +3,7 @@
 // limit) holding nothing to prove; the parts' verdicts combined.
 #include "engine/cases/case_proofs.h"
 
+#include "engine/algebra/polynomial.h"
 #include "engine/prove/condition_proof.h"
 #include "engine/prove/definedness.h"
 #include "engine/expr/infix.h"
@@ -130,8 +131,15 @@ bool implied_by_condition(const condition& need, const case_value& one, const as
 settled_conditions defined_in_case(const GiNaC::exmap& in_case, const case_value& one, const symbol_table& symbols,
                                    const assumptions& given)
 {
-    std::vector<condition> needs;
+    // The values in the order of their names: of two conditions that are one (a radicand
+    // written in two forms), the first is kept, and GiNaC's order of the symbols changes
+    // from run to run.
+    std::vector<std::pair<std::string, GiNaC::ex>> values;
     for (const auto& [symbol, value] : in_case)
+        values.emplace_back(given.text(symbol), value);
+    std::sort(values.begin(), values.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<condition> needs;
+    for (const auto& [name, value] : values)
         add_conditions(needs, definedness(value, symbols));
     settled_conditions settled = settle(needs, given);
     if (settled.attached.empty())
@@ -139,14 +147,20 @@ settled_conditions defined_in_case(const GiNaC::exmap& in_case, const case_value
     // A condition that bounds one symbol (x > 0, mu <= 1) narrows its domain: 1/x where
     // x > 0. (Narrowed, the domains start what they have worked out afresh: a longer
     // condition is left to implied_by_condition.)
+    // Its symbols are gathered first: a condition of several (the slip's, a root of hundreds
+    // of terms in space) is neither expanded nor searched once per symbol of the domains.
     const nonnegative_form form = condition_form(one);
-    const GiNaC::ex bound = GiNaC::expand(form.value);
+    GiNaC::exset in_bound;
+    gather_symbols(form.value, in_bound);
     std::optional<assumptions> narrowed;
-    for (const auto& [symbol, range] : given.domains)
-        if (bound.has(symbol) && bound.is_polynomial(symbol) && bound.degree(symbol) == 1 &&
+    if (in_bound.size() == 1 && given.domains.count(*in_bound.begin()) != 0) {
+        const GiNaC::ex symbol = *in_bound.begin();
+        const GiNaC::ex bound = GiNaC::expand(form.value);
+        if (bound.is_polynomial(symbol) && bound.degree(symbol) == 1 &&
             GiNaC::is_a<GiNaC::numeric>(bound.coeff(symbol, 1)) && GiNaC::is_a<GiNaC::numeric>(bound.coeff(symbol, 0)))
             narrowed = where(given, {{bound, form.strict ? condition::kind::positive : condition::kind::nonnegative,
                                       "", ""}});
+    }
     std::vector<condition> attached;
     for (const condition& c : settled.attached) {
         const bool proven = (narrowed && settle({c}, *narrowed).attached.empty()) || implied_by_condition(c, one, given);

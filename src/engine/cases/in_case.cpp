@@ -9,6 +9,7 @@
 #include "engine/prove/limit.h"
 #include "engine/expr/normal_form.h"
 #include "engine/prove/prove.h"
+#include "engine/prove/seen_at_points.h"
 #include "engine/solve/solve.h"
 
 #include <fmt/format.h>
@@ -202,10 +203,13 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     }
     // G = q C with q >= 0 (q > 0 and C > 0 for a strict claim), q's denominator proven
     // non-zero: where it vanishes (C = mu J_n at mu = 0) G = q C says nothing.
+    // Each try is made only where its goal is not seen false at a point of the domains
+    // (seen_at_points.h): there its search finds nothing, in seconds for sliding rough spheres.
     if (!condition.value.is_zero()) {
         const GiNaC::ex q = normal_written_once(g / condition.value, given.order);
-        const sign_proof p = prove_sign(q, with_effort(given, try_effort));
-        if ((strict ? (p.sign.is_positive() && condition.strict) : p.sign.is_nonnegative()) &&
+        const bool seen_false = seen_against(q, strict, given) || seen_of_both_signs(q.denom(), given);
+        const sign_proof p = seen_false ? sign_proof{} : prove_sign(q, with_effort(given, try_effort));
+        if (!seen_false && (strict ? (p.sign.is_positive() && condition.strict) : p.sign.is_nonnegative()) &&
             !prove_sign(q.denom(), with_effort(given, try_effort)).sign.zero) {
             verdict v;
             v.what = verdict::status::proven;
@@ -219,8 +223,9 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     // G = C + r with r >= 0 (and one of them > 0 for a strict claim).
     {
         const GiNaC::ex r = normal_written_once(g - condition.value, given.order);
-        const sign_proof p = prove_sign(r, with_effort(given, try_effort));
-        if (p.sign.is_nonnegative() && (!strict || p.sign.is_positive() || condition.strict)) {
+        const bool seen_false = seen_against(r, false, given);
+        const sign_proof p = seen_false ? sign_proof{} : prove_sign(r, with_effort(given, try_effort));
+        if (!seen_false && p.sign.is_nonnegative() && (!strict || p.sign.is_positive() || condition.strict)) {
             verdict v;
             v.what = verdict::status::proven;
             v.residual = 0;
@@ -235,8 +240,9 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     // multiple of, the friction cone's) at once where these search long polynomials.
     if (auto by_terms = prove_by_terms(lhs, op, rhs, c, symbols, given))
         return by_terms;
-    if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, with_effort(given, try_effort)))
-        return alone;
+    if (!seen_against(g, strict, given))
+        if (auto alone = prove_inequality_by_signs(lhs, op, rhs, symbols, with_effort(given, try_effort)))
+            return alone;
     // A bound on one symbol by a number (x <= 1): the sign proof run again on the symbol's
     // domain narrowed by it.
     if (const auto bound = bound_domain(c, given)) {

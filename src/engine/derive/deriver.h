@@ -13,6 +13,7 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -75,6 +76,7 @@ private:
     // conditions.cpp: where derived values, results and claims are defined in the reals
     std::vector<condition> in_inputs(const std::vector<condition>& needs) const;
     std::vector<condition> needs_of(const GiNaC::ex& value, const written_form* written) const;
+    std::vector<const std::vector<condition>*> needs_where(const std::function<bool(const GiNaC::ex&)>& uses) const;
     std::vector<condition> needs_of_claim(const written_form& written, const claim_sides& sides,
                                           const GiNaC::exmap& left_at, const GiNaC::exmap& at, const GiNaC::ex& lhs,
                                           const GiNaC::ex& rhs) const;

@@ -388,9 +388,19 @@ std::vector<condition> definedness(const written_form& written, const symbol_tab
 
 void add_conditions(std::vector<condition>& into, const std::vector<condition>& more)
 {
-    for (const condition& c : more)
-        if (std::none_of(into.begin(), into.end(), [&](const condition& d) { return same_condition(c, d); }))
+    // Of two that are one condition written in two forms (a radicand rotated and as
+    // declared), the shorter text is kept, then the first in the order of texts: which comes
+    // first follows GiNaC's order of terms, which changes from run to run.
+    const auto plainer = [](const condition& a, const condition& b) {
+        return a.text.size() != b.text.size() ? a.text.size() < b.text.size() : a.text < b.text;
+    };
+    for (const condition& c : more) {
+        const auto same = std::find_if(into.begin(), into.end(), [&](const condition& d) { return same_condition(c, d); });
+        if (same == into.end())
             into.push_back(c);
+        else if (plainer(c, *same))
+            *same = c;
+    }
 }
 
 std::vector<condition> rewritten(const std::vector<condition>& needs,

@@ -42,7 +42,8 @@ std::vector<condition> definedness(const GiNaC::ex& e, const symbol_table& symbo
 /// when the tree is empty.
 std::vector<condition> definedness(const written_form& written, const symbol_table& symbols);
 
-/// Appends `more` to `into`, leaving out those already there (e and -e are one divisor).
+/// Appends `more` to `into`, leaving out those already there (e and -e are one divisor); of
+/// one condition in two forms, the one of shorter text stays, whichever came first.
 void add_conditions(std::vector<condition>& into, const std::vector<condition>& more);
 
 /// `needs` with each condition's expression rewritten by `into` (derived quantities put

@@ -5,6 +5,7 @@
 #include "engine/prove/sign_prover.h"
 
 #include "engine/prove/angles.h"
+#include "engine/prove/seen_at_points.h"
 #include "engine/prove/sign_arguments.h"
 
 #include <cln/rational.h>
@@ -31,6 +32,11 @@ std::pair<sign_set, sign_reason> sign_prover::sum_sign(const GiNaC::ex& e, int d
 
     if (auto linear = linear_in_bounded_symbol(e))
         return *linear;
+    // Of six terms or more and seen to take both signs (seen_at_points.h), it has none to
+    // prove: the arguments below, which factor it and search its symbols (seconds for the
+    // conditions of sliding rough spheres), would find none.
+    if (e.nops() >= 6 && seen_of_both_signs(e, given_))
+        return {r, "a sum of terms of unknown sign"};
     if (auto affine = affine_in_bounded_symbol(e, depth))
         return *affine;
     // sin and cos as bounded quantities (sign_of_functions.cpp) before monotonicity, which
