@@ -131,15 +131,10 @@ bool implied_by_condition(const condition& need, const case_value& one, const as
 settled_conditions defined_in_case(const GiNaC::exmap& in_case, const case_value& one, const symbol_table& symbols,
                                    const assumptions& given)
 {
-    // The values in the order of their names: of two conditions that are one (a radicand
-    // written in two forms), the first is kept, and GiNaC's order of the symbols changes
-    // from run to run.
-    std::vector<std::pair<std::string, GiNaC::ex>> values;
-    for (const auto& [symbol, value] : in_case)
-        values.emplace_back(given.text(symbol), value);
-    std::sort(values.begin(), values.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    // (Of one condition in two forms, add_conditions keeps the plainer, whichever value,
+    // in GiNaC's order of the symbols, comes first.)
     std::vector<condition> needs;
-    for (const auto& [name, value] : values)
+    for (const auto& [symbol, value] : in_case)
         add_conditions(needs, definedness(value, symbols));
     settled_conditions settled = settle(needs, given);
     if (settled.attached.empty())
