@@ -377,7 +377,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     shown.done("z3");
     clock.lap(fmt::format("proofs re-checked by Z3 ({} problems, {} run, {:.1f} s in Z3{})", z3.problems, z3.run,
                           z3.seconds,
-                          options.jobs > 1 ? fmt::format(", up to {} worker processes", options.jobs) : std::string()));
+                          options.jobs > 1 ? fmt::format(", up to {} worker processes", options.jobs)
+                                           : std::string(", in a worker process")));
     result.failures = z3.refuted();
     result.all_hold = result.failures.empty();
     if (!result.all_hold)

@@ -1,16 +1,16 @@
-// The proofs' problems run through Z3 in worker processes, each kept for problem after
-// problem (issue 61).
+// The proofs' problems run through Z3 in worker processes (issue 61).
 //
 // A cold regeneration gives Z3 about 500 problems (output/proofs/), most answered in
 // milliseconds, some in seconds. Run from Impact's own process, one after another, they took
 // 70 s where a small process of their own takes half that: Impact forked a child for each
-// guarded problem (verify/z3.h), whose writes and Impact's copied Impact's pages one by one,
-// and glibc gave the memory Z3 freed back to the system after each problem, to be faulted in
-// again by the next. Here at most `jobs` workers are forked, once each, and given one
-// problem after another, the longest first (a guess at the costliest: the 3D rough spheres'
-// before the rest); in a worker glibc keeps what Z3 frees (mallopt), so the next fresh
-// context finds its memory mapped. Each problem still runs in a fresh context of its own,
-// under its resource limit, so that its answer is the one `run_z3` gives.
+// guarded problem (verify/z3.h), whose writes and Impact's copied Impact's pages one by one.
+// Here at most `jobs` workers are forked, once each, and given one problem after another,
+// the longest first (a guess at the costliest: the 3D rough spheres' before the rest). A
+// worker solves none itself: it forks a solver for each, from its own state, in which Z3 has
+// solved nothing, so that an answer depends on its problem alone, not on the problems a
+// worker happened to be given before it (verify/z3.h says why). Each solver costs about
+// 20 ms more than a problem solved in a process that solved others (the pages Z3's memory
+// needs, faulted in again).
 //
 // The wall-clock guard is kept as `run_z3` keeps it: a guarded problem (z3_guarded) not
 // answered within `z3_guard_ms` of being sent has its worker killed and the guard's answer;
@@ -37,8 +37,8 @@ std::vector<verify::z3_run> run_z3_in_workers(const std::string& option, const s
                                               unsigned guard_ms = verify::z3_guard_ms,
                                               unsigned net_ms = verify::z3_worker_net_ms);
 
-/// `run_z3_in_workers` with `jobs` as check_proofs takes it; with `jobs` 1, none (the
-/// problems one after another in Impact's own process, as for the derivations).
+/// `run_z3_in_workers` with `jobs` as check_proofs takes it; with `jobs` 1, one worker (not
+/// Impact's own process, where a problem's answer could depend on those solved before it).
 verify::z3_runner z3_runner_for(unsigned jobs);
 
 } // namespace impact::pipeline

@@ -3,12 +3,16 @@
 //
 // Each problem runs in a fresh context under a resource limit (`(set-option :rlimit N)`,
 // part of the text): Z3 counts its own steps, so that an answer, `unknown` past the limit
-// included, is the same on every run and machine with the same Z3, whichever process runs
-// it and whatever that process ran before. A wall-clock guard stands behind it for the few
-// procedures that count no steps (the process running it is killed): its answer, unknown,
-// is kept like any other, so that a machine gives the same answer on every regeneration.
-// `run_z3` runs one problem from Impact's own process; the pipeline runs many at once in
-// worker processes of its own (pipeline/z3_workers.h), with the same guard.
+// included, is the same on every run and machine with the same Z3. But not whatever the
+// process ran before: Z3 keeps state from one context to the next that neither
+// Z3_reset_memory nor Z3_global_param_reset_all clears, and a problem it confirms in 0.5 s
+// in a new process ran for minutes, heeding no limit, after another one (rough_collision_frame's
+// energy_never_gained after a rough-sphere problem). So the pipeline solves each problem in
+// a process of its own, forked from one that has solved none (pipeline/z3_workers.h). A
+// wall-clock guard stands behind the limit for the few procedures that count no steps (the
+// process running it is killed): its answer, unknown, is kept like any other, so that a
+// machine gives the same answer on every regeneration. `run_z3` runs one problem from
+// Impact's own process, for the tests and when no process is to be had.
 #pragma once
 
 #include <cstddef>
@@ -33,9 +37,10 @@ inline constexpr unsigned z3_guard_ms = 10'000;
 
 /// In the pipeline's worker processes, the wall-clock net under a problem that is not guarded
 /// (shorter than `z3_in_process_below`), in milliseconds. Such a problem takes well under a
-/// second, and its answer is the resource limit's. But a reused worker's Z3 once ran on one
-/// for more than 5 minutes in CI, and the regeneration waited for it. The net ends such a
-/// problem, which is then not re-checked, as one the guard stopped.
+/// second, and its answer is the resource limit's. But a worker's Z3, when it solved problem
+/// after problem, once ran on one for more than 5 minutes in CI (see above), and the
+/// regeneration waited for it. The net ends such a problem, which is then not re-checked,
+/// as one the guard stopped.
 inline constexpr unsigned z3_worker_net_ms = 60'000;
 
 /// Problems shorter than this, in characters, are solved in Impact's own process by `run_z3`;
