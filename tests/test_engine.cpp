@@ -474,6 +474,34 @@ BOOST_AUTO_TEST_CASE(limits_by_substitution_and_at_infinity_by_the_leading_term)
     BOOST_TEST(engine::to_string(check_named(d, "wrong").outcome) == "failed");
 }
 
+BOOST_AUTO_TEST_CASE(a_side_equal_to_the_other_at_every_value_has_the_others_limit)
+{
+    // (M x + x)/(M + 1) is x at every mass M, as written over one denominator: its limit as
+    // M grows is x's, found from x (the rough spheres' laws at every mass, whose left sides
+    // run to 150 000 characters). Where the sides differ, the left side's own limit is taken,
+    // and a wrong right side fails; a difference of zero has the limit 0.
+    const std::string masses = "[[symbol]]\nname = \"M\"\ndomain = \"positive\"\n"
+                               "[[symbol]]\nname = \"u\"\n[[symbol]]\nname = \"w\"\n";
+    const engine::derivation d = derive_text(derivation_text(
+        masses + "[[step]]\ndefine = \"u\"\nas = \"(M*x + x)/(M + 1)\"\n"
+                 "[[step]]\ndefine = \"w\"\nas = \"(M*x + 1)/M\"\n[[result]]\nname = \"u\"\n[[result]]\nname = \"w\"\n"
+                 "[[check]]\nname = \"equal_throughout\"\nclaim = \"u = x\"\nlimit = \"M -> infinity\"\n"
+                 "[[check]]\nname = \"difference\"\nclaim = \"u - x = 0\"\nlimit = \"M -> infinity\"\n"
+                 "[[check]]\nname = \"in_the_limit_only\"\nclaim = \"w = x\"\nlimit = \"M -> infinity\"\n"
+                 "[[check]]\nname = \"wrong\"\nclaim = \"w = x + 1\"\nlimit = \"M -> infinity\"\n"));
+    const engine::check_result& equal = check_named(d, "equal_throughout");
+    BOOST_TEST(engine::to_string(equal.outcome) == "proven");
+    BOOST_TEST(equal.outcome.method.find("the leading term in 1/M is x)") != std::string::npos, equal.outcome.method);
+    const engine::check_result& difference = check_named(d, "difference");
+    BOOST_TEST(engine::to_string(difference.outcome) == "proven");
+    BOOST_TEST(difference.outcome.method.find("limit 0 (substituting M = 1/t and letting t -> 0+: the leading term in 1/M is 0)") == 0u,
+               difference.outcome.method);
+    const engine::check_result& only = check_named(d, "in_the_limit_only");
+    BOOST_TEST(engine::to_string(only.outcome) == "proven");
+    BOOST_TEST(only.outcome.method.find("the leading term in 1/M is x)") != std::string::npos, only.outcome.method);
+    BOOST_TEST(engine::to_string(check_named(d, "wrong").outcome) == "failed");
+}
+
 BOOST_AUTO_TEST_CASE(a_claim_made_for_the_wrong_regime_is_reported_with_the_right_one)
 {
     const engine::derivation d = derive_text(derivation_text(

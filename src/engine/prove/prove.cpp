@@ -153,6 +153,11 @@ std::string to_string(const verdict& v)
     return "failed";
 }
 
+bool equal_as_written(const GiNaC::ex& lhs, const GiNaC::ex& rhs)
+{
+    return expand_numerator(lhs - rhs) == expansion::zero;
+}
+
 verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_table& symbols, proof_cache& run,
                     when_unproven otherwise, const std::vector<condition>& where, const assumptions* under)
 {

@@ -73,6 +73,12 @@ verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const symbol_tab
                     when_unproven otherwise = when_unproven::sample, const std::vector<condition>& where = {},
                     const assumptions* under = nullptr);
 
+/// Whether `lhs == rhs` wherever both are defined, seen as written: the difference's numerator
+/// over the product of its denominators expands to zero, each radical a variable as it is
+/// written. No normal(), no sampling, and no more than that: false says only that this did
+/// not show it (prove_equal tries further).
+bool equal_as_written(const GiNaC::ex& lhs, const GiNaC::ex& rhs);
+
 /// Decides `lhs op rhs` for an inequality: proven from the signs of the factors of
 /// the difference under `given` (prove_sign), else sampled, else failed.
 verdict prove_inequality(const GiNaC::ex& lhs, relation op, const GiNaC::ex& rhs, const symbol_table& symbols,
