@@ -12,7 +12,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include <fcntl.h>
 #include <malloc.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -47,45 +46,29 @@ std::optional<std::string> whole_message(const std::string& bytes)
 // answer, or nothing when the process ended without one.
 std::optional<std::string> solved_apart(const std::string& option, const std::string& problem)
 {
-    int pipe_ends[2];
-    if (::pipe2(pipe_ends, O_CLOEXEC) != 0)
+    int ends[2];
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
         return std::nullopt;
     const pid_t worker = ::getpid();
     const pid_t solver = ::fork();
     if (solver < 0) {
-        ::close(pipe_ends[0]);
-        ::close(pipe_ends[1]);
+        ::close(ends[0]);
+        ::close(ends[1]);
         return std::nullopt;
     }
     if (solver == 0) {
-        ::close(pipe_ends[0]);
-        engine::become_child(pipe_ends[1], worker);
-        const std::string text = verify::to_text(verify::run_z3_here(option, problem));
-        for (std::size_t sent = 0; sent < text.size();) {
-            const ssize_t n = ::write(pipe_ends[1], text.data() + sent, text.size() - sent);
-            if (n < 0 && errno == EINTR)
-                continue;
-            if (n <= 0)
-                ::_exit(1);
-            sent += static_cast<std::size_t>(n);
-        }
-        ::_exit(0);
+        ::close(ends[0]);
+        engine::become_child(ends[1], worker);
+        ::_exit(engine::send_message(ends[1], verify::to_text(verify::run_z3_here(option, problem))) ? 0 : 1);
     }
-    ::close(pipe_ends[1]);
+    ::close(ends[1]);
     std::string text;
-    for (char buffer[1 << 16];;) {
-        const ssize_t n = ::read(pipe_ends[0], buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            break;
-        text.append(buffer, static_cast<std::size_t>(n));
-    }
-    ::close(pipe_ends[0]);
+    const bool received = engine::receive_message(ends[0], text);
+    ::close(ends[0]);
     int status = 0;
     while (::waitpid(solver, &status, 0) < 0 && errno == EINTR) {
     }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    if (!received || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
         return std::nullopt;
     return text;
 }
