@@ -18,3 +18,5 @@ template void impact::collide_wall_rough_batch<double>(const impact::collide_wal
 template void impact::collide_wall_rough_batch<double>(const impact::collide_wall_rough_batch_data<double, 2>&, impact::fast_t);
 template void impact::collide_wall_rough_batch<double>(const impact::collide_wall_rough_batch_data<double, 3>&);
 template void impact::collide_wall_rough_batch<double>(const impact::collide_wall_rough_batch_data<double, 3>&, impact::fast_t);
+template void impact::collide_line_batch<double>(const impact::collide_line_batch_data<double, 0>&);
+template void impact::collide_line_batch<double>(const impact::collide_line_batch_data<double, 0>&, impact::fast_t);

@@ -792,12 +792,36 @@ BOOST_AUTO_TEST_CASE(kernels_with_guards_and_several_divisors_test_them_all_firs
     BOOST_TEST(header.find("y / ") > test);
 }
 
-BOOST_AUTO_TEST_CASE(a_batch_kernel_whose_output_is_no_input)
+// A batch writes an output named after an input over it, and any other into an array of its
+// own (test_cases: a_batch_writes_outputs_named_after_no_input_into_arrays_of_their_own); what
+// it cannot write is refused at the kernel's name.
+BOOST_AUTO_TEST_CASE(a_batch_kernel_whose_output_it_cannot_write)
 {
-    expect_refused(two_divisors("batch = true\n"),
-                   "derivations/bad.toml:29:8: error: kernel 'k' has batch = true, which writes each output over the "
-                   "input of its name, and 'a' is no input of its size; name the output after an input (v_M = ...), "
-                   "or give the batch to a kernel of its own");
+    const auto with = [](const std::string& inputs, const std::string& outputs) {
+        const std::string given_inputs = "inputs = [\"x\", \"y\"]", given_outputs = "outputs = [\"a = a\", \"b = b\"]";
+        std::string text = two_divisors("batch = true\n");
+        text.replace(text.find(given_inputs), given_inputs.size(), "inputs = " + inputs);
+        text.replace(text.find(given_outputs), given_outputs.size(), "outputs = " + outputs);
+        return text;
+    };
+    // Named after an input of another size.
+    expect_refused(with("[\"x\", \"y\"]", "[\"x = [a, b]\"]"),
+                   "derivations/bad.toml:29:8: error: kernel 'k' has batch = true, which writes each output named "
+                   "after an input over that input, and 'x' is an input of another size; name the output after no "
+                   "input (an array of its own), or after an input of its size");
+    // One scalar output and guards: the kernel returns it alone, without a status.
+    expect_refused(with("[\"x\", \"y\"]", "[\"a = a\"]"),
+                   "derivations/bad.toml:29:8: error: kernel 'k' has batch = true and one output, 'a', named after "
+                   "no input: it returns that value alone (NaN where a guard refuses), without the status a batch "
+                   "reports for each pair; name the output after an input, or give the kernel a second output");
+    // An output's array named as an input is (the symbol y renamed d_1).
+    std::string named = with("[\"x\", \"d_1\"]", "[\"d = [a, b]\", \"x = x\"]");
+    for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+             {"name = \"y\"", "name = \"d_1\""}, {"(y + 1)", "(d_1 + 1)"}, {"b = y/", "b = d_1/"}, {"x, y\"", "x, d_1\""}})
+        named.replace(named.find(from), from.size(), to);
+    expect_refused(named,
+                   "derivations/bad.toml:29:8: error: kernel 'k' has batch = true, and the array of its output 'd' "
+                   "would be named 'd_1', as an input is; rename the output or the input");
 }
 
 BOOST_AUTO_TEST_CASE(pi_is_derived_typeset_and_computed_by_a_kernel_but_a_function_it_cannot_call_is_refused)

@@ -648,6 +648,76 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_that_does_not_settle_writes_its_statuses_onl
     }
 }
 
+// A batch whose outputs are not all named after inputs: the example of a puck pushed by a
+// force (tests/examples/pushed_puck.toml), whose `push` updates v in place and writes dp (an
+// array) and E_push (a scalar) into arrays of their own. 19 pairs, two blocks of 8 and a tail
+// of 3, among them a pair refused by each guard: the batch writes the scalar kernel's results
+// bit for bit, with and without statuses; a refused pair keeps its velocity and gets dp = 0 and
+// E_push = 0. Pair 0 typed here: m = 2, t = 1, F = (1, 1/2), v = (1, 1): v' = v + F t/m =
+// (3/2, 5/4), dp = F t = (1, 1/2), E_push = |F|^2 t^2/(2 m) = 5/16, exact in binary.
+BOOST_AUTO_TEST_CASE(a_batch_writes_outputs_named_after_no_input_into_arrays_of_their_own)
+{
+    const engine::library lib =
+        engine::derive_all({spec::read_derivation(IMPACT_SOURCE_DIR "/tests/examples/pushed_puck.toml")});
+    std::vector<std::string> missed;
+    const pipeline::file_set files = pipeline::generate_kernels(lib, &missed);
+    BOOST_TEST(missed.empty(), (missed.empty() ? std::string() : missed.front()));
+    const std::string program =
+        "#include \"impact/pushed_puck.hpp\"\n#include <cstring>\n#include <limits>\n"
+        "template <class Real>\nint wrong_pairs()\n{\n"
+        "    const int n = 19;\n"
+        "    Real m[n], t[n], Fx[n], Fy[n], vx[n], vy[n], vx2[n], vy2[n], dpx[n], dpy[n], E[n], dpx2[n], dpy2[n], E2[n];\n"
+        "    impact::status status[n];\n"
+        "    for (int i = 0; i < n; ++i) {\n"
+        "        m[i] = Real(1) + Real(i) / 4;\n        t[i] = Real(1) / 2 + Real(i) / 8;\n"
+        "        Fx[i] = Real(3) - Real(i) / 8;\n        Fy[i] = Real(i) / 16 - Real(1);\n"
+        "        vx[i] = Real(2) + Real(i) / 32;\n        vy[i] = Real(i) / 4 - Real(3);\n"
+        "        dpx[i] = dpy[i] = E[i] = dpx2[i] = dpy2[i] = E2[i] = Real(7);  // written over\n"
+        "    }\n"
+        "    m[0] = 2;\n    t[0] = 1;\n    Fx[0] = 1;\n    Fy[0] = Real(0.5);\n    vx[0] = 1;\n    vy[0] = 1;\n"
+        "    m[3] = 0;                                                   // invalid_input\n"
+        "    t[9] = -1;                                                  // invalid_input\n"
+        "    vy[5] = std::numeric_limits<Real>::quiet_NaN();             // non_finite\n"
+        "    Fx[11] = std::numeric_limits<Real>::infinity();             // non_finite\n"
+        "    Fx[13] = -Fx[13];\n    Fy[13] = -Fy[13];                   // pulled back: F.v < 0\n"
+        "    Fx[16] = 0;\n    Fy[16] = 0;                               // no force\n"
+        "    Real vx0[n], vy0[n];\n"
+        "    std::memcpy(vx0, vx, sizeof vx);\n    std::memcpy(vy0, vy, sizeof vy);\n"
+        "    std::memcpy(vx2, vx, sizeof vx);\n    std::memcpy(vy2, vy, sizeof vy);\n"
+        "    impact::push_batch_data<Real, 2> with{}, without{};\n"
+        "    with.count = without.count = n;\n"
+        "    with.m = without.m = m;\n    with.duration = without.duration = t;\n"
+        "    with.F = without.F = {Fx, Fy};\n"
+        "    with.v = {vx, vy};\n    with.dp = {dpx, dpy};\n    with.E_push = E;\n    with.status = status;\n"
+        "    without.v = {vx2, vy2};\n    without.dp = {dpx2, dpy2};\n    without.E_push = E2;\n    without.status = nullptr;\n"
+        "    impact::push_batch(with);\n    impact::push_batch(without);\n"
+        "    auto same = [](Real a, Real b) { return std::memcmp(&a, &b, sizeof a) == 0; };\n"
+        "    int wrong = 0;\n"
+        "    for (int i = 0; i < n; ++i) {\n"
+        "        const auto one = impact::push<Real>(m[i], t[i], {Fx[i], Fy[i]}, {vx0[i], vy0[i]});\n"
+        "        wrong += !same(one.v[0], vx[i]) || !same(one.v[1], vy[i]) || !same(one.dp[0], dpx[i]) ||\n"
+        "                 !same(one.dp[1], dpy[i]) || !same(one.E_push, E[i]) || one.status != status[i];\n"
+        "        wrong += !same(vx2[i], vx[i]) || !same(vy2[i], vy[i]) || !same(dpx2[i], dpx[i]) ||\n"
+        "                 !same(dpy2[i], dpy[i]) || !same(E2[i], E[i]);\n"
+        "        const bool refused = i == 3 || i == 5 || i == 9 || i == 11 || i == 13 || i == 16;\n"
+        "        const impact::status expected = i == 3 || i == 9 ? impact::status::invalid_input\n"
+        "                                        : i == 5 || i == 11 ? impact::status::non_finite\n"
+        "                                        : i == 13 ? impact::status::pulled_back\n"
+        "                                        : i == 16 ? impact::status::no_force : impact::status::ok;\n"
+        "        wrong += status[i] != expected;\n"
+        "        if (refused)\n"
+        "            wrong += !same(vx[i], vx0[i]) || !(vy[i] == vy0[i] || vy[i] != vy[i]) || dpx[i] != 0 ||\n"
+        "                     dpy[i] != 0 || E[i] != 0;\n"
+        "    }\n"
+        "    wrong += vx[0] != Real(1.5) || vy[0] != Real(1.25) || dpx[0] != 1 || dpy[0] != Real(0.5) || E[0] != Real(0.3125);\n"
+        "    return wrong;\n}\n"
+        "int main()\n{\n    return wrong_pairs<double>() + wrong_pairs<float>() == 0 ? 0 : 1;\n}\n";
+    for (const char* flags : {"-O2 -ffp-contract=off", "-O3 -march=native -ffp-contract=off"}) {
+        const impact::testing::run_result r = compiled_and_run(files, program, flags);
+        BOOST_TEST(r.status == 0, flags << ": " << r.output);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(a_name_the_kernels_cxx_declares_is_refused_where_the_file_gives_it)
 {
     // An input named after a C++ keyword, the kernel's values (t0, t1, ...), its loop's

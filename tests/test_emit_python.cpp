@@ -1,6 +1,7 @@
 // The Python module's binding sources (emit/python.h), against the text expected: a kernel
-// with a status through its scalar kernel's loop, one through its batch loop, and the module
-// calling every file's binder.
+// with a status through its scalar kernel's loop, others through their batch loops (an output
+// written over its input's copy, one into a column of its own), and the module calling every
+// file's binder.
 #include <boost/test/unit_test.hpp>
 
 #include "derivation_support.h"
@@ -32,8 +33,12 @@ BOOST_AUTO_TEST_CASE(a_binder_is_named_after_its_file)
 
 BOOST_AUTO_TEST_CASE(a_kernel_with_a_status_is_bound_through_its_scalar_loop)
 {
+    // collide_line as a folder's kernel without a batch loop (the project's own has one).
     engine::library lib;
-    lib.derived.emplace("inelastic_line", testing::derive_file("derivations/eq08_inelastic_line.toml"));
+    engine::derivation d = testing::derive_file("derivations/eq08_inelastic_line.toml");
+    BOOST_REQUIRE_EQUAL(d.kernels.size(), 1u);
+    d.kernels.front().batch = false;
+    lib.derived.emplace("inelastic_line", std::move(d));
     lib.order = {"inelastic_line"};
     const auto files = emit::python_binding_files(lib);
     BOOST_TEST(files.size() == 2u);
@@ -75,14 +80,40 @@ BOOST_AUTO_TEST_CASE(a_kernel_with_a_status_is_bound_through_its_scalar_loop)
                                 "{\"separating\", impact::status::separating}});\n"));
 }
 
+BOOST_AUTO_TEST_CASE(a_batch_loops_output_named_after_no_input_is_written_into_its_own_column)
+{
+    engine::library lib;
+    lib.derived.emplace("inelastic_line", testing::derive_file("derivations/eq08_inelastic_line.toml"));
+    lib.order = {"inelastic_line"};
+    const std::string unit = emit::python_binding_files(lib).at("python/eq08_inelastic_line.cpp");
+    // collide_line(M, m, v_M, v_m, eps): v_M and v_m written over their copies (inputs 2 and 3
+    // copied into output columns 0 and 1), J into its own column (2), a kernel of scalars alone
+    // with N = 0; the runner compiled for x86-64-v3 too.
+    BOOST_TEST(contains(unit, "    impact::collide_line_batch_data<Real, 0> d{};\n"
+                              "    d.count = c.count;\n"
+                              "    d.M = static_cast<const Real*>(c.in[0]);\n"
+                              "    d.m = static_cast<const Real*>(c.in[1]);\n"
+                              "    d.v_M = static_cast<Real*>(c.out[0]);\n"
+                              "    std::copy_n(static_cast<const Real*>(c.in[2]), c.count, d.v_M);\n"
+                              "    d.v_m = static_cast<Real*>(c.out[1]);\n"
+                              "    std::copy_n(static_cast<const Real*>(c.in[3]), c.count, d.v_m);\n"
+                              "    d.eps = static_cast<const Real*>(c.in[4]);\n"
+                              "    d.J = static_cast<Real*>(c.out[2]);\n"
+                              "    d.status = c.status;\n"
+                              "    impact::collide_line_batch(d, form...);\n"));
+    BOOST_TEST(contains(unit, "IMPACT_PYTHON_LOOP void run_collide_line(const impact::python::columns& c, bool fast)"));
+    BOOST_TEST(contains(unit, "{{\"v_M\", 0, 2}, {\"v_m\", 0, 3}, {\"J\", 0, -1}},\n"
+                              "           /*status=*/true, /*returns_scalar=*/false, /*batch=*/true,\n"));
+}
+
 BOOST_AUTO_TEST_CASE(a_kernel_with_a_batch_loop_is_bound_through_it_its_velocities_written_over_their_copies)
 {
     // wall_plane and the derivations it uses.
     const engine::library lib =
         engine::derive_all(engine::read_directory(IMPACT_SOURCE_DIR "/derivations"), "wall_plane");
     const std::string unit = emit::python_binding_files(lib).at("python/wall_plane.cpp");
-    // collide_wall(P, n, C, v, eps) in 2D: inputs by component (v's are columns 6 and 7, read
-    // from the output it is written over), the batch loop's data, the status.
+    // collide_wall(P, n, C, v, eps) in 2D: inputs by component (v's, inputs 6 and 7, copied into
+    // the output it is written over), the batch loop's data, the status.
     BOOST_TEST(contains(unit, "    impact::collide_wall_batch_data<Real, 2> d{};\n"
                               "    d.count = c.count;\n"
                               "    d.P[0] = static_cast<const Real*>(c.in[0]);\n"
@@ -92,7 +123,9 @@ BOOST_AUTO_TEST_CASE(a_kernel_with_a_batch_loop_is_bound_through_it_its_velociti
                               "    d.C[0] = static_cast<const Real*>(c.in[4]);\n"
                               "    d.C[1] = static_cast<const Real*>(c.in[5]);\n"
                               "    d.v[0] = static_cast<Real*>(c.out[0]);\n"
+                              "    std::copy_n(static_cast<const Real*>(c.in[6]), c.count, d.v[0]);\n"
                               "    d.v[1] = static_cast<Real*>(c.out[1]);\n"
+                              "    std::copy_n(static_cast<const Real*>(c.in[7]), c.count, d.v[1]);\n"
                               "    d.eps = static_cast<const Real*>(c.in[8]);\n"
                               "    d.status = c.status;\n"
                               "    impact::collide_wall_batch(d, form...);\n"));

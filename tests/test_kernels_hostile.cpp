@@ -1194,16 +1194,58 @@ void check_loss_pair(failures& fail, tally& t, const pair_1d<Real>& p, Form... f
     }
 }
 
+// A chunk of pairs through collide_line_batch, with and without statuses: bit for bit the
+// scalar kernel's velocities, impulse and status (a fixed sphere, and a pair whose values may
+// underflow, left by the loop to the scalar kernel).
+template <class Real, class... Form>
+void check_line_batch(failures& fail, const std::vector<pair_1d<Real>>& pairs, Form... form)
+{
+    const std::size_t n = pairs.size();
+    std::vector<Real> M(n), m(n), eps(n), v_M(n), v_m(n), J(n, Real(7)), v_M_plain, v_m_plain, J_plain(n, Real(7));
+    for (std::size_t i = 0; i < n; ++i) {
+        M[i] = pairs[i].M;
+        m[i] = pairs[i].m;
+        eps[i] = pairs[i].eps;
+        v_M[i] = pairs[i].v_M;
+        v_m[i] = pairs[i].v_m;
+    }
+    v_M_plain = v_M;
+    v_m_plain = v_m;
+    std::vector<status> given(n, status::ok);
+    // The members in order: count, the inputs, the impulse's own array, the statuses.
+    const impact::collide_line_batch_data<Real> with{n,          M.data(), m.data(), v_M.data(), v_m.data(),
+                                                     eps.data(), J.data(), given.data()};
+    const impact::collide_line_batch_data<Real> without{n,          M.data(),       m.data(), v_M_plain.data(), v_m_plain.data(),
+                                                        eps.data(), J_plain.data(), nullptr};
+    impact::collide_line_batch(with, form...);
+    impact::collide_line_batch(without, form...);
+    for (std::size_t i = 0; i < n; ++i) {
+        const pair_1d<Real>& p = pairs[i];
+        const auto scalar = impact::collide_line(p.M, p.m, p.v_M, p.v_m, p.eps, form...);
+        const bool same = given[i] == scalar.status && identical(v_M[i], scalar.v_M) && identical(v_m[i], scalar.v_m) &&
+                          identical(J[i], scalar.J) && identical(v_M_plain[i], scalar.v_M) &&
+                          identical(v_m_plain[i], scalar.v_m) && identical(J_plain[i], scalar.J);
+        fail(same, std::string("collide_line_batch differs from the scalar kernel (") + name(scalar.status) + " against " +
+                       name(given[i]) + "): " + p.describe());
+    }
+}
+
 template <class Real, class... Form>
 void sweep_line(std::uint64_t seed, Form... form)
 {
     draws d(seed);
     failures fail_line, fail_loss;
     tally line, loss;
+    std::vector<pair_1d<Real>> chunk;
     for (std::size_t i = sweep_pairs(); i-- > 0;) {
         const pair_1d<Real> p = draw_pair_1d<Real>(d);
         check_line_pair(fail_line, line, p, form...);
         check_loss_pair(fail_loss, loss, p, form...);
+        chunk.push_back(p);
+        if (chunk.size() == 4096 || i == 0) {
+            check_line_batch(fail_line, chunk, form...);
+            chunk.clear();
+        }
     }
     const std::string fast = sizeof...(Form) ? ", impact::fast" : "";
     line.report(std::string("collide_line<") + type_name<Real>() + ">" + fast);

@@ -88,7 +88,8 @@ if(DEFINED ONLY AND NOT ONLY IN_LIST known)
 endif()
 
 # SOURCE's explicit instantiations, each sent to the half its header's loops belong to: the
-# header of impact::<name>_batch_data<double, <n>> is <name>_<n>d.hpp.
+# header of impact::<name>_batch_data<double, <n>> is <name>_<n>d.hpp, and <name>.hpp for
+# n = 0 (a kernel of scalars alone).
 file(STRINGS ${SOURCE} source_lines)
 set(prelude "")
 set(plain_lines "")
@@ -96,6 +97,9 @@ set(rooted_lines "")
 foreach(line IN LISTS source_lines)
   if(line MATCHES "^template .*impact::([a-z_]+)_batch_data<double, ([0-9])>")
     set(header "${CMAKE_MATCH_1}_${CMAKE_MATCH_2}d.hpp")
+    if(CMAKE_MATCH_2 STREQUAL "0")
+      set(header "${CMAKE_MATCH_1}.hpp")
+    endif()
     if(NOT EXISTS ${KERNELS}/impact/${header})
       message(FATAL_ERROR "${SOURCE}: ${line}\n  instantiates a batch kernel of ${header}, which ${KERNELS}/impact does not hold")
     endif()

@@ -102,13 +102,19 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     const std::size_t n = dimension(k);
     const std::vector<lane_input> inputs = lane_inputs(k);
     const bool fast = which == form::fast;
-    // The fast loop's name ends in `_fast`, which no accurate loop's (`_<n>d`) does.
-    const std::string loop = fmt::format("{}_batch_{}d{}", k.name, n, fast ? "_fast" : "");
+    // The fast loop's name ends in `_fast`, which no accurate loop's (`_<n>d`, `_loop`) does.
+    // (`_loop` for a kernel of scalars alone.)
+    const std::string loop =
+        n ? fmt::format("{}_batch_{}d{}", k.name, n, fast ? "_fast" : "") : fmt::format("{}_batch_loop{}", k.name, fast ? "_fast" : "");
 
+    // The arithmetic's inputs by name (an output's own array is none of them), and every
+    // array's field of the batch data.
     std::vector<std::string> element_names, plain_names, arguments;
     for (const lane_input& in : inputs) {
-        element_names.push_back(in.name + "_[i]");
-        plain_names.push_back(in.name);
+        if (!in.fresh) {
+            element_names.push_back(in.name + "_[i]");
+            plain_names.push_back(in.name);
+        }
         arguments.push_back(in.field);
     }
     const bool with_status = !k.guards.empty();
@@ -132,8 +138,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     out += "\nnamespace detail {\n\n";
     if (with_status)
         print_input_k(out, loop, plan);
-    out += fmt::format("// The loop of {}_batch in {}D, without branches; inlined where it is called, so that a\n"
-                       "// block's call runs one pass of 8 pairs.\n", k.name, n);
+    out += fmt::format("// The loop of {}_batch{}, without branches; inlined where it is called, so that a\n"
+                       "// block's call runs one pass of 8 pairs.\n", k.name, n ? fmt::format(" in {}D", n) : "");
     out += fmt::format("template <class Real{}>\nIMPACT_ALWAYS_INLINE void {}(std::size_t count, {}) noexcept\n{{\n"
                        "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < count; ++i) {{\n",
                        by_status ? ", bool with_status" : "", loop, loop_parameters(inputs, with_status));
@@ -270,21 +276,26 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         }
     };
     print_arithmetic(out, false);
-    std::vector<std::pair<std::string, std::string>> writes;  // target, value
+    // Each output component's array and value. An output named after an input is written over
+    // that input, and keeps it where the pair is not resolved; any other is written into its
+    // own array, and is 0 there, as the scalar kernel returns it.
+    struct write {
+        std::string target, value, kept;
+    };
+    std::vector<write> writes;
     std::size_t value = 0;
     for (const engine::kernel_output& o : k.outputs) {
+        const engine::kernel_parameter* same = k.find_parameter(o.member);
         for (std::size_t c = 0; c < o.values.size(); ++c, ++value) {
-            const engine::kernel_parameter* same = k.find_parameter(o.member);
-            if (!same)
-                throw std::logic_error("a batch kernel writes only outputs named after inputs");
-            writes.emplace_back(same->components.at(c).name, code.outputs[value]);
+            const std::string target = same ? same->components.at(c).name : fresh_name(o, c);
+            writes.push_back({target, code.outputs[value], same ? target + "_[i]" : "Real(0)"});
         }
     }
     if (with_status) {
         std::vector<std::string> results = code.arguments;  // functions' arguments tested as results are
-        for (const auto& [target, result] : writes) {
-            out += fmt::format("        const Real {}_out = {};\n", target, result);
-            results.push_back(target + "_out");
+        for (const write& w : writes) {
+            out += fmt::format("        const Real {}_out = {};\n", w.target, w.value);
+            results.push_back(w.target + "_out");
         }
         // In a loop ordered for registers, the results' test is computed for every pair, in
         // statements of its own. As a condition after `usable &&` (before the conditions
@@ -315,8 +326,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
         // Every pair's velocities stored, the old ones where not written: a store only
         // where `written` held needs a masked store (AArch64 has none), and GCC made one of
         // `v_[i] = written ? v_out : v_[i]`.
-        for (const auto& [target, result] : writes)
-            out += fmt::format("        {0}_[i] = detail::blend(written, {0}_out, {0}_[i]);\n", target);
+        for (const write& w : writes)
+            out += fmt::format("        {0}_[i] = detail::blend(written, {0}_out, {1});\n", w.target, w.kept);
         if (code.underflows.empty() && k.limits.empty())
             out += fmt::format("        if constexpr (with_status)\n"
                                "            status_[i] = detail::blend(resolved & !written, status::{}, outcome);\n",
@@ -327,8 +338,8 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             out += fmt::format("        status_[i] = detail::blend(resolved & !written, detail::blend({} & finite, status::{}, status::{}), outcome);\n",
                                usable, underflow, out_of_range);
     } else {
-        for (const auto& [target, result] : writes)
-            out += fmt::format("        {}_[i] = {};\n", target, result);
+        for (const write& w : writes)
+            out += fmt::format("        {}_[i] = {};\n", w.target, w.value);
     }
     out += "    }\n}\n";
     if (settles)
@@ -433,19 +444,19 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                                                                 format.min_exponent - 2 + format.digits, format.max_exponent - 1);
         }
         print_arithmetic(written, bounded);
-        for (const auto& [target, result] : writes)
-            written += fmt::format("        const Real {}_out = {};\n", target, result);
+        for (const write& w : writes)
+            written += fmt::format("        const Real {}_out = {};\n", w.target, w.value);
         // Within the range no value the arithmetic computes overflows (range_cut bounds every
         // one above) but the results that add an untested input (a velocity) to an impulse:
         // those are tested, as the loop tests them (out_of_range where one is not finite).
         std::vector<std::string> summed;
         for (int o : cut.summed)
-            summed.push_back(writes.at(static_cast<std::size_t>(o)).first + "_out");
+            summed.push_back(writes.at(static_cast<std::size_t>(o)).target + "_out");
         const std::string stored = summed.empty() ? usable : "written";
         if (!summed.empty())
             written += fmt::format("        const std::int64_t written = {} & {};\n", usable, all_finite(summed));
-        for (const auto& [target, result] : writes)
-            written += fmt::format("        {0}_[i] = detail::blend({1}, {0}_out, {0}_[i]);\n", target, stored);
+        for (const write& w : writes)
+            written += fmt::format("        {0}_[i] = detail::blend({1}, {0}_out, {2});\n", w.target, stored, w.kept);
         // A divisor out of range, or a result not finite, as in the loop: the velocities kept,
         // status out of range.
         written += fmt::format("        status_[i] = detail::blend(resolved & !{}, status::{}, outcome);\n", stored, out_of_range);
@@ -480,9 +491,9 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
             "        return false;\n"
             "    constexpr std::size_t block = 8;\n"
             "    std::int64_t left = 0;  // a pair the block leaves to the loop\n"
-            "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{2}    }}\n"
+            "    IMPACT_KEEP_LOOP\n    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{2}    }}\n"
             "    if (left)\n        return false;\n"
-            "    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{3}    }}\n"
+            "    IMPACT_KEEP_LOOP\n    IMPACT_INDEPENDENT_ITERATIONS\n    for (std::size_t i = 0; i < block; ++i) {{\n{3}    }}\n"
             "    return true;\n}}\n",
             loop, loop_parameters(inputs, true), tested, written);
     }
@@ -502,11 +513,14 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
                            k.name);
     else
         out += fmt::format("\n/// {0} over `count` collisions stored as structure of arrays: outputs named after\n"
-                           "/// inputs are updated in place.{1}\n"
+                           "/// inputs are updated in place{2}.{1}\n"
                            "/// The loop has no branches, so that compilers vectorise it; each result is bit for\n"
                            "/// bit the scalar {0}'s (compiled alike, e.g. -ffp-contract=off). The arrays written\n"
                            "/// must not overlap any other array.\n",
-                           k.name, with_status ? " `status` (if not null) receives each status." : "");
+                           k.name, with_status ? " `status` (if not null) receives each status." : "",
+                           std::any_of(inputs.begin(), inputs.end(), [](const lane_input& in) { return in.fresh; })
+                               ? ",\n/// the others written into arrays of their own (0 where a pair is refused)"
+                               : "");
     out += fmt::format("template <class Real>\ninline void {0}_batch(const {0}_batch_data<Real, {1}>& data{2}) noexcept\n{{\n",
                        k.name, n, fast ? ", fast_t" : "");
     if (skewed) {

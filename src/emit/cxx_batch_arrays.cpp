@@ -8,6 +8,17 @@
 
 namespace impact::emit::cxx_detail {
 
+std::vector<std::string> batch_members(const engine::kernel& k)
+{
+    std::vector<std::string> members;
+    for (const engine::kernel_parameter& p : k.parameters)
+        members.push_back(p.name);
+    for (const engine::kernel_output& o : k.outputs)
+        if (!k.find_parameter(o.member))
+            members.push_back(o.member);
+    return members;
+}
+
 // The arrays of `<name>_batch_data`, owned, in a layout that keeps a large batch fast: one
 // allocation, array k starting 64 + 256 k bytes (modulo 4 KiB) past a page boundary.
 void print_batch_arrays(std::string& out, const engine::kernel& k, const member_shapes& shapes)
@@ -26,9 +37,10 @@ void print_batch_arrays(std::string& out, const engine::kernel& k, const member_
         terms.insert(terms.end(), shaped.begin(), shaped.end());
         return fmt::format("{}", fmt::join(terms, " + "));
     };
-    for (const engine::kernel_parameter& p : k.parameters) {
+    const std::vector<std::string> members = batch_members(k);
+    for (const std::string& member : members) {
         first.push_back(index());
-        const member_shape& shape = shapes.at(p.name);
+        const member_shape& shape = shapes.at(member);
         if (shape.scalar())
             ++scalars;
         else if (shape.follows_dimension())
@@ -47,7 +59,7 @@ void print_batch_arrays(std::string& out, const engine::kernel& k, const member_
         "/// values, not initialised, and starts on a 64-byte boundary. The constructor throws\n"
         "/// std::bad_alloc, or std::bad_array_new_length for a count no allocation can hold.\n"
         "/// Move-only; an object moved from holds no arrays.\n"
-        "template <class Real, std::size_t N>\nclass {0}_batch_arrays {{\npublic:\n"
+        "template <class Real, std::size_t N{2}>\nclass {0}_batch_arrays {{\npublic:\n"
         "    static_assert(std::is_floating_point_v<Real>, \"{0}_batch_arrays holds floating-point values\");\n\n"
         "    explicit {0}_batch_arrays(std::size_t count) : count_(count)\n    {{\n"
         "        // Each array padded to whole pages plus `apart`; the bytes in all must not wrap around.\n"
@@ -58,7 +70,7 @@ void print_batch_arrays(std::string& out, const engine::kernel& k, const member_
         "        block_ = static_cast<unsigned char*>(::operator new(first + reals * stride_{1}, std::align_val_t{{page}}));\n"
         "        for (std::size_t a = 0; a < reals; ++a)\n"
         "            std::uninitialized_default_construct_n(at<Real>(a), count);\n",
-        k.name, with_status ? " + count * sizeof(impact::status)" : "");
+        k.name, with_status ? " + count * sizeof(impact::status)" : "", dimension(k) == 0 ? " = 0" : "");
     if (with_status)
         out += "        std::uninitialized_default_construct_n(at<impact::status>(reals), count);\n";
     out += fmt::format(
@@ -72,9 +84,8 @@ void print_batch_arrays(std::string& out, const engine::kernel& k, const member_
         "        if (block_)\n            ::operator delete(block_, std::align_val_t{{page}});\n    }}\n\n"
         "    std::size_t count() const noexcept {{ return count_; }}\n",
         k.name);
-    for (std::size_t i = 0; i < k.parameters.size(); ++i) {
-        const engine::kernel_parameter& p = k.parameters[i];
-        const member_shape& shape = shapes.at(p.name);
+    for (std::size_t i = 0; i < members.size(); ++i) {
+        const member_shape& shape = shapes.at(members[i]);
         // A member that is a scalar in one dimension and a vector in another: axis 0 by default.
         const std::string axis = shape.scalar()              ? ""
                                  : shape.follows_dimension() ? "std::size_t axis"
@@ -82,7 +93,7 @@ void print_batch_arrays(std::string& out, const engine::kernel& k, const member_
         const std::string where = first[i] + (shape.scalar() ? "" : " + axis");
         out += fmt::format("    Real* {0}({1}) noexcept {{ return at<Real>({2}); }}\n"
                            "    const Real* {0}({1}) const noexcept {{ return at<Real>({2}); }}\n",
-                           p.name, axis, where);
+                           members[i], axis, where);
     }
     if (with_status)
         out += "    impact::status* status() noexcept { return at<impact::status>(reals); }\n"
@@ -91,13 +102,13 @@ void print_batch_arrays(std::string& out, const engine::kernel& k, const member_
                        "    {0}_batch_data<Real, N> data() noexcept\n    {{\n"
                        "        {0}_batch_data<Real, N> d{{}};\n        d.count = count_;\n",
                        k.name);
-    for (const engine::kernel_parameter& p : k.parameters) {
-        const member_shape& shape = shapes.at(p.name);
+    for (const std::string& member : members) {
+        const member_shape& shape = shapes.at(member);
         auto assigned = [&](const std::string& components) {
-            return components == "0" ? fmt::format("d.{0} = {0}();", p.name)
+            return components == "0" ? fmt::format("d.{0} = {0}();", member)
                                      : fmt::format("for (std::size_t axis = 0; axis < {1}; ++axis)\n"
                                                    "            d.{0}[axis] = {0}(axis);",
-                                                   p.name, components);
+                                                   member, components);
         };
         if (shape.scalar())
             out += "        " + assigned("0") + "\n";

@@ -10,16 +10,21 @@
 
 namespace impact::emit::cxx_detail {
 
-// One scalar input of a batch kernel: a component, its array in the batch data, and
-// whether the batch writes it.
+// One array of a batch kernel, of one scalar a pair: a component of an input or of an output
+// named after no input (`fresh`), its array in the batch data, and whether the batch writes it.
 struct lane_input {
     std::string name;
     std::string field;
     bool written = false;
+    bool fresh = false;  ///< an output's array, written only
 };
 
-/// The scalar inputs of `k`'s batch, parameter by parameter.
+/// The arrays of `k`'s batch: its inputs' components, parameter by parameter, then the
+/// components of the outputs named after no input, output by output.
 std::vector<lane_input> lane_inputs(const engine::kernel& k);
+/// The name of component `c` of an output named after no input, as a batch loop names its
+/// array (`J`, `dp_0`).
+std::string fresh_name(const engine::kernel_output& o, std::size_t c);
 /// The parameters of a batch loop: a pointer per scalar input, and the status array.
 std::string loop_parameters(const std::vector<lane_input>& inputs, bool with_status);
 /// `<loop>_settle`: the pairs the loop left to the scalar kernel (status `underflow`), each

@@ -330,6 +330,9 @@ std::string common_header(const std::vector<const kernel_plan*>& plans, const st
             batched = batched ? batched : each;
             for (const engine::kernel_parameter& p : each->parameters)
                 parameters[p.name].components[n] = p.is_array ? p.components.size() : 0;
+            for (const engine::kernel_output& o : each->outputs)
+                if (!each->find_parameter(o.member))
+                    parameters[o.member].components[n] = o.is_array ? o.values.size() : 0;
         }
         if (dimension(k) != 0) {
             out += fmt::format("\n/// What {} returns in N dimensions.\ntemplate <class Real, std::size_t N>\nstruct {}_result {{\n",
@@ -343,13 +346,14 @@ std::string common_header(const std::vector<const kernel_plan*>& plans, const st
         if (!batched)
             continue;
         const engine::kernel& b = *batched;
+        // A kernel of scalars alone has N = 0, its one dimension, by default.
         out += fmt::format("\n/// Structure-of-arrays data for {}_batch: one array per scalar, N per vector.\n"
-                           "/// The arrays written (velocities, status) must not overlap any other.\n"
-                           "template <class Real, std::size_t N>\nstruct {}_batch_data {{\n    std::size_t count;\n",
-                           b.name, b.name);
-        for (const engine::kernel_parameter& p : b.parameters)
-            out += fmt::format("    {} {};\n", parameters[p.name].type(is_output(b, p.name) ? "Real*" : "const Real*"),
-                               p.name);
+                           "/// The arrays written (the outputs, status) must not overlap any other.\n"
+                           "template <class Real, std::size_t N{}>\nstruct {}_batch_data {{\n    std::size_t count;\n",
+                           b.name, dimension(b) == 0 ? " = 0" : "", b.name);
+        for (const std::string& member : batch_members(b))
+            out += fmt::format("    {} {};\n", parameters[member].type(is_output(b, member) ? "Real*" : "const Real*"),
+                               member);
         if (!b.guards.empty())
             out += "    impact::status* status;\n";
         out += "};\n";

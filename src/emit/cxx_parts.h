@@ -114,6 +114,9 @@ struct member_shape {
 };
 /// The shapes of a kernel's parameters by name, over the plans of every dimension it has.
 using member_shapes = std::map<std::string, member_shape>;
+/// The members of `<name>_batch_data`, each an array or N: the kernel's parameters, then its
+/// outputs named after no input.
+std::vector<std::string> batch_members(const engine::kernel& k);
 /// The arrays of `<name>_batch_data`, owned, in one allocation laid out for speed; `shapes`
 /// are its parameters' (member_shape).
 void print_batch_arrays(std::string& out, const engine::kernel& k, const member_shapes& shapes);

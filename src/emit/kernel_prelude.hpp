@@ -24,6 +24,17 @@
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
 #endif
+// A loop over the 8 pairs of a block kept a loop, so that it is vectorised: GCC and Clang
+// unroll a loop that short completely first where its body is small, and then vectorise none
+// of it (collide_line's batch with GCC for AVX-512: 42 ms for 4 million pairs, 11.6 ms with
+// its sure block's loops kept).
+#if defined(__clang__)
+#define IMPACT_KEEP_LOOP _Pragma("clang loop unroll(disable)")
+#elif defined(__GNUC__)
+#define IMPACT_KEEP_LOOP _Pragma("GCC unroll 1")
+#else
+#define IMPACT_KEEP_LOOP
+#endif
 // Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop
 // streams so many arrays at once that the processor's own prefetching falls behind.
 #if defined(__GNUC__) || defined(__clang__)

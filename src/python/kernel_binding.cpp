@@ -186,15 +186,12 @@ py::object call(const std::vector<kernel_entry>& entries, const py::object& resu
     columns c;
     c.count = static_cast<std::size_t>(count);
     const py::ssize_t item = float32 ? 4 : 8;
-    std::vector<int> written(e.parameters.size(), -1);  // the output a parameter is written over
     for (std::size_t o = 0; o < e.outputs.size(); ++o) {
         const output& out = e.outputs[o];
         const py::ssize_t components = static_cast<py::ssize_t>(std::max<std::size_t>(out.components, 1));
         rows.push_back(numpy.attr("empty")(py::make_tuple(components, count), dtype));
         for (py::ssize_t k = 0; k < components; ++k)
             c.out.push_back(static_cast<char*>(rows.back().mutable_data()) + k * count * item);
-        if (e.batch && out.written_over >= 0)
-            written[static_cast<std::size_t>(out.written_over)] = static_cast<int>(o);
     }
     py::array statuses;
     if (e.status) {
@@ -204,19 +201,13 @@ py::object call(const std::vector<kernel_entry>& entries, const py::object& resu
 
     // The inputs' columns: each component as it is where it is contiguous with every pair's
     // value, one value for all where the argument has one pair (a scalar loop only), a copy
-    // otherwise. In a batch call, an input written over is copied into its output instead.
+    // otherwise. In a batch call an input written over is taken alike, and the runner copies
+    // it into its output a chunk at a time (print_batch_call in emit/python.cpp).
     std::vector<py::object> kept;
     for (std::size_t i = 0; i < arrays.size(); ++i) {
         const parameter& p = e.parameters[i];
         for (std::size_t k = 0; k < std::max<std::size_t>(p.components, 1); ++k) {
             py::array view = p.components ? arrays[i].attr("__getitem__")(py::make_tuple(py::ellipsis(), k)) : arrays[i];
-            if (written[i] >= 0) {
-                py::object row = rows[static_cast<std::size_t>(written[i])].attr("__getitem__")(k);
-                numpy.attr("copyto")(row.attr("reshape")(all_shape), view);
-                c.in.push_back(nullptr);
-                c.step.push_back(1);
-                continue;
-            }
             // An array's values need not be aligned to their type (np.frombuffer at an odd
             // offset); the kernels read them as Real, so such a column is copied.
             const bool aligned = view.attr("flags").attr("aligned").cast<bool>();

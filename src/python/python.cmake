@@ -95,6 +95,7 @@ install(FILES ${IMPACT_PYTHON_SOURCES_PY} ${CMAKE_CURRENT_BINARY_DIR}/python_ins
 # `cmake --build build --target benchmark_python`. Its C++ side is compiled as the module is.
 add_executable(python_batch_bench EXCLUDE_FROM_ALL ${CMAKE_CURRENT_SOURCE_DIR}/tests/benchmarks/python_batch.cpp)
 target_link_libraries(python_batch_bench PRIVATE impact_kernels)
+target_include_directories(python_batch_bench PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
 string(TOUPPER "${CMAKE_BUILD_TYPE}" IMPACT_PYTHON_BUILD_TYPE)
 add_custom_target(benchmark_python
   COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${CMAKE_CURRENT_BINARY_DIR}/python ${Python3_EXECUTABLE}

@@ -4,7 +4,12 @@
 set(prefix ${WORK}/prefix)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/derivations)
-file(COPY ${DERIVATION} DESTINATION ${WORK}/derivations)
+# The file without its batch loop: a folder's kernel bound through the scalar kernel's loop,
+# which no kernel of the project's own takes (each has a batch loop or returns one value).
+file(READ ${DERIVATION} text)
+string(REPLACE "\nbatch = true\n" "\n" text "${text}")
+get_filename_component(name ${DERIVATION} NAME)
+file(WRITE ${WORK}/derivations/${name} "${text}")
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix} OUTPUT_QUIET RESULT_VARIABLE failed)
 if(failed)
   message(FATAL_ERROR "cmake --install failed")
@@ -19,10 +24,11 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK}/build -j2 RESULT_VARIAB
 if(failed)
   message(FATAL_ERROR "the project does not build")
 endif()
-# Equal masses in an elastic collision exchange their velocities (typed here, not computed);
+# Equal masses in an elastic collision exchange their velocities, and J = 2 * 2 * 4 / 2 = 8
+# (typed here, not computed); a separating pair is refused, its velocities kept and J = 0;
 # and the package's derive runs the installed impact.
 execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${WORK}/build/my_kernels_python ${PYTHON} -c
-  "import my_kernels as k; r = k.collide_line(2.0, 2.0, 3.0, -1.0, 1.0); assert (float(r.v_M), float(r.v_m)) == (-1.0, 3.0), r; assert k.status(int(r.status)).name == 'ok'; assert k.derive('${WORK}/derivations/eq08_inelastic_line.toml').results['J']; print(k.kernel_names)"
+  "import my_kernels as k; r = k.collide_line([2.0, 2.0], 2.0, [3.0, -1.0], -1.0, 1.0); assert (list(r.v_M), list(r.v_m), list(r.J)) == ([-1.0, -1.0], [3.0, -1.0], [8.0, 0.0]), r; assert [k.status(int(s)).name for s in r.status] == ['ok', 'separating']; assert k.derive('${WORK}/derivations/eq08_inelastic_line.toml').results['J']; print(k.kernel_names)"
   RESULT_VARIABLE failed)
 if(failed)
   message(FATAL_ERROR "the package built by impact_add_python_module does not give the folder's kernel")

@@ -102,7 +102,7 @@ needs_reference = pytest.mark.skipif(REFERENCE is None, reason="IMPACT_KERNEL_RE
 
 CASES = [
     # name in kernel_reference, Python function, inputs, number of output components, status
-    ("collide_line", impact.collide_line, random_line, 3, True),      # the scalar kernel's loop
+    ("collide_line", impact.collide_line, random_line, 3, True),      # a batch loop, J in a column of its own
     ("energy_loss", impact.energy_loss, random_line, 1, False),       # a kernel returning a scalar
     ("collide_3d", impact.collide, random_space, 6, True),            # a batch loop
     ("collide_rough_2d", impact.collide_rough, random_rough_plane, 6, True),  # a batch loop, spins scalars

@@ -559,6 +559,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -592,6 +593,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_sure(const Real* IMPACT_RESTRICT M_, 
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;
@@ -1158,6 +1160,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -1191,6 +1194,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_2d_fast_sure(const Real* IMPACT_RESTRICT
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;

@@ -704,6 +704,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -741,6 +742,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_sure(const Real* IMPACT_RESTRICT M_, 
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;
@@ -1416,6 +1418,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -1453,6 +1456,7 @@ IMPACT_ALWAYS_INLINE bool collide_batch_3d_fast_sure(const Real* IMPACT_RESTRICT
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;

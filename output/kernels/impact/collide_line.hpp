@@ -250,6 +250,272 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
 
 namespace detail {
 
+// The range of collide_line_batch_loop's inputs within which its arithmetic stays in the normal range: where
+// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
+// normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
+// the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
+// by Impact from the program, operation by operation, bounding each value not 0 by powers
+// of 2, 2^lo <= |v| <= 2^hi, and by the power of 2 it is a multiple of, 2^q (a number of
+// at least 2^lo is a multiple of its ulp, 2^(lo - digits + 1)): a product adds them; a sum,
+// difference or fused multiply-add is exactly a multiple of its terms' finest q, and so,
+// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
+// bounds crosswise, a square root halves them, atan2(y, x) lies within
+// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
+// quadruple long double): k = 10, 130, 2321, 2307; where it is -1, the loop tests the least magnitude of the values.
+template <class Real>
+constexpr int collide_line_batch_loop_k = input_k<Real>(10, 130, 2321, 2307);
+
+// The loop of collide_line_batch, without branches; inlined where it is called, so that a
+// block's call runs one pass of 8 pairs.
+template <class Real>
+IMPACT_ALWAYS_INLINE void collide_line_batch_loop(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < count; ++i) {
+        // The status, as the scalar kernel decides it: the first guard that fails.
+        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
+        impact::status outcome = status::ok;
+        {
+            std::int64_t fails = !(detail::zero_if_finite(v_M_[i], v_m_[i]) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
+            fails = !(eps_[i] >= Real(0));
+            fails |= !(eps_[i] <= Real(1));
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
+            fails = !(M_[i] > Real(0));
+            fails |= !(m_[i] > Real(0));
+            fails |= !(detail::zero_if_finite(M_[i], m_[i]) == Real(0));
+            outcome = detail::blend(fails, status::invalid_mass, outcome);
+            const std::int64_t admitted = outcome == status::ok;
+            impact::status condition = status::ok;
+            const Real t0 = v_M_[i] - v_m_[i];
+            fails = !(t0 > Real(0));
+            condition = detail::blend(fails, status::separating, condition);
+            outcome = detail::blend(admitted, condition, outcome);
+        }
+        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
+        outcome = detail::blend(detail::either(M_[i] == std::numeric_limits<Real>::infinity(), m_[i] == std::numeric_limits<Real>::infinity()), status::underflow, outcome);
+        const std::int64_t resolved = outcome == status::ok;
+        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real v_M = v_M_[i];
+        const Real v_m = v_m_[i];
+        const Real eps = eps_[i];
+        const Real t0 = v_M - v_m;
+        const Real t1 = M * v_M;
+        const Real t2 = std::fma(m, v_m, t1);
+        const Real t3 = eps * t0;
+        const Real t4 = -m;
+        const Real t5 = std::fma(t4, t3, t2);
+        const Real t6 = M + m;
+        const std::int64_t usable = resolved & (std::fabs(t6) >= detail::smallest_divisor<Real>) & (std::fabs(t6) <= std::numeric_limits<Real>::max());
+        const Real t7 = t5 / detail::blend(usable, t6, Real(1));
+        const Real t8 = std::fma(M, t3, t1);
+        const Real t9 = std::fma(m, v_m, t8);
+        const Real t10 = t9 / detail::blend(usable, t6, Real(1));
+        const Real t11 = M * m;
+        const Real t12 = Real(1) + eps;
+        const Real t13 = t12 - Real(1);
+        const Real t14 = t11 * t12;
+        const Real t15 = t0 - v_M;
+        const Real t16 = t14 * t0;
+        const Real t17 = t6 - M;
+        const Real t18 = t16 / detail::blend(usable, t6, Real(1));
+        const Real t19 = -t18;
+        const Real v_M_out = t7;
+        const Real v_m_out = t10;
+        const Real J_out = t18 + std::fma(t19, M - (t6 - t17) + (m - t17), std::fma(t19, t6, t16) + std::fma(std::fma(std::fma(M, m, -t11), t12, std::fma(t11, Real(1) - (t12 - t13) + (eps - t13), std::fma(t11, t12, -t14))), t0, std::fma(t14, v_M - (t0 - t15) - (v_m + t15), std::fma(t14, t0, -t16)))) / detail::blend(usable, t6, Real(1));
+        const std::int64_t finite = ((detail::zero_if_finite(v_M_out, v_m_out) + detail::zero_if_finite(J_out)) == Real(0));
+        std::int64_t doubtful = 0;
+        if constexpr (collide_line_batch_loop_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_line_batch_loop_k<Real>), highest = detail::power_of_2<Real>(collide_line_batch_loop_k<Real>);
+            doubtful = !detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(v_M, lowest), detail::magnitude_or(v_m, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(v_M), std::fabs(v_m))), std::fabs(eps)), highest));
+        }
+        if constexpr (collide_line_batch_loop_k<Real> < 0)
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t1), detail::zero_as_min(M)), detail::zero_as_min(v_M)), std::fabs(t2)), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(eps)), detail::zero_as_min(t0)), std::fabs(t5))), detail::least(detail::least(detail::most(std::fabs(t7), detail::zero_as_min(t5)), std::fabs(t8)), detail::least(std::fabs(t9), detail::most(std::fabs(t10), detail::zero_as_min(t9))))), detail::least(detail::least(detail::most(detail::most(std::fabs(t11), detail::zero_as_min(M)), detail::zero_as_min(m)), detail::most(detail::most(std::fabs(t14), detail::zero_as_min(t11)), detail::zero_as_min(t12))), detail::least(detail::most(detail::most(std::fabs(t16), detail::zero_as_min(t14)), detail::zero_as_min(t0)), detail::most(std::fabs(t18), detail::zero_as_min(t16))))), std::numeric_limits<Real>::min());
+        const std::int64_t written = usable & finite & !doubtful;
+        v_M_[i] = detail::blend(written, v_M_out, v_M_[i]);
+        v_m_[i] = detail::blend(written, v_m_out, v_m_[i]);
+        J_[i] = detail::blend(written, J_out, Real(0));
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
+    }
+}
+
+// The pairs collide_line_batch_loop left to the scalar collide_line (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_line_batch_loop_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide_line<Real>(M_[i], m_[i], v_M_[i], v_m_[i], eps_[i]);
+        v_M_[i] = out.v_M;
+        v_m_[i] = out.v_m;
+        J_[i] = out.J;
+        status_[i] = out.status;
+    }
+}
+
+// The range of what collide_line_batch_loop_sure tests, within which every value collide_line_batch_loop computes stays in
+// the normal range but its results that add a velocity: where each of M, m, v_M, v_m, eps is 0
+// or of magnitude within [2^-k, 2^k], derived by Impact as collide_line_batch_loop_k is, from these values
+// instead of the inputs (an input only added or subtracted, as a velocity, is finite
+// where its differences and those results are). For 24, 53, 64 and 113 mantissa
+// digits: k = 10, 130, 2321, 2307.
+template <class Real>
+constexpr int collide_line_batch_loop_sure_k = input_k<Real>(10, 130, 2321, 2307);
+
+// A block of 8 pairs resolved at once (true) where every pair's values are in range
+// (collide_line_batch_loop_sure_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok, a condition's or out of range, and each result is collide_line_batch_loop's bit for
+// bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
+// the block is left as it was, to collide_line_batch_loop.
+template <class Real>
+IMPACT_ALWAYS_INLINE bool collide_line_batch_loop_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_line_batch_loop_sure_k<Real> < 0 || 2 * collide_line_batch_loop_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
+    constexpr std::size_t block = 8;
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        std::int64_t refused = 0;
+        refused |= !(eps_[i] <= Real(1));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            refused |= !(eps_[i] >= Real(0));
+        }
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real v_M = v_M_[i];
+        const Real v_m = v_m_[i];
+        const Real eps = eps_[i];
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_line_batch_loop_sure_k<Real>), highest = detail::power_of_2<Real>(collide_line_batch_loop_sure_k<Real>);
+        std::int64_t doubtful;
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::positive_bits(M), detail::positive_bits(m), detail::any_sign_bits(v_M), detail::any_sign_bits(v_m), detail::non_negative_bits(eps));
+        else if constexpr (detail::has_magnitude_bits<Real>)
+            doubtful = detail::below_range(lowest, M, m, v_M, v_m, eps) | !detail::at_most((((M * M + m * m) + (v_M * v_M + v_m * v_m)) + eps * eps), highest * highest);
+        else
+            doubtful = detail::either(!detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(v_M, lowest), detail::magnitude_or(v_m, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most((((M * M + m * m) + (v_M * v_M + v_m * v_m)) + eps * eps), highest * highest)),
+                                      !detail::nan_compares_false && !(((detail::zero_if_finite(M, m) + detail::zero_if_finite(v_M, v_m)) + detail::zero_if_finite(eps)) == Real(0)));
+        left |= refused | doubtful;
+    }
+    if (left)
+        return false;
+    IMPACT_KEEP_LOOP
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        {
+            impact::status condition = status::ok;
+            const Real t0 = v_M_[i] - v_m_[i];
+            condition = detail::blend(!(t0 > Real(0)), status::separating, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real v_M = v_M_[i];
+        const Real v_m = v_m_[i];
+        const Real eps = eps_[i];
+        const Real t0 = v_M - v_m;
+        const Real t1 = M * v_M;
+        const Real t2 = std::fma(m, v_m, t1);
+        const Real t3 = eps * t0;
+        const Real t4 = -m;
+        const Real t5 = std::fma(t4, t3, t2);
+        const Real t6 = M + m;
+        const std::int64_t usable = resolved & (t6 != Real(0));
+        const Real t7 = t5 / detail::blend(usable, t6, Real(1));
+        const Real t8 = std::fma(M, t3, t1);
+        const Real t9 = std::fma(m, v_m, t8);
+        const Real t10 = t9 / detail::blend(usable, t6, Real(1));
+        const Real t11 = M * m;
+        const Real t12 = Real(1) + eps;
+        const Real t13 = t12 - Real(1);
+        const Real t14 = t11 * t12;
+        const Real t15 = t0 - v_M;
+        const Real t16 = t14 * t0;
+        const Real t17 = t6 - M;
+        const Real t18 = t16 / detail::blend(usable, t6, Real(1));
+        const Real t19 = -t18;
+        const Real v_M_out = t7;
+        const Real v_m_out = t10;
+        const Real J_out = t18 + std::fma(t19, M - (t6 - t17) + (m - t17), std::fma(t19, t6, t16) + std::fma(std::fma(std::fma(M, m, -t11), t12, std::fma(t11, Real(1) - (t12 - t13) + (eps - t13), std::fma(t11, t12, -t14))), t0, std::fma(t14, v_M - (t0 - t15) - (v_m + t15), std::fma(t14, t0, -t16)))) / detail::blend(usable, t6, Real(1));
+        v_M_[i] = detail::blend(usable, v_M_out, v_M_[i]);
+        v_m_[i] = detail::blend(usable, v_m_out, v_m_[i]);
+        J_[i] = detail::blend(usable, J_out, Real(0));
+        status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
+    }
+    return true;
+}
+
+// collide_line_batch_loop over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
+template <class Real>
+inline void collide_line_batch_loop_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64;
+    const bool far = count * (6 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
+    for (; b + block <= count; b += block) {
+        if (far && b + ahead < count) {
+            IMPACT_PREFETCH(M_ + b + ahead, 0);
+            IMPACT_PREFETCH(m_ + b + ahead, 0);
+            IMPACT_PREFETCH(v_M_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_m_ + b + ahead, 1);
+            IMPACT_PREFETCH(eps_ + b + ahead, 0);
+            IMPACT_PREFETCH(J_ + b + ahead, 1);
+            if (status_)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        if (untried == 0 && collide_line_batch_loop_sure<Real>(M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
+            collide_line_batch_loop<Real>(block, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+            collide_line_batch_loop_settle<Real>(block, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+        }
+    }
+    collide_line_batch_loop<Real>(count - b, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+    collide_line_batch_loop_settle<Real>(count - b, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+}
+
+} // namespace detail
+
+/// collide_line over `count` collisions stored as structure of arrays: outputs named after
+/// inputs are updated in place,
+/// the others written into arrays of their own (0 where a pair is refused). `status` (if not null) receives each status.
+/// The loop has no branches, so that compilers vectorise it; each result is bit for
+/// bit the scalar collide_line's (compiled alike, e.g. -ffp-contract=off). The arrays written
+/// must not overlap any other array.
+template <class Real>
+inline void collide_line_batch(const collide_line_batch_data<Real, 0>& data) noexcept
+{
+    detail::collide_line_batch_loop_ahead<Real>(data.count, data.M, data.m, data.v_M, data.v_m, data.eps, data.J, data.status);
+}
+
+namespace detail {
+
 // collide_line(m, v_M, v_m, eps, impact::fast): the fast form of collide_line with M = +infinity, with the
 // same guards and statuses, each output in its cheapest candidate form within its fast
 // bound (verification.md): 7 operations with the guards' conditions, of them 0
@@ -439,6 +705,260 @@ inline collide_line_result<Real> collide_line(Real M, Real m, Real v_M, Real v_m
     out.v_m = result1;
     out.J = result2;
     return out;
+}
+
+namespace detail {
+
+// The range of collide_line_batch_loop_fast's inputs within which its arithmetic stays in the normal range: where
+// every input is 0 or of magnitude within [2^-k, 2^k], every value it computes is 0 or
+// normal, and a product, quotient or fused multiply-add of values not 0 is not 0, so that
+// the scalar kernel's underflow test holds; the loop tests the inputs only. k is derived
+// by Impact from the program, operation by operation, bounding each value not 0 by powers
+// of 2, 2^lo <= |v| <= 2^hi, and by the power of 2 it is a multiple of, 2^q (a number of
+// at least 2^lo is a multiple of its ulp, 2^(lo - digits + 1)): a product adds them; a sum,
+// difference or fused multiply-add is exactly a multiple of its terms' finest q, and so,
+// rounded or not 0, at least 2^q, and at most 2^(larger hi + 1); a quotient subtracts the
+// bounds crosswise, a square root halves them, atan2(y, x) lies within
+// [min(lo(y) - hi(x) - 2, -1), 2]. For 24, 53, 64 and 113 mantissa digits (float, double, x87's and IEEE's
+// quadruple long double): k = 14, 183, 3251, 3231; where it is -1, the loop tests the least magnitude of the values.
+template <class Real>
+constexpr int collide_line_batch_loop_fast_k = input_k<Real>(14, 183, 3251, 3231);
+
+// The loop of collide_line_batch, without branches; inlined where it is called, so that a
+// block's call runs one pass of 8 pairs.
+template <class Real>
+IMPACT_ALWAYS_INLINE void collide_line_batch_loop_fast(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < count; ++i) {
+        // The status, as the scalar kernel decides it: the first guard that fails.
+        // (x * 0 is 0 for a finite x and NaN otherwise: one sum tests many values.)
+        impact::status outcome = status::ok;
+        {
+            std::int64_t fails = !(detail::zero_if_finite(v_M_[i], v_m_[i]) == Real(0));
+            outcome = detail::blend(fails, status::non_finite, outcome);
+            fails = !(eps_[i] >= Real(0));
+            fails |= !(eps_[i] <= Real(1));
+            outcome = detail::blend(fails, status::invalid_restitution, outcome);
+            fails = !(M_[i] > Real(0));
+            fails |= !(m_[i] > Real(0));
+            fails |= !(detail::zero_if_finite(M_[i], m_[i]) == Real(0));
+            outcome = detail::blend(fails, status::invalid_mass, outcome);
+            const std::int64_t admitted = outcome == status::ok;
+            impact::status condition = status::ok;
+            const Real t0 = v_M_[i] - v_m_[i];
+            fails = !(t0 > Real(0));
+            condition = detail::blend(fails, status::separating, condition);
+            outcome = detail::blend(admitted, condition, outcome);
+        }
+        // A fixed sphere, a mass +infinity, is left to the scalar kernel (`settle`).
+        outcome = detail::blend(detail::either(M_[i] == std::numeric_limits<Real>::infinity(), m_[i] == std::numeric_limits<Real>::infinity()), status::underflow, outcome);
+        const std::int64_t resolved = outcome == status::ok;
+        // Every pair is computed; one not resolved divides by 1, and its results are discarded.
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real v_M = v_M_[i];
+        const Real v_m = v_m_[i];
+        const Real eps = eps_[i];
+        const Real t0 = v_M - v_m;
+        const Real t1 = M * v_M;
+        const Real t2 = std::fma(m, v_m, t1);
+        const Real t3 = eps * t0;
+        const Real t4 = -m;
+        const Real t5 = std::fma(t4, t3, t2);
+        const Real t6 = M + m;
+        const std::int64_t usable = resolved & (std::fabs(t6) >= detail::smallest_divisor<Real>) & (std::fabs(t6) <= std::numeric_limits<Real>::max());
+        const Real t7 = t5 / detail::blend(usable, t6, Real(1));
+        const Real t8 = std::fma(M, t3, t1);
+        const Real t9 = std::fma(m, v_m, t8);
+        const Real t10 = t9 / detail::blend(usable, t6, Real(1));
+        const Real t11 = M * m;
+        const Real t12 = Real(1) + eps;
+        const Real t13 = t11 * t12;
+        const Real t14 = t13 * t0;
+        const Real t15 = t14 / detail::blend(usable, t6, Real(1));
+        const Real v_M_out = t7;
+        const Real v_m_out = t10;
+        const Real J_out = t15;
+        const std::int64_t finite = ((detail::zero_if_finite(v_M_out, v_m_out) + detail::zero_if_finite(J_out)) == Real(0));
+        std::int64_t doubtful = 0;
+        if constexpr (collide_line_batch_loop_fast_k<Real> >= 0) {
+            constexpr Real lowest = detail::power_of_2<Real>(-collide_line_batch_loop_fast_k<Real>), highest = detail::power_of_2<Real>(collide_line_batch_loop_fast_k<Real>);
+            doubtful = !detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(v_M, lowest), detail::magnitude_or(v_m, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most(detail::most(detail::most(detail::most(std::fabs(M), std::fabs(m)), detail::most(std::fabs(v_M), std::fabs(v_m))), std::fabs(eps)), highest));
+        }
+        if constexpr (collide_line_batch_loop_fast_k<Real> < 0)
+            doubtful = !detail::at_least(detail::least(detail::least(detail::least(detail::least(detail::most(detail::most(std::fabs(t1), detail::zero_as_min(M)), detail::zero_as_min(v_M)), std::fabs(t2)), detail::least(detail::most(detail::most(std::fabs(t3), detail::zero_as_min(eps)), detail::zero_as_min(t0)), std::fabs(t5))), detail::least(detail::least(detail::most(std::fabs(t7), detail::zero_as_min(t5)), std::fabs(t8)), detail::least(std::fabs(t9), detail::most(std::fabs(t10), detail::zero_as_min(t9))))), detail::least(detail::least(detail::most(detail::most(std::fabs(t11), detail::zero_as_min(M)), detail::zero_as_min(m)), detail::most(detail::most(std::fabs(t13), detail::zero_as_min(t11)), detail::zero_as_min(t12))), detail::least(detail::most(detail::most(std::fabs(t14), detail::zero_as_min(t13)), detail::zero_as_min(t0)), detail::most(std::fabs(t15), detail::zero_as_min(t14))))), std::numeric_limits<Real>::min());
+        const std::int64_t written = usable & finite & !doubtful;
+        v_M_[i] = detail::blend(written, v_M_out, v_M_[i]);
+        v_m_[i] = detail::blend(written, v_m_out, v_m_[i]);
+        J_[i] = detail::blend(written, J_out, Real(0));
+        status_[i] = detail::blend(resolved & !written, detail::blend(usable & finite, status::underflow, status::out_of_range), outcome);
+    }
+}
+
+// The pairs collide_line_batch_loop_fast left to the scalar collide_line (status underflow: a value it tests for underflow may be
+// below the normal range), each resolved by it, which decides exactly.
+template <class Real>
+inline void collide_line_batch_loop_fast_settle(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    bool doubtful = false;
+    for (std::size_t i = 0; i < count; ++i)
+        doubtful |= status_[i] == status::underflow;
+    if (!doubtful)
+        return;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (status_[i] != status::underflow)
+            continue;
+        const auto out = collide_line<Real>(M_[i], m_[i], v_M_[i], v_m_[i], eps_[i], fast_t{});
+        v_M_[i] = out.v_M;
+        v_m_[i] = out.v_m;
+        J_[i] = out.J;
+        status_[i] = out.status;
+    }
+}
+
+// The range of what collide_line_batch_loop_fast_sure tests, within which every value collide_line_batch_loop_fast computes stays in
+// the normal range but its results that add a velocity: where each of M, m, v_M, v_m, eps is 0
+// or of magnitude within [2^-k, 2^k], derived by Impact as collide_line_batch_loop_fast_k is, from these values
+// instead of the inputs (an input only added or subtracted, as a velocity, is finite
+// where its differences and those results are). For 24, 53, 64 and 113 mantissa
+// digits: k = 14, 183, 3251, 3231.
+template <class Real>
+constexpr int collide_line_batch_loop_fast_sure_k = input_k<Real>(14, 183, 3251, 3231);
+
+// A block of 8 pairs resolved at once (true) where every pair's values are in range
+// (collide_line_batch_loop_fast_sure_k) and admitted by the domains: nothing then underflows, no sphere is fixed,
+// each status is ok, a condition's or out of range, and each result is collide_line_batch_loop_fast's bit for
+// bit, without its blended statuses and the scalar kernel after it. Otherwise (false)
+// the block is left as it was, to collide_line_batch_loop_fast.
+template <class Real>
+IMPACT_ALWAYS_INLINE bool collide_line_batch_loop_fast_sure(const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    // A format without a range, or one whose largest square (2^2k) overflows: every block
+    // left to the loop.
+    if constexpr (collide_line_batch_loop_fast_sure_k<Real> < 0 || 2 * collide_line_batch_loop_fast_sure_k<Real> >= std::numeric_limits<Real>::max_exponent)
+        return false;
+    constexpr std::size_t block = 8;
+    std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        std::int64_t refused = 0;
+        refused |= !(eps_[i] <= Real(1));
+        if constexpr (!detail::range_by_bits<Real>) {
+            refused |= !(M_[i] > Real(0));
+            refused |= !(m_[i] > Real(0));
+            refused |= !(eps_[i] >= Real(0));
+        }
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real v_M = v_M_[i];
+        const Real v_m = v_m_[i];
+        const Real eps = eps_[i];
+        constexpr Real lowest = detail::power_of_2<Real>(-collide_line_batch_loop_fast_sure_k<Real>), highest = detail::power_of_2<Real>(collide_line_batch_loop_fast_sure_k<Real>);
+        std::int64_t doubtful;
+        if constexpr (detail::range_by_bits<Real>)
+            doubtful = detail::outside_by_bits(lowest, highest, detail::positive_bits(M), detail::positive_bits(m), detail::any_sign_bits(v_M), detail::any_sign_bits(v_m), detail::non_negative_bits(eps));
+        else if constexpr (detail::has_magnitude_bits<Real>)
+            doubtful = detail::below_range(lowest, M, m, v_M, v_m, eps) | !detail::at_most((((M * M + m * m) + (v_M * v_M + v_m * v_m)) + eps * eps), highest * highest);
+        else
+            doubtful = detail::either(!detail::both(detail::at_least(detail::least(detail::least(detail::least(detail::magnitude_or(M, lowest), detail::magnitude_or(m, lowest)), detail::least(detail::magnitude_or(v_M, lowest), detail::magnitude_or(v_m, lowest))), detail::magnitude_or(eps, lowest)), lowest), detail::at_most((((M * M + m * m) + (v_M * v_M + v_m * v_m)) + eps * eps), highest * highest)),
+                                      !detail::nan_compares_false && !(((detail::zero_if_finite(M, m) + detail::zero_if_finite(v_M, v_m)) + detail::zero_if_finite(eps)) == Real(0)));
+        left |= refused | doubtful;
+    }
+    if (left)
+        return false;
+    IMPACT_KEEP_LOOP
+    IMPACT_INDEPENDENT_ITERATIONS
+    for (std::size_t i = 0; i < block; ++i) {
+        impact::status outcome = status::ok;
+        {
+            impact::status condition = status::ok;
+            const Real t0 = v_M_[i] - v_m_[i];
+            condition = detail::blend(!(t0 > Real(0)), status::separating, condition);
+            outcome = condition;
+        }
+        const std::int64_t resolved = outcome == status::ok;
+        const Real M = M_[i];
+        const Real m = m_[i];
+        const Real v_M = v_M_[i];
+        const Real v_m = v_m_[i];
+        const Real eps = eps_[i];
+        const Real t0 = v_M - v_m;
+        const Real t1 = M * v_M;
+        const Real t2 = std::fma(m, v_m, t1);
+        const Real t3 = eps * t0;
+        const Real t4 = -m;
+        const Real t5 = std::fma(t4, t3, t2);
+        const Real t6 = M + m;
+        const std::int64_t usable = resolved & (t6 != Real(0));
+        const Real t7 = t5 / detail::blend(usable, t6, Real(1));
+        const Real t8 = std::fma(M, t3, t1);
+        const Real t9 = std::fma(m, v_m, t8);
+        const Real t10 = t9 / detail::blend(usable, t6, Real(1));
+        const Real t11 = M * m;
+        const Real t12 = Real(1) + eps;
+        const Real t13 = t11 * t12;
+        const Real t14 = t13 * t0;
+        const Real t15 = t14 / detail::blend(usable, t6, Real(1));
+        const Real v_M_out = t7;
+        const Real v_m_out = t10;
+        const Real J_out = t15;
+        v_M_[i] = detail::blend(usable, v_M_out, v_M_[i]);
+        v_m_[i] = detail::blend(usable, v_m_out, v_m_[i]);
+        J_[i] = detail::blend(usable, J_out, Real(0));
+        status_[i] = detail::blend(resolved & !usable, status::out_of_range, outcome);
+    }
+    return true;
+}
+
+// collide_line_batch_loop_fast over blocks of 8 pairs, each array's data asked for 64 pairs ahead where the
+// arrays hold more than 1 MiB (`far`): the processor's own prefetching, following so
+// many arrays, falls behind.
+template <class Real>
+inline void collide_line_batch_loop_fast_ahead(std::size_t count, const Real* IMPACT_RESTRICT M_, const Real* IMPACT_RESTRICT m_, Real* IMPACT_RESTRICT v_M_, Real* IMPACT_RESTRICT v_m_, const Real* IMPACT_RESTRICT eps_, Real* IMPACT_RESTRICT J_, impact::status* IMPACT_RESTRICT status_) noexcept
+{
+    constexpr std::size_t block = 8, ahead = 64;
+    const bool far = count * (6 * sizeof(Real) + sizeof(impact::status)) > (std::size_t(1) << 20);
+    impact::status own[block];  // the statuses, where the caller wants none
+    std::size_t untried = 0, back_off = 0;  // blocks the sure block skips, and how many next
+    std::size_t b = 0;
+    for (; b + block <= count; b += block) {
+        if (far && b + ahead < count) {
+            IMPACT_PREFETCH(M_ + b + ahead, 0);
+            IMPACT_PREFETCH(m_ + b + ahead, 0);
+            IMPACT_PREFETCH(v_M_ + b + ahead, 1);
+            IMPACT_PREFETCH(v_m_ + b + ahead, 1);
+            IMPACT_PREFETCH(eps_ + b + ahead, 0);
+            IMPACT_PREFETCH(J_ + b + ahead, 1);
+            if (status_)
+                IMPACT_PREFETCH(status_ + b + ahead, 1);
+        }
+        if (untried == 0 && collide_line_batch_loop_fast_sure<Real>(M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own)) {
+            back_off = 0;
+        } else {
+            if (untried == 0) {
+                back_off = back_off == 0 ? 1 : back_off < 16 ? 2 * back_off : 16;
+                untried = back_off;
+            } else {
+                --untried;
+            }
+            collide_line_batch_loop_fast<Real>(block, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+            collide_line_batch_loop_fast_settle<Real>(block, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+        }
+    }
+    collide_line_batch_loop_fast<Real>(count - b, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+    collide_line_batch_loop_fast_settle<Real>(count - b, M_ + b, m_ + b, v_M_ + b, v_m_ + b, eps_ + b, J_ + b, status_ ? status_ + b : own);
+}
+
+} // namespace detail
+
+/// collide_line_batch(data, impact::fast): collide_line_batch in the fast form, each result bit for bit
+/// the scalar collide_line(..., impact::fast)'s (compiled alike, e.g. -ffp-contract=off).
+template <class Real>
+inline void collide_line_batch(const collide_line_batch_data<Real, 0>& data, fast_t) noexcept
+{
+    detail::collide_line_batch_loop_fast_ahead<Real>(data.count, data.M, data.m, data.v_M, data.v_m, data.eps, data.J, data.status);
 }
 
 } // namespace impact

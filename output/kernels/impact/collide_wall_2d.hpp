@@ -250,6 +250,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -276,6 +277,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_sure(const Real* IMPACT_RESTRICT
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;
@@ -579,6 +581,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RES
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -605,6 +608,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_2d_fast_sure(const Real* IMPACT_RES
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;

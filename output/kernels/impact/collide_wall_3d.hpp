@@ -292,6 +292,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -320,6 +321,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_sure(const Real* IMPACT_RESTRICT
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;
@@ -664,6 +666,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RES
         return false;
     constexpr std::size_t block = 8;
     std::int64_t left = 0;  // a pair the block leaves to the loop
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         std::int64_t refused = 0;
@@ -692,6 +695,7 @@ IMPACT_ALWAYS_INLINE bool collide_wall_batch_3d_fast_sure(const Real* IMPACT_RES
     }
     if (left)
         return false;
+    IMPACT_KEEP_LOOP
     IMPACT_INDEPENDENT_ITERATIONS
     for (std::size_t i = 0; i < block; ++i) {
         impact::status outcome = status::ok;

@@ -28,6 +28,17 @@
 #else
 #define IMPACT_INDEPENDENT_ITERATIONS
 #endif
+// A loop over the 8 pairs of a block kept a loop, so that it is vectorised: GCC and Clang
+// unroll a loop that short completely first where its body is small, and then vectorise none
+// of it (collide_line's batch with GCC for AVX-512: 42 ms for 4 million pairs, 11.6 ms with
+// its sure block's loops kept).
+#if defined(__clang__)
+#define IMPACT_KEEP_LOOP _Pragma("clang loop unroll(disable)")
+#elif defined(__GNUC__)
+#define IMPACT_KEEP_LOOP _Pragma("GCC unroll 1")
+#else
+#define IMPACT_KEEP_LOOP
+#endif
 // Asks for the cache line at p ahead of its use (for writing if `write`): a batch loop
 // streams so many arrays at once that the processor's own prefetching falls behind.
 #if defined(__GNUC__) || defined(__clang__)
@@ -461,6 +472,110 @@ inline bool crowded(const std::array<const void*, K>& starts) noexcept
 
 } // namespace detail
 
+/// Structure-of-arrays data for collide_line_batch: one array per scalar, N per vector.
+/// The arrays written (the outputs, status) must not overlap any other.
+template <class Real, std::size_t N = 0>
+struct collide_line_batch_data {
+    std::size_t count;
+    const Real* M;
+    const Real* m;
+    Real* v_M;
+    Real* v_m;
+    const Real* eps;
+    Real* J;
+    impact::status* status;
+};
+
+/// The arrays of collide_line_batch_data, owned: one allocation holds them all, array k starting
+/// 64 + 256 k bytes (modulo 4 KiB) past a page boundary. Arrays allocated one by one all
+/// start at one offset within their pages: pair i of every array then falls on the same
+/// cache sets, and a large batch runs about a fifth slower. Each array holds `count`
+/// values, not initialised, and starts on a 64-byte boundary. The constructor throws
+/// std::bad_alloc, or std::bad_array_new_length for a count no allocation can hold.
+/// Move-only; an object moved from holds no arrays.
+template <class Real, std::size_t N = 0>
+class collide_line_batch_arrays {
+public:
+    static_assert(std::is_floating_point_v<Real>, "collide_line_batch_arrays holds floating-point values");
+
+    explicit collide_line_batch_arrays(std::size_t count) : count_(count)
+    {
+        // Each array padded to whole pages plus `apart`; the bytes in all must not wrap around.
+        constexpr std::size_t most = (std::numeric_limits<std::size_t>::max() - first - reals * (page + apart)) / per_pair;
+        if (count > most)
+            throw std::bad_array_new_length();
+        stride_ = (count * sizeof(Real) + page - 1) / page * page + apart;
+        block_ = static_cast<unsigned char*>(::operator new(first + reals * stride_ + count * sizeof(impact::status), std::align_val_t{page}));
+        for (std::size_t a = 0; a < reals; ++a)
+            std::uninitialized_default_construct_n(at<Real>(a), count);
+        std::uninitialized_default_construct_n(at<impact::status>(reals), count);
+    }
+    collide_line_batch_arrays(collide_line_batch_arrays&& other) noexcept { swap(other); }
+    collide_line_batch_arrays& operator=(collide_line_batch_arrays&& other) noexcept
+    {
+        collide_line_batch_arrays(std::move(other)).swap(*this);
+        return *this;
+    }
+    collide_line_batch_arrays(const collide_line_batch_arrays&) = delete;
+    collide_line_batch_arrays& operator=(const collide_line_batch_arrays&) = delete;
+    ~collide_line_batch_arrays()
+    {
+        if (block_)
+            ::operator delete(block_, std::align_val_t{page});
+    }
+
+    std::size_t count() const noexcept { return count_; }
+    Real* M() noexcept { return at<Real>(0); }
+    const Real* M() const noexcept { return at<Real>(0); }
+    Real* m() noexcept { return at<Real>(1); }
+    const Real* m() const noexcept { return at<Real>(1); }
+    Real* v_M() noexcept { return at<Real>(2); }
+    const Real* v_M() const noexcept { return at<Real>(2); }
+    Real* v_m() noexcept { return at<Real>(3); }
+    const Real* v_m() const noexcept { return at<Real>(3); }
+    Real* eps() noexcept { return at<Real>(4); }
+    const Real* eps() const noexcept { return at<Real>(4); }
+    Real* J() noexcept { return at<Real>(5); }
+    const Real* J() const noexcept { return at<Real>(5); }
+    impact::status* status() noexcept { return at<impact::status>(reals); }
+    const impact::status* status() const noexcept { return at<impact::status>(reals); }
+
+    /// The arrays as collide_line_batch takes them.
+    collide_line_batch_data<Real, N> data() noexcept
+    {
+        collide_line_batch_data<Real, N> d{};
+        d.count = count_;
+        d.M = M();
+        d.m = m();
+        d.v_M = v_M();
+        d.v_m = v_m();
+        d.eps = eps();
+        d.J = J();
+        d.status = status();
+        return d;
+    }
+
+private:
+    static constexpr std::size_t reals = 6;  // the arrays of Real, then the statuses
+    static constexpr std::size_t page = 4096, apart = 256, first = 64;
+    static constexpr std::size_t per_pair = reals * sizeof(Real) + sizeof(impact::status);  // bytes
+    template <class T>
+    T* at(std::size_t a) const noexcept
+    {
+        return block_ ? reinterpret_cast<T*>(block_ + first + a * stride_) : nullptr;
+    }
+    void swap(collide_line_batch_arrays& other) noexcept
+    {
+        std::swap(count_, other.count_);
+        std::swap(stride_, other.stride_);
+        std::swap(block_, other.block_);
+    }
+
+    std::size_t count_ = 0;
+    std::size_t stride_ = 0;  // bytes from one array's start to the next
+    unsigned char* block_ = nullptr;
+};
+
 /// What collide returns in N dimensions.
 template <class Real, std::size_t N>
 struct collide_result {
@@ -470,7 +585,7 @@ struct collide_result {
 };
 
 /// Structure-of-arrays data for collide_batch: one array per scalar, N per vector.
-/// The arrays written (velocities, status) must not overlap any other.
+/// The arrays written (the outputs, status) must not overlap any other.
 template <class Real, std::size_t N>
 struct collide_batch_data {
     std::size_t count;
@@ -592,7 +707,7 @@ struct collide_rough_result {
 };
 
 /// Structure-of-arrays data for collide_rough_batch: one array per scalar, N per vector.
-/// The arrays written (velocities, status) must not overlap any other.
+/// The arrays written (the outputs, status) must not overlap any other.
 template <class Real, std::size_t N>
 struct collide_rough_batch_data {
     std::size_t count;
@@ -754,7 +869,7 @@ struct collide_wall_rough_result {
 };
 
 /// Structure-of-arrays data for collide_wall_rough_batch: one array per scalar, N per vector.
-/// The arrays written (velocities, status) must not overlap any other.
+/// The arrays written (the outputs, status) must not overlap any other.
 template <class Real, std::size_t N>
 struct collide_wall_rough_batch_data {
     std::size_t count;
@@ -890,7 +1005,7 @@ struct collide_wall_result {
 };
 
 /// Structure-of-arrays data for collide_wall_batch: one array per scalar, N per vector.
-/// The arrays written (velocities, status) must not overlap any other.
+/// The arrays written (the outputs, status) must not overlap any other.
 template <class Real, std::size_t N>
 struct collide_wall_batch_data {
     std::size_t count;

@@ -165,15 +165,36 @@ kernel kernel_builder::build(const spec::kernel& spec_kernel)
                                                   k.name, r.name.value));
         k.regimes.push_back(make_regime(k, r));
     }
+    // A batch writes an output named after an input over that input's array, and any other
+    // output into an array of its own: an output named after an input of another size has
+    // neither.
     if (k.batch)
         for (const kernel_output& o : k.outputs) {
             const kernel_parameter* same = k.find_parameter(o.member);
-            if (!same || same->components.size() != o.values.size())
+            if (same && (same->components.size() != o.values.size() || same->is_array != o.is_array))
                 throw error(spec_kernel.name.where,
-                            fmt::format("kernel '{}' has batch = true, which writes each output over the input "
-                                        "of its name, and '{}' is no input of its size; name the output after "
-                                        "an input (v_M = ...), or give the batch to a kernel of its own",
+                            fmt::format("kernel '{}' has batch = true, which writes each output named after an "
+                                        "input over that input, and '{}' is an input of another size; name the "
+                                        "output after no input (an array of its own), or after an input of its size",
                                         k.name, o.member));
+            // A kernel of one scalar output and guards returns that value alone (NaN where a
+            // guard refuses), with no status for a batch to report.
+            if (!same && k.outputs.size() == 1 && !o.is_array && !k.guards.empty())
+                throw error(spec_kernel.name.where,
+                            fmt::format("kernel '{}' has batch = true and one output, '{}', named after no input: "
+                                        "it returns that value alone (NaN where a guard refuses), without the status "
+                                        "a batch reports for each pair; name the output after an input, or give the kernel a second output",
+                                        k.name, o.member));
+            // Its arrays are named `J`, or `dp_0`, `dp_1` for an array (emit's fresh_name),
+            // beside the inputs' components in the batch loop.
+            for (std::size_t c = 0; !same && c < o.values.size(); ++c) {
+                const std::string array = o.is_array ? fmt::format("{}_{}", o.member, c) : o.member;
+                if (k.find_input(array))
+                    throw error(spec_kernel.name.where,
+                                fmt::format("kernel '{}' has batch = true, and the array of its output '{}' would be "
+                                            "named '{}', as an input is; rename the output or the input",
+                                            k.name, o.member, array));
+            }
         }
     for (const spec::error_bound& b : spec_kernel.bounds) {
         kernel_output* o = find_output(k, b.output);
