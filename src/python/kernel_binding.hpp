@@ -72,8 +72,8 @@ inline bool strided(const columns& c) noexcept
 // functions), so that its std::fma are one instruction, not a call to libm's emulation, and a
 // batch loop a vector loop, where the processor has FMA. The results are the same: an FMA
 // rounds once either way, and the kernels are compiled without contraction (-ffp-contract=off).
-// The batch loops so compiled ran 3.7 times as fast (3D collide's 4 million pairs, 282 ms to
-// 75 ms; docs/python.md); the module's build took about twice the CPU time (96 s to 210 s).
+// The batch loops so compiled ran 4.2 times as fast (3D collide's 4 million pairs, 282 ms to
+// 67.5 ms; docs/python.md); the module from nothing took 164 s of CPU against 96 s.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 #define IMPACT_PYTHON_LOOP __attribute__((target_clones("arch=x86-64-v3", "default"), flatten))
 #else
