@@ -822,6 +822,14 @@ BOOST_AUTO_TEST_CASE(a_batch_kernel_whose_output_it_cannot_write)
     expect_refused(named,
                    "derivations/bad.toml:29:8: error: kernel 'k' has batch = true, and the array of its output 'd' "
                    "would be named 'd_1', as an input is; rename the output or the input");
+    // Two outputs' arrays named alike: d's first component and the scalar d_0.
+    expect_refused(with("[\"x\", \"y\"]", "[\"d = [a, b]\", \"d_0 = a\"]"),
+                   "derivations/bad.toml:29:8: error: kernel 'k' has batch = true, and the arrays of its outputs 'd' "
+                   "and 'd_0' would both be named 'd_0'; rename one of them");
+    // An output named as a member k_batch_arrays declares of its own.
+    expect_refused(with("[\"x\", \"y\"]", "[\"first = a\", \"b = b\"]"),
+                   "derivations/bad.toml:29:8: error: kernel 'k' has batch = true, and 'first' would be a method of "
+                   "k_batch_arrays, which declares a 'first' of its own; rename the input or output");
 }
 
 BOOST_AUTO_TEST_CASE(pi_is_derived_typeset_and_computed_by_a_kernel_but_a_function_it_cannot_call_is_refused)

@@ -202,7 +202,7 @@ py::object call(const std::vector<kernel_entry>& entries, const py::object& resu
     // The inputs' columns: each component as it is where it is contiguous with every pair's
     // value, one value for all where the argument has one pair (a scalar loop only), a copy
     // otherwise. In a batch call an input written over is taken alike, and the runner copies
-    // it into its output a chunk at a time (print_batch_call in emit/python.cpp).
+    // it into its output before the loop (print_batch_call in emit/python.cpp).
     std::vector<py::object> kept;
     for (std::size_t i = 0; i < arrays.size(); ++i) {
         const parameter& p = e.parameters[i];

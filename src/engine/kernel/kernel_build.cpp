@@ -168,6 +168,23 @@ kernel kernel_builder::build(const spec::kernel& spec_kernel)
     // A batch writes an output named after an input over that input's array, and any other
     // output into an array of its own: an output named after an input of another size has
     // neither.
+    std::map<std::string, std::string> fresh_arrays;  // an output's array's name -> the output
+    if (k.batch) {
+        // Each parameter and output is a method of `<name>_batch_arrays` too (emit's
+        // print_batch_arrays), beside the members that class declares of its own.
+        static const std::set<std::string> arrays_own = {"first", "page", "apart", "reals", "per_pair", "at", "swap"};
+        std::vector<std::string> members;
+        for (const kernel_parameter& p : k.parameters)
+            members.push_back(p.name);
+        for (const kernel_output& o : k.outputs)
+            members.push_back(o.member);
+        for (const std::string& member : members)
+            if (arrays_own.count(member))
+                throw error(spec_kernel.name.where,
+                            fmt::format("kernel '{}' has batch = true, and '{}' would be a method of {}_batch_arrays, "
+                                        "which declares a '{}' of its own; rename the input or output",
+                                        k.name, member, k.name, member));
+    }
     if (k.batch)
         for (const kernel_output& o : k.outputs) {
             const kernel_parameter* same = k.find_parameter(o.member);
@@ -194,6 +211,11 @@ kernel kernel_builder::build(const spec::kernel& spec_kernel)
                                 fmt::format("kernel '{}' has batch = true, and the array of its output '{}' would be "
                                             "named '{}', as an input is; rename the output or the input",
                                             k.name, o.member, array));
+                if (const auto [at, added] = fresh_arrays.emplace(array, o.member); !added)
+                    throw error(spec_kernel.name.where,
+                                fmt::format("kernel '{}' has batch = true, and the arrays of its outputs '{}' and '{}' "
+                                            "would both be named '{}'; rename one of them",
+                                            k.name, at->second, o.member, array));
             }
         }
     for (const spec::error_bound& b : spec_kernel.bounds) {
