@@ -287,7 +287,7 @@ void print_batch(std::string& out, const kernel_plan& plan, form which)
     for (const engine::kernel_output& o : k.outputs) {
         const engine::kernel_parameter* same = k.find_parameter(o.member);
         for (std::size_t c = 0; c < o.values.size(); ++c, ++value) {
-            const std::string target = same ? same->components.at(c).name : fresh_name(o, c);
+            const std::string target = same ? same->components.at(c).name : o.own_array_name(c);
             writes.push_back({target, code.outputs[value], same ? target + "_[i]" : "Real(0)"});
         }
     }

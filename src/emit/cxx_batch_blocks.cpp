@@ -55,15 +55,10 @@ std::vector<lane_input> lane_inputs(const engine::kernel& k)
     for (const engine::kernel_output& o : k.outputs)
         if (!k.find_parameter(o.member))
             for (std::size_t c = 0; c < o.values.size(); ++c)
-                inputs.push_back({fresh_name(o, c),
+                inputs.push_back({o.own_array_name(c),
                                   o.is_array ? fmt::format("data.{}[{}]", o.member, c) : "data." + o.member, true,
                                   true});
     return inputs;
-}
-
-std::string fresh_name(const engine::kernel_output& o, std::size_t c)
-{
-    return o.is_array ? fmt::format("{}_{}", o.member, c) : o.member;
 }
 
 // The parameters of a batch loop: a pointer per scalar input (`restrict`), and the
@@ -97,7 +92,7 @@ void print_settle(std::string& out, const engine::kernel& k, const std::string& 
     for (const engine::kernel_output& o : k.outputs) {
         const engine::kernel_parameter* same = k.find_parameter(o.member);
         for (std::size_t c = 0; c < o.values.size(); ++c)
-            writes.push_back(fmt::format("        {}_[i] = out.{}{};\n", same ? same->components[c].name : fresh_name(o, c),
+            writes.push_back(fmt::format("        {}_[i] = out.{}{};\n", same ? same->components[c].name : o.own_array_name(c),
                                          o.member, o.is_array ? fmt::format("[{}]", c) : ""));
     }
     out += fmt::format("\n// The pairs {0} left to the scalar {1} (status {2}: a value it tests for underflow may be\n"

@@ -22,9 +22,6 @@ struct lane_input {
 /// The arrays of `k`'s batch: its inputs' components, parameter by parameter, then the
 /// components of the outputs named after no input, output by output.
 std::vector<lane_input> lane_inputs(const engine::kernel& k);
-/// The name of component `c` of an output named after no input, as a batch loop names its
-/// array (`J`, `dp_0`).
-std::string fresh_name(const engine::kernel_output& o, std::size_t c);
 /// The parameters of a batch loop: a pointer per scalar input, and the status array.
 std::string loop_parameters(const std::vector<lane_input>& inputs, bool with_status);
 /// `<loop>_settle`: the pairs the loop left to the scalar kernel (status `underflow`), each

@@ -43,6 +43,11 @@ std::vector<GiNaC::ex> kernel::input_symbols() const
     return symbols;
 }
 
+std::string kernel_output::own_array_name(std::size_t c) const
+{
+    return is_array ? member + "_" + std::to_string(c) : member;
+}
+
 const quantity* kernel::find_input(const std::string& name) const
 {
     for (const kernel_parameter& p : parameters)

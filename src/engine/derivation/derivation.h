@@ -208,6 +208,10 @@ struct kernel_output {
     /// (`[[kernel.bound]]` with `form = "fast"`).
     std::array<double, 3> fast_bound_ulps{16, 16, 16};
     std::array<std::string, 3> fast_bound_because;
+
+    /// The name of component `c`'s array in a batch, for an output named after no input:
+    /// `J`, or `dp_0`, `dp_1` for an array.
+    std::string own_array_name(std::size_t c) const;
 };
 
 /// A condition the inputs must meet; when one does not, the kernel returns its status.

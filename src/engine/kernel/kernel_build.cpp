@@ -202,10 +202,9 @@ kernel kernel_builder::build(const spec::kernel& spec_kernel)
                                         "it returns that value alone (NaN where a guard refuses), without the status "
                                         "a batch reports for each pair; name the output after an input, or give the kernel a second output",
                                         k.name, o.member));
-            // Its arrays are named `J`, or `dp_0`, `dp_1` for an array (emit's fresh_name),
-            // beside the inputs' components in the batch loop.
+            // Its arrays (own_array_name) stand beside the inputs' components in the batch loop.
             for (std::size_t c = 0; !same && c < o.values.size(); ++c) {
-                const std::string array = o.is_array ? fmt::format("{}_{}", o.member, c) : o.member;
+                const std::string array = o.own_array_name(c);
                 if (k.find_input(array))
                     throw error(spec_kernel.name.where,
                                 fmt::format("kernel '{}' has batch = true, and the array of its output '{}' would be "
