@@ -141,7 +141,7 @@ void print_scalar_loop(std::string& out, const engine::kernel& k)
 
 // The batch kernel called on the columns, every input an array of `count` values: each input
 // written over copied into its output's column (the output named after it) first, here, where
-// the GIL is released; the outputs named after no input written into their columns. (Copied and
+// the GIL is released, unless the caller passed the input's own array as that output (`out=`); the outputs named after no input written into their columns. (Copied and
 // run a chunk of pairs at a time, so that the loop would find the copies in cache, 3D collide's
 // 4 million pairs took 94 ms in chunks of 65 536, against 75 ms at once: chunks of fewer pairs
 // than the block loops ask for ahead of.)
@@ -165,7 +165,7 @@ void print_batch_call(std::string& out, const engine::kernel& k)
             const std::string member = p.is_array ? fmt::format("d.{}[{}]", p.name, i) : "d." + p.name;
             if (written != first_output_column.end())
                 out += fmt::format("    {0} = static_cast<Real*>(c.out[{1}]);\n"
-                                   "    std::copy_n(static_cast<const Real*>(c.in[{2}]), c.count, {0});\n",
+                                   "    impact::python::copy_over(c.in[{2}], {0}, c.count);\n",
                                    member, written->second + i, j);
             else
                 out += fmt::format("    {} = static_cast<const Real*>(c.in[{}]);\n", member, j);

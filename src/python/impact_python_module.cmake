@@ -51,7 +51,7 @@ function(impact_add_python_module package)
   set_target_properties(${package} PROPERTIES OUTPUT_NAME _impact CXX_VISIBILITY_PRESET hidden
                                               LIBRARY_OUTPUT_DIRECTORY ${package_dir})
   file(MAKE_DIRECTORY ${package_dir})
-  foreach(file __init__.py derivation.py)
+  foreach(file __init__.py batch.py derivation.py)
     configure_file(${IMPACT_PYTHON_SOURCE_DIR}/python/impact/${file} ${package_dir}/${file} COPYONLY)
   endforeach()
   file(GENERATE OUTPUT ${package_dir}/_executable.py

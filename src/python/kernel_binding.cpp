@@ -39,14 +39,15 @@ shape shape_of(const py::array& a)
 }
 
 // The arguments in the order of the parameters, from the positional and keyword arguments;
-// `fast` from its keyword.
+// `fast` and `out` from their keywords (no kernel's parameter has either name: the engine
+// refuses them as names its C++ declares).
 std::vector<py::object> arguments_by_parameter(const kernel_entry& e, const py::args& args, const py::kwargs& kwargs,
-                                               bool& fast)
+                                               bool& fast, py::object& out)
 {
     const std::string function = e.name + "()";
     if (args.size() > e.parameters.size())
-        throw py::type_error(function + " takes " + std::to_string(e.parameters.size()) + " arguments (and fast=), " +
-                             std::to_string(args.size()) + " were given");
+        throw py::type_error(function + " takes " + std::to_string(e.parameters.size()) +
+                             " arguments (and fast=, out=), " + std::to_string(args.size()) + " were given");
     std::vector<py::object> values(e.parameters.size());
     for (std::size_t i = 0; i < args.size(); ++i)
         values[i] = args[i];
@@ -56,6 +57,11 @@ std::vector<py::object> arguments_by_parameter(const kernel_entry& e, const py::
             if (!py::isinstance<py::bool_>(value))
                 throw py::type_error(function + ": fast must be True or False");
             fast = value.cast<bool>();
+            continue;
+        }
+        if (name == "out") {
+            if (!value.is_none())
+                out = py::reinterpret_borrow<py::object>(value);
             continue;
         }
         const auto p = std::find_if(e.parameters.begin(), e.parameters.end(),
@@ -149,11 +155,124 @@ const kernel_entry& entry_for(const std::vector<kernel_entry>& entries, const st
                           " components (an array of shape (..., N)); it has shape " + text_of(shape_of(a)));
 }
 
+// The fields of a kernel's result, in order: its outputs, then its status where it has one.
+std::vector<std::string> field_names(const kernel_entry& e)
+{
+    std::vector<std::string> names;
+    for (const output& o : e.outputs)
+        names.push_back(o.name);
+    if (e.status)
+        names.push_back("status");
+    return names;
+}
+
+// The arrays the caller gave for the result (`out=`), checked: a tuple (a named tuple of an
+// earlier call's result, say) of one array for each field, or an array alone for a kernel that
+// returns one value; each of the call's dtype (int64 for the statuses), writeable, of the
+// pairs' shape (a vector's components last), each component's values contiguous over the
+// pairs, as a fresh output's are (a vector of shape (n, N) in Fortran order).
+std::vector<py::array> given_outputs(const kernel_entry& e, const py::object& out, const shape& all, bool float32)
+{
+    const std::vector<std::string> names = field_names(e);
+    const std::size_t wanted = e.returns_scalar ? 1 : names.size();
+    std::vector<py::object> objects;
+    if (e.returns_scalar && py::isinstance<py::array>(out)) {
+        objects.push_back(out);
+    } else if (py::isinstance<py::tuple>(out) || py::isinstance<py::list>(out)) {
+        for (const py::handle item : out)
+            objects.push_back(py::reinterpret_borrow<py::object>(item));
+    }
+    std::string list;
+    for (std::size_t f = 0; f < wanted; ++f)
+        list += (f ? ", " : "") + names[f];
+    if (objects.size() != wanted) {
+        const std::string it = py::isinstance<py::tuple>(out) || py::isinstance<py::list>(out)
+                                   ? "it has " + std::to_string(objects.size())
+                                   : "it is of type " + py::str(py::type::of(out).attr("__name__")).cast<std::string>();
+        throw py::type_error(e.name + "(): out must be " +
+                             (e.returns_scalar ? "an array for " + list
+                                               : "a tuple of " + std::to_string(wanted) + " arrays, one for each field (" +
+                                                     list + ")") +
+                             "; " + it);
+    }
+    std::vector<py::array> arrays;
+    for (std::size_t f = 0; f < wanted; ++f) {
+        const bool is_status = names[f] == "status";
+        const std::size_t components = is_status ? 0 : e.outputs[f].components;
+        const std::string where = e.name + "(): out '" + names[f] + "'";
+        if (!py::isinstance<py::array>(objects[f]))
+            throw py::type_error(where + " must be a NumPy array; it is of type " +
+                                 py::str(py::type::of(objects[f]).attr("__name__")).cast<std::string>());
+        py::array a = py::reinterpret_borrow<py::array>(objects[f]);
+        const py::dtype dtype = a.dtype();
+        const bool native = dtype.attr("isnative").cast<bool>();
+        const std::string type = is_status ? "int64" : float32 ? "float32" : "float64";
+        const bool right = native && (is_status ? dtype.kind() == 'i' && dtype.itemsize() == 8
+                                                : dtype.kind() == 'f' && dtype.itemsize() == (float32 ? 4 : 8));
+        if (!right)
+            throw py::type_error(where + " has dtype " + dtype.attr("name").cast<std::string>() + "; it must be " + type +
+                                 (is_status ? " (the statuses' type)" : " (the type the call computes in)"));
+        shape expected = all;
+        if (components != 0)
+            expected.push_back(static_cast<py::ssize_t>(components));
+        if (shape_of(a) != expected)
+            throw py::value_error(where + " has shape " + text_of(shape_of(a)) + "; the call's pairs give " +
+                                  text_of(expected));
+        if (!a.writeable())
+            throw py::value_error(where + " is read-only");
+        for (std::size_t k = 0; k < std::max<std::size_t>(components, 1); ++k) {
+            const py::array column = components ? a.attr("__getitem__")(py::make_tuple(py::ellipsis(), k)) : a;
+            if (!(column.flags() & py::array::c_style) || !column.attr("flags").attr("aligned").cast<bool>())
+                throw py::value_error(where + " must hold " +
+                                      (components ? "each component's values" : std::string("its values")) +
+                                      " contiguous and aligned over the pairs, as np.empty(" +
+                                      (components ? "(n, " + std::to_string(components) + "), order='F')" : "n)") +
+                                      " does; it does not");
+        }
+        arrays.push_back(a);
+    }
+    return arrays;
+}
+
+// Whether two arrays are the same values: same memory, shape and strides.
+bool same_array(const py::array& a, const py::array& b)
+{
+    return a.data() == b.data() && shape_of(a) == shape_of(b) &&
+           std::equal(a.strides(), a.strides() + a.ndim(), b.strides());
+}
+
+// The caller's outputs share no memory with one another, nor with an argument, except an
+// output with the very array of the input it is written over (in place): a batch loop reads
+// an input after the outputs of earlier pairs are written, so any other overlap would change
+// what it reads.
+void refuse_overlap(const kernel_entry& e, const std::vector<py::array>& given, const std::vector<py::array>& arguments)
+{
+    const py::object may_share = py::module_::import("numpy").attr("may_share_memory");
+    const std::vector<std::string> names = field_names(e);
+    for (std::size_t f = 0; f < given.size(); ++f) {
+        const std::string where = e.name + "(): out '" + names[f] + "'";
+        for (std::size_t g = 0; g < f; ++g)
+            if (may_share(given[f], given[g]).cast<bool>())
+                throw py::value_error(where + " shares memory with out '" + names[g] + "'");
+        for (std::size_t i = 0; i < arguments.size(); ++i) {
+            if (!may_share(given[f], arguments[i]).cast<bool>())
+                continue;
+            const bool in_place = f < e.outputs.size() && e.outputs[f].written_over == static_cast<int>(i) &&
+                                  same_array(given[f], arguments[i]);
+            if (!in_place)
+                throw py::value_error(where + " shares memory with argument '" + e.parameters[i].name +
+                                      "': an output may share memory only with the input it updates, and only as "
+                                      "that very array (in place)");
+        }
+    }
+}
+
 py::object call(const std::vector<kernel_entry>& entries, const py::object& result_type, const py::args& args,
                 const py::kwargs& kwargs)
 {
     bool fast = false;
-    std::vector<py::object> values = arguments_by_parameter(entries.front(), args, kwargs, fast);
+    py::object out_given;
+    std::vector<py::object> values = arguments_by_parameter(entries.front(), args, kwargs, fast, out_given);
     const kernel_entry& e = entry_for(entries, values);
     std::vector<py::array> arrays;
     const bool float32 = in_float32(e, values, arrays);
@@ -181,7 +300,13 @@ py::object call(const std::vector<kernel_entry>& entries, const py::object& resu
         count *= n;
     const py::tuple all_shape = tuple_of(all);
 
-    // The outputs: one row of `count` values per component.
+    // The outputs: the caller's arrays (out=), each component's column where it is, or one
+    // fresh row of `count` values per component.
+    std::vector<py::array> given;
+    if (out_given) {
+        given = given_outputs(e, out_given, all, float32);
+        refuse_overlap(e, given, arrays);
+    }
     std::vector<py::array> rows;
     columns c;
     c.count = static_cast<std::size_t>(count);
@@ -189,13 +314,19 @@ py::object call(const std::vector<kernel_entry>& entries, const py::object& resu
     for (std::size_t o = 0; o < e.outputs.size(); ++o) {
         const output& out = e.outputs[o];
         const py::ssize_t components = static_cast<py::ssize_t>(std::max<std::size_t>(out.components, 1));
+        if (!given.empty()) {
+            for (py::ssize_t k = 0; k < components; ++k)
+                c.out.push_back(static_cast<char*>(given[o].mutable_data()) +
+                                (out.components ? k * given[o].strides(given[o].ndim() - 1) : 0));
+            continue;
+        }
         rows.push_back(numpy.attr("empty")(py::make_tuple(components, count), dtype));
         for (py::ssize_t k = 0; k < components; ++k)
             c.out.push_back(static_cast<char*>(rows.back().mutable_data()) + k * count * item);
     }
     py::array statuses;
     if (e.status) {
-        statuses = numpy.attr("empty")(count, numpy.attr("int64"));
+        statuses = given.size() > e.outputs.size() ? given.back() : py::array(numpy.attr("empty")(count, numpy.attr("int64")));
         c.status = static_cast<impact::status*>(statuses.mutable_data());
     }
 
@@ -232,8 +363,16 @@ py::object call(const std::vector<kernel_entry>& entries, const py::object& resu
         run(c, fast);
     }
 
-    // Each output as an array of the pairs' shape, its components last; one pair's as a
-    // NumPy scalar (or a vector of its components).
+    // The caller's arrays as they were given; else each output as an array of the pairs'
+    // shape, its components last; one pair's as a NumPy scalar (or a vector of its components).
+    if (!given.empty()) {
+        if (e.returns_scalar)
+            return given.front();
+        py::tuple values_of_fields(given.size());
+        for (std::size_t f = 0; f < given.size(); ++f)
+            values_of_fields[f] = given[f];
+        return result_type(*values_of_fields);
+    }
     std::vector<py::object> fields;
     for (std::size_t o = 0; o < e.outputs.size(); ++o) {
         const output& out = e.outputs[o];
@@ -288,6 +427,7 @@ void registry::define(py::module_& m) const
     options.disable_function_signatures();
     const py::object namedtuple = py::module_::import("collections").attr("namedtuple");
     py::list names;
+    py::dict layouts;
     for (std::size_t i = 0; i < entries_.size(); ++i) {
         const std::string& name = entries_[i].name;
         if (std::any_of(entries_.begin(), entries_.begin() + static_cast<long>(i),
@@ -314,8 +454,22 @@ void registry::define(py::module_& m) const
             },
             doc.c_str());
         names.append(name);
+        // Each dimension's parameters and outputs, for impact.batch_arrays (batch.py).
+        py::list forms;
+        for (const kernel_entry& e : same) {
+            py::list parameters, outputs;
+            for (const parameter& p : e.parameters)
+                parameters.append(py::make_tuple(p.name, p.components));
+            for (const output& o : e.outputs)
+                outputs.append(py::make_tuple(o.name, o.components, o.written_over));
+            forms.append(py::dict(py::arg("dimension") = e.dimension, py::arg("parameters") = parameters,
+                                  py::arg("outputs") = outputs, py::arg("status") = e.status,
+                                  py::arg("returns_scalar") = e.returns_scalar, py::arg("batch") = e.batch));
+        }
+        layouts[name.c_str()] = forms;
     }
     m.attr("kernel_names") = names;
+    m.attr("kernel_layouts") = layouts;
 }
 
 void define_statuses(py::module_& m, const std::vector<std::pair<std::string, impact::status>>& statuses)

@@ -15,6 +15,7 @@
 
 #include "impact/common.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -54,6 +55,16 @@ struct columns {
     std::vector<void*> out;
     impact::status* status = nullptr;
 };
+
+/// A batch runner's copy of an input written over into its output's column, before the loop;
+/// none where the caller passed that input's own array as the output (`out=`, in place).
+template <class Real>
+inline void copy_over(const void* in, Real* out, std::size_t count) noexcept
+{
+    const Real* const from = static_cast<const Real*>(in);
+    if (from != out)
+        std::copy_n(from, count, out);
+}
 
 /// Whether some input of the columns is one value shared by every pair (a step of 0): the
 /// scalar loops index the others without a multiplication.

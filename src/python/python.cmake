@@ -57,7 +57,7 @@ set_target_properties(impact_python PROPERTIES
   CXX_VISIBILITY_PRESET hidden
   LIBRARY_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/python/impact)
 
-set(IMPACT_PYTHON_FILES __init__.py derivation.py)
+set(IMPACT_PYTHON_FILES __init__.py batch.py derivation.py)
 set(IMPACT_PYTHON_COPIES)
 foreach(file IN LISTS IMPACT_PYTHON_FILES)
   add_custom_command(

@@ -321,3 +321,136 @@ def test_missing_or_unknown_arguments_are_type_errors():
         impact.collide_line(1.0, 1.0, 1.0, -1.0, 0.5, M=2.0)
     with pytest.raises(TypeError, match="fast must be True or False"):
         impact.collide_line(1.0, 1.0, 1.0, -1.0, 0.5, fast="yes")
+
+
+# ---------------------------------------------------------------------------------------------
+# Outputs the caller gives (out=), in place on the batch layout (impact.batch_arrays).
+
+@needs_reference
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+@pytest.mark.parametrize("fast", [False, True])
+@pytest.mark.parametrize("case", CASES, ids=[c[0] for c in CASES])
+def test_in_place_on_batch_arrays_the_results_are_the_cxx_kernels_bit_for_bit(case, fast, dtype, tmp_path):
+    name, function, draw, outputs, status = case
+    inputs = draw(np.random.default_rng(63), 1000, dtype)
+    expected, expected_status = reference(name, dtype, fast, inputs, outputs, status, tmp_path)
+    dimension = next((x.shape[1] for x in inputs if x.ndim == 2), None)
+    b = impact.batch_arrays(function, 1000, dimension=dimension, dtype=dtype)
+    for array, values in zip(b.inputs, inputs):
+        np.copyto(array, values)
+    result = function(*b.inputs, out=b.out, fast=fast)
+    fields = [result] if not status else list(result)
+    # The fields are the arrays given: an output named after an input is that input's array.
+    given = [b.out] if not status else list(b.out)
+    assert all(f is g for f, g in zip(fields, given))
+    got = components(fields[:-1] if status else fields)
+    for k in range(outputs):
+        assert same_bits(got[k], expected[k]), f"{name} output component {k} in place differs from the C++ kernel"
+    if status:
+        assert np.array_equal(result.status, expected_status)
+    # Into arrays of np.empty, the inputs left as they were.
+    kept = [x.copy() for x in inputs]
+    out = [np.empty_like(np.asfortranarray(f)) for f in fields]
+    again = function(*inputs, out=out[0] if not status else tuple(out), fast=fast)
+    for k, column in enumerate(components([again] if not status else list(again)[:-1])):
+        assert same_bits(column, expected[k])
+    assert all(np.array_equal(x, y) for x, y in zip(inputs, kept))
+
+
+def test_in_place_the_velocities_are_updated_as_eq_8_says():
+    # Eq. 8 with M = 1, m = 3, v_M = 2, v_m = -2, eps = 1/2: J = M m/(M + m) (1 + eps)(v_M - v_m)
+    # = 3/4 * 3/2 * 4 = 9/2; v_M' = 2 - 9/2 = -5/2, v_m' = -2 + 3/2 = -1/2 (all exact in binary).
+    b = impact.batch_arrays("collide_line", 2)
+    b.M[:], b.m[:], b.v_M[:], b.v_m[:], b.eps[:] = [1.0, 1.0], [3.0, 3.0], [2.0, -2.0], [-2.0, 2.0], [0.5, 0.5]
+    r = impact.collide_line(*b.inputs, out=b.out)
+    assert r.v_M is b.v_M and r.J is b.J and r.status is b.status
+    # The second pair separates: refused, its velocities kept and J = 0.
+    assert list(b.v_M) == [-2.5, -2.0] and list(b.v_m) == [-0.5, 2.0] and list(b.J) == [4.5, 0.0]
+    assert list(b.status) == [impact.status.ok, impact.status.separating]
+
+
+def test_batch_arrays_are_laid_out_as_the_cxx_batch_arrays():
+    # common.hpp's rule: every component an array of its own, the first 64 bytes past a page
+    # boundary, each next one 256 bytes further (modulo 4 KiB); the statuses after them.
+    for dtype in (np.float64, np.float32):
+        b = impact.batch_arrays(impact.collide, 1000, dimension=3, dtype=dtype)
+        assert [a.shape for a in b.inputs] == [(1000,), (1000,)] + [(1000, 3)] * 4 + [(1000,)]
+        assert b.out[0] is b.v_M and b.out[1] is b.v_m and b.out[2] is b.status
+        columns = []
+        for a in b.inputs:
+            columns += [a] if a.ndim == 1 else [a[:, k] for k in range(3)]
+        assert all(c.dtype == dtype and c.flags.c_contiguous and c.flags.writeable for c in columns)
+        offsets = [c.ctypes.data % 4096 for c in columns] + [b.status.ctypes.data % 4096]
+        assert offsets == [(64 + 256 * k) % 4096 for k in range(16)]
+        assert b.status.dtype == np.int64 and b.status.shape == (1000,)
+    line = impact.batch_arrays(impact.collide_line, 0)
+    assert line.J.shape == (0,) and len(line.out) == 4 and line.out[2] is line.J
+    loss = impact.batch_arrays(impact.energy_loss, 5)
+    assert loss.out is loss.dE and loss.dE.shape == (5,)
+
+
+def test_a_kernel_returning_a_scalar_writes_into_the_array_given():
+    M, m, v_M, v_m, eps = random_line(np.random.default_rng(7), 50, np.float64)
+    out = np.empty(50)
+    assert impact.energy_loss(M, m, v_M, v_m, eps, out=out) is out
+    assert np.array_equal(out, impact.energy_loss(M, m, v_M, v_m, eps))
+    assert impact.energy_loss(M, m, v_M, v_m, eps, out=(out,)) is out
+
+
+def test_one_pair_writes_into_arrays_of_no_axes():
+    v_M, v_m, J, status = np.array(2.0), np.array(-2.0), np.empty(()), np.empty((), np.int64)
+    impact.collide_line(1.0, 3.0, v_M, v_m, 0.5, out=(v_M, v_m, J, status))
+    assert (float(v_M), float(v_m), float(J), int(status)) == (-2.5, -0.5, 4.5, impact.status.ok)
+
+
+def test_outputs_that_cannot_be_written_are_errors_naming_them():
+    n = 4
+    M, m, v_M, v_m, eps = random_line(np.random.default_rng(8), n, np.float64)
+    J, status = np.empty(n), np.empty(n, np.int64)
+    a, b = v_M.copy(), v_m.copy()
+    with pytest.raises(TypeError, match="out must be a tuple of 4 arrays.*v_M, v_m, J, status.*it has 3"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, J))
+    with pytest.raises(TypeError, match="out must be a tuple.*of type dict"):
+        impact.collide_line(M, m, a, b, eps, out={"v_M": a})
+    with pytest.raises(TypeError, match="out 'J' must be a NumPy array; it is of type list"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, [0.0] * n, status))
+    with pytest.raises(TypeError, match="out 'status' has dtype int32; it must be int64"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, J, status.astype(np.int32)))
+    with pytest.raises(TypeError, match="out 'J' has dtype float32; it must be float64"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, J.astype(np.float32), status))
+    with pytest.raises(ValueError, match=r"out 'J' has shape \(3,\); the call's pairs give \(4,\)"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, J[:3], status))
+    frozen = J.copy()
+    frozen.flags.writeable = False
+    with pytest.raises(ValueError, match="out 'J' is read-only"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, frozen, status))
+    with pytest.raises(ValueError, match="out 'J' must hold its values contiguous"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, np.empty(2 * n)[::2], status))
+    # A vector's components must each be contiguous: (n, 3) in C order is not.
+    C = np.zeros((n, 3))
+    with pytest.raises(ValueError, match=r"out 'v_M' must hold each component's values contiguous.*order='F'"):
+        impact.collide(1.0, 1.0, C, C, C, C, 1.0, out=(np.empty((n, 3)), np.empty((n, 3), order="F"), status))
+    # Overlaps: only an output with the very array of the input it updates.
+    with pytest.raises(ValueError, match="out 'v_M' shares memory with argument 'v_m'"):
+        impact.collide_line(M, m, a, b, eps, out=(b, np.empty(n), J, status))
+    with pytest.raises(ValueError, match="out 'J' shares memory with argument 'eps'"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, eps, status))
+    with pytest.raises(ValueError, match="out 'v_m' shares memory with out 'v_M'"):
+        impact.collide_line(M, m, v_M, v_m, eps, out=(a, a, J, status))
+    with pytest.raises(ValueError, match="out 'v_M' shares memory with argument 'v_M'"):
+        impact.collide_line(M, m, a[::-1], b, eps, out=(a, b, J, status))
+    # Nothing was written by a refused call.
+    assert np.array_equal(a, v_M) and np.array_equal(b, v_m)
+
+
+def test_batch_arrays_refuses_what_it_cannot_lay_out():
+    with pytest.raises(ValueError, match="'collide_plane' is none of the module's kernels"):
+        impact.batch_arrays("collide_plane", 3)
+    with pytest.raises(ValueError, match="collide has forms in dimensions 2 and 3; give dimension="):
+        impact.batch_arrays(impact.collide, 3)
+    with pytest.raises(ValueError, match="collide_line has no form in dimension 3"):
+        impact.batch_arrays(impact.collide_line, 3, dimension=3)
+    with pytest.raises(TypeError, match="dtype must be float32 or float64; it is float16"):
+        impact.batch_arrays(impact.collide_line, 3, dtype=np.float16)
+    with pytest.raises(ValueError, match="count must be a whole number"):
+        impact.batch_arrays(impact.collide_line, -1)
