@@ -43,7 +43,7 @@ std::string docstring(const engine::derivation& d, const engine::kernel& k)
     for (const engine::kernel_parameter& p : k.parameters)
         names.push_back(p.name);
     const std::size_t n = dimension(k);
-    std::string doc = fmt::format("{}({}, *, fast=False): {}{}{}.\n", k.name, fmt::join(names, ", "),
+    std::string doc = fmt::format("{}({}, *, fast=False, out=None): {}{}{}.\n", k.name, fmt::join(names, ", "),
                                   d.source.title.value, d.source.paper ? ", " + d.source.paper->value : "",
                                   n ? fmt::format(" ({} components)", n) : "");
     // Each input by how it is passed, then its quantity: "C_M[..., 0] (C_Mx): ...".
@@ -64,8 +64,10 @@ std::string docstring(const engine::derivation& d, const engine::kernel& k)
         fields.push_back(o.member);
     if (has_status(k))
         fields.push_back("status");
-    doc += returns_scalar(k) ? fmt::format("Returns {} (NaN where the inputs are refused).", k.outputs.front().member)
-                             : fmt::format("Returns the fields {}.", fmt::join(fields, ", "));
+    doc += returns_scalar(k) ? fmt::format("Returns {} (NaN where the inputs are refused); out= an array to write it into.",
+                                           k.outputs.front().member)
+                             : fmt::format("Returns the fields {}; out= a tuple of arrays to write them into.",
+                                           fmt::join(fields, ", "));
     return doc;
 }
 

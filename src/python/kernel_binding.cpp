@@ -8,6 +8,7 @@
 #include <Python.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace py = pybind11;
@@ -210,8 +211,10 @@ std::vector<py::array> given_outputs(const kernel_entry& e, const py::object& ou
         const bool right = native && (is_status ? dtype.kind() == 'i' && dtype.itemsize() == 8
                                                 : dtype.kind() == 'f' && dtype.itemsize() == (float32 ? 4 : 8));
         if (!right)
-            throw py::type_error(where + " has dtype " + dtype.attr("name").cast<std::string>() + "; it must be " + type +
-                                 (is_status ? " (the statuses' type)" : " (the type the call computes in)"));
+            throw py::type_error(where + " has dtype " +
+                                 (native ? dtype.attr("name").cast<std::string>()
+                                         : dtype.attr("str").cast<std::string>() + " (not in the machine's byte order)") +
+                                 "; it must be " + type + (is_status ? " (the statuses' type)" : " (the type the call computes in)"));
         shape expected = all;
         if (components != 0)
             expected.push_back(static_cast<py::ssize_t>(components));
@@ -229,16 +232,31 @@ std::vector<py::array> given_outputs(const kernel_entry& e, const py::object& ou
                                       (components ? "(n, " + std::to_string(components) + "), order='F')" : "n)") +
                                       " does; it does not");
         }
+        // A vector's columns, each contiguous, apart: the loop writes each through a pointer of
+        // its own (common.hpp: the arrays written overlap no other), so components closer than
+        // a column's length, or at one place (a stride of 0), would overwrite each other.
+        py::ssize_t pairs = 1;
+        for (py::ssize_t n : all)
+            pairs *= n;
+        if (components > 1 && pairs > 0 && std::abs(a.strides(a.ndim() - 1)) < pairs * dtype.itemsize())
+            throw py::value_error(where + " has components that overlap one another (its last axis's stride is " +
+                                  std::to_string(a.strides(a.ndim() - 1)) + " bytes, less than a column of " +
+                                  std::to_string(pairs) + " values)");
         arrays.push_back(a);
     }
     return arrays;
 }
 
-// Whether two arrays are the same values: same memory, shape and strides.
+// Whether two arrays are the same values: same memory, shape and strides (a stride of an
+// axis of one element moves nothing).
 bool same_array(const py::array& a, const py::array& b)
 {
-    return a.data() == b.data() && shape_of(a) == shape_of(b) &&
-           std::equal(a.strides(), a.strides() + a.ndim(), b.strides());
+    if (a.data() != b.data() || shape_of(a) != shape_of(b))
+        return false;
+    for (py::ssize_t k = 0; k < a.ndim(); ++k)
+        if (a.shape(k) > 1 && a.strides(k) != b.strides(k))
+            return false;
+    return true;
 }
 
 // The caller's outputs share no memory with one another, nor with an argument, except an

@@ -430,6 +430,17 @@ def test_outputs_that_cannot_be_written_are_errors_naming_them():
     C = np.zeros((n, 3))
     with pytest.raises(ValueError, match=r"out 'v_M' must hold each component's values contiguous.*order='F'"):
         impact.collide(1.0, 1.0, C, C, C, C, 1.0, out=(np.empty((n, 3)), np.empty((n, 3), order="F"), status))
+    # A vector whose components overlap one another (each column written through its own
+    # pointer), or all at one place.
+    base = np.empty(n + 2)
+    with pytest.raises(ValueError, match="out 'v_M' has components that overlap one another"):
+        impact.collide(1.0, 1.0, C, C, C, C, 1.0, out=(np.lib.stride_tricks.as_strided(base, (n, 3), (8, 8)),
+                                                       np.empty((n, 3), order="F"), status))
+    with pytest.raises(ValueError, match="out 'v_M' has components that overlap one another"):
+        impact.collide(1.0, 1.0, C, C, C, C, 1.0, out=(np.lib.stride_tricks.as_strided(base, (n, 3), (8, 0)),
+                                                       np.empty((n, 3), order="F"), status))
+    with pytest.raises(TypeError, match=r"out 'J' has dtype >f8 \(not in the machine's byte order\)"):
+        impact.collide_line(M, m, a, b, eps, out=(a, b, np.empty(n, ">f8"), status))
     # Overlaps: only an output with the very array of the input it updates.
     with pytest.raises(ValueError, match="out 'v_M' shares memory with argument 'v_m'"):
         impact.collide_line(M, m, a, b, eps, out=(b, np.empty(n), J, status))
@@ -450,7 +461,27 @@ def test_batch_arrays_refuses_what_it_cannot_lay_out():
         impact.batch_arrays(impact.collide, 3)
     with pytest.raises(ValueError, match="collide_line has no form in dimension 3"):
         impact.batch_arrays(impact.collide_line, 3, dimension=3)
-    with pytest.raises(TypeError, match="dtype must be float32 or float64; it is float16"):
+    with pytest.raises(TypeError, match="dtype must be float32 or float64 in the machine's byte order; it is float16"):
         impact.batch_arrays(impact.collide_line, 3, dtype=np.float16)
     with pytest.raises(ValueError, match="count must be a whole number"):
         impact.batch_arrays(impact.collide_line, -1)
+    with pytest.raises(TypeError, match="byte order; it is >f8"):
+        impact.batch_arrays(impact.collide_line, 3, dtype=">f8")
+
+
+def test_batch_arrays_name_every_array_and_keep_their_own_attributes():
+    b = impact.batch_arrays(impact.collide_line, 3)
+    assert b["v_M"] is b.v_M and list(b.fields) == ["M", "m", "v_M", "v_m", "eps", "J", "status"]
+    with pytest.raises(AttributeError, match="has no array 'w'"):
+        b.w
+
+
+def test_in_place_on_an_input_of_one_pair_along_an_axis():
+    # The same memory under another stride of an axis of one element is the same array.
+    v = np.array([[1.0, 0.0, 0.0]], order="F")
+    same = np.lib.stride_tricks.as_strided(v, (1, 3), (999 * 8, 8))
+    ok = impact.collide(1.0, 1.0, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], v, [[0.0, 0.0, 0.0]], 1.0)
+    status = np.empty(1, np.int64)
+    w = np.zeros((1, 3), order="F")
+    r = impact.collide(1.0, 1.0, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], v, w, 1.0, out=(same, w, status))
+    assert np.array_equal(r.v_M, ok.v_M) and np.array_equal(w, ok.v_m)

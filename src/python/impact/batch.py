@@ -23,10 +23,11 @@ _PAGE, _APART, _FIRST = 4096, 256, 64
 
 
 class BatchArrays:
-    """The arrays of one kernel's pairs: one attribute for each parameter, for each output
-    named after no input, and ``status`` where the kernel has one; ``inputs``, the parameters'
-    arrays in order; ``out``, the arrays to pass as ``out=`` (an output named after an input is
-    that input's array)."""
+    """The arrays of one kernel's pairs: one for each parameter, for each output named after
+    no input, and ``status`` where the kernel has one, each by its name (``b["v_M"]``, and
+    ``b.v_M`` where the name is none of this object's own: ``kernel``, ``count``, ``dtype``,
+    ``inputs``, ``out``, ``fields``); ``inputs``, the parameters' arrays in order; ``out``, the
+    arrays to pass as ``out=`` (an output named after an input is that input's array)."""
 
     def __init__(self, name, count, dtype, inputs, out, fields):
         self.kernel = name
@@ -34,13 +35,21 @@ class BatchArrays:
         self.dtype = dtype
         self.inputs = inputs
         self.out = out
-        for field, array in fields.items():
-            setattr(self, field, array)
-        self._fields = list(fields)
+        self.fields = dict(fields)
+
+    def __getitem__(self, name):
+        return self.fields[name]
+
+    def __getattr__(self, name):
+        # Called only for names that are not the object's own.
+        fields = self.__dict__.get("fields", {})
+        if name in fields:
+            return fields[name]
+        raise AttributeError(f"impact.BatchArrays of {self.__dict__.get('kernel', '?')} has no array '{name}'")
 
     def __repr__(self):
         return (f"<impact.BatchArrays of {self.kernel} for {self.count} pairs, {self.dtype.name}: "
-                f"{', '.join(self._fields)}>")
+                f"{', '.join(self.fields)}>")
 
 
 def _form(kernel, dimension):
@@ -63,13 +72,14 @@ def _form(kernel, dimension):
 
 
 def batch_arrays(kernel, count, *, dimension=None, dtype=_np.float64):
-    """Arrays for ``count`` pairs of ``kernel`` (a kernel of the module, or its name), laid out
+    """Arrays for ``count`` pairs of ``kernel`` (a kernel of this package, or its name), laid out
     for its batch loop; ``dimension`` picks the form of a kernel with several (collide: 2 or
     3); ``dtype`` float64 or float32. The values are not set (as ``numpy.empty``'s)."""
     name, form = _form(kernel, dimension)
     dtype = _np.dtype(dtype)
-    if dtype not in (_np.dtype(_np.float32), _np.dtype(_np.float64)):
-        raise TypeError(f"impact.batch_arrays(): dtype must be float32 or float64; it is {dtype.name}")
+    if not dtype.isnative or dtype not in (_np.dtype(_np.float32), _np.dtype(_np.float64)):
+        raise TypeError(f"impact.batch_arrays(): dtype must be float32 or float64 in the machine's byte order; "
+                        f"it is {dtype.str if not dtype.isnative else dtype.name}")
     if isinstance(count, bool) or not isinstance(count, (int, _np.integer)) or count < 0:
         raise ValueError(f"impact.batch_arrays(): count must be a whole number of pairs, 0 or more; it is {count!r}")
     count = int(count)
