@@ -18,7 +18,9 @@ packages=(
   texlive-latex-extra              # longtable, booktabs and the rest of the report's packages
   texlive-pictures                 # pgfplots (Figs. 2 and 3)
   latexmk                          # building a report by hand
-  poppler-utils                    # pdftoppm, pdffonts: looking at the report's pages
+  poppler-utils                    # pdftoppm, pdffonts: the report's pages; pdftocairo: the web report's figures as SVG
+  nodejs libjs-katex               # the web report (output/html): its formulas typeset by KaTeX when written
+  chromium                         # the web report read in a real browser (test_web)
   locales                          # de_DE.UTF-8: the tests regenerate under a locale other than C
   python3-sympy bc                 # tests/benchmarks/engine_speed.sh: SymPy beside Impact on the 3D rough spheres
   python3-dev pybind11-dev python3-numpy  # the Python package impact (docs/python.md)

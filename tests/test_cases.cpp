@@ -369,7 +369,9 @@ BOOST_AUTO_TEST_CASE(a_result_by_cases_is_typeset_as_a_cases_environment)
     BOOST_TEST(checked_tex.find("Case by case: case 1 ($y = x$ where $x \\leq 1$): \\textbf{proven} and case 2 "
                                 "($y = 1$ where $x > 1$): \\textbf{proven}.") != std::string::npos,
                checked_tex);
-    BOOST_TEST(tex.find("\\item \\textbf{proven} --- Meets: $y$ is continuous where its cases meet. Where the "
+    // Each check labelled, the web report's anchor for it and its proof.
+    BOOST_TEST(tex.find("\\item\\label{impact:t:check:meets} \\textbf{proven} --- Meets: $y$ is continuous where its "
+                        "cases meet. Where the "
                         "cases meet: cases 1 and 2 at $x = 1$: \\textbf{proven}.") != std::string::npos,
                tex);
 }

@@ -296,7 +296,8 @@ BOOST_AUTO_TEST_CASE(eq8_fragment_is_a_derivation_with_the_papers_numbers)
                              "(v_{m,\\parallel} - v_{M,\\parallel})}{M + m} \\tag*{Eq.~(8), right, first line}"));
     BOOST_TEST(contains(tex, "J &= \\frac{(1 + \\epsilon) M m (v_{M,\\parallel} - v_{m,\\parallel})}{M + m} \\tag*{Eq.~(8), right, third line}"));
     // Checks with status; the paper's Eq. 7 found wanting.
-    BOOST_TEST(contains(tex, "\\item \\textbf{proven} --- Momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
+    BOOST_TEST(contains(tex, "\\item\\label{impact:inelastic_line:check:momentum_conserved} \\textbf{proven} --- "
+                             "Momentum conserved: $M v_{M,\\parallel} + m v_{m,\\parallel} "
                              "= M v'_{M,\\parallel} + m v'_{m,\\parallel}$."));
     // Eq. 7 as the paper prints it, in its own symbols, then as read, its parentheses kept:
     // (v_M - v_m) = -eps(v_M - v_m).

@@ -293,6 +293,16 @@ std::string fragment_writer::claim_lhs(const engine::check_result& c, const writ
     return lhs;
 }
 
+// A check's label, `impact:<id>:check:<name>`, its name's characters other than letters, digits
+// and _ as _: the web report's anchor for it and its proof (report/html.h).
+std::string fragment_writer::check_label(const engine::check_result& c) const
+{
+    std::string name;
+    for (char ch : c.name)
+        name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    return fmt::format("\\label{{{}:check:{}}}", latex_label(d_), name);
+}
+
 std::string fragment_writer::checks() const
 {
     if (d_.checks.empty())
@@ -335,8 +345,8 @@ std::string fragment_writer::checks() const
             // Only a numbered result, shown under its own tag, has a number to refer to.
             const std::optional<std::string> ref = r ? result_ref(*r) : std::nullopt;
             const std::string where = ref ? ", " + *ref + "," : "";
-            out += fmt::format("\\item {} --- the display form of ${}${} equals the derived result", status_text(c.outcome, order_),
-                               q ? math(q->symbol) : latex_text(name), where);
+            out += fmt::format("\\item{} {} --- the display form of ${}${} equals the derived result", check_label(c),
+                               status_text(c.outcome, order_), q ? math(q->symbol) : latex_text(name), where);
             std::string also;
             for (const engine::check_result& same : d_.checks)
                 if (const engine::result* of = restated(same); of && of->name == name)
@@ -347,15 +357,15 @@ std::string fragment_writer::checks() const
         }
         if (c.continuity) {
             const engine::quantity* q = d_.symbols.find(c.cases_of);
-            out += fmt::format("\\item {} --- {}: ${}$ is continuous where its cases meet.", status_text(c.outcome, order_),
-                               heading(c.name), q ? math(q->symbol) : latex_text(c.cases_of));
+            out += fmt::format("\\item{} {} --- {}: ${}$ is continuous where its cases meet.", check_label(c),
+                               status_text(c.outcome, order_), heading(c.name), q ? math(q->symbol) : latex_text(c.cases_of));
             if (!c.because.empty())
                 out += " " + sentence_end(capitalised(latex_prose(c.because)));
             out += cases_text(c) + "\n";
             continue;
         }
         const written_form& w = c.written;
-        out += fmt::format("\\item {} --- {}: ", status_text(c.outcome, order_), heading(c.name));
+        out += fmt::format("\\item{} {} --- {}: ", check_label(c), status_text(c.outcome, order_), heading(c.name));
         // The claim as the file writes it, nothing merged (cos θ (−sin θ) + sin θ cos θ = 0,
         // not 0 = 0); a limit, and a claim too wide for the line, as GiNaC reads it.
         const std::string inline_math = w.tree() && !c.limit && !wants_display(claim_math(c, order_, &w))

@@ -197,6 +197,7 @@ private:
                         const written_form* w) const;
     std::string claim_lhs(const engine::check_result& c, const written_form* w) const;
     std::string checks() const;
+    std::string check_label(const engine::check_result& c) const;
     bool displayed(const GiNaC::ex& e, const written_form* w) const;
     std::string form(const GiNaC::ex& e, const written_form* w) const;
     std::string paper() const;

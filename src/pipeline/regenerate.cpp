@@ -9,6 +9,7 @@
 #include "pipeline/progress.h"
 #include "pipeline/workers.h"
 #include "pipeline/z3_workers.h"
+#include "report/html.h"
 #include "report/pdf.h"
 #include "report/report.h"
 #include "spec/outline.h"
@@ -125,10 +126,12 @@ struct report_result {
     file_set files;
     std::map<std::string, cache::counts> used;
     double seconds = 0;
+    double web_seconds = 0;   ///< of `seconds`, the web pages'
 
     std::string text() const
     {
-        std::string out = fmt::format("{}\n{}\n", std::llround(seconds * 1e6), used.size());
+        std::string out = fmt::format("{} {}\n{}\n", std::llround(seconds * 1e6), std::llround(web_seconds * 1e6),
+                                      used.size());
         for (const auto& [kind, c] : used)
             out += fmt::format("{} {} {} {} {}\n", c.hits, c.misses, c.rejected, c.unusable, kind);
         return out + packed(files);
@@ -139,10 +142,11 @@ struct report_result {
         report_result r;
         std::istringstream in(text);
         in.imbue(std::locale::classic());
-        long long microseconds = 0;
+        long long microseconds = 0, web = 0;
         std::size_t kinds = 0;
-        in >> microseconds >> kinds;
+        in >> microseconds >> web >> kinds;
         r.seconds = static_cast<double>(microseconds) * 1e-6;
+        r.web_seconds = static_cast<double>(web) * 1e-6;
         in.get();   // the end of the line
         for (std::size_t i = 0; i < kinds; ++i) {
             std::string kind;
@@ -393,7 +397,7 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     file_set report_files = report::report_sources(lib, &z3);
     file_set sources = report_files;
     for (const auto& [path, contents] : files)
-        if (path.rfind("latex/", 0) == 0)
+        if (path.rfind("latex/", 0) == 0 || path == "derivations.json")
             sources[path] = contents;
     clock.lap("figures' tables, report.tex");
     // Compiled in a process beside this one (workers.h says why not a thread), which sends
@@ -409,9 +413,18 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
         const std::map<std::string, cache::counts> before = shared ? shared->statistics() : std::map<std::string, cache::counts>{};
         report::compile_options compiling;
         compiling.store = shared;
-        const file_set made = report::compile_report(sources, compiling);
+        file_set made = report::compile_report(sources, compiling);
+        // The web pages, from the same sources and the figures' PDFs (report/html.h).
+        const auto web_began = std::chrono::steady_clock::now();
+        file_set with_pdfs = sources;
+        for (const auto& [path, contents] : made)
+            with_pdfs[path] = contents;
+        for (auto& [path, contents] : report::html_site(with_pdfs, shared))
+            made[path] = std::move(contents);
+        const auto done = std::chrono::steady_clock::now();
         return report_result{made, shared ? counts_since(before, shared->statistics()) : std::map<std::string, cache::counts>{},
-                             std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count()}
+                             std::chrono::duration<double>(done - began).count(),
+                             std::chrono::duration<double>(done - web_began).count()}
             .text();
     };
     beside report_process(std::move(compile));
@@ -429,7 +442,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
             store->add_counts(kind, more);
     const double report_seconds = compiled.seconds;
     clock.lap("waiting for the figures and report");
-    result.stages.emplace_back("figures and report PDFs (beside the kernel forms)", report_seconds);
+    result.stages.emplace_back("figures, report PDFs and web pages (beside the kernel forms)", report_seconds);
+    result.stages.emplace_back("  of which the web pages (html/)", compiled.web_seconds);
     // A kernel that misses its accuracy bound fails the regeneration like a failed check.
     if (!missed.empty()) {
         result.failures = missed;

@@ -33,24 +33,21 @@ std::string auxiliary_state(const fs::path& folder)
     return state;
 }
 
-// A scratch folder removed when done with.
-struct scratch_folder {
-    fs::path path;
-    scratch_folder()
-    {
-        std::string pattern = (fs::temp_directory_path() / "impact-latex-XXXXXX").string();
-        if (!::mkdtemp(pattern.data()))
-            throw std::runtime_error("cannot create a scratch folder for LaTeX");
-        path = pattern;
-    }
-    ~scratch_folder()
-    {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-};
-
 } // namespace
+
+scratch_folder::scratch_folder(const std::string& purpose)
+{
+    std::string pattern = (fs::temp_directory_path() / ("impact-" + purpose + "-XXXXXX")).string();
+    if (!::mkdtemp(pattern.data()))
+        throw std::runtime_error("cannot create a scratch folder for " + purpose);
+    path = pattern;
+}
+
+scratch_folder::~scratch_folder()
+{
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+}
 
 bool have_pdflatex()
 {
@@ -127,7 +124,7 @@ std::vector<std::string> latex_overfull_boxes(const std::string& log, double tol
 
 pdf_build compile_latex(const std::map<std::string, std::string>& files, const std::string& main)
 {
-    const scratch_folder scratch;
+    const scratch_folder scratch("latex");
     for (const auto& [relative, contents] : files) {
         const fs::path path = scratch.path / relative;
         fs::create_directories(path.parent_path());

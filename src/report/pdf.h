@@ -7,6 +7,7 @@
 // the report's \pdfinfoomitdate and \pdftrailerid{} the PDF is the same bytes every time.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -30,6 +31,16 @@ std::vector<std::string> latex_log_problems(const std::string& log);
 
 /// Overfull boxes in a log wider than `tolerance_pt`, one line each.
 std::vector<std::string> latex_overfull_boxes(const std::string& log, double tolerance_pt);
+
+/// A folder of its own under the system's temporary folder (`impact-<purpose>-XXXXXX`),
+/// removed with everything in it when done with.
+struct scratch_folder {
+    explicit scratch_folder(const std::string& purpose);
+    ~scratch_folder();
+    scratch_folder(const scratch_folder&) = delete;
+    scratch_folder& operator=(const scratch_folder&) = delete;
+    std::filesystem::path path;
+};
 
 /// True when pdflatex can be run.
 bool have_pdflatex();

@@ -1,0 +1,200 @@
+"""The web report read in a real browser (docs/web.md): every page of each folder given is
+opened in headless Chromium, and the test fails where
+
+- raw TeX shows in the rendered text (a backslash command or a $...$ outside the typeset
+  formulas), or a rendering error is on the page (KaTeX's .katex-error, LaTeXML's .ltx_ERROR);
+- an internal link or anchor does not resolve (a page, an id on it, a file beside the pages),
+  an image does not load, or a link leaves the folder for the network;
+- a page cannot be read: an empty body, a style sheet missing or empty.
+
+With --screenshot PAGE PNG it also takes a picture of one page (for docs/).
+
+Usage: check_pages.py [--screenshot PAGE PNG] FOLDER...
+       check_pages.py --self-test PAGE   (each fault, put in a copy of PAGE, must be reported)
+Run by CTest as test_web, with the Chromium of Debian's package `chromium`.
+"""
+import html
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import urllib.parse
+
+HARNESS = r"""<!DOCTYPE html><html><head><meta charset="utf-8"></head><body>
+<pre id="results">running</pre>
+<script>
+const pages = PAGES;
+function load(url) {
+  return new Promise(resolve => {
+    const frame = document.createElement('iframe');
+    frame.style.width = '1100px';
+    frame.style.height = '900px';
+    frame.onload = () => resolve(frame);
+    frame.src = url;
+    document.body.appendChild(frame);
+  });
+}
+function texShown(doc) {
+  // Text a reader sees: outside each formula's MathML (hidden, for screen readers) and its
+  // TeX annotation.
+  const found = [];
+  const walker = doc.createTreeWalker(doc.body, NodeFilter.SHOW_TEXT);
+  for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+    const hidden = node.parentElement.closest('.katex-mathml, annotation, script, style');
+    if (hidden) continue;
+    const text = node.textContent;
+    const m = text.match(/\\[A-Za-z]+|\\[{}$_^&%#]|\$[^$\s][^$]*\$/);
+    if (m) found.push(m[0] + ' in "' + text.trim().slice(0, 80) + '"');
+  }
+  return found;
+}
+(async () => {
+  const problems = [];
+  const files = [];
+  const docs = {};
+  for (const page of pages) docs[page] = (await load(page)).contentDocument;
+  for (const page of pages) {
+    const doc = docs[page];
+    const say = what => problems.push(page + ': ' + what);
+    if (!doc || !doc.body || doc.body.innerText.trim().length < 100) { say('an empty page'); continue; }
+    const sheets = doc.querySelectorAll('link[rel=stylesheet]');
+    if (sheets.length < 2) say('fewer style sheets than KaTeX\'s and Impact\'s');
+    for (const link of sheets) {
+      if (!link.sheet) { say('the style sheet ' + link.getAttribute('href') + ' did not load'); continue; }
+      let rules = 0;
+      try { rules = link.sheet.cssRules.length; } catch (e) { say('the style sheet ' + link.getAttribute('href') + ' cannot be read'); }
+      if (rules === 0) say('the style sheet ' + link.getAttribute('href') + ' is empty');
+    }
+    for (const t of texShown(doc)) say('raw TeX shows: ' + t);
+    for (const e of doc.querySelectorAll('.katex-error, .ltx_ERROR')) say('a rendering error: ' + e.textContent.slice(0, 80));
+    if (doc.querySelectorAll('.katex').length === 0) say('no typeset formula');
+    for (const img of doc.images) if (!img.complete || img.naturalWidth === 0) say('the image ' + img.getAttribute('src') + ' did not load');
+    for (const a of doc.querySelectorAll('a[href]')) {
+      const href = a.getAttribute('href');
+      const url = new URL(href, doc.URL);
+      if (url.protocol !== 'file:') { say('a link off the folder: ' + href); continue; }
+      const path = decodeURIComponent(url.pathname);
+      if (path.endsWith('.html')) {
+        const target = pages.find(p => decodeURIComponent(new URL(p).pathname) === path);
+        if (!target) { say('a link to a page that is not there: ' + href); continue; }
+        const id = decodeURIComponent(url.hash.slice(1));
+        if (id && !docs[target].getElementById(id)) say('a link to an anchor that is not there: ' + href);
+      } else {
+        files.push([page, href, path]);
+      }
+    }
+  }
+  document.getElementById('results').textContent = JSON.stringify({problems: problems, files: files, pages: pages.length});
+})();
+</script></body></html>
+"""
+
+
+def chromium():
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        if shutil.which(name):
+            return shutil.which(name)
+    sys.exit("check_pages.py: no Chromium (install Debian's package chromium: scripts/setup.sh)")
+
+
+BROWSER_FLAGS = ["--headless=new", "--no-sandbox", "--disable-gpu", "--hide-scrollbars", "--no-first-run",
+                 "--disable-extensions", "--mute-audio"]
+
+
+def check(folders):
+    pages = []
+    for folder in folders:
+        for name in sorted(os.listdir(folder)):
+            if name.endswith(".html"):
+                pages.append("file://" + urllib.parse.quote(os.path.abspath(os.path.join(folder, name))))
+    if not pages:
+        return ["no page in " + ", ".join(folders)], 0
+    with tempfile.TemporaryDirectory(prefix="impact-web-") as scratch:
+        harness = os.path.join(scratch, "harness.html")
+        with open(harness, "w") as f:
+            f.write(HARNESS.replace("PAGES", json.dumps(pages)))
+        profile = os.path.join(scratch, "profile")
+        run = subprocess.run([chromium(), *BROWSER_FLAGS, "--user-data-dir=" + profile,
+                              "--allow-file-access-from-files", "--virtual-time-budget=120000", "--dump-dom",
+                              "file://" + harness], capture_output=True, text=True, timeout=600)
+    found = re.search(r'<pre id="results">(.*?)</pre>', run.stdout, re.S)
+    if not found or found.group(1) == "running":
+        return ["the pages could not be checked: Chromium gave no results (" + run.stderr.strip()[-300:] + ")"], 0
+    results = json.loads(html.unescape(found.group(1)))
+    problems = results["problems"]
+    for page, href, path in results["files"]:
+        if not os.path.isfile(path):
+            problems.append(f"{page}: a link to a file that is not there: {href}")
+    return problems, results["pages"]
+
+
+def screenshot(page, png):
+    with tempfile.TemporaryDirectory(prefix="impact-web-") as scratch:
+        subprocess.run([chromium(), *BROWSER_FLAGS, "--user-data-dir=" + os.path.join(scratch, "profile"),
+                        "--window-size=1100,1400", "--screenshot=" + os.path.abspath(png),
+                        "file://" + urllib.parse.quote(os.path.abspath(page))],
+                       capture_output=True, text=True, timeout=300, check=True)
+    if not os.path.isfile(png) or os.path.getsize(png) < 10000:
+        sys.exit(f"check_pages.py: no screenshot of {page}")
+
+
+def self_test(model):
+    """The checker itself, on pages broken on purpose from `model` (a page of a folder with its
+    katex/ and impact.css beside it): each fault must be reported."""
+    folder = os.path.dirname(os.path.abspath(model))
+    with open(model) as f:
+        good = f.read()
+    faults = {
+        "raw_tex.html": (good.replace("<main>", "<main><p>The velocity \\frac{J}{M} and $v_M$ as source.</p>", 1),
+                         "raw TeX shows: \\frac"),
+        "dollars.html": (good.replace("<main>", "<main><p>Then $v_M = 1$ here.</p>", 1), "raw TeX shows: $v_M = 1$"),
+        "katex_error.html": (good.replace("<main>", '<main><span class="katex-error">\\fra</span>', 1),
+                             "a rendering error"),
+        "anchor.html": (good.replace("<main>", '<main><a href="#no-such-result">x</a>', 1),
+                        "a link to an anchor that is not there: #no-such-result"),
+        "page.html": (good.replace("<main>", '<main><a href="no_such_page.html#x">x</a>', 1),
+                      "a link to a page that is not there: no_such_page.html#x"),
+        "file.html": (good.replace("<main>", '<main><a href="figures/none.svg">x</a>', 1),
+                      "a link to a file that is not there: figures/none.svg"),
+        "network.html": (good.replace("<main>", '<main><a href="https://example.org/">x</a>', 1),
+                         "a link off the folder: https://example.org/"),
+        "style.html": (good.replace('href="impact.css"', 'href="missing.css"'), "the style sheet missing.css"),
+        "empty.html": (re.sub(r"<body>.*</body>", "<body></body>", good, flags=re.S), "an empty page"),
+    }
+    with tempfile.TemporaryDirectory(prefix="impact-web-faults-") as scratch:
+        shutil.copytree(os.path.join(folder, "katex"), os.path.join(scratch, "katex"))
+        shutil.copy(os.path.join(folder, "impact.css"), scratch)
+        for name, (text, _) in faults.items():
+            with open(os.path.join(scratch, name), "w") as f:
+                f.write(text)
+        problems, _ = check([scratch])
+    missed = [f"{name}: not reported: {what}" for name, (_, what) in faults.items()
+              if not any(f"/{name}: " in p and what in p for p in problems)]
+    for m in missed:
+        print(m)
+    print(f"check_pages.py --self-test: {len(faults) - len(missed)} of {len(faults)} faults reported")
+    return not missed
+
+
+def main():
+    args = sys.argv[1:]
+    if args[:1] == ["--self-test"]:
+        sys.exit(0 if self_test(args[1]) else 1)
+    shot = None
+    if args[:1] == ["--screenshot"]:
+        shot, args = args[1:3], args[3:]
+    problems, count = check(args)
+    for p in problems:
+        print(p)
+    print(f"check_pages.py: {count} pages read in Chromium, {len(problems)} problems")
+    if shot:
+        screenshot(*shot)
+        print(f"check_pages.py: {shot[0]} pictured in {shot[1]}")
+    sys.exit(1 if problems else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,25 @@
+# test_web (docs/web.md): the web report read in headless Chromium. The paper's pages
+# (output/html, which test_cli_output proves current) and a folder of one's own
+# (tests/examples, regenerated here) are opened and checked by check_pages.py; the checker is
+# first shown to report each fault put in a page on purpose; a picture of one derivation page
+# is taken (web_inelastic_line.png in the build tree, docs/web_inelastic_line.png its copy).
+# Arguments: IMPACT (the command), PYTHON, SOURCE (the project), WORK (a scratch folder).
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+execute_process(COMMAND ${PYTHON} ${SOURCE}/tests/web/check_pages.py --self-test ${SOURCE}/output/html/energy_loss.html
+                RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "check_pages.py does not report the faults put in a page")
+endif()
+execute_process(COMMAND ${IMPACT} regenerate --derivations ${SOURCE}/tests/examples --output ${WORK}/examples
+                WORKING_DIRECTORY ${WORK} RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "the examples' folder does not regenerate")
+endif()
+execute_process(COMMAND ${PYTHON} ${SOURCE}/tests/web/check_pages.py
+                        --screenshot ${SOURCE}/output/html/inelastic_line.html ${WORK}/web_inelastic_line.png
+                        ${SOURCE}/output/html ${WORK}/examples/html
+                RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "the web pages do not read well in Chromium (above)")
+endif()
