@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 
 namespace impact::emit {
 namespace {
@@ -32,31 +33,82 @@ std::string table_cell(const std::string& text)
     return out;
 }
 
-// The table of one form's outputs: each output in each type, against `bound`.
-std::string accuracy_table(const verify::kernel_plan& plan, const std::vector<verify::emitted_accuracy>& emitted,
-                           std::array<double, 3> engine::kernel_output::*bound,
-                           std::array<std::string, 3> engine::kernel_output::*because,
-                           std::size_t verify::component_plan::*form, const engine::term_order& order)
+// One row of a form's accuracy table: an output component in one type.
+struct accuracy_row {
+    std::string output;
+    const char* type = "";
+    const verify::accuracy* measured = nullptr;
+    double bound = 0;
+    bool set = false;    ///< the bound set by the derivation file
+    std::string scale;
+    std::string form;
+};
+
+// The rows of one form's table: each output in each type, against `bound`.
+std::vector<accuracy_row> accuracy_rows(const verify::kernel_plan& plan, const std::vector<verify::emitted_accuracy>& emitted,
+                                        std::array<double, 3> engine::kernel_output::*bound,
+                                        std::array<std::string, 3> engine::kernel_output::*because,
+                                        std::size_t verify::component_plan::*form, const engine::term_order& order)
 {
     const engine::kernel& k = *plan.kernel;
-    std::string out = "| output | type | samples | mean ulps | max ulps | bound | worst regime | scale | form |\n"
-                      "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    std::vector<accuracy_row> rows;
     const auto components = verify::components(k);
     for (std::size_t i = 0; i < plan.components.size(); ++i) {
         const verify::component_plan& cp = plan.components[i];
         const engine::kernel_output& o = k.outputs[components[i].first];
         const verify::emitted_accuracy& measured = emitted[i];
-        const auto& types = engine::kernel_output::types;
         const verify::accuracy* in_type[] = {&measured.in_float, &measured.in_double, &measured.in_long_double};
-        for (std::size_t t = 0; t < 3; ++t) {
-            const verify::accuracy& a = *in_type[t];
-            out += fmt::format("| `{}` | {} | {} | {:.3f} | {:.2f} | {:g}{} | {} | {} | {} |\n", cp.name, types[t],
-                               a.samples, a.mean_ulps, a.max_ulps, (o.*bound)[t], (o.*because)[t].empty() ? "" : " (set)",
-                               table_cell(a.worst_regime), table_cell(scale_text(o, order)),
-                               table_cell(cp.candidates[cp.*form].label));
-        }
+        for (std::size_t t = 0; t < 3; ++t)
+            rows.push_back({cp.name, engine::kernel_output::types[t], in_type[t], (o.*bound)[t], !(o.*because)[t].empty(),
+                            scale_text(o, order), cp.candidates[cp.*form].label});
     }
+    return rows;
+}
+
+// The table of one form's outputs, in Markdown.
+std::string accuracy_table(const verify::kernel_plan& plan, const std::vector<verify::emitted_accuracy>& emitted,
+                           std::array<double, 3> engine::kernel_output::*bound,
+                           std::array<std::string, 3> engine::kernel_output::*because,
+                           std::size_t verify::component_plan::*form, const engine::term_order& order)
+{
+    std::string out = "| output | type | samples | mean ulps | max ulps | bound | worst regime | scale | form |\n"
+                      "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const accuracy_row& r : accuracy_rows(plan, emitted, bound, because, form, order))
+        out += fmt::format("| `{}` | {} | {} | {:.3f} | {:.2f} | {:g}{} | {} | {} | {} |\n", r.output, r.type,
+                           r.measured->samples, r.measured->mean_ulps, r.measured->max_ulps, r.bound, r.set ? " (set)" : "",
+                           table_cell(r.measured->worst_regime), table_cell(r.scale), table_cell(r.form));
     return out;
+}
+
+// Text escaped for HTML.
+std::string html_text(const std::string& text)
+{
+    std::string out;
+    for (char c : text)
+        out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
+    return out;
+}
+
+// The same table in HTML, each output's first row anchored `kernel-<kernel>-<output>`
+// (`anchor` the kernel's part).
+std::string accuracy_table_html(const std::vector<accuracy_row>& rows, const std::string& anchor)
+{
+    std::string out = "<div class=\"table\"><table class=\"accuracy\">\n<thead><tr><th>output</th><th>type</th>"
+                      "<th>samples</th><th>mean ulps</th><th>max ulps</th><th>bound</th><th>worst regime</th>"
+                      "<th>scale</th><th>form</th></tr></thead>\n<tbody>\n";
+    std::string previous;
+    for (const accuracy_row& r : rows) {
+        const std::string id = r.output != previous && !anchor.empty()
+                                   ? fmt::format(" id=\"{}-{}\"", anchor, html_text(r.output))
+                                   : std::string();
+        previous = r.output;
+        out += fmt::format("<tr{}><td><code>{}</code></td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{:.2f}</td>"
+                           "<td>{:g}{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+                           id, html_text(r.output), r.type, r.measured->samples, r.measured->mean_ulps,
+                           r.measured->max_ulps, r.bound, r.set ? " (set)" : "", html_text(r.measured->worst_regime),
+                           html_text(r.scale), html_text(r.form));
+    }
+    return out + "</tbody>\n</table></div>\n";
 }
 
 // One form's point on the kernel's speed/accuracy frontier: its cost, counted, and its
@@ -214,6 +266,49 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
     if (z3)
         out += proofs_section(*z3);
     return out;
+}
+
+std::map<std::string, std::string> verification_html(const std::vector<const engine::derivation*>& derivations,
+                                                    const std::vector<const verify::kernel_plan*>& plans)
+{
+    std::map<std::string, std::string> pages;
+    for (const engine::derivation* d : derivations) {
+        std::string out;
+        for (const verify::kernel_plan* plan : plans) {
+            const engine::kernel& k = *plan->kernel;
+            if (k.where.file != d->source.file)
+                continue;
+            const engine::term_order order(k.input_symbols());
+            const std::string anchor = k.limit_of.empty() ? "kernel-" + k.name
+                                                          : fmt::format("kernel-{}-fixed-{}", k.limit_of, k.fixed_mass);
+            out += k.limit_of.empty()
+                       ? fmt::format("<h4 id=\"{}\"><code>impact::{}</code></h4>\n", anchor, html_text(k.name))
+                       : fmt::format("<h4 id=\"{}\"><code>impact::{}</code> with <code>{}</code> = +infinity (a fixed "
+                                     "sphere)</h4>\n",
+                                     anchor, html_text(k.limit_of), html_text(k.fixed_mass));
+            out += "<p>Each output measured against CLN to 60 digits on inputs drawn where it is hard to compute, in "
+                   "ulps of its scale (<a href=\"../verification.md\">verification.md</a> holds every kernel's, with the "
+                   "regimes drawn and the candidates each form was chosen from).</p>\n";
+            out += accuracy_table_html(accuracy_rows(*plan, plan->emitted, &engine::kernel_output::bound_ulps,
+                                                     &engine::kernel_output::bound_because,
+                                                     &verify::component_plan::chosen, order),
+                                       anchor);
+            if (verify::fast_is_accurate(*plan)) {
+                out += "<p>The fast form (<code>impact::fast</code>) is the accurate one.</p>\n";
+            } else {
+                out += "<p>The fast form (<code>impact::fast</code>):</p>\n";
+                out += accuracy_table_html(accuracy_rows(*plan, plan->fast_emitted, &engine::kernel_output::fast_bound_ulps,
+                                                         &engine::kernel_output::fast_bound_because,
+                                                         &verify::component_plan::fastest, order),
+                                           "");
+            }
+        }
+        if (!out.empty())
+            pages[d->id()] = "<h3 id=\"kernels\">Kernels.</h3>\n<p>Generated from this derivation into "
+                             "<code>output/kernels/impact/</code>, verified as below.</p>\n" +
+                             out;
+    }
+    return pages;
 }
 
 } // namespace impact::emit

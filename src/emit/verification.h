@@ -8,6 +8,7 @@
 #include "verify/choice.h"
 #include "verify/proofs.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,5 +20,12 @@ namespace impact::emit {
 /// re-checked: how many it confirmed, per derivation and in all, and each one it did not, with why.
 std::string verification_markdown(const std::vector<const verify::kernel_plan*>& plans, const std::string& folder,
                                   bool of_the_paper, const verify::proof_checks* z3 = nullptr);
+
+/// The kernels of each derivation as its web page shows them (report/html.h), by derivation id:
+/// each kernel (and its fixed spheres') anchored `kernel-<name>` (`kernel-<name>-fixed-<mass>`),
+/// each output's first row `kernel-<name>-<output>`, with the accuracy table of each form.
+/// HTML, nothing for a derivation without kernels.
+std::map<std::string, std::string> verification_html(const std::vector<const engine::derivation*>& derivations,
+                                                    const std::vector<const verify::kernel_plan*>& plans);
 
 } // namespace impact::emit

@@ -241,7 +241,8 @@ void add_documents(const library& lib, file_set& files, const verify::proof_chec
 // The kernel headers and verification.md, the choice of forms taken from `store` where it
 // can be; the outputs that miss their bounds.
 std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwatch& clock, const kernel_options& how,
-                                     progress* shown, const verify::proof_checks* z3 = nullptr)
+                                     progress* shown, const verify::proof_checks* z3 = nullptr,
+                                     std::map<std::string, std::string>* web_kernels = nullptr)
 {
     const char* task = "kernel forms";
     const std::vector<verify::kernel_plan> plans = verify::plan_kernels(
@@ -264,6 +265,8 @@ std::vector<std::string> add_kernels(const library& lib, file_set& files, stopwa
         all.push_back(&p);
     files["verification.md"] = emit::verification_markdown(all, engine::source_folder(lib.in_order()),
                                                                emit::of_the_paper(lib.in_order()), z3);
+    if (web_kernels)
+        *web_kernels = emit::verification_html(lib.in_order(), all);
     clock.lap("verification report (numeric)");
     return verify::missed_bounds(plans);
 }
@@ -429,14 +432,27 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
     };
     beside report_process(std::move(compile));
     shown.say("report", "compiling the figures and the report");
+    std::map<std::string, std::string> web_kernels;
     const std::vector<std::string> missed =
-        add_kernels(lib, files, clock, kernel_options{shared, options.jobs}, &shown, &z3);
+        add_kernels(lib, files, clock, kernel_options{shared, options.jobs}, &shown, &z3, &web_kernels);
     const report_result compiled = report_result::read(report_process.get());
     shown.done("report");
     for (auto& [path, contents] : report_files)
         files[path] = std::move(contents);
     for (const auto& [path, contents] : compiled.files)
         files[path] = contents;
+    // Each derivation's page gets its kernels and their accuracy, measured beside the pages.
+    for (auto& [path, contents] : files) {
+        if (path.rfind("html/", 0) != 0)
+            continue;
+        const std::size_t marker = contents.find(report::html_kernels_marker);
+        if (marker == std::string::npos)
+            continue;
+        const std::string id = path.substr(5, path.size() - 10);
+        const auto section = web_kernels.find(id);
+        contents.replace(marker, std::char_traits<char>::length(report::html_kernels_marker),
+                         section == web_kernels.end() ? "" : section->second);
+    }
     if (store)
         for (const auto& [kind, more] : compiled.used)
             store->add_counts(kind, more);

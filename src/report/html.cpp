@@ -49,8 +49,10 @@ li.labelled { list-style: none; }
 li.labelled .item-label { font-weight: bold; margin-left: -2.2rem; display: inline-block; width: 2.2rem; }
 .table { overflow-x: auto; }
 table.errata { border-collapse: collapse; font-size: 0.85rem; min-width: 60rem; }
-table.errata th, table.errata td { border-top: 1px solid #ddd; padding: 0.3rem 0.4rem; vertical-align: top; text-align: left; }
-table.errata thead th { border-bottom: 2px solid #888; }
+table.errata th, table.errata td, table.accuracy th, table.accuracy td { border-top: 1px solid #ddd; padding: 0.3rem 0.4rem; vertical-align: top; text-align: left; }
+table.errata thead th, table.accuracy thead th { border-bottom: 2px solid #888; }
+table.accuracy { border-collapse: collapse; font-size: 0.8rem; }
+h4 { font-size: 1rem; margin: 1.2rem 0 0.4rem; }
 figure { margin: 1.5rem 0; }
 figure img { max-width: 100%; height: auto; }
 figcaption { font-size: 0.95rem; }
@@ -380,6 +382,7 @@ file_map make_site(const file_map& sources)
             for (const auto& derivation : derivations)
                 if (derivation.contains("id") && derivation["id"] == id)
                     add_proofs(body, derivation);
+            body += html_kernels_marker;
             // Its neighbours in the report's order.
             for (std::size_t d = 0; d < inputs.derivations.size(); ++d)
                 if (inputs.derivations[d].first == m.path) {

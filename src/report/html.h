@@ -28,4 +28,8 @@ namespace impact::report {
 std::map<std::string, std::string> html_site(const std::map<std::string, std::string>& sources,
                                              cache::store* store = nullptr);
 
+/// Where a derivation's page takes its kernels and their accuracy (emit::verification_html),
+/// which are measured beside the pages: the pipeline puts them in its place.
+inline constexpr const char* html_kernels_marker = "<!--kernels-->\n";
+
 } // namespace impact::report

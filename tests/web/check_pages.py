@@ -9,7 +9,10 @@ opened in headless Chromium, and the test fails where
 
 With --screenshot PAGE PNG it also takes a picture of one page (for docs/).
 
-Usage: check_pages.py [--screenshot PAGE PNG] FOLDER...
+With --expect PAGE#ANCHOR (repeated), each such address must be on its page: the lasting
+addresses docs/web.md promises.
+
+Usage: check_pages.py [--screenshot PAGE PNG] [--expect PAGE#ANCHOR]... FOLDER...
        check_pages.py --self-test PAGE   (each fault, put in a copy of PAGE, must be reported)
 Run by CTest as test_web, with the Chromium of Debian's package `chromium`.
 """
@@ -27,6 +30,7 @@ HARNESS = r"""<!DOCTYPE html><html><head><meta charset="utf-8"></head><body>
 <pre id="results">running</pre>
 <script>
 const pages = PAGES;
+const expected = EXPECTED;
 function load(url) {
   return new Promise(resolve => {
     const frame = document.createElement('iframe');
@@ -87,6 +91,8 @@ function texShown(doc) {
       }
     }
   }
+  for (const [page, id] of expected)
+    if (!docs[page] || !docs[page].getElementById(id)) problems.push(page + ': the address #' + id + ' is not there');
   document.getElementById('results').textContent = JSON.stringify({problems: problems, files: files, pages: pages.length});
 })();
 </script></body></html>
@@ -104,18 +110,25 @@ BROWSER_FLAGS = ["--headless=new", "--no-sandbox", "--disable-gpu", "--hide-scro
                  "--disable-extensions", "--mute-audio"]
 
 
-def check(folders):
+def url_of(path):
+    return "file://" + urllib.parse.quote(os.path.abspath(path))
+
+
+def check(folders, expected=()):
+    """The problems of the pages of `folders`; `expected` holds addresses (a page's path and
+    an anchor on it) that must be there."""
     pages = []
     for folder in folders:
         for name in sorted(os.listdir(folder)):
             if name.endswith(".html"):
-                pages.append("file://" + urllib.parse.quote(os.path.abspath(os.path.join(folder, name))))
+                pages.append(url_of(os.path.join(folder, name)))
     if not pages:
         return ["no page in " + ", ".join(folders)], 0
     with tempfile.TemporaryDirectory(prefix="impact-web-") as scratch:
         harness = os.path.join(scratch, "harness.html")
         with open(harness, "w") as f:
-            f.write(HARNESS.replace("PAGES", json.dumps(pages)))
+            f.write(HARNESS.replace("PAGES", json.dumps(pages)).replace(
+                "EXPECTED", json.dumps([[url_of(page), anchor] for page, anchor in expected])))
         profile = os.path.join(scratch, "profile")
         run = subprocess.run([chromium(), *BROWSER_FLAGS, "--user-data-dir=" + profile,
                               "--allow-file-access-from-files", "--virtual-time-budget=120000", "--dump-dom",
@@ -184,9 +197,15 @@ def main():
     if args[:1] == ["--self-test"]:
         sys.exit(0 if self_test(args[1]) else 1)
     shot = None
-    if args[:1] == ["--screenshot"]:
-        shot, args = args[1:3], args[3:]
-    problems, count = check(args)
+    expected = []
+    while args[:1] in (["--screenshot"], ["--expect"]):
+        if args[0] == "--screenshot":
+            shot, args = args[1:3], args[3:]
+        else:
+            page, _, anchor = args[1].partition("#")
+            expected.append((page, anchor))
+            args = args[2:]
+    problems, count = check(args, expected)
     for p in problems:
         print(p)
     print(f"check_pages.py: {count} pages read in Chromium, {len(problems)} problems")
