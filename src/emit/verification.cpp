@@ -1,5 +1,7 @@
 #include "emit/verification.h"
 
+#include "emit/cxx_parts.h"
+
 #include "engine/expr/infix.h"
 
 #include <fmt/format.h>
@@ -308,6 +310,37 @@ std::map<std::string, std::string> verification_html(const std::vector<const eng
                              "<code>output/kernels/impact/</code>, verified as below.</p>\n" +
                              out;
     }
+    // The index's summary: each kernel's largest error over its outputs, in each type and form.
+    std::string rows;
+    for (const engine::derivation* d : derivations)
+        for (const verify::kernel_plan* plan : plans) {
+            const engine::kernel& k = *plan->kernel;
+            if (k.where.file != d->source.file)
+                continue;
+            double worst[2][3] = {};
+            for (int form = 0; form < 2; ++form)
+                for (const verify::emitted_accuracy& e : form ? plan->fast_emitted : plan->emitted) {
+                    worst[form][0] = std::max(worst[form][0], e.in_float.max_ulps);
+                    worst[form][1] = std::max(worst[form][1], e.in_double.max_ulps);
+                    worst[form][2] = std::max(worst[form][2], e.in_long_double.max_ulps);
+                }
+            const std::size_t n = cxx_detail::dimension(k);
+            const std::string name = (k.limit_of.empty() ? k.name : fmt::format("{} ({} fixed)", k.limit_of, k.fixed_mass)) +
+                                     (n ? fmt::format(", {}D", n) : "");
+            const std::string anchor = k.limit_of.empty() ? "kernel-" + k.name
+                                                          : fmt::format("kernel-{}-fixed-{}", k.limit_of, k.fixed_mass);
+            rows += fmt::format("<tr><td><a href=\"{}.html#{}\"><code>{}</code></a></td><td>{}</td><td>{:.2f}</td>"
+                                "<td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td></tr>\n",
+                                html_text(d->id()), html_text(anchor), html_text(name), k.outputs.size(), worst[0][0],
+                                worst[0][1], worst[0][2], worst[1][0], worst[1][1], worst[1][2]);
+        }
+    if (!rows.empty())
+        pages[""] = "<p>Every kernel's largest error over its outputs, in ulps of their scales, measured against CLN "
+                    "(each output's bound is 4 ulps in the accurate form and 16 in the fast one unless its derivation "
+                    "file sets another):</p>\n<div class=\"table\"><table class=\"accuracy\">\n<thead><tr>"
+                    "<th>kernel</th><th>outputs</th><th>float</th><th>double</th><th>long double</th><th>fast, float</th>"
+                    "<th>fast, double</th><th>fast, long double</th></tr></thead>\n<tbody>\n" +
+                    rows + "</tbody>\n</table></div>\n";
     return pages;
 }
 

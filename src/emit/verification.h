@@ -24,7 +24,8 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
 /// The kernels of each derivation as its web page shows them (report/html.h), by derivation id:
 /// each kernel (and its fixed spheres') anchored `kernel-<name>` (`kernel-<name>-fixed-<mass>`),
 /// each output's first row `kernel-<name>-<output>`, with the accuracy table of each form.
-/// HTML, nothing for a derivation without kernels.
+/// HTML, nothing for a derivation without kernels; under "" the index's summary, each kernel's
+/// largest error in each type and form, linked to its section.
 std::map<std::string, std::string> verification_html(const std::vector<const engine::derivation*>& derivations,
                                                     const std::vector<const verify::kernel_plan*>& plans);
 

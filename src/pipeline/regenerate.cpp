@@ -448,7 +448,8 @@ regeneration regenerate(const fs::path& derivations, const fs::path& output, con
         const std::size_t marker = contents.find(report::html_kernels_marker);
         if (marker == std::string::npos)
             continue;
-        const std::string id = path.substr(5, path.size() - 10);
+        // index.html takes the kernels' summary (the entry named "").
+        const std::string id = path == "html/index.html" ? "" : path.substr(5, path.size() - 10);
         const auto section = web_kernels.find(id);
         contents.replace(marker, std::char_traits<char>::length(report::html_kernels_marker),
                          section == web_kernels.end() ? "" : section->second);

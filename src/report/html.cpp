@@ -167,6 +167,52 @@ void add_proofs(std::string& body, const nlohmann::json& derivation)
     }
 }
 
+// The verification summary of index.html: each derivation's checks by status, with conditions
+// or not, and how many Z3 confirmed, from derivations.json; the kernels' summary follows,
+// put in by the pipeline once they are measured (html_kernels_marker).
+std::string verification_summary(const nlohmann::json& derivations)
+{
+    struct counts {
+        long checks = 0, proven = 0, where = 0, sampled = 0, failed = 0, z3 = 0;
+    };
+    auto row = [](const std::string& name, const counts& c) {
+        return fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", name,
+                           c.checks, c.proven, c.where, c.sampled, c.failed, c.z3);
+    };
+    std::string rows;
+    counts all;
+    for (const auto& d : derivations) {
+        if (!d.contains("id") || !d["id"].is_string() || !d.contains("checks") || !d["checks"].is_array())
+            continue;
+        counts c;
+        for (const auto& check : d["checks"]) {
+            const std::string status = check.contains("status") && check["status"].is_string() ? check["status"].get<std::string>() : "";
+            ++c.checks;
+            if (status.rfind("proven", 0) == 0)
+                ++(status.size() > 6 ? c.where : c.proven);
+            else if (status.rfind("sampled", 0) == 0)
+                ++c.sampled;
+            else
+                ++c.failed;
+            if (check.contains("z3") && check["z3"] == "confirmed")
+                ++c.z3;
+        }
+        for (long counts::*field : {&counts::checks, &counts::proven, &counts::where, &counts::sampled, &counts::failed, &counts::z3})
+            all.*field += c.*field;
+        const std::string id = d["id"].get<std::string>();
+        const std::string title = d.contains("title") && d["title"].is_string() ? d["title"].get<std::string>() : id;
+        rows += row(fmt::format("<a href=\"{}.html\">{}</a>", html::escaped(id), html::escaped(title)), c);
+    }
+    return "<h2 id=\"verification\">Verification</h2>\n"
+           "<p>Every check of every derivation, by its status: proven (for every value its quantities may take), proven "
+           "where the conditions it states hold (a divisor not zero), only sampled, or failed; and how many of them Z3 "
+           "confirmed on its own (<a href=\"../verification.md\">verification.md</a> says why the others were not "
+           "given to it).</p>\n<div class=\"table\"><table class=\"accuracy\">\n<thead><tr><th>derivation</th>"
+           "<th>checks</th><th>proven</th><th>proven, where stated</th><th>sampled</th><th>failed</th>"
+           "<th>confirmed by Z3</th></tr></thead>\n<tbody>\n" +
+           rows + row("<strong>all</strong>", all) + "</tbody>\n</table></div>\n" + html_kernels_marker;
+}
+
 // A page's whole document: its head (title, style sheets), a bar of links, the body, a footer.
 std::string document(const std::string& title, const std::string& body, const std::string& links)
 {
@@ -375,7 +421,8 @@ file_map make_site(const file_map& sources)
                 body.replace(t, 13, header);
             const std::size_t c = body.find("<!--contents-->\n");
             if (c != std::string::npos)
-                body.replace(c, 16, "<h2 id=\"contents\">Contents</h2>\n" + contents_of(body));
+                body.replace(c, 16, "<h2 id=\"contents\">Contents</h2>\n" + contents_of(body) +
+                                        verification_summary(derivations));
             page_title = title.front();
         } else {
             const std::string id = m.path.substr(0, m.path.size() - 5);

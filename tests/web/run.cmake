@@ -28,6 +28,7 @@ execute_process(COMMAND ${PYTHON} ${SOURCE}/tests/web/check_pages.py
                         --expect ${html}/inelastic_line.html\#kernel-collide_line-J
                         --expect ${html}/inelastic_line.html\#kernel-collide_line-fixed-M
                         --expect ${html}/index.html\#errata
+                        --expect ${html}/index.html\#verification
                         --expect ${html}/index.html\#fig-billiard
                         --expect ${html}/index.html\#errata-eq-12-third-line
                         --expect ${html}/index.html\#errata-eq-14-first-line-2
