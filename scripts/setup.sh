@@ -10,6 +10,7 @@ packages=(
   libtomlplusplus-dev              # derivation files
   libcli11-dev                     # the command line
   nlohmann-json3-dev               # derivations.json
+  libssl-dev                       # SHA-256 (OpenSSL's libcrypto): the cache's entries named and checked
   z3 libz3-dev                     # every proof re-checked by Z3 (libz3 in-process; z3 runs output/proofs/*.smt2)
   clang libclang-rt-14-dev         # the fuzzer (libFuzzer) and sanitized builds in CI; batch loops vectorised by Clang
   g++-aarch64-linux-gnu qemu-user  # batch loops vectorised for AArch64, its kernel tests run there (kernels_aarch64)

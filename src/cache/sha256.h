@@ -1,7 +1,11 @@
-// SHA-256 (FIPS 180-4), for naming cache entries by their inputs and checking their contents.
+// SHA-256 (FIPS 180-4), for naming cache entries by their inputs and checking their contents:
+// OpenSSL's (libcrypto), which uses the processor's SHA instructions where it has them
+// (1.8 GB/s on the project's machine, against about 0.2 GB/s for the hand-written one it
+// replaced, which took 27 % of a warm regeneration checking the 27 MB of the output's entry).
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -11,16 +15,16 @@ namespace impact::cache {
 class sha256 {
 public:
     sha256();
+    ~sha256();
+    sha256(const sha256&) = delete;
+    sha256& operator=(const sha256&) = delete;
     sha256& add(std::string_view bytes);
     /// The digest as 64 lowercase hexadecimal digits. The object is spent afterwards.
     std::string hex();
 
 private:
-    void block(const unsigned char* p);
-    std::uint32_t h_[8];
-    unsigned char buffer_[64];
-    std::size_t buffered_ = 0;
-    std::uint64_t length_ = 0;
+    struct context;
+    std::unique_ptr<context> context_;
 };
 
 /// The SHA-256 of `bytes`, in hexadecimal.
