@@ -27,6 +27,33 @@
 namespace impact::cache {
 namespace fs = std::filesystem;
 
+std::string packed(const std::map<std::string, std::string>& files)
+{
+    std::string out;
+    for (const auto& [path, contents] : files)
+        out += fmt::format("{} {}\n{}{}", path.size(), contents.size(), path, contents);
+    return out;
+}
+
+std::optional<std::map<std::string, std::string>> unpacked(const std::string& text)
+{
+    std::map<std::string, std::string> files;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t line = text.find('\n', at);
+        if (line == std::string::npos)
+            return std::nullopt;
+        std::istringstream header(text.substr(at, line - at));
+        std::size_t path_size = 0, contents_size = 0;
+        if (!(header >> path_size >> contents_size) || line + 1 + path_size + contents_size > text.size())
+            return std::nullopt;
+        files[text.substr(line + 1, path_size)] = text.substr(line + 1 + path_size, contents_size);
+        at = line + 1 + path_size + contents_size;
+    }
+    return files;
+}
+
+
 namespace {
 
 constexpr const char* tag_name = "CACHEDIR.TAG";

@@ -50,6 +50,11 @@ inline constexpr std::uintmax_t default_limit = 256ull << 20;
 /// e.g. `512M`, `2G`, `1048576`; nothing when `text` is not one (or is too large).
 std::optional<std::uintmax_t> parse_size(const std::string& text);
 
+/// Files (path → contents) as one text for an entry, and back: for each file, its path's and
+/// contents' lengths, then both. Nothing when the text is not such a one.
+std::string packed(const std::map<std::string, std::string>& files);
+std::optional<std::map<std::string, std::string>> unpacked(const std::string& text);
+
 class store {
 public:
     /// Opens the cache folder, creating it when missing. Throws `impact::error` naming

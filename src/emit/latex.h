@@ -132,6 +132,10 @@ std::string latex_fragment(const engine::derivation& d, const engine::derived_by
 /// The file name of a derivation's fragment (`<id>.tex`).
 std::string latex_fragment_name(const engine::derivation& d);
 
+/// A check's name as its label in the fragment writes it (`impact:<id>:check:<name>`), each
+/// character other than a letter, a digit or _ as _: the web report's anchor `check-<name>`.
+std::string check_label_name(const std::string& check);
+
 /// The label of a derivation's fragment, for \ref (`impact:<id>`).
 std::string latex_label(const engine::derivation& d);
 

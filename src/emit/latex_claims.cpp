@@ -297,10 +297,7 @@ std::string fragment_writer::claim_lhs(const engine::check_result& c, const writ
 // and _ as _: the web report's anchor for it and its proof (report/html.h).
 std::string fragment_writer::check_label(const engine::check_result& c) const
 {
-    std::string name;
-    for (char ch : c.name)
-        name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-    return fmt::format("\\label{{{}:check:{}}}", latex_label(d_), name);
+    return fmt::format("\\label{{{}:check:{}}}", latex_label(d_), check_label_name(c.name));
 }
 
 std::string fragment_writer::checks() const
@@ -420,6 +417,14 @@ std::string fragment_writer::checks() const
 }
 
 } // namespace detail
+
+std::string check_label_name(const std::string& check)
+{
+    std::string name;
+    for (char ch : check)
+        name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    return name;
+}
 
 std::string claim_math(const engine::check_result& c, const term_order& order, const written_form* written)
 {

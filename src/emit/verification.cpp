@@ -270,6 +270,17 @@ std::string verification_markdown(const std::vector<const verify::kernel_plan*>&
     return out;
 }
 
+namespace {
+
+// A kernel's anchor on its derivation's page: `kernel-<name>`, `kernel-<name>-fixed-<mass>`
+// for a fixed sphere's.
+std::string kernel_anchor(const engine::kernel& k)
+{
+    return k.limit_of.empty() ? "kernel-" + k.name : fmt::format("kernel-{}-fixed-{}", k.limit_of, k.fixed_mass);
+}
+
+} // namespace
+
 std::map<std::string, std::string> verification_html(const std::vector<const engine::derivation*>& derivations,
                                                     const std::vector<const verify::kernel_plan*>& plans)
 {
@@ -281,8 +292,7 @@ std::map<std::string, std::string> verification_html(const std::vector<const eng
             if (k.where.file != d->source.file)
                 continue;
             const engine::term_order order(k.input_symbols());
-            const std::string anchor = k.limit_of.empty() ? "kernel-" + k.name
-                                                          : fmt::format("kernel-{}-fixed-{}", k.limit_of, k.fixed_mass);
+            const std::string anchor = kernel_anchor(k);
             out += k.limit_of.empty()
                        ? fmt::format("<h4 id=\"{}\"><code>impact::{}</code></h4>\n", anchor, html_text(k.name))
                        : fmt::format("<h4 id=\"{}\"><code>impact::{}</code> with <code>{}</code> = +infinity (a fixed "
@@ -327,8 +337,7 @@ std::map<std::string, std::string> verification_html(const std::vector<const eng
             const std::size_t n = cxx_detail::dimension(k);
             const std::string name = (k.limit_of.empty() ? k.name : fmt::format("{} ({} fixed)", k.limit_of, k.fixed_mass)) +
                                      (n ? fmt::format(", {}D", n) : "");
-            const std::string anchor = k.limit_of.empty() ? "kernel-" + k.name
-                                                          : fmt::format("kernel-{}-fixed-{}", k.limit_of, k.fixed_mass);
+            const std::string anchor = kernel_anchor(k);
             rows += fmt::format("<tr><td><a href=\"{}.html#{}\"><code>{}</code></a></td><td>{}</td><td>{:.2f}</td>"
                                 "<td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td></tr>\n",
                                 html_text(d->id()), html_text(anchor), html_text(name), k.outputs.size(), worst[0][0],

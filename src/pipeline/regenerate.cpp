@@ -28,6 +28,9 @@
 namespace impact::pipeline {
 namespace fs = std::filesystem;
 
+using cache::packed;
+using cache::unpacked;
+
 namespace {
 
 // Records the wall time between laps, when asked to.
@@ -91,33 +94,6 @@ engine::derivation_store derivations_kept(cache::store* store)
 }
 
 namespace {
-
-// Files as one text: for each, its path's and contents' lengths, then both.
-std::string packed(const file_set& files)
-{
-    std::string out;
-    for (const auto& [path, contents] : files)
-        out += fmt::format("{} {}\n{}{}", path.size(), contents.size(), path, contents);
-    return out;
-}
-
-std::optional<file_set> unpacked(const std::string& text)
-{
-    file_set files;
-    std::size_t at = 0;
-    while (at < text.size()) {
-        const std::size_t line = text.find('\n', at);
-        if (line == std::string::npos)
-            return std::nullopt;
-        std::istringstream header(text.substr(at, line - at));
-        std::size_t path_size = 0, contents_size = 0;
-        if (!(header >> path_size >> contents_size) || line + 1 + path_size + contents_size > text.size())
-            return std::nullopt;
-        files[text.substr(line + 1, path_size)] = text.substr(line + 1 + path_size, contents_size);
-        at = line + 1 + path_size + contents_size;
-    }
-    return files;
-}
 
 // What the report's process sends back: the PDFs, the seconds it took, and the cache
 // entries it found and made (its time in microseconds, then a line per kind of entry, its

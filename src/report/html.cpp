@@ -4,6 +4,8 @@
 #include "report/katex.h"
 #include "report/pdf.h"
 
+#include "emit/latex.h"
+
 #include "cache/store.h"
 #include "spec/error.h"
 
@@ -60,39 +62,6 @@ footer { margin-top: 3rem; font-size: 0.85rem; color: #555; border-top: 1px soli
 ul.contents, ul.contents ul { list-style: none; padding-left: 1.2rem; }
 )";
 
-// The files made into one text and back, for the cache: "<length>:<path>\n<length>:<contents>".
-std::string packed(const file_map& files)
-{
-    std::string out;
-    for (const auto& [path, contents] : files)
-        out += fmt::format("{}:{}\n{}:{}", path.size(), path, contents.size(), contents);
-    return out;
-}
-
-std::optional<file_map> unpacked(const std::string& text)
-{
-    file_map files;
-    std::size_t at = 0;
-    auto field = [&](std::string& into) {
-        const std::size_t colon = text.find(':', at);
-        if (colon == std::string::npos)
-            return false;
-        const std::size_t length = std::strtoull(text.c_str() + at, nullptr, 10);
-        if (colon + 1 + length > text.size())
-            return false;
-        into = text.substr(colon + 1, length);
-        at = colon + 1 + length;
-        return true;
-    };
-    while (at < text.size()) {
-        std::string path, contents;
-        if (!field(path) || at >= text.size() || text[at++] != '\n' || !field(contents))
-            return std::nullopt;
-        files.emplace(std::move(path), std::move(contents));
-    }
-    return files;
-}
-
 // A check's proof as `impact derive --json` gives it (derivations.json): how it was established,
 // the sign proof's lines, its cases, the conditions it needs, and what Z3 said, in a
 // <details> element the reader opens.
@@ -142,10 +111,7 @@ void add_proofs(std::string& body, const nlohmann::json& derivation)
     for (const auto& check : derivation["checks"]) {
         if (!check.contains("name") || !check["name"].is_string())
             continue;
-        std::string name;
-        for (char ch : check["name"].get<std::string>())
-            name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-        const std::size_t item = body.find("<li id=\"check-" + name + "\">");
+        const std::size_t item = body.find("<li id=\"check-" + emit::check_label_name(check["name"].get<std::string>()) + "\">");
         if (item == std::string::npos)
             continue;   // said with another check (a display form stated twice)
         // The item's end: its </li>, past the items of lists inside it.
@@ -342,10 +308,7 @@ file_map figures_as_svg(const file_map& sources)
         const std::string command = fmt::format("pdftocairo -svg '{}' '{}' > /dev/null 2>&1", in.string(), svg.string());
         if (std::system(command.c_str()) != 0)
             throw error({"output/" + pdf, 0, 0}, "pdftocairo cannot make an SVG of this figure");
-        std::ifstream read(svg, std::ios::binary);
-        std::ostringstream text;
-        text << read.rdbuf();
-        out["html/" + fs::path(pdf).replace_extension(".svg").string()] = text.str();
+        out["html/" + fs::path(pdf).replace_extension(".svg").string()] = read_file(svg);
     }
     return out;
 }
@@ -461,14 +424,14 @@ file_map html_site(const file_map& sources, cache::store* store)
                 path.rfind("figures/", 0) == 0)
                 key += fmt::format("{}:{}\n{}:{}\n", path.size(), path, contents.size(), contents);
         if (auto entry = store->get("HTML", key)) {
-            if (auto files = unpacked(*entry))
+            if (auto files = cache::unpacked(*entry))
                 return std::move(*files);
             store->unusable("HTML");
         }
     }
     file_map files = make_site(sources);
     if (store)
-        store->put("HTML", key, packed(files));
+        store->put("HTML", key, cache::packed(files));
     return files;
 }
 

@@ -17,14 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_file(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The script node runs: the formulas on its standard input, each `D` (displayed) or `I`
 // (inline) and its TeX, ended by a NUL; on its standard output each one's HTML, or \x01 and
 // KaTeX's message, ended by a NUL. Errors are not tolerated (throwOnError), so that no

@@ -12,8 +12,6 @@
 namespace impact::report {
 namespace fs = std::filesystem;
 
-namespace {
-
 std::string read_file(const fs::path& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -21,6 +19,8 @@ std::string read_file(const fs::path& path)
     bytes << in.rdbuf();
     return bytes.str();
 }
+
+namespace {
 
 // The auxiliary files whose change means another run is needed.
 std::string auxiliary_state(const fs::path& folder)

@@ -32,6 +32,9 @@ std::vector<std::string> latex_log_problems(const std::string& log);
 /// Overfull boxes in a log wider than `tolerance_pt`, one line each.
 std::vector<std::string> latex_overfull_boxes(const std::string& log, double tolerance_pt);
 
+/// A file's bytes (empty when it cannot be read).
+std::string read_file(const std::filesystem::path& path);
+
 /// A folder of its own under the system's temporary folder (`impact-<purpose>-XXXXXX`),
 /// removed with everything in it when done with.
 struct scratch_folder {
