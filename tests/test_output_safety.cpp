@@ -13,6 +13,7 @@
 
 #include "pipeline/output_folder.h"
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,6 +21,7 @@
 #include <cstring>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -308,6 +310,36 @@ BOOST_AUTO_TEST_CASE(a_leftover_beside_the_output_that_is_not_impacts_is_refused
                    "is not what it left there; move it away");
 }
 
+// Written again with the same bytes, a file of Impact's is the same file (linked into the new
+// folder, its time kept); a file whose bytes changed is a new file, so that a link a user made
+// to the old one keeps the old bytes.
+BOOST_AUTO_TEST_CASE(a_file_written_again_unchanged_is_kept_as_it_was_and_a_changed_one_is_new)
+{
+    project p;
+    const fs::path folder = p.root / "output";
+    impact::pipeline::replace_folder(folder, {{"same.txt", "same\n"}, {"sub/changes.txt", "old\n"}}, false);
+    const auto an_hour_ago = fs::last_write_time(folder / "same.txt") - std::chrono::hours(1);
+    fs::last_write_time(folder / "same.txt", an_hour_ago);
+    fs::create_hard_link(folder / "sub/changes.txt", p.root / "my_copy.txt");
+    struct stat same_before {}, changes_before {};
+    BOOST_TEST_REQUIRE(::stat((folder / "same.txt").c_str(), &same_before) == 0);
+    BOOST_TEST_REQUIRE(::stat((folder / "sub/changes.txt").c_str(), &changes_before) == 0);
+
+    impact::pipeline::replace_folder(folder, {{"same.txt", "same\n"}, {"sub/changes.txt", "new\n"}}, false);
+    struct stat same_after {}, changes_after {};
+    BOOST_TEST_REQUIRE(::stat((folder / "same.txt").c_str(), &same_after) == 0);
+    BOOST_TEST_REQUIRE(::stat((folder / "sub/changes.txt").c_str(), &changes_after) == 0);
+    BOOST_TEST(same_after.st_ino == same_before.st_ino);
+    BOOST_TEST((fs::last_write_time(folder / "same.txt") == an_hour_ago));
+    BOOST_TEST(same_after.st_nlink == 1u);   // the old folder's name for it is gone
+    BOOST_TEST(changes_after.st_ino != changes_before.st_ino);
+    BOOST_TEST(p.read("output/sub/changes.txt") == "new\n");
+    BOOST_TEST(p.read("my_copy.txt") == "old\n");
+    BOOST_TEST(p.read("output/same.txt") == "same\n");
+    BOOST_TEST(!p.has("output.impact-old"));
+    BOOST_TEST(!p.has("output.impact-new"));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(runs_killed_part_way)
@@ -418,14 +450,21 @@ BOOST_AUTO_TEST_CASE(a_full_disk_is_an_error_and_the_output_survives)
     BOOST_TEST_REQUIRE(can_mount(), "this machine does not let a test mount a small disk (unshare -rm)");
     project p;
     BOOST_TEST_REQUIRE(p.impact("regenerate").status == 0);
-    // A disk half again as large as the previous output (its files in 4 KiB pages, as a tmpfs
-    // holds them: about 130 KiB here, the report's PDF most of it), holding it: the new one,
-    // written beside it, cannot fit. What the disk holds after is copied out.
+    // A disk a little larger than the previous output (its files in 4 KiB pages, as a tmpfs
+    // holds them), holding it. The derivation is retitled, so the new output's report, pages
+    // and fragment differ (about 100 KiB): written beside the old one, they cannot fit. The
+    // files that did not change are linked, not written, and need no room. What the disk holds
+    // after is copied out.
     std::uintmax_t pages = 0;
     for (const auto& entry : fs::recursive_directory_iterator(p.root / "output"))
         if (entry.is_regular_file())
             pages += (entry.file_size() + 4095) / 4096;
-    const std::uintmax_t disk_kib = std::max<std::uintmax_t>(64, (pages * 3 / 2 + 1) * 4);
+    const std::uintmax_t disk_kib = (pages + 8) * 4;
+    {
+        std::string retitled = good("first");
+        retitled.replace(retitled.find("a good derivation"), 17, "a good derivation, retitled");
+        p.write("derivations/a.toml", retitled);
+    }
     fs::create_directories(p.root / "disk");
     const std::string script =
         "mount -t tmpfs -o size=" + std::to_string(disk_kib) + "k tmpfs disk && cp -a output disk/ && "
