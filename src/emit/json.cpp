@@ -205,18 +205,17 @@ json derivation_json(const engine::derivation& d, const verify::proof_checks* z3
     return j;
 }
 
-} // namespace
-
-std::string derivation_json_with_latex(const engine::derivation& d)
+// Each result's displayed form and each check's claim as the report typesets them
+// ("latex"), and each check's proof typeset ("proof_latex").
+void add_typeset(json& j, const engine::derivation& d)
 {
     const term_order order = engine::declaration_order(d.symbols);
-    json j = derivation_json(d, nullptr);
-    // Each result's displayed form and each check's claim as the report typesets them.
     j["latex"] = json::object();
     for (const engine::result& r : d.results)
         j["latex"][r.name] = latex(r.display, order);
     // A check stated in words (a quantity's cases continuous, or covering every value) as
     // the report words it.
+    const std::vector<std::string> proofs = checks_proofs_latex(d);
     std::size_t c = 0;
     for (const engine::check_result* check : d.all_checks()) {
         std::string typeset;
@@ -238,8 +237,18 @@ std::string derivation_json_with_latex(const engine::derivation& d)
         } else {
             typeset = checked_claim_latex(*check, order);
         }
-        j["checks"][c++]["latex"] = typeset;
+        j["checks"][c]["latex"] = typeset;
+        j["checks"][c]["proof_latex"] = proofs[c];
+        ++c;
     }
+}
+
+} // namespace
+
+std::string derivation_json_with_latex(const engine::derivation& d)
+{
+    json j = derivation_json(d, nullptr);
+    add_typeset(j, d);
     return j.dump(2) + "\n";
 }
 
@@ -248,8 +257,11 @@ std::string derivations_json(const std::vector<const engine::derivation*>& deriv
     json j;
     j["generator"] = "Impact";
     j["derivations"] = json::array();
-    for (const engine::derivation* d : derivations)
-        j["derivations"].push_back(derivation_json(*d, z3));
+    for (const engine::derivation* d : derivations) {
+        json one = derivation_json(*d, z3);
+        add_typeset(one, *d);
+        j["derivations"].push_back(std::move(one));
+    }
     return j.dump(2) + "\n";
 }
 

@@ -72,6 +72,11 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
 /// taken at $v_{1,\parallel} \to k v_{1,\parallel}$").
 std::string checked_claim_latex(const engine::check_result& c, const term_order& order);
 
+/// Each check of `d` (in the order of `all_checks`), its proof typeset for a reader who
+/// opens it: the claim, how it was established, the sign of each factor, a limit's method,
+/// the cases, the conditions (emit/latex_claims.cpp). Paragraphs and a list.
+std::vector<std::string> checks_proofs_latex(const engine::derivation& d);
+
 /// A comparison as the report shows it: a claim the paper states in degrees ("the scatter
 /// angle being 90°") is answered in degrees, each rational multiple of π in what was checked
 /// and found (θ = π/2, "not π/2") set as that many degrees (θ = 90°, "not 90°"). Any other

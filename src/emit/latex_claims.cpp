@@ -224,6 +224,60 @@ std::string fragment_writer::cases_text(const engine::check_result& c) const
     return fmt::format(" {}: {}.", c.continuity ? "Where the cases meet" : "Case by case", listing(parts));
 }
 
+std::string fragment_writer::proof(const engine::check_result& c) const
+{
+    using basis = engine::verdict::basis;
+    const engine::verdict& v = c.outcome;
+    std::string out;
+    if (c.continuity) {
+        const engine::quantity* q = d_.symbols.find(c.cases_of);
+        out += fmt::format("Claim: ${}$ is continuous where its cases meet.\n\n", q ? math(q->symbol) : latex_text(c.cases_of));
+    } else if (!GiNaC::is_a<GiNaC::relational>(c.stated)) {
+        out += "Claim: " + sentence_end(latex_text(c.statement)) + "\n\n";
+    } else {
+        out += "Claim: " + checked_claim_latex(c, order_) + ".\n\n";
+    }
+    if (c.limit_by)
+        out += "The limit is established " + limit_text(*c.limit_by) + ".\n\n";
+    if (const std::string by_cases = cases_text(c); !by_cases.empty())
+        out += by_cases.substr(1) + "\n\n";
+    if (v.how == basis::zero_difference)
+        out += "The difference of its sides normalises to zero.\n\n";
+    else if (v.how == basis::signs && !v.residual.is_zero())
+        out += fmt::format("The difference of its sides is ${}$, and the sign of each of its factors follows from "
+                           "the domains.\n\n",
+                           math(textbook(v.residual).value));
+    else if (v.how == basis::identity && !v.residual.is_zero() && v.method.rfind("by ", 0) == 0 &&
+             v.method.find(" the difference of the sides is ") != std::string::npos)
+        // "by the display form of dE the difference of the sides is ...": the identity named.
+        out += fmt::format("Through an identity proven before it ({}), the difference of its sides is ${}$, and the "
+                           "sign of each of its factors follows from the domains.\n\n",
+                           latex_text(v.method.substr(3, v.method.find(" the difference of the sides is ") - 3)),
+                           math(textbook(v.residual).value));
+    else if (!v.typeset.parts.empty())
+        out += "How: " + finding_latex(v.typeset, order_) + ".\n\n";
+    else if (!v.method.empty() && c.parts.empty() && !c.limit_by)
+        out += "How: " + sentence_end(latex_text(v.method)) + "\n\n";
+    if (!v.proof.empty()) {
+        out += "From the signs of its factors:\n\\begin{itemize}\n";
+        for (const engine::sign_step& step : v.proof)
+            out += "\\item " + sign_text(step) + "\n";
+        out += "\\end{itemize}\n";
+    }
+    if (!v.where.empty())
+        out += "It holds where " + conditions_latex(v.where, order_) + ", which the domains do not prove.\n\n";
+    if (!v.defined.empty())
+        out += fmt::format("Defined wherever it is used: {} ({}), proven from the domains.\n\n",
+                           conditions_latex(v.defined, order_),
+                           v.defined.size() == 1 ? "a divisor, root or logarithm" : "its divisors, roots and logarithms");
+    if (v.what == engine::verdict::status::sampled)
+        out += fmt::format("GiNaC cannot decide it; it holds at {} sampled points of the domains (40 digits).\n\n",
+                           v.samples);
+    if (v.what == engine::verdict::status::failed)
+        out += "Residual: $" + math(v.residual) + "$.\n\n";
+    return out;
+}
+
 // "$x - 1 \leq 0$ (linear in x ...)", "$M > 0$ (declared positive)"
 std::string fragment_writer::sign_text(const engine::sign_step& step) const
 {
@@ -434,6 +488,15 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
         lhs = fmt::format("\\lim_{{{} \\to {}}} {}", latex(c.limit->symbol, order), point, lhs);
     }
     return fmt::format("{} {} {}", lhs, latex_relation(c.op), latex(c.stated.rhs(), order, written));
+}
+
+std::vector<std::string> checks_proofs_latex(const engine::derivation& d)
+{
+    const detail::fragment_writer writer(d);
+    std::vector<std::string> proofs;
+    for (const engine::check_result* c : d.all_checks())
+        proofs.push_back(writer.proof(*c));
+    return proofs;
 }
 
 std::string checked_claim_latex(const engine::check_result& c, const term_order& order)

@@ -121,6 +121,11 @@ public:
 
     /// The whole fragment.
     std::string write();
+    /// Check `c`'s proof, typeset for a reader who opens it (the web page's `<details>`):
+    /// the claim, how it was established (the difference of the sides, the sign of each
+    /// factor, a limit's method, each case), the conditions it holds under and those of its
+    /// definedness proven. Paragraphs and a list, in the dialect of the fragments.
+    std::string proof(const engine::check_result& c) const;
     /// A row (and its displays) of the report's errata table: comparisons shown together
     /// (emit::errata_rows), or a claim no derivation settles.
     void errata_row(errata_table& table, const std::vector<std::size_t>& group) const;

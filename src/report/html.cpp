@@ -62,52 +62,42 @@ footer { margin-top: 3rem; font-size: 0.85rem; color: #555; border-top: 1px soli
 ul.contents, ul.contents ul { list-style: none; padding-left: 1.2rem; }
 )";
 
-// A check's proof as `impact derive --json` gives it (derivations.json): how it was established,
-// the sign proof's lines, its cases, the conditions it needs, and what Z3 said, in a
-// <details> element the reader opens.
-std::string proof_details(const nlohmann::json& check)
+// `part`'s HTML with its formulas moved after `into`'s, their placeholders renumbered.
+std::string merged(html::page& into, const html::page& part)
+{
+    std::string text = part.html;
+    for (std::size_t i = part.formulas.size(); i-- > 0;) {
+        const std::string from = html::placeholder(i);
+        const std::string to = html::placeholder(into.formulas.size() + i);
+        for (std::size_t at; (at = text.find(from)) != std::string::npos;)
+            text.replace(at, from.size(), to);
+    }
+    into.formulas.insert(into.formulas.end(), part.formulas.begin(), part.formulas.end());
+    return text;
+}
+
+// A check's proof in a <details> element the reader opens: typeset as derivations.json gives
+// it ("proof_latex": the claim, how it was established, the sign of each factor, the cases,
+// the conditions), and what Z3 said. Its formulas join the page's.
+std::string proof_details(const nlohmann::json& check, const std::string& id, html::page& page,
+                          const html::targets& labels)
 {
     auto text = [&](const char* key) { return check.contains(key) && check[key].is_string() ? check[key].get<std::string>() : ""; };
     std::string out = "<details class=\"proof\"><summary>Proof</summary>\n";
-    if (const std::string claim = text("claim"); !claim.empty())
-        out += "<p>Claim: <code>" + html::escaped(claim) + "</code></p>\n";
-    if (const std::string method = text("method"); !method.empty())
-        out += "<p>" + html::escaped(method) + "</p>\n";
-    if (check.contains("proof") && check["proof"].is_array() && !check["proof"].empty()) {
-        out += "<ul class=\"proof-lines\">\n";
-        for (const auto& line : check["proof"])
-            if (line.is_string())
-                out += "<li><code>" + html::escaped(line.get<std::string>()) + "</code></li>\n";
-        out += "</ul>\n";
-    }
-    if (check.contains("parts") && check["parts"].is_array())
-        for (const auto& part : check["parts"]) {
-            auto field = [&](const char* key) { return part.contains(key) && part[key].is_string() ? part[key].get<std::string>() : ""; };
-            out += "<p>In " + html::escaped(field("under")) + ": <strong>" + html::escaped(field("status")) + "</strong>" +
-                   (field("method").empty() ? "" : ", " + html::escaped(field("method"))) + ".</p>\n";
-        }
-    if (check.contains("where") && check["where"].is_array())
-        for (const auto& condition : check["where"])
-            if (condition.is_object() && condition.contains("condition") && condition["condition"].is_string())
-                out += "<p>Where <code>" + html::escaped(condition["condition"].get<std::string>()) + "</code>" +
-                       (condition.contains("because") && condition["because"].is_string()
-                            ? " (" + html::escaped(condition["because"].get<std::string>()) + ")"
-                            : "") +
-                       ".</p>\n";
-    if (check.contains("defined_conditions_proven") && check["defined_conditions_proven"].is_number_integer())
-        out += fmt::format("<p>Every divisor, root and logarithm defined where it is used: {} condition{} proven.</p>\n",
-                           check["defined_conditions_proven"].get<long>(),
-                           check["defined_conditions_proven"].get<long>() == 1 ? "" : "s");
+    const std::string name = "output/derivations.json (the proof of " + id + "'s check " + text("name") + ")";
+    out += merged(page, html::convert(text("proof_latex"), name, id + ".html", labels));
     if (const std::string z3 = text("z3"); !z3.empty())
-        out += "<p>Z3: " + html::escaped(z3) + ".</p>\n";
+        out += "<p>Z3, given the same claim on its own: " + html::escaped(z3) + ".</p>\n";
     return out + "</details>\n";
 }
 
 // Each check's proof put at the end of its item (anchored `check-<name>`) on its derivation's page.
-void add_proofs(std::string& body, const nlohmann::json& derivation)
+void add_proofs(html::page& page, const nlohmann::json& derivation, const html::targets& labels)
 {
-    if (!derivation.contains("checks") || !derivation["checks"].is_array())
+    if (!derivation.contains("checks") || !derivation["checks"].is_array() || !derivation.contains("id"))
         return;
+    const std::string id = derivation["id"].get<std::string>();
+    std::string& body = page.html;
     for (const auto& check : derivation["checks"]) {
         if (!check.contains("name") || !check["name"].is_string())
             continue;
@@ -129,7 +119,7 @@ void add_proofs(std::string& body, const nlohmann::json& derivation)
                 at = depth == 0 ? close : close + 5;
             }
         }
-        body.insert(at, proof_details(check));
+        body.insert(at, proof_details(check, id, page, labels));
     }
 }
 
@@ -218,15 +208,7 @@ struct index_inputs : html::input_handler {
                                html::escaped(heading.title));
         }
         html::page figure = html::convert(found->second, "output/" + path + ".tex", "index.html", labels);
-        // The figure's formulas after the page's own.
-        std::string text = figure.html;
-        for (std::size_t i = figure.formulas.size(); i-- > 0;) {
-            const std::string from = html::placeholder(i);
-            const std::string to = html::placeholder(into.formulas.size() + i);
-            for (std::size_t at; (at = text.find(from)) != std::string::npos;)
-                text.replace(at, from.size(), to);
-        }
-        into.formulas.insert(into.formulas.end(), figure.formulas.begin(), figure.formulas.end());
+        const std::string text = merged(into, figure);
         return text;
     }
 };
@@ -332,9 +314,19 @@ file_map make_site(const file_map& sources)
     std::vector<made> pages;
     index_inputs inputs(sources, labels);
     pages.push_back({"index.html", html::convert(report->second, "output/report.tex", "index.html", labels, &inputs)});
+    // The checks' proofs, from derivations.json, each at the end of its check's item.
+    nlohmann::json derivations = nlohmann::json::array();
+    if (const auto json = sources.find("derivations.json"); json != sources.end()) {
+        const nlohmann::json all = nlohmann::json::parse(json->second, nullptr, false);
+        if (all.is_object() && all.contains("derivations") && all["derivations"].is_array())
+            derivations = all["derivations"];
+    }
     for (const auto& [path, contents] : fragments) {
         const std::string id = fs::path(path).stem().string();
         pages.push_back({id + ".html", html::convert(contents, "output/" + path, id + ".html", labels)});
+        for (const auto& derivation : derivations)
+            if (derivation.contains("id") && derivation["id"] == id)
+                add_proofs(pages.back().page, derivation, labels);
     }
     // Typeset together: one run of KaTeX.
     std::vector<katex::request> requests;
@@ -346,13 +338,6 @@ file_map make_site(const file_map& sources)
     file_map files = figures_as_svg(sources);
     std::size_t next = 0;
     const std::vector<std::string> title = title_lines(report->second);
-    // The checks' proofs, from derivations.json.
-    nlohmann::json derivations = nlohmann::json::array();
-    if (const auto json = sources.find("derivations.json"); json != sources.end()) {
-        const nlohmann::json all = nlohmann::json::parse(json->second, nullptr, false);
-        if (all.is_object() && all.contains("derivations") && all["derivations"].is_array())
-            derivations = all["derivations"];
-    }
     for (made& m : pages) {
         std::string body;
         body.reserve(m.page.html.size() * 4);
@@ -388,10 +373,6 @@ file_map make_site(const file_map& sources)
                                         verification_summary(derivations));
             page_title = title.front();
         } else {
-            const std::string id = m.path.substr(0, m.path.size() - 5);
-            for (const auto& derivation : derivations)
-                if (derivation.contains("id") && derivation["id"] == id)
-                    add_proofs(body, derivation);
             body += html_kernels_marker;
             // Its neighbours in the report's order.
             for (std::size_t d = 0; d < inputs.derivations.size(); ++d)

@@ -12,7 +12,14 @@ With --screenshot PAGE PNG it also takes a picture of one page (for docs/).
 With --expect PAGE#ANCHOR (repeated), each such address must be on its page: the lasting
 addresses docs/web.md promises.
 
-Usage: check_pages.py [--screenshot PAGE PNG] [--expect PAGE#ANCHOR]... FOLDER...
+Each check's item must hold its proof in a <details> element, typeset: a formula, and no
+program text (v_M^2, M*m, sqrt(...)) outside the formulas.
+
+With --summary INDEX JSON (repeated), the verification summary of INDEX must give each
+derivation's checks by status as JSON (derivations.json) holds them, each row adding up and
+the last row the sum.
+
+Usage: check_pages.py [--screenshot PAGE PNG] [--expect PAGE#ANCHOR]... [--summary INDEX JSON]... FOLDER...
        check_pages.py --self-test PAGE   (each fault, put in a copy of PAGE, must be reported)
 Run by CTest as test_web, with the Chromium of Debian's package `chromium`.
 """
@@ -75,6 +82,19 @@ function texShown(doc) {
     for (const t of texShown(doc)) say('raw TeX shows: ' + t);
     for (const e of doc.querySelectorAll('.katex-error, .ltx_ERROR')) say('a rendering error: ' + e.textContent.slice(0, 80));
     if (doc.querySelectorAll('.katex').length === 0) say('no typeset formula');
+    // Each check's proof, one click away and typeset: a <details> in its item, with a typeset
+    // formula, and no program text (v_M^2, M*m, sqrt(...)) outside the formulas.
+    for (const item of doc.querySelectorAll('li[id^="check-"]')) {
+      const proof = item.querySelector(':scope > details.proof');
+      if (!proof) { say('the check ' + item.id + ' has no proof to open'); continue; }
+      if (!proof.querySelector('.katex')) say('the proof of ' + item.id + ' has no typeset formula');
+      const walker = doc.createTreeWalker(proof, NodeFilter.SHOW_TEXT);
+      for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+        if (node.parentElement.closest('.katex')) continue;
+        const m = node.textContent.match(/[\w)]\^[\w(]|[\w)]\*[\w(]|sqrt\(/);
+        if (m) say('program text in the proof of ' + item.id + ': "' + node.textContent.trim().slice(0, 80) + '"');
+      }
+    }
     for (const img of doc.images) if (!img.complete || img.naturalWidth === 0) say('the image ' + img.getAttribute('src') + ' did not load');
     for (const a of doc.querySelectorAll('a[href]')) {
       const href = a.getAttribute('href');
@@ -144,6 +164,49 @@ def check(folders, expected=()):
     return problems, results["pages"]
 
 
+def summary_problems(index, derivations_json):
+    """The verification summary of `index` (index.html) against `derivations_json`: each
+    derivation's checks by status and those Z3 confirmed, counted here from the JSON; each
+    row's statuses add up to its checks, and the last row is the sum of the others."""
+    with open(index) as f:
+        page = f.read()
+    with open(derivations_json) as f:
+        derivations = json.load(f)["derivations"]
+    at = page.find('id="verification"')
+    if at < 0:
+        return [f"{index}: no verification summary (#verification)"]
+    table = page[at:page.find("</table>", at)]
+    rows = []
+    for row in re.findall(r"<tr>(.*?)</tr>", table, re.S)[1:]:
+        cells = [re.sub(r"<[^>]+>", "", c) for c in re.findall(r"<td>(.*?)</td>", row, re.S)]
+        rows.append((html.unescape(cells[0]), [int(c) for c in cells[1:]]))
+    problems = []
+    expected = []
+    for d in derivations:
+        statuses = [c["status"] for c in d["checks"]]
+        counts = [len(statuses),
+                  sum(s == "proven" for s in statuses),
+                  sum(s.startswith("proven,") for s in statuses),
+                  sum(s.startswith("sampled") for s in statuses),
+                  sum(not s.startswith(("proven", "sampled")) for s in statuses),
+                  sum(c.get("z3") == "confirmed" for c in d["checks"])]
+        expected.append((d["title"], counts))
+    if len(rows) != len(expected) + 1:
+        return [f"{index}: the verification summary has {len(rows)} rows, not one per derivation "
+                f"({len(expected)}) and the sum"]
+    for (title, counts), (shown, numbers) in zip(expected, rows):
+        if shown != title or numbers != counts:
+            problems.append(f"{index}: the verification summary says {shown}: {numbers}; "
+                            f"derivations.json says {title}: {counts}")
+    for shown, numbers in rows:
+        if numbers[0] != sum(numbers[1:5]):
+            problems.append(f"{index}: the verification summary's row {shown} does not add up: {numbers}")
+    total = [sum(n[i] for _, n in rows[:-1]) for i in range(6)]
+    if rows[-1][1] != total:
+        problems.append(f"{index}: the verification summary's last row {rows[-1][1]} is not the sum {total}")
+    return problems
+
+
 def screenshot(page, png):
     with tempfile.TemporaryDirectory(prefix="impact-web-") as scratch:
         subprocess.run([chromium(), *BROWSER_FLAGS, "--user-data-dir=" + os.path.join(scratch, "profile"),
@@ -176,6 +239,10 @@ def self_test(model):
                          "a link off the folder: https://example.org/"),
         "style.html": (good.replace('href="impact.css"', 'href="missing.css"'), "the style sheet missing.css"),
         "empty.html": (re.sub(r"<body>.*</body>", "<body></body>", good, flags=re.S), "an empty page"),
+        "no_proof.html": (good.replace('<details class="proof">', '<details class="other">', 1),
+                          "has no proof to open"),
+        "program_text.html": (good.replace("<summary>Proof</summary>", "<summary>Proof</summary><p>How: M*m*(1-eps^2).</p>", 1),
+                              "program text in the proof of"),
     }
     with tempfile.TemporaryDirectory(prefix="impact-web-faults-") as scratch:
         shutil.copytree(os.path.join(folder, "katex"), os.path.join(scratch, "katex"))
@@ -186,9 +253,32 @@ def self_test(model):
         problems, _ = check([scratch])
     missed = [f"{name}: not reported: {what}" for name, (_, what) in faults.items()
               if not any(f"/{name}: " in p and what in p for p in problems)]
+    # The verification summary, one number changed, and a row that does not add up.
+    index = os.path.join(folder, "index.html")
+    summary = os.path.join(os.path.dirname(folder), "derivations.json")
+    if os.path.isfile(index) and os.path.isfile(summary):
+        with open(index) as f:
+            page = f.read()
+        at = page.index('id="verification"')
+        row = page.index("<tr><td><a", at)
+        cell = page.index("</td><td>", row) + 9
+        changed = page[:cell] + str(int(page[cell:page.index("<", cell)]) + 1) + page[page.index("<", cell):]
+        with tempfile.TemporaryDirectory(prefix="impact-web-faults-") as scratch:
+            wrong = os.path.join(scratch, "index.html")
+            with open(wrong, "w") as f:
+                f.write(changed)
+            found = summary_problems(wrong, summary)
+        total = 2
+        if not any("derivations.json says" in p for p in found):
+            missed.append("index.html: not reported: a verification summary's number changed")
+        if not any("does not add up" in p for p in found):
+            missed.append("index.html: not reported: a verification summary's row that does not add up")
+    else:
+        total = 0
+        missed.append(f"no index.html and derivations.json beside {folder} for the summary's faults")
     for m in missed:
         print(m)
-    print(f"check_pages.py --self-test: {len(faults) - len(missed)} of {len(faults)} faults reported")
+    print(f"check_pages.py --self-test: {len(faults) + total - len(missed)} of {len(faults) + total} faults reported")
     return not missed
 
 
@@ -198,14 +288,20 @@ def main():
         sys.exit(0 if self_test(args[1]) else 1)
     shot = None
     expected = []
-    while args[:1] in (["--screenshot"], ["--expect"]):
+    summaries = []
+    while args[:1] in (["--screenshot"], ["--expect"], ["--summary"]):
         if args[0] == "--screenshot":
             shot, args = args[1:3], args[3:]
+        elif args[0] == "--summary":
+            summaries.append(args[1:3])
+            args = args[3:]
         else:
             page, _, anchor = args[1].partition("#")
             expected.append((page, anchor))
             args = args[2:]
     problems, count = check(args, expected)
+    for index, derivations in summaries:
+        problems += summary_problems(index, derivations)
     for p in problems:
         print(p)
     print(f"check_pages.py: {count} pages read in Chromium, {len(problems)} problems")

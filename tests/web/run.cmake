@@ -16,7 +16,8 @@ execute_process(COMMAND ${IMPACT} regenerate --derivations ${SOURCE}/tests/examp
 if(failed)
   message(FATAL_ERROR "the examples' folder does not regenerate")
 endif()
-# The addresses docs/web.md promises, typed here: a derivation's given equation, result, check
+# Every check's proof typeset in its <details>; the verification summaries against their
+# derivations.json. The addresses docs/web.md promises, typed here: a derivation's given equation, result, check
 # and kernel output, a figure, rows of the errata, and in the folder of one's own a kernel's
 # output and a check.
 set(html ${SOURCE}/output/html)
@@ -33,6 +34,8 @@ execute_process(COMMAND ${PYTHON} ${SOURCE}/tests/web/check_pages.py
                         --expect ${html}/index.html\#errata-eq-12-third-line
                         --expect ${html}/index.html\#errata-eq-14-first-line-2
                         --expect ${WORK}/examples/html/pushed_puck.html\#kernel-push
+                        --summary ${html}/index.html ${SOURCE}/output/derivations.json
+                        --summary ${WORK}/examples/html/index.html ${WORK}/examples/derivations.json
                         ${html} ${WORK}/examples/html
                 RESULT_VARIABLE failed)
 if(failed)

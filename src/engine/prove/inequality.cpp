@@ -135,7 +135,7 @@ std::optional<verdict> prove_inequality_through(const GiNaC::ex& lhs, relation o
                     continue;
                 verdict v;
                 v.what = verdict::status::proven;
-                v.residual = 0;
+                v.residual = other;   // the difference the signs of whose factors decide it
                 v.proof = proof.steps;
                 v.method = fmt::format("by {} the difference of the sides is {}, and the sign of each factor of "
                                        "that follows from the domains",

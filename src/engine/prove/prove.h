@@ -41,8 +41,11 @@ struct verdict {
     };
     basis how = basis::none;
     std::size_t samples = 0;     ///< points tested when not proven symbolically
-    GiNaC::ex residual;          ///< the normalised difference; zero when proven
+    /// The normalised difference of the sides: zero when proven by it, or, proven by signs
+    /// or through an identity, the difference whose factors' signs decide it.
+    GiNaC::ex residual;
     std::string method;          ///< how the verdict was reached, in words
+    finding typeset;             ///< the same with its mathematics, when a printer can typeset it
     std::vector<sign_step> proof; ///< for inequalities: the sign of each factor
     /// Where the claim is defined (engine/prove/definedness.h): the conditions it is said
     /// to hold under, not proven from the domains (`proven, where x != y`), and those the

@@ -34,6 +34,39 @@ bool is_bounded_call(const GiNaC::ex& e)
     return name == "acos" || name == "asin" || name == "atan" || name == "atan2" || name == "tanh";
 }
 
+// `e` has the sign `s`, typeset: "e > 0", or the words "of unknown sign" after it.
+finding& sign_of(finding& f, const GiNaC::ex& e, const sign_set& s)
+{
+    if (!s.is_known() || (s.negative && s.positive))
+        return f.math(e).say(" " + s.describe());
+    const relation op = !s.negative && !s.zero   ? relation::greater
+                        : !s.negative && s.positive ? relation::greater_equal
+                        : !s.positive && !s.zero   ? relation::less
+                        : !s.positive && s.negative ? relation::less_equal
+                                                     : relation::equal;
+    return f.states(e, op, 0);
+}
+
+// An interval with its ends typeset: `(0, \pi/2]`.
+finding& interval_of(finding& f, const GiNaC::ex& low, bool low_open, const GiNaC::ex& high, bool high_open)
+{
+    return f.say(low_open ? "(" : "[").math(low).say(", ").math(high).say(high_open ? ")" : "]");
+}
+
+finding& range_said(finding& f, const domain& d)
+{
+    if (d.what != domain::kind::interval || d.infinity_included)
+        return f.say(d.to_string());
+    return interval_of(f, d.exact_lower(), d.lower_open, d.exact_upper(), d.upper_open);
+}
+
+finding& range_said(finding& f, const exact_interval& r, const assumptions& given)
+{
+    if (!r.bounded())
+        return f.say(r.to_string(given));
+    return interval_of(f, r.low, r.low_open, r.high, r.high_open);
+}
+
 bool has_sine_or_cosine(const GiNaC::ex& e)
 {
     for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
@@ -107,22 +140,28 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::function_sign(const
         const sign_set of = name == "sin" ? s : name == "cos" ? c : times(s, reciprocal(c));
         if (!of.is_known())
             return std::nullopt;
-        return std::make_pair(of, sign_reason(fmt::format("{} in {}, where {} is {}", text(u), r->to_string(given_),
-                                                          name, of.describe())));
+        sign_reason why(fmt::format("{} in {}, where {} is {}", text(u), r->to_string(given_), name, of.describe()));
+        range_said(why.typeset.math(u).say(" in "), *r, given_)
+            .say(name == "sin" ? ", where the sine is " : name == "cos" ? ", where the cosine is " : ", where the tangent is ")
+            .say(of.describe());
+        return std::make_pair(of, why);
     }
     if (name == "log") {
         const sign_set s = sign(u - 1, depth + 1).first;
         if (!s.is_known())
             return std::nullopt;
-        return std::make_pair(s, sign_reason(fmt::format("log is increasing and log(1) = 0, and {} is {}",
-                                                         text(u - 1), s.describe())));
+        sign_reason why(fmt::format("log is increasing and log(1) = 0, and {} is {}", text(u - 1), s.describe()));
+        sign_of(why.typeset.say("the logarithm is increasing and 0 at 1, and "), u - 1, s);
+        return std::make_pair(s, why);
     }
     if (name == "asin" || name == "atan" || name == "sinh" || name == "tanh") {
         const sign_set s = sign(u, depth + 1).first;
         if (!s.is_known())
             return std::nullopt;
-        return std::make_pair(s, sign_reason(fmt::format("{} is increasing and 0 at 0, and {} is {}", name,
-                                                         text(u), s.describe())));
+        sign_reason why(fmt::format("{} is increasing and 0 at 0, and {} is {}", name, text(u), s.describe()));
+        const char* called = name == "asin" ? "arcsin" : name == "atan" ? "arctan" : name.c_str();
+        sign_of(why.typeset.say(std::string(called) + " is increasing and 0 at 0, and "), u, s);
+        return std::make_pair(s, why);
     }
     return std::nullopt;
 }
@@ -143,6 +182,8 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_s
     assumptions within = given_;
     within.known = std::make_shared<worked_out>();
     std::vector<std::string> facts;
+    finding typeset = finding().say("with ");
+    GiNaC::exmap back;   // the quantities standing for sines, cosines and calls, as themselves
     GiNaC::ex value = e;
     if (const auto bases = through_base_angles(e, given_)) {
         const GiNaC::ex nd = GiNaC::normal(bases->value).numer_denom();
@@ -157,6 +198,13 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_s
             facts.push_back(fmt::format("{} in {}, {} in {}, {}^2 + {}^2 = 1", text(b.sine),
                                         within.domains[b.sine].to_string(), text(b.cosine),
                                         within.domains[b.cosine].to_string(), text(b.sine), text(b.cosine)));
+            back[b.sine] = GiNaC::sin(b.angle);
+            back[b.cosine] = GiNaC::cos(b.angle);
+            if (facts.size() > 1)
+                typeset.say("; ");
+            range_said(typeset.math(GiNaC::sin(b.angle)).say(" in "), within.domains[b.sine]).say(", ");
+            range_said(typeset.math(GiNaC::cos(b.angle)).say(" in "), within.domains[b.cosine]).say(", ");
+            typeset.states(GiNaC::pow(GiNaC::sin(b.angle), 2) + GiNaC::pow(GiNaC::cos(b.angle), 2), relation::equal, 1);
         }
     }
     // acos, asin, atan, atan2 and tanh as quantities in their ranges, in the order of their texts.
@@ -178,6 +226,10 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_s
         within.domains[quantity] = *range;
         as_quantities[call] = quantity;
         facts.push_back(fmt::format("{} in {}", text(call), within.domains[quantity].to_string()));
+        back[quantity] = call;
+        if (facts.size() > 1)
+            typeset.say("; ");
+        range_said(typeset.math(call).say(" in "), within.domains[quantity]);
     }
     if (facts.empty())
         return std::nullopt;
@@ -188,10 +240,28 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_s
     if (!proof.sign.is_known())
         return std::nullopt;
     std::vector<std::string> steps;
-    for (const sign_step& step : proof.steps)
+    typeset.say(": ");
+    for (const sign_step& step : proof.steps) {
         steps.push_back(step.words);
-    return std::make_pair(proof.sign, sign_reason(fmt::format("with {}: {}", fmt::join(facts, "; "),
-                                                              fmt::join(steps, ", "))));
+        if (steps.size() > 1)
+            typeset.say(", ");
+        sign_of(typeset, step.factor.subs(back, GiNaC::subs_options::no_pattern), step.sign).say(" (");
+        if (!step.why.typeset.parts.empty())
+            for (finding::part part : step.why.typeset.parts) {
+                if (part.what == finding::part::kind::math)
+                    part.value = part.value.subs(back, GiNaC::subs_options::no_pattern);
+                typeset.parts.push_back(std::move(part));
+            }
+        else if (const auto known = step.why.declared ? within.domains.find(*step.why.declared) : within.domains.end();
+                 known != within.domains.end())
+            range_said(typeset.say("in "), known->second);
+        else
+            typeset.say(step.why.declared ? "declared " + step.why.domain : step.why.words);
+        typeset.say(")");
+    }
+    sign_reason why(fmt::format("with {}: {}", fmt::join(facts, "; "), fmt::join(steps, ", ")));
+    why.typeset = std::move(typeset);
+    return std::make_pair(proof.sign, why);
 }
 
 } // namespace impact::engine

@@ -274,7 +274,8 @@ bool multiples_fit(const ex_map& steps, const std::vector<linear_form>& forms)
 // What the decision did before comparing: the facts it used, in words.
 struct facts {
     std::vector<std::string> inverses;   // "asin(sin(phi)) = phi, phi in [0, 1]"
-    std::set<std::string> positive;      // factors of logarithms' arguments proven > 0
+    std::vector<finding> inverses_typeset;
+    std::map<std::string, GiNaC::ex> positive;   // factors of logarithms' arguments proven > 0, by their texts
 };
 
 // asin(sin(u)) = u for u in [-Pi/2, Pi/2], acos(cos(u)) = u for u in [0, Pi], atan(tan(u))
@@ -300,6 +301,14 @@ GiNaC::ex undo_inverses(const GiNaC::ex& e, const assumptions& given, facts& use
     used.inverses.push_back(fmt::format("{}({}({})) = {} with {} in {}, within [{}, {}]", outer, inner,
                                         given.text(u), given.text(u), given.text(u), r->to_string(given),
                                         given.text(low), given.text(high)));
+    finding typeset;
+    typeset.states(mapped, relation::equal, u).say(" with ").math(u).say(" in ");
+    if (r->bounded())
+        typeset.say(r->low_open ? "(" : "[").math(r->low).say(", ").math(r->high).say(r->high_open ? ")" : "]");
+    else
+        typeset.say(r->to_string(given));
+    typeset.say(", within [").math(low).say(", ").math(high).say("]");
+    used.inverses_typeset.push_back(std::move(typeset));
     return u;
 }
 
@@ -386,7 +395,7 @@ GiNaC::ex split_logs(const GiNaC::ex& e, const assumptions& given, facts& used)
         sum += k * GiNaC::log(f);
         ++split;
         if (!GiNaC::is_a<GiNaC::numeric>(f))
-            used.positive.insert(given.text(f));
+            used.positive.emplace(given.text(f), f);
     }
     if (split == 0)
         return e;
@@ -454,24 +463,55 @@ std::optional<verdict> decide_transcendental(const GiNaC::ex& lhs, const GiNaC::
         if (!reduced_modulo_circle(top, trig.bases).is_zero())
             return std::nullopt;
         std::vector<std::string> how;
+        finding typeset;
+        const auto next = [&] {
+            if (!typeset.parts.empty())
+                typeset.say("; ");
+        };
+        // The basis in words, and typeset: each angle, "and" before the last.
         const auto listed = [&](const basis& b) {
             std::vector<std::string> texts;
-            for (const base_angle& a : b.bases)
-                texts.push_back(given.text(a.angle));
+            for (std::size_t i = 0; i < b.bases.size(); ++i) {
+                texts.push_back(given.text(b.bases[i].angle));
+                typeset.say(i == 0 ? "" : i + 1 == b.bases.size() ? " and " : ", ").math(b.bases[i].angle);
+            }
             return fmt::format("{{{}}}", fmt::join(texts, ", "));
         };
-        if (!trig.bases.empty())
+        if (!trig.bases.empty()) {
+            typeset.say("a trigonometric identity: the angles written over ");
             how.push_back(fmt::format("trigonometric identity, angles over the basis {} reduced modulo "
                                       "sin^2 + cos^2 = 1",
                                       listed(trig)));
-        if (!hyperbolic.bases.empty())
+            typeset.say(", reduced modulo ");
+            for (std::size_t i = 0; i < trig.bases.size(); ++i) {
+                const GiNaC::ex& a = trig.bases[i].angle;
+                typeset.say(i == 0 ? "" : i + 1 == trig.bases.size() ? " and " : ", ")
+                    .states(GiNaC::pow(GiNaC::sin(a), 2) + GiNaC::pow(GiNaC::cos(a), 2), relation::equal, 1);
+            }
+        }
+        if (!hyperbolic.bases.empty()) {
+            next();
+            typeset.say("exp, sinh, cosh and tanh as powers of exp over ");
             how.push_back(fmt::format("exp, sinh, cosh and tanh as powers of exp over the basis {}",
                                       listed(hyperbolic)));
-        if (!used.positive.empty())
+        }
+        if (!used.positive.empty()) {
+            next();
+            typeset.say("logarithms of products split into logarithms of factors proven positive: ");
+            std::vector<std::string> texts;
+            for (const auto& [text, factor] : used.positive) {
+                typeset.say(texts.empty() ? "" : ", ").math(factor);
+                texts.push_back(text);
+            }
             how.push_back(fmt::format("logarithms of products split into logarithms of factors proven > 0: {}",
-                                      fmt::join(used.positive, ", ")));
-        for (const std::string& inverse : used.inverses)
-            how.push_back(inverse);
+                                      fmt::join(texts, ", ")));
+        }
+        for (std::size_t i = 0; i < used.inverses.size(); ++i) {
+            next();
+            how.push_back(used.inverses[i]);
+            typeset.parts.insert(typeset.parts.end(), used.inverses_typeset[i].parts.begin(),
+                                 used.inverses_typeset[i].parts.end());
+        }
         if (how.empty())
             return std::nullopt;
         verdict v;
@@ -479,6 +519,7 @@ std::optional<verdict> decide_transcendental(const GiNaC::ex& lhs, const GiNaC::
         v.residual = 0;
         v.how = verdict::basis::decided;
         v.method = fmt::format("{}: the difference is zero", fmt::join(how, "; "));
+        v.typeset = std::move(typeset.say(": the difference of the sides is zero"));
         return v;
     } catch (const std::exception&) {
         return std::nullopt;

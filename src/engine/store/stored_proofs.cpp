@@ -117,7 +117,8 @@ json derivation_codec::put_verdict(const verdict& v)
             v.method,
             list(v.proof, &derivation_codec::put_sign_step),
             list(v.where, &derivation_codec::put_condition),
-            list(v.defined, &derivation_codec::put_condition)};
+            list(v.defined, &derivation_codec::put_condition),
+            put_finding(v.typeset)};
 }
 
 void derivation_codec::get_verdict(const json& j, verdict& v)
@@ -130,6 +131,7 @@ void derivation_codec::get_verdict(const json& j, verdict& v)
     get_list(j.at(5), v.proof, &derivation_codec::get_sign_step);
     get_list(j.at(6), v.where, &derivation_codec::get_condition);
     get_list(j.at(7), v.defined, &derivation_codec::get_condition);
+    get_finding(j.at(8), v.typeset);
 }
 
 json derivation_codec::put_limit_method(const limit_method& m)
