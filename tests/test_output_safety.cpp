@@ -462,7 +462,9 @@ BOOST_AUTO_TEST_CASE(a_full_disk_is_an_error_and_the_output_survives)
     const std::uintmax_t disk_kib = (pages + 8) * 4;
     {
         std::string retitled = good("first");
-        retitled.replace(retitled.find("a good derivation"), 17, "a good derivation, retitled");
+        const std::size_t title = retitled.find("a good derivation");
+        BOOST_TEST_REQUIRE(title != std::string::npos);
+        retitled.replace(title, 17, "a good derivation, retitled");
         p.write("derivations/a.toml", retitled);
     }
     fs::create_directories(p.root / "disk");

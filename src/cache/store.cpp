@@ -93,8 +93,9 @@ std::optional<std::string> read_whole(const fs::path& path)
 }
 
 // A file mapped read-only: an entry holds the whole output (tens of megabytes), read on
-// every warm regeneration, and is hashed and unpacked where the page cache holds it,
-// without a copy.
+// every warm regeneration, and is hashed where the page cache holds it, then copied once.
+// Impact never changes an entry in place (it writes a new one and renames it over), so a
+// mapping stays whole while another run replaces or trims the entry.
 class mapped_file {
 public:
     explicit mapped_file(const fs::path& path)
@@ -103,7 +104,8 @@ public:
         if (fd < 0)
             return;
         struct stat st {};
-        if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
+        const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+        if (regular) {
             size_ = static_cast<std::size_t>(st.st_size);
             if (size_ == 0)
                 ok_ = true;
@@ -113,6 +115,12 @@ public:
             }
         }
         ::close(fd);
+        // A file system that cannot map files (some FUSE ones): read it instead.
+        if (regular && !ok_)
+            if (std::optional<std::string> read = read_whole(path)) {
+                copy_ = std::move(*read);
+                ok_ = true;
+            }
     }
     ~mapped_file()
     {
@@ -123,9 +131,10 @@ public:
     mapped_file& operator=(const mapped_file&) = delete;
 
     explicit operator bool() const { return ok_; }
-    std::string_view bytes() const { return {data_ ? data_ : "", data_ ? size_ : 0}; }
+    std::string_view bytes() const { return data_ ? std::string_view(data_, size_) : std::string_view(copy_); }
 
 private:
+    std::string copy_;
     const char* data_ = nullptr;
     std::size_t size_ = 0;
     bool ok_ = false;

@@ -247,15 +247,8 @@ std::string fragment_writer::proof(const engine::check_result& c) const
         out += fmt::format("The difference of its sides is ${}$, and the sign of each of its factors follows from "
                            "the domains.\n\n",
                            math(textbook(v.residual).value));
-    else if (v.how == basis::identity && !v.residual.is_zero() && v.method.rfind("by ", 0) == 0 &&
-             v.method.find(" the difference of the sides is ") != std::string::npos)
-        // "by the display form of dE the difference of the sides is ...": the identity named.
-        out += fmt::format("Through an identity proven before it ({}), the difference of its sides is ${}$, and the "
-                           "sign of each of its factors follows from the domains.\n\n",
-                           latex_text(v.method.substr(3, v.method.find(" the difference of the sides is ") - 3)),
-                           math(textbook(v.residual).value));
-    else if (!v.typeset.parts.empty())
-        out += "How: " + finding_latex(v.typeset, order_) + ".\n\n";
+    else if ((v.how == basis::identity || v.how == basis::decided) && !v.typeset.parts.empty())
+        out += sentence_end(capitalised(finding_latex(v.typeset, order_))) + "\n\n";
     else if (!v.method.empty() && c.parts.empty() && !c.limit_by)
         out += "How: " + sentence_end(latex_text(v.method)) + "\n\n";
     if (!v.proof.empty()) {
@@ -264,12 +257,17 @@ std::string fragment_writer::proof(const engine::check_result& c) const
             out += "\\item " + sign_text(step) + "\n";
         out += "\\end{itemize}\n";
     }
+    // Each condition with what needs it: "$M + m \neq 0$ (a divisor)".
+    const auto with_reasons = [&](const std::vector<engine::condition>& conditions) {
+        std::vector<std::string> each;
+        for (const engine::condition& k : conditions)
+            each.push_back("$" + condition_latex(k, order_) + "$" + (k.because.empty() ? "" : " (" + latex_text(k.because) + ")"));
+        return listing(each);
+    };
     if (!v.where.empty())
-        out += "It holds where " + conditions_latex(v.where, order_) + ", which the domains do not prove.\n\n";
+        out += "It holds where " + with_reasons(v.where) + ", which the domains do not prove.\n\n";
     if (!v.defined.empty())
-        out += fmt::format("Defined wherever it is used: {} ({}), proven from the domains.\n\n",
-                           conditions_latex(v.defined, order_),
-                           v.defined.size() == 1 ? "a divisor, root or logarithm" : "its divisors, roots and logarithms");
+        out += "Defined wherever it is used, proven from the domains: " + with_reasons(v.defined) + ".\n\n";
     if (v.what == engine::verdict::status::sampled)
         out += fmt::format("GiNaC cannot decide it; it holds at {} sampled points of the domains (40 digits).\n\n",
                            v.samples);

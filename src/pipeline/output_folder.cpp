@@ -473,11 +473,15 @@ write_report replace_folder(const fs::path& folder, const file_set& files, bool 
             // a warm regeneration copies nothing, and the file keeps its time for make and
             // its kin. Nothing ever writes into a file in place, so the link changes nothing
             // for the old folder, which goes.
+            // Linked first and compared after, so that what is compared is what is kept.
             std::error_code unlinked;
-            if (!(o.impacts.count(relative) && holds(folder / relative, contents)))
+            if (o.impacts.count(relative))
+                fs::create_hard_link(folder / relative, fresh / relative, unlinked);
+            if (!o.impacts.count(relative) || unlinked || !holds(fresh / relative, contents)) {
+                if (o.impacts.count(relative) && !unlinked)
+                    on_disk(fresh / relative, "replace a changed file", [&] { fs::remove(fresh / relative); });
                 write_new_file(fresh / relative, contents);
-            else if (fs::create_hard_link(folder / relative, fresh / relative, unlinked), unlinked)
-                write_new_file(fresh / relative, contents);   // another file system's rules
+            }
             if (++written == files.size() / 2 && stop_at)
                 stop_at("writing");
         }

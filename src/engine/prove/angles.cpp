@@ -153,6 +153,13 @@ std::string exact_interval::to_string(const assumptions& given) const
                        high_infinite ? "+inf" : given.text(high), high_open ? ')' : ']');
 }
 
+finding& interval_said(finding& f, const exact_interval& r, const assumptions& given)
+{
+    if (!r.bounded())
+        return f.say(r.to_string(given));
+    return f.say(r.low_open ? "(" : "[").math(r.low).say(", ").math(r.high).say(r.high_open ? ")" : "]");
+}
+
 std::optional<exact_interval> range_of(const GiNaC::ex& e, const assumptions& given)
 {
     if (!has_symbol(e)) {

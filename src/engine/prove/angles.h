@@ -40,6 +40,10 @@ struct exact_interval {
     std::string to_string(const assumptions& given) const;
 };
 
+/// `r` in a reason's typeset form: `[0, \pi/2)` with its ends typeset, or its words when an
+/// end is infinite.
+finding& interval_said(finding& f, const exact_interval& r, const assumptions& given);
+
 /// The range of `e` under the domains of `given`: numbers and constants, symbols by their
 /// domains, sums and constant multiples, and the monotone functions atan, asin, acos,
 /// exp, log, sinh and tanh of a known range. None where it is not worked out.

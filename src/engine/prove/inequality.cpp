@@ -128,18 +128,25 @@ std::optional<verdict> prove_inequality_through(const GiNaC::ex& lhs, relation o
                 const auto settled = [strict](const sign_proof& p) {
                     return strict ? p.sign.is_positive() : p.sign.is_nonnegative();
                 };
+                GiNaC::ex proven = other;
                 sign_proof proof = prove_sign(other, with_abbreviations_as_atoms(other, abbreviations, given));
-                if (!settled(proof))
-                    proof = prove_sign(spelled_out(other, abbreviations), given);
+                if (!settled(proof)) {
+                    proven = spelled_out(other, abbreviations);
+                    proof = prove_sign(proven, given);
+                }
                 if (!settled(proof))
                     continue;
                 verdict v;
                 v.what = verdict::status::proven;
-                v.residual = other;   // the difference the signs of whose factors decide it
+                v.residual = proven;   // the difference the signs of whose factors decide it
                 v.proof = proof.steps;
                 v.method = fmt::format("by {} the difference of the sides is {}, and the sign of each factor of "
                                        "that follows from the domains",
                                        identity.name, given.text(other));
+                v.typeset.say("through an identity proven before it (" + identity.name + "), the difference of the "
+                              "sides is ")
+                    .math(proven)
+                    .say(", and the sign of each of its factors follows from the domains");
                 v.how = verdict::basis::identity;
                 return v;
             }

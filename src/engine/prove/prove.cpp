@@ -137,6 +137,7 @@ std::optional<verdict> prove_equal_angles(const GiNaC::ex& a, const GiNaC::ex& b
         return std::nullopt;
     v.method = "both angles lie in [0, pi], where cos is one-to-one, and their cosines are proven equal";
     v.how = verdict::basis::angles;
+    v.typeset = {};
     return v;
 }
 
@@ -249,6 +250,7 @@ verdict prove_equivalent(const GiNaC::ex& equation, const GiNaC::ex& other, cons
     if (v.what == verdict::status::proven) {
         v.method = "the two equations have the same difference of sides";
         v.how = verdict::basis::same_difference;
+        v.typeset = {};
     }
     return v;
 }

@@ -47,24 +47,23 @@ finding& sign_of(finding& f, const GiNaC::ex& e, const sign_set& s)
     return f.states(e, op, 0);
 }
 
-// An interval with its ends typeset: `(0, \pi/2]`.
-finding& interval_of(finding& f, const GiNaC::ex& low, bool low_open, const GiNaC::ex& high, bool high_open)
+// `e` in the domain `d`, typeset: "e in [0, 1]", "e > 0".
+finding& said_in(finding& f, const GiNaC::ex& e, const domain& d, const assumptions& given)
 {
-    return f.say(low_open ? "(" : "[").math(low).say(", ").math(high).say(high_open ? ")" : "]");
-}
-
-finding& range_said(finding& f, const domain& d)
-{
-    if (d.what != domain::kind::interval || d.infinity_included)
-        return f.say(d.to_string());
-    return interval_of(f, d.exact_lower(), d.lower_open, d.exact_upper(), d.upper_open);
-}
-
-finding& range_said(finding& f, const exact_interval& r, const assumptions& given)
-{
-    if (!r.bounded())
-        return f.say(r.to_string(given));
-    return interval_of(f, r.low, r.low_open, r.high, r.high_open);
+    switch (d.what) {
+    case domain::kind::positive: return f.states(e, relation::greater, 0);
+    case domain::kind::nonnegative: return f.states(e, relation::greater_equal, 0);
+    case domain::kind::real: return f.math(e).say(" real");
+    case domain::kind::interval: break;
+    }
+    if (d.infinity_included)
+        return f.math(e).say(" in " + d.to_string());
+    exact_interval r;
+    r.low = d.exact_lower();
+    r.high = d.exact_upper();
+    r.low_open = d.lower_open;
+    r.high_open = d.upper_open;
+    return interval_said(f.math(e).say(" in "), r, given);
 }
 
 bool has_sine_or_cosine(const GiNaC::ex& e)
@@ -141,7 +140,7 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::function_sign(const
         if (!of.is_known())
             return std::nullopt;
         sign_reason why(fmt::format("{} in {}, where {} is {}", text(u), r->to_string(given_), name, of.describe()));
-        range_said(why.typeset.math(u).say(" in "), *r, given_)
+        interval_said(why.typeset.math(u).say(" in "), *r, given_)
             .say(name == "sin" ? ", where the sine is " : name == "cos" ? ", where the cosine is " : ", where the tangent is ")
             .say(of.describe());
         return std::make_pair(of, why);
@@ -202,8 +201,8 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_s
             back[b.cosine] = GiNaC::cos(b.angle);
             if (facts.size() > 1)
                 typeset.say("; ");
-            range_said(typeset.math(GiNaC::sin(b.angle)).say(" in "), within.domains[b.sine]).say(", ");
-            range_said(typeset.math(GiNaC::cos(b.angle)).say(" in "), within.domains[b.cosine]).say(", ");
+            said_in(typeset, GiNaC::sin(b.angle), within.domains[b.sine], given_).say(", ");
+            said_in(typeset, GiNaC::cos(b.angle), within.domains[b.cosine], given_).say(", ");
             typeset.states(GiNaC::pow(GiNaC::sin(b.angle), 2) + GiNaC::pow(GiNaC::cos(b.angle), 2), relation::equal, 1);
         }
     }
@@ -229,7 +228,7 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_s
         back[quantity] = call;
         if (facts.size() > 1)
             typeset.say("; ");
-        range_said(typeset.math(call).say(" in "), within.domains[quantity]);
+        said_in(typeset, call, within.domains[quantity], given_);
     }
     if (facts.empty())
         return std::nullopt;
@@ -254,7 +253,7 @@ std::optional<std::pair<sign_set, sign_reason>> sign_prover::bounded_functions_s
             }
         else if (const auto known = step.why.declared ? within.domains.find(*step.why.declared) : within.domains.end();
                  known != within.domains.end())
-            range_said(typeset.say("in "), known->second);
+            said_in(typeset, step.why.declared->subs(back, GiNaC::subs_options::no_pattern), known->second, given_);
         else
             typeset.say(step.why.declared ? "declared " + step.why.domain : step.why.words);
         typeset.say(")");

@@ -302,12 +302,11 @@ GiNaC::ex undo_inverses(const GiNaC::ex& e, const assumptions& given, facts& use
                                         given.text(u), given.text(u), given.text(u), r->to_string(given),
                                         given.text(low), given.text(high)));
     finding typeset;
-    typeset.states(mapped, relation::equal, u).say(" with ").math(u).say(" in ");
-    if (r->bounded())
-        typeset.say(r->low_open ? "(" : "[").math(r->low).say(", ").math(r->high).say(r->high_open ? ")" : "]");
-    else
-        typeset.say(r->to_string(given));
-    typeset.say(", within [").math(low).say(", ").math(high).say("]");
+    interval_said(typeset.states(mapped, relation::equal, u).say(" with ").math(u).say(" in "), *r, given);
+    exact_interval principal;
+    principal.low = low;
+    principal.high = high;
+    interval_said(typeset.say(", within "), principal, given);
     used.inverses_typeset.push_back(std::move(typeset));
     return u;
 }
