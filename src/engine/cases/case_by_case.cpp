@@ -34,7 +34,7 @@ bool cannot_arise_near(const case_value& c, const check_result::limit_point& nea
                        const assumptions& given)
 {
     constexpr std::size_t effort = 100;
-    const GiNaC::ex value = condition_form(c).value.subs(symbols.abbreviations());
+    const GiNaC::ex value = condition_form(c).value.subs(symbols.abbreviations(), GiNaC::subs_options::no_pattern);
     if (!near.to_infinity || !value.has(near.symbol) || !value.is_polynomial(near.symbol))
         return false;
     GiNaC::ex derivative = value;

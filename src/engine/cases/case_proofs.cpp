@@ -74,7 +74,7 @@ bool cannot_arise(const case_value& c, const symbol_table& symbols, const assump
         return true;
     };
     const nonnegative_form f = condition_form(c);
-    const GiNaC::ex value = without_abs(GiNaC::normal(f.value.subs(symbols.abbreviations())), given);
+    const GiNaC::ex value = without_abs(GiNaC::normal(f.value.subs(symbols.abbreviations(), GiNaC::subs_options::no_pattern)), given);
     if (!few_terms(value.numer())) {
         const GiNaC::ex top = GiNaC::expand(value.numer());
         if (GiNaC::is_a<GiNaC::add>(top) && top.nops() > most_terms &&

@@ -143,7 +143,7 @@ std::optional<verdict> prove_by_terms(const GiNaC::ex& lhs, relation op, const G
     std::sort(terms.begin(), terms.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [text, term] : terms) {
-        const sign_proof p = prove_sign(GiNaC::normal(term.subs(abbreviations)), with_effort(given, try_effort));
+        const sign_proof p = prove_sign(GiNaC::normal(term.subs(abbreviations, GiNaC::subs_options::no_pattern)), with_effort(given, try_effort));
         if (p.sign.is_nonnegative()) {
             aside.push_back(text);
             steps.insert(steps.end(), p.steps.begin(), p.steps.end());
@@ -189,9 +189,9 @@ std::optional<verdict> prove_under(const GiNaC::ex& lhs, relation op, const GiNa
     // The claim as G >= 0 (> 0), the condition as C >= 0 (> 0).
     // Each form written once (normal_form.h): which argument proves the claim, and how it
     // is told, must not follow GiNaC's order of terms.
-    const GiNaC::ex g = normal_written_once((upper ? rhs - lhs : lhs - rhs).subs(abbreviations), given.order);
+    const GiNaC::ex g = normal_written_once((upper ? rhs - lhs : lhs - rhs).subs(abbreviations, GiNaC::subs_options::no_pattern), given.order);
     nonnegative_form condition = condition_form(c);
-    condition.value = normal_written_once(condition.value.subs(abbreviations), given.order);
+    condition.value = normal_written_once(condition.value.subs(abbreviations, GiNaC::subs_options::no_pattern), given.order);
     const std::string under = fmt::format("under {}", condition_text(c, given.order));
 
     if (g.is_zero() && !strict) {

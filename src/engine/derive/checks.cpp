@@ -402,7 +402,8 @@ verdict deriver::check_limit(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const c
     // sphere's law of restitution, which holds at every mass): the left side's limit is the
     // right side's, taken without bringing the left side over one denominator (2 to 3 s for
     // each case of the rough spheres in space).
-    const GiNaC::ex left = lhs.subs(abbreviations), right = rhs.subs(abbreviations);
+    const GiNaC::ex left = lhs.subs(abbreviations, GiNaC::subs_options::no_pattern),
+                    right = rhs.subs(abbreviations, GiNaC::subs_options::no_pattern);
     const bool equal_throughout = !right.has(p.symbol) && equal_as_written(left, right);
     const auto found = limit(equal_throughout ? right : left, p.symbol, p.point, p.to_infinity, given);
     verdict v;

@@ -21,8 +21,9 @@ GiNaC::ex spelled_out(const GiNaC::ex& e, const GiNaC::exmap& abbreviations)
 {
     if (abbreviations.empty())
         return e;
-    const GiNaC::ex once = e.subs(abbreviations);
-    return once.is_equal(e) ? once : once.subs(abbreviations);
+    // Symbols replaced, no pattern matched: the same result, without GiNaC's matching.
+    const GiNaC::ex once = e.subs(abbreviations, GiNaC::subs_options::no_pattern);
+    return once.is_equal(e) ? once : once.subs(abbreviations, GiNaC::subs_options::no_pattern);
 }
 
 namespace {
