@@ -3,11 +3,15 @@
 // HTML it must become, typed by hand.
 #include <boost/test/unit_test.hpp>
 
+#include "derivation_support.h"
+#include "emit/latex.h"
 #include "report/html_tex.h"
 #include "report/katex.h"
 #include "spec/error.h"
 
+#include <map>
 #include <string>
+#include <vector>
 
 using namespace impact;
 using namespace impact::report;
@@ -199,3 +203,57 @@ BOOST_AUTO_TEST_CASE(katex_typesets_each_formula_as_html_and_mathml_or_names_the
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// A check's proof, as the web page's <details> shows it, typeset for a derivation written
+// here: an inequality by the sign of each factor, an identity whose difference normalises to
+// zero, and a trigonometric identity over its angle; each converted to HTML without error.
+BOOST_AUTO_TEST_CASE(each_checks_proof_is_typeset_for_the_page)
+{
+    const engine::derivation d = testing::derive_text(R"toml(id = "falling_share"
+title = "A falling share"
+[[symbol]]
+name = "x"
+domain = "positive"
+[[symbol]]
+name = "e"
+domain = "[0, 1]"
+[[symbol]]
+name = "t"
+domain = "real"
+[[symbol]]
+name = "y"
+[[given]]
+name = "g"
+equation = "y = x*(1 - e)"
+because = "given"
+[[step]]
+solve = ["g"]
+for = ["y"]
+[[result]]
+name = "y"
+display = "x*(1 - e)"
+)toml" + testing::check("share_is_not_negative", "y >= 0") +
+                                                          testing::check("share_expanded", "y = x - x*e") +
+                                                          testing::check("circle", "sin(t)^2 + cos(t)^2 = 1"));
+    const std::vector<std::string> proofs = emit::checks_proofs_latex(d);
+    std::map<std::string, std::string> by_name;
+    std::size_t i = 0;
+    for (const engine::check_result* c : d.all_checks())
+        by_name[c->name] = proofs.at(i++);
+    const auto has = [&](const std::string& check, const std::string& text) {
+        BOOST_TEST(by_name.at(check).find(text) != std::string::npos, check << " lacks " << text << ":\n" << by_name.at(check));
+    };
+    has("share_is_not_negative", "Claim: $y \\geq 0$.");
+    has("share_is_not_negative", "the difference of the sides is $x (1 - e)$");
+    has("share_is_not_negative", "\\item $x > 0$ (declared positive)");
+    has("share_is_not_negative", "\\item $e - 1 \\leq 0$ (linear in $e$");
+    has("share_expanded", "Claim: $y = x - x e$.");
+    has("share_expanded", "The difference of its sides normalises to zero.");
+    has("circle", "A trigonometric identity: the angles written over $t$, reduced modulo $\\cos^{2} t + \\sin^{2} t = 1$");
+    for (const auto& [name, tex] : by_name) {
+        BOOST_TEST(tex.find("^2") == std::string::npos, name << ": program text in " << tex);
+        const html::page page = html::convert(tex, "the proof of " + name, "falling_share.html", {});
+        BOOST_TEST(!page.formulas.empty(), name);
+        BOOST_TEST(page.html.find('\\') == std::string::npos, name << ": " << page.html);
+    }
+}
