@@ -213,30 +213,10 @@ void add_typeset(json& j, const engine::derivation& d)
     j["latex"] = json::object();
     for (const engine::result& r : d.results)
         j["latex"][r.name] = latex(r.display, order);
-    // A check stated in words (a quantity's cases continuous, or covering every value) as
-    // the report words it.
     const std::vector<std::string> proofs = checks_proofs_latex(d);
     std::size_t c = 0;
     for (const engine::check_result* check : d.all_checks()) {
-        std::string typeset;
-        if (check->continuity) {
-            const engine::quantity* q = d.symbols.find(check->cases_of);
-            typeset = fmt::format("${}$ is continuous where its cases meet",
-                                  q ? latex(q->symbol, order) : latex_text(check->cases_of));
-        } else if (!GiNaC::is_a<GiNaC::relational>(check->stated)) {
-            // "the cases of J_t cover every value", its quantity typeset.
-            static const std::string before = "the cases of ", after = " cover every value";
-            const std::string& words = check->statement;
-            const engine::quantity* q =
-                words.size() > before.size() + after.size() && words.rfind(before, 0) == 0 &&
-                        words.compare(words.size() - after.size(), after.size(), after) == 0
-                    ? d.symbols.find(words.substr(before.size(), words.size() - before.size() - after.size()))
-                    : nullptr;
-            typeset = q ? fmt::format("the cases of ${}$ cover every value", latex(q->symbol, order))
-                        : latex_text(words);
-        } else {
-            typeset = checked_claim_latex(*check, order);
-        }
+        const std::string typeset = claim_latex(d, *check);
         j["checks"][c]["latex"] = typeset;
         j["checks"][c]["proof_latex"] = proofs[c];
         ++c;

@@ -72,6 +72,11 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
 /// taken at $v_{1,\parallel} \to k v_{1,\parallel}$").
 std::string checked_claim_latex(const engine::check_result& c, const term_order& order);
 
+/// A check's claim as the report states it: its relation typeset (checked_claim_latex), or,
+/// stated in words, the words with the quantity typeset ("$J_t$ is continuous where its
+/// cases meet", "the cases of $J_t$ cover every value").
+std::string claim_latex(const engine::derivation& d, const engine::check_result& c);
+
 /// Each check of `d` (in the order of `all_checks`), its proof typeset for a reader who
 /// opens it: the claim, how it was established, the sign of each factor, a limit's method,
 /// the cases, the conditions (emit/latex_claims.cpp). Paragraphs and a list.

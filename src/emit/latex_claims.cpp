@@ -228,15 +228,7 @@ std::string fragment_writer::proof(const engine::check_result& c) const
 {
     using basis = engine::verdict::basis;
     const engine::verdict& v = c.outcome;
-    std::string out;
-    if (c.continuity) {
-        const engine::quantity* q = d_.symbols.find(c.cases_of);
-        out += fmt::format("Claim: ${}$ is continuous where its cases meet.\n\n", q ? math(q->symbol) : latex_text(c.cases_of));
-    } else if (!GiNaC::is_a<GiNaC::relational>(c.stated)) {
-        out += "Claim: " + sentence_end(latex_text(c.statement)) + "\n\n";
-    } else {
-        out += "Claim: " + checked_claim_latex(c, order_) + ".\n\n";
-    }
+    std::string out = "Claim: " + sentence_end(claim_latex(d_, c)) + "\n\n";
     if (c.limit_by)
         out += "The limit is established " + limit_text(*c.limit_by) + ".\n\n";
     if (const std::string by_cases = cases_text(c); !by_cases.empty())
@@ -247,7 +239,8 @@ std::string fragment_writer::proof(const engine::check_result& c) const
         out += fmt::format("The difference of its sides is ${}$, and the sign of each of its factors follows from "
                            "the domains.\n\n",
                            math(textbook(v.residual).value));
-    else if ((v.how == basis::identity || v.how == basis::decided) && !v.typeset.parts.empty())
+    else if ((v.how == basis::identity || v.how == basis::decided || (v.how == basis::none && c.parts.empty())) &&
+             !v.typeset.parts.empty())
         out += sentence_end(capitalised(finding_latex(v.typeset, order_))) + "\n\n";
     else if (!v.method.empty() && c.parts.empty() && !c.limit_by)
         out += "How: " + sentence_end(latex_text(v.method)) + "\n\n";
@@ -486,6 +479,25 @@ std::string claim_math(const engine::check_result& c, const term_order& order, c
         lhs = fmt::format("\\lim_{{{} \\to {}}} {}", latex(c.limit->symbol, order), point, lhs);
     }
     return fmt::format("{} {} {}", lhs, latex_relation(c.op), latex(c.stated.rhs(), order, written));
+}
+
+std::string claim_latex(const engine::derivation& d, const engine::check_result& c)
+{
+    const term_order order = engine::declaration_order(d.symbols);
+    if (c.continuity) {
+        const engine::quantity* q = d.symbols.find(c.cases_of);
+        return fmt::format("${}$ is continuous where its cases meet", q ? latex(q->symbol, order) : latex_text(c.cases_of));
+    }
+    if (GiNaC::is_a<GiNaC::relational>(c.stated))
+        return checked_claim_latex(c, order);
+    // "the cases of J_t cover every value", its quantity typeset.
+    static const std::string before = "the cases of ", after = " cover every value";
+    const std::string& words = c.statement;
+    const engine::quantity* q = words.size() > before.size() + after.size() && words.rfind(before, 0) == 0 &&
+                                        words.compare(words.size() - after.size(), after.size(), after) == 0
+                                    ? d.symbols.find(words.substr(before.size(), words.size() - before.size() - after.size()))
+                                    : nullptr;
+    return q ? fmt::format("the cases of ${}$ cover every value", latex(q->symbol, order)) : latex_text(words);
 }
 
 std::vector<std::string> checks_proofs_latex(const engine::derivation& d)

@@ -474,13 +474,15 @@ write_report replace_folder(const fs::path& folder, const file_set& files, bool 
             // its kin. Nothing ever writes into a file in place, so the link changes nothing
             // for the old folder, which goes.
             // Linked first and compared after, so that what is compared is what is kept.
+            const fs::path made = fresh / relative;
+            const bool impacts = o.impacts.count(relative) > 0;
             std::error_code unlinked;
-            if (o.impacts.count(relative))
-                fs::create_hard_link(folder / relative, fresh / relative, unlinked);
-            if (!o.impacts.count(relative) || unlinked || !holds(fresh / relative, contents)) {
-                if (o.impacts.count(relative) && !unlinked)
-                    on_disk(fresh / relative, "replace a changed file", [&] { fs::remove(fresh / relative); });
-                write_new_file(fresh / relative, contents);
+            if (impacts)
+                fs::create_hard_link(folder / relative, made, unlinked);
+            if (!impacts || unlinked || !holds(made, contents)) {
+                if (impacts && !unlinked)
+                    on_disk(made, "replace a changed file", [&made] { fs::remove(made); });
+                write_new_file(made, contents);
             }
             if (++written == files.size() / 2 && stop_at)
                 stop_at("writing");

@@ -201,6 +201,15 @@ def summary_problems(index, derivations_json):
     for shown, numbers in rows:
         if numbers[0] != sum(numbers[1:5]):
             problems.append(f"{index}: the verification summary's row {shown} does not add up: {numbers}")
+    # Every check's proof typeset, a page's or not (a check said with another is in no
+    # item): no program text outside its formulas.
+    for d in derivations:
+        for c in d["checks"]:
+            words = re.sub(r"\$[^$]*\$", "", c.get("proof_latex", ""))
+            found = re.search(r"\\\^\{\}|[\w)]\*[\w(]|sqrt\(", words)
+            if found:
+                problems.append(f"{derivations_json}: program text in the proof of {d['id']}'s check {c['name']}: "
+                                f"{words[max(0, found.start() - 40):found.end() + 40]!r}")
     total = [sum(n[i] for _, n in rows[:-1]) for i in range(6)]
     if rows[-1][1] != total:
         problems.append(f"{index}: the verification summary's last row {rows[-1][1]} is not the sum {total}")
@@ -258,7 +267,7 @@ def self_test(model):
     # (it is no longer the sum).
     index = os.path.join(folder, "index.html")
     summary = os.path.join(os.path.dirname(folder), "derivations.json")
-    total = 2
+    total = 3
     if os.path.isfile(index) and os.path.isfile(summary):
         with open(index) as f:
             page = f.read()
@@ -282,6 +291,16 @@ def self_test(model):
             for what in whats:
                 if not any(what in p for p in found):
                     missed.append(f"index.html, {name}: not reported: {what}")
+        # A proof in derivations.json with program text in its words.
+        with open(summary) as f:
+            data = json.load(f)
+        data["derivations"][0]["checks"][0]["proof_latex"] = "Claim: $x > 0$.\n\nHow: M*m*(1-eps^2).\n\n"
+        with tempfile.TemporaryDirectory(prefix="impact-web-faults-") as scratch:
+            wrong = os.path.join(scratch, "derivations.json")
+            with open(wrong, "w") as f:
+                json.dump(data, f)
+            if not any("program text in the proof of" in p for p in summary_problems(index, wrong)):
+                missed.append("derivations.json: not reported: program text in a proof")
     else:
         missed.append(f"no index.html and derivations.json beside {folder} for the summary's faults")
     for m in missed:

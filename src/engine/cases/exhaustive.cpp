@@ -39,6 +39,10 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
     const GiNaC::ex d = normal_written_once(first, symbols.order());
     sign_set covered{false, false, false};
     std::vector<std::string> signs;
+    // The same, typeset: "with D = ..., the conditions read D >= 0, D < 0".
+    const GiNaC::symbol named_d("D");
+    finding typeset;
+    typeset.say("with ").states(named_d, relation::equal, d).say(", the conditions read ");
     for (const case_value& one : cases) {
         const nonnegative_form f = condition_form(one);
         auto k = constant_ratio(f.value, first);
@@ -61,12 +65,17 @@ check_result prove_exhaustive(const std::string& name, const std::vector<case_va
         if (!f.strict)
             covered.zero = true;
         signs.push_back(fmt::format("D {} 0", f.strict ? (up ? ">" : "<") : (up ? ">=" : "<=")));
+        typeset.say(signs.size() == 1 ? "" : ", ")
+            .states(named_d, f.strict ? (up ? relation::greater : relation::less)
+                                      : (up ? relation::greater_equal : relation::less_equal),
+                    0);
     }
     (void)symbols;
     if (covered.negative && covered.zero && covered.positive) {
         c.outcome.what = verdict::status::proven;
         c.outcome.method = fmt::format("with D = {}, the conditions read {}: together every sign of D",
                                        ginac_syntax(d, symbols.order()), fmt::join(signs, ", "));
+        c.outcome.typeset = std::move(typeset.say(": together every sign of ").math(named_d));
     } else {
         c.outcome.what = verdict::status::failed;
         c.outcome.residual = d;
