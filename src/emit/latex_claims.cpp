@@ -150,12 +150,19 @@ std::string fragment_writer::how(const engine::check_result& c) const
             signs.push_back(sign_text(step));
         out += " From the signs of its factors: " + listing(signs) + ".";
     }
-    if (c.outcome.what == engine::verdict::status::sampled)
-        out += fmt::format(" GiNaC cannot decide it; it holds at {} sampled points of the domains (40 digits).",
-                           c.outcome.samples);
-    if (c.outcome.what == engine::verdict::status::failed)
-        out += " Residual: $" + math(c.outcome.residual) + "$.";
+    if (const std::string unsettled = unsettled_text(c.outcome); !unsettled.empty())
+        out += " " + unsettled;
     return out;
+}
+
+// What a check not proven shows: its sample size, or its residual; nothing when proven.
+std::string fragment_writer::unsettled_text(const engine::verdict& v) const
+{
+    if (v.what == engine::verdict::status::sampled)
+        return fmt::format("GiNaC cannot decide it; it holds at {} sampled points of the domains (40 digits).", v.samples);
+    if (v.what == engine::verdict::status::failed)
+        return "Residual: $" + math(v.residual) + "$.";
+    return "";
 }
 
 // A check proven case by case, or a continuity check boundary by boundary: each part.
@@ -261,11 +268,8 @@ std::string fragment_writer::proof(const engine::check_result& c) const
         out += "It holds where " + with_reasons(v.where) + ", which the domains do not prove.\n\n";
     if (!v.defined.empty())
         out += "Defined wherever it is used, proven from the domains: " + with_reasons(v.defined) + ".\n\n";
-    if (v.what == engine::verdict::status::sampled)
-        out += fmt::format("GiNaC cannot decide it; it holds at {} sampled points of the domains (40 digits).\n\n",
-                           v.samples);
-    if (v.what == engine::verdict::status::failed)
-        out += "Residual: $" + math(v.residual) + "$.\n\n";
+    if (const std::string unsettled = unsettled_text(v); !unsettled.empty())
+        out += unsettled + "\n\n";
     return out;
 }
 

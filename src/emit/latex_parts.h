@@ -196,6 +196,7 @@ private:
     // latex_claims.cpp: the checks; latex_paper.cpp: the paper held to account (displayed,
     // form, paper, checked_display).
     std::string how(const engine::check_result& c) const;
+    std::string unsettled_text(const engine::verdict& v) const;
     std::string sign_text(const engine::sign_step& step) const;
     std::string limit_text(const engine::limit_method& how) const;
     std::string display(const std::string& lhs, const char* relation, const GiNaC::ex& rhs,
